@@ -1,0 +1,42 @@
+# Every dependency comes from a Debian 12 package; a missing one stops the configure step
+# with the name of the package to install.
+find_package(PkgConfig)
+
+macro(require_found found_var package what)
+  if(NOT ${found_var})
+    message(FATAL_ERROR "${what} not found: install the Debian package '${package}' "
+                        "(apt-get install ${package}), or run scripts/setup.sh")
+  endif()
+endmacro()
+
+find_package(glm CONFIG QUIET)
+require_found(glm_FOUND libglm-dev "GLM")
+
+find_package(PNG QUIET)
+require_found(PNG_FOUND libpng-dev "libpng")
+
+find_package(Vulkan QUIET)
+require_found(Vulkan_FOUND libvulkan-dev "Vulkan headers and loader")
+
+find_program(GLSLANG_VALIDATOR glslangValidator)
+require_found(GLSLANG_VALIDATOR glslang-tools "glslangValidator")
+
+find_package(glfw3 CONFIG QUIET)
+require_found(glfw3_FOUND libglfw3-dev "GLFW 3")
+
+if(PHIGS_BUILD_TESTS)
+  find_package(Catch2 2 CONFIG QUIET)
+  require_found(Catch2_FOUND catch2 "Catch2")
+endif()
+
+# Render tests need the lavapipe driver and the Khronos validation layer at run time.
+set(PHIGS_LAVAPIPE_ICD "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json" CACHE FILEPATH
+    "Vulkan ICD manifest of Mesa lavapipe")
+if(NOT EXISTS "${PHIGS_LAVAPIPE_ICD}")
+  message(FATAL_ERROR "Mesa lavapipe not found at ${PHIGS_LAVAPIPE_ICD}: install the Debian "
+                      "package 'mesa-vulkan-drivers'")
+endif()
+if(NOT EXISTS "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json")
+  message(FATAL_ERROR "Vulkan validation layer not found: install the Debian package "
+                      "'vulkan-validationlayers'")
+endif()

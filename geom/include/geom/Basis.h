@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace geom {
+
+/// Index s of the knot span with knots[s] <= u < knots[s+1], clamped into
+/// [degree, controlCount - 1] so the domain end belongs to the last non-empty span.
+std::size_t findSpan(int degree, std::span<const double> knots, std::size_t controlCount, double u);
+
+/// The degree+1 non-zero basis values N_{span-degree..span}(u) written to out (size >= degree+1).
+void basisFunctions(std::size_t span, double u, int degree, std::span<const double> knots,
+                    std::span<double> out);
+
+/// Non-zero basis functions and their derivatives up to `order`: out[k * (degree+1) + j] is the
+/// k-th derivative of N_{span-degree+j} at u. Derivatives above the degree are zero.
+void basisDerivatives(std::size_t span, double u, int degree, std::span<const double> knots, int order,
+                      std::span<double> out);
+
+/// Multiplicity of the knot value u in knots (exact comparison).
+int knotMultiplicity(std::span<const double> knots, double u);
+
+}  // namespace geom

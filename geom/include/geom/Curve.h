@@ -1,0 +1,34 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace geom {
+
+/// A non-uniform (rational) B-spline curve: degree, knot vector, control points and, when
+/// rational, one positive weight per control point (empty weights mean polynomial).
+struct Curve {
+    int degree = 0;
+    std::vector<double> knots;
+    std::vector<glm::dvec3> points;
+    std::vector<double> weights;
+
+    Curve() = default;
+    /// Builds the curve and checks it with validate(); throws GeometryError on bad input.
+    Curve(int degree, std::vector<double> knots, std::vector<glm::dvec3> points,
+          std::vector<double> weights = {});
+
+    bool rational() const { return !weights.empty(); }
+    double weight(std::size_t i) const { return weights.empty() ? 1.0 : weights[i]; }
+    /// The parameter interval [knots[degree], knots[n]] on which the curve is defined.
+    double domainStart() const { return knots[static_cast<std::size_t>(degree)]; }
+    double domainEnd() const { return knots[points.size()]; }
+};
+
+/// Checks every rule a curve must keep: degree >= 1, knots.size() == points.size() + degree + 1,
+/// non-decreasing knots with a non-empty domain, multiplicity <= degree + 1, finite numbers,
+/// weights absent or one positive weight per point. Throws GeometryError naming the rule and index.
+void validate(const Curve& curve);
+
+}  // namespace geom

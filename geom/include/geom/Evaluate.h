@@ -1,0 +1,42 @@
+#pragma once
+
+#include "geom/Curve.h"
+#include "geom/Surface.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace geom {
+
+/// Point C(u) of a curve; u is clamped into the curve's domain.
+glm::dvec3 evaluate(const Curve& curve, double u);
+
+/// C(u), C'(u), ..., C^(order)(u); rational curves by the quotient rule (The NURBS Book A4.2).
+std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order);
+
+/// Partial derivatives of a surface: at(k, l) = d^(k+l) S / du^k dv^l for k + l <= order.
+struct SurfaceDerivatives {
+    int order = 0;
+    std::vector<glm::dvec3> values;  ///< (order+1) x (order+1), row k, column l
+    const glm::dvec3& at(int k, int l) const { return values[static_cast<std::size_t>(k * (order + 1) + l)]; }
+    glm::dvec3& at(int k, int l) { return values[static_cast<std::size_t>(k * (order + 1) + l)]; }
+};
+
+/// Point S(u, v) of a surface; (u, v) is clamped into the domain.
+glm::dvec3 evaluate(const Surface& surface, double u, double v);
+
+/// All partial derivatives up to total order `order` (plain de Boor path, A3.6 / A4.4).
+SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int order);
+
+/// Unit normal Su x Sv / |Su x Sv|. Where that cross product vanishes (a collapsed edge, a
+/// pole) the answer is the limit of the normal approached from the inside of the domain along
+/// the diagonal, so the result is always a unit vector when the surface is not degenerate in
+/// a whole neighbourhood; a surface degenerate everywhere near (u, v) gives (0, 0, 0).
+glm::dvec3 normal(const Surface& surface, double u, double v);
+
+/// Unit normal from first derivatives already at hand, with the same degenerate-point rule.
+glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
+                                 const glm::dvec3& sv);
+
+}  // namespace geom

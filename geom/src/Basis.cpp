@@ -1,0 +1,122 @@
+#include "geom/Basis.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace geom {
+
+std::size_t findSpan(int degree, std::span<const double> knots, std::size_t controlCount, double u) {
+    const std::size_t low = static_cast<std::size_t>(degree);
+    const std::size_t high = controlCount - 1;
+    if (u >= knots[high + 1]) {
+        // The domain end belongs to the last span of non-zero length.
+        std::size_t s = high;
+        while (s > low && knots[s] == knots[high + 1]) --s;
+        return s;
+    }
+    if (u <= knots[low]) {
+        std::size_t s = low;
+        while (s < high && knots[s + 1] == knots[low]) ++s;
+        return s;
+    }
+    // upper_bound gives the first knot > u; the span starts one before it.
+    const auto first = knots.begin() + static_cast<std::ptrdiff_t>(low);
+    const auto last = knots.begin() + static_cast<std::ptrdiff_t>(high + 1);
+    const auto it = std::upper_bound(first, last, u);
+    return static_cast<std::size_t>(it - knots.begin()) - 1;
+}
+
+void basisFunctions(std::size_t span, double u, int degree, std::span<const double> knots,
+                    std::span<double> out) {
+    // Cox-de Boor in the triangular form of The NURBS Book, A2.2; left/right hold the knot
+    // differences so each value is computed once.
+    const std::size_t p = static_cast<std::size_t>(degree);
+    double leftBuf[64], rightBuf[64];
+    std::vector<double> heap;
+    double* left = leftBuf;
+    double* right = rightBuf;
+    if (p + 1 > 64) {
+        heap.resize(2 * (p + 1));
+        left = heap.data();
+        right = heap.data() + p + 1;
+    }
+    out[0] = 1.0;
+    for (std::size_t j = 1; j <= p; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (std::size_t r = 0; r < j; ++r) {
+            const double temp = out[r] / (right[r + 1] + left[j - r]);
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+}
+
+void basisDerivatives(std::size_t span, double u, int degree, std::span<const double> knots, int order,
+                      std::span<double> out) {
+    // The NURBS Book, A2.3: build the triangular table of basis values and knot differences,
+    // then combine its columns for each derivative order.
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t n = static_cast<std::size_t>(std::max(order, 0));
+    const std::size_t w = p + 1;
+    std::vector<double> ndu(w * w), left(w), right(w), a(2 * w);
+    ndu[0] = 1.0;
+    for (std::size_t j = 1; j <= p; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (std::size_t r = 0; r < j; ++r) {
+            ndu[j * w + r] = right[r + 1] + left[j - r];  // lower triangle: knot differences
+            const double temp = ndu[r * w + (j - 1)] / ndu[j * w + r];
+            ndu[r * w + j] = saved + right[r + 1] * temp;  // upper triangle: basis values
+            saved = left[j - r] * temp;
+        }
+        ndu[j * w + j] = saved;
+    }
+    for (std::size_t j = 0; j <= p; ++j) out[j] = ndu[j * w + p];
+    for (std::size_t k = 1; k <= n; ++k)
+        for (std::size_t j = 0; j <= p; ++j) out[k * w + j] = 0.0;
+
+    const std::size_t top = std::min(n, p);
+    for (std::size_t r = 0; r <= p; ++r) {
+        double* a0 = a.data();
+        double* a1 = a.data() + w;
+        a0[0] = 1.0;
+        for (std::size_t k = 1; k <= top; ++k) {
+            double d = 0.0;
+            const long rk = static_cast<long>(r) - static_cast<long>(k);
+            const long pk = static_cast<long>(p) - static_cast<long>(k);
+            if (rk >= 0) {
+                a1[0] = a0[0] / ndu[(pk + 1) * w + static_cast<std::size_t>(rk)];
+                d = a1[0] * ndu[static_cast<std::size_t>(rk) * w + static_cast<std::size_t>(pk)];
+            }
+            const long j1 = rk >= -1 ? 1 : -rk;
+            const long j2 = (static_cast<long>(r) - 1 <= pk) ? static_cast<long>(k) - 1
+                                                             : static_cast<long>(p) - static_cast<long>(r);
+            for (long j = j1; j <= j2; ++j) {
+                a1[j] = (a0[j] - a0[j - 1]) /
+                        ndu[static_cast<std::size_t>(pk + 1) * w + static_cast<std::size_t>(rk + j)];
+                d += a1[j] * ndu[static_cast<std::size_t>(rk + j) * w + static_cast<std::size_t>(pk)];
+            }
+            if (static_cast<long>(r) <= pk) {
+                a1[k] = -a0[k - 1] / ndu[static_cast<std::size_t>(pk + 1) * w + r];
+                d += a1[k] * ndu[r * w + static_cast<std::size_t>(pk)];
+            }
+            out[k * w + r] = d;
+            std::swap(a0, a1);
+        }
+    }
+    double factor = static_cast<double>(p);
+    for (std::size_t k = 1; k <= top; ++k) {
+        for (std::size_t j = 0; j <= p; ++j) out[k * w + j] *= factor;
+        factor *= static_cast<double>(p - k);
+    }
+}
+
+int knotMultiplicity(std::span<const double> knots, double u) {
+    return static_cast<int>(std::count(knots.begin(), knots.end(), u));
+}
+
+}  // namespace geom

@@ -1,0 +1,94 @@
+#include "geom/Curve.h"
+#include "geom/GeometryError.h"
+#include "geom/Surface.h"
+
+#include <cmath>
+#include <string>
+
+namespace geom {
+namespace {
+
+void checkKnots(const std::vector<double>& knots, int degree, std::size_t count, const char* what) {
+    const std::string where = what;
+    if (degree < 1) throw GeometryError(where + ": degree " + std::to_string(degree) + " must be at least 1");
+    if (count < static_cast<std::size_t>(degree) + 1)
+        throw GeometryError(where + ": " + std::to_string(count) + " control points are too few for degree " +
+                            std::to_string(degree) + " (need at least degree + 1)");
+    const std::size_t expected = count + static_cast<std::size_t>(degree) + 1;
+    if (knots.size() != expected)
+        throw GeometryError(where + ": " + std::to_string(knots.size()) + " knots given, but " +
+                            std::to_string(count) + " control points of degree " + std::to_string(degree) +
+                            " need " + std::to_string(expected));
+    for (std::size_t i = 0; i < knots.size(); ++i) {
+        if (!std::isfinite(knots[i]))
+            throw GeometryError(where + ": knot " + std::to_string(i) + " is not a finite number");
+        if (i > 0 && knots[i] < knots[i - 1])
+            throw GeometryError(where + ": knots decrease at index " + std::to_string(i) + " (" +
+                                std::to_string(knots[i - 1]) + " then " + std::to_string(knots[i]) + ")");
+    }
+    std::size_t run = 1;
+    for (std::size_t i = 1; i < knots.size(); ++i) {
+        run = knots[i] == knots[i - 1] ? run + 1 : 1;
+        if (run > static_cast<std::size_t>(degree) + 1)
+            throw GeometryError(where + ": knot value " + std::to_string(knots[i]) + " at index " +
+                                std::to_string(i) + " has multiplicity above degree + 1");
+    }
+    if (!(knots[static_cast<std::size_t>(degree)] < knots[count]))
+        throw GeometryError(where + ": the parameter domain [knots[degree], knots[n]] is empty");
+}
+
+void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vector<double>& weights,
+                           const char* what) {
+    const std::string where = what;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
+            throw GeometryError(where + ": control point " + std::to_string(i) +
+                                " has a non-finite coordinate");
+    if (weights.empty()) return;
+    if (weights.size() != points.size())
+        throw GeometryError(where + ": " + std::to_string(weights.size()) + " weights for " +
+                            std::to_string(points.size()) + " control points");
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        if (!std::isfinite(weights[i]) || !(weights[i] > 0.0))
+            throw GeometryError(where + ": weight " + std::to_string(i) + " is " +
+                                std::to_string(weights[i]) + ", weights must be positive and finite");
+}
+
+}  // namespace
+
+void validate(const Curve& curve) {
+    checkKnots(curve.knots, curve.degree, curve.points.size(), "curve");
+    checkPointsAndWeights(curve.points, curve.weights, "curve");
+}
+
+void validate(const Surface& surface) {
+    checkKnots(surface.knotsU, surface.degreeU, surface.countU, "surface u direction");
+    checkKnots(surface.knotsV, surface.degreeV, surface.countV, "surface v direction");
+    if (surface.points.size() != surface.countU * surface.countV)
+        throw GeometryError("surface: " + std::to_string(surface.points.size()) +
+                            " control points given for a " + std::to_string(surface.countU) + " x " +
+                            std::to_string(surface.countV) + " net");
+    checkPointsAndWeights(surface.points, surface.weights, "surface");
+}
+
+Curve::Curve(int degree_, std::vector<double> knots_, std::vector<glm::dvec3> points_,
+             std::vector<double> weights_)
+    : degree(degree_), knots(std::move(knots_)), points(std::move(points_)), weights(std::move(weights_)) {
+    validate(*this);
+}
+
+Surface::Surface(int degreeU_, int degreeV_, std::vector<double> knotsU_, std::vector<double> knotsV_,
+                 std::size_t countU_, std::size_t countV_, std::vector<glm::dvec3> points_,
+                 std::vector<double> weights_)
+    : degreeU(degreeU_),
+      degreeV(degreeV_),
+      knotsU(std::move(knotsU_)),
+      knotsV(std::move(knotsV_)),
+      countU(countU_),
+      countV(countV_),
+      points(std::move(points_)),
+      weights(std::move(weights_)) {
+    validate(*this);
+}
+
+}  // namespace geom
