@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs (only those missing), then configures and
+# builds everything into build/. Used by both README commands; safe to run again.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  cmake make g++ pkg-config          # tool chain
+  libglm-dev libpng-dev              # maths, PNG files
+  libvulkan-dev mesa-vulkan-drivers  # Vulkan loader + headers, Mesa lavapipe
+  vulkan-validationlayers            # Khronos validation layer, on in every render test
+  glslang-tools                      # GLSL -> SPIR-V at build time
+  libglfw3-dev xvfb xauth            # windows, and a virtual X server to test them
+  catch2                             # tests
+  libsisl-dev                        # baseline in the geometry benchmarks
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build_type="${BUILD_TYPE:-RelWithDebInfo}"
+cmake -S . -B build -DCMAKE_BUILD_TYPE="$build_type" ${CMAKE_ARGS:-}
+cmake --build build -j"$(nproc)"
