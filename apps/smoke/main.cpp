@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
             vk::SmokeRenderer renderer(context, target);
             image = renderer.render(vk::SmokeTriangle{});
         }
-        for (const auto& message : context.validationMessages()) std::cerr << "validation " << message << '\n';
+        for (const auto& message : context.validationMessages())
+            std::cerr << "validation " << message << '\n';
         if (!context.validationMessages().empty()) return 1;
         if (output.has_parent_path()) std::filesystem::create_directories(output.parent_path());
         writePng(image, output);

@@ -111,6 +111,10 @@ TEST_CASE("smoke: the validation messenger really reports misuse", "[render][smo
 
 TEST_CASE("smoke: PNG reading names the file when it is not a PNG", "[render][smoke]") {
     const auto bad = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "not_a_png.png";
-    { std::FILE* f = std::fopen(bad.c_str(), "wb"); std::fputs("hello", f); std::fclose(f); }
+    {
+        std::FILE* f = std::fopen(bad.c_str(), "wb");
+        std::fputs("hello", f);
+        std::fclose(f);
+    }
     REQUIRE_THROWS_WITH(readPng(bad), Catch::Contains("not_a_png.png"));
 }

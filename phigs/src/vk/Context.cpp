@@ -41,7 +41,9 @@ void check(VkResult result, const char* what) {
                                  std::to_string(static_cast<int>(result)));
 }
 
-ContextSettings ContextSettings::fromEnvironment() { return fromEnvironment(ContextSettings{}); }
+ContextSettings ContextSettings::fromEnvironment() {
+    return fromEnvironment(ContextSettings{});
+}
 
 ContextSettings ContextSettings::fromEnvironment(ContextSettings defaults) {
     if (const char* device = std::getenv("PHIGS_VK_DEVICE")) {
@@ -131,7 +133,9 @@ Context::Context(const ContextSettings& settings) {
     }
 }
 
-Context::~Context() { release(); }
+Context::~Context() {
+    release();
+}
 
 void Context::release() {
     if (device_) {
@@ -200,12 +204,13 @@ void Context::selectPhysicalDevice(DevicePreference preference) {
         if (preference == DevicePreference::Lavapipe && chosen) break;
     }
     if (!chosen)
-        throw std::runtime_error(
-            preference == DevicePreference::Lavapipe
-                ? "Vulkan: Mesa lavapipe is not available (install the Debian package 'mesa-vulkan-drivers'); "
-                  "devices seen: " + (seen.empty() ? std::string("none") : seen)
-                : "Vulkan: no device with a graphics queue; devices seen: " +
-                      (seen.empty() ? std::string("none") : seen));
+        throw std::runtime_error(preference == DevicePreference::Lavapipe
+                                     ? "Vulkan: Mesa lavapipe is not available (install the Debian package "
+                                       "'mesa-vulkan-drivers'); "
+                                       "devices seen: " +
+                                           (seen.empty() ? std::string("none") : seen)
+                                     : "Vulkan: no device with a graphics queue; devices seen: " +
+                                           (seen.empty() ? std::string("none") : seen));
     physicalDevice_ = chosen->device;
     queueFamily_ = chosen->family;
     lavapipe_ = chosen->lavapipe;

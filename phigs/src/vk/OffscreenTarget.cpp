@@ -18,7 +18,8 @@ OffscreenTarget::OffscreenTarget(Context& context, std::uint32_t width, std::uin
         bufferInfo.size = VkDeviceSize{width} * height * 4;
         bufferInfo.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
         bufferInfo.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-        check(vkCreateBuffer(context_.device(), &bufferInfo, nullptr, &readback_), "vkCreateBuffer (readback)");
+        check(vkCreateBuffer(context_.device(), &bufferInfo, nullptr, &readback_),
+              "vkCreateBuffer (readback)");
         VkMemoryRequirements req{};
         vkGetBufferMemoryRequirements(context_.device(), readback_, &req);
         VkMemoryAllocateInfo alloc{};
@@ -26,7 +27,8 @@ OffscreenTarget::OffscreenTarget(Context& context, std::uint32_t width, std::uin
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex = context_.memoryType(
             req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        check(vkAllocateMemory(context_.device(), &alloc, nullptr, &readbackMemory_), "vkAllocateMemory (readback)");
+        check(vkAllocateMemory(context_.device(), &alloc, nullptr, &readbackMemory_),
+              "vkAllocateMemory (readback)");
         check(vkBindBufferMemory(context_.device(), readback_, readbackMemory_, 0), "vkBindBufferMemory");
     } catch (...) {
         release();
@@ -34,7 +36,9 @@ OffscreenTarget::OffscreenTarget(Context& context, std::uint32_t width, std::uin
     }
 }
 
-OffscreenTarget::~OffscreenTarget() { release(); }
+OffscreenTarget::~OffscreenTarget() {
+    release();
+}
 
 void OffscreenTarget::release() {
     VkDevice device = context_.device();

@@ -14,6 +14,8 @@ ShaderModule::ShaderModule(VkDevice device, std::string_view name) : device_(dev
     check(vkCreateShaderModule(device_, &info, nullptr, &module_), "vkCreateShaderModule");
 }
 
-ShaderModule::~ShaderModule() { vkDestroyShaderModule(device_, module_, nullptr); }
+ShaderModule::~ShaderModule() {
+    vkDestroyShaderModule(device_, module_, nullptr);
+}
 
 }  // namespace phigs::vk

@@ -143,7 +143,9 @@ SmokeRenderer::SmokeRenderer(Context& context, OffscreenTarget& target) : contex
     }
 }
 
-SmokeRenderer::~SmokeRenderer() { release(); }
+SmokeRenderer::~SmokeRenderer() {
+    release();
+}
 
 void SmokeRenderer::release() {
     VkDevice device = context_.device();
@@ -164,8 +166,8 @@ Image SmokeRenderer::render(const SmokeTriangle& triangle) {
 
     context_.submitAndWait([&](VkCommandBuffer cmd) {
         VkClearValue clears[2]{};
-        clears[0].color = {{triangle.background.x, triangle.background.y, triangle.background.z,
-                            triangle.background.w}};
+        clears[0].color = {
+            {triangle.background.x, triangle.background.y, triangle.background.z, triangle.background.w}};
         clears[1].depthStencil = {1.0f, 0};
         VkRenderPassBeginInfo begin{};
         begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;

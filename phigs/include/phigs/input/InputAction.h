@@ -1,0 +1,56 @@
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace phigs {
+
+/// What an operator does, as an input source reports it. Positions are in device coordinates
+/// of the workstation (pixels, origin at the top left, y down).
+namespace action {
+struct Pick {  ///< a button press at a point: triggers pick and locator devices
+    glm::dvec2 position{0.0};
+    int device = 1;
+};
+struct Locate {  ///< a button press meant for the locator only
+    glm::dvec2 position{0.0};
+    int device = 1;
+};
+struct Stroke {
+    std::vector<glm::dvec2> points;
+    int device = 1;
+};
+struct Valuator {
+    int device = 1;
+    double value = 0.0;
+};
+struct Choice {
+    int choice = 0;
+    int device = 1;
+};
+struct String {
+    std::string text;
+    int device = 1;
+};
+struct Break {};  ///< the operator breaks a pending request (status NONE)
+struct Wait {};   ///< nothing happens for one await period (an AWAIT EVENT times out)
+/// A line addressed to the application, not to a device (e.g. "snapshot front.png").
+struct Directive {
+    std::string name;
+    std::vector<std::string> arguments;
+};
+}  // namespace action
+
+/// One operator action and where it came from (a script line, or 0 for a window).
+struct InputAction {
+    std::variant<action::Pick, action::Locate, action::Stroke, action::Valuator, action::Choice,
+                 action::String, action::Break, action::Wait, action::Directive>
+        what;
+    int line = 0;
+    std::string text;  ///< the action as written, for messages
+};
+
+}  // namespace phigs

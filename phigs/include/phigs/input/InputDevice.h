@@ -1,0 +1,47 @@
+#pragma once
+
+#include "phigs/input/InputTypes.h"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace phigs {
+
+/// What INITIALIZE <device> sets: the initial measure, prompt/echo type, echo volume and the
+/// class's data record fields (only those of the device's class are used).
+struct DeviceInitialisation {
+    Measure initial;
+    int promptEchoType = 1;
+    EchoVolume echoVolume{0, 1, 0, 1, 0, 1};
+    double valuatorLow = 0.0;   ///< valuator data record
+    double valuatorHigh = 1.0;  ///< valuator data record
+    std::vector<std::string> choiceStrings;  ///< choice alternatives, 1-based in measures
+    std::size_t bufferSize = 256;            ///< stroke: points; string: characters
+    PathOrder pathOrder = PathOrder::TopFirst;  ///< pick
+    double pickAperture = 0.01;                 ///< pick: half-size of the aperture in NPC
+};
+
+/// The state of one logical input device: its class and number, mode, echo switch and what it
+/// was initialised with, its pick filter, and its current measure (for SAMPLE).
+struct InputDevice {
+    InputClass inputClass = InputClass::Locator;
+    int number = 1;
+    OperatingMode mode = OperatingMode::Request;
+    EchoSwitch echo = EchoSwitch::Echo;
+    DeviceInitialisation setup;
+    Measure current;
+    std::set<int> pickInclusion;  ///< pick filter: a primitive is pickable when its name set
+    std::set<int> pickExclusion;  ///< meets the inclusion set and misses the exclusion set
+    int pickPathDepth = 0;        ///< 0: the whole path
+};
+
+/// Checks an initialisation against the rules of the device's class and returns the PHIGS error
+/// number it breaks (254 echo type, 255 echo volume, 260 data record, 261 initial value,
+/// 262 stroke buffer, 263 string buffer), or 0 when it is valid.
+int validateInitialisation(InputClass inputClass, const DeviceInitialisation& setup, std::string& reason);
+
+/// Number of prompt/echo types each class supports (1..n).
+int promptEchoTypeCount(InputClass inputClass);
+
+}  // namespace phigs

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "phigs/input/InputAction.h"
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace phigs {
+
+/// Raised when a script runs out while the application still waits for input.
+class InputExhausted : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Where operator actions come from: a window (mouse, keys, on-screen panels) or a session
+/// script. The application cannot tell the two apart.
+class InputSource {
+public:
+    virtual ~InputSource() = default;
+    /// The next action, waiting at most `timeout`; nullopt when none came in time. A source with
+    /// nothing left to give throws InputExhausted.
+    virtual std::optional<InputAction> next(std::chrono::milliseconds timeout) = 0;
+    /// True once every action has been delivered (a script at its end; never for a window).
+    virtual bool exhausted() const = 0;
+    /// Where the source is, for messages ("session.txt line 12", "window").
+    virtual std::string position() const = 0;
+};
+
+}  // namespace phigs

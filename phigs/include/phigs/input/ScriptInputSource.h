@@ -1,0 +1,50 @@
+#pragma once
+
+#include "phigs/input/InputSource.h"
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace phigs {
+
+/// Raised for a session script that cannot be read; the message names file, line and reason.
+class ScriptError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// An input source that replays a session script: one action per line,
+///
+///     pick X Y [device D]        locator X Y [device D]      stroke X1 Y1 X2 Y2 ... [device D]
+///     valuator D VALUE           choice N [device D]         string TEXT (rest of the line)
+///     break                      wait                        <directive> ARGS...   # comment
+///
+/// X and Y are device coordinates (pixels from the top left). Directives are the words the
+/// application registers (e.g. "snapshot"); any other word is an error. The whole script is
+/// parsed up front, so a bad line is reported before anything runs.
+class ScriptInputSource : public InputSource {
+public:
+    /// Parses `text`; `name` is used in messages (usually the file name).
+    ScriptInputSource(const std::string& text, std::string name, std::set<std::string> directives = {});
+    /// Reads and parses a script file; throws ScriptError naming the file when it cannot be read.
+    static ScriptInputSource fromFile(const std::filesystem::path& path, std::set<std::string> directives = {});
+
+    std::optional<InputAction> next(std::chrono::milliseconds timeout) override;
+    bool exhausted() const override { return cursor_ >= actions_.size(); }
+    std::string position() const override;
+
+    const std::vector<InputAction>& actions() const { return actions_; }
+
+    /// One action as a script line (what the parser reads back to the same action).
+    static std::string format(const InputAction& action);
+
+private:
+    std::string name_;
+    std::vector<InputAction> actions_;
+    std::size_t cursor_ = 0;
+    int lastLine_ = 0;
+};
+
+}  // namespace phigs

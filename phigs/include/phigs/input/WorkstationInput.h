@@ -1,0 +1,82 @@
+#pragma once
+
+#include "phigs/input/InputDevice.h"
+#include "phigs/input/InputMeasurer.h"
+#include "phigs/input/InputQueue.h"
+#include "phigs/input/InputSource.h"
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace phigs {
+
+/// How many devices of each class a workstation has (numbered from 1).
+struct DeviceCounts {
+    int locator = 1, stroke = 1, valuator = 12, choice = 4, pick = 1, string = 1;
+    int of(InputClass inputClass) const;
+};
+
+/// The logical input devices of one workstation, fed by one input source: INITIALIZE, SET MODE,
+/// REQUEST, SAMPLE, pick filters, device-state inquiries; event-mode reports go to the queue.
+class WorkstationInput {
+public:
+    WorkstationInput(int workstation, InputSource& source, const InputMeasurer& measurer, InputQueue& queue,
+                     DeviceCounts counts = {});
+    ~WorkstationInput();
+    WorkstationInput(const WorkstationInput&) = delete;
+    WorkstationInput& operator=(const WorkstationInput&) = delete;
+
+    int workstation() const { return workstation_; }
+
+    /// INITIALIZE <class>: the device must be in REQUEST mode (251) and the setup valid.
+    void initialise(InputClass inputClass, int device, DeviceInitialisation setup);
+    /// SET <class> MODE.
+    void setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo = EchoSwitch::Echo);
+    /// SET PICK FILTER.
+    void setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion);
+    /// INQUIRE <class> DEVICE STATE.
+    const InputDevice& device(InputClass inputClass, int device) const;
+
+    /// REQUEST <class>: waits for the operator to trigger this device; status NONE on a break.
+    std::pair<InputStatus, Measure> request(InputClass inputClass, int device);
+    /// SAMPLE <class>: the device's current measure (device in SAMPLE mode, else 252).
+    const Measure& sample(InputClass inputClass, int device) const;
+
+    /// Handles lines addressed to the application (script directives such as "snapshot").
+    void setDirectiveHandler(std::function<void(const action::Directive&, const InputAction&)> handler) {
+        directiveHandler_ = std::move(handler);
+    }
+    /// Actions that reached no device (no device of their class was waiting), as messages.
+    const std::vector<std::string>& ignoredActions() const { return ignored_; }
+    /// Every action taken from the source, in order (for recording a session).
+    const std::vector<InputAction>& history() const { return history_; }
+
+    /// Takes one action from the source (waiting at most `timeout`) and delivers it: sample
+    /// devices take the new measure, event devices queue a report, a pending request of the
+    /// matching device is satisfied. Returns what happened for the caller (the queue or REQUEST).
+    enum class Pumped { Nothing, Delivered, Waited, Broke, Satisfied };
+    Pumped pump(std::chrono::milliseconds timeout, const InputDevice* pending = nullptr,
+                std::pair<InputStatus, Measure>* result = nullptr);
+
+private:
+    InputDevice& lookup(InputClass inputClass, int device, const char* function);
+    const InputDevice& lookup(InputClass inputClass, int device, const char* function) const;
+    std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
+    Measure measureFor(InputDevice& device, const InputAction& action);
+
+    int workstation_;
+    InputSource& source_;
+    const InputMeasurer& measurer_;
+    InputQueue& queue_;
+    DeviceCounts counts_;
+    std::map<std::pair<InputClass, int>, InputDevice> devices_;
+    std::function<void(const action::Directive&, const InputAction&)> directiveHandler_;
+    std::vector<std::string> ignored_;
+    std::vector<InputAction> history_;
+};
+
+}  // namespace phigs
