@@ -34,7 +34,8 @@ public:
     }
     int integer(std::size_t i, const char* what) const {
         const double v = number(i, what);
-        if (v != std::floor(v) || std::abs(v) > 1e9) fail(std::string(what) + " '" + words_[i] + "' is not an integer");
+        if (v != std::floor(v) || std::abs(v) > 1e9)
+            fail(std::string(what) + " '" + words_[i] + "' is not an integer");
         return static_cast<int>(v);
     }
     /// Strips a trailing "device D" and returns D (1 when absent).
@@ -64,11 +65,14 @@ std::string formatNumber(double v) {
     return std::string(buffer, end);
 }
 
-std::string deviceSuffix(int device) { return device == 1 ? "" : " device " + std::to_string(device); }
+std::string deviceSuffix(int device) {
+    return device == 1 ? "" : " device " + std::to_string(device);
+}
 
 }  // namespace
 
-ScriptInputSource::ScriptInputSource(const std::string& text, std::string name, std::set<std::string> directives)
+ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
+                                     std::set<std::string> directives)
     : name_(std::move(name)) {
     std::istringstream in(text);
     std::string raw;
@@ -97,10 +101,12 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name, 
         } else if (verb == "stroke") {
             const int device = p.takeDevice();
             const auto& w = p.words();
-            if (w.size() < 3 || (w.size() - 1) % 2 != 0) p.fail("expected 'stroke X1 Y1 X2 Y2 ... [device D]'");
+            if (w.size() < 3 || (w.size() - 1) % 2 != 0)
+                p.fail("expected 'stroke X1 Y1 X2 Y2 ... [device D]'");
             action::Stroke s;
             s.device = device;
-            for (std::size_t i = 1; i + 1 < w.size(); i += 2) s.points.emplace_back(p.number(i, "X"), p.number(i + 1, "Y"));
+            for (std::size_t i = 1; i + 1 < w.size(); i += 2)
+                s.points.emplace_back(p.number(i, "X"), p.number(i + 1, "Y"));
             a.what = std::move(s);
         } else if (verb == "valuator") {
             p.expectCount(3, "valuator DEVICE VALUE");
@@ -135,7 +141,8 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name, 
     }
 }
 
-ScriptInputSource ScriptInputSource::fromFile(const std::filesystem::path& path, std::set<std::string> directives) {
+ScriptInputSource ScriptInputSource::fromFile(const std::filesystem::path& path,
+                                              std::set<std::string> directives) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ScriptError(path.string() + ": cannot open the session script");
     std::ostringstream text;
@@ -151,14 +158,17 @@ std::optional<InputAction> ScriptInputSource::next(std::chrono::milliseconds) {
     return actions_[cursor_++];
 }
 
-std::string ScriptInputSource::position() const { return name_ + " line " + std::to_string(lastLine_); }
+std::string ScriptInputSource::position() const {
+    return name_ + " line " + std::to_string(lastLine_);
+}
 
 std::string ScriptInputSource::format(const InputAction& a) {
     return std::visit(
         [](const auto& w) -> std::string {
             using T = std::decay_t<decltype(w)>;
             if constexpr (std::is_same_v<T, action::Pick>)
-                return "pick " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) + deviceSuffix(w.device);
+                return "pick " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
+                       deviceSuffix(w.device);
             else if constexpr (std::is_same_v<T, action::Locate>)
                 return "locator " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
                        deviceSuffix(w.device);

@@ -14,10 +14,10 @@ struct DeviceInitialisation {
     Measure initial;
     int promptEchoType = 1;
     EchoVolume echoVolume{0, 1, 0, 1, 0, 1};
-    double valuatorLow = 0.0;   ///< valuator data record
-    double valuatorHigh = 1.0;  ///< valuator data record
-    std::vector<std::string> choiceStrings;  ///< choice alternatives, 1-based in measures
-    std::size_t bufferSize = 256;            ///< stroke: points; string: characters
+    double valuatorLow = 0.0;                   ///< valuator data record
+    double valuatorHigh = 1.0;                  ///< valuator data record
+    std::vector<std::string> choiceStrings;     ///< choice alternatives, 1-based in measures
+    std::size_t bufferSize = 256;               ///< stroke: points; string: characters
     PathOrder pathOrder = PathOrder::TopFirst;  ///< pick
     double pickAperture = 0.01;                 ///< pick: half-size of the aperture in NPC
 };

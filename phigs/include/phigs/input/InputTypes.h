@@ -72,8 +72,8 @@ struct StringMeasure {
 };
 
 /// The measure of any device; the alternative matches the device's InputClass.
-using Measure = std::variant<LocatorMeasure, StrokeMeasure, ValuatorMeasure, ChoiceMeasure, PickMeasure,
-                             StringMeasure>;
+using Measure =
+    std::variant<LocatorMeasure, StrokeMeasure, ValuatorMeasure, ChoiceMeasure, PickMeasure, StringMeasure>;
 
 /// The InputClass a measure belongs to.
 InputClass classOf(const Measure& measure);

@@ -29,7 +29,8 @@ public:
     /// Parses `text`; `name` is used in messages (usually the file name).
     ScriptInputSource(const std::string& text, std::string name, std::set<std::string> directives = {});
     /// Reads and parses a script file; throws ScriptError naming the file when it cannot be read.
-    static ScriptInputSource fromFile(const std::filesystem::path& path, std::set<std::string> directives = {});
+    static ScriptInputSource fromFile(const std::filesystem::path& path,
+                                      std::set<std::string> directives = {});
 
     std::optional<InputAction> next(std::chrono::milliseconds timeout) override;
     bool exhausted() const override { return cursor_ >= actions_.size(); }
