@@ -97,15 +97,18 @@ Figures run(bool rational) {
     // Fast path.
     const geom::GridEvaluator evaluator(s);
     std::vector<geom::GridSample> samples(us.size() * vs.size());
-    auto t0 = Clock::now();
-    const int repeats = 3;
-    for (int r = 0; r < repeats; ++r) evaluator.evaluate(us, vs, samples);
-    auto t1 = Clock::now();
-    f.fastNs = seconds(t0, t1) * 1e9 / (repeats * grid * grid);
+    // The machine may be shared: each grid figure is the best of several passes.
+    const int repeats = 7;
+    f.fastNs = 1e300;
+    for (int r = 0; r < repeats; ++r) {
+        const auto a = Clock::now();
+        evaluator.evaluate(us, vs, samples);
+        f.fastNs = std::min(f.fastNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
+    }
     for (const auto& g : samples) checksum += g.normal.z;
 
     // Plain de Boor path.
-    t0 = Clock::now();
+    auto t0 = Clock::now();
     double worstDiff = 0.0;
     for (int i = 0; i < grid; ++i)
         for (int j = 0; j < grid; ++j) {
@@ -115,7 +118,7 @@ Figures run(bool rational) {
                 std::max(worstDiff, glm::length(n - samples[static_cast<std::size_t>(i * grid + j)].normal));
             checksum += n.z;
         }
-    t1 = Clock::now();
+    auto t1 = Clock::now();
     f.plainNs = seconds(t0, t1) * 1e9 / (grid * grid);
 
     // SISL per point (s1421) and grid (s1506).
@@ -133,17 +136,17 @@ Figures run(bool rational) {
     f.sislPointNs = seconds(t0, t1) * 1e9 / (grid * grid);
     std::vector<double> gder(static_cast<std::size_t>(3 * 3 * grid * grid)),
         gnorm(static_cast<std::size_t>(3 * grid * grid));
-    t0 = Clock::now();
+    f.sislGridNs = 1e300;
     for (int r = 0; r < repeats; ++r) {
+        const auto a = Clock::now();
         s1506(ss, 1, grid, us.data(), grid, vs.data(), gder.data(), gnorm.data(), &stat);
         for (std::size_t k = 0; k < gnorm.size(); k += 3) {
             const double len =
                 std::sqrt(gnorm[k] * gnorm[k] + gnorm[k + 1] * gnorm[k + 1] + gnorm[k + 2] * gnorm[k + 2]);
             checksum += gnorm[k + 2] / len;
         }
+        f.sislGridNs = std::min(f.sislGridNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
     }
-    t1 = Clock::now();
-    f.sislGridNs = seconds(t0, t1) * 1e9 / (repeats * grid * grid);
 
     // Line/surface intersection: random lines through known points, within 45 degrees of the normal.
     std::mt19937 rng(99);
