@@ -317,22 +317,39 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
     // (a double root, where Newton converges only linearly) from several sub-patches. Two hits
     // are one when they nearly coincide, or when they are close and the surface between them
     // still lies on the line.
+    // A run of such hits (a tangent contact of high order, a line lying in the surface) is
+    // reported once, by its middle member.
     std::vector<LineSurfaceHit> unique;
     const double same = 1e-7 * tree_.scale();
-    const double near = 1e-6 * tree_.scale();
-    for (const LineSurfaceHit& h : hits) {
-        if (!unique.empty()) {
-            const LineSurfaceHit& last = unique.back();
-            const double gap = glm::length(h.point - last.point);
-            if (gap < same) continue;
-            if (gap < near) {
-                const glm::dvec2 mid = 0.5 * (h.uv + last.uv);
-                const glm::dvec3 m = tree_.evaluate(mid.x, mid.y, 0).point;
-                const glm::dvec3 rel = m - base;
-                if (glm::length(rel - glm::dot(rel, d) * d) < 1e-12 * tree_.scale()) continue;
-            }
+    const double near = 1e-2 * tree_.scale();
+    // Does the surface pass within tolerance of the line point halfway between two hits?
+    // (Gauss-Newton for the nearest surface point, from the middle of their parameters.)
+    auto touchesBetween = [&](const LineSurfaceHit& a, const LineSurfaceHit& b) {
+        const glm::dvec3 target = 0.5 * (a.point + b.point);
+        glm::dvec2 uv = 0.5 * (a.uv + b.uv);
+        double distance = 0.0;
+        for (int it = 0; it < 6; ++it) {
+            const BezierPatchTree::PatchPoint e = tree_.evaluate(uv.x, uv.y, 1);
+            const glm::dvec3 r = e.point - target;
+            distance = glm::length(r);
+            const double a11 = glm::dot(e.su, e.su), a12 = glm::dot(e.su, e.sv), a22 = glm::dot(e.sv, e.sv);
+            const double det = a11 * a22 - a12 * a12;
+            if (!(det > 0.0)) break;
+            const double g1 = glm::dot(e.su, r), g2 = glm::dot(e.sv, r);
+            uv.x = std::clamp(uv.x - (a22 * g1 - a12 * g2) / det, tree_.domainStartU(), tree_.domainEndU());
+            uv.y = std::clamp(uv.y - (-a12 * g1 + a11 * g2) / det, tree_.domainStartV(), tree_.domainEndV());
         }
-        unique.push_back(h);
+        return distance < 1e-12 * tree_.scale();
+    };
+    std::size_t runStart = 0;
+    for (std::size_t k = 0; k <= hits.size(); ++k) {
+        if (k > runStart && k < hits.size()) {
+            const LineSurfaceHit& previous = hits[k - 1];
+            const double gap = glm::length(hits[k].point - previous.point);
+            if (gap < same || (gap < near && touchesBetween(previous, hits[k]))) continue;
+        }
+        if (k > runStart) unique.push_back(hits[(runStart + k - 1) / 2]);
+        runStart = k;
     }
     for (LineSurfaceHit& h : unique) {
         h.t += shift;

@@ -129,6 +129,27 @@ TEST_CASE("tangent lines touch a cylinder once and rays keep only forward hits",
     REQUIRE(forward[0].t > 0.0);
 }
 
+TEST_CASE("a line along the torus seams finds all four crossings once", "[geom][intersect]") {
+    const Surface torus = makeTorus(3.0, 1.0);
+    const SurfaceIntersector intersector(torus);
+    // The x axis crosses the torus where both parameter seams (u = 0 / 1, v = 0 / 1) lie.
+    const auto hits = intersector.intersect({-10, 0, 0}, {1, 0, 0});
+    REQUIRE(hits.size() == 4);
+    requireHitsValid(torus, hits, {-10, 0, 0}, {1, 0, 0});
+    const double expected[4] = {6, 8, 12, 14};
+    for (int k = 0; k < 4; ++k)
+        REQUIRE(hits[static_cast<std::size_t>(k)].t == Approx(expected[k]).margin(1e-10));
+    // A line over the torus misses it; one along the top circle of the tube touches it once.
+    const auto top = intersector.intersect({0, 3, 5}, {1, 0, 0});
+    REQUIRE(top.empty());
+    const auto tangent = intersector.intersect({-10, 3, 1}, {1, 0, 0});
+    // The contact is of fourth order (z = 1 - x^4 / 72 along the line), so its place along the
+    // line is only defined to about (1e-12 * 72)^(1/4) = 3e-3.
+    REQUIRE(tangent.size() == 1);
+    REQUIRE(glm::length(tangent[0].point - glm::dvec3(0, 3, 1)) < 1e-2);
+    requireHitsValid(torus, tangent, {-10, 3, 1}, {1, 0, 0});
+}
+
 TEST_CASE("a line from a distant origin keeps its accuracy", "[geom][intersect]") {
     const Surface sphere = makeSphere(1.0);
     const SurfaceIntersector intersector(sphere);
