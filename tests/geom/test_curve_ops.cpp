@@ -194,3 +194,24 @@ TEST_CASE("periodic curves close smoothly", "[geom][periodic]") {
     }
     REQUIRE_THROWS_WITH(makePeriodicCurve(3, {{0, 0, 0}, {1, 0, 0}}), Catch::Contains("too few"));
 }
+
+TEST_CASE("knot and Bezier operations refuse bad input and leave it unchanged", "[geom][validate]") {
+    std::mt19937 rng(111);
+    const Curve c = randomCurve(rng, 3, 7, true, true);
+    const Curve copy = c;
+    // A break: interior knot of multiplicity degree + 1.
+    const Curve broken(2, {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1},
+                       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {3, 2, 0}});
+    REQUIRE_THROWS_WITH(split(broken, 0.5), Catch::Contains("multiplicity degree + 1"));
+    REQUIRE_THROWS_WITH(elevateDegree(broken, 1), Catch::Contains("break"));
+    REQUIRE_THROWS_WITH(split(c, c.domainStart()), Catch::Contains("not inside"));
+    REQUIRE_THROWS_WITH(subdivide(c, 0.5), Catch::Contains("not a single"));
+    const Curve bezier(2, {0, 0, 0, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}});
+    REQUIRE_THROWS_WITH(subdivide(bezier, 1.0), Catch::Contains("not inside"));
+    REQUIRE_THROWS_WITH(makePeriodicCurve(2, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {1, 1}),
+                        Catch::Contains("weights"));
+    REQUIRE_THROWS_AS(reparameterize(c, 0.0, std::nan("")), GeometryError);
+    REQUIRE(c.knots == copy.knots);
+    REQUIRE(c.points == copy.points);
+    REQUIRE(c.weights == copy.weights);
+}
