@@ -1,5 +1,6 @@
 #include "geom/SurfaceProjector.h"
 
+#include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
@@ -15,18 +16,14 @@ bool finite(const glm::dvec3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
-}  // namespace
-
-SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface) {
-}
-
-SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const {
-    // Newton on the gradient of |S - p|^2 / 2, with the Hessian shifted where it is not positive
-    // definite, a backtracking step, and parameters held on the domain edges they run into.
-    const double ua = tree_.domainStartU(), ub = tree_.domainEndU();
-    const double va = tree_.domainStartV(), vb = tree_.domainEndV();
+/// Newton on the gradient of |S - p|^2 / 2 over [ua,ub] x [va,vb], with the Hessian shifted where
+/// it is not positive definite, a backtracking step, and parameters held on the domain edges they
+/// run into. eval(u, v) gives a BezierPatchTree::PatchPoint with derivatives up to order 2.
+template <class Eval>
+SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb, const glm::dvec3& p,
+                        glm::dvec2 uv) {
     uv = glm::dvec2(std::clamp(uv.x, ua, ub), std::clamp(uv.y, va, vb));
-    BezierPatchTree::PatchPoint e = tree_.evaluate(uv.x, uv.y, 2);
+    BezierPatchTree::PatchPoint e = eval(uv.x, uv.y);
     glm::dvec3 r = e.point - p;
     double f = glm::dot(r, r);
     for (int it = 0; it < 60; ++it) {
@@ -64,7 +61,7 @@ SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const 
         for (int k = 0; k < 40; ++k, step *= 0.5) {
             const glm::dvec2 next(std::clamp(uv.x + step * du, ua, ub), std::clamp(uv.y + step * dv, va, vb));
             if (next == uv) break;
-            const BezierPatchTree::PatchPoint en = tree_.evaluate(next.x, next.y, 2);
+            const BezierPatchTree::PatchPoint en = eval(next.x, next.y);
             const glm::dvec3 rn = en.point - p;
             const double fn = glm::dot(rn, rn);
             if (fn <= f || (small && k == 0 && fn <= f * (1.0 + 1e-12) + 1e-300)) {
@@ -84,6 +81,16 @@ SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const 
     out.point = e.point;
     out.distance = std::sqrt(f);
     return out;
+}
+
+}  // namespace
+
+SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface) {
+}
+
+SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const {
+    return polishWith([this](double u, double v) { return tree_.evaluate(u, v, 2); }, tree_.domainStartU(),
+                      tree_.domainEndU(), tree_.domainStartV(), tree_.domainEndV(), p, uv);
 }
 
 SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const {
@@ -156,7 +163,17 @@ SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p) {
 }
 
 SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p, const glm::dvec2& guess) {
-    return SurfaceProjector(surface).closestPointFrom(p, guess);
+    // A local search needs no patch tree: the plain de Boor path is cheaper than building one.
+    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
+        throw GeometryError("closestPoint: the start guess is not finite");
+    auto eval = [&surface](double u, double v) {
+        const SurfaceDerivatives d = derivatives(surface, u, v, 2);
+        return BezierPatchTree::PatchPoint{d.at(0, 0), d.at(1, 0), d.at(0, 1),
+                                           d.at(2, 0), d.at(1, 1), d.at(0, 2)};
+    };
+    return polishWith(eval, surface.domainStartU(), surface.domainEndU(), surface.domainStartV(),
+                      surface.domainEndV(), p, guess);
 }
 
 }  // namespace geom
