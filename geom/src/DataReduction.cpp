@@ -1,0 +1,294 @@
+#include "geom/DataReduction.h"
+
+#include "LocalProjection.h"
+#include "geom/Basis.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/KnotSignificance.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace geom {
+namespace {
+
+// A spline with `sequences` coefficient sequences sharing one knot vector: a curve, or the
+// isoparametric curves of a surface net along the direction being reduced.
+struct Spline {
+    int degree = 0;
+    std::vector<double> knots;
+    std::vector<glm::dvec3> points;
+    std::size_t sequences = 1;
+};
+
+void checkOptions(const ReductionOptions& o, const char* where) {
+    const std::string w = where;
+    if (!(o.tolerance > 0.0)) throw GeometryError(w + ": tolerance must be positive (infinity for count mode)");
+    if (o.partitionSize < 1) throw GeometryError(w + ": partitionSize must be at least 1");
+    if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
+    if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
+    if (o.samplesPerSpan < 1) throw GeometryError(w + ": samplesPerSpan must be at least 1");
+    if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
+}
+
+// The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
+// tolerance, updates the caller's measurement state and returns true.
+template <class Accept>
+std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept) {
+    const bool measuring = std::isfinite(o.tolerance);
+    std::vector<double> blocked;
+    std::size_t removed = 0;
+    auto isBlocked = [&](double v) { return std::find(blocked.begin(), blocked.end(), v) != blocked.end(); };
+    auto tryRemove = [&](std::vector<double> values) {
+        std::sort(values.begin(), values.end());
+        ++fits;
+        LeastSquaresRemoval fit;
+        try {
+            fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
+        } catch (const GeometryError&) {
+            return false;  // the end conditions leave nothing to fit here
+        }
+        if (!accept(fit)) return false;
+        s.knots = std::move(fit.knots);
+        s.points = std::move(fit.points);
+        return true;
+    };
+
+    while (removed < o.maxRemovals) {
+        const std::size_t want =
+            std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
+        std::vector<KnotSignificance> partition;
+        for (const KnotSignificance& k : rankKnots(s.degree, s.knots, s.points, s.sequences)) {
+            if (isBlocked(k.value)) continue;
+            if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
+            partition.push_back(k);
+            if (partition.size() == want) break;
+        }
+        if (partition.empty()) break;
+
+        // Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
+        // takes the later ones whose local windows overlap its own. Knots are named by value, so
+        // the indices shifted by an earlier group's removal need no bookkeeping.
+        const std::size_t reach = static_cast<std::size_t>(s.degree) + 1;
+        std::vector<bool> placed(partition.size(), false);
+        for (std::size_t i = 0; i < partition.size() && removed < o.maxRemovals; ++i) {
+            if (placed[i]) continue;
+            std::vector<KnotSignificance> group{partition[i]};
+            placed[i] = true;
+            for (std::size_t j = i + 1; j < partition.size(); ++j) {
+                const std::size_t a = partition[i].index, b = partition[j].index;
+                if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
+                    group.push_back(partition[j]);
+                    placed[j] = true;
+                }
+            }
+            if (group.size() > o.maxRemovals - removed) group.resize(o.maxRemovals - removed);
+            if (group.size() > 1) {
+                std::vector<double> values;
+                for (const KnotSignificance& k : group) values.push_back(k.value);
+                if (tryRemove(values)) {
+                    removed += group.size();
+                    continue;
+                }
+            }
+            for (const KnotSignificance& k : group) {
+                if (removed >= o.maxRemovals) break;
+                if (tryRemove({k.value}))
+                    ++removed;
+                else
+                    blocked.push_back(k.value);
+            }
+        }
+    }
+    return removed;
+}
+
+Curve unchecked(int degree, std::vector<double> knots, std::vector<glm::dvec3> points) {
+    Curve c;
+    c.degree = degree;
+    c.knots = std::move(knots);
+    c.points = std::move(points);
+    return c;
+}
+
+Surface transposed(const Surface& s) {
+    Surface t;
+    t.degreeU = s.degreeV;
+    t.degreeV = s.degreeU;
+    t.knotsU = s.knotsV;
+    t.knotsV = s.knotsU;
+    t.countU = s.countV;
+    t.countV = s.countU;
+    t.points.resize(s.points.size());
+    for (std::size_t i = 0; i < s.countU; ++i)
+        for (std::size_t j = 0; j < s.countV; ++j) t.points[j * s.countU + i] = s.points[i * s.countV + j];
+    return t;
+}
+
+// Measured parametric error of a surface being reduced along u against the original's values
+// on a fixed grid (gridU x gridV, original parameters). The v direction does not change during
+// the pass, so its basis values are computed once.
+struct SurfaceGrid {
+    std::vector<double> gridU, gridV;
+    std::vector<glm::dvec3> values;  // original surface, gridU.size() x gridV.size()
+    std::vector<std::size_t> spanV;
+    std::vector<double> basisV;
+    int degreeV = 0;
+
+    void prepareAcross(const Surface& current) {
+        degreeV = current.degreeV;
+        const std::size_t w = static_cast<std::size_t>(degreeV) + 1;
+        spanV.resize(gridV.size());
+        basisV.resize(gridV.size() * w);
+        for (std::size_t k = 0; k < gridV.size(); ++k) {
+            spanV[k] = findSpan(degreeV, current.knotsV, current.countV, gridV[k]);
+            basisFunctions(spanV[k], gridV[k], degreeV, current.knotsV, std::span(basisV).subspan(k * w, w));
+        }
+    }
+
+    // True when |S(u, v) - S'(u, v)| <= tolerance at every grid vertex with u in [from, to].
+    bool within(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
+                std::size_t countV, double from, double to, double tolerance) const {
+        const std::size_t countU = points.size() / countV;
+        const std::size_t p = static_cast<std::size_t>(degreeU);
+        const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
+        std::vector<double> nu(p + 1);
+        std::vector<glm::dvec3> column(countV);
+        const auto first = std::lower_bound(gridU.begin(), gridU.end(), from);
+        const auto last = std::upper_bound(gridU.begin(), gridU.end(), to);
+        for (auto it = first; it != last; ++it) {
+            const std::size_t i = static_cast<std::size_t>(it - gridU.begin());
+            const std::size_t span = findSpan(degreeU, knotsU, countU, *it);
+            basisFunctions(span, *it, degreeU, knotsU, nu);
+            for (std::size_t j = 0; j < countV; ++j) {
+                glm::dvec3 c(0.0);
+                for (std::size_t k = 0; k <= p; ++k) c += nu[k] * points[(span - p + k) * countV + j];
+                column[j] = c;
+            }
+            for (std::size_t k = 0; k < gridV.size(); ++k) {
+                glm::dvec3 sv(0.0);
+                const std::size_t base = spanV[k] - static_cast<std::size_t>(degreeV);
+                for (std::size_t l = 0; l < wv; ++l) sv += basisV[k * wv + l] * column[base + l];
+                if (glm::length(sv - values[i * gridV.size() + k]) > tolerance) return false;
+            }
+        }
+        return true;
+    }
+};
+
+// One pass along u of `current` (the original seen in the same orientation is `grid`).
+std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o, std::size_t& fits) {
+    Spline s{current.degreeU, current.knotsU, current.points, current.countV};
+    grid.prepareAcross(current);
+    const bool measuring = std::isfinite(o.tolerance);
+    const std::size_t removed = reduceLoop(s, o, fits, [&](const LeastSquaresRemoval& fit) {
+        return !measuring || grid.within(s.degree, fit.knots, fit.points, s.sequences, fit.changedFrom,
+                                         fit.changedTo, o.tolerance);
+    });
+    current.knotsU = std::move(s.knots);
+    current.points = std::move(s.points);
+    current.countU = current.points.size() / current.countV;
+    return removed;
+}
+
+}  // namespace
+
+CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
+    checkOptions(options, "reduceCurve");
+    validate(curve);
+    if (curve.rational()) throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
+    const bool measuring = std::isfinite(options.tolerance);
+    const double tol = options.tolerance;
+
+    // Dense samples of the original; witness[i] is the parameter of the point of the current
+    // reduced curve nearest to sample i (it drifts from params[i] as knots go).
+    const std::vector<double> params =
+        spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
+    std::vector<glm::dvec3> samples(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) samples[i] = evaluate(curve, params[i]);
+    std::vector<double> witness = params, trial(params.size());
+    const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
+
+    Spline s{curve.degree, curve.knots, curve.points, 1};
+    CurveReduction out;
+    auto accept = [&](const LeastSquaresRemoval& fit) {
+        if (!measuring) return true;
+        const Curve g = unchecked(s.degree, fit.knots, fit.points);
+        // The curve changed on [changedFrom, changedTo]; a sample just outside may have its
+        // nearest point inside, so one original span more is measured on each side.
+        const std::size_t lo = static_cast<std::size_t>(
+            std::lower_bound(params.begin(), params.end(), fit.changedFrom) - params.begin());
+        const std::size_t hi = static_cast<std::size_t>(
+            std::upper_bound(params.begin(), params.end(), fit.changedTo) - params.begin());
+        const std::size_t first = lo > pad ? lo - pad : 0;
+        const std::size_t last = std::min(params.size(), hi + pad);
+        for (std::size_t i = first; i < last; ++i) {
+            // Original to reduced.
+            detail::LocalCurveProjection pr = detail::projectFrom(g, samples[i], witness[i]);
+            if (pr.distance > tol) {
+                const detail::LocalCurveProjection again = detail::projectFrom(g, samples[i], params[i]);
+                if (again.distance < pr.distance) pr = again;
+            }
+            if (pr.distance > tol) return false;
+            trial[i] = pr.u;
+            // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
+            const glm::dvec3 q = evaluate(g, params[i]);
+            double d = detail::projectFrom(curve, q, params[i]).distance;
+            if (d > tol) {
+                const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
+                const std::size_t k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
+                d = std::min(d, detail::projectFrom(curve, q, params[k]).distance);
+            }
+            if (d > tol) return false;
+        }
+        for (std::size_t i = first; i < last; ++i) witness[i] = trial[i];
+        return true;
+    };
+    out.removed = reduceLoop(s, options, out.fits, accept);
+    out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
+    out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    return out;
+}
+
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction, const ReductionOptions& options) {
+    checkOptions(options, "reduceSurface");
+    validate(surface);
+    if (surface.rational())
+        throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
+    SurfaceReduction out;
+    SurfaceGrid grid;
+    grid.gridU = spanSamples(surface.knotsU, surface.degreeU, surface.countU, options.samplesPerSpan);
+    grid.gridV = spanSamples(surface.knotsV, surface.degreeV, surface.countV, options.samplesPerSpan);
+    if (std::isfinite(options.tolerance)) {
+        grid.values.resize(grid.gridU.size() * grid.gridV.size());
+        for (std::size_t i = 0; i < grid.gridU.size(); ++i)
+            for (std::size_t j = 0; j < grid.gridV.size(); ++j)
+                grid.values[i * grid.gridV.size() + j] = evaluate(surface, grid.gridU[i], grid.gridV[j]);
+    }
+    Surface current = surface;
+    if (direction != ReductionDirection::V) out.removedU = reduceSurfaceAlongU(current, grid, options, out.fits);
+    if (direction != ReductionDirection::U) {
+        // Along v by transposition (the thesis's swap_uw), the grid transposed with it.
+        Surface t = transposed(current);
+        SurfaceGrid tg;
+        tg.gridU = grid.gridV;
+        tg.gridV = grid.gridU;
+        if (!grid.values.empty()) {
+            tg.values.resize(grid.values.size());
+            for (std::size_t i = 0; i < grid.gridU.size(); ++i)
+                for (std::size_t j = 0; j < grid.gridV.size(); ++j)
+                    tg.values[j * grid.gridU.size() + i] = grid.values[i * grid.gridV.size() + j];
+        }
+        out.removedV = reduceSurfaceAlongU(t, tg, options, out.fits);
+        current = transposed(t);
+    }
+    validate(current);
+    out.surface = std::move(current);
+    out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
+    return out;
+}
+
+}  // namespace geom
