@@ -1,6 +1,7 @@
 #include "geom/DataReduction.h"
 
 #include "LocalProjection.h"
+#include "RemovalDetail.h"
 #include "geom/Basis.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -34,10 +35,88 @@ void checkOptions(const ReductionOptions& o, const char* where) {
     if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
 }
 
+// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
+// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
+// knots contain the reduced ones, so the original is the reduced spline with the missing knots
+// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
+// previous approximation keeps the errors of successive removals from piling up.
+void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                     const std::vector<glm::dvec3>& d0) {
+    const char* where = "reduce (refit)";
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t nt = points.size() / sequences;
+    const std::size_t c0 = cL > 2 * p + 2 ? cL - 2 * p - 2 : 0;
+    const std::size_t c1 = std::min(nt - 1, cH + 2 * p + 2);
+    std::vector<double> u(tau.begin() + static_cast<std::ptrdiff_t>(c0),
+                          tau.begin() + static_cast<std::ptrdiff_t>(c1 + p + 2));
+    const std::size_t nl = c1 - c0 + 1;
+    const double lo = u[p], hi = u[nl];
+    std::vector<double> missing;
+    {
+        auto a = std::lower_bound(t0.begin(), t0.end(), lo);
+        const auto aEnd = std::lower_bound(t0.begin(), t0.end(), hi);
+        auto b = std::lower_bound(u.begin(), u.end(), lo);
+        const auto bEnd = std::lower_bound(u.begin(), u.end(), hi);
+        while (a != aEnd) {
+            if (b != bEnd && *b == *a) {
+                ++a, ++b;
+            } else {
+                if (b != bEnd && *b < *a) throw GeometryError(std::string(where) + ": knots are not a subset");
+                missing.push_back(*a++);
+            }
+        }
+    }
+    if (missing.empty()) return;
+    const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, missing, where);
+    const std::ptrdiff_t kp = std::lower_bound(u.begin(), u.end(), lo) - u.begin();
+    const std::ptrdiff_t j0 = std::lower_bound(t0.begin(), t0.end(), lo) - t0.begin();
+
+    const std::size_t freeCount = cH - cL + 1;
+    const std::size_t width = 3 * sequences;
+    std::vector<double> mat, rhs;
+    std::size_t fitRows = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        const std::ptrdiff_t jj = static_cast<std::ptrdiff_t>(r) - kp + j0;
+        if (jj < 0 || static_cast<std::size_t>(jj) + p + 1 >= t0.size()) continue;
+        const std::size_t j = static_cast<std::size_t>(jj);
+        bool same = true;
+        for (std::size_t m = 0; m <= p + 1 && same; ++m) same = u[r + m] == t0[j + m];
+        if (!same) continue;
+        bool touchesFree = false;
+        for (std::size_t c = cL; c <= cH; ++c) touchesFree = touchesFree || rows[r][c - c0] != 0.0;
+        if (!touchesFree) continue;
+        const double scale = std::sqrt((t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1));
+        if (scale == 0.0) continue;
+        for (std::size_t c = cL; c <= cH; ++c) mat.push_back(scale * rows[r][c - c0]);
+        for (std::size_t s = 0; s < sequences; ++s) {
+            glm::dvec3 target = d0[j * sequences + s];
+            for (std::size_t c = c0; c <= c1; ++c) {
+                if (c >= cL && c <= cH) continue;
+                const double w = rows[r][c - c0];
+                if (w != 0.0) target -= w * points[c * sequences + s];
+            }
+            rhs.push_back(scale * target.x);
+            rhs.push_back(scale * target.y);
+            rhs.push_back(scale * target.z);
+        }
+        ++fitRows;
+    }
+    if (fitRows < freeCount) return;  // keep the fit to the previous approximation
+    const std::vector<double> x = detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    for (std::size_t c = cL; c <= cH; ++c)
+        for (std::size_t s = 0; s < sequences; ++s) {
+            const std::size_t row = (c - cL) * width + 3 * s;
+            points[c * sequences + s] = glm::dvec3(x[row], x[row + 1], x[row + 2]);
+        }
+}
+
 // The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
 // tolerance, updates the caller's measurement state and returns true.
-template <class Accept>
-std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept) {
+template <class Accept, class Present>
+std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
+                       Present&& presentError, std::vector<Spline>* history = nullptr) {
+    const Spline original = s;
     const bool measuring = std::isfinite(o.tolerance);
     std::vector<double> blocked;
     std::size_t removed = 0;
@@ -48,20 +127,40 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         LeastSquaresRemoval fit;
         try {
             fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
+            refitToOriginal(s.degree, fit.knots, fit.points, s.sequences, fit.firstChanged, fit.lastChanged,
+                            original.knots, original.points);
         } catch (const GeometryError&) {
             return false;  // the end conditions leave nothing to fit here
         }
         if (!accept(fit)) return false;
         s.knots = std::move(fit.knots);
         s.points = std::move(fit.points);
+        if (history) history->push_back(s);
         return true;
     };
 
+    for (int round = 0;; ++round) {
+    const std::size_t removedBefore = removed;
+    blocked.clear();
     while (removed < o.maxRemovals) {
         const std::size_t want =
             std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
         std::vector<KnotSignificance> partition;
-        for (const KnotSignificance& k : rankKnots(s.degree, s.knots, s.points, s.sequences)) {
+        // Rank by the weight plus the error already spent near the knot (vs the original):
+        // removing a knot moves the curve by about its weight on top of what is there, so this
+        // spreads the tolerance over the curve instead of exhausting it in one place.
+        std::vector<KnotSignificance> ranked = rankKnots(s.degree, s.knots, s.points, s.sequences);
+        if (measuring) {
+            const std::size_t p = static_cast<std::size_t>(s.degree);
+            for (KnotSignificance& k : ranked) {
+                const double from = s.knots[k.index > p + 1 ? k.index - p - 1 : 0];
+                const double to = s.knots[std::min(s.knots.size() - 1, k.index + p + 1)];
+                k.weight += presentError(from, to);
+            }
+            std::stable_sort(ranked.begin(), ranked.end(),
+                             [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
+        }
+        for (const KnotSignificance& k : ranked) {
             if (isBlocked(k.value)) continue;
             if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
             partition.push_back(k);
@@ -102,6 +201,27 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
                     blocked.push_back(k.value);
             }
         }
+    }
+    // Every knot left failed against the accumulated local fits. A global best fit to the
+    // original on the knots now left usually lowers the error everywhere; if it keeps the
+    // tolerance, the knots that failed get another chance.
+    if (!measuring || removed == removedBefore || removed >= o.maxRemovals || round >= 4) break;
+    const std::size_t nt = s.points.size() / s.sequences;
+    const std::size_t fixedEnd = static_cast<std::size_t>(o.ends.fixedDerivatives) + 1;
+    if (nt < 2 * fixedEnd + 1) break;
+    LeastSquaresRemoval global;
+    global.knots = s.knots;
+    global.points = s.points;
+    global.firstChanged = fixedEnd;
+    global.lastChanged = nt - 1 - fixedEnd;
+    refitToOriginal(s.degree, global.knots, global.points, s.sequences, global.firstChanged, global.lastChanged,
+                    original.knots, original.points);
+    global.changedFrom = global.knots.front();
+    global.changedTo = global.knots.back();
+    ++fits;
+    if (!accept(global)) break;
+    s.points = std::move(global.points);
+    if (history) history->push_back(s);
     }
     return removed;
 }
@@ -184,10 +304,14 @@ std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const Reduc
     Spline s{current.degreeU, current.knotsU, current.points, current.countV};
     grid.prepareAcross(current);
     const bool measuring = std::isfinite(o.tolerance);
-    const std::size_t removed = reduceLoop(s, o, fits, [&](const LeastSquaresRemoval& fit) {
-        return !measuring || grid.within(s.degree, fit.knots, fit.points, s.sequences, fit.changedFrom,
-                                         fit.changedTo, o.tolerance);
-    });
+    const std::size_t removed = reduceLoop(
+        s, o, fits,
+        [&](const LeastSquaresRemoval& fit) {
+            // 1% in hand for what the grid misses between its vertices.
+            return !measuring || grid.within(s.degree, fit.knots, fit.points, s.sequences, fit.changedFrom,
+                                             fit.changedTo, 0.99 * o.tolerance);
+        },
+        [](double, double) { return 0.0; });
     current.knotsU = std::move(s.knots);
     current.points = std::move(s.points);
     current.countU = current.points.size() / current.countV;
@@ -201,15 +325,18 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     validate(curve);
     if (curve.rational()) throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
     const bool measuring = std::isfinite(options.tolerance);
-    const double tol = options.tolerance;
+    // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
+    // final measurement below has the last word.
+    const double tol = options.tolerance * 0.99;
 
     // Dense samples of the original; witness[i] is the parameter of the point of the current
     // reduced curve nearest to sample i (it drifts from params[i] as knots go).
     const std::vector<double> params =
         spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
     std::vector<glm::dvec3> samples(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) samples[i] = evaluate(curve, params[i]);
+    for (std::size_t i = 0; i < params.size(); ++i) samples[i] = detail::pointOf(curve, params[i]);
     std::vector<double> witness = params, trial(params.size());
+    std::vector<double> error(params.size(), 0.0), trialError(params.size());
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
 
     Spline s{curve.degree, curve.knots, curve.points, 1};
@@ -226,6 +353,15 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         const std::size_t first = lo > pad ? lo - pad : 0;
         const std::size_t last = std::min(params.size(), hi + pad);
         for (std::size_t i = first; i < last; ++i) {
+            // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
+            // projection is needed.
+            const glm::dvec3 q = detail::pointOf(g, params[i]);
+            const double parametric = glm::length(q - samples[i]);
+            if (parametric <= tol) {
+                trial[i] = witness[i];
+                trialError[i] = parametric;
+                continue;
+            }
             // Original to reduced.
             detail::LocalCurveProjection pr = detail::projectFrom(g, samples[i], witness[i]);
             if (pr.distance > tol) {
@@ -235,7 +371,6 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             if (pr.distance > tol) return false;
             trial[i] = pr.u;
             // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
-            const glm::dvec3 q = evaluate(g, params[i]);
             double d = detail::projectFrom(curve, q, params[i]).distance;
             if (d > tol) {
                 const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
@@ -243,13 +378,32 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                 d = std::min(d, detail::projectFrom(curve, q, params[k]).distance);
             }
             if (d > tol) return false;
+            trialError[i] = std::max(d, pr.distance);
         }
-        for (std::size_t i = first; i < last; ++i) witness[i] = trial[i];
+        for (std::size_t i = first; i < last; ++i) witness[i] = trial[i], error[i] = trialError[i];
         return true;
     };
-    out.removed = reduceLoop(s, options, out.fits, accept);
+    auto presentError = [&](double from, double to) {
+        const auto a = std::lower_bound(params.begin(), params.end(), from) - params.begin();
+        const auto b = std::upper_bound(params.begin(), params.end(), to) - params.begin();
+        double worst = 0.0;
+        for (auto i = a; i < b; ++i) worst = std::max(worst, error[static_cast<std::size_t>(i)]);
+        return worst;
+    };
+    std::vector<Spline> history;
+    out.removed = reduceLoop(s, options, out.fits, accept, presentError, &history);
     out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
-    out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    if (measuring || options.report) out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    // The guarantee: if the denser final measurement finds the tolerance broken, step back
+    // through the accepted states until it holds (the original always does).
+    while (measuring && out.deviation.maxError > options.tolerance) {
+        if (!history.empty()) history.pop_back();
+        const Spline& previous = history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
+        out.curve = Curve(previous.degree, previous.knots, previous.points);
+        out.removed = curve.points.size() - out.curve.points.size();
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        if (history.empty()) break;
+    }
     return out;
 }
 
@@ -287,7 +441,7 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
     }
     validate(current);
     out.surface = std::move(current);
-    out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
+    if (options.report) out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
     return out;
 }
 

@@ -12,24 +12,42 @@
 namespace geom {
 namespace {
 
-// Distance of every point to `curve`: the nearest of the curve's samples (a plain search, so no
-// local minimum is missed), then Newton from there and from the point's own parameter.
-std::vector<double> distancesTo(const Curve& curve, const std::vector<double>& params,
-                                const std::vector<glm::dvec3>& points, const std::vector<double>& seeds) {
-    std::vector<glm::dvec3> samples(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) samples[i] = evaluate(curve, params[i]);
+// Distance of every point to `curve`, globally: Newton from the point's own parameter gives an
+// upper bound; then every knot span whose control points' bounding box (which holds the span,
+// by the convex hull property) comes nearer than the bound is searched from its nearest sample.
+std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
+                                const std::vector<double>& seeds, int samplesPerSpan) {
+    struct Span {
+        double from, to;
+        glm::dvec3 lo, hi;
+    };
+    const std::size_t p = static_cast<std::size_t>(curve.degree);
+    std::vector<Span> spans;
+    for (std::size_t s = p; s < curve.points.size(); ++s) {
+        if (!(curve.knots[s + 1] > curve.knots[s])) continue;
+        Span sp{curve.knots[s], curve.knots[s + 1], curve.points[s - p], curve.points[s - p]};
+        for (std::size_t i = s - p; i <= s; ++i) {
+            sp.lo = glm::min(sp.lo, curve.points[i]);
+            sp.hi = glm::max(sp.hi, curve.points[i]);
+        }
+        spans.push_back(sp);
+    }
     std::vector<double> out(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-        std::size_t nearest = 0;
-        double best = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < samples.size(); ++k) {
-            const glm::dvec3 d = samples[k] - points[i];
-            const double dd = glm::dot(d, d);
-            if (dd < best) best = dd, nearest = k;
+        const glm::dvec3& q = points[i];
+        double best = detail::projectFrom(curve, q, seeds[i]).distance;
+        for (const Span& sp : spans) {
+            const glm::dvec3 gap = glm::max(glm::max(sp.lo - q, q - sp.hi), glm::dvec3(0.0));
+            if (glm::length(gap) >= best) continue;
+            double seed = sp.from, nearest = std::numeric_limits<double>::infinity();
+            for (int k = 0; k <= samplesPerSpan; ++k) {
+                const double u = sp.from + (sp.to - sp.from) * k / samplesPerSpan;
+                const double d = glm::length(detail::pointOf(curve, u) - q);
+                if (d < nearest) nearest = d, seed = u;
+            }
+            best = std::min(best, detail::projectFrom(curve, q, seed).distance);
         }
-        double dist = detail::projectFrom(curve, points[i], params[nearest]).distance;
-        dist = std::min(dist, detail::projectFrom(curve, points[i], seeds[i]).distance);
-        out[i] = dist;
+        out[i] = best;
     }
     return out;
 }
@@ -53,13 +71,10 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
     const std::vector<double> pa = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb = spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
     std::vector<glm::dvec3> a(pa.size()), b(pb.size());
-    for (std::size_t i = 0; i < pa.size(); ++i) a[i] = evaluate(original, pa[i]);
-    for (std::size_t i = 0; i < pb.size(); ++i) b[i] = evaluate(reduced, pb[i]);
-    // The other curve's samples are four times denser, so the nearest one seeds Newton well.
-    const std::vector<double> qa = spanSamples(reduced.knots, reduced.degree, reduced.points.size(), 4 * samplesPerSpan);
-    const std::vector<double> qb = spanSamples(original.knots, original.degree, original.points.size(), 4 * samplesPerSpan);
-    const std::vector<double> da = distancesTo(reduced, qa, a, pa);
-    const std::vector<double> db = distancesTo(original, qb, b, pb);
+    for (std::size_t i = 0; i < pa.size(); ++i) a[i] = detail::pointOf(original, pa[i]);
+    for (std::size_t i = 0; i < pb.size(); ++i) b[i] = detail::pointOf(reduced, pb[i]);
+    const std::vector<double> da = distancesTo(reduced, a, pa, 4);
+    const std::vector<double> db = distancesTo(original, b, pb, 4);
     CurveDeviation out;
     double sum = 0.0;
     for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;

@@ -1,5 +1,6 @@
 #include "geom/KnotRemoval.h"
 
+#include "RemovalDetail.h"
 #include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
@@ -11,46 +12,6 @@
 
 namespace geom {
 namespace {
-
-// Least squares min |M x - B| for a dense rows x cols matrix (row-major) and `width` right-hand
-// sides (row-major rows x width) by Householder QR; returns cols x width. M must have full column
-// rank, which the knot insertion matrix has.
-std::vector<double> solveLeastSquares(std::vector<double> m, std::size_t rows, std::size_t cols,
-                                      std::vector<double> b, std::size_t width) {
-    for (std::size_t k = 0; k < cols; ++k) {
-        double norm = 0.0;
-        for (std::size_t i = k; i < rows; ++i) norm += m[i * cols + k] * m[i * cols + k];
-        norm = std::sqrt(norm);
-        if (norm == 0.0) throw GeometryError("removeKnotsLeastSquares: the local fit is rank deficient");
-        const double alpha = m[k * cols + k] > 0.0 ? -norm : norm;
-        std::vector<double> v(rows - k);
-        for (std::size_t i = k; i < rows; ++i) v[i - k] = m[i * cols + k];
-        v[0] -= alpha;
-        double vv = 0.0;
-        for (double x : v) vv += x * x;
-        if (vv == 0.0) continue;
-        for (std::size_t c = k; c < cols; ++c) {
-            double dot = 0.0;
-            for (std::size_t i = k; i < rows; ++i) dot += v[i - k] * m[i * cols + c];
-            const double f = 2.0 * dot / vv;
-            for (std::size_t i = k; i < rows; ++i) m[i * cols + c] -= f * v[i - k];
-        }
-        for (std::size_t c = 0; c < width; ++c) {
-            double dot = 0.0;
-            for (std::size_t i = k; i < rows; ++i) dot += v[i - k] * b[i * width + c];
-            const double f = 2.0 * dot / vv;
-            for (std::size_t i = k; i < rows; ++i) b[i * width + c] -= f * v[i - k];
-        }
-    }
-    std::vector<double> x(cols * width, 0.0);
-    for (std::size_t k = cols; k-- > 0;)
-        for (std::size_t c = 0; c < width; ++c) {
-            double s = b[k * width + c];
-            for (std::size_t j = k + 1; j < cols; ++j) s -= m[k * cols + j] * x[j * width + c];
-            x[k * width + c] = s / m[k * cols + k];
-        }
-    return x;
-}
 
 double distance4(const glm::dvec4& a, const glm::dvec4& b) {
     return glm::length(a - b);
@@ -216,29 +177,11 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
     // values into the identity, one Boehm step each.
     const std::size_t c0 = static_cast<std::size_t>(std::max(0L, cL - static_cast<long>(p) - 1));
     const std::size_t c1 = std::min(nt - 1, static_cast<std::size_t>(cH) + p + 1);
-    const std::size_t nl = c1 - c0 + 1;
     std::vector<double> u(tau.begin() + static_cast<std::ptrdiff_t>(c0),
                           tau.begin() + static_cast<std::ptrdiff_t>(c1 + p + 2));
-    std::vector<std::vector<double>> rows(nl, std::vector<double>(nl, 0.0));
-    for (std::size_t i = 0; i < nl; ++i) rows[i][i] = 1.0;
-    for (std::size_t idx : removed) {
-        const double x = knots[idx];
-        const std::size_t n = rows.size();
-        if (!(x >= u[p] && x < u[n])) throw GeometryError(std::string(where) + ": internal window error");
-        const std::size_t k = static_cast<std::size_t>(std::upper_bound(u.begin(), u.end(), x) - u.begin()) - 1;
-        std::size_t s = 0;
-        for (std::size_t i = k + 1; i-- > 0 && u[i] == x;) ++s;
-        std::vector<std::vector<double>> next(n + 1);
-        for (std::size_t i = 0; i <= k - p; ++i) next[i] = rows[i];
-        for (std::size_t i = k - s + 1; i <= n; ++i) next[i] = rows[i - 1];
-        for (std::size_t i = k - p + 1; i + s <= k; ++i) {
-            const double alpha = (x - u[i]) / (u[i + p] - u[i]);
-            next[i].resize(nl);
-            for (std::size_t c = 0; c < nl; ++c) next[i][c] = alpha * rows[i][c] + (1.0 - alpha) * rows[i - 1][c];
-        }
-        rows = std::move(next);
-        u.insert(u.begin() + static_cast<std::ptrdiff_t>(k + 1), x);
-    }
+    std::vector<double> removedValues;
+    for (std::size_t idx : removed) removedValues.push_back(knots[idx]);
+    const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, removedValues, where);
 
     auto oldIndex = [&](std::size_t c) { return static_cast<long>(c) < cL ? c : c + nr; };
     const std::size_t freeCount = static_cast<std::size_t>(cH - cL + 1);
@@ -268,7 +211,7 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
         ++fitRows;
     }
     if (fitRows < freeCount) throw GeometryError(std::string(where) + ": the local fit is under-determined");
-    const std::vector<double> x = solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    const std::vector<double> x = detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
 
     LeastSquaresRemoval out;
     out.knots = std::move(tau);

@@ -19,14 +19,17 @@ struct ReductionOptions {
     std::size_t maxRemovals = std::numeric_limits<std::size_t>::max();
     /// Knots taken from the ranking before the weights are computed again (the thesis used 5).
     int partitionSize = 5;
-    /// Extra free coefficients on each side of the least-squares window.
-    int margin = 1;
+    /// Extra free coefficients on each side of the least-squares window (each removal is refitted
+    /// to the original on that window, so a wider one spreads the error; 4 measured best).
+    int margin = 4;
     /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
     /// (they would fail); 0 tries every knot.
     double weightCutoff = 8.0;
     EndConditions ends;
     /// Measurement density: samples per knot span of the original shape (each direction).
     int samplesPerSpan = 8;
+    /// Fill the result's deviation report (a global measurement after the loop).
+    bool report = true;
 };
 
 /// A reduced curve with its bookkeeping and its measured error report.
@@ -34,7 +37,7 @@ struct CurveReduction {
     Curve curve;
     std::size_t removed = 0;  ///< knots removed
     std::size_t fits = 0;     ///< least-squares fits tried (accepted or not)
-    CurveDeviation deviation;  ///< measured afterwards by measureDeviation(original, curve)
+    CurveDeviation deviation;  ///< measureDeviation(original, curve) when options.report
 };
 
 /// Rank / remove / approximate data reduction of a polynomial curve (Lyche and Morken, as in
@@ -55,7 +58,7 @@ struct SurfaceReduction {
     std::size_t removedU = 0;
     std::size_t removedV = 0;
     std::size_t fits = 0;
-    SurfaceDeviation deviation;  ///< measured afterwards by measureDeviation(original, surface)
+    SurfaceDeviation deviation;  ///< measureDeviation(original, surface) when options.report
 };
 
 /// Data reduction of a polynomial surface by whole knot rows: a row's weight is the largest
