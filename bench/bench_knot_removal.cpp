@@ -36,7 +36,8 @@ geom::Curve sislReduce(const geom::Curve& c, double tol, int& status) {
     std::vector<double> coef;
     for (const auto& p : c.points) coef.insert(coef.end(), {p.x, p.y, p.z});
     std::vector<double> knots = c.knots;
-    SISLCurve* in = newCurve(static_cast<int>(c.points.size()), c.degree + 1, knots.data(), coef.data(), 1, 3, 1);
+    SISLCurve* in =
+        newCurve(static_cast<int>(c.points.size()), c.degree + 1, knots.data(), coef.data(), 1, 3, 1);
     double eps[3] = {tol, tol, tol}, maxerr[3] = {0, 0, 0};
     SISLCurve* out = nullptr;
     status = 0;
@@ -46,7 +47,9 @@ geom::Curve sislReduce(const geom::Curve& c, double tol, int& status) {
         const int n = out->in, k = out->ik;
         std::vector<double> kn(out->et, out->et + n + k);
         std::vector<glm::dvec3> pts(static_cast<std::size_t>(n));
-        for (int i = 0; i < n; ++i) pts[static_cast<std::size_t>(i)] = {out->ecoef[3 * i], out->ecoef[3 * i + 1], out->ecoef[3 * i + 2]};
+        for (int i = 0; i < n; ++i)
+            pts[static_cast<std::size_t>(i)] = {out->ecoef[3 * i], out->ecoef[3 * i + 1],
+                                                out->ecoef[3 * i + 2]};
         result = geom::Curve(k - 1, kn, pts);
     }
     if (out) freeCurve(out);
@@ -70,8 +73,8 @@ int main() {
     };
     const std::vector<Named> curves{{"ibeam", geom::iBeamCurve()}, {"airfoil", geom::nacaAirfoilCurve()}};
     std::printf("Curves: control points left, measured Hausdorff error, time (best of up to 5 runs)\n");
-    std::printf("%-8s %8s | %6s %10s %9s | %6s %10s %9s | %6s\n", "curve", "tol", "geom", "error", "ms", "sisl",
-                "error", "ms", "ratio");
+    std::printf("%-8s %8s | %6s %10s %9s | %6s %10s %9s | %6s\n", "curve", "tol", "geom", "error", "ms",
+                "sisl", "error", "ms", "ratio");
     for (const Named& c : curves)
         for (double tol : {1e-2, 1.2e-3, 1e-3, 1e-4}) {
             geom::ReductionOptions o;
@@ -82,9 +85,10 @@ int main() {
             geom::Curve s;
             const double sms = timeMs([&] { s = sislReduce(c.curve, tol, status); });
             const double serr = s.points.empty() ? -1.0 : geom::measureDeviation(c.curve, s).maxError;
-            const double ratio = s.points.empty() ? 0.0 : double(r.curve.points.size()) / double(s.points.size());
-            std::printf("%-8s %8.1e | %6zu %10.3e %9.3f | %6zu %10.3e %9.3f | %6.2f\n", c.name, tol, r.curve.points.size(),
-                        r.deviation.maxError, ms, s.points.size(), serr, sms, ratio);
+            const double ratio =
+                s.points.empty() ? 0.0 : double(r.curve.points.size()) / double(s.points.size());
+            std::printf("%-8s %8.1e | %6zu %10.3e %9.3f | %6zu %10.3e %9.3f | %6.2f\n", c.name, tol,
+                        r.curve.points.size(), r.deviation.maxError, ms, s.points.size(), serr, sms, ratio);
             char key[64];
             std::snprintf(key, sizeof key, "%s_tol%.1e", c.name, tol);
             const std::string k = key;
@@ -118,16 +122,18 @@ int main() {
         const char* name;
         geom::Surface surface;
     };
-    const std::vector<NamedSurface> surfaces{{"paraboloid", geom::paraboloidSurface()}, {"wing", geom::wingSurface()}};
+    const std::vector<NamedSurface> surfaces{{"paraboloid", geom::paraboloidSurface()},
+                                             {"wing", geom::wingSurface()}};
     for (const NamedSurface& s : surfaces)
         for (double tol : {1e-2, 1e-3}) {
             geom::ReductionOptions o;
             o.tolerance = tol;
             geom::SurfaceReduction r;
-            const double ms = timeMs([&] { r = geom::reduceSurface(s.surface, geom::ReductionDirection::Both, o); }, 1);
+            const double ms =
+                timeMs([&] { r = geom::reduceSurface(s.surface, geom::ReductionDirection::Both, o); }, 1);
             std::printf("%-10s %8.1e  %zux%zu -> %zux%zu  max error %.3e  mean %.3e  %.1f ms\n", s.name, tol,
-                        s.surface.countU, s.surface.countV, r.surface.countU, r.surface.countV, r.deviation.maxError,
-                        r.deviation.meanError, ms);
+                        s.surface.countU, s.surface.countV, r.surface.countU, r.surface.countV,
+                        r.deviation.maxError, r.deviation.meanError, ms);
             char key[64];
             std::snprintf(key, sizeof key, "%s_tol%.0e", s.name, tol);
             const std::string k = key;

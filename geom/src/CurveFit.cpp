@@ -11,15 +11,18 @@
 namespace geom {
 
 std::vector<double> uniformParameters(std::size_t count) {
-    if (count < 2) throw GeometryError("uniformParameters: need at least 2 points, got " + std::to_string(count));
+    if (count < 2)
+        throw GeometryError("uniformParameters: need at least 2 points, got " + std::to_string(count));
     std::vector<double> params(count);
-    for (std::size_t i = 0; i < count; ++i) params[i] = static_cast<double>(i) / static_cast<double>(count - 1);
+    for (std::size_t i = 0; i < count; ++i)
+        params[i] = static_cast<double>(i) / static_cast<double>(count - 1);
     return params;
 }
 
 std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points) {
     if (points.size() < 2)
-        throw GeometryError("chordLengthParameters: need at least 2 points, got " + std::to_string(points.size()));
+        throw GeometryError("chordLengthParameters: need at least 2 points, got " +
+                            std::to_string(points.size()));
     std::vector<double> params(points.size(), 0.0);
     for (std::size_t i = 1; i < points.size(); ++i)
         params[i] = params[i - 1] + glm::length(points[i] - points[i - 1]);
@@ -58,8 +61,8 @@ Curve interpolateCurve(std::span<const glm::dvec3> points, std::span<const doubl
         throw GeometryError("interpolateCurve: parameters must run from 0 to 1");
     for (std::size_t i = 1; i < n; ++i)
         if (!(params[i] > params[i - 1]))
-            throw GeometryError("interpolateCurve: parameters must increase strictly (index " + std::to_string(i) +
-                                ")");
+            throw GeometryError("interpolateCurve: parameters must increase strictly (index " +
+                                std::to_string(i) + ")");
     std::vector<double> knots = averagedKnots(params, degree);
 
     // The collocation matrix is banded (degree+1 non-zeros per row); a dense solve with partial

@@ -27,7 +27,8 @@ struct Spline {
 
 void checkOptions(const ReductionOptions& o, const char* where) {
     const std::string w = where;
-    if (!(o.tolerance > 0.0)) throw GeometryError(w + ": tolerance must be positive (infinity for count mode)");
+    if (!(o.tolerance > 0.0))
+        throw GeometryError(w + ": tolerance must be positive (infinity for count mode)");
     if (o.partitionSize < 1) throw GeometryError(w + ": partitionSize must be at least 1");
     if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
     if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
@@ -62,7 +63,8 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
             if (b != bEnd && *b == *a) {
                 ++a, ++b;
             } else {
-                if (b != bEnd && *b < *a) throw GeometryError(std::string(where) + ": knots are not a subset");
+                if (b != bEnd && *b < *a)
+                    throw GeometryError(std::string(where) + ": knots are not a subset");
                 missing.push_back(*a++);
             }
         }
@@ -103,7 +105,8 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         ++fitRows;
     }
     if (fitRows < freeCount) return;  // keep the fit to the previous approximation
-    const std::vector<double> x = detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    const std::vector<double> x =
+        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) {
             const std::size_t row = (c - cL) * width + 3 * s;
@@ -140,88 +143,89 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
     };
 
     for (int round = 0;; ++round) {
-    const std::size_t removedBefore = removed;
-    blocked.clear();
-    while (removed < o.maxRemovals) {
-        const std::size_t want =
-            std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
-        std::vector<KnotSignificance> partition;
-        // Rank by the weight plus the error already spent near the knot (vs the original):
-        // removing a knot moves the curve by about its weight on top of what is there, so this
-        // spreads the tolerance over the curve instead of exhausting it in one place.
-        std::vector<KnotSignificance> ranked = rankKnots(s.degree, s.knots, s.points, s.sequences);
-        if (measuring) {
-            const std::size_t p = static_cast<std::size_t>(s.degree);
-            for (KnotSignificance& k : ranked) {
-                const double from = s.knots[k.index > p + 1 ? k.index - p - 1 : 0];
-                const double to = s.knots[std::min(s.knots.size() - 1, k.index + p + 1)];
-                k.weight += presentError(from, to);
+        const std::size_t removedBefore = removed;
+        blocked.clear();
+        while (removed < o.maxRemovals) {
+            const std::size_t want =
+                std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
+            std::vector<KnotSignificance> partition;
+            // Rank by the weight plus the error already spent near the knot (vs the original):
+            // removing a knot moves the curve by about its weight on top of what is there, so this
+            // spreads the tolerance over the curve instead of exhausting it in one place.
+            std::vector<KnotSignificance> ranked = rankKnots(s.degree, s.knots, s.points, s.sequences);
+            if (measuring) {
+                const std::size_t p = static_cast<std::size_t>(s.degree);
+                for (KnotSignificance& k : ranked) {
+                    const double from = s.knots[k.index > p + 1 ? k.index - p - 1 : 0];
+                    const double to = s.knots[std::min(s.knots.size() - 1, k.index + p + 1)];
+                    k.weight += presentError(from, to);
+                }
+                std::stable_sort(
+                    ranked.begin(), ranked.end(),
+                    [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
             }
-            std::stable_sort(ranked.begin(), ranked.end(),
-                             [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
-        }
-        for (const KnotSignificance& k : ranked) {
-            if (isBlocked(k.value)) continue;
-            if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
-            partition.push_back(k);
-            if (partition.size() == want) break;
-        }
-        if (partition.empty()) break;
+            for (const KnotSignificance& k : ranked) {
+                if (isBlocked(k.value)) continue;
+                if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
+                partition.push_back(k);
+                if (partition.size() == want) break;
+            }
+            if (partition.empty()) break;
 
-        // Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
-        // takes the later ones whose local windows overlap its own. Knots are named by value, so
-        // the indices shifted by an earlier group's removal need no bookkeeping.
-        const std::size_t reach = static_cast<std::size_t>(s.degree) + 1;
-        std::vector<bool> placed(partition.size(), false);
-        for (std::size_t i = 0; i < partition.size() && removed < o.maxRemovals; ++i) {
-            if (placed[i]) continue;
-            std::vector<KnotSignificance> group{partition[i]};
-            placed[i] = true;
-            for (std::size_t j = i + 1; j < partition.size(); ++j) {
-                const std::size_t a = partition[i].index, b = partition[j].index;
-                if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
-                    group.push_back(partition[j]);
-                    placed[j] = true;
+            // Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
+            // takes the later ones whose local windows overlap its own. Knots are named by value, so
+            // the indices shifted by an earlier group's removal need no bookkeeping.
+            const std::size_t reach = static_cast<std::size_t>(s.degree) + 1;
+            std::vector<bool> placed(partition.size(), false);
+            for (std::size_t i = 0; i < partition.size() && removed < o.maxRemovals; ++i) {
+                if (placed[i]) continue;
+                std::vector<KnotSignificance> group{partition[i]};
+                placed[i] = true;
+                for (std::size_t j = i + 1; j < partition.size(); ++j) {
+                    const std::size_t a = partition[i].index, b = partition[j].index;
+                    if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
+                        group.push_back(partition[j]);
+                        placed[j] = true;
+                    }
                 }
-            }
-            if (group.size() > o.maxRemovals - removed) group.resize(o.maxRemovals - removed);
-            if (group.size() > 1) {
-                std::vector<double> values;
-                for (const KnotSignificance& k : group) values.push_back(k.value);
-                if (tryRemove(values)) {
-                    removed += group.size();
-                    continue;
+                if (group.size() > o.maxRemovals - removed) group.resize(o.maxRemovals - removed);
+                if (group.size() > 1) {
+                    std::vector<double> values;
+                    for (const KnotSignificance& k : group) values.push_back(k.value);
+                    if (tryRemove(values)) {
+                        removed += group.size();
+                        continue;
+                    }
                 }
-            }
-            for (const KnotSignificance& k : group) {
-                if (removed >= o.maxRemovals) break;
-                if (tryRemove({k.value}))
-                    ++removed;
-                else
-                    blocked.push_back(k.value);
+                for (const KnotSignificance& k : group) {
+                    if (removed >= o.maxRemovals) break;
+                    if (tryRemove({k.value}))
+                        ++removed;
+                    else
+                        blocked.push_back(k.value);
+                }
             }
         }
-    }
-    // Every knot left failed against the accumulated local fits. A global best fit to the
-    // original on the knots now left usually lowers the error everywhere; if it keeps the
-    // tolerance, the knots that failed get another chance.
-    if (!measuring || removed == removedBefore || removed >= o.maxRemovals || round >= 4) break;
-    const std::size_t nt = s.points.size() / s.sequences;
-    const std::size_t fixedEnd = static_cast<std::size_t>(o.ends.fixedDerivatives) + 1;
-    if (nt < 2 * fixedEnd + 1) break;
-    LeastSquaresRemoval global;
-    global.knots = s.knots;
-    global.points = s.points;
-    global.firstChanged = fixedEnd;
-    global.lastChanged = nt - 1 - fixedEnd;
-    refitToOriginal(s.degree, global.knots, global.points, s.sequences, global.firstChanged, global.lastChanged,
-                    original.knots, original.points);
-    global.changedFrom = global.knots.front();
-    global.changedTo = global.knots.back();
-    ++fits;
-    if (!accept(global)) break;
-    s.points = std::move(global.points);
-    if (history) history->push_back(s);
+        // Every knot left failed against the accumulated local fits. A global best fit to the
+        // original on the knots now left usually lowers the error everywhere; if it keeps the
+        // tolerance, the knots that failed get another chance.
+        if (!measuring || removed == removedBefore || removed >= o.maxRemovals || round >= 4) break;
+        const std::size_t nt = s.points.size() / s.sequences;
+        const std::size_t fixedEnd = static_cast<std::size_t>(o.ends.fixedDerivatives) + 1;
+        if (nt < 2 * fixedEnd + 1) break;
+        LeastSquaresRemoval global;
+        global.knots = s.knots;
+        global.points = s.points;
+        global.firstChanged = fixedEnd;
+        global.lastChanged = nt - 1 - fixedEnd;
+        refitToOriginal(s.degree, global.knots, global.points, s.sequences, global.firstChanged,
+                        global.lastChanged, original.knots, original.points);
+        global.changedFrom = global.knots.front();
+        global.changedTo = global.knots.back();
+        ++fits;
+        if (!accept(global)) break;
+        s.points = std::move(global.points);
+        if (history) history->push_back(s);
     }
     return removed;
 }
@@ -300,7 +304,8 @@ struct SurfaceGrid {
 };
 
 // One pass along u of `current` (the original seen in the same orientation is `grid`).
-std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o, std::size_t& fits) {
+std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o,
+                                std::size_t& fits) {
     Spline s{current.degreeU, current.knotsU, current.points, current.countV};
     grid.prepareAcross(current);
     const bool measuring = std::isfinite(o.tolerance);
@@ -323,7 +328,8 @@ std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const Reduc
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
     checkOptions(options, "reduceCurve");
     validate(curve);
-    if (curve.rational()) throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
+    if (curve.rational())
+        throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
     const bool measuring = std::isfinite(options.tolerance);
     // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
     // final measurement below has the last word.
@@ -374,7 +380,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             double d = detail::projectFrom(curve, q, params[i]).distance;
             if (d > tol) {
                 const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
-                const std::size_t k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
+                const std::size_t k =
+                    static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
                 d = std::min(d, detail::projectFrom(curve, q, params[k]).distance);
             }
             if (d > tol) return false;
@@ -393,12 +400,14 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     std::vector<Spline> history;
     out.removed = reduceLoop(s, options, out.fits, accept, presentError, &history);
     out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
-    if (measuring || options.report) out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    if (measuring || options.report)
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
     // The guarantee: if the denser final measurement finds the tolerance broken, step back
     // through the accepted states until it holds (the original always does).
     while (measuring && out.deviation.maxError > options.tolerance) {
         if (!history.empty()) history.pop_back();
-        const Spline& previous = history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
+        const Spline& previous =
+            history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
         out.curve = Curve(previous.degree, previous.knots, previous.points);
         out.removed = curve.points.size() - out.curve.points.size();
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
@@ -407,7 +416,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     return out;
 }
 
-SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction, const ReductionOptions& options) {
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options) {
     checkOptions(options, "reduceSurface");
     validate(surface);
     if (surface.rational())
@@ -423,7 +433,8 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
                 grid.values[i * grid.gridV.size() + j] = evaluate(surface, grid.gridU[i], grid.gridV[j]);
     }
     Surface current = surface;
-    if (direction != ReductionDirection::V) out.removedU = reduceSurfaceAlongU(current, grid, options, out.fits);
+    if (direction != ReductionDirection::V)
+        out.removedU = reduceSurfaceAlongU(current, grid, options, out.fits);
     if (direction != ReductionDirection::U) {
         // Along v by transposition (the thesis's swap_uw), the grid transposed with it.
         Surface t = transposed(current);
@@ -441,7 +452,8 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
     }
     validate(current);
     out.surface = std::move(current);
-    if (options.report) out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
+    if (options.report)
+        out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
     return out;
 }
 

@@ -68,8 +68,10 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
-    const std::vector<double> pa = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
-    const std::vector<double> pb = spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
+    const std::vector<double> pa =
+        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
     std::vector<glm::dvec3> a(pa.size()), b(pb.size());
     for (std::size_t i = 0; i < pa.size(); ++i) a[i] = detail::pointOf(original, pa[i]);
     for (std::size_t i = 0; i < pb.size(); ++i) b[i] = detail::pointOf(reduced, pb[i]);
@@ -103,8 +105,10 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
             sum += d;
         }
     out.meanError = sum / static_cast<double>(out.error.size());
-    const std::vector<double> ou = spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
-    const std::vector<double> ov = spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
+    const std::vector<double> ou =
+        spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
+    const std::vector<double> ov =
+        spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
     for (double u : ou)
         for (double v : ov) {
             const glm::dvec3 p = evaluate(original, u, v);

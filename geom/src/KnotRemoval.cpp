@@ -90,7 +90,8 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
 
     std::vector<double> knots = U;
     const int m = n + p + 1;
-    for (int k = r + 1; k <= m; ++k) knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
+    for (int k = r + 1; k <= m; ++k)
+        knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
     knots.resize(knots.size() - static_cast<std::size_t>(t));
     int j = fout, i = fout;
     for (int k = 1; k < t; ++k) {
@@ -211,7 +212,8 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
         ++fitRows;
     }
     if (fitRows < freeCount) throw GeometryError(std::string(where) + ": the local fit is under-determined");
-    const std::vector<double> x = detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    const std::vector<double> x =
+        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
 
     LeastSquaresRemoval out;
     out.knots = std::move(tau);

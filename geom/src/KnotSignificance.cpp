@@ -22,7 +22,8 @@ std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> kno
         throw GeometryError(std::string(where) + ": " + std::to_string(knots.size()) + " knots for " +
                             std::to_string(count) + " coefficients of degree " + std::to_string(degree));
     if (knotIndex >= knots.size())
-        throw GeometryError(std::string(where) + ": knot index " + std::to_string(knotIndex) + " is past the end");
+        throw GeometryError(std::string(where) + ": knot index " + std::to_string(knotIndex) +
+                            " is past the end");
     const double z = knots[knotIndex];
     if (!(z > knots[p] && z < knots[count]))
         throw GeometryError(std::string(where) + ": knot " + std::to_string(knotIndex) + " (value " +
@@ -41,8 +42,8 @@ std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> kno
 // the square system [B | (-1)^i] [c; h] = d gives the error |h| directly. The thesis listing
 // computed the residual of this square system instead, which is zero (note 000, section 1.7).
 template <class V>
-double removalWeight(int degree, std::span<const double> knots, std::span<const V> points, std::size_t sequences,
-                     std::size_t r, int s) {
+double removalWeight(int degree, std::span<const double> knots, std::span<const V> points,
+                     std::size_t sequences, std::size_t r, int s) {
     const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t mult = static_cast<std::size_t>(s);
     const std::size_t m = p - mult + 3;  // rows = unknowns (c and h)
@@ -65,7 +66,8 @@ double removalWeight(int degree, std::span<const double> knots, std::span<const 
     // One matrix, one right-hand side per sequence: eliminate with partial pivoting once.
     std::vector<V> rhs(m * sequences);
     for (std::size_t q = 0; q < m; ++q)
-        for (std::size_t k = 0; k < sequences; ++k) rhs[q * sequences + k] = points[(firstRow + q) * sequences + k];
+        for (std::size_t k = 0; k < sequences; ++k)
+            rhs[q * sequences + k] = points[(firstRow + q) * sequences + k];
     for (std::size_t col = 0; col < m; ++col) {
         std::size_t pivot = col;
         for (std::size_t q = col + 1; q < m; ++q)
@@ -73,13 +75,15 @@ double removalWeight(int degree, std::span<const double> knots, std::span<const 
         if (std::abs(a[pivot * m + col]) < 1e-300) return std::numeric_limits<double>::infinity();
         if (pivot != col) {
             for (std::size_t c = 0; c < m; ++c) std::swap(a[pivot * m + c], a[col * m + c]);
-            for (std::size_t k = 0; k < sequences; ++k) std::swap(rhs[pivot * sequences + k], rhs[col * sequences + k]);
+            for (std::size_t k = 0; k < sequences; ++k)
+                std::swap(rhs[pivot * sequences + k], rhs[col * sequences + k]);
         }
         for (std::size_t q = col + 1; q < m; ++q) {
             const double f = a[q * m + col] / a[col * m + col];
             if (f == 0.0) continue;
             for (std::size_t c = col; c < m; ++c) a[q * m + c] -= f * a[col * m + c];
-            for (std::size_t k = 0; k < sequences; ++k) rhs[q * sequences + k] -= f * rhs[col * sequences + k];
+            for (std::size_t k = 0; k < sequences; ++k)
+                rhs[q * sequences + k] -= f * rhs[col * sequences + k];
         }
     }
     // Only the last unknown, h, is needed: it comes straight out of the triangular system.
@@ -93,7 +97,8 @@ double removalWeight(int degree, std::span<const double> knots, std::span<const 
 
 std::vector<glm::dvec4> homogeneous(const Curve& curve) {
     std::vector<glm::dvec4> h(curve.points.size());
-    for (std::size_t i = 0; i < h.size(); ++i) h[i] = glm::dvec4(curve.points[i] * curve.weight(i), curve.weight(i));
+    for (std::size_t i = 0; i < h.size(); ++i)
+        h[i] = glm::dvec4(curve.points[i] * curve.weight(i), curve.weight(i));
     return h;
 }
 
@@ -111,8 +116,9 @@ std::vector<KnotSignificance> rankImpl(int degree, std::span<const double> knots
         const auto [r, s] = interiorKnot(degree, knots, count, i, "rankKnots");
         out.push_back({r, knots[r], s, removalWeight<V>(degree, knots, points, sequences, r, s)});
     }
-    std::stable_sort(out.begin(), out.end(),
-                     [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
+    std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
+        return a.weight < b.weight;
+    });
     return out;
 }
 
@@ -122,15 +128,17 @@ double knotRemovalWeight(int degree, std::span<const double> knots, std::span<co
                          std::size_t sequences, std::size_t knotIndex) {
     if (degree < 1) throw GeometryError("knotRemovalWeight: degree must be at least 1");
     if (sequences == 0 || points.size() % sequences != 0)
-        throw GeometryError("knotRemovalWeight: " + std::to_string(points.size()) + " points do not split into " +
-                            std::to_string(sequences) + " sequences");
-    const auto [r, s] = interiorKnot(degree, knots, points.size() / sequences, knotIndex, "knotRemovalWeight");
+        throw GeometryError("knotRemovalWeight: " + std::to_string(points.size()) +
+                            " points do not split into " + std::to_string(sequences) + " sequences");
+    const auto [r, s] =
+        interiorKnot(degree, knots, points.size() / sequences, knotIndex, "knotRemovalWeight");
     return removalWeight<glm::dvec3>(degree, knots, points, sequences, r, s);
 }
 
 double knotRemovalWeight(const Curve& curve, std::size_t knotIndex) {
     if (!curve.rational()) return knotRemovalWeight(curve.degree, curve.knots, curve.points, 1, knotIndex);
-    const auto [r, s] = interiorKnot(curve.degree, curve.knots, curve.points.size(), knotIndex, "knotRemovalWeight");
+    const auto [r, s] =
+        interiorKnot(curve.degree, curve.knots, curve.points.size(), knotIndex, "knotRemovalWeight");
     const std::vector<glm::dvec4> h = homogeneous(curve);
     return removalWeight<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1, r, s);
 }

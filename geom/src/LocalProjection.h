@@ -77,7 +77,8 @@ inline glm::dvec3 pointOf(const Curve& curve, double u) {
     return d[0];
 }
 
-inline LocalCurveProjection projectFrom(const Curve& curve, const glm::dvec3& target, double u, int iterations = 8) {
+inline LocalCurveProjection projectFrom(const Curve& curve, const glm::dvec3& target, double u,
+                                        int iterations = 8) {
     const double lo = curve.domainStart(), hi = curve.domainEnd();
     u = std::clamp(u, lo, hi);
     LocalCurveProjection best{u, glm::length(pointOf(curve, u) - target)};
@@ -104,8 +105,8 @@ struct LocalSurfaceProjection {
     double distance = 0.0;
 };
 
-inline LocalSurfaceProjection projectFrom(const Surface& surface, const glm::dvec3& target, double u, double v,
-                                          int iterations = 6) {
+inline LocalSurfaceProjection projectFrom(const Surface& surface, const glm::dvec3& target, double u,
+                                          double v, int iterations = 6) {
     const double u0 = surface.domainStartU(), u1 = surface.domainEndU();
     const double v0 = surface.domainStartV(), v1 = surface.domainEndV();
     u = std::clamp(u, u0, u1);

@@ -16,7 +16,7 @@ namespace geom::detail {
 // sides (row-major rows x width) by Householder QR; returns cols x width. M must have full column
 // rank, which the knot insertion matrix has.
 inline std::vector<double> solveLeastSquares(std::vector<double> m, std::size_t rows, std::size_t cols,
-                                      std::vector<double> b, std::size_t width) {
+                                             std::vector<double> b, std::size_t width) {
     for (std::size_t k = 0; k < cols; ++k) {
         double norm = 0.0;
         for (std::size_t i = k; i < rows; ++i) norm += m[i * cols + k] * m[i * cols + k];
@@ -65,7 +65,8 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
     for (double x : values) {
         const std::size_t n = rows.size();
         if (!(x >= u[p] && x < u[n])) throw GeometryError(std::string(where) + ": internal window error");
-        const std::size_t k = static_cast<std::size_t>(std::upper_bound(u.begin(), u.end(), x) - u.begin()) - 1;
+        const std::size_t k =
+            static_cast<std::size_t>(std::upper_bound(u.begin(), u.end(), x) - u.begin()) - 1;
         std::size_t s = 0;
         for (std::size_t i = k + 1; i-- > 0 && u[i] == x;) ++s;
         std::vector<std::vector<double>> next(n + 1);
@@ -74,7 +75,8 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
         for (std::size_t i = k - p + 1; i + s <= k; ++i) {
             const double alpha = (x - u[i]) / (u[i + p] - u[i]);
             next[i].assign(nl, 0.0);
-            for (std::size_t c = 0; c < nl; ++c) next[i][c] = alpha * rows[i][c] + (1.0 - alpha) * rows[i - 1][c];
+            for (std::size_t c = 0; c < nl; ++c)
+                next[i][c] = alpha * rows[i][c] + (1.0 - alpha) * rows[i - 1][c];
         }
         rows = std::move(next);
         u.insert(u.begin() + static_cast<std::ptrdiff_t>(k + 1), x);

@@ -44,7 +44,8 @@ double freshKnot(std::mt19937& rng, const Curve& c) {
 
 }  // namespace
 
-TEST_CASE("knot weights: an inserted knot weighs nothing, original knots weigh something", "[geom][knots][removal]") {
+TEST_CASE("knot weights: an inserted knot weighs nothing, original knots weigh something",
+          "[geom][knots][removal]") {
     std::mt19937 rng(21);
     for (int p = 2; p <= 5; ++p) {
         const Curve c = randomCurve(rng, p, static_cast<std::size_t>(p + 6), false, true);
@@ -74,7 +75,8 @@ TEST_CASE("knot weights handle multiple knots and any degree", "[geom][knots][re
         // A double knot made by insertion: removing one occurrence is free.
         const Curve d = insertKnot(c, u, 2);
         const auto ranked = rankKnots(d);
-        const auto it = std::find_if(ranked.begin(), ranked.end(), [&](const KnotSignificance& k) { return k.value == u; });
+        const auto it = std::find_if(ranked.begin(), ranked.end(),
+                                     [&](const KnotSignificance& k) { return k.value == u; });
         REQUIRE(it != ranked.end());
         REQUIRE(it->multiplicity == 2);
         REQUIRE(it->weight < 1e-12);
@@ -84,13 +86,16 @@ TEST_CASE("knot weights handle multiple knots and any degree", "[geom][knots][re
         REQUIRE(knotMultiplicity(c.knots, original) == 1);
         const Curve e = insertKnot(c, original, 1);
         const std::size_t last =
-            static_cast<std::size_t>(std::upper_bound(e.knots.begin(), e.knots.end(), original) - e.knots.begin()) - 1;
+            static_cast<std::size_t>(std::upper_bound(e.knots.begin(), e.knots.end(), original) -
+                                     e.knots.begin()) -
+            1;
         REQUIRE(knotRemovalWeight(e, last - 1) == knotRemovalWeight(e, last));
         REQUIRE(knotRemovalWeight(e, last) < 1e-12);
     }
 }
 
-TEST_CASE("knot weights are the l-infinity error, no larger than a least-squares fit gives", "[geom][knots][removal]") {
+TEST_CASE("knot weights are the l-infinity error, no larger than a least-squares fit gives",
+          "[geom][knots][removal]") {
     std::mt19937 rng(23);
     for (int p = 2; p <= 5; ++p) {
         const Curve c = randomCurve(rng, p, static_cast<std::size_t>(p + 7), false, true);
@@ -106,7 +111,8 @@ TEST_CASE("knot weights are the l-infinity error, no larger than a least-squares
         Curve scaled = c;
         for (auto& q : scaled.points) q *= 3.0;
         const auto a = rankKnots(c), b = rankKnots(scaled);
-        for (std::size_t i = 0; i < a.size(); ++i) REQUIRE(b[i].weight == Approx(3.0 * a[i].weight).epsilon(1e-9));
+        for (std::size_t i = 0; i < a.size(); ++i)
+            REQUIRE(b[i].weight == Approx(3.0 * a[i].weight).epsilon(1e-9));
     }
 }
 
@@ -139,7 +145,8 @@ TEST_CASE("exact knot removal (A5.8) undoes knot insertion, rational too", "[geo
     }
 }
 
-TEST_CASE("exact knot removal keeps a knot the curve needs and stops at the first that fails", "[geom][knots][removal]") {
+TEST_CASE("exact knot removal keeps a knot the curve needs and stops at the first that fails",
+          "[geom][knots][removal]") {
     std::mt19937 rng(26);
     const Curve c = randomCurve(rng, 3, 9, false, true);
     const double original = c.knots[5];
@@ -160,12 +167,14 @@ TEST_CASE("exact knot removal keeps a knot the curve needs and stops at the firs
     REQUIRE_THROWS_AS(removeKnot(c, 0.5 * (c.knots[4] + c.knots[5]) + 1e-7, 1), GeometryError);
 }
 
-TEST_CASE("least-squares removal of several nearby knots recovers the simpler curve", "[geom][knots][removal]") {
+TEST_CASE("least-squares removal of several nearby knots recovers the simpler curve",
+          "[geom][knots][removal]") {
     std::mt19937 rng(27);
     for (int p = 2; p <= 5; ++p) {
         const Curve c = randomCurve(rng, p, static_cast<std::size_t>(p + 8), false, true);
         // Three new knots in one span and its neighbours.
-        const double a = c.knots[static_cast<std::size_t>(p) + 3], b = c.knots[static_cast<std::size_t>(p) + 4];
+        const double a = c.knots[static_cast<std::size_t>(p) + 3],
+                     b = c.knots[static_cast<std::size_t>(p) + 4];
         const std::vector<double> inserted{a + 0.2 * (b - a), a + 0.5 * (b - a), a + 0.7 * (b - a)};
         const Curve d = refineKnots(c, inserted);
         for (int margin = 0; margin <= 2; ++margin) {
@@ -187,7 +196,8 @@ TEST_CASE("least-squares removal keeps end conditions and reports its window", "
     for (int fixed = 0; fixed <= 2; ++fixed) {
         EndConditions ends;
         ends.fixedDerivatives = fixed;
-        const LeastSquaresRemoval r = removeKnotsLeastSquares(3, c.knots, c.points, 1, std::vector<double>{near}, ends);
+        const LeastSquaresRemoval r =
+            removeKnotsLeastSquares(3, c.knots, c.points, 1, std::vector<double>{near}, ends);
         REQUIRE(r.points.size() == c.points.size() - 1);
         for (int k = 0; k <= fixed; ++k) {
             REQUIRE(r.points[static_cast<std::size_t>(k)] == c.points[static_cast<std::size_t>(k)]);
@@ -198,22 +208,29 @@ TEST_CASE("least-squares removal keeps end conditions and reports its window", "
         // Outside [changedFrom, changedTo] the curve is untouched.
         const Curve g(3, r.knots, r.points);
         for (double u = c.domainStart(); u <= c.domainEnd(); u += 0.01)
-            if (u < r.changedFrom || u > r.changedTo) REQUIRE(glm::length(evaluate(g, u) - evaluate(c, u)) < 1e-12);
+            if (u < r.changedFrom || u > r.changedTo)
+                REQUIRE(glm::length(evaluate(g, u) - evaluate(c, u)) < 1e-12);
         // End derivatives held: the curve's derivatives at the ends agree up to `fixed`.
         const auto d0 = derivatives(c, c.domainStart(), fixed), e0 = derivatives(g, g.domainStart(), fixed);
-        for (int k = 0; k <= fixed; ++k) REQUIRE(glm::length(d0[static_cast<std::size_t>(k)] - e0[static_cast<std::size_t>(k)]) < 1e-9);
+        for (int k = 0; k <= fixed; ++k)
+            REQUIRE(glm::length(d0[static_cast<std::size_t>(k)] - e0[static_cast<std::size_t>(k)]) < 1e-9);
     }
     EndConditions tangents;
     tangents.fixedDerivatives = 1;
     REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{c.knots[4]}, tangents),
                         Catch::Contains("end derivatives"));
-    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{c.knots[c.points.size() - 1]}, tangents),
-                        Catch::Contains("end derivatives"));
+    REQUIRE_THROWS_WITH(
+        removeKnotsLeastSquares(c, std::vector<double>{c.knots[c.points.size() - 1]}, tangents),
+        Catch::Contains("end derivatives"));
     REQUIRE_NOTHROW(removeKnotsLeastSquares(c, std::vector<double>{c.knots[5]}, tangents));
-    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{0.123456}), Catch::Contains("not a knot"));
-    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{0.0}), Catch::Contains("not an interior knot"));
-    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{c.knots[5], c.knots[5]}), Catch::Contains("twice"));
+    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{0.123456}),
+                        Catch::Contains("not a knot"));
+    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{0.0}),
+                        Catch::Contains("not an interior knot"));
+    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(c, std::vector<double>{c.knots[5], c.knots[5]}),
+                        Catch::Contains("twice"));
     Curve rational = c;
     rational.weights.assign(c.points.size(), 1.0);
-    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(rational, std::vector<double>{c.knots[5]}), Catch::Contains("rational"));
+    REQUIRE_THROWS_WITH(removeKnotsLeastSquares(rational, std::vector<double>{c.knots[5]}),
+                        Catch::Contains("rational"));
 }

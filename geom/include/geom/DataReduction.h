@@ -35,8 +35,8 @@ struct ReductionOptions {
 /// A reduced curve with its bookkeeping and its measured error report.
 struct CurveReduction {
     Curve curve;
-    std::size_t removed = 0;  ///< knots removed
-    std::size_t fits = 0;     ///< least-squares fits tried (accepted or not)
+    std::size_t removed = 0;   ///< knots removed
+    std::size_t fits = 0;      ///< least-squares fits tried (accepted or not)
     CurveDeviation deviation;  ///< measureDeviation(original, curve) when options.report
 };
 
@@ -67,6 +67,7 @@ struct SurfaceReduction {
 /// only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter grid of the
 /// original in the changed strip (this bounds the distance between the surfaces from above).
 /// Throws GeometryError for a rational surface or bad options.
-SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction, const ReductionOptions& options);
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options);
 
 }  // namespace geom

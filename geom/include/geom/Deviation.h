@@ -29,9 +29,9 @@ struct SurfaceDeviation {
     double meanError = 0.0;             ///< mean of the error field
     double maxOriginalToReduced = 0.0;  ///< over the same grid on the original surface
     double maxReducedToOriginal = 0.0;  ///< max of the error field
-    std::vector<double> u;              ///< grid parameters in u (samplesPerSpan per span of the reduced surface)
-    std::vector<double> v;              ///< grid parameters in v
-    std::vector<double> error;          ///< error[i * v.size() + j]: distance from S'(u[i], v[j]) to the original
+    std::vector<double> u;      ///< grid parameters in u (samplesPerSpan per span of the reduced surface)
+    std::vector<double> v;      ///< grid parameters in v
+    std::vector<double> error;  ///< error[i * v.size() + j]: distance from S'(u[i], v[j]) to the original
 };
 
 /// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and

@@ -55,7 +55,7 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
                                             int margin = 1);
 
 /// Least-squares removal of one occurrence of each value from a polynomial curve (see above).
-Curve removeKnotsLeastSquares(const Curve& curve, std::span<const double> values, const EndConditions& ends = {},
-                              int margin = 1);
+Curve removeKnotsLeastSquares(const Curve& curve, std::span<const double> values,
+                              const EndConditions& ends = {}, int margin = 1);
 
 }  // namespace geom
