@@ -1,8 +1,10 @@
 #include "geom/Deviation.h"
 
 #include "LocalProjection.h"
+#include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/SurfaceProjector.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,43 +14,16 @@
 namespace geom {
 namespace {
 
-// Distance of every point to `curve`, globally: Newton from the point's own parameter gives an
-// upper bound; then every knot span whose control points' bounding box (which holds the span,
-// by the convex hull property) comes nearer than the bound is searched from its nearest sample.
+// Distance of every point to `curve`: the global closest point (geom's CurveProjector), and
+// Newton from the point's own parameter; both are distances to points of the curve, so the
+// smaller is the better measurement.
 std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
-                                const std::vector<double>& seeds, int samplesPerSpan) {
-    struct Span {
-        double from, to;
-        glm::dvec3 lo, hi;
-    };
-    const std::size_t p = static_cast<std::size_t>(curve.degree);
-    std::vector<Span> spans;
-    for (std::size_t s = p; s < curve.points.size(); ++s) {
-        if (!(curve.knots[s + 1] > curve.knots[s])) continue;
-        Span sp{curve.knots[s], curve.knots[s + 1], curve.points[s - p], curve.points[s - p]};
-        for (std::size_t i = s - p; i <= s; ++i) {
-            sp.lo = glm::min(sp.lo, curve.points[i]);
-            sp.hi = glm::max(sp.hi, curve.points[i]);
-        }
-        spans.push_back(sp);
-    }
+                                const std::vector<double>& seeds) {
+    const CurveProjector projector(curve);
     std::vector<double> out(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec3& q = points[i];
-        double best = detail::projectFrom(curve, q, seeds[i]).distance;
-        for (const Span& sp : spans) {
-            const glm::dvec3 gap = glm::max(glm::max(sp.lo - q, q - sp.hi), glm::dvec3(0.0));
-            if (glm::length(gap) >= best) continue;
-            double seed = sp.from, nearest = std::numeric_limits<double>::infinity();
-            for (int k = 0; k <= samplesPerSpan; ++k) {
-                const double u = sp.from + (sp.to - sp.from) * k / samplesPerSpan;
-                const double d = glm::length(detail::pointOf(curve, u) - q);
-                if (d < nearest) nearest = d, seed = u;
-            }
-            best = std::min(best, detail::projectFrom(curve, q, seed).distance);
-        }
-        out[i] = best;
-    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+        out[i] = std::min(projector.closestPoint(points[i]).distance,
+                          detail::projectFrom(curve, points[i], seeds[i]).distance);
     return out;
 }
 
@@ -75,8 +50,8 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
     std::vector<glm::dvec3> a(pa.size()), b(pb.size());
     for (std::size_t i = 0; i < pa.size(); ++i) a[i] = detail::pointOf(original, pa[i]);
     for (std::size_t i = 0; i < pb.size(); ++i) b[i] = detail::pointOf(reduced, pb[i]);
-    const std::vector<double> da = distancesTo(reduced, a, pa, 4);
-    const std::vector<double> db = distancesTo(original, b, pb, 4);
+    const std::vector<double> da = distancesTo(reduced, a, pa);
+    const std::vector<double> db = distancesTo(original, b, pb);
     CurveDeviation out;
     double sum = 0.0;
     for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
@@ -96,10 +71,12 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
     out.v = spanSamples(reduced.knotsV, reduced.degreeV, reduced.countV, samplesPerSpan);
     out.error.resize(out.u.size() * out.v.size());
     double sum = 0.0;
+    const SurfaceProjector toOriginal(original), toReduced(reduced);
     for (std::size_t i = 0; i < out.u.size(); ++i)
         for (std::size_t j = 0; j < out.v.size(); ++j) {
             const glm::dvec3 p = evaluate(reduced, out.u[i], out.v[j]);
-            const double d = detail::projectFrom(original, p, out.u[i], out.v[j]).distance;
+            const double d = std::min(toOriginal.closestPoint(p).distance,
+                                      detail::projectFrom(original, p, out.u[i], out.v[j]).distance);
             out.error[i * out.v.size() + j] = d;
             out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d);
             sum += d;
@@ -112,8 +89,9 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
     for (double u : ou)
         for (double v : ov) {
             const glm::dvec3 p = evaluate(original, u, v);
-            out.maxOriginalToReduced =
-                std::max(out.maxOriginalToReduced, detail::projectFrom(reduced, p, u, v).distance);
+            const double d =
+                std::min(toReduced.closestPoint(p).distance, detail::projectFrom(reduced, p, u, v).distance);
+            out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
         }
     out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
     return out;

@@ -179,7 +179,7 @@ TEST_CASE("surface reduction keeps the measured distance within the tolerance, d
             if (dir == ReductionDirection::U) REQUIRE(r.removedV == 0);
             if (dir == ReductionDirection::V) REQUIRE(r.removedU == 0);
             REQUIRE(r.deviation.maxError <= o.tolerance);
-            const SurfaceDeviation dense = measureDeviation(s, r.surface, 10);
+            const SurfaceDeviation dense = measureDeviation(s, r.surface, 6);
             REQUIRE(dense.maxError <= o.tolerance * 1.001);
             // The error field: one value per grid vertex of the reduced surface.
             REQUIRE(r.deviation.error.size() == r.deviation.u.size() * r.deviation.v.size());

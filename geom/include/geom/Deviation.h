@@ -18,8 +18,8 @@ struct CurveDeviation {
 };
 
 /// Samples each curve densely (samplesPerSpan points in every non-empty knot span, ends
-/// included) and measures each sample's distance to the other curve by point inversion: the
-/// nearest of the other curve's samples, refined by Newton iteration.
+/// included) and measures each sample's distance to the other curve by point inversion (the
+/// global closest point of CurveProjector, or Newton from the same parameter where that is nearer).
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
@@ -35,9 +35,10 @@ struct SurfaceDeviation {
 };
 
 /// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and
-/// measures every vertex's distance to the original surface by point inversion (Newton from
-/// the same parameters), then the original's grid to the reduced surface the same way. Both
-/// surfaces must share the parameter domain (as knot removal keeps it).
+/// measures every vertex's distance to the original surface by point inversion (the global
+/// closest point of SurfaceProjector, or Newton from the same parameters where that is nearer),
+/// then the original's grid to the reduced surface the same way. Both surfaces must share the
+/// parameter domain (as knot removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
 /// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.
