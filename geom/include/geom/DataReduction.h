@@ -28,7 +28,8 @@ struct ReductionOptions {
     EndConditions ends;
     /// Measurement density: samples per knot span of the original shape (each direction).
     int samplesPerSpan = 8;
-    /// Fill the result's deviation report (a global measurement after the loop).
+    /// Fill the result's deviation report in count mode too (a global measurement after the
+    /// loop). In tolerance mode the report is always made: it is the final check.
     bool report = true;
 };
 
@@ -46,7 +47,10 @@ struct CurveReduction {
 /// with one local least-squares fit, and keep a removal only if the distance from the original
 /// stays within the tolerance, measured on dense samples of both curves by point inversion in
 /// the changed interval. A group that fails is retried knot by knot; a knot that fails is not
-/// tried again. Throws GeometryError for a rational curve or bad options.
+/// tried again until a global refit to the original succeeds. A denser final measurement
+/// (measureDeviation) checks the result; should it find the tolerance broken, the result steps
+/// back to the last accepted state that keeps it. Throws GeometryError for a rational curve or
+/// bad options.
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options);
 
 /// Which knot vectors of a surface to reduce; Both reduces u, then v.
@@ -66,7 +70,9 @@ struct SurfaceReduction {
 /// isoparametric curve gets its own least-squares fit on the same window, and a removal is kept
 /// only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter grid of the
 /// original in the changed strip (this bounds the distance between the surfaces from above).
-/// Throws GeometryError for a rational surface or bad options.
+/// The final measurement (measureDeviation) checks the result; should it find the tolerance
+/// broken, the reduction runs again with less of the tolerance for the grid. Throws
+/// GeometryError for a rational surface or bad options.
 SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
                                const ReductionOptions& options);
 
