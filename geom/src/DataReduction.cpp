@@ -44,60 +44,39 @@ void checkOptions(const ReductionOptions& o, const char* where) {
 void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
                      std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
                      const std::vector<glm::dvec3>& d0) {
-    const char* where = "reduce (refit)";
     const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t nt = points.size() / sequences;
-    const std::size_t c0 = cL > 2 * p + 2 ? cL - 2 * p - 2 : 0;
-    const std::size_t c1 = std::min(nt - 1, cH + 2 * p + 2);
-    std::vector<double> u(tau.begin() + static_cast<std::ptrdiff_t>(c0),
-                          tau.begin() + static_cast<std::ptrdiff_t>(c1 + p + 2));
-    const std::size_t nl = c1 - c0 + 1;
-    const double lo = u[p], hi = u[nl];
-    std::vector<double> missing;
-    {
-        auto a = std::lower_bound(t0.begin(), t0.end(), lo);
-        const auto aEnd = std::lower_bound(t0.begin(), t0.end(), hi);
-        auto b = std::lower_bound(u.begin(), u.end(), lo);
-        const auto bEnd = std::lower_bound(u.begin(), u.end(), hi);
-        while (a != aEnd) {
-            if (b != bEnd && *b == *a) {
-                ++a, ++b;
-            } else {
-                if (b != bEnd && *b < *a)
-                    throw GeometryError(std::string(where) + ": knots are not a subset");
-                missing.push_back(*a++);
-            }
-        }
-    }
-    if (missing.empty()) return;
-    const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, missing, where);
-    const std::ptrdiff_t kp = std::lower_bound(u.begin(), u.end(), lo) - u.begin();
-    const std::ptrdiff_t j0 = std::lower_bound(t0.begin(), t0.end(), lo) - t0.begin();
+    const std::size_t n0 = d0.size() / sequences;
+    // The original coefficients whose rows can reach the free columns: their knot intervals
+    // meet the free columns' support [tau[cL], tau[cH+p+1]].
+    const double from = tau[cL], to = tau[cH + p + 1];
+    const std::size_t jFirst = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+        0, (std::lower_bound(t0.begin(), t0.end(), from) - t0.begin()) - static_cast<std::ptrdiff_t>(p) - 1));
+    const std::size_t jLast =
+        std::min(n0 - 1, static_cast<std::size_t>(std::upper_bound(t0.begin(), t0.end(), to) - t0.begin()));
 
     const std::size_t freeCount = cH - cL + 1;
     const std::size_t width = 3 * sequences;
-    std::vector<double> mat, rhs;
+    std::vector<double> mat, rhs, row(p + 1);
     std::size_t fitRows = 0;
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        const std::ptrdiff_t jj = static_cast<std::ptrdiff_t>(r) - kp + j0;
-        if (jj < 0 || static_cast<std::size_t>(jj) + p + 1 >= t0.size()) continue;
-        const std::size_t j = static_cast<std::size_t>(jj);
-        bool same = true;
-        for (std::size_t m = 0; m <= p + 1 && same; ++m) same = u[r + m] == t0[j + m];
-        if (!same) continue;
+    for (std::size_t j = jFirst; j <= jLast; ++j) {
+        const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
+        const std::size_t c0 = mu - p;
         bool touchesFree = false;
-        for (std::size_t c = cL; c <= cH; ++c) touchesFree = touchesFree || rows[r][c - c0] != 0.0;
+        for (std::size_t k = 0; k <= p; ++k)
+            touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
         if (!touchesFree) continue;
         const double scale = std::sqrt((t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1));
         if (scale == 0.0) continue;
-        for (std::size_t c = cL; c <= cH; ++c) mat.push_back(scale * rows[r][c - c0]);
+        const std::size_t base = mat.size();
+        mat.resize(base + freeCount, 0.0);
+        for (std::size_t k = 0; k <= p; ++k)
+            if (c0 + k >= cL && c0 + k <= cH) mat[base + c0 + k - cL] = scale * row[k];
         for (std::size_t s = 0; s < sequences; ++s) {
             glm::dvec3 target = d0[j * sequences + s];
-            for (std::size_t c = c0; c <= c1; ++c) {
-                if (c >= cL && c <= cH) continue;
-                const double w = rows[r][c - c0];
-                if (w != 0.0) target -= w * points[c * sequences + s];
-            }
+            for (std::size_t k = 0; k <= p; ++k)
+                if ((c0 + k < cL || c0 + k > cH) && row[k] != 0.0)
+                    target -= row[k] * points[(c0 + k) * sequences + s];
             rhs.push_back(scale * target.x);
             rhs.push_back(scale * target.y);
             rhs.push_back(scale * target.z);
@@ -109,8 +88,8 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) {
-            const std::size_t row = (c - cL) * width + 3 * s;
-            points[c * sequences + s] = glm::dvec3(x[row], x[row + 1], x[row + 2]);
+            const std::size_t r = (c - cL) * width + 3 * s;
+            points[c * sequences + s] = glm::dvec3(x[r], x[r + 1], x[r + 2]);
         }
 }
 

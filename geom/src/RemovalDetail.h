@@ -84,4 +84,31 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
     return rows;
 }
 
+// Row j of the knot insertion matrix from coarse knots tau (nTau coefficients) to fine knots t
+// (t contains tau): the weights of coarse coefficients mu-p .. mu in fine coefficient j, by the
+// Oslo algorithm (the coarse B-splines' blossoms at t[j+1..j+p], a Cox-de Boor triangle whose
+// levels take successive fine knots). Writes p+1 weights to out and returns mu.
+inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size_t nTau,
+                           const std::vector<double>& t, std::size_t j, double* out) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    // tau[mu] <= t[j] < tau[mu+1] on a non-empty span inside [p, nTau-1].
+    std::size_t mu = static_cast<std::size_t>(std::upper_bound(tau.begin(), tau.end(), t[j]) - tau.begin());
+    mu = mu == 0 ? 0 : mu - 1;
+    mu = std::clamp(mu, p, nTau - 1);
+    while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
+    out[0] = 1.0;
+    for (std::size_t level = 1; level <= p; ++level) {
+        const double x = t[j + level];
+        double saved = 0.0;
+        for (std::size_t r = 0; r < level; ++r) {
+            const double hi = tau[mu + r + 1], lo = tau[mu + r + 1 - level];
+            const double temp = hi > lo ? out[r] / (hi - lo) : 0.0;
+            out[r] = saved + (hi - x) * temp;
+            saved = (x - lo) * temp;
+        }
+        out[level] = saved;
+    }
+    return mu;
+}
+
 }  // namespace geom::detail
