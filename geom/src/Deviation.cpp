@@ -14,16 +14,26 @@
 namespace geom {
 namespace {
 
-// Distance of every point to `curve`: the global closest point (geom's CurveProjector), and
-// Newton from the point's own parameter; both are distances to points of the curve, so the
-// smaller is the better measurement.
+// Distances by Newton from the sample's own parameter are distances to real points of the other
+// shape, so they bound the true ones from above; the global projection (geom's projectors) is
+// run on the samples that could hold the maximum (at least half the largest local distance),
+// where a nearer point elsewhere would change the answer. Elsewhere the local answer stands.
+template <class Global>
+void refineLargest(std::vector<double>& distances, Global&& global) {
+    double worst = 0.0;
+    for (double d : distances) worst = std::max(worst, d);
+    for (std::size_t i = 0; i < distances.size(); ++i)
+        if (distances[i] >= 0.5 * worst && distances[i] > 0.0)
+            distances[i] = std::min(distances[i], global(i));
+}
+
 std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
                                 const std::vector<double>& seeds) {
-    const CurveProjector projector(curve);
     std::vector<double> out(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-        out[i] = std::min(projector.closestPoint(points[i]).distance,
-                          detail::projectFrom(curve, points[i], seeds[i]).distance);
+        out[i] = detail::projectFrom(curve, points[i], seeds[i]).distance;
+    const CurveProjector projector(curve);
+    refineLargest(out, [&](std::size_t i) { return projector.closestPoint(points[i]).distance; });
     return out;
 }
 
@@ -70,29 +80,37 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
     out.u = spanSamples(reduced.knotsU, reduced.degreeU, reduced.countU, samplesPerSpan);
     out.v = spanSamples(reduced.knotsV, reduced.degreeV, reduced.countV, samplesPerSpan);
     out.error.resize(out.u.size() * out.v.size());
-    double sum = 0.0;
-    const SurfaceProjector toOriginal(original), toReduced(reduced);
+    std::vector<glm::dvec3> onReduced(out.error.size());
     for (std::size_t i = 0; i < out.u.size(); ++i)
         for (std::size_t j = 0; j < out.v.size(); ++j) {
-            const glm::dvec3 p = evaluate(reduced, out.u[i], out.v[j]);
-            const double d = std::min(toOriginal.closestPoint(p).distance,
-                                      detail::projectFrom(original, p, out.u[i], out.v[j]).distance);
-            out.error[i * out.v.size() + j] = d;
-            out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d);
-            sum += d;
+            const std::size_t k = i * out.v.size() + j;
+            onReduced[k] = evaluate(reduced, out.u[i], out.v[j]);
+            out.error[k] = detail::projectFrom(original, onReduced[k], out.u[i], out.v[j]).distance;
         }
+    const SurfaceProjector toOriginal(original);
+    refineLargest(out.error, [&](std::size_t k) { return toOriginal.closestPoint(onReduced[k]).distance; });
+    double sum = 0.0;
+    for (double d : out.error) {
+        out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d);
+        sum += d;
+    }
     out.meanError = sum / static_cast<double>(out.error.size());
+
     const std::vector<double> ou =
         spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
     const std::vector<double> ov =
         spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
-    for (double u : ou)
-        for (double v : ov) {
-            const glm::dvec3 p = evaluate(original, u, v);
-            const double d =
-                std::min(toReduced.closestPoint(p).distance, detail::projectFrom(reduced, p, u, v).distance);
-            out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
+    std::vector<glm::dvec3> onOriginal(ou.size() * ov.size());
+    std::vector<double> back(onOriginal.size());
+    for (std::size_t i = 0; i < ou.size(); ++i)
+        for (std::size_t j = 0; j < ov.size(); ++j) {
+            const std::size_t k = i * ov.size() + j;
+            onOriginal[k] = evaluate(original, ou[i], ov[j]);
+            back[k] = detail::projectFrom(reduced, onOriginal[k], ou[i], ov[j]).distance;
         }
+    const SurfaceProjector toReduced(reduced);
+    refineLargest(back, [&](std::size_t k) { return toReduced.closestPoint(onOriginal[k]).distance; });
+    for (double d : back) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
     out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
     return out;
 }

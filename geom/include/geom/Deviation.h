@@ -18,8 +18,9 @@ struct CurveDeviation {
 };
 
 /// Samples each curve densely (samplesPerSpan points in every non-empty knot span, ends
-/// included) and measures each sample's distance to the other curve by point inversion (the
-/// global closest point of CurveProjector, or Newton from the same parameter where that is nearer).
+/// included) and measures each sample's distance to the other curve by point inversion: Newton
+/// from the same parameter, and for the samples that could hold the maximum (at least half the
+/// largest) also the global closest point of CurveProjector, the nearer of the two counting.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
@@ -35,10 +36,10 @@ struct SurfaceDeviation {
 };
 
 /// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and
-/// measures every vertex's distance to the original surface by point inversion (the global
-/// closest point of SurfaceProjector, or Newton from the same parameters where that is nearer),
-/// then the original's grid to the reduced surface the same way. Both surfaces must share the
-/// parameter domain (as knot removal keeps it).
+/// measures every vertex's distance to the original surface by point inversion (Newton from the
+/// same parameters; for the vertices that could hold the maximum also the global closest point
+/// of SurfaceProjector), then the original's grid to the reduced surface the same way. Both surfaces must
+/// share the parameter domain (as knot removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
 /// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.
