@@ -5,6 +5,7 @@
 #include "geom/Basis.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
 #include "geom/KnotSignificance.h"
 
 #include <glm/geometric.hpp>
@@ -405,10 +406,9 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
     grid.gridU = spanSamples(surface.knotsU, surface.degreeU, surface.countU, options.samplesPerSpan);
     grid.gridV = spanSamples(surface.knotsV, surface.degreeV, surface.countV, options.samplesPerSpan);
     if (std::isfinite(options.tolerance)) {
-        grid.values.resize(grid.gridU.size() * grid.gridV.size());
-        for (std::size_t i = 0; i < grid.gridU.size(); ++i)
-            for (std::size_t j = 0; j < grid.gridV.size(); ++j)
-                grid.values[i * grid.gridV.size() + j] = evaluate(surface, grid.gridU[i], grid.gridV[j]);
+        const std::vector<GridSample> samples = GridEvaluator(surface).evaluate(grid.gridU, grid.gridV);
+        grid.values.resize(samples.size());
+        for (std::size_t k = 0; k < samples.size(); ++k) grid.values[k] = samples[k].point;
     }
     // The grid keeps 1% of the tolerance in hand for what it misses between its vertices; if
     // the final measurement still finds the tolerance broken, the reduction runs again with

@@ -4,6 +4,7 @@
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
 #include "geom/SurfaceProjector.h"
 
 #include <glm/geometric.hpp>
@@ -80,11 +81,12 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
     out.u = spanSamples(reduced.knotsU, reduced.degreeU, reduced.countU, samplesPerSpan);
     out.v = spanSamples(reduced.knotsV, reduced.degreeV, reduced.countV, samplesPerSpan);
     out.error.resize(out.u.size() * out.v.size());
+    const std::vector<GridSample> reducedGrid = GridEvaluator(reduced).evaluate(out.u, out.v);
     std::vector<glm::dvec3> onReduced(out.error.size());
     for (std::size_t i = 0; i < out.u.size(); ++i)
         for (std::size_t j = 0; j < out.v.size(); ++j) {
             const std::size_t k = i * out.v.size() + j;
-            onReduced[k] = evaluate(reduced, out.u[i], out.v[j]);
+            onReduced[k] = reducedGrid[k].point;
             out.error[k] = detail::projectFrom(original, onReduced[k], out.u[i], out.v[j]).distance;
         }
     const SurfaceProjector toOriginal(original);
@@ -100,12 +102,13 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
         spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
     const std::vector<double> ov =
         spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
+    const std::vector<GridSample> originalGrid = GridEvaluator(original).evaluate(ou, ov);
     std::vector<glm::dvec3> onOriginal(ou.size() * ov.size());
     std::vector<double> back(onOriginal.size());
     for (std::size_t i = 0; i < ou.size(); ++i)
         for (std::size_t j = 0; j < ov.size(); ++j) {
             const std::size_t k = i * ov.size() + j;
-            onOriginal[k] = evaluate(original, ou[i], ov[j]);
+            onOriginal[k] = originalGrid[k].point;
             back[k] = detail::projectFrom(reduced, onOriginal[k], ou[i], ov[j]).distance;
         }
     const SurfaceProjector toReduced(reduced);
