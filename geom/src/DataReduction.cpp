@@ -385,6 +385,7 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     // through the accepted states until it holds (the original always does).
     while (measuring && out.deviation.maxError > options.tolerance) {
         if (!history.empty()) history.pop_back();
+        ++out.steppedBack;
         const Spline& previous =
             history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
         out.curve = Curve(previous.degree, previous.knots, previous.points);

@@ -236,3 +236,24 @@ TEST_CASE("count-driven surface reduction removes that many rows in each directi
     REQUIRE(r.surface.countV == s.countV - 4);
     REQUIRE(r.deviation.maxError > 0.0);
 }
+
+TEST_CASE("the final measurement steps back when coarse loop samples let the tolerance slip",
+          "[geom][knots][reduction]") {
+    // One sample per span in the loop misses the peaks between knots; the final measurement
+    // (twice as dense) catches them and undoes accepted removals until the tolerance holds.
+    std::mt19937 rng(51);
+    std::size_t steppedBack = 0;
+    for (int trial = 0; trial < 6; ++trial) {
+        const Curve c = noisyRefinedCurve(rng, 2 + trial % 4, 40, 3e-3);
+        ReductionOptions o;
+        o.tolerance = 1e-3;
+        o.samplesPerSpan = 1;
+        o.partitionSize = 1;
+        const CurveReduction r = reduceCurve(c, o);
+        steppedBack += r.steppedBack;
+        REQUIRE(r.deviation.maxError <= o.tolerance);
+        REQUIRE(r.removed == c.points.size() - r.curve.points.size());
+        REQUIRE(measureDeviation(c, r.curve, 2).maxError == r.deviation.maxError);
+    }
+    REQUIRE(steppedBack > 0);
+}

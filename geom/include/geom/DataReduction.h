@@ -36,9 +36,10 @@ struct ReductionOptions {
 /// A reduced curve with its bookkeeping and its measured error report.
 struct CurveReduction {
     Curve curve;
-    std::size_t removed = 0;   ///< knots removed
-    std::size_t fits = 0;      ///< least-squares fits tried (accepted or not)
-    CurveDeviation deviation;  ///< measureDeviation(original, curve) when options.report
+    std::size_t removed = 0;      ///< knots removed
+    std::size_t fits = 0;         ///< least-squares fits tried (accepted or not)
+    std::size_t steppedBack = 0;  ///< accepted states the final measurement undid (usually 0)
+    CurveDeviation deviation;     ///< measureDeviation(original, curve) when options.report
 };
 
 /// Rank / remove / approximate data reduction of a polynomial curve (Lyche and Morken, as in
