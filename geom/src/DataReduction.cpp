@@ -1,8 +1,8 @@
 #include "geom/DataReduction.h"
 
-#include "LocalProjection.h"
 #include "RemovalDetail.h"
 #include "geom/Basis.h"
+#include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "geom/GridEvaluator.h"
@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace geom {
@@ -318,8 +319,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     // reduced curve nearest to sample i (it drifts from params[i] as knots go).
     const std::vector<double> params =
         spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
-    std::vector<glm::dvec3> samples(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) samples[i] = detail::pointOf(curve, params[i]);
+    const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
+    const CurveProjector onOriginal(curve);
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
@@ -337,31 +338,35 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             std::upper_bound(params.begin(), params.end(), fit.changedTo) - params.begin());
         const std::size_t first = lo > pad ? lo - pad : 0;
         const std::size_t last = std::min(params.size(), hi + pad);
+        const std::vector<glm::dvec3> onCandidate =
+            evaluateMany(g, std::span(params).subspan(first, last - first));
+        std::optional<CurveProjector> candidate;
         for (std::size_t i = first; i < last; ++i) {
             // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
             // projection is needed.
-            const glm::dvec3 q = detail::pointOf(g, params[i]);
+            const glm::dvec3& q = onCandidate[i - first];
             const double parametric = glm::length(q - samples[i]);
             if (parametric <= tol) {
                 trial[i] = witness[i];
                 trialError[i] = parametric;
                 continue;
             }
-            // Original to reduced.
-            detail::LocalCurveProjection pr = detail::projectFrom(g, samples[i], witness[i]);
+            // Original to reduced, by Newton from the witness (geom's projector, local mode).
+            if (!candidate) candidate.emplace(g);
+            CurvePoint pr = candidate->closestPointFrom(samples[i], witness[i]);
             if (pr.distance > tol) {
-                const detail::LocalCurveProjection again = detail::projectFrom(g, samples[i], params[i]);
+                const CurvePoint again = candidate->closestPointFrom(samples[i], params[i]);
                 if (again.distance < pr.distance) pr = again;
             }
             if (pr.distance > tol) return false;
             trial[i] = pr.u;
             // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
-            double d = detail::projectFrom(curve, q, params[i]).distance;
+            double d = std::min(parametric, onOriginal.closestPointFrom(q, params[i]).distance);
             if (d > tol) {
                 const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
                 const std::size_t k =
                     static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
-                d = std::min(d, detail::projectFrom(curve, q, params[k]).distance);
+                d = std::min(d, onOriginal.closestPointFrom(q, params[k]).distance);
             }
             if (d > tol) return false;
             trialError[i] = std::max(d, pr.distance);

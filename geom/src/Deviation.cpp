@@ -1,6 +1,5 @@
 #include "geom/Deviation.h"
 
-#include "LocalProjection.h"
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -10,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace geom {
@@ -30,10 +30,10 @@ void refineLargest(std::vector<double>& distances, Global&& global) {
 
 std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
                                 const std::vector<double>& seeds) {
+    const CurveProjector projector(curve);
     std::vector<double> out(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-        out[i] = detail::projectFrom(curve, points[i], seeds[i]).distance;
-    const CurveProjector projector(curve);
+        out[i] = projector.closestPointFrom(points[i], seeds[i]).distance;
     refineLargest(out, [&](std::size_t i) { return projector.closestPoint(points[i]).distance; });
     return out;
 }
@@ -58,9 +58,7 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    std::vector<glm::dvec3> a(pa.size()), b(pb.size());
-    for (std::size_t i = 0; i < pa.size(); ++i) a[i] = detail::pointOf(original, pa[i]);
-    for (std::size_t i = 0; i < pb.size(); ++i) b[i] = detail::pointOf(reduced, pb[i]);
+    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
     const std::vector<double> da = distancesTo(reduced, a, pa);
     const std::vector<double> db = distancesTo(original, b, pb);
     CurveDeviation out;
@@ -81,15 +79,15 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
     out.u = spanSamples(reduced.knotsU, reduced.degreeU, reduced.countU, samplesPerSpan);
     out.v = spanSamples(reduced.knotsV, reduced.degreeV, reduced.countV, samplesPerSpan);
     out.error.resize(out.u.size() * out.v.size());
+    const SurfaceProjector toOriginal(original), toReduced(reduced);
     const std::vector<GridSample> reducedGrid = GridEvaluator(reduced).evaluate(out.u, out.v);
     std::vector<glm::dvec3> onReduced(out.error.size());
     for (std::size_t i = 0; i < out.u.size(); ++i)
         for (std::size_t j = 0; j < out.v.size(); ++j) {
             const std::size_t k = i * out.v.size() + j;
             onReduced[k] = reducedGrid[k].point;
-            out.error[k] = detail::projectFrom(original, onReduced[k], out.u[i], out.v[j]).distance;
+            out.error[k] = toOriginal.closestPointFrom(onReduced[k], {out.u[i], out.v[j]}).distance;
         }
-    const SurfaceProjector toOriginal(original);
     refineLargest(out.error, [&](std::size_t k) { return toOriginal.closestPoint(onReduced[k]).distance; });
     double sum = 0.0;
     for (double d : out.error) {
@@ -109,9 +107,8 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
         for (std::size_t j = 0; j < ov.size(); ++j) {
             const std::size_t k = i * ov.size() + j;
             onOriginal[k] = originalGrid[k].point;
-            back[k] = detail::projectFrom(reduced, onOriginal[k], ou[i], ov[j]).distance;
+            back[k] = toReduced.closestPointFrom(onOriginal[k], {ou[i], ov[j]}).distance;
         }
-    const SurfaceProjector toReduced(reduced);
     refineLargest(back, [&](std::size_t k) { return toReduced.closestPoint(onOriginal[k]).distance; });
     for (double d : back) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
     out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
