@@ -1,0 +1,80 @@
+#pragma once
+
+#include "geom/Curve.h"
+#include "geom/Deviation.h"
+#include "geom/KnotRemoval.h"
+#include "geom/Surface.h"
+
+#include <cstddef>
+#include <limits>
+
+namespace geom {
+
+/// How a data reduction runs: by tolerance, by count, or both (whichever stops first).
+struct ReductionOptions {
+    /// Largest allowed distance between the original and the reduced shape, measured; infinity
+    /// gives the thesis's count-driven mode, where nothing is measured during the loop.
+    double tolerance = std::numeric_limits<double>::infinity();
+    /// Stop after this many knots (per direction for surfaces).
+    std::size_t maxRemovals = std::numeric_limits<std::size_t>::max();
+    /// Knots taken from the ranking before the weights are computed again (the thesis used 5).
+    int partitionSize = 5;
+    /// Extra free coefficients on each side of the least-squares window (each removal is refitted
+    /// to the original on that window, so a wider one spreads the error; 4 measured best).
+    int margin = 4;
+    /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
+    /// (they would fail); 0 tries every knot.
+    double weightCutoff = 8.0;
+    EndConditions ends;
+    /// Measurement density: samples per knot span of the original shape (each direction).
+    int samplesPerSpan = 8;
+    /// Fill the result's deviation report in count mode too (a global measurement after the
+    /// loop). In tolerance mode the report is always made: it is the final check.
+    bool report = true;
+};
+
+/// A reduced curve with its bookkeeping and its measured error report.
+struct CurveReduction {
+    Curve curve;
+    std::size_t removed = 0;      ///< knots removed
+    std::size_t fits = 0;         ///< least-squares fits tried (accepted or not)
+    std::size_t steppedBack = 0;  ///< accepted states the final measurement undid (usually 0)
+    CurveDeviation deviation;     ///< measureDeviation(original, curve) when options.report
+};
+
+/// Rank / remove / approximate data reduction of a polynomial curve (Lyche and Morken, as in
+/// note 000 with its errata fixed): rank the interior knots by removal weight, take the
+/// partitionSize least significant, group the ones that share a local window, remove each group
+/// with one local least-squares fit, and keep a removal only if the distance from the original
+/// stays within the tolerance, measured on dense samples of both curves by point inversion in
+/// the changed interval. A group that fails is retried knot by knot; a knot that fails is not
+/// tried again until a global refit to the original succeeds. A denser final measurement
+/// (measureDeviation) checks the result; should it find the tolerance broken, the result steps
+/// back to the last accepted state that keeps it. Throws GeometryError for a rational curve or
+/// bad options.
+CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options);
+
+/// Which knot vectors of a surface to reduce; Both reduces u, then v.
+enum class ReductionDirection { U, V, Both };
+
+/// A reduced surface with its bookkeeping and its measured error report (with the error field).
+struct SurfaceReduction {
+    Surface surface;
+    std::size_t removedU = 0;
+    std::size_t removedV = 0;
+    std::size_t fits = 0;
+    SurfaceDeviation deviation;  ///< measureDeviation(original, surface) when options.report
+};
+
+/// Data reduction of a polynomial surface by whole knot rows: a row's weight is the largest
+/// weight over the isoparametric curves of the control net (not the thesis's mean), every
+/// isoparametric curve gets its own least-squares fit on the same window, and a removal is kept
+/// only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter grid of the
+/// original in the changed strip (this bounds the distance between the surfaces from above).
+/// The final measurement (measureDeviation) checks the result; should it find the tolerance
+/// broken, the reduction runs again with less of the tolerance for the grid. Throws
+/// GeometryError for a rational surface or bad options.
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options);
+
+}  // namespace geom

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "geom/Curve.h"
+#include "geom/Surface.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace geom {
+
+/// The measured distance between two curves (an original and its approximation), both ways.
+struct CurveDeviation {
+    double maxError = 0.0;              ///< Hausdorff distance: the larger of the two below
+    double meanError = 0.0;             ///< mean distance over every sample of both curves
+    double maxOriginalToReduced = 0.0;  ///< max over samples of the original of their distance to the other
+    double maxReducedToOriginal = 0.0;  ///< the same the other way
+    std::size_t samples = 0;            ///< points measured, both curves together
+};
+
+/// Samples each curve densely (samplesPerSpan points in every non-empty knot span, ends
+/// included) and measures each sample's distance to the other curve by point inversion: Newton
+/// from the same parameter, and for the samples that could hold the maximum (at least half the
+/// largest) also the global closest point of CurveProjector, the nearer of the two counting.
+CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
+
+/// The measured distance between two surfaces, with a per-vertex error field on a grid of the
+/// reduced surface for a colour map.
+struct SurfaceDeviation {
+    double maxError = 0.0;              ///< the larger of the two maxima below
+    double meanError = 0.0;             ///< mean of the error field
+    double maxOriginalToReduced = 0.0;  ///< over the same grid on the original surface
+    double maxReducedToOriginal = 0.0;  ///< max of the error field
+    std::vector<double> u;      ///< grid parameters in u (samplesPerSpan per span of the reduced surface)
+    std::vector<double> v;      ///< grid parameters in v
+    std::vector<double> error;  ///< error[i * v.size() + j]: distance from S'(u[i], v[j]) to the original
+};
+
+/// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and
+/// measures every vertex's distance to the original surface by point inversion (Newton from the
+/// same parameters; for the vertices that could hold the maximum also the global closest point
+/// of SurfaceProjector), then the original's grid to the reduced surface the same way. Both surfaces must
+/// share the parameter domain (as knot removal keeps it).
+SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
+
+/// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.
+std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
+                                int samplesPerSpan);
+
+}  // namespace geom

@@ -1,0 +1,455 @@
+#include "geom/DataReduction.h"
+
+#include "RemovalDetail.h"
+#include "geom/Basis.h"
+#include "geom/CurveProjector.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
+#include "geom/KnotSignificance.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+namespace geom {
+namespace {
+
+// A spline with `sequences` coefficient sequences sharing one knot vector: a curve, or the
+// isoparametric curves of a surface net along the direction being reduced.
+struct Spline {
+    int degree = 0;
+    std::vector<double> knots;
+    std::vector<glm::dvec3> points;
+    std::size_t sequences = 1;
+};
+
+void checkOptions(const ReductionOptions& o, const char* where) {
+    const std::string w = where;
+    if (!(o.tolerance > 0.0))
+        throw GeometryError(w + ": tolerance must be positive (infinity for count mode)");
+    if (o.partitionSize < 1) throw GeometryError(w + ": partitionSize must be at least 1");
+    if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
+    if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
+    if (o.samplesPerSpan < 1) throw GeometryError(w + ": samplesPerSpan must be at least 1");
+    if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
+}
+
+// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
+// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
+// knots contain the reduced ones, so the original is the reduced spline with the missing knots
+// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
+// previous approximation keeps the errors of successive removals from piling up.
+void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                     const std::vector<glm::dvec3>& d0) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t nt = points.size() / sequences;
+    const std::size_t n0 = d0.size() / sequences;
+    // The original coefficients whose rows can reach the free columns: their knot intervals
+    // meet the free columns' support [tau[cL], tau[cH+p+1]].
+    const double from = tau[cL], to = tau[cH + p + 1];
+    const std::size_t jFirst = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+        0, (std::lower_bound(t0.begin(), t0.end(), from) - t0.begin()) - static_cast<std::ptrdiff_t>(p) - 1));
+    const std::size_t jLast =
+        std::min(n0 - 1, static_cast<std::size_t>(std::upper_bound(t0.begin(), t0.end(), to) - t0.begin()));
+
+    const std::size_t freeCount = cH - cL + 1;
+    const std::size_t width = 3 * sequences;
+    std::vector<double> mat, rhs, row(p + 1);
+    std::size_t fitRows = 0;
+    for (std::size_t j = jFirst; j <= jLast; ++j) {
+        const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
+        const std::size_t c0 = mu - p;
+        bool touchesFree = false;
+        for (std::size_t k = 0; k <= p; ++k)
+            touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
+        if (!touchesFree) continue;
+        const double scale = std::sqrt((t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1));
+        if (scale == 0.0) continue;
+        const std::size_t base = mat.size();
+        mat.resize(base + freeCount, 0.0);
+        for (std::size_t k = 0; k <= p; ++k)
+            if (c0 + k >= cL && c0 + k <= cH) mat[base + c0 + k - cL] = scale * row[k];
+        for (std::size_t s = 0; s < sequences; ++s) {
+            glm::dvec3 target = d0[j * sequences + s];
+            for (std::size_t k = 0; k <= p; ++k)
+                if ((c0 + k < cL || c0 + k > cH) && row[k] != 0.0)
+                    target -= row[k] * points[(c0 + k) * sequences + s];
+            rhs.push_back(scale * target.x);
+            rhs.push_back(scale * target.y);
+            rhs.push_back(scale * target.z);
+        }
+        ++fitRows;
+    }
+    if (fitRows < freeCount) return;  // keep the fit to the previous approximation
+    const std::vector<double> x =
+        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    for (std::size_t c = cL; c <= cH; ++c)
+        for (std::size_t s = 0; s < sequences; ++s) {
+            const std::size_t r = (c - cL) * width + 3 * s;
+            points[c * sequences + s] = glm::dvec3(x[r], x[r + 1], x[r + 2]);
+        }
+}
+
+// The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
+// tolerance, updates the caller's measurement state and returns true.
+template <class Accept, class Present>
+std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
+                       Present&& presentError, std::vector<Spline>* history = nullptr) {
+    const Spline original = s;
+    const bool measuring = std::isfinite(o.tolerance);
+    std::vector<double> blocked;
+    std::size_t removed = 0;
+    auto isBlocked = [&](double v) { return std::find(blocked.begin(), blocked.end(), v) != blocked.end(); };
+    auto tryRemove = [&](std::vector<double> values) {
+        std::sort(values.begin(), values.end());
+        ++fits;
+        LeastSquaresRemoval fit;
+        try {
+            fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
+            refitToOriginal(s.degree, fit.knots, fit.points, s.sequences, fit.firstChanged, fit.lastChanged,
+                            original.knots, original.points);
+        } catch (const GeometryError&) {
+            return false;  // the end conditions leave nothing to fit here
+        }
+        if (!accept(fit)) return false;
+        s.knots = std::move(fit.knots);
+        s.points = std::move(fit.points);
+        if (history) history->push_back(s);
+        return true;
+    };
+
+    for (int round = 0;; ++round) {
+        const std::size_t removedBefore = removed;
+        blocked.clear();
+        while (removed < o.maxRemovals) {
+            const std::size_t want =
+                std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
+            std::vector<KnotSignificance> partition;
+            // Rank by the weight plus the error already spent near the knot (vs the original):
+            // removing a knot moves the curve by about its weight on top of what is there, so this
+            // spreads the tolerance over the curve instead of exhausting it in one place.
+            std::vector<KnotSignificance> ranked = rankKnots(s.degree, s.knots, s.points, s.sequences);
+            if (measuring) {
+                const std::size_t p = static_cast<std::size_t>(s.degree);
+                for (KnotSignificance& k : ranked) {
+                    const double from = s.knots[k.index > p + 1 ? k.index - p - 1 : 0];
+                    const double to = s.knots[std::min(s.knots.size() - 1, k.index + p + 1)];
+                    k.weight += presentError(from, to);
+                }
+                std::stable_sort(
+                    ranked.begin(), ranked.end(),
+                    [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
+            }
+            for (const KnotSignificance& k : ranked) {
+                if (isBlocked(k.value)) continue;
+                if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
+                partition.push_back(k);
+                if (partition.size() == want) break;
+            }
+            if (partition.empty()) break;
+
+            // Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
+            // takes the later ones whose local windows overlap its own. Knots are named by value, so
+            // the indices shifted by an earlier group's removal need no bookkeeping.
+            const std::size_t reach = static_cast<std::size_t>(s.degree) + 1;
+            std::vector<bool> placed(partition.size(), false);
+            for (std::size_t i = 0; i < partition.size() && removed < o.maxRemovals; ++i) {
+                if (placed[i]) continue;
+                std::vector<KnotSignificance> group{partition[i]};
+                placed[i] = true;
+                for (std::size_t j = i + 1; j < partition.size(); ++j) {
+                    const std::size_t a = partition[i].index, b = partition[j].index;
+                    if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
+                        group.push_back(partition[j]);
+                        placed[j] = true;
+                    }
+                }
+                if (group.size() > o.maxRemovals - removed) group.resize(o.maxRemovals - removed);
+                if (group.size() > 1) {
+                    std::vector<double> values;
+                    for (const KnotSignificance& k : group) values.push_back(k.value);
+                    if (tryRemove(values)) {
+                        removed += group.size();
+                        continue;
+                    }
+                }
+                for (const KnotSignificance& k : group) {
+                    if (removed >= o.maxRemovals) break;
+                    if (tryRemove({k.value}))
+                        ++removed;
+                    else
+                        blocked.push_back(k.value);
+                }
+            }
+        }
+        // Every knot left failed against the accumulated local fits. A global best fit to the
+        // original on the knots now left usually lowers the error everywhere; if it keeps the
+        // tolerance, the knots that failed get another chance.
+        if (!measuring || removed == removedBefore || removed >= o.maxRemovals || round >= 4) break;
+        const std::size_t nt = s.points.size() / s.sequences;
+        const std::size_t fixedEnd = static_cast<std::size_t>(o.ends.fixedDerivatives) + 1;
+        if (nt < 2 * fixedEnd + 1) break;
+        LeastSquaresRemoval global;
+        global.knots = s.knots;
+        global.points = s.points;
+        global.firstChanged = fixedEnd;
+        global.lastChanged = nt - 1 - fixedEnd;
+        refitToOriginal(s.degree, global.knots, global.points, s.sequences, global.firstChanged,
+                        global.lastChanged, original.knots, original.points);
+        global.changedFrom = global.knots.front();
+        global.changedTo = global.knots.back();
+        ++fits;
+        if (!accept(global)) break;
+        s.points = std::move(global.points);
+        if (history) history->push_back(s);
+    }
+    return removed;
+}
+
+Curve unchecked(int degree, std::vector<double> knots, std::vector<glm::dvec3> points) {
+    Curve c;
+    c.degree = degree;
+    c.knots = std::move(knots);
+    c.points = std::move(points);
+    return c;
+}
+
+Surface transposed(const Surface& s) {
+    Surface t;
+    t.degreeU = s.degreeV;
+    t.degreeV = s.degreeU;
+    t.knotsU = s.knotsV;
+    t.knotsV = s.knotsU;
+    t.countU = s.countV;
+    t.countV = s.countU;
+    t.points.resize(s.points.size());
+    for (std::size_t i = 0; i < s.countU; ++i)
+        for (std::size_t j = 0; j < s.countV; ++j) t.points[j * s.countU + i] = s.points[i * s.countV + j];
+    return t;
+}
+
+// Measured parametric error of a surface being reduced along u against the original's values
+// on a fixed grid (gridU x gridV, original parameters). The v direction does not change during
+// the pass, so its basis values are computed once.
+struct SurfaceGrid {
+    std::vector<double> gridU, gridV;
+    std::vector<glm::dvec3> values;  // original surface, gridU.size() x gridV.size()
+    std::vector<std::size_t> spanV;
+    std::vector<double> basisV;
+    int degreeV = 0;
+
+    void prepareAcross(const Surface& current) {
+        degreeV = current.degreeV;
+        const std::size_t w = static_cast<std::size_t>(degreeV) + 1;
+        spanV.resize(gridV.size());
+        basisV.resize(gridV.size() * w);
+        for (std::size_t k = 0; k < gridV.size(); ++k) {
+            spanV[k] = findSpan(degreeV, current.knotsV, current.countV, gridV[k]);
+            basisFunctions(spanV[k], gridV[k], degreeV, current.knotsV, std::span(basisV).subspan(k * w, w));
+        }
+    }
+
+    // True when |S(u, v) - S'(u, v)| <= tolerance at every grid vertex with u in [from, to].
+    bool within(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
+                std::size_t countV, double from, double to, double tolerance) const {
+        const std::size_t countU = points.size() / countV;
+        const std::size_t p = static_cast<std::size_t>(degreeU);
+        const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
+        std::vector<double> nu(p + 1);
+        std::vector<glm::dvec3> column(countV);
+        const auto first = std::lower_bound(gridU.begin(), gridU.end(), from);
+        const auto last = std::upper_bound(gridU.begin(), gridU.end(), to);
+        for (auto it = first; it != last; ++it) {
+            const std::size_t i = static_cast<std::size_t>(it - gridU.begin());
+            const std::size_t span = findSpan(degreeU, knotsU, countU, *it);
+            basisFunctions(span, *it, degreeU, knotsU, nu);
+            for (std::size_t j = 0; j < countV; ++j) {
+                glm::dvec3 c(0.0);
+                for (std::size_t k = 0; k <= p; ++k) c += nu[k] * points[(span - p + k) * countV + j];
+                column[j] = c;
+            }
+            for (std::size_t k = 0; k < gridV.size(); ++k) {
+                glm::dvec3 sv(0.0);
+                const std::size_t base = spanV[k] - static_cast<std::size_t>(degreeV);
+                for (std::size_t l = 0; l < wv; ++l) sv += basisV[k * wv + l] * column[base + l];
+                if (glm::length(sv - values[i * gridV.size() + k]) > tolerance) return false;
+            }
+        }
+        return true;
+    }
+};
+
+// One pass along u of `current` (the original seen in the same orientation is `grid`).
+std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o,
+                                double acceptance, std::size_t& fits) {
+    Spline s{current.degreeU, current.knotsU, current.points, current.countV};
+    grid.prepareAcross(current);
+    const bool measuring = std::isfinite(o.tolerance);
+    const std::size_t removed = reduceLoop(
+        s, o, fits,
+        [&](const LeastSquaresRemoval& fit) {
+            return !measuring || grid.within(s.degree, fit.knots, fit.points, s.sequences, fit.changedFrom,
+                                             fit.changedTo, acceptance);
+        },
+        [](double, double) { return 0.0; });
+    current.knotsU = std::move(s.knots);
+    current.points = std::move(s.points);
+    current.countU = current.points.size() / current.countV;
+    return removed;
+}
+
+}  // namespace
+
+CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
+    checkOptions(options, "reduceCurve");
+    validate(curve);
+    if (curve.rational())
+        throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
+    const bool measuring = std::isfinite(options.tolerance);
+    // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
+    // final measurement below has the last word.
+    const double tol = options.tolerance * 0.99;
+
+    // Dense samples of the original; witness[i] is the parameter of the point of the current
+    // reduced curve nearest to sample i (it drifts from params[i] as knots go).
+    const std::vector<double> params =
+        spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
+    const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
+    const CurveProjector onOriginal(curve);
+    std::vector<double> witness = params, trial(params.size());
+    std::vector<double> error(params.size(), 0.0), trialError(params.size());
+    const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
+
+    Spline s{curve.degree, curve.knots, curve.points, 1};
+    CurveReduction out;
+    auto accept = [&](const LeastSquaresRemoval& fit) {
+        if (!measuring) return true;
+        const Curve g = unchecked(s.degree, fit.knots, fit.points);
+        // The curve changed on [changedFrom, changedTo]; a sample just outside may have its
+        // nearest point inside, so one original span more is measured on each side.
+        const std::size_t lo = static_cast<std::size_t>(
+            std::lower_bound(params.begin(), params.end(), fit.changedFrom) - params.begin());
+        const std::size_t hi = static_cast<std::size_t>(
+            std::upper_bound(params.begin(), params.end(), fit.changedTo) - params.begin());
+        const std::size_t first = lo > pad ? lo - pad : 0;
+        const std::size_t last = std::min(params.size(), hi + pad);
+        const std::vector<glm::dvec3> onCandidate =
+            evaluateMany(g, std::span(params).subspan(first, last - first));
+        std::optional<CurveProjector> candidate;
+        for (std::size_t i = first; i < last; ++i) {
+            // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
+            // projection is needed.
+            const glm::dvec3& q = onCandidate[i - first];
+            const double parametric = glm::length(q - samples[i]);
+            if (parametric <= tol) {
+                trial[i] = witness[i];
+                trialError[i] = parametric;
+                continue;
+            }
+            // Original to reduced, by Newton from the witness (geom's projector, local mode).
+            if (!candidate) candidate.emplace(g);
+            CurvePoint pr = candidate->closestPointFrom(samples[i], witness[i]);
+            if (pr.distance > tol) {
+                const CurvePoint again = candidate->closestPointFrom(samples[i], params[i]);
+                if (again.distance < pr.distance) pr = again;
+            }
+            if (pr.distance > tol) return false;
+            trial[i] = pr.u;
+            // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
+            double d = std::min(parametric, onOriginal.closestPointFrom(q, params[i]).distance);
+            if (d > tol) {
+                const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
+                const std::size_t k =
+                    static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
+                d = std::min(d, onOriginal.closestPointFrom(q, params[k]).distance);
+            }
+            if (d > tol) return false;
+            trialError[i] = std::max(d, pr.distance);
+        }
+        for (std::size_t i = first; i < last; ++i) witness[i] = trial[i], error[i] = trialError[i];
+        return true;
+    };
+    auto presentError = [&](double from, double to) {
+        const auto a = std::lower_bound(params.begin(), params.end(), from) - params.begin();
+        const auto b = std::upper_bound(params.begin(), params.end(), to) - params.begin();
+        double worst = 0.0;
+        for (auto i = a; i < b; ++i) worst = std::max(worst, error[static_cast<std::size_t>(i)]);
+        return worst;
+    };
+    std::vector<Spline> history;
+    out.removed = reduceLoop(s, options, out.fits, accept, presentError, &history);
+    out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
+    if (measuring || options.report)
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    // The guarantee: if the denser final measurement finds the tolerance broken, step back
+    // through the accepted states until it holds (the original always does).
+    while (measuring && out.deviation.maxError > options.tolerance) {
+        if (!history.empty()) history.pop_back();
+        ++out.steppedBack;
+        const Spline& previous =
+            history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
+        out.curve = Curve(previous.degree, previous.knots, previous.points);
+        out.removed = curve.points.size() - out.curve.points.size();
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        if (history.empty()) break;
+    }
+    return out;
+}
+
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options) {
+    checkOptions(options, "reduceSurface");
+    validate(surface);
+    if (surface.rational())
+        throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
+    SurfaceReduction out;
+    SurfaceGrid grid;
+    grid.gridU = spanSamples(surface.knotsU, surface.degreeU, surface.countU, options.samplesPerSpan);
+    grid.gridV = spanSamples(surface.knotsV, surface.degreeV, surface.countV, options.samplesPerSpan);
+    if (std::isfinite(options.tolerance)) {
+        const std::vector<GridSample> samples = GridEvaluator(surface).evaluate(grid.gridU, grid.gridV);
+        grid.values.resize(samples.size());
+        for (std::size_t k = 0; k < samples.size(); ++k) grid.values[k] = samples[k].point;
+    }
+    // The grid keeps 1% of the tolerance in hand for what it misses between its vertices; if
+    // the final measurement still finds the tolerance broken, the reduction runs again with
+    // less (the original, with nothing removed, always passes).
+    const bool measuring = std::isfinite(options.tolerance);
+    for (double share : {0.99, 0.9, 0.7, 0.0}) {
+        out = SurfaceReduction{};
+        Surface current = surface;
+        const double acceptance = share * options.tolerance;
+        if (share > 0.0 || !measuring) {
+            if (direction != ReductionDirection::V)
+                out.removedU = reduceSurfaceAlongU(current, grid, options, acceptance, out.fits);
+            if (direction != ReductionDirection::U) {
+                // Along v by transposition (the thesis's swap_uw), the grid transposed with it.
+                Surface t = transposed(current);
+                SurfaceGrid tg;
+                tg.gridU = grid.gridV;
+                tg.gridV = grid.gridU;
+                if (!grid.values.empty()) {
+                    tg.values.resize(grid.values.size());
+                    for (std::size_t i = 0; i < grid.gridU.size(); ++i)
+                        for (std::size_t j = 0; j < grid.gridV.size(); ++j)
+                            tg.values[j * grid.gridU.size() + i] = grid.values[i * grid.gridV.size() + j];
+                }
+                out.removedV = reduceSurfaceAlongU(t, tg, options, acceptance, out.fits);
+                current = transposed(t);
+            }
+        }
+        validate(current);
+        out.surface = std::move(current);
+        if (options.report || measuring)
+            out.deviation = measureDeviation(surface, out.surface, std::max(2, options.samplesPerSpan / 2));
+        if (!measuring || out.deviation.maxError <= options.tolerance) break;
+    }
+    return out;
+}
+
+}  // namespace geom

@@ -1,0 +1,118 @@
+#include "geom/Deviation.h"
+
+#include "geom/CurveProjector.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
+#include "geom/SurfaceProjector.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace geom {
+namespace {
+
+// Distances by Newton from the sample's own parameter are distances to real points of the other
+// shape, so they bound the true ones from above; the global projection (geom's projectors) is
+// run on the samples that could hold the maximum (at least half the largest local distance),
+// where a nearer point elsewhere would change the answer. Elsewhere the local answer stands.
+template <class Global>
+void refineLargest(std::vector<double>& distances, Global&& global) {
+    double worst = 0.0;
+    for (double d : distances) worst = std::max(worst, d);
+    for (std::size_t i = 0; i < distances.size(); ++i)
+        if (distances[i] >= 0.5 * worst && distances[i] > 0.0)
+            distances[i] = std::min(distances[i], global(i));
+}
+
+std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
+                                const std::vector<double>& seeds) {
+    const CurveProjector projector(curve);
+    std::vector<double> out(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        out[i] = projector.closestPointFrom(points[i], seeds[i]).distance;
+    refineLargest(out, [&](std::size_t i) { return projector.closestPoint(points[i]).distance; });
+    return out;
+}
+
+}  // namespace
+
+std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
+                                int samplesPerSpan) {
+    if (samplesPerSpan < 1) throw GeometryError("spanSamples: samplesPerSpan must be at least 1");
+    std::vector<double> out;
+    for (std::size_t i = static_cast<std::size_t>(degree); i < count; ++i) {
+        const double a = knots[i], b = knots[i + 1];
+        if (!(b > a)) continue;
+        for (int k = 0; k < samplesPerSpan; ++k) out.push_back(a + (b - a) * k / samplesPerSpan);
+    }
+    out.push_back(knots[count]);
+    return out;
+}
+
+CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    const std::vector<double> pa =
+        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
+    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
+    const std::vector<double> da = distancesTo(reduced, a, pa);
+    const std::vector<double> db = distancesTo(original, b, pb);
+    CurveDeviation out;
+    double sum = 0.0;
+    for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
+    for (double d : db) out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d), sum += d;
+    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
+    out.samples = da.size() + db.size();
+    out.meanError = sum / static_cast<double>(out.samples);
+    return out;
+}
+
+SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {
+    if (original.domainStartU() != reduced.domainStartU() || original.domainEndU() != reduced.domainEndU() ||
+        original.domainStartV() != reduced.domainStartV() || original.domainEndV() != reduced.domainEndV())
+        throw GeometryError("measureDeviation: the two surfaces have different parameter domains");
+    SurfaceDeviation out;
+    out.u = spanSamples(reduced.knotsU, reduced.degreeU, reduced.countU, samplesPerSpan);
+    out.v = spanSamples(reduced.knotsV, reduced.degreeV, reduced.countV, samplesPerSpan);
+    out.error.resize(out.u.size() * out.v.size());
+    const SurfaceProjector toOriginal(original), toReduced(reduced);
+    const std::vector<GridSample> reducedGrid = GridEvaluator(reduced).evaluate(out.u, out.v);
+    std::vector<glm::dvec3> onReduced(out.error.size());
+    for (std::size_t i = 0; i < out.u.size(); ++i)
+        for (std::size_t j = 0; j < out.v.size(); ++j) {
+            const std::size_t k = i * out.v.size() + j;
+            onReduced[k] = reducedGrid[k].point;
+            out.error[k] = toOriginal.closestPointFrom(onReduced[k], {out.u[i], out.v[j]}).distance;
+        }
+    refineLargest(out.error, [&](std::size_t k) { return toOriginal.closestPoint(onReduced[k]).distance; });
+    double sum = 0.0;
+    for (double d : out.error) {
+        out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d);
+        sum += d;
+    }
+    out.meanError = sum / static_cast<double>(out.error.size());
+
+    const std::vector<double> ou =
+        spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
+    const std::vector<double> ov =
+        spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
+    const std::vector<GridSample> originalGrid = GridEvaluator(original).evaluate(ou, ov);
+    std::vector<glm::dvec3> onOriginal(ou.size() * ov.size());
+    std::vector<double> back(onOriginal.size());
+    for (std::size_t i = 0; i < ou.size(); ++i)
+        for (std::size_t j = 0; j < ov.size(); ++j) {
+            const std::size_t k = i * ov.size() + j;
+            onOriginal[k] = originalGrid[k].point;
+            back[k] = toReduced.closestPointFrom(onOriginal[k], {ou[i], ov[j]}).distance;
+        }
+    refineLargest(back, [&](std::size_t k) { return toReduced.closestPoint(onOriginal[k]).distance; });
+    for (double d : back) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
+    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
+    return out;
+}
+
+}  // namespace geom

@@ -1,0 +1,246 @@
+#include "geom/KnotRemoval.h"
+
+#include "RemovalDetail.h"
+#include "geom/GeometryError.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace geom {
+namespace {
+
+double distance4(const glm::dvec4& a, const glm::dvec4& b) {
+    return glm::length(a - b);
+}
+
+}  // namespace
+
+ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
+    if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
+    if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
+    const int p = curve.degree;
+    const int n = static_cast<int>(curve.points.size()) - 1;
+    if (!(u > curve.domainStart() && u < curve.domainEnd()))
+        throw GeometryError("removeKnot: " + std::to_string(u) + " is not inside the curve's domain");
+    int r = -1;
+    for (int i = 0; i <= n + p + 1; ++i)
+        if (curve.knots[static_cast<std::size_t>(i)] == u) r = i;
+    if (r < 0) throw GeometryError("removeKnot: " + std::to_string(u) + " is not a knot of the curve");
+    int s = 0;
+    for (int i = r; i >= 0 && curve.knots[static_cast<std::size_t>(i)] == u; --i) ++s;
+    times = std::min(times, s);
+
+    std::vector<glm::dvec4> pw(curve.points.size());
+    double wmin = 1.0, pmax = 0.0;
+    for (std::size_t i = 0; i < pw.size(); ++i) {
+        pw[i] = glm::dvec4(curve.points[i] * curve.weight(i), curve.weight(i));
+        wmin = std::min(wmin, curve.weight(i));
+        pmax = std::max(pmax, glm::length(curve.points[i]));
+    }
+    // The NURBS Book eq. 5.30: a bound on the homogeneous points that keeps the curve within d.
+    const double tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
+    const std::vector<double>& U = curve.knots;
+    auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };
+    auto P = [&](int i) -> glm::dvec4& { return pw[static_cast<std::size_t>(i)]; };
+
+    // The NURBS Book A5.8, with its index names.
+    const int ord = p + 1;
+    const int fout = (2 * r - s - p) / 2;
+    int first = r - p;
+    int last = r - s;
+    std::vector<glm::dvec4> temp(static_cast<std::size_t>(2 * p + 1));
+    auto T = [&](int i) -> glm::dvec4& { return temp[static_cast<std::size_t>(i)]; };
+    int t = 0;
+    for (; t < times; ++t) {
+        const int off = first - 1;
+        T(0) = P(off);
+        T(last + 1 - off) = P(last + 1);
+        int i = first, j = last, ii = 1, jj = last - off;
+        while (j - i > t) {
+            const double alfi = (u - knot(i)) / (knot(i + ord + t) - knot(i));
+            const double alfj = (u - knot(j - t)) / (knot(j + ord) - knot(j - t));
+            T(ii) = (P(i) - (1.0 - alfi) * T(ii - 1)) / alfi;
+            T(jj) = (P(j) - alfj * T(jj + 1)) / (1.0 - alfj);
+            ++i, ++ii, --j, --jj;
+        }
+        bool removable = false;
+        if (j - i < t) {
+            removable = distance4(T(ii - 1), T(jj + 1)) <= tol;
+        } else {
+            const double alfi = (u - knot(i)) / (knot(i + ord + t) - knot(i));
+            removable = distance4(P(i), alfi * T(ii + t + 1) + (1.0 - alfi) * T(ii - 1)) <= tol;
+        }
+        if (!removable) break;
+        i = first;
+        j = last;
+        while (j - i > t) {
+            P(i) = T(i - off);
+            P(j) = T(j - off);
+            ++i, --j;
+        }
+        --first;
+        ++last;
+    }
+    ExactKnotRemoval out{curve, t};
+    if (t == 0) return out;
+
+    std::vector<double> knots = U;
+    const int m = n + p + 1;
+    for (int k = r + 1; k <= m; ++k)
+        knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
+    knots.resize(knots.size() - static_cast<std::size_t>(t));
+    int j = fout, i = fout;
+    for (int k = 1; k < t; ++k) {
+        if (k % 2 == 1)
+            ++i;
+        else
+            --j;
+    }
+    for (int k = i + 1; k <= n; ++k) P(j++) = P(k);
+    pw.resize(pw.size() - static_cast<std::size_t>(t));
+
+    std::vector<glm::dvec3> points(pw.size());
+    std::vector<double> weights;
+    for (std::size_t k = 0; k < pw.size(); ++k) {
+        points[k] = glm::dvec3(pw[k]) / pw[k].w;
+        if (curve.rational()) weights.push_back(pw[k].w);
+    }
+    out.curve = Curve(p, std::move(knots), std::move(points), std::move(weights));
+    return out;
+}
+
+LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> knots,
+                                            std::span<const glm::dvec3> points, std::size_t sequences,
+                                            std::span<const double> values, const EndConditions& ends,
+                                            int margin) {
+    const char* where = "removeKnotsLeastSquares";
+    if (degree < 1) throw GeometryError(std::string(where) + ": degree must be at least 1");
+    if (sequences == 0 || points.size() % sequences != 0)
+        throw GeometryError(std::string(where) + ": " + std::to_string(points.size()) +
+                            " points do not split into " + std::to_string(sequences) + " sequences");
+    if (values.empty()) throw GeometryError(std::string(where) + ": no knot values to remove");
+    if (margin < 0 || ends.fixedDerivatives < 0)
+        throw GeometryError(std::string(where) + ": margin and fixedDerivatives must be non-negative");
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t count = points.size() / sequences;
+    if (knots.size() != count + p + 1)
+        throw GeometryError(std::string(where) + ": " + std::to_string(knots.size()) + " knots for " +
+                            std::to_string(count) + " coefficients of degree " + std::to_string(degree));
+
+    // The last occurrence of each value goes.
+    std::vector<std::size_t> removed;
+    for (double v : values) {
+        if (!(v > knots[p] && v < knots[count]))
+            throw GeometryError(std::string(where) + ": " + std::to_string(v) + " is not an interior knot");
+        const auto it = std::upper_bound(knots.begin(), knots.end(), v);
+        const std::size_t r = static_cast<std::size_t>(it - knots.begin());
+        if (r == 0 || knots[r - 1] != v)
+            throw GeometryError(std::string(where) + ": " + std::to_string(v) + " is not a knot");
+        if (std::find(removed.begin(), removed.end(), r - 1) != removed.end())
+            throw GeometryError(std::string(where) + ": value " + std::to_string(v) + " listed twice");
+        removed.push_back(r - 1);
+    }
+    std::sort(removed.begin(), removed.end());
+    const std::size_t nr = removed.size();
+    // The derivatives of order k at an end depend on the first p + k knots, so fixing them also
+    // keeps the first (and last) fixedDerivatives interior knots.
+    const std::size_t keep = static_cast<std::size_t>(ends.fixedDerivatives);
+    if (removed.front() <= p + keep || removed.back() + keep >= count)
+        throw GeometryError(std::string(where) + ": removing " + std::to_string(knots[removed.front()]) +
+                            " would change the end derivatives the end conditions fix");
+    if (count < nr + p + 1)
+        throw GeometryError(std::string(where) + ": removing " + std::to_string(nr) +
+                            " knots leaves too few coefficients");
+    std::vector<double> tau;
+    tau.reserve(knots.size() - nr);
+    for (std::size_t i = 0, k = 0; i < knots.size(); ++i) {
+        if (k < nr && removed[k] == i) {
+            ++k;
+            continue;
+        }
+        tau.push_back(knots[i]);
+    }
+    const std::size_t nt = count - nr;  // coefficients after removal
+    const long a = static_cast<long>(removed.front());
+    const long b = static_cast<long>(removed.back());
+    const long fixedEnd = ends.fixedDerivatives + 1;
+    long cL = std::max(a - static_cast<long>(p) - margin, fixedEnd);
+    long cH = std::min(b - static_cast<long>(nr) + margin, static_cast<long>(nt) - 1 - fixedEnd);
+    if (cL > cH)
+        throw GeometryError(std::string(where) + ": the end conditions leave no coefficient free near " +
+                            std::to_string(knots[removed.front()]));
+
+    // Local knot insertion matrix from tau to knots over tau columns [c0, c1]: insert the removed
+    // values into the identity, one Boehm step each.
+    const std::size_t c0 = static_cast<std::size_t>(std::max(0L, cL - static_cast<long>(p) - 1));
+    const std::size_t c1 = std::min(nt - 1, static_cast<std::size_t>(cH) + p + 1);
+    std::vector<double> u(tau.begin() + static_cast<std::ptrdiff_t>(c0),
+                          tau.begin() + static_cast<std::ptrdiff_t>(c1 + p + 2));
+    std::vector<double> removedValues;
+    for (std::size_t idx : removed) removedValues.push_back(knots[idx]);
+    const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, removedValues, where);
+
+    auto oldIndex = [&](std::size_t c) { return static_cast<long>(c) < cL ? c : c + nr; };
+    const std::size_t freeCount = static_cast<std::size_t>(cH - cL + 1);
+    const std::size_t width = 3 * sequences;
+    std::vector<double> mat, rhs;
+    std::size_t fitRows = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        bool touchesFree = false;
+        for (long c = cL; c <= cH; ++c)
+            if (rows[r][static_cast<std::size_t>(c) - c0] != 0.0) touchesFree = true;
+        if (!touchesFree) continue;
+        const std::size_t j = c0 + r;  // global coefficient index in the current knots
+        const double scale = std::sqrt((knots[j + p + 1] - knots[j]) / static_cast<double>(p + 1));
+        if (scale == 0.0) continue;
+        for (long c = cL; c <= cH; ++c) mat.push_back(scale * rows[r][static_cast<std::size_t>(c) - c0]);
+        for (std::size_t s = 0; s < sequences; ++s) {
+            glm::dvec3 target = points[j * sequences + s];
+            for (std::size_t c = c0; c <= c1; ++c) {
+                if (static_cast<long>(c) >= cL && static_cast<long>(c) <= cH) continue;
+                const double w = rows[r][c - c0];
+                if (w != 0.0) target -= w * points[oldIndex(c) * sequences + s];
+            }
+            rhs.push_back(scale * target.x);
+            rhs.push_back(scale * target.y);
+            rhs.push_back(scale * target.z);
+        }
+        ++fitRows;
+    }
+    if (fitRows < freeCount) throw GeometryError(std::string(where) + ": the local fit is under-determined");
+    const std::vector<double> x =
+        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+
+    LeastSquaresRemoval out;
+    out.knots = std::move(tau);
+    out.points.resize(nt * sequences);
+    for (std::size_t c = 0; c < nt; ++c)
+        for (std::size_t s = 0; s < sequences; ++s) {
+            if (static_cast<long>(c) >= cL && static_cast<long>(c) <= cH) {
+                const std::size_t row = (c - static_cast<std::size_t>(cL)) * width + 3 * s;
+                out.points[c * sequences + s] = glm::dvec3(x[row], x[row + 1], x[row + 2]);
+            } else {
+                out.points[c * sequences + s] = points[oldIndex(c) * sequences + s];
+            }
+        }
+    out.firstChanged = static_cast<std::size_t>(cL);
+    out.lastChanged = static_cast<std::size_t>(cH);
+    out.changedFrom = out.knots[out.firstChanged];
+    out.changedTo = out.knots[out.lastChanged + p + 1];
+    return out;
+}
+
+Curve removeKnotsLeastSquares(const Curve& curve, std::span<const double> values, const EndConditions& ends,
+                              int margin) {
+    if (curve.rational())
+        throw GeometryError("removeKnotsLeastSquares: rational curves are not supported (polynomial only)");
+    LeastSquaresRemoval r =
+        removeKnotsLeastSquares(curve.degree, curve.knots, curve.points, 1, values, ends, margin);
+    return Curve(curve.degree, std::move(r.knots), std::move(r.points));
+}
+
+}  // namespace geom

@@ -1,0 +1,158 @@
+#include "geom/KnotSignificance.h"
+
+#include "geom/GeometryError.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace geom {
+namespace {
+
+// Checks that knotIndex names an interior knot value and returns the index of its last
+// occurrence and its multiplicity.
+std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> knots, std::size_t count,
+                                         std::size_t knotIndex, const char* where) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    if (knots.size() != count + p + 1)
+        throw GeometryError(std::string(where) + ": " + std::to_string(knots.size()) + " knots for " +
+                            std::to_string(count) + " coefficients of degree " + std::to_string(degree));
+    if (knotIndex >= knots.size())
+        throw GeometryError(std::string(where) + ": knot index " + std::to_string(knotIndex) +
+                            " is past the end");
+    const double z = knots[knotIndex];
+    if (!(z > knots[p] && z < knots[count]))
+        throw GeometryError(std::string(where) + ": knot " + std::to_string(knotIndex) + " (value " +
+                            std::to_string(z) + ") is not an interior knot");
+    std::size_t r = knotIndex;
+    while (r + 1 < knots.size() && knots[r + 1] == z) ++r;
+    std::size_t first = knotIndex;
+    while (first > 0 && knots[first - 1] == z) --first;
+    return {r, static_cast<int>(r - first + 1)};
+}
+
+// Lyche and Morken's l-infinity removal error. Removing one occurrence of z = knots[r] (last
+// occurrence, multiplicity s) and inserting it again maps the p-s+2 local coefficients c of the
+// reduced spline to the p-s+3 coefficients d by a bidiagonal matrix B (rows [1 0..], then
+// (1-alpha, alpha) pairs, then [..0 1]). The best max-norm fit of d by B c equioscillates, so
+// the square system [B | (-1)^i] [c; h] = d gives the error |h| directly. The thesis listing
+// computed the residual of this square system instead, which is zero (note 000, section 1.7).
+template <class V>
+double removalWeight(int degree, std::span<const double> knots, std::span<const V> points,
+                     std::size_t sequences, std::size_t r, int s) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t mult = static_cast<std::size_t>(s);
+    const std::size_t m = p - mult + 3;  // rows = unknowns (c and h)
+    const std::size_t firstRow = r - p - 1;
+    const double z = knots[r];
+    auto reduced = [&](std::size_t i) { return i < r ? knots[i] : knots[i + 1]; };
+
+    std::vector<double> a(m * m, 0.0);
+    a[0] = 1.0;
+    for (std::size_t q = 1; q + 1 < m; ++q) {
+        const std::size_t i = firstRow + q;
+        const double denom = reduced(i + p) - reduced(i);
+        const double alpha = denom > 0.0 ? (z - reduced(i)) / denom : 0.0;
+        a[q * m + q - 1] = 1.0 - alpha;
+        a[q * m + q] = alpha;
+    }
+    a[(m - 1) * m + m - 2] = 1.0;
+    for (std::size_t q = 0; q < m; ++q) a[q * m + m - 1] = (q % 2 == 0) ? 1.0 : -1.0;
+
+    // One matrix, one right-hand side per sequence: eliminate with partial pivoting once.
+    std::vector<V> rhs(m * sequences);
+    for (std::size_t q = 0; q < m; ++q)
+        for (std::size_t k = 0; k < sequences; ++k)
+            rhs[q * sequences + k] = points[(firstRow + q) * sequences + k];
+    for (std::size_t col = 0; col < m; ++col) {
+        std::size_t pivot = col;
+        for (std::size_t q = col + 1; q < m; ++q)
+            if (std::abs(a[q * m + col]) > std::abs(a[pivot * m + col])) pivot = q;
+        if (std::abs(a[pivot * m + col]) < 1e-300) return std::numeric_limits<double>::infinity();
+        if (pivot != col) {
+            for (std::size_t c = 0; c < m; ++c) std::swap(a[pivot * m + c], a[col * m + c]);
+            for (std::size_t k = 0; k < sequences; ++k)
+                std::swap(rhs[pivot * sequences + k], rhs[col * sequences + k]);
+        }
+        for (std::size_t q = col + 1; q < m; ++q) {
+            const double f = a[q * m + col] / a[col * m + col];
+            if (f == 0.0) continue;
+            for (std::size_t c = col; c < m; ++c) a[q * m + c] -= f * a[col * m + c];
+            for (std::size_t k = 0; k < sequences; ++k)
+                rhs[q * sequences + k] -= f * rhs[col * sequences + k];
+        }
+    }
+    // Only the last unknown, h, is needed: it comes straight out of the triangular system.
+    double worst = 0.0;
+    for (std::size_t k = 0; k < sequences; ++k) {
+        const V h = rhs[(m - 1) * sequences + k] / a[(m - 1) * m + m - 1];
+        worst = std::max(worst, glm::length(h));
+    }
+    return worst;
+}
+
+std::vector<glm::dvec4> homogeneous(const Curve& curve) {
+    std::vector<glm::dvec4> h(curve.points.size());
+    for (std::size_t i = 0; i < h.size(); ++i)
+        h[i] = glm::dvec4(curve.points[i] * curve.weight(i), curve.weight(i));
+    return h;
+}
+
+template <class V>
+std::vector<KnotSignificance> rankImpl(int degree, std::span<const double> knots, std::span<const V> points,
+                                       std::size_t sequences) {
+    if (sequences == 0 || points.size() % sequences != 0)
+        throw GeometryError("rankKnots: " + std::to_string(points.size()) + " points do not split into " +
+                            std::to_string(sequences) + " sequences");
+    const std::size_t count = points.size() / sequences;
+    const std::size_t p = static_cast<std::size_t>(degree);
+    std::vector<KnotSignificance> out;
+    for (std::size_t i = p + 1; i < count; ++i) {
+        if (knots[i] == knots[i + 1] || !(knots[i] > knots[p]) || !(knots[i] < knots[count])) continue;
+        const auto [r, s] = interiorKnot(degree, knots, count, i, "rankKnots");
+        out.push_back({r, knots[r], s, removalWeight<V>(degree, knots, points, sequences, r, s)});
+    }
+    std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
+        return a.weight < b.weight;
+    });
+    return out;
+}
+
+}  // namespace
+
+double knotRemovalWeight(int degree, std::span<const double> knots, std::span<const glm::dvec3> points,
+                         std::size_t sequences, std::size_t knotIndex) {
+    if (degree < 1) throw GeometryError("knotRemovalWeight: degree must be at least 1");
+    if (sequences == 0 || points.size() % sequences != 0)
+        throw GeometryError("knotRemovalWeight: " + std::to_string(points.size()) +
+                            " points do not split into " + std::to_string(sequences) + " sequences");
+    const auto [r, s] =
+        interiorKnot(degree, knots, points.size() / sequences, knotIndex, "knotRemovalWeight");
+    return removalWeight<glm::dvec3>(degree, knots, points, sequences, r, s);
+}
+
+double knotRemovalWeight(const Curve& curve, std::size_t knotIndex) {
+    if (!curve.rational()) return knotRemovalWeight(curve.degree, curve.knots, curve.points, 1, knotIndex);
+    const auto [r, s] =
+        interiorKnot(curve.degree, curve.knots, curve.points.size(), knotIndex, "knotRemovalWeight");
+    const std::vector<glm::dvec4> h = homogeneous(curve);
+    return removalWeight<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1, r, s);
+}
+
+std::vector<KnotSignificance> rankKnots(int degree, std::span<const double> knots,
+                                        std::span<const glm::dvec3> points, std::size_t sequences) {
+    if (degree < 1) throw GeometryError("rankKnots: degree must be at least 1");
+    return rankImpl<glm::dvec3>(degree, knots, points, sequences);
+}
+
+std::vector<KnotSignificance> rankKnots(const Curve& curve) {
+    if (!curve.rational()) return rankImpl<glm::dvec3>(curve.degree, curve.knots, std::span(curve.points), 1);
+    const std::vector<glm::dvec4> h = homogeneous(curve);
+    return rankImpl<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1);
+}
+
+}  // namespace geom

@@ -1,0 +1,259 @@
+#include "GeomTestUtil.h"
+#include "geom/Basis.h"
+#include "geom/DataReduction.h"
+#include "geom/Deviation.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/KnotInsertion.h"
+#include "geom/KnotSignificance.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+using namespace geom;
+
+namespace {
+
+// A smooth curve of degree p with many knots: a random curve with few control points, refined
+// with `extra` knots and then disturbed by `noise`, so that reduction has real work to do.
+Curve noisyRefinedCurve(std::mt19937& rng, int p, std::size_t extra, double noise) {
+    const Curve base = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 3), false, true);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
+    std::vector<double> inserted;
+    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(0.02 + 0.96 * unit(rng));
+    Curve c = refineKnots(base, inserted);
+    for (std::size_t i = 1; i + 1 < c.points.size(); ++i)
+        c.points[i] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+    return c;
+}
+
+Surface noisyRefinedSurface(std::mt19937& rng, int p, int q, std::size_t extra, double noise) {
+    const Surface base = geomtest::bumpySurface(rng, p, q, static_cast<std::size_t>(p + 2),
+                                                static_cast<std::size_t>(q + 2), false);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
+    std::vector<double> iu, iv;
+    for (std::size_t i = 0; i < extra; ++i) iu.push_back(0.02 + 0.96 * unit(rng));
+    for (std::size_t i = 0; i < extra; ++i) iv.push_back(0.02 + 0.96 * unit(rng));
+    Surface s = refineKnotsV(refineKnotsU(base, iu), iv);
+    for (auto& pt : s.points) pt += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("curve reduction keeps the measured distance within the tolerance, degrees 2 to 5",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(31);
+    for (int p = 2; p <= 5; ++p)
+        for (double tol : {1e-2, 1e-3}) {
+            const Curve c = noisyRefinedCurve(rng, p, 40, 2e-4);
+            ReductionOptions o;
+            o.tolerance = tol;
+            const CurveReduction r = reduceCurve(c, o);
+            INFO("degree " << p << " tolerance " << tol);
+            REQUIRE(r.removed > 20);
+            REQUIRE(r.curve.points.size() == c.points.size() - r.removed);
+            REQUIRE(r.curve.degree == p);
+            REQUIRE(r.deviation.maxError <= tol);
+            // An independent, denser measurement agrees.
+            const CurveDeviation dense = measureDeviation(c, r.curve, 64);
+            REQUIRE(dense.maxError <= tol * 1.001);
+            REQUIRE(dense.maxError >= 0.5 * r.deviation.maxError);
+            // Clamped ends stay where they were.
+            REQUIRE(r.curve.points.front() == c.points.front());
+            REQUIRE(r.curve.points.back() == c.points.back());
+        }
+}
+
+TEST_CASE("a curve made by inserting knots reduces back to the simpler curve", "[geom][knots][reduction]") {
+    std::mt19937 rng(32);
+    for (int p = 2; p <= 5; ++p) {
+        const Curve simple = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 5), false, true);
+        std::uniform_real_distribution<double> unit(0.05, 0.95);
+        std::vector<double> inserted;
+        for (int i = 0; i < 12; ++i) inserted.push_back(unit(rng));
+        // Raise an original simple knot's multiplicity as well.
+        for (std::size_t i = static_cast<std::size_t>(p) + 1; i < simple.points.size(); ++i)
+            if (knotMultiplicity(simple.knots, simple.knots[i]) == 1) {
+                inserted.push_back(simple.knots[i]);
+                break;
+            }
+        const Curve refined = refineKnots(simple, inserted);
+        ReductionOptions o;
+        o.tolerance = 1e-9;
+        const CurveReduction r = reduceCurve(refined, o);
+        INFO("degree " << p);
+        REQUIRE(r.removed == inserted.size());
+        REQUIRE(r.curve.knots.size() == simple.knots.size());
+        for (std::size_t i = 0; i < simple.knots.size(); ++i) REQUIRE(r.curve.knots[i] == simple.knots[i]);
+        for (std::size_t i = 0; i < simple.points.size(); ++i)
+            REQUIRE(glm::length(r.curve.points[i] - simple.points[i]) < 1e-10);
+    }
+}
+
+TEST_CASE("count-driven reduction removes exactly the number asked for and reports its error",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(33);
+    const Curve c = noisyRefinedCurve(rng, 3, 40, 1e-3);
+    for (std::size_t n : {1u, 4u, 7u, 23u}) {
+        ReductionOptions o;
+        o.maxRemovals = n;
+        const CurveReduction r = reduceCurve(c, o);
+        REQUIRE(r.removed == n);
+        REQUIRE(r.curve.points.size() == c.points.size() - n);
+        REQUIRE(r.curve.knots.size() == c.knots.size() - n);
+        // The report is filled: max is the larger direction, the mean is below the max.
+        REQUIRE(r.deviation.samples > 0);
+        REQUIRE(r.deviation.maxError ==
+                std::max(r.deviation.maxOriginalToReduced, r.deviation.maxReducedToOriginal));
+        REQUIRE(r.deviation.meanError <= r.deviation.maxError);
+        REQUIRE(r.deviation.maxError > 0.0);
+    }
+    // Both limits: the count stops it first when the tolerance is loose.
+    ReductionOptions both;
+    both.maxRemovals = 5;
+    both.tolerance = 1.0;
+    REQUIRE(reduceCurve(c, both).removed == 5);
+    // The partition size changes how often the weights are recomputed, not the count.
+    ReductionOptions single;
+    single.maxRemovals = 9;
+    single.partitionSize = 1;
+    REQUIRE(reduceCurve(c, single).removed == 9);
+}
+
+TEST_CASE("curve reduction with end derivatives fixed keeps them", "[geom][knots][reduction]") {
+    std::mt19937 rng(34);
+    const Curve c = noisyRefinedCurve(rng, 4, 30, 1e-4);
+    ReductionOptions o;
+    o.tolerance = 1e-2;
+    o.ends.fixedDerivatives = 2;
+    const CurveReduction r = reduceCurve(c, o);
+    REQUIRE(r.removed > 0);
+    REQUIRE(r.deviation.maxError <= o.tolerance);
+    for (double u : {c.domainStart(), c.domainEnd()}) {
+        const auto a = derivatives(c, u, 2), b = derivatives(r.curve, u, 2);
+        for (int k = 0; k <= 2; ++k)
+            REQUIRE(glm::length(a[static_cast<std::size_t>(k)] - b[static_cast<std::size_t>(k)]) <=
+                    1e-8 * (1.0 + glm::length(a[static_cast<std::size_t>(k)])));
+    }
+}
+
+TEST_CASE("reduction rejects rational input and bad options", "[geom][knots][reduction]") {
+    std::mt19937 rng(35);
+    const Curve rational = geomtest::randomCurve(rng, 3, 8, true, true);
+    ReductionOptions o;
+    o.tolerance = 1e-3;
+    REQUIRE_THROWS_WITH(reduceCurve(rational, o), Catch::Contains("rational"));
+    const Curve c = geomtest::randomCurve(rng, 3, 8, false, true);
+    ReductionOptions bad = o;
+    bad.tolerance = 0.0;
+    REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("tolerance"));
+    bad = o;
+    bad.partitionSize = 0;
+    REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("partitionSize"));
+    bad = o;
+    bad.samplesPerSpan = 0;
+    REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("samplesPerSpan"));
+    const Surface rs = geomtest::randomSurface(rng, 2, 2, 5, 5, true, true);
+    REQUIRE_THROWS_WITH(reduceSurface(rs, ReductionDirection::Both, o), Catch::Contains("rational"));
+}
+
+TEST_CASE("surface reduction keeps the measured distance within the tolerance, degrees 2 to 5",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(36);
+    const int degrees[][2] = {{2, 3}, {3, 3}, {4, 2}, {5, 4}};
+    for (const auto& d : degrees) {
+        const Surface s = noisyRefinedSurface(rng, d[0], d[1], 12, 2e-5);
+        for (ReductionDirection dir :
+             {ReductionDirection::U, ReductionDirection::V, ReductionDirection::Both}) {
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            const SurfaceReduction r = reduceSurface(s, dir, o);
+            INFO("degrees " << d[0] << "," << d[1] << " direction " << static_cast<int>(dir));
+            REQUIRE(r.surface.countU == s.countU - r.removedU);
+            REQUIRE(r.surface.countV == s.countV - r.removedV);
+            if (dir != ReductionDirection::V) REQUIRE(r.removedU >= 6);
+            if (dir != ReductionDirection::U) REQUIRE(r.removedV >= 6);
+            if (dir == ReductionDirection::U) REQUIRE(r.removedV == 0);
+            if (dir == ReductionDirection::V) REQUIRE(r.removedU == 0);
+            REQUIRE(r.deviation.maxError <= o.tolerance);
+            const SurfaceDeviation dense = measureDeviation(s, r.surface, 6);
+            REQUIRE(dense.maxError <= o.tolerance * 1.001);
+            // The error field: one value per grid vertex of the reduced surface.
+            REQUIRE(r.deviation.error.size() == r.deviation.u.size() * r.deviation.v.size());
+            REQUIRE(*std::max_element(r.deviation.error.begin(), r.deviation.error.end()) ==
+                    r.deviation.maxReducedToOriginal);
+            REQUIRE(r.deviation.meanError <= r.deviation.maxReducedToOriginal);
+        }
+    }
+}
+
+TEST_CASE("surface row weights are the maximum over the isoparametric curves", "[geom][knots][reduction]") {
+    std::mt19937 rng(37);
+    const Surface base = geomtest::bumpySurface(rng, 3, 3, 6, 6, false);
+    Surface s = insertKnotU(base, 0.37, 1);
+    // The row weight of 0.37 equals the largest weight of the columns taken one by one.
+    const auto rowRank = rankKnots(s.degreeU, s.knotsU, s.points, s.countV);
+    const std::size_t r37 =
+        static_cast<std::size_t>(std::find(s.knotsU.begin(), s.knotsU.end(), 0.37) - s.knotsU.begin());
+    // Disturb one column near the knot: that column alone now needs it.
+    s.point(r37 - 2, 3) += glm::dvec3(0, 0, 0.05);
+    double worst = 0.0, sum = 0.0;
+    for (std::size_t j = 0; j < s.countV; ++j) {
+        std::vector<glm::dvec3> column;
+        for (std::size_t i = 0; i < s.countU; ++i) column.push_back(s.point(i, j));
+        const double w = knotRemovalWeight(s.degreeU, s.knotsU, column, 1, r37);
+        worst = std::max(worst, w);
+        sum += w;
+    }
+    REQUIRE(knotRemovalWeight(s.degreeU, s.knotsU, s.points, s.countV, r37) == worst);
+    REQUIRE(worst > 2.0 * sum / static_cast<double>(s.countV));  // a mean would hide it
+    REQUIRE(rowRank.front().value == 0.37);                      // before the disturbance it was free
+    // The tolerance holds on the whole surface, so the row stays when one curve needs it.
+    ReductionOptions o;
+    o.tolerance = 1e-6;
+    const SurfaceReduction r = reduceSurface(s, ReductionDirection::U, o);
+    REQUIRE(std::find(r.surface.knotsU.begin(), r.surface.knotsU.end(), 0.37) != r.surface.knotsU.end());
+    REQUIRE(r.deviation.maxError <= o.tolerance);
+    // Undisturbed, the same row goes exactly.
+    const SurfaceReduction clean = reduceSurface(insertKnotU(base, 0.37, 1), ReductionDirection::U, o);
+    REQUIRE(clean.surface.knotsU == base.knotsU);
+    REQUIRE(clean.deviation.maxError < 1e-10);
+}
+
+TEST_CASE("count-driven surface reduction removes that many rows in each direction",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(38);
+    const Surface s = noisyRefinedSurface(rng, 3, 3, 10, 1e-3);
+    ReductionOptions o;
+    o.maxRemovals = 4;
+    const SurfaceReduction r = reduceSurface(s, ReductionDirection::Both, o);
+    REQUIRE(r.removedU == 4);
+    REQUIRE(r.removedV == 4);
+    REQUIRE(r.surface.countU == s.countU - 4);
+    REQUIRE(r.surface.countV == s.countV - 4);
+    REQUIRE(r.deviation.maxError > 0.0);
+}
+
+TEST_CASE("the final measurement steps back when coarse loop samples let the tolerance slip",
+          "[geom][knots][reduction]") {
+    // One sample per span in the loop misses the peaks between knots; the final measurement
+    // (twice as dense) catches them and undoes accepted removals until the tolerance holds.
+    std::mt19937 rng(51);
+    std::size_t steppedBack = 0;
+    for (int trial = 0; trial < 6; ++trial) {
+        const Curve c = noisyRefinedCurve(rng, 2 + trial % 4, 40, 3e-3);
+        ReductionOptions o;
+        o.tolerance = 1e-3;
+        o.samplesPerSpan = 1;
+        o.partitionSize = 1;
+        const CurveReduction r = reduceCurve(c, o);
+        steppedBack += r.steppedBack;
+        REQUIRE(r.deviation.maxError <= o.tolerance);
+        REQUIRE(r.removed == c.points.size() - r.curve.points.size());
+        REQUIRE(measureDeviation(c, r.curve, 2).maxError == r.deviation.maxError);
+    }
+    REQUIRE(steppedBack > 0);
+}
