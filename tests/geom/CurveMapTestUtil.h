@@ -59,15 +59,41 @@ inline bool selfIntersects(const std::vector<glm::dvec2>& loop) {
     return false;
 }
 
-inline bool insidePolygon(const std::vector<glm::dvec2>& poly, const glm::dvec2& p) {
-    bool inside = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-        const glm::dvec2 &a = poly[i], &b = poly[j];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-            inside = !inside;
+/// Crossing-number inside test of a closed polygon, edges bucketed by y so a query reads few.
+class PolygonInside {
+public:
+    explicit PolygonInside(std::vector<glm::dvec2> poly, int buckets = 128) : poly_(std::move(poly)) {
+        lo_ = hi_ = poly_.front().y;
+        for (const glm::dvec2& p : poly_) {
+            lo_ = std::min(lo_, p.y);
+            hi_ = std::max(hi_, p.y);
+        }
+        buckets_.resize(static_cast<std::size_t>(buckets));
+        for (std::size_t i = 0, j = poly_.size() - 1; i < poly_.size(); j = i++) {
+            const double a = std::min(poly_[i].y, poly_[j].y), b = std::max(poly_[i].y, poly_[j].y);
+            for (std::size_t k = bucket(a); k <= bucket(b); ++k) buckets_[k].push_back({i, j});
+        }
     }
-    return inside;
-}
+    bool operator()(const glm::dvec2& p) const {
+        if (p.y < lo_ || p.y > hi_) return false;
+        bool inside = false;
+        for (const auto& [i, j] : buckets_[bucket(p.y)]) {
+            const glm::dvec2 &a = poly_[i], &b = poly_[j];
+            if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+                inside = !inside;
+        }
+        return inside;
+    }
+
+private:
+    std::size_t bucket(double y) const {
+        const double f = (y - lo_) / (hi_ - lo_ + 1e-300) * static_cast<double>(buckets_.size());
+        return std::min(buckets_.size() - 1, static_cast<std::size_t>(std::max(0.0, f)));
+    }
+    std::vector<glm::dvec2> poly_;
+    double lo_, hi_;
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> buckets_;
+};
 
 /// Brute-force reference: the (u, w) area of the cells (a grid over the loops' box) whose
 /// surface point projects into the plane curve and faces the curve plane.
@@ -80,6 +106,7 @@ inline double rasterArea(const geom::curvemap::CurveMapper& mapper, const geom::
         const glm::dvec3 p = geom::evaluate(curve, s);
         plane.push_back({p.x, p.y});
     }
+    const PolygonInside inside(plane);
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const auto& loop : loops)
         for (const glm::dvec2& uv : loop.uv) {
@@ -91,6 +118,8 @@ inline double rasterArea(const geom::curvemap::CurveMapper& mapper, const geom::
     hi += margin;
     const geom::curvemap::SurfaceDomain& d = mapper.domain();
     const glm::dvec2 cell = (hi - lo) / double(cells);
+    // Only the side of the surface that faces the curve plane at the reference point is seen.
+    const double facing = glm::dot(result.frame.z, glm::cross(result.frame.tangentU, result.frame.tangentW));
     double area = 0.0;
     for (int i = 0; i < cells; ++i)
         for (int j = 0; j < cells; ++j) {
@@ -98,9 +127,9 @@ inline double rasterArea(const geom::curvemap::CurveMapper& mapper, const geom::
             if (!d.closedU && (uv.x < d.u0 || uv.x > d.u1)) continue;
             if (!d.closedW && (uv.y < d.w0 || uv.y > d.w1)) continue;
             const glm::dvec2 w = d.wrap(uv);
-            if (glm::dot(geom::normal(mapper.surface(), w.x, w.y), result.frame.z) <= 0.0) continue;
+            if (glm::dot(geom::normal(mapper.surface(), w.x, w.y), result.frame.z) * facing <= 0.0) continue;
             const glm::dvec3 local = result.frame.toCurve(geom::evaluate(mapper.surface(), w.x, w.y));
-            if (insidePolygon(plane, {local.x, local.y})) area += cell.x * cell.y;
+            if (inside({local.x, local.y})) area += cell.x * cell.y;
         }
     return area;
 }

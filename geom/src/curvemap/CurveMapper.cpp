@@ -201,13 +201,18 @@ bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b) c
 }
 
 void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples) {
-    const Sample m = project(0.5 * (a.s + b.s));
-    if (depth < options_.maxDepth && needsSplit(a, m, b)) {
-        refine(a, m, depth + 1, samples);
-        refine(m, b, depth + 1, samples);
+    // Two inner samples at the thirds: one midpoint alone misses an S-bend (an inflection
+    // between the ends puts the middle back on the chord).
+    const Sample m1 = project(a.s + (b.s - a.s) / 3.0);
+    const Sample m2 = project(a.s + 2.0 * (b.s - a.s) / 3.0);
+    if (depth < options_.maxDepth && (needsSplit(a, m1, b) || needsSplit(a, m2, b))) {
+        refine(a, m1, depth + 1, samples);
+        refine(m1, m2, depth + 1, samples);
+        refine(m2, b, depth + 1, samples);
         return;
     }
-    samples.push_back(m);
+    samples.push_back(m1);
+    samples.push_back(m2);
     samples.push_back(b);
 }
 
@@ -305,6 +310,14 @@ void PartMapper::emitLoop(std::vector<Vertex> vertices, std::size_t walks) {
         loop.curveParameters.push_back(vertices[i].s);
         loop.projectedFrom.push_back(vertices[i].from);
     }
+    // Whole periods off: shift so the middle of the loop's range lies in the domain.
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const glm::dvec2& uv : loop.uv) {
+        lo = glm::min(lo, uv);
+        hi = glm::max(hi, uv);
+    }
+    const glm::dvec2 middle = 0.5 * (lo + hi), shift = domain_.wrap(middle) - middle;
+    for (glm::dvec2& uv : loop.uv) uv += shift;
     const glm::dvec2 closing = domain_.unwrapNear(loop.uv.front(), loop.uv.back());
     if (glm::length(closing - loop.uv.front()) > 1e-9)
         out_.issues.push_back(
@@ -348,12 +361,8 @@ void PartMapper::run() {
     params.push_back(s1);
     std::vector<Sample> samples{project(params.front())};
     for (std::size_t i = 1; i < params.size(); ++i) {
-        const Sample b = project(params[i]);
         const Sample a = samples.back();
-        samples.pop_back();
-        samples.push_back(a);
-        refine(a, b, 0, samples);
-        // refine pushed (mid, b) pairs; the last one is b.
+        refine(a, project(params[i]), 0, samples);
     }
     // The closing sample repeats the first line.
     samples.back() = samples.front();

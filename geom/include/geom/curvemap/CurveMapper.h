@@ -21,13 +21,14 @@ struct MapOptions {
     /// mapped curve from the 3D polyline, and of the surface image of each (u, w) segment
     /// from the mapped curve. Boundary walks keep the same tolerance.
     double tolerance = 1e-3;
-    int maxDepth = 24;  ///< subdivision levels per initial interval
+    int maxDepth = 20;  ///< subdivision levels (each into thirds) per initial interval
 };
 
 /// A closed mapped loop: the same vertices in (u, w) and in model space; the first vertex is
 /// repeated at the end. The region the loop bounds lies on its left in (u, w) (outer loops run
 /// counter-clockwise). In a closed direction (u, w) stay continuous across the seam, so they
-/// may leave the domain by up to a period; SurfaceDomain::wrap brings them back.
+/// may leave the domain (the middle of a loop's range lies inside); SurfaceDomain::wrap
+/// brings single points back.
 struct MappedLoop {
     std::vector<glm::dvec2> uv;
     std::vector<glm::dvec3> points;         ///< S(uv), on the surface
