@@ -211,4 +211,10 @@ Curve interpolatePart(const CurvePart& part, Parameterization parameterization) 
     }
 }
 
+std::vector<Curve> interpolateModel(const CurveModel& model, Parameterization parameterization) {
+    std::vector<Curve> curves;
+    for (const CurvePart& part : model.parts) curves.push_back(interpolatePart(part, parameterization));
+    return curves;
+}
+
 }  // namespace geom

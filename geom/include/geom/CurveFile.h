@@ -53,5 +53,8 @@ void writeCurveFile(std::ostream& out, const CurveModel& model);
 /// The cubic through a part (closed, with its continuities and constraints).
 Curve interpolatePart(const CurvePart& part,
                       Parameterization parameterization = Parameterization::ChordLength);
+/// interpolatePart for every part, in order.
+std::vector<Curve> interpolateModel(const CurveModel& model,
+                                    Parameterization parameterization = Parameterization::ChordLength);
 
 }  // namespace geom
