@@ -99,7 +99,7 @@ private:
 /// surface point projects into the plane curve and faces the curve plane.
 inline double rasterArea(const geom::curvemap::CurveMapper& mapper, const geom::curvemap::MapResult& result,
                          const geom::Curve& curve, const std::vector<geom::curvemap::MappedLoop>& loops,
-                         int cells = 300) {
+                         int cells = 200) {
     std::vector<glm::dvec2> plane;
     for (int i = 0; i <= 4000; ++i) {
         const double s = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * i / 4000.0;
