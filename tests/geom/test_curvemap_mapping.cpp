@@ -333,3 +333,35 @@ TEST_CASE("mapping reports what it cannot do and rejects bad input", "[geom][cur
     REQUIRE_FALSE(s.parts[0].issues.empty());
     CHECK_THAT(s.parts[0].issues[0], Catch::Contains("silhouette"));
 }
+
+TEST_CASE("the logo on the upper surface of a wing (closed around, open at the tips)", "[geom][curvemap]") {
+    const CurveMapper wing(makeWingSurface());
+    CHECK(wing.domain().closedU);
+    CHECK_FALSE(wing.domain().closedW);
+    const PlacementFrame top = placementFrame(wing.surface(), at(15, 10));
+    CHECK(top.z.z > 0.99);  // normals point outward: up on the upper surface
+    const std::vector<Curve> logo = loadCurves("acslogo.crv");
+    const MapResult r = wing.map(logo, at(15, 10, 1), {2e-3});
+    checkMapping(wing, r, logo);
+    checkAreas(wing, r, logo);
+    for (const MappedPart& part : r.parts) {
+        CHECK(part.loops.size() == 1);
+        CHECK(part.issues.empty());
+        CHECK_FALSE(part.otherHits.empty());  // the lower surface is hit too
+    }
+    // Placed near a tip, parts run over it; beyond the open tip the tilted projection lines see
+    // the inside of the lower surface, which then comes in front. That region is bounded by an
+    // occlusion curve, not by the surface boundary: reported, not mapped. Parts that stay on
+    // the upper surface map as usual.
+    const MapResult t = wing.map(logo, at(15, 19, 1), {2e-3});
+    checkMapping(wing, t, logo);
+    std::size_t occluded = 0;
+    for (const MappedPart& part : t.parts) {
+        if (!part.loops.empty()) CHECK(part.issues.empty());
+        for (const std::string& issue : part.issues)
+            if (issue.find("another sheet comes in front") != std::string::npos) ++occluded;
+    }
+    CHECK(occluded == 2);
+    CHECK(t.parts[0].loops.size() == 1);
+    CHECK(t.parts[1].loops.size() == 1);
+}

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 namespace geom::curvemap {
@@ -145,7 +147,8 @@ public:
 
 private:
     Sample project(double s);
-    bool needsSplit(const Sample& a, const Sample& m, const Sample& b) const;
+    bool needsSplit(const Sample& a, const Sample& m, const Sample& b, double fraction) const;
+    bool jumps(const Sample& a, const Sample& b) const;
     void refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples);
     bool crossing(const Sample& inside, const Sample& outside, Vertex& vertex, BoundaryPosition& where);
     std::vector<Vertex> boundaryWalk(int component, double from, double length) const;
@@ -185,13 +188,17 @@ Sample PartMapper::project(double s) {
     return r;
 }
 
-bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b) const {
+bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b, double fraction) const {
     const double tol = options_.tolerance;
     if (distanceToSegment(m.local, a.local, b.local) > tol) return true;  // the plane curve's own bend
     if (a.hit != b.hit) return glm::length(a.from - b.from) > tol;        // bracket the crossing tightly
     if (!a.hit) return m.hit;
     if (!m.hit) return true;
     if (distanceToSegment(m.point, a.point, b.point) > tol) return true;  // the mapped curve's bend
+    // A jump to another sheet (the nearest hit switching surfaces) puts the inner sample near one
+    // end instead of near its share of the chord; smooth curves stay far from this bound.
+    const glm::dvec3 share = a.point + fraction * (b.point - a.point);
+    if (glm::length(m.point - share) > std::max(tol, 0.3 * glm::length(b.point - a.point))) return true;
     // The surface image of the straight (u, w) segment must follow the mapped curve too.
     const glm::dvec2 ub = domain_.unwrapNear(b.uv, a.uv), um = domain_.unwrapNear(m.uv, a.uv);
     const glm::dvec2 d = ub - a.uv;
@@ -200,12 +207,19 @@ bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b) c
     return glm::length(pointAt(a.uv + lambda * d) - m.point) > tol;
 }
 
+bool PartMapper::jumps(const Sample& a, const Sample& b) const {
+    // After refinement a jump between sheets is left as a pair of samples whose mapped points
+    // are far apart while their curve points almost coincide.
+    const double step = glm::length(b.point - a.point);
+    return a.hit && b.hit && step > 10.0 * options_.tolerance && step > 100.0 * glm::length(b.from - a.from);
+}
+
 void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples) {
     // Two inner samples at the thirds: one midpoint alone misses an S-bend (an inflection
     // between the ends puts the middle back on the chord).
     const Sample m1 = project(a.s + (b.s - a.s) / 3.0);
     const Sample m2 = project(a.s + 2.0 * (b.s - a.s) / 3.0);
-    if (depth < options_.maxDepth && (needsSplit(a, m1, b) || needsSplit(a, m2, b))) {
+    if (depth < options_.maxDepth && (needsSplit(a, m1, b, 1.0 / 3.0) || needsSplit(a, m2, b, 2.0 / 3.0))) {
         refine(a, m1, depth + 1, samples);
         refine(m1, m2, depth + 1, samples);
         refine(m2, b, depth + 1, samples);
@@ -394,10 +408,18 @@ void PartMapper::run() {
         }
         return;
     }
-    const SurfaceDerivatives jd = derivatives(surface_, firstHit->uv.x, firstHit->uv.y, 1);
-    const bool regionLeft = (area > 0.0) == (glm::dot(glm::cross(jd.at(1, 0), jd.at(0, 1)), frame_.z) > 0.0);
+    // Which side of a loop the region lies on depends on the sheet: the surface Jacobian's sign
+    // against z (a sheet seen from behind, e.g. inside an open end, reverses it).
+    const auto regionLeftAt = [&](const glm::dvec2& uv) {
+        const glm::dvec2 w = domain_.wrap(uv);
+        const SurfaceDerivatives jd = derivatives(surface_, w.x, w.y, 1);
+        return (area > 0.0) == (glm::dot(glm::cross(jd.at(1, 0), jd.at(0, 1)), frame_.z) > 0.0);
+    };
+    bool anyJump = false;
+    for (std::size_t i = 0; i < n; ++i) anyJump = anyJump || jumps(samples[i], samples[i + 1]);
 
-    if (std::all_of(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; })) {
+    if (!anyJump && std::all_of(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; })) {
+        const bool regionLeft = regionLeftAt(firstHit->uv);
         std::vector<Vertex> loop;
         for (std::size_t i = 0; i < n; ++i) loop.push_back({samples[i].uv, samples[i].s, samples[i].from});
         if (!regionLeft) std::reverse(loop.begin(), loop.end());
@@ -407,38 +429,46 @@ void PartMapper::run() {
 
     // Cut the cycle into arcs from an entry to an exit, starting just after some exit.
     std::size_t start = 0;
-    while (!(samples[start].hit && !samples[start + 1].hit)) ++start;
+    const auto leaves = [&](std::size_t i) {
+        return samples[i].hit && (!samples[i + 1].hit || jumps(samples[i], samples[i + 1]));
+    };
+    while (!leaves(start)) ++start;
     std::vector<Arc> arcs;
     Arc current;
     bool inArc = false;
-    for (std::size_t k = 1; k <= n; ++k) {
+    const auto silhouette = [&](const Sample& a) {
+        out_.issues.push_back(
+            "the nearest hit leaves a sheet of the surface away from its boundary (at a silhouette, or "
+            "where another sheet comes in front, near curve parameter " +
+            std::to_string(a.s) + "); the part cannot be closed and is not mapped");
+    };
+    // The pair (start, start + 1) is visited twice: first for an entry into the next sheet
+    // (when it is a jump), last for the exit that closes the final arc.
+    for (std::size_t k = 0; k <= n; ++k) {
         const std::size_t i = (start + k) % n;
         const Sample& a = samples[i];
         const Sample& b = samples[i + 1];
-        if (a.hit) current.vertices.push_back({a.uv, a.s, a.from});
-        if (a.hit == b.hit) continue;
-        Vertex v;
-        BoundaryPosition where;
-        const bool exiting = a.hit;
-        if (!crossing(exiting ? a : b, exiting ? b : a, v, where)) {
-            out_.issues.push_back(
-                "the projection leaves the surface away from its boundary (at a silhouette, "
-                "near curve parameter " +
-                std::to_string(a.s) + "); the part cannot be closed and is not mapped");
-            return;
-        }
-        if (exiting) {
-            ++out_.exits;
+        if (a.hit && k > 0) current.vertices.push_back({a.uv, a.s, a.from});
+        const bool jump = jumps(a, b);
+        if (k > 0 && a.hit && (!b.hit || jump)) {  // leaves a's sheet between a and b
+            Vertex v;
+            BoundaryPosition where;
+            if (!crossing(a, b, v, where)) return silhouette(a);
             if (!inArc) {
                 out_.issues.push_back("internal: an exit without an entry");
                 return;
             }
+            ++out_.exits;
             current.vertices.push_back(v);
             current.exit = where;
             arcs.push_back(std::move(current));
             current = Arc{};
             inArc = false;
-        } else {
+        }
+        if (k < n && b.hit && (!a.hit || jump)) {  // enters b's sheet between a and b
+            Vertex v;
+            BoundaryPosition where;
+            if (!crossing(b, a, v, where)) return silhouette(b);
             ++out_.entries;
             current = Arc{};
             current.vertices.push_back(v);
@@ -446,8 +476,8 @@ void PartMapper::run() {
             inArc = true;
         }
     }
-    if (!regionLeft)
-        for (Arc& arc : arcs) {
+    for (Arc& arc : arcs)
+        if (!regionLeftAt(arc.vertices[arc.vertices.size() / 2].uv)) {
             std::reverse(arc.vertices.begin(), arc.vertices.end());
             std::swap(arc.entry, arc.exit);
         }

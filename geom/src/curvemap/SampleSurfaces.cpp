@@ -75,4 +75,35 @@ Surface makeFuselageSurface(std::size_t patchesU, std::size_t patchesV, double l
     return Surface(3, 3, ku, kv, nu, nv, std::move(points));
 }
 
+Surface makeWingSurface(std::size_t patchesU, std::size_t patchesV, double span, double rootChord,
+                        double thickness) {
+    if (patchesU < 4 || patchesV == 0 || !(span > 0.0) || !(rootChord > 0.0) || !(thickness > 0.0))
+        throw GeometryError("makeWingSurface: needs at least 4 patches around, 1 along, positive sizes");
+    std::vector<double> ku;
+    for (std::size_t i = 0; i < patchesU + 7; ++i) ku.push_back(static_cast<double>(i) - 3.0);
+    const std::vector<double> kv = clampedUniform(patchesV);
+    const std::size_t nu = patchesU + 3, nv = patchesV + 3;
+    // NACA 00xx half thickness with the closed trailing edge coefficient.
+    auto halfThickness = [thickness](double x) {
+        return 5.0 * thickness *
+               (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x -
+                0.1036 * x * x * x * x);
+    };
+    std::vector<glm::dvec3> points;
+    points.reserve(nu * nv);
+    for (std::size_t i = 0; i < nu; ++i) {
+        // Control point i at Greville abscissa i - 1; cosine spacing crowds the leading edge.
+        const double phi =
+            2.0 * std::numbers::pi * (static_cast<double>(i) - 1.0) / static_cast<double>(patchesU);
+        const double x = 0.5 * (1.0 + std::cos(phi));
+        const double z = (std::sin(phi) <= 0.0 ? 1.0 : -1.0) * halfThickness(x);
+        for (std::size_t j = 0; j < nv; ++j) {
+            const double s = greville(kv, j) / static_cast<double>(patchesV);
+            const double chord = rootChord * (1.0 - 0.5 * s);
+            points.push_back({0.2 * span * s + chord * x, span * s, chord * z});
+        }
+    }
+    return Surface(3, 3, ku, kv, nu, nv, std::move(points));
+}
+
 }  // namespace geom::curvemap

@@ -19,4 +19,13 @@ Surface makeWaveSurface(std::size_t patchesU = 8, std::size_t patchesV = 8, doub
 Surface makeFuselageSurface(std::size_t patchesU = 12, std::size_t patchesV = 10, double length = 30.0,
                             double radius = 5.0);
 
+/// A tapered, swept wing along +y: a symmetric NACA 00xx section (`thickness` of the chord)
+/// closed around in u (periodic; u = 0 at the trailing edge, then the lower surface, the
+/// leading edge at u = patchesU / 2 and the upper surface, so normals point outward and the
+/// top of mid-chord is u = 3 patchesU / 4), open along the span in w (tips are boundaries).
+/// Chord `rootChord` at the root, half of it at the tip; the leading edge sweeps back by 0.2 of
+/// the span. Domains: u in [0, patchesU], w in [0, patchesV].
+Surface makeWingSurface(std::size_t patchesU = 20, std::size_t patchesV = 20, double span = 20.0,
+                        double rootChord = 8.0, double thickness = 0.12);
+
 }  // namespace geom::curvemap
