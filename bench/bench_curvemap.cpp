@@ -1,7 +1,7 @@
 // Curve mapping benchmark (issue 7): the five-curve ACSYNT-like logo mapped onto a 20x20-patch
-// wave at tolerance 1e-4 of the span, adaptive sampling against the seed's fixed sampling
-// (ten projected points per curve segment) and against fixed sampling made fine enough to
-// reach the same maximum deviation. Prints figures, then one JSON object.
+// wave and a 20x20-patch wing at tolerance 1e-4 of the span, adaptive sampling against the seed's fixed
+// sampling (ten projected points per curve segment) and against fixed sampling made fine enough to reach the
+// same maximum deviation. Prints figures, then one JSON object.
 
 #include "geom/CurveFile.h"
 #include "geom/Evaluate.h"
@@ -111,22 +111,12 @@ Fixed fixedSamplingOnce(const Surface& surface, const SurfaceIntersector& inters
             f.deviation, deviation(surface, intersector, frame, curves[c], params[c], uvs[c], points[c]));
     return f;
 }
-
-}  // namespace
-
-int main() {
-    // The test data beside the sources (the benchmark takes no arguments).
-    const std::filesystem::path data =
-        std::filesystem::path(__FILE__).parent_path().parent_path() / "tests/data/curvemap/acslogo.crv";
-    std::vector<Curve> logo = interpolateModel(readCurveFile(data));
-    const double span = 10.0;
-    const Surface surface = makeWaveSurface(20, 20, span, 0.6, 5.0);
+/// One surface's figures, printed as lines and returned as JSON members with a prefix.
+std::string benchmark(const char* name, const Surface& surface, const Placement& place, double tolerance,
+                      const std::vector<Curve>& logo) {
     const CurveMapper mapper(surface);
-    Placement place;
-    place.reference = {10, 10};
-    place.quarterTurns = 2;
     MapOptions options;
-    options.tolerance = 1e-4 * span;
+    options.tolerance = tolerance;
 
     // Adaptive: best of five runs.
     double best = 1e300;
@@ -137,24 +127,27 @@ int main() {
         best =
             std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    std::size_t projections = 0, points = 0;
+    std::size_t projections = 0, points = 0, loops = 0;
     double adaptiveDeviation = 0.0;
     const SurfaceIntersector intersector(surface);
     for (std::size_t p = 0; p < result.parts.size(); ++p) {
         projections += result.parts[p].projections;
         for (const MappedLoop& loop : result.parts[p].loops) {
+            ++loops;
             points += loop.uv.size();
             adaptiveDeviation =
                 std::max(adaptiveDeviation, deviation(surface, intersector, result.frame, logo[p],
                                                       loop.curveParameters, loop.uv, loop.points));
         }
     }
-    std::printf("adaptive: %.2f ms, %zu projections, %zu loop points, max deviation %.3g (tolerance %.3g)\n",
-                best * 1e3, projections, points, adaptiveDeviation, options.tolerance);
+    std::printf(
+        "%s: adaptive: %.2f ms, %zu loops, %zu projections, %zu loop points, max deviation %.3g "
+        "(tolerance %.3g)\n",
+        name, best * 1e3, loops, projections, points, adaptiveDeviation, tolerance);
 
     const Fixed seed = fixedSampling(surface, intersector, result.frame, logo, 10);
-    std::printf("seed fixed sampling, 10 per segment: %.2f ms, %zu projections, max deviation %.3g\n",
-                seed.seconds * 1e3, seed.projections, seed.deviation);
+    std::printf("%s: seed fixed sampling, 10 per segment: %.2f ms, %zu projections, max deviation %.3g\n",
+                name, seed.seconds * 1e3, seed.projections, seed.deviation);
     // The fewest points per segment (doubling, then bisection) whose deviation is no larger.
     int low = 10, perSegment = 10;
     Fixed equal = seed;
@@ -174,17 +167,44 @@ int main() {
         }
     }
     std::printf(
-        "fixed sampling at equal deviation: %d per segment, %.2f ms, %zu projections, max deviation %.3g\n",
-        perSegment, equal.seconds * 1e3, equal.projections, equal.deviation);
+        "%s: fixed sampling at equal deviation: %d per segment, %.2f ms, %zu projections, max deviation "
+        "%.3g\n",
+        name, perSegment, equal.seconds * 1e3, equal.projections, equal.deviation);
 
-    std::printf(
-        "{\"surface_patches\": 400, \"tolerance_model_units\": %.6g, \"adaptive_ms\": %.4f, "
-        "\"adaptive_projections\": %zu, \"adaptive_loop_points\": %zu, \"adaptive_max_deviation\": %.6g, "
-        "\"seed10_ms\": %.4f, \"seed10_projections\": %zu, \"seed10_max_deviation\": %.6g, "
-        "\"fixed_equal_per_segment\": %d, \"fixed_equal_ms\": %.4f, \"fixed_equal_projections\": %zu, "
-        "\"fixed_equal_max_deviation\": %.6g}\n",
-        options.tolerance, best * 1e3, projections, points, adaptiveDeviation, seed.seconds * 1e3,
-        seed.projections, seed.deviation, perSegment, equal.seconds * 1e3, equal.projections,
-        equal.deviation);
+    char json[1024];
+    std::snprintf(
+        json, sizeof json,
+        "\"%s_tolerance_model_units\": %.6g, \"%s_adaptive_ms\": %.4f, \"%s_loops\": %zu, "
+        "\"%s_adaptive_projections\": %zu, \"%s_adaptive_loop_points\": %zu, "
+        "\"%s_adaptive_max_deviation\": %.6g, \"%s_seed10_ms\": %.4f, \"%s_seed10_projections\": %zu, "
+        "\"%s_seed10_max_deviation\": %.6g, \"%s_fixed_equal_per_segment\": %d, "
+        "\"%s_fixed_equal_ms\": %.4f, \"%s_fixed_equal_projections\": %zu, "
+        "\"%s_fixed_equal_max_deviation\": %.6g",
+        name, tolerance, name, best * 1e3, name, loops, name, projections, name, points, name,
+        adaptiveDeviation, name, seed.seconds * 1e3, name, seed.projections, name, seed.deviation, name,
+        perSegment, name, equal.seconds * 1e3, name, equal.projections, name, equal.deviation);
+    return json;
+}
+
+}  // namespace
+
+int main() {
+    // The test data beside the sources (the benchmark takes no arguments).
+    const std::filesystem::path data =
+        std::filesystem::path(__FILE__).parent_path().parent_path() / "tests/data/curvemap/acslogo.crv";
+    const std::vector<Curve> logo = interpolateModel(readCurveFile(data));
+
+    // The seed's tutorial: the logo in the middle of a wave (here 20 x 20 patches, span 10),
+    // turned twice; and the issue's wing (20 x 20 patches, span 20), on the upper surface at
+    // mid-span, long axis along the span. Tolerance 1e-4 of the span in both.
+    Placement onWave;
+    onWave.reference = {10, 10};
+    onWave.quarterTurns = 2;
+    Placement onWing;
+    onWing.reference = {15, 10};
+    onWing.quarterTurns = 1;
+    const std::string wave = benchmark("wave", makeWaveSurface(20, 20, 10.0, 0.6, 5.0), onWave, 1e-3, logo);
+    const std::string wing = benchmark("wing", makeWingSurface(20, 20, 20.0, 8.0, 0.12), onWing, 2e-3, logo);
+    std::printf("{\"surface_patches\": 400, %s, %s}\n", wave.c_str(), wing.c_str());
     return 0;
 }
