@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace geom {
@@ -33,6 +34,57 @@ DirectionBasis directionBasis(int degree, const std::vector<double>& knots, std:
                          std::span<double>(b.values).subspan(i * 2 * w, 2 * w));
     }
     return b;
+}
+
+/// One grid row: W is the v basis width when known at compile time (the common low degrees, so
+/// the sums unroll), 0 for any other.
+template <std::size_t W, bool Rational>
+void evaluateRow(const Surface& s, const DirectionBasis& bv, const std::vector<glm::dvec4>& row,
+                 const std::vector<glm::dvec4>& rowU, double u, std::span<const double> vs,
+                 std::span<GridSample> out) {
+    const std::size_t q = static_cast<std::size_t>(s.degreeV);
+    const std::size_t wv = W == 0 ? q + 1 : W;
+    for (std::size_t j = 0; j < vs.size(); ++j) {
+        const double* m = bv.values.data() + j * 2 * wv;
+        const double* dm = m + wv;
+        const glm::dvec4* c = row.data() + (bv.spans[j] - q);
+        const glm::dvec4* cu = rowU.data() + (bv.spans[j] - q);
+        glm::dvec3 point, su, sv;
+        if constexpr (Rational) {
+            glm::dvec4 h(0.0), hu(0.0), hv(0.0);
+            for (std::size_t k = 0; k < wv; ++k) {
+                h += m[k] * c[k];
+                hv += dm[k] * c[k];
+                hu += m[k] * cu[k];
+            }
+            // Locals first, one store at the end: the output is made of doubles too, so writing
+            // it early would make the compiler reload the row data after every store.
+            const double inv = 1.0 / h.w;
+            point = glm::dvec3(h) * inv;
+            su = (glm::dvec3(hu) - hu.w * point) * inv;
+            sv = (glm::dvec3(hv) - hv.w * point) * inv;
+        } else {
+            // Polynomial: the weights are all 1, so the homogeneous sums are the answer.
+            glm::dvec4 h(0.0), hu(0.0), hv(0.0);
+            for (std::size_t k = 0; k < wv; ++k) {
+                h += m[k] * c[k];
+                hv += dm[k] * c[k];
+                hu += m[k] * cu[k];
+            }
+            point = glm::dvec3(h);
+            su = glm::dvec3(hu);
+            sv = glm::dvec3(hv);
+        }
+        const glm::dvec3 cr = glm::cross(su, sv);
+        const double len2 = glm::dot(cr, cr);
+        glm::dvec3 n;
+        if (len2 > 1e-24 * glm::dot(su, su) * glm::dot(sv, sv) && len2 > 0.0)
+            n = cr * (1.0 / std::sqrt(len2));
+        else
+            n = normalFromDerivatives(s, std::clamp(u, s.domainStartU(), s.domainEndU()),
+                                      std::clamp(vs[j], s.domainStartV(), s.domainEndV()), su, sv);
+        out[j] = GridSample{point, su, sv, n};
+    }
 }
 
 }  // namespace
@@ -72,29 +124,31 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
             row[j] = c;
             rowU[j] = cu;
         }
-        for (std::size_t j = 0; j < vs.size(); ++j) {
-            const double* m = bv.values.data() + j * 2 * wv;
-            const double* dm = m + wv;
-            const std::size_t first = bv.spans[j] - q;
-            glm::dvec4 h(0.0), hu(0.0), hv(0.0);
-            for (std::size_t k = 0; k < wv; ++k) {
-                h += m[k] * row[first + k];
-                hv += dm[k] * row[first + k];
-                hu += m[k] * rowU[first + k];
+        const std::span<GridSample> line = out.subspan(i * vs.size(), vs.size());
+        if (s.rational()) {
+            switch (wv) {
+                case 3:
+                    evaluateRow<3, true>(s, bv, row, rowU, us[i], vs, line);
+                    break;
+                case 4:
+                    evaluateRow<4, true>(s, bv, row, rowU, us[i], vs, line);
+                    break;
+                default:
+                    evaluateRow<0, true>(s, bv, row, rowU, us[i], vs, line);
+                    break;
             }
-            GridSample& g = out[i * vs.size() + j];
-            const double inv = 1.0 / h.w;
-            g.point = glm::dvec3(h) * inv;
-            g.su = (glm::dvec3(hu) - hu.w * g.point) * inv;
-            g.sv = (glm::dvec3(hv) - hv.w * g.point) * inv;
-            const glm::dvec3 cr = glm::cross(g.su, g.sv);
-            const double len2 = glm::dot(cr, cr);
-            if (len2 > 1e-24 * glm::dot(g.su, g.su) * glm::dot(g.sv, g.sv) && len2 > 0.0)
-                g.normal = cr / std::sqrt(len2);
-            else
-                g.normal =
-                    normalFromDerivatives(s, std::clamp(us[i], s.domainStartU(), s.domainEndU()),
-                                          std::clamp(vs[j], s.domainStartV(), s.domainEndV()), g.su, g.sv);
+        } else {
+            switch (wv) {
+                case 3:
+                    evaluateRow<3, false>(s, bv, row, rowU, us[i], vs, line);
+                    break;
+                case 4:
+                    evaluateRow<4, false>(s, bv, row, rowU, us[i], vs, line);
+                    break;
+                default:
+                    evaluateRow<0, false>(s, bv, row, rowU, us[i], vs, line);
+                    break;
+            }
         }
     }
 }
