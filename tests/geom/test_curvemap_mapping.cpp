@@ -5,6 +5,7 @@
 #include "geom/curvemap/SampleSurfaces.h"
 
 #include <map>
+#include <random>
 
 using namespace geom;
 using namespace geom::curvemap;
@@ -364,4 +365,24 @@ TEST_CASE("the logo on the upper surface of a wing (closed around, open at the t
     CHECK(occluded == 2);
     CHECK(t.parts[0].loops.size() == 1);
     CHECK(t.parts[1].loops.size() == 1);
+}
+
+TEST_CASE("random placements of the logo and the circle on the wave all map validly", "[geom][curvemap]") {
+    std::vector<Curve> curves = loadCurves("acslogo.crv");
+    curves.push_back(loadCurves("circle.crv").front());
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> anywhere(0.0, 8.0);
+    for (int trial = 0; trial < 12; ++trial) {
+        const Placement p = at(anywhere(rng), anywhere(rng), static_cast<int>(rng() % 4), rng() % 2 == 1);
+        INFO("trial " << trial << ": reference " << p.reference.x << ", " << p.reference.y);
+        const MapResult r = wave().map(curves, p, {1e-3});
+        checkMapping(wave(), r, curves);
+        for (std::size_t k = 0; k < curves.size(); ++k) {
+            INFO("part " << k);
+            for (const std::string& issue : r.parts[k].issues) CHECK_THAT(issue, Catch::Contains("misses"));
+            if (r.parts[k].loops.empty()) continue;
+            const double reference = rasterArea(wave(), r, curves[k], r.parts[k].loops, 120);
+            CHECK(std::abs(totalArea(r.parts[k]) - reference) <= 0.02 * reference + 0.01);
+        }
+    }
 }
