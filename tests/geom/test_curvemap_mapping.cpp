@@ -386,3 +386,36 @@ TEST_CASE("random placements of the logo and the circle on the wave all map vali
         }
     }
 }
+
+TEST_CASE("on a straight tube the logo runs over the open end and closes along the end circle",
+          "[geom][curvemap]") {
+    // The fuselage's net with every cross section made the mid-body one: a cylinder, closed
+    // around, whose normals are square to the axis, so lines past the end see nothing.
+    Surface tube = makeFuselageSurface();
+    const std::size_t mid = tube.countV / 2;
+    for (std::size_t i = 0; i < tube.countU; ++i)
+        for (std::size_t j = 0; j < tube.countV; ++j) {
+            tube.point(i, j).y = tube.point(i, mid).y;
+            tube.point(i, j).z = tube.point(i, mid).z;
+        }
+    const CurveMapper mapper(tube);
+    REQUIRE(mapper.domain().closedU);
+    const std::vector<Curve> logo = loadCurves("acslogo.crv");
+    // The logo's long axis along the tube (30 long, w in [0, 10]), reaching 1.2 past the end.
+    const MapResult r = mapper.map(logo, at(0.5, 9.0, 1), {1e-3});
+    checkMapping(mapper, r, logo);
+    checkAreas(mapper, r, logo);
+    std::size_t walks = 0, exits = 0;
+    for (const MappedPart& part : r.parts) {
+        CHECK(part.issues.empty());
+        CHECK(part.exits == part.entries);
+        exits += part.exits;
+        for (const MappedLoop& loop : part.loops) {
+            walks += loop.boundaryWalks;
+            for (std::size_t i = 0; i < loop.uv.size(); ++i)
+                if (std::isnan(loop.curveParameters[i])) CHECK(loop.uv[i].y == mapper.domain().w1);
+        }
+    }
+    CHECK(exits >= 2);
+    CHECK(walks == exits);
+}
