@@ -200,6 +200,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         }
         const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);
         const BezierPatchTree::PatchPoint e = tree_.evaluate(index, u, v, 0);
+        // t is measured from `origin` (near the surface, see intersect()); the caller shifts it.
         const double lineT = glm::dot(e.point - origin, direction) / glm::dot(direction, direction);
         const glm::dvec3 onLine = origin + lineT * direction;
         if (glm::length(onLine - e.point) > 1e-10 * tree_.scale()) return;
@@ -289,18 +290,23 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
     const glm::dvec3 n2 = glm::cross(d, n1);
     const glm::dvec3 inverse(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
     const double margin = 1e-9 * tree_.scale();
-
-    std::vector<LineSurfaceHit> hits;
     const auto& nodes = tree_.nodes();
     if (nodes.empty()) return {};
+    // Work from the point of the line nearest the surface's box centre: an origin far away
+    // (a pick ray from a distant eye) would otherwise cost digits in every projection.
+    const glm::dvec3 centre = nodes[0].box.center();
+    const glm::dvec3 base = origin + glm::dot(centre - origin, d) * d;
+    const double shift = glm::dot(base - origin, direction) / glm::dot(direction, direction);
+
+    std::vector<LineSurfaceHit> hits;
     int stack[128];
     int top = 0;
     stack[top++] = tree_.root();
     while (top > 0) {
         const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(stack[--top])];
-        if (!node.box.hitByLine(origin, inverse, margin)) continue;
+        if (!node.box.hitByLine(base, inverse, margin)) continue;
         if (node.patch >= 0) {
-            intersectPatch(static_cast<std::size_t>(node.patch), origin, direction, n1, n2, hits);
+            intersectPatch(static_cast<std::size_t>(node.patch), base, direction, n1, n2, hits);
             continue;
         }
         stack[top++] = node.first;
@@ -322,11 +328,15 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
             if (gap < near) {
                 const glm::dvec2 mid = 0.5 * (h.uv + last.uv);
                 const glm::dvec3 m = tree_.evaluate(mid.x, mid.y, 0).point;
-                const glm::dvec3 rel = m - origin;
+                const glm::dvec3 rel = m - base;
                 if (glm::length(rel - glm::dot(rel, d) * d) < 1e-12 * tree_.scale()) continue;
             }
         }
         unique.push_back(h);
+    }
+    for (LineSurfaceHit& h : unique) {
+        h.t += shift;
+        h.point = origin + h.t * direction;
     }
     return unique;
 }

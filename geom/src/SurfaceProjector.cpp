@@ -20,7 +20,7 @@ bool finite(const glm::dvec3& p) {
 SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface) {
 }
 
-SurfacePoint SurfaceProjector::polish(std::size_t, const glm::dvec3& p, glm::dvec2 uv) const {
+SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const {
     // Newton on the gradient of |S - p|^2 / 2, with the Hessian shifted where it is not positive
     // definite, a backtracking step, and parameters held on the domain edges they run into.
     const double ua = tree_.domainStartU(), ub = tree_.domainEndU();
@@ -90,7 +90,7 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
     if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
     if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
         throw GeometryError("closestPoint: the start guess is not finite");
-    return polish(0, p, guess);
+    return polish(p, guess);
 }
 
 SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
@@ -145,7 +145,7 @@ SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
                     start = g;
                 }
             }
-        const SurfacePoint candidate = polish(static_cast<std::size_t>(node.patch), p, start);
+        const SurfacePoint candidate = polish(p, start);
         if (candidate.distance < best.distance) best = candidate;
     }
     return best;

@@ -129,6 +129,20 @@ TEST_CASE("tangent lines touch a cylinder once and rays keep only forward hits",
     REQUIRE(forward[0].t > 0.0);
 }
 
+TEST_CASE("a line from a distant origin keeps its accuracy", "[geom][intersect]") {
+    const Surface sphere = makeSphere(1.0);
+    const SurfaceIntersector intersector(sphere);
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
+    const glm::dvec3 through(0.1, 0.2, 0.0);
+    for (double far : {1e3, 1e5, 1e6}) {
+        const glm::dvec3 o = through - far * d;
+        const auto hits = intersector.intersect(o, 2.0 * d);
+        REQUIRE(hits.size() == 2);
+        requireHitsValid(sphere, hits, o, 2.0 * d);
+        for (const auto& h : hits) REQUIRE(std::abs(glm::length(h.point) - 1.0) < 1e-9);
+    }
+}
+
 TEST_CASE("a line with no direction is refused", "[geom][intersect]") {
     const Surface sphere = makeSphere(1.0);
     REQUIRE_THROWS_WITH(intersectLine(sphere, {0, 0, 0}, {0, 0, 0}), Catch::Contains("direction"));

@@ -14,13 +14,14 @@ public:
 
     /// Global closest point.
     SurfacePoint closestPoint(const glm::dvec3& p) const;
-    /// Newton from a guess, confined to [u0,u1] x [v0,v1] (the domain by default).
+    /// Newton from a guess, kept in the domain (edges held as constraints).
     SurfacePoint closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const;
 
     const BezierPatchTree& tree() const { return tree_; }
 
 private:
-    SurfacePoint polish(std::size_t patch, const glm::dvec3& p, glm::dvec2 uv) const;
+    /// Newton from uv on the whole domain (a local minimum of the distance).
+    SurfacePoint polish(const glm::dvec3& p, glm::dvec2 uv) const;
 
     BezierPatchTree tree_;
 };
