@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -171,4 +172,44 @@ TEST_CASE("a file that cannot be opened is an error naming it", "[acsynt][file]"
         REQUIRE(e.file() == "/nonexistent/plane.acm");
         REQUIRE(e.reason() == "cannot open the file");
     }
+}
+
+TEST_CASE("damaged files give a ModelFileError or a whole model, never anything else", "[acsynt][file]") {
+    std::ifstream file(ACSYNT_DATA_DIR "/transport.acm");
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(file, l);) lines.push_back(l);
+    REQUIRE(lines.size() > 50);
+    const std::vector<std::string> replacements{"",
+                                                "end",
+                                                "component wing x",
+                                                "  points 1e400",
+                                                "  sections -4",
+                                                "  station mid 1 1 1 1 1 nan",
+                                                "  profile 99 1",
+                                                "  mirror fin"};
+    int errors = 0, models = 0;
+    auto attempt = [&](const std::string& text) {
+        std::istringstream in(text);
+        try {
+            const Model m = buildModel(parseAircraftDescription(in, "damaged.acm"), "damaged.acm");
+            REQUIRE(!m.components.empty());
+            ++models;
+        } catch (const ModelFileError& e) {
+            REQUIRE(e.file() == "damaged.acm");
+            REQUIRE(e.line() >= (text.empty() ? 0 : 1));
+            REQUIRE(e.line() <= static_cast<int>(lines.size()) + 1);
+            ++errors;
+        }
+    };
+    for (std::size_t cut = 0; cut < lines.size(); ++cut) {
+        std::string truncated, replaced;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            if (i < cut) truncated += lines[i] + "\n";
+            replaced += (i == cut ? replacements[cut % replacements.size()] : lines[i]) + "\n";
+        }
+        attempt(truncated);
+        attempt(replaced);
+    }
+    REQUIRE(errors > static_cast<int>(lines.size()));
+    REQUIRE(models > 0);
 }

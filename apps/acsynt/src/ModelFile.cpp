@@ -91,12 +91,10 @@ private:
             ++line_;
             if (text.size() > maxLineLength)
                 fail("line longer than " + std::to_string(maxLineLength) + " characters");
-            tokens_ = tokenize(text);
-            if (!tokens_.empty()) {
-                text_ = std::move(text);
-                tokens_ = tokenize(text_);
-                return true;
-            }
+            // The tokens view text_, which keeps the line until the next one is read.
+            text_ = std::move(text);
+            tokens_ = tokenize(text_);
+            if (!tokens_.empty()) return true;
         }
         if (in_.bad()) fail("read error");
         return false;
