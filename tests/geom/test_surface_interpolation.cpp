@@ -133,3 +133,33 @@ TEST_CASE("interpolation rejects bad input with a GeometryError", "[geom][interp
         interpolateCurve(std::vector<glm::dvec3>(grid.begin(), grid.begin() + 5), flat, 3, Closure::Open),
         GeometryError);
 }
+
+TEST_CASE("a surface periodic in both directions closes smoothly both ways", "[geom][interpolation]") {
+    const std::size_t nu = 9, nv = 7;
+    std::vector<glm::dvec3> grid;
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / nu;
+            const double b = 2.0 * std::numbers::pi * static_cast<double>(j) / nv;
+            const double r = 3.0 + (1.0 + 0.2 * std::cos(a)) * std::cos(b);
+            grid.push_back({r * std::cos(a), r * std::sin(a), std::sin(b)});
+        }
+    const GridParameters par = chordLengthGridParameters(grid, nu, nv, Closure::Periodic, Closure::Periodic);
+    const Surface s = interpolateSurface(grid, nu, nv, par, 3, 3, Closure::Periodic, Closure::Periodic);
+    REQUIRE(s.countU == nu + 3);
+    REQUIRE(s.countV == nv + 3);
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j)
+            REQUIRE(glm::distance(evaluate(s, par.u[i], par.v[j]), grid[i * nv + j]) < 1e-12);
+    for (double t : {0.1, 0.45, 0.8}) {
+        const SurfaceDerivatives a = derivatives(s, s.domainStartU(), t, 2);
+        const SurfaceDerivatives b = derivatives(s, s.domainEndU(), t, 2);
+        const SurfaceDerivatives c = derivatives(s, t, s.domainStartV(), 2);
+        const SurfaceDerivatives d = derivatives(s, t, s.domainEndV(), 2);
+        for (int k = 0; k <= 2; ++k)
+            for (int l = 0; k + l <= 2; ++l) {
+                REQUIRE(glm::distance(a.at(k, l), b.at(k, l)) < 1e-9 * (1.0 + glm::length(a.at(k, l))));
+                REQUIRE(glm::distance(c.at(k, l), d.at(k, l)) < 1e-9 * (1.0 + glm::length(c.at(k, l))));
+            }
+    }
+}
