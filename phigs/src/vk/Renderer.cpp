@@ -235,9 +235,9 @@ VkPipeline Renderer::pipeline(int key) {
     raster.cullMode = cull == CullMode::BackFaces    ? VK_CULL_MODE_BACK_BIT
                       : cull == CullMode::FrontFaces ? VK_CULL_MODE_FRONT_BIT
                                                      : VK_CULL_MODE_NONE;
-    // The workstation transform flips y (NPC up, framebuffer down), so NPC counter-clockwise
-    // arrives clockwise in framebuffer coordinates.
-    raster.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    // Vulkan's winding test already allows for the framebuffer's downward y, so counter-clockwise
+    // in NPC (x right, y up) is counter-clockwise here too.
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
     // Surfaces are pushed back a little so iso-lines and edges at the same depth win the test.
     raster.depthBiasEnable = depth && !lines;
