@@ -14,6 +14,12 @@ layout(location = 6) in vec3 vLitBack;
 
 layout(location = 0) out vec4 outColour;
 
+// False for pipelines whose draws never discard (no hatch, pattern or z clip): the compiler then
+// drops every discard and the depth test can run before shading.
+layout(constant_id = 0) const bool MAY_DISCARD = true;
+// The shading this pipeline does per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
+layout(constant_id = 1) const int FRAGMENT_SHADING = 0;
+
 bool hatchOn(int index, vec2 p) {
     const float spacing = 8.0;
     bool horizontal = mod(p.y, spacing) < 1.0;
@@ -46,18 +52,20 @@ bool patternOn(int type, float width, float distance) {
 }
 
 void main() {
-    DrawParams d = draws[push.drawIndex];
-    View view = frame.views[d.indices.x];
-    if ((view.clip.z > 0.0 && vNpcZ < view.clip.x) || (view.clip.w > 0.0 && vNpcZ > view.clip.y)) discard;
-    int flags = d.indices.w;
-    if ((flags & FLAG_HATCH) != 0 && !hatchOn(d.style.y, gl_FragCoord.xy)) discard;
-    if ((flags & FLAG_PATTERN) != 0 && !patternOn(d.style.z, d.misc.x, vPattern)) discard;
+    int viewIndex = DRAW.indices.x;
+    int flags = DRAW.indices.w;
+    if (MAY_DISCARD) {
+        vec4 clip = frame.views[viewIndex].clip;
+        if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
+        if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
+        if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, vPattern)) discard;
+    }
 
     bool back = !gl_FrontFacing && (flags & FLAG_TRIANGLES) != 0;
     vec3 colour = back ? vLitBack : vLitFront;
-    if ((flags & FLAG_LIT) != 0 && d.style.w != SHADE_GOURAUD) {
+    if (FRAGMENT_SHADING != 0) {
         vec3 n;
-        if (d.style.w == SHADE_PHONG) {
+        if (FRAGMENT_SHADING == SHADE_PHONG) {
             n = normalize(vNormal);
         } else {
             // Flat: the facet normal from the screen-space derivatives of the world position,
@@ -67,10 +75,11 @@ void main() {
         }
         if (back) n = -n;
         bool useBack = back && (flags & FLAG_DISTINGUISH_BACK) != 0;
-        colour = lit(d, useBack, useBack ? d.backColour.rgb : vColour, vWorld, n, view.eye.xyz);
+        colour = lit(useBack, useBack ? DRAW.backColour.rgb : vColour, vWorld, n, frame.views[viewIndex].eye.xyz);
     }
-    if (d.indices.z >= 0) {
-        DepthCue cue = frame.cues[d.indices.z];
+    if (DRAW.indices.z >= 0) {
+        int cueIndex = DRAW.indices.z;
+        DepthCue cue = frame.cues[cueIndex];
         if (cue.colour.w > 0.0) {
             float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);
             float s = mix(cue.planes.w, cue.planes.z, t);

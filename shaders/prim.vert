@@ -20,26 +20,25 @@ layout(location = 5) out vec3 vLitFront;
 layout(location = 6) out vec3 vLitBack;
 
 void main() {
-    DrawParams d = draws[push.drawIndex];
-    View view = frame.views[d.indices.x];
-    vec4 world = d.model * vec4(inPosition, 1.0);
+    int viewIndex = DRAW.indices.x;
+    vec4 world = DRAW.model * vec4(inPosition, 1.0);
     vWorld = world.xyz / world.w;
-    vec3 normal = mat3(d.normalMatrix) * inNormal;
+    vec3 normal = mat3(DRAW.normalMatrix) * inNormal;
     vNormal = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
-    vColour = (d.indices.w & FLAG_VERTEX_COLOURS) != 0 ? inColour : d.colour.rgb;
+    vColour = (DRAW.indices.w & FLAG_VERTEX_COLOURS) != 0 ? inColour : DRAW.colour.rgb;
     vPattern = inPattern;
-    vec4 npc = view.worldToNpc * world;
+    vec4 npc = frame.views[viewIndex].worldToNpc * world;
     vNpcZ = npc.z / npc.w;
-    gl_Position = view.worldToClip * world;
-    if ((d.indices.w & FLAG_OFFSET_NPC) != 0)
+    gl_Position = frame.views[viewIndex].worldToClip * world;
+    if ((DRAW.indices.w & FLAG_OFFSET_NPC) != 0)
         gl_Position.xy += inOffset * frame.pixelScale.z * frame.pixelScale.xy * gl_Position.w;
     else
         gl_Position.xy += inOffset * frame.pixelScale.xy * gl_Position.w;
     vLitFront = vColour;
-    vLitBack = (d.indices.w & FLAG_DISTINGUISH_BACK) != 0 ? d.backColour.rgb : vColour;
-    if ((d.indices.w & FLAG_LIT) != 0 && d.style.w == SHADE_GOURAUD) {
+    vLitBack = (DRAW.indices.w & FLAG_DISTINGUISH_BACK) != 0 ? DRAW.backColour.rgb : vColour;
+    if ((DRAW.indices.w & FLAG_LIT) != 0 && DRAW.style.w == SHADE_GOURAUD) {
         vec3 n = vNormal;
-        vLitFront = lit(d, false, vLitFront, vWorld, n, view.eye.xyz);
-        vLitBack = lit(d, (d.indices.w & FLAG_DISTINGUISH_BACK) != 0, vLitBack, vWorld, -n, view.eye.xyz);
+        vLitFront = lit(false, vLitFront, vWorld, n, frame.views[viewIndex].eye.xyz);
+        vLitBack = lit((DRAW.indices.w & FLAG_DISTINGUISH_BACK) != 0, vLitBack, vWorld, -n, frame.views[viewIndex].eye.xyz);
     }
 }

@@ -69,44 +69,62 @@ layout(push_constant) uniform Push {
     uint drawIndex;
 } push;
 
-// PHIGS PLUS reflectance: model 1 none, 2 ambient, 3 ambient + diffuse, 4 + specular.
-vec3 lit(DrawParams d, bool back, vec3 base, vec3 world, vec3 n, vec3 eye) {
-    vec4 k = back ? d.backReflectance : d.reflectance;
-    vec4 sc = back ? d.backSpecularColour : d.specularColour;
-    int model = int(sc.w + 0.5);
-    if (model <= 1 || d.indices.y < 0) return base;
-    ivec4 set = frame.lightSets[d.indices.y];
-    vec3 sum = vec3(0.0);
-    for (int i = 0; i < set.y; ++i) {
-        Light light = frame.lights[set.x + i];
-        int type = int(light.colour.w + 0.5);
-        if (type == 1) {
-            sum += k.x * light.colour.rgb * base;
-            continue;
-        }
-        if (model < 3) continue;
-        vec3 l;
-        float attenuation = 1.0;
-        if (type == 2) {
-            l = -normalize(light.direction.xyz);
-        } else {
-            vec3 toLight = light.position.xyz - world;
-            float distance = length(toLight);
-            l = toLight / max(distance, 1e-9);
-            attenuation = 1.0 / max(light.attenuation.x + light.attenuation.y * distance, 1e-9);
-            if (type == 4) {
-                float c = dot(-l, normalize(light.direction.xyz));
-                attenuation *= c >= light.attenuation.z ? pow(max(c, 0.0), light.direction.w) : 0.0;
-            }
-        }
-        float nl = dot(n, l);
-        if (nl <= 0.0) continue;
-        sum += k.y * light.colour.rgb * base * nl * attenuation;
-        if (model >= 4) {
-            vec3 r = reflect(-l, n);
-            float rv = max(dot(r, eye), 0.0);
-            sum += k.z * light.colour.rgb * sc.rgb * pow(rv, max(k.w, 0.0)) * attenuation;
+// The current draw's record, read field by field (copying whole records is slow on lavapipe).
+#define DRAW draws[push.drawIndex]
+
+// Pipelines may fix the light set's shape at compile time: LIGHT_SIGNATURE is -1 (read the set
+// at run time) or count | type1 << 3 | type2 << 6 | ... (up to 4 lights); REFLECTANCE_MODEL is 0
+// (read it from the draw record) or the model. Fixed shapes let the compiler unroll the loop.
+layout(constant_id = 2) const int LIGHT_SIGNATURE = -1;
+layout(constant_id = 3) const int REFLECTANCE_MODEL = 0;
+
+vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world, vec3 n, vec3 eye) {
+    vec4 colour = frame.lights[i].colour;
+    if (type == 1) return k.x * colour.rgb * base;
+    if (model < 3) return vec3(0.0);
+    vec3 l;
+    float attenuation = 1.0;
+    vec4 direction = frame.lights[i].direction;
+    if (type == 2) {
+        l = -normalize(direction.xyz);
+    } else {
+        vec4 coefficients = frame.lights[i].attenuation;
+        vec3 toLight = frame.lights[i].position.xyz - world;
+        float distance = length(toLight);
+        l = toLight / max(distance, 1e-9);
+        attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
+        if (type == 4) {
+            float c = dot(-l, normalize(direction.xyz));
+            attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
         }
     }
+    float nl = dot(n, l);
+    if (nl <= 0.0) return vec3(0.0);
+    vec3 sum = k.y * colour.rgb * base * nl * attenuation;
+    if (model >= 4) {
+        vec3 r = reflect(-l, n);
+        float rv = max(dot(r, eye), 0.0);
+        sum += k.z * colour.rgb * sc.rgb * pow(rv, max(k.w, 0.0)) * attenuation;
+    }
+    return sum;
+}
+
+// PHIGS PLUS reflectance: model 1 none, 2 ambient, 3 ambient + diffuse, 4 + specular.
+vec3 lit(bool back, vec3 base, vec3 world, vec3 n, vec3 eye) {
+    vec4 k = back ? DRAW.backReflectance : DRAW.reflectance;
+    vec4 sc = back ? DRAW.backSpecularColour : DRAW.specularColour;
+    int model = REFLECTANCE_MODEL != 0 ? REFLECTANCE_MODEL : int(sc.w + 0.5);
+    int lightSet = DRAW.indices.y;
+    if (model <= 1 || lightSet < 0) return base;
+    ivec2 set = frame.lightSets[lightSet].xy;
+    vec3 sum = vec3(0.0);
+    if (LIGHT_SIGNATURE >= 0) {
+        int count = LIGHT_SIGNATURE & 7;
+        for (int j = 0; j < 4; ++j)
+            if (j < count) sum += oneLight((LIGHT_SIGNATURE >> (3 + 3 * j)) & 7, set.x + j, model, k, sc, base, world, n, eye);
+        return sum;
+    }
+    for (int i = set.x; i < set.x + set.y; ++i)
+        sum += oneLight(int(frame.lights[i].colour.w + 0.5), i, model, k, sc, base, world, n, eye);
     return sum;
 }

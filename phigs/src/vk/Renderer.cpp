@@ -19,6 +19,10 @@ namespace {
 constexpr int kLines = 1;
 constexpr int kDepth = 2;
 constexpr int kCullShift = 2;  // CullMode in bits 2..3
+constexpr int kMayDiscard = 16;
+constexpr int kShadeShift = 5;        // per-fragment shading (0, Flat or Phong) in bits 5..7
+constexpr int kReflectanceShift = 8;  // fixed reflectance model (0: read per draw) in bits 8..10
+constexpr int kSignatureShift = 11;   // light set signature + 1 (0: read at run time) from bit 11
 
 VkShaderModule createShader(VkDevice device, const char* name) {
     const auto words = shaders::spirv(name);
@@ -197,6 +201,18 @@ VkPipeline Renderer::pipeline(int key) {
     const bool lines = key & kLines;
     const bool depth = key & kDepth;
     const auto cull = static_cast<CullMode>((key >> kCullShift) & 3);
+    const VkBool32 mayDiscard = (key & kMayDiscard) ? VK_TRUE : VK_FALSE;
+    struct {
+        VkBool32 mayDiscard;
+        std::int32_t fragmentShading, lightSignature, reflectance;
+    } constants{mayDiscard, (key >> kShadeShift) & 7, (key >> kSignatureShift) - 1,
+                (key >> kReflectanceShift) & 7};
+    const VkSpecializationMapEntry entries[4] = {{0, 0, 4}, {1, 4, 4}, {2, 8, 4}, {3, 12, 4}};
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = 4;
+    specialization.pMapEntries = entries;
+    specialization.dataSize = sizeof constants;
+    specialization.pData = &constants;
 
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -207,6 +223,7 @@ VkPipeline Renderer::pipeline(int key) {
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = fragmentShader_;
     stages[1].pName = "main";
+    stages[1].pSpecializationInfo = &specialization;
 
     VkVertexInputBindingDescription binding{0, sizeof(render::RenderVertex), VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription attributes[5] = {
@@ -338,6 +355,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         mapping.npcToClip;
     const DrawView defaultView;
     std::vector<gpu::DrawParams> draws;
+    // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
+    std::vector<int> signatures;
+    for (const auto& set : list.lightSets) {
+        int signature = set.size() <= 4 ? int(set.size()) : -1;
+        for (std::size_t j = 0; signature >= 0 && j < set.size(); ++j)
+            signature |= (int(set[j].type) & 7) << (3 + 3 * j);
+        signatures.push_back(signature);
+    }
 
     for (std::size_t i = 0; i < list.items.size(); ++i) {
         const DrawItem& item = list.items[i];
@@ -364,6 +389,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             scissor = {{r.x, r.y}, {r.width, r.height}};
         }
         if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
+        const bool clipsDepth =
+            (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
 
         // The attributes every part of this item shares.
         gpu::DrawParams base;
@@ -406,6 +433,13 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             Command c;
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
             if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
+            if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth) c.pipeline |= kMayDiscard;
+            if ((flags & gpu::Lit) && shade != gpu::Gouraud) {
+                c.pipeline |= shade << kShadeShift;
+                // Front and back share the model; a fixed light set shape lets the shader unroll.
+                c.pipeline |= int(interior->reflectance) << kReflectanceShift;
+                c.pipeline |= (signatures[std::size_t(item.lightSet)] + 1) << kSignatureShift;
+            }
             c.vertices = vertices;
             c.indices = indices;
             c.first = part.first;
