@@ -82,42 +82,49 @@ DrawList knownScene() {
 TEST_CASE("window: a GLFW window workstation presents the same picture as the offscreen one",
           "[render][window]") {
     VirtualDisplay display;
+    std::vector<std::string> shutdownLog;
     vk::ContextSettings settings = vk::WindowWorkstation::contextSettings(lavapipeWithValidation());
-    vk::Context context(settings);
-    REQUIRE(context.isLavapipe());
+    settings.messageLog = &shutdownLog;
     {
-        const DrawList list = knownScene();
-        Image offscreen;
+        vk::Context context(settings);
+        REQUIRE(context.isLavapipe());
         {
-            vk::OffscreenWorkstation ws(context, 200, 160);
-            offscreen = ws.draw(list);
-        }
-        vk::WindowWorkstation window(context, 200, 160, "phigs window test");
-        Image presented;
-        REQUIRE(window.draw(list, &presented));
-        REQUIRE(presented.width == 200);
-        REQUIRE(presented.height == 160);
-        CHECK(differingPixels(presented, offscreen, 2) == 0);
-        CHECK(near(at(presented, 100, 100), 255, 128, 0, 2));
-        CHECK(near(at(presented, 5, 5), 0, 0, 76, 2));
-        // An unchanged second frame in the window uploads nothing either.
-        REQUIRE(window.draw(list));
-        CHECK(window.renderer().lastFrame().uploads == 0);
+            const DrawList list = knownScene();
+            Image offscreen;
+            {
+                vk::OffscreenWorkstation ws(context, 200, 160);
+                offscreen = ws.draw(list);
+            }
+            vk::WindowWorkstation window(context, 200, 160, "phigs window test");
+            Image presented;
+            REQUIRE(window.draw(list, &presented));
+            REQUIRE(presented.width == 200);
+            REQUIRE(presented.height == 160);
+            CHECK(differingPixels(presented, offscreen, 2) == 0);
+            CHECK(near(at(presented, 100, 100), 255, 128, 0, 2));
+            CHECK(near(at(presented, 5, 5), 0, 0, 76, 2));
+            // An unchanged second frame in the window uploads nothing either.
+            REQUIRE(window.draw(list));
+            CHECK(window.renderer().lastFrame().uploads == 0);
 
-        // Resize: the swapchain follows and the picture is drawn at the new size.
-        window.resize(120, 100);
-        Image resized;
-        for (int attempt = 0; attempt < 20 && resized.width != 120; ++attempt) {
-            REQUIRE(window.draw(list, &resized));
-            usleep(20000);
-        }
-        CHECK(resized.width == 120);
-        CHECK(resized.height == 100);
-        CHECK(near(at(resized, 60, 60), 255, 128, 0, 2));
+            // Resize: the swapchain follows and the picture is drawn at the new size.
+            window.resize(120, 100);
+            Image resized;
+            for (int attempt = 0; attempt < 20 && resized.width != 120; ++attempt) {
+                REQUIRE(window.draw(list, &resized));
+                usleep(20000);
+            }
+            CHECK(resized.width == 120);
+            CHECK(resized.height == 100);
+            CHECK(near(at(resized, 60, 60), 255, 128, 0, 2));
 
-        window.requestClose();
-        CHECK(window.shouldClose());
-        CHECK_FALSE(window.draw(list));
+            window.requestClose();
+            CHECK(window.shouldClose());
+            CHECK_FALSE(window.draw(list));
+        }
+        requireNoValidationMessages(context);
     }
-    requireNoValidationMessages(context);
+    // Destroying the device and instance after the window reports nothing left alive.
+    for (const auto& message : shutdownLog) UNSCOPED_INFO(message);
+    CHECK(shutdownLog.empty());
 }
