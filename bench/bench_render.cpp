@@ -11,6 +11,7 @@
 #include "phigs/vk/Renderer.h"
 #include "shaders/Spirv.h"
 
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
@@ -72,6 +73,8 @@ struct Baseline {
     struct Push {
         glm::mat4 worldToClip;
         glm::vec4 colour;
+        glm::vec4 material;
+        glm::vec4 toLight;
     };
     struct Mesh {
         std::unique_ptr<vk::GpuBuffer> vertices, indices;
@@ -253,8 +256,9 @@ struct Baseline {
             vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
             for (int pass2 = 0; pass2 < 2; ++pass2) {
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass2 == 0 ? triangles : lines);
-                const Push push{worldToClip,
-                                pass2 == 0 ? glm::vec4(0.8f, 0.8f, 0.8f, 1) : glm::vec4(1, 1, 0, 1)};
+                const Push push{
+                    worldToClip, pass2 == 0 ? glm::vec4(0.8f, 0.8f, 0.8f, 1) : glm::vec4(1, 1, 0, 1),
+                    glm::vec4(0.2f, 0.7f, 0.5f, 20.0f), glm::vec4(glm::normalize(glm::vec3(1, 1, 2)), 0.0f)};
                 vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                    sizeof push, &push);
                 for (const Mesh& m : meshes) {

@@ -3,6 +3,8 @@
 layout(push_constant) uniform Push {
     mat4 worldToClip;
     vec4 colour;
+    vec4 material;
+    vec4 toLight;
 } push;
 
 layout(location = 0) in vec3 inPosition;

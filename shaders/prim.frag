@@ -19,6 +19,11 @@ layout(location = 0) out vec4 outColour;
 layout(constant_id = 0) const bool MAY_DISCARD = true;
 // The shading this pipeline does per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
 layout(constant_id = 1) const int FRAGMENT_SHADING = 0;
+// False where the pipeline's draws have no depth cue, no vertex colours, or need no world position
+// (only directional and ambient lights): the inputs then go unread and the varyings are dropped.
+layout(constant_id = 4) const bool USE_DEPTH_CUE = true;
+layout(constant_id = 5) const bool USE_VERTEX_COLOURS = true;
+layout(constant_id = 6) const bool USE_WORLD_POSITION = true;
 
 bool hatchOn(int index, vec2 p) {
     const float spacing = 8.0;
@@ -75,9 +80,11 @@ void main() {
         }
         if (back) n = -n;
         bool useBack = back && (flags & FLAG_DISTINGUISH_BACK) != 0;
-        colour = lit(useBack, useBack ? DRAW.backColour.rgb : vColour, vWorld, n, frame.views[viewIndex].eye.xyz);
+        vec3 base = USE_VERTEX_COLOURS ? vColour : DRAW.colour.rgb;
+        vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
+        colour = lit(useBack, useBack ? DRAW.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
     }
-    if (DRAW.indices.z >= 0) {
+    if (USE_DEPTH_CUE && DRAW.indices.z >= 0) {
         int cueIndex = DRAW.indices.z;
         DepthCue cue = frame.cues[cueIndex];
         if (cue.colour.w > 0.0) {

@@ -29,7 +29,7 @@ struct View {
 struct Light {
     vec4 colour;     // rgb, w = type (1 ambient, 2 directional, 3 positional, 4 spot)
     vec4 position;   // world
-    vec4 direction;  // world, w = concentration
+    vec4 direction;  // world, unit length, w = concentration
     vec4 attenuation;  // constant, linear, cos(spread angle), unused
 };
 
@@ -86,7 +86,7 @@ vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world
     float attenuation = 1.0;
     vec4 direction = frame.lights[i].direction;
     if (type == 2) {
-        l = -normalize(direction.xyz);
+        l = -direction.xyz;  // normalised when uploaded
     } else {
         vec4 coefficients = frame.lights[i].attenuation;
         vec3 toLight = frame.lights[i].position.xyz - world;
@@ -94,7 +94,7 @@ vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world
         l = toLight / max(distance, 1e-9);
         attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
         if (type == 4) {
-            float c = dot(-l, normalize(direction.xyz));
+            float c = dot(-l, direction.xyz);
             attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
         }
     }

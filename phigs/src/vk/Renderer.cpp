@@ -22,7 +22,12 @@ constexpr int kCullShift = 2;  // CullMode in bits 2..3
 constexpr int kMayDiscard = 16;
 constexpr int kShadeShift = 5;        // per-fragment shading (0, Flat or Phong) in bits 5..7
 constexpr int kReflectanceShift = 8;  // fixed reflectance model (0: read per draw) in bits 8..10
-constexpr int kSignatureShift = 11;   // light set signature + 1 (0: read at run time) from bit 11
+constexpr int kSignatureShift = 11;   // light set signature + 1 (0: read at run time) in bits 11..26
+// Inputs a pipeline's draws do not need, so the varyings can be dropped (lavapipe's triangle
+// setup cost grows with every varying).
+constexpr std::uint64_t kNoDepthCue = 1ull << 27;
+constexpr std::uint64_t kNoVertexColours = 1ull << 28;
+constexpr std::uint64_t kNoWorldPosition = 1ull << 29;
 
 VkShaderModule createShader(VkDevice device, const char* name) {
     const auto words = shaders::spirv(name);
@@ -196,7 +201,7 @@ void Renderer::createDescriptors() {
     check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
 }
 
-VkPipeline Renderer::pipeline(int key) {
+VkPipeline Renderer::pipeline(std::uint64_t key) {
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
     const bool lines = key & kLines;
     const bool depth = key & kDepth;
@@ -205,11 +210,18 @@ VkPipeline Renderer::pipeline(int key) {
     struct {
         VkBool32 mayDiscard;
         std::int32_t fragmentShading, lightSignature, reflectance;
-    } constants{mayDiscard, (key >> kShadeShift) & 7, (key >> kSignatureShift) - 1,
-                (key >> kReflectanceShift) & 7};
-    const VkSpecializationMapEntry entries[4] = {{0, 0, 4}, {1, 4, 4}, {2, 8, 4}, {3, 12, 4}};
+        VkBool32 depthCue, vertexColours, worldPosition;
+    } constants{mayDiscard,
+                std::int32_t((key >> kShadeShift) & 7),
+                std::int32_t((key >> kSignatureShift) & 0xffff) - 1,
+                std::int32_t((key >> kReflectanceShift) & 7),
+                (key & kNoDepthCue) ? VK_FALSE : VK_TRUE,
+                (key & kNoVertexColours) ? VK_FALSE : VK_TRUE,
+                (key & kNoWorldPosition) ? VK_FALSE : VK_TRUE};
+    const VkSpecializationMapEntry entries[7] = {{0, 0, 4},  {1, 4, 4},  {2, 8, 4}, {3, 12, 4},
+                                                 {4, 16, 4}, {5, 20, 4}, {6, 24, 4}};
     VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = 4;
+    specialization.mapEntryCount = 7;
     specialization.pMapEntries = entries;
     specialization.dataSize = sizeof constants;
     specialization.pData = &constants;
@@ -389,6 +401,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             scissor = {{r.x, r.y}, {r.width, r.height}};
         }
         if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
+        const bool cued = item.depthCue >= 0 && list.depthCues[std::size_t(item.depthCue)].enabled;
         const bool clipsDepth =
             (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
 
@@ -438,7 +451,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 c.pipeline |= shade << kShadeShift;
                 // Front and back share the model; a fixed light set shape lets the shader unroll.
                 c.pipeline |= int(interior->reflectance) << kReflectanceShift;
-                c.pipeline |= (signatures[std::size_t(item.lightSet)] + 1) << kSignatureShift;
+                const int signature = signatures[std::size_t(item.lightSet)];
+                c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
+                if (!cued) c.pipeline |= kNoDepthCue;
+                if (!part.vertexColours) c.pipeline |= kNoVertexColours;
+                bool local = signature < 0 || shade == gpu::Flat;
+                for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
+                    local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
+                if (!local) c.pipeline |= kNoWorldPosition;
             }
             c.vertices = vertices;
             c.indices = indices;
@@ -562,7 +582,9 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
             gpu::Light& g = f.lights[next++];
             g.colour = glm::vec4(light.colour, float(int(light.type)));
             g.position = glm::vec4(glm::vec3(light.position), 1.0f);
-            g.direction = glm::vec4(glm::vec3(light.direction), light.concentration);
+            const glm::dvec3 direction =
+                glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
+            g.direction = glm::vec4(glm::vec3(direction), light.concentration);
             g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
         }
         f.lightSets[s] = glm::ivec4(first, next - first, 0, 0);
@@ -652,7 +674,7 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
-    int bound = -1;
+    std::uint64_t bound = ~0ull;
     VkBuffer boundVertices = VK_NULL_HANDLE, boundIndices = VK_NULL_HANDLE;
     for (const Command& c : commands_) {
         if (c.pipeline != bound) {

@@ -57,7 +57,7 @@ private:
         std::uint64_t lastUsed = 0;
     };
     struct Command {
-        int pipeline = 0;
+        std::uint64_t pipeline = 0;
         VkBuffer vertices = VK_NULL_HANDLE;
         VkBuffer indices = VK_NULL_HANDLE;
         std::uint32_t first = 0, count = 0;
@@ -66,7 +66,7 @@ private:
         VkRect2D scissor{};
     };
 
-    VkPipeline pipeline(int key);
+    VkPipeline pipeline(std::uint64_t key);
     void createDescriptors();
     void uploadFrame(const DrawList& list, VkExtent2D extent);
     void uploadDraws();
@@ -82,7 +82,7 @@ private:
     VkDescriptorSet set_ = VK_NULL_HANDLE;
     VkShaderModule vertexShader_ = VK_NULL_HANDLE;
     VkShaderModule fragmentShader_ = VK_NULL_HANDLE;
-    std::map<int, VkPipeline> pipelines_;
+    std::map<std::uint64_t, VkPipeline> pipelines_;
     float maxLineWidth_ = 1.0f;
 
     std::unique_ptr<GpuBuffer> frameBuffer_;
