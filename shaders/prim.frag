@@ -76,7 +76,13 @@ void main() {
             // Flat: the facet normal from the screen-space derivatives of the world position,
             // turned to the side the triangle's winding calls front.
             n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
-            if (dot(n, vNormal) < 0.0 && dot(vNormal, vNormal) > 0.0) n = -n;
+            if (dot(vNormal, vNormal) > 0.0) {
+                if (dot(n, vNormal) < 0.0) n = -n;
+            } else {
+                // No normals given: the front side is the one the winding shows the viewer.
+                if (dot(n, frame.views[viewIndex].eye.xyz) < 0.0) n = -n;
+                if (!gl_FrontFacing) n = -n;
+            }
         }
         if (back) n = -n;
         bool useBack = back && (flags & FLAG_DISTINGUISH_BACK) != 0;

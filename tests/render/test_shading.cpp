@@ -244,3 +244,35 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
     }
     requireNoValidationMessages(context);
 }
+
+TEST_CASE("flat shading derives facet normals for a mesh without normals, front and back",
+          "[render][shading]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 64, 64);
+        DrawList list = emptyScene();
+        Light toward;
+        toward.type = LightType::Directional;
+        toward.direction = {0, 0, -1};  // shines at the viewer's side of the square
+        list.lightSets.push_back({toward});
+        for (bool front : {true, false}) {
+            auto mesh = std::make_shared<MeshData>();
+            const float x = front ? 0.05f : 0.55f;
+            mesh->positions = {
+                {x, 0.3f, 0.5f}, {x + 0.4f, 0.3f, 0.5f}, {x + 0.4f, 0.7f, 0.5f}, {x, 0.7f, 0.5f}};
+            mesh->triangles = front ? std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}
+                                    : std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2};
+            DrawMesh m = shaded(mesh, ShadingMethod::None, {1, 1, 1});
+            m.interior.reflectance = ReflectanceModel::Diffuse;
+            m.interior.properties.diffuse = 1.0f;
+            DrawItem i = item(m);
+            i.lightSet = 0;
+            list.items.push_back(i);
+        }
+        const Image image = ws.draw(list);
+        // Both sides face the light as the viewer sees them: fully lit.
+        CHECK(near(at(image, 16, 32), 255, 255, 255, 3));
+        CHECK(near(at(image, 48, 32), 255, 255, 255, 3));
+    }
+    requireNoValidationMessages(context);
+}
