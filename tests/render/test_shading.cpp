@@ -276,3 +276,47 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
     }
     requireNoValidationMessages(context);
 }
+
+TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; curves draw as polylines",
+          "[render][shading]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 64, 64);
+        DrawList list = emptyScene();
+        DrawMesh solid;
+        solid.mesh = grid(0.05, 0.05, 0.45, 0.45, 0.5, 2);
+        solid.interior.style = InteriorStyle::Solid;
+        solid.interior.colour = {0, 0, 1};
+        solid.edges.visible = true;
+        solid.edges.colour = {1, 0, 0};
+        list.items.push_back(item(solid));
+        DrawMesh hollow;
+        hollow.mesh = grid(0.55, 0.05, 0.95, 0.45, 0.5, 2);
+        hollow.interior.style = InteriorStyle::Hollow;
+        hollow.interior.colour = {0, 1, 0};
+        list.items.push_back(item(hollow));
+        DrawCurve curve;
+        for (int k = 0; k <= 16; ++k)
+            curve.points.push_back({0.1 + 0.05 * k, 0.75 + 0.1 * std::sin(0.4 * k), 0.5});
+        curve.style.colour = {1, 1, 0};
+        list.items.push_back(item(curve));
+        const Image image = ws.draw(list);
+        int red = 0, blue = 0, green = 0, yellow = 0, greenInside = 0;
+        for (std::uint32_t y = 0; y < 64; ++y)
+            for (std::uint32_t x = 0; x < 64; ++x) {
+                const Rgb c = at(image, x, y);
+                red += near(c, 255, 0, 0);
+                blue += near(c, 0, 0, 255);
+                green += near(c, 0, 255, 0);
+                yellow += near(c, 255, 255, 0);
+            }
+        // The hollow grid's cells stay background between its edges.
+        greenInside = near(at(image, 39, 39), 25, 25, 25) ? 1 : 0;
+        CHECK(red > 40);
+        CHECK(blue > 150);
+        CHECK(green > 40);
+        CHECK(greenInside == 1);
+        CHECK(yellow > 30);
+    }
+    requireNoValidationMessages(context);
+}
