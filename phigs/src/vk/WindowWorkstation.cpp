@@ -160,6 +160,7 @@ void WindowWorkstation::createSwapchain() {
     info.imageArrayLayers = 1;
     info.imageUsage =
         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    canReadBack_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
     info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.preTransform = caps.currentTransform;
     info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
@@ -279,6 +280,9 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
 
     renderer_->prepare(list, extent_);
     const bool copy = readback != nullptr;
+    if (copy && !canReadBack_)
+        throw std::runtime_error(
+            "WindowWorkstation::draw: this surface's swapchain images cannot be read back");
     if (copy) {
         const VkDeviceSize size = VkDeviceSize{extent_.width} * extent_.height * 4;
         if (size > readbackSize_) {

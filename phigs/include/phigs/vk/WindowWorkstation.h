@@ -72,6 +72,7 @@ private:
     VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
     VkDeviceSize readbackSize_ = 0;
     bool closed_ = false;
+    bool canReadBack_ = false;
 };
 
 }  // namespace phigs::vk
