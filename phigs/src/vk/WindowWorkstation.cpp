@@ -258,6 +258,9 @@ void WindowWorkstation::resize(std::uint32_t width, std::uint32_t height) {
 
 bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
     if (shouldClose()) return false;
+    if (readback && swapchain_ && !canReadBack_)
+        throw std::runtime_error(
+            "WindowWorkstation::draw: this surface's swapchain images cannot be read back");
     VkDevice device = context_.device();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
@@ -279,10 +282,8 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
     if (result != VK_SUBOPTIMAL_KHR) check(result, "vkAcquireNextImageKHR");
 
     renderer_->prepare(list, extent_);
-    const bool copy = readback != nullptr;
-    if (copy && !canReadBack_)
-        throw std::runtime_error(
-            "WindowWorkstation::draw: this surface's swapchain images cannot be read back");
+    // Checked before acquiring too; here it covers a swapchain created by this very call.
+    const bool copy = readback != nullptr && canReadBack_;
     if (copy) {
         const VkDeviceSize size = VkDeviceSize{extent_.width} * extent_.height * 4;
         if (size > readbackSize_) {
