@@ -1,9 +1,9 @@
-# embed_shaders(TARGET name SOURCES a.vert b.frag ...)
+# embed_shaders(TARGET name SOURCES a.vert b.frag ... [INCLUDES common.glsl ...])
 # Compiles each GLSL file to SPIR-V with glslangValidator at build time and links the words
 # into TARGET as C arrays, so binaries need no shader files at run time. A shader with an
 # error fails the build with glslang's own message.
 function(embed_shaders)
-  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDES" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${out_dir})
   set(generated)
@@ -17,7 +17,7 @@ function(embed_shaders)
     add_custom_command(
       OUTPUT ${header}
       COMMAND ${GLSLANG_VALIDATOR} -V --target-env vulkan1.1 --vn ${symbol} -o ${header} ${abs}
-      DEPENDS ${abs}
+      DEPENDS ${abs} ${ARG_INCLUDES}
       COMMENT "glslang: ${name} -> SPIR-V"
       VERBATIM)
     list(APPEND generated ${header})

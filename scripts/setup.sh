@@ -12,6 +12,7 @@ packages=(
   glslang-tools                      # GLSL -> SPIR-V at build time
   libglfw3-dev xvfb xauth            # windows, and a virtual X server to test them
   catch2                             # tests
+  hershey-fonts-data                 # stroke fonts for PHIGS text
   libsisl-dev                        # baseline in the geometry benchmarks
 )
 missing=()

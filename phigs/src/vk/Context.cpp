@@ -61,7 +61,7 @@ ContextSettings ContextSettings::fromEnvironment(ContextSettings defaults) {
     return defaults;
 }
 
-Context::Context(const ContextSettings& settings) {
+Context::Context(const ContextSettings& settings) : messageLog_(settings.messageLog) {
     std::vector<const char*> layers;
     std::vector<const char*> extensions = settings.instanceExtensions;
     if (settings.validation) {
@@ -266,6 +266,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(VkDebugUtilsMessageSeveri
     if (data->pMessageIdName) text += std::string(data->pMessageIdName) + ": ";
     text += data->pMessage ? data->pMessage : "";
     std::lock_guard lock(context->messagesMutex_);
+    if (context->messageLog_) context->messageLog_->push_back(text);
     context->messages_.push_back(std::move(text));
     return VK_FALSE;
 }

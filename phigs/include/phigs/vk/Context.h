@@ -21,6 +21,9 @@ struct ContextSettings {
     bool validation = true;  ///< enable VK_LAYER_KHRONOS_validation and collect its messages
     std::vector<const char*> instanceExtensions;  ///< e.g. the window system's surface extensions
     std::vector<const char*> deviceExtensions;    ///< e.g. VK_KHR_swapchain for a window
+    /// Also receives every validation message and outlives the Context, so the messages of the
+    /// shutdown itself (objects still alive when the device is destroyed) can be checked.
+    std::vector<std::string>* messageLog = nullptr;
     /// Reads PHIGS_VK_DEVICE=lavapipe|hardware and PHIGS_VK_VALIDATION=0|1 over the defaults.
     static ContextSettings fromEnvironment(ContextSettings defaults);
     static ContextSettings fromEnvironment();
@@ -82,6 +85,7 @@ private:
     bool lavapipe_ = false;
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;
+    std::vector<std::string>* messageLog_ = nullptr;
 };
 
 /// Throws std::runtime_error naming `what` when result is not VK_SUCCESS.

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "phigs/traverse/DrawList.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace phigs::render {
+
+/// The vertex every pipeline reads: world (or, for meshes, modelling) position, normal, colour, a
+/// screen offset (markers in pixels, annotation text in NPC) and the distance along a patterned
+/// line in pixels.
+struct RenderVertex {
+    glm::vec3 position{0.0f};
+    glm::vec3 normal{0.0f};
+    glm::vec3 colour{0.0f};
+    glm::vec2 offset{0.0f};
+    float pattern = 0.0f;
+};
+
+/// What a run of vertices is for; it decides which attributes colour and style it.
+enum class PartRole : int { Interior = 0, Edge = 1, Line = 2, Marker = 3, Text = 4, IsoLine = 5 };
+
+/// A run of vertices drawn with one topology and one set of attributes.
+struct GeometryPart {
+    bool lines = false;  ///< line list, else triangle list
+    std::uint32_t first = 0, count = 0;
+    PartRole role = PartRole::Line;
+    glm::vec3 colour{1.0f};
+    LineType lineType = LineType::Solid;
+    float lineWidth = 1.0f;
+    bool vertexColours = false;  ///< the vertices carry colours (else `colour`)
+    bool vertexNormals = false;  ///< the vertices carry normals (else facet normals)
+    bool offsetInNpc = false;    ///< offsets are NPC units (annotation text), else pixels
+};
+
+/// The CPU-side geometry of one non-mesh draw item (the "describe" step): world coordinates, the
+/// modelling transform already applied in double precision.
+struct ItemGeometry {
+    std::vector<RenderVertex> vertices;
+    std::vector<GeometryPart> parts;
+};
+
+/// Builds the geometry of a polyline, polymarker, fill area (set), text or curve item.
+/// worldToPixels (the view and workstation transforms) measures patterned lines on screen.
+/// A DrawMesh item gives empty geometry (meshes are uploaded as they are, see MeshGeometry).
+ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels);
+
+/// Index lists of a mesh: triangles, then iso-lines and triangle edges as line-list pairs.
+struct MeshIndices {
+    std::vector<std::uint32_t> indices;
+    std::uint32_t triangleCount = 0;  ///< index count of the triangles (first)
+    std::uint32_t isoLineCount = 0;   ///< index count of the iso-line pairs (next)
+    std::uint32_t edgeCount = 0;      ///< index count of the unique triangle edges (last)
+};
+MeshIndices meshIndices(const MeshData& mesh);
+/// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero).
+std::vector<RenderVertex> meshVertices(const MeshData& mesh);
+
+/// A content hash of a non-mesh item and the transforms its geometry depends on, to key caches.
+std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels);
+
+}  // namespace phigs::render

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "phigs/image/Image.h"
+#include "phigs/traverse/DrawList.h"
+#include "phigs/vk/Context.h"
+#include "phigs/vk/OffscreenTarget.h"
+#include "phigs/vk/Renderer.h"
+
+#include <cstdint>
+#include <filesystem>
+
+namespace phigs::vk {
+
+/// A workstation without a window: draws a DrawList into an offscreen image and reads it back.
+class OffscreenWorkstation {
+public:
+    OffscreenWorkstation(Context& context, std::uint32_t width, std::uint32_t height);
+    ~OffscreenWorkstation();
+    OffscreenWorkstation(const OffscreenWorkstation&) = delete;
+    OffscreenWorkstation& operator=(const OffscreenWorkstation&) = delete;
+
+    /// Draws the list and returns the picture (rows top to bottom).
+    Image draw(const DrawList& list);
+    /// Draws the list and writes the picture as a PNG file.
+    void drawToPng(const DrawList& list, const std::filesystem::path& file);
+
+    Renderer& renderer() { return renderer_; }
+    std::uint32_t width() const { return target_.width(); }
+    std::uint32_t height() const { return target_.height(); }
+
+private:
+    Context& context_;
+    OffscreenTarget target_;
+    Renderer renderer_;
+    VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+};
+
+}  // namespace phigs::vk

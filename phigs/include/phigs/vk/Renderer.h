@@ -1,0 +1,104 @@
+#pragma once
+
+#include "phigs/render/ItemGeometry.h"
+#include "phigs/traverse/DrawList.h"
+#include "phigs/vk/Context.h"
+#include "phigs/vk/GpuBuffer.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace phigs::vk {
+
+/// Draws a phigs::DrawList into any framebuffer of its render pass: offscreen images, window
+/// swapchains and hardcopies share it. prepare() compiles the list (GPU buffers reused while the
+/// input is unchanged, only changes uploaded); record() records the frame's commands.
+class Renderer {
+public:
+    Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalLayout);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    VkRenderPass renderPass() const { return renderPass_; }
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+    /// Compiles a draw list for a framebuffer of `extent`: describes changed items, uploads what
+    /// changed, frees what is no longer drawn. The previous frame must have finished on the GPU.
+    /// Throws std::invalid_argument naming the item when it refers to a missing view, light set
+    /// or depth cue.
+    void prepare(const DrawList& list, VkExtent2D extent);
+    /// Records the render pass of the last prepared list into `cmd`.
+    void record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D extent) const;
+
+    /// The colour highlighted primitives are mixed toward, and how far (0..1).
+    void setHighlight(glm::vec3 colour, float amount);
+
+    const RenderStats& lastFrame() const { return frame_; }
+    const RenderStats& total() const { return total_; }
+
+private:
+    struct CachedGeometry {
+        std::unique_ptr<GpuBuffer> vertices;
+        std::vector<render::GeometryPart> parts;
+        std::uint64_t lastUsed = 0;
+    };
+    struct CachedMesh {
+        std::weak_ptr<const MeshData> data;
+        std::unique_ptr<GpuBuffer> vertices;
+        std::unique_ptr<GpuBuffer> indices;
+        render::MeshIndices counts;
+        bool hasNormals = false, hasColours = false;
+        std::uint64_t lastUsed = 0;
+    };
+    struct Command {
+        std::uint64_t pipeline = 0;
+        VkBuffer vertices = VK_NULL_HANDLE;
+        VkBuffer indices = VK_NULL_HANDLE;
+        std::uint32_t first = 0, count = 0;
+        std::uint32_t drawIndex = 0;
+        float lineWidth = 1.0f;
+        VkRect2D scissor{};
+    };
+
+    VkPipeline pipeline(std::uint64_t key);
+    void createDescriptors();
+    void uploadFrame(const DrawList& list, VkExtent2D extent);
+    void uploadDraws();
+    CachedMesh& compileMesh(const std::shared_ptr<const MeshData>& mesh);
+    void release();
+
+    Context& context_;
+    VkFormat colourFormat_;
+    VkRenderPass renderPass_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    VkShaderModule vertexShader_ = VK_NULL_HANDLE;
+    VkShaderModule fragmentShader_ = VK_NULL_HANDLE;
+    std::map<std::uint64_t, VkPipeline> pipelines_;
+    float maxLineWidth_ = 1.0f;
+
+    std::unique_ptr<GpuBuffer> frameBuffer_;
+    std::vector<unsigned char> lastFrameBytes_;
+    std::unique_ptr<GpuBuffer> drawBuffer_;
+    std::vector<unsigned char> drawBytes_;      // what this frame wants
+    std::vector<unsigned char> lastDrawBytes_;  // what the draw buffer holds
+
+    std::unordered_map<std::uint64_t, CachedGeometry> geometry_;
+    std::unordered_map<const MeshData*, CachedMesh> meshes_;
+    std::vector<Command> commands_;
+    glm::vec4 highlight_{1.0f, 1.0f, 0.0f, 0.6f};
+    glm::vec3 background_{0.0f};
+    bool depthTest_ = false;
+    std::uint64_t frameNumber_ = 0;
+    RenderStats frame_, total_;
+};
+
+}  // namespace phigs::vk

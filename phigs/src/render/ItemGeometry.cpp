@@ -1,0 +1,332 @@
+#include "phigs/render/ItemGeometry.h"
+
+#include "phigs/render/LinePattern.h"
+#include "phigs/render/MarkerShape.h"
+#include "phigs/render/StrokeFont.h"
+#include "phigs/render/Triangulation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <type_traits>
+#include <unordered_set>
+
+namespace phigs::render {
+namespace {
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
+    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
+}
+
+class Builder {
+public:
+    Builder(const DrawItem& item, const glm::dmat4& worldToPixels)
+        : model_(item.modelTransform), toPixels_(worldToPixels) {}
+
+    ItemGeometry geometry;
+
+    /// Line strips in world coordinates as a line list, with the screen distance for patterns.
+    void lineStrips(const std::vector<std::vector<glm::dvec3>>& strips, bool closed, PartRole role,
+                    glm::vec3 colour, LineType type, float width) {
+        GeometryPart part = begin(true, role, colour);
+        part.lineType = type;
+        part.lineWidth = width;
+        const bool patterned = type != LineType::Solid;
+        for (const auto& strip : strips) {
+            const std::size_t n = strip.size();
+            if (n < 2) continue;
+            double distance = 0.0;
+            const std::size_t segments = closed ? n : n - 1;
+            for (std::size_t i = 0; i < segments; ++i) {
+                const glm::dvec3 a = strip[i], b = strip[(i + 1) % n];
+                double length = 0.0;
+                if (patterned) {
+                    const glm::dvec3 pa = apply(toPixels_, a), pb = apply(toPixels_, b);
+                    length = glm::length(glm::dvec2(pb) - glm::dvec2(pa));
+                }
+                push(a, {}, colour, {}, float(distance));
+                push(b, {}, colour, {}, float(distance + length));
+                distance += length;
+            }
+        }
+        end(part);
+    }
+
+    void polyline(const std::vector<glm::dvec3>& points, const LineStyle& style) {
+        std::vector<glm::dvec3> world;
+        world.reserve(points.size());
+        for (const auto& p : points) world.push_back(apply(model_, p));
+        lineStrips({world}, false, PartRole::Line, style.colour, style.type, style.width);
+    }
+
+    void polymarker(const DrawPolymarker& m) {
+        const MarkerShape shape = markerShape(m.style.type, m.style.scale);
+        const bool triangles = !shape.triangles.empty();
+        GeometryPart part = begin(!triangles, PartRole::Marker, m.style.colour);
+        const auto& offsets = triangles ? shape.triangles : shape.segments;
+        for (const auto& p : m.points) {
+            const glm::dvec3 w = apply(model_, p);
+            for (const glm::vec2& o : offsets) push(w, {}, m.style.colour, o, 0.0f);
+        }
+        end(part);
+    }
+
+    void fillArea(const DrawFillArea& f) {
+        std::vector<std::vector<glm::dvec3>> contours;
+        for (const auto& c : f.contours) {
+            contours.emplace_back();
+            for (const auto& p : c) contours.back().push_back(apply(model_, p));
+        }
+        const InteriorStyleSet& in = f.interior;
+        if (in.style == InteriorStyle::Hollow) {
+            lineStrips(contours, true, PartRole::Edge, in.colour, LineType::Solid, 1.0f);
+        } else if (in.style != InteriorStyle::Empty) {
+            interior(f, contours);
+        }
+        if (f.edges.visible)
+            lineStrips(contours, true, PartRole::Edge, f.edges.colour, f.edges.type, f.edges.width);
+    }
+
+    void text(const DrawText& t) {
+        const StrokeFont& font = StrokeFont::forIndex(t.style.font);
+        const auto strips = layoutText(font, t.text, t.style);
+        const glm::vec3 colour = t.style.colour;
+        if (t.annotation) {
+            const glm::dvec3 reference = apply(model_, t.position);
+            GeometryPart part = begin(true, PartRole::Text, colour);
+            part.offsetInNpc = true;
+            const glm::dvec2 offset(t.annotationOffset);
+            for (const auto& strip : strips)
+                for (std::size_t i = 0; i + 1 < strip.size(); ++i) {
+                    push(reference, {}, colour, glm::vec2(offset + strip[i]), 0.0f);
+                    push(reference, {}, colour, glm::vec2(offset + strip[i + 1]), 0.0f);
+                }
+            end(part);
+            return;
+        }
+        // The text plane's axes: direction1, and direction2 made orthogonal to it within the plane.
+        glm::dvec3 x = t.direction1, y = t.direction2;
+        if (glm::length(x) == 0.0) x = {1, 0, 0};
+        x = glm::normalize(x);
+        y -= x * glm::dot(x, y);
+        y = glm::length(y) > 0.0 ? glm::normalize(y) : glm::dvec3(0, 1, 0);
+        std::vector<std::vector<glm::dvec3>> world;
+        for (const auto& strip : strips) {
+            world.emplace_back();
+            for (const auto& q : strip) world.back().push_back(apply(model_, t.position + x * q.x + y * q.y));
+        }
+        lineStrips(world, false, PartRole::Text, colour, LineType::Solid, 1.0f);
+    }
+
+private:
+    GeometryPart begin(bool lines, PartRole role, glm::vec3 colour) {
+        GeometryPart part;
+        part.lines = lines;
+        part.role = role;
+        part.colour = colour;
+        part.first = static_cast<std::uint32_t>(geometry.vertices.size());
+        return part;
+    }
+    void end(GeometryPart part) {
+        part.count = static_cast<std::uint32_t>(geometry.vertices.size()) - part.first;
+        if (part.count) geometry.parts.push_back(part);
+    }
+    void push(const glm::dvec3& p, glm::vec3 normal, glm::vec3 colour, glm::vec2 offset, float pattern) {
+        geometry.vertices.push_back({glm::vec3(p), normal, colour, offset, pattern});
+    }
+
+    void interior(const DrawFillArea& f, const std::vector<std::vector<glm::dvec3>>& contours) {
+        // Newell's normal of all contours gives the plane even for concave outlines.
+        glm::dvec3 normal(0.0), centre(0.0);
+        std::size_t count = 0;
+        std::vector<glm::dvec3> flat;
+        for (const auto& c : contours)
+            for (std::size_t i = 0; i < c.size(); ++i) {
+                const glm::dvec3 &a = c[i], &b = c[(i + 1) % c.size()];
+                normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                                     (a.x - b.x) * (a.y + b.y));
+                centre += a;
+                ++count;
+                flat.push_back(a);
+            }
+        if (count < 3 || glm::length(normal) == 0.0) return;
+        normal = glm::normalize(normal);
+        if (glm::length(f.facetNormal) > 0.0) {
+            const glm::dvec3 given = glm::normalize(
+                glm::dvec3(glm::transpose(glm::inverse(model_)) * glm::dvec4(f.facetNormal, 0.0)));
+            if (glm::dot(given, normal) < 0.0) normal = -normal;
+        }
+        centre /= double(count);
+        const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        const glm::dvec3 u = glm::normalize(glm::cross(helper, normal)), v = glm::cross(normal, u);
+        std::vector<std::vector<glm::dvec2>> plane;
+        for (const auto& c : contours) {
+            plane.emplace_back();
+            for (const auto& p : c)
+                plane.back().push_back({glm::dot(p - centre, u), glm::dot(p - centre, v)});
+        }
+        const Triangulation tri = triangulateEvenOdd(plane);
+
+        std::vector<glm::vec3> colours;
+        std::vector<glm::dvec3> normals;
+        const bool haveColours = !f.vertexColours.empty();
+        const bool haveNormals = !f.vertexNormals.empty();
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(model_)));
+        for (std::size_t c = 0; c < contours.size(); ++c)
+            for (std::size_t i = 0; i < contours[c].size(); ++i) {
+                if (haveColours)
+                    colours.push_back(c < f.vertexColours.size() && i < f.vertexColours[c].size()
+                                          ? f.vertexColours[c][i]
+                                          : f.interior.colour);
+                if (haveNormals)
+                    normals.push_back(c < f.vertexNormals.size() && i < f.vertexNormals[c].size()
+                                          ? glm::normalize(normalMatrix * f.vertexNormals[c][i])
+                                          : normal);
+            }
+        GeometryPart part = begin(false, PartRole::Interior, f.interior.colour);
+        part.vertexColours = haveColours;
+        part.vertexNormals = true;
+        for (std::uint32_t index : tri.triangles) {
+            const TriangulationVertex& tv = tri.vertices[index];
+            const double t = tv.t;
+            const glm::dvec3 p = flat[tv.from] * (1.0 - t) + flat[tv.to] * t;
+            const glm::vec3 colour =
+                haveColours ? glm::mix(colours[tv.from], colours[tv.to], float(t)) : f.interior.colour;
+            glm::dvec3 n = haveNormals ? normals[tv.from] * (1.0 - t) + normals[tv.to] * t : normal;
+            if (glm::length(n) > 0.0) n = glm::normalize(n);
+            push(p, glm::vec3(n), colour, {}, 0.0f);
+        }
+        // The slab triangulation is counter-clockwise in the (u, v) plane, i.e. front facing along `normal`.
+        end(part);
+    }
+
+    glm::dmat4 model_;
+    glm::dmat4 toPixels_;
+};
+
+struct Hasher {
+    std::uint64_t h = 1469598103934665603ull;
+    void bytes(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) h = (h ^ p[i]) * 1099511628211ull;
+    }
+    template <class T>
+    void value(const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&v, sizeof v);
+    }
+    void value(const Reflectance& r) {
+        value(r.ambient), value(r.diffuse), value(r.specular), value(r.specularColour);
+        value(r.specularExponent), value(r.transparency);
+    }
+    void value(const InteriorStyleSet& s) {
+        value(s.style), value(s.styleIndex), value(s.colour), value(s.backColour), value(s.shading);
+        value(s.reflectance), value(s.properties), value(s.backProperties), value(s.cull);
+        value(s.distinguishBackFaces);
+    }
+    void value(const EdgeStyle& e) { value(e.visible), value(e.colour), value(e.type), value(e.width); }
+    void value(const TextStyle& t) {
+        value(t.colour), value(t.font), value(t.expansion), value(t.spacing), value(t.height);
+        value(t.upVector), value(t.path), value(t.horizontal), value(t.vertical);
+    }
+    template <class T>
+    void values(const std::vector<T>& v) {
+        value(v.size());
+        if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
+    }
+};
+
+}  // namespace
+
+ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels) {
+    Builder b(item, worldToPixels);
+    std::visit(
+        [&](const auto& p) {
+            using T = std::decay_t<decltype(p)>;
+            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
+                b.polyline(p.points, p.style);
+            else if constexpr (std::is_same_v<T, DrawPolymarker>)
+                b.polymarker(p);
+            else if constexpr (std::is_same_v<T, DrawFillArea>)
+                b.fillArea(p);
+            else if constexpr (std::is_same_v<T, DrawText>)
+                b.text(p);
+        },
+        item.primitive);
+    return std::move(b.geometry);
+}
+
+std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels) {
+    Hasher h;
+    h.value(item.primitive.index());
+    h.value(item.modelTransform);
+    std::visit(
+        [&](const auto& p) {
+            using T = std::decay_t<decltype(p)>;
+            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
+                h.values(p.points);
+                h.value(p.style);
+                if (p.style.type != LineType::Solid) h.value(worldToPixels);
+            } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
+                h.values(p.points);
+                h.value(p.style);
+            } else if constexpr (std::is_same_v<T, DrawFillArea>) {
+                for (const auto& c : p.contours) h.values(c);
+                for (const auto& c : p.vertexColours) h.values(c);
+                for (const auto& c : p.vertexNormals) h.values(c);
+                h.value(p.facetNormal);
+                h.value(p.interior);
+                h.value(p.edges);
+                if (p.edges.visible && p.edges.type != LineType::Solid) h.value(worldToPixels);
+            } else if constexpr (std::is_same_v<T, DrawText>) {
+                h.bytes(p.text.data(), p.text.size());
+                h.value(p.position);
+                h.value(p.direction1);
+                h.value(p.direction2);
+                h.value(p.annotation);
+                h.value(p.annotationOffset);
+                h.value(p.style);
+            }
+        },
+        item.primitive);
+    return h.h;
+}
+
+MeshIndices meshIndices(const MeshData& mesh) {
+    MeshIndices out;
+    out.indices = mesh.triangles;
+    out.triangleCount = static_cast<std::uint32_t>(mesh.triangles.size() / 3 * 3);
+    out.indices.resize(out.triangleCount);
+    for (const auto& line : mesh.isoLines)
+        for (std::size_t i = 0; i + 1 < line.size(); ++i)
+            out.indices.insert(out.indices.end(), {line[i], line[i + 1]});
+    out.isoLineCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount;
+    std::unordered_set<std::uint64_t> seen;
+    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            std::uint32_t a = mesh.triangles[t + e], b = mesh.triangles[t + (e + 1) % 3];
+            if (a > b) std::swap(a, b);
+            if (seen.insert((std::uint64_t(a) << 32) | b).second)
+                out.indices.insert(out.indices.end(), {a, b});
+        }
+    out.edgeCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount - out.isoLineCount;
+    const auto limit = static_cast<std::uint32_t>(mesh.positions.size());
+    for (std::uint32_t& i : out.indices)
+        if (i >= limit) i = 0;  // a bad index must not read past the vertex buffer
+    return out;
+}
+
+std::vector<RenderVertex> meshVertices(const MeshData& mesh) {
+    std::vector<RenderVertex> v(mesh.positions.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        v[i].position = mesh.positions[i];
+        if (i < mesh.normals.size()) v[i].normal = mesh.normals[i];
+        if (i < mesh.colours.size()) v[i].colour = mesh.colours[i];
+    }
+    return v;
+}
+
+}  // namespace phigs::render

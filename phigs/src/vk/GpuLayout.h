@@ -1,0 +1,70 @@
+#pragma once
+
+// The C++ mirror of the data shaders/scene.glsl reads (std140 frame block, std430 draw array).
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace phigs::vk::gpu {
+
+inline constexpr int kMaxViews = 16;
+inline constexpr int kMaxLights = 64;
+inline constexpr int kMaxLightSets = 16;
+inline constexpr int kMaxCues = 16;
+
+enum Flag : int {
+    VertexColours = 1,
+    Lit = 2,
+    DistinguishBack = 4,
+    Highlight = 8,
+    Hatch = 16,
+    Pattern = 32,
+    OffsetNpc = 64,
+    Triangles = 128,
+};
+enum Shade : int { Flat = 1, Gouraud = 2, Phong = 4 };
+
+struct View {
+    glm::mat4 worldToClip{1.0f};
+    glm::mat4 worldToNpc{1.0f};
+    glm::vec4 eye{0, 0, 1, 0};
+    glm::vec4 clip{0, 1, 0, 0};
+};
+
+struct Light {
+    glm::vec4 colour{0.0f};
+    glm::vec4 position{0.0f};
+    glm::vec4 direction{0.0f};
+    glm::vec4 attenuation{0.0f};
+};
+
+struct DepthCue {
+    glm::vec4 planes{0.0f};
+    glm::vec4 colour{0.0f};
+};
+
+struct Frame {
+    View views[kMaxViews];
+    Light lights[kMaxLights];
+    glm::ivec4 lightSets[kMaxLightSets];
+    DepthCue cues[kMaxCues];
+    glm::vec4 pixelScale{0.0f};
+    glm::vec4 highlight{0.0f};
+};
+
+struct DrawParams {
+    glm::mat4 model{1.0f};
+    glm::mat4 normalMatrix{1.0f};
+    glm::vec4 colour{0.0f};
+    glm::vec4 backColour{0.0f};
+    glm::vec4 reflectance{0.0f};
+    glm::vec4 specularColour{0.0f};
+    glm::vec4 backReflectance{0.0f};
+    glm::vec4 backSpecularColour{0.0f};
+    glm::ivec4 indices{0};
+    glm::ivec4 style{0};
+    glm::vec4 misc{0.0f};
+};
+static_assert(sizeof(DrawParams) == 272);
+
+}  // namespace phigs::vk::gpu

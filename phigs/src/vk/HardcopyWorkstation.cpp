@@ -1,0 +1,33 @@
+#include "phigs/vk/HardcopyWorkstation.h"
+
+#include <stdexcept>
+
+namespace phigs::vk {
+
+HardcopyWorkstation::HardcopyWorkstation(Context& context, std::uint32_t width, std::uint32_t height,
+                                         std::filesystem::path file)
+    : workstation_(context, width, height), file_(std::move(file)) {
+}
+
+HardcopyWorkstation::~HardcopyWorkstation() {
+    try {
+        close();
+    } catch (...) {
+        // A destructor must not throw; close() explicitly to see write errors.
+    }
+}
+
+void HardcopyWorkstation::update(const DrawList& list) {
+    if (closed_) throw std::logic_error("HardcopyWorkstation::update: " + file_.string() + " is closed");
+    last_ = list;
+    if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
+    workstation_.drawToPng(list, file_);
+}
+
+void HardcopyWorkstation::close() {
+    if (closed_) return;
+    closed_ = true;
+    if (last_) workstation_.drawToPng(*last_, file_);
+}
+
+}  // namespace phigs::vk

@@ -1,0 +1,706 @@
+#include "phigs/vk/Renderer.h"
+
+#include "GpuLayout.h"
+#include "phigs/render/WorkstationMapping.h"
+#include "shaders/Spirv.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace phigs::vk {
+namespace {
+
+// Pipeline keys: topology, face culling and depth test are the only fixed-function differences.
+constexpr int kLines = 1;
+constexpr int kDepth = 2;
+constexpr int kCullShift = 2;  // CullMode in bits 2..3
+constexpr int kMayDiscard = 16;
+constexpr int kShadeShift = 5;        // per-fragment shading (0, Flat or Phong) in bits 5..7
+constexpr int kReflectanceShift = 8;  // fixed reflectance model (0: read per draw) in bits 8..10
+constexpr int kSignatureShift = 11;   // light set signature + 1 (0: read at run time) in bits 11..26
+// Inputs a pipeline's draws do not need, so the varyings can be dropped (lavapipe's triangle
+// setup cost grows with every varying).
+constexpr std::uint64_t kNoDepthCue = 1ull << 27;
+constexpr std::uint64_t kNoVertexColours = 1ull << 28;
+constexpr std::uint64_t kNoWorldPosition = 1ull << 29;
+
+VkShaderModule createShader(VkDevice device, const char* name) {
+    const auto words = shaders::spirv(name);
+    VkShaderModuleCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+    info.codeSize = words.size_bytes();
+    info.pCode = words.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
+    return module;
+}
+
+glm::mat4 toFloat(const glm::dmat4& m) {
+    return glm::mat4(m);
+}
+
+std::string itemName(std::size_t index) {
+    return "draw item " + std::to_string(index);
+}
+
+int shadeOf(ShadingMethod method) {
+    switch (method) {
+        case ShadingMethod::Colour:
+        case ShadingMethod::DotProduct:
+            return gpu::Gouraud;
+        case ShadingMethod::Normal:
+            return gpu::Phong;
+        case ShadingMethod::None:
+            break;
+    }
+    return gpu::Flat;
+}
+
+}  // namespace
+
+Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalLayout)
+    : context_(context), colourFormat_(colourFormat) {
+    VkDevice device = context_.device();
+    VkPhysicalDeviceFeatures features{};
+    vkGetPhysicalDeviceFeatures(context_.physicalDevice(), &features);
+    maxLineWidth_ = features.wideLines ? context_.properties().limits.lineWidthRange[1] : 1.0f;
+    try {
+        VkAttachmentDescription attachments[2]{};
+        attachments[0].format = colourFormat;
+        attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+        attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        attachments[0].finalLayout = finalLayout;
+        attachments[1].format = kDepthFormat;
+        attachments[1].samples = VK_SAMPLE_COUNT_1_BIT;
+        attachments[1].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        attachments[1].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        attachments[1].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        attachments[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+        VkSubpassDescription subpass{};
+        subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+        subpass.colorAttachmentCount = 1;
+        subpass.pColorAttachments = &colourRef;
+        subpass.pDepthStencilAttachment = &depthRef;
+        VkSubpassDependency dependencies[2]{};
+        // Wait for the previous use of the attachments (an acquired swapchain image, or last frame).
+        dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+        dependencies[0].dstSubpass = 0;
+        dependencies[0].srcStageMask =
+            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+        dependencies[0].dstStageMask =
+            VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
+        dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        // The readback copy (offscreen) waits for the colour writes.
+        dependencies[1].srcSubpass = 0;
+        dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+        dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+        dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        VkRenderPassCreateInfo rpInfo{};
+        rpInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+        rpInfo.attachmentCount = 2;
+        rpInfo.pAttachments = attachments;
+        rpInfo.subpassCount = 1;
+        rpInfo.pSubpasses = &subpass;
+        rpInfo.dependencyCount = 2;
+        rpInfo.pDependencies = dependencies;
+        check(vkCreateRenderPass(device, &rpInfo, nullptr, &renderPass_), "vkCreateRenderPass");
+
+        createDescriptors();
+        vertexShader_ = createShader(device, "prim.vert");
+        fragmentShader_ = createShader(device, "prim.frag");
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+Renderer::~Renderer() {
+    release();
+}
+
+void Renderer::release() {
+    VkDevice device = context_.device();
+    vkDeviceWaitIdle(device);
+    geometry_.clear();
+    meshes_.clear();
+    drawBuffer_.reset();
+    frameBuffer_.reset();
+    for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
+    pipelines_.clear();
+    if (vertexShader_) vkDestroyShaderModule(device, vertexShader_, nullptr);
+    if (fragmentShader_) vkDestroyShaderModule(device, fragmentShader_, nullptr);
+    if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
+    if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
+    if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
+    vertexShader_ = fragmentShader_ = VK_NULL_HANDLE;
+    pool_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
+    setLayout_ = VK_NULL_HANDLE;
+    renderPass_ = VK_NULL_HANDLE;
+}
+
+void Renderer::createDescriptors() {
+    VkDevice device = context_.device();
+    VkDescriptorSetLayoutBinding bindings[2]{};
+    bindings[0].binding = 0;
+    bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    bindings[0].descriptorCount = 1;
+    bindings[0].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    bindings[1].binding = 1;
+    bindings[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[1].descriptorCount = 1;
+    bindings[1].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    VkDescriptorSetLayoutCreateInfo setInfo{};
+    setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    setInfo.bindingCount = 2;
+    setInfo.pBindings = bindings;
+    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
+
+    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                              sizeof(std::uint32_t)};
+    VkPipelineLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout_;
+    layoutInfo.pushConstantRangeCount = 1;
+    layoutInfo.pPushConstantRanges = &range;
+    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
+
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+    VkDescriptorPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 2;
+    poolInfo.pPoolSizes = sizes;
+    check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
+    VkDescriptorSetAllocateInfo alloc{};
+    alloc.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    alloc.descriptorPool = pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &setLayout_;
+    check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
+}
+
+VkPipeline Renderer::pipeline(std::uint64_t key) {
+    if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+    const bool lines = key & kLines;
+    const bool depth = key & kDepth;
+    const auto cull = static_cast<CullMode>((key >> kCullShift) & 3);
+    const VkBool32 mayDiscard = (key & kMayDiscard) ? VK_TRUE : VK_FALSE;
+    struct {
+        VkBool32 mayDiscard;
+        std::int32_t fragmentShading, lightSignature, reflectance;
+        VkBool32 depthCue, vertexColours, worldPosition;
+    } constants{mayDiscard,
+                std::int32_t((key >> kShadeShift) & 7),
+                std::int32_t((key >> kSignatureShift) & 0xffff) - 1,
+                std::int32_t((key >> kReflectanceShift) & 7),
+                (key & kNoDepthCue) ? VK_FALSE : VK_TRUE,
+                (key & kNoVertexColours) ? VK_FALSE : VK_TRUE,
+                (key & kNoWorldPosition) ? VK_FALSE : VK_TRUE};
+    const VkSpecializationMapEntry entries[7] = {{0, 0, 4},  {1, 4, 4},  {2, 8, 4}, {3, 12, 4},
+                                                 {4, 16, 4}, {5, 20, 4}, {6, 24, 4}};
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = 7;
+    specialization.pMapEntries = entries;
+    specialization.dataSize = sizeof constants;
+    specialization.pData = &constants;
+
+    VkPipelineShaderStageCreateInfo stages[2]{};
+    stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = vertexShader_;
+    stages[0].pName = "main";
+    stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = fragmentShader_;
+    stages[1].pName = "main";
+    stages[1].pSpecializationInfo = &specialization;
+
+    VkVertexInputBindingDescription binding{0, sizeof(render::RenderVertex), VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription attributes[5] = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, position)},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, normal)},
+        {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, colour)},
+        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(render::RenderVertex, offset)},
+        {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(render::RenderVertex, pattern)},
+    };
+    VkPipelineVertexInputStateCreateInfo vertexInput{};
+    vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexAttributeDescriptionCount = 5;
+    vertexInput.pVertexAttributeDescriptions = attributes;
+    VkPipelineInputAssemblyStateCreateInfo assembly{};
+    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    assembly.topology = lines ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewportState{};
+    viewportState.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    viewportState.viewportCount = 1;
+    viewportState.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{};
+    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = cull == CullMode::BackFaces    ? VK_CULL_MODE_BACK_BIT
+                      : cull == CullMode::FrontFaces ? VK_CULL_MODE_FRONT_BIT
+                                                     : VK_CULL_MODE_NONE;
+    // Vulkan's winding test already allows for the framebuffer's downward y, so counter-clockwise
+    // in NPC (x right, y up) is counter-clockwise here too.
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    // Surfaces are pushed back a little so iso-lines and edges at the same depth win the test.
+    raster.depthBiasEnable = depth && !lines;
+    raster.depthBiasConstantFactor = 2.0f;
+    raster.depthBiasSlopeFactor = 1.5f;
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo depthState{};
+    depthState.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+    depthState.depthTestEnable = depth;
+    depthState.depthWriteEnable = depth;
+    depthState.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    VkPipelineColorBlendAttachmentState blendAttachment{};
+    blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blend{};
+    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+    blend.attachmentCount = 1;
+    blend.pAttachments = &blendAttachment;
+    VkDynamicState dynamics[3] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                  VK_DYNAMIC_STATE_LINE_WIDTH};
+    VkPipelineDynamicStateCreateInfo dynamic{};
+    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    dynamic.dynamicStateCount = 3;
+    dynamic.pDynamicStates = dynamics;
+
+    VkGraphicsPipelineCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &vertexInput;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewportState;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depthState;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout_;
+    info.renderPass = renderPass_;
+    VkPipeline p = VK_NULL_HANDLE;
+    check(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p),
+          "vkCreateGraphicsPipelines");
+    pipelines_[key] = p;
+    ++frame_.pipelinesCreated;
+    return p;
+}
+
+void Renderer::setHighlight(glm::vec3 colour, float amount) {
+    highlight_ = glm::vec4(colour, std::clamp(amount, 0.0f, 1.0f));
+}
+
+Renderer::CachedMesh& Renderer::compileMesh(const std::shared_ptr<const MeshData>& mesh) {
+    auto it = meshes_.find(mesh.get());
+    // A different mesh may reuse a freed address: the weak pointer tells them apart.
+    if (it != meshes_.end() && it->second.data.lock() == mesh) {
+        it->second.lastUsed = frameNumber_;
+        return it->second;
+    }
+    CachedMesh cached;
+    cached.data = mesh;
+    cached.lastUsed = frameNumber_;
+    cached.hasNormals = mesh->normals.size() == mesh->positions.size() && !mesh->positions.empty();
+    cached.hasColours = mesh->colours.size() == mesh->positions.size() && !mesh->positions.empty();
+    const auto vertices = render::meshVertices(*mesh);
+    cached.counts = render::meshIndices(*mesh);
+    if (!vertices.empty() && !cached.counts.indices.empty()) {
+        const VkDeviceSize vbytes = vertices.size() * sizeof(render::RenderVertex);
+        cached.vertices =
+            std::make_unique<GpuBuffer>(context_, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
+        cached.vertices->write(vertices.data(), vbytes);
+        const VkDeviceSize ibytes = cached.counts.indices.size() * sizeof(std::uint32_t);
+        cached.indices =
+            std::make_unique<GpuBuffer>(context_, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, frame_);
+        cached.indices->write(cached.counts.indices.data(), ibytes);
+    }
+    cached.counts.indices.clear();
+    cached.counts.indices.shrink_to_fit();
+    return meshes_[mesh.get()] = std::move(cached);
+}
+
+void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
+    ++frameNumber_;
+    frame_ = {};
+    commands_.clear();
+    drawBytes_.clear();
+    depthTest_ = list.hiddenSurfaceRemoval;
+    background_ = list.background;
+    if (list.views.size() > std::size_t(gpu::kMaxViews))
+        throw std::invalid_argument("Renderer: " + std::to_string(list.views.size()) + " views, at most " +
+                                    std::to_string(gpu::kMaxViews) + " are supported");
+
+    const render::WorkstationMapping mapping(list, extent.width, extent.height);
+    const glm::dmat4 npcToPixels =
+        glm::dmat4(glm::dvec4(0.5 * extent.width, 0, 0, 0), glm::dvec4(0, 0.5 * extent.height, 0, 0),
+                   glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
+        mapping.npcToClip;
+    const DrawView defaultView;
+    std::vector<gpu::DrawParams> draws;
+    // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
+    std::vector<int> signatures;
+    for (const auto& set : list.lightSets) {
+        int signature = set.size() <= 4 ? int(set.size()) : -1;
+        for (std::size_t j = 0; signature >= 0 && j < set.size(); ++j)
+            signature |= (int(set[j].type) & 7) << (3 + 3 * j);
+        signatures.push_back(signature);
+    }
+
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const DrawItem& item = list.items[i];
+        if (item.viewIndex < 0 ||
+            (item.viewIndex >= int(list.views.size()) && !(list.views.empty() && item.viewIndex == 0)))
+            throw std::invalid_argument("Renderer: " + itemName(i) + " uses view " +
+                                        std::to_string(item.viewIndex) + " but the list has " +
+                                        std::to_string(list.views.size()));
+        if (item.lightSet >= int(list.lightSets.size()) || item.lightSet >= gpu::kMaxLightSets)
+            throw std::invalid_argument("Renderer: " + itemName(i) + " uses light set " +
+                                        std::to_string(item.lightSet) + " but the list has " +
+                                        std::to_string(list.lightSets.size()));
+        if (item.depthCue >= int(list.depthCues.size()) || item.depthCue >= gpu::kMaxCues)
+            throw std::invalid_argument("Renderer: " + itemName(i) + " uses depth cue " +
+                                        std::to_string(item.depthCue) + " but the list has " +
+                                        std::to_string(list.depthCues.size()));
+        const DrawView& view = list.views.empty() ? defaultView : list.views[item.viewIndex];
+        const glm::dmat4 worldToPixels = npcToPixels * view.mapping * view.orientation;
+        VkRect2D scissor{};
+        {
+            const glm::dvec2 lo = view.clipXY ? glm::dvec2(view.clipMin) : glm::dvec2(-1e30);
+            const glm::dvec2 hi = view.clipXY ? glm::dvec2(view.clipMax) : glm::dvec2(1e30);
+            const render::PixelRect r = mapping.scissor(lo, hi);
+            scissor = {{r.x, r.y}, {r.width, r.height}};
+        }
+        if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
+        const bool cued = item.depthCue >= 0 && list.depthCues[std::size_t(item.depthCue)].enabled;
+        const bool clipsDepth =
+            (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
+
+        // The attributes every part of this item shares.
+        gpu::DrawParams base;
+        base.indices =
+            glm::ivec4(item.viewIndex, item.lightSet, item.depthCue, item.highlighted ? gpu::Highlight : 0);
+        auto addPart = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
+                           bool meshNormals, VkBuffer vertices, VkBuffer indices) {
+            gpu::DrawParams d = base;
+            if (!indices) d.model = glm::mat4(1.0f), d.normalMatrix = glm::mat4(1.0f);
+            d.colour = glm::vec4(part.colour, 1.0f);
+            d.backColour = d.colour;
+            int flags = d.indices.w;
+            int shade = gpu::Flat;
+            if (part.vertexColours) flags |= gpu::VertexColours;
+            if (part.offsetInNpc) flags |= gpu::OffsetNpc;
+            if (part.lines && part.lineType != LineType::Solid) flags |= gpu::Pattern;
+            if (!part.lines) flags |= gpu::Triangles;
+            if (interior && part.role == render::PartRole::Interior) {
+                const InteriorStyleSet& s = *interior;
+                if (s.style == InteriorStyle::Hatch) flags |= gpu::Hatch;
+                if (s.reflectance != ReflectanceModel::None && item.lightSet >= 0) flags |= gpu::Lit;
+                if (s.distinguishBackFaces) {
+                    flags |= gpu::DistinguishBack;
+                    d.backColour = glm::vec4(s.backColour, 1.0f);
+                }
+                shade = meshNormals ? shadeOf(s.shading) : gpu::Flat;
+                auto reflect = [&](const Reflectance& r, ReflectanceModel model, glm::vec4& k,
+                                   glm::vec4& sc) {
+                    k = glm::vec4(r.ambient, r.diffuse, r.specular, r.specularExponent);
+                    sc = glm::vec4(r.specularColour, float(int(model)));
+                };
+                reflect(s.properties, s.reflectance, d.reflectance, d.specularColour);
+                reflect(s.distinguishBackFaces ? s.backProperties : s.properties, s.reflectance,
+                        d.backReflectance, d.backSpecularColour);
+            }
+            d.indices.w = flags;
+            d.style =
+                glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
+            d.misc = glm::vec4(part.lineWidth, 0, 0, 0);
+            Command c;
+            c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
+            if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
+            if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth) c.pipeline |= kMayDiscard;
+            if ((flags & gpu::Lit) && shade != gpu::Gouraud) {
+                c.pipeline |= shade << kShadeShift;
+                // Front and back share the model; a fixed light set shape lets the shader unroll.
+                c.pipeline |= int(interior->reflectance) << kReflectanceShift;
+                const int signature = signatures[std::size_t(item.lightSet)];
+                c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
+                if (!cued) c.pipeline |= kNoDepthCue;
+                if (!part.vertexColours) c.pipeline |= kNoVertexColours;
+                bool local = signature < 0 || shade == gpu::Flat;
+                for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
+                    local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
+                if (!local) c.pipeline |= kNoWorldPosition;
+            }
+            c.vertices = vertices;
+            c.indices = indices;
+            c.first = part.first;
+            c.count = part.count;
+            c.drawIndex = static_cast<std::uint32_t>(draws.size());
+            c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
+            c.scissor = scissor;
+            pipeline(c.pipeline);
+            draws.push_back(d);
+            commands_.push_back(c);
+        };
+
+        if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
+            if (!mesh->mesh) continue;
+            CachedMesh& cached = compileMesh(mesh->mesh);
+            if (!cached.vertices) continue;
+            base.model = toFloat(item.modelTransform);
+            base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
+            const InteriorStyleSet& s = mesh->interior;
+            render::GeometryPart part;
+            part.vertexNormals = cached.hasNormals;
+            if (s.style == InteriorStyle::Hollow && cached.counts.edgeCount) {
+                part.lines = true;
+                part.role = render::PartRole::Edge;
+                part.colour = s.colour;
+                part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+                part.count = cached.counts.edgeCount;
+                addPart(part, nullptr, false, cached.vertices->handle(), cached.indices->handle());
+            } else if (s.style != InteriorStyle::Empty && cached.counts.triangleCount) {
+                part.role = render::PartRole::Interior;
+                part.colour = s.colour;
+                part.vertexColours = cached.hasColours;
+                part.first = 0;
+                part.count = cached.counts.triangleCount;
+                addPart(part, &s, cached.hasNormals, cached.vertices->handle(), cached.indices->handle());
+            }
+            if (cached.counts.isoLineCount) {
+                render::GeometryPart iso;
+                iso.lines = true;
+                iso.role = render::PartRole::IsoLine;
+                iso.colour = mesh->isoLineStyle.colour;
+                iso.lineType = mesh->isoLineStyle.type;
+                iso.lineWidth = mesh->isoLineStyle.width;
+                iso.first = cached.counts.triangleCount;
+                iso.count = cached.counts.isoLineCount;
+                // Patterns need screen distances the shared mesh buffer does not carry: iso-lines are solid.
+                iso.lineType = LineType::Solid;
+                addPart(iso, nullptr, false, cached.vertices->handle(), cached.indices->handle());
+            }
+            if (mesh->edges.visible && cached.counts.edgeCount) {
+                render::GeometryPart edge;
+                edge.lines = true;
+                edge.role = render::PartRole::Edge;
+                edge.colour = mesh->edges.colour;
+                edge.lineWidth = mesh->edges.width;
+                edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+                edge.count = cached.counts.edgeCount;
+                addPart(edge, nullptr, false, cached.vertices->handle(), cached.indices->handle());
+            }
+            continue;
+        }
+
+        const std::uint64_t key = render::geometryKey(item, worldToPixels);
+        auto it = geometry_.find(key);
+        if (it == geometry_.end()) {
+            render::ItemGeometry g = render::describeItem(item, worldToPixels);
+            CachedGeometry cached;
+            if (!g.vertices.empty()) {
+                const VkDeviceSize bytes = g.vertices.size() * sizeof(render::RenderVertex);
+                cached.vertices =
+                    std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
+                cached.vertices->write(g.vertices.data(), bytes);
+            }
+            cached.parts = std::move(g.parts);
+            it = geometry_.emplace(key, std::move(cached)).first;
+        }
+        it->second.lastUsed = frameNumber_;
+        if (!it->second.vertices) continue;
+        const InteriorStyleSet* interior = nullptr;
+        if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
+        for (const auto& part : it->second.parts)
+            addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
+    }
+
+    // Free what this frame no longer draws (the previous frame has finished with it).
+    std::erase_if(geometry_, [&](const auto& entry) { return entry.second.lastUsed != frameNumber_; });
+    std::erase_if(meshes_, [&](const auto& entry) { return entry.second.lastUsed != frameNumber_; });
+
+    drawBytes_.resize(draws.size() * sizeof(gpu::DrawParams));
+    if (!draws.empty()) std::memcpy(drawBytes_.data(), draws.data(), drawBytes_.size());
+    uploadFrame(list, extent);
+    uploadDraws();
+    frame_.drawCalls = commands_.size();
+    total_.add(frame_);
+}
+
+void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
+    const render::WorkstationMapping mapping(list, extent.width, extent.height);
+    gpu::Frame f{};
+    const DrawView defaultView;
+    const std::size_t viewCount = std::max<std::size_t>(1, list.views.size());
+    for (std::size_t v = 0; v < viewCount; ++v) {
+        const DrawView& view = list.views.empty() ? defaultView : list.views[v];
+        const glm::dmat4 worldToNpc = view.mapping * view.orientation;
+        f.views[v].worldToNpc = toFloat(worldToNpc);
+        f.views[v].worldToClip = toFloat(mapping.npcToClip * worldToNpc);
+        glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
+        eye = glm::length(eye) > 0 ? glm::normalize(eye) : glm::dvec3(0, 0, 1);
+        f.views[v].eye = glm::vec4(glm::vec3(eye), 0.0f);
+        f.views[v].clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
+                                    view.clipFront ? 1.0f : 0.0f);
+    }
+    int next = 0;
+    for (std::size_t s = 0; s < list.lightSets.size() && s < std::size_t(gpu::kMaxLightSets); ++s) {
+        const int first = next;
+        for (const Light& light : list.lightSets[s]) {
+            if (next >= gpu::kMaxLights)
+                throw std::invalid_argument("Renderer: more than " + std::to_string(gpu::kMaxLights) +
+                                            " lights in the light sets");
+            gpu::Light& g = f.lights[next++];
+            g.colour = glm::vec4(light.colour, float(int(light.type)));
+            g.position = glm::vec4(glm::vec3(light.position), 1.0f);
+            const glm::dvec3 direction =
+                glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
+            g.direction = glm::vec4(glm::vec3(direction), light.concentration);
+            g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
+        }
+        f.lightSets[s] = glm::ivec4(first, next - first, 0, 0);
+    }
+    for (std::size_t c = 0; c < list.depthCues.size() && c < std::size_t(gpu::kMaxCues); ++c) {
+        const DepthCue& cue = list.depthCues[c];
+        f.cues[c].planes =
+            glm::vec4(float(cue.frontPlane), float(cue.backPlane), cue.frontScale, cue.backScale);
+        f.cues[c].colour = glm::vec4(cue.colour, cue.enabled ? 1.0f : 0.0f);
+    }
+    f.pixelScale =
+        glm::vec4(2.0f / float(extent.width), -2.0f / float(extent.height), float(mapping.pixelsPerNpc), 0);
+    f.highlight = highlight_;
+
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&f);
+    const bool created = !frameBuffer_;
+    if (created)
+        frameBuffer_ =
+            std::make_unique<GpuBuffer>(context_, sizeof f, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frame_);
+    if (created || std::memcmp(lastFrameBytes_.data(), bytes, sizeof f) != 0) {
+        frameBuffer_->write(bytes, sizeof f);
+        lastFrameBytes_.assign(bytes, bytes + sizeof f);
+    }
+    if (created) {
+        VkDescriptorBufferInfo info{frameBuffer_->handle(), 0, sizeof f};
+        VkWriteDescriptorSet write{};
+        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        write.dstSet = set_;
+        write.dstBinding = 0;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        write.pBufferInfo = &info;
+        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+    }
+}
+
+void Renderer::uploadDraws() {
+    const std::size_t needed = std::max<std::size_t>(drawBytes_.size(), sizeof(gpu::DrawParams));
+    if (!drawBuffer_ || drawBuffer_->size() < needed) {
+        drawBuffer_.reset();
+        drawBuffer_ = std::make_unique<GpuBuffer>(context_, needed + needed / 2,
+                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frame_);
+        lastDrawBytes_.clear();
+        VkDescriptorBufferInfo info{drawBuffer_->handle(), 0, VK_WHOLE_SIZE};
+        VkWriteDescriptorSet write{};
+        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        write.dstSet = set_;
+        write.dstBinding = 1;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &info;
+        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+    }
+    // Only the runs of draw records that differ from what the buffer holds are written.
+    constexpr std::size_t record = sizeof(gpu::DrawParams);
+    const std::size_t count = drawBytes_.size() / record;
+    std::size_t i = 0;
+    while (i < count) {
+        auto same = [&](std::size_t k) {
+            return (k + 1) * record <= lastDrawBytes_.size() &&
+                   std::memcmp(&drawBytes_[k * record], &lastDrawBytes_[k * record], record) == 0;
+        };
+        if (same(i)) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i + 1;
+        while (j < count && !same(j)) ++j;
+        drawBuffer_->write(&drawBytes_[i * record], (j - i) * record, i * record);
+        i = j;
+    }
+    lastDrawBytes_ = drawBytes_;
+}
+
+void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D extent) const {
+    VkClearValue clears[2]{};
+    clears[0].color = {{background_.x, background_.y, background_.z, 1.0f}};
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+    begin.renderPass = renderPass_;
+    begin.framebuffer = framebuffer;
+    begin.renderArea = {{0, 0}, extent};
+    begin.clearValueCount = 2;
+    begin.pClearValues = clears;
+    vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
+    std::uint64_t bound = ~0ull;
+    VkBuffer boundVertices = VK_NULL_HANDLE, boundIndices = VK_NULL_HANDLE;
+    for (const Command& c : commands_) {
+        if (c.pipeline != bound) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.at(c.pipeline));
+            bound = c.pipeline;
+        }
+        if (c.vertices != boundVertices) {
+            const VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &c.vertices, &offset);
+            boundVertices = c.vertices;
+        }
+        vkCmdSetScissor(cmd, 0, 1, &c.scissor);
+        vkCmdSetLineWidth(cmd, c.lineWidth);
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                           sizeof c.drawIndex, &c.drawIndex);
+        if (c.indices) {
+            if (c.indices != boundIndices) {
+                vkCmdBindIndexBuffer(cmd, c.indices, 0, VK_INDEX_TYPE_UINT32);
+                boundIndices = c.indices;
+            }
+            vkCmdDrawIndexed(cmd, c.count, 1, c.first, 0, 0);
+        } else {
+            vkCmdDraw(cmd, c.count, 1, c.first, 0);
+        }
+    }
+    vkCmdEndRenderPass(cmd);
+}
+
+}  // namespace phigs::vk

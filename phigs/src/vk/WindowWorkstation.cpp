@@ -1,0 +1,391 @@
+#include "phigs/vk/WindowWorkstation.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstring>
+#include <mutex>
+#include <stdexcept>
+
+namespace phigs::vk {
+namespace {
+
+// GLFW is process-global: the first window initialises it, the last one terminates it.
+std::mutex glfwMutex;
+int glfwUsers = 0;
+
+void acquireGlfw() {
+    std::lock_guard lock(glfwMutex);
+    if (glfwUsers == 0 && !glfwInit()) {
+        const char* reason = nullptr;
+        glfwGetError(&reason);
+        throw std::runtime_error(std::string("GLFW: cannot initialise (no display?): ") +
+                                 (reason ? reason : "unknown reason"));
+    }
+    ++glfwUsers;
+}
+
+void releaseGlfw() {
+    std::lock_guard lock(glfwMutex);
+    if (--glfwUsers == 0) glfwTerminate();
+}
+
+}  // namespace
+
+ContextSettings WindowWorkstation::contextSettings() {
+    ContextSettings defaults;
+    defaults.device = DevicePreference::Hardware;
+    return contextSettings(ContextSettings::fromEnvironment(defaults));
+}
+
+ContextSettings WindowWorkstation::contextSettings(ContextSettings base) {
+    acquireGlfw();
+    std::uint32_t count = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    if (!names) {
+        releaseGlfw();
+        throw std::runtime_error("GLFW: Vulkan surfaces are not supported on this display");
+    }
+    for (std::uint32_t i = 0; i < count; ++i) base.instanceExtensions.push_back(names[i]);
+    releaseGlfw();
+    base.deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    return base;
+}
+
+WindowWorkstation::WindowWorkstation(Context& context, std::uint32_t width, std::uint32_t height,
+                                     const std::string& title)
+    : context_(context) {
+    acquireGlfw();
+    try {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+        glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+        window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
+        if (!window_) throw std::runtime_error("GLFW: cannot create the window '" + title + "'");
+        check(glfwCreateWindowSurface(context_.instance(), window_, nullptr, &surface_),
+              "glfwCreateWindowSurface");
+        VkBool32 supported = VK_FALSE;
+        vkGetPhysicalDeviceSurfaceSupportKHR(context_.physicalDevice(), context_.queueFamily(), surface_,
+                                             &supported);
+        if (!supported) throw std::runtime_error("Vulkan: the chosen queue cannot present to the window");
+
+        std::uint32_t count = 0;
+        vkGetPhysicalDeviceSurfaceFormatsKHR(context_.physicalDevice(), surface_, &count, nullptr);
+        std::vector<VkSurfaceFormatKHR> formats(count);
+        vkGetPhysicalDeviceSurfaceFormatsKHR(context_.physicalDevice(), surface_, &count, formats.data());
+        if (formats.empty()) throw std::runtime_error("Vulkan: the window surface offers no format");
+        format_ = formats.front();
+        // UNORM formats keep colours as the offscreen target has them (PHIGS colours are not sRGB).
+        for (const auto& f : formats)
+            if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) {
+                format_ = f;
+                break;
+            }
+        renderer_ = std::make_unique<Renderer>(context_, format_.format, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+
+        VkSemaphoreCreateInfo semaphoreInfo{};
+        semaphoreInfo.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
+        check(vkCreateSemaphore(context_.device(), &semaphoreInfo, nullptr, &acquired_), "vkCreateSemaphore");
+        check(vkCreateSemaphore(context_.device(), &semaphoreInfo, nullptr, &rendered_), "vkCreateSemaphore");
+        VkFenceCreateInfo fenceInfo{};
+        fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+        check(vkCreateFence(context_.device(), &fenceInfo, nullptr, &done_), "vkCreateFence");
+        VkCommandBufferAllocateInfo alloc{};
+        alloc.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+        alloc.commandPool = context_.commandPool();
+        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        alloc.commandBufferCount = 1;
+        check(vkAllocateCommandBuffers(context_.device(), &alloc, &cmd_), "vkAllocateCommandBuffers");
+        createSwapchain();
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+WindowWorkstation::~WindowWorkstation() {
+    release();
+}
+
+void WindowWorkstation::release() {
+    VkDevice device = context_.device();
+    vkDeviceWaitIdle(device);
+    destroySwapchain();
+    renderer_.reset();
+    if (readback_) vkDestroyBuffer(device, readback_, nullptr);
+    if (readbackMemory_) vkFreeMemory(device, readbackMemory_, nullptr);
+    readback_ = VK_NULL_HANDLE;
+    readbackMemory_ = VK_NULL_HANDLE;
+    if (cmd_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &cmd_);
+    if (done_) vkDestroyFence(device, done_, nullptr);
+    if (rendered_) vkDestroySemaphore(device, rendered_, nullptr);
+    if (acquired_) vkDestroySemaphore(device, acquired_, nullptr);
+    cmd_ = VK_NULL_HANDLE;
+    done_ = VK_NULL_HANDLE;
+    rendered_ = acquired_ = VK_NULL_HANDLE;
+    if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
+    surface_ = VK_NULL_HANDLE;
+    if (window_) {
+        glfwDestroyWindow(window_);
+        window_ = nullptr;
+        releaseGlfw();
+    } else if (!closed_) {
+        releaseGlfw();
+    }
+    closed_ = true;
+}
+
+void WindowWorkstation::createSwapchain() {
+    VkDevice device = context_.device();
+    VkSurfaceCapabilitiesKHR caps{};
+    check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice(), surface_, &caps),
+          "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
+    if (caps.currentExtent.width != UINT32_MAX) {
+        extent_ = caps.currentExtent;
+    } else {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window_, &w, &h);
+        extent_ = {std::clamp(std::uint32_t(w), caps.minImageExtent.width, caps.maxImageExtent.width),
+                   std::clamp(std::uint32_t(h), caps.minImageExtent.height, caps.maxImageExtent.height)};
+    }
+    if (extent_.width == 0 || extent_.height == 0) return;  // minimised: wait for a size
+    VkSwapchainCreateInfoKHR info{};
+    info.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR;
+    info.surface = surface_;
+    info.minImageCount =
+        caps.maxImageCount ? std::min(caps.minImageCount + 1, caps.maxImageCount) : caps.minImageCount + 1;
+    info.imageFormat = format_.format;
+    info.imageColorSpace = format_.colorSpace;
+    info.imageExtent = extent_;
+    info.imageArrayLayers = 1;
+    info.imageUsage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    canReadBack_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.preTransform = caps.currentTransform;
+    info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    if (!(caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR))
+        info.compositeAlpha = VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR;
+    info.presentMode = VK_PRESENT_MODE_FIFO_KHR;
+    info.clipped = VK_TRUE;
+    check(vkCreateSwapchainKHR(device, &info, nullptr, &swapchain_), "vkCreateSwapchainKHR");
+    std::uint32_t count = 0;
+    vkGetSwapchainImagesKHR(device, swapchain_, &count, nullptr);
+    images_.resize(count);
+    vkGetSwapchainImagesKHR(device, swapchain_, &count, images_.data());
+
+    // One depth image for all framebuffers: frames are drawn one at a time.
+    VkImageCreateInfo depthInfo{};
+    depthInfo.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+    depthInfo.imageType = VK_IMAGE_TYPE_2D;
+    depthInfo.format = Renderer::kDepthFormat;
+    depthInfo.extent = {extent_.width, extent_.height, 1};
+    depthInfo.mipLevels = 1;
+    depthInfo.arrayLayers = 1;
+    depthInfo.samples = VK_SAMPLE_COUNT_1_BIT;
+    depthInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
+    depthInfo.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    check(vkCreateImage(device, &depthInfo, nullptr, &depth_.image), "vkCreateImage (depth)");
+    VkMemoryRequirements req{};
+    vkGetImageMemoryRequirements(device, depth_.image, &req);
+    VkMemoryAllocateInfo alloc{};
+    alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = context_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    check(vkAllocateMemory(device, &alloc, nullptr, &depth_.memory), "vkAllocateMemory (depth)");
+    check(vkBindImageMemory(device, depth_.image, depth_.memory, 0), "vkBindImageMemory");
+    VkImageViewCreateInfo viewInfo{};
+    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+    viewInfo.image = depth_.image;
+    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = Renderer::kDepthFormat;
+    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    check(vkCreateImageView(device, &viewInfo, nullptr, &depth_.view), "vkCreateImageView (depth)");
+
+    for (VkImage image : images_) {
+        VkImageViewCreateInfo colourInfo{};
+        colourInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+        colourInfo.image = image;
+        colourInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        colourInfo.format = format_.format;
+        colourInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VkImageView view = VK_NULL_HANDLE;
+        check(vkCreateImageView(device, &colourInfo, nullptr, &view), "vkCreateImageView (swapchain)");
+        views_.push_back(view);
+        VkImageView attachments[2] = {view, depth_.view};
+        VkFramebufferCreateInfo fbInfo{};
+        fbInfo.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+        fbInfo.renderPass = renderer_->renderPass();
+        fbInfo.attachmentCount = 2;
+        fbInfo.pAttachments = attachments;
+        fbInfo.width = extent_.width;
+        fbInfo.height = extent_.height;
+        fbInfo.layers = 1;
+        VkFramebuffer framebuffer = VK_NULL_HANDLE;
+        check(vkCreateFramebuffer(device, &fbInfo, nullptr, &framebuffer), "vkCreateFramebuffer (swapchain)");
+        framebuffers_.push_back(framebuffer);
+    }
+}
+
+void WindowWorkstation::destroySwapchain() {
+    VkDevice device = context_.device();
+    for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(device, f, nullptr);
+    for (VkImageView v : views_) vkDestroyImageView(device, v, nullptr);
+    framebuffers_.clear();
+    views_.clear();
+    images_.clear();
+    if (depth_.view) vkDestroyImageView(device, depth_.view, nullptr);
+    if (depth_.image) vkDestroyImage(device, depth_.image, nullptr);
+    if (depth_.memory) vkFreeMemory(device, depth_.memory, nullptr);
+    depth_ = Attachment{};
+    if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
+    swapchain_ = VK_NULL_HANDLE;
+}
+
+bool WindowWorkstation::shouldClose() {
+    if (!window_) return true;
+    glfwPollEvents();
+    return glfwWindowShouldClose(window_);
+}
+
+void WindowWorkstation::requestClose() {
+    if (window_) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
+
+void WindowWorkstation::resize(std::uint32_t width, std::uint32_t height) {
+    if (window_) glfwSetWindowSize(window_, int(width), int(height));
+}
+
+bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
+    if (shouldClose()) return false;
+    if (readback && swapchain_ && !canReadBack_)
+        throw std::runtime_error(
+            "WindowWorkstation::draw: this surface's swapchain images cannot be read back");
+    VkDevice device = context_.device();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    if (!swapchain_ || std::uint32_t(w) != extent_.width || std::uint32_t(h) != extent_.height) {
+        vkDeviceWaitIdle(device);
+        destroySwapchain();
+        createSwapchain();
+        if (!swapchain_) return true;
+    }
+    std::uint32_t index = 0;
+    VkResult result =
+        vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
+    if (result == VK_ERROR_OUT_OF_DATE_KHR) {
+        vkDeviceWaitIdle(device);
+        destroySwapchain();
+        createSwapchain();
+        return true;  // the next draw uses the new swapchain
+    }
+    if (result != VK_SUBOPTIMAL_KHR) check(result, "vkAcquireNextImageKHR");
+
+    renderer_->prepare(list, extent_);
+    // Checked before acquiring too; here it covers a swapchain created by this very call.
+    const bool copy = readback != nullptr && canReadBack_;
+    if (copy) {
+        const VkDeviceSize size = VkDeviceSize{extent_.width} * extent_.height * 4;
+        if (size > readbackSize_) {
+            if (readback_) vkDestroyBuffer(device, readback_, nullptr);
+            if (readbackMemory_) vkFreeMemory(device, readbackMemory_, nullptr);
+            VkBufferCreateInfo info{};
+            info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+            info.size = size;
+            info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+            check(vkCreateBuffer(device, &info, nullptr, &readback_), "vkCreateBuffer (readback)");
+            VkMemoryRequirements req{};
+            vkGetBufferMemoryRequirements(device, readback_, &req);
+            VkMemoryAllocateInfo alloc{};
+            alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+            alloc.allocationSize = req.size;
+            alloc.memoryTypeIndex =
+                context_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                            VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+            check(vkAllocateMemory(device, &alloc, nullptr, &readbackMemory_), "vkAllocateMemory (readback)");
+            check(vkBindBufferMemory(device, readback_, readbackMemory_, 0), "vkBindBufferMemory");
+            readbackSize_ = size;
+        }
+    }
+    check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(cmd_, &begin), "vkBeginCommandBuffer");
+    renderer_->record(cmd_, framebuffers_[index], extent_);
+    if (copy) {
+        auto barrier = [&](VkImageLayout from, VkImageLayout to, VkAccessFlags src, VkAccessFlags dst) {
+            VkImageMemoryBarrier b{};
+            b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+            b.srcAccessMask = src;
+            b.dstAccessMask = dst;
+            b.oldLayout = from;
+            b.newLayout = to;
+            b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.image = images_[index];
+            b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            vkCmdPipelineBarrier(
+                cmd_, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0,
+                nullptr, 1, &b);
+        };
+        barrier(VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent_.width, extent_.height, 1};
+        vkCmdCopyImageToBuffer(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1,
+                               &region);
+        barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                VK_ACCESS_TRANSFER_READ_BIT, 0);
+    }
+    check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+
+    const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &acquired_;
+    submit.pWaitDstStageMask = &waitStage;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd_;
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &rendered_;
+    check(vkResetFences(device, 1, &done_), "vkResetFences");
+    check(vkQueueSubmit(context_.queue(), 1, &submit, done_), "vkQueueSubmit");
+    VkPresentInfoKHR present{};
+    present.sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR;
+    present.waitSemaphoreCount = 1;
+    present.pWaitSemaphores = &rendered_;
+    present.swapchainCount = 1;
+    present.pSwapchains = &swapchain_;
+    present.pImageIndices = &index;
+    result = vkQueuePresentKHR(context_.queue(), &present);
+    // Frames are drawn one at a time, so the renderer may change its buffers in the next prepare().
+    check(vkWaitForFences(device, 1, &done_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) {
+        vkDeviceWaitIdle(device);
+        destroySwapchain();
+        createSwapchain();
+    } else {
+        check(result, "vkQueuePresentKHR");
+    }
+    if (copy) {
+        Image image(extent_.width, extent_.height);
+        void* mapped = nullptr;
+        check(vkMapMemory(device, readbackMemory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+        std::memcpy(image.rgba.data(), mapped, image.rgba.size());
+        vkUnmapMemory(device, readbackMemory_);
+        const bool bgra =
+            format_.format == VK_FORMAT_B8G8R8A8_UNORM || format_.format == VK_FORMAT_B8G8R8A8_SRGB;
+        for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+            if (bgra) std::swap(image.rgba[i], image.rgba[i + 2]);
+            image.rgba[i + 3] = 255;
+        }
+        *readback = std::move(image);
+    }
+    return true;
+}
+
+}  // namespace phigs::vk

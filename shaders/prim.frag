@@ -1,0 +1,104 @@
+#version 450
+// The one fragment shader: NPC z clipping, hatch and line patterns, flat / Gouraud / Phong
+// lighting with distinct back faces, depth cueing and highlighting.
+#extension GL_GOOGLE_include_directive : require
+#include "scene.glsl"
+
+layout(location = 0) in vec3 vWorld;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) in vec3 vColour;
+layout(location = 3) in float vPattern;
+layout(location = 4) in float vNpcZ;
+layout(location = 5) in vec3 vLitFront;
+layout(location = 6) in vec3 vLitBack;
+
+layout(location = 0) out vec4 outColour;
+
+// False for pipelines whose draws never discard (no hatch, pattern or z clip): the compiler then
+// drops every discard and the depth test can run before shading.
+layout(constant_id = 0) const bool MAY_DISCARD = true;
+// The shading this pipeline does per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
+layout(constant_id = 1) const int FRAGMENT_SHADING = 0;
+// False where the pipeline's draws have no depth cue, no vertex colours, or need no world position
+// (only directional and ambient lights): the inputs then go unread and the varyings are dropped.
+layout(constant_id = 4) const bool USE_DEPTH_CUE = true;
+layout(constant_id = 5) const bool USE_VERTEX_COLOURS = true;
+layout(constant_id = 6) const bool USE_WORLD_POSITION = true;
+
+bool hatchOn(int index, vec2 p) {
+    const float spacing = 8.0;
+    bool horizontal = mod(p.y, spacing) < 1.0;
+    bool vertical = mod(p.x, spacing) < 1.0;
+    bool rising = mod(p.x + p.y, spacing * 1.41421) < 1.41421;
+    bool falling = mod(p.x - p.y, spacing * 1.41421) < 1.41421;
+    switch (index) {
+        case 1: return horizontal;
+        case 2: return vertical;
+        case 3: return rising;
+        case 4: return falling;
+        case 5: return horizontal || vertical;
+        default: return rising || falling;
+    }
+}
+
+bool patternOn(int type, float width, float distance) {
+    vec4 lengths;
+    if (type == 2) lengths = vec4(12.0, 6.0, 12.0, 6.0);
+    else if (type == 3) lengths = vec4(2.0, 4.0, 2.0, 4.0);
+    else if (type == 4) lengths = vec4(12.0, 5.0, 2.0, 5.0);
+    else return true;
+    float period = lengths.x + lengths.y + lengths.z + lengths.w;
+    float d = mod(distance / max(1.0, width), period);
+    if (d < lengths.x) return true;
+    d -= lengths.x;
+    if (d < lengths.y) return false;
+    d -= lengths.y;
+    return d < lengths.z;
+}
+
+void main() {
+    int viewIndex = DRAW.indices.x;
+    int flags = DRAW.indices.w;
+    if (MAY_DISCARD) {
+        vec4 clip = frame.views[viewIndex].clip;
+        if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
+        if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
+        if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, vPattern)) discard;
+    }
+
+    bool back = !gl_FrontFacing && (flags & FLAG_TRIANGLES) != 0;
+    vec3 colour = back ? vLitBack : vLitFront;
+    if (FRAGMENT_SHADING != 0) {
+        vec3 n;
+        if (FRAGMENT_SHADING == SHADE_PHONG) {
+            n = normalize(vNormal);
+        } else {
+            // Flat: the facet normal from the screen-space derivatives of the world position,
+            // turned to the side the triangle's winding calls front.
+            n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+            if (dot(vNormal, vNormal) > 0.0) {
+                if (dot(n, vNormal) < 0.0) n = -n;
+            } else {
+                // No normals given: the front side is the one the winding shows the viewer.
+                if (dot(n, frame.views[viewIndex].eye.xyz) < 0.0) n = -n;
+                if (!gl_FrontFacing) n = -n;
+            }
+        }
+        if (back) n = -n;
+        bool useBack = back && (flags & FLAG_DISTINGUISH_BACK) != 0;
+        vec3 base = USE_VERTEX_COLOURS ? vColour : DRAW.colour.rgb;
+        vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
+        colour = lit(useBack, useBack ? DRAW.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
+    }
+    if (USE_DEPTH_CUE && DRAW.indices.z >= 0) {
+        int cueIndex = DRAW.indices.z;
+        DepthCue cue = frame.cues[cueIndex];
+        if (cue.colour.w > 0.0) {
+            float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);
+            float s = mix(cue.planes.w, cue.planes.z, t);
+            colour = s * colour + (1.0 - s) * cue.colour.rgb;
+        }
+    }
+    if ((flags & FLAG_HIGHLIGHT) != 0) colour = mix(colour, frame.highlight.rgb, frame.highlight.w);
+    outColour = vec4(clamp(colour, 0.0, 1.0), 1.0);
+}

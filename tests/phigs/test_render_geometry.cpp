@@ -1,0 +1,180 @@
+// GPU-free pieces of the renderer: triangulation with holes, line patterns, marker shapes,
+// stroke-font layout, describe-step geometry and cache keys.
+#include "phigs/render/ItemGeometry.h"
+#include "phigs/render/LinePattern.h"
+#include "phigs/render/MarkerShape.h"
+#include "phigs/render/StrokeFont.h"
+#include "phigs/render/Triangulation.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+using namespace phigs;
+using namespace phigs::render;
+
+namespace {
+
+std::vector<glm::dvec2> square(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+glm::dvec2 extentOf(const std::vector<std::vector<glm::dvec2>>& strips, glm::dvec2& lo) {
+    lo = glm::dvec2(1e30);
+    glm::dvec2 hi(-1e30);
+    for (const auto& s : strips)
+        for (const auto& p : s) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return hi;
+}
+
+}  // namespace
+
+TEST_CASE("triangulation: convex, concave, holes and self-intersection by the even-odd rule",
+          "[render][unit]") {
+    CHECK(triangulatedArea(triangulateEvenOdd({square(0, 0, 2, 1)})) == Approx(2.0));
+    // A "U": 3x3 square minus the 1x2 notch.
+    const std::vector<glm::dvec2> u = {{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+    CHECK(triangulatedArea(triangulateEvenOdd({u})) == Approx(7.0));
+    // Holes subtract whatever their orientation.
+    auto hole = square(1, 1, 2, 2);
+    CHECK(triangulatedArea(triangulateEvenOdd({square(0, 0, 3, 3), hole})) == Approx(8.0));
+    std::reverse(hole.begin(), hole.end());
+    CHECK(triangulatedArea(triangulateEvenOdd({square(0, 0, 3, 3), hole})) == Approx(8.0));
+    // A bow tie: two triangles of area 1 each.
+    CHECK(triangulatedArea(triangulateEvenOdd({{{0, 0}, {2, 2}, {2, 0}, {0, 2}}})) == Approx(2.0));
+    // A clockwise outline still gives counter-clockwise triangles (positive area).
+    auto cw = square(0, 0, 1, 1);
+    std::reverse(cw.begin(), cw.end());
+    CHECK(triangulatedArea(triangulateEvenOdd({cw})) == Approx(1.0));
+    // Degenerate input: nothing, no crash.
+    CHECK(triangulateEvenOdd({{{0, 0}, {1, 1}}}).triangles.empty());
+    CHECK(triangulateEvenOdd({}).triangles.empty());
+    // Every vertex lies on an input edge at its parameter.
+    const Triangulation t = triangulateEvenOdd({u});
+    for (const auto& v : t.vertices) {
+        const glm::dvec2 p = u[v.from] * (1.0 - v.t) + u[v.to] * v.t;
+        CHECK(p.x == Approx(v.point.x).margin(1e-12));
+        CHECK(p.y == Approx(v.point.y).margin(1e-12));
+    }
+}
+
+TEST_CASE("line patterns: solid, dashed, dotted and dash-dotted scale with the width", "[render][unit]") {
+    for (float d : {0.0f, 5.0f, 17.0f, 100.0f}) CHECK(linePatternOn(LineType::Solid, 1, d));
+    CHECK(linePatternOn(LineType::Dashed, 1, 1));
+    CHECK_FALSE(linePatternOn(LineType::Dashed, 1, 14));
+    CHECK(linePatternOn(LineType::Dashed, 1, 19));
+    CHECK(linePatternOn(LineType::Dashed, 2, 14));  // twice as long at width 2
+    CHECK(linePatternOn(LineType::Dotted, 1, 1));
+    CHECK_FALSE(linePatternOn(LineType::Dotted, 1, 3));
+    CHECK(linePatternOn(LineType::DashDotted, 1, 18));
+    CHECK_FALSE(linePatternOn(LineType::DashDotted, 1, 15));
+    CHECK(linePattern(LineType::DashDotted).period == Approx(24));
+}
+
+TEST_CASE("marker shapes: sizes follow the scale factor", "[render][unit]") {
+    const MarkerShape plus = markerShape(MarkerType::Plus, 2.0f);
+    REQUIRE(plus.segments.size() == 4);
+    CHECK(std::abs(plus.segments[1].x) == Approx(7.0f));
+    CHECK(markerShape(MarkerType::Asterisk, 1).segments.size() == 8);
+    CHECK(markerShape(MarkerType::Cross, 1).segments.size() == 4);
+    CHECK(markerShape(MarkerType::Circle, 1).segments.size() >= 24);
+    CHECK(markerShape(MarkerType::Dot, 1).triangles.size() == 6);
+}
+
+TEST_CASE("stroke font: Hershey glyphs load and lay out with PHIGS text attributes", "[render][unit]") {
+    const StrokeFont& font = StrokeFont::forIndex(1);
+    CHECK(font.glyph('A').strokes.size() == 3);
+    CHECK(&font.glyph('\x01') == &font.glyph('?'));
+    TextStyle style;
+    style.height = 1.0;
+    glm::dvec2 lo;
+    glm::dvec2 hi = extentOf(layoutText(font, "HH", style), lo);
+    CHECK(hi.y == Approx(1.0).margin(1e-9));  // cap height
+    CHECK(lo.y == Approx(0.0).margin(1e-9));  // baseline
+    CHECK(lo.x > 0.0);
+    const double width = hi.x;
+    style.expansion = 2.0f;
+    hi = extentOf(layoutText(font, "HH", style), lo);
+    CHECK(hi.x == Approx(2 * width).epsilon(0.01));
+    style.expansion = 1.0f;
+    style.horizontal = HorizontalAlignment::Right;
+    style.vertical = VerticalAlignment::Top;
+    hi = extentOf(layoutText(font, "HH", style), lo);
+    CHECK(hi.x < 0.0);
+    CHECK(hi.y < 0.0);
+    style.horizontal = HorizontalAlignment::Normal;
+    style.vertical = VerticalAlignment::Normal;
+    style.upVector = {-1, 0};  // text runs upward
+    hi = extentOf(layoutText(font, "HH", style), lo);
+    CHECK(hi.y == Approx(width).epsilon(0.01));
+    CHECK(lo.x == Approx(-1.0).margin(1e-9));
+    style.upVector = {0, 1};
+    style.path = TextPath::Down;
+    hi = extentOf(layoutText(font, "HH", style), lo);
+    CHECK(hi.y <= 1e-9);  // top aligned by default, characters stacked downward
+    CHECK(lo.y < -2.0);
+}
+
+TEST_CASE("stroke font: a malformed font file is refused naming the file and line", "[render][unit]") {
+    const auto path = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "bad_font.jhf";
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path) << "12345  9MWRFRT RRYQZR[SZRY\n12345 99MW\n";
+    REQUIRE_THROWS_WITH(StrokeFont::load(path), Catch::Contains("bad_font.jhf") && Catch::Contains("line"));
+    REQUIRE_THROWS_WITH(StrokeFont::load("/nonexistent/font.jhf"), Catch::Contains("hershey-fonts-data"));
+}
+
+TEST_CASE("describe: fill area sets, markers and patterned lines become world geometry", "[render][unit]") {
+    DrawItem item;
+    DrawFillArea fill;
+    fill.contours = {{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}},
+                     {{0.5, 0.5, 0}, {1.5, 0.5, 0}, {1.5, 1.5, 0}, {0.5, 1.5, 0}}};
+    fill.interior.style = InteriorStyle::Solid;
+    fill.edges.visible = true;
+    item.primitive = fill;
+    item.modelTransform[3] = glm::dvec4(10, 0, 0, 1);  // translate by 10 in x
+    const ItemGeometry g = describeItem(item, glm::dmat4(1.0));
+    REQUIRE(g.parts.size() == 2);
+    CHECK_FALSE(g.parts[0].lines);
+    CHECK(g.parts[1].lines);
+    CHECK(g.parts[1].count == 16);  // 8 edges, 2 vertices each
+    double area = 0.0;
+    for (std::uint32_t i = g.parts[0].first; i + 2 < g.parts[0].first + g.parts[0].count; i += 3) {
+        const glm::vec3 a = g.vertices[i].position, b = g.vertices[i + 1].position,
+                        c = g.vertices[i + 2].position;
+        area += 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+        CHECK(a.x >= 10.0f);
+        CHECK(g.vertices[i].normal.z == Approx(1.0f));
+    }
+    CHECK(area == Approx(3.0));
+
+    DrawPolyline dashed;
+    dashed.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    dashed.style.type = LineType::Dashed;
+    item.primitive = dashed;
+    item.modelTransform = glm::dmat4(1.0);
+    const glm::dmat4 toPixels = glm::dmat4(100.0);
+    const ItemGeometry lines =
+        describeItem(item, glm::dmat4(glm::dvec4(100, 0, 0, 0), glm::dvec4(0, 100, 0, 0),
+                                      glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1)));
+    REQUIRE(lines.vertices.size() == 4);
+    CHECK(lines.vertices[3].pattern == Approx(200.0f));  // measured on screen: two 100-pixel segments
+    // The cache key follows the content, and for patterned lines the view too.
+    CHECK(geometryKey(item, glm::dmat4(1.0)) != geometryKey(item, toPixels));
+    item.primitive = DrawPolyline{dashed.points, {}};
+    CHECK(geometryKey(item, glm::dmat4(1.0)) == geometryKey(item, toPixels));
+}
+
+TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cannot overrun",
+          "[render][unit]") {
+    MeshData mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    mesh.triangles = {0, 1, 2, 0, 2, 3};
+    mesh.isoLines = {{0, 1, 2}};
+    const MeshIndices m = meshIndices(mesh);
+    CHECK(m.triangleCount == 6);
+    CHECK(m.isoLineCount == 4);
+    CHECK(m.edgeCount == 10);  // 5 unique edges
+    mesh.triangles = {0, 1, 99};
+    for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < 4);
+}

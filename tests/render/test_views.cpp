@@ -1,0 +1,195 @@
+// Several views in one workstation (orientation, mapping, clip limits each), the workstation
+// window/viewport mapping, and the PNG hardcopy workstation.
+#include "RenderTestSupport.h"
+#include "SceneMeshes.h"
+#include "phigs/render/WorkstationMapping.h"
+#include "phigs/vk/HardcopyWorkstation.h"
+#include "phigs/vk/OffscreenWorkstation.h"
+
+#include <glm/geometric.hpp>
+
+using namespace phigs;
+using namespace render_test;
+
+namespace {
+
+/// World -> VRC for a view reference point, view plane normal and view up vector (PHIGS EVALUATE
+/// VIEW ORIENTATION MATRIX 3).
+glm::dmat4 orientation(glm::dvec3 vrp, glm::dvec3 vpn, glm::dvec3 vup) {
+    const glm::dvec3 n = glm::normalize(vpn);
+    const glm::dvec3 u = glm::normalize(glm::cross(vup, n));
+    const glm::dvec3 v = glm::cross(n, u);
+    glm::dmat4 m(1.0);
+    for (int i = 0; i < 3; ++i) {
+        m[i][0] = u[i];
+        m[i][1] = v[i];
+        m[i][2] = n[i];
+    }
+    m[3] = glm::dvec4(-glm::dot(u, vrp), -glm::dot(v, vrp), -glm::dot(n, vrp), 1.0);
+    return m;
+}
+
+/// Parallel VRC window [-h, h]^2, depth [-h, h] -> the NPC box [lo, hi] (PHIGS EVALUATE VIEW MAPPING).
+glm::dmat4 parallelMapping(double h, glm::dvec3 lo, glm::dvec3 hi) {
+    glm::dmat4 m(1.0);
+    const glm::dvec3 scale = (hi - lo) / (2.0 * h);
+    m[0][0] = scale.x;
+    m[1][1] = scale.y;
+    m[2][2] = scale.z;
+    m[3] = glm::dvec4(lo + h * scale, 1.0);
+    return m;
+}
+
+void addAxesAndBody(DrawList& list, int view, std::shared_ptr<const MeshData> body) {
+    const glm::vec3 colours[3] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.3f, 0.5f, 1}};
+    for (int a = 0; a < 3; ++a) {
+        DrawPolyline axis;
+        glm::dvec3 end(0.0);
+        end[a] = 1.2;
+        axis.points = {glm::dvec3(0.0), end};
+        axis.style.colour = colours[a];
+        axis.style.width = 2.0f;
+        list.items.push_back(item(axis, view));
+    }
+    DrawMesh m;
+    m.mesh = std::move(body);
+    m.interior.style = InteriorStyle::Solid;
+    m.interior.colour = {0.8f, 0.8f, 0.8f};
+    m.interior.shading = ShadingMethod::Normal;
+    m.interior.reflectance = ReflectanceModel::Diffuse;
+    DrawItem i = item(m, view);
+    i.lightSet = 0;
+    list.items.push_back(i);
+}
+
+}  // namespace
+
+TEST_CASE("views: four views with their own orientation, mapping and clip limits", "[render][views]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 256, 256);
+        DrawList list = emptyScene();
+        list.views.clear();
+        list.hiddenSurfaceRemoval = true;
+        Light ambient;
+        ambient.colour = glm::vec3(0.3f);
+        Light key;
+        key.type = LightType::Directional;
+        key.direction = glm::normalize(glm::dvec3(-1, -2, -3));
+        list.lightSets.push_back({ambient, key});
+        // An elongated body (a fuselage-like ellipsoid, made from a scaled sphere).
+        auto body = sphere({0, 0, 0}, 1.0f, 24, 12);
+        for (auto& p : body->positions) p *= glm::vec3(0.9f, 0.3f, 0.2f);
+        const glm::dvec3 vpns[4] = {{0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {1, -1, 1}};
+        const glm::dvec3 vups[4] = {{0, 1, 0}, {0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+        const glm::dvec2 corners[4] = {{0, 0.5}, {0.5, 0.5}, {0, 0}, {0.5, 0}};
+        for (int v = 0; v < 4; ++v) {
+            DrawView view;
+            const glm::dvec3 lo(corners[v] + 0.01, 0.0), hi(corners[v] + 0.49, 1.0);
+            view.orientation = orientation({0, 0, 0}, vpns[v], vups[v]);
+            view.mapping = parallelMapping(1.3, lo, hi);
+            view.clipMin = lo;
+            view.clipMax = hi;
+            list.views.push_back(view);
+            addAxesAndBody(list, v, body);
+            // A polyline crossing the whole view shows that each view clips at its own limits.
+            DrawPolyline across;
+            across.points = {{-5, -5, -5}, {5, 5, 5}};
+            across.style.colour = {1, 1, 0};
+            list.items.push_back(item(across, v));
+        }
+        const Image image = ws.draw(list);
+        // The x axis (red) runs right in the front view (top left)...
+        CHECK(at(image, 64 + 52, 64).r > 200);
+        // ...and toward the viewer in the side view (bottom left), where it is a point at the centre.
+        CHECK(at(image, 64 + 40, 192).r < 100);
+        // Clip limits: the gaps between the view boxes stay background.
+        for (std::uint32_t y = 0; y < 256; y += 4) CHECK(near(at(image, 128, y), 25, 25, 25));
+        compareWithReference(image, "views");
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically", "[render][views]") {
+    DrawList list = emptyScene();
+    list.windowMin = {0.0, 0.0, 0.0};
+    list.windowMax = {0.5, 0.5, 1.0};
+    {
+        // GPU-free: the workstation transform itself.
+        const render::WorkstationMapping square(list, 256, 256);
+        CHECK(square.pixelsPerNpc == Approx(512.0));
+        const glm::dvec2 centre = square.toPixels({0.25, 0.25, 0.0});
+        CHECK(centre.x == Approx(128.0));
+        CHECK(centre.y == Approx(128.0));
+        // A wide target: device coordinates span its shorter side; the window keeps its aspect.
+        const render::WorkstationMapping wide(list, 400, 200);
+        CHECK(wide.pixelsPerNpc == Approx(400.0));
+        CHECK(wide.toPixels({0.5, 0.5, 0}).x == Approx(200.0));
+        const render::PixelRect rect = wide.scissor({-1, -1}, {2, 2});
+        CHECK(rect.width == 200);
+        CHECK(rect.height == 200);
+    }
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 256, 256);
+        DrawPolymarker m;
+        m.points = {{0.25, 0.25, 0.5}, {0.75, 0.75, 0.5}};  // the second lies outside the window
+        m.style.type = MarkerType::Plus;
+        m.style.scale = 3.0f;
+        list.items.push_back(item(m));
+        DrawFillArea f;
+        f.contours = {{{0.0, 0.0, 0.5}, {0.1, 0.0, 0.5}, {0.1, 0.1, 0.5}, {0.0, 0.1, 0.5}}};
+        f.interior.style = InteriorStyle::Solid;
+        f.interior.colour = {0, 0, 1};
+        list.items.push_back(item(f));
+        const Image image = ws.draw(list);
+        CHECK(std::max(at(image, 128 + 8, 127).g, at(image, 128 + 8, 128).g) > 200);
+        CHECK(near(at(image, 20, 236), 0, 0, 255));  // the NPC square 0..0.1 is now 51 pixels wide
+        CHECK(near(at(image, 48, 208), 0, 0, 255));
+        CHECK(near(at(image, 56, 200), 25, 25, 25));
+        compareWithReference(image, "workstation_window");
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("hardcopy: the PNG workstation writes its picture on update and on close", "[render][views]") {
+    vk::Context context(lavapipeWithValidation());
+    const auto file = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy" / "picture.png";
+    std::filesystem::remove(file);
+    {
+        vk::HardcopyWorkstation hardcopy(context, 128, 96, file);
+        DrawList list = emptyScene();
+        list.background = {0.0f, 0.5f, 0.0f};
+        hardcopy.update(list);
+        REQUIRE(std::filesystem::exists(file));
+        const Image first = readPng(file);
+        CHECK(first.width == 128);
+        CHECK(first.height == 96);
+        CHECK(near(at(first, 5, 5), 0, 128, 0, 1));
+        std::filesystem::remove(file);
+        hardcopy.close();
+        REQUIRE(std::filesystem::exists(file));
+        CHECK_THROWS_WITH(hardcopy.update(list), Catch::Contains("closed"));
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("renderer: a draw item naming a missing view or light set is refused with its index",
+          "[render][views]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 64, 64);
+        DrawList list = emptyScene();
+        DrawPolyline l;
+        l.points = {{0, 0, 0}, {1, 1, 0}};
+        list.items.push_back(item(l));
+        list.items.push_back(item(l, 3));
+        CHECK_THROWS_WITH(ws.draw(list), Catch::Contains("draw item 1") && Catch::Contains("view 3"));
+        list.items.back().viewIndex = 0;
+        list.items.back().lightSet = 2;
+        CHECK_THROWS_WITH(ws.draw(list), Catch::Contains("draw item 1") && Catch::Contains("light set 2"));
+        list.items.back().lightSet = -1;
+        CHECK_NOTHROW(ws.draw(list));
+    }
+    requireNoValidationMessages(context);
+}

@@ -1,0 +1,130 @@
+// The window workstation under a virtual X server: open, draw a known scene, read the presented
+// image back, compare with the offscreen picture of the same list, resize, close. The test starts
+// its own Xvfb, so it needs no display set up beforehand.
+#include "RenderTestSupport.h"
+#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/WindowWorkstation.h"
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <string>
+
+extern char** environ;
+
+using namespace phigs;
+using namespace render_test;
+
+namespace {
+
+/// An Xvfb server on a free display number for the lifetime of the object.
+class VirtualDisplay {
+public:
+    VirtualDisplay() {
+        int fds[2];
+        REQUIRE(pipe(fds) == 0);
+        const std::string fd = std::to_string(fds[1]);
+        const char* argv[] = {"Xvfb",       "-displayfd", fd.c_str(), "-screen", "0",
+                              "640x480x24", "-nolisten",  "tcp",      nullptr};
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addclose(&actions, fds[0]);
+        const int rc =
+            posix_spawnp(&pid_, "Xvfb", &actions, nullptr, const_cast<char* const*>(argv), environ);
+        posix_spawn_file_actions_destroy(&actions);
+        close(fds[1]);
+        REQUIRE(rc == 0);  // install the Debian package 'xvfb'
+        std::string number;
+        char c;
+        while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+        close(fds[0]);
+        REQUIRE(!number.empty());
+        previous_ = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+        setenv("DISPLAY", (":" + number).c_str(), 1);
+    }
+    ~VirtualDisplay() {
+        if (previous_.empty())
+            unsetenv("DISPLAY");
+        else
+            setenv("DISPLAY", previous_.c_str(), 1);
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+
+private:
+    pid_t pid_ = -1;
+    std::string previous_;
+};
+
+DrawList knownScene() {
+    DrawList list = emptyScene();
+    list.background = {0.0f, 0.0f, 0.3f};
+    DrawFillArea f;
+    f.contours = {{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}}};
+    f.interior.style = InteriorStyle::Solid;
+    f.interior.colour = {1.0f, 0.5f, 0.0f};
+    list.items.push_back(item(f));
+    DrawPolymarker m;
+    m.points = {{0.5, 0.4, 0.5}};
+    m.style.type = MarkerType::Circle;
+    m.style.scale = 4.0f;
+    list.items.push_back(item(m));
+    return list;
+}
+
+}  // namespace
+
+TEST_CASE("window: a GLFW window workstation presents the same picture as the offscreen one",
+          "[render][window]") {
+    VirtualDisplay display;
+    std::vector<std::string> shutdownLog;
+    vk::ContextSettings settings = vk::WindowWorkstation::contextSettings(lavapipeWithValidation());
+    settings.messageLog = &shutdownLog;
+    {
+        vk::Context context(settings);
+        REQUIRE(context.isLavapipe());
+        {
+            const DrawList list = knownScene();
+            Image offscreen;
+            {
+                vk::OffscreenWorkstation ws(context, 200, 160);
+                offscreen = ws.draw(list);
+            }
+            vk::WindowWorkstation window(context, 200, 160, "phigs window test");
+            Image presented;
+            REQUIRE(window.draw(list, &presented));
+            REQUIRE(presented.width == 200);
+            REQUIRE(presented.height == 160);
+            CHECK(differingPixels(presented, offscreen, 2) == 0);
+            CHECK(near(at(presented, 100, 100), 255, 128, 0, 2));
+            CHECK(near(at(presented, 5, 5), 0, 0, 76, 2));
+            // An unchanged second frame in the window uploads nothing either.
+            REQUIRE(window.draw(list));
+            CHECK(window.renderer().lastFrame().uploads == 0);
+
+            // Resize: the swapchain follows and the picture is drawn at the new size.
+            window.resize(120, 100);
+            Image resized;
+            for (int attempt = 0; attempt < 20 && resized.width != 120; ++attempt) {
+                REQUIRE(window.draw(list, &resized));
+                usleep(20000);
+            }
+            CHECK(resized.width == 120);
+            CHECK(resized.height == 100);
+            CHECK(near(at(resized, 60, 60), 255, 128, 0, 2));
+
+            window.requestClose();
+            CHECK(window.shouldClose());
+            CHECK_FALSE(window.draw(list));
+        }
+        requireNoValidationMessages(context);
+    }
+    // Destroying the device and instance after the window reports nothing left alive.
+    for (const auto& message : shutdownLog) UNSCOPED_INFO(message);
+    CHECK(shutdownLog.empty());
+}
