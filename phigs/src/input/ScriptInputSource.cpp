@@ -115,15 +115,20 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
             a.what = action::Valuator{device, p.number(2, "VALUE")};
         } else if (verb == "choice") {
             const int device = p.takeDevice();
-            p.expectCount(2, "choice N [device D]");
-            a.what = action::Choice{p.integer(1, "choice"), device};
+            p.expectCount(2, "choice N|NAME [device D]");
+            const std::string& word = p.words()[1];
+            const bool numeric = word.find_first_not_of("+-0123456789.eE") == std::string::npos;
+            if (numeric)
+                a.what = action::Choice{p.integer(1, "choice"), device, {}};
+            else
+                a.what = action::Choice{0, device, word};
         } else if (verb == "string") {
             const std::size_t start = line.find("string") + 6;
-            std::string text = start < line.size() ? line.substr(start) : std::string();
-            const std::size_t first = text.find_first_not_of(" \t");
-            text = first == std::string::npos ? std::string() : text.substr(first);
-            while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.pop_back();
-            a.what = action::String{text, 1};
+            std::string rest = start < line.size() ? line.substr(start) : std::string();
+            const std::size_t first = rest.find_first_not_of(" \t");
+            rest = first == std::string::npos ? std::string() : rest.substr(first);
+            while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
+            a.what = action::String{rest, 1};
         } else if (verb == "break") {
             p.expectCount(1, "break");
             a.what = action::Break{};
@@ -179,7 +184,8 @@ std::string ScriptInputSource::format(const InputAction& a) {
             } else if constexpr (std::is_same_v<T, action::Valuator>)
                 return "valuator " + std::to_string(w.device) + " " + formatNumber(w.value);
             else if constexpr (std::is_same_v<T, action::Choice>)
-                return "choice " + std::to_string(w.choice) + deviceSuffix(w.device);
+                return "choice " + (w.name.empty() ? std::to_string(w.choice) : w.name) +
+                       deviceSuffix(w.device);
             else if constexpr (std::is_same_v<T, action::String>)
                 return "string " + w.text;
             else if constexpr (std::is_same_v<T, action::Break>)

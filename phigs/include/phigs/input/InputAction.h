@@ -30,6 +30,7 @@ struct Valuator {
 struct Choice {
     int choice = 0;
     int device = 1;
+    std::string name;  ///< chosen by the alternative's name (a menu entry) when not empty
 };
 struct String {
     std::string text;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,8 @@ public:
     void setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo = EchoSwitch::Echo);
     /// SET PICK FILTER.
     void setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion);
+    /// SET PICK PATH DEPTH (0: the whole path).
+    void setPickPathDepth(int device, int depth);
     /// INQUIRE <class> DEVICE STATE.
     const InputDevice& device(InputClass inputClass, int device) const;
 

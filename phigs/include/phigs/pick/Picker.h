@@ -1,0 +1,77 @@
+#pragma once
+
+#include "phigs/input/InputTypes.h"
+#include "phigs/pick/WorkstationMapping.h"
+#include "phigs/traverse/DrawList.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace geom {
+class SurfaceIntersector;
+}
+
+namespace phigs {
+
+/// How a pick is taken: the square aperture's half-size in NPC, the path order and depth.
+struct PickOptions {
+    double aperture = 0.01;
+    PathOrder order = PathOrder::TopFirst;
+    int depth = 0;  ///< levels kept; 0: the whole path
+};
+
+/// One primitive under the aperture.
+struct PickHit {
+    std::size_t item = 0;                      ///< index into DrawList::items
+    double depth = 0.0;                        ///< NPC z of the hit (1 front, 0 back): larger is nearer
+    std::optional<SurfacePickDetail> surface;  ///< exact hit on a NURBS surface (modelling coords)
+};
+
+/// The pick traversal over a draw list: tests every pickable item against the aperture in
+/// NPC, intersects NURBS surfaces exactly, orders the hits nearest first and builds the pick
+/// path. Keeps one intersector per surface, so repeated picks on the same list are cheap.
+class Picker {
+public:
+    Picker();
+    ~Picker();
+    Picker(const Picker&) = delete;
+    Picker& operator=(const Picker&) = delete;
+
+    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later.
+    std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
+    /// PICK measure of the nearest hit: status OK with its path, or NONE when nothing is hit.
+    PickMeasure pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const;
+    /// The nearest hit itself, for echo.
+    std::optional<PickHit> nearest(const DrawList& list, glm::dvec2 npc, double aperture) const;
+
+    /// Forgets the cached surface intersectors (call when the draw list's surfaces were freed).
+    void clearCache() const;
+
+private:
+    std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
+                                const WorkstationMapping& mapping) const;
+    std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
+                                       const std::shared_ptr<const geom::Surface>& surface,
+                                       glm::dvec2 npc) const;
+
+    struct CachedSurface {
+        std::shared_ptr<const geom::Surface> surface;  ///< keeps the key alive
+        std::unique_ptr<geom::SurfaceIntersector> intersector;
+    };
+    mutable std::map<const geom::Surface*, CachedSurface> intersectors_;
+};
+
+/// The PHIGS pick path of a draw item's source: top first or bottom first, cut to `depth`
+/// levels (0: all) counted from the start of that order.
+std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, int depth);
+
+/// What the echo highlights for a hit: every item drawn by the same element instance (same
+/// full path), e.g. a fill area's interior and its edges, or a surface and its iso-lines.
+std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit);
+
+}  // namespace phigs
