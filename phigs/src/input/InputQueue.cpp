@@ -34,7 +34,7 @@ std::optional<EventReport> InputQueue::awaitEvent(std::chrono::milliseconds time
         Queued q = std::move(events_.front());
         events_.pop_front();
         currentTrigger_ = q.trigger;
-        q.report.moreSimultaneous = moreSimultaneousEvents();
+        q.report.moreSimultaneous = !events_.empty() && events_.front().trigger == q.trigger;
         current_ = q.report;
         return q.report;
     };
