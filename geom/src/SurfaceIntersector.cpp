@@ -1,0 +1,314 @@
+#include "geom/SurfaceIntersector.h"
+
+#include "geom/Bezier.h"
+#include "geom/GeometryError.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace geom {
+namespace {
+
+constexpr int kMaxDepth = 40;
+constexpr std::size_t kNodeBudget = 4000;
+
+/// G(s, t) = sum B_i(s) B_j(t) c_ij of a 2D Bézier patch with its first partials.
+struct Projected {
+    glm::dvec2 g, gs, gt;
+};
+
+struct Scratch {
+    std::vector<double> bs, dbs, bt, dbt;
+};
+
+Projected evaluateProjected(const glm::dvec2* c, int p, int q, double s, double t, Scratch& w) {
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    w.bs.resize(pu);
+    w.dbs.resize(pu);
+    w.bt.resize(qv);
+    w.dbt.resize(qv);
+    bernsteinBasis(p, s, w.bs, w.dbs);
+    bernsteinBasis(q, t, w.bt, w.dbt);
+    Projected r{glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0)};
+    for (std::size_t i = 0; i < pu; ++i) {
+        glm::dvec2 row(0.0), rowd(0.0);
+        for (std::size_t j = 0; j < qv; ++j) {
+            row += w.bt[j] * c[i * qv + j];
+            rowd += w.dbt[j] * c[i * qv + j];
+        }
+        r.g += w.bs[i] * row;
+        r.gs += w.dbs[i] * row;
+        r.gt += w.bs[i] * rowd;
+    }
+    return r;
+}
+
+glm::dvec4 evaluateHomogeneous(const std::vector<glm::dvec4>& net, int p, int q, double s, double t,
+                               Scratch& w) {
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    w.bs.resize(pu);
+    w.bt.resize(qv);
+    bernsteinBasis(p, s, w.bs);
+    bernsteinBasis(q, t, w.bt);
+    glm::dvec4 h(0.0);
+    for (std::size_t i = 0; i < pu; ++i) {
+        glm::dvec4 row(0.0);
+        for (std::size_t j = 0; j < qv; ++j) row += w.bt[j] * net[i * qv + j];
+        h += w.bs[i] * row;
+    }
+    return h;
+}
+
+/// Splits a (p+1) x (q+1) net at the middle of s (alongT false) or t into a and b.
+void splitHalf(const glm::dvec2* src, glm::dvec2* a, glm::dvec2* b, std::size_t pu, std::size_t qv,
+               bool alongT, std::vector<glm::dvec2>& work) {
+    const std::size_t lines = alongT ? pu : qv;
+    const std::size_t length = alongT ? qv : pu;
+    work.resize(length);
+    for (std::size_t l = 0; l < lines; ++l) {
+        auto at = [&](std::size_t k) { return alongT ? l * qv + k : k * qv + l; };
+        for (std::size_t k = 0; k < length; ++k) work[k] = src[at(k)];
+        a[at(0)] = work[0];
+        b[at(length - 1)] = work[length - 1];
+        for (std::size_t r = 1; r < length; ++r) {
+            for (std::size_t i = 0; i + r < length; ++i) work[i] = 0.5 * (work[i] + work[i + 1]);
+            a[at(r)] = work[0];
+            b[at(length - 1 - r)] = work[length - 1 - r];
+        }
+    }
+}
+
+struct Interval {
+    double lo, hi;
+};
+Interval mul(Interval a, Interval b) {
+    const double x1 = a.lo * b.lo, x2 = a.lo * b.hi, x3 = a.hi * b.lo, x4 = a.hi * b.hi;
+    return {std::min(std::min(x1, x2), std::min(x3, x4)), std::max(std::max(x1, x2), std::max(x3, x4))};
+}
+
+/// True when det [G_s G_t] keeps one strict sign over the whole sub-patch (interval bound on the
+/// derivative nets): then the projected map is locally one-to-one and Newton finds its root.
+bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
+    if (pu < 2 || qv < 2) return false;
+    Interval sx{1e300, -1e300}, sy{1e300, -1e300}, tx{1e300, -1e300}, ty{1e300, -1e300};
+    for (std::size_t i = 0; i + 1 < pu; ++i)
+        for (std::size_t j = 0; j < qv; ++j) {
+            const glm::dvec2 d = c[(i + 1) * qv + j] - c[i * qv + j];
+            sx = {std::min(sx.lo, d.x), std::max(sx.hi, d.x)};
+            sy = {std::min(sy.lo, d.y), std::max(sy.hi, d.y)};
+        }
+    for (std::size_t i = 0; i < pu; ++i)
+        for (std::size_t j = 0; j + 1 < qv; ++j) {
+            const glm::dvec2 d = c[i * qv + j + 1] - c[i * qv + j];
+            tx = {std::min(tx.lo, d.x), std::max(tx.hi, d.x)};
+            ty = {std::min(ty.lo, d.y), std::max(ty.hi, d.y)};
+        }
+    const Interval a = mul(sx, ty), b = mul(sy, tx);
+    const double lo = a.lo - b.hi, hi = a.hi - b.lo;
+    return lo > 0.0 || hi < 0.0;
+}
+
+struct NewtonResult {
+    bool converged = false;
+    double s = 0.0, t = 0.0;
+};
+
+/// Newton on G(s, t) = 0 over the whole patch [0,1]^2, damped where the Jacobian is nearly
+/// singular (tangent contact), from (s, t).
+NewtonResult newton(const glm::dvec2* c, int p, int q, double s, double t, double tolerance, Scratch& w) {
+    NewtonResult result;
+    for (int it = 0; it < 60; ++it) {
+        const Projected e = evaluateProjected(c, p, q, s, t, w);
+        const double residual = glm::length(e.g);
+        if (residual <= tolerance) {
+            result = {true, s, t};
+            return result;
+        }
+        // Levenberg-Marquardt step, exact Newton when J is well conditioned.
+        const double a = glm::dot(e.gs, e.gs), b = glm::dot(e.gs, e.gt), d = glm::dot(e.gt, e.gt);
+        const double gs = glm::dot(e.gs, e.g), gt = glm::dot(e.gt, e.g);
+        const double det = e.gs.x * e.gt.y - e.gs.y * e.gt.x;
+        double ds, dt;
+        if (std::abs(det) > 1e-10 * (a + d)) {
+            ds = -(e.gt.y * e.g.x - e.gt.x * e.g.y) / det;
+            dt = -(-e.gs.y * e.g.x + e.gs.x * e.g.y) / det;
+        } else {
+            const double lambda = 1e-10 * (a + d) + 1e-300;
+            const double m = (a + lambda) * (d + lambda) - b * b;
+            if (!(m > 0.0)) return result;
+            ds = -((d + lambda) * gs - b * gt) / m;
+            dt = -(-b * gs + (a + lambda) * gt) / m;
+        }
+        const double ns = std::clamp(s + ds, 0.0, 1.0), nt = std::clamp(t + dt, 0.0, 1.0);
+        const double step = std::abs(ns - s) + std::abs(nt - t);
+        s = ns;
+        t = nt;
+        if (step < 1e-16) {
+            const double r = glm::length(evaluateProjected(c, p, q, s, t, w).g);
+            result = {r <= tolerance * 1e3, s, t};
+            return result;
+        }
+    }
+    const double r = glm::length(evaluateProjected(c, p, q, s, t, w).g);
+    result = {r <= tolerance * 1e3, s, t};
+    return result;
+}
+
+}  // namespace
+
+SurfaceIntersector::SurfaceIntersector(const Surface& surface) : tree_(surface) {
+}
+
+void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& origin,
+                                        const glm::dvec3& direction, const glm::dvec3& n1,
+                                        const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const {
+    const BezierPatchTree::Patch& patch = tree_.patches()[index];
+    const int p = tree_.degreeU(), q = tree_.degreeV();
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    const std::size_t size = pu * qv;
+
+    // Project the homogeneous net across the line: G(s,t) = 0 exactly where S(s,t) is on the line
+    // (weights are positive, so the division by w changes no zero).
+    thread_local std::vector<glm::dvec2> pool;
+    thread_local std::vector<glm::dvec2> work;
+    thread_local Scratch scratch;
+    struct Sub {
+        std::size_t offset;
+        double s0, s1, t0, t1;
+        int depth;
+    };
+    thread_local std::vector<Sub> stack;
+    pool.resize(size);
+    double magnitude = 0.0;
+    for (std::size_t k = 0; k < size; ++k) {
+        const glm::dvec4& h = patch.net[k];
+        const glm::dvec3 rel = glm::dvec3(h) - origin * h.w;
+        pool[k] = glm::dvec2(glm::dot(rel, n1), glm::dot(rel, n2));
+        magnitude = std::max(magnitude, h.w);
+    }
+    const double lengthScale = tree_.scale() * magnitude;
+    const double boxTolerance = 1e-12 * lengthScale;
+    const double newtonTolerance = 1e-14 * lengthScale;
+
+    stack.clear();
+    stack.push_back({0, 0.0, 1.0, 0.0, 1.0, 0});
+    std::size_t visited = 0;
+    auto record = [&](double s, double t) {
+        const glm::dvec4 h = evaluateHomogeneous(patch.net, p, q, s, t, scratch);
+        const glm::dvec3 point = glm::dvec3(h) / h.w;
+        const double lineT = glm::dot(point - origin, direction) / glm::dot(direction, direction);
+        const glm::dvec3 onLine = origin + lineT * direction;
+        if (glm::length(onLine - point) > 1e-10 * tree_.scale()) return;
+        LineSurfaceHit hit;
+        hit.t = lineT;
+        hit.uv = glm::dvec2(patch.u0 + s * (patch.u1 - patch.u0), patch.v0 + t * (patch.v1 - patch.v0));
+        hit.point = onLine;
+        hit.piece = index;
+        hits.push_back(hit);
+    };
+    while (!stack.empty()) {
+        const Sub sub = stack.back();
+        stack.pop_back();
+        ++visited;
+        const glm::dvec2* c = pool.data() + sub.offset;
+        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (std::size_t k = 0; k < size; ++k) {
+            lo = glm::min(lo, c[k]);
+            hi = glm::max(hi, c[k]);
+        }
+        if (lo.x > boxTolerance || lo.y > boxTolerance || hi.x < -boxTolerance || hi.y < -boxTolerance)
+            continue;
+
+        const bool unique = jacobianKeepsSign(c, pu, qv);
+        const bool last = sub.depth >= kMaxDepth || visited > kNodeBudget;
+        if (unique || last) {
+            const NewtonResult r = newton(pool.data(), p, q, 0.5 * (sub.s0 + sub.s1), 0.5 * (sub.t0 + sub.t1),
+                                          newtonTolerance, scratch);
+            const double ms = 1e-9 * (sub.s1 - sub.s0) + 1e-14, mt = 1e-9 * (sub.t1 - sub.t0) + 1e-14;
+            const bool inside =
+                r.s >= sub.s0 - ms && r.s <= sub.s1 + ms && r.t >= sub.t0 - mt && r.t <= sub.t1 + mt;
+            if (r.converged && (inside || last)) {
+                record(r.s, r.t);
+                continue;
+            }
+            if (last) continue;
+        }
+        // Four children: split in s, then each half in t.
+        const std::size_t o = pool.size();
+        pool.resize(o + 6 * size);
+        c = pool.data() + sub.offset;
+        glm::dvec2* left = pool.data() + o;
+        glm::dvec2* right = left + size;
+        splitHalf(c, left, right, pu, qv, false, work);
+        glm::dvec2* ll = right + size;
+        glm::dvec2* lr = ll + size;
+        glm::dvec2* rl = lr + size;
+        glm::dvec2* rr = rl + size;
+        splitHalf(left, ll, lr, pu, qv, true, work);
+        splitHalf(right, rl, rr, pu, qv, true, work);
+        const double sm = 0.5 * (sub.s0 + sub.s1), tm = 0.5 * (sub.t0 + sub.t1);
+        const int d = sub.depth + 1;
+        stack.push_back({o + 2 * size, sub.s0, sm, sub.t0, tm, d});
+        stack.push_back({o + 3 * size, sub.s0, sm, tm, sub.t1, d});
+        stack.push_back({o + 4 * size, sm, sub.s1, sub.t0, tm, d});
+        stack.push_back({o + 5 * size, sm, sub.s1, tm, sub.t1, d});
+    }
+}
+
+std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& origin,
+                                                          const glm::dvec3& direction) const {
+    const double len = glm::length(direction);
+    if (!(len > 0.0) || !std::isfinite(len))
+        throw GeometryError("intersectLine: the line direction must be a finite, non-zero vector");
+    if (!std::isfinite(origin.x) || !std::isfinite(origin.y) || !std::isfinite(origin.z))
+        throw GeometryError("intersectLine: the line origin has a non-finite coordinate");
+    const glm::dvec3 d = direction / len;
+    // Two unit vectors across the line.
+    const glm::dvec3 helper = std::abs(d.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 n1 = glm::normalize(glm::cross(d, helper));
+    const glm::dvec3 n2 = glm::cross(d, n1);
+    const glm::dvec3 inverse(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
+    const double margin = 1e-9 * tree_.scale();
+
+    std::vector<LineSurfaceHit> hits;
+    const auto& nodes = tree_.nodes();
+    if (nodes.empty()) return hits;
+    int stack[128];
+    int top = 0;
+    stack[top++] = tree_.root();
+    while (top > 0) {
+        const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(stack[--top])];
+        if (!node.box.hitByLine(origin, inverse, margin)) continue;
+        if (node.patch >= 0) {
+            intersectPatch(static_cast<std::size_t>(node.patch), origin, direction, n1, n2, hits);
+            continue;
+        }
+        stack[top++] = node.first;
+        stack[top++] = node.second;
+    }
+    std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+    // One hit per crossing: a root on a patch edge or a tangent contact is found more than once.
+    std::vector<LineSurfaceHit> unique;
+    const double merge = 1e-7 * tree_.scale();
+    for (const LineSurfaceHit& h : hits)
+        if (unique.empty() || glm::length(h.point - unique.back().point) > merge) unique.push_back(h);
+    return unique;
+}
+
+std::vector<LineSurfaceHit> intersectLine(const Surface& surface, const glm::dvec3& origin,
+                                          const glm::dvec3& direction) {
+    return SurfaceIntersector(surface).intersect(origin, direction);
+}
+
+std::vector<LineSurfaceHit> intersectRay(const Surface& surface, const glm::dvec3& origin,
+                                         const glm::dvec3& direction) {
+    std::vector<LineSurfaceHit> hits = intersectLine(surface, origin, direction);
+    std::erase_if(hits, [](const LineSurfaceHit& h) { return h.t < 0.0; });
+    return hits;
+}
+
+}  // namespace geom
