@@ -2,15 +2,7 @@
 
 #include "geom/Evaluate.h"
 
-#if __has_include("geom/Intersect.h")
-#include "geom/Intersect.h"
-#define PHIGS_EXACT_SURFACE_PICK 1
-#else
-namespace geom {
-class SurfaceIntersector {};
-}  // namespace geom
-#define PHIGS_EXACT_SURFACE_PICK 0
-#endif
+#include "geom/SurfaceIntersector.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -166,7 +158,7 @@ std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& 
     return best;
 }
 
-[[maybe_unused]] bool insideClip(const DrawView& view, const glm::dvec3& npc) {
+bool insideClip(const DrawView& view, const glm::dvec3& npc) {
     const double eps = 1e-12;
     if (view.clipXY && (npc.x < view.clipMin.x - eps || npc.x > view.clipMax.x + eps ||
                         npc.y < view.clipMin.y - eps || npc.y > view.clipMax.y + eps))
@@ -217,12 +209,24 @@ Picker::~Picker() = default;
 
 void Picker::clearCache() const {
     intersectors_.clear();
+    bounds_.clear();
+}
+
+const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshData>& mesh) const {
+    auto it = bounds_.find(mesh.get());
+    if (it != bounds_.end()) return it->second;
+    CachedBounds b{mesh, glm::dvec3(std::numeric_limits<double>::max()),
+                   glm::dvec3(std::numeric_limits<double>::lowest())};
+    for (const glm::vec3& p : mesh->positions) {
+        b.min = glm::min(b.min, glm::dvec3(p));
+        b.max = glm::max(b.max, glm::dvec3(p));
+    }
+    return bounds_.emplace(mesh.get(), std::move(b)).first->second;
 }
 
 std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView& view,
                                            const std::shared_ptr<const geom::Surface>& surface,
                                            glm::dvec2 npc) const {
-#if PHIGS_EXACT_SURFACE_PICK
     auto it = intersectors_.find(surface.get());
     if (it == intersectors_.end())
         it = intersectors_
@@ -242,9 +246,6 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
         SurfacePickDetail detail{h.point, geom::normal(*surface, h.uv.x, h.uv.y), h.uv, h.piece};
         return PickHit{0, p.npc.z, detail};
     }
-#else
-    (void)item, (void)view, (void)surface, (void)npc;
-#endif
     return std::nullopt;
 }
 
@@ -306,7 +307,23 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                         return;
                     }
                 }
-                if (p.mesh) {
+                if (p.mesh && !p.mesh->positions.empty()) {
+                    // Reject by the projected box first: most meshes lie far from the aperture.
+                    const CachedBounds& b = boundsOf(p.mesh);
+                    glm::dvec2 lo(std::numeric_limits<double>::max()),
+                        hi(std::numeric_limits<double>::lowest());
+                    bool allValid = true;
+                    for (int corner = 0; corner < 8; ++corner) {
+                        const glm::dvec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                                           (corner & 4) ? b.max.z : b.min.z);
+                        const Projected q = project(m, c);
+                        allValid = allValid && q.valid;
+                        lo = glm::min(lo, glm::dvec2(q.npc));
+                        hi = glm::max(hi, glm::dvec2(q.npc));
+                    }
+                    if (allValid && (npc.x + aperture < lo.x || npc.x - aperture > hi.x ||
+                                     npc.y + aperture < lo.y || npc.y - aperture > hi.y))
+                        return;
                     const auto projected = projectAll(m, p.mesh->positions);
                     z = meshHit(ap, projected, p.mesh->triangles);
                     for (const auto& line : p.mesh->isoLines) {

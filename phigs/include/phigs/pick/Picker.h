@@ -64,6 +64,13 @@ private:
         std::unique_ptr<geom::SurfaceIntersector> intersector;
     };
     mutable std::map<const geom::Surface*, CachedSurface> intersectors_;
+    struct CachedBounds {
+        std::shared_ptr<const MeshData> mesh;  ///< keeps the key alive
+        glm::dvec3 min{0.0}, max{0.0};
+    };
+    /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
+    const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
+    mutable std::map<const MeshData*, CachedBounds> bounds_;
 };
 
 /// The PHIGS pick path of a draw item's source: top first or bottom first, cut to `depth`
