@@ -307,3 +307,15 @@ TEST_CASE("input devices: strings and strokes are cut to the buffer size", "[inp
     CHECK(std::get<StringMeasure>(r.input.request(InputClass::String, 1).second).text == "abc");
     CHECK(std::get<StrokeMeasure>(r.input.request(InputClass::Stroke, 1).second).points.size() == 2);
 }
+
+TEST_CASE("input devices: pointer motion moves a sampled locator and triggers nothing", "[input]") {
+    Rig r("move 3 4\nmove 5 6\nlocator 7 8\n");
+    CHECK(r.input.pump(0ms) == WorkstationInput::Pumped::Nothing);  // nobody samples: dropped
+    CHECK(r.input.ignoredActions().empty());
+    CHECK(r.input.history().empty());
+    r.input.setMode(InputClass::Locator, 1, OperatingMode::Sample);
+    CHECK(r.input.pump(0ms) == WorkstationInput::Pumped::Delivered);
+    CHECK(std::get<LocatorMeasure>(r.input.sample(InputClass::Locator, 1)).position == glm::dvec3(5, 6, 0));
+    r.input.setMode(InputClass::Locator, 1, OperatingMode::Event);
+    CHECK(r.queue.awaitEvent(0ms)->inputClass == InputClass::Locator);  // the locator line triggers
+}

@@ -98,7 +98,7 @@ TEST_CASE("input script: read from a file, replayed in order, then exhausted", "
 TEST_CASE("input script: format writes lines the parser reads back to the same actions", "[input]") {
     const std::string text =
         "pick 10.5 20\nlocator 1 2 device 3\nstroke 0 0 1 1 device 2\nvaluator 2 -0.125\nchoice 3\n"
-        "choice Tail device 2\nstring two words\nbreak\nwait\n";
+        "choice Tail device 2\nstring two words\nmove 4 5 device 2\nbreak\nwait\n";
     ScriptInputSource s(text, "a");
     std::string again;
     for (const auto& a : s.actions()) again += ScriptInputSource::format(a) + "\n";

@@ -15,7 +15,9 @@ TEST_CASE("input window: clicks become pick and locator actions", "[input]") {
     CHECK(std::get<action::Locate>(a->what).position == glm::dvec2(5, 6));
     CHECK_FALSE(m.handle(ButtonPress{Button::Middle, {5, 6}, false}));
     CHECK_FALSE(m.handle(ButtonRelease{Button::Left, {12, 34}}));
-    CHECK_FALSE(m.handle(CursorMove{{1, 1}}));
+    const auto move = m.handle(CursorMove{{1, 1}});
+    REQUIRE(move);
+    CHECK(std::get<action::Move>(move->what).position == glm::dvec2(1, 1));
 }
 
 TEST_CASE("input window: a shift drag becomes a stroke, thinned by the spacing", "[input]") {

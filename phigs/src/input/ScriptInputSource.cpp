@@ -90,7 +90,11 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
         a.text = line.substr(line.find_first_not_of(" \t"));
         while (!a.text.empty() && (a.text.back() == ' ' || a.text.back() == '\t')) a.text.pop_back();
         const std::string& verb = words[0];
-        if (verb == "pick" || verb == "locator") {
+        if (verb == "move") {
+            const int device = p.takeDevice();
+            p.expectCount(3, "move X Y [device D]");
+            a.what = action::Move{glm::dvec2(p.number(1, "X"), p.number(2, "Y")), device};
+        } else if (verb == "pick" || verb == "locator") {
             const int device = p.takeDevice();
             p.expectCount(3, verb == "pick" ? "pick X Y [device D]" : "locator X Y [device D]");
             const glm::dvec2 pos(p.number(1, "X"), p.number(2, "Y"));
@@ -138,7 +142,7 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
         } else if (directives.count(verb)) {
             a.what = action::Directive{verb, std::vector<std::string>(words.begin() + 1, words.end())};
         } else {
-            std::string known = "pick, locator, stroke, valuator, choice, string, break, wait";
+            std::string known = "pick, locator, move, stroke, valuator, choice, string, break, wait";
             for (const auto& d : directives) known += ", " + d;
             p.fail("unknown action '" + verb + "' (known: " + known + ")");
         }
@@ -173,6 +177,9 @@ std::string ScriptInputSource::format(const InputAction& a) {
             using T = std::decay_t<decltype(w)>;
             if constexpr (std::is_same_v<T, action::Pick>)
                 return "pick " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
+                       deviceSuffix(w.device);
+            else if constexpr (std::is_same_v<T, action::Move>)
+                return "move " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
                        deviceSuffix(w.device);
             else if constexpr (std::is_same_v<T, action::Locate>)
                 return "locator " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +

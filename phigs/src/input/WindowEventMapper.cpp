@@ -57,8 +57,8 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                 if (e.button == Button::Right) return make(action::Locate{e.position, 1}, "right click");
                 return std::nullopt;
             } else if constexpr (std::is_same_v<T, CursorMove>) {
-                if (stroking_ && glm::distance(stroke_.back(), e.position) >= strokeSpacing)
-                    stroke_.push_back(e.position);
+                if (!stroking_) return make(action::Move{e.position, 1}, "pointer move");
+                if (glm::distance(stroke_.back(), e.position) >= strokeSpacing) stroke_.push_back(e.position);
                 return std::nullopt;
             } else if constexpr (std::is_same_v<T, ButtonRelease>) {
                 if (!stroking_ || e.button != Button::Left) return std::nullopt;

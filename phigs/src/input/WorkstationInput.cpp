@@ -151,7 +151,7 @@ Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) 
             if constexpr (std::is_same_v<T, action::Pick>) {
                 if (device.inputClass == InputClass::Locator) return measurer_.locate(w.position);
                 return measurer_.pick(w.position, device);
-            } else if constexpr (std::is_same_v<T, action::Locate>) {
+            } else if constexpr (std::is_same_v<T, action::Locate> || std::is_same_v<T, action::Move>) {
                 return measurer_.locate(w.position);
             } else if constexpr (std::is_same_v<T, action::Stroke>) {
                 std::vector<glm::dvec2> points = w.points;
@@ -205,6 +205,11 @@ std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(cons
                 add(InputClass::Locator, w.device);
             } else if constexpr (std::is_same_v<T, action::Locate>) {
                 add(InputClass::Locator, w.device);
+            } else if constexpr (std::is_same_v<T, action::Move>) {
+                // Motion is no trigger: it reaches only a locator that is sampled.
+                const auto it = devices_.find({InputClass::Locator, w.device});
+                if (it != devices_.end() && it->second.mode == OperatingMode::Sample)
+                    triggered.push_back(&it->second);
             } else if constexpr (std::is_same_v<T, action::Stroke>) {
                 add(InputClass::Stroke, w.device);
             } else if constexpr (std::is_same_v<T, action::Valuator>) {
@@ -267,6 +272,10 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
         }
     }
     queue_.enqueue(std::move(reports));
+    if (!reached && std::holds_alternative<action::Move>(a->what)) {
+        history_.pop_back();  // motion nobody samples is not worth recording
+        return Pumped::Nothing;
+    }
     if (!reached)
         ignored_.push_back(
             source_.position() + ": '" + a->text +

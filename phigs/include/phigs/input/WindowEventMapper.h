@@ -40,7 +40,8 @@ using WindowEvent = std::variant<window_event::ButtonPress, window_event::Button
                                  window_event::CursorMove, window_event::KeyPress, window_event::Character>;
 
 /// Turns window events into operator actions, the same actions a session script holds:
-/// left click: pick (and locator); right click: locator only; shift + left drag: stroke;
+/// left click: pick (and locator); right click: locator only; pointer motion: move (sample
+/// locators follow it); shift + left drag: stroke;
 /// typed characters then Enter: string (Backspace edits, Escape breaks a request);
 /// F1..F12: choice 1..12 (until the toolkit draws choice panels).
 class WindowEventMapper {
