@@ -139,6 +139,7 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     p.pathOrder = PathOrder::BottomFirst;
     p.pickAperture = 0.05;
     r.input.initialise(InputClass::Pick, 1, p);
+    CHECK_FALSE(r.input.device(InputClass::Pick, 1).pickFilterSet);
     r.input.setPickFilter(1, {1, 2}, {3});
     r.input.setPickPathDepth(1, 2);
     r.input.setMode(InputClass::Pick, 1, OperatingMode::Sample, EchoSwitch::NoEcho);
@@ -149,6 +150,7 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     CHECK(d.setup.pickAperture == 0.05);
     CHECK(d.pickInclusion == std::set<int>{1, 2});
     CHECK(d.pickExclusion == std::set<int>{3});
+    CHECK(d.pickFilterSet);
     CHECK(d.pickPathDepth == 2);
     CHECK(errorNumber([&] { r.input.setPickPathDepth(1, -1); }) == 260);
 }
