@@ -208,3 +208,31 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
     CHECK_FALSE(hit->surface);
     CHECK_FALSE(picker.nearest(list, {0.9, 0.5}, 0.01));
 }
+
+TEST_CASE("pick surface: under a perspective view the hit projects onto the pick point", "[pick]") {
+    DrawList list = unitList();
+    const glm::dmat4 proj = glm::perspective(glm::radians(50.0), 1.0, 0.5, 10.0);
+    const glm::dmat4 toNpc = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5)) *
+                             glm::scale(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, -0.5));
+    list.views[0].mapping = toNpc * proj;
+    list.views[0].orientation =
+        glm::lookAt(glm::dvec3(0.5, -0.5, 2.0), glm::dvec3(0.5, 0.5, 0.5), glm::dvec3(0, 0, 1));
+    const auto surface = heightField();
+    list.items.push_back(surfaceItem(surface, {{1, 1, 1}}));
+    const Picker picker;
+    const glm::dmat4 m = list.views[0].mapping * list.views[0].orientation;
+    int hits = 0;
+    for (double x = 0.3; x <= 0.7; x += 0.1)
+        for (double y = 0.3; y <= 0.7; y += 0.1) {
+            const auto hit = picker.nearest(list, {x, y}, 0.001);
+            if (!hit) continue;
+            ++hits;
+            const glm::dvec3 p = hit->surface->point;
+            CHECK(glm::length(p - geom::evaluate(*surface, hit->surface->uv.x, hit->surface->uv.y)) < 1e-9);
+            const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+            CHECK(h.x / h.w == Approx(x).margin(1e-9));
+            CHECK(h.y / h.w == Approx(y).margin(1e-9));
+            CHECK(hit->depth == Approx(h.z / h.w).margin(1e-12));
+        }
+    CHECK(hits > 10);
+}
