@@ -14,7 +14,7 @@ namespace geom {
 namespace {
 
 constexpr int kMaxDepth = 40;
-constexpr std::size_t kNodeBudget = 4000;
+constexpr std::size_t kNodeBudget = 3000;
 
 /// G(s, t) = sum B_i(s) B_j(t) c_ij of a 2D Bézier patch with its first partials.
 struct Projected {
@@ -47,22 +47,6 @@ Projected evaluateProjected(const glm::dvec2* c, int p, int q, double s, double 
     return r;
 }
 
-glm::dvec4 evaluateHomogeneous(const std::vector<glm::dvec4>& net, int p, int q, double s, double t,
-                               Scratch& w) {
-    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
-    w.bs.resize(pu);
-    w.bt.resize(qv);
-    bernsteinBasis(p, s, w.bs);
-    bernsteinBasis(q, t, w.bt);
-    glm::dvec4 h(0.0);
-    for (std::size_t i = 0; i < pu; ++i) {
-        glm::dvec4 row(0.0);
-        for (std::size_t j = 0; j < qv; ++j) row += w.bt[j] * net[i * qv + j];
-        h += w.bs[i] * row;
-    }
-    return h;
-}
-
 /// Splits a (p+1) x (q+1) net at the middle of s (alongT false) or t into a and b.
 void splitHalf(const glm::dvec2* src, glm::dvec2* a, glm::dvec2* b, std::size_t pu, std::size_t qv,
                bool alongT, std::vector<glm::dvec2>& work) {
@@ -80,6 +64,22 @@ void splitHalf(const glm::dvec2* src, glm::dvec2* a, glm::dvec2* b, std::size_t 
             b[at(length - 1 - r)] = work[length - 1 - r];
         }
     }
+}
+
+/// True when every point of the net lies strictly on one side of the line through the origin
+/// along `axis`: the patch cannot reach the origin.
+bool excludedAcross(const glm::dvec2* c, std::size_t size, const glm::dvec2& axis, double tolerance) {
+    const glm::dvec2 n(-axis.y, axis.x);
+    const double len = glm::length(n);
+    if (!(len > 0.0)) return false;
+    const double tol = tolerance * len;
+    bool allAbove = true, allBelow = true;
+    for (std::size_t k = 0; k < size && (allAbove || allBelow); ++k) {
+        const double d = glm::dot(c[k], n);
+        allAbove = allAbove && d > tol;
+        allBelow = allBelow && d < -tol;
+    }
+    return allAbove || allBelow;
 }
 
 struct Interval {
@@ -117,45 +117,37 @@ struct NewtonResult {
     double s = 0.0, t = 0.0;
 };
 
-/// Newton on G(s, t) = 0 over the whole patch [0,1]^2, damped where the Jacobian is nearly
-/// singular (tangent contact), from (s, t).
-NewtonResult newton(const glm::dvec2* c, int p, int q, double s, double t, double tolerance, Scratch& w) {
-    NewtonResult result;
-    for (int it = 0; it < 60; ++it) {
+/// Newton on G(s, t) = 0 kept in the box [s0,s1] x [t0,t1] of the patch, damped where the
+/// Jacobian is nearly singular (tangent contact), from the box centre.
+NewtonResult newton(const glm::dvec2* c, int p, int q, double s0, double s1, double t0, double t1,
+                    double tolerance, Scratch& w, double fs = 0.5, double ft = 0.5) {
+    double s = s0 + fs * (s1 - s0), t = t0 + ft * (t1 - t0);
+    double residual = 0.0;
+    for (int it = 0; it < 80; ++it) {
         const Projected e = evaluateProjected(c, p, q, s, t, w);
-        const double residual = glm::length(e.g);
-        if (residual <= tolerance) {
-            result = {true, s, t};
-            return result;
-        }
-        // Levenberg-Marquardt step, exact Newton when J is well conditioned.
-        const double a = glm::dot(e.gs, e.gs), b = glm::dot(e.gs, e.gt), d = glm::dot(e.gt, e.gt);
-        const double gs = glm::dot(e.gs, e.g), gt = glm::dot(e.gt, e.g);
+        residual = glm::length(e.g);
+        if (residual <= 1e-3 * tolerance) break;
         const double det = e.gs.x * e.gt.y - e.gs.y * e.gt.x;
-        double ds, dt;
-        if (std::abs(det) > 1e-10 * (a + d)) {
-            ds = -(e.gt.y * e.g.x - e.gt.x * e.g.y) / det;
-            dt = -(-e.gs.y * e.g.x + e.gs.x * e.g.y) / det;
-        } else {
-            const double lambda = 1e-10 * (a + d) + 1e-300;
+        double ds = -(e.gt.y * e.g.x - e.gt.x * e.g.y) / det;
+        double dt = -(-e.gs.y * e.g.x + e.gs.x * e.g.y) / det;
+        if (!std::isfinite(ds) || !std::isfinite(dt)) {
+            // Singular Jacobian (an exact tangent contact): a damped least-squares step.
+            const double a = glm::dot(e.gs, e.gs), b = glm::dot(e.gs, e.gt), d = glm::dot(e.gt, e.gt);
+            const double lambda = 1e-12 * (a + d) + 1e-300;
             const double m = (a + lambda) * (d + lambda) - b * b;
-            if (!(m > 0.0)) return result;
+            const double gs = glm::dot(e.gs, e.g), gt = glm::dot(e.gt, e.g);
             ds = -((d + lambda) * gs - b * gt) / m;
             dt = -(-b * gs + (a + lambda) * gt) / m;
+            if (!std::isfinite(ds) || !std::isfinite(dt)) break;
         }
-        const double ns = std::clamp(s + ds, 0.0, 1.0), nt = std::clamp(t + dt, 0.0, 1.0);
+        const double ns = std::clamp(s + ds, s0, s1), nt = std::clamp(t + dt, t0, t1);
         const double step = std::abs(ns - s) + std::abs(nt - t);
         s = ns;
         t = nt;
-        if (step < 1e-16) {
-            const double r = glm::length(evaluateProjected(c, p, q, s, t, w).g);
-            result = {r <= tolerance * 1e3, s, t};
-            return result;
-        }
+        if (step < 1e-17) break;
     }
-    const double r = glm::length(evaluateProjected(c, p, q, s, t, w).g);
-    result = {r <= tolerance * 1e3, s, t};
-    return result;
+    residual = glm::length(evaluateProjected(c, p, q, s, t, w).g);
+    return {residual <= tolerance, s, t};
 }
 
 }  // namespace
@@ -192,20 +184,28 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     }
     const double lengthScale = tree_.scale() * magnitude;
     const double boxTolerance = 1e-12 * lengthScale;
-    const double newtonTolerance = 1e-14 * lengthScale;
+    const double newtonTolerance = 1e-13 * lengthScale;
 
     stack.clear();
     stack.push_back({0, 0.0, 1.0, 0.0, 1.0, 0});
     std::size_t visited = 0;
     auto record = [&](double s, double t) {
-        const glm::dvec4 h = evaluateHomogeneous(patch.net, p, q, s, t, scratch);
-        const glm::dvec3 point = glm::dvec3(h) / h.w;
-        const double lineT = glm::dot(point - origin, direction) / glm::dot(direction, direction);
+        // Polish on the whole patch: near a tangent contact a root found inside a sub-patch may
+        // sit on its edge, short of the double root.
+        const NewtonResult polished =
+            newton(pool.data(), p, q, 0.0, 1.0, 0.0, 1.0, newtonTolerance, scratch, s, t);
+        if (polished.converged) {
+            s = polished.s;
+            t = polished.t;
+        }
+        const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);
+        const BezierPatchTree::PatchPoint e = tree_.evaluate(index, u, v, 0);
+        const double lineT = glm::dot(e.point - origin, direction) / glm::dot(direction, direction);
         const glm::dvec3 onLine = origin + lineT * direction;
-        if (glm::length(onLine - point) > 1e-10 * tree_.scale()) return;
+        if (glm::length(onLine - e.point) > 1e-10 * tree_.scale()) return;
         LineSurfaceHit hit;
         hit.t = lineT;
-        hit.uv = glm::dvec2(patch.u0 + s * (patch.u1 - patch.u0), patch.v0 + t * (patch.v1 - patch.v0));
+        hit.uv = glm::dvec2(u, v);
         hit.point = onLine;
         hit.piece = index;
         hits.push_back(hit);
@@ -213,7 +213,6 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     while (!stack.empty()) {
         const Sub sub = stack.back();
         stack.pop_back();
-        ++visited;
         const glm::dvec2* c = pool.data() + sub.offset;
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (std::size_t k = 0; k < size; ++k) {
@@ -222,20 +221,37 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         }
         if (lo.x > boxTolerance || lo.y > boxTolerance || hi.x < -boxTolerance || hi.y < -boxTolerance)
             continue;
+        // Two more separating axes, across the net's diagonals: a patch seen nearly edge-on (a
+        // line close to tangent) is a thin sliver whose axis-aligned box is much too large.
+        if (excludedAcross(c, size, c[size - 1] - c[0], boxTolerance) ||
+            excludedAcross(c, size, c[(pu - 1) * qv] - c[qv - 1], boxTolerance))
+            continue;
 
+        ++visited;
         const bool unique = jacobianKeepsSign(c, pu, qv);
         const bool last = sub.depth >= kMaxDepth || visited > kNodeBudget;
-        if (unique || last) {
-            const NewtonResult r = newton(pool.data(), p, q, 0.5 * (sub.s0 + sub.s1), 0.5 * (sub.t0 + sub.t1),
-                                          newtonTolerance, scratch);
-            const double ms = 1e-9 * (sub.s1 - sub.s0) + 1e-14, mt = 1e-9 * (sub.t1 - sub.t0) + 1e-14;
-            const bool inside =
-                r.s >= sub.s0 - ms && r.s <= sub.s1 + ms && r.t >= sub.t0 - mt && r.t <= sub.t1 + mt;
-            if (r.converged && (inside || last)) {
+        // A root on the sub-patch's edge is found from the patches on both sides; a small margin
+        // lets Newton reach it, and the merge in intersect() keeps one.
+        const double ms = 1e-6 * (sub.s1 - sub.s0), mt = 1e-6 * (sub.t1 - sub.t0);
+        const double a0 = std::max(0.0, sub.s0 - ms), a1 = std::min(1.0, sub.s1 + ms);
+        const double b0 = std::max(0.0, sub.t0 - mt), b1 = std::min(1.0, sub.t1 + mt);
+        if (last) {
+            // Out of depth or budget (a tangent contact, a line along the surface): several
+            // starts, so that close roots are not lost.
+            for (const auto& f : {glm::dvec2(0.5, 0.5), glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25),
+                                  glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)}) {
+                const NewtonResult r =
+                    newton(pool.data(), p, q, a0, a1, b0, b1, newtonTolerance, scratch, f.x, f.y);
+                if (r.converged) record(r.s, r.t);
+            }
+            continue;
+        }
+        if (unique) {
+            const NewtonResult r = newton(pool.data(), p, q, a0, a1, b0, b1, newtonTolerance, scratch);
+            if (r.converged) {
                 record(r.s, r.t);
                 continue;
             }
-            if (last) continue;
         }
         // Four children: split in s, then each half in t.
         const std::size_t o = pool.size();
@@ -276,7 +292,7 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
 
     std::vector<LineSurfaceHit> hits;
     const auto& nodes = tree_.nodes();
-    if (nodes.empty()) return hits;
+    if (nodes.empty()) return {};
     int stack[128];
     int top = 0;
     stack[top++] = tree_.root();
@@ -291,11 +307,27 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
         stack[top++] = node.second;
     }
     std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
-    // One hit per crossing: a root on a patch edge or a tangent contact is found more than once.
+    // One hit per crossing: a root on a patch edge is found from both sides, and a tangent contact
+    // (a double root, where Newton converges only linearly) from several sub-patches. Two hits
+    // are one when they nearly coincide, or when they are close and the surface between them
+    // still lies on the line.
     std::vector<LineSurfaceHit> unique;
-    const double merge = 1e-7 * tree_.scale();
-    for (const LineSurfaceHit& h : hits)
-        if (unique.empty() || glm::length(h.point - unique.back().point) > merge) unique.push_back(h);
+    const double same = 1e-7 * tree_.scale();
+    const double near = 1e-6 * tree_.scale();
+    for (const LineSurfaceHit& h : hits) {
+        if (!unique.empty()) {
+            const LineSurfaceHit& last = unique.back();
+            const double gap = glm::length(h.point - last.point);
+            if (gap < same) continue;
+            if (gap < near) {
+                const glm::dvec2 mid = 0.5 * (h.uv + last.uv);
+                const glm::dvec3 m = tree_.evaluate(mid.x, mid.y, 0).point;
+                const glm::dvec3 rel = m - origin;
+                if (glm::length(rel - glm::dot(rel, d) * d) < 1e-12 * tree_.scale()) continue;
+            }
+        }
+        unique.push_back(h);
+    }
     return unique;
 }
 

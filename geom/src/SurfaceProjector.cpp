@@ -56,6 +56,9 @@ SurfacePoint SurfaceProjector::polish(std::size_t, const glm::dvec3& p, glm::dve
         } else if (!holdV) {
             dv = -gv / (hvv > 1e-14 * trace ? hvv : std::abs(hvv) + 1e-6 * trace);
         }
+        // Near the answer the full Newton step is taken even when rounding hides the decrease
+        // of f; further away a backtracking search keeps f from growing.
+        const bool small = std::abs(du) < 1e-6 * (ub - ua) && std::abs(dv) < 1e-6 * (vb - va);
         double step = 1.0;
         bool moved = false;
         for (int k = 0; k < 40; ++k, step *= 0.5) {
@@ -64,9 +67,9 @@ SurfacePoint SurfaceProjector::polish(std::size_t, const glm::dvec3& p, glm::dve
             const BezierPatchTree::PatchPoint en = tree_.evaluate(next.x, next.y, 2);
             const glm::dvec3 rn = en.point - p;
             const double fn = glm::dot(rn, rn);
-            if (fn <= f) {
-                moved = std::abs(next.x - uv.x) > 1e-16 * (ub - ua) ||
-                        std::abs(next.y - uv.y) > 1e-16 * (vb - va);
+            if (fn <= f || (small && k == 0 && fn <= f * (1.0 + 1e-12) + 1e-300)) {
+                moved = std::abs(next.x - uv.x) > 1e-15 * (ub - ua) ||
+                        std::abs(next.y - uv.y) > 1e-15 * (vb - va);
                 uv = next;
                 e = en;
                 r = rn;
@@ -111,7 +114,7 @@ SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
             queue.push({nodes[static_cast<std::size_t>(node.second)].box.distance(p), node.second});
             continue;
         }
-        // Start at the parameters of the nearest control point of the patch (its Bézier abscissa).
+        // Start at the best of the nearest control point's Bézier abscissae and a small grid.
         const BezierPatchTree::Patch& patch = patches[static_cast<std::size_t>(node.patch)];
         std::size_t nearest = 0;
         double nearestDistance = std::numeric_limits<double>::infinity();
@@ -125,7 +128,23 @@ SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
         }
         const double s = pu > 1 ? static_cast<double>(nearest / qv) / static_cast<double>(pu - 1) : 0.5;
         const double t = qv > 1 ? static_cast<double>(nearest % qv) / static_cast<double>(qv - 1) : 0.5;
-        const glm::dvec2 start(patch.u0 + s * (patch.u1 - patch.u0), patch.v0 + t * (patch.v1 - patch.v0));
+        auto at = [&](double a, double b) {
+            return glm::dvec2(patch.u0 + a * (patch.u1 - patch.u0), patch.v0 + b * (patch.v1 - patch.v0));
+        };
+        glm::dvec2 start = at(s, t);
+        glm::dvec3 sp = tree_.evaluate(static_cast<std::size_t>(node.patch), start.x, start.y, 0).point;
+        double startDistance = glm::dot(sp - p, sp - p);
+        constexpr int kGrid = 4;
+        for (int a = 0; a <= kGrid; ++a)
+            for (int b = 0; b <= kGrid; ++b) {
+                const glm::dvec2 g = at(static_cast<double>(a) / kGrid, static_cast<double>(b) / kGrid);
+                const glm::dvec3 gp = tree_.evaluate(static_cast<std::size_t>(node.patch), g.x, g.y, 0).point;
+                const double d = glm::dot(gp - p, gp - p);
+                if (d < startDistance) {
+                    startDistance = d;
+                    start = g;
+                }
+            }
         const SurfacePoint candidate = polish(static_cast<std::size_t>(node.patch), p, start);
         if (candidate.distance < best.distance) best = candidate;
     }
