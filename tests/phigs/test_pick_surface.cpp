@@ -207,6 +207,18 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
     REQUIRE(hit);
     CHECK_FALSE(hit->surface);
     CHECK_FALSE(picker.nearest(list, {0.9, 0.5}, 0.01));
+
+    // An exact hit anywhere (here a plane behind) beats a tessellation under the aperture.
+    DrawMesh back;
+    back.surface = std::make_shared<const geom::Surface>(
+        1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
+        std::vector<glm::dvec3>{{0, 0, 0.1}, {0, 1, 0.1}, {1, 0, 0.1}, {1, 1, 0.1}});
+    list.items.push_back(item(back, {{1, 2, 0}}));
+    hit = picker.nearest(list, {0.805, 0.5}, 0.01);
+    REQUIRE(hit);
+    CHECK(hit->item == 1);
+    REQUIRE(hit->surface);
+    CHECK(hit->surface->point.z == Approx(0.1).margin(1e-12));
 }
 
 TEST_CASE("pick surface: under a perspective view the hit projects onto the pick point", "[pick]") {

@@ -139,6 +139,12 @@ std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& 
         const Projected& b = pts[triangles[t + 1]];
         const Projected& c = pts[triangles[t + 2]];
         if (!a.valid || !b.valid || !c.valid) continue;
+        // Most triangles lie clear of the aperture: reject them by their box.
+        const double x0 = ap.centre.x - ap.half, x1 = ap.centre.x + ap.half;
+        const double y0 = ap.centre.y - ap.half, y1 = ap.centre.y + ap.half;
+        if (std::max({a.npc.x, b.npc.x, c.npc.x}) < x0 || std::min({a.npc.x, b.npc.x, c.npc.x}) > x1 ||
+            std::max({a.npc.y, b.npc.y, c.npc.y}) < y0 || std::min({a.npc.y, b.npc.y, c.npc.y}) > y1)
+            continue;
         // Barycentric coordinates of the centre.
         const glm::dvec2 v0(b.npc - a.npc), v1(c.npc - a.npc), v2(ap.centre - glm::dvec2(a.npc));
         const double den = v0.x * v1.y - v1.x * v0.y;
@@ -250,9 +256,12 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
 }
 
 std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
-                                    const WorkstationMapping& mapping) const {
+                                    const WorkstationMapping& mapping, SurfaceTest surfaceTest) const {
     const DrawItem& item = list.items[index];
     if (!item.pickable) return std::nullopt;
+    const auto* drawMesh = std::get_if<DrawMesh>(&item.primitive);
+    const bool exactSurface = drawMesh && drawMesh->surface;
+    if (surfaceTest == SurfaceTest::Tessellation && !exactSurface) return std::nullopt;
     if (item.viewIndex < 0 || static_cast<std::size_t>(item.viewIndex) >= list.views.size())
         return std::nullopt;
     const DrawView& view = list.views[static_cast<std::size_t>(item.viewIndex)];
@@ -301,11 +310,9 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 }
                 z = regionHit(ap, box, true, true);
             } else if constexpr (std::is_same_v<T, DrawMesh>) {
-                if (p.surface) {
-                    if (auto exact = testSurface(item, view, p.surface, npc)) {
-                        hit = exact;
-                        return;
-                    }
+                if (p.surface && surfaceTest == SurfaceTest::Exact) {
+                    hit = testSurface(item, view, p.surface, npc);
+                    return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {
                     // Reject by the projected box first: most meshes lie far from the aperture.
@@ -353,7 +360,11 @@ std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double a
         return out;
     const WorkstationMapping mapping(list);
     for (std::size_t i = 0; i < list.items.size(); ++i)
-        if (auto h = test(list, i, npc, aperture, mapping)) out.push_back(std::move(*h));
+        if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact)) out.push_back(std::move(*h));
+    if (out.empty())
+        for (std::size_t i = 0; i < list.items.size(); ++i)
+            if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Tessellation))
+                out.push_back(std::move(*h));
     std::stable_sort(out.begin(), out.end(), [](const PickHit& a, const PickHit& b) {
         if (a.depth != b.depth) return a.depth > b.depth;
         return a.item > b.item;

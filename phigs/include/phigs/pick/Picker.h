@@ -42,7 +42,9 @@ public:
     Picker(const Picker&) = delete;
     Picker& operator=(const Picker&) = delete;
 
-    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later.
+    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later. NURBS
+    /// surfaces are hit by the exact line through `npc`; their tessellations count only when
+    /// nothing is hit at all (the aperture catching a silhouette), without surface detail.
     std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
     /// PICK measure of the nearest hit: status OK with its path, or NONE when nothing is hit.
     PickMeasure pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const;
@@ -53,8 +55,11 @@ public:
     void clearCache() const;
 
 private:
+    /// How an item with an exact surface is tested: by the line through the aperture centre, or
+    /// (only when nothing at all was hit that way) by its tessellation under the aperture.
+    enum class SurfaceTest { Exact, Tessellation };
     std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
-                                const WorkstationMapping& mapping) const;
+                                const WorkstationMapping& mapping, SurfaceTest surfaceTest) const;
     std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
                                        const std::shared_ptr<const geom::Surface>& surface,
                                        glm::dvec2 npc) const;
