@@ -1,6 +1,7 @@
 // Runs under Xvfb (ctest wraps it in xvfb-run): a real GLFW window, events delivered through
 // the callbacks GLFW holds, measured on a draw list, received by the application's devices.
 
+#include "phigs/input/ScriptInputSource.h"
 #include "phigs/input/WorkstationInput.h"
 #include "phigs/pick/DrawListMeasurer.h"
 #include "phigs/window/GlfwInputSource.h"
@@ -103,4 +104,41 @@ TEST_CASE("window: typed characters and Enter satisfy a string request", "[windo
     const auto [status, measure] = input.request(InputClass::String, 1);
     CHECK(status == InputStatus::Ok);
     CHECK(std::get<StringMeasure>(measure).text == "tail");
+}
+
+namespace {
+
+/// Application code: asks for a pick and a choice, knows nothing of where input comes from.
+std::pair<std::vector<PickPathItem>, int> pickThenChoose(WorkstationInput& input) {
+    const auto pick = input.request(InputClass::Pick, 1);
+    const auto choice = input.request(InputClass::Choice, 1);
+    return {std::get<PickMeasure>(pick.second).path, std::get<ChoiceMeasure>(choice.second).choice};
+}
+
+}  // namespace
+
+TEST_CASE("window: the same application code runs under a script and under a window", "[window]") {
+    const DrawList list = squareScene();
+    DrawListMeasurer measurer(list);
+    InputQueue queue;
+
+    ScriptInputSource script("pick 40 30\nchoice 2\n", "session.txt");
+    WorkstationInput scripted(1, script, measurer, queue);
+    const auto fromScript = pickThenChoose(scripted);
+
+    Window window;
+    GlfwInputSource source(window.handle);
+    WorkstationInput interactive(2, source, measurer, queue);
+    glfwSetCursorPos(window.handle, 40.0, 30.0);
+    const GLFWmousebuttonfun button = glfwSetMouseButtonCallback(window.handle, nullptr);
+    glfwSetMouseButtonCallback(window.handle, button);
+    const GLFWkeyfun key = glfwSetKeyCallback(window.handle, nullptr);
+    glfwSetKeyCallback(window.handle, key);
+    button(window.handle, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
+    key(window.handle, GLFW_KEY_F2, 0, GLFW_PRESS, 0);
+    const auto fromWindow = pickThenChoose(interactive);
+
+    CHECK(fromScript.first == std::vector<PickPathItem>{{3, 2, 1}, {4, 6, 8}});
+    CHECK(fromScript.second == 2);
+    CHECK(fromWindow == fromScript);
 }
