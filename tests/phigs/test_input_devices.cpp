@@ -152,7 +152,7 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     CHECK(d.pickExclusion == std::set<int>{3});
     CHECK(d.pickFilterSet);
     CHECK(d.pickPathDepth == 2);
-    CHECK(errorNumber([&] { r.input.setPickPathDepth(1, -1); }) == 260);
+    CHECK(errorNumber([&] { r.input.setPickPathDepth(1, -1); }) == 207);
 }
 
 TEST_CASE("input devices: SAMPLE reads the latest measure without waiting", "[input]") {
@@ -226,6 +226,7 @@ TEST_CASE("input devices: a full queue overflows, loses the trigger's events and
     CHECK(errorNumber([&] { r.queue.inquireOverflow(); }) == 257);  // cleared by the inquiry
     r.input.pump(0ms);
     CHECK(r.queue.size() == 3);  // choice 3 still fits
+    CHECK_THROWS_AS(InputQueue(0), std::invalid_argument);
 }
 
 TEST_CASE("input devices: FLUSH DEVICE EVENTS removes one device's reports", "[input]") {

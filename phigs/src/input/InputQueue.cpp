@@ -3,11 +3,13 @@
 #include "phigs/input/WorkstationInput.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace phigs {
 
 InputQueue::InputQueue(std::size_t capacity) : capacity_(capacity) {
-    if (capacity_ < 1) throw InputError(260, "InputQueue", "the input queue must hold at least one event");
+    if (capacity_ < 1)
+        throw std::invalid_argument("InputQueue: the input queue must hold at least one event");
 }
 
 void InputQueue::enqueue(std::vector<EventReport> reports) {

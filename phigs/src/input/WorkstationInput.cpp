@@ -116,7 +116,7 @@ void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::s
 }
 
 void WorkstationInput::setPickPathDepth(int device, int depth) {
-    if (depth < 0) throw InputError(260, "SET PICK PATH DEPTH", "pick path depth must be 0 (all) or more");
+    if (depth < 0) throw InputError(207, "SET PICK PATH DEPTH", "the path depth is less than zero");
     lookup(InputClass::Pick, device, "SET PICK PATH DEPTH").pickPathDepth = depth;
 }
 
