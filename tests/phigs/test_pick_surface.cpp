@@ -248,3 +248,19 @@ TEST_CASE("pick surface: under a perspective view the hit projects onto the pick
         }
     CHECK(hits > 10);
 }
+
+TEST_CASE("pick surface: the intersector cache lets go of surfaces the draw list dropped", "[pick]") {
+    DrawList list = unitList();
+    list.items.push_back(surfaceItem(heightField(), {{1, 1, 1}}));
+    const Picker picker;
+    CHECK(picker.nearest(list, {0.5, 0.5}, 0.001));
+    CHECK(picker.cachedSurfaces() == 1);
+    CHECK(picker.nearest(list, {0.4, 0.5}, 0.001));
+    CHECK(picker.cachedSurfaces() == 1);  // reused
+    list.items = {surfaceItem(heightField(), {{1, 1, 2}})};
+    list.generation = 1;
+    CHECK(picker.pick(list, {0.5, 0.5}, {0.001}).path.back().pickId == 2);
+    CHECK(picker.cachedSurfaces() == 1);  // the old surface is gone, the new one cached
+    picker.clearCache();
+    CHECK(picker.cachedSurfaces() == 0);
+}

@@ -218,6 +218,13 @@ void Picker::clearCache() const {
     bounds_.clear();
 }
 
+void Picker::prune(const DrawList& list) const {
+    if (list.generation == generation_) return;
+    generation_ = list.generation;
+    std::erase_if(intersectors_, [](const auto& e) { return e.second.surface.use_count() == 1; });
+    std::erase_if(bounds_, [](const auto& e) { return e.second.mesh.use_count() == 1; });
+}
+
 const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshData>& mesh) const {
     auto it = bounds_.find(mesh.get());
     if (it != bounds_.end()) return it->second;
@@ -358,6 +365,7 @@ std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double a
     if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
         npc.y > list.windowMax.y)
         return out;
+    prune(list);
     const WorkstationMapping mapping(list);
     for (std::size_t i = 0; i < list.items.size(); ++i)
         if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact)) out.push_back(std::move(*h));

@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -51,8 +52,10 @@ public:
     /// The nearest hit itself, for echo.
     std::optional<PickHit> nearest(const DrawList& list, glm::dvec2 npc, double aperture) const;
 
-    /// Forgets the cached surface intersectors (call when the draw list's surfaces were freed).
+    /// Forgets the cached surface intersectors and mesh boxes. Entries whose surface or mesh
+    /// only the cache still holds are dropped anyway when a list of a new generation is picked.
     void clearCache() const;
+    std::size_t cachedSurfaces() const { return intersectors_.size(); }
 
 private:
     /// How an item with an exact surface is tested: by the line through the aperture centre, or
@@ -76,6 +79,9 @@ private:
     /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
     const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
     mutable std::map<const MeshData*, CachedBounds> bounds_;
+    /// Drops cached entries nobody else holds any more, once per new draw list generation.
+    void prune(const DrawList& list) const;
+    mutable std::uint64_t generation_ = ~std::uint64_t{0};
 };
 
 /// The PHIGS pick path of a draw item's source: top first or bottom first, cut to `depth`
