@@ -42,6 +42,8 @@ public:
     }
     bool exhausted() const override { return false; }
     std::string position() const override { return "idle window"; }
+    void setEchoLayout(const EchoLayout& l) override { layout = l; }
+    EchoLayout layout;
 };
 
 }  // namespace phigs::test

@@ -142,3 +142,25 @@ TEST_CASE("window: the same application code runs under a script and under a win
     CHECK(fromScript.second == 2);
     CHECK(fromWindow == fromScript);
 }
+
+TEST_CASE("window: a click in a choice device's menu panel chooses its alternative", "[window]") {
+    Window window;
+    const DrawList list = squareScene();
+    DrawListMeasurer measurer(list);
+    GlfwInputSource source(window.handle);
+    InputQueue queue;
+    WorkstationInput input(1, source, measurer, queue);
+    DeviceInitialisation menu;
+    menu.initial = ChoiceMeasure{InputStatus::Ok, 1};
+    menu.promptEchoType = 3;
+    menu.echoVolume = {0, 30, 0, 60, 0, 1};
+    menu.choiceStrings = {"Wing", "Fuselage", "Tail"};
+    input.initialise(InputClass::Choice, 1, menu);
+    glfwSetCursorPos(window.handle, 10.0, 45.0);
+    const GLFWmousebuttonfun button = glfwSetMouseButtonCallback(window.handle, nullptr);
+    glfwSetMouseButtonCallback(window.handle, button);
+    button(window.handle, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
+    const auto [status, measure] = input.request(InputClass::Choice, 1);
+    CHECK(status == InputStatus::Ok);
+    CHECK(std::get<ChoiceMeasure>(measure).choice == 3);
+}

@@ -48,6 +48,17 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
         [&](const auto& e) -> std::optional<InputAction> {
             using T = std::decay_t<decltype(e)>;
             if constexpr (std::is_same_v<T, ButtonPress>) {
+                if (e.button == Button::Left && !e.shift) {
+                    for (const ChoicePanel& p : layout_.panels)
+                        if (const auto n = p.choiceAt(e.position))
+                            return make(action::Choice{*n, p.device, {}},
+                                        "menu '" + p.alternatives[*n - 1] + "'");
+                    for (const ValuatorSlider& s : layout_.sliders)
+                        if (s.contains(e.position)) {
+                            dragging_ = &s;
+                            return std::nullopt;
+                        }
+                }
                 if (e.button == Button::Left && e.shift) {
                     stroking_ = true;
                     stroke_ = {e.position};
@@ -61,6 +72,11 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                 if (glm::distance(stroke_.back(), e.position) >= strokeSpacing) stroke_.push_back(e.position);
                 return std::nullopt;
             } else if constexpr (std::is_same_v<T, ButtonRelease>) {
+                if (dragging_ && e.button == Button::Left) {
+                    const ValuatorSlider& s = *dragging_;
+                    dragging_ = nullptr;
+                    return make(action::Valuator{s.device, s.valueAt(e.position)}, "slider");
+                }
                 if (!stroking_ || e.button != Button::Left) return std::nullopt;
                 stroking_ = false;
                 if (stroke_.back() != e.position) stroke_.push_back(e.position);
@@ -81,6 +97,7 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                     case Key::Escape:
                         text_.clear();
                         stroking_ = false;
+                        dragging_ = nullptr;
                         return make(action::Break{}, "escape");
                     case Key::Function:
                         if (e.function < 1) return std::nullopt;

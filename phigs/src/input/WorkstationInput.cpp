@@ -98,6 +98,21 @@ void WorkstationInput::initialise(InputClass inputClass, int device, DeviceIniti
         throw InputError(number, function, deviceName(inputClass, device) + ": " + reason);
     d.setup = std::move(setup);
     d.current = d.setup.initial;
+    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator)
+        source_.setEchoLayout(echoLayout());
+}
+
+EchoLayout WorkstationInput::echoLayout() const {
+    EchoLayout layout;
+    for (const auto& [key, d] : devices_) {
+        const EchoVolume& a = d.setup.echoVolume;
+        if (!(a.xmax > a.xmin && a.ymax > a.ymin)) continue;
+        if (key.first == InputClass::Choice && d.setup.promptEchoType == 3 && !d.setup.choiceStrings.empty())
+            layout.panels.push_back({d.number, a, d.setup.choiceStrings});
+        if (key.first == InputClass::Valuator && d.setup.promptEchoType == 2)
+            layout.sliders.push_back({d.number, a, d.setup.valuatorLow, d.setup.valuatorHigh});
+    }
+    return layout;
 }
 
 void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo) {

@@ -26,7 +26,8 @@ enum class InputStatus { None, Ok };
 /// Order of a pick path: the root structure first, or the picked structure first.
 enum class PathOrder { TopFirst, BottomFirst };
 
-/// Echo volume in device coordinates (x, y in pixels, z in [0, 1]).
+/// Echo volume in device coordinates: x, y in pixels as input sources give them (from the top
+/// left, y down), z in [0, 1].
 struct EchoVolume {
     double xmin = 0, xmax = 0, ymin = 0, ymax = 0, zmin = 0, zmax = 1;
 };

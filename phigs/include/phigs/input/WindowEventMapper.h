@@ -1,5 +1,6 @@
 #pragma once
 
+#include "phigs/input/EchoLayout.h"
 #include "phigs/input/InputAction.h"
 
 #include <glm/vec2.hpp>
@@ -43,18 +44,27 @@ using WindowEvent = std::variant<window_event::ButtonPress, window_event::Button
 /// left click: pick (and locator); right click: locator only; pointer motion: move (sample
 /// locators follow it); shift + left drag: stroke;
 /// typed characters then Enter: string (Backspace edits, Escape breaks a request);
-/// F1..F12: choice 1..12 (until the toolkit draws choice panels).
+/// F1..F12: choice 1..12. A left click in a choice panel of the echo layout chooses its
+/// alternative; a left press in a valuator slider starts a drag whose release sets the value.
 class WindowEventMapper {
 public:
     /// The action this event completes, if any.
     std::optional<InputAction> handle(const WindowEvent& event);
 
+    /// Replaces the panels and sliders (a slider drag under way is dropped).
+    void setLayout(EchoLayout layout) {
+        layout_ = std::move(layout);
+        dragging_ = nullptr;
+    }
+    const EchoLayout& layout() const { return layout_; }
     const std::string& pendingText() const { return text_; }
     bool stroking() const { return stroking_; }
     /// Stroke points closer than this to the previous one are dropped (pixels).
     double strokeSpacing = 2.0;
 
 private:
+    EchoLayout layout_;
+    const ValuatorSlider* dragging_ = nullptr;
     std::string text_;
     bool stroking_ = false;
     std::vector<glm::dvec2> stroke_;

@@ -23,6 +23,7 @@ public:
     std::optional<InputAction> next(std::chrono::milliseconds timeout) override;
     bool exhausted() const override { return false; }
     std::string position() const override { return "window"; }
+    void setEchoLayout(const EchoLayout& layout) override { mapper_.setLayout(layout); }
 
     /// Delivers an event as the window's callbacks do.
     void post(const WindowEvent& event);
