@@ -149,3 +149,19 @@ TEST_CASE("input pick: a pick device can see its own filtered draw list", "[inpu
     d.pickExclusion = {1};
     CHECK(measurer.pick({50, 50}, d).status == InputStatus::None);
 }
+
+TEST_CASE("input locator: a perspective view maps back to the point under the cursor", "[input]") {
+    DrawList list = unitList();
+    const glm::dmat4 proj = glm::perspective(glm::radians(60.0), 1.0, 0.5, 10.0);
+    const glm::dmat4 toNpc = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5)) *
+                             glm::scale(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, -0.5));
+    list.views[0].mapping = toNpc * proj;
+    list.views[0].orientation = glm::lookAt(glm::dvec3(1, 2, 3), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+    DrawListMeasurer m(list);
+    m.setLocatorDepth(0.7);
+    const LocatorMeasure a = m.locate({30, 60});
+    const glm::dvec4 back = list.views[0].mapping * list.views[0].orientation * glm::dvec4(a.position, 1.0);
+    CHECK(back.x / back.w == Approx(0.3).margin(1e-12));
+    CHECK(back.y / back.w == Approx(0.4).margin(1e-12));
+    CHECK(back.z / back.w == Approx(0.7).margin(1e-12));
+}

@@ -258,6 +258,8 @@ TEST_CASE("pick: echo highlights every item of the picked element instance", "[p
     REQUIRE(hit);
     CHECK(hit->item == 0);
     CHECK(echoItems(list, *hit) == std::vector<std::size_t>{0, 1});
+    // Prompt/echo type 2: the whole structure instance (structure 5 under element 2 of 1).
+    CHECK(echoItems(list, *hit, true) == std::vector<std::size_t>{0, 1, 2});
 }
 
 TEST_CASE("pick: a perspective view picks what lies under the point on screen", "[pick]") {

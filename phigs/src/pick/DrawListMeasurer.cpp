@@ -61,7 +61,7 @@ PickMeasure DrawListMeasurer::pick(glm::dvec2 deviceCoordinates, const InputDevi
     m.status = InputStatus::Ok;
     m.path = pickPath(list.items[hit->item].source, device.setup.pathOrder, device.pickPathDepth);
     m.surface = hit->surface;
-    if (device.echo == EchoSwitch::Echo) echo_ = echoItems(list, *hit);
+    if (device.echo == EchoSwitch::Echo) echo_ = echoItems(list, *hit, device.setup.promptEchoType == 2);
     return m;
 }
 

@@ -405,12 +405,22 @@ std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, in
     return path;
 }
 
-std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit) {
+std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit, bool wholeStructure) {
     std::vector<std::size_t> out;
     if (hit.item >= list.items.size()) return out;
     const auto& path = list.items[hit.item].source.path;
-    for (std::size_t i = 0; i < list.items.size(); ++i)
-        if (list.items[i].source.path == path) out.push_back(i);
+    if (path.empty()) return {hit.item};
+    // The structure instance: the levels above the primitive, and the structure it sits in.
+    const std::size_t prefix = path.size() - 1;
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const auto& other = list.items[i].source.path;
+        const bool same = wholeStructure
+                              ? other.size() == path.size() &&
+                                    std::equal(path.begin(), path.begin() + prefix, other.begin()) &&
+                                    other.back().structureId == path.back().structureId
+                              : other == path;
+        if (same) out.push_back(i);
+    }
     return out;
 }
 

@@ -89,7 +89,8 @@ private:
 std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, int depth);
 
 /// What the echo highlights for a hit: every item drawn by the same element instance (same
-/// full path), e.g. a fill area's interior and its edges, or a surface and its iso-lines.
-std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit);
+/// full path), e.g. a fill area's interior and its edges, or a surface and its iso-lines; with
+/// `wholeStructure` (pick prompt/echo type 2) every item of the picked structure instance.
+std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit, bool wholeStructure = false);
 
 }  // namespace phigs
