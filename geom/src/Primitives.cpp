@@ -35,6 +35,30 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
     return Curve(2, kCircleKnots, points, weights);
 }
 
+Curve makePeriodicCurve(int degree, const std::vector<glm::dvec3>& points,
+                        const std::vector<double>& weights) {
+    if (degree < 1)
+        throw GeometryError("makePeriodicCurve: degree " + std::to_string(degree) + " must be at least 1");
+    if (points.size() < static_cast<std::size_t>(degree) + 1)
+        throw GeometryError("makePeriodicCurve: " + std::to_string(points.size()) +
+                            " points are too few for a closed curve of degree " + std::to_string(degree));
+    if (!weights.empty() && weights.size() != points.size())
+        throw GeometryError("makePeriodicCurve: " + std::to_string(weights.size()) + " weights for " +
+                            std::to_string(points.size()) + " points");
+    const std::size_t p = static_cast<std::size_t>(degree), n = points.size();
+    std::vector<glm::dvec3> wrapped(points);
+    std::vector<double> wrappedWeights(weights);
+    for (std::size_t i = 0; i < p; ++i) {
+        wrapped.push_back(points[i]);
+        if (!weights.empty()) wrappedWeights.push_back(weights[i]);
+    }
+    // n spans over [0, 1]: knot i at (i - p) / n.
+    std::vector<double> knots(n + 2 * p + 1);
+    for (std::size_t i = 0; i < knots.size(); ++i)
+        knots[i] = (static_cast<double>(i) - static_cast<double>(p)) / static_cast<double>(n);
+    return Curve(degree, knots, wrapped, wrappedWeights);
+}
+
 Surface makeRevolution(const Curve& profile) {
     validate(profile);
     const std::size_t nu = profile.points.size();

@@ -168,3 +168,29 @@ TEST_CASE("Bezier patch subdivision into quadrants and rational patches", "[geom
             }
     REQUIRE_THROWS_WITH(evaluateBezier(s, 0.5, 0.5), Catch::Contains("not a single"));
 }
+
+TEST_CASE("periodic curves close smoothly", "[geom][periodic]") {
+    std::mt19937 rng(101);
+    for (int p = 1; p <= 5; ++p) {
+        std::vector<glm::dvec3> pts;
+        std::vector<double> w;
+        std::uniform_real_distribution<double> wd(0.5, 2.0);
+        for (int i = 0; i < 7; ++i) {
+            pts.push_back(geomtest::randomPoint(rng));
+            w.push_back(wd(rng));
+        }
+        const Curve c = makePeriodicCurve(p, pts, w);
+        REQUIRE(c.domainStart() == Approx(0.0).margin(1e-15));
+        REQUIRE(c.domainEnd() == Approx(1.0).margin(1e-15));
+        const auto a = derivatives(c, c.domainStart(), std::min(p - 1, 2));
+        const auto b = derivatives(c, c.domainEnd(), std::min(p - 1, 2));
+        for (std::size_t k = 0; k < a.size(); ++k)
+            REQUIRE(glm::length(a[k] - b[k]) < 1e-9 * (1 + glm::length(a[k])));
+        // Knot insertion and Bézier extraction work on the unclamped closed curve too.
+        const auto pieces = extractBezier(c);
+        REQUIRE(pieces.size() == 7);
+        REQUIRE(glm::length(evaluate(pieces[3].curve, pieces[3].start) - evaluate(c, pieces[3].start)) <
+                1e-12);
+    }
+    REQUIRE_THROWS_WITH(makePeriodicCurve(3, {{0, 0, 0}, {1, 0, 0}}), Catch::Contains("too few"));
+}

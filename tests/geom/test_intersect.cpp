@@ -134,3 +134,28 @@ TEST_CASE("a line with no direction is refused", "[geom][intersect]") {
     REQUIRE_THROWS_WITH(intersectLine(sphere, {0, 0, 0}, {0, 0, 0}), Catch::Contains("direction"));
     REQUIRE_THROWS_WITH(intersectLine(sphere, {std::nan(""), 0, 0}, {0, 0, 1}), Catch::Contains("origin"));
 }
+
+TEST_CASE("lines hit a seed-002-sized Bezier patch of bidegree 99 x 10", "[geom][intersect]") {
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), noise(-0.01, 0.01);
+    const std::size_t nu = 100, nv = 11;
+    std::vector<glm::dvec3> pts;
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j) {
+            const double x = static_cast<double>(i) / (nu - 1), y = static_cast<double>(j) / (nv - 1);
+            pts.emplace_back(x, y, 0.2 * std::sin(4 * x) * (0.5 + y) + noise(rng));
+        }
+    std::vector<double> ku(nu, 0.0), kv(nv, 0.0);
+    ku.resize(2 * nu, 1.0);
+    kv.resize(2 * nv, 1.0);
+    const Surface blade(99, 10, ku, kv, nu, nv, pts);
+    const SurfaceIntersector intersector(blade);
+    for (int trial = 0; trial < 10; ++trial) {
+        const double u = unit(rng), v = unit(rng);
+        const glm::dvec3 p = evaluate(blade, u, v);
+        const glm::dvec3 d = tilted(normal(blade, u, v), unit(rng) * 0.7, unit(rng) * 6.283);
+        const auto hits = intersector.intersect(p - 0.3 * d, d);
+        REQUIRE(hasHitNear(hits, p, 1e-9));
+        requireHitsValid(blade, hits, p - 0.3 * d, d);
+    }
+}
