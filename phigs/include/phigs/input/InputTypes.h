@@ -40,10 +40,11 @@ struct PickPathItem {
     bool operator==(const PickPathItem&) const = default;
 };
 
-/// The exact surface hit behind a pick of a B-spline surface.
+/// The exact surface hit behind a pick of a B-spline surface, in the surface's own modelling
+/// coordinates (apply the item's modelling transform for world coordinates).
 struct SurfacePickDetail {
-    glm::dvec3 point{0.0};
-    glm::dvec3 normal{0.0};
+    glm::dvec3 point{0.0};   ///< S(uv)
+    glm::dvec3 normal{0.0};  ///< unit normal Su x Sv at uv
     glm::dvec2 uv{0.0};
     std::size_t bezierPiece = 0;  ///< index of the Bézier piece (u span slow, v span fast)
 };
