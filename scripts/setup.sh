@@ -11,6 +11,7 @@ packages=(
   vulkan-validationlayers            # Khronos validation layer, on in every render test
   glslang-tools                      # GLSL -> SPIR-V at build time
   libglfw3-dev xvfb xauth            # windows, and a virtual X server to test them
+  libxtst-dev                        # real pointer and key events on the virtual X server
   catch2                             # tests
   hershey-fonts-data                 # stroke fonts for PHIGS text
   libsisl-dev                        # baseline in the geometry benchmarks

@@ -90,7 +90,11 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
         a.text = line.substr(line.find_first_not_of(" \t"));
         while (!a.text.empty() && (a.text.back() == ' ' || a.text.back() == '\t')) a.text.pop_back();
         const std::string& verb = words[0];
-        if (verb == "pick" || verb == "locator") {
+        if (verb == "move") {
+            const int device = p.takeDevice();
+            p.expectCount(3, "move X Y [device D]");
+            a.what = action::Move{glm::dvec2(p.number(1, "X"), p.number(2, "Y")), device};
+        } else if (verb == "pick" || verb == "locator") {
             const int device = p.takeDevice();
             p.expectCount(3, verb == "pick" ? "pick X Y [device D]" : "locator X Y [device D]");
             const glm::dvec2 pos(p.number(1, "X"), p.number(2, "Y"));
@@ -115,15 +119,20 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
             a.what = action::Valuator{device, p.number(2, "VALUE")};
         } else if (verb == "choice") {
             const int device = p.takeDevice();
-            p.expectCount(2, "choice N [device D]");
-            a.what = action::Choice{p.integer(1, "choice"), device};
+            p.expectCount(2, "choice N|NAME [device D]");
+            const std::string& word = p.words()[1];
+            const bool numeric = word.find_first_not_of("+-0123456789.eE") == std::string::npos;
+            if (numeric)
+                a.what = action::Choice{p.integer(1, "choice"), device, {}};
+            else
+                a.what = action::Choice{0, device, word};
         } else if (verb == "string") {
             const std::size_t start = line.find("string") + 6;
-            std::string text = start < line.size() ? line.substr(start) : std::string();
-            const std::size_t first = text.find_first_not_of(" \t");
-            text = first == std::string::npos ? std::string() : text.substr(first);
-            while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.pop_back();
-            a.what = action::String{text, 1};
+            std::string rest = start < line.size() ? line.substr(start) : std::string();
+            const std::size_t first = rest.find_first_not_of(" \t");
+            rest = first == std::string::npos ? std::string() : rest.substr(first);
+            while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t')) rest.pop_back();
+            a.what = action::String{rest, 1};
         } else if (verb == "break") {
             p.expectCount(1, "break");
             a.what = action::Break{};
@@ -133,7 +142,7 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
         } else if (directives.count(verb)) {
             a.what = action::Directive{verb, std::vector<std::string>(words.begin() + 1, words.end())};
         } else {
-            std::string known = "pick, locator, stroke, valuator, choice, string, break, wait";
+            std::string known = "pick, locator, move, stroke, valuator, choice, string, break, wait";
             for (const auto& d : directives) known += ", " + d;
             p.fail("unknown action '" + verb + "' (known: " + known + ")");
         }
@@ -169,6 +178,9 @@ std::string ScriptInputSource::format(const InputAction& a) {
             if constexpr (std::is_same_v<T, action::Pick>)
                 return "pick " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
                        deviceSuffix(w.device);
+            else if constexpr (std::is_same_v<T, action::Move>)
+                return "move " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
+                       deviceSuffix(w.device);
             else if constexpr (std::is_same_v<T, action::Locate>)
                 return "locator " + formatNumber(w.position.x) + " " + formatNumber(w.position.y) +
                        deviceSuffix(w.device);
@@ -179,7 +191,8 @@ std::string ScriptInputSource::format(const InputAction& a) {
             } else if constexpr (std::is_same_v<T, action::Valuator>)
                 return "valuator " + std::to_string(w.device) + " " + formatNumber(w.value);
             else if constexpr (std::is_same_v<T, action::Choice>)
-                return "choice " + std::to_string(w.choice) + deviceSuffix(w.device);
+                return "choice " + (w.name.empty() ? std::to_string(w.choice) : w.name) +
+                       deviceSuffix(w.device);
             else if constexpr (std::is_same_v<T, action::String>)
                 return "string " + w.text;
             else if constexpr (std::is_same_v<T, action::Break>)

@@ -19,6 +19,11 @@ struct Locate {  ///< a button press meant for the locator only
     glm::dvec2 position{0.0};
     int device = 1;
 };
+/// The pointer moved without a trigger: only locators in SAMPLE mode follow it.
+struct Move {
+    glm::dvec2 position{0.0};
+    int device = 1;
+};
 struct Stroke {
     std::vector<glm::dvec2> points;
     int device = 1;
@@ -30,6 +35,7 @@ struct Valuator {
 struct Choice {
     int choice = 0;
     int device = 1;
+    std::string name;  ///< chosen by the alternative's name (a menu entry) when not empty
 };
 struct String {
     std::string text;
@@ -46,7 +52,7 @@ struct Directive {
 
 /// One operator action and where it came from (a script line, or 0 for a window).
 struct InputAction {
-    std::variant<action::Pick, action::Locate, action::Stroke, action::Valuator, action::Choice,
+    std::variant<action::Pick, action::Locate, action::Move, action::Stroke, action::Valuator, action::Choice,
                  action::String, action::Break, action::Wait, action::Directive>
         what;
     int line = 0;

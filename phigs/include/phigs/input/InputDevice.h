@@ -33,6 +33,7 @@ struct InputDevice {
     Measure current;
     std::set<int> pickInclusion;  ///< pick filter: a primitive is pickable when its name set
     std::set<int> pickExclusion;  ///< meets the inclusion set and misses the exclusion set
+    bool pickFilterSet = false;   ///< SET PICK FILTER was called (else traversal may use none)
     int pickPathDepth = 0;        ///< 0: the whole path
 };
 

@@ -1,10 +1,11 @@
 #pragma once
 
-#include "phigs/core/Error.h"
+#include "phigs/input/InputError.h"
 #include "phigs/input/InputTypes.h"
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <optional>
@@ -29,7 +30,7 @@ public:
     explicit InputQueue(std::size_t capacity = 64);
 
     /// Reports warning 256 (queue overflow) to `sink` when it happens (e.g. into the error log).
-    void setWarningSink(std::function<void(const Error&)> sink) { warningSink_ = std::move(sink); }
+    void setWarningSink(std::function<void(const InputError&)> sink) { warningSink_ = std::move(sink); }
 
     /// AWAIT EVENT: moves the oldest report to the current event report and returns it; with an
     /// empty queue, pumps the workstations' input sources until an event arrives or `timeout`
@@ -40,7 +41,7 @@ public:
     /// is of another class (or there is none).
     const Measure& currentMeasure(InputClass inputClass, const char* function) const;
     /// INQUIRE MORE SIMULTANEOUS EVENTS.
-    bool moreSimultaneousEvents() const { return current_ && current_->moreSimultaneous; }
+    bool moreSimultaneousEvents() const;
 
     /// FLUSH DEVICE EVENTS: removes the queued reports of one device.
     void flush(int workstation, InputClass inputClass, int device);
@@ -63,10 +64,16 @@ public:
 
 private:
     std::size_t capacity_;
-    std::deque<EventReport> events_;
+    struct Queued {
+        EventReport report;
+        std::uint64_t trigger = 0;  ///< reports of one trigger share it
+    };
+    std::deque<Queued> events_;
+    std::uint64_t nextTrigger_ = 1;
+    std::uint64_t currentTrigger_ = 0;
     std::optional<EventReport> current_;
     std::optional<QueueOverflow> overflow_;
-    std::function<void(const Error&)> warningSink_;
+    std::function<void(const InputError&)> warningSink_;
     std::vector<WorkstationInput*> inputs_;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "phigs/input/EchoLayout.h"
 #include "phigs/input/InputAction.h"
 
 #include <chrono>
@@ -27,6 +28,9 @@ public:
     virtual bool exhausted() const = 0;
     /// Where the source is, for messages ("session.txt line 12", "window").
     virtual std::string position() const = 0;
+    /// The choice panels and valuator sliders now on the screen; a window maps clicks in them
+    /// to choices and values, a script has no use for them.
+    virtual void setEchoLayout(const EchoLayout&) {}
 };
 
 }  // namespace phigs

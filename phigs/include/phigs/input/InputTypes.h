@@ -26,7 +26,8 @@ enum class InputStatus { None, Ok };
 /// Order of a pick path: the root structure first, or the picked structure first.
 enum class PathOrder { TopFirst, BottomFirst };
 
-/// Echo volume in device coordinates (x, y in pixels, z in [0, 1]).
+/// Echo volume in device coordinates: x, y in pixels as input sources give them (from the top
+/// left, y down), z in [0, 1].
 struct EchoVolume {
     double xmin = 0, xmax = 0, ymin = 0, ymax = 0, zmin = 0, zmax = 1;
 };
@@ -39,10 +40,11 @@ struct PickPathItem {
     bool operator==(const PickPathItem&) const = default;
 };
 
-/// The exact surface hit behind a pick of a B-spline surface.
+/// The exact surface hit behind a pick of a B-spline surface, in the surface's own modelling
+/// coordinates (apply the item's modelling transform for world coordinates).
 struct SurfacePickDetail {
-    glm::dvec3 point{0.0};
-    glm::dvec3 normal{0.0};
+    glm::dvec3 point{0.0};   ///< S(uv)
+    glm::dvec3 normal{0.0};  ///< unit normal Su x Sv at uv
     glm::dvec2 uv{0.0};
     std::size_t bezierPiece = 0;  ///< index of the Bézier piece (u span slow, v span fast)
 };

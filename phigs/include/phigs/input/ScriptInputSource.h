@@ -18,8 +18,9 @@ public:
 /// An input source that replays a session script: one action per line,
 ///
 ///     pick X Y [device D]        locator X Y [device D]      stroke X1 Y1 X2 Y2 ... [device D]
-///     valuator D VALUE           choice N [device D]         string TEXT (rest of the line)
-///     break                      wait                        <directive> ARGS...   # comment
+///     valuator D VALUE           choice N|NAME [device D]    string TEXT (rest of the line)
+///     move X Y [device D]        break                       wait
+///     <directive> ARGS...        # comment
 ///
 /// X and Y are device coordinates (pixels from the top left). Directives are the words the
 /// application registers (e.g. "snapshot"); any other word is an error. The whole script is

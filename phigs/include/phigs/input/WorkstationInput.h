@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,12 @@ public:
     void setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo = EchoSwitch::Echo);
     /// SET PICK FILTER.
     void setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion);
+    /// The panels and sliders of choice devices with prompt/echo type 3 and valuators with
+    /// type 2 that are initialised with an echo area; handed to the source whenever it changes.
+    EchoLayout echoLayout() const;
+
+    /// SET PICK PATH DEPTH (0: the whole path).
+    void setPickPathDepth(int device, int depth);
     /// INQUIRE <class> DEVICE STATE.
     const InputDevice& device(InputClass inputClass, int device) const;
 

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "phigs/input/EchoLayout.h"
+#include "phigs/input/InputAction.h"
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace phigs {
+
+/// What a window reports, in device pixels from the top left (y down), free of any toolkit.
+namespace window_event {
+enum class Button { Left, Right, Middle };
+struct ButtonPress {
+    Button button = Button::Left;
+    glm::dvec2 position{0.0};
+    bool shift = false;
+};
+struct ButtonRelease {
+    Button button = Button::Left;
+    glm::dvec2 position{0.0};
+};
+struct CursorMove {
+    glm::dvec2 position{0.0};
+};
+enum class Key { Enter, Backspace, Escape, Function };
+struct KeyPress {
+    Key key = Key::Enter;
+    int function = 0;  ///< 1 for F1, ... (Key::Function)
+};
+struct Character {
+    char32_t codepoint = 0;
+};
+}  // namespace window_event
+
+using WindowEvent = std::variant<window_event::ButtonPress, window_event::ButtonRelease,
+                                 window_event::CursorMove, window_event::KeyPress, window_event::Character>;
+
+/// Turns window events into operator actions, the same actions a session script holds:
+/// left click: pick (and locator); right click: locator only; pointer motion: move (sample
+/// locators follow it); shift + left drag: stroke;
+/// typed characters then Enter: string (Backspace edits, Escape breaks a request);
+/// F1..F12: choice 1..12. A left click in a choice panel of the echo layout chooses its
+/// alternative; a left press in a valuator slider starts a drag whose release sets the value.
+class WindowEventMapper {
+public:
+    /// The action this event completes, if any.
+    std::optional<InputAction> handle(const WindowEvent& event);
+
+    /// Replaces the panels and sliders (a slider drag under way is dropped).
+    void setLayout(EchoLayout layout) {
+        layout_ = std::move(layout);
+        dragging_ = nullptr;
+    }
+    const EchoLayout& layout() const { return layout_; }
+    const std::string& pendingText() const { return text_; }
+    bool stroking() const { return stroking_; }
+    /// Stroke points closer than this to the previous one are dropped (pixels).
+    double strokeSpacing = 2.0;
+
+private:
+    EchoLayout layout_;
+    const ValuatorSlider* dragging_ = nullptr;
+    std::string text_;
+    bool stroking_ = false;
+    std::vector<glm::dvec2> stroke_;
+};
+
+}  // namespace phigs

@@ -1,0 +1,96 @@
+#pragma once
+
+#include "phigs/input/InputTypes.h"
+#include "phigs/pick/WorkstationMapping.h"
+#include "phigs/traverse/DrawList.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace geom {
+class SurfaceIntersector;
+}
+
+namespace phigs {
+
+/// How a pick is taken: the square aperture's half-size in NPC, the path order and depth.
+struct PickOptions {
+    double aperture = 0.01;
+    PathOrder order = PathOrder::TopFirst;
+    int depth = 0;  ///< levels kept; 0: the whole path
+};
+
+/// One primitive under the aperture.
+struct PickHit {
+    std::size_t item = 0;                      ///< index into DrawList::items
+    double depth = 0.0;                        ///< NPC z of the hit (1 front, 0 back): larger is nearer
+    std::optional<SurfacePickDetail> surface;  ///< exact hit on a NURBS surface (modelling coords)
+};
+
+/// The pick traversal over a draw list: tests every pickable item against the aperture in
+/// NPC, intersects NURBS surfaces exactly, orders the hits nearest first and builds the pick
+/// path. Keeps one intersector per surface, so repeated picks on the same list are cheap.
+class Picker {
+public:
+    Picker();
+    ~Picker();
+    Picker(const Picker&) = delete;
+    Picker& operator=(const Picker&) = delete;
+
+    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later. NURBS
+    /// surfaces are hit by the exact line through `npc`; their tessellations count only when
+    /// nothing is hit at all (the aperture catching a silhouette), without surface detail.
+    std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
+    /// PICK measure of the nearest hit: status OK with its path, or NONE when nothing is hit.
+    PickMeasure pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const;
+    /// The nearest hit itself, for echo.
+    std::optional<PickHit> nearest(const DrawList& list, glm::dvec2 npc, double aperture) const;
+
+    /// Forgets the cached surface intersectors and mesh boxes. Entries whose surface or mesh
+    /// only the cache still holds are dropped anyway when a list of a new generation is picked.
+    void clearCache() const;
+    std::size_t cachedSurfaces() const { return intersectors_.size(); }
+
+private:
+    /// How an item with an exact surface is tested: by the line through the aperture centre, or
+    /// (only when nothing at all was hit that way) by its tessellation under the aperture.
+    enum class SurfaceTest { Exact, Tessellation };
+    std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
+                                const WorkstationMapping& mapping, SurfaceTest surfaceTest) const;
+    std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
+                                       const std::shared_ptr<const geom::Surface>& surface,
+                                       glm::dvec2 npc) const;
+
+    struct CachedSurface {
+        std::shared_ptr<const geom::Surface> surface;  ///< keeps the key alive
+        std::unique_ptr<geom::SurfaceIntersector> intersector;
+    };
+    mutable std::map<const geom::Surface*, CachedSurface> intersectors_;
+    struct CachedBounds {
+        std::shared_ptr<const MeshData> mesh;  ///< keeps the key alive
+        glm::dvec3 min{0.0}, max{0.0};
+    };
+    /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
+    const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
+    mutable std::map<const MeshData*, CachedBounds> bounds_;
+    /// Drops cached entries nobody else holds any more, once per new draw list generation.
+    void prune(const DrawList& list) const;
+    mutable std::uint64_t generation_ = ~std::uint64_t{0};
+};
+
+/// The PHIGS pick path of a draw item's source: top first or bottom first, cut to `depth`
+/// levels (0: all) counted from the start of that order.
+std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, int depth);
+
+/// What the echo highlights for a hit: every item drawn by the same element instance (same
+/// full path), e.g. a fill area's interior and its edges, or a surface and its iso-lines; with
+/// `wholeStructure` (pick prompt/echo type 2) every item of the picked structure instance.
+std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit, bool wholeStructure = false);
+
+}  // namespace phigs

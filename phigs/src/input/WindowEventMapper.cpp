@@ -1,0 +1,112 @@
+#include "phigs/input/WindowEventMapper.h"
+
+#include <glm/geometric.hpp>
+
+#include <type_traits>
+
+namespace phigs {
+namespace {
+
+void appendUtf8(std::string& out, char32_t c) {
+    if (c < 0x80) {
+        out += static_cast<char>(c);
+    } else if (c < 0x800) {
+        out += static_cast<char>(0xC0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+        out += static_cast<char>(0xE0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x110000) {
+        out += static_cast<char>(0xF0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+}
+
+void popUtf8(std::string& s) {
+    while (!s.empty()) {
+        const unsigned char c = static_cast<unsigned char>(s.back());
+        s.pop_back();
+        if ((c & 0xC0) != 0x80) return;  // removed a lead or single byte
+    }
+}
+
+InputAction make(auto what, std::string text) {
+    InputAction a;
+    a.what = std::move(what);
+    a.text = std::move(text);
+    return a;
+}
+
+}  // namespace
+
+std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
+    using namespace window_event;
+    return std::visit(
+        [&](const auto& e) -> std::optional<InputAction> {
+            using T = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<T, ButtonPress>) {
+                if (e.button == Button::Left && !e.shift) {
+                    for (const ChoicePanel& p : layout_.panels)
+                        if (const auto n = p.choiceAt(e.position))
+                            return make(action::Choice{*n, p.device, {}},
+                                        "menu '" + p.alternatives[*n - 1] + "'");
+                    for (const ValuatorSlider& s : layout_.sliders)
+                        if (s.contains(e.position)) {
+                            dragging_ = &s;
+                            return std::nullopt;
+                        }
+                }
+                if (e.button == Button::Left && e.shift) {
+                    stroking_ = true;
+                    stroke_ = {e.position};
+                    return std::nullopt;
+                }
+                if (e.button == Button::Left) return make(action::Pick{e.position, 1}, "left click");
+                if (e.button == Button::Right) return make(action::Locate{e.position, 1}, "right click");
+                return std::nullopt;
+            } else if constexpr (std::is_same_v<T, CursorMove>) {
+                if (!stroking_) return make(action::Move{e.position, 1}, "pointer move");
+                if (glm::distance(stroke_.back(), e.position) >= strokeSpacing) stroke_.push_back(e.position);
+                return std::nullopt;
+            } else if constexpr (std::is_same_v<T, ButtonRelease>) {
+                if (dragging_ && e.button == Button::Left) {
+                    const ValuatorSlider& s = *dragging_;
+                    dragging_ = nullptr;
+                    return make(action::Valuator{s.device, s.valueAt(e.position)}, "slider");
+                }
+                if (!stroking_ || e.button != Button::Left) return std::nullopt;
+                stroking_ = false;
+                if (stroke_.back() != e.position) stroke_.push_back(e.position);
+                return make(action::Stroke{std::move(stroke_), 1}, "stroke drag");
+            } else if constexpr (std::is_same_v<T, Character>) {
+                appendUtf8(text_, e.codepoint);
+                return std::nullopt;
+            } else {
+                switch (e.key) {
+                    case Key::Enter: {
+                        std::string done = std::move(text_);
+                        text_.clear();
+                        return make(action::String{done, 1}, "typed '" + done + "'");
+                    }
+                    case Key::Backspace:
+                        popUtf8(text_);
+                        return std::nullopt;
+                    case Key::Escape:
+                        text_.clear();
+                        stroking_ = false;
+                        dragging_ = nullptr;
+                        return make(action::Break{}, "escape");
+                    case Key::Function:
+                        if (e.function < 1) return std::nullopt;
+                        return make(action::Choice{e.function, 1, {}}, "F" + std::to_string(e.function));
+                }
+                return std::nullopt;
+            }
+        },
+        event);
+}
+
+}  // namespace phigs

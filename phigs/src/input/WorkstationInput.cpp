@@ -1,0 +1,303 @@
+#include "phigs/input/WorkstationInput.h"
+
+#include "phigs/input/InputError.h"
+#include "phigs/input/ScriptInputSource.h"
+
+#include <algorithm>
+#include <type_traits>
+
+namespace phigs {
+namespace {
+
+constexpr InputClass allClasses[] = {InputClass::Locator, InputClass::Stroke, InputClass::Valuator,
+                                     InputClass::Choice,  InputClass::Pick,   InputClass::String};
+
+Measure defaultMeasure(InputClass inputClass) {
+    switch (inputClass) {
+        case InputClass::Locator:
+            return LocatorMeasure{};
+        case InputClass::Stroke:
+            return StrokeMeasure{};
+        case InputClass::Valuator:
+            return ValuatorMeasure{};
+        case InputClass::Choice:
+            return ChoiceMeasure{InputStatus::Ok, 1};
+        case InputClass::Pick:
+            return PickMeasure{};
+        case InputClass::String:
+            return StringMeasure{};
+    }
+    return LocatorMeasure{};
+}
+
+std::string deviceName(InputClass inputClass, int device) {
+    return std::string(nameOf(inputClass)) + " " + std::to_string(device);
+}
+
+}  // namespace
+
+int DeviceCounts::of(InputClass inputClass) const {
+    switch (inputClass) {
+        case InputClass::Locator:
+            return locator;
+        case InputClass::Stroke:
+            return stroke;
+        case InputClass::Valuator:
+            return valuator;
+        case InputClass::Choice:
+            return choice;
+        case InputClass::Pick:
+            return pick;
+        case InputClass::String:
+            return string;
+    }
+    return 0;
+}
+
+WorkstationInput::WorkstationInput(int workstation, InputSource& source, const InputMeasurer& measurer,
+                                   InputQueue& queue, DeviceCounts counts)
+    : workstation_(workstation), source_(source), measurer_(measurer), queue_(queue), counts_(counts) {
+    for (InputClass c : allClasses) {
+        for (int n = 1; n <= counts_.of(c); ++n) {
+            InputDevice d;
+            d.inputClass = c;
+            d.number = n;
+            d.setup.initial = defaultMeasure(c);
+            d.current = d.setup.initial;
+            devices_.emplace(std::make_pair(c, n), std::move(d));
+        }
+    }
+    queue_.attach(*this);
+}
+
+WorkstationInput::~WorkstationInput() {
+    queue_.detach(*this);
+}
+
+InputDevice& WorkstationInput::lookup(InputClass inputClass, int device, const char* function) {
+    const auto it = devices_.find({inputClass, device});
+    if (it == devices_.end())
+        throw InputError(250, function,
+                         deviceName(inputClass, device) + " is not available on workstation " +
+                             std::to_string(workstation_) + " (it has " +
+                             std::to_string(counts_.of(inputClass)) + ")");
+    return it->second;
+}
+
+const InputDevice& WorkstationInput::lookup(InputClass inputClass, int device, const char* function) const {
+    return const_cast<WorkstationInput*>(this)->lookup(inputClass, device, function);
+}
+
+void WorkstationInput::initialise(InputClass inputClass, int device, DeviceInitialisation setup) {
+    const char* function = "INITIALIZE DEVICE";
+    InputDevice& d = lookup(inputClass, device, function);
+    if (d.mode != OperatingMode::Request)
+        throw InputError(251, function, deviceName(inputClass, device) + " must be in REQUEST mode");
+    std::string reason;
+    if (const int number = validateInitialisation(inputClass, setup, reason))
+        throw InputError(number, function, deviceName(inputClass, device) + ": " + reason);
+    d.setup = std::move(setup);
+    d.current = d.setup.initial;
+    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator)
+        source_.setEchoLayout(echoLayout());
+}
+
+EchoLayout WorkstationInput::echoLayout() const {
+    EchoLayout layout;
+    for (const auto& [key, d] : devices_) {
+        const EchoVolume& a = d.setup.echoVolume;
+        if (!(a.xmax > a.xmin && a.ymax > a.ymin)) continue;
+        if (key.first == InputClass::Choice && d.setup.promptEchoType == 3 && !d.setup.choiceStrings.empty())
+            layout.panels.push_back({d.number, a, d.setup.choiceStrings});
+        if (key.first == InputClass::Valuator && d.setup.promptEchoType == 2)
+            layout.sliders.push_back({d.number, a, d.setup.valuatorLow, d.setup.valuatorHigh});
+    }
+    return layout;
+}
+
+void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo) {
+    InputDevice& d = lookup(inputClass, device, "SET DEVICE MODE");
+    d.mode = mode;
+    d.echo = echo;
+    // A device entering SAMPLE or EVENT mode starts from its initial measure.
+    d.current = d.setup.initial;
+}
+
+void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion) {
+    InputDevice& d = lookup(InputClass::Pick, device, "SET PICK FILTER");
+    d.pickInclusion = std::move(inclusion);
+    d.pickExclusion = std::move(exclusion);
+    d.pickFilterSet = true;
+}
+
+void WorkstationInput::setPickPathDepth(int device, int depth) {
+    if (depth < 0) throw InputError(207, "SET PICK PATH DEPTH", "the path depth is less than zero");
+    lookup(InputClass::Pick, device, "SET PICK PATH DEPTH").pickPathDepth = depth;
+}
+
+const InputDevice& WorkstationInput::device(InputClass inputClass, int device) const {
+    return lookup(inputClass, device, "INQUIRE DEVICE STATE");
+}
+
+std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass, int device) {
+    const InputDevice& d = lookup(inputClass, device, "REQUEST DEVICE");
+    if (d.mode != OperatingMode::Request)
+        throw InputError(251, "REQUEST DEVICE", deviceName(inputClass, device) + " must be in REQUEST mode");
+    std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
+    for (;;) {
+        const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);
+        if (p == Pumped::Satisfied || p == Pumped::Broke) return result;
+    }
+}
+
+const Measure& WorkstationInput::sample(InputClass inputClass, int device) const {
+    const InputDevice& d = lookup(inputClass, device, "SAMPLE DEVICE");
+    if (d.mode != OperatingMode::Sample)
+        throw InputError(252, "SAMPLE DEVICE", deviceName(inputClass, device) + " must be in SAMPLE mode");
+    return d.current;
+}
+
+Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) {
+    const auto fail = [&](const std::string& reason) -> void {
+        throw ScriptError(source_.position() + ": '" + a.text + "': " + reason);
+    };
+    return std::visit(
+        [&](const auto& w) -> Measure {
+            using T = std::decay_t<decltype(w)>;
+            if constexpr (std::is_same_v<T, action::Pick>) {
+                if (device.inputClass == InputClass::Locator) return measurer_.locate(w.position);
+                return measurer_.pick(w.position, device);
+            } else if constexpr (std::is_same_v<T, action::Locate> || std::is_same_v<T, action::Move>) {
+                return measurer_.locate(w.position);
+            } else if constexpr (std::is_same_v<T, action::Stroke>) {
+                std::vector<glm::dvec2> points = w.points;
+                if (points.size() > device.setup.bufferSize) points.resize(device.setup.bufferSize);
+                return measurer_.stroke(points);
+            } else if constexpr (std::is_same_v<T, action::Valuator>) {
+                if (!(w.value >= device.setup.valuatorLow && w.value <= device.setup.valuatorHigh))
+                    fail("value is outside the range [" + std::to_string(device.setup.valuatorLow) + ", " +
+                         std::to_string(device.setup.valuatorHigh) + "] of VALUATOR " +
+                         std::to_string(device.number));
+                return ValuatorMeasure{w.value};
+            } else if constexpr (std::is_same_v<T, action::Choice>) {
+                const auto& names = device.setup.choiceStrings;
+                int choice = w.choice;
+                if (!w.name.empty()) {
+                    const auto it = std::find(names.begin(), names.end(), w.name);
+                    if (it == names.end())
+                        fail("CHOICE " + std::to_string(device.number) + " has no alternative '" + w.name +
+                             "'");
+                    choice = static_cast<int>(it - names.begin()) + 1;
+                }
+                if (choice == 0) return ChoiceMeasure{InputStatus::None, 0};
+                if (choice < 0 || (!names.empty() && choice > static_cast<int>(names.size())))
+                    fail("CHOICE " + std::to_string(device.number) + " has alternatives 1.." +
+                         std::to_string(names.size()));
+                return ChoiceMeasure{InputStatus::Ok, choice};
+            } else if constexpr (std::is_same_v<T, action::String>) {
+                std::string text = w.text;
+                if (text.size() > device.setup.bufferSize) text.resize(device.setup.bufferSize);
+                return StringMeasure{text};
+            } else {
+                return device.current;
+            }
+        },
+        a.what);
+}
+
+std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(const InputAction& a) {
+    std::vector<InputDevice*> triggered;
+    const auto add = [&](InputClass c, int n) {
+        const auto it = devices_.find({c, n});
+        if (it != devices_.end()) triggered.push_back(&it->second);
+    };
+    std::visit(
+        [&](const auto& w) {
+            using T = std::decay_t<decltype(w)>;
+            // A button press at a point triggers the pick and the locator of the same number:
+            // the two events are simultaneous.
+            if constexpr (std::is_same_v<T, action::Pick>) {
+                add(InputClass::Pick, w.device);
+                add(InputClass::Locator, w.device);
+            } else if constexpr (std::is_same_v<T, action::Locate>) {
+                add(InputClass::Locator, w.device);
+            } else if constexpr (std::is_same_v<T, action::Move>) {
+                // Motion is no trigger: it reaches only a locator that is sampled.
+                const auto it = devices_.find({InputClass::Locator, w.device});
+                if (it != devices_.end() && it->second.mode == OperatingMode::Sample)
+                    triggered.push_back(&it->second);
+            } else if constexpr (std::is_same_v<T, action::Stroke>) {
+                add(InputClass::Stroke, w.device);
+            } else if constexpr (std::is_same_v<T, action::Valuator>) {
+                add(InputClass::Valuator, w.device);
+            } else if constexpr (std::is_same_v<T, action::Choice>) {
+                add(InputClass::Choice, w.device);
+            } else if constexpr (std::is_same_v<T, action::String>) {
+                add(InputClass::String, w.device);
+            }
+        },
+        a.what);
+    std::vector<std::pair<InputDevice*, Measure>> out;
+    // Measure everything first, so an action that fails leaves every device unchanged.
+    for (InputDevice* d : triggered) out.emplace_back(d, measureFor(*d, a));
+    return out;
+}
+
+WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeout, const InputDevice* pending,
+                                                std::pair<InputStatus, Measure>* result) {
+    std::optional<InputAction> a = source_.next(timeout);
+    if (!a) return Pumped::Nothing;
+    history_.push_back(*a);
+    if (std::holds_alternative<action::Wait>(a->what)) return Pumped::Waited;
+    if (const auto* d = std::get_if<action::Directive>(&a->what)) {
+        if (directiveHandler_) directiveHandler_(*d, *a);
+        return Pumped::Delivered;
+    }
+    if (std::holds_alternative<action::Break>(a->what)) {
+        if (pending && result) {
+            *result = {InputStatus::None, pending->current};
+            return Pumped::Broke;
+        }
+        ignored_.push_back(source_.position() + ": 'break' with no request pending");
+        return Pumped::Nothing;
+    }
+
+    auto measures = measuresFor(*a);
+    std::vector<EventReport> reports;
+    bool satisfied = false;
+    bool reached = false;
+    for (auto& [device, measure] : measures) {
+        if (device == pending) {
+            if (result) {
+                const auto* pick = std::get_if<PickMeasure>(&measure);
+                const auto* choice = std::get_if<ChoiceMeasure>(&measure);
+                InputStatus status = InputStatus::Ok;
+                if (pick) status = pick->status;
+                if (choice) status = choice->status;
+                *result = {status, measure};
+            }
+            satisfied = true;
+            reached = true;
+        } else if (device->mode == OperatingMode::Sample) {
+            device->current = measure;
+            reached = true;
+        } else if (device->mode == OperatingMode::Event) {
+            device->current = measure;
+            reports.push_back({workstation_, device->inputClass, device->number, measure, false});
+            reached = true;
+        }
+    }
+    queue_.enqueue(std::move(reports));
+    if (!reached && std::holds_alternative<action::Move>(a->what)) {
+        history_.pop_back();  // motion nobody samples is not worth recording
+        return Pumped::Nothing;
+    }
+    if (!reached)
+        ignored_.push_back(
+            source_.position() + ": '" + a->text +
+            "' reached no device (none of its class waits in a request, sample or event mode)");
+    if (satisfied) return Pumped::Satisfied;
+    return reached ? Pumped::Delivered : Pumped::Nothing;
+}
+
+}  // namespace phigs

@@ -1,0 +1,427 @@
+#include "phigs/pick/Picker.h"
+
+#include "geom/Evaluate.h"
+
+#include "geom/SurfaceIntersector.h"
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace phigs {
+namespace {
+
+/// A point after projection: NPC, or not drawable (behind the eye of a perspective view).
+struct Projected {
+    glm::dvec3 npc{0.0};
+    bool valid = false;
+};
+
+Projected project(const glm::dmat4& m, const glm::dvec3& p) {
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    if (!(h.w > 1e-300)) return {};
+    return {glm::dvec3(h) / h.w, true};
+}
+
+/// The aperture: a square of half-size `half` around `centre` in NPC x, y.
+struct Aperture {
+    glm::dvec2 centre{0.0};
+    double half = 0.0;
+    bool contains(glm::dvec2 p, double grow = 0.0) const {
+        return std::abs(p.x - centre.x) <= half + grow && std::abs(p.y - centre.y) <= half + grow;
+    }
+};
+
+/// Whether segment a-b meets the aperture square (Liang-Barsky); on a hit, the depth at the
+/// point of the segment nearest the aperture centre.
+std::optional<double> segmentHit(const Aperture& ap, const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec2 d(b.x - a.x, b.y - a.y);
+    double t0 = 0.0, t1 = 1.0;
+    const double p[4] = {-d.x, d.x, -d.y, d.y};
+    const double q[4] = {a.x - (ap.centre.x - ap.half), (ap.centre.x + ap.half) - a.x,
+                         a.y - (ap.centre.y - ap.half), (ap.centre.y + ap.half) - a.y};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0) return std::nullopt;
+        } else {
+            const double r = q[i] / p[i];
+            if (p[i] < 0.0)
+                t0 = std::max(t0, r);
+            else
+                t1 = std::min(t1, r);
+        }
+    }
+    if (t0 > t1) return std::nullopt;
+    const double len2 = glm::dot(d, d);
+    double t = len2 > 0 ? glm::dot(ap.centre - glm::dvec2(a), d) / len2 : 0.0;
+    t = std::clamp(t, t0, t1);
+    return a.z + t * (b.z - a.z);
+}
+
+/// Nearest (largest z) hit of a polyline's segments; closed adds the last-to-first segment.
+std::optional<double> polylineHit(const Aperture& ap, const std::vector<Projected>& pts, bool closed) {
+    std::optional<double> best;
+    const std::size_t n = pts.size();
+    if (n == 1 && pts[0].valid && ap.contains(glm::dvec2(pts[0].npc))) return pts[0].npc.z;
+    const std::size_t segments = closed && n > 2 ? n : (n > 0 ? n - 1 : 0);
+    for (std::size_t i = 0; i < segments; ++i) {
+        const Projected& a = pts[i];
+        const Projected& b = pts[(i + 1) % n];
+        if (!a.valid || !b.valid) continue;
+        if (const auto z = segmentHit(ap, a.npc, b.npc); z && (!best || *z > *best)) best = z;
+    }
+    return best;
+}
+
+/// Even-odd inside test of a point against a set of contours (projected to NPC x, y).
+bool insideEvenOdd(glm::dvec2 p, const std::vector<std::vector<Projected>>& contours) {
+    bool inside = false;
+    for (const auto& c : contours) {
+        const std::size_t n = c.size();
+        for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+            const glm::dvec3& a = c[i].npc;
+            const glm::dvec3& b = c[j].npc;
+            if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+                inside = !inside;
+        }
+    }
+    return inside;
+}
+
+/// Depth at (x, y) of the plane through the contours (Newell's normal in NPC); nullopt when
+/// the plane is seen edge on.
+std::optional<double> planeDepth(glm::dvec2 p, const std::vector<std::vector<Projected>>& contours) {
+    glm::dvec3 normal(0.0), centroid(0.0);
+    std::size_t count = 0;
+    for (const auto& c : contours) {
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const glm::dvec3& a = c[i].npc;
+            const glm::dvec3& b = c[(i + 1) % c.size()].npc;
+            normal +=
+                glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+            centroid += a;
+            ++count;
+        }
+    }
+    if (count == 0) return std::nullopt;
+    centroid /= static_cast<double>(count);
+    const double len = glm::length(normal);
+    if (!(len > 0) || std::abs(normal.z) < 1e-12 * len) return std::nullopt;
+    return centroid.z - (normal.x * (p.x - centroid.x) + normal.y * (p.y - centroid.y)) / normal.z;
+}
+
+/// A planar region (fill area set, text box): the centre inside counts when `interior`, the
+/// boundary under the aperture when `boundary`.
+std::optional<double> regionHit(const Aperture& ap, const std::vector<std::vector<Projected>>& contours,
+                                bool interior, bool boundary) {
+    for (const auto& c : contours)
+        for (const auto& p : c)
+            if (!p.valid) return std::nullopt;
+    std::optional<double> best;
+    if (interior && insideEvenOdd(ap.centre, contours)) best = planeDepth(ap.centre, contours);
+    if (boundary || interior) {
+        for (const auto& c : contours)
+            if (const auto z = polylineHit(ap, c, true); z && (!best || *z > *best)) best = z;
+    }
+    return best;
+}
+
+/// Nearest triangle of a mesh overlapping the aperture.
+std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& pts,
+                              const std::vector<std::uint32_t>& triangles) {
+    std::optional<double> best;
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const Projected& a = pts[triangles[t]];
+        const Projected& b = pts[triangles[t + 1]];
+        const Projected& c = pts[triangles[t + 2]];
+        if (!a.valid || !b.valid || !c.valid) continue;
+        // Most triangles lie clear of the aperture: reject them by their box.
+        const double x0 = ap.centre.x - ap.half, x1 = ap.centre.x + ap.half;
+        const double y0 = ap.centre.y - ap.half, y1 = ap.centre.y + ap.half;
+        if (std::max({a.npc.x, b.npc.x, c.npc.x}) < x0 || std::min({a.npc.x, b.npc.x, c.npc.x}) > x1 ||
+            std::max({a.npc.y, b.npc.y, c.npc.y}) < y0 || std::min({a.npc.y, b.npc.y, c.npc.y}) > y1)
+            continue;
+        // Barycentric coordinates of the centre.
+        const glm::dvec2 v0(b.npc - a.npc), v1(c.npc - a.npc), v2(ap.centre - glm::dvec2(a.npc));
+        const double den = v0.x * v1.y - v1.x * v0.y;
+        std::optional<double> z;
+        if (den != 0.0) {
+            const double s = (v2.x * v1.y - v1.x * v2.y) / den;
+            const double r = (v0.x * v2.y - v2.x * v0.y) / den;
+            if (s >= 0 && r >= 0 && s + r <= 1)
+                z = a.npc.z + s * (b.npc.z - a.npc.z) + r * (c.npc.z - a.npc.z);
+        }
+        if (!z) {
+            for (const auto& [p, q] : {std::pair{&a, &b}, std::pair{&b, &c}, std::pair{&c, &a}})
+                if (const auto e = segmentHit(ap, p->npc, q->npc); e && (!z || *e > *z)) z = e;
+        }
+        if (z && (!best || *z > *best)) best = z;
+    }
+    return best;
+}
+
+bool insideClip(const DrawView& view, const glm::dvec3& npc) {
+    const double eps = 1e-12;
+    if (view.clipXY && (npc.x < view.clipMin.x - eps || npc.x > view.clipMax.x + eps ||
+                        npc.y < view.clipMin.y - eps || npc.y > view.clipMax.y + eps))
+        return false;
+    if (view.clipBack && npc.z < view.clipMin.z - eps) return false;
+    if (view.clipFront && npc.z > view.clipMax.z + eps) return false;
+    return true;
+}
+
+template <typename Point>
+std::vector<Projected> projectAll(const glm::dmat4& m, const std::vector<Point>& points) {
+    std::vector<Projected> out;
+    out.reserve(points.size());
+    for (const auto& p : points) out.push_back(project(m, glm::dvec3(p)));
+    return out;
+}
+
+/// The four corners of a text string's box in its own plane: character boxes of height ×
+/// height·expansion, spacing between them, placed by the path and alignment.
+std::vector<glm::dvec2> textBox(const DrawText& text) {
+    const TextStyle& s = text.style;
+    const double h = s.height;
+    const double w = h * s.expansion;
+    const double n = static_cast<double>(std::max<std::size_t>(text.text.size(), 1));
+    const bool horizontal = s.path == TextPath::Right || s.path == TextPath::Left;
+    const double width = horizontal ? n * w + (n - 1) * s.spacing * h : w;
+    const double height = horizontal ? h : n * h + (n - 1) * s.spacing * h;
+    double x0 = 0, y0 = 0;
+    HorizontalAlignment ha = s.horizontal;
+    if (ha == HorizontalAlignment::Normal)
+        ha = s.path == TextPath::Left
+                 ? HorizontalAlignment::Right
+                 : (horizontal ? HorizontalAlignment::Left : HorizontalAlignment::Centre);
+    if (ha == HorizontalAlignment::Centre) x0 = -width / 2;
+    if (ha == HorizontalAlignment::Right) x0 = -width;
+    VerticalAlignment va = s.vertical;
+    if (va == VerticalAlignment::Normal)
+        va = s.path == TextPath::Down ? VerticalAlignment::Top : VerticalAlignment::Base;
+    if (va == VerticalAlignment::Top || va == VerticalAlignment::Cap) y0 = -height;
+    if (va == VerticalAlignment::Half) y0 = -height / 2;
+    return {{x0, y0}, {x0 + width, y0}, {x0 + width, y0 + height}, {x0, y0 + height}};
+}
+
+}  // namespace
+
+Picker::Picker() = default;
+Picker::~Picker() = default;
+
+void Picker::clearCache() const {
+    intersectors_.clear();
+    bounds_.clear();
+}
+
+void Picker::prune(const DrawList& list) const {
+    if (list.generation == generation_) return;
+    generation_ = list.generation;
+    std::erase_if(intersectors_, [](const auto& e) { return e.second.surface.use_count() == 1; });
+    std::erase_if(bounds_, [](const auto& e) { return e.second.mesh.use_count() == 1; });
+}
+
+const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshData>& mesh) const {
+    auto it = bounds_.find(mesh.get());
+    if (it != bounds_.end()) return it->second;
+    CachedBounds b{mesh, glm::dvec3(std::numeric_limits<double>::max()),
+                   glm::dvec3(std::numeric_limits<double>::lowest())};
+    for (const glm::vec3& p : mesh->positions) {
+        b.min = glm::min(b.min, glm::dvec3(p));
+        b.max = glm::max(b.max, glm::dvec3(p));
+    }
+    return bounds_.emplace(mesh.get(), std::move(b)).first->second;
+}
+
+std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView& view,
+                                           const std::shared_ptr<const geom::Surface>& surface,
+                                           glm::dvec2 npc) const {
+    auto it = intersectors_.find(surface.get());
+    if (it == intersectors_.end())
+        it = intersectors_
+                 .emplace(surface.get(),
+                          CachedSurface{surface, std::make_unique<geom::SurfaceIntersector>(*surface)})
+                 .first;
+    const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform;
+    const glm::dmat4 inverse = glm::inverse(m);
+    const glm::dvec4 front = inverse * glm::dvec4(npc, 1.0, 1.0);
+    const glm::dvec4 back = inverse * glm::dvec4(npc, 0.0, 1.0);
+    if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
+    const glm::dvec3 origin = glm::dvec3(front) / front.w;
+    const glm::dvec3 direction = glm::dvec3(back) / back.w - origin;
+    for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
+        const Projected p = project(m, h.point);
+        if (!p.valid || !insideClip(view, p.npc)) continue;
+        SurfacePickDetail detail{h.point, geom::normal(*surface, h.uv.x, h.uv.y), h.uv, h.piece};
+        return PickHit{0, p.npc.z, detail};
+    }
+    return std::nullopt;
+}
+
+std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
+                                    const WorkstationMapping& mapping, SurfaceTest surfaceTest) const {
+    const DrawItem& item = list.items[index];
+    if (!item.pickable) return std::nullopt;
+    const auto* drawMesh = std::get_if<DrawMesh>(&item.primitive);
+    const bool exactSurface = drawMesh && drawMesh->surface;
+    if (surfaceTest == SurfaceTest::Tessellation && !exactSurface) return std::nullopt;
+    if (item.viewIndex < 0 || static_cast<std::size_t>(item.viewIndex) >= list.views.size())
+        return std::nullopt;
+    const DrawView& view = list.views[static_cast<std::size_t>(item.viewIndex)];
+    if (view.clipXY && (npc.x < view.clipMin.x || npc.x > view.clipMax.x || npc.y < view.clipMin.y ||
+                        npc.y > view.clipMax.y))
+        return std::nullopt;
+    const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform;
+    const Aperture ap{npc, aperture};
+
+    std::optional<PickHit> hit;
+    std::visit(
+        [&](const auto& p) {
+            using T = std::decay_t<decltype(p)>;
+            std::optional<double> z;
+            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
+                z = polylineHit(ap, projectAll(m, p.points), false);
+            } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
+                // The marker's own size widens the aperture (nominal 7 pixels times the scale).
+                const double grow = mapping.npcLength(3.5 * p.style.scale);
+                for (const Projected& q : projectAll(m, p.points))
+                    if (q.valid && ap.contains(glm::dvec2(q.npc), grow) && (!z || q.npc.z > *z)) z = q.npc.z;
+            } else if constexpr (std::is_same_v<T, DrawFillArea>) {
+                std::vector<std::vector<Projected>> contours;
+                for (const auto& c : p.contours) contours.push_back(projectAll(m, c));
+                const InteriorStyle s = p.interior.style;
+                const bool interior = s != InteriorStyle::Hollow && s != InteriorStyle::Empty;
+                z = regionHit(ap, contours, interior, s == InteriorStyle::Hollow || p.edges.visible);
+            } else if constexpr (std::is_same_v<T, DrawText>) {
+                std::vector<std::vector<Projected>> box(1);
+                const glm::dvec2 up =
+                    glm::length(p.style.upVector) > 0 ? glm::normalize(p.style.upVector) : glm::dvec2(0, 1);
+                const glm::dvec2 base(up.y, -up.x);
+                if (p.annotation) {
+                    const Projected ref = project(m, p.position);
+                    for (const glm::dvec2& c : textBox(p)) {
+                        const glm::dvec2 q = c.x * base + c.y * up;
+                        box[0].push_back({ref.npc + p.annotationOffset + glm::dvec3(q, 0.0), ref.valid});
+                    }
+                } else {
+                    const glm::dvec3 d1 = glm::normalize(p.direction1);
+                    const glm::dvec3 d2 = glm::normalize(p.direction2 - glm::dot(p.direction2, d1) * d1);
+                    for (const glm::dvec2& c : textBox(p)) {
+                        const glm::dvec2 q = c.x * base + c.y * up;
+                        box[0].push_back(project(m, p.position + q.x * d1 + q.y * d2));
+                    }
+                }
+                z = regionHit(ap, box, true, true);
+            } else if constexpr (std::is_same_v<T, DrawMesh>) {
+                if (p.surface && surfaceTest == SurfaceTest::Exact) {
+                    hit = testSurface(item, view, p.surface, npc);
+                    return;
+                }
+                if (p.mesh && !p.mesh->positions.empty()) {
+                    // Reject by the projected box first: most meshes lie far from the aperture.
+                    const CachedBounds& b = boundsOf(p.mesh);
+                    glm::dvec2 lo(std::numeric_limits<double>::max()),
+                        hi(std::numeric_limits<double>::lowest());
+                    bool allValid = true;
+                    for (int corner = 0; corner < 8; ++corner) {
+                        const glm::dvec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                                           (corner & 4) ? b.max.z : b.min.z);
+                        const Projected q = project(m, c);
+                        allValid = allValid && q.valid;
+                        lo = glm::min(lo, glm::dvec2(q.npc));
+                        hi = glm::max(hi, glm::dvec2(q.npc));
+                    }
+                    if (allValid && (npc.x + aperture < lo.x || npc.x - aperture > hi.x ||
+                                     npc.y + aperture < lo.y || npc.y - aperture > hi.y))
+                        return;
+                    const auto projected = projectAll(m, p.mesh->positions);
+                    z = meshHit(ap, projected, p.mesh->triangles);
+                    for (const auto& line : p.mesh->isoLines) {
+                        std::vector<Projected> pts;
+                        for (std::uint32_t i : line) pts.push_back(projected[i]);
+                        if (const auto e = polylineHit(ap, pts, false); e && (!z || *e > *z)) z = e;
+                    }
+                }
+            }
+            if (z) hit = PickHit{0, *z, std::nullopt};
+        },
+        item.primitive);
+    if (!hit) return std::nullopt;
+    hit->item = index;
+    // Depth clipping: the part under the aperture must lie between the view's z planes.
+    if ((view.clipBack && hit->depth < view.clipMin.z - 1e-12) ||
+        (view.clipFront && hit->depth > view.clipMax.z + 1e-12))
+        return std::nullopt;
+    return hit;
+}
+
+std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double aperture) const {
+    std::vector<PickHit> out;
+    // The workstation window clips everything.
+    if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
+        npc.y > list.windowMax.y)
+        return out;
+    prune(list);
+    const WorkstationMapping mapping(list);
+    for (std::size_t i = 0; i < list.items.size(); ++i)
+        if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact)) out.push_back(std::move(*h));
+    if (out.empty())
+        for (std::size_t i = 0; i < list.items.size(); ++i)
+            if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Tessellation))
+                out.push_back(std::move(*h));
+    std::stable_sort(out.begin(), out.end(), [](const PickHit& a, const PickHit& b) {
+        if (a.depth != b.depth) return a.depth > b.depth;
+        return a.item > b.item;
+    });
+    return out;
+}
+
+std::optional<PickHit> Picker::nearest(const DrawList& list, glm::dvec2 npc, double aperture) const {
+    auto all = hits(list, npc, aperture);
+    if (all.empty()) return std::nullopt;
+    return all.front();
+}
+
+PickMeasure Picker::pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const {
+    PickMeasure measure;
+    const auto hit = nearest(list, npc, options.aperture);
+    if (!hit) return measure;
+    measure.status = InputStatus::Ok;
+    measure.path = pickPath(list.items[hit->item].source, options.order, options.depth);
+    measure.surface = hit->surface;
+    return measure;
+}
+
+std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, int depth) {
+    std::vector<PickPathItem> path;
+    for (const DrawPathLevel& l : source.path) path.push_back({l.structureId, l.elementNumber, l.pickId});
+    if (order == PathOrder::BottomFirst) std::reverse(path.begin(), path.end());
+    if (depth > 0 && static_cast<std::size_t>(depth) < path.size())
+        path.resize(static_cast<std::size_t>(depth));
+    return path;
+}
+
+std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit, bool wholeStructure) {
+    std::vector<std::size_t> out;
+    if (hit.item >= list.items.size()) return out;
+    const auto& path = list.items[hit.item].source.path;
+    if (path.empty()) return {hit.item};
+    // The structure instance: the levels above the primitive, and the structure it sits in.
+    const std::size_t prefix = path.size() - 1;
+    for (std::size_t i = 0; i < list.items.size(); ++i) {
+        const auto& other = list.items[i].source.path;
+        const bool same = wholeStructure
+                              ? other.size() == path.size() &&
+                                    std::equal(path.begin(), path.begin() + prefix, other.begin()) &&
+                                    other.back().structureId == path.back().structureId
+                              : other == path;
+        if (same) out.push_back(i);
+    }
+    return out;
+}
+
+}  // namespace phigs

@@ -1,0 +1,115 @@
+// The only file that includes GLFW for input.
+#include "phigs/window/GlfwInputSource.h"
+
+#include <GLFW/glfw3.h>
+
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+namespace phigs {
+namespace {
+
+std::mutex registryMutex;
+std::map<GLFWwindow*, GlfwInputSource*>& registry() {
+    static std::map<GLFWwindow*, GlfwInputSource*> sources;
+    return sources;
+}
+
+GlfwInputSource* sourceOf(GLFWwindow* window) {
+    std::lock_guard lock(registryMutex);
+    const auto it = registry().find(window);
+    return it == registry().end() ? nullptr : it->second;
+}
+
+/// Window coordinates to framebuffer pixels.
+glm::dvec2 pixels(GLFWwindow* window, double x, double y) {
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    glfwGetWindowSize(window, &ww, &wh);
+    glfwGetFramebufferSize(window, &fw, &fh);
+    const double sx = ww > 0 ? static_cast<double>(fw) / ww : 1.0;
+    const double sy = wh > 0 ? static_cast<double>(fh) / wh : 1.0;
+    return {x * sx, y * sy};
+}
+
+glm::dvec2 cursor(GLFWwindow* window) {
+    double x = 0, y = 0;
+    glfwGetCursorPos(window, &x, &y);
+    return pixels(window, x, y);
+}
+
+void onButton(GLFWwindow* window, int button, int action, int mods) {
+    GlfwInputSource* source = sourceOf(window);
+    if (!source) return;
+    window_event::Button b = window_event::Button::Left;
+    if (button == GLFW_MOUSE_BUTTON_RIGHT) b = window_event::Button::Right;
+    if (button == GLFW_MOUSE_BUTTON_MIDDLE) b = window_event::Button::Middle;
+    const glm::dvec2 at = cursor(window);
+    if (action == GLFW_PRESS)
+        source->post(window_event::ButtonPress{b, at, (mods & GLFW_MOD_SHIFT) != 0});
+    else if (action == GLFW_RELEASE)
+        source->post(window_event::ButtonRelease{b, at});
+}
+
+void onCursor(GLFWwindow* window, double x, double y) {
+    if (GlfwInputSource* source = sourceOf(window))
+        source->post(window_event::CursorMove{pixels(window, x, y)});
+}
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+    GlfwInputSource* source = sourceOf(window);
+    if (!source || action == GLFW_RELEASE) return;
+    using window_event::Key;
+    if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) source->post(window_event::KeyPress{Key::Enter});
+    if (key == GLFW_KEY_BACKSPACE) source->post(window_event::KeyPress{Key::Backspace});
+    if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) source->post(window_event::KeyPress{Key::Escape});
+    if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12 && action == GLFW_PRESS)
+        source->post(window_event::KeyPress{Key::Function, key - GLFW_KEY_F1 + 1});
+}
+
+void onCharacter(GLFWwindow* window, unsigned int codepoint) {
+    if (GlfwInputSource* source = sourceOf(window)) source->post(window_event::Character{codepoint});
+}
+
+}  // namespace
+
+GlfwInputSource::GlfwInputSource(GLFWwindow* window) : window_(window) {
+    if (!window_) throw std::invalid_argument("GlfwInputSource: no window");
+    {
+        std::lock_guard lock(registryMutex);
+        if (!registry().emplace(window_, this).second)
+            throw std::invalid_argument("GlfwInputSource: the window already has an input source");
+    }
+    glfwSetMouseButtonCallback(window_, onButton);
+    glfwSetCursorPosCallback(window_, onCursor);
+    glfwSetKeyCallback(window_, onKey);
+    glfwSetCharCallback(window_, onCharacter);
+}
+
+GlfwInputSource::~GlfwInputSource() {
+    glfwSetMouseButtonCallback(window_, nullptr);
+    glfwSetCursorPosCallback(window_, nullptr);
+    glfwSetKeyCallback(window_, nullptr);
+    glfwSetCharCallback(window_, nullptr);
+    std::lock_guard lock(registryMutex);
+    registry().erase(window_);
+}
+
+void GlfwInputSource::post(const WindowEvent& event) {
+    if (auto a = mapper_.handle(event)) pending_.push_back(std::move(*a));
+}
+
+std::optional<InputAction> GlfwInputSource::next(std::chrono::milliseconds timeout) {
+    if (pending_.empty()) {
+        if (timeout.count() > 0)
+            glfwWaitEventsTimeout(static_cast<double>(timeout.count()) / 1000.0);
+        else
+            glfwPollEvents();
+    }
+    if (pending_.empty()) return std::nullopt;
+    InputAction a = std::move(pending_.front());
+    pending_.pop_front();
+    return a;
+}
+
+}  // namespace phigs

@@ -1,0 +1,88 @@
+#include "InputFakes.h"
+
+#include "phigs/input/EchoLayout.h"
+#include "phigs/input/WindowEventMapper.h"
+#include "phigs/input/WorkstationInput.h"
+
+#include <catch2/catch.hpp>
+
+using namespace phigs;
+using namespace phigs::window_event;
+using phigs::test::FakeMeasurer;
+using phigs::test::IdleSource;
+
+TEST_CASE("input echo: a choice panel stacks its alternatives in equal rows", "[input]") {
+    const ChoicePanel p{2, {10, 110, 20, 80, 0, 1}, {"Wing", "Fuselage", "Tail"}};
+    CHECK(p.choiceAt({50, 25}) == 1);
+    CHECK(p.choiceAt({50, 45}) == 2);
+    CHECK(p.choiceAt({50, 79}) == 3);
+    CHECK(p.choiceAt({50, 80}) == 3);  // the bottom edge belongs to the last row
+    CHECK_FALSE(p.choiceAt({5, 45}));
+    CHECK_FALSE(p.choiceAt({50, 81}));
+    const auto [topLeft, bottomRight] = p.row(2);
+    CHECK(topLeft == glm::dvec2(10, 40));
+    CHECK(bottomRight == glm::dvec2(110, 60));
+}
+
+TEST_CASE("input echo: a slider maps position to value along its long axis", "[input]") {
+    const ValuatorSlider across{1, {0, 200, 0, 20, 0, 1}, -1.0, 3.0};
+    CHECK(across.valueAt({0, 10}) == -1.0);
+    CHECK(across.valueAt({100, 10}) == 1.0);
+    CHECK(across.valueAt({250, 10}) == 3.0);  // clamped
+    CHECK(across.knobAt(2.0) == 150.0);
+    const ValuatorSlider upright{1, {0, 20, 0, 100, 0, 1}, 0.0, 10.0};
+    CHECK(upright.valueAt({10, 100}) == 0.0);  // bottom is low
+    CHECK(upright.valueAt({10, 25}) == 7.5);
+    CHECK(upright.knobAt(7.5) == 25.0);
+}
+
+TEST_CASE("input echo: clicks in panels choose, slider drags set values, elsewhere they pick", "[input]") {
+    WindowEventMapper m;
+    EchoLayout layout;
+    layout.panels.push_back({3, {0, 100, 0, 40, 0, 1}, {"Open", "Save"}});
+    layout.sliders.push_back({2, {0, 100, 50, 60, 0, 1}, 0.0, 100.0});
+    m.setLayout(layout);
+    auto a = m.handle(ButtonPress{Button::Left, {50, 30}, false});
+    REQUIRE(a);
+    CHECK(std::get<action::Choice>(a->what).choice == 2);
+    CHECK(std::get<action::Choice>(a->what).device == 3);
+    CHECK_FALSE(m.handle(ButtonPress{Button::Left, {10, 55}, false}));  // starts the drag
+    m.handle(CursorMove{{40, 55}});
+    a = m.handle(ButtonRelease{Button::Left, {75, 58}});
+    REQUIRE(a);
+    CHECK(std::get<action::Valuator>(a->what).device == 2);
+    CHECK(std::get<action::Valuator>(a->what).value == 75.0);
+    a = m.handle(ButtonPress{Button::Left, {50, 90}, false});
+    REQUIRE(a);
+    CHECK(std::holds_alternative<action::Pick>(a->what));
+}
+
+TEST_CASE("input echo: initialising menu and slider devices gives the source its layout", "[input]") {
+    IdleSource source;
+    FakeMeasurer measurer;
+    InputQueue queue;
+    WorkstationInput input(1, source, measurer, queue);
+    CHECK(input.echoLayout().empty());
+    DeviceInitialisation c;
+    c.initial = ChoiceMeasure{InputStatus::Ok, 1};
+    c.promptEchoType = 3;
+    c.echoVolume = {0, 100, 0, 40, 0, 1};
+    c.choiceStrings = {"Open", "Save"};
+    input.initialise(InputClass::Choice, 2, c);
+    REQUIRE(source.layout.panels.size() == 1);
+    CHECK(source.layout.panels[0].device == 2);
+    CHECK(source.layout.panels[0].alternatives == std::vector<std::string>{"Open", "Save"});
+    DeviceInitialisation v;
+    v.initial = ValuatorMeasure{5};
+    v.promptEchoType = 2;
+    v.echoVolume = {0, 100, 50, 60, 0, 1};
+    v.valuatorHigh = 10;
+    input.initialise(InputClass::Valuator, 4, v);
+    REQUIRE(source.layout.sliders.size() == 1);
+    CHECK(source.layout.sliders[0].device == 4);
+    CHECK(source.layout.sliders[0].high == 10);
+    // Type 1 (the implementation's own echo) draws nothing.
+    v.promptEchoType = 1;
+    input.initialise(InputClass::Valuator, 4, v);
+    CHECK(source.layout.sliders.empty());
+}
