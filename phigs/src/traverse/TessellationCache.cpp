@@ -1,0 +1,39 @@
+#include "phigs/traverse/TessellationCache.h"
+
+namespace phigs {
+
+const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind,
+                                                       const std::function<Entry()>& build) {
+    auto it = entries_.find(key);
+    if (it != entries_.end()) {
+        ++counters_.hits;
+        it->second.used = true;
+        return it->second.entry;
+    }
+    Entry entry = build();
+    switch (kind) {
+        case Kind::Surface:
+            ++counters_.surfacesTessellated;
+            break;
+        case Kind::Curve:
+            ++counters_.curvesTessellated;
+            break;
+        case Kind::Mesh:
+            ++counters_.meshesBuilt;
+            break;
+    }
+    return entries_.emplace(key, Slot{std::move(entry), true}).first->second.entry;
+}
+
+void TessellationCache::prune() {
+    for (auto it = entries_.begin(); it != entries_.end();) {
+        if (!it->second.used) {
+            it = entries_.erase(it);
+        } else {
+            it->second.used = false;
+            ++it;
+        }
+    }
+}
+
+}  // namespace phigs
