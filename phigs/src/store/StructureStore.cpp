@@ -473,6 +473,7 @@ namespace {
 
 std::vector<StructurePath> truncateAndUnique(std::vector<StructurePath> paths, StructurePathOrder order,
                                              int depth) {
+    std::sort(paths.begin(), paths.end());
     if (depth > 0)
         for (auto& p : paths)
             if (static_cast<int>(p.size()) > depth) {
