@@ -7,7 +7,9 @@ using namespace phigs;
 
 namespace {
 
-int labelAt(const StructureStore& store, int id, int n) { return std::get<LabelElement>(store.elementAt(id, n)).label; }
+int labelAt(const StructureStore& store, int id, int n) {
+    return std::get<LabelElement>(store.elementAt(id, n)).label;
+}
 
 std::vector<int> labels(const StructureStore& store, int id) {
     std::vector<int> out;
@@ -137,7 +139,9 @@ TEST_CASE("invalid elements are refused and leave the structure unchanged", "[st
     CellArrayElement cells;
     cells.columns = 2, cells.rows = 2, cells.colourIndices = {1, 2, 3};
     CHECK(errorOf([&] { store.insert(cells); }) == errors::InvalidElementData);
-    CHECK(errorOf([&] { store.insert(IndexAttribute{ElementType::PolylineColour, 2}); }) == errors::InvalidElementData);
+    CHECK(errorOf([&] {
+              store.insert(IndexAttribute{ElementType::PolylineColour, 2});
+          }) == errors::InvalidElementData);
     NurbsCurveElement curve;
     curve.curve.degree = 2;
     curve.curve.knots = {0, 0, 1, 1};
@@ -313,18 +317,20 @@ TEST_CASE("change structure identifier, references, and both", "[store]") {
 TEST_CASE("element search with inclusion and exclusion sets both ways", "[store]") {
     StructureStore store;
     store.openStructure(1);
-    store.insert(label(1));                                    // 1
-    store.insert(polyline3({{0, 0, 0}, {1, 0, 0}}));           // 2
-    store.insert(pickId(3));                                   // 3
-    store.insert(polymarker3({{0, 0, 0}}));                    // 4
-    store.insert(label(2));                                    // 5
+    store.insert(label(1));                           // 1
+    store.insert(polyline3({{0, 0, 0}, {1, 0, 0}}));  // 2
+    store.insert(pickId(3));                          // 3
+    store.insert(polymarker3({{0, 0, 0}}));           // 4
+    store.insert(label(2));                           // 5
     std::set<ElementType> prims{ElementType::Polyline3, ElementType::Polymarker3};
     CHECK(store.elementSearch(1, 1, SearchDirection::Forward, prims, {}).elementNumber == 2);
     CHECK(store.elementSearch(1, 3, SearchDirection::Forward, prims, {}).elementNumber == 4);
     CHECK(store.elementSearch(1, 5, SearchDirection::Backward, prims, {}).elementNumber == 4);
-    CHECK(store.elementSearch(1, 4, SearchDirection::Backward, prims, {ElementType::Polymarker3}).elementNumber == 2);
+    CHECK(store.elementSearch(1, 4, SearchDirection::Backward, prims, {ElementType::Polymarker3})
+              .elementNumber == 2);
     CHECK(store.elementSearch(1, 99, SearchDirection::Backward, {ElementType::All}, {}).elementNumber == 5);
-    CHECK(store.elementSearch(1, 2, SearchDirection::Forward, {ElementType::All}, {ElementType::All}).found == false);
+    CHECK(store.elementSearch(1, 2, SearchDirection::Forward, {ElementType::All}, {ElementType::All}).found ==
+          false);
     CHECK_FALSE(store.elementSearch(1, 5, SearchDirection::Forward, prims, {}).found);
 }
 
@@ -350,8 +356,10 @@ TEST_CASE("paths to ancestors and descendants with order and depth", "[store]") 
     REQUIRE(down.size() == 2);
     CHECK(down[0] == StructurePath{{1, 1}, {2, 1}, {3, 0}});
     CHECK(down[1] == StructurePath{{1, 2}, {3, 0}});
-    CHECK(store.pathsToDescendants(3, StructurePathOrder::TopFirst, 0) == std::vector<StructurePath>{{{3, 0}}});
-    CHECK(errorOf([&] { store.pathsToAncestors(3, StructurePathOrder::TopFirst, -1); }) == errors::NegativePathDepth);
+    CHECK(store.pathsToDescendants(3, StructurePathOrder::TopFirst, 0) ==
+          std::vector<StructurePath>{{{3, 0}}});
+    CHECK(errorOf([&] { store.pathsToAncestors(3, StructurePathOrder::TopFirst, -1); }) ==
+          errors::NegativePathDepth);
     CHECK(errorOf([&] { store.pathsToDescendants(9, StructurePathOrder::TopFirst, 0); }) == 201);
 }
 
@@ -379,7 +387,8 @@ TEST_CASE("PHIGS operating states: errors 1, 2, 3, 4, 7, 53, 54", "[errors]") {
     CHECK(errorOf([&] { phigs.workstation(1); }) == errors::NoWorkstationOpen);
     CHECK(errorOf([&] { phigs.archiveContents(1); }) == errors::NoArchiveOpen);
     phigs.openWorkstation(1, WorkstationType::Window);
-    CHECK(errorOf([&] { phigs.openWorkstation(1, WorkstationType::Hardcopy); }) == errors::WorkstationIdInUse);
+    CHECK(errorOf([&] { phigs.openWorkstation(1, WorkstationType::Hardcopy); }) ==
+          errors::WorkstationIdInUse);
     CHECK(errorOf([&] { phigs.workstation(2); }) == errors::WorkstationNotOpen);
     CHECK(errorOf([&] { phigs.close(); }) == errors::NotAllClosed);
     phigs.closeWorkstation(1);

@@ -460,12 +460,12 @@ SearchResult StructureStore::elementSearch(int id, int start, SearchDirection di
         bool out = exclude.contains(ElementType::All) || exclude.contains(t);
         return in && !out;
     };
-    int step = direction == SearchDirection::Forward ? 1 : -1;
-    for (int n = std::clamp(start, 0, count); n >= 1 && n <= count; n += step)
+    // Position 0 holds no element: a forward search from it starts at element 1.
+    const bool forward = direction == SearchDirection::Forward;
+    int first = std::clamp(start, 0, count);
+    if (first == 0 && forward) first = 1;
+    for (int n = first; n >= 1 && n <= count; n += forward ? 1 : -1)
         if (matches(elementType(s->elements[static_cast<std::size_t>(n - 1)].value))) return {true, n};
-    if (start <= 0 && direction == SearchDirection::Forward)
-        for (int n = 1; n <= count; ++n)
-            if (matches(elementType(s->elements[static_cast<std::size_t>(n - 1)].value))) return {true, n};
     return {};
 }
 
