@@ -126,7 +126,10 @@ struct Colour {
     glm::dvec3 rgb{1.0};
     static Colour indexed(int i) { return {false, i, glm::dvec3(1.0)}; }
     static Colour fromRgb(glm::dvec3 c) { return {true, 0, c}; }
-    bool operator==(const Colour&) const = default;
+    /// Equal when they name the same colour (an indexed colour's rgb and a direct one's index are unused).
+    bool operator==(const Colour& o) const {
+        return direct == o.direct && (direct ? rgb == o.rgb : index == o.index);
+    }
 };
 
 // ---- output primitives. 2D forms keep z = 0 and set twoD, so inquiries report the 2D type.
