@@ -267,3 +267,41 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     CHECK(counters.surfacesTessellated == 3);
     CHECK(std::get<DrawMesh>(third.items[1].primitive).mesh->triangles.size() == 2 * 3);
 }
+
+TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full traversal", "[traverse]") {
+    Scene s;
+    Light ambient;
+    s.ws->setLightSourceRepresentation(3, ambient);
+    s.build(10, {line, pickId(4), polymarker3({{0, 0, 0}})});
+    s.build(11, {LightSourceStateAttribute{{3}, {}}, line, executeStructure(10)});
+    s.build(1, {addNamesToSet({1}), executeStructure(11),
+                localTransformation3(glm::dmat4(2.0), Composition::Replace), executeStructure(11),
+                executeStructure(10)});
+    s.ws->postStructure(1, 0);
+    s.ws->setHighlightingFilter({{1}, {}});
+    auto summary = [](const DrawList& list) {
+        std::vector<std::tuple<std::vector<DrawPathLevel>, glm::dmat4, bool, int, std::size_t>> out;
+        for (const auto& item : list.items)
+            out.emplace_back(item.source.path, item.modelTransform, item.highlighted, item.lightSet,
+                             item.primitive.index());
+        return out;
+    };
+    Traverser& traverser = s.ws->traverser();
+    DrawList first = s.ws->display();
+    CHECK(traverser.elementsReused() == 0);
+    s.ws->redrawAllStructures();
+    // the second traversal walks only structure 1; the three executes are reused
+    CHECK(traverser.elementsTraversed() == 5);
+    CHECK(traverser.elementsReused() == 6 + 6 + 3);
+    CHECK(summary(s.ws->display()) == summary(first));
+    // edit the shared leaf: its subtrees are walked again, nothing else
+    s.store->openStructure(10);
+    s.store->insert(line);
+    s.store->closeStructure();
+    DrawList edited = s.ws->display();
+    CHECK(edited.items.size() == first.items.size() + 3);
+    traverser.setIncremental(false);
+    s.ws->redrawAllStructures();
+    CHECK(summary(s.ws->display()) == summary(edited));
+    CHECK(traverser.elementsReused() == 0);
+}

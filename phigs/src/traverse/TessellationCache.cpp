@@ -27,7 +27,10 @@ const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind
 
 void TessellationCache::prune() {
     for (auto it = entries_.begin(); it != entries_.end();) {
-        if (!it->second.used) {
+        const Entry& e = it->second.entry;
+        // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid keys.
+        bool held = e.mesh.use_count() > 1 || e.surface.use_count() > 1 || e.curve.use_count() > 1;
+        if (!it->second.used && !held) {
             it = entries_.erase(it);
         } else {
             it->second.used = false;

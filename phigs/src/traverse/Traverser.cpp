@@ -9,7 +9,7 @@
 
 namespace phigs {
 
-namespace {
+namespace detail {
 
 /// The PHIGS traversal state list (one copy per open EXECUTE STRUCTURE level).
 struct State {
@@ -55,7 +55,41 @@ struct State {
 
     State() { individual.fill(true); }
     bool ind(AspectId a) const { return individual[static_cast<std::size_t>(a)]; }
+    bool operator==(const State&) const = default;
 };
+
+}  // namespace detail
+
+/// What one execution of a structure (with its descendants) produced, for a given inherited
+/// state and path: reused as long as no structure of that subtree changed.
+struct Traverser::SubtreeCache {
+    struct Entry {
+        detail::State entry;
+        std::vector<DrawPathLevel> prefix;
+        std::uint64_t stamp = 0;
+        std::vector<DrawItem> items;
+        std::vector<int> lightKeys, depthCues;
+        std::uint64_t elements = 0;
+        bool used = true;
+    };
+    std::map<int, std::vector<Entry>> entries;
+    std::map<int, std::pair<std::uint64_t, std::vector<int>>>
+        children;  ///< per structure: version, executed ids
+    std::map<std::set<int>, int> lightKeys;
+    std::vector<std::set<int>> lightKeySets;
+
+    void prune() {
+        for (auto& [id, list] : entries) {
+            std::erase_if(list, [](const Entry& e) { return !e.used; });
+            for (auto& e : list) e.used = false;
+        }
+        std::erase_if(entries, [](const auto& kv) { return kv.second.empty(); });
+    }
+};
+
+namespace {
+
+using detail::State;
 
 glm::dmat4 compose(const glm::dmat4& current, const TransformElement& t) {
     switch (t.composition) {
@@ -288,10 +322,18 @@ bool anyIndexed(const std::vector<Colour>& colours) {
 class Walk {
 public:
     Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
-         TessellationCache& cache, DrawList& out)
-        : store_(store), tables_(tables), filters_(filters), cache_(cache), out_(out), resolve_{tables} {}
+         TessellationCache& cache, Traverser::SubtreeCache* subtrees, DrawList& out)
+        : store_(store),
+          tables_(tables),
+          filters_(filters),
+          cache_(cache),
+          out_(out),
+          resolve_{tables},
+          subtrees_(subtrees),
+          baseStamp_(baseStamp(tables, filters)) {}
 
     std::uint64_t visited = 0;
+    std::uint64_t reused = 0;
 
     void root(int id) {
         State state;
@@ -312,12 +354,104 @@ private:
                 child.global = state.global * state.local;
                 child.local = glm::dmat4(1.0);
                 path_.push_back({id, number, state.pickId});
-                walk(x->structureId, child);
+                execute(x->structureId, child);
                 path_.pop_back();
                 continue;
             }
             apply(*s, element, number, state);
         }
+    }
+
+    static std::uint64_t mix(std::uint64_t hash, std::uint64_t value) {
+        return (hash ^ value) * 1099511628211ull;
+    }
+
+    static std::uint64_t baseStamp(const WorkstationTables& tables, const TraversalFilters& filters) {
+        std::uint64_t h = mix(1469598103934665603ull, tables.generation);
+        auto set = [&](const std::set<int>& names) {
+            h = mix(h, names.size());
+            for (int n : names) h = mix(h, static_cast<std::uint32_t>(n));
+        };
+        auto filter = [&](const std::optional<NameSetFilter>& f) {
+            h = mix(h, f.has_value());
+            if (f) set(f->inclusion), set(f->exclusion);
+        };
+        filter(filters.pick), filter(filters.highlight), filter(filters.invisibility),
+            set(filters.initialNames);
+        return h;
+    }
+
+    /// A hash of the versions of every structure a subtree executes, memoized per traversal.
+    std::uint64_t subtreeStamp(int id) {
+        if (auto it = stamps_.find(id); it != stamps_.end()) return it->second;
+        const Structure* s = store_.find(id);
+        std::uint64_t h = mix(mix(baseStamp_, static_cast<std::uint32_t>(id)), s ? s->version : 0);
+        if (s) {
+            auto& known = subtrees_->children[id];
+            if (known.first != s->version) {
+                known.first = s->version;
+                known.second.clear();
+                for (const auto& e : s->elements)
+                    if (auto x = std::get_if<ExecuteStructureElement>(&e.value))
+                        known.second.push_back(x->structureId);
+            }
+            std::vector<int> children = known.second;
+            for (int child : children) h = mix(h, subtreeStamp(child));
+        }
+        stamps_[id] = h;
+        return h;
+    }
+
+    void execute(int id, State& child) {
+        if (!subtrees_) {
+            walk(id, child);
+            return;
+        }
+        const std::uint64_t stamp = subtreeStamp(id);
+        auto& entries = subtrees_->entries[id];
+        for (auto& e : entries)
+            if (e.stamp == stamp && e.prefix == path_ && e.entry == child) {
+                e.used = true;
+                reuse(e);
+                return;
+            }
+        const std::size_t firstItem = out_.items.size();
+        const std::uint64_t firstElements = visited + reused;
+        State entryState = child;
+        walk(id, child);
+        Traverser::SubtreeCache::Entry e;
+        e.entry = std::move(entryState);
+        e.prefix = path_;
+        e.stamp = stamp;
+        e.items.assign(out_.items.begin() + static_cast<long>(firstItem), out_.items.end());
+        e.lightKeys.assign(lightKeys_.begin() + static_cast<long>(firstItem), lightKeys_.end());
+        e.depthCues.assign(cueIndices_.begin() + static_cast<long>(firstItem), cueIndices_.end());
+        e.elements = visited + reused - firstElements;
+        auto& list = subtrees_->entries[id];  // walk() may have added entries
+        if (list.size() >= 8) list.erase(list.begin());
+        list.push_back(std::move(e));
+    }
+
+    void reuse(const Traverser::SubtreeCache::Entry& e) {
+        reused += e.elements;
+        for (std::size_t i = 0; i < e.items.size(); ++i) {
+            DrawItem item = e.items[i];
+            item.lightSet = e.lightKeys[i] < 0
+                                ? -1
+                                : lightSet(subtrees_->lightKeySets[static_cast<std::size_t>(e.lightKeys[i])]);
+            item.depthCue = e.depthCues[i] < 0 ? -1 : depthCue(e.depthCues[i]);
+            out_.items.push_back(std::move(item));
+            lightKeys_.push_back(e.lightKeys[i]);
+            cueIndices_.push_back(e.depthCues[i]);
+        }
+    }
+
+    int lightKey(const std::set<int>& active) {
+        if (active.empty() || !subtrees_) return -1;
+        auto [it, fresh] =
+            subtrees_->lightKeys.try_emplace(active, static_cast<int>(subtrees_->lightKeySets.size()));
+        if (fresh) subtrees_->lightKeySets.push_back(active);
+        return it->second;
     }
 
     DrawItem* emit(const Structure& s, int number, const State& state, DrawPrimitive primitive) {
@@ -334,6 +468,8 @@ private:
         item.source.path.push_back({s.id, number, state.pickId});
         item.source.structureVersion = s.version;
         out_.items.push_back(std::move(item));
+        lightKeys_.push_back(lightKey(state.lights));
+        cueIndices_.push_back(item.depthCue < 0 ? -1 : cueTableIndex(state.depthCueIndex));
         return &out_.items.back();
     }
 
@@ -349,6 +485,8 @@ private:
         }
         return it->second;
     }
+
+    int cueTableIndex(int index) const { return tables_.depthCues.contains(index) ? index : 0; }
 
     int depthCue(int index) {
         auto entry = tables_.depthCues.find(index);
@@ -593,9 +731,23 @@ private:
     std::vector<DrawPathLevel> path_;
     std::map<std::set<int>, int> lightSets_;
     std::map<int, int> depthCues_;
+    Traverser::SubtreeCache* subtrees_;
+    std::uint64_t baseStamp_;
+    std::map<int, std::uint64_t> stamps_;
+    std::vector<int> lightKeys_, cueIndices_;  ///< per emitted item, for the subtree cache
 };
 
 }  // namespace
+
+Traverser::Traverser() : subtrees_(std::make_unique<SubtreeCache>()) {
+}
+
+Traverser::~Traverser() = default;
+
+void Traverser::setIncremental(bool incremental) {
+    if (incremental && !subtrees_) subtrees_ = std::make_unique<SubtreeCache>();
+    if (!incremental) subtrees_.reset();
+}
 
 DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>& roots,
                              const WorkstationTables& tables, const TraversalFilters& filters) {
@@ -609,10 +761,12 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     out.viewportMax = tables.viewportMax;
     out.background = glm::vec3(tables.colours.get(0));
     out.hiddenSurfaceRemoval = tables.hlhsrMode != 0;
-    Walk walk(store, tables, filters, cache_, out);
+    Walk walk(store, tables, filters, cache_, subtrees_.get(), out);
     for (int root : roots) walk.root(root);
     elementsTraversed_ = walk.visited;
+    elementsReused_ = walk.reused;
     cache_.prune();
+    if (subtrees_) subtrees_->prune();
     return out;
 }
 

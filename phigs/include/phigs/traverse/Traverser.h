@@ -7,6 +7,7 @@
 #include "phigs/ws/WorkstationTables.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <set>
 #include <vector>
@@ -29,6 +30,11 @@ struct TraversalFilters {
 /// Keeps a tessellation cache across traversals.
 class Traverser {
 public:
+    Traverser();
+    ~Traverser();
+    Traverser(const Traverser&) = delete;
+    Traverser& operator=(const Traverser&) = delete;
+
     /// `roots` in drawing order (lowest display priority first).
     DrawList traverse(const StructureStore& store, const std::vector<int>& roots,
                       const WorkstationTables& tables, const TraversalFilters& filters = {});
@@ -37,10 +43,19 @@ public:
     const TessellationCache& cache() const { return cache_; }
     /// Elements visited by the last traversal.
     std::uint64_t elementsTraversed() const { return elementsTraversed_; }
+    /// Elements of the last traversal not visited because an executed structure's subtree was
+    /// unchanged (same inherited state, path and versions) and its draw items were reused.
+    std::uint64_t elementsReused() const { return elementsReused_; }
+    /// Incremental traversal (the default) reuses unchanged executed subtrees; off: walk everything.
+    void setIncremental(bool incremental);
+
+    struct SubtreeCache;
 
 private:
     TessellationCache cache_;
+    std::unique_ptr<SubtreeCache> subtrees_;
     std::uint64_t elementsTraversed_ = 0;
+    std::uint64_t elementsReused_ = 0;
 };
 
 }  // namespace phigs
