@@ -1,6 +1,7 @@
 #include "geom/Basis.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -118,4 +119,44 @@ TEST_CASE("bad curves and surfaces are refused with the rule they break", "[geom
     REQUIRE_THROWS_WITH(Surface(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2, {{0, 0, 0}}),
                         Catch::Contains("control points given"));
     REQUIRE_THROWS_AS(Curve(3, {0, 0, 0, 0, 0, 1, 1, 1}, pts), GeometryError);
+}
+
+TEST_CASE("the grid evaluator agrees with the plain de Boor path", "[geom][evaluate][grid]") {
+    std::mt19937 rng(19);
+    std::uniform_real_distribution<double> coord(-1.0, 1.0), wdist(0.5, 2.0), unit(0.0, 1.0);
+    for (bool rational : {false, true}) {
+        const std::size_t nu = 9, nv = 7;
+        std::vector<glm::dvec3> pts;
+        std::vector<double> wts;
+        for (std::size_t i = 0; i < nu * nv; ++i) {
+            pts.emplace_back(coord(rng), coord(rng), coord(rng));
+            if (rational) wts.push_back(wdist(rng));
+        }
+        const Surface s(3, 2, {0, 0, 0, 0, 0.1, 0.3, 0.3, 0.6, 0.8, 1, 1, 1, 1},
+                        {0, 0, 0, 0.2, 0.5, 0.55, 0.9, 1, 1, 1}, nu, nv, pts, wts);
+        std::vector<double> us{0.0, 0.3, 1.0}, vs{1.0, 0.0, 0.55};
+        for (int k = 0; k < 20; ++k) {
+            us.push_back(unit(rng));
+            vs.push_back(unit(rng));
+        }
+        const GridEvaluator grid(s);
+        const std::vector<GridSample> out = grid.evaluate(us, vs);
+        REQUIRE(out.size() == us.size() * vs.size());
+        for (std::size_t i = 0; i < us.size(); ++i)
+            for (std::size_t j = 0; j < vs.size(); ++j) {
+                const SurfaceDerivatives d = derivatives(s, us[i], vs[j], 1);
+                const GridSample& g = out[i * vs.size() + j];
+                REQUIRE(glm::length(g.point - d.at(0, 0)) < 1e-12);
+                REQUIRE(glm::length(g.su - d.at(1, 0)) < 1e-10);
+                REQUIRE(glm::length(g.sv - d.at(0, 1)) < 1e-10);
+                REQUIRE(glm::length(g.normal - normal(s, us[i], vs[j])) < 1e-10);
+            }
+        std::vector<GridSample> tooSmall(3);
+        REQUIRE_THROWS_WITH(grid.evaluate(us, vs, tooSmall), Catch::Contains("samples"));
+    }
+    const Curve circle = quarterCircleTimesFour();
+    const std::vector<double> us{0.0, 0.1, 0.25, 0.9, 1.0};
+    const auto points = evaluateMany(circle, us);
+    for (std::size_t k = 0; k < us.size(); ++k)
+        REQUIRE(glm::length(points[k] - evaluate(circle, us[k])) < 1e-15);
 }

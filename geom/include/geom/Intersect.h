@@ -1,0 +1,32 @@
+#pragma once
+
+#include "geom/Surface.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace geom {
+
+/// One crossing of a line with a surface: point = origin + t * direction, uv the surface
+/// parameters there, piece the Bézier patch index in extractBezier(surface) order.
+struct LineSurfaceHit {
+    double t = 0.0;
+    glm::dvec2 uv{0.0};
+    glm::dvec3 point{0.0};
+    std::size_t piece = 0;
+};
+
+/// Every intersection of the infinite line origin + t * direction with the surface, sorted by
+/// t. Each hit lies on the surface within 1e-9 of the surface's size; tangent contacts count
+/// once. For many lines against one surface, build a SurfaceIntersector once instead.
+std::vector<LineSurfaceHit> intersectLine(const Surface& surface, const glm::dvec3& origin,
+                                          const glm::dvec3& direction);
+
+/// The hits of intersectLine with t >= 0 (a ray from origin).
+std::vector<LineSurfaceHit> intersectRay(const Surface& surface, const glm::dvec3& origin,
+                                         const glm::dvec3& direction);
+
+}  // namespace geom

@@ -1,0 +1,17 @@
+#pragma once
+
+#include "geom/Curve.h"
+#include "geom/Surface.h"
+
+#include <utility>
+
+namespace geom {
+
+/// Splits a curve at u strictly inside its domain into the curves over [start, u] and [u, end]
+/// (knot insertion up to multiplicity degree, then both halves clamped at u).
+std::pair<Curve, Curve> split(const Curve& curve, double u);
+
+/// Splits a surface at u (alongV false) or at v (alongV true) into its two halves.
+std::pair<Surface, Surface> split(const Surface& surface, double t, bool alongV);
+
+}  // namespace geom

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "geom/BezierPatchTree.h"
+#include "geom/Intersect.h"
+#include "geom/Surface.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace geom {
+
+/// Line/surface intersection against one surface, many times: the Bézier patches and their
+/// box tree are built once. Each query projects candidate patches onto the plane across the
+/// line, subdivides while the projected box holds the origin, and polishes each root by Newton.
+class SurfaceIntersector {
+public:
+    explicit SurfaceIntersector(const Surface& surface);
+
+    /// All hits on the infinite line origin + t * direction, sorted by t (see intersectLine).
+    std::vector<LineSurfaceHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction) const;
+
+    const BezierPatchTree& tree() const { return tree_; }
+
+private:
+    void intersectPatch(std::size_t patch, const glm::dvec3& origin, const glm::dvec3& direction,
+                        const glm::dvec3& n1, const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const;
+
+    BezierPatchTree tree_;
+};
+
+}  // namespace geom

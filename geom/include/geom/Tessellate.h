@@ -1,0 +1,37 @@
+#pragma once
+
+#include "geom/Curve.h"
+#include "geom/Surface.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace geom {
+
+/// A triangle mesh of a surface: one position, unit normal and (u, v) per vertex, three vertex
+/// indices per triangle, counter-clockwise seen from the side Su x Sv points to.
+struct SurfaceMesh {
+    std::vector<glm::dvec3> positions, normals;
+    std::vector<glm::dvec2> uv;
+    std::vector<std::uint32_t> triangles;
+};
+
+/// A (segmentsU + 1) x (segmentsV + 1) grid of vertices, evenly spaced in parameter; vertex
+/// (i, j) is at index i * (segmentsV + 1) + j.
+SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segmentsV);
+
+/// A mesh whose distance from the surface stays within tolerance: a tensor grid whose
+/// parameter lines are refined, span by span, until the surface point at every triangle edge
+/// midpoint and centre lies within tolerance of the mesh point at the same (u, v). Every
+/// parameter line runs through the whole surface, so neighbouring Bézier pieces share their
+/// edge vertices and the mesh has no cracks or T-junctions.
+SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
+
+/// A polyline through the curve whose chords stay within tolerance of it (checked at the
+/// quarter points of every chord), from the domain start to its end.
+std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance);
+
+}  // namespace geom

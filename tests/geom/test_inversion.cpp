@@ -1,0 +1,93 @@
+#include "GeomTestUtil.h"
+#include "geom/CurveProjector.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/Inversion.h"
+#include "geom/Primitives.h"
+#include "geom/SurfaceProjector.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <random>
+
+using namespace geom;
+
+TEST_CASE("closest points on a sphere and a circle are exact", "[geom][inversion]") {
+    const Surface sphere = makeSphere(2.0);
+    const SurfaceProjector projector(sphere);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> c(-3.0, 3.0);
+    for (int trial = 0; trial < 100; ++trial) {
+        const glm::dvec3 p(c(rng), c(rng), c(rng));
+        if (glm::length(p) < 0.3) continue;
+        const SurfacePoint q = projector.closestPoint(p);
+        REQUIRE(std::abs(q.distance - std::abs(glm::length(p) - 2.0)) < 1e-12);
+        REQUIRE(glm::length(q.point - 2.0 * glm::normalize(p)) < 1e-11);
+        REQUIRE(glm::length(evaluate(sphere, q.uv.x, q.uv.y) - q.point) < 1e-12);
+    }
+    const Curve circle = makeCircle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.5);
+    const CurveProjector curveProjector(circle);
+    for (int trial = 0; trial < 100; ++trial) {
+        const glm::dvec3 p(c(rng), c(rng), 0.5 * c(rng));
+        const CurvePoint q = curveProjector.closestPoint(p);
+        const double r = std::sqrt(p.x * p.x + p.y * p.y);
+        if (r < 0.1) continue;
+        REQUIRE(std::abs(q.distance - std::hypot(r - 1.5, p.z)) < 1e-12);
+        REQUIRE(glm::length(evaluate(circle, q.u) - q.point) < 1e-12);
+    }
+}
+
+TEST_CASE("points just off a surface invert to their foot point", "[geom][inversion]") {
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int surfaceIndex = 0; surfaceIndex < 3; ++surfaceIndex) {
+        const Surface s = geomtest::bumpySurface(rng, 3, 3, 8, 8, surfaceIndex == 1);
+        const SurfaceProjector projector(s);
+        for (int trial = 0; trial < 60; ++trial) {
+            const double u = 0.02 + 0.96 * unit(rng), v = 0.02 + 0.96 * unit(rng);
+            const glm::dvec3 foot = evaluate(s, u, v);
+            const double h = (unit(rng) - 0.5) * 2e-3;
+            const glm::dvec3 p = foot + h * normal(s, u, v);
+            const SurfacePoint q = projector.closestPoint(p);
+            REQUIRE(std::abs(q.distance - std::abs(h)) < 1e-12);
+            REQUIRE(glm::length(q.point - foot) < 1e-9);
+            const SurfacePoint local = closestPoint(s, p, glm::dvec2(u + 0.01, v - 0.01));
+            REQUIRE(std::abs(local.distance - std::abs(h)) < 1e-12);
+        }
+    }
+}
+
+TEST_CASE("closest points are no farther than dense sampling finds", "[geom][inversion]") {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> c(-1.5, 1.5);
+    const Surface s = geomtest::randomSurface(rng, 3, 2, 6, 5, true, true);
+    const SurfaceProjector projector(s);
+    const Curve curve = geomtest::randomCurve(rng, 3, 9, true, true);
+    const CurveProjector curveProjector(curve);
+    for (int trial = 0; trial < 20; ++trial) {
+        const glm::dvec3 p(c(rng), c(rng), c(rng));
+        double sampled = 1e300;
+        for (int i = 0; i <= 120; ++i)
+            for (int j = 0; j <= 120; ++j)
+                sampled = std::min(sampled, glm::length(evaluate(s, i / 120.0, j / 120.0) - p));
+        const SurfacePoint q = projector.closestPoint(p);
+        REQUIRE(q.distance <= sampled + 1e-12);
+        REQUIRE(std::abs(glm::length(q.point - p) - q.distance) < 1e-12);
+        double curveSampled = 1e300;
+        for (int i = 0; i <= 4000; ++i)
+            curveSampled = std::min(curveSampled, glm::length(evaluate(curve, i / 4000.0) - p));
+        const CurvePoint cq = curveProjector.closestPoint(p);
+        REQUIRE(cq.distance <= curveSampled + 1e-12);
+        REQUIRE(glm::length(evaluate(curve, cq.u) - cq.point) < 1e-12);
+    }
+}
+
+TEST_CASE("point inversion refuses non-finite input", "[geom][inversion]") {
+    const Surface sphere = makeSphere(1.0);
+    REQUIRE_THROWS_WITH(closestPoint(sphere, glm::dvec3(std::nan(""), 0, 0)), Catch::Contains("non-finite"));
+    const Curve circle = makeCircle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0);
+    REQUIRE_THROWS_AS(closestPoint(circle, glm::dvec3(0, INFINITY, 0)), GeometryError);
+    REQUIRE_THROWS_WITH(closestPoint(circle, glm::dvec3(0, 1, 0), std::nan("")), Catch::Contains("guess"));
+}

@@ -1,0 +1,98 @@
+#include "geom/Curvature.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/KnotInsertion.h"
+#include "geom/Primitives.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+using namespace geom;
+
+namespace {
+
+template <class F>
+double worstOver(const Surface& s, F&& error, int samples = 40) {
+    double worst = 0.0;
+    for (int i = 0; i <= samples; ++i)
+        for (int j = 0; j <= samples; ++j) {
+            const double u = s.domainStartU() + (s.domainEndU() - s.domainStartU()) * i / samples;
+            const double v = s.domainStartV() + (s.domainEndV() - s.domainStartV()) * j / samples;
+            worst = std::max(worst, std::abs(error(evaluate(s, u, v), u, v)));
+        }
+    return worst;
+}
+
+double radial(const glm::dvec3& p) {
+    return std::sqrt(p.x * p.x + p.y * p.y);
+}
+
+}  // namespace
+
+TEST_CASE("rational quadrics evaluate to their analytic shapes within 1e-12", "[geom][exact]") {
+    const Curve circle = makeCircle({1, 2, 3}, {0, 1, 0}, {0, 0, 1}, 2.5);
+    for (int i = 0; i <= 400; ++i) {
+        const glm::dvec3 p = evaluate(circle, i / 400.0);
+        REQUIRE(std::abs(glm::length(p - glm::dvec3(1, 2, 3)) - 2.5) < 1e-12);
+        REQUIRE(std::abs(p.x - 1.0) < 1e-12);
+    }
+    const Surface sphere = makeSphere(2.0);
+    REQUIRE(worstOver(sphere, [](const glm::dvec3& p, double, double) { return glm::length(p) - 2.0; }) <
+            1e-12);
+    const Surface cylinder = makeCylinder(1.5, 3.0);
+    REQUIRE(worstOver(cylinder, [](const glm::dvec3& p, double, double) { return radial(p) - 1.5; }) < 1e-12);
+    REQUIRE(worstOver(cylinder, [](const glm::dvec3& p, double u, double) { return p.z - 3.0 * u; }) < 1e-12);
+    const Surface cone = makeCone(2.0, 4.0);
+    REQUIRE(worstOver(cone, [](const glm::dvec3& p, double, double) {
+                return radial(p) - 2.0 * (1 - p.z / 4.0);
+            }) < 1e-12);
+    const Surface torus = makeTorus(3.0, 1.0);
+    REQUIRE(worstOver(torus, [](const glm::dvec3& p, double, double) {
+                const double a = radial(p) - 3.0;
+                return std::sqrt(a * a + p.z * p.z) - 1.0;
+            }) < 1e-12);
+    // Knot refinement keeps them exact.
+    const std::vector<double> extra{0.1, 0.3, 0.3, 0.77};
+    const Surface refined = refineKnotsV(refineKnotsU(torus, extra), extra);
+    REQUIRE(worstOver(refined, [](const glm::dvec3& p, double, double) {
+                const double a = radial(p) - 3.0;
+                return std::sqrt(a * a + p.z * p.z) - 1.0;
+            }) < 1e-12);
+}
+
+TEST_CASE("normals and curvatures of the quadrics", "[geom][curvature]") {
+    const Surface sphere = makeSphere(2.0);
+    for (double u : {0.1, 0.3, 0.5, 0.61, 0.9})
+        for (double v : {0.0, 0.2, 0.45, 0.8}) {
+            const glm::dvec3 p = evaluate(sphere, u, v);
+            const glm::dvec3 n = normal(sphere, u, v);
+            REQUIRE(glm::length(glm::cross(n, p / 2.0)) < 1e-12);
+            const SurfaceCurvature c = curvature(sphere, u, v);
+            REQUIRE(c.gaussian == Approx(0.25).epsilon(1e-11));
+            REQUIRE(std::abs(c.mean) == Approx(0.5).epsilon(1e-11));
+        }
+    // The poles are collapsed edges: the normal is still the radial direction.
+    REQUIRE(glm::length(glm::cross(normal(sphere, 0.0, 0.3), glm::dvec3(0, 0, 1))) < 1e-6);
+    REQUIRE(glm::length(glm::cross(normal(sphere, 1.0, 0.7), glm::dvec3(0, 0, 1))) < 1e-6);
+    REQUIRE_THROWS_WITH(curvature(sphere, 0.0, 0.3), Catch::Contains("degenerate"));
+
+    const Surface cylinder = makeCylinder(1.5, 3.0);
+    const SurfaceCurvature cc = curvature(cylinder, 0.4, 0.3);
+    REQUIRE(std::abs(cc.gaussian) < 1e-12);
+    REQUIRE(std::abs(cc.mean) == Approx(1.0 / 3.0).epsilon(1e-11));
+
+    const Surface torus = makeTorus(3.0, 1.0);
+    // On the outer equator K = 1 / (r (R + r)); on the inner one K = -1 / (r (R - r)).
+    const double kOuter = curvature(torus, 0.0, 0.2).gaussian;
+    const double kInner = curvature(torus, 0.5, 0.2).gaussian;
+    REQUIRE(kOuter == Approx(1.0 / 4.0).epsilon(1e-10));
+    REQUIRE(kInner == Approx(-1.0 / 2.0).epsilon(1e-10));
+}
+
+TEST_CASE("primitive constructors refuse bad sizes", "[geom][exact]") {
+    REQUIRE_THROWS_WITH(makeSphere(-1.0), Catch::Contains("radius"));
+    REQUIRE_THROWS_WITH(makeTorus(1.0, 2.0), Catch::Contains("minor radius"));
+    REQUIRE_THROWS_AS(makeCylinder(1.0, std::nan("")), GeometryError);
+}

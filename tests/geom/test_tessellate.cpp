@@ -1,0 +1,132 @@
+#include "GeomTestUtil.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/Primitives.h"
+#include "geom/Tessellate.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+using namespace geom;
+
+namespace {
+
+/// Every edge is used by one or two triangles, and the edges used once (the border) form closed
+/// loops with as many edges as vertices: no T-junction or crack leaves a dangling edge.
+void requireWatertightGrid(const SurfaceMesh& mesh) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            std::uint32_t a = mesh.triangles[t + static_cast<std::size_t>(e)];
+            std::uint32_t b = mesh.triangles[t + static_cast<std::size_t>((e + 1) % 3)];
+            if (a > b) std::swap(a, b);
+            ++uses[{a, b}];
+        }
+    std::map<std::uint32_t, int> borderDegree;
+    for (const auto& [edge, count] : uses) {
+        REQUIRE(count <= 2);
+        if (count == 1) {
+            ++borderDegree[edge.first];
+            ++borderDegree[edge.second];
+        }
+    }
+    for (const auto& [vertex, degree] : borderDegree) REQUIRE(degree == 2);
+}
+
+}  // namespace
+
+TEST_CASE("uniform tessellation lays a grid over the domain", "[geom][tessellate]") {
+    const Surface sphere = makeSphere(1.0);
+    const SurfaceMesh mesh = tessellateUniform(sphere, 8, 12);
+    REQUIRE(mesh.positions.size() == 9 * 13);
+    REQUIRE(mesh.normals.size() == mesh.positions.size());
+    REQUIRE(mesh.uv.size() == mesh.positions.size());
+    REQUIRE(mesh.triangles.size() == 8 * 12 * 6);
+    for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
+        REQUIRE(glm::length(mesh.positions[k] - evaluate(sphere, mesh.uv[k].x, mesh.uv[k].y)) < 1e-12);
+        REQUIRE(glm::length(mesh.normals[k]) == Approx(1.0).margin(1e-12));
+        // The sphere's normal is radial, even at the poles (collapsed edges).
+        REQUIRE(glm::length(glm::cross(mesh.normals[k], mesh.positions[k])) < 1e-6);
+    }
+    REQUIRE(mesh.uv[2 * 13 + 5] == glm::dvec2(0.25, 5.0 / 12.0));
+    // Triangles wind so that their normal agrees with the vertex normals.
+    for (std::size_t t = 0; t < mesh.triangles.size(); t += 3) {
+        const glm::dvec3& a = mesh.positions[mesh.triangles[t]];
+        const glm::dvec3& b = mesh.positions[mesh.triangles[t + 1]];
+        const glm::dvec3& c = mesh.positions[mesh.triangles[t + 2]];
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (glm::length(n) < 1e-12) continue;  // the degenerate triangles at a pole
+        REQUIRE(glm::dot(n, mesh.normals[mesh.triangles[t]]) > 0.0);
+    }
+    REQUIRE_THROWS_WITH(tessellateUniform(sphere, 0, 4), Catch::Contains("at least 1"));
+}
+
+TEST_CASE("adaptive tessellation keeps within the tolerance of the true surface", "[geom][tessellate]") {
+    const Surface torus = makeTorus(3.0, 1.0);
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::size_t previous = 0;
+    for (double tolerance : {1e-1, 1e-2, 1e-3}) {
+        const SurfaceMesh mesh = tessellateAdaptive(torus, tolerance);
+        REQUIRE(mesh.positions.size() > previous);
+        previous = mesh.positions.size();
+        requireWatertightGrid(mesh);
+        // Points inside triangles: their distance to the torus (exact, by the implicit form).
+        double worst = 0.0;
+        for (std::size_t t = 0; t < mesh.triangles.size(); t += 3)
+            for (int k = 0; k < 3; ++k) {
+                double a = unit(rng), b = unit(rng);
+                if (a + b > 1) a = 1 - a, b = 1 - b;
+                const glm::dvec3 x =
+                    mesh.positions[mesh.triangles[t]] +
+                    a * (mesh.positions[mesh.triangles[t + 1]] - mesh.positions[mesh.triangles[t]]) +
+                    b * (mesh.positions[mesh.triangles[t + 2]] - mesh.positions[mesh.triangles[t]]);
+                const double r = std::sqrt(x.x * x.x + x.y * x.y) - 3.0;
+                worst = std::max(worst, std::abs(std::sqrt(r * r + x.z * x.z) - 1.0));
+            }
+        REQUIRE(worst <= tolerance);
+        // Vertices lie on the surface.
+        for (std::size_t k = 0; k < mesh.positions.size(); k += 7)
+            REQUIRE(glm::length(mesh.positions[k] - evaluate(torus, mesh.uv[k].x, mesh.uv[k].y)) < 1e-12);
+    }
+}
+
+TEST_CASE("adaptive tessellation of a multi-piece surface is crack-free", "[geom][tessellate]") {
+    std::mt19937 rng(6);
+    const Surface s = geomtest::bumpySurface(rng, 3, 2, 9, 7, true);
+    const SurfaceMesh mesh = tessellateAdaptive(s, 1e-3);
+    requireWatertightGrid(mesh);
+    // Every Bézier piece boundary is a parameter line of the mesh, so no edge crosses one.
+    for (double k : s.knotsU) {
+        bool found = false;
+        for (const auto& uv : mesh.uv) found = found || uv.x == k;
+        REQUIRE(found);
+    }
+    REQUIRE_THROWS_WITH(tessellateAdaptive(s, 0.0), Catch::Contains("tolerance"));
+    REQUIRE_THROWS_AS(tessellateAdaptive(s, std::nan("")), GeometryError);
+}
+
+TEST_CASE("curve tessellation keeps chords within the tolerance", "[geom][tessellate]") {
+    const Curve circle = makeCircle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0);
+    for (double tolerance : {1e-2, 1e-4}) {
+        const std::vector<glm::dvec3> points = tessellate(circle, tolerance);
+        REQUIRE(glm::length(points.front() - glm::dvec3(2, 0, 0)) < 1e-12);
+        REQUIRE(glm::length(points.back() - glm::dvec3(2, 0, 0)) < 1e-12);
+        for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+            REQUIRE(std::abs(glm::length(points[i]) - 2.0) < 1e-12);
+            // A chord's largest distance from the circle is at its midpoint.
+            REQUIRE(2.0 - glm::length(0.5 * (points[i] + points[i + 1])) <= tolerance);
+        }
+        // The sagitta formula r (1 - cos(pi / n)) bounds how few chords suffice.
+        const double fewest = M_PI / std::acos(1.0 - tolerance / 2.0);
+        REQUIRE(static_cast<double>(points.size() - 1) >= fewest);
+        REQUIRE(static_cast<double>(points.size() - 1) <= 4.0 * fewest + 8.0);
+    }
+    const Curve polyline(1, {0, 0, 1, 2, 2}, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+    REQUIRE(tessellate(polyline, 1e-3).size() == 3);
+    REQUIRE_THROWS_WITH(tessellate(circle, -1.0), Catch::Contains("tolerance"));
+}
