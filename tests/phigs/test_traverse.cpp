@@ -305,3 +305,35 @@ TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full tra
     CHECK(summary(s.ws->display()) == summary(edited));
     CHECK(traverser.elementsReused() == 0);
 }
+
+TEST_CASE("chordal deviation criteria tessellate adaptively through geom, within the tolerance",
+          "[traverse]") {
+    Scene s;
+    // a quarter cylinder of radius 1 (rational, exact): the mesh must stay within 1e-3 of it
+    const double w = std::sqrt(0.5);
+    geom::Surface cylinder(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}, 3, 2,
+                           {{1, 0, 0}, {1, 0, 1}, {1, 1, 0}, {1, 1, 1}, {0, 1, 0}, {0, 1, 1}},
+                           {1, 1, w, w, 1, 1});
+    geom::Curve arc(2, {0, 0, 0, 1, 1, 1}, {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {1, w, 1});
+    s.build(1, {ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 6, 1e-3, 1e-3},
+                ApproximationAttribute{ElementType::CurveApproximationCriteria, 6, 1e-3, 0},
+                NurbsSurfaceElement{cylinder, {}}, NurbsCurveElement{arc, 0, 0}});
+    s.ws->postStructure(1, 0);
+    const DrawList& list = s.ws->display();
+    REQUIRE(list.items.size() == 2);
+    const MeshData& mesh = *std::get<DrawMesh>(list.items[0].primitive).mesh;
+    REQUIRE(mesh.triangles.size() >= 3);
+    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+        glm::dvec3 centre = (glm::dvec3(mesh.positions[mesh.triangles[t]]) +
+                             glm::dvec3(mesh.positions[mesh.triangles[t + 1]]) +
+                             glm::dvec3(mesh.positions[mesh.triangles[t + 2]])) /
+                            3.0;
+        CHECK(std::abs(std::hypot(centre.x, centre.y) - 1.0) < 1.5e-3);
+    }
+    const auto& points = std::get<DrawCurve>(list.items[1].primitive).points;
+    REQUIRE(points.size() >= 3);
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+        glm::dvec3 mid = (points[i] + points[i + 1]) / 2.0;
+        CHECK(std::abs(std::hypot(mid.x, mid.y) - 1.0) < 1.5e-3);
+    }
+}

@@ -1,6 +1,7 @@
 #include "Tessellation.h"
 
 #include "geom/Evaluate.h"
+#include "geom/Tessellate.h"
 
 #include <glm/geometric.hpp>
 
@@ -60,10 +61,16 @@ bool insideTrim(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p)
     return inside;
 }
 
+bool chordal(int criteria, double value) {
+    return criteria >= 3 && criteria <= 8 && value > 0.0;
+}
+
 }  // namespace
 
 std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
                                         double value) {
+    const bool whole = !(end > start) || (start <= curve.domainStart() && end >= curve.domainEnd());
+    if (whole && chordal(criteria, value)) return geom::tessellate(curve, value);
     if (!(end > start)) start = curve.domainStart(), end = curve.domainEnd();
     int perSpan = segmentsPerSpan(curve.points, criteria, value);
     std::vector<glm::dvec3> points;
@@ -72,8 +79,36 @@ std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, 
     return points;
 }
 
+namespace {
+
+/// geom's adaptive mesh (within the tolerance everywhere), trimmed like the grid.
+MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
+    geom::SurfaceMesh adaptive = geom::tessellateAdaptive(element.surface, tolerance);
+    MeshData mesh;
+    for (std::size_t i = 0; i < adaptive.positions.size(); ++i) {
+        mesh.positions.push_back(glm::vec3(adaptive.positions[i]));
+        mesh.normals.push_back(glm::vec3(adaptive.normals[i]));
+        mesh.uv.push_back(glm::vec2(adaptive.uv[i]));
+    }
+    std::vector<std::vector<glm::dvec2>> loops;
+    for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
+    for (std::size_t t = 0; t + 2 < adaptive.triangles.size(); t += 3) {
+        glm::dvec2 centre = (adaptive.uv[adaptive.triangles[t]] + adaptive.uv[adaptive.triangles[t + 1]] +
+                             adaptive.uv[adaptive.triangles[t + 2]]) /
+                            3.0;
+        if (!loops.empty() && !insideTrim(loops, centre)) continue;
+        mesh.triangles.insert(mesh.triangles.end(), adaptive.triangles.begin() + static_cast<long>(t),
+                              adaptive.triangles.begin() + static_cast<long>(t + 3));
+    }
+    return mesh;
+}
+
+}  // namespace
+
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
                            const SurfaceCharacteristicsAttribute& characteristics) {
+    if (chordal(criteria.criteria, criteria.valueU) && characteristics.style != 3)
+        return adaptiveMesh(element, criteria.valueU);
     const geom::Surface& s = element.surface;
     std::vector<glm::dvec3> rowU, rowV;  // control polygons along u (first column) and v (first row)
     for (std::size_t i = 0; i < s.countU; ++i) rowU.push_back(s.point(i, 0));

@@ -1,7 +1,7 @@
 #pragma once
 
-// Private tessellation of NURBS curves and surfaces on uniform parameter grids, until geom's
-// Tessellate.h (adaptive) is merged; traversal calls only these functions.
+// Private tessellation of NURBS curves and surfaces for traversal: grids per knot span for the
+// parametric criteria, geom's adaptive tessellation for the chordal-deviation criteria.
 
 #include "phigs/store/Element.h"
 #include "phigs/traverse/DrawList.h"
@@ -23,7 +23,8 @@ std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, 
 
 /// A grid over the surface (positions, unit normals, uv, triangles counter-clockwise seen along
 /// the normal), with triangles outside the trimming loops (even-odd in (u, v)) removed and
-/// iso-parametric curves (style 3) added.
+/// iso-parametric curves (style 3) added. Criteria 3-8 with a positive tolerance (and no
+/// iso-curves asked for) use geom::tessellateAdaptive instead of the grid.
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
                            const SurfaceCharacteristicsAttribute& characteristics);
 
