@@ -337,3 +337,24 @@ TEST_CASE("chordal deviation criteria tessellate adaptively through geom, within
         CHECK(std::abs(std::hypot(mid.x, mid.y) - 1.0) < 1.5e-3);
     }
 }
+
+TEST_CASE("model clipping volume: world half spaces, indicator, intersect, restore", "[traverse]") {
+    Scene s;
+    glm::dmat4 shift = glm::translate(glm::dmat4(1.0), {0, 0, 5});
+    s.build(2, {line, ModelClipElement{2, {{{0, 0, 0}, {1, 0, 0}}}, false}, line, RestoreModelClipElement{},
+                line});
+    s.build(1, {localTransformation3(shift, Composition::Replace),
+                ModelClipElement{1, {{{0, 0, 1}, {0, 0, -1}}}, false}, line,
+                IndexAttribute{ElementType::ModelClippingIndicator, 1}, line, executeStructure(2)});
+    s.ws->postStructure(1, 0);
+    const DrawList& list = s.ws->display();
+    REQUIRE(list.items.size() == 5);
+    CHECK(list.items[0].modelClipPlanes.empty());  // indicator off
+    // z <= 1 in modelling coordinates, shifted by 5: keep z <= 6 in the world
+    CHECK(list.items[1].modelClipPlanes == std::vector<glm::dvec4>{{0, 0, -1, 6}});
+    CHECK(list.items[2].modelClipPlanes == std::vector<glm::dvec4>{{0, 0, -1, 6}});  // inherited
+    CHECK(list.items[3].modelClipPlanes.size() == 2);  // intersected in the child
+    CHECK(list.items[3].modelClipPlanes[1] == glm::dvec4(1, 0, 0, 0));
+    CHECK(list.items[4].modelClipPlanes ==
+          std::vector<glm::dvec4>{{0, 0, -1, 6}});  // restored to the inherited one
+}

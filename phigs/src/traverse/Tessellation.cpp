@@ -3,6 +3,7 @@
 #include "geom/Evaluate.h"
 #include "geom/Tessellate.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -34,7 +35,21 @@ std::vector<double> spanBreaks(const std::vector<double>& knots, double start, d
 
 namespace {
 
+/// Keeps any tessellation to at most about this many segments in one parameter direction.
+constexpr int kMaxSegments = 2048;
+
+/// A tolerance no finer than 1e-9 of the control polygon's extent, so a tiny criteria value
+/// cannot ask for an unbounded mesh.
+double boundedTolerance(const std::vector<glm::dvec3>& points, double tolerance) {
+    glm::dvec3 low(0.0), high(0.0);
+    if (!points.empty()) low = high = points.front();
+    for (const auto& p : points) low = glm::min(low, p), high = glm::max(high, p);
+    return std::max(tolerance, 1e-9 * std::max(glm::length(high - low), 1e-300));
+}
+
 std::vector<double> samples(const std::vector<double>& breaks, int perSpan) {
+    const int spans = std::max(1, static_cast<int>(breaks.size()) - 1);
+    perSpan = std::clamp(perSpan, 1, std::max(1, kMaxSegments / spans));
     std::vector<double> out;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
         for (int s = 0; s < perSpan; ++s)
@@ -70,7 +85,8 @@ bool chordal(int criteria, double value) {
 std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
                                         double value) {
     const bool whole = !(end > start) || (start <= curve.domainStart() && end >= curve.domainEnd());
-    if (whole && chordal(criteria, value)) return geom::tessellate(curve, value);
+    if (whole && chordal(criteria, value))
+        return geom::tessellate(curve, boundedTolerance(curve.points, value));
     if (!(end > start)) start = curve.domainStart(), end = curve.domainEnd();
     int perSpan = segmentsPerSpan(curve.points, criteria, value);
     std::vector<glm::dvec3> points;
@@ -83,7 +99,8 @@ namespace {
 
 /// geom's adaptive mesh (within the tolerance everywhere), trimmed like the grid.
 MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
-    geom::SurfaceMesh adaptive = geom::tessellateAdaptive(element.surface, tolerance);
+    geom::SurfaceMesh adaptive =
+        geom::tessellateAdaptive(element.surface, boundedTolerance(element.surface.points, tolerance));
     MeshData mesh;
     for (std::size_t i = 0; i < adaptive.positions.size(); ++i) {
         mesh.positions.push_back(glm::vec3(adaptive.positions[i]));

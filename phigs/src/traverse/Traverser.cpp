@@ -3,6 +3,7 @@
 #include "Tessellation.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <array>
 #include <map>
@@ -52,6 +53,8 @@ struct State {
     int viewIndex = 0, pickId = 0, hlhsrId = 0;
     std::set<int> names;
     glm::dmat4 local{1.0}, global{1.0};
+    bool modelClip = false;
+    std::vector<glm::dvec4> clipVolume, inheritedClipVolume;  ///< world coordinates
 
     State() { individual.fill(true); }
     bool ind(AspectId a) const { return individual[static_cast<std::size_t>(a)]; }
@@ -188,8 +191,11 @@ void applyIndex(State& s, const IndexAttribute& a) {
         case T::HlhsrIdentifier:
             s.hlhsrId = v;
             break;
+        case T::ModelClippingIndicator:
+            s.modelClip = v != 0;
+            break;
         default:
-            break;  // polyline shading, annotation style, colour mapping, clip indicator: no draw-list effect
+            break;  // polyline shading, annotation style, colour mapping: no draw-list effect
     }
 }
 
@@ -353,6 +359,7 @@ private:
                 State child = state;  // push: the child inherits, and nothing it sets comes back
                 child.global = state.global * state.local;
                 child.local = glm::dmat4(1.0);
+                child.inheritedClipVolume = child.clipVolume;
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
                 path_.pop_back();
@@ -467,6 +474,7 @@ private:
         item.source.path = path_;
         item.source.path.push_back({s.id, number, state.pickId});
         item.source.structureVersion = s.version;
+        if (state.modelClip) item.modelClipPlanes = state.clipVolume;
         out_.items.push_back(std::move(item));
         lightKeys_.push_back(lightKey(state.lights));
         cueIndices_.push_back(item.depthCue < 0 ? -1 : cueTableIndex(state.depthCueIndex));
@@ -644,6 +652,19 @@ private:
                         state.local = compose(state.local, e);
                     else
                         state.global = e.matrix;
+                } else if constexpr (std::is_same_v<E, ModelClipElement>) {
+                    // Half spaces are given in modelling coordinates and fixed in the world by the
+                    // composite transform current when the element is traversed.
+                    glm::dmat4 m = state.global * state.local;
+                    glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+                    if (e.op == 1) state.clipVolume.clear();
+                    for (const auto& [point, normal] : e.halfSpaces) {
+                        glm::dvec3 p = glm::dvec3(m * glm::dvec4(point, 1.0));
+                        glm::dvec3 n = normalMatrix * normal;
+                        state.clipVolume.push_back(glm::dvec4(n, -glm::dot(n, p)));
+                    }
+                } else if constexpr (std::is_same_v<E, RestoreModelClipElement>) {
+                    state.clipVolume = state.inheritedClipVolume;
                 } else if constexpr (std::is_same_v<E, NameSetElement>) {
                     for (int n : e.names)
                         if (e.add)
@@ -651,7 +672,7 @@ private:
                         else
                             state.names.erase(n);
                 }
-                // model clipping, labels and application data do not change the draw list
+                // labels and application data do not change the draw list
             },
             stored.value);
     }
