@@ -211,6 +211,9 @@ struct DrawItem {
     int lightSet = -1;     ///< index into DrawList::lightSets, -1: no lights
     int depthCue = -1;     ///< index into DrawList::depthCues, -1: none
     DrawSource source;
+    /// Model clipping volume in world coordinates: keep x where dot(plane.xyz, x) + plane.w >= 0
+    /// for every plane; empty when the model clipping indicator is off.
+    std::vector<glm::dvec4> modelClipPlanes;
 };
 
 /// One entry of the workstation's view table, as traversal found it.

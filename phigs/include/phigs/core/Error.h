@@ -1,0 +1,86 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace phigs {
+
+/// A PHIGS error: the ISO 9592 error number, the PHIGS function that detected it and, where it
+/// helps, what exactly was wrong (file and line, the offending value).
+class Error : public std::runtime_error {
+public:
+    Error(int number, std::string function, std::string detail = {});
+
+    int number() const { return number_; }
+    const std::string& function() const { return function_; }
+    const std::string& detail() const { return detail_; }
+
+private:
+    int number_;
+    std::string function_;
+    std::string detail_;
+};
+
+/// The standard's text for an error number ("Ignoring function, ..."), or a generic text.
+std::string errorMessage(int number);
+
+/// ISO 9592 error numbers used by this implementation (negative: implementation-defined).
+namespace errors {
+inline constexpr int NotPhigsClosed = 1;       ///< requires (PHCL, WSCL, STCL, ARCL)
+inline constexpr int NotPhigsOpen = 2;         ///< requires (PHOP, *, *, *)
+inline constexpr int NoWorkstationOpen = 3;    ///< requires (PHOP, WSOP, *, *)
+inline constexpr int NotAllClosed = 4;         ///< requires (PHOP, WSCL, STCL, ARCL)
+inline constexpr int NotStructureOpen = 5;     ///< requires (PHOP, *, STOP, *)
+inline constexpr int NotStructureClosed = 6;   ///< requires (PHOP, *, STCL, *)
+inline constexpr int NoArchiveOpen = 7;        ///< requires (PHOP, *, *, AROP)
+inline constexpr int BadWorkstationType = 52;  ///< workstation type not recognized
+inline constexpr int WorkstationIdInUse = 53;
+inline constexpr int WorkstationNotOpen = 54;
+inline constexpr int NoOutputCapability = 59;
+inline constexpr int BundleIndexBelowOne = 100;
+inline constexpr int RepresentationNotDefined = 101;
+inline constexpr int BundleTableFull = 103;
+inline constexpr int BadLineType = 104;
+inline constexpr int BadMarkerType = 105;
+inline constexpr int BadInteriorStyle = 108;
+inline constexpr int BadHlhsrMode = 111;
+inline constexpr int ColourIndexBelowZero = 113;
+inline constexpr int ViewIndexBelowZero = 114;
+inline constexpr int ViewIndexBelowOne = 115;
+inline constexpr int BadColour = 118;
+inline constexpr int ViewTableFull = 150;
+inline constexpr int InvalidWindow = 151;
+inline constexpr int InvalidViewport = 152;
+inline constexpr int InvalidClipLimits = 153;
+inline constexpr int ClipLimitsOutsideNpc = 154;
+inline constexpr int ProjectionViewportOutsideNpc = 155;
+inline constexpr int WorkstationWindowOutsideNpc = 156;
+inline constexpr int WorkstationViewportOutsideDisplay = 157;
+inline constexpr int FrontEqualsBack = 158;
+inline constexpr int ZeroViewPlaneNormal = 159;
+inline constexpr int ZeroViewUp = 160;
+inline constexpr int ViewUpParallelToNormal = 161;
+inline constexpr int PrpBetweenPlanes = 162;
+inline constexpr int PrpOnViewPlane = 163;
+inline constexpr int BackInFrontOfFront = 164;
+inline constexpr int IgnoringMissingStructures = 200;  ///< warning
+inline constexpr int StructureDoesNotExist = 201;
+inline constexpr int ElementDoesNotExist = 202;
+inline constexpr int PathNotFound = 203;
+inline constexpr int CeilingOutOfRange = 204;
+inline constexpr int LabelNotFound = 205;
+inline constexpr int LabelsNotFound = 206;
+inline constexpr int NegativePathDepth = 207;
+inline constexpr int BadDisplayPriority = 208;
+inline constexpr int ArchiveCannotOpen = 400;
+inline constexpr int ArchiveIdInUse = 402;
+inline constexpr int NotAnArchive = 403;
+inline constexpr int ArchiveNotOpen = 404;
+inline constexpr int ArchiveNameConflict = 405;
+inline constexpr int MissingInArchive = 407;  ///< warning
+inline constexpr int WriteError = 903;
+inline constexpr int StructureCycle = -201;      ///< execute structure would make the network cyclic
+inline constexpr int InvalidElementData = -202;  ///< element contents break the primitive's rules
+}  // namespace errors
+
+}  // namespace phigs

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "phigs/core/ErrorLog.h"
+#include "phigs/store/ArchiveFile.h"
+#include "phigs/store/StructureStore.h"
+#include "phigs/ws/Workstation.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace phigs {
+
+/// Archive conflict resolution (SET CONFLICT RESOLUTION).
+enum class ConflictResolution { Maintain, Abandon, Update };
+/// Where INQUIRE CONFLICTING STRUCTURES IN NETWORK takes the network from.
+enum class NetworkSource { Css, Archive };
+
+/// The PHIGS system: the operating states (PHIGS, workstation, structure and archive state),
+/// the central structure store, open workstations, open archive files and the error log.
+/// Functions check the state they need first (errors 1-7) and raise phigs::Error, which the
+/// error log records.
+class Phigs {
+public:
+    Phigs() : store_(&log_) {}
+
+    // ---- PHIGS state
+    /// OPEN PHIGS (error 1 when already open).
+    void open();
+    /// CLOSE PHIGS: needs every workstation, structure and archive closed (error 4).
+    void close();
+    bool isOpen() const { return open_; }
+    ErrorLog& errorLog() { return log_; }
+
+    /// The central structure store (error 2 while PHIGS is closed).
+    StructureStore& store();
+
+    // ---- workstations
+    /// OPEN WORKSTATION: errors 2, 53 (identifier in use).
+    Workstation& openWorkstation(int id, WorkstationType type);
+    /// CLOSE WORKSTATION: errors 3, 54.
+    void closeWorkstation(int id);
+    /// The open workstation `id`: errors 3 (none open), 54 (this one not open).
+    Workstation& workstation(int id);
+    std::vector<int> openWorkstationIds() const;
+    bool anyWorkstationOpen() const { return !workstations_.empty(); }
+
+    // ---- archives
+    /// OPEN ARCHIVE FILE: errors 2, 402 (identifier in use), 400, 403 (not an archive, with file and line).
+    void openArchiveFile(int archiveId, const std::filesystem::path& path);
+    void closeArchiveFile(int archiveId);
+    bool anyArchiveOpen() const { return !archives_.empty(); }
+    void setConflictResolution(ConflictResolution archival, ConflictResolution retrieval);
+    ConflictResolution archivalResolution() const { return archival_; }
+    ConflictResolution retrievalResolution() const { return retrieval_; }
+
+    void archiveStructures(int archiveId, const std::vector<int>& ids);
+    void archiveStructureNetworks(int archiveId, const std::vector<int>& ids);
+    void archiveAllStructures(int archiveId);
+    void retrieveStructures(int archiveId, const std::vector<int>& ids);
+    void retrieveStructureNetworks(int archiveId, const std::vector<int>& ids);
+    void retrieveAllStructures(int archiveId);
+    /// RETRIEVE STRUCTURE IDENTIFIERS: what the archive holds.
+    std::vector<int> archiveContents(int archiveId);
+    void deleteStructuresFromArchive(int archiveId, const std::vector<int>& ids);
+    void deleteStructureNetworksFromArchive(int archiveId, const std::vector<int>& ids);
+    void deleteAllStructuresFromArchive(int archiveId);
+    /// INQUIRE ALL CONFLICTING STRUCTURES: ids both in the store and in the archive.
+    std::vector<int> conflictingStructures(int archiveId);
+    /// INQUIRE CONFLICTING STRUCTURES IN NETWORK: of the network of `id` (in the store or the archive).
+    std::vector<int> conflictingStructuresInNetwork(int archiveId, int id, NetworkSource source);
+
+private:
+    void requireOpen(const char* function) const;
+    ArchiveFile& archive(int archiveId, const char* function);
+    void warn(int number, const char* function, std::string detail);
+    std::map<int, std::vector<Element>> cssContents(const std::set<int>& ids) const;
+    void archiveSet(int archiveId, std::set<int> ids, const char* function);
+    void retrieveSet(int archiveId, std::set<int> ids, const char* function);
+    static std::set<int> archiveNetwork(const ArchiveFile& file, int id);
+
+    ErrorLog log_;
+    bool open_ = false;
+    StructureStore store_;
+    std::map<int, std::unique_ptr<Workstation>> workstations_;
+    std::map<int, std::unique_ptr<ArchiveFile>> archives_;
+    ConflictResolution archival_ = ConflictResolution::Update;
+    ConflictResolution retrieval_ = ConflictResolution::Abandon;
+};
+
+}  // namespace phigs

@@ -1,0 +1,156 @@
+#pragma once
+
+#include "phigs/core/ErrorLog.h"
+#include "phigs/store/Structure.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace phigs {
+
+enum class EditMode { Insert, Replace };
+enum class StructureStatus { NonExistent, Empty, NotEmpty };
+enum class SearchDirection { Backward, Forward };
+/// DELETE STRUCTURE NETWORK: delete descendants referenced from outside the network too, or keep them.
+enum class ReferenceHandling { Delete, Keep };
+/// Order of the element references in an ancestor / descendant path.
+enum class StructurePathOrder { TopFirst, BottomFirst };
+
+/// One element reference (structure id, element number) of a structure path.
+struct ElementRef {
+    int structureId = 0;
+    int elementNumber = 0;
+    bool operator==(const ElementRef&) const = default;
+    auto operator<=>(const ElementRef&) const = default;
+};
+using StructurePath = std::vector<ElementRef>;
+
+/// What an element search found.
+struct SearchResult {
+    bool found = false;
+    int elementNumber = 0;
+};
+
+/// Told about changes a workstation must follow (unposting a deleted structure, moving a posting).
+class StoreListener {
+public:
+    virtual ~StoreListener() = default;
+    virtual void structureDeleted(int structureId) = 0;
+    /// CHANGE STRUCTURE REFERENCES: postings of `from` become postings of `to`.
+    virtual void referencesChanged(int from, int to) = 0;
+    /// Whether any listener has `structureId` posted (CHANGE STRUCTURE IDENTIFIER keeps it then).
+    virtual bool isPosted(int structureId) const = 0;
+};
+
+/// The central structure store (ISO 9592 clause 7.3-7.5): structures, the open structure with
+/// its element pointer and edit mode, editing, inquiries and structure networks. Every
+/// function checks its state and arguments first and throws phigs::Error before changing
+/// anything, so a refused call leaves the store as it was.
+class StructureStore {
+public:
+    explicit StructureStore(ErrorLog* log = nullptr) : log_(log) {}
+
+    void setErrorLog(ErrorLog* log) { log_ = log; }
+    void addListener(StoreListener* listener);
+    void removeListener(StoreListener* listener);
+
+    // ---- structure state
+    /// OPEN STRUCTURE: creates the structure when it does not exist; pointer at its end.
+    void openStructure(int id);
+    void closeStructure();
+    bool isStructureOpen() const { return open_.has_value(); }
+    /// The open structure's id (error 5 when none is open).
+    int openStructureId() const;
+
+    // ---- editing the open structure
+    void setEditMode(EditMode mode) { editMode_ = mode; }
+    EditMode editMode() const { return editMode_; }
+    /// Inserts after the element pointer (then points at it), or replaces the element at the
+    /// pointer (inserts when the pointer is 0). Refuses invalid elements and cyclic executes.
+    void insert(Element element);
+    void setElementPointer(int position);
+    void offsetElementPointer(int offset);
+    /// Moves the pointer to the next LABEL `label` after it (error 205 when there is none).
+    void setElementPointerAtLabel(int label);
+    int elementPointer() const;
+    /// DELETE ELEMENT: the element at the pointer; the pointer moves to the one before.
+    void deleteElement();
+    /// DELETE ELEMENT RANGE: elements between the two positions inclusive (clamped).
+    void deleteElementRange(int first, int second);
+    /// DELETE ELEMENTS BETWEEN LABELS: strictly between the next `first` and the next `second` after it.
+    void deleteElementsBetweenLabels(int first, int second);
+    /// COPY ALL ELEMENTS FROM STRUCTURE: inserted after the pointer, which then points at the last copy.
+    void copyAllElementsFromStructure(int id);
+
+    // ---- structures
+    /// EMPTY STRUCTURE: removes every element (no effect on a structure that does not exist).
+    void emptyStructure(int id);
+    /// DELETE STRUCTURE: removes references to it and its postings; the open structure is emptied instead.
+    void deleteStructure(int id);
+    void deleteStructureNetwork(int id, ReferenceHandling handling);
+    void deleteAllStructures();
+    void changeStructureIdentifier(int original, int result);
+    void changeStructureReferences(int original, int result);
+    void changeStructureIdentifierAndReferences(int original, int result);
+
+    /// Creates an empty structure when `id` does not exist (POST STRUCTURE, EXECUTE STRUCTURE do).
+    void createStructure(int id) { createIfMissing(id); }
+
+    // ---- inquiries
+    bool exists(int id) const { return structures_.contains(id); }
+    StructureStatus structureStatus(int id) const;
+    std::vector<int> structureIds() const;
+    const Structure& structure(int id) const;  ///< error 201 when it does not exist
+    const Structure* find(int id) const;
+    int elementCount(int id) const { return static_cast<int>(structure(id).elements.size()); }
+    ElementType elementTypeAt(int id, int elementNumber) const;
+    std::size_t elementSizeAt(int id, int elementNumber) const;
+    const Element& elementAt(int id, int elementNumber) const;  ///< error 202 outside 1..count
+    /// The element at the pointer of the open structure (error 202 at position 0).
+    const Element& currentElement() const;
+    SearchResult elementSearch(int id, int start, SearchDirection direction,
+                               const std::set<ElementType>& include,
+                               const std::set<ElementType>& exclude) const;
+    /// Structures that execute `id`, and how often (INQUIRE ... reference count via paths).
+    std::vector<StructurePath> pathsToAncestors(int id, StructurePathOrder order, int depth) const;
+    std::vector<StructurePath> pathsToDescendants(int id, StructurePathOrder order, int depth) const;
+    /// The structure and every structure it executes, directly or not (sorted).
+    std::set<int> network(int id) const;
+    /// Whether executing `child` from `parent` would close a cycle.
+    bool wouldCycle(int parent, int child) const;
+
+    std::uint64_t operationCount() const { return serial_; }
+
+    /// Replaces the contents of structures wholesale (archive retrieval): creates them when
+    /// missing; checks every execute for cycles against the result before changing anything.
+    void replaceStructures(const std::map<int, std::vector<Element>>& contents, const char* function);
+
+private:
+    Structure& mutableStructure(int id, const char* function);
+    Structure& createIfMissing(int id);
+    void touch(Structure& s) { s.version = ++serial_; }
+    StoredElement stored(Element e) { return {std::move(e), ++serial_}; }
+    void requireOpen(const char* function) const;
+    void checkElement(const Element& e, int into, const char* function) const;
+    void removeReferencesTo(int id);
+    void notifyDeleted(int id);
+    bool postedAnywhere(int id) const;
+    bool referenced(int id) const;
+    std::map<int, std::set<int>> childrenGraph() const;
+    void collectDescendants(int id, StructurePath& path, std::vector<StructurePath>& out) const;
+
+    ErrorLog* log_ = nullptr;
+    std::map<int, Structure> structures_;
+    std::optional<int> open_;
+    int pointer_ = 0;
+    EditMode editMode_ = EditMode::Insert;
+    std::uint64_t serial_ = 0;
+    std::vector<StoreListener*> listeners_;
+};
+
+}  // namespace phigs

@@ -1,0 +1,60 @@
+#pragma once
+
+#include "phigs/traverse/DrawList.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <tuple>
+
+namespace phigs {
+
+/// Tessellations of curves, surfaces and meshes, keyed by the element's serial (which changes
+/// whenever the element is inserted or replaced) and the parameters that shaped them. The same
+/// key gives back the same shared pointers, so an edit re-tessellates only the elements it touched.
+class TessellationCache {
+public:
+    struct Key {
+        std::uint64_t serial = 0;
+        int criteria = 0;
+        double valueU = 0, valueV = 0;
+        int isoStyle = 0, isoU = 0, isoV = 0;
+        std::uint64_t colourGeneration =
+            0;  ///< meshes with indexed vertex colours depend on the colour table
+        auto operator<=>(const Key&) const = default;
+    };
+    struct Entry {
+        std::shared_ptr<const MeshData> mesh;
+        std::shared_ptr<const geom::Surface> surface;
+        std::shared_ptr<const geom::Curve> curve;
+        std::vector<glm::dvec3> curvePoints;
+    };
+    struct Counters {
+        std::uint64_t surfacesTessellated = 0;
+        std::uint64_t curvesTessellated = 0;
+        std::uint64_t meshesBuilt = 0;  ///< triangle strips, quadrilateral meshes, cell arrays
+        std::uint64_t hits = 0;
+    };
+
+    /// The cached entry for `key`, built with `build` (and counted under `kind`) when missing.
+    enum class Kind { Surface, Curve, Mesh };
+    const Entry& get(const Key& key, Kind kind, const std::function<Entry()>& build);
+    /// Forgets every entry not asked for since the previous call (after each traversal).
+    void prune();
+    void clear() { entries_.clear(); }
+
+    const Counters& counters() const { return counters_; }
+    void resetCounters() { counters_ = {}; }
+    std::size_t size() const { return entries_.size(); }
+
+private:
+    struct Slot {
+        Entry entry;
+        bool used = true;
+    };
+    std::map<Key, Slot> entries_;
+    Counters counters_;
+};
+
+}  // namespace phigs

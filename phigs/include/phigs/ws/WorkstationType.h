@@ -1,0 +1,34 @@
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <string_view>
+#include <vector>
+
+namespace phigs {
+
+/// The workstation types this implementation knows.
+enum class WorkstationType { OffscreenImage, Window, Hardcopy };
+
+/// PHIGS workstation categories.
+enum class WorkstationCategory { Output, OutIn };
+
+/// The workstation description table: what a type can do (INQUIRE ... FACILITIES).
+struct WorkstationDescription {
+    WorkstationType type = WorkstationType::OffscreenImage;
+    WorkstationCategory category = WorkstationCategory::Output;
+    glm::dvec2 displaySize{1024, 768};  ///< display space in device coordinates (pixels)
+    int viewTableSize = 32;
+    int colourTableSize = 256;
+    int bundleTableSize = 32;
+    int lightTableSize = 16;
+    int depthCueTableSize = 8;
+    std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
+    int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
+    std::string_view name;
+};
+
+/// The description of a workstation type.
+WorkstationDescription describeWorkstationType(WorkstationType type);
+
+}  // namespace phigs

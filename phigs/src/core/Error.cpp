@@ -1,0 +1,127 @@
+#include "phigs/core/Error.h"
+
+#include "phigs/core/ErrorLog.h"
+
+#include <map>
+
+namespace phigs {
+
+namespace {
+
+const std::map<int, const char*>& messages() {
+    static const std::map<int, const char*> table = {
+        {1, "Ignoring function, function requires state (PHCL, WSCL, STCL, ARCL)"},
+        {2, "Ignoring function, function requires state (PHOP, *, *, *)"},
+        {3, "Ignoring function, function requires state (PHOP, WSOP, *, *)"},
+        {4, "Ignoring function, function requires state (PHOP, WSCL, STCL, ARCL)"},
+        {5, "Ignoring function, function requires state (PHOP, *, STOP, *)"},
+        {6, "Ignoring function, function requires state (PHOP, *, STCL, *)"},
+        {7, "Ignoring function, function requires state (PHOP, *, *, AROP)"},
+        {52, "Ignoring function, workstation type not recognized by the implementation"},
+        {53, "Ignoring function, workstation identifier already is in use"},
+        {54, "Ignoring function, the specified workstation is not open"},
+        {59, "Ignoring function, the specified workstation does not have output capability"},
+        {100, "Ignoring function, the bundle index value is less than one"},
+        {101, "Ignoring function, the specified representation has not been defined"},
+        {103,
+         "Ignoring function, setting this bundle table entry would exceed the maximum number of entries "
+         "allowed in the workstation bundle table"},
+        {104, "Ignoring function, the specified linetype is not available on the specified workstation"},
+        {105, "Ignoring function, the specified marker type is not available on the specified workstation"},
+        {108, "Ignoring function, the specified interior style is not available on the workstation"},
+        {111, "Ignoring function, the specified HLHSR mode is not available on the specified workstation"},
+        {113, "Ignoring function, the colour index value is less than zero"},
+        {114, "Ignoring function, the view index value is less than zero"},
+        {115, "Ignoring function, the view index value is less than one"},
+        {118, "Ignoring function, one of the components of the colour specification is out of range"},
+        {150,
+         "Ignoring function, setting this view table entry would exceed the maximum number of entries "
+         "allowed in the workstation's view table"},
+        {151, "Ignoring function, invalid window; XMIN >= XMAX, YMIN >= YMAX, or ZMIN > ZMAX"},
+        {152, "Ignoring function, invalid viewport; XMIN >= XMAX, YMIN >= YMAX, or ZMIN > ZMAX"},
+        {153, "Ignoring function, invalid view clipping limits; XMIN >= XMAX, YMIN >= YMAX, or ZMIN > ZMAX"},
+        {154, "Ignoring function, the view clipping limits are not within NPC range"},
+        {155, "Ignoring function, the projection viewport limits are not within NPC range"},
+        {156, "Ignoring function, the workstation window limits are not within NPC range"},
+        {157, "Ignoring function, the workstation viewport is not within display space"},
+        {158,
+         "Ignoring function, front plane and back plane distances are equal when z-extent of the "
+         "projection viewport is non-zero"},
+        {159, "Ignoring function, the view plane normal vector has length zero"},
+        {160, "Ignoring function, the view up vector has length zero"},
+        {161,
+         "Ignoring function, the view up and view plane normal vectors are parallel thus the viewing "
+         "coordinate system cannot be established"},
+        {162, "Ignoring function, the projection reference point is between the front and back planes"},
+        {163, "Ignoring function, the projection reference point cannot be positioned on the view plane"},
+        {164, "Ignoring function, the back plane is in front of the front plane"},
+        {200, "Warning, ignoring structures that do not exist"},
+        {201, "Ignoring function, the specified structure does not exist"},
+        {202, "Ignoring function, the specified element does not exist"},
+        {203, "Ignoring function, specified starting path not found in CSS"},
+        {204, "Ignoring function, specified search ceiling index out of range"},
+        {205,
+         "Ignoring function, the label does not exist in the open structure between the element pointer "
+         "and the end of the structure"},
+        {206,
+         "Ignoring function, one or both of the labels does not exist in the open structure between the "
+         "element pointer and the end of the structure"},
+        {207, "Ignoring function, the specified path depth is less than zero (0)"},
+        {208, "Ignoring function, the display priority is out of range"},
+        {256, "Warning, the input queue has overflowed"},
+        {400, "Ignoring function, the archive file cannot be opened"},
+        {402, "Ignoring function, archive file identifier already in use"},
+        {403, "Ignoring function, the archive file is not a PHIGS archive file"},
+        {404, "Ignoring function, the specified archive file is not open"},
+        {405, "Ignoring function, name conflict occurred while conflict resolution flag has value ABANDON"},
+        {407, "Warning, some of the specified structures do not exist on the archive file"},
+        {903, "Input/Output error has occurred while writing"},
+        {-201, "Ignoring function, executing this structure would make the structure network cyclic"},
+        {-202, "Ignoring function, the element data is invalid"},
+    };
+    return table;
+}
+
+std::string composeWhat(int number, const std::string& function, const std::string& detail) {
+    std::string what =
+        "PHIGS error " + std::to_string(number) + " in " + function + ": " + errorMessage(number);
+    if (!detail.empty()) what += " (" + detail + ")";
+    return what;
+}
+
+}  // namespace
+
+Error::Error(int number, std::string function, std::string detail)
+    : std::runtime_error(composeWhat(number, function, detail)),
+      number_(number),
+      function_(std::move(function)),
+      detail_(std::move(detail)) {
+}
+
+std::string errorMessage(int number) {
+    const auto& table = messages();
+    auto found = table.find(number);
+    return found != table.end() ? found->second : "PHIGS error";
+}
+
+std::string ErrorLog::text() const {
+    std::string out;
+    for (const Entry& entry : entries_) {
+        out +=
+            (entry.number >= 200 && entry.number < 1000 && errorMessage(entry.number).starts_with("Warning")
+                 ? "WARNING "
+                 : "ERROR ");
+        out += std::to_string(entry.number) + " in " + entry.function + ": " + errorMessage(entry.number);
+        if (!entry.detail.empty()) out += " (" + entry.detail + ")";
+        out += '\n';
+    }
+    return out;
+}
+
+void raise(ErrorLog* log, int number, const char* function, std::string detail) {
+    Error error(number, function, std::move(detail));
+    if (log) log->record(error);
+    throw error;
+}
+
+}  // namespace phigs

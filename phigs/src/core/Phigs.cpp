@@ -1,0 +1,254 @@
+#include "phigs/core/Phigs.h"
+
+namespace phigs {
+
+void Phigs::requireOpen(const char* function) const {
+    if (!open_) raise(const_cast<ErrorLog*>(&log_), errors::NotPhigsOpen, function);
+}
+
+void Phigs::warn(int number, const char* function, std::string detail) {
+    log_.record(Error(number, function, std::move(detail)));
+}
+
+void Phigs::open() {
+    if (open_) raise(&log_, errors::NotPhigsClosed, "OPEN PHIGS");
+    open_ = true;
+}
+
+void Phigs::close() {
+    requireOpen("CLOSE PHIGS");
+    if (!workstations_.empty() || store_.isStructureOpen() || !archives_.empty())
+        raise(&log_, errors::NotAllClosed, "CLOSE PHIGS");
+    store_.deleteAllStructures();
+    open_ = false;
+}
+
+StructureStore& Phigs::store() {
+    requireOpen("structure store function");
+    return store_;
+}
+
+Workstation& Phigs::openWorkstation(int id, WorkstationType type) {
+    const char* function = "OPEN WORKSTATION";
+    requireOpen(function);
+    if (workstations_.contains(id))
+        raise(&log_, errors::WorkstationIdInUse, function, "workstation " + std::to_string(id));
+    auto& slot = workstations_[id];
+    slot = std::make_unique<Workstation>(id, type, store_, &log_);
+    return *slot;
+}
+
+void Phigs::closeWorkstation(int id) {
+    workstation(id);
+    workstations_.erase(id);
+}
+
+Workstation& Phigs::workstation(int id) {
+    const char* function = "workstation function";
+    requireOpen(function);
+    if (workstations_.empty()) raise(&log_, errors::NoWorkstationOpen, function);
+    auto it = workstations_.find(id);
+    if (it == workstations_.end())
+        raise(&log_, errors::WorkstationNotOpen, function, "workstation " + std::to_string(id));
+    return *it->second;
+}
+
+std::vector<int> Phigs::openWorkstationIds() const {
+    std::vector<int> ids;
+    for (const auto& [id, ws] : workstations_) ids.push_back(id);
+    return ids;
+}
+
+void Phigs::openArchiveFile(int archiveId, const std::filesystem::path& path) {
+    const char* function = "OPEN ARCHIVE FILE";
+    requireOpen(function);
+    if (archives_.contains(archiveId))
+        raise(&log_, errors::ArchiveIdInUse, function, "archive " + std::to_string(archiveId));
+    archives_[archiveId] = nullptr;
+    try {
+        archives_[archiveId] = std::make_unique<ArchiveFile>(path, &log_);
+    } catch (...) {
+        archives_.erase(archiveId);
+        throw;
+    }
+}
+
+void Phigs::closeArchiveFile(int archiveId) {
+    archive(archiveId, "CLOSE ARCHIVE FILE");
+    archives_.erase(archiveId);
+}
+
+ArchiveFile& Phigs::archive(int archiveId, const char* function) {
+    requireOpen(function);
+    if (archives_.empty()) raise(&log_, errors::NoArchiveOpen, function);
+    auto it = archives_.find(archiveId);
+    if (it == archives_.end())
+        raise(&log_, errors::ArchiveNotOpen, function, "archive " + std::to_string(archiveId));
+    return *it->second;
+}
+
+void Phigs::setConflictResolution(ConflictResolution archival, ConflictResolution retrieval) {
+    requireOpen("SET CONFLICT RESOLUTION");
+    archival_ = archival;
+    retrieval_ = retrieval;
+}
+
+std::map<int, std::vector<Element>> Phigs::cssContents(const std::set<int>& ids) const {
+    std::map<int, std::vector<Element>> out;
+    for (int id : ids)
+        if (const Structure* s = store_.find(id)) {
+            auto& elements = out[id];
+            for (const auto& e : s->elements) elements.push_back(e.value);
+        }
+    return out;
+}
+
+void Phigs::archiveSet(int archiveId, std::set<int> ids, const char* function) {
+    ArchiveFile& file = archive(archiveId, function);
+    std::string missing;
+    for (auto it = ids.begin(); it != ids.end();) {
+        if (store_.exists(*it)) {
+            ++it;
+            continue;
+        }
+        missing += (missing.empty() ? "" : ", ") + std::to_string(*it);
+        it = ids.erase(it);
+    }
+    std::set<int> conflicts;
+    for (int id : ids)
+        if (file.contains(id)) conflicts.insert(id);
+    if (!conflicts.empty() && archival_ == ConflictResolution::Abandon)
+        raise(&log_, errors::ArchiveNameConflict, function,
+              "structure " + std::to_string(*conflicts.begin()));
+    if (archival_ == ConflictResolution::Maintain)
+        for (int id : conflicts) ids.erase(id);
+    file.commit(cssContents(ids), {});
+    if (!missing.empty()) warn(errors::IgnoringMissingStructures, function, "structures " + missing);
+}
+
+void Phigs::archiveStructures(int archiveId, const std::vector<int>& ids) {
+    archiveSet(archiveId, {ids.begin(), ids.end()}, "ARCHIVE STRUCTURES");
+}
+
+void Phigs::archiveStructureNetworks(int archiveId, const std::vector<int>& ids) {
+    std::set<int> all;
+    for (int id : ids)
+        if (store_.exists(id))
+            all.merge(store_.network(id));
+        else
+            all.insert(id);
+    archiveSet(archiveId, std::move(all), "ARCHIVE STRUCTURE NETWORKS");
+}
+
+void Phigs::archiveAllStructures(int archiveId) {
+    auto ids = store_.structureIds();
+    archiveSet(archiveId, {ids.begin(), ids.end()}, "ARCHIVE ALL STRUCTURES");
+}
+
+void Phigs::retrieveSet(int archiveId, std::set<int> ids, const char* function) {
+    ArchiveFile& file = archive(archiveId, function);
+    std::string missing;
+    std::map<int, std::vector<Element>> contents;
+    for (int id : ids) {
+        auto it = file.contents().find(id);
+        if (it == file.contents().end())
+            missing += (missing.empty() ? "" : ", ") + std::to_string(id);
+        else
+            contents.emplace(id, it->second);
+    }
+    std::set<int> conflicts;
+    for (const auto& [id, e] : contents)
+        if (store_.exists(id)) conflicts.insert(id);
+    if (!conflicts.empty() && retrieval_ == ConflictResolution::Abandon)
+        raise(&log_, errors::ArchiveNameConflict, function,
+              "structure " + std::to_string(*conflicts.begin()));
+    if (retrieval_ == ConflictResolution::Maintain)
+        for (int id : conflicts) contents.erase(id);
+    store_.replaceStructures(contents, function);
+    if (!missing.empty()) warn(errors::MissingInArchive, function, "structures " + missing);
+}
+
+std::set<int> Phigs::archiveNetwork(const ArchiveFile& file, int id) {
+    std::set<int> seen;
+    std::vector<int> todo{id};
+    while (!todo.empty()) {
+        int next = todo.back();
+        todo.pop_back();
+        if (!seen.insert(next).second) continue;
+        auto it = file.contents().find(next);
+        if (it == file.contents().end()) continue;
+        for (const Element& e : it->second)
+            if (auto x = std::get_if<ExecuteStructureElement>(&e)) todo.push_back(x->structureId);
+    }
+    return seen;
+}
+
+void Phigs::retrieveStructures(int archiveId, const std::vector<int>& ids) {
+    retrieveSet(archiveId, {ids.begin(), ids.end()}, "RETRIEVE STRUCTURES");
+}
+
+void Phigs::retrieveStructureNetworks(int archiveId, const std::vector<int>& ids) {
+    const char* function = "RETRIEVE STRUCTURE NETWORKS";
+    ArchiveFile& file = archive(archiveId, function);
+    std::set<int> all;
+    for (int id : ids) all.merge(archiveNetwork(file, id));
+    retrieveSet(archiveId, std::move(all), function);
+}
+
+void Phigs::retrieveAllStructures(int archiveId) {
+    const char* function = "RETRIEVE ALL STRUCTURES";
+    auto ids = archive(archiveId, function).structureIds();
+    retrieveSet(archiveId, {ids.begin(), ids.end()}, function);
+}
+
+std::vector<int> Phigs::archiveContents(int archiveId) {
+    return archive(archiveId, "RETRIEVE STRUCTURE IDENTIFIERS").structureIds();
+}
+
+void Phigs::deleteStructuresFromArchive(int archiveId, const std::vector<int>& ids) {
+    const char* function = "DELETE STRUCTURES FROM ARCHIVE";
+    ArchiveFile& file = archive(archiveId, function);
+    std::string missing;
+    for (int id : ids)
+        if (!file.contains(id)) missing += (missing.empty() ? "" : ", ") + std::to_string(id);
+    file.commit({}, ids);
+    if (!missing.empty()) warn(errors::MissingInArchive, function, "structures " + missing);
+}
+
+void Phigs::deleteStructureNetworksFromArchive(int archiveId, const std::vector<int>& ids) {
+    const char* function = "DELETE STRUCTURE NETWORKS FROM ARCHIVE";
+    ArchiveFile& file = archive(archiveId, function);
+    std::set<int> all;
+    for (int id : ids) all.merge(archiveNetwork(file, id));
+    std::vector<int> present;
+    for (int id : all)
+        if (file.contains(id)) present.push_back(id);
+    file.commit({}, present);
+}
+
+void Phigs::deleteAllStructuresFromArchive(int archiveId) {
+    ArchiveFile& file = archive(archiveId, "DELETE ALL STRUCTURES FROM ARCHIVE");
+    file.commit({}, file.structureIds());
+}
+
+std::vector<int> Phigs::conflictingStructures(int archiveId) {
+    ArchiveFile& file = archive(archiveId, "INQUIRE ALL CONFLICTING STRUCTURES");
+    std::vector<int> out;
+    for (int id : file.structureIds())
+        if (store_.exists(id)) out.push_back(id);
+    return out;
+}
+
+std::vector<int> Phigs::conflictingStructuresInNetwork(int archiveId, int id, NetworkSource source) {
+    const char* function = "INQUIRE CONFLICTING STRUCTURES IN NETWORK";
+    ArchiveFile& file = archive(archiveId, function);
+    if (source == NetworkSource::Css && !store_.exists(id))
+        raise(&log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    std::set<int> network = source == NetworkSource::Css ? store_.network(id) : archiveNetwork(file, id);
+    std::vector<int> out;
+    for (int member : network)
+        if (store_.exists(member) && file.contains(member)) out.push_back(member);
+    return out;
+}
+
+}  // namespace phigs

@@ -1,0 +1,436 @@
+#include "phigs/store/Element.h"
+
+#include <array>
+#include <cmath>
+#include <type_traits>
+
+namespace phigs {
+
+namespace {
+
+constexpr std::array<std::string_view, static_cast<std::size_t>(ElementType::Count_)> kNames = {
+    "ALL",
+    "NIL",
+    "POLYLINE 3",
+    "POLYLINE",
+    "POLYMARKER 3",
+    "POLYMARKER",
+    "FILL AREA 3",
+    "FILL AREA",
+    "FILL AREA SET 3",
+    "FILL AREA SET",
+    "TEXT 3",
+    "TEXT",
+    "ANNOTATION TEXT RELATIVE 3",
+    "ANNOTATION TEXT RELATIVE",
+    "CELL ARRAY 3",
+    "CELL ARRAY",
+    "NON-UNIFORM B-SPLINE CURVE",
+    "NON-UNIFORM B-SPLINE SURFACE",
+    "FILL AREA SET 3 WITH DATA",
+    "TRIANGLE STRIP 3 WITH DATA",
+    "QUADRILATERAL MESH 3 WITH DATA",
+    "SET POLYLINE INDEX",
+    "SET POLYMARKER INDEX",
+    "SET TEXT INDEX",
+    "SET INTERIOR INDEX",
+    "SET EDGE INDEX",
+    "SET LINETYPE",
+    "SET LINEWIDTH SCALE FACTOR",
+    "SET POLYLINE COLOUR",
+    "SET POLYLINE SHADING METHOD",
+    "SET MARKER TYPE",
+    "SET MARKER SIZE SCALE FACTOR",
+    "SET POLYMARKER COLOUR",
+    "SET TEXT FONT",
+    "SET TEXT PRECISION",
+    "SET CHARACTER EXPANSION FACTOR",
+    "SET CHARACTER SPACING",
+    "SET TEXT COLOUR",
+    "SET CHARACTER HEIGHT",
+    "SET CHARACTER UP VECTOR",
+    "SET TEXT PATH",
+    "SET TEXT ALIGNMENT",
+    "SET ANNOTATION TEXT CHARACTER HEIGHT",
+    "SET ANNOTATION TEXT CHARACTER UP VECTOR",
+    "SET ANNOTATION TEXT PATH",
+    "SET ANNOTATION TEXT ALIGNMENT",
+    "SET ANNOTATION STYLE",
+    "SET INTERIOR STYLE",
+    "SET INTERIOR STYLE INDEX",
+    "SET INTERIOR COLOUR",
+    "SET BACK INTERIOR STYLE",
+    "SET BACK INTERIOR STYLE INDEX",
+    "SET BACK INTERIOR COLOUR",
+    "SET INTERIOR SHADING METHOD",
+    "SET BACK INTERIOR SHADING METHOD",
+    "SET INTERIOR REFLECTANCE EQUATION",
+    "SET BACK INTERIOR REFLECTANCE EQUATION",
+    "SET AREA PROPERTIES",
+    "SET BACK AREA PROPERTIES",
+    "SET FACE DISTINGUISHING MODE",
+    "SET FACE CULLING MODE",
+    "SET EDGE FLAG",
+    "SET EDGETYPE",
+    "SET EDGEWIDTH SCALE FACTOR",
+    "SET EDGE COLOUR",
+    "SET INDIVIDUAL ASF",
+    "SET CURVE APPROXIMATION CRITERIA",
+    "SET SURFACE APPROXIMATION CRITERIA",
+    "SET PARAMETRIC SURFACE CHARACTERISTICS",
+    "SET LIGHT SOURCE STATE",
+    "SET DEPTH CUE INDEX",
+    "SET COLOUR MAPPING INDEX",
+    "ADD NAMES TO SET",
+    "REMOVE NAMES FROM SET",
+    "SET LOCAL TRANSFORMATION 3",
+    "SET LOCAL TRANSFORMATION",
+    "SET GLOBAL TRANSFORMATION 3",
+    "SET GLOBAL TRANSFORMATION",
+    "SET MODEL CLIPPING VOLUME 3",
+    "SET MODEL CLIPPING VOLUME",
+    "SET MODEL CLIPPING INDICATOR",
+    "RESTORE MODEL CLIPPING VOLUME",
+    "SET VIEW INDEX",
+    "EXECUTE STRUCTURE",
+    "LABEL",
+    "APPLICATION DATA",
+    "SET PICK IDENTIFIER",
+    "SET HLHSR IDENTIFIER",
+};
+
+template <class T>
+constexpr int indexOf() {
+    int index = -1;
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ((std::is_same_v<T, std::variant_alternative_t<I, Element>> ? (index = static_cast<int>(I)) : 0),
+         ...);
+    }
+    (std::make_index_sequence<std::variant_size_v<Element>>{});
+    return index;
+}
+
+bool sameCurve(const geom::Curve& a, const geom::Curve& b) {
+    return a.degree == b.degree && a.knots == b.knots && a.points == b.points && a.weights == b.weights;
+}
+
+bool finite(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+std::string checkPoints(const std::vector<glm::dvec3>& points, std::size_t minimum, const char* what) {
+    if (points.size() < minimum)
+        return std::string(what) + " needs at least " + std::to_string(minimum) + " points, has " +
+               std::to_string(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (!finite(points[i])) return std::string(what) + " point " + std::to_string(i) + " is not finite";
+    return {};
+}
+
+template <class List>
+std::string checkPerVertex(const List& list, std::size_t count, const char* what) {
+    if (!list.empty() && list.size() != count)
+        return std::string(what) + " has " + std::to_string(list.size()) + " entries for " +
+               std::to_string(count) + " vertices";
+    return {};
+}
+
+std::string checkCurve(const geom::Curve& curve) {
+    try {
+        geom::validate(curve);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return {};
+}
+
+}  // namespace
+
+bool NurbsCurveElement::operator==(const NurbsCurveElement& o) const {
+    return sameCurve(curve, o.curve) && rangeStart == o.rangeStart && rangeEnd == o.rangeEnd;
+}
+
+bool NurbsSurfaceElement::operator==(const NurbsSurfaceElement& o) const {
+    const geom::Surface& a = surface;
+    const geom::Surface& b = o.surface;
+    if (!(a.degreeU == b.degreeU && a.degreeV == b.degreeV && a.knotsU == b.knotsU && a.knotsV == b.knotsV &&
+          a.countU == b.countU && a.countV == b.countV && a.points == b.points && a.weights == b.weights))
+        return false;
+    if (trimLoops.size() != o.trimLoops.size()) return false;
+    for (std::size_t i = 0; i < trimLoops.size(); ++i) {
+        if (trimLoops[i].size() != o.trimLoops[i].size()) return false;
+        for (std::size_t j = 0; j < trimLoops[i].size(); ++j)
+            if (!sameCurve(trimLoops[i][j], o.trimLoops[i][j])) return false;
+    }
+    return true;
+}
+
+std::string_view elementTypeName(ElementType type) {
+    auto i = static_cast<std::size_t>(type);
+    return i < kNames.size() ? kNames[i] : std::string_view("UNKNOWN");
+}
+
+ElementType elementTypeFromName(std::string_view name) {
+    for (std::size_t i = 0; i < kNames.size(); ++i)
+        if (kNames[i] == name) return static_cast<ElementType>(i);
+    return ElementType::Count_;
+}
+
+ElementType elementType(const Element& element) {
+    using T = ElementType;
+    return std::visit(
+        [](const auto& e) -> ElementType {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, PolylineElement>)
+                return e.twoD ? T::Polyline : T::Polyline3;
+            else if constexpr (std::is_same_v<E, PolymarkerElement>)
+                return e.twoD ? T::Polymarker : T::Polymarker3;
+            else if constexpr (std::is_same_v<E, FillAreaElement>)
+                return e.twoD ? T::FillArea : T::FillArea3;
+            else if constexpr (std::is_same_v<E, FillAreaSetElement>)
+                return e.twoD ? T::FillAreaSet : T::FillAreaSet3;
+            else if constexpr (std::is_same_v<E, TextElement>)
+                return e.twoD ? T::Text : T::Text3;
+            else if constexpr (std::is_same_v<E, AnnotationTextElement>)
+                return e.twoD ? T::AnnotationTextRelative : T::AnnotationTextRelative3;
+            else if constexpr (std::is_same_v<E, CellArrayElement>)
+                return e.twoD ? T::CellArray : T::CellArray3;
+            else if constexpr (std::is_same_v<E, NurbsCurveElement>)
+                return T::NonUniformBSplineCurve;
+            else if constexpr (std::is_same_v<E, NurbsSurfaceElement>)
+                return T::NonUniformBSplineSurface;
+            else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>)
+                return T::FillAreaSetWithData;
+            else if constexpr (std::is_same_v<E, TriangleStripElement>)
+                return T::TriangleStrip;
+            else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>)
+                return T::QuadrilateralMesh;
+            else if constexpr (std::is_same_v<E, AsfAttribute>)
+                return T::IndividualAsf;
+            else if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>)
+                return T::ParametricSurfaceCharacteristics;
+            else if constexpr (std::is_same_v<E, LightSourceStateAttribute>)
+                return T::LightSourceState;
+            else if constexpr (std::is_same_v<E, ModelClipElement>)
+                return e.twoD ? T::ModelClippingVolume : T::ModelClippingVolume3;
+            else if constexpr (std::is_same_v<E, RestoreModelClipElement>)
+                return T::RestoreModelClippingVolume;
+            else if constexpr (std::is_same_v<E, NameSetElement>)
+                return e.add ? T::AddNamesToSet : T::RemoveNamesFromSet;
+            else if constexpr (std::is_same_v<E, ExecuteStructureElement>)
+                return T::ExecuteStructure;
+            else if constexpr (std::is_same_v<E, LabelElement>)
+                return T::Label;
+            else if constexpr (std::is_same_v<E, ApplicationDataElement>)
+                return T::ApplicationData;
+            else
+                return e.type;  // the tagged families
+        },
+        element);
+}
+
+int payloadIndexOf(ElementType type) {
+    using T = ElementType;
+    switch (type) {
+        case T::Polyline3:
+        case T::Polyline:
+            return indexOf<PolylineElement>();
+        case T::Polymarker3:
+        case T::Polymarker:
+            return indexOf<PolymarkerElement>();
+        case T::FillArea3:
+        case T::FillArea:
+            return indexOf<FillAreaElement>();
+        case T::FillAreaSet3:
+        case T::FillAreaSet:
+            return indexOf<FillAreaSetElement>();
+        case T::Text3:
+        case T::Text:
+            return indexOf<TextElement>();
+        case T::AnnotationTextRelative3:
+        case T::AnnotationTextRelative:
+            return indexOf<AnnotationTextElement>();
+        case T::CellArray3:
+        case T::CellArray:
+            return indexOf<CellArrayElement>();
+        case T::NonUniformBSplineCurve:
+            return indexOf<NurbsCurveElement>();
+        case T::NonUniformBSplineSurface:
+            return indexOf<NurbsSurfaceElement>();
+        case T::FillAreaSetWithData:
+            return indexOf<FillAreaSetWithDataElement>();
+        case T::TriangleStrip:
+            return indexOf<TriangleStripElement>();
+        case T::QuadrilateralMesh:
+            return indexOf<QuadrilateralMeshElement>();
+        case T::LinewidthScaleFactor:
+        case T::MarkerSizeScaleFactor:
+        case T::CharacterExpansionFactor:
+        case T::CharacterSpacing:
+        case T::CharacterHeight:
+        case T::AnnotationTextCharacterHeight:
+        case T::EdgewidthScaleFactor:
+            return indexOf<RealAttribute>();
+        case T::PolylineColour:
+        case T::PolymarkerColour:
+        case T::TextColour:
+        case T::InteriorColour:
+        case T::BackInteriorColour:
+        case T::EdgeColour:
+            return indexOf<ColourAttribute>();
+        case T::CharacterUpVector:
+        case T::AnnotationTextCharacterUpVector:
+            return indexOf<UpVectorAttribute>();
+        case T::TextAlignment:
+        case T::AnnotationTextAlignment:
+            return indexOf<AlignmentAttribute>();
+        case T::AreaProperties:
+        case T::BackAreaProperties:
+            return indexOf<AreaPropertiesAttribute>();
+        case T::IndividualAsf:
+            return indexOf<AsfAttribute>();
+        case T::CurveApproximationCriteria:
+        case T::SurfaceApproximationCriteria:
+            return indexOf<ApproximationAttribute>();
+        case T::ParametricSurfaceCharacteristics:
+            return indexOf<SurfaceCharacteristicsAttribute>();
+        case T::LightSourceState:
+            return indexOf<LightSourceStateAttribute>();
+        case T::LocalModellingTransformation3:
+        case T::LocalModellingTransformation:
+        case T::GlobalModellingTransformation3:
+        case T::GlobalModellingTransformation:
+            return indexOf<TransformElement>();
+        case T::ModelClippingVolume3:
+        case T::ModelClippingVolume:
+            return indexOf<ModelClipElement>();
+        case T::RestoreModelClippingVolume:
+            return indexOf<RestoreModelClipElement>();
+        case T::AddNamesToSet:
+        case T::RemoveNamesFromSet:
+            return indexOf<NameSetElement>();
+        case T::ExecuteStructure:
+            return indexOf<ExecuteStructureElement>();
+        case T::Label:
+            return indexOf<LabelElement>();
+        case T::ApplicationData:
+            return indexOf<ApplicationDataElement>();
+        case T::All:
+        case T::Nil:
+        case T::Count_:
+            return -1;
+        default:
+            return indexOf<IndexAttribute>();
+    }
+}
+
+std::string validateElement(const Element& element) {
+    if (payloadIndexOf(elementType(element)) != static_cast<int>(element.index()))
+        return "element type " + std::string(elementTypeName(elementType(element))) +
+               " does not belong to this payload";
+    return std::visit(
+        [](const auto& e) -> std::string {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, PolylineElement>)
+                return checkPoints(e.points, 0, "polyline");
+            else if constexpr (std::is_same_v<E, PolymarkerElement>)
+                return checkPoints(e.points, 0, "polymarker");
+            else if constexpr (std::is_same_v<E, FillAreaElement>)
+                return checkPoints(e.points, 0, "fill area");
+            else if constexpr (std::is_same_v<E, FillAreaSetElement>) {
+                for (const auto& c : e.contours)
+                    if (auto r = checkPoints(c, 0, "fill area set contour"); !r.empty()) return r;
+                return {};
+            } else if constexpr (std::is_same_v<E, CellArrayElement>) {
+                if (e.columns < 0 || e.rows < 0) return "cell array dimensions are negative";
+                if (e.colourIndices.size() !=
+                    static_cast<std::size_t>(e.columns) * static_cast<std::size_t>(e.rows))
+                    return "cell array has " + std::to_string(e.colourIndices.size()) + " colours for " +
+                           std::to_string(e.columns) + " x " + std::to_string(e.rows) + " cells";
+                return {};
+            } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
+                return checkCurve(e.curve);
+            } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
+                try {
+                    geom::validate(e.surface);
+                } catch (const std::exception& x) {
+                    return x.what();
+                }
+                for (const auto& loop : e.trimLoops)
+                    for (const auto& c : loop)
+                        if (auto r = checkCurve(c); !r.empty()) return "trimming curve: " + r;
+                return {};
+            } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
+                if (!e.vertexColours.empty() && e.vertexColours.size() != e.contours.size())
+                    return "vertex colours are not given for every contour";
+                if (!e.vertexNormals.empty() && e.vertexNormals.size() != e.contours.size())
+                    return "vertex normals are not given for every contour";
+                for (std::size_t i = 0; i < e.contours.size(); ++i) {
+                    if (auto r = checkPoints(e.contours[i], 0, "contour"); !r.empty()) return r;
+                    if (!e.vertexColours.empty())
+                        if (auto r =
+                                checkPerVertex(e.vertexColours[i], e.contours[i].size(), "vertex colours");
+                            !r.empty() || e.vertexColours[i].empty())
+                            return r.empty() && !e.contours[i].empty() ? "contour without vertex colours" : r;
+                    if (!e.vertexNormals.empty())
+                        if (auto r =
+                                checkPerVertex(e.vertexNormals[i], e.contours[i].size(), "vertex normals");
+                            !r.empty())
+                            return r;
+                }
+                return {};
+            } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
+                if (auto r = checkPoints(e.points, 0, "triangle strip"); !r.empty()) return r;
+                if (auto r = checkPerVertex(e.vertexColours, e.points.size(), "vertex colours"); !r.empty())
+                    return r;
+                return checkPerVertex(e.vertexNormals, e.points.size(), "vertex normals");
+            } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
+                if (e.rows < 0 || e.columns < 0) return "quadrilateral mesh dimensions are negative";
+                std::size_t n = static_cast<std::size_t>(e.rows) * static_cast<std::size_t>(e.columns);
+                if (e.points.size() != n)
+                    return "quadrilateral mesh has " + std::to_string(e.points.size()) + " points for " +
+                           std::to_string(e.rows) + " x " + std::to_string(e.columns);
+                if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
+                if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
+                return checkPerVertex(e.vertexNormals, n, "vertex normals");
+            } else if constexpr (std::is_same_v<E, AsfAttribute>) {
+                if (static_cast<int>(e.aspect) < 0 || e.aspect >= AspectId::Count_) return "unknown aspect";
+                return {};
+            } else {
+                return {};
+            }
+        },
+        element);
+}
+
+std::size_t elementSize(const Element& element) {
+    auto curveBytes = [](const geom::Curve& c) {
+        return c.knots.size() * sizeof(double) + c.points.size() * sizeof(glm::dvec3) +
+               c.weights.size() * sizeof(double);
+    };
+    return std::visit(
+        [&](const auto& e) -> std::size_t {
+            using E = std::decay_t<decltype(e)>;
+            std::size_t bytes = sizeof(E);
+            if constexpr (requires { e.points; }) bytes += e.points.size() * sizeof(glm::dvec3);
+            if constexpr (requires { e.contours; })
+                for (const auto& c : e.contours) bytes += c.size() * sizeof(glm::dvec3);
+            if constexpr (std::is_same_v<E, TextElement> || std::is_same_v<E, AnnotationTextElement>)
+                bytes += e.text.size();
+            if constexpr (std::is_same_v<E, ApplicationDataElement>) bytes += e.data.size();
+            if constexpr (std::is_same_v<E, NameSetElement>) bytes += e.names.size() * sizeof(int);
+            if constexpr (std::is_same_v<E, CellArrayElement>) bytes += e.colourIndices.size() * sizeof(int);
+            if constexpr (std::is_same_v<E, NurbsCurveElement>) bytes += curveBytes(e.curve);
+            if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
+                bytes += (e.surface.knotsU.size() + e.surface.knotsV.size() + e.surface.weights.size()) *
+                             sizeof(double) +
+                         e.surface.points.size() * sizeof(glm::dvec3);
+                for (const auto& loop : e.trimLoops)
+                    for (const auto& c : loop) bytes += curveBytes(c);
+            }
+            return bytes;
+        },
+        element);
+}
+
+}  // namespace phigs

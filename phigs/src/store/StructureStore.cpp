@@ -1,0 +1,582 @@
+#include "phigs/store/StructureStore.h"
+
+#include <algorithm>
+
+namespace phigs {
+
+namespace {
+
+bool hasCycle(const std::map<int, std::set<int>>& graph) {
+    // Colours: 0 unvisited, 1 on the stack, 2 done; iterative to survive deep networks.
+    std::map<int, int> colour;
+    for (const auto& [start, unused] : graph) {
+        if (colour[start] != 0) continue;
+        std::vector<std::pair<int, std::set<int>::const_iterator>> stack;
+        colour[start] = 1;
+        stack.push_back({start, graph.at(start).begin()});
+        while (!stack.empty()) {
+            auto& [node, it] = stack.back();
+            const auto& children = graph.at(node);
+            if (it == children.end()) {
+                colour[node] = 2;
+                stack.pop_back();
+                continue;
+            }
+            int child = *it++;
+            int c = colour[child];
+            if (c == 1) return true;
+            if (c == 0 && graph.contains(child)) {
+                colour[child] = 1;
+                stack.push_back({child, graph.at(child).begin()});
+            }
+        }
+    }
+    return false;
+}
+
+const ExecuteStructureElement* asExecute(const Element& e) {
+    return std::get_if<ExecuteStructureElement>(&e);
+}
+
+}  // namespace
+
+void StructureStore::addListener(StoreListener* listener) {
+    listeners_.push_back(listener);
+}
+
+void StructureStore::removeListener(StoreListener* listener) {
+    std::erase(listeners_, listener);
+}
+
+void StructureStore::requireOpen(const char* function) const {
+    if (!open_) raise(log_, errors::NotStructureOpen, function);
+}
+
+Structure& StructureStore::createIfMissing(int id) {
+    auto [it, inserted] = structures_.try_emplace(id);
+    if (inserted) {
+        it->second.id = id;
+        touch(it->second);
+    }
+    return it->second;
+}
+
+Structure& StructureStore::mutableStructure(int id, const char* function) {
+    auto it = structures_.find(id);
+    if (it == structures_.end())
+        raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    return it->second;
+}
+
+const Structure* StructureStore::find(int id) const {
+    auto it = structures_.find(id);
+    return it == structures_.end() ? nullptr : &it->second;
+}
+
+const Structure& StructureStore::structure(int id) const {
+    const Structure* s = find(id);
+    if (!s)
+        raise(log_, errors::StructureDoesNotExist, "INQUIRE STRUCTURE", "structure " + std::to_string(id));
+    return *s;
+}
+
+void StructureStore::openStructure(int id) {
+    if (open_)
+        raise(log_, errors::NotStructureClosed, "OPEN STRUCTURE",
+              "structure " + std::to_string(*open_) + " is open");
+    Structure& s = createIfMissing(id);
+    open_ = id;
+    pointer_ = static_cast<int>(s.elements.size());
+}
+
+void StructureStore::closeStructure() {
+    requireOpen("CLOSE STRUCTURE");
+    open_.reset();
+    pointer_ = 0;
+}
+
+int StructureStore::openStructureId() const {
+    requireOpen("INQUIRE OPEN STRUCTURE");
+    return *open_;
+}
+
+int StructureStore::elementPointer() const {
+    requireOpen("INQUIRE ELEMENT POINTER");
+    return pointer_;
+}
+
+std::map<int, std::set<int>> StructureStore::childrenGraph() const {
+    std::map<int, std::set<int>> graph;
+    for (const auto& [id, s] : structures_) {
+        auto& children = graph[id];
+        for (const auto& e : s.elements)
+            if (auto x = asExecute(e.value)) children.insert(x->structureId);
+    }
+    return graph;
+}
+
+std::set<int> StructureStore::network(int id) const {
+    std::set<int> seen;
+    std::vector<int> todo{id};
+    while (!todo.empty()) {
+        int next = todo.back();
+        todo.pop_back();
+        if (!seen.insert(next).second) continue;
+        if (const Structure* s = find(next))
+            for (const auto& e : s->elements)
+                if (auto x = asExecute(e.value)) todo.push_back(x->structureId);
+    }
+    return seen;
+}
+
+bool StructureStore::wouldCycle(int parent, int child) const {
+    return network(child).contains(parent);
+}
+
+void StructureStore::checkElement(const Element& e, int into, const char* function) const {
+    if (std::string reason = validateElement(e); !reason.empty())
+        raise(log_, errors::InvalidElementData, function,
+              std::string(elementTypeName(elementType(e))) + ": " + reason);
+    if (auto x = asExecute(e))
+        if (wouldCycle(into, x->structureId))
+            raise(log_, errors::StructureCycle, function,
+                  "structure " + std::to_string(into) + " executing " + std::to_string(x->structureId));
+}
+
+void StructureStore::insert(Element element) {
+    const char* function = "INSERT ELEMENT";
+    requireOpen(function);
+    checkElement(element, *open_, function);
+    if (auto x = asExecute(element)) createIfMissing(x->structureId);
+    Structure& s = structures_.at(*open_);
+    if (editMode_ == EditMode::Replace && pointer_ > 0) {
+        s.elements[static_cast<std::size_t>(pointer_ - 1)] = stored(std::move(element));
+    } else {
+        s.elements.insert(s.elements.begin() + pointer_, stored(std::move(element)));
+        ++pointer_;
+    }
+    touch(s);
+}
+
+void StructureStore::setElementPointer(int position) {
+    requireOpen("SET ELEMENT POINTER");
+    int count = static_cast<int>(structures_.at(*open_).elements.size());
+    pointer_ = std::clamp(position, 0, count);
+}
+
+void StructureStore::offsetElementPointer(int offset) {
+    requireOpen("OFFSET ELEMENT POINTER");
+    int count = static_cast<int>(structures_.at(*open_).elements.size());
+    long long target = static_cast<long long>(pointer_) + offset;
+    pointer_ = static_cast<int>(std::clamp<long long>(target, 0, count));
+}
+
+void StructureStore::setElementPointerAtLabel(int labelValue) {
+    const char* function = "SET ELEMENT POINTER AT LABEL";
+    requireOpen(function);
+    const auto& elements = structures_.at(*open_).elements;
+    for (std::size_t i = static_cast<std::size_t>(pointer_); i < elements.size(); ++i) {
+        auto l = std::get_if<LabelElement>(&elements[i].value);
+        if (l && l->label == labelValue) {
+            pointer_ = static_cast<int>(i) + 1;
+            return;
+        }
+    }
+    raise(log_, errors::LabelNotFound, function, "label " + std::to_string(labelValue));
+}
+
+void StructureStore::deleteElement() {
+    requireOpen("DELETE ELEMENT");
+    if (pointer_ == 0) return;
+    Structure& s = structures_.at(*open_);
+    s.elements.erase(s.elements.begin() + (pointer_ - 1));
+    --pointer_;
+    touch(s);
+}
+
+void StructureStore::deleteElementRange(int first, int second) {
+    requireOpen("DELETE ELEMENT RANGE");
+    Structure& s = structures_.at(*open_);
+    int count = static_cast<int>(s.elements.size());
+    int low = std::clamp(std::min(first, second), 0, count);
+    int high = std::clamp(std::max(first, second), 0, count);
+    if (low == 0) low = 1;
+    if (high >= low) {
+        s.elements.erase(s.elements.begin() + (low - 1), s.elements.begin() + high);
+        touch(s);
+    }
+    pointer_ = low - 1;
+}
+
+void StructureStore::deleteElementsBetweenLabels(int first, int second) {
+    const char* function = "DELETE ELEMENTS BETWEEN LABELS";
+    requireOpen(function);
+    Structure& s = structures_.at(*open_);
+    auto findLabel = [&](std::size_t from, int value) -> std::optional<std::size_t> {
+        for (std::size_t i = from; i < s.elements.size(); ++i) {
+            auto l = std::get_if<LabelElement>(&s.elements[i].value);
+            if (l && l->label == value) return i;
+        }
+        return std::nullopt;
+    };
+    auto a = findLabel(static_cast<std::size_t>(pointer_), first);
+    auto b = a ? findLabel(*a + 1, second) : std::nullopt;
+    if (!b)
+        raise(log_, errors::LabelsNotFound, function,
+              "labels " + std::to_string(first) + ", " + std::to_string(second));
+    if (*b > *a + 1) {
+        s.elements.erase(s.elements.begin() + static_cast<long>(*a + 1),
+                         s.elements.begin() + static_cast<long>(*b));
+        touch(s);
+    }
+    pointer_ = static_cast<int>(*a) + 1;
+}
+
+void StructureStore::copyAllElementsFromStructure(int id) {
+    const char* function = "COPY ALL ELEMENTS FROM STRUCTURE";
+    requireOpen(function);
+    const Structure& source = mutableStructure(id, function);
+    std::vector<Element> copies;
+    for (const auto& e : source.elements) {
+        checkElement(e.value, *open_, function);
+        copies.push_back(e.value);
+    }
+    Structure& s = structures_.at(*open_);
+    std::vector<StoredElement> fresh;
+    for (auto& e : copies) fresh.push_back(stored(std::move(e)));
+    s.elements.insert(s.elements.begin() + pointer_, std::make_move_iterator(fresh.begin()),
+                      std::make_move_iterator(fresh.end()));
+    pointer_ += static_cast<int>(fresh.size());
+    if (!fresh.empty()) touch(s);
+}
+
+void StructureStore::emptyStructure(int id) {
+    auto it = structures_.find(id);
+    if (it == structures_.end()) return;
+    if (!it->second.elements.empty()) {
+        it->second.elements.clear();
+        touch(it->second);
+    }
+    if (open_ == id) pointer_ = 0;
+}
+
+void StructureStore::removeReferencesTo(int id) {
+    for (auto& [sid, s] : structures_) {
+        bool changed = false;
+        for (std::size_t i = s.elements.size(); i-- > 0;) {
+            auto x = asExecute(s.elements[i].value);
+            if (!x || x->structureId != id) continue;
+            s.elements.erase(s.elements.begin() + static_cast<long>(i));
+            if (open_ == sid && static_cast<int>(i) < pointer_) --pointer_;
+            changed = true;
+        }
+        if (changed) touch(s);
+    }
+}
+
+void StructureStore::notifyDeleted(int id) {
+    for (StoreListener* l : listeners_) l->structureDeleted(id);
+}
+
+bool StructureStore::postedAnywhere(int id) const {
+    return std::any_of(listeners_.begin(), listeners_.end(),
+                       [id](StoreListener* l) { return l->isPosted(id); });
+}
+
+bool StructureStore::referenced(int id) const {
+    for (const auto& [sid, s] : structures_)
+        for (const auto& e : s.elements)
+            if (auto x = asExecute(e.value); x && x->structureId == id) return true;
+    return false;
+}
+
+void StructureStore::deleteStructure(int id) {
+    auto it = structures_.find(id);
+    if (it == structures_.end()) return;
+    removeReferencesTo(id);
+    notifyDeleted(id);
+    if (open_ == id) {
+        emptyStructure(id);
+        touch(structures_.at(id));
+    } else {
+        structures_.erase(id);
+    }
+}
+
+void StructureStore::deleteStructureNetwork(int id, ReferenceHandling handling) {
+    const char* function = "DELETE STRUCTURE NETWORK";
+    mutableStructure(id, function);
+    std::set<int> members = network(id);
+    std::set<int> doomed;
+    if (handling == ReferenceHandling::Delete) {
+        for (int m : members)
+            if (exists(m)) doomed.insert(m);
+    } else {
+        // Keep every structure referenced from outside what is being deleted: grow the doomed
+        // set from the root while some member's every parent is already doomed.
+        doomed.insert(id);
+        auto graph = childrenGraph();
+        bool grew = true;
+        while (grew) {
+            grew = false;
+            for (int m : members) {
+                if (doomed.contains(m) || !exists(m)) continue;
+                bool allParentsDoomed = true;
+                for (const auto& [parent, children] : graph)
+                    if (children.contains(m) && !doomed.contains(parent)) allParentsDoomed = false;
+                if (allParentsDoomed) {
+                    doomed.insert(m);
+                    grew = true;
+                }
+            }
+        }
+    }
+    for (int m : doomed) deleteStructure(m);
+}
+
+void StructureStore::deleteAllStructures() {
+    std::vector<int> ids = structureIds();
+    for (int id : ids) notifyDeleted(id);
+    structures_.clear();
+    if (open_) {
+        createIfMissing(*open_);
+        pointer_ = 0;
+    }
+}
+
+void StructureStore::changeStructureIdentifier(int original, int result) {
+    const char* function = "CHANGE STRUCTURE IDENTIFIER";
+    Structure& from = mutableStructure(original, function);
+    if (original == result) return;
+    auto graph = childrenGraph();
+    graph[result] = graph[original];
+    graph[original].clear();
+    if (hasCycle(graph))
+        raise(log_, errors::StructureCycle, function,
+              "structure " + std::to_string(result) + " would execute itself through " +
+                  std::to_string(original));
+    std::vector<StoredElement> moved = std::move(from.elements);
+    from.elements.clear();
+    touch(from);
+    Structure& to = createIfMissing(result);
+    to.elements = std::move(moved);
+    for (const auto& e : to.elements)
+        if (auto x = asExecute(e.value)) createIfMissing(x->structureId);
+    touch(to);
+    if (open_ == result) pointer_ = static_cast<int>(to.elements.size());
+    if (open_ == original) pointer_ = 0;
+    if (open_ != original && !referenced(original) && !postedAnywhere(original)) structures_.erase(original);
+}
+
+void StructureStore::changeStructureReferences(int original, int result) {
+    const char* function = "CHANGE STRUCTURE REFERENCES";
+    if (original == result) return;
+    auto graph = childrenGraph();
+    graph.try_emplace(result);
+    for (auto& [id, children] : graph)
+        if (children.erase(original)) children.insert(result);
+    if (hasCycle(graph))
+        raise(log_, errors::StructureCycle, function,
+              "references to " + std::to_string(original) + " redirected to " + std::to_string(result));
+    createIfMissing(result);
+    for (auto& [id, s] : structures_) {
+        bool changed = false;
+        for (auto& e : s.elements) {
+            auto x = std::get_if<ExecuteStructureElement>(&e.value);
+            if (x && x->structureId == original) {
+                e = stored(ExecuteStructureElement{result});
+                changed = true;
+            }
+        }
+        if (changed) touch(s);
+    }
+    for (StoreListener* l : listeners_) l->referencesChanged(original, result);
+}
+
+void StructureStore::changeStructureIdentifierAndReferences(int original, int result) {
+    const char* function = "CHANGE STRUCTURE IDENTIFIER AND REFERENCES";
+    mutableStructure(original, function);
+    if (original == result) return;
+    auto graph = childrenGraph();
+    graph[result] = graph[original];
+    graph.erase(original);
+    for (auto& [id, children] : graph)
+        if (children.erase(original)) children.insert(result);
+    if (hasCycle(graph))
+        raise(log_, errors::StructureCycle, function,
+              "structure " + std::to_string(original) + " renamed " + std::to_string(result));
+    changeStructureIdentifier(original, result);
+    changeStructureReferences(original, result);
+    if (open_ != original) structures_.erase(original);
+}
+
+StructureStatus StructureStore::structureStatus(int id) const {
+    const Structure* s = find(id);
+    if (!s) return StructureStatus::NonExistent;
+    return s->elements.empty() ? StructureStatus::Empty : StructureStatus::NotEmpty;
+}
+
+std::vector<int> StructureStore::structureIds() const {
+    std::vector<int> ids;
+    ids.reserve(structures_.size());
+    for (const auto& [id, s] : structures_) ids.push_back(id);
+    return ids;
+}
+
+const Element& StructureStore::elementAt(int id, int elementNumber) const {
+    const Structure* s = find(id);
+    if (!s)
+        raise(log_, errors::StructureDoesNotExist, "INQUIRE ELEMENT CONTENT",
+              "structure " + std::to_string(id));
+    if (elementNumber < 1 || elementNumber > static_cast<int>(s->elements.size()))
+        raise(log_, errors::ElementDoesNotExist, "INQUIRE ELEMENT CONTENT",
+              "element " + std::to_string(elementNumber) + " of structure " + std::to_string(id));
+    return s->elements[static_cast<std::size_t>(elementNumber - 1)].value;
+}
+
+ElementType StructureStore::elementTypeAt(int id, int elementNumber) const {
+    return elementType(elementAt(id, elementNumber));
+}
+
+std::size_t StructureStore::elementSizeAt(int id, int elementNumber) const {
+    return elementSize(elementAt(id, elementNumber));
+}
+
+const Element& StructureStore::currentElement() const {
+    requireOpen("INQUIRE CURRENT ELEMENT CONTENT");
+    if (pointer_ == 0)
+        raise(log_, errors::ElementDoesNotExist, "INQUIRE CURRENT ELEMENT CONTENT", "element pointer is 0");
+    return structures_.at(*open_).elements[static_cast<std::size_t>(pointer_ - 1)].value;
+}
+
+SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
+                                           const std::set<ElementType>& include,
+                                           const std::set<ElementType>& exclude) const {
+    const Structure* s = find(id);
+    if (!s) raise(log_, errors::StructureDoesNotExist, "ELEMENT SEARCH", "structure " + std::to_string(id));
+    int count = static_cast<int>(s->elements.size());
+    auto matches = [&](ElementType t) {
+        bool in = include.contains(ElementType::All) || include.contains(t);
+        bool out = exclude.contains(ElementType::All) || exclude.contains(t);
+        return in && !out;
+    };
+    // Position 0 holds no element: a forward search from it starts at element 1.
+    const bool forward = direction == SearchDirection::Forward;
+    int first = std::clamp(start, 0, count);
+    if (first == 0 && forward) first = 1;
+    for (int n = first; n >= 1 && n <= count; n += forward ? 1 : -1)
+        if (matches(elementType(s->elements[static_cast<std::size_t>(n - 1)].value))) return {true, n};
+    return {};
+}
+
+namespace {
+
+std::vector<StructurePath> truncateAndUnique(std::vector<StructurePath> paths, StructurePathOrder order,
+                                             int depth) {
+    std::sort(paths.begin(), paths.end());
+    if (depth > 0)
+        for (auto& p : paths)
+            if (static_cast<int>(p.size()) > depth) {
+                if (order == StructurePathOrder::TopFirst)
+                    p.resize(static_cast<std::size_t>(depth));
+                else
+                    p.erase(p.begin(), p.end() - depth);
+            }
+    std::vector<StructurePath> unique;
+    std::set<StructurePath> seen;
+    for (auto& p : paths)
+        if (seen.insert(p).second) unique.push_back(std::move(p));
+    return unique;
+}
+
+}  // namespace
+
+std::vector<StructurePath> StructureStore::pathsToAncestors(int id, StructurePathOrder order,
+                                                            int depth) const {
+    const char* function = "INQUIRE PATHS TO ANCESTORS";
+    if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    if (depth < 0) raise(log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
+    // parents[child] = every (parent, element number) executing it
+    std::map<int, std::vector<ElementRef>> parents;
+    for (const auto& [sid, s] : structures_)
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s.elements[i].value))
+                parents[x->structureId].push_back({sid, static_cast<int>(i) + 1});
+    std::vector<StructurePath> out;
+    // Walk upward, building paths bottom-up, then reverse each to top-first.
+    std::vector<StructurePath> partial{{ElementRef{id, 0}}};
+    while (!partial.empty()) {
+        StructurePath p = std::move(partial.back());
+        partial.pop_back();
+        auto it = parents.find(p.back().structureId);
+        if (it == parents.end()) {
+            std::reverse(p.begin(), p.end());
+            out.push_back(std::move(p));
+            continue;
+        }
+        for (auto ref = it->second.rbegin(); ref != it->second.rend(); ++ref) {
+            StructurePath longer = p;
+            longer.push_back(*ref);
+            partial.push_back(std::move(longer));
+        }
+    }
+    return truncateAndUnique(std::move(out), order, depth);
+}
+
+void StructureStore::collectDescendants(int id, StructurePath& path, std::vector<StructurePath>& out) const {
+    const Structure* s = find(id);
+    bool leaf = true;
+    if (s)
+        for (std::size_t i = 0; i < s->elements.size(); ++i)
+            if (auto x = asExecute(s->elements[i].value)) {
+                leaf = false;
+                path.push_back({id, static_cast<int>(i) + 1});
+                collectDescendants(x->structureId, path, out);
+                path.pop_back();
+            }
+    if (leaf) {
+        path.push_back({id, 0});
+        out.push_back(path);
+        path.pop_back();
+    }
+}
+
+std::vector<StructurePath> StructureStore::pathsToDescendants(int id, StructurePathOrder order,
+                                                              int depth) const {
+    const char* function = "INQUIRE PATHS TO DESCENDANTS";
+    if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    if (depth < 0) raise(log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
+    std::vector<StructurePath> out;
+    StructurePath path;
+    collectDescendants(id, path, out);
+    return truncateAndUnique(std::move(out), order, depth);
+}
+
+void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>& contents,
+                                       const char* function) {
+    auto graph = childrenGraph();
+    for (const auto& [id, elements] : contents) {
+        auto& children = graph[id];
+        children.clear();
+        for (const auto& e : elements) {
+            if (std::string reason = validateElement(e); !reason.empty())
+                raise(log_, errors::InvalidElementData, function,
+                      "structure " + std::to_string(id) + ": " + reason);
+            if (auto x = asExecute(e)) children.insert(x->structureId);
+        }
+    }
+    if (hasCycle(graph))
+        raise(log_, errors::StructureCycle, function, "the retrieved network would be cyclic");
+    for (const auto& [id, elements] : contents) {
+        Structure& s = createIfMissing(id);
+        s.elements.clear();
+        for (const auto& e : elements) {
+            s.elements.push_back(stored(e));
+            if (auto x = asExecute(e)) createIfMissing(x->structureId);
+        }
+        touch(s);
+        if (open_ == id) pointer_ = static_cast<int>(s.elements.size());
+    }
+}
+
+}  // namespace phigs

@@ -1,0 +1,174 @@
+#include "Tessellation.h"
+
+#include "geom/Evaluate.h"
+#include "geom/Tessellate.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace phigs::detail {
+
+int segmentsPerSpan(const std::vector<glm::dvec3>& controlPolygon, int criteria, double value) {
+    if (criteria == 2) return std::clamp(static_cast<int>(std::lround(value)), 1, 256);
+    if (criteria >= 3 && criteria <= 8 && value > 0.0) {
+        // A span of a degree-p piece deviates from its chord by about |second difference| / 8
+        // per segment squared: choose the count that brings it under the tolerance.
+        double bend = 0.0;
+        for (std::size_t i = 2; i < controlPolygon.size(); ++i)
+            bend = std::max(
+                bend, glm::length(controlPolygon[i] - 2.0 * controlPolygon[i - 1] + controlPolygon[i - 2]));
+        return std::clamp(static_cast<int>(std::ceil(std::sqrt(bend / (8.0 * value)))), 1, 64);
+    }
+    return 8;
+}
+
+std::vector<double> spanBreaks(const std::vector<double>& knots, double start, double end) {
+    std::vector<double> breaks{start};
+    for (double k : knots)
+        if (k > breaks.back() && k < end) breaks.push_back(k);
+    breaks.push_back(end);
+    return breaks;
+}
+
+namespace {
+
+/// Keeps any tessellation to at most about this many segments in one parameter direction.
+constexpr int kMaxSegments = 2048;
+
+/// A tolerance no finer than 1e-9 of the control polygon's extent, so a tiny criteria value
+/// cannot ask for an unbounded mesh.
+double boundedTolerance(const std::vector<glm::dvec3>& points, double tolerance) {
+    glm::dvec3 low(0.0), high(0.0);
+    if (!points.empty()) low = high = points.front();
+    for (const auto& p : points) low = glm::min(low, p), high = glm::max(high, p);
+    return std::max(tolerance, 1e-9 * std::max(glm::length(high - low), 1e-300));
+}
+
+std::vector<double> samples(const std::vector<double>& breaks, int perSpan) {
+    const int spans = std::max(1, static_cast<int>(breaks.size()) - 1);
+    perSpan = std::clamp(perSpan, 1, std::max(1, kMaxSegments / spans));
+    std::vector<double> out;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i)
+        for (int s = 0; s < perSpan; ++s)
+            out.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * static_cast<double>(s) / perSpan);
+    out.push_back(breaks.back());
+    return out;
+}
+
+std::vector<glm::dvec2> loopPolygon(const TrimLoop& loop) {
+    std::vector<glm::dvec2> polygon;
+    for (const geom::Curve& c : loop)
+        for (const glm::dvec3& p : tessellateCurve(c, c.domainStart(), c.domainEnd(), 1, 0.0))
+            polygon.push_back({p.x, p.y});
+    return polygon;
+}
+
+bool insideTrim(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p) {
+    bool inside = false;
+    for (const auto& poly : loops)
+        for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+            if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+                p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+                inside = !inside;
+    return inside;
+}
+
+bool chordal(int criteria, double value) {
+    return criteria >= 3 && criteria <= 8 && value > 0.0;
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
+                                        double value) {
+    const bool whole = !(end > start) || (start <= curve.domainStart() && end >= curve.domainEnd());
+    if (whole && chordal(criteria, value))
+        return geom::tessellate(curve, boundedTolerance(curve.points, value));
+    if (!(end > start)) start = curve.domainStart(), end = curve.domainEnd();
+    int perSpan = segmentsPerSpan(curve.points, criteria, value);
+    std::vector<glm::dvec3> points;
+    for (double u : samples(spanBreaks(curve.knots, start, end), perSpan))
+        points.push_back(geom::evaluate(curve, u));
+    return points;
+}
+
+namespace {
+
+/// geom's adaptive mesh (within the tolerance everywhere), trimmed like the grid.
+MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
+    geom::SurfaceMesh adaptive =
+        geom::tessellateAdaptive(element.surface, boundedTolerance(element.surface.points, tolerance));
+    MeshData mesh;
+    for (std::size_t i = 0; i < adaptive.positions.size(); ++i) {
+        mesh.positions.push_back(glm::vec3(adaptive.positions[i]));
+        mesh.normals.push_back(glm::vec3(adaptive.normals[i]));
+        mesh.uv.push_back(glm::vec2(adaptive.uv[i]));
+    }
+    std::vector<std::vector<glm::dvec2>> loops;
+    for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
+    for (std::size_t t = 0; t + 2 < adaptive.triangles.size(); t += 3) {
+        glm::dvec2 centre = (adaptive.uv[adaptive.triangles[t]] + adaptive.uv[adaptive.triangles[t + 1]] +
+                             adaptive.uv[adaptive.triangles[t + 2]]) /
+                            3.0;
+        if (!loops.empty() && !insideTrim(loops, centre)) continue;
+        mesh.triangles.insert(mesh.triangles.end(), adaptive.triangles.begin() + static_cast<long>(t),
+                              adaptive.triangles.begin() + static_cast<long>(t + 3));
+    }
+    return mesh;
+}
+
+}  // namespace
+
+MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
+                           const SurfaceCharacteristicsAttribute& characteristics) {
+    if (chordal(criteria.criteria, criteria.valueU) && characteristics.style != 3)
+        return adaptiveMesh(element, criteria.valueU);
+    const geom::Surface& s = element.surface;
+    std::vector<glm::dvec3> rowU, rowV;  // control polygons along u (first column) and v (first row)
+    for (std::size_t i = 0; i < s.countU; ++i) rowU.push_back(s.point(i, 0));
+    for (std::size_t j = 0; j < s.countV; ++j) rowV.push_back(s.point(0, j));
+    std::vector<double> us = samples(spanBreaks(s.knotsU, s.domainStartU(), s.domainEndU()),
+                                     segmentsPerSpan(rowU, criteria.criteria, criteria.valueU));
+    std::vector<double> vs = samples(
+        spanBreaks(s.knotsV, s.domainStartV(), s.domainEndV()),
+        segmentsPerSpan(rowV, criteria.criteria, criteria.criteria == 2 ? criteria.valueV : criteria.valueU));
+    MeshData mesh;
+    const auto nu = static_cast<std::uint32_t>(us.size()), nv = static_cast<std::uint32_t>(vs.size());
+    for (double u : us)
+        for (double v : vs) {
+            mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
+            mesh.normals.push_back(glm::vec3(geom::normal(s, u, v)));
+            mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
+        }
+    std::vector<std::vector<glm::dvec2>> loops;
+    for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
+    auto at = [nv](std::uint32_t i, std::uint32_t j) { return i * nv + j; };
+    for (std::uint32_t i = 0; i + 1 < nu; ++i)
+        for (std::uint32_t j = 0; j + 1 < nv; ++j) {
+            if (!loops.empty() && !insideTrim(loops, {(us[i] + us[i + 1]) / 2, (vs[j] + vs[j + 1]) / 2}))
+                continue;
+            // Counter-clockwise in (u, v) is counter-clockwise seen along Su x Sv.
+            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    if (characteristics.style == 3) {
+        // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
+        auto lines = [&](int count, std::uint32_t along, bool constantU) {
+            for (int c = 0; c < count; ++c) {
+                auto k = static_cast<std::uint32_t>(std::lround((along - 1) * (c + 1.0) / (count + 1.0)));
+                std::vector<std::uint32_t> line;
+                for (std::uint32_t t = 0; t < (constantU ? nv : nu); ++t)
+                    line.push_back(constantU ? at(k, t) : at(t, k));
+                mesh.isoLines.push_back(std::move(line));
+            }
+        };
+        lines(characteristics.curvesU, nu, true);
+        lines(characteristics.curvesV, nv, false);
+    }
+    return mesh;
+}
+
+}  // namespace phigs::detail

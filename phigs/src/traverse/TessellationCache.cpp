@@ -1,0 +1,42 @@
+#include "phigs/traverse/TessellationCache.h"
+
+namespace phigs {
+
+const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind,
+                                                       const std::function<Entry()>& build) {
+    auto it = entries_.find(key);
+    if (it != entries_.end()) {
+        ++counters_.hits;
+        it->second.used = true;
+        return it->second.entry;
+    }
+    Entry entry = build();
+    switch (kind) {
+        case Kind::Surface:
+            ++counters_.surfacesTessellated;
+            break;
+        case Kind::Curve:
+            ++counters_.curvesTessellated;
+            break;
+        case Kind::Mesh:
+            ++counters_.meshesBuilt;
+            break;
+    }
+    return entries_.emplace(key, Slot{std::move(entry), true}).first->second.entry;
+}
+
+void TessellationCache::prune() {
+    for (auto it = entries_.begin(); it != entries_.end();) {
+        const Entry& e = it->second.entry;
+        // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid keys.
+        bool held = e.mesh.use_count() > 1 || e.surface.use_count() > 1 || e.curve.use_count() > 1;
+        if (!it->second.used && !held) {
+            it = entries_.erase(it);
+        } else {
+            it->second.used = false;
+            ++it;
+        }
+    }
+}
+
+}  // namespace phigs

@@ -1,0 +1,794 @@
+#include "phigs/traverse/Traverser.h"
+
+#include "Tessellation.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <array>
+#include <map>
+
+namespace phigs {
+
+namespace detail {
+
+/// The PHIGS traversal state list (one copy per open EXECUTE STRUCTURE level).
+struct State {
+    int polylineIndex = 1, polymarkerIndex = 1, textIndex = 1, interiorIndex = 1, edgeIndex = 1;
+    std::array<bool, static_cast<std::size_t>(AspectId::Count_)> individual{};
+    LineType lineType = LineType::Solid;
+    double lineWidth = 1.0;
+    Colour lineColour = Colour::indexed(1);
+    MarkerType markerType = MarkerType::Asterisk;
+    double markerScale = 1.0;
+    Colour markerColour = Colour::indexed(1);
+    int font = 1, precision = 2;
+    double expansion = 1.0, spacing = 0.0;
+    Colour textColour = Colour::indexed(1);
+    double charHeight = 0.01;
+    glm::dvec2 up{0, 1};
+    TextPath path = TextPath::Right;
+    int hAlign = 0, vAlign = 0;
+    double annoHeight = 0.01;
+    glm::dvec2 annoUp{0, 1};
+    TextPath annoPath = TextPath::Right;
+    int annoH = 0, annoV = 0;
+    InteriorStyle style = InteriorStyle::Hollow, backStyle = InteriorStyle::Hollow;
+    int styleIndex = 1, backStyleIndex = 1;
+    Colour interiorColour = Colour::indexed(1), backColour = Colour::indexed(1);
+    ShadingMethod shading = ShadingMethod::None, backShading = ShadingMethod::None;
+    ReflectanceModel reflectance = ReflectanceModel::None, backReflectance = ReflectanceModel::None;
+    AreaPropertiesAttribute properties{ElementType::AreaProperties};
+    AreaPropertiesAttribute backProperties{ElementType::BackAreaProperties};
+    int faceDistinguishing = 0, faceCulling = 0;
+    bool edgeFlag = false;
+    LineType edgeType = LineType::Solid;
+    double edgeWidth = 1.0;
+    Colour edgeColour = Colour::indexed(1);
+    ApproximationAttribute curveApproximation{ElementType::CurveApproximationCriteria};
+    ApproximationAttribute surfaceApproximation{ElementType::SurfaceApproximationCriteria};
+    SurfaceCharacteristicsAttribute surfaceCharacteristics;
+    std::set<int> lights;
+    int depthCueIndex = 0;
+    int viewIndex = 0, pickId = 0, hlhsrId = 0;
+    std::set<int> names;
+    glm::dmat4 local{1.0}, global{1.0};
+    bool modelClip = false;
+    std::vector<glm::dvec4> clipVolume, inheritedClipVolume;  ///< world coordinates
+
+    State() { individual.fill(true); }
+    bool ind(AspectId a) const { return individual[static_cast<std::size_t>(a)]; }
+    bool operator==(const State&) const = default;
+};
+
+}  // namespace detail
+
+/// What one execution of a structure (with its descendants) produced, for a given inherited
+/// state and path: reused as long as no structure of that subtree changed.
+struct Traverser::SubtreeCache {
+    struct Entry {
+        detail::State entry;
+        std::vector<DrawPathLevel> prefix;
+        std::uint64_t stamp = 0;
+        std::vector<DrawItem> items;
+        std::vector<int> lightKeys, depthCues;
+        std::uint64_t elements = 0;
+        bool used = true;
+    };
+    std::map<int, std::vector<Entry>> entries;
+    std::map<int, std::pair<std::uint64_t, std::vector<int>>>
+        children;  ///< per structure: version, executed ids
+    std::map<std::set<int>, int> lightKeys;
+    std::vector<std::set<int>> lightKeySets;
+
+    void prune() {
+        for (auto& [id, list] : entries) {
+            std::erase_if(list, [](const Entry& e) { return !e.used; });
+            for (auto& e : list) e.used = false;
+        }
+        std::erase_if(entries, [](const auto& kv) { return kv.second.empty(); });
+    }
+};
+
+namespace {
+
+using detail::State;
+
+glm::dmat4 compose(const glm::dmat4& current, const TransformElement& t) {
+    switch (t.composition) {
+        case Composition::Preconcatenate:
+            return t.matrix * current;
+        case Composition::Postconcatenate:
+            return current * t.matrix;
+        case Composition::Replace:
+            break;
+    }
+    return t.matrix;
+}
+
+void applyIndex(State& s, const IndexAttribute& a) {
+    using T = ElementType;
+    const int v = a.value;
+    switch (a.type) {
+        case T::PolylineIndex:
+            s.polylineIndex = v;
+            break;
+        case T::PolymarkerIndex:
+            s.polymarkerIndex = v;
+            break;
+        case T::TextIndex:
+            s.textIndex = v;
+            break;
+        case T::InteriorIndex:
+            s.interiorIndex = v;
+            break;
+        case T::EdgeIndex:
+            s.edgeIndex = v;
+            break;
+        case T::Linetype:
+            s.lineType = static_cast<LineType>(v);
+            break;
+        case T::MarkerType:
+            s.markerType = static_cast<MarkerType>(v);
+            break;
+        case T::TextFont:
+            s.font = v;
+            break;
+        case T::TextPrecision:
+            s.precision = v;
+            break;
+        case T::TextPath:
+            s.path = static_cast<TextPath>(v);
+            break;
+        case T::AnnotationTextPath:
+            s.annoPath = static_cast<TextPath>(v);
+            break;
+        case T::InteriorStyle:
+            s.style = static_cast<InteriorStyle>(v);
+            break;
+        case T::InteriorStyleIndex:
+            s.styleIndex = v;
+            break;
+        case T::BackInteriorStyle:
+            s.backStyle = static_cast<InteriorStyle>(v);
+            break;
+        case T::BackInteriorStyleIndex:
+            s.backStyleIndex = v;
+            break;
+        case T::InteriorShadingMethod:
+            s.shading = static_cast<ShadingMethod>(v);
+            break;
+        case T::BackInteriorShadingMethod:
+            s.backShading = static_cast<ShadingMethod>(v);
+            break;
+        case T::InteriorReflectanceEquation:
+            s.reflectance = static_cast<ReflectanceModel>(v);
+            break;
+        case T::BackInteriorReflectanceEquation:
+            s.backReflectance = static_cast<ReflectanceModel>(v);
+            break;
+        case T::FaceDistinguishingMode:
+            s.faceDistinguishing = v;
+            break;
+        case T::FaceCullingMode:
+            s.faceCulling = v;
+            break;
+        case T::EdgeFlag:
+            s.edgeFlag = v != 0;
+            break;
+        case T::Edgetype:
+            s.edgeType = static_cast<LineType>(v);
+            break;
+        case T::DepthCueIndex:
+            s.depthCueIndex = v;
+            break;
+        case T::ViewIndex:
+            s.viewIndex = v;
+            break;
+        case T::PickId:
+            s.pickId = v;
+            break;
+        case T::HlhsrIdentifier:
+            s.hlhsrId = v;
+            break;
+        case T::ModelClippingIndicator:
+            s.modelClip = v != 0;
+            break;
+        default:
+            break;  // polyline shading, annotation style, colour mapping: no draw-list effect
+    }
+}
+
+void applyReal(State& s, const RealAttribute& a) {
+    using T = ElementType;
+    switch (a.type) {
+        case T::LinewidthScaleFactor:
+            s.lineWidth = a.value;
+            break;
+        case T::MarkerSizeScaleFactor:
+            s.markerScale = a.value;
+            break;
+        case T::CharacterExpansionFactor:
+            s.expansion = a.value;
+            break;
+        case T::CharacterSpacing:
+            s.spacing = a.value;
+            break;
+        case T::CharacterHeight:
+            s.charHeight = a.value;
+            break;
+        case T::AnnotationTextCharacterHeight:
+            s.annoHeight = a.value;
+            break;
+        case T::EdgewidthScaleFactor:
+            s.edgeWidth = a.value;
+            break;
+        default:
+            break;
+    }
+}
+
+void applyColour(State& s, const ColourAttribute& a) {
+    using T = ElementType;
+    switch (a.type) {
+        case T::PolylineColour:
+            s.lineColour = a.colour;
+            break;
+        case T::PolymarkerColour:
+            s.markerColour = a.colour;
+            break;
+        case T::TextColour:
+            s.textColour = a.colour;
+            break;
+        case T::InteriorColour:
+            s.interiorColour = a.colour;
+            break;
+        case T::BackInteriorColour:
+            s.backColour = a.colour;
+            break;
+        case T::EdgeColour:
+            s.edgeColour = a.colour;
+            break;
+        default:
+            break;
+    }
+}
+
+/// Resolves the state against the workstation tables.
+struct Resolver {
+    const WorkstationTables& t;
+    glm::vec3 rgb(const Colour& c) const { return glm::vec3(t.colours.resolve(c)); }
+
+    LineStyle line(const State& s) const {
+        const PolylineBundle& b = t.polylines.get(s.polylineIndex);
+        return {rgb(s.ind(AspectId::PolylineColour) ? s.lineColour : b.colour),
+                s.ind(AspectId::LineType) ? s.lineType : b.type,
+                static_cast<float>(s.ind(AspectId::LinewidthScale) ? s.lineWidth : b.width)};
+    }
+    MarkerStyle marker(const State& s) const {
+        const PolymarkerBundle& b = t.polymarkers.get(s.polymarkerIndex);
+        return {rgb(s.ind(AspectId::PolymarkerColour) ? s.markerColour : b.colour),
+                s.ind(AspectId::MarkerType) ? s.markerType : b.type,
+                static_cast<float>(s.ind(AspectId::MarkerSizeScale) ? s.markerScale : b.scale)};
+    }
+    TextStyle text(const State& s, bool annotation) const {
+        const TextBundle& b = t.texts.get(s.textIndex);
+        TextStyle out;
+        out.colour = rgb(s.ind(AspectId::TextColour) ? s.textColour : b.colour);
+        out.font = s.ind(AspectId::TextFont) ? s.font : b.font;
+        out.expansion = static_cast<float>(s.ind(AspectId::CharacterExpansion) ? s.expansion : b.expansion);
+        out.spacing = static_cast<float>(s.ind(AspectId::CharacterSpacing) ? s.spacing : b.spacing);
+        out.height = annotation ? s.annoHeight : s.charHeight;
+        out.upVector = annotation ? s.annoUp : s.up;
+        out.path = annotation ? s.annoPath : s.path;
+        out.horizontal = static_cast<HorizontalAlignment>(annotation ? s.annoH : s.hAlign);
+        out.vertical = static_cast<VerticalAlignment>(annotation ? s.annoV : s.vAlign);
+        return out;
+    }
+    Reflectance reflectance(const AreaPropertiesAttribute& a) const {
+        return {static_cast<float>(a.ambient),          static_cast<float>(a.diffuse),
+                static_cast<float>(a.specular),         rgb(a.specularColour),
+                static_cast<float>(a.specularExponent), static_cast<float>(a.transparency)};
+    }
+    InteriorStyleSet interior(const State& s) const {
+        const InteriorBundle& b = t.interiors.get(s.interiorIndex);
+        InteriorStyleSet out;
+        out.style = s.ind(AspectId::InteriorStyle) ? s.style : b.style;
+        out.styleIndex = s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex;
+        out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour);
+        out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour);
+        out.shading = s.ind(AspectId::InteriorShading) ? s.shading : b.shading;
+        out.reflectance = s.ind(AspectId::InteriorReflectance) ? s.reflectance : b.reflectance;
+        out.properties = reflectance(s.ind(AspectId::AreaProperties) ? s.properties : b.properties);
+        out.backProperties =
+            reflectance(s.ind(AspectId::BackAreaProperties) ? s.backProperties : b.backProperties);
+        out.cull = static_cast<CullMode>(s.faceCulling);
+        out.distinguishBackFaces = s.faceDistinguishing != 0;
+        return out;
+    }
+    EdgeStyle edge(const State& s) const {
+        const EdgeBundle& b = t.edges.get(s.edgeIndex);
+        return {s.ind(AspectId::EdgeFlag) ? s.edgeFlag : b.visible,
+                rgb(s.ind(AspectId::EdgeColour) ? s.edgeColour : b.colour),
+                s.ind(AspectId::EdgeType) ? s.edgeType : b.type,
+                static_cast<float>(s.ind(AspectId::EdgewidthScale) ? s.edgeWidth : b.width)};
+    }
+    ApproximationAttribute surfaceApproximation(const State& s) const {
+        return s.ind(AspectId::SurfaceApproximation) ? s.surfaceApproximation
+                                                     : t.interiors.get(s.interiorIndex).approximation;
+    }
+};
+
+bool anyIndexed(const std::vector<Colour>& colours) {
+    for (const Colour& c : colours)
+        if (!c.direct) return true;
+    return false;
+}
+
+class Walk {
+public:
+    Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
+         TessellationCache& cache, Traverser::SubtreeCache* subtrees, DrawList& out)
+        : store_(store),
+          tables_(tables),
+          filters_(filters),
+          cache_(cache),
+          out_(out),
+          resolve_{tables},
+          subtrees_(subtrees),
+          baseStamp_(baseStamp(tables, filters)) {}
+
+    std::uint64_t visited = 0;
+    std::uint64_t reused = 0;
+
+    void root(int id) {
+        State state;
+        state.names = filters_.initialNames;
+        walk(id, state);
+    }
+
+private:
+    void walk(int id, State& state) {
+        const Structure* s = store_.find(id);
+        if (!s) return;
+        for (std::size_t i = 0; i < s->elements.size(); ++i) {
+            ++visited;
+            const int number = static_cast<int>(i) + 1;
+            const StoredElement& element = s->elements[i];
+            if (auto x = std::get_if<ExecuteStructureElement>(&element.value)) {
+                State child = state;  // push: the child inherits, and nothing it sets comes back
+                child.global = state.global * state.local;
+                child.local = glm::dmat4(1.0);
+                child.inheritedClipVolume = child.clipVolume;
+                path_.push_back({id, number, state.pickId});
+                execute(x->structureId, child);
+                path_.pop_back();
+                continue;
+            }
+            apply(*s, element, number, state);
+        }
+    }
+
+    static std::uint64_t mix(std::uint64_t hash, std::uint64_t value) {
+        return (hash ^ value) * 1099511628211ull;
+    }
+
+    static std::uint64_t baseStamp(const WorkstationTables& tables, const TraversalFilters& filters) {
+        std::uint64_t h = mix(1469598103934665603ull, tables.generation);
+        auto set = [&](const std::set<int>& names) {
+            h = mix(h, names.size());
+            for (int n : names) h = mix(h, static_cast<std::uint32_t>(n));
+        };
+        auto filter = [&](const std::optional<NameSetFilter>& f) {
+            h = mix(h, f.has_value());
+            if (f) set(f->inclusion), set(f->exclusion);
+        };
+        filter(filters.pick), filter(filters.highlight), filter(filters.invisibility),
+            set(filters.initialNames);
+        return h;
+    }
+
+    /// A hash of the versions of every structure a subtree executes, memoized per traversal.
+    std::uint64_t subtreeStamp(int id) {
+        if (auto it = stamps_.find(id); it != stamps_.end()) return it->second;
+        const Structure* s = store_.find(id);
+        std::uint64_t h = mix(mix(baseStamp_, static_cast<std::uint32_t>(id)), s ? s->version : 0);
+        if (s) {
+            auto& known = subtrees_->children[id];
+            if (known.first != s->version) {
+                known.first = s->version;
+                known.second.clear();
+                for (const auto& e : s->elements)
+                    if (auto x = std::get_if<ExecuteStructureElement>(&e.value))
+                        known.second.push_back(x->structureId);
+            }
+            std::vector<int> children = known.second;
+            for (int child : children) h = mix(h, subtreeStamp(child));
+        }
+        stamps_[id] = h;
+        return h;
+    }
+
+    void execute(int id, State& child) {
+        if (!subtrees_) {
+            walk(id, child);
+            return;
+        }
+        const std::uint64_t stamp = subtreeStamp(id);
+        auto& entries = subtrees_->entries[id];
+        for (auto& e : entries)
+            if (e.stamp == stamp && e.prefix == path_ && e.entry == child) {
+                e.used = true;
+                reuse(e);
+                return;
+            }
+        const std::size_t firstItem = out_.items.size();
+        const std::uint64_t firstElements = visited + reused;
+        State entryState = child;
+        walk(id, child);
+        Traverser::SubtreeCache::Entry e;
+        e.entry = std::move(entryState);
+        e.prefix = path_;
+        e.stamp = stamp;
+        e.items.assign(out_.items.begin() + static_cast<long>(firstItem), out_.items.end());
+        e.lightKeys.assign(lightKeys_.begin() + static_cast<long>(firstItem), lightKeys_.end());
+        e.depthCues.assign(cueIndices_.begin() + static_cast<long>(firstItem), cueIndices_.end());
+        e.elements = visited + reused - firstElements;
+        auto& list = subtrees_->entries[id];  // walk() may have added entries
+        if (list.size() >= 8) list.erase(list.begin());
+        list.push_back(std::move(e));
+    }
+
+    void reuse(const Traverser::SubtreeCache::Entry& e) {
+        reused += e.elements;
+        for (std::size_t i = 0; i < e.items.size(); ++i) {
+            DrawItem item = e.items[i];
+            item.lightSet = e.lightKeys[i] < 0
+                                ? -1
+                                : lightSet(subtrees_->lightKeySets[static_cast<std::size_t>(e.lightKeys[i])]);
+            item.depthCue = e.depthCues[i] < 0 ? -1 : depthCue(e.depthCues[i]);
+            out_.items.push_back(std::move(item));
+            lightKeys_.push_back(e.lightKeys[i]);
+            cueIndices_.push_back(e.depthCues[i]);
+        }
+    }
+
+    int lightKey(const std::set<int>& active) {
+        if (active.empty() || !subtrees_) return -1;
+        auto [it, fresh] =
+            subtrees_->lightKeys.try_emplace(active, static_cast<int>(subtrees_->lightKeySets.size()));
+        if (fresh) subtrees_->lightKeySets.push_back(active);
+        return it->second;
+    }
+
+    DrawItem* emit(const Structure& s, int number, const State& state, DrawPrimitive primitive) {
+        if (filters_.invisibility && filters_.invisibility->accepts(state.names)) return nullptr;
+        DrawItem item;
+        item.primitive = std::move(primitive);
+        item.modelTransform = state.global * state.local;
+        item.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
+        item.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
+        item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
+        item.lightSet = lightSet(state.lights);
+        item.depthCue = depthCue(state.depthCueIndex);
+        item.source.path = path_;
+        item.source.path.push_back({s.id, number, state.pickId});
+        item.source.structureVersion = s.version;
+        if (state.modelClip) item.modelClipPlanes = state.clipVolume;
+        out_.items.push_back(std::move(item));
+        lightKeys_.push_back(lightKey(state.lights));
+        cueIndices_.push_back(item.depthCue < 0 ? -1 : cueTableIndex(state.depthCueIndex));
+        return &out_.items.back();
+    }
+
+    int lightSet(const std::set<int>& active) {
+        if (active.empty()) return -1;
+        auto [it, fresh] = lightSets_.try_emplace(active, static_cast<int>(out_.lightSets.size()));
+        if (fresh) {
+            std::vector<Light> lights;
+            for (int index : active)
+                if (auto l = tables_.lights.find(index); l != tables_.lights.end())
+                    lights.push_back(l->second);
+            out_.lightSets.push_back(std::move(lights));
+        }
+        return it->second;
+    }
+
+    int cueTableIndex(int index) const { return tables_.depthCues.contains(index) ? index : 0; }
+
+    int depthCue(int index) {
+        auto entry = tables_.depthCues.find(index);
+        if (entry == tables_.depthCues.end()) entry = tables_.depthCues.find(0);
+        if (entry == tables_.depthCues.end() || !entry->second.enabled) return -1;
+        auto [it, fresh] = depthCues_.try_emplace(entry->first, static_cast<int>(out_.depthCues.size()));
+        if (fresh) out_.depthCues.push_back(entry->second);
+        return it->second;
+    }
+
+    std::vector<glm::vec3> resolveColours(const std::vector<Colour>& colours) const {
+        std::vector<glm::vec3> out;
+        out.reserve(colours.size());
+        for (const Colour& c : colours) out.push_back(resolve_.rgb(c));
+        return out;
+    }
+
+    void apply(const Structure& s, const StoredElement& stored, int number, State& state) {
+        std::visit(
+            [&](const auto& e) {
+                using E = std::decay_t<decltype(e)>;
+                if constexpr (std::is_same_v<E, PolylineElement>) {
+                    if (e.points.size() >= 2)
+                        emit(s, number, state, DrawPolyline{e.points, resolve_.line(state)});
+                } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
+                    if (!e.points.empty())
+                        emit(s, number, state, DrawPolymarker{e.points, resolve_.marker(state)});
+                } else if constexpr (std::is_same_v<E, FillAreaElement>) {
+                    if (e.points.size() >= 3) {
+                        DrawFillArea f;
+                        f.contours = {e.points};
+                        fillStyle(f, state);
+                        emit(s, number, state, std::move(f));
+                    }
+                } else if constexpr (std::is_same_v<E, FillAreaSetElement>) {
+                    DrawFillArea f;
+                    for (const auto& c : e.contours)
+                        if (c.size() >= 3) f.contours.push_back(c);
+                    if (!f.contours.empty()) {
+                        fillStyle(f, state);
+                        emit(s, number, state, std::move(f));
+                    }
+                } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
+                    DrawFillArea f;
+                    f.contours = e.contours;
+                    for (const auto& c : e.vertexColours) f.vertexColours.push_back(resolveColours(c));
+                    f.vertexNormals = e.vertexNormals;
+                    if (e.hasFacetNormal) f.facetNormal = e.facetNormal;
+                    fillStyle(f, state);
+                    if (e.hasFacetColour) f.interior.colour = resolve_.rgb(e.facetColour);
+                    emit(s, number, state, std::move(f));
+                } else if constexpr (std::is_same_v<E, TextElement>) {
+                    DrawText t;
+                    t.text = e.text;
+                    t.position = e.position;
+                    t.direction1 = e.direction1;
+                    t.direction2 = e.direction2;
+                    t.style = resolve_.text(state, false);
+                    emit(s, number, state, std::move(t));
+                } else if constexpr (std::is_same_v<E, AnnotationTextElement>) {
+                    DrawText t;
+                    t.text = e.text;
+                    t.position = e.reference;
+                    t.annotation = true;
+                    t.annotationOffset = e.offset;
+                    t.style = resolve_.text(state, true);
+                    emit(s, number, state, std::move(t));
+                } else if constexpr (std::is_same_v<E, CellArrayElement>) {
+                    cellArray(s, stored, number, state, e);
+                } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
+                    const ApproximationAttribute& a = state.curveApproximation;
+                    TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
+                    const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
+                        TessellationCache::Entry built;
+                        built.curve = std::make_shared<const geom::Curve>(e.curve);
+                        built.curvePoints =
+                            detail::tessellateCurve(e.curve, e.rangeStart, e.rangeEnd, a.criteria, a.valueU);
+                        return built;
+                    });
+                    emit(s, number, state, DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state)});
+                } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
+                    ApproximationAttribute a = resolve_.surfaceApproximation(state);
+                    const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
+                    TessellationCache::Key key{stored.serial, a.criteria, a.valueU,  a.valueV,
+                                               c.style,       c.curvesU,  c.curvesV, 0};
+                    const auto& entry = cache_.get(key, TessellationCache::Kind::Surface, [&] {
+                        TessellationCache::Entry built;
+                        built.surface = std::make_shared<const geom::Surface>(e.surface);
+                        built.mesh = std::make_shared<const MeshData>(detail::tessellateSurface(e, a, c));
+                        return built;
+                    });
+                    emit(s, number, state,
+                         DrawMesh{entry.mesh, entry.surface, resolve_.interior(state), resolve_.edge(state),
+                                  resolve_.line(state)});
+                } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
+                    if (e.points.size() < 3) return;
+                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
+                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
+                        for (std::uint32_t k = 0; k + 2 < e.points.size(); ++k)
+                            if (k % 2 == 0)
+                                m.triangles.insert(m.triangles.end(), {k, k + 1, k + 2});
+                            else
+                                m.triangles.insert(m.triangles.end(), {k + 1, k, k + 2});
+                        return m;
+                    });
+                    emit(s, number, state,
+                         DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state),
+                                  resolve_.line(state)});
+                } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
+                    if (e.rows < 2 || e.columns < 2) return;
+                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
+                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
+                        auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * e.columns + c); };
+                        for (int r = 0; r + 1 < e.rows; ++r)
+                            for (int c = 0; c + 1 < e.columns; ++c) {
+                                m.triangles.insert(m.triangles.end(),
+                                                   {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
+                                m.triangles.insert(m.triangles.end(),
+                                                   {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
+                            }
+                        return m;
+                    });
+                    emit(s, number, state,
+                         DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state),
+                                  resolve_.line(state)});
+                } else if constexpr (std::is_same_v<E, IndexAttribute>) {
+                    applyIndex(state, e);
+                } else if constexpr (std::is_same_v<E, RealAttribute>) {
+                    applyReal(state, e);
+                } else if constexpr (std::is_same_v<E, ColourAttribute>) {
+                    applyColour(state, e);
+                } else if constexpr (std::is_same_v<E, UpVectorAttribute>) {
+                    (e.type == ElementType::CharacterUpVector ? state.up : state.annoUp) = e.up;
+                } else if constexpr (std::is_same_v<E, AlignmentAttribute>) {
+                    if (e.type == ElementType::TextAlignment)
+                        state.hAlign = e.horizontal, state.vAlign = e.vertical;
+                    else
+                        state.annoH = e.horizontal, state.annoV = e.vertical;
+                } else if constexpr (std::is_same_v<E, AreaPropertiesAttribute>) {
+                    (e.type == ElementType::AreaProperties ? state.properties : state.backProperties) = e;
+                } else if constexpr (std::is_same_v<E, AsfAttribute>) {
+                    state.individual[static_cast<std::size_t>(e.aspect)] = e.individual;
+                } else if constexpr (std::is_same_v<E, ApproximationAttribute>) {
+                    (e.type == ElementType::CurveApproximationCriteria ? state.curveApproximation
+                                                                       : state.surfaceApproximation) = e;
+                } else if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>) {
+                    state.surfaceCharacteristics = e;
+                } else if constexpr (std::is_same_v<E, LightSourceStateAttribute>) {
+                    for (int i : e.deactivate) state.lights.erase(i);
+                    for (int i : e.activate) state.lights.insert(i);
+                } else if constexpr (std::is_same_v<E, TransformElement>) {
+                    using T = ElementType;
+                    if (e.type == T::LocalModellingTransformation3 ||
+                        e.type == T::LocalModellingTransformation)
+                        state.local = compose(state.local, e);
+                    else
+                        state.global = e.matrix;
+                } else if constexpr (std::is_same_v<E, ModelClipElement>) {
+                    // Half spaces are given in modelling coordinates and fixed in the world by the
+                    // composite transform current when the element is traversed.
+                    glm::dmat4 m = state.global * state.local;
+                    glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+                    if (e.op == 1) state.clipVolume.clear();
+                    for (const auto& [point, normal] : e.halfSpaces) {
+                        glm::dvec3 p = glm::dvec3(m * glm::dvec4(point, 1.0));
+                        glm::dvec3 n = normalMatrix * normal;
+                        state.clipVolume.push_back(glm::dvec4(n, -glm::dot(n, p)));
+                    }
+                } else if constexpr (std::is_same_v<E, RestoreModelClipElement>) {
+                    state.clipVolume = state.inheritedClipVolume;
+                } else if constexpr (std::is_same_v<E, NameSetElement>) {
+                    for (int n : e.names)
+                        if (e.add)
+                            state.names.insert(n);
+                        else
+                            state.names.erase(n);
+                }
+                // labels and application data do not change the draw list
+            },
+            stored.value);
+    }
+
+    void fillStyle(DrawFillArea& f, const State& state) const {
+        f.interior = resolve_.interior(state);
+        f.edges = resolve_.edge(state);
+    }
+
+    MeshData meshData(const std::vector<glm::dvec3>& points, const std::vector<Colour>& colours,
+                      const std::vector<glm::dvec3>& normals) const {
+        MeshData m;
+        for (const auto& p : points) m.positions.push_back(glm::vec3(p));
+        for (const auto& n : normals)
+            m.normals.push_back(glm::vec3(glm::length(n) > 0 ? glm::normalize(n) : n));
+        m.colours = resolveColours(colours);
+        return m;
+    }
+
+    template <class Build>
+    std::shared_ptr<const MeshData> cachedMesh(const StoredElement& stored,
+                                               const std::vector<Colour>& colours, Build build) {
+        TessellationCache::Key key{
+            stored.serial, 0, 0, 0, 0, 0, 0, anyIndexed(colours) ? tables_.generation + 1 : 0};
+        return cache_
+            .get(key, TessellationCache::Kind::Mesh,
+                 [&] {
+                     TessellationCache::Entry entry;
+                     entry.mesh = std::make_shared<const MeshData>(build());
+                     return entry;
+                 })
+            .mesh;
+    }
+
+    void cellArray(const Structure& s, const StoredElement& stored, int number, const State& state,
+                   const CellArrayElement& e) {
+        if (e.columns < 1 || e.rows < 1) return;
+        TessellationCache::Key key{stored.serial, 0, 0, 0, 0, 0, 0, tables_.generation + 1};
+        auto mesh = cache_
+                        .get(key, TessellationCache::Kind::Mesh,
+                             [&] {
+                                 // P, Q, R: P and Q opposite corners (2D), or P, Q along the first row, R
+                                 // along the first column (3D).
+                                 glm::dvec3 du = e.twoD ? glm::dvec3(e.q.x - e.p.x, 0, 0) : e.q - e.p;
+                                 glm::dvec3 dv = e.twoD ? glm::dvec3(0, e.q.y - e.p.y, 0) : e.r - e.p;
+                                 MeshData m;
+                                 for (int r = 0; r < e.rows; ++r)
+                                     for (int c = 0; c < e.columns; ++c) {
+                                         glm::vec3 colour = resolve_.rgb(Colour::indexed(
+                                             e.colourIndices[static_cast<std::size_t>(r * e.columns + c)]));
+                                         auto base = static_cast<std::uint32_t>(m.positions.size());
+                                         for (auto [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+                                             glm::dvec3 p = e.p + du * (double(c + a) / e.columns) +
+                                                            dv * (double(r + b) / e.rows);
+                                             m.positions.push_back(glm::vec3(p));
+                                             m.colours.push_back(colour);
+                                         }
+                                         m.triangles.insert(m.triangles.end(), {base, base + 1, base + 2,
+                                                                                base, base + 2, base + 3});
+                                     }
+                                 TessellationCache::Entry entry;
+                                 entry.mesh = std::make_shared<const MeshData>(std::move(m));
+                                 return entry;
+                             })
+                        .mesh;
+        InteriorStyleSet interior = resolve_.interior(state);
+        interior.style = InteriorStyle::Solid;
+        emit(s, number, state, DrawMesh{mesh, nullptr, interior, EdgeStyle{}, resolve_.line(state)});
+    }
+
+    const StructureStore& store_;
+    const WorkstationTables& tables_;
+    const TraversalFilters& filters_;
+    TessellationCache& cache_;
+    DrawList& out_;
+    Resolver resolve_;
+    std::vector<DrawPathLevel> path_;
+    std::map<std::set<int>, int> lightSets_;
+    std::map<int, int> depthCues_;
+    Traverser::SubtreeCache* subtrees_;
+    std::uint64_t baseStamp_;
+    std::map<int, std::uint64_t> stamps_;
+    std::vector<int> lightKeys_, cueIndices_;  ///< per emitted item, for the subtree cache
+};
+
+}  // namespace
+
+Traverser::Traverser() : subtrees_(std::make_unique<SubtreeCache>()) {
+}
+
+Traverser::~Traverser() = default;
+
+void Traverser::setIncremental(bool incremental) {
+    if (incremental && !subtrees_) subtrees_ = std::make_unique<SubtreeCache>();
+    if (!incremental) subtrees_.reset();
+}
+
+DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>& roots,
+                             const WorkstationTables& tables, const TraversalFilters& filters) {
+    DrawList out;
+    for (const ViewRepresentation& v : tables.views.entries())
+        out.views.push_back(
+            {v.orientation, v.mapping, v.clipMin, v.clipMax, v.clipXY, v.clipBack, v.clipFront});
+    out.windowMin = tables.windowMin;
+    out.windowMax = tables.windowMax;
+    out.viewportMin = tables.viewportMin;
+    out.viewportMax = tables.viewportMax;
+    out.background = glm::vec3(tables.colours.get(0));
+    out.hiddenSurfaceRemoval = tables.hlhsrMode != 0;
+    Walk walk(store, tables, filters, cache_, subtrees_.get(), out);
+    for (int root : roots) walk.root(root);
+    elementsTraversed_ = walk.visited;
+    elementsReused_ = walk.reused;
+    cache_.prune();
+    if (subtrees_) subtrees_->prune();
+    return out;
+}
+
+}  // namespace phigs

@@ -1,0 +1,261 @@
+#include "phigs/ws/Workstation.h"
+
+#include <algorithm>
+
+namespace phigs {
+
+Workstation::Workstation(int id, WorkstationType type, StructureStore& store, ErrorLog* log)
+    : id_(id), description_(describeWorkstationType(type)), store_(store), log_(log) {
+    tables_.views = ViewTable(description_.viewTableSize);
+    tables_.colours = ColourTable(description_.colourTableSize);
+    tables_.viewportMax = {description_.displaySize.x, description_.displaySize.y, 1.0};
+    store_.addListener(this);
+}
+
+Workstation::~Workstation() {
+    store_.removeListener(this);
+}
+
+void Workstation::postStructure(int structureId, double priority) {
+    if (!(priority >= 0.0 && priority <= 1.0))
+        raise(log_, errors::BadDisplayPriority, "POST STRUCTURE", "priority " + std::to_string(priority));
+    store_.createStructure(structureId);
+    std::erase_if(posted_, [&](const PostedStructure& p) { return p.structureId == structureId; });
+    posted_.push_back({structureId, priority});
+    changed();
+}
+
+void Workstation::unpostStructure(int structureId) {
+    if (std::erase_if(posted_, [&](const PostedStructure& p) { return p.structureId == structureId; }))
+        changed();
+}
+
+void Workstation::unpostAllStructures() {
+    if (!posted_.empty()) changed();
+    posted_.clear();
+}
+
+std::vector<PostedStructure> Workstation::postedStructures() const {
+    std::vector<PostedStructure> order = posted_;
+    std::stable_sort(order.begin(), order.end(), [](const PostedStructure& a, const PostedStructure& b) {
+        return a.priority < b.priority;
+    });
+    return order;
+}
+
+bool Workstation::isPosted(int structureId) const {
+    return std::any_of(posted_.begin(), posted_.end(),
+                       [&](const PostedStructure& p) { return p.structureId == structureId; });
+}
+
+void Workstation::structureDeleted(int structureId) {
+    unpostStructure(structureId);
+}
+
+void Workstation::referencesChanged(int from, int to) {
+    auto it = std::find_if(posted_.begin(), posted_.end(),
+                           [&](const PostedStructure& p) { return p.structureId == from; });
+    if (it == posted_.end()) return;
+    double priority = it->priority;
+    posted_.erase(it);
+    if (!isPosted(to)) posted_.push_back({to, priority});
+    changed();
+}
+
+void Workstation::setDeferralState(DeferralMode deferral, ModificationMode modification) {
+    deferral_ = deferral;
+    modification_ = modification;
+}
+
+bool Workstation::showsChangesAtOnce() const {
+    // No interaction is ever "underway" between calls here, so BNIG and BNIL behave as ASAP.
+    return deferral_ == DeferralMode::Asap || deferral_ == DeferralMode::Bnig ||
+           deferral_ == DeferralMode::Bnil;
+}
+
+std::uint64_t Workstation::contentStamp() const {
+    std::uint64_t hash = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
+    mix(tables_.generation);
+    for (const PostedStructure& p : posted_)
+        for (int id : store_.network(p.structureId)) {
+            mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(id)));
+            const Structure* s = store_.find(id);
+            mix(s ? s->version : 0);
+        }
+    return hash;
+}
+
+VisualState Workstation::visualState() const {
+    if (!pictured_ || contentStamp() != pictureStamp_)
+        return showsChangesAtOnce() ? VisualState::Correct
+                                    : (modification_ == ModificationMode::Nive ? VisualState::Deferred
+                                                                               : VisualState::Simulated);
+    return pictureState_;
+}
+
+void Workstation::regenerate(VisualState after) {
+    std::uint64_t stamp = contentStamp();
+    std::vector<int> roots;
+    for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
+    std::uint64_t generation = picture_.generation;
+    bool same = pictured_ && stamp == pictureStamp_;
+    picture_ = traverser_.traverse(store_, roots, tables_, filters_);
+    picture_.generation = same ? generation : generation + 1;
+    pictureStamp_ = stamp;
+    pictured_ = true;
+    pictureState_ = after;
+    ++regenerations_;
+}
+
+void Workstation::update(Regeneration regeneration) {
+    if (regeneration == Regeneration::Perform &&
+        (!pictured_ || contentStamp() != pictureStamp_ || pictureState_ != VisualState::Correct))
+        regenerate(VisualState::Correct);
+}
+
+void Workstation::redrawAllStructures() {
+    regenerate(VisualState::Correct);
+}
+
+const DrawList& Workstation::display() {
+    if (!pictured_ || contentStamp() != pictureStamp_) {
+        if (showsChangesAtOnce())
+            regenerate(VisualState::Correct);
+        else if (modification_ != ModificationMode::Nive)
+            regenerate(VisualState::Simulated);
+        else if (!pictured_)
+            regenerate(VisualState::Correct);
+    }
+    return picture_;
+}
+
+DrawList Workstation::traverse(const TraversalFilters& filters) {
+    std::vector<int> roots;
+    for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
+    return traverser_.traverse(store_, roots, tables_, filters);
+}
+
+void Workstation::setColourRepresentation(int index, const glm::dvec3& rgb) {
+    tables_.colours.set(index, rgb, log_);
+    changed();
+}
+
+namespace {
+
+void checkLineType(LineType t, ErrorLog* log, const char* function) {
+    if (static_cast<int>(t) < 1 || static_cast<int>(t) > 4) raise(log, errors::BadLineType, function);
+}
+
+}  // namespace
+
+void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bundle) {
+    const char* function = "SET POLYLINE REPRESENTATION";
+    checkLineType(bundle.type, log_, function);
+    tables_.polylines.set(index, bundle, log_, function);
+    changed();
+}
+
+void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle) {
+    const char* function = "SET POLYMARKER REPRESENTATION";
+    if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > 5)
+        raise(log_, errors::BadMarkerType, function);
+    tables_.polymarkers.set(index, bundle, log_, function);
+    changed();
+}
+
+void Workstation::setTextRepresentation(int index, const TextBundle& bundle) {
+    tables_.texts.set(index, bundle, log_, "SET TEXT REPRESENTATION");
+    changed();
+}
+
+void Workstation::setInteriorRepresentation(int index, const InteriorBundle& bundle) {
+    const char* function = "SET INTERIOR REPRESENTATION";
+    if (static_cast<int>(bundle.style) < 0 || static_cast<int>(bundle.style) > 4)
+        raise(log_, errors::BadInteriorStyle, function);
+    tables_.interiors.set(index, bundle, log_, function);
+    changed();
+}
+
+void Workstation::setEdgeRepresentation(int index, const EdgeBundle& bundle) {
+    const char* function = "SET EDGE REPRESENTATION";
+    checkLineType(bundle.type, log_, function);
+    tables_.edges.set(index, bundle, log_, function);
+    changed();
+}
+
+void Workstation::setViewRepresentation(int index, const ViewRepresentation& view) {
+    tables_.views.set(index, view, log_);
+    changed();
+}
+
+void Workstation::setViewTransformationInputPriority(int index, int reference, bool higher) {
+    tables_.views.setInputPriority(index, reference, higher, log_);
+}
+
+void Workstation::setLightSourceRepresentation(int index, const Light& light) {
+    const char* function = "SET LIGHT SOURCE REPRESENTATION";
+    if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, "index " + std::to_string(index));
+    if (!tables_.lights.contains(index) &&
+        static_cast<int>(tables_.lights.size()) >= description_.lightTableSize)
+        raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
+    tables_.lights[index] = light;
+    changed();
+}
+
+void Workstation::setDepthCueRepresentation(int index, const DepthCue& cue) {
+    const char* function = "SET DEPTH CUE REPRESENTATION";
+    if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, "index " + std::to_string(index));
+    if (!tables_.depthCues.contains(index) &&
+        static_cast<int>(tables_.depthCues.size()) >= description_.depthCueTableSize)
+        raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
+    tables_.depthCues[index] = cue;
+    changed();
+}
+
+void Workstation::setHlhsrMode(int mode) {
+    const auto& modes = description_.hlhsrModes;
+    if (std::find(modes.begin(), modes.end(), mode) == modes.end())
+        raise(log_, errors::BadHlhsrMode, "SET HLHSR MODE", "mode " + std::to_string(mode));
+    tables_.hlhsrMode = mode;
+    changed();
+}
+
+void Workstation::setWorkstationWindow(const glm::dvec3& min, const glm::dvec3& max) {
+    const char* function = "SET WORKSTATION WINDOW 3";
+    if (min.x >= max.x || min.y >= max.y || min.z > max.z) raise(log_, errors::InvalidWindow, function);
+    for (int i = 0; i < 3; ++i)
+        if (min[i] < 0.0 || max[i] > 1.0) raise(log_, errors::WorkstationWindowOutsideNpc, function);
+    tables_.windowMin = min;
+    tables_.windowMax = max;
+    changed();
+}
+
+void Workstation::setWorkstationViewport(const glm::dvec3& min, const glm::dvec3& max) {
+    const char* function = "SET WORKSTATION VIEWPORT 3";
+    if (min.x >= max.x || min.y >= max.y || min.z > max.z) raise(log_, errors::InvalidViewport, function);
+    glm::dvec3 limit{description_.displaySize.x, description_.displaySize.y, 1.0};
+    for (int i = 0; i < 3; ++i)
+        if (min[i] < 0.0 || max[i] > limit[i])
+            raise(log_, errors::WorkstationViewportOutsideDisplay, function);
+    tables_.viewportMin = min;
+    tables_.viewportMax = max;
+    changed();
+}
+
+void Workstation::setHighlightingFilter(const NameSetFilter& filter) {
+    filters_.highlight = filter;
+    changed();
+}
+
+void Workstation::setInvisibilityFilter(const NameSetFilter& filter) {
+    filters_.invisibility = filter;
+    changed();
+}
+
+void Workstation::setPickFilter(std::optional<NameSetFilter> filter) {
+    filters_.pick = std::move(filter);
+    changed();
+}
+
+}  // namespace phigs

@@ -1,0 +1,24 @@
+#include "phigs/ws/WorkstationType.h"
+
+namespace phigs {
+
+WorkstationDescription describeWorkstationType(WorkstationType type) {
+    WorkstationDescription d;
+    d.type = type;
+    switch (type) {
+        case WorkstationType::OffscreenImage:
+            d.name = "offscreen image";
+            break;
+        case WorkstationType::Window:
+            d.name = "window";
+            d.category = WorkstationCategory::OutIn;
+            break;
+        case WorkstationType::Hardcopy:
+            d.name = "hardcopy";
+            d.displaySize = {3508, 2480};  // A4 landscape at 300 dpi
+            break;
+    }
+    return d;
+}
+
+}  // namespace phigs

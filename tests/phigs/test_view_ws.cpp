@@ -1,0 +1,213 @@
+#include "phigs/core/Phigs.h"
+#include "phigs/view/ViewMatrices.h"
+
+#include <catch2/catch.hpp>
+
+using namespace phigs;
+
+namespace {
+
+template <class F>
+int errorOf(F&& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.number();
+    }
+    return 0;
+}
+
+glm::dvec3 project(const glm::dmat4& m, glm::dvec3 p) {
+    glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    return glm::dvec3(h) / h.w;
+}
+
+bool near(glm::dvec3 a, glm::dvec3 b) {
+    return glm::length(a - b) < 1e-12;
+}
+
+}  // namespace
+
+TEST_CASE("evaluate view orientation matrix", "[view]") {
+    glm::dmat4 m = evaluateViewOrientationMatrix({1, 2, 3}, {0, 0, 5}, {0, 3, 0});
+    CHECK(near(glm::dvec3(m * glm::dvec4(1, 2, 3, 1)), {0, 0, 0}));
+    CHECK(near(glm::dvec3(m * glm::dvec4(2, 2, 3, 1)), {1, 0, 0}));
+    // looking along -x with z up: n = +x, v = +z, u = v x n... = +y
+    glm::dmat4 side = evaluateViewOrientationMatrix({0, 0, 0}, {1, 0, 0}, {0, 0, 1});
+    CHECK(near(glm::dvec3(side * glm::dvec4(0, 1, 0, 1)), {1, 0, 0}));
+    CHECK(near(glm::dvec3(side * glm::dvec4(0, 0, 1, 1)), {0, 1, 0}));
+    CHECK(near(glm::dvec3(side * glm::dvec4(1, 0, 0, 1)), {0, 0, 1}));
+    CHECK(errorOf([] {
+              evaluateViewOrientationMatrix({}, {0, 0, 0}, {0, 1, 0});
+          }) == errors::ZeroViewPlaneNormal);
+    CHECK(errorOf([] { evaluateViewOrientationMatrix({}, {0, 0, 1}, {0, 0, 0}); }) == errors::ZeroViewUp);
+    CHECK(errorOf([] {
+              evaluateViewOrientationMatrix({}, {0, 0, 1}, {0, 0, -2});
+          }) == errors::ViewUpParallelToNormal);
+}
+
+TEST_CASE("evaluate view mapping matrix: parallel and perspective", "[view]") {
+    ViewMapping p;
+    p.windowMin = {-2, -1};
+    p.windowMax = {2, 1};
+    p.viewportMin = {0, 0, 0};
+    p.viewportMax = {1, 0.5, 1};
+    p.projectionReferencePoint = {0, 0, 10};
+    p.backPlaneDistance = -1;
+    p.frontPlaneDistance = 1;
+    glm::dmat4 m = evaluateViewMappingMatrix(p);
+    CHECK(near(project(m, {-2, -1, -1}), {0, 0, 0}));
+    CHECK(near(project(m, {2, 1, 1}), {1, 0.5, 1}));
+    // oblique: the PRP off the window's centre line shears, keeping the view plane
+    p.projectionReferencePoint = {1, 0, 1};
+    glm::dmat4 oblique = evaluateViewMappingMatrix(p);
+    CHECK(near(project(oblique, {0, 0, 0}), {0.5, 0.25, 0.5}));
+    CHECK(near(project(oblique, {1, 0, 1}), {0.5, 0.25, 1}));  // along the direction of projection
+    // perspective: points on a projector through the PRP map to the same x, y
+    p.projection = ProjectionType::Perspective;
+    p.projectionReferencePoint = {0, 0, 5};
+    glm::dmat4 persp = evaluateViewMappingMatrix(p);
+    CHECK(near(project(persp, {2, 1, 0}), {1, 0.5, project(persp, {2, 1, 0}).z}));
+    glm::dvec3 a = project(persp, {1, 1, 0}), b = project(persp, {0.8, 0.8, 1});  // (1,1,0) seen from (0,0,5)
+    CHECK(std::abs(a.x - b.x) < 1e-12);
+    CHECK(std::abs(project(persp, {0, 0, 1}).z - 1.0) < 1e-12);
+    CHECK(std::abs(project(persp, {0, 0, -1}).z) < 1e-12);
+}
+
+TEST_CASE("view mapping errors 151-164", "[view][errors]") {
+    auto with = [](auto change) {
+        ViewMapping p;
+        p.backPlaneDistance = -1;
+        p.frontPlaneDistance = 1;
+        p.projectionReferencePoint = {0, 0, 5};
+        change(p);
+        return errorOf([&] { evaluateViewMappingMatrix(p); });
+    };
+    CHECK(with([](ViewMapping& p) { p.windowMax.x = -1; }) == errors::InvalidWindow);
+    CHECK(with([](ViewMapping& p) { p.viewportMin.z = 0.5, p.viewportMax.z = 0.2; }) ==
+          errors::InvalidViewport);
+    CHECK(with([](ViewMapping& p) { p.viewportMax.x = 1.5; }) == errors::ProjectionViewportOutsideNpc);
+    CHECK(with([](ViewMapping& p) { p.frontPlaneDistance = -1; }) == errors::FrontEqualsBack);
+    CHECK(with([](ViewMapping& p) { p.frontPlaneDistance = -2; }) == errors::BackInFrontOfFront);
+    CHECK(with([](ViewMapping& p) { p.projectionReferencePoint.z = 0; }) == errors::PrpOnViewPlane);
+    CHECK(with([](ViewMapping& p) {
+              p.projection = ProjectionType::Perspective;
+              p.projectionReferencePoint.z = 0.5;
+          }) == errors::PrpBetweenPlanes);
+    CHECK(with([](ViewMapping&) {}) == 0);
+}
+
+TEST_CASE("view table: entry 0 fixed, capacity, clip limits, input priority", "[view][ws]") {
+    Phigs phigs;
+    phigs.open();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    ViewRepresentation v;
+    CHECK(errorOf([&] { ws.setViewRepresentation(0, v); }) == errors::ViewIndexBelowOne);
+    CHECK(errorOf([&] { ws.setViewRepresentation(ws.description().viewTableSize, v); }) ==
+          errors::ViewTableFull);
+    v.clipMin = {0.5, 0, 0};
+    v.clipMax = {0.5, 1, 1};
+    CHECK(errorOf([&] { ws.setViewRepresentation(1, v); }) == errors::InvalidClipLimits);
+    v.clipMax = {1.5, 1, 1};
+    CHECK(errorOf([&] { ws.setViewRepresentation(1, v); }) == errors::ClipLimitsOutsideNpc);
+    v.clipMax = {1, 1, 1};
+    ws.setViewRepresentation(1, v);
+    ws.setViewRepresentation(3, v);
+    CHECK(ws.tables().views.definedIndices() == std::vector<int>{0, 1, 3});
+    CHECK(ws.tables().views.inputPriority() == std::vector<int>{0, 1, 3});
+    ws.setViewTransformationInputPriority(3, 0, true);
+    CHECK(ws.tables().views.inputPriority() == std::vector<int>{3, 0, 1});
+    ws.setViewTransformationInputPriority(3, 1, false);
+    CHECK(ws.tables().views.inputPriority() == std::vector<int>{0, 1, 3});
+    CHECK(errorOf([&] { ws.setViewTransformationInputPriority(2, 1, true); }) ==
+          errors::RepresentationNotDefined);
+}
+
+TEST_CASE("workstation tables, window, viewport and HLHSR mode with their errors", "[ws][errors]") {
+    Phigs phigs;
+    phigs.open();
+    Workstation& ws = phigs.openWorkstation(4, WorkstationType::Hardcopy);
+    CHECK(ws.type() == WorkstationType::Hardcopy);
+    CHECK(errorOf([&] { ws.setColourRepresentation(-1, {0, 0, 0}); }) == errors::ColourIndexBelowZero);
+    CHECK(errorOf([&] { ws.setColourRepresentation(3, {0, 2, 0}); }) == errors::BadColour);
+    ws.setColourRepresentation(0, {0.2, 0.2, 0.2});
+    CHECK(ws.tables().colours.get(0) == glm::dvec3(0.2));
+    CHECK(errorOf([&] { ws.setPolylineRepresentation(0, {}); }) == errors::BundleIndexBelowOne);
+    CHECK(errorOf([&] {
+              ws.setPolylineRepresentation(2, {static_cast<LineType>(9), 1, Colour::indexed(1)});
+          }) == errors::BadLineType);
+    for (int i = 2; i <= ws.description().bundleTableSize; ++i) ws.setEdgeRepresentation(i, {});
+    CHECK(errorOf([&] { ws.setEdgeRepresentation(100, {}); }) == errors::BundleTableFull);
+    CHECK(errorOf([&] { ws.setHlhsrMode(7); }) == errors::BadHlhsrMode);
+    CHECK(errorOf([&] { ws.setWorkstationWindow({0, 0, 0}, {0, 1, 1}); }) == errors::InvalidWindow);
+    CHECK(errorOf([&] {
+              ws.setWorkstationWindow({0, 0, 0}, {2, 1, 1});
+          }) == errors::WorkstationWindowOutsideNpc);
+    CHECK(errorOf([&] {
+              ws.setWorkstationViewport({0, 0, 0}, {1e6, 1, 1});
+          }) == errors::WorkstationViewportOutsideDisplay);
+    ws.setWorkstationWindow({0, 0, 0}, {0.5, 0.5, 1});
+    ws.setWorkstationViewport({0, 0, 0}, {100, 100, 1});
+    const DrawList& list = ws.display();
+    CHECK(list.windowMax == glm::dvec3(0.5, 0.5, 1));
+    CHECK(list.viewportMax == glm::dvec3(100, 100, 1));
+    CHECK(list.background == glm::vec3(0.2f));
+}
+
+TEST_CASE("deferral and modification modes, the state of visual representation, update", "[ws]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    store.openStructure(1);
+    store.insert(polyline3({{0, 0, 0}, {1, 1, 0}}));
+    store.closeStructure();
+    ws.postStructure(1, 0.5);
+    CHECK(ws.display().items.size() == 1);
+    CHECK(ws.visualState() == VisualState::Correct);
+
+    ws.setDeferralState(DeferralMode::Wait, ModificationMode::Nive);
+    store.openStructure(1);
+    store.insert(polyline3({{0, 0, 0}, {1, 0, 0}}));
+    store.closeStructure();
+    CHECK(ws.visualState() == VisualState::Deferred);
+    std::uint64_t regenerations = ws.regenerations();
+    CHECK(ws.display().items.size() == 1);  // not shown yet
+    CHECK(ws.regenerations() == regenerations);
+    ws.update(Regeneration::Postpone);
+    CHECK(ws.display().items.size() == 1);
+    ws.update(Regeneration::Perform);
+    CHECK(ws.display().items.size() == 2);
+    CHECK(ws.visualState() == VisualState::Correct);
+    ws.update(Regeneration::Perform);  // nothing changed: no regeneration
+    CHECK(ws.regenerations() == regenerations + 1);
+
+    ws.setDeferralState(DeferralMode::Asti, ModificationMode::Uqum);
+    ws.setColourRepresentation(1, {0.5, 0.5, 0.5});
+    CHECK(ws.display().items[0].primitive.index() == 0);
+    CHECK(ws.visualState() == VisualState::Simulated);  // shown by a quick update, not guaranteed
+    ws.redrawAllStructures();
+    CHECK(ws.visualState() == VisualState::Correct);
+
+    ws.setDeferralState(DeferralMode::Asap, ModificationMode::Nive);
+    ws.unpostStructure(1);
+    CHECK(ws.display().items.empty());
+    ws.postStructure(1, 0.2);
+    ws.unpostAllStructures();
+    CHECK(ws.postedStructures().empty());
+    CHECK(ws.visualState() == VisualState::Correct);
+}
+
+TEST_CASE("workstation types and their descriptions", "[ws]") {
+    Phigs phigs;
+    phigs.open();
+    CHECK(phigs.openWorkstation(1, WorkstationType::OffscreenImage).description().category ==
+          WorkstationCategory::Output);
+    CHECK(phigs.openWorkstation(2, WorkstationType::Window).description().category ==
+          WorkstationCategory::OutIn);
+    CHECK(phigs.openWorkstation(3, WorkstationType::Hardcopy).description().name == "hardcopy");
+    CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 2, 3});
+    phigs.closeWorkstation(2);
+    CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 3});
+    CHECK(errorOf([&] { phigs.closeWorkstation(2); }) == errors::WorkstationNotOpen);
+}
