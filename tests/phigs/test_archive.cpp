@@ -98,7 +98,7 @@ TEST_CASE("encoding is exact: reals and strings survive bit for bit", "[archive]
     CHECK(ArchiveFile::decode(text, "memory", nullptr) == contents);
 }
 
-TEST_CASE("a truncated archive is refused naming the file and line; the store is unchanged",
+TEST_CASE("a truncated archive is refused naming the file and line, the store unchanged",
           "[archive][errors]") {
     std::mt19937 rng(11);
     auto path = outputFile("truncated.phar");
