@@ -223,6 +223,7 @@ TEST_CASE("archive networks, delete from archive, conflicts in a network", "[arc
     store.openStructure(4);
     store.closeStructure();
     phigs.openArchiveFile(5, path);
+    CHECK(phigs.openArchiveIds() == std::vector<int>{5});
     phigs.archiveStructureNetworks(5, {2});
     CHECK(phigs.archiveContents(5) == std::vector<int>{2, 3});
     phigs.archiveStructures(5, {4, 42});  // 42 does not exist: warning 200
