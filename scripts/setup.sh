@@ -15,6 +15,9 @@ packages=(
   catch2                             # tests
   hershey-fonts-data                 # stroke fonts for PHIGS text
   libsisl-dev                        # baseline in the geometry benchmarks
+  libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths
+  libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)
+  libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
 )
 missing=()
 for package in "${packages[@]}"; do
