@@ -18,6 +18,7 @@ packages=(
   libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths
   libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)
   libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
+  libtbb-dev                         #   libtbb.so, named by OpenCASCADE's CMake config
 )
 missing=()
 for package in "${packages[@]}"; do
