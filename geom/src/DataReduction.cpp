@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -32,6 +33,8 @@ void checkOptions(const ReductionOptions& o, const char* where) {
     if (!(o.tolerance > 0.0))
         throw GeometryError(w + ": tolerance must be positive (infinity for count mode)");
     if (o.partitionSize < 1) throw GeometryError(w + ": partitionSize must be at least 1");
+    if (o.rounds < 1 || o.lawsonSteps < 0)
+        throw GeometryError(w + ": rounds must be at least 1 and lawsonSteps non-negative");
     if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
     if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
     if (o.samplesPerSpan < 1) throw GeometryError(w + ": samplesPerSpan must be at least 1");
@@ -303,6 +306,271 @@ std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const Reduc
     return removed;
 }
 
+// Tolerance-driven reduction of a curve in batches (the default): each pass ranks the knots,
+// removes a whole set of low-weight, non-adjacent ones at once, refits every free coefficient to
+// the original by one banded least-squares solve, and measures the result on the loop samples.
+// A batch that fails puts back the knots next to the samples that broke the tolerance and is
+// tried again; a single knot that fails is blocked until the next round. Accepted states go to
+// history for the final measurement's step back.
+// A batch takes the knots whose score (weight plus the error already there) is within
+// batchShare of the tolerance, no two closer than batchSeparation knot indices (so that their
+// errors hardly add up); a knot above it is tried alone. Measured on the reference curves: these
+// values gave the fewest fits for about the same control point counts as 0.05-0.5 and 1-3.
+constexpr double batchShare = 1.0;
+constexpr std::size_t batchSeparation = 3;
+
+class BatchReducer {
+public:
+    BatchReducer(const Curve& curve, const ReductionOptions& o, double tol)
+        : p_(static_cast<std::size_t>(curve.degree)),
+          degree_(curve.degree),
+          t0_(curve.knots),
+          d0_(curve.points),
+          o_(o),
+          tol_(tol),
+          fixedEnd_(static_cast<std::size_t>(o.ends.fixedDerivatives) + 1),
+          keep_(static_cast<std::size_t>(o.ends.fixedDerivatives)) {
+        params_ = spanSamples(t0_, degree_, d0_.size(), o.samplesPerSpan);
+        samples_.resize(params_.size());
+        detail::evaluateAscending(degree_, t0_, d0_.data(), d0_.size(), params_, samples_.data());
+        scale_.resize(d0_.size());
+        for (std::size_t j = 0; j < d0_.size(); ++j)
+            scale_[j] = (t0_[j + p_ + 1] - t0_[j]) / static_cast<double>(p_ + 1);
+        error_.assign(params_.size(), 0.0);
+        trialError_.resize(params_.size());
+        values_.resize(params_.size());
+        emphasis_.assign(d0_.size(), 1.0);
+    }
+
+    std::size_t run(std::vector<double>& knots, std::vector<glm::dvec3>& points, std::size_t& fits,
+                    std::vector<Spline>& history) {
+        std::size_t removed = 0;
+        for (int round = 0; round < o_.rounds; ++round) {
+            const std::size_t before = removed;
+            blocked_.clear();
+            while (removed < o_.maxRemovals) {
+                std::vector<Candidate> batch = chooseBatch(knots, points, o_.maxRemovals - removed);
+                if (batch.empty()) break;
+                while (!batch.empty()) {
+                    std::vector<double> tau;
+                    std::vector<glm::dvec3> c;
+                    ++fits;
+                    const bool fitted = removeAndFit(knots, batch, tau, c);
+                    std::vector<double> failures;
+                    if (fitted && measure(tau, c, failures)) {
+                        knots = std::move(tau);
+                        points = std::move(c);
+                        error_.swap(trialError_);
+                        removed += batch.size();
+                        history.push_back(Spline{degree_, knots, points, 1});
+                        break;
+                    }
+                    if (batch.size() == 1) {
+                        blocked_.push_back(batch.front().value);
+                        break;
+                    }
+                    putBack(batch, failures);
+                }
+            }
+            if (removed == before && round > 0) break;
+            if (!equalize(knots, points, fits, history) && removed == before) break;
+        }
+        return removed;
+    }
+
+private:
+    // Lawson's iteration towards the best max-norm fit: the least-squares weights of the original
+    // coefficients grow where the error is large, which evens the error out and leaves room for
+    // more removals. Each reweighted fit is kept only if it keeps the tolerance.
+    bool equalize(const std::vector<double>& knots, std::vector<glm::dvec3>& points, std::size_t& fits,
+                  std::vector<Spline>& history) {
+        bool changed = false;
+        for (int step = 0; step < o_.lawsonSteps; ++step) {
+            std::vector<double> local(d0_.size(), 0.0);
+            double worst = 0.0;
+            for (std::size_t j = 0, i = 0; j < d0_.size(); ++j) {
+                while (i < params_.size() && params_[i] < t0_[j]) ++i;
+                for (std::size_t k = i; k < params_.size() && params_[k] <= t0_[j + p_ + 1]; ++k)
+                    local[j] = std::max(local[j], error_[k]);
+                worst = std::max(worst, local[j]);
+            }
+            if (!(worst > 0.0)) break;
+            const std::vector<double> saved = emphasis_;
+            for (std::size_t j = 0; j < d0_.size(); ++j) emphasis_[j] *= std::max(local[j] / worst, 1e-3);
+            std::vector<glm::dvec3> c;
+            std::vector<double> failures;
+            ++fits;
+            if (!fitToOriginal(knots, c) || !measure(knots, c, failures)) {
+                emphasis_ = saved;
+                break;
+            }
+            points = std::move(c);
+            error_.swap(trialError_);
+            history.push_back(Spline{degree_, knots, points, 1});
+            changed = true;
+        }
+        return changed;
+    }
+
+    struct Candidate {
+        std::size_t index;  // last occurrence in the current knots
+        double value;
+        double score;     // weight plus the error already spent near the knot
+        double from, to;  // where removing it changes the curve
+    };
+
+    std::vector<Candidate> chooseBatch(const std::vector<double>& knots,
+                                       const std::vector<glm::dvec3>& points, std::size_t most) const {
+        const std::size_t count = points.size();
+        std::vector<Candidate> ranked;
+        for (const KnotSignificance& k : rankKnots(degree_, knots, points, 1)) {
+            if (std::find(blocked_.begin(), blocked_.end(), k.value) != blocked_.end()) continue;
+            if (k.index <= p_ + keep_ || k.index + keep_ >= count) continue;  // end conditions
+            Candidate c{k.index, k.value, k.weight, knots[k.index - p_ - 1],
+                        knots[std::min(knots.size() - 1, k.index + p_ + 1)]};
+            c.score += presentError(c.from, c.to);
+            if (o_.weightCutoff > 0.0 && c.score > o_.weightCutoff * tol_) continue;
+            ranked.push_back(c);
+        }
+        std::stable_sort(ranked.begin(), ranked.end(),
+                         [](const Candidate& a, const Candidate& b) { return a.score < b.score; });
+        std::vector<Candidate> batch;
+        std::vector<bool> taken(knots.size() + 1, false);
+        for (const Candidate& c : ranked) {
+            if (batch.size() >= most) break;
+            if (!batch.empty() && c.score > batchShare * tol_) break;
+            bool near = false;
+            for (std::size_t d = 0; d <= batchSeparation; ++d)
+                near = near || taken[std::min(c.index + d, knots.size())] || taken[c.index - d];
+            if (near) continue;
+            taken[c.index] = true;
+            batch.push_back(c);
+            if (c.score > batchShare * tol_) break;
+        }
+        return batch;
+    }
+
+    double presentError(double from, double to) const {
+        const auto a = std::lower_bound(params_.begin(), params_.end(), from);
+        const auto b = std::upper_bound(params_.begin(), params_.end(), to);
+        double worst = 0.0;
+        for (auto it = a; it < b; ++it)
+            worst = std::max(worst, error_[static_cast<std::size_t>(it - params_.begin())]);
+        return worst;
+    }
+
+    // The current knots without the batch, and the best fit to the original on them.
+    bool removeAndFit(const std::vector<double>& knots, const std::vector<Candidate>& batch,
+                      std::vector<double>& tau, std::vector<glm::dvec3>& c) const {
+        std::vector<std::size_t> gone;
+        for (const Candidate& k : batch) gone.push_back(k.index);
+        std::sort(gone.begin(), gone.end());
+        tau.reserve(knots.size() - gone.size());
+        for (std::size_t i = 0, g = 0; i < knots.size(); ++i) {
+            if (g < gone.size() && gone[g] == i) {
+                ++g;
+                continue;
+            }
+            tau.push_back(knots[i]);
+        }
+        return fitToOriginal(tau, c);
+    }
+
+    // Least squares in Lyche and Morken's scaled discrete l2 norm against the original's
+    // coefficients (the original is the fit with the missing knots inserted): one row of the
+    // insertion matrix per original coefficient (Oslo), banded normal equations, Cholesky.
+    bool fitToOriginal(const std::vector<double>& tau, std::vector<glm::dvec3>& c) const {
+        const std::size_t nt = tau.size() - p_ - 1, n0 = d0_.size();
+        if (nt < 2 * fixedEnd_ + 1) return false;
+        c.assign(nt, glm::dvec3(0.0));
+        for (std::size_t i = 0; i < fixedEnd_; ++i) {
+            c[i] = d0_[i];
+            c[nt - 1 - i] = d0_[n0 - 1 - i];
+        }
+        const std::size_t nf = nt - 2 * fixedEnd_, wb = p_ + 1;
+        std::vector<double> band(nf * wb, 0.0);
+        std::vector<glm::dvec3> rhs(nf, glm::dvec3(0.0));
+        std::vector<double> row(p_ + 1);
+        for (std::size_t j = 0; j < n0; ++j) {
+            const double w = scale_[j] * emphasis_[j];
+            if (w == 0.0) continue;
+            const std::size_t c0 = detail::osloRow(degree_, tau, nt, t0_, j, row.data()) - p_;
+            glm::dvec3 target = d0_[j];
+            for (std::size_t k = 0; k <= p_; ++k) {
+                const std::size_t col = c0 + k;
+                if (col < fixedEnd_ || col + fixedEnd_ >= nt) target -= row[k] * c[col];
+            }
+            for (std::size_t a = 0; a <= p_; ++a) {
+                const std::size_t ca = c0 + a;
+                if (ca < fixedEnd_ || ca + fixedEnd_ >= nt || row[a] == 0.0) continue;
+                const std::size_t fa = ca - fixedEnd_;
+                rhs[fa] += (w * row[a]) * target;
+                for (std::size_t b = a; b <= p_; ++b) {
+                    const std::size_t cb = c0 + b;
+                    if (cb + fixedEnd_ >= nt) break;
+                    band[fa * wb + (b - a)] += w * row[a] * row[b];
+                }
+            }
+        }
+        if (!detail::solveBanded(band, nf, p_, rhs)) return false;
+        for (std::size_t i = 0; i < nf; ++i) c[fixedEnd_ + i] = rhs[i];
+        return true;
+    }
+
+    // True when every loop sample is within the tolerance of the candidate, both ways: the
+    // parametric distance |f(t) - g(t)| bounds both one-sided distances at the sample; where it
+    // is too large, Newton from t on each curve measures them. Otherwise the parameters of the
+    // samples that break the tolerance go to failures.
+    bool measure(const std::vector<double>& tau, const std::vector<glm::dvec3>& c,
+                 std::vector<double>& failures) {
+        detail::evaluateAscending(degree_, tau, c.data(), c.size(), params_, values_.data());
+        bool ok = true;
+        for (std::size_t i = 0; i < params_.size(); ++i) {
+            const double parametric = glm::length(values_[i] - samples_[i]);
+            trialError_[i] = parametric;
+            if (parametric <= tol_) continue;
+            if (ok) {
+                const double there = detail::newtonDistance(degree_, tau, c.data(), c.size(), samples_[i],
+                                                            params_[i], parametric);
+                const double back = there > tol_
+                                        ? there
+                                        : detail::newtonDistance(degree_, t0_, d0_.data(), d0_.size(),
+                                                                 values_[i], params_[i], parametric);
+                trialError_[i] = std::max(there, back);
+                if (trialError_[i] <= tol_) continue;
+                ok = false;
+            }
+            failures.push_back(params_[i]);
+        }
+        return ok;
+    }
+
+    // Keeps the knots of the batch that no failing sample lies next to; when every knot is next
+    // to one, keeps the better-ranked half.
+    static void putBack(std::vector<Candidate>& batch, const std::vector<double>& failures) {
+        std::vector<Candidate> kept;
+        for (const Candidate& k : batch) {
+            const auto it = std::lower_bound(failures.begin(), failures.end(), k.from);
+            if (it == failures.end() || *it > k.to) kept.push_back(k);
+        }
+        if (kept.empty() || kept.size() == batch.size()) {
+            batch.resize(batch.size() / 2);
+            return;
+        }
+        batch = std::move(kept);
+    }
+
+    std::size_t p_;
+    int degree_;
+    const std::vector<double>& t0_;
+    const std::vector<glm::dvec3>& d0_;
+    const ReductionOptions& o_;
+    double tol_;
+    std::size_t fixedEnd_, keep_;
+    std::vector<double> params_, scale_, emphasis_, error_, trialError_, blocked_;
+    std::vector<glm::dvec3> samples_, values_;
+};
+
 }  // namespace
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
@@ -317,10 +585,13 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
 
     // Dense samples of the original; witness[i] is the parameter of the point of the current
     // reduced curve nearest to sample i (it drifts from params[i] as knots go).
+    const bool batch = measuring && options.batch;
     const std::vector<double> params =
-        spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
+        batch ? std::vector<double>{}
+              : spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
     const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
-    const CurveProjector onOriginal(curve);
+    std::optional<CurveProjector> onOriginal;
+    if (measuring && !batch) onOriginal.emplace(curve);
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
@@ -338,9 +609,18 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             std::upper_bound(params.begin(), params.end(), fit.changedTo) - params.begin());
         const std::size_t first = lo > pad ? lo - pad : 0;
         const std::size_t last = std::min(params.size(), hi + pad);
-        const std::vector<glm::dvec3> onCandidate =
-            evaluateMany(g, std::span(params).subspan(first, last - first));
-        std::optional<CurveProjector> candidate;
+        std::vector<glm::dvec3> onCandidate(last - first);
+        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(),
+                                  std::span(params).subspan(first, last - first), onCandidate.data());
+        // Newton from a known point (the witness, then the sample's own parameter): a distance
+        // to a real point of the candidate, so an upper bound of the closest one.
+        auto newton = [&](const glm::dvec3& target, double from) {
+            CurvePoint c;
+            c.u = from;
+            c.distance = detail::newtonDistance(g.degree, g.knots, g.points.data(), g.points.size(), target,
+                                                from, std::numeric_limits<double>::infinity(), &c.u);
+            return c;
+        };
         for (std::size_t i = first; i < last; ++i) {
             // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
             // projection is needed.
@@ -352,21 +632,20 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                 continue;
             }
             // Original to reduced, by Newton from the witness (geom's projector, local mode).
-            if (!candidate) candidate.emplace(g);
-            CurvePoint pr = candidate->closestPointFrom(samples[i], witness[i]);
+            CurvePoint pr = newton(samples[i], witness[i]);
             if (pr.distance > tol) {
-                const CurvePoint again = candidate->closestPointFrom(samples[i], params[i]);
+                const CurvePoint again = newton(samples[i], params[i]);
                 if (again.distance < pr.distance) pr = again;
             }
             if (pr.distance > tol) return false;
             trial[i] = pr.u;
             // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
-            double d = std::min(parametric, onOriginal.closestPointFrom(q, params[i]).distance);
+            double d = std::min(parametric, onOriginal->closestPointFrom(q, params[i]).distance);
             if (d > tol) {
                 const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
                 const std::size_t k =
                     static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
-                d = std::min(d, onOriginal.closestPointFrom(q, params[k]).distance);
+                d = std::min(d, onOriginal->closestPointFrom(q, params[k]).distance);
             }
             if (d > tol) return false;
             trialError[i] = std::max(d, pr.distance);
@@ -382,7 +661,12 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         return worst;
     };
     std::vector<Spline> history;
-    out.removed = reduceLoop(s, options, out.fits, accept, presentError, &history);
+    if (batch) {
+        BatchReducer reducer(curve, options, tol);
+        out.removed = reducer.run(s.knots, s.points, out.fits, history);
+    } else {
+        out.removed = reduceLoop(s, options, out.fits, accept, presentError, &history);
+    }
     out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
     if (measuring || options.report)
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);

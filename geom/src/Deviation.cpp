@@ -1,5 +1,6 @@
 #include "geom/Deviation.h"
 
+#include "RemovalDetail.h"
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace geom {
@@ -38,6 +40,59 @@ std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3
     return out;
 }
 
+CurveDeviation summary(const std::vector<double>& da, const std::vector<double>& db) {
+    CurveDeviation out;
+    double sum = 0.0;
+    for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
+    for (double d : db) out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d), sum += d;
+    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
+    out.samples = da.size() + db.size();
+    out.meanError = sum / static_cast<double>(out.samples);
+    return out;
+}
+
+// Every sample's distance measured by point inversion (rational curves, different domains).
+CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    const std::vector<double> pa =
+        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
+    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
+    return summary(distancesTo(reduced, a, pa), distancesTo(original, b, pb));
+}
+
+// Distances from samples of `from` (at ascending params) to `to`, two polynomial curves on one
+// domain. |from(t) - to(t)| is the distance to a point of `to`, so it bounds the closest
+// distance from above: the samples are taken largest bound first, and each is measured by
+// Newton from t and, where that could still be the maximum, by the global closest point, until
+// the next bound is below the largest distance measured (no sample left can reach it). A sample
+// not measured keeps its bound, which is below the maximum, so the maximum is exactly that of
+// measuring them all; the mean is an upper bound.
+std::vector<double> sampleDistances(const Curve& from, const Curve& to, const std::vector<double>& params,
+                                    std::optional<CurveProjector>& projector) {
+    std::vector<glm::dvec3> a(params.size()), b(params.size());
+    detail::evaluateAscending(from.degree, from.knots, from.points.data(), from.points.size(), params,
+                              a.data());
+    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), params, b.data());
+    std::vector<double> out(params.size());
+    std::vector<std::size_t> order(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) out[i] = glm::length(a[i] - b[i]), order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
+    double worst = 0.0;
+    for (std::size_t i : order) {
+        if (out[i] <= worst) break;
+        double d = detail::newtonDistance(to.degree, to.knots, to.points.data(), to.points.size(), a[i],
+                                          params[i], out[i]);
+        if (d > worst) {
+            if (!projector) projector.emplace(to);
+            d = std::min(d, projector->closestPoint(a[i]).distance);
+        }
+        out[i] = d;
+        worst = std::max(worst, d);
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
@@ -54,21 +109,18 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    if (original.rational() || reduced.rational())
+        return measureDeviationByProjection(original, reduced, samplesPerSpan);
+    if (original.domainStart() != reduced.domainStart() || original.domainEnd() != reduced.domainEnd())
+        return measureDeviationByProjection(original, reduced, samplesPerSpan);
     const std::vector<double> pa =
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
-    const std::vector<double> da = distancesTo(reduced, a, pa);
-    const std::vector<double> db = distancesTo(original, b, pb);
-    CurveDeviation out;
-    double sum = 0.0;
-    for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
-    for (double d : db) out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d), sum += d;
-    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
-    out.samples = da.size() + db.size();
-    out.meanError = sum / static_cast<double>(out.samples);
-    return out;
+    std::optional<CurveProjector> toReduced, toOriginal;
+    const std::vector<double> da = sampleDistances(original, reduced, pa, toReduced);
+    const std::vector<double> db = sampleDistances(reduced, original, pb, toOriginal);
+    return summary(da, db);
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {

@@ -2,11 +2,16 @@
 
 // Private to geom: the dense pieces shared by least-squares knot removal and data reduction.
 
+#include "geom/Basis.h"
 #include "geom/GeometryError.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -109,6 +114,95 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
         out[level] = saved;
     }
     return mu;
+}
+
+// Values of a polynomial spline (degree, knots, count coefficients) at ascending parameters
+// inside its domain, walking the spans instead of searching for each one.
+inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
+                              std::size_t count, std::span<const double> params, glm::dvec3* out) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    double basis[32];
+    std::vector<double> heap;
+    double* nb = basis;
+    if (p + 1 > 32) heap.resize(p + 1), nb = heap.data();
+    std::size_t span = p;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const double u = params[i];
+        if (i > 0 && u < params[i - 1]) span = p;
+        while (span + 1 < count && knots[span + 1] <= u) ++span;
+        basisFunctions(span, u, degree, knots, std::span<double>(nb, p + 1));
+        glm::dvec3 c(0.0);
+        for (std::size_t k = 0; k <= p; ++k) c += nb[k] * points[span - p + k];
+        out[i] = c;
+    }
+}
+
+// The distance from target to a polynomial spline found by Newton from parameter u, never more
+// than `bound` (the caller's distance to a known point of the spline). Every distance it takes
+// is to a real point of the spline, so the answer bounds the true closest distance from above.
+inline double newtonDistance(int degree, const std::vector<double>& knots, const glm::dvec3* points,
+                             std::size_t count, const glm::dvec3& target, double u, double bound,
+                             double* foot = nullptr) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const double lo = knots[p], hi = knots[count];
+    std::vector<double> ders(3 * (p + 1));
+    double best = bound;
+    for (int it = 0; it < 8; ++it) {
+        const std::size_t span = findSpan(degree, knots, count, u);
+        basisDerivatives(span, u, degree, knots, 2, ders);
+        glm::dvec3 c(0.0), d1(0.0), d2(0.0);
+        for (std::size_t k = 0; k <= p; ++k) {
+            const glm::dvec3& q = points[span - p + k];
+            c += ders[k] * q;
+            d1 += ders[p + 1 + k] * q;
+            d2 += ders[2 * (p + 1) + k] * q;
+        }
+        const glm::dvec3 r = c - target;
+        if (glm::length(r) < best) {
+            best = glm::length(r);
+            if (foot) *foot = u;
+        }
+        double h = glm::dot(d1, d1) + glm::dot(r, d2);
+        if (h <= 1e-6 * glm::dot(d1, d1)) h = glm::dot(d1, d1);
+        if (!(h > 0.0)) break;
+        const double next = std::clamp(u - glm::dot(r, d1) / h, lo, hi);
+        if (std::abs(next - u) <= 1e-15 * (hi - lo)) break;
+        u = next;
+    }
+    return best;
+}
+
+// Solves the symmetric positive definite banded system N x = b in place by Cholesky: N is n x n
+// with half bandwidth w, stored by rows as band[i * (w + 1) + k] = N(i, i + k); b has n rows of
+// glm::dvec3. Returns false when N is not positive definite.
+inline bool solveBanded(std::vector<double>& band, std::size_t n, std::size_t w, std::vector<glm::dvec3>& b) {
+    const std::size_t wb = w + 1;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t k0 = i > w ? i - w : 0;
+        double d = band[i * wb];
+        for (std::size_t k = k0; k < i; ++k) d -= band[k * wb + (i - k)] * band[k * wb + (i - k)];
+        if (!(d > 0.0)) return false;
+        d = std::sqrt(d);
+        band[i * wb] = d;
+        for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j) {
+            double s = band[i * wb + (j - i)];
+            const std::size_t kj = j > w ? j - w : 0;
+            for (std::size_t k = std::max(k0, kj); k < i; ++k)
+                s -= band[k * wb + (i - k)] * band[k * wb + (j - k)];
+            band[i * wb + (j - i)] = s / d;
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {  // U^T y = b
+        glm::dvec3 s = b[i];
+        for (std::size_t k = i > w ? i - w : 0; k < i; ++k) s -= band[k * wb + (i - k)] * b[k];
+        b[i] = s / band[i * wb];
+    }
+    for (std::size_t i = n; i-- > 0;) {  // U x = y
+        glm::dvec3 s = b[i];
+        for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j) s -= band[i * wb + (j - i)] * b[j];
+        b[i] = s / band[i * wb];
+    }
+    return true;
 }
 
 }  // namespace geom::detail
