@@ -60,9 +60,11 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
     const std::size_t jLast =
         std::min(n0 - 1, static_cast<std::size_t>(std::upper_bound(t0.begin(), t0.end(), to) - t0.begin()));
 
-    const std::size_t freeCount = cH - cL + 1;
-    const std::size_t width = 3 * sequences;
-    std::vector<double> mat, rhs, row(p + 1);
+    // Normal equations of the scaled rows: every row has p+1 neighbouring non-zeros, so the
+    // matrix is banded and Cholesky solves it in O(rows p^2).
+    const std::size_t freeCount = cH - cL + 1, wb = p + 1;
+    std::vector<double> band(freeCount * wb, 0.0), row(p + 1);
+    std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0)), target(sequences);
     std::size_t fitRows = 0;
     for (std::size_t j = jFirst; j <= jLast; ++j) {
         const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
@@ -71,31 +73,29 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         for (std::size_t k = 0; k <= p; ++k)
             touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
         if (!touchesFree) continue;
-        const double scale = std::sqrt((t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1));
-        if (scale == 0.0) continue;
-        const std::size_t base = mat.size();
-        mat.resize(base + freeCount, 0.0);
-        for (std::size_t k = 0; k <= p; ++k)
-            if (c0 + k >= cL && c0 + k <= cH) mat[base + c0 + k - cL] = scale * row[k];
+        const double w = (t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1);
+        if (w == 0.0) continue;
         for (std::size_t s = 0; s < sequences; ++s) {
-            glm::dvec3 target = d0[j * sequences + s];
+            target[s] = d0[j * sequences + s];
             for (std::size_t k = 0; k <= p; ++k)
                 if ((c0 + k < cL || c0 + k > cH) && row[k] != 0.0)
-                    target -= row[k] * points[(c0 + k) * sequences + s];
-            rhs.push_back(scale * target.x);
-            rhs.push_back(scale * target.y);
-            rhs.push_back(scale * target.z);
+                    target[s] -= row[k] * points[(c0 + k) * sequences + s];
+        }
+        for (std::size_t a = 0; a <= p; ++a) {
+            const std::size_t ca = c0 + a;
+            if (ca < cL || ca > cH || row[a] == 0.0) continue;
+            const std::size_t fa = ca - cL;
+            for (std::size_t s = 0; s < sequences; ++s) rhs[fa * sequences + s] += (w * row[a]) * target[s];
+            for (std::size_t b = a; b <= p && c0 + b <= cH; ++b)
+                band[fa * wb + (b - a)] += w * row[a] * row[b];
         }
         ++fitRows;
     }
     if (fitRows < freeCount) return;  // keep the fit to the previous approximation
-    const std::vector<double> x =
-        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
+    if (!detail::solveBanded(band, freeCount, p, rhs, sequences))
+        throw GeometryError("removeKnotsLeastSquares: the local fit is rank deficient");
     for (std::size_t c = cL; c <= cH; ++c)
-        for (std::size_t s = 0; s < sequences; ++s) {
-            const std::size_t r = (c - cL) * width + 3 * s;
-            points[c * sequences + s] = glm::dvec3(x[r], x[r + 1], x[r + 2]);
-        }
+        for (std::size_t s = 0; s < sequences; ++s) points[c * sequences + s] = rhs[(c - cL) * sequences + s];
 }
 
 // The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
@@ -108,6 +108,42 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
     std::vector<double> blocked;
     std::size_t removed = 0;
     auto isBlocked = [&](double v) { return std::find(blocked.begin(), blocked.end(), v) != blocked.end(); };
+    // rankKnots, with the weights of knots whose local data no accepted fit touched kept from
+    // before (the same numbers, computed once): a knot's weight depends only on the knots and
+    // coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
+    std::vector<std::pair<double, double>> cache;  // (knot value, weight), by value
+    auto rank = [&] {
+        const std::size_t p = static_cast<std::size_t>(s.degree), count = s.points.size() / s.sequences;
+        std::vector<KnotSignificance> out;
+        std::vector<std::pair<double, double>> next;
+        for (std::size_t i = p + 1; i < count; ++i) {
+            if (s.knots[i] == s.knots[i + 1] || !(s.knots[i] > s.knots[p]) || !(s.knots[i] < s.knots[count]))
+                continue;
+            const auto it = std::lower_bound(cache.begin(), cache.end(), std::pair(s.knots[i], -1.0));
+            const double weight = it != cache.end() && it->first == s.knots[i]
+                                      ? it->second
+                                      : knotRemovalWeight(s.degree, s.knots, s.points, s.sequences, i);
+            std::size_t first = i;
+            while (first > 0 && s.knots[first - 1] == s.knots[i]) --first;
+            out.push_back({i, s.knots[i], static_cast<int>(i - first + 1), weight});
+            next.emplace_back(s.knots[i], weight);
+        }
+        cache = std::move(next);
+        std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
+            return a.weight < b.weight;
+        });
+        return out;
+    };
+    auto forget = [&](double from, double to) {
+        const std::size_t p = static_cast<std::size_t>(s.degree);
+        std::erase_if(cache, [&](const std::pair<double, double>& entry) {
+            const auto it = std::upper_bound(s.knots.begin(), s.knots.end(), entry.first);
+            const std::size_t r = static_cast<std::size_t>(it - s.knots.begin()) - 1;
+            const double lo = s.knots[r > p + 1 ? r - p - 1 : 0];
+            const double hi = s.knots[std::min(s.knots.size() - 1, r + p + 1)];
+            return lo <= to && hi >= from;
+        });
+    };
     auto tryRemove = [&](std::vector<double> values) {
         std::sort(values.begin(), values.end());
         ++fits;
@@ -120,6 +156,7 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
             return false;  // the end conditions leave nothing to fit here
         }
         if (!accept(fit)) return false;
+        forget(fit.changedFrom, fit.changedTo);
         s.knots = std::move(fit.knots);
         s.points = std::move(fit.points);
         if (history) history->push_back(s);
@@ -136,7 +173,7 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
             // Rank by the weight plus the error already spent near the knot (vs the original):
             // removing a knot moves the curve by about its weight on top of what is there, so this
             // spreads the tolerance over the curve instead of exhausting it in one place.
-            std::vector<KnotSignificance> ranked = rankKnots(s.degree, s.knots, s.points, s.sequences);
+            std::vector<KnotSignificance> ranked = rank();
             if (measuring) {
                 const std::size_t p = static_cast<std::size_t>(s.degree);
                 for (KnotSignificance& k : ranked) {
@@ -208,6 +245,7 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         global.changedTo = global.knots.back();
         ++fits;
         if (!accept(global)) break;
+        cache.clear();
         s.points = std::move(global.points);
         if (history) history->push_back(s);
     }
@@ -590,8 +628,6 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         batch ? std::vector<double>{}
               : spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
     const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
-    std::optional<CurveProjector> onOriginal;
-    if (measuring && !batch) onOriginal.emplace(curve);
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
@@ -614,11 +650,13 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                                   std::span(params).subspan(first, last - first), onCandidate.data());
         // Newton from a known point (the witness, then the sample's own parameter): a distance
         // to a real point of the candidate, so an upper bound of the closest one.
+        // The loop needs to know only that a sample is within the tolerance, so Newton stops there.
+        const double enough = tol;
         auto newton = [&](const glm::dvec3& target, double from) {
             CurvePoint c;
             c.u = from;
             c.distance = detail::newtonDistance(g.degree, g.knots, g.points.data(), g.points.size(), target,
-                                                from, std::numeric_limits<double>::infinity(), &c.u);
+                                                from, std::numeric_limits<double>::infinity(), &c.u, enough);
             return c;
         };
         for (std::size_t i = first; i < last; ++i) {
@@ -640,12 +678,16 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             if (pr.distance > tol) return false;
             trial[i] = pr.u;
             // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
-            double d = std::min(parametric, onOriginal->closestPointFrom(q, params[i]).distance);
+            auto toOriginal = [&](double from) {
+                return detail::newtonDistance(curve.degree, curve.knots, curve.points.data(),
+                                              curve.points.size(), q, from, parametric, nullptr, enough);
+            };
+            double d = toOriginal(params[i]);
             if (d > tol) {
                 const auto it = std::upper_bound(witness.begin(), witness.end(), params[i]);
                 const std::size_t k =
                     static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - witness.begin(), 1)) - 1;
-                d = std::min(d, onOriginal->closestPointFrom(q, params[k]).distance);
+                d = std::min(d, toOriginal(params[k]));
             }
             if (d > tol) return false;
             trialError[i] = std::max(d, pr.distance);

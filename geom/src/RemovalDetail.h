@@ -116,40 +116,164 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
     return mu;
 }
 
+// The largest degree the allocation-free basis routines below take; higher degrees use Basis.h.
+constexpr std::size_t smallDegree = 7;
+
+// The degree+1 non-zero B-splines at u in the non-empty span (The NURBS Book A2.2), on the stack.
+inline void smallBasis(std::size_t span, double u, std::size_t p, const double* knots, double* out) {
+    double left[smallDegree + 1], right[smallDegree + 1];
+    out[0] = 1.0;
+    for (std::size_t j = 1; j <= p; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (std::size_t r = 0; r < j; ++r) {
+            const double temp = out[r] / (right[r + 1] + left[j - r]);
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+}
+
+// The non-zero B-splines and their first and second derivatives at u (The NURBS Book A2.3):
+// ders[k * (p + 1) + j] for k <= 2, on the stack.
+inline void smallBasisDerivatives(std::size_t span, double u, std::size_t p, const double* knots,
+                                  double* ders) {
+    double ndu[smallDegree + 1][smallDegree + 1], left[smallDegree + 1], right[smallDegree + 1];
+    double a[2][smallDegree + 1];
+    ndu[0][0] = 1.0;
+    for (std::size_t j = 1; j <= p; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (std::size_t r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    const std::size_t w = p + 1;
+    for (std::size_t j = 0; j <= p; ++j) ders[j] = ndu[j][p], ders[w + j] = 0.0, ders[2 * w + j] = 0.0;
+    const long n = std::min<long>(2, static_cast<long>(p)), pl = static_cast<long>(p);
+    for (long r = 0; r <= pl; ++r) {
+        int s1 = 0, s2 = 1;
+        a[0][0] = 1.0;
+        for (long k = 1; k <= n; ++k) {
+            double d = 0.0;
+            const long rk = r - k, pk = pl - k;
+            if (r >= k) {
+                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            const long j1 = rk >= -1 ? 1 : -rk, j2 = (r - 1 <= pk) ? k - 1 : pl - r;
+            for (long j = j1; j <= j2; ++j) {
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+                d += a[s2][j] * ndu[rk + j][pk];
+            }
+            if (r <= pk) {
+                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[static_cast<std::size_t>(k) * w + static_cast<std::size_t>(r)] = d;
+            std::swap(s1, s2);
+        }
+    }
+    double factor = static_cast<double>(p);
+    for (long k = 1; k <= n; ++k) {
+        for (std::size_t j = 0; j <= p; ++j) ders[static_cast<std::size_t>(k) * w + j] *= factor;
+        factor *= static_cast<double>(pl - k);
+    }
+}
+
+// The polynomial of one non-empty span in powers of s = (u - knots[span]) / (span length): the
+// Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
+// are their binomial differences. Horner on these is several times cheaper than Cox-de Boor
+// per point when a span holds several samples.
+inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, const glm::dvec3* points,
+                          glm::dvec3* power) {
+    const double a = knots[span], b = knots[span + 1];
+    glm::dvec3 bezier[smallDegree + 1], d[smallDegree + 1];
+    for (std::size_t k = 0; k <= p; ++k) {
+        for (std::size_t j = 0; j <= p; ++j) d[j] = points[span - p + j];
+        for (std::size_t r = 1; r <= p; ++r) {
+            const double x = r <= p - k ? a : b;
+            for (std::size_t j = p; j >= r; --j) {
+                const double lo = knots[span - p + j], hi = knots[span + 1 + j - r];
+                const double alpha = (x - lo) / (hi - lo);
+                d[j] = (1.0 - alpha) * d[j - 1] + alpha * d[j];
+            }
+        }
+        bezier[k] = d[p];
+    }
+    double binomial[smallDegree + 1][smallDegree + 1];
+    for (std::size_t n = 0; n <= p; ++n) {
+        binomial[n][0] = binomial[n][n] = 1.0;
+        for (std::size_t k = 1; k < n; ++k) binomial[n][k] = binomial[n - 1][k - 1] + binomial[n - 1][k];
+    }
+    for (std::size_t k = 0; k <= p; ++k) {
+        glm::dvec3 sum(0.0);
+        for (std::size_t j = 0; j <= k; ++j)
+            sum += ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial[k][j] * bezier[j];
+        power[k] = binomial[p][k] * sum;
+    }
+}
+
 // Values of a polynomial spline (degree, knots, count coefficients) at ascending parameters
-// inside its domain, walking the spans instead of searching for each one.
+// inside its domain, walking the spans (power form per span, Horner per point).
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
                               std::size_t count, std::span<const double> params, glm::dvec3* out) {
     const std::size_t p = static_cast<std::size_t>(degree);
-    double basis[32];
-    std::vector<double> heap;
-    double* nb = basis;
-    if (p + 1 > 32) heap.resize(p + 1), nb = heap.data();
-    std::size_t span = p;
+    if (p > smallDegree) {
+        std::vector<double> nb(p + 1);
+        for (std::size_t i = 0; i < params.size(); ++i) {
+            const std::size_t span = findSpan(degree, knots, count, params[i]);
+            basisFunctions(span, params[i], degree, knots, nb);
+            glm::dvec3 c(0.0);
+            for (std::size_t k = 0; k <= p; ++k) c += nb[k] * points[span - p + k];
+            out[i] = c;
+        }
+        return;
+    }
+    glm::dvec3 power[smallDegree + 1];
+    std::size_t span = p, formed = 0;  // formed: span + 1 of the power form held, 0 for none
     for (std::size_t i = 0; i < params.size(); ++i) {
         const double u = params[i];
         if (i > 0 && u < params[i - 1]) span = p;
         while (span + 1 < count && knots[span + 1] <= u) ++span;
-        basisFunctions(span, u, degree, knots, std::span<double>(nb, p + 1));
-        glm::dvec3 c(0.0);
-        for (std::size_t k = 0; k <= p; ++k) c += nb[k] * points[span - p + k];
+        if (formed != span + 1) {
+            spanPowerForm(span, p, knots.data(), points, power);
+            formed = span + 1;
+        }
+        const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
+        glm::dvec3 c = power[p];
+        for (std::size_t k = p; k-- > 0;) c = c * s + power[k];
         out[i] = c;
     }
 }
 
 // The distance from target to a polynomial spline found by Newton from parameter u, never more
-// than `bound` (the caller's distance to a known point of the spline). Every distance it takes
-// is to a real point of the spline, so the answer bounds the true closest distance from above.
+// than `bound` (the caller's distance to a known point of the spline), stopping early once it is
+// at most `enough`. Every distance it takes is to a real point of the spline, so the answer
+// bounds the true closest distance from above.
 inline double newtonDistance(int degree, const std::vector<double>& knots, const glm::dvec3* points,
                              std::size_t count, const glm::dvec3& target, double u, double bound,
-                             double* foot = nullptr) {
+                             double* foot = nullptr, double enough = 0.0) {
     const std::size_t p = static_cast<std::size_t>(degree);
     const double lo = knots[p], hi = knots[count];
-    std::vector<double> ders(3 * (p + 1));
+    double small[3 * (smallDegree + 1)];
+    std::vector<double> heap(p > smallDegree ? 3 * (p + 1) : 0);
+    const std::span<double> ders =
+        p > smallDegree ? std::span<double>(heap) : std::span<double>(small, 3 * (p + 1));
     double best = bound;
     for (int it = 0; it < 8; ++it) {
         const std::size_t span = findSpan(degree, knots, count, u);
-        basisDerivatives(span, u, degree, knots, 2, ders);
+        if (p <= smallDegree)
+            smallBasisDerivatives(span, u, p, knots.data(), ders.data());
+        else
+            basisDerivatives(span, u, degree, knots, 2, ders);
         glm::dvec3 c(0.0), d1(0.0), d2(0.0);
         for (std::size_t k = 0; k <= p; ++k) {
             const glm::dvec3& q = points[span - p + k];
@@ -161,6 +285,7 @@ inline double newtonDistance(int degree, const std::vector<double>& knots, const
         if (glm::length(r) < best) {
             best = glm::length(r);
             if (foot) *foot = u;
+            if (best <= enough) break;
         }
         double h = glm::dot(d1, d1) + glm::dot(r, d2);
         if (h <= 1e-6 * glm::dot(d1, d1)) h = glm::dot(d1, d1);
@@ -172,10 +297,11 @@ inline double newtonDistance(int degree, const std::vector<double>& knots, const
     return best;
 }
 
-// Solves the symmetric positive definite banded system N x = b in place by Cholesky: N is n x n
-// with half bandwidth w, stored by rows as band[i * (w + 1) + k] = N(i, i + k); b has n rows of
-// glm::dvec3. Returns false when N is not positive definite.
-inline bool solveBanded(std::vector<double>& band, std::size_t n, std::size_t w, std::vector<glm::dvec3>& b) {
+// Solves the symmetric positive definite banded system N X = B in place by Cholesky: N is n x n
+// with half bandwidth w, stored by rows as band[i * (w + 1) + k] = N(i, i + k); B has n rows of
+// `columns` glm::dvec3 each (b[i * columns + c]). Returns false when N is not positive definite.
+inline bool solveBanded(std::vector<double>& band, std::size_t n, std::size_t w, std::vector<glm::dvec3>& b,
+                        std::size_t columns = 1) {
     const std::size_t wb = w + 1;
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t k0 = i > w ? i - w : 0;
@@ -192,15 +318,19 @@ inline bool solveBanded(std::vector<double>& band, std::size_t n, std::size_t w,
             band[i * wb + (j - i)] = s / d;
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {  // U^T y = b
-        glm::dvec3 s = b[i];
-        for (std::size_t k = i > w ? i - w : 0; k < i; ++k) s -= band[k * wb + (i - k)] * b[k];
-        b[i] = s / band[i * wb];
-    }
-    for (std::size_t i = n; i-- > 0;) {  // U x = y
-        glm::dvec3 s = b[i];
-        for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j) s -= band[i * wb + (j - i)] * b[j];
-        b[i] = s / band[i * wb];
+    for (std::size_t c = 0; c < columns; ++c) {
+        for (std::size_t i = 0; i < n; ++i) {  // U^T y = b
+            glm::dvec3 s = b[i * columns + c];
+            for (std::size_t k = i > w ? i - w : 0; k < i; ++k)
+                s -= band[k * wb + (i - k)] * b[k * columns + c];
+            b[i * columns + c] = s / band[i * wb];
+        }
+        for (std::size_t i = n; i-- > 0;) {  // U x = y
+            glm::dvec3 s = b[i * columns + c];
+            for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j)
+                s -= band[i * wb + (j - i)] * b[j * columns + c];
+            b[i * columns + c] = s / band[i * wb];
+        }
     }
     return true;
 }
