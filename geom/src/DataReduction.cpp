@@ -45,8 +45,9 @@ void checkOptions(const ReductionOptions& o, const char* where) {
 // d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
 // knots contain the reduced ones, so the original is the reduced spline with the missing knots
 // inserted: the local insertion matrix gives the fit. Fitting the original rather than the
-// previous approximation keeps the errors of successive removals from piling up.
-void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+// previous approximation keeps the errors of successive removals from piling up. Returns false,
+// leaving points alone, where the original has too few coefficients to determine the window.
+bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
                      std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
                      const std::vector<glm::dvec3>& d0) {
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -91,11 +92,12 @@ void refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         }
         ++fitRows;
     }
-    if (fitRows < freeCount) return;  // keep the fit to the previous approximation
+    if (fitRows < freeCount) return false;
     if (!detail::solveBanded(band, freeCount, p, rhs, sequences))
         throw GeometryError("removeKnotsLeastSquares: the local fit is rank deficient");
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) points[c * sequences + s] = rhs[(c - cL) * sequences + s];
+    return true;
 }
 
 // The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
@@ -149,9 +151,13 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         ++fits;
         LeastSquaresRemoval fit;
         try {
-            fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
-            refitToOriginal(s.degree, fit.knots, fit.points, s.sequences, fit.firstChanged, fit.lastChanged,
-                            original.knots, original.points);
+            // The window is refitted to the original; only where the original has too few
+            // coefficients there does the fit to the current approximation stand.
+            fit = detail::removalWindow(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
+            if (!refitToOriginal(s.degree, fit.knots, fit.points, s.sequences, fit.firstChanged,
+                                 fit.lastChanged, original.knots, original.points))
+                fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends,
+                                              o.margin);
         } catch (const GeometryError&) {
             return false;  // the end conditions leave nothing to fit here
         }

@@ -4,6 +4,7 @@
 
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
+#include "geom/KnotRemoval.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -16,6 +17,12 @@
 #include <vector>
 
 namespace geom::detail {
+
+// removeKnotsLeastSquares without the local fit: the new knots, the window, and the old
+// coefficients in it as placeholders, for a caller that refits the window itself.
+LeastSquaresRemoval removalWindow(int degree, std::span<const double> knots,
+                                  std::span<const glm::dvec3> points, std::size_t sequences,
+                                  std::span<const double> values, const EndConditions& ends, int margin);
 
 // Least squares min |M x - B| for a dense rows x cols matrix (row-major) and `width` right-hand
 // sides (row-major rows x width) by Householder QR; returns cols x width. M must have full column
