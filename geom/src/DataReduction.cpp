@@ -567,19 +567,19 @@ private:
     // samples that break the tolerance go to failures.
     bool measure(const std::vector<double>& tau, const std::vector<glm::dvec3>& c,
                  std::vector<double>& failures) {
-        detail::evaluateAscending(degree_, tau, c.data(), c.size(), params_, values_.data());
+        detail::SplineSampler candidate(degree_, tau, c.data(), c.size()),
+            original(degree_, t0_, d0_.data(), d0_.size());
+        for (std::size_t i = 0; i < params_.size(); ++i) values_[i] = candidate.value(params_[i]);
         bool ok = true;
         for (std::size_t i = 0; i < params_.size(); ++i) {
             const double parametric = glm::length(values_[i] - samples_[i]);
             trialError_[i] = parametric;
             if (parametric <= tol_) continue;
             if (ok) {
-                const double there = detail::newtonDistance(degree_, tau, c.data(), c.size(), samples_[i],
-                                                            params_[i], parametric);
-                const double back = there > tol_
-                                        ? there
-                                        : detail::newtonDistance(degree_, t0_, d0_.data(), d0_.size(),
-                                                                 values_[i], params_[i], parametric);
+                const double there = detail::newtonDistance(candidate, samples_[i], params_[i], parametric);
+                const double back =
+                    there > tol_ ? there
+                                 : detail::newtonDistance(original, values_[i], params_[i], parametric);
                 trialError_[i] = std::max(there, back);
                 if (trialError_[i] <= tol_) continue;
                 ok = false;
@@ -639,6 +639,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
 
     Spline s{curve.degree, curve.knots, curve.points, 1};
+    detail::SplineSampler originalSampler(curve.degree, curve.knots, curve.points.data(),
+                                          curve.points.size());
     CurveReduction out;
     auto accept = [&](const LeastSquaresRemoval& fit) {
         if (!measuring) return true;
@@ -651,18 +653,18 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             std::upper_bound(params.begin(), params.end(), fit.changedTo) - params.begin());
         const std::size_t first = lo > pad ? lo - pad : 0;
         const std::size_t last = std::min(params.size(), hi + pad);
+        detail::SplineSampler candidate(g.degree, g.knots, g.points.data(), g.points.size());
         std::vector<glm::dvec3> onCandidate(last - first);
-        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(),
-                                  std::span(params).subspan(first, last - first), onCandidate.data());
+        for (std::size_t i = first; i < last; ++i) onCandidate[i - first] = candidate.value(params[i]);
         // Newton from a known point (the witness, then the sample's own parameter): a distance
-        // to a real point of the candidate, so an upper bound of the closest one.
-        // The loop needs to know only that a sample is within the tolerance, so Newton stops there.
+        // to a real point of the candidate, so an upper bound of the closest one. The loop needs
+        // to know only that a sample is within the tolerance, so Newton stops there.
         const double enough = tol;
         auto newton = [&](const glm::dvec3& target, double from) {
             CurvePoint c;
             c.u = from;
-            c.distance = detail::newtonDistance(g.degree, g.knots, g.points.data(), g.points.size(), target,
-                                                from, std::numeric_limits<double>::infinity(), &c.u, enough);
+            c.distance = detail::newtonDistance(candidate, target, from,
+                                                std::numeric_limits<double>::infinity(), &c.u, enough);
             return c;
         };
         for (std::size_t i = first; i < last; ++i) {
@@ -685,8 +687,7 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             trial[i] = pr.u;
             // Reduced to original, seeded where the witnesses say g(params[i]) lies on the original.
             auto toOriginal = [&](double from) {
-                return detail::newtonDistance(curve.degree, curve.knots, curve.points.data(),
-                                              curve.points.size(), q, from, parametric, nullptr, enough);
+                return detail::newtonDistance(originalSampler, q, from, parametric, nullptr, enough);
             };
             double d = toOriginal(params[i]);
             if (d > tol) {

@@ -74,6 +74,7 @@ std::vector<double> sampleDistances(const Curve& from, const Curve& to, const st
     detail::evaluateAscending(from.degree, from.knots, from.points.data(), from.points.size(), params,
                               a.data());
     detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), params, b.data());
+    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
     std::vector<double> out(params.size());
     std::vector<std::size_t> order(params.size());
     for (std::size_t i = 0; i < params.size(); ++i) out[i] = glm::length(a[i] - b[i]), order[i] = i;
@@ -81,8 +82,7 @@ std::vector<double> sampleDistances(const Curve& from, const Curve& to, const st
     double worst = 0.0;
     for (std::size_t i : order) {
         if (out[i] <= worst) break;
-        double d = detail::newtonDistance(to.degree, to.knots, to.points.data(), to.points.size(), a[i],
-                                          params[i], out[i]);
+        double d = detail::newtonDistance(toSampler, a[i], params[i], out[i]);
         if (d > worst) {
             if (!projector) projector.emplace(to);
             d = std::min(d, projector->closestPoint(a[i]).distance);

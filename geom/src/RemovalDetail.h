@@ -123,77 +123,8 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
     return mu;
 }
 
-// The largest degree the allocation-free basis routines below take; higher degrees use Basis.h.
+// The largest degree the span power forms below take; higher degrees use Basis.h.
 constexpr std::size_t smallDegree = 7;
-
-// The degree+1 non-zero B-splines at u in the non-empty span (The NURBS Book A2.2), on the stack.
-inline void smallBasis(std::size_t span, double u, std::size_t p, const double* knots, double* out) {
-    double left[smallDegree + 1], right[smallDegree + 1];
-    out[0] = 1.0;
-    for (std::size_t j = 1; j <= p; ++j) {
-        left[j] = u - knots[span + 1 - j];
-        right[j] = knots[span + j] - u;
-        double saved = 0.0;
-        for (std::size_t r = 0; r < j; ++r) {
-            const double temp = out[r] / (right[r + 1] + left[j - r]);
-            out[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        out[j] = saved;
-    }
-}
-
-// The non-zero B-splines and their first and second derivatives at u (The NURBS Book A2.3):
-// ders[k * (p + 1) + j] for k <= 2, on the stack.
-inline void smallBasisDerivatives(std::size_t span, double u, std::size_t p, const double* knots,
-                                  double* ders) {
-    double ndu[smallDegree + 1][smallDegree + 1], left[smallDegree + 1], right[smallDegree + 1];
-    double a[2][smallDegree + 1];
-    ndu[0][0] = 1.0;
-    for (std::size_t j = 1; j <= p; ++j) {
-        left[j] = u - knots[span + 1 - j];
-        right[j] = knots[span + j] - u;
-        double saved = 0.0;
-        for (std::size_t r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    const std::size_t w = p + 1;
-    for (std::size_t j = 0; j <= p; ++j) ders[j] = ndu[j][p], ders[w + j] = 0.0, ders[2 * w + j] = 0.0;
-    const long n = std::min<long>(2, static_cast<long>(p)), pl = static_cast<long>(p);
-    for (long r = 0; r <= pl; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (long k = 1; k <= n; ++k) {
-            double d = 0.0;
-            const long rk = r - k, pk = pl - k;
-            if (r >= k) {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const long j1 = rk >= -1 ? 1 : -rk, j2 = (r - 1 <= pk) ? k - 1 : pl - r;
-            for (long j = j1; j <= j2; ++j) {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders[static_cast<std::size_t>(k) * w + static_cast<std::size_t>(r)] = d;
-            std::swap(s1, s2);
-        }
-    }
-    double factor = static_cast<double>(p);
-    for (long k = 1; k <= n; ++k) {
-        for (std::size_t j = 0; j <= p; ++j) ders[static_cast<std::size_t>(k) * w + j] *= factor;
-        factor *= static_cast<double>(pl - k);
-    }
-}
 
 // The polynomial of one non-empty span in powers of s = (u - knots[span]) / (span length): the
 // Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
@@ -228,66 +159,107 @@ inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, 
     }
 }
 
-// Values of a polynomial spline (degree, knots, count coefficients) at ascending parameters
-// inside its domain, walking the spans (power form per span, Horner per point).
+// Values and derivatives of one polynomial spline (degree, knots, count coefficients, which
+// must outlive it) at many parameters: the power form of the last span used is kept, so points
+// near each other (samples in order, Newton iterations) cost a Horner step each.
+class SplineSampler {
+public:
+    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count)
+        : degree_(degree),
+          p_(static_cast<std::size_t>(degree)),
+          knots_(knots),
+          points_(points),
+          count_(count) {
+        if (p_ > smallDegree) basis_.resize(3 * (p_ + 1));
+    }
+
+    double start() const { return knots_[p_]; }
+    double end() const { return knots_[count_]; }
+
+    glm::dvec3 value(double u) {
+        if (p_ > smallDegree) {
+            const std::size_t span = findSpan(degree_, knots_, count_, u);
+            basisFunctions(span, u, degree_, knots_, std::span<double>(basis_).first(p_ + 1));
+            glm::dvec3 c(0.0);
+            for (std::size_t k = 0; k <= p_; ++k) c += basis_[k] * points_[span - p_ + k];
+            return c;
+        }
+        const double s = locate(u);
+        glm::dvec3 c = power_[p_];
+        for (std::size_t k = p_; k-- > 0;) c = c * s + power_[k];
+        return c;
+    }
+
+    // The point and its first and second derivatives with respect to u.
+    void derivatives(double u, glm::dvec3& c, glm::dvec3& d1, glm::dvec3& d2) {
+        if (p_ > smallDegree) {
+            const std::size_t span = findSpan(degree_, knots_, count_, u);
+            basisDerivatives(span, u, degree_, knots_, 2, basis_);
+            c = d1 = d2 = glm::dvec3(0.0);
+            for (std::size_t k = 0; k <= p_; ++k) {
+                const glm::dvec3& q = points_[span - p_ + k];
+                c += basis_[k] * q;
+                d1 += basis_[p_ + 1 + k] * q;
+                d2 += basis_[2 * (p_ + 1) + k] * q;
+            }
+            return;
+        }
+        const double s = locate(u);
+        c = power_[p_];
+        d1 = d2 = glm::dvec3(0.0);
+        for (std::size_t k = p_; k-- > 0;) {
+            d2 = d2 * s + d1;
+            d1 = d1 * s + c;
+            c = c * s + power_[k];
+        }
+        const double h = knots_[span_ + 1] - knots_[span_];
+        d1 /= h;
+        d2 *= 2.0 / (h * h);
+    }
+
+private:
+    // Makes span_ the span of u (as findSpan) and returns u's local parameter in it.
+    double locate(double u) {
+        const bool inside = formed_ && knots_[span_] <= u &&
+                            (u < knots_[span_ + 1] || (span_ + 1 == count_ && u <= knots_[count_]));
+        if (!inside) {
+            span_ = findSpan(degree_, knots_, count_, u);
+            spanPowerForm(span_, p_, knots_.data(), points_, power_);
+            formed_ = true;
+        }
+        return (u - knots_[span_]) / (knots_[span_ + 1] - knots_[span_]);
+    }
+
+    int degree_;
+    std::size_t p_;
+    const std::vector<double>& knots_;
+    const glm::dvec3* points_;
+    std::size_t count_;
+    std::size_t span_ = 0;
+    bool formed_ = false;
+    glm::dvec3 power_[smallDegree + 1];
+    std::vector<double> basis_;
+};
+
+// Values of a polynomial spline (degree, knots, count coefficients) at parameters inside its
+// domain (ascending ones cost one power form per span).
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
                               std::size_t count, std::span<const double> params, glm::dvec3* out) {
-    const std::size_t p = static_cast<std::size_t>(degree);
-    if (p > smallDegree) {
-        std::vector<double> nb(p + 1);
-        for (std::size_t i = 0; i < params.size(); ++i) {
-            const std::size_t span = findSpan(degree, knots, count, params[i]);
-            basisFunctions(span, params[i], degree, knots, nb);
-            glm::dvec3 c(0.0);
-            for (std::size_t k = 0; k <= p; ++k) c += nb[k] * points[span - p + k];
-            out[i] = c;
-        }
-        return;
-    }
-    glm::dvec3 power[smallDegree + 1];
-    std::size_t span = p, formed = 0;  // formed: span + 1 of the power form held, 0 for none
-    for (std::size_t i = 0; i < params.size(); ++i) {
-        const double u = params[i];
-        if (i > 0 && u < params[i - 1]) span = p;
-        while (span + 1 < count && knots[span + 1] <= u) ++span;
-        if (formed != span + 1) {
-            spanPowerForm(span, p, knots.data(), points, power);
-            formed = span + 1;
-        }
-        const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
-        glm::dvec3 c = power[p];
-        for (std::size_t k = p; k-- > 0;) c = c * s + power[k];
-        out[i] = c;
-    }
+    SplineSampler sampler(degree, knots, points, count);
+    for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
 }
 
 // The distance from target to a polynomial spline found by Newton from parameter u, never more
 // than `bound` (the caller's distance to a known point of the spline), stopping early once it is
 // at most `enough`. Every distance it takes is to a real point of the spline, so the answer
 // bounds the true closest distance from above.
-inline double newtonDistance(int degree, const std::vector<double>& knots, const glm::dvec3* points,
-                             std::size_t count, const glm::dvec3& target, double u, double bound,
+inline double newtonDistance(SplineSampler& spline, const glm::dvec3& target, double u, double bound,
                              double* foot = nullptr, double enough = 0.0) {
-    const std::size_t p = static_cast<std::size_t>(degree);
-    const double lo = knots[p], hi = knots[count];
-    double small[3 * (smallDegree + 1)];
-    std::vector<double> heap(p > smallDegree ? 3 * (p + 1) : 0);
-    const std::span<double> ders =
-        p > smallDegree ? std::span<double>(heap) : std::span<double>(small, 3 * (p + 1));
+    const double lo = spline.start(), hi = spline.end();
     double best = bound;
     for (int it = 0; it < 8; ++it) {
-        const std::size_t span = findSpan(degree, knots, count, u);
-        if (p <= smallDegree)
-            smallBasisDerivatives(span, u, p, knots.data(), ders.data());
-        else
-            basisDerivatives(span, u, degree, knots, 2, ders);
-        glm::dvec3 c(0.0), d1(0.0), d2(0.0);
-        for (std::size_t k = 0; k <= p; ++k) {
-            const glm::dvec3& q = points[span - p + k];
-            c += ders[k] * q;
-            d1 += ders[p + 1 + k] * q;
-            d2 += ders[2 * (p + 1) + k] * q;
-        }
+        glm::dvec3 c, d1, d2;
+        spline.derivatives(u, c, d1, d2);
         const glm::dvec3 r = c - target;
         if (glm::length(r) < best) {
             best = glm::length(r);
