@@ -289,8 +289,22 @@ struct SurfaceGrid {
     std::vector<std::size_t> spanV;
     std::vector<double> basisV;
     int degreeV = 0;
+    const Surface* original = nullptr;  // the original in the same orientation
+    // The current v knots' insertion rows into the original's: original v coefficient k is
+    // sum_b rowsV[k * (q + 1) + b] * c[firstV[k] + b] of the current v coefficients c.
+    std::vector<double> rowsV;
+    std::vector<std::size_t> firstV;
 
     void prepareAcross(const Surface& current) {
+        if (original) {
+            const std::size_t q = static_cast<std::size_t>(current.degreeV);
+            rowsV.resize(original->countV * (q + 1));
+            firstV.resize(original->countV);
+            for (std::size_t k = 0; k < original->countV; ++k)
+                firstV[k] = detail::osloRow(current.degreeV, current.knotsV, current.countV, original->knotsV,
+                                            k, rowsV.data() + k * (q + 1)) -
+                            q;
+        }
         degreeV = current.degreeV;
         const std::size_t w = static_cast<std::size_t>(degreeV) + 1;
         spanV.resize(gridV.size());
@@ -301,9 +315,40 @@ struct SurfaceGrid {
         }
     }
 
+    // True when the B-spline coefficients of S - S' on the original knots (S' refined by knot
+    // insertion both ways) are within the tolerance for every original u coefficient whose
+    // support meets (from, to): then |S - S'| <= tolerance everywhere on that strip (the
+    // B-splines are a partition of unity), a bound, not a sample.
+    bool coefficientsWithin(int degreeU, const std::vector<double>& knotsU,
+                            const std::vector<glm::dvec3>& points, std::size_t countV, double from, double to,
+                            double tolerance) const {
+        if (!original) return false;
+        const Surface& o = *original;
+        const std::size_t p = static_cast<std::size_t>(degreeU), q = static_cast<std::size_t>(degreeV);
+        const std::size_t countU = points.size() / countV;
+        std::vector<double> row(p + 1);
+        std::vector<glm::dvec3> refined(countV);
+        for (std::size_t j = 0; j < o.countU; ++j) {
+            if (!(o.knotsU[j + p + 1] > from && o.knotsU[j] < to)) continue;
+            const std::size_t c0 = detail::osloRow(degreeU, knotsU, countU, o.knotsU, j, row.data()) - p;
+            for (std::size_t k = 0; k < countV; ++k) {
+                glm::dvec3 c(0.0);
+                for (std::size_t a = 0; a <= p; ++a) c += row[a] * points[(c0 + a) * countV + k];
+                refined[k] = c;
+            }
+            for (std::size_t k = 0; k < o.countV; ++k) {
+                glm::dvec3 c(0.0);
+                for (std::size_t b = 0; b <= q; ++b) c += rowsV[k * (q + 1) + b] * refined[firstV[k] + b];
+                if (glm::length(c - o.points[j * o.countV + k]) > tolerance) return false;
+            }
+        }
+        return true;
+    }
+
     // True when |S(u, v) - S'(u, v)| <= tolerance at every grid vertex with u in [from, to].
     bool within(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
                 std::size_t countV, double from, double to, double tolerance) const {
+        if (coefficientsWithin(degreeU, knotsU, points, countV, from, to, tolerance)) return true;
         const std::size_t countU = points.size() / countV;
         const std::size_t p = static_cast<std::size_t>(degreeU);
         const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
@@ -741,7 +786,9 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
     if (surface.rational())
         throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
     SurfaceReduction out;
+    const Surface across = transposed(surface);
     SurfaceGrid grid;
+    grid.original = &surface;
     grid.gridU = spanSamples(surface.knotsU, surface.degreeU, surface.countU, options.samplesPerSpan);
     grid.gridV = spanSamples(surface.knotsV, surface.degreeV, surface.countV, options.samplesPerSpan);
     if (std::isfinite(options.tolerance)) {
@@ -764,6 +811,7 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
                 // Along v by transposition (the thesis's swap_uw), the grid transposed with it.
                 Surface t = transposed(current);
                 SurfaceGrid tg;
+                tg.original = &across;
                 tg.gridU = grid.gridV;
                 tg.gridV = grid.gridU;
                 if (!grid.values.empty()) {

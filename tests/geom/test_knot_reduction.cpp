@@ -345,3 +345,29 @@ TEST_CASE("the curve deviation's maximum is that of the closest points of every 
         REQUIRE(d.maxError > 0.0);
     }
 }
+
+TEST_CASE("a surface made by inserting knot rows reduces back to the simpler surface",
+          "[geom][knots][reduction]") {
+    // Every removal here is exact, so the coefficient bound on S - S' accepts it without the
+    // grid; the result must be the simpler surface itself.
+    std::mt19937 rng(64);
+    for (int p = 2; p <= 4; ++p) {
+        const Surface base = geomtest::bumpySurface(rng, p, p + 1, static_cast<std::size_t>(p + 3),
+                                                    static_cast<std::size_t>(p + 4), false);
+        std::uniform_real_distribution<double> unit(0.05, 0.95);
+        std::vector<double> iu, iv;
+        for (int i = 0; i < 8; ++i) iu.push_back(unit(rng)), iv.push_back(unit(rng));
+        const Surface refined = refineKnotsV(refineKnotsU(base, iu), iv);
+        ReductionOptions o;
+        o.tolerance = 1e-9;
+        const SurfaceReduction r = reduceSurface(refined, ReductionDirection::Both, o);
+        INFO("degree " << p);
+        REQUIRE(r.removedU == iu.size());
+        REQUIRE(r.removedV == iv.size());
+        REQUIRE(r.surface.knotsU == base.knotsU);
+        REQUIRE(r.surface.knotsV == base.knotsV);
+        for (std::size_t k = 0; k < base.points.size(); ++k)
+            REQUIRE(glm::length(r.surface.points[k] - base.points[k]) < 1e-9);
+        REQUIRE(r.deviation.maxError <= o.tolerance);
+    }
+}
