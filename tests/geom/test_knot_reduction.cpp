@@ -371,3 +371,26 @@ TEST_CASE("a surface made by inserting knot rows reduces back to the simpler sur
         REQUIRE(r.deviation.maxError <= o.tolerance);
     }
 }
+
+TEST_CASE("curve reduction and deviation above the power-form degree limit", "[geom][knots][reduction]") {
+    // Degrees above 7 take Cox-de Boor instead of the span power form in sampling and Newton.
+    std::mt19937 rng(65);
+    for (int p : {7, 8}) {
+        const Curve c = noisyRefinedCurve(rng, p, 30, 2e-4);
+        for (bool batch : {false, true}) {
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            o.batch = batch;
+            const CurveReduction r = reduceCurve(c, o);
+            INFO("degree " << p << " batch " << batch);
+            REQUIRE(r.removed > 10);
+            REQUIRE(r.deviation.maxError <= o.tolerance);
+            REQUIRE(measureDeviation(c, r.curve, 64).maxError <= o.tolerance * 1.001);
+            const CurveProjector projector(c);
+            double worst = 0.0;
+            for (double u : spanSamples(r.curve.knots, r.curve.degree, r.curve.points.size(), 16))
+                worst = std::max(worst, projector.closestPoint(evaluate(r.curve, u)).distance);
+            REQUIRE(r.deviation.maxReducedToOriginal == Approx(worst).epsilon(1e-9));
+        }
+    }
+}
