@@ -681,6 +681,9 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
+    // The largest error of each block of errorBlock samples, for the ranking's many range maxima.
+    constexpr std::size_t errorBlock = 16;
+    std::vector<double> blockError(params.size() / errorBlock + 1, 0.0);
     const std::size_t pad = static_cast<std::size_t>(options.samplesPerSpan);
 
     Spline s{curve.degree, curve.knots, curve.points, 1};
@@ -745,13 +748,22 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             trialError[i] = std::max(d, pr.distance);
         }
         for (std::size_t i = first; i < last; ++i) witness[i] = trial[i], error[i] = trialError[i];
+        for (std::size_t k = first / errorBlock; k * errorBlock < last; ++k) {
+            blockError[k] = 0.0;
+            for (std::size_t i = k * errorBlock; i < std::min(params.size(), (k + 1) * errorBlock); ++i)
+                blockError[k] = std::max(blockError[k], error[i]);
+        }
         return true;
     };
     auto presentError = [&](double from, double to) {
-        const auto a = std::lower_bound(params.begin(), params.end(), from) - params.begin();
-        const auto b = std::upper_bound(params.begin(), params.end(), to) - params.begin();
+        std::size_t a =
+            static_cast<std::size_t>(std::lower_bound(params.begin(), params.end(), from) - params.begin());
+        const std::size_t b =
+            static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), to) - params.begin());
         double worst = 0.0;
-        for (auto i = a; i < b; ++i) worst = std::max(worst, error[static_cast<std::size_t>(i)]);
+        for (; a < b && a % errorBlock != 0; ++a) worst = std::max(worst, error[a]);
+        for (; a + errorBlock <= b; a += errorBlock) worst = std::max(worst, blockError[a / errorBlock]);
+        for (; a < b; ++a) worst = std::max(worst, error[a]);
         return worst;
     };
     std::vector<Spline> history;
