@@ -132,24 +132,31 @@ constexpr std::size_t smallDegree = 7;
 // per point when a span holds several samples.
 inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, const glm::dvec3* points,
                           glm::dvec3* power) {
+    static constexpr double binomial[smallDegree + 1][smallDegree + 1] = {{1},
+                                                                          {1, 1},
+                                                                          {1, 2, 1},
+                                                                          {1, 3, 3, 1},
+                                                                          {1, 4, 6, 4, 1},
+                                                                          {1, 5, 10, 10, 5, 1},
+                                                                          {1, 6, 15, 20, 15, 6, 1},
+                                                                          {1, 7, 21, 35, 35, 21, 7, 1}};
     const double a = knots[span], b = knots[span + 1];
-    glm::dvec3 bezier[smallDegree + 1], d[smallDegree + 1];
-    for (std::size_t k = 0; k <= p; ++k) {
-        for (std::size_t j = 0; j <= p; ++j) d[j] = points[span - p + j];
-        for (std::size_t r = 1; r <= p; ++r) {
-            const double x = r <= p - k ? a : b;
-            for (std::size_t j = p; j >= r; --j) {
-                const double lo = knots[span - p + j], hi = knots[span + 1 + j - r];
-                const double alpha = (x - lo) / (hi - lo);
-                d[j] = (1.0 - alpha) * d[j - 1] + alpha * d[j];
-            }
+    // Bezier point k is the blossom at (a^(p-k), b^k): the levels taken at a are shared, so
+    // state holds the de Boor triangle after r levels at a and each k finishes it at b.
+    glm::dvec3 state[smallDegree + 1], d[smallDegree + 1], bezier[smallDegree + 1];
+    for (std::size_t j = 0; j <= p; ++j) state[j] = points[span - p + j];
+    auto level = [&](glm::dvec3* net, std::size_t l, double x) {
+        for (std::size_t j = p; j >= l; --j) {
+            const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
+            const double alpha = (x - lo) / (hi - lo);
+            net[j] = (1.0 - alpha) * net[j - 1] + alpha * net[j];
         }
-        bezier[k] = d[p];
-    }
-    double binomial[smallDegree + 1][smallDegree + 1];
-    for (std::size_t n = 0; n <= p; ++n) {
-        binomial[n][0] = binomial[n][n] = 1.0;
-        for (std::size_t k = 1; k < n; ++k) binomial[n][k] = binomial[n - 1][k - 1] + binomial[n - 1][k];
+    };
+    for (std::size_t r = 0; r <= p; ++r) {
+        for (std::size_t j = r; j <= p; ++j) d[j] = state[j];
+        for (std::size_t l = r + 1; l <= p; ++l) level(d, l, b);
+        bezier[p - r] = d[p];
+        if (r < p) level(state, r + 1, a);
     }
     for (std::size_t k = 0; k <= p; ++k) {
         glm::dvec3 sum(0.0);
