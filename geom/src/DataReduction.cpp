@@ -2,10 +2,10 @@
 
 #include "RemovalDetail.h"
 #include "geom/Basis.h"
-#include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "geom/GridEvaluator.h"
+#include "geom/Inversion.h"
 #include "geom/KnotSignificance.h"
 
 #include <glm/geometric.hpp>
@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 
 namespace geom {
