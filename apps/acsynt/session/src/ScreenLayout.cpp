@@ -51,7 +51,7 @@ PixelBox ScreenLayout::slider(int device) const {
     const double rowHeight = (sliders.y1 - sliders.y0) / 4;
     const double y0 = sliders.y0 + (device - 1) * rowHeight;
     // The label takes the left third; the slider itself the rest.
-    return {sliders.x0 + (sliders.x1 - sliders.x0) / 3, y0 + rowHeight * 0.25, sliders.x1 - 4, y0 + rowHeight * 0.75};
+    return {sliders.x0 + (sliders.x1 - sliders.x0) * 0.4, y0 + rowHeight * 0.25, sliders.x1 - 4, y0 + rowHeight * 0.75};
 }
 
 }  // namespace acsynt

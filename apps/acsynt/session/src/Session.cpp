@@ -24,8 +24,8 @@ const char* const title = "ACSYNT B-SPLINE MODULE V1.2.2";
 const std::vector<std::string> mainItems{"FILE", "VIEW", "CURVE_MAP", "SURF_REDN", "MODELS", "EXIT"};
 const std::vector<std::string> fileItems{"RETURN",  "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL",
                                          "ARCHIVE", "RETRIEVE",   "EXIT"};
-const std::vector<std::string> viewItems{"RETURN", "ONE_VIEW", "FOUR_VIEWS", "SHADE",
-                                         "WIREFRAME", "HULL_ON", "HULL_OFF", "RESET_VIEW"};
+const std::vector<std::string> viewItems{"RETURN",  "ONE_VIEW", "FOUR_VIEWS", "SHADE",     "WIREFRAME",
+                                         "HULL_ON", "HULL_OFF", "CENTRE_ON_MARKER", "RESET_VIEW"};
 const std::vector<std::string> curveItems{"RETURN",      "LOAD_CURVE", "DEFINE_POINT", "FLIP_CURVE",
                                           "ROTATE_CURVE", "MAP_PREVIEW", "MAP_CURVE",   "DISPLAY_ALL"};
 const std::vector<std::string> confirmItems{"ACCEPT", "REJECT"};
@@ -33,7 +33,8 @@ const std::vector<std::string> reductionItems{"RETURN",       "REDUCE_U",  "REDU
                                               "BY_TOLERANCE", "BY_COUNT",  "ERROR_MAP"};
 const std::vector<std::string> modelItems{"RETURN", "NEXT_MODEL", "PREVIOUS_MODEL", "LIST", "NAME_MODEL",
                                           "DELETE_MODEL"};
-const std::vector<std::string> padItems{"NW", "N", "NE", "W", "C", "E", "SW", "S", "SE", "DONE"};
+const std::vector<std::string> padItems{"NORTH_WEST", "NORTH", "NORTH_EAST", "WEST",  "CENTRE",
+                                        "EAST",       "SOUTH_WEST", "SOUTH",   "SOUTH_EAST", "DONE"};
 const char* const sliderNames[] = {"U", "W", "ROTATE", "ZOOM"};
 const double sliderLow[] = {0, 0, -180, 0.25};
 const double sliderHigh[] = {1, 1, 180, 8};
@@ -265,7 +266,6 @@ void Session::directive(const action::Directive& d, const InputAction& a) {
 // ---- menus
 
 void Session::mainMenu() {
-    phase_ = Phase::None;
     setMenu("MAIN", mainItems);
 }
 
@@ -305,11 +305,15 @@ void Session::choose(std::string item) {
         return;
     }
     if (item == "RETURN") {
-        if (menuTitle_ == "CURVE MAP") {
+        if (menuTitle_ == "CURVE MAP" && phase_ != Phase::Placed) {
+            // An unfinished DEFINE POINT is abandoned; a placed reference point is kept.
             phase_ = Phase::None;
+            reference_.reset();
             style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
             if (!models_.empty()) modelPicture_.restyle(models_.current(), style_);
+            drawOverlay();
         }
+        if (menuTitle_ == "SURF_REDN" && phase_ == Phase::SelectReduction) phase_ = Phase::None;
         mainMenu();
         say("SELECT MENU ITEM");
         return;
@@ -354,6 +358,15 @@ void Session::viewMenu(const std::string& item) {
     if (item == "RESET_VIEW") {
         azimuth_ = -135;
         zoom_ = 1;
+        viewCentre_.reset();
+    }
+    if (item == "CENTRE_ON_MARKER") {
+        if (!reference_) {
+            fail("NO REFERENCE POINT: USE DEFINE POINT FIRST");
+            return;
+        }
+        const Component& comp = models_.current().components[std::size_t(reference_->component)];
+        viewCentre_ = geom::evaluate(comp.surface, reference_->u, reference_->w);
     }
     if (!models_.empty()) modelPicture_.restyle(models_.current(), style_);
     updateViews();
@@ -373,10 +386,12 @@ void Session::curveMenu(const std::string& item) {
         say("SELECT COMPONENT FOR MAPPING");
     } else if (item == "FLIP_CURVE") {
         placement_.flipped = !placement_.flipped;
+        mappedSincePlaced_ = false;
         drawOverlay();
         say(placement_.flipped ? "CURVE FLIPPED" : "CURVE UNFLIPPED");
     } else if (item == "ROTATE_CURVE") {
         placement_.quarterTurns = (placement_.quarterTurns + 1) % 4;
+        mappedSincePlaced_ = false;
         drawOverlay();
         say("CURVE ROTATED TO " + std::to_string(90 * placement_.quarterTurns) + " DEGREES");
     } else if (item == "MAP_PREVIEW") {
@@ -572,6 +587,7 @@ void Session::padButton(int button) {
     const Patch& p = comp.patches.patches[std::size_t(reference_->patch - 1)];
     if (button == 10) {
         phase_ = Phase::Placed;
+        mappedSincePlaced_ = false;
         style_.onlyComponent = style_.highlightComponent = -1;
         modelPicture_.restyle(models_.current(), style_);
         drawOverlay();
@@ -640,6 +656,7 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
 
 void Session::readModel(const std::string& name) {
     Model model = loadModel(findInput(name));  // all or nothing: throws before anything changes
+    viewCentre_.reset();
     for (std::size_t i = 0; i < models_.size(); ++i)
         if (models_.at(i).name == model.name) {
             fail("A MODEL NAMED " + model.name + " IS ALREADY LOADED");
@@ -744,7 +761,7 @@ void Session::updateViews() {
                 hi = glm::max(hi, p);
             }
     }
-    const glm::dvec3 centre = (lo + hi) / 2.0;
+    const glm::dvec3 centre = viewCentre_.value_or((lo + hi) / 2.0);
     const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
     const double az = glm::radians(azimuth_), el = glm::radians(25.0);
     struct Direction {
@@ -893,7 +910,7 @@ void Session::drawOverlay() {
         e.push_back(RealAttribute{ElementType::MarkerSizeScaleFactor, 2.0});
         e.push_back(colourAttr(ElementType::PolymarkerColour, {1, 0.2, 0.2}));
         e.push_back(polymarker3({at}));
-        if (phase_ == Phase::Placed) {
+        if (phase_ == Phase::Placed && !mappedSincePlaced_) {
             geom::curvemap::Placement placement = placement_;
             placement.reference = {reference_->u, reference_->w};
             placement.offset = 0.5;
@@ -978,6 +995,7 @@ void Session::mapCurve(bool previewOnly) {
     }
     mappings_.push_back(std::move(record));
     previewLines_.clear();
+    mappedSincePlaced_ = true;  // the mapped figure is shown with the model, without the placed curve
     style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
     modelPicture_.restyle(model, style_);
     drawOverlay();
@@ -994,7 +1012,7 @@ void Session::drawMapped(bool all) {
         for (std::size_t i = 0; i < mappings_.size(); ++i) {
             const MappingRecord& m = mappings_[i];
             if (m.model != name || (!all && i + 1 != mappings_.size())) continue;
-            e.push_back(colourAttr(ElementType::PolylineColour, i % 2 ? glm::dvec3(1.0, 0.35, 0.2) : glm::dvec3(0.1, 0.1, 0.1)));
+            e.push_back(colourAttr(ElementType::PolylineColour, i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
             for (const auto& line : m.polylines) e.push_back(polyline3(line));
         }
     }

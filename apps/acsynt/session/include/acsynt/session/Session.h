@@ -172,6 +172,7 @@ private:
     DisplayStyle style_;
     bool fourViews_ = false;
     double azimuth_ = -135, zoom_ = 1;
+    std::optional<glm::dvec3> viewCentre_;  ///< CENTRE ON MARKER; else the model's middle
 
     std::string menuTitle_;
     std::vector<std::string> menuItems_;
@@ -192,6 +193,7 @@ private:
     std::optional<PickedPatch> lastPick_;
     std::optional<phigs::SurfacePickDetail> lastPickDetail_;
     std::vector<MappingRecord> mappings_;
+    bool mappedSincePlaced_ = false;
     std::vector<std::vector<glm::dvec3>> previewLines_;
 
     // SURF_REDN
