@@ -63,9 +63,10 @@ std::optional<Options> parse(int argc, char** argv) {
                 o.window = true;
                 break;
             case 'z':
-                if (std::sscanf(optarg, "%dx%d", &o.width, &o.height) != 2 || o.width < 160 || o.height < 120 ||
-                    o.width > 1024 || o.height > 768) {
-                    std::cerr << "acsynt: --size wants WxH within 160x120 .. 1024x768, not '" << optarg << "'\n";
+                if (std::sscanf(optarg, "%dx%d", &o.width, &o.height) != 2 || o.width < 160 ||
+                    o.height < 120 || o.width > 1024 || o.height > 768) {
+                    std::cerr << "acsynt: --size wants WxH within 160x120 .. 1024x768, not '" << optarg
+                              << "'\n";
                     return std::nullopt;
                 }
                 break;
@@ -110,27 +111,31 @@ int main(int argc, char** argv) {
         if (!options->window) {
             auto script = phigs::ScriptInputSource::fromFile(options->script, acsynt::Session::directives());
             acsynt::OffscreenPictures pictures(settings.width, settings.height);
-            acsynt::Session session(settings, script, [&](const phigs::DrawList& list, const std::filesystem::path& file) {
-                pictures.writePng(list, file);
-            });
+            acsynt::Session session(settings, script,
+                                    [&](const phigs::DrawList& list, const std::filesystem::path& file) {
+                                        pictures.writePng(list, file);
+                                    });
             session.run();
             finish(session, *options);
             return 0;
         }
 #ifdef ACSYNT_HAVE_WINDOW
         phigs::vk::Context context(phigs::vk::WindowWorkstation::contextSettings());
-        phigs::vk::WindowWorkstation window(context, std::uint32_t(settings.width), std::uint32_t(settings.height),
-                                            "ACSYNT B-SPLINE MODULE");
+        phigs::vk::WindowWorkstation window(context, std::uint32_t(settings.width),
+                                            std::uint32_t(settings.height), "ACSYNT B-SPLINE MODULE");
         phigs::GlfwInputSource source(window.window());
-        acsynt::Session session(settings, source, [&](const phigs::DrawList& list, const std::filesystem::path& file) {
-            phigs::Image image;
-            window.draw(acsynt::OffscreenPictures::forRenderer(list, settings.width, settings.height), &image);
-            phigs::writePng(image, file);
-        });
+        acsynt::Session session(
+            settings, source, [&](const phigs::DrawList& list, const std::filesystem::path& file) {
+                phigs::Image image;
+                window.draw(acsynt::OffscreenPictures::forRenderer(list, settings.width, settings.height),
+                            &image);
+                phigs::writePng(image, file);
+            });
         session.setPresenter([&](const phigs::DrawList& list) {
             window.draw(acsynt::OffscreenPictures::forRenderer(list, settings.width, settings.height));
         });
-        window.draw(acsynt::OffscreenPictures::forRenderer(session.picture(), settings.width, settings.height));
+        window.draw(
+            acsynt::OffscreenPictures::forRenderer(session.picture(), settings.width, settings.height));
         while (!window.shouldClose() && session.step(std::chrono::milliseconds(30))) {
         }
         finish(session, *options);

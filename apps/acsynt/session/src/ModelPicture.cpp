@@ -59,11 +59,11 @@ void ModelPicture::build(const Model& model, const DisplayStyle& style) {
         const int index = static_cast<int>(c);
         for (const Patch& p : comp.patches.patches) {
             const int id = structures::patch(index, p.number);
-            rewriteStructure(store_, id,
-                             {pickId(p.number), addNamesToSet({structures::pickableName}),
-                              NurbsSurfaceElement{patchSurface(p), {}},
-                              removeNamesFromSet({structures::pickableName}), addNamesToSet({structures::lineName}),
-                              polyline3(boundary(p))});
+            rewriteStructure(
+                store_, id,
+                {pickId(p.number), addNamesToSet({structures::pickableName}),
+                 NurbsSurfaceElement{patchSurface(p), {}}, removeNamesFromSet({structures::pickableName}),
+                 addNamesToSet({structures::lineName}), polyline3(boundary(p))});
             built_.push_back(id);
         }
         std::vector<Element> hull{addNamesToSet({structures::lineName}),
@@ -108,7 +108,8 @@ void ModelPicture::writeComponent(const Model& model, int index, const DisplaySt
     if (style.shaded) {
         e.push_back(indexOf(ElementType::InteriorStyle, static_cast<int>(InteriorStyle::Solid)));
         e.push_back(indexOf(ElementType::InteriorShadingMethod, static_cast<int>(ShadingMethod::Colour)));
-        e.push_back(indexOf(ElementType::InteriorReflectanceEquation, static_cast<int>(ReflectanceModel::Specular)));
+        e.push_back(
+            indexOf(ElementType::InteriorReflectanceEquation, static_cast<int>(ReflectanceModel::Specular)));
         AreaPropertiesAttribute properties{ElementType::AreaProperties};
         properties.ambient = 0.35;
         properties.diffuse = 0.65;
@@ -143,7 +144,8 @@ void ModelPicture::clear() {
 
 std::optional<PickedPatch> ModelPicture::fromPath(const std::vector<PickPathItem>& path) {
     for (auto it = path.rbegin(); it != path.rend(); ++it) {
-        if (it->structureId >= 100000) return PickedPatch{it->structureId / 100000 - 1, it->structureId % 100000};
+        if (it->structureId >= 100000)
+            return PickedPatch{it->structureId / 100000 - 1, it->structureId % 100000};
         if (it->structureId >= 1000 && it->structureId < 2000) return PickedPatch{it->structureId - 1000, 0};
     }
     return std::nullopt;

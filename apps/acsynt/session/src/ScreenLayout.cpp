@@ -43,15 +43,16 @@ PixelBox ScreenLayout::padButton(int button) const {
     const double rowHeight = (pad.y1 - pad.y0) / 4, columnWidth = (pad.x1 - pad.x0) / 3;
     if (button == 10) return {pad.x0 + 2, pad.y0 + 3 * rowHeight + 2, pad.x1 - 2, pad.y1 - 2};
     const int row = (button - 1) / 3, column = (button - 1) % 3;
-    return {pad.x0 + column * columnWidth + 2, pad.y0 + row * rowHeight + 2, pad.x0 + (column + 1) * columnWidth - 2,
-            pad.y0 + (row + 1) * rowHeight - 2};
+    return {pad.x0 + column * columnWidth + 2, pad.y0 + row * rowHeight + 2,
+            pad.x0 + (column + 1) * columnWidth - 2, pad.y0 + (row + 1) * rowHeight - 2};
 }
 
 PixelBox ScreenLayout::slider(int device) const {
     const double rowHeight = (sliders.y1 - sliders.y0) / 4;
     const double y0 = sliders.y0 + (device - 1) * rowHeight;
     // The label takes the left third; the slider itself the rest.
-    return {sliders.x0 + (sliders.x1 - sliders.x0) * 0.4, y0 + rowHeight * 0.25, sliders.x1 - 4, y0 + rowHeight * 0.75};
+    return {sliders.x0 + (sliders.x1 - sliders.x0) * 0.4, y0 + rowHeight * 0.25, sliders.x1 - 4,
+            y0 + rowHeight * 0.75};
 }
 
 }  // namespace acsynt

@@ -22,19 +22,19 @@ namespace {
 
 const char* const title = "ACSYNT B-SPLINE MODULE V1.2.2";
 const std::vector<std::string> mainItems{"FILE", "VIEW", "CURVE_MAP", "SURF_REDN", "MODELS", "EXIT"};
-const std::vector<std::string> fileItems{"RETURN",  "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL",
-                                         "ARCHIVE", "RETRIEVE",   "EXIT"};
-const std::vector<std::string> viewItems{"RETURN",  "ONE_VIEW", "FOUR_VIEWS", "SHADE",     "WIREFRAME",
+const std::vector<std::string> fileItems{"RETURN",   "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL", "ARCHIVE",
+                                         "RETRIEVE", "EXIT"};
+const std::vector<std::string> viewItems{"RETURN",  "ONE_VIEW", "FOUR_VIEWS",       "SHADE",     "WIREFRAME",
                                          "HULL_ON", "HULL_OFF", "CENTRE_ON_MARKER", "RESET_VIEW"};
-const std::vector<std::string> curveItems{"RETURN",      "LOAD_CURVE", "DEFINE_POINT", "FLIP_CURVE",
-                                          "ROTATE_CURVE", "MAP_PREVIEW", "MAP_CURVE",   "DISPLAY_ALL"};
+const std::vector<std::string> curveItems{"RETURN",       "LOAD_CURVE",  "DEFINE_POINT", "FLIP_CURVE",
+                                          "ROTATE_CURVE", "MAP_PREVIEW", "MAP_CURVE",    "DISPLAY_ALL"};
 const std::vector<std::string> confirmItems{"ACCEPT", "REJECT"};
-const std::vector<std::string> reductionItems{"RETURN",       "REDUCE_U",  "REDUCE_W", "REDUCE_U&W",
-                                              "BY_TOLERANCE", "BY_COUNT",  "ERROR_MAP"};
-const std::vector<std::string> modelItems{"RETURN", "NEXT_MODEL", "PREVIOUS_MODEL", "LIST", "NAME_MODEL",
-                                          "DELETE_MODEL"};
-const std::vector<std::string> padItems{"NORTH_WEST", "NORTH", "NORTH_EAST", "WEST",  "CENTRE",
-                                        "EAST",       "SOUTH_WEST", "SOUTH",   "SOUTH_EAST", "DONE"};
+const std::vector<std::string> reductionItems{"RETURN",       "REDUCE_U", "REDUCE_W", "REDUCE_U&W",
+                                              "BY_TOLERANCE", "BY_COUNT", "ERROR_MAP"};
+const std::vector<std::string> modelItems{"RETURN", "NEXT_MODEL", "PREVIOUS_MODEL",
+                                          "LIST",   "NAME_MODEL", "DELETE_MODEL"};
+const std::vector<std::string> padItems{"NORTH_WEST", "NORTH",      "NORTH_EAST", "WEST",       "CENTRE",
+                                        "EAST",       "SOUTH_WEST", "SOUTH",      "SOUTH_EAST", "DONE"};
 const char* const sliderNames[] = {"U", "W", "ROTATE", "ZOOM"};
 const double sliderLow[] = {0, 0, -180, 0.25};
 const double sliderHigh[] = {1, 1, 180, 8};
@@ -126,7 +126,8 @@ void Session::setupWorkstation() {
 void Session::setupDevices() {
     input_ = std::make_unique<WorkstationInput>(1, source_, *measurer_, queue_);
     queue_.attach(*input_);
-    input_->setDirectiveHandler([this](const action::Directive& d, const InputAction& a) { directive(d, a); });
+    input_->setDirectiveHandler(
+        [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
 
     DeviceInitialisation pickSetup;
     pickSetup.initial = PickMeasure{};
@@ -339,7 +340,8 @@ bool Session::requireModel() {
 void Session::fileMenu(const std::string& item) {
     if (item == "READ_MODEL") prompt("ENTER MODEL FILE NAME", Awaiting::ModelFile);
     if (item == "READ_CURVE_FILE") prompt("ENTER CURVE FILE NAME [SCALE]", Awaiting::CurveFile);
-    if (item == "SAVE_MODEL" && requireModel()) prompt("ENTER FILE NAME TO SAVE THE MODEL", Awaiting::SaveFile);
+    if (item == "SAVE_MODEL" && requireModel())
+        prompt("ENTER FILE NAME TO SAVE THE MODEL", Awaiting::SaveFile);
     if (item == "ARCHIVE" && requireModel()) prompt("ENTER ARCHIVE FILE NAME", Awaiting::ArchiveFile);
     if (item == "RETRIEVE") prompt("ENTER ARCHIVE FILE NAME TO RETRIEVE", Awaiting::RetrieveFile);
     if (item == "EXIT") {
@@ -767,8 +769,10 @@ void Session::updateViews() {
     struct Direction {
         glm::dvec3 normal, up;
     };
-    const Direction oblique{{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)}, {0, 0, 1}};
-    const Direction directions[] = {{{0, 0, 1}, {-1, 0, 0}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, -1, 0}, {0, 0, 1}}, oblique};
+    const Direction oblique{{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)},
+                            {0, 0, 1}};
+    const Direction directions[] = {
+        {{0, 0, 1}, {-1, 0, 0}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, -1, 0}, {0, 0, 1}}, oblique};
     std::vector<Element> geometry;
     for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v) {
         const Direction& d = fourViews_ ? directions[v - 1] : oblique;
@@ -777,7 +781,8 @@ void Session::updateViews() {
         ViewMapping mapping;
         const double aspect = (npcMax.x - npcMin.x) / (npcMax.y - npcMin.y);
         const double half = radius * (fourViews_ && v < 4 ? 0.9 : 0.75) / zoom_;
-        const glm::dvec2 halfSize = aspect >= 1 ? glm::dvec2(half * aspect, half) : glm::dvec2(half, half / aspect);
+        const glm::dvec2 halfSize =
+            aspect >= 1 ? glm::dvec2(half * aspect, half) : glm::dvec2(half, half / aspect);
         mapping.windowMin = -halfSize;
         mapping.windowMax = halfSize;
         mapping.viewportMin = npcMin;
@@ -798,7 +803,8 @@ void Session::updateViews() {
     geometry.push_back(viewIndex(0));
     geometry.push_back(addNamesToSet({structures::lineName}));
     geometry.push_back(colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}));
-    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v) geometry.push_back(polyline3(box(layout_, layout_.viewBox(v, fourViews_))));
+    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v)
+        geometry.push_back(polyline3(box(layout_, layout_.viewBox(v, fourViews_))));
     rewriteStructure(phigs_.store(), structures::geometry, geometry);
 }
 
@@ -815,9 +821,10 @@ void Session::drawScreen() {
     const double unit = 1.0 / l.width;  // one pixel in NPC
 
     // The menu panel: one row per alternative, as ChoicePanel lays them out.
-    std::vector<Element> menu{viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
-                              RealAttribute{ElementType::CharacterHeight,
-                                            std::min(14.0, 0.4 * (l.menu.y1 - l.menu.y0) / std::max<std::size_t>(menuItems_.size(), 6)) * unit},
+    const double itemHeight =
+        std::min(14.0, 0.4 * (l.menu.y1 - l.menu.y0) / double(std::max<std::size_t>(menuItems_.size(), 6)));
+    std::vector<Element> menu{viewIndex(0),
+                              IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
                               AlignmentAttribute{ElementType::TextAlignment, 2, 3}};
     ChoicePanel panel{1, l.menu.echoVolume(), menuItems_};
     for (std::size_t i = 0; i < menuItems_.size(); ++i) {
@@ -830,37 +837,46 @@ void Session::drawScreen() {
         menu.push_back(colourAttr(ElementType::PolylineColour, {0.4, 0.5, 0.8}));
         menu.push_back(polyline3(box(l, row)));
         menu.push_back(colourAttr(ElementType::TextColour, {1, 1, 1}));
-        menu.push_back(textAt(l.toNpc(row.centre(), 0.5), shown(menuItems_[i])));
+        // Long items get smaller letters, so every item fits its row (stroke letters are about
+        // as wide as they are high, spacing included).
+        const std::string label = shown(menuItems_[i]);
+        const double fit = 0.92 * (row.x1 - row.x0) / (double(label.size()) * 1.05);
+        menu.push_back(RealAttribute{ElementType::CharacterHeight, std::min(itemHeight, fit) * unit});
+        menu.push_back(textAt(l.toNpc(row.centre(), 0.5), label));
     }
     rewriteStructure(store, structures::menu, menu);
 
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
     const bool padLive = phase_ == Phase::MoveMarker || phase_ == Phase::Placed;
-    std::vector<Element> pad{viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
-                             RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
-                             AlignmentAttribute{ElementType::TextAlignment, 2, 3},
-                             addNamesToSet({structures::buttonName})};
+    std::vector<Element> pad{
+        viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
+        RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
+        AlignmentAttribute{ElementType::TextAlignment, 2, 3}, addNamesToSet({structures::buttonName})};
     static const char* const arrows[] = {"NW", "N", "NE", "W", "[]", "E", "SW", "S", "SE", "DONE"};
     for (int button = 1; button <= 10; ++button) {
         const PixelBox b = l.padButton(button);
         pad.push_back(pickId(button));
-        pad.push_back(colourAttr(ElementType::InteriorColour, padLive ? glm::dvec3(0.2, 0.3, 0.2) : glm::dvec3(0.1, 0.1, 0.12)));
+        pad.push_back(colourAttr(ElementType::InteriorColour,
+                                 padLive ? glm::dvec3(0.2, 0.3, 0.2) : glm::dvec3(0.1, 0.1, 0.12)));
         auto corners = box(l, b);
         corners.pop_back();
         pad.push_back(fillArea3(corners));
-        pad.push_back(colourAttr(ElementType::TextColour, padLive ? glm::dvec3(0.7, 1, 0.7) : glm::dvec3(0.4)));
+        pad.push_back(
+            colourAttr(ElementType::TextColour, padLive ? glm::dvec3(0.7, 1, 0.7) : glm::dvec3(0.4)));
         pad.push_back(textAt(l.toNpc(b.centre(), 0.5), arrows[button - 1]));
     }
     rewriteStructure(store, structures::pad, pad);
 
     // The sliders of valuators 1-4.
-    std::vector<Element> sliders{viewIndex(0), addNamesToSet({structures::lineName}),
-                                 RealAttribute{ElementType::CharacterHeight, 0.09 * (l.sliders.y1 - l.sliders.y0) * unit},
-                                 AlignmentAttribute{ElementType::TextAlignment, 1, 3},
-                                 IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)}};
+    std::vector<Element> sliders{
+        viewIndex(0), addNamesToSet({structures::lineName}),
+        RealAttribute{ElementType::CharacterHeight, 0.09 * (l.sliders.y1 - l.sliders.y0) * unit},
+        AlignmentAttribute{ElementType::TextAlignment, 1, 3},
+        IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)}};
     double values[4] = {0, 0, azimuth_, zoom_};
     if (reference_) {
-        const Patch& p = models_.current().components[std::size_t(reference_->component)]
+        const Patch& p = models_.current()
+                             .components[std::size_t(reference_->component)]
                              .patches.patches[std::size_t(reference_->patch - 1)];
         values[0] = (reference_->u - p.u0) / (p.u1 - p.u0);
         values[1] = (reference_->w - p.w0) / (p.w1 - p.w0);
@@ -874,8 +890,8 @@ void Session::drawScreen() {
         const ValuatorSlider slider{d, b.echoVolume(), sliderLow[d - 1], sliderHigh[d - 1]};
         const double knob = slider.knobAt(std::clamp(values[d - 1], sliderLow[d - 1], sliderHigh[d - 1]));
         sliders.push_back(colourAttr(ElementType::InteriorColour, {0.9, 0.7, 0.2}));
-        sliders.push_back(fillArea3({l.toNpc({knob - 3, b.y0}), l.toNpc({knob + 3, b.y0}), l.toNpc({knob + 3, b.y1}),
-                                     l.toNpc({knob - 3, b.y1})}));
+        sliders.push_back(fillArea3({l.toNpc({knob - 3, b.y0}), l.toNpc({knob + 3, b.y0}),
+                                     l.toNpc({knob + 3, b.y1}), l.toNpc({knob - 3, b.y1})}));
     }
     rewriteStructure(store, structures::sliders, sliders);
 
@@ -925,9 +941,11 @@ void Session::drawOverlay() {
             e.push_back(polyline3({frame.surfacePoint, frame.surfacePoint + length * frame.z}));
             e.push_back(RealAttribute{ElementType::AnnotationTextCharacterHeight, 0.012});
             e.push_back(colourAttr(ElementType::TextColour, {0.1, 1.0, 0.2}));
-            e.push_back(AnnotationTextElement{frame.surfacePoint + length * frame.tangentU, {0.004, 0.004, 0}, "U", false});
+            e.push_back(AnnotationTextElement{
+                frame.surfacePoint + length * frame.tangentU, {0.004, 0.004, 0}, "U", false});
             e.push_back(colourAttr(ElementType::TextColour, {0.75, 0.2, 1.0}));
-            e.push_back(AnnotationTextElement{frame.surfacePoint + length * frame.tangentW, {0.004, 0.004, 0}, "W", false});
+            e.push_back(AnnotationTextElement{
+                frame.surfacePoint + length * frame.tangentW, {0.004, 0.004, 0}, "W", false});
             e.push_back(RealAttribute{ElementType::LinewidthScaleFactor, 1.0});
             // The placed curve above the patch.
             e.push_back(colourAttr(ElementType::PolylineColour, {0.3, 0.9, 1.0}));
@@ -971,8 +989,10 @@ void Session::mapCurve(bool previewOnly) {
         previewLines_.clear();
         for (const auto& part : result.parts)
             for (const auto& loop : part.loops)
-                for (std::size_t k = 0; k < loop.points.size(); k += std::max<std::size_t>(1, loop.points.size() / 24))
-                    if (!std::isnan(loop.curveParameters[k])) previewLines_.push_back({loop.projectedFrom[k], loop.points[k]});
+                for (std::size_t k = 0; k < loop.points.size();
+                     k += std::max<std::size_t>(1, loop.points.size() / 24))
+                    if (!std::isnan(loop.curveParameters[k]))
+                        previewLines_.push_back({loop.projectedFrom[k], loop.points[k]});
         drawOverlay();
         say("MAP PREVIEW: " + std::to_string(previewLines_.size()) + " PROJECTION LINES");
         return;
@@ -1006,13 +1026,15 @@ void Session::mapCurve(bool previewOnly) {
 }
 
 void Session::drawMapped(bool all) {
-    std::vector<Element> e{addNamesToSet({structures::lineName}), RealAttribute{ElementType::LinewidthScaleFactor, 2.0}};
+    std::vector<Element> e{addNamesToSet({structures::lineName}),
+                           RealAttribute{ElementType::LinewidthScaleFactor, 2.0}};
     if (!models_.empty()) {
         const std::string& name = models_.current().name;
         for (std::size_t i = 0; i < mappings_.size(); ++i) {
             const MappingRecord& m = mappings_[i];
             if (m.model != name || (!all && i + 1 != mappings_.size())) continue;
-            e.push_back(colourAttr(ElementType::PolylineColour, i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
+            e.push_back(colourAttr(ElementType::PolylineColour,
+                                   i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
             for (const auto& line : m.polylines) e.push_back(polyline3(line));
         }
     }
@@ -1034,8 +1056,9 @@ void Session::drawErrorMap() {
                 mesh.points.push_back(geom::evaluate(comp.surface, d.u[i], d.v[j]));
                 const double t = std::clamp(d.error[i * d.v.size() + j] / top, 0.0, 1.0);
                 // Blue (no error) through green to red (the largest error).
-                const glm::dvec3 c = t < 0.5 ? glm::mix(glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(0.1, 0.9, 0.2), t * 2)
-                                             : glm::mix(glm::dvec3(0.1, 0.9, 0.2), glm::dvec3(1.0, 0.1, 0.1), t * 2 - 1);
+                const glm::dvec3 c =
+                    t < 0.5 ? glm::mix(glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(0.1, 0.9, 0.2), t * 2)
+                            : glm::mix(glm::dvec3(0.1, 0.9, 0.2), glm::dvec3(1.0, 0.1, 0.1), t * 2 - 1);
                 mesh.vertexColours.push_back(Colour::fromRgb(c));
             }
         e.push_back(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
@@ -1120,16 +1143,16 @@ std::string Session::summary() const {
     }
     for (std::size_t i = 0; i < mappings_.size(); ++i) {
         const MappingRecord& m = mappings_[i];
-        out << "mapping " << i + 1 << ": " << m.curveFile << " on " << m.model << "/" << m.component << " patch "
-            << m.reference.patch << " marker u " << m.reference.u << " w " << m.reference.w << ": " << m.parts
-            << " parts, " << m.loops << " loops (per part";
+        out << "mapping " << i + 1 << ": " << m.curveFile << " on " << m.model << "/" << m.component
+            << " patch " << m.reference.patch << " marker u " << m.reference.u << " w " << m.reference.w
+            << ": " << m.parts << " parts, " << m.loops << " loops (per part";
         for (auto n : m.loopsPerPart) out << " " << n;
         out << "), boundary walks " << m.boundaryWalks << "\n";
     }
     for (std::size_t i = 0; i < reductions_.size(); ++i) {
         const ReductionRecord& r = reductions_[i];
-        out << "reduction " << i + 1 << ": " << r.model << "/" << r.component << " -> " << r.reducedModel << ", "
-            << r.direction << " by " << r.mode;
+        out << "reduction " << i + 1 << ": " << r.model << "/" << r.component << " -> " << r.reducedModel
+            << ", " << r.direction << " by " << r.mode;
         if (r.mode == "tolerance")
             out << " " << r.tolerance;
         else

@@ -11,13 +11,13 @@ namespace acsynt {
 
 /// How the model is drawn.
 struct DisplayStyle {
-    bool shaded = true;  ///< shaded surfaces (else iso-line wireframe)
-    bool hull = false;   ///< control hulls on
+    bool shaded = true;           ///< shaded surfaces (else iso-line wireframe)
+    bool hull = false;            ///< control hulls on
     int onlyComponent = -1;       ///< draw only this component (DEFINE POINT), -1: all
     int colourfulComponent = -1;  ///< draw this component with each patch in its own colour
     int highlightComponent = -1;  ///< with highlightPatch: the patch drawn in the highlight colour
     int highlightPatch = 0;
-    int errorMapComponent = -1;   ///< hidden: its error colour map is drawn instead
+    int errorMapComponent = -1;  ///< hidden: its error colour map is drawn instead
 };
 
 /// The PHIGS structures of one model (the seed's acs_root, component acs_id, patch patch_strid
@@ -26,15 +26,15 @@ struct DisplayStyle {
 /// NON-UNIFORM B-SPLINE SURFACE (its 8 + 8 local knots and 4 x 4 hull, so picks report the
 /// component's own (u, w)) under pick id = patch number, and its boundary as polylines.
 namespace structures {
-constexpr int geometry = 10;     ///< posted: one view index + the model per view
-constexpr int menu = 20;         ///< posted: the menu panel
-constexpr int pad = 21;          ///< posted: the pointer-valuator buttons (pickable)
-constexpr int sliders = 22;      ///< posted: the continuous valuators
-constexpr int message = 23;      ///< posted: the title and message line
-constexpr int modelRoot = 100;   ///< the model (acs_root)
-constexpr int mapped = 101;      ///< mapped curves of the model
-constexpr int overlay = 102;     ///< marker, tangents, placed curve, projection lines
-constexpr int errorMap = 103;    ///< the reduction error colour map
+constexpr int geometry = 10;    ///< posted: one view index + the model per view
+constexpr int menu = 20;        ///< posted: the menu panel
+constexpr int pad = 21;         ///< posted: the pointer-valuator buttons (pickable)
+constexpr int sliders = 22;     ///< posted: the continuous valuators
+constexpr int message = 23;     ///< posted: the title and message line
+constexpr int modelRoot = 100;  ///< the model (acs_root)
+constexpr int mapped = 101;     ///< mapped curves of the model
+constexpr int overlay = 102;    ///< marker, tangents, placed curve, projection lines
+constexpr int errorMap = 103;   ///< the reduction error colour map
 /// Name-set names: what the pick filter lets through.
 constexpr int pickableName = 1;  ///< model surfaces
 constexpr int lineName = 2;      ///< lines drawn over them (not pickable)

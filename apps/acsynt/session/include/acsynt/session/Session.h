@@ -111,9 +111,25 @@ public:
     std::string recording() const;
 
 private:
-    enum class Phase { None, SelectComponent, SelectPatch, AcceptReject, MoveMarker, Placed, SelectReduction };
+    enum class Phase {
+        None,
+        SelectComponent,
+        SelectPatch,
+        AcceptReject,
+        MoveMarker,
+        Placed,
+        SelectReduction
+    };
     enum class Awaiting {
-        Nothing, ModelFile, CurveFile, SaveFile, ArchiveFile, RetrieveFile, Tolerance, Count, ModelName
+        Nothing,
+        ModelFile,
+        CurveFile,
+        SaveFile,
+        ArchiveFile,
+        RetrieveFile,
+        Tolerance,
+        Count,
+        ModelName
     };
 
     void setupWorkstation();
