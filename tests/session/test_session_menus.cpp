@@ -45,7 +45,7 @@ void definePoint(Driver& d, double u, double w) {
 
 }  // namespace
 
-TEST_CASE("session VIEW: one view, four views, wireframe with hulls, shaded") {
+TEST_CASE("VIEW menu: one view, four views, wireframe with hulls, shaded") {
     Driver d("view");
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN"});
     CHECK(d.session.message() == "SELECT MENU ITEM");
@@ -66,7 +66,7 @@ TEST_CASE("session VIEW: one view, four views, wireframe with hulls, shaded") {
     CHECK_FALSE(d.logHasError());
 }
 
-TEST_CASE("session CURVE MAP: DEFINE POINT with picks, pad and valuators, then MAP CURVE of the logo") {
+TEST_CASE("CURVE MAP menu: DEFINE POINT with picks, pad and valuators, then MAP CURVE of the logo") {
     Driver d("curve_map");
     loadTransportInFourViews(d);
     d.run({"choice CURVE_MAP", "choice LOAD_CURVE", "string acslogo.crv 0.45"});
@@ -119,7 +119,7 @@ TEST_CASE("session CURVE MAP: DEFINE POINT with picks, pad and valuators, then M
 }
 
 TEST_CASE(
-    "session CURVE MAP: a circle out of bounds over the wing tip closes along the boundary; DISPLAY ALL") {
+    "CURVE MAP menu: a circle out of bounds over the wing tip closes along the boundary, then DISPLAY ALL") {
     Driver d("curve_map_tip");
     loadTransportInFourViews(d);
     d.run({"choice CURVE_MAP", "choice LOAD_CURVE", "string circle.crv 0.12"});
@@ -139,7 +139,7 @@ TEST_CASE(
     CHECK_FALSE(d.logHasError());
 }
 
-TEST_CASE("session CURVE MAP: REJECT goes back to the patch choice; MAP CURVE needs a curve and a point") {
+TEST_CASE("CURVE MAP menu: REJECT goes back to the patch choice, MAP CURVE needs a curve and a point") {
     Driver d("curve_map_reject");
     loadTransportInFourViews(d);
     d.run({"choice CURVE_MAP", "choice MAP_CURVE"});
@@ -162,8 +162,7 @@ TEST_CASE("session CURVE MAP: REJECT goes back to the patch choice; MAP CURVE ne
     CHECK(d.session.mappings().size() == 1);
 }
 
-TEST_CASE(
-    "session SURF_REDN: by count and by tolerance, U, W, U & W, error map; the original stays in MODELS") {
+TEST_CASE("SURF_REDN menu: by count and by tolerance, U, W, U & W, error map, the original kept in MODELS") {
     Driver d("reduction");
     loadTransportInFourViews(d);
     const glm::dvec3 top = surfacePoint(d.session, "fuselage", 0.5, 0.5);
@@ -221,7 +220,7 @@ TEST_CASE(
               "247 -> 10 x 19 = 190") != std::string::npos);
 }
 
-TEST_CASE("session MODELS: list, next, previous, rename, delete") {
+TEST_CASE("MODELS menu: list, next, previous, rename, delete") {
     Driver d("models");
     d.run({"choice MODELS", "choice LIST"});
     CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
@@ -249,8 +248,7 @@ TEST_CASE("session MODELS: list, next, previous, rename, delete") {
     CHECK(d.session.workstation().display().items.size() > 376);
 }
 
-TEST_CASE(
-    "session FILE: save and read back a model, archive and retrieve its structures, read a curve file") {
+TEST_CASE("FILE menu: save and read back a model, archive and retrieve its structures, read a curve file") {
     Driver d("file");
     const auto out = session_test::outputDirectory("file");
     std::filesystem::remove_all(out);
