@@ -103,7 +103,7 @@ void Session::setupWorkstation() {
     sun.direction = glm::normalize(glm::dvec3(0.4, 0.6, -1.0));
     ws.setLightSourceRepresentation(2, sun);
     Light ambient;
-    ambient.colour = glm::vec3(0.45f);
+    ambient.colour = glm::vec3(0.8f);
     ws.setLightSourceRepresentation(1, ambient);
     ws.setColourRepresentation(0, {0.02, 0.03, 0.08});
 
