@@ -1136,10 +1136,18 @@ std::string Session::summary() const {
         out << "model " << m.name << (i == models_.currentIndex() ? " (current)" : "") << ": "
             << m.components.size() << " components, " << m.patchCount() << " patches\n";
     }
-    if (lastPick_ && !models_.empty()) {
-        out << "last pick: component " << lastPick_->component << " patch " << lastPick_->patch;
+    static const std::vector<Component> none;
+    const std::vector<Component>& components = models_.empty() ? none : models_.current().components;
+    if (lastPick_ && std::size_t(lastPick_->component) < components.size()) {
+        out << "last pick: " << components[std::size_t(lastPick_->component)].name << " patch "
+            << lastPick_->patch;
         if (lastPickDetail_) out << " at u " << lastPickDetail_->uv.x << " w " << lastPickDetail_->uv.y;
         out << "\n";
+    }
+    if (reference_ && std::size_t(reference_->component) < components.size()) {
+        const Component& c = components[std::size_t(reference_->component)];
+        out << "reference point: " << c.name << " patch " << reference_->patch << " u " << reference_->u
+            << " w " << reference_->w << "\n";
     }
     for (std::size_t i = 0; i < mappings_.size(); ++i) {
         const MappingRecord& m = mappings_[i];
