@@ -130,6 +130,7 @@ int main(int argc, char** argv) {
                    glm::scale(glm::dmat4(1.0), glm::dvec3(0.09, 0.09, 0.04));
     list.views.push_back(view);
     list.viewportMax = glm::dvec3(1000, 1000, 1);
+    list.displaySize = {1000.0, 1000.0};
     std::vector<std::vector<geom::BezierSurfacePiece>> pieces;
     std::size_t patchCount = 0;
     for (int k = 0; k < 10; ++k) {

@@ -3,12 +3,12 @@
 // per topology and no toolkit around it; and the frame after editing one structure (one mesh).
 // Usage: bench_render [--triangles N] [--width W] [--height H] [--frames F]. Ends with one JSON object.
 #include "phigs/render/ItemGeometry.h"
-#include "phigs/render/WorkstationMapping.h"
 #include "phigs/traverse/DrawList.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/GpuBuffer.h"
 #include "phigs/vk/OffscreenTarget.h"
 #include "phigs/vk/Renderer.h"
+#include "phigs/ws/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
 #include <glm/geometric.hpp>
@@ -385,7 +385,7 @@ int main(int argc, char** argv) {
         // Toolkit and baseline frames alternate, so the load of other processes hits both alike.
         Baseline base(context, target);
         base.upload(meshes);
-        const render::WorkstationMapping mapping(list, width, height);
+        const WorkstationMapping mapping(list, width, height);
         const glm::mat4 worldToClip(mapping.npcToClip);
         base.draw(worldToClip, extent);
         std::vector<double> toolkit, baseline;

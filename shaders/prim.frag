@@ -1,5 +1,5 @@
 #version 450
-// The one fragment shader: NPC z clipping, hatch and line patterns, flat / Gouraud / Phong
+// The one fragment shader: NPC z and model clipping, hatch and line patterns, flat / Gouraud / Phong
 // lighting with distinct back faces, depth cueing and highlighting.
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
@@ -14,7 +14,7 @@ layout(location = 6) in vec3 vLitBack;
 
 layout(location = 0) out vec4 outColour;
 
-// False for pipelines whose draws never discard (no hatch, pattern or z clip): the compiler then
+// False for pipelines whose draws never discard (no hatch, pattern, z or model clip): the compiler then
 // drops every discard and the depth test can run before shading.
 layout(constant_id = 0) const bool MAY_DISCARD = true;
 // The shading this pipeline does per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
@@ -64,6 +64,11 @@ void main() {
         if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
         if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
         if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, vPattern)) discard;
+        // Model clipping volume: the intersection of half spaces in world coordinates.
+        int firstPlane = int(DRAW.misc.y);
+        int planeEnd = firstPlane + int(DRAW.misc.z);
+        for (int i = firstPlane; i < planeEnd; ++i)
+            if (dot(frame.clipPlanes[i].xyz, vWorld) + frame.clipPlanes[i].w < 0.0) discard;
     }
 
     bool back = !gl_FrontFacing && (flags & FLAG_TRIANGLES) != 0;

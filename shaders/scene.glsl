@@ -18,6 +18,7 @@ const int MAX_VIEWS = 16;
 const int MAX_LIGHTS = 64;
 const int MAX_LIGHT_SETS = 16;
 const int MAX_CUES = 16;
+const int MAX_CLIP_PLANES = 64;
 
 struct View {
     mat4 worldToClip;
@@ -45,6 +46,7 @@ layout(std140, set = 0, binding = 0) uniform Frame {
     DepthCue cues[MAX_CUES];
     vec4 pixelScale;  // 2 / width, -2 / height (pixels to clip), pixels per NPC unit, unused
     vec4 highlight;   // rgb, mix factor
+    vec4 clipPlanes[MAX_CLIP_PLANES];  // model clipping: keep world x where dot(xyz, x) + w >= 0
 } frame;
 
 struct DrawParams {
@@ -58,7 +60,7 @@ struct DrawParams {
     vec4 backSpecularColour;
     ivec4 indices;         // view, light set, depth cue, flags
     ivec4 style;           // role, hatch index, line type, shading
-    vec4 misc;             // line width
+    vec4 misc;             // line width, first model clip plane, model clip plane count
 };
 
 layout(std430, set = 0, binding = 1) readonly buffer Draws {

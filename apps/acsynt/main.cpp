@@ -1,12 +1,12 @@
 // acsynt: the ACSYNT-like design program. Replays a session script headless (pictures through
 // the Vulkan offscreen workstation) or runs interactively in a GLFW window; either way the
 // session can be recorded as a script.
-#include "acsynt/session/OffscreenPictures.h"
 #include "acsynt/session/Session.h"
 #include "phigs/input/ScriptInputSource.h"
+#include "phigs/vk/Context.h"
+#include "phigs/vk/WorkstationDisplay.h"
 
 #ifdef ACSYNT_HAVE_WINDOW
-#include "phigs/vk/Context.h"
 #include "phigs/vk/WindowWorkstation.h"
 #include "phigs/window/GlfwInputSource.h"
 #endif
@@ -35,7 +35,7 @@ void usage(std::ostream& out) {
            "  --output DIR   where pictures, summary.txt, acsynt.log and saved files go (default out)\n"
            "  --record FILE  write the session as a script that replays it\n"
            "  --window       interactive session in a GLFW window\n"
-           "  --size WxH     screen size in pixels (at most 1024x768, default 1024x768)\n";
+           "  --size WxH     screen size in pixels, 4:3 like the display surface (default 1024x768)\n";
 }
 
 std::optional<Options> parse(int argc, char** argv) {
@@ -110,32 +110,36 @@ int main(int argc, char** argv) {
     try {
         if (!options->window) {
             auto script = phigs::ScriptInputSource::fromFile(options->script, acsynt::Session::directives());
-            acsynt::OffscreenPictures pictures(settings.width, settings.height);
-            acsynt::Session session(settings, script,
-                                    [&](const phigs::DrawList& list, const std::filesystem::path& file) {
-                                        pictures.writePng(list, file);
-                                    });
+            acsynt::Session session(settings, script);
+            phigs::vk::ContextSettings defaults;
+            defaults.validation = false;
+            phigs::vk::DisplaySettings surface;
+            surface.width = std::uint32_t(settings.width);
+            surface.height = std::uint32_t(settings.height);
+            phigs::vk::WorkstationDisplay display(
+                session.workstation(), phigs::vk::ContextSettings::fromEnvironment(defaults), surface);
+            session.setSnapshot([&](const std::filesystem::path& file) {
+                display.update();
+                phigs::writePng(display.image(), file);
+            });
             session.run();
             finish(session, *options);
             return 0;
         }
 #ifdef ACSYNT_HAVE_WINDOW
+        settings.workstationType = phigs::WorkstationType::Window;
         phigs::vk::Context context(phigs::vk::WindowWorkstation::contextSettings());
         phigs::vk::WindowWorkstation window(context, std::uint32_t(settings.width),
                                             std::uint32_t(settings.height), "ACSYNT B-SPLINE MODULE");
         phigs::GlfwInputSource source(window.window());
-        acsynt::Session session(
-            settings, source, [&](const phigs::DrawList& list, const std::filesystem::path& file) {
-                phigs::Image image;
-                window.draw(acsynt::OffscreenPictures::forRenderer(list, settings.width, settings.height),
-                            &image);
-                phigs::writePng(image, file);
-            });
-        session.setPresenter([&](const phigs::DrawList& list) {
-            window.draw(acsynt::OffscreenPictures::forRenderer(list, settings.width, settings.height));
+        acsynt::Session session(settings, source);
+        session.setSnapshot([&](const std::filesystem::path& file) {
+            phigs::Image image;
+            window.draw(session.picture(), &image);
+            phigs::writePng(image, file);
         });
-        window.draw(
-            acsynt::OffscreenPictures::forRenderer(session.picture(), settings.width, settings.height));
+        session.setPresenter([&](const phigs::DrawList& list) { window.draw(list); });
+        window.draw(session.picture());
         while (!window.shouldClose() && session.step(std::chrono::milliseconds(30))) {
         }
         finish(session, *options);

@@ -5,6 +5,9 @@
 
 #include "phigs/traverse/DrawList.h"
 
+#include <cmath>
+#include <memory>
+
 #include <utility>
 #include <vector>
 
@@ -17,6 +20,7 @@ inline DrawList unitList() {
     list.windowMax = glm::dvec3(1.0);
     list.viewportMin = glm::dvec3(0.0);
     list.viewportMax = glm::dvec3(100.0, 100.0, 1.0);
+    list.displaySize = {100.0, 100.0};
     return list;
 }
 
@@ -39,6 +43,30 @@ inline DrawFillArea square(double lo, double hi, double z, InteriorStyle style =
     f.contours = {{{lo, lo, z}, {hi, lo, z}, {hi, hi, z}, {lo, hi, z}}};
     f.interior.style = style;
     return f;
+}
+
+/// A rational circular cylinder of radius r about the y axis, for y in [-1, 1]: four quadratic
+/// pieces in u starting at +x and turning toward +z, one linear piece in v.
+inline std::shared_ptr<const geom::Surface> cylinder(double r) {
+    const double s = std::sqrt(0.5);
+    const glm::dvec2 circle[9] = {{1, 0},   {1, 1},  {0, 1},  {-1, 1}, {-1, 0},
+                                  {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    std::vector<glm::dvec3> points;
+    std::vector<double> weights;
+    for (int i = 0; i < 9; ++i)
+        for (double y : {-1.0, 1.0}) {
+            points.emplace_back(r * circle[i].x, y, r * circle[i].y);
+            weights.push_back(i % 2 ? s : 1.0);
+        }
+    return std::make_shared<const geom::Surface>(
+        2, 1, std::vector<double>{0, 0, 0, .25, .25, .5, .5, .75, .75, 1, 1, 1},
+        std::vector<double>{0, 0, 1, 1}, 9, 2, points, weights);
+}
+
+inline DrawItem surfaceItem(std::shared_ptr<const geom::Surface> surface, std::vector<DrawPathLevel> path) {
+    DrawMesh m;
+    m.surface = std::move(surface);
+    return item(m, std::move(path));
 }
 
 }  // namespace phigs::test

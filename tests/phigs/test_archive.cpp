@@ -98,7 +98,7 @@ TEST_CASE("encoding is exact: reals and strings survive bit for bit", "[archive]
     CHECK(ArchiveFile::decode(text, "memory", nullptr) == contents);
 }
 
-TEST_CASE("a truncated archive is refused naming the file and line; the store is unchanged",
+TEST_CASE("a truncated archive is refused naming the file and line, the store unchanged",
           "[archive][errors]") {
     std::mt19937 rng(11);
     auto path = outputFile("truncated.phar");
@@ -223,6 +223,7 @@ TEST_CASE("archive networks, delete from archive, conflicts in a network", "[arc
     store.openStructure(4);
     store.closeStructure();
     phigs.openArchiveFile(5, path);
+    CHECK(phigs.openArchiveIds() == std::vector<int>{5});
     phigs.archiveStructureNetworks(5, {2});
     CHECK(phigs.archiveContents(5) == std::vector<int>{2, 3});
     phigs.archiveStructures(5, {4, 42});  // 42 does not exist: warning 200

@@ -1,6 +1,6 @@
 #include "InputFakes.h"
 
-#include "phigs/input/InputError.h"
+#include "phigs/core/Error.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/input/WorkstationInput.h"
 
@@ -17,7 +17,7 @@ namespace {
 int errorNumber(const std::function<void()>& f) {
     try {
         f();
-    } catch (const InputError& e) {
+    } catch (const Error& e) {
         return e.number();
     }
     return 0;
@@ -210,7 +210,7 @@ TEST_CASE("input devices: one trigger gives simultaneous pick and locator events
 TEST_CASE("input devices: a full queue overflows, loses the trigger's events and says which", "[input]") {
     Rig r("choice 1\nchoice 2\npick 3 4\nchoice 3\n", 3);
     std::vector<int> warnings;
-    r.queue.setWarningSink([&](const InputError& e) { warnings.push_back(e.number()); });
+    r.queue.setWarningSink([&](const Error& e) { warnings.push_back(e.number()); });
     r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);
     r.input.setMode(InputClass::Pick, 1, OperatingMode::Event);
     r.input.setMode(InputClass::Locator, 1, OperatingMode::Event);

@@ -1,6 +1,5 @@
 #include "PickScenes.h"
 
-#include "phigs/input/InputError.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/input/WorkstationInput.h"
 #include "phigs/pick/DrawListMeasurer.h"
@@ -31,7 +30,7 @@ DrawList twoViews() {
 }  // namespace
 
 TEST_CASE("input locator: positions go back through the workstation and view transformations", "[input]") {
-    const DrawList list = twoViews();
+    DrawList list = twoViews();
     DrawListMeasurer m(list);
     // Pixel (20, 70) on a 100 pixel viewport, y down: NPC (0.2, 0.3).
     const auto npc = m.toNpc({20, 70});
@@ -45,7 +44,7 @@ TEST_CASE("input locator: positions go back through the workstation and view tra
     CHECK(a.position.y == Approx(0.3));
 
     // Raise view 1 above view 0: points in its clip limits now map through it.
-    m.viewPriority().set(1, 0, true);
+    list.viewInputPriority = {1, 0};
     a = m.locate({20, 70});
     CHECK(a.viewIndex == 1);
     CHECK(a.position.x == Approx((0.2 - 0.25) * 10.0));
@@ -60,20 +59,8 @@ TEST_CASE("input locator: positions go back through the workstation and view tra
     CHECK(m.locate({20, 70}).position.z == Approx(5.0));
 
     // Lower it again.
-    m.viewPriority().set(1, 0, false);
+    list.viewInputPriority = {0, 1};
     CHECK(m.locate({20, 70}).viewIndex == 0);
-}
-
-TEST_CASE("input locator: the view input priority list moves views above and below others", "[input]") {
-    ViewInputPriority p;
-    CHECK(p.order(3) == std::vector<int>{0, 1, 2});
-    p.set(2, 0, true);
-    CHECK(p.order(3) == std::vector<int>{2, 0, 1});
-    p.set(0, 1, false);
-    CHECK(p.order(3) == std::vector<int>{2, 1, 0});
-    CHECK(p.order(2) == std::vector<int>{1, 0});
-    CHECK(p.order(4) == std::vector<int>{2, 1, 0, 3});
-    CHECK_THROWS_AS(p.set(-1, 0, true), InputError);
 }
 
 TEST_CASE("input locator: the workstation window maps onto the viewport with one scale", "[input]") {
@@ -81,19 +68,23 @@ TEST_CASE("input locator: the workstation window maps onto the viewport with one
     list.windowMin = {0.0, 0.0, 0.0};
     list.windowMax = {0.5, 1.0, 1.0};  // half as wide as high on a square viewport
     list.viewportMax = {200.0, 100.0, 1.0};
+    list.displaySize = {200.0, 100.0};
     DrawListMeasurer m(list);
     // Scale is min(200/0.5, 100/1) = 100 pixels per NPC unit.
     const auto npc = m.toNpc({50, 75});
     CHECK(npc.x == Approx(0.5));
     CHECK(npc.y == Approx(0.25));
-    m.setDisplayHeight(300);
-    CHECK(m.toNpc({50, 275}).y == Approx(0.25));
+    // The same display on a surface of 400 x 300 pixels: 2 pixels per device unit, the
+    // display's 200 x 100 at the bottom left.
+    m.setSurfaceSize(400, 300);
+    CHECK(m.toNpc({100, 250}).x == Approx(0.5));
+    CHECK(m.toNpc({100, 250}).y == Approx(0.25));
 }
 
 TEST_CASE("input locator: a stroke uses the one view that holds all its points", "[input]") {
-    const DrawList list = twoViews();
+    DrawList list = twoViews();
+    list.viewInputPriority = {1, 0};
     DrawListMeasurer m(list);
-    m.viewPriority().set(1, 0, true);
     StrokeMeasure s = m.stroke({{10, 90}, {40, 90}});
     CHECK(s.viewIndex == 1);
     REQUIRE(s.points.size() == 2);

@@ -11,7 +11,9 @@
 #include <random>
 
 using namespace phigs;
+using phigs::test::cylinder;
 using phigs::test::item;
+using phigs::test::surfaceItem;
 using phigs::test::unitList;
 
 namespace {
@@ -50,30 +52,6 @@ std::shared_ptr<const geom::Surface> heightField() {
                 gu[i], gv[j],
                 0.5 + 0.3 * std::sin(3.0 * static_cast<double>(i) + 2.0 * static_cast<double>(j)));
     return std::make_shared<const geom::Surface>(3, 3, ku, kv, nu, nv, points);
-}
-
-/// A rational circular cylinder of radius r about the y axis, for y in [-1, 1]: four quadratic
-/// pieces in u starting at +x and turning toward +z, one linear piece in v.
-std::shared_ptr<const geom::Surface> cylinder(double r) {
-    const double s = std::sqrt(0.5);
-    const glm::dvec2 circle[9] = {{1, 0},   {1, 1},  {0, 1},  {-1, 1}, {-1, 0},
-                                  {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
-    std::vector<glm::dvec3> points;
-    std::vector<double> weights;
-    for (int i = 0; i < 9; ++i)
-        for (double y : {-1.0, 1.0}) {
-            points.emplace_back(r * circle[i].x, y, r * circle[i].y);
-            weights.push_back(i % 2 ? s : 1.0);
-        }
-    return std::make_shared<const geom::Surface>(
-        2, 1, std::vector<double>{0, 0, 0, .25, .25, .5, .5, .75, .75, 1, 1, 1},
-        std::vector<double>{0, 0, 1, 1}, 9, 2, points, weights);
-}
-
-DrawItem surfaceItem(std::shared_ptr<const geom::Surface> surface, std::vector<DrawPathLevel> path) {
-    DrawMesh m;
-    m.surface = std::move(surface);
-    return item(m, std::move(path));
 }
 
 }  // namespace

@@ -185,7 +185,7 @@ TEST_CASE("copy all elements from structure", "[store]") {
     CHECK(errorOf([&] { store.copyAllElementsFromStructure(9); }) == errors::StructureDoesNotExist);
 }
 
-TEST_CASE("delete structure removes references and unposts; the open structure is emptied", "[store]") {
+TEST_CASE("delete structure removes references and unposts, empties the open structure", "[store]") {
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();

@@ -207,6 +207,10 @@ TEST_CASE("workstation types and their descriptions", "[ws]") {
           WorkstationCategory::OutIn);
     CHECK(phigs.openWorkstation(3, WorkstationType::Hardcopy).description().name == "hardcopy");
     CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 2, 3});
+    phigs.workstation(1).postStructure(5, 0.5);
+    phigs.workstation(3).postStructure(5, 0.1);
+    CHECK(phigs.workstationsPostedTo(5) == std::vector<int>{1, 3});
+    CHECK(errorOf([&] { phigs.workstationsPostedTo(6); }) == errors::StructureDoesNotExist);
     phigs.closeWorkstation(2);
     CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 3});
     CHECK(errorOf([&] { phigs.closeWorkstation(2); }) == errors::WorkstationNotOpen);

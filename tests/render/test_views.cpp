@@ -2,9 +2,9 @@
 // window/viewport mapping, and the PNG hardcopy workstation.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/render/WorkstationMapping.h"
 #include "phigs/vk/HardcopyWorkstation.h"
 #include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/ws/WorkstationMapping.h"
 
 #include <glm/geometric.hpp>
 
@@ -116,16 +116,16 @@ TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically"
     list.windowMax = {0.5, 0.5, 1.0};
     {
         // GPU-free: the workstation transform itself.
-        const render::WorkstationMapping square(list, 256, 256);
+        const WorkstationMapping square(list, 256, 256);
         CHECK(square.pixelsPerNpc == Approx(512.0));
         const glm::dvec2 centre = square.toPixels({0.25, 0.25, 0.0});
         CHECK(centre.x == Approx(128.0));
         CHECK(centre.y == Approx(128.0));
         // A wide target: device coordinates span its shorter side; the window keeps its aspect.
-        const render::WorkstationMapping wide(list, 400, 200);
+        const WorkstationMapping wide(list, 400, 200);
         CHECK(wide.pixelsPerNpc == Approx(400.0));
         CHECK(wide.toPixels({0.5, 0.5, 0}).x == Approx(200.0));
-        const render::PixelRect rect = wide.scissor({-1, -1}, {2, 2});
+        const PixelRect rect = wide.scissor({-1, -1}, {2, 2});
         CHECK(rect.width == 200);
         CHECK(rect.height == 200);
     }

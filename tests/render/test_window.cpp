@@ -2,64 +2,16 @@
 // image back, compare with the offscreen picture of the same list, resize, close. The test starts
 // its own Xvfb, so it needs no display set up beforehand.
 #include "RenderTestSupport.h"
+#include "VirtualDisplay.h"
 #include "phigs/vk/OffscreenWorkstation.h"
 #include "phigs/vk/WindowWorkstation.h"
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <cstdlib>
-#include <string>
-
-extern char** environ;
 
 using namespace phigs;
 using namespace render_test;
 
 namespace {
-
-/// An Xvfb server on a free display number for the lifetime of the object.
-class VirtualDisplay {
-public:
-    VirtualDisplay() {
-        int fds[2];
-        REQUIRE(pipe(fds) == 0);
-        const std::string fd = std::to_string(fds[1]);
-        const char* argv[] = {"Xvfb",       "-displayfd", fd.c_str(), "-screen", "0",
-                              "640x480x24", "-nolisten",  "tcp",      nullptr};
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addclose(&actions, fds[0]);
-        const int rc =
-            posix_spawnp(&pid_, "Xvfb", &actions, nullptr, const_cast<char* const*>(argv), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        close(fds[1]);
-        REQUIRE(rc == 0);  // install the Debian package 'xvfb'
-        std::string number;
-        char c;
-        while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
-        close(fds[0]);
-        REQUIRE(!number.empty());
-        previous_ = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
-        setenv("DISPLAY", (":" + number).c_str(), 1);
-    }
-    ~VirtualDisplay() {
-        if (previous_.empty())
-            unsetenv("DISPLAY");
-        else
-            setenv("DISPLAY", previous_.c_str(), 1);
-        if (pid_ > 0) {
-            kill(pid_, SIGTERM);
-            waitpid(pid_, nullptr, 0);
-        }
-    }
-
-private:
-    pid_t pid_ = -1;
-    std::string previous_;
-};
 
 DrawList knownScene() {
     DrawList list = emptyScene();

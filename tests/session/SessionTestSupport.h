@@ -1,12 +1,14 @@
 #pragma once
-// Support for the session tests: a session on a small screen (320 x 256) driven line by line
-// (so a test can compute where to pick from the views it set up), one shared offscreen
-// renderer, and comparison with reference images in tests/data/session.
+// Support for the session tests: a session on a small screen (320 x 240, the display surface's
+// 4:3) driven line by line (so a test can compute where to pick from the views it set up), its
+// pictures through vk::WorkstationDisplay on one shared lavapipe context, and comparison with
+// reference images in tests/data/session.
 
 #include "../render/RenderTestSupport.h"
-#include "acsynt/session/OffscreenPictures.h"
 #include "acsynt/session/Session.h"
 #include "phigs/input/ScriptInputSource.h"
+#include "phigs/vk/Context.h"
+#include "phigs/vk/WorkstationDisplay.h"
 
 #include <catch2/catch.hpp>
 
@@ -17,12 +19,20 @@
 
 namespace session_test {
 
-constexpr int width = 320, height = 256;
+constexpr int width = 320, height = 240;
 
-/// The one offscreen renderer of the test program (a Vulkan context per test would cost more).
-inline acsynt::OffscreenPictures& pictures() {
-    static acsynt::OffscreenPictures shared(width, height);
+/// The one Vulkan context of the test program (lavapipe, validation on).
+inline phigs::vk::Context& context() {
+    static phigs::vk::Context shared(render_test::lavapipeWithValidation());
     return shared;
+}
+
+/// Shows a session's workstation offscreen on the small screen.
+inline std::unique_ptr<phigs::vk::WorkstationDisplay> displayOf(acsynt::Session& session) {
+    phigs::vk::DisplaySettings surface;
+    surface.width = width;
+    surface.height = height;
+    return std::make_unique<phigs::vk::WorkstationDisplay>(session.workstation(), context(), surface);
 }
 
 /// An input source fed one script line at a time; it never runs dry (the test decides the end).
@@ -52,10 +62,9 @@ inline std::filesystem::path outputDirectory(const std::string& name) {
 
 /// A session on the small screen whose snapshots go to the output directory `name`.
 struct Driver {
-    explicit Driver(const std::string& name)
-        : session(settings(name), source, [](const phigs::DrawList& list, const std::filesystem::path& file) {
-              pictures().writePng(list, file);
-          }) {}
+    explicit Driver(const std::string& name) : session(settings(name), source), display(displayOf(session)) {
+        session.setSnapshot([this](const std::filesystem::path& file) { phigs::writePng(picture(), file); });
+    }
 
     static acsynt::SessionSettings settings(const std::string& name) {
         acsynt::SessionSettings s;
@@ -79,7 +88,11 @@ struct Driver {
         const glm::dvec2 p = session.pixelOf(world, view);
         run({"pick " + std::to_string(p.x) + " " + std::to_string(p.y)});
     }
-    phigs::Image picture() { return pictures().draw(session.picture()); }
+    phigs::Image picture() {
+        display->update();
+        render_test::requireNoValidationMessages(context());
+        return display->image();
+    }
     bool logHasError() const {
         for (const auto& line : session.log())
             if (line.rfind("ERROR: ", 0) == 0) return true;
@@ -88,6 +101,7 @@ struct Driver {
 
     LineSource source;
     acsynt::Session session;
+    std::unique_ptr<phigs::vk::WorkstationDisplay> display;
 };
 
 /// Compares with tests/data/session/<name>.png (PHIGS_UPDATE_REFERENCES=1 rewrites it).

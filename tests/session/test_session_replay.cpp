@@ -33,11 +33,12 @@ TEST_CASE("the shipped demo session replays headless: logo and circle mapped, fu
                                                      acsynt::Session::directives());
     acsynt::SessionSettings settings;  // the demo's own 1024 x 768 screen: its picks are in those pixels
     settings.outputDirectory = out;
-    acsynt::OffscreenPictures pictures(settings.width, settings.height);
-    acsynt::Session session(settings, script,
-                            [&](const phigs::DrawList& list, const std::filesystem::path& file) {
-                                pictures.writePng(list, file);
-                            });
+    acsynt::Session session(settings, script);
+    phigs::vk::WorkstationDisplay display(session.workstation(), session_test::context());
+    session.setSnapshot([&](const std::filesystem::path& file) {
+        display.update();
+        phigs::writePng(display.image(), file);
+    });
     session.run();
     CHECK(session.finished());
     for (const auto& line : session.log()) {

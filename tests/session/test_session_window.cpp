@@ -74,7 +74,7 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
     acsynt::Session session(session_test::Driver::settings("window"), source);
     int frames = 0;
     session.setPresenter([&](const phigs::DrawList& list) {
-        window.draw(acsynt::OffscreenPictures::forRenderer(list, session_test::width, session_test::height));
+        window.draw(list);
         ++frames;
     });
     const acsynt::ScreenLayout& layout = session.layout();
@@ -91,7 +91,7 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
         const auto& items = session.menuItems();
         const auto it = std::find(items.begin(), items.end(), item);
         REQUIRE(it != items.end());
-        const phigs::ChoicePanel panel{1, layout.menu.echoVolume(), items};
+        const phigs::ChoicePanel panel{1, layout.menuFor(items.size()).echoVolume(), items};
         const auto [a, b] = panel.row(int(it - items.begin()) + 1);
         click((a + b) / 2.0);
     };

@@ -34,6 +34,7 @@ DrawList squareScene() {
     DrawList list;
     list.views.push_back(DrawView{});
     list.viewportMax = {100.0, 100.0, 1.0};
+    list.displaySize = {100.0, 100.0};
     DrawFillArea f;
     f.contours = {{{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}};
     f.interior.style = InteriorStyle::Solid;

@@ -32,6 +32,7 @@ TEST_CASE("window: real X pointer and button events reach the pick device", "[wi
     DrawList list;
     list.views.push_back(DrawView{});
     list.viewportMax = {100.0, 100.0, 1.0};
+    list.displaySize = {100.0, 100.0};
     DrawPolymarker marker;
     marker.points = {{0.25, 0.75, 0.5}};  // pixel (25, 25)
     DrawItem item;

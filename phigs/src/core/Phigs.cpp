@@ -59,6 +59,23 @@ std::vector<int> Phigs::openWorkstationIds() const {
     return ids;
 }
 
+std::vector<int> Phigs::workstationsPostedTo(int structureId) {
+    const char* function = "INQUIRE SET OF WORKSTATIONS TO WHICH POSTED";
+    requireOpen(function);
+    if (!store_.exists(structureId))
+        raise(&log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(structureId));
+    std::vector<int> ids;
+    for (const auto& [id, ws] : workstations_)
+        if (ws->isPosted(structureId)) ids.push_back(id);
+    return ids;
+}
+
+std::vector<int> Phigs::openArchiveIds() const {
+    std::vector<int> ids;
+    for (const auto& [id, file] : archives_) ids.push_back(id);
+    return ids;
+}
+
 void Phigs::openArchiveFile(int archiveId, const std::filesystem::path& path) {
     const char* function = "OPEN ARCHIVE FILE";
     requireOpen(function);

@@ -18,10 +18,10 @@ void InputQueue::enqueue(std::vector<EventReport> reports) {
         const EventReport& first = reports.front();
         if (!overflow_) overflow_ = QueueOverflow{first.workstation, first.inputClass, first.device};
         if (warningSink_)
-            warningSink_(InputError(256, "AWAIT EVENT",
-                                    std::string("input queue overflowed; the ") + nameOf(first.inputClass) +
-                                        " " + std::to_string(first.device) + " event of workstation " +
-                                        std::to_string(first.workstation) + " was lost"));
+            warningSink_(Error(errors::InputQueueOverflowed, "AWAIT EVENT",
+                               std::string("input queue overflowed; the ") + nameOf(first.inputClass) + " " +
+                                   std::to_string(first.device) + " event of workstation " +
+                                   std::to_string(first.workstation) + " was lost"));
         return;
     }
     const std::uint64_t trigger = nextTrigger_++;
@@ -67,11 +67,12 @@ bool InputQueue::moreSimultaneousEvents() const {
 
 const Measure& InputQueue::currentMeasure(InputClass inputClass, const char* function) const {
     if (!current_)
-        throw InputError(259, function, "there is no current event report (AWAIT EVENT returned NONE)");
+        throw Error(errors::InputClassMismatch, function,
+                    "there is no current event report (AWAIT EVENT returned NONE)");
     if (current_->inputClass != inputClass)
-        throw InputError(259, function,
-                         std::string("the current event report is of class ") + nameOf(current_->inputClass) +
-                             ", not " + nameOf(inputClass));
+        throw Error(errors::InputClassMismatch, function,
+                    std::string("the current event report is of class ") + nameOf(current_->inputClass) +
+                        ", not " + nameOf(inputClass));
     return current_->measure;
 }
 
@@ -88,8 +89,8 @@ void InputQueue::flushWorkstation(int workstation) {
 
 QueueOverflow InputQueue::inquireOverflow() {
     if (!overflow_)
-        throw InputError(257, "INQUIRE INPUT QUEUE OVERFLOW",
-                         "the input queue has not overflowed since the last inquiry");
+        throw Error(errors::InputQueueNotOverflowed, "INQUIRE INPUT QUEUE OVERFLOW",
+                    "the input queue has not overflowed since the last inquiry");
     const QueueOverflow o = *overflow_;
     overflow_.reset();
     return o;

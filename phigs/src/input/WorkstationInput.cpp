@@ -1,6 +1,6 @@
 #include "phigs/input/WorkstationInput.h"
 
-#include "phigs/input/InputError.h"
+#include "phigs/core/Error.h"
 #include "phigs/input/ScriptInputSource.h"
 
 #include <algorithm>
@@ -77,10 +77,10 @@ WorkstationInput::~WorkstationInput() {
 InputDevice& WorkstationInput::lookup(InputClass inputClass, int device, const char* function) {
     const auto it = devices_.find({inputClass, device});
     if (it == devices_.end())
-        throw InputError(250, function,
-                         deviceName(inputClass, device) + " is not available on workstation " +
-                             std::to_string(workstation_) + " (it has " +
-                             std::to_string(counts_.of(inputClass)) + ")");
+        throw Error(errors::DeviceNotAvailable, function,
+                    deviceName(inputClass, device) + " is not available on workstation " +
+                        std::to_string(workstation_) + " (it has " + std::to_string(counts_.of(inputClass)) +
+                        ")");
     return it->second;
 }
 
@@ -92,10 +92,11 @@ void WorkstationInput::initialise(InputClass inputClass, int device, DeviceIniti
     const char* function = "INITIALIZE DEVICE";
     InputDevice& d = lookup(inputClass, device, function);
     if (d.mode != OperatingMode::Request)
-        throw InputError(251, function, deviceName(inputClass, device) + " must be in REQUEST mode");
+        throw Error(errors::NotRequestMode, function,
+                    deviceName(inputClass, device) + " must be in REQUEST mode");
     std::string reason;
     if (const int number = validateInitialisation(inputClass, setup, reason))
-        throw InputError(number, function, deviceName(inputClass, device) + ": " + reason);
+        throw Error(number, function, deviceName(inputClass, device) + ": " + reason);
     d.setup = std::move(setup);
     d.current = d.setup.initial;
     if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator)
@@ -115,6 +116,29 @@ EchoLayout WorkstationInput::echoLayout() const {
     return layout;
 }
 
+InputAction WorkstationInput::throughEcho(const InputAction& a) const {
+    glm::dvec2 at;
+    if (const auto* pick = std::get_if<action::Pick>(&a.what))
+        at = pick->position;
+    else if (const auto* locate = std::get_if<action::Locate>(&a.what))
+        at = locate->position;
+    else
+        return a;
+    const EchoLayout layout = echoLayout();
+    InputAction routed = a;
+    for (const ChoicePanel& p : layout.panels)
+        if (const auto n = p.choiceAt(at)) {
+            routed.what = action::Choice{*n, p.device, {}};
+            return routed;
+        }
+    for (const ValuatorSlider& s : layout.sliders)
+        if (s.contains(at)) {
+            routed.what = action::Valuator{s.device, s.valueAt(at)};
+            return routed;
+        }
+    return a;
+}
+
 void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo) {
     InputDevice& d = lookup(inputClass, device, "SET DEVICE MODE");
     d.mode = mode;
@@ -131,7 +155,8 @@ void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::s
 }
 
 void WorkstationInput::setPickPathDepth(int device, int depth) {
-    if (depth < 0) throw InputError(207, "SET PICK PATH DEPTH", "the path depth is less than zero");
+    if (depth < 0)
+        throw Error(errors::NegativePathDepth, "SET PICK PATH DEPTH", "the path depth is less than zero");
     lookup(InputClass::Pick, device, "SET PICK PATH DEPTH").pickPathDepth = depth;
 }
 
@@ -142,7 +167,8 @@ const InputDevice& WorkstationInput::device(InputClass inputClass, int device) c
 std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass, int device) {
     const InputDevice& d = lookup(inputClass, device, "REQUEST DEVICE");
     if (d.mode != OperatingMode::Request)
-        throw InputError(251, "REQUEST DEVICE", deviceName(inputClass, device) + " must be in REQUEST mode");
+        throw Error(errors::NotRequestMode, "REQUEST DEVICE",
+                    deviceName(inputClass, device) + " must be in REQUEST mode");
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
     for (;;) {
         const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);
@@ -153,7 +179,8 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
 const Measure& WorkstationInput::sample(InputClass inputClass, int device) const {
     const InputDevice& d = lookup(inputClass, device, "SAMPLE DEVICE");
     if (d.mode != OperatingMode::Sample)
-        throw InputError(252, "SAMPLE DEVICE", deviceName(inputClass, device) + " must be in SAMPLE mode");
+        throw Error(errors::NotSampleMode, "SAMPLE DEVICE",
+                    deviceName(inputClass, device) + " must be in SAMPLE mode");
     return d.current;
 }
 
@@ -262,7 +289,7 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
         return Pumped::Nothing;
     }
 
-    auto measures = measuresFor(*a);
+    auto measures = measuresFor(throughEcho(*a));
     std::vector<EventReport> reports;
     bool satisfied = false;
     bool reached = false;

@@ -1,25 +1,34 @@
 #include "phigs/pick/DrawListMeasurer.h"
 
-#include "phigs/pick/WorkstationMapping.h"
-
 #include <glm/matrix.hpp>
+
+#include <algorithm>
 
 namespace phigs {
 
-DrawListMeasurer::DrawListMeasurer(const DrawList& display) : display_(display) {
+DrawListMeasurer::DrawListMeasurer(const DrawList& display)
+    : display_([&display]() -> const DrawList& { return display; }) {
+}
+
+DrawListMeasurer::DrawListMeasurer(std::function<const DrawList&()> display) : display_(std::move(display)) {
+}
+
+WorkstationMapping DrawListMeasurer::mappingOf(const DrawList& list) const {
+    return surface_ ? WorkstationMapping(list, surface_->first, surface_->second) : WorkstationMapping(list);
 }
 
 glm::dvec3 DrawListMeasurer::toNpc(glm::dvec2 pixels) const {
-    const double height = displayHeight_ >= 0 ? displayHeight_ : display_.viewportMax.y;
-    const WorkstationMapping mapping(display_);
-    glm::dvec3 npc = mapping.toNpc(glm::dvec3(pixels.x, height - pixels.y, display_.viewportMin.z));
-    npc.z = locatorDepth_;
-    return npc;
+    return mapping().pixelsToNpc(pixels, locatorDepth_);
 }
 
-int DrawListMeasurer::viewFor(const std::vector<glm::dvec3>& npc) const {
-    for (int v : priority_.order(display_.views.size())) {
-        const DrawView& view = display_.views[static_cast<std::size_t>(v)];
+int DrawListMeasurer::viewFor(const DrawList& list, const std::vector<glm::dvec3>& npc) const {
+    std::vector<int> order;
+    for (int v : list.viewInputPriority)
+        if (v >= 0 && static_cast<std::size_t>(v) < list.views.size()) order.push_back(v);
+    for (int v = 0; static_cast<std::size_t>(v) < list.views.size(); ++v)
+        if (std::find(order.begin(), order.end(), v) == order.end()) order.push_back(v);
+    for (int v : order) {
+        const DrawView& view = list.views[static_cast<std::size_t>(v)];
         bool all = true;
         for (const glm::dvec3& p : npc)
             all = all && p.x >= view.clipMin.x && p.x <= view.clipMax.x && p.y >= view.clipMin.y &&
@@ -29,33 +38,37 @@ int DrawListMeasurer::viewFor(const std::vector<glm::dvec3>& npc) const {
     return 0;
 }
 
-glm::dvec3 DrawListMeasurer::toWorld(int view, const glm::dvec3& npc) const {
-    if (static_cast<std::size_t>(view) >= display_.views.size()) return npc;  // no views: world = NPC
-    const DrawView& v = display_.views[static_cast<std::size_t>(view)];
+glm::dvec3 DrawListMeasurer::toWorld(const DrawList& list, int view, const glm::dvec3& npc) const {
+    if (static_cast<std::size_t>(view) >= list.views.size()) return npc;  // no views: world = NPC
+    const DrawView& v = list.views[static_cast<std::size_t>(view)];
     const glm::dvec4 h = glm::inverse(v.mapping * v.orientation) * glm::dvec4(npc, 1.0);
     return glm::dvec3(h) / h.w;
 }
 
 LocatorMeasure DrawListMeasurer::locate(glm::dvec2 deviceCoordinates) const {
-    const glm::dvec3 npc = toNpc(deviceCoordinates);
-    const int view = viewFor({npc});
-    return {view, toWorld(view, npc)};
+    const DrawList& list = display();
+    const glm::dvec3 npc = mappingOf(list).pixelsToNpc(deviceCoordinates, locatorDepth_);
+    const int view = viewFor(list, {npc});
+    return {view, toWorld(list, view, npc)};
 }
 
 StrokeMeasure DrawListMeasurer::stroke(const std::vector<glm::dvec2>& deviceCoordinates) const {
+    const DrawList& list = display();
+    const WorkstationMapping mapping = mappingOf(list);
     std::vector<glm::dvec3> npc;
-    for (const glm::dvec2& p : deviceCoordinates) npc.push_back(toNpc(p));
+    for (const glm::dvec2& p : deviceCoordinates) npc.push_back(mapping.pixelsToNpc(p, locatorDepth_));
     StrokeMeasure m;
-    m.viewIndex = viewFor(npc);
-    for (const glm::dvec3& p : npc) m.points.push_back(toWorld(m.viewIndex, p));
+    m.viewIndex = viewFor(list, npc);
+    for (const glm::dvec3& p : npc) m.points.push_back(toWorld(list, m.viewIndex, p));
     return m;
 }
 
 PickMeasure DrawListMeasurer::pick(glm::dvec2 deviceCoordinates, const InputDevice& device) const {
-    const DrawList& list = pickList_ ? pickList_(device) : display_;
-    const glm::dvec3 npc = toNpc(deviceCoordinates);
+    const DrawList& list = pickList_ ? pickList_(device) : display();
+    const WorkstationMapping mapping = mappingOf(list);
+    const glm::dvec3 npc = mapping.pixelsToNpc(deviceCoordinates, locatorDepth_);
     echo_.clear();
-    const auto hit = picker_.nearest(list, glm::dvec2(npc), device.setup.pickAperture);
+    const auto hit = picker_.nearest(list, mapping, glm::dvec2(npc), device.setup.pickAperture);
     PickMeasure m;
     if (!hit) return m;
     m.status = InputStatus::Ok;

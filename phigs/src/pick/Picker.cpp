@@ -27,6 +27,18 @@ Projected project(const glm::dmat4& m, const glm::dvec3& p) {
     return {glm::dvec3(h) / h.w, true};
 }
 
+/// Whether a world point lies inside the item's model clipping volume (every half space).
+bool insideModelClip(const DrawItem& item, const glm::dvec3& world) {
+    for (const glm::dvec4& plane : item.modelClipPlanes)
+        if (glm::dot(glm::dvec3(plane), world) + plane.w < 0.0) return false;
+    return true;
+}
+
+glm::dvec3 toWorld(const DrawItem& item, const glm::dvec3& modelling) {
+    const glm::dvec4 h = item.modelTransform * glm::dvec4(modelling, 1.0);
+    return glm::dvec3(h) / h.w;
+}
+
 /// The aperture: a square of half-size `half` around `centre` in NPC x, y.
 struct Aperture {
     glm::dvec2 centre{0.0};
@@ -255,7 +267,7 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
     const glm::dvec3 direction = glm::dvec3(back) / back.w - origin;
     for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
         const Projected p = project(m, h.point);
-        if (!p.valid || !insideClip(view, p.npc)) continue;
+        if (!p.valid || !insideClip(view, p.npc) || !insideModelClip(item, toWorld(item, h.point))) continue;
         SurfacePickDetail detail{h.point, geom::normal(*surface, h.uv.x, h.uv.y), h.uv, h.piece};
         return PickHit{0, p.npc.z, detail};
     }
@@ -288,8 +300,13 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 // The marker's own size widens the aperture (nominal 7 pixels times the scale).
                 const double grow = mapping.npcLength(3.5 * p.style.scale);
-                for (const Projected& q : projectAll(m, p.points))
-                    if (q.valid && ap.contains(glm::dvec2(q.npc), grow) && (!z || q.npc.z > *z)) z = q.npc.z;
+                // A marker is clipped by its position, as drawn.
+                for (const glm::dvec3& point : p.points) {
+                    const Projected q = project(m, point);
+                    if (q.valid && ap.contains(glm::dvec2(q.npc), grow) && (!z || q.npc.z > *z) &&
+                        insideModelClip(item, toWorld(item, point)))
+                        z = q.npc.z;
+                }
             } else if constexpr (std::is_same_v<T, DrawFillArea>) {
                 std::vector<std::vector<Projected>> contours;
                 for (const auto& c : p.contours) contours.push_back(projectAll(m, c));
@@ -352,6 +369,13 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
         item.primitive);
     if (!hit) return std::nullopt;
     hit->item = index;
+    // Model clipping: the point under the aperture centre at the hit's depth must be kept
+    // (markers and surfaces were tested at their own points above).
+    if (!item.modelClipPlanes.empty() && !hit->surface &&
+        !std::holds_alternative<DrawPolymarker>(item.primitive)) {
+        const glm::dvec4 h = glm::inverse(view.mapping * view.orientation) * glm::dvec4(npc, hit->depth, 1.0);
+        if (h.w == 0.0 || !insideModelClip(item, glm::dvec3(h) / h.w)) return std::nullopt;
+    }
     // Depth clipping: the part under the aperture must lie between the view's z planes.
     if ((view.clipBack && hit->depth < view.clipMin.z - 1e-12) ||
         (view.clipFront && hit->depth > view.clipMax.z + 1e-12))
@@ -360,13 +384,17 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
 }
 
 std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double aperture) const {
+    return hits(list, WorkstationMapping(list), npc, aperture);
+}
+
+std::vector<PickHit> Picker::hits(const DrawList& list, const WorkstationMapping& mapping, glm::dvec2 npc,
+                                  double aperture) const {
     std::vector<PickHit> out;
     // The workstation window clips everything.
     if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
         npc.y > list.windowMax.y)
         return out;
     prune(list);
-    const WorkstationMapping mapping(list);
     for (std::size_t i = 0; i < list.items.size(); ++i)
         if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact)) out.push_back(std::move(*h));
     if (out.empty())
@@ -381,7 +409,12 @@ std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double a
 }
 
 std::optional<PickHit> Picker::nearest(const DrawList& list, glm::dvec2 npc, double aperture) const {
-    auto all = hits(list, npc, aperture);
+    return nearest(list, WorkstationMapping(list), npc, aperture);
+}
+
+std::optional<PickHit> Picker::nearest(const DrawList& list, const WorkstationMapping& mapping,
+                                       glm::dvec2 npc, double aperture) const {
+    auto all = hits(list, mapping, npc, aperture);
     if (all.empty()) return std::nullopt;
     return all.front();
 }

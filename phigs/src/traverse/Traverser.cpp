@@ -780,6 +780,8 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     out.windowMax = tables.windowMax;
     out.viewportMin = tables.viewportMin;
     out.viewportMax = tables.viewportMax;
+    out.displaySize = tables.displaySize;
+    out.viewInputPriority = tables.views.inputPriority();
     out.background = glm::vec3(tables.colours.get(0));
     out.hiddenSurfaceRemoval = tables.hlhsrMode != 0;
     Walk walk(store, tables, filters, cache_, subtrees_.get(), out);

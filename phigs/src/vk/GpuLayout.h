@@ -11,6 +11,7 @@ inline constexpr int kMaxViews = 16;
 inline constexpr int kMaxLights = 64;
 inline constexpr int kMaxLightSets = 16;
 inline constexpr int kMaxCues = 16;
+inline constexpr int kMaxClipPlanes = 64;  ///< model clipping half spaces of all items together
 
 enum Flag : int {
     VertexColours = 1,
@@ -50,6 +51,7 @@ struct Frame {
     DepthCue cues[kMaxCues];
     glm::vec4 pixelScale{0.0f};
     glm::vec4 highlight{0.0f};
+    glm::vec4 clipPlanes[kMaxClipPlanes];  ///< world: keep where dot(xyz, p) + w >= 0
 };
 
 struct DrawParams {
@@ -63,7 +65,7 @@ struct DrawParams {
     glm::vec4 backSpecularColour{0.0f};
     glm::ivec4 indices{0};
     glm::ivec4 style{0};
-    glm::vec4 misc{0.0f};
+    glm::vec4 misc{0.0f};  ///< line width, first model clip plane, clip plane count
 };
 static_assert(sizeof(DrawParams) == 272);
 

@@ -19,15 +19,15 @@ HardcopyWorkstation::~HardcopyWorkstation() {
 
 void HardcopyWorkstation::update(const DrawList& list) {
     if (closed_) throw std::logic_error("HardcopyWorkstation::update: " + file_.string() + " is closed");
-    last_ = list;
+    image_ = workstation_.draw(list);
     if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
-    workstation_.drawToPng(list, file_);
+    writePng(*image_, file_);
 }
 
 void HardcopyWorkstation::close() {
     if (closed_) return;
     closed_ = true;
-    if (last_) workstation_.drawToPng(*last_, file_);
+    if (image_) writePng(*image_, file_);
 }
 
 }  // namespace phigs::vk

@@ -1,7 +1,7 @@
 #include "phigs/vk/Renderer.h"
 
 #include "GpuLayout.h"
-#include "phigs/render/WorkstationMapping.h"
+#include "phigs/ws/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
 #include <glm/geometric.hpp>
@@ -354,13 +354,15 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     frame_ = {};
     commands_.clear();
     drawBytes_.clear();
+    clipPlanes_.clear();
+    clipPlaneSets_.clear();
     depthTest_ = list.hiddenSurfaceRemoval;
     background_ = list.background;
     if (list.views.size() > std::size_t(gpu::kMaxViews))
         throw std::invalid_argument("Renderer: " + std::to_string(list.views.size()) + " views, at most " +
                                     std::to_string(gpu::kMaxViews) + " are supported");
 
-    const render::WorkstationMapping mapping(list, extent.width, extent.height);
+    const WorkstationMapping mapping(list, extent.width, extent.height);
     const glm::dmat4 npcToPixels =
         glm::dmat4(glm::dvec4(0.5 * extent.width, 0, 0, 0), glm::dvec4(0, 0.5 * extent.height, 0, 0),
                    glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
@@ -397,13 +399,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         {
             const glm::dvec2 lo = view.clipXY ? glm::dvec2(view.clipMin) : glm::dvec2(-1e30);
             const glm::dvec2 hi = view.clipXY ? glm::dvec2(view.clipMax) : glm::dvec2(1e30);
-            const render::PixelRect r = mapping.scissor(lo, hi);
+            const PixelRect r = mapping.scissor(lo, hi);
             scissor = {{r.x, r.y}, {r.width, r.height}};
         }
         if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
         const bool cued = item.depthCue >= 0 && list.depthCues[std::size_t(item.depthCue)].enabled;
         const bool clipsDepth =
             (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
+        const glm::vec2 modelClip = clipPlaneRange(item, i);
 
         // The attributes every part of this item shares.
         gpu::DrawParams base;
@@ -442,11 +445,12 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             d.indices.w = flags;
             d.style =
                 glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
-            d.misc = glm::vec4(part.lineWidth, 0, 0, 0);
+            d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, 0);
             Command c;
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
             if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
-            if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth) c.pipeline |= kMayDiscard;
+            if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
+                c.pipeline |= kMayDiscard;
             if ((flags & gpu::Lit) && shade != gpu::Gouraud) {
                 c.pipeline |= shade << kShadeShift;
                 // Front and back share the model; a fixed light set shape lets the shader unroll.
@@ -458,7 +462,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 bool local = signature < 0 || shade == gpu::Flat;
                 for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
                     local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
-                if (!local) c.pipeline |= kNoWorldPosition;
+                if (!local && modelClip.y == 0) c.pipeline |= kNoWorldPosition;
             }
             c.vertices = vertices;
             c.indices = indices;
@@ -556,8 +560,22 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     total_.add(frame_);
 }
 
+glm::vec2 Renderer::clipPlaneRange(const DrawItem& item, std::size_t index) {
+    if (item.modelClipPlanes.empty()) return glm::vec2(0.0f);
+    for (const auto& [planes, first] : clipPlaneSets_)
+        if (planes == item.modelClipPlanes) return glm::vec2(float(first), float(planes.size()));
+    const int first = int(clipPlanes_.size());
+    if (clipPlanes_.size() + item.modelClipPlanes.size() > std::size_t(gpu::kMaxClipPlanes))
+        throw std::invalid_argument("Renderer: " + itemName(index) + " brings the model clipping planes to " +
+                                    std::to_string(clipPlanes_.size() + item.modelClipPlanes.size()) +
+                                    ", at most " + std::to_string(gpu::kMaxClipPlanes) + " distinct ones");
+    for (const glm::dvec4& plane : item.modelClipPlanes) clipPlanes_.push_back(glm::vec4(plane));
+    clipPlaneSets_.emplace_back(item.modelClipPlanes, first);
+    return glm::vec2(float(first), float(item.modelClipPlanes.size()));
+}
+
 void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
-    const render::WorkstationMapping mapping(list, extent.width, extent.height);
+    const WorkstationMapping mapping(list, extent.width, extent.height);
     gpu::Frame f{};
     const DrawView defaultView;
     const std::size_t viewCount = std::max<std::size_t>(1, list.views.size());
@@ -598,6 +616,7 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
     f.pixelScale =
         glm::vec4(2.0f / float(extent.width), -2.0f / float(extent.height), float(mapping.pixelsPerNpc), 0);
     f.highlight = highlight_;
+    std::copy(clipPlanes_.begin(), clipPlanes_.end(), f.clipPlanes);
 
     const auto* bytes = reinterpret_cast<const unsigned char*>(&f);
     const bool created = !frameBuffer_;

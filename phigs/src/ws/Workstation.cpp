@@ -9,6 +9,7 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
     tables_.views = ViewTable(description_.viewTableSize);
     tables_.colours = ColourTable(description_.colourTableSize);
     tables_.viewportMax = {description_.displaySize.x, description_.displaySize.y, 1.0};
+    tables_.displaySize = description_.displaySize;
     store_.addListener(this);
 }
 
@@ -127,6 +128,8 @@ const DrawList& Workstation::display() {
         else if (!pictured_)
             regenerate(VisualState::Correct);
     }
+    // Input priority is no part of the picture: it changes nothing drawn and needs no traversal.
+    picture_.viewInputPriority = tables_.views.inputPriority();
     return picture_;
 }
 

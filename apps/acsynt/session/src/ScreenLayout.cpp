@@ -5,7 +5,9 @@
 namespace acsynt {
 
 ScreenLayout::ScreenLayout(int w, int h) : width(w), height(h) {
-    const double menuWidth = std::round(0.22 * w);
+    const double menuWidth = std::round(0.25 * w);
+    // Rows no taller than this keep the longest item's stroke text (cap height 0.45 row) inside.
+    menuRow = std::round(0.045 * h);
     const double messageHeight = std::round(0.06 * h);
     const double right = w - menuWidth;
     const double bottom = h - messageHeight;
@@ -16,12 +18,9 @@ ScreenLayout::ScreenLayout(int w, int h) : width(w), height(h) {
     message = {0, bottom, double(w), double(h)};
 }
 
-glm::dvec3 ScreenLayout::toNpc(glm::dvec2 pixel, double z) const {
-    return {pixel.x / width, (height - pixel.y) / width, z};
-}
-
-glm::dvec2 ScreenLayout::toPixel(const glm::dvec3& npc) const {
-    return {npc.x * width, height - npc.y * width};
+PixelBox ScreenLayout::menuFor(std::size_t items) const {
+    const double rows = std::min(menu.y1 - menu.y0, menuRow * double(items));
+    return {menu.x0, menu.y0, menu.x1, menu.y0 + rows};
 }
 
 PixelBox ScreenLayout::viewBox(int index, bool fourViews) const {
@@ -50,9 +49,8 @@ PixelBox ScreenLayout::padButton(int button) const {
 PixelBox ScreenLayout::slider(int device) const {
     const double rowHeight = (sliders.y1 - sliders.y0) / 4;
     const double y0 = sliders.y0 + (device - 1) * rowHeight;
-    // The label takes the left third; the slider itself the rest.
-    return {sliders.x0 + (sliders.x1 - sliders.x0) * 0.4, y0 + rowHeight * 0.25, sliders.x1 - 4,
-            y0 + rowHeight * 0.75};
+    // The lower part of the row: the echo structure writes "NAME: value" above the track.
+    return {sliders.x0 + 6, y0 + rowHeight * 0.55, sliders.x1 - 6, y0 + rowHeight * 0.85};
 }
 
 }  // namespace acsynt

@@ -5,7 +5,7 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "phigs/core/Error.h"
-#include "phigs/input/InputError.h"
+#include "phigs/input/EchoStructures.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
 
@@ -62,18 +62,12 @@ Element textAt(const glm::dvec3& at, const std::string& s) {
     return TextElement{at, {1, 0, 0}, {0, 1, 0}, s, false};
 }
 
-std::vector<glm::dvec3> box(const ScreenLayout& l, const PixelBox& b) {
-    return {l.toNpc({b.x0, b.y0}), l.toNpc({b.x1, b.y0}), l.toNpc({b.x1, b.y1}), l.toNpc({b.x0, b.y1}),
-            l.toNpc({b.x0, b.y0})};
-}
-
 }  // namespace
 
-Session::Session(SessionSettings settings, InputSource& source, PictureSink snapshot)
+Session::Session(SessionSettings settings, InputSource& source)
     : settings_(std::move(settings)),
       layout_(settings_.width, settings_.height),
       source_(source),
-      snapshot_(std::move(snapshot)),
       modelPicture_((phigs_.open(), phigs_.store())) {
     setupWorkstation();
     setupDevices();
@@ -81,20 +75,24 @@ Session::Session(SessionSettings settings, InputSource& source, PictureSink snap
     say("SELECT MENU ITEM");
 }
 
-Session::~Session() {
-    if (input_) queue_.detach(*input_);
-}
+Session::~Session() = default;
 
 std::set<std::string> Session::directives() {
     return {"snapshot", "summary"};
 }
 
 void Session::setupWorkstation() {
-    workstation_ = &phigs_.openWorkstation(1, WorkstationType::OffscreenImage);
+    workstation_ = &phigs_.openWorkstation(1, settings_.workstationType);
     Workstation& ws = *workstation_;
-    const double aspect = double(layout_.height) / layout_.width;
-    ws.setWorkstationWindow({0, 0, 0}, {1, aspect, 1});
-    ws.setWorkstationViewport({0, 0, 0}, {double(layout_.width), double(layout_.height), 1});
+    // The screen shows the whole display surface: the viewport is all of it, the window has its shape.
+    const glm::dvec2 display = ws.description().displaySize;
+    if (std::abs(display.x * layout_.height - display.y * layout_.width) > display.x)
+        throw std::invalid_argument(
+            "a " + std::to_string(layout_.width) + " x " + std::to_string(layout_.height) +
+            " screen does not have the shape of the display surface (" + std::to_string(int(display.x)) +
+            " x " + std::to_string(int(display.y)) + ")");
+    ws.setWorkstationWindow({0, 0, 0}, {1, display.y / display.x, 1});
+    ws.setWorkstationViewport({0, 0, 0}, {display.x, display.y, 1});
     ws.setHlhsrMode(1);
     ws.setPickFilter(NameSetFilter{{structures::pickableName, structures::buttonName}, {}});
     Light sun;
@@ -115,17 +113,16 @@ void Session::setupWorkstation() {
     ws.postStructure(structures::geometry, 0.5);
     ws.postStructure(structures::menu, 0.8);
     ws.postStructure(structures::pad, 0.8);
-    ws.postStructure(structures::sliders, 0.8);
+    for (int d = 1; d <= 4; ++d) ws.postStructure(structures::sliders + d - 1, 0.8);
     ws.postStructure(structures::message, 0.9);
+    mapping_.emplace(ws.display(), std::uint32_t(layout_.width), std::uint32_t(layout_.height));
     updateViews();
-
-    measurer_ = std::make_unique<DrawListMeasurer>(ws.display());
-    measurer_->setDisplayHeight(layout_.height);
 }
 
 void Session::setupDevices() {
-    input_ = std::make_unique<WorkstationInput>(1, source_, *measurer_, queue_);
-    queue_.attach(*input_);
+    interaction_ = std::make_unique<WorkstationInteraction>(*workstation_, source_, queue_);
+    interaction_->setSurfaceSize(std::uint32_t(layout_.width), std::uint32_t(layout_.height));
+    input_ = &interaction_->input();
     input_->setDirectiveHandler(
         [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
 
@@ -166,11 +163,10 @@ void Session::setMenu(const std::string& menuTitle, std::vector<std::string> ite
     DeviceInitialisation menu;
     menu.initial = ChoiceMeasure{InputStatus::Ok, 1};
     menu.promptEchoType = 3;
-    menu.echoVolume = layout_.menu.echoVolume();
+    menu.echoVolume = layout_.menuFor(menuItems_.size()).echoVolume();
     menu.choiceStrings = menuItems_;
-    input_->initialise(InputClass::Choice, 1, menu);
+    input_->initialise(InputClass::Choice, 1, menu);  // hands the panels to the source
     input_->setMode(InputClass::Choice, 1, OperatingMode::Event);
-    source_.setEchoLayout(input_->echoLayout());
     drawScreen();
 }
 
@@ -203,7 +199,7 @@ bool Session::step(std::chrono::milliseconds timeout) {
         if (report) handle(*report);
     } catch (const InputExhausted&) {
         finished_ = true;
-    } catch (const InputError& e) {
+    } catch (const phigs::Error& e) {
         fail(e.what());
     } catch (const ScriptError& e) {
         fail(e.what());
@@ -234,8 +230,6 @@ void Session::handle(const EventReport& report) {
         fail(e.what());
     } catch (const phigs::Error& e) {
         fail(e.what());
-    } catch (const InputError& e) {
-        fail(e.what());
     } catch (const std::runtime_error& e) {
         fail(e.what());
     }
@@ -254,7 +248,8 @@ void Session::directive(const action::Directive& d, const InputAction& a) {
             fail("NO PICTURE OUTPUT FOR SNAPSHOT " + d.arguments[0]);
             return;
         }
-        snapshot_(picture(), file);
+        picture();
+        snapshot_(file);
         pictures_.push_back(file);
         log_.push_back("snapshot " + file.string());
     } else if (d.name == "summary") {
@@ -777,7 +772,7 @@ void Session::updateViews() {
     for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v) {
         const Direction& d = fourViews_ ? directions[v - 1] : oblique;
         const PixelBox b = layout_.viewBox(v, fourViews_);
-        const glm::dvec3 npcMin = layout_.toNpc({b.x0, b.y1}, 0), npcMax = layout_.toNpc({b.x1, b.y0}, 1);
+        const glm::dvec3 npcMin = npc({b.x0, b.y1}, 0), npcMax = npc({b.x1, b.y0}, 1);
         ViewMapping mapping;
         const double aspect = (npcMax.x - npcMin.x) / (npcMax.y - npcMin.y);
         const double half = radius * (fourViews_ && v < 4 ? 0.9 : 0.75) / zoom_;
@@ -804,47 +799,45 @@ void Session::updateViews() {
     geometry.push_back(addNamesToSet({structures::lineName}));
     geometry.push_back(colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}));
     for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v)
-        geometry.push_back(polyline3(box(layout_, layout_.viewBox(v, fourViews_))));
+        geometry.push_back(polyline3(outline(layout_.viewBox(v, fourViews_))));
     rewriteStructure(phigs_.store(), structures::geometry, geometry);
 }
 
 glm::dvec2 Session::pixelOf(const glm::dvec3& world, int view) {
     const ViewRepresentation& v = workstation_->tables().views.get(view);
-    glm::dvec4 npc = v.mapping * v.orientation * glm::dvec4(world, 1.0);
-    npc /= npc.w;
-    return layout_.toPixel(glm::dvec3(npc));
+    glm::dvec4 p = v.mapping * v.orientation * glm::dvec4(world, 1.0);
+    p /= p.w;
+    return mapping_->toPixels(glm::dvec3(p));
+}
+
+std::vector<glm::dvec3> Session::outline(const PixelBox& b) const {
+    return {npc({b.x0, b.y0}), npc({b.x1, b.y0}), npc({b.x1, b.y1}), npc({b.x0, b.y1}), npc({b.x0, b.y0})};
 }
 
 void Session::drawScreen() {
     auto& store = phigs_.store();
     const ScreenLayout& l = layout_;
-    const double unit = 1.0 / l.width;  // one pixel in NPC
+    const double unit = 1.0 / mapping_->pixelsPerNpc;  // one pixel in NPC
 
-    // The menu panel: one row per alternative, as ChoicePanel lays them out.
-    const double itemHeight =
-        std::min(14.0, 0.4 * (l.menu.y1 - l.menu.y0) / double(std::max<std::size_t>(menuItems_.size(), 6)));
-    std::vector<Element> menu{viewIndex(0),
-                              IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
-                              AlignmentAttribute{ElementType::TextAlignment, 2, 3}};
-    ChoicePanel panel{1, l.menu.echoVolume(), menuItems_};
-    for (std::size_t i = 0; i < menuItems_.size(); ++i) {
-        auto [a, b] = panel.row(int(i) + 1);
-        const PixelBox row{a.x + 3, a.y + 2, b.x - 3, b.y - 2};
-        menu.push_back(colourAttr(ElementType::InteriorColour, {0.12, 0.16, 0.3}));
-        auto corners = box(l, row);
-        corners.pop_back();
-        menu.push_back(fillArea3(corners));
-        menu.push_back(colourAttr(ElementType::PolylineColour, {0.4, 0.5, 0.8}));
-        menu.push_back(polyline3(box(l, row)));
-        menu.push_back(colourAttr(ElementType::TextColour, {1, 1, 1}));
-        // Long items get smaller letters, so every item fits its row (stroke letters are about
-        // as wide as they are high, spacing included).
-        const std::string label = shown(menuItems_[i]);
-        const double fit = 0.92 * (row.x1 - row.x0) / (double(label.size()) * 1.05);
-        menu.push_back(RealAttribute{ElementType::CharacterHeight, std::min(itemHeight, fit) * unit});
-        menu.push_back(textAt(l.toNpc(row.centre(), 0.5), label));
+    // The menu panel of choice device 1 and the sliders of valuators 1-4: phigs echo structures.
+    std::vector<std::string> labels;
+    for (const auto& item : menuItems_) labels.push_back(shown(item));
+    buildChoicePanel(store, structures::menu,
+                     ChoicePanel{1, l.menuFor(menuItems_.size()).echoVolume(), labels}, 0, *mapping_);
+    double values[4] = {0, 0, azimuth_, zoom_};
+    if (reference_) {
+        const Patch& p = models_.current()
+                             .components[std::size_t(reference_->component)]
+                             .patches.patches[std::size_t(reference_->patch - 1)];
+        values[0] = (reference_->u - p.u0) / (p.u1 - p.u0);
+        values[1] = (reference_->w - p.w0) / (p.w1 - p.w0);
     }
-    rewriteStructure(store, structures::menu, menu);
+    for (int d = 1; d <= 4; ++d) {
+        const ValuatorSlider slider{d, l.slider(d).echoVolume(), sliderLow[d - 1], sliderHigh[d - 1]};
+        buildValuatorSlider(store, structures::sliders + d - 1, slider,
+                            std::clamp(values[d - 1], sliderLow[d - 1], sliderHigh[d - 1]),
+                            sliderNames[d - 1], *mapping_);
+    }
 
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
     const bool padLive = phase_ == Phase::MoveMarker || phase_ == Phase::Placed;
@@ -858,42 +851,14 @@ void Session::drawScreen() {
         pad.push_back(pickId(button));
         pad.push_back(colourAttr(ElementType::InteriorColour,
                                  padLive ? glm::dvec3(0.2, 0.3, 0.2) : glm::dvec3(0.1, 0.1, 0.12)));
-        auto corners = box(l, b);
+        auto corners = outline(b);
         corners.pop_back();
         pad.push_back(fillArea3(corners));
         pad.push_back(
             colourAttr(ElementType::TextColour, padLive ? glm::dvec3(0.7, 1, 0.7) : glm::dvec3(0.4)));
-        pad.push_back(textAt(l.toNpc(b.centre(), 0.5), arrows[button - 1]));
+        pad.push_back(textAt(npc(b.centre()), arrows[button - 1]));
     }
     rewriteStructure(store, structures::pad, pad);
-
-    // The sliders of valuators 1-4.
-    std::vector<Element> sliders{
-        viewIndex(0), addNamesToSet({structures::lineName}),
-        RealAttribute{ElementType::CharacterHeight, 0.09 * (l.sliders.y1 - l.sliders.y0) * unit},
-        AlignmentAttribute{ElementType::TextAlignment, 1, 3},
-        IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)}};
-    double values[4] = {0, 0, azimuth_, zoom_};
-    if (reference_) {
-        const Patch& p = models_.current()
-                             .components[std::size_t(reference_->component)]
-                             .patches.patches[std::size_t(reference_->patch - 1)];
-        values[0] = (reference_->u - p.u0) / (p.u1 - p.u0);
-        values[1] = (reference_->w - p.w0) / (p.w1 - p.w0);
-    }
-    for (int d = 1; d <= 4; ++d) {
-        const PixelBox b = l.slider(d);
-        sliders.push_back(colourAttr(ElementType::TextColour, {0.8, 0.8, 0.9}));
-        sliders.push_back(textAt(l.toNpc({l.sliders.x0 + 4, b.centre().y}, 0.5), sliderNames[d - 1]));
-        sliders.push_back(colourAttr(ElementType::PolylineColour, {0.5, 0.5, 0.6}));
-        sliders.push_back(polyline3(box(l, b)));
-        const ValuatorSlider slider{d, b.echoVolume(), sliderLow[d - 1], sliderHigh[d - 1]};
-        const double knob = slider.knobAt(std::clamp(values[d - 1], sliderLow[d - 1], sliderHigh[d - 1]));
-        sliders.push_back(colourAttr(ElementType::InteriorColour, {0.9, 0.7, 0.2}));
-        sliders.push_back(fillArea3({l.toNpc({knob - 3, b.y0}), l.toNpc({knob + 3, b.y0}),
-                                     l.toNpc({knob + 3, b.y1}), l.toNpc({knob - 3, b.y1})}));
-    }
-    rewriteStructure(store, structures::sliders, sliders);
 
     // Title, menu name, current model and the message line.
     const PixelBox& m = l.message;
@@ -905,11 +870,11 @@ void Session::drawScreen() {
                              RealAttribute{ElementType::CharacterHeight, 0.45 * rowHeight * unit},
                              AlignmentAttribute{ElementType::TextAlignment, 1, 3},
                              colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}),
-                             polyline3(box(l, m)),
+                             polyline3(outline(m)),
                              colourAttr(ElementType::TextColour, {0.6, 0.75, 1.0}),
-                             textAt(l.toNpc({m.x0 + 6, m.y0 + rowHeight * 0.5}, 0.5), heading),
+                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 0.5}), heading),
                              colourAttr(ElementType::TextColour, {1.0, 1.0, 0.55}),
-                             textAt(l.toNpc({m.x0 + 6, m.y0 + rowHeight * 1.5}, 0.5), message_)};
+                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 1.5}), message_)};
     rewriteStructure(store, structures::message, msg);
 }
 

@@ -44,6 +44,8 @@ public:
     /// The open workstation `id`: errors 3 (none open), 54 (this one not open).
     Workstation& workstation(int id);
     std::vector<int> openWorkstationIds() const;
+    /// INQUIRE SET OF WORKSTATIONS TO WHICH POSTED (error 201 when the structure does not exist).
+    std::vector<int> workstationsPostedTo(int structureId);
     bool anyWorkstationOpen() const { return !workstations_.empty(); }
 
     // ---- archives
@@ -51,6 +53,8 @@ public:
     void openArchiveFile(int archiveId, const std::filesystem::path& path);
     void closeArchiveFile(int archiveId);
     bool anyArchiveOpen() const { return !archives_.empty(); }
+    /// INQUIRE ARCHIVE FILES: the open archive identifiers.
+    std::vector<int> openArchiveIds() const;
     void setConflictResolution(ConflictResolution archival, ConflictResolution retrieval);
     ConflictResolution archivalResolution() const { return archival_; }
     ConflictResolution retrievalResolution() const { return retrieval_; }

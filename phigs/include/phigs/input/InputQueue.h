@@ -1,6 +1,6 @@
 #pragma once
 
-#include "phigs/input/InputError.h"
+#include "phigs/core/Error.h"
 #include "phigs/input/InputTypes.h"
 
 #include <chrono>
@@ -30,7 +30,7 @@ public:
     explicit InputQueue(std::size_t capacity = 64);
 
     /// Reports warning 256 (queue overflow) to `sink` when it happens (e.g. into the error log).
-    void setWarningSink(std::function<void(const InputError&)> sink) { warningSink_ = std::move(sink); }
+    void setWarningSink(std::function<void(const Error&)> sink) { warningSink_ = std::move(sink); }
 
     /// AWAIT EVENT: moves the oldest report to the current event report and returns it; with an
     /// empty queue, pumps the workstations' input sources until an event arrives or `timeout`
@@ -73,7 +73,7 @@ private:
     std::uint64_t currentTrigger_ = 0;
     std::optional<EventReport> current_;
     std::optional<QueueOverflow> overflow_;
-    std::function<void(const InputError&)> warningSink_;
+    std::function<void(const Error&)> warningSink_;
     std::vector<WorkstationInput*> inputs_;
 };
 

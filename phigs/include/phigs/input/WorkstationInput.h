@@ -72,6 +72,9 @@ public:
 private:
     InputDevice& lookup(InputClass inputClass, int device, const char* function);
     const InputDevice& lookup(InputClass inputClass, int device, const char* function) const;
+    /// A pick or locator click inside a choice panel or valuator slider of the echo layout
+    /// becomes that choice or value (what a window source does on its own for real clicks).
+    InputAction throughEcho(const InputAction& action) const;
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
 

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "phigs/input/InputTypes.h"
-#include "phigs/pick/WorkstationMapping.h"
 #include "phigs/traverse/DrawList.h"
+#include "phigs/ws/WorkstationMapping.h"
 
 #include <glm/vec2.hpp>
 
@@ -46,11 +46,17 @@ public:
     /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later. NURBS
     /// surfaces are hit by the exact line through `npc`; their tessellations count only when
     /// nothing is hit at all (the aperture catching a silhouette), without surface detail.
+    /// Marker sizes (in pixels) are measured on a surface whose pixels are device coordinates.
     std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
+    /// The same on the surface `mapping` describes.
+    std::vector<PickHit> hits(const DrawList& list, const WorkstationMapping& mapping, glm::dvec2 npc,
+                              double aperture) const;
     /// PICK measure of the nearest hit: status OK with its path, or NONE when nothing is hit.
     PickMeasure pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const;
     /// The nearest hit itself, for echo.
     std::optional<PickHit> nearest(const DrawList& list, glm::dvec2 npc, double aperture) const;
+    std::optional<PickHit> nearest(const DrawList& list, const WorkstationMapping& mapping, glm::dvec2 npc,
+                                   double aperture) const;
 
     /// Forgets the cached surface intersectors and mesh boxes. Entries whose surface or mesh
     /// only the cache still holds are dropped anyway when a list of a new generation is picked.

@@ -233,9 +233,14 @@ struct DrawList {
     std::vector<DepthCue> depthCues;
     glm::dvec3 windowMin{0.0}, windowMax{1.0};      ///< workstation window, NPC
     glm::dvec3 viewportMin{0.0}, viewportMax{1.0};  ///< workstation viewport, device coordinates
-    glm::vec3 background{0.0f};                     ///< colour index 0
-    bool hiddenSurfaceRemoval = false;              ///< HLHSR mode: depth buffer on
-    std::uint64_t generation = 0;                   ///< changes whenever any item changed
+    /// The display surface in device coordinates (the workstation type's display size); a target
+    /// of any pixel size shows it isotropically, lower-left aligned (see WorkstationMapping).
+    glm::dvec2 displaySize{1.0};
+    /// View indices from highest to lowest view transformation input priority; empty: 0, 1, 2, ...
+    std::vector<int> viewInputPriority;
+    glm::vec3 background{0.0f};         ///< colour index 0
+    bool hiddenSurfaceRemoval = false;  ///< HLHSR mode: depth buffer on
+    std::uint64_t generation = 0;       ///< changes whenever any item changed
 };
 
 }  // namespace phigs

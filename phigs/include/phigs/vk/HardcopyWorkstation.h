@@ -9,7 +9,7 @@
 namespace phigs::vk {
 
 /// The PNG hardcopy workstation type: an offscreen workstation that writes its picture to a file
-/// on every update and once more on close (the last list drawn).
+/// on every update and once more on close (the last picture drawn).
 class HardcopyWorkstation {
 public:
     HardcopyWorkstation(Context& context, std::uint32_t width, std::uint32_t height,
@@ -23,11 +23,16 @@ public:
     /// Writes the file from the last list (if any) and stops accepting updates.
     void close();
     const std::filesystem::path& file() const { return file_; }
+    Renderer& renderer() { return workstation_.renderer(); }
+    std::uint32_t width() const { return workstation_.width(); }
+    std::uint32_t height() const { return workstation_.height(); }
+    /// The picture of the last update.
+    const std::optional<Image>& lastImage() const { return image_; }
 
 private:
     OffscreenWorkstation workstation_;
     std::filesystem::path file_;
-    std::optional<DrawList> last_;
+    std::optional<Image> image_;
     bool closed_ = false;
 };
 

@@ -70,6 +70,9 @@ private:
     void createDescriptors();
     void uploadFrame(const DrawList& list, VkExtent2D extent);
     void uploadDraws();
+    /// Where item `index`'s model clipping planes sit in the frame block (first, count); equal
+    /// plane sets share one run.
+    glm::vec2 clipPlaneRange(const DrawItem& item, std::size_t index);
     CachedMesh& compileMesh(const std::shared_ptr<const MeshData>& mesh);
     void release();
 
@@ -94,6 +97,8 @@ private:
     std::unordered_map<std::uint64_t, CachedGeometry> geometry_;
     std::unordered_map<const MeshData*, CachedMesh> meshes_;
     std::vector<Command> commands_;
+    std::vector<std::pair<std::vector<glm::dvec4>, int>> clipPlaneSets_;  ///< this frame's, with first index
+    std::vector<glm::vec4> clipPlanes_;
     glm::vec4 highlight_{1.0f, 1.0f, 0.0f, 0.6f};
     glm::vec3 background_{0.0f};
     bool depthTest_ = false;

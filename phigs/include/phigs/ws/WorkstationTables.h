@@ -118,6 +118,7 @@ struct WorkstationTables {
     int hlhsrMode = 0;                  ///< 0 none, 1 z-buffer
     glm::dvec3 windowMin{0.0}, windowMax{1.0};
     glm::dvec3 viewportMin{0.0}, viewportMax{1.0};
+    glm::dvec2 displaySize{1.0};  ///< the display surface in device coordinates
     std::uint64_t generation = 0;
 
     WorkstationTables() : lights{{1, Light{}}}, depthCues{{0, DepthCue{}}} {}

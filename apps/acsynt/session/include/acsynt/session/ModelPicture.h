@@ -29,8 +29,8 @@ namespace structures {
 constexpr int geometry = 10;    ///< posted: one view index + the model per view
 constexpr int menu = 20;        ///< posted: the menu panel
 constexpr int pad = 21;         ///< posted: the pointer-valuator buttons (pickable)
-constexpr int sliders = 22;     ///< posted: the continuous valuators
 constexpr int message = 23;     ///< posted: the title and message line
+constexpr int sliders = 24;     ///< posted: 24-27, the sliders of valuators 1-4
 constexpr int modelRoot = 100;  ///< the model (acs_root)
 constexpr int mapped = 101;     ///< mapped curves of the model
 constexpr int overlay = 102;    ///< marker, tangents, placed curve, projection lines

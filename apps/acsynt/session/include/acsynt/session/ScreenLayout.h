@@ -14,23 +14,22 @@ struct PixelBox {
     phigs::EchoVolume echoVolume() const { return {x0, x1, y0, y1, 0, 1}; }
 };
 
-/// Where the session's areas lie on a W x H screen: the geometry area (one or four views), the
-/// menu panel, the pointer-valuator pad, the sliders and the message line, in pixels and in NPC.
-/// The workstation window is NPC [0, 1] x [0, H / W], so one NPC unit is W pixels both ways.
+/// Where the session's areas lie on a W x H screen, in pixels: the geometry area (one or four
+/// views), the menu panel, the pointer-valuator pad, the sliders and the message line. (The
+/// workstation's phigs::WorkstationMapping turns pixels into NPC.)
 struct ScreenLayout {
     ScreenLayout(int width, int height);
 
     int width, height;
-    PixelBox geometry;  ///< the geometry window (four quadrants in four-view mode)
-    PixelBox menu;      ///< the menu panel: rows top to bottom (choice device 1)
-    PixelBox pad;       ///< the 3 x 3 pointer-valuator buttons and DONE
-    PixelBox sliders;   ///< the continuous valuators, one row each
-    PixelBox message;   ///< the message line
+    PixelBox geometry;   ///< the geometry window (four quadrants in four-view mode)
+    PixelBox menu;       ///< the menu panel's room: rows top to bottom (choice device 1)
+    double menuRow = 0;  ///< the tallest menu row
+    PixelBox pad;        ///< the 3 x 3 pointer-valuator buttons and DONE
+    PixelBox sliders;    ///< the continuous valuators, one row each
+    PixelBox message;    ///< the message line
 
-    /// NPC of a pixel (x right, y down on the screen, NPC y up).
-    glm::dvec3 toNpc(glm::dvec2 pixel, double z = 0.0) const;
-    /// Pixel of an NPC point.
-    glm::dvec2 toPixel(const glm::dvec3& npc) const;
+    /// The menu panel's echo area for `items` alternatives: rows of at most menuRow pixels.
+    PixelBox menuFor(std::size_t items) const;
     /// The pixel box of view `index` (1..4 in four-view mode; 1 is the whole area otherwise).
     PixelBox viewBox(int index, bool fourViews) const;
     /// Pad button `button` (1..9 the compass row by row from the top left, 10 DONE).

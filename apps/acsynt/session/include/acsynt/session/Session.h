@@ -10,7 +10,8 @@
 #include "phigs/input/InputQueue.h"
 #include "phigs/input/InputSource.h"
 #include "phigs/input/WorkstationInput.h"
-#include "phigs/pick/DrawListMeasurer.h"
+#include "phigs/pick/WorkstationInteraction.h"
+#include "phigs/ws/WorkstationMapping.h"
 
 #include <chrono>
 #include <filesystem>
@@ -29,6 +30,9 @@ struct SessionSettings {
     std::filesystem::path outputDirectory = ".";  ///< snapshots, summary, saved files
     /// Where relative names of files to read are looked up after the working directory.
     std::vector<std::filesystem::path> searchPath{ACSYNT_DATA_DIR};
+    /// The workstation type (its display surface, 1024 x 768 device units, is shown on the
+    /// width x height pixels, which must have its 4:3 shape).
+    phigs::WorkstationType workstationType = phigs::WorkstationType::OffscreenImage;
 };
 
 /// The marker of DEFINE POINT: the reference point on the picked patch.
@@ -65,10 +69,12 @@ struct ReductionRecord {
 /// are fed by any input source (a script or a window), and every action is recorded.
 class Session {
 public:
-    /// `snapshot(picture, file)` draws a picture to a PNG for the `snapshot NAME` directive.
-    using PictureSink = std::function<void(const phigs::DrawList&, const std::filesystem::path&)>;
+    /// `snapshot(file)` writes what the workstation shows to a PNG, for `snapshot NAME`.
+    using PictureSink = std::function<void(const std::filesystem::path&)>;
 
-    Session(SessionSettings settings, phigs::InputSource& source, PictureSink snapshot = {});
+    /// Opens PHIGS and the workstation; throws std::invalid_argument for a screen whose shape is
+    /// not the display surface's.
+    Session(SessionSettings settings, phigs::InputSource& source);
     ~Session();
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -80,6 +86,8 @@ public:
     void run();
     /// Handles at most one event (waiting up to `timeout`); false once the session is over.
     bool step(std::chrono::milliseconds timeout);
+    /// Where `snapshot NAME` pictures go (a vk::WorkstationDisplay of workstation(), a window).
+    void setSnapshot(PictureSink snapshot) { snapshot_ = std::move(snapshot); }
     /// Called after each handled event (a window presents the picture).
     void setPresenter(std::function<void(const phigs::DrawList&)> present) { present_ = std::move(present); }
     bool finished() const { return finished_; }
@@ -90,6 +98,8 @@ public:
     const ScreenLayout& layout() const { return layout_; }
     /// Screen pixel of a world point in view `view` (the view table's orientation and mapping).
     glm::dvec2 pixelOf(const glm::dvec3& world, int view);
+    /// The workstation transformation on the screen's pixels (render, pick and echo share it).
+    const phigs::WorkstationMapping& mapping() const { return *mapping_; }
 
     const std::string& message() const { return message_; }
     const std::vector<std::string>& log() const { return log_; }
@@ -162,6 +172,8 @@ private:
     void showModel();  ///< rebuilds the model structures after the current model changed
     void updateViews();
     void drawScreen();  ///< menu, pad, sliders, message
+    glm::dvec3 npc(glm::dvec2 pixel, double z = 0.5) const { return mapping_->pixelsToNpc(pixel, z); }
+    std::vector<glm::dvec3> outline(const PixelBox& box) const;
     void drawOverlay();
     void drawMapped(bool all);
     void drawErrorMap();
@@ -179,9 +191,10 @@ private:
 
     phigs::Phigs phigs_;
     phigs::Workstation* workstation_ = nullptr;
-    std::unique_ptr<phigs::DrawListMeasurer> measurer_;
+    std::optional<phigs::WorkstationMapping> mapping_;
     phigs::InputQueue queue_;
-    std::unique_ptr<phigs::WorkstationInput> input_;
+    std::unique_ptr<phigs::WorkstationInteraction> interaction_;
+    phigs::WorkstationInput* input_ = nullptr;
     ModelPicture modelPicture_;
 
     ModelList models_;

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "phigs/input/InputQueue.h"
+#include "phigs/input/InputSource.h"
+#include "phigs/input/WorkstationInput.h"
+#include "phigs/pick/DrawListMeasurer.h"
+#include "phigs/ws/Workstation.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+
+namespace phigs {
+
+/// The input side of a model workstation: its logical input devices fed by one source and
+/// measured on its picture. The locator and stroke map through the displayed draw list (view
+/// input priority from the workstation's view table); each pick device picks on a traversal
+/// of the workstation's networks with that device's pick filter (the workstation's own filters
+/// otherwise).
+class WorkstationInteraction {
+public:
+    WorkstationInteraction(Workstation& workstation, InputSource& source, InputQueue& queue,
+                           DeviceCounts counts = {});
+    WorkstationInteraction(const WorkstationInteraction&) = delete;
+    WorkstationInteraction& operator=(const WorkstationInteraction&) = delete;
+
+    WorkstationInput& input() { return *input_; }
+    const DrawListMeasurer& measurer() const { return measurer_; }
+    DrawListMeasurer& measurer() { return measurer_; }
+    Workstation& workstation() { return workstation_; }
+    /// The source's surface in pixels (the size of the rendered image or window); by default one
+    /// pixel per device coordinate of the workstation's display surface.
+    void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
+        measurer_.setSurfaceSize(width, height);
+    }
+
+private:
+    const DrawList& pickList(const InputDevice& device);
+
+    Workstation& workstation_;
+    DrawListMeasurer measurer_;
+    std::map<int, DrawList> pickLists_;  ///< by pick device number, the last traversal for it
+    std::uint64_t traversals_ = 0;
+    std::unique_ptr<WorkstationInput> input_;
+};
+
+}  // namespace phigs

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "phigs/image/Image.h"
+#include "phigs/vk/Context.h"
+#include "phigs/vk/HardcopyWorkstation.h"
+#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/Renderer.h"
+#include "phigs/vk/WindowWorkstation.h"
+#include "phigs/ws/Workstation.h"
+#include "phigs/ws/WorkstationMapping.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace phigs::vk {
+
+/// How a WorkstationDisplay shows its workstation.
+struct DisplaySettings {
+    std::uint32_t width = 0, height = 0;  ///< the surface in pixels; 0: the type's display size
+    std::string title = "PHIGS";          ///< window title
+    std::filesystem::path file;           ///< hardcopy: the PNG file (required for that type)
+    bool readBack = false;                ///< window: copy every presented picture into image()
+};
+
+/// Shows a model-side phigs::Workstation through the Vulkan backend on the target its type
+/// asks for (offscreen image, GLFW window, PNG hardcopy); update() draws ws.display() with the
+/// target's one Renderer, whose caches make an unchanged picture upload nothing.
+class WorkstationDisplay {
+public:
+    /// With a context of its own, made from `context` (window types add the surface extensions).
+    WorkstationDisplay(Workstation& workstation, const ContextSettings& context,
+                       DisplaySettings settings = {});
+    /// Sharing a context (for a window, made from WindowWorkstation::contextSettings()).
+    WorkstationDisplay(Workstation& workstation, Context& context, DisplaySettings settings = {});
+    ~WorkstationDisplay();
+    WorkstationDisplay(const WorkstationDisplay&) = delete;
+    WorkstationDisplay& operator=(const WorkstationDisplay&) = delete;
+
+    /// Draws what the workstation shows now. Returns false once a window has been closed.
+    bool update();
+    /// The last picture (offscreen and hardcopy; a window only with `readBack`).
+    const Image& image() const { return image_; }
+
+    Workstation& workstation() { return workstation_; }
+    Context& context() { return *context_; }
+    Renderer& renderer();
+    /// The surface in pixels (a window's current extent).
+    std::uint32_t width() const;
+    std::uint32_t height() const;
+    /// The workstation transformation of the current picture on this surface.
+    WorkstationMapping mapping();
+    /// The window target (null for other types).
+    WindowWorkstation* window() { return window_.get(); }
+
+private:
+    void open(DisplaySettings settings);
+
+    Workstation& workstation_;
+    std::unique_ptr<Context> ownContext_;
+    Context* context_ = nullptr;
+    std::unique_ptr<OffscreenWorkstation> offscreen_;
+    std::unique_ptr<HardcopyWorkstation> hardcopy_;
+    std::unique_ptr<WindowWorkstation> window_;
+    bool readBack_ = false;
+    Image image_;
+};
+
+}  // namespace phigs::vk

@@ -1,0 +1,24 @@
+#include "phigs/pick/WorkstationInteraction.h"
+
+namespace phigs {
+
+WorkstationInteraction::WorkstationInteraction(Workstation& workstation, InputSource& source,
+                                               InputQueue& queue, DeviceCounts counts)
+    : workstation_(workstation),
+      measurer_([this]() -> const DrawList& { return workstation_.display(); }),
+      input_(std::make_unique<WorkstationInput>(workstation.id(), source, measurer_, queue, counts)) {
+    measurer_.setPickListProvider(
+        [this](const InputDevice& device) -> const DrawList& { return pickList(device); });
+}
+
+const DrawList& WorkstationInteraction::pickList(const InputDevice& device) {
+    TraversalFilters filters = workstation_.filters();
+    if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
+    DrawList& list = pickLists_[device.number];
+    list = workstation_.traverse(filters);
+    // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
+    list.generation = ++traversals_;
+    return list;
+}
+
+}  // namespace phigs

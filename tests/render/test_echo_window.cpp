@@ -1,0 +1,134 @@
+// Echo structures on a window workstation under Xvfb, clicked with real X events (XTest): a
+// click in the menu panel chooses, a drag in the slider sets the value, and the redrawn
+// structures show it in the presented picture.
+#include "RenderTestSupport.h"
+#include "VirtualDisplay.h"
+#include "phigs/core/Phigs.h"
+#include "phigs/input/EchoStructures.h"
+#include "phigs/pick/WorkstationInteraction.h"
+#include "phigs/vk/WorkstationDisplay.h"
+
+#if defined(PHIGS_HAVE_XTEST)
+#include "phigs/window/GlfwInputSource.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+
+// Last: Xlib defines macros (None, True, Status) that would break the headers above.
+#include <X11/Xlib.h>
+#include <X11/extensions/XTest.h>
+
+using namespace phigs;
+using namespace render_test;
+using namespace std::chrono_literals;
+
+namespace {
+
+bool shows(const Image& image, glm::dvec2 pixel, glm::dvec3 rgb) {
+    const std::uint8_t* p = image.pixel(std::uint32_t(pixel.x), std::uint32_t(pixel.y));
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(int(p[c]) - int(std::lround(rgb[c] * 255))) > 12) return false;
+    return true;
+}
+
+/// Real pointer events through the X server, at window pixels.
+class Pointer {
+public:
+    explicit Pointer(GLFWwindow* window) : display_(XOpenDisplay(nullptr)) {
+        REQUIRE(display_);
+        glfwGetWindowPos(window, &x_, &y_);
+    }
+    ~Pointer() { XCloseDisplay(display_); }
+    void moveTo(glm::dvec2 p) {
+        XTestFakeMotionEvent(display_, -1, x_ + int(p.x), y_ + int(p.y), 0), flush();
+    }
+    void button(bool down) { XTestFakeButtonEvent(display_, 1, down ? True : False, 0), flush(); }
+
+private:
+    void flush() { XFlush(display_); }
+    Display* display_;
+    int x_ = 0, y_ = 0;
+};
+
+}  // namespace
+
+TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver choice and value",
+          "[render][window][echo]") {
+    VirtualDisplay virtualDisplay;
+    Phigs phigs;
+    phigs.open();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    vk::DisplaySettings settings;
+    settings.width = 256;
+    settings.height = 192;
+    settings.title = "phigs echo test";
+    settings.readBack = true;
+    vk::WorkstationDisplay display(ws, lavapipeWithValidation(), settings);
+    {
+        GlfwInputSource source(display.window()->window());
+        InputQueue queue;
+        WorkstationInteraction interaction(ws, source, queue);
+        interaction.setSurfaceSize(display.width(), display.height());
+        WorkstationInput& input = interaction.input();
+        DeviceInitialisation menu;
+        menu.initial = ChoiceMeasure{InputStatus::Ok, 1};
+        menu.promptEchoType = 3;
+        menu.echoVolume = {10, 90, 10, 70, 0, 1};  // rows of 20 pixels
+        menu.choiceStrings = {"Wing", "Tail", "Body"};
+        input.initialise(InputClass::Choice, 1, menu);
+        DeviceInitialisation slider;
+        slider.initial = ValuatorMeasure{5.0};
+        slider.promptEchoType = 2;
+        slider.echoVolume = {100, 180, 150, 170, 0, 1};  // in the workstation window's 192 x 192
+        slider.valuatorHigh = 10.0;
+        input.initialise(InputClass::Valuator, 1, slider);
+        input.setMode(InputClass::Choice, 1, OperatingMode::Event);
+        input.setMode(InputClass::Valuator, 1, OperatingMode::Event);
+        const EchoLayout layout = input.echoLayout();
+        const EchoStyle style;
+        auto show = [&](int choice, double value) {
+            buildChoicePanel(phigs.store(), 100, layout.panels.at(0), choice, display.mapping(), style);
+            buildValuatorSlider(phigs.store(), 101, layout.sliders.at(0), value, "Span", display.mapping(),
+                                style);
+            ws.postStructure(100, 1.0);
+            ws.postStructure(101, 1.0);
+            REQUIRE(display.update());
+            return display.image();
+        };
+        const Image before = show(1, 5.0);
+        REQUIRE(before.width == 256);
+        CHECK(shows(before, {14, 20}, style.current));
+        CHECK(shows(before, {140, 160}, style.current));
+
+        // Let the server map the window before pointing at it.
+        const auto until = std::chrono::steady_clock::now() + 500ms;
+        while (std::chrono::steady_clock::now() < until) glfwWaitEventsTimeout(0.02);
+        Pointer pointer(display.window()->window());
+        pointer.moveTo({50, 62});  // Body
+        pointer.button(true);
+        pointer.button(false);
+        const auto chosen = queue.awaitEvent(3s);
+        REQUIRE(chosen);
+        CHECK(chosen->inputClass == InputClass::Choice);
+        CHECK(std::get<ChoiceMeasure>(chosen->measure).choice == 3);
+
+        pointer.moveTo({110, 160});  // drag the knob to x = 168: 8.5
+        pointer.button(true);
+        pointer.moveTo({140, 161});
+        pointer.moveTo({168, 160});
+        pointer.button(false);
+        const auto valued = queue.awaitEvent(3s);
+        REQUIRE(valued);
+        CHECK(valued->inputClass == InputClass::Valuator);
+        CHECK(std::get<ValuatorMeasure>(valued->measure).value == Approx(8.5));
+
+        const Image after = show(3, 8.5);
+        CHECK(shows(after, {14, 20}, style.box));
+        CHECK(shows(after, {14, 60}, style.current));
+        CHECK(shows(after, {168, 160}, style.current));
+        CHECK(shows(after, {125, 160}, style.track));
+    }
+    requireNoValidationMessages(display.context());
+}
+#endif
