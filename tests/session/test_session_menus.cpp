@@ -275,3 +275,23 @@ TEST_CASE("FILE menu: save and read back a model, archive and retrieve its struc
     d.run({"choice EXIT"});
     CHECK(d.session.finished());
 }
+
+TEST_CASE("a pick on a row of the menu panel chooses that item, as a click in a window does") {
+    Driver d("menu_pick");
+    auto pickItem = [&](const std::string& item) {
+        const auto& items = d.session.menuItems();
+        const auto it = std::find(items.begin(), items.end(), item);
+        REQUIRE(it != items.end());
+        const phigs::ChoicePanel panel{1, d.session.layout().menuFor(items.size()).echoVolume(), items};
+        const auto [a, b] = panel.row(int(it - items.begin()) + 1);
+        const glm::dvec2 centre = (a + b) / 2.0;
+        d.run({"pick " + std::to_string(centre.x) + " " + std::to_string(centre.y)});
+    };
+    pickItem("VIEW");
+    CHECK(d.session.menuTitle() == "VIEW");
+    pickItem("FOUR_VIEWS");
+    CHECK(d.session.fourViews());
+    pickItem("RETURN");
+    CHECK(d.session.menuTitle() == "MAIN");
+    session_test::compareWithReference(d.picture(), "menu_main_empty");
+}

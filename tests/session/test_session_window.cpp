@@ -1,6 +1,7 @@
-// The interactive session in a GLFW window under a virtual X server (started by the test): clicks
-// on the menu panel, on the surface and on the pad, typed text and a slider drag drive DEFINE
-// POINT through the window input source, exactly as the window's callbacks deliver them.
+// The interactive session in a GLFW window under a virtual X server (started by the test): real
+// X pointer events (XTest) click the menu panel, the surface and the pad and drag a slider, and
+// drive DEFINE POINT through the GLFW window input source. Typed text goes in as the window's
+// character callbacks deliver it. Without XTest the clicks go in that way too.
 #include "SessionTestSupport.h"
 
 #ifdef ACSYNT_HAVE_WINDOW
@@ -10,61 +11,48 @@
 #include "phigs/vk/WindowWorkstation.h"
 #include "phigs/window/GlfwInputSource.h"
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include "../render/VirtualDisplay.h"
 
-extern char** environ;
+#if defined(PHIGS_HAVE_XTEST)
+#include <GLFW/glfw3.h>
+// Last: Xlib defines macros (None, True, Status) that would break the headers above.
+#include <X11/Xlib.h>
+#include <X11/extensions/XTest.h>
+// Xlib's event-type macros share names with phigs::window_event types.
+#undef KeyPress
+#undef ButtonPress
+#undef ButtonRelease
 
 namespace {
 
-/// An Xvfb server on a free display number for the lifetime of the object.
-class VirtualDisplay {
+/// Real pointer events through the X server, at window pixels.
+class Pointer {
 public:
-    VirtualDisplay() {
-        int fds[2];
-        REQUIRE(pipe(fds) == 0);
-        const std::string fd = std::to_string(fds[1]);
-        const char* argv[] = {"Xvfb",       "-displayfd", fd.c_str(), "-screen", "0",
-                              "640x480x24", "-nolisten",  "tcp",      nullptr};
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addclose(&actions, fds[0]);
-        const int rc =
-            posix_spawnp(&pid_, "Xvfb", &actions, nullptr, const_cast<char* const*>(argv), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        close(fds[1]);
-        REQUIRE(rc == 0);  // install the Debian package 'xvfb'
-        std::string number;
-        char c;
-        while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
-        close(fds[0]);
-        REQUIRE(!number.empty());
-        previous_ = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
-        setenv("DISPLAY", (":" + number).c_str(), 1);
+    explicit Pointer(GLFWwindow* window) : display_(XOpenDisplay(nullptr)) {
+        REQUIRE(display_);
+        glfwGetWindowPos(window, &x_, &y_);
     }
-    ~VirtualDisplay() {
-        if (previous_.empty())
-            unsetenv("DISPLAY");
-        else
-            setenv("DISPLAY", previous_.c_str(), 1);
-        if (pid_ > 0) {
-            kill(pid_, SIGTERM);
-            waitpid(pid_, nullptr, 0);
-        }
+    ~Pointer() { XCloseDisplay(display_); }
+    void moveTo(glm::dvec2 p) {
+        XTestFakeMotionEvent(display_, -1, x_ + int(std::lround(p.x)), y_ + int(std::lround(p.y)), 0);
+        XFlush(display_);
+    }
+    void button(bool down) {
+        XTestFakeButtonEvent(display_, 1, down ? 1 : 0, 0);
+        XFlush(display_);
     }
 
 private:
-    pid_t pid_ = -1;
-    std::string previous_;
+    Display* display_;
+    int x_ = 0, y_ = 0;
 };
 
 }  // namespace
+#endif
 
 TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and slider drive DEFINE POINT") {
     using namespace phigs::window_event;
-    VirtualDisplay display;
+    render_test::VirtualDisplay display;
     phigs::vk::ContextSettings base;
     base.device = phigs::vk::DevicePreference::Lavapipe;
     base.validation = false;
@@ -82,11 +70,26 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
     auto settle = [&] {
         for (int i = 0; i < 6; ++i) session.step(std::chrono::milliseconds(5));
     };
+#if defined(PHIGS_HAVE_XTEST)
+    // Clicks are real X events; the session's steps poll GLFW until the click has been handled.
+    Pointer pointer(window.window());
+    auto click = [&](glm::dvec2 p) {
+        const std::size_t before = session.log().size();
+        pointer.moveTo(p);
+        pointer.button(true);
+        pointer.button(false);
+        for (int i = 0; i < 200 && session.log().size() == before; ++i)
+            session.step(std::chrono::milliseconds(5));
+        settle();
+    };
+#else
+    // Without XTest: the events the window's callbacks would deliver.
     auto click = [&](glm::dvec2 p) {
         source.post(ButtonPress{Button::Left, p, false});
         source.post(ButtonRelease{Button::Left, p});
         settle();
     };
+#endif
     auto menu = [&](const std::string& item) {
         const auto& items = session.menuItems();
         const auto it = std::find(items.begin(), items.end(), item);
@@ -135,10 +138,22 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
     const acsynt::PixelBox slider = layout.slider(2);
     const glm::dvec2 from{slider.x0 + 2, slider.centre().y},
         to{slider.x0 + 0.25 * (slider.x1 - slider.x0), slider.centre().y};
+#if defined(PHIGS_HAVE_XTEST)
+    const double wBefore = session.reference()->w;
+    pointer.moveTo(from);
+    pointer.button(true);
+    for (int i = 0; i < 4; ++i) session.step(std::chrono::milliseconds(5));
+    pointer.moveTo(to);
+    pointer.button(false);
+    for (int i = 0; i < 200 && session.reference()->w == wBefore; ++i)
+        session.step(std::chrono::milliseconds(5));
+    settle();
+#else
     source.post(ButtonPress{Button::Left, from, false});
     source.post(CursorMove{to});
     source.post(ButtonRelease{Button::Left, to});
     settle();
+#endif
     const phigs::ValuatorSlider model{2, slider.echoVolume(), 0, 1};
     CHECK(session.reference()->w == Approx(patch->w0 + model.valueAt(to) * (patch->w1 - patch->w0)));
 
