@@ -181,7 +181,6 @@ private:
     bool requireModel();
     std::filesystem::path findInput(const std::string& name) const;
     std::filesystem::path outputPath(const std::string& name) const;
-    std::vector<geom::Curve> placedCurves() const;
 
     SessionSettings settings_;
     ScreenLayout layout_;
