@@ -1,6 +1,7 @@
 #include "InputFakes.h"
 
 #include "phigs/input/EchoLayout.h"
+#include "phigs/input/ScriptInputSource.h"
 #include "phigs/input/WindowEventMapper.h"
 #include "phigs/input/WorkstationInput.h"
 
@@ -36,7 +37,7 @@ TEST_CASE("input echo: a slider maps position to value along its long axis", "[i
     CHECK(upright.knobAt(7.5) == 25.0);
 }
 
-TEST_CASE("input echo: clicks in panels choose, slider drags set values, elsewhere they pick", "[input]") {
+TEST_CASE("input echo: slider drags set values, clicks elsewhere (panels too) pick", "[input]") {
     WindowEventMapper m;
     EchoLayout layout;
     layout.panels.push_back({3, {0, 100, 0, 40, 0, 1}, {"Open", "Save"}});
@@ -44,8 +45,7 @@ TEST_CASE("input echo: clicks in panels choose, slider drags set values, elsewhe
     m.setLayout(layout);
     auto a = m.handle(ButtonPress{Button::Left, {50, 30}, false});
     REQUIRE(a);
-    CHECK(std::get<action::Choice>(a->what).choice == 2);
-    CHECK(std::get<action::Choice>(a->what).device == 3);
+    CHECK(std::holds_alternative<action::Pick>(a->what));  // WorkstationInput makes it the choice
     CHECK_FALSE(m.handle(ButtonPress{Button::Left, {10, 55}, false}));  // starts the drag
     m.handle(CursorMove{{40, 55}});
     a = m.handle(ButtonRelease{Button::Left, {75, 58}});
@@ -85,4 +85,46 @@ TEST_CASE("input echo: initialising menu and slider devices gives the source its
     v.promptEchoType = 1;
     input.initialise(InputClass::Valuator, 4, v);
     CHECK(source.layout.sliders.empty());
+}
+
+TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses or sets the value",
+          "[input]") {
+    ScriptInputSource source("pick 50 30\nlocator 50 10\npick 75 55\npick 50 90\n", "echo.txt");
+    FakeMeasurer measurer;
+    InputQueue queue;
+    WorkstationInput input(1, source, measurer, queue);
+    DeviceInitialisation c;
+    c.initial = ChoiceMeasure{InputStatus::Ok, 1};
+    c.promptEchoType = 3;
+    c.echoVolume = {0, 100, 0, 40, 0, 1};
+    c.choiceStrings = {"Open", "Save"};
+    input.initialise(InputClass::Choice, 2, c);
+    DeviceInitialisation v;
+    v.initial = ValuatorMeasure{5};
+    v.promptEchoType = 2;
+    v.echoVolume = {0, 100, 50, 60, 0, 1};
+    v.valuatorHigh = 10;
+    input.initialise(InputClass::Valuator, 4, v);
+    input.setMode(InputClass::Choice, 2, OperatingMode::Event);
+    input.setMode(InputClass::Valuator, 4, OperatingMode::Event);
+    input.setMode(InputClass::Pick, 1, OperatingMode::Event);
+    input.setMode(InputClass::Locator, 1, OperatingMode::Event);
+    for (int i = 0; i < 4; ++i) input.pump(std::chrono::milliseconds(0));
+    auto e = queue.awaitEvent(std::chrono::milliseconds(0));
+    REQUIRE(e);
+    CHECK(e->inputClass == InputClass::Choice);
+    CHECK(e->device == 2);
+    CHECK(std::get<ChoiceMeasure>(e->measure).choice == 2);
+    e = queue.awaitEvent(std::chrono::milliseconds(0));
+    REQUIRE(e);
+    CHECK(std::get<ChoiceMeasure>(e->measure).choice == 1);
+    e = queue.awaitEvent(std::chrono::milliseconds(0));
+    REQUIRE(e);
+    CHECK(e->inputClass == InputClass::Valuator);
+    CHECK(std::get<ValuatorMeasure>(e->measure).value == Approx(7.5));
+    // Outside them a click is a pick and a locator, as ever.
+    e = queue.awaitEvent(std::chrono::milliseconds(0));
+    REQUIRE(e);
+    CHECK(e->inputClass == InputClass::Pick);
+    CHECK(e->moreSimultaneous);
 }

@@ -358,3 +358,19 @@ TEST_CASE("model clipping volume: world half spaces, indicator, intersect, resto
     CHECK(list.items[4].modelClipPlanes ==
           std::vector<glm::dvec4>{{0, 0, -1, 6}});  // restored to the inherited one
 }
+
+TEST_CASE("a network nested deeper than the limit gives an error, not a crash", "[traverse][errors]") {
+    Scene s;
+    const int depth = static_cast<int>(kMaxNetworkDepth) + 5;
+    for (int id = depth; id >= 1; --id) s.build(id, {executeStructure(id + 1)});
+    s.ws->postStructure(1, 0);
+    try {
+        s.ws->display();
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK(e.number() == errors::NetworkTooDeep);
+    }
+    CHECK_THROWS_AS(s.store->pathsToDescendants(1, StructurePathOrder::TopFirst, 0), Error);
+    CHECK(s.store->pathsToAncestors(depth, StructurePathOrder::TopFirst, 0).front().size() ==
+          std::size_t(depth));
+}

@@ -109,5 +109,11 @@ inline Rgb at(const phigs::Image& image, std::uint32_t x, std::uint32_t y) {
 inline bool near(Rgb c, int r, int g, int b, int tolerance = 8) {
     return std::abs(c.r - r) <= tolerance && std::abs(c.g - g) <= tolerance && std::abs(c.b - b) <= tolerance;
 }
+/// Whether the pixel holding position `p` (pixels, y down) shows the colour `rgb` (0..1 each).
+inline bool shows(const phigs::Image& image, glm::dvec2 p, glm::dvec3 rgb, int tolerance = 12) {
+    const Rgb c = at(image, std::uint32_t(p.x), std::uint32_t(p.y));
+    return near(c, int(std::lround(rgb.x * 255)), int(std::lround(rgb.y * 255)),
+                int(std::lround(rgb.z * 255)), tolerance);
+}
 
 }  // namespace render_test

@@ -25,13 +25,6 @@ using namespace std::chrono_literals;
 
 namespace {
 
-bool shows(const Image& image, glm::dvec2 pixel, glm::dvec3 rgb) {
-    const std::uint8_t* p = image.pixel(std::uint32_t(pixel.x), std::uint32_t(pixel.y));
-    for (int c = 0; c < 3; ++c)
-        if (std::abs(int(p[c]) - int(std::lround(rgb[c] * 255))) > 12) return false;
-    return true;
-}
-
 /// Real pointer events through the X server, at window pixels.
 class Pointer {
 public:

@@ -94,6 +94,7 @@ const std::map<int, const char*>& messages() {
         {903, "Input/Output error has occurred while writing"},
         {-201, "Ignoring function, executing this structure would make the structure network cyclic"},
         {-202, "Ignoring function, the element data is invalid"},
+        {-203, "Ignoring function, the structure network is nested too deeply"},
     };
     return table;
 }

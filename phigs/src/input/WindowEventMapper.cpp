@@ -48,11 +48,9 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
         [&](const auto& e) -> std::optional<InputAction> {
             using T = std::decay_t<decltype(e)>;
             if constexpr (std::is_same_v<T, ButtonPress>) {
+                // A click in a choice panel stays a pick: WorkstationInput turns it into the
+                // choice, for this source and a script alike. A slider needs the drag, here.
                 if (e.button == Button::Left && !e.shift) {
-                    for (const ChoicePanel& p : layout_.panels)
-                        if (const auto n = p.choiceAt(e.position))
-                            return make(action::Choice{*n, p.device, {}},
-                                        "menu '" + p.alternatives[*n - 1] + "'");
                     for (const ValuatorSlider& s : layout_.sliders)
                         if (s.contains(e.position)) {
                             dragging_ = &s;

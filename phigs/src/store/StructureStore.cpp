@@ -524,6 +524,9 @@ std::vector<StructurePath> StructureStore::pathsToAncestors(int id, StructurePat
 }
 
 void StructureStore::collectDescendants(int id, StructurePath& path, std::vector<StructurePath>& out) const {
+    if (path.size() > kMaxNetworkDepth)
+        raise(log_, errors::NetworkTooDeep, "INQUIRE PATHS TO DESCENDANTS",
+              "more than " + std::to_string(kMaxNetworkDepth) + " levels");
     const Structure* s = find(id);
     bool leaf = true;
     if (s)

@@ -389,7 +389,8 @@ private:
     }
 
     /// A hash of the versions of every structure a subtree executes, memoized per traversal.
-    std::uint64_t subtreeStamp(int id) {
+    std::uint64_t subtreeStamp(int id, std::size_t depth = 0) {
+        if (path_.size() + depth > kMaxNetworkDepth) tooDeep();
         if (auto it = stamps_.find(id); it != stamps_.end()) return it->second;
         const Structure* s = store_.find(id);
         std::uint64_t h = mix(mix(baseStamp_, static_cast<std::uint32_t>(id)), s ? s->version : 0);
@@ -403,13 +404,19 @@ private:
                         known.second.push_back(x->structureId);
             }
             std::vector<int> children = known.second;
-            for (int child : children) h = mix(h, subtreeStamp(child));
+            for (int child : children) h = mix(h, subtreeStamp(child, depth + 1));
         }
         stamps_[id] = h;
         return h;
     }
 
+    [[noreturn]] static void tooDeep() {
+        throw Error(errors::NetworkTooDeep, "TRAVERSAL",
+                    "more than " + std::to_string(kMaxNetworkDepth) + " nested EXECUTE STRUCTURE levels");
+    }
+
     void execute(int id, State& child) {
+        if (path_.size() > kMaxNetworkDepth) tooDeep();
         if (!subtrees_) {
             walk(id, child);
             return;

@@ -112,10 +112,7 @@ void WindowWorkstation::release() {
     vkDeviceWaitIdle(device);
     destroySwapchain();
     renderer_.reset();
-    if (readback_) vkDestroyBuffer(device, readback_, nullptr);
-    if (readbackMemory_) vkFreeMemory(device, readbackMemory_, nullptr);
-    readback_ = VK_NULL_HANDLE;
-    readbackMemory_ = VK_NULL_HANDLE;
+    destroyReadbackBuffer(context_, readback_);
     if (cmd_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &cmd_);
     if (done_) vkDestroyFence(device, done_, nullptr);
     if (rendered_) vkDestroySemaphore(device, rendered_, nullptr);
@@ -175,32 +172,8 @@ void WindowWorkstation::createSwapchain() {
     vkGetSwapchainImagesKHR(device, swapchain_, &count, images_.data());
 
     // One depth image for all framebuffers: frames are drawn one at a time.
-    VkImageCreateInfo depthInfo{};
-    depthInfo.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
-    depthInfo.imageType = VK_IMAGE_TYPE_2D;
-    depthInfo.format = Renderer::kDepthFormat;
-    depthInfo.extent = {extent_.width, extent_.height, 1};
-    depthInfo.mipLevels = 1;
-    depthInfo.arrayLayers = 1;
-    depthInfo.samples = VK_SAMPLE_COUNT_1_BIT;
-    depthInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
-    depthInfo.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    check(vkCreateImage(device, &depthInfo, nullptr, &depth_.image), "vkCreateImage (depth)");
-    VkMemoryRequirements req{};
-    vkGetImageMemoryRequirements(device, depth_.image, &req);
-    VkMemoryAllocateInfo alloc{};
-    alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = context_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    check(vkAllocateMemory(device, &alloc, nullptr, &depth_.memory), "vkAllocateMemory (depth)");
-    check(vkBindImageMemory(device, depth_.image, depth_.memory, 0), "vkBindImageMemory");
-    VkImageViewCreateInfo viewInfo{};
-    viewInfo.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-    viewInfo.image = depth_.image;
-    viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = Renderer::kDepthFormat;
-    viewInfo.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-    check(vkCreateImageView(device, &viewInfo, nullptr, &depth_.view), "vkCreateImageView (depth)");
+    depth_ = createImageAttachment(context_, extent_.width, extent_.height, Renderer::kDepthFormat,
+                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
 
     for (VkImage image : images_) {
         VkImageViewCreateInfo colourInfo{};
@@ -234,10 +207,7 @@ void WindowWorkstation::destroySwapchain() {
     framebuffers_.clear();
     views_.clear();
     images_.clear();
-    if (depth_.view) vkDestroyImageView(device, depth_.view, nullptr);
-    if (depth_.image) vkDestroyImage(device, depth_.image, nullptr);
-    if (depth_.memory) vkFreeMemory(device, depth_.memory, nullptr);
-    depth_ = Attachment{};
+    destroyImageAttachment(context_, depth_);
     if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
     swapchain_ = VK_NULL_HANDLE;
 }
@@ -286,25 +256,9 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
     const bool copy = readback != nullptr && canReadBack_;
     if (copy) {
         const VkDeviceSize size = VkDeviceSize{extent_.width} * extent_.height * 4;
-        if (size > readbackSize_) {
-            if (readback_) vkDestroyBuffer(device, readback_, nullptr);
-            if (readbackMemory_) vkFreeMemory(device, readbackMemory_, nullptr);
-            VkBufferCreateInfo info{};
-            info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-            info.size = size;
-            info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-            check(vkCreateBuffer(device, &info, nullptr, &readback_), "vkCreateBuffer (readback)");
-            VkMemoryRequirements req{};
-            vkGetBufferMemoryRequirements(device, readback_, &req);
-            VkMemoryAllocateInfo alloc{};
-            alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-            alloc.allocationSize = req.size;
-            alloc.memoryTypeIndex =
-                context_.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                            VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-            check(vkAllocateMemory(device, &alloc, nullptr, &readbackMemory_), "vkAllocateMemory (readback)");
-            check(vkBindBufferMemory(device, readback_, readbackMemory_, 0), "vkBindBufferMemory");
-            readbackSize_ = size;
+        if (size > readback_.size) {
+            destroyReadbackBuffer(context_, readback_);
+            readback_ = createReadbackBuffer(context_, size);
         }
     }
     check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
@@ -335,8 +289,8 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyImageToBuffer(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1,
-                               &region);
+        vkCmdCopyImageToBuffer(cmd_, images_[index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer,
+                               1, &region);
         barrier(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                 VK_ACCESS_TRANSFER_READ_BIT, 0);
     }
@@ -374,9 +328,9 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
     if (copy) {
         Image image(extent_.width, extent_.height);
         void* mapped = nullptr;
-        check(vkMapMemory(device, readbackMemory_, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+        check(vkMapMemory(device, readback_.memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
         std::memcpy(image.rgba.data(), mapped, image.rgba.size());
-        vkUnmapMemory(device, readbackMemory_);
+        vkUnmapMemory(device, readback_.memory);
         const bool bgra =
             format_.format == VK_FORMAT_B8G8R8A8_UNORM || format_.format == VK_FORMAT_B8G8R8A8_SRGB;
         for (std::size_t i = 0; i < image.rgba.size(); i += 4) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,9 @@ private:
 
 /// The standard's text for an error number ("Ignoring function, ..."), or a generic text.
 std::string errorMessage(int number);
+
+/// The deepest nesting of EXECUTE STRUCTURE that traversal and the path inquiries follow.
+inline constexpr std::size_t kMaxNetworkDepth = 1000;
 
 /// ISO 9592 error numbers used by this implementation (negative: implementation-defined).
 namespace errors {
@@ -93,6 +97,7 @@ inline constexpr int MissingInArchive = 407;  ///< warning
 inline constexpr int WriteError = 903;
 inline constexpr int StructureCycle = -201;      ///< execute structure would make the network cyclic
 inline constexpr int InvalidElementData = -202;  ///< element contents break the primitive's rules
+inline constexpr int NetworkTooDeep = -203;      ///< more nested executes than kMaxNetworkDepth
 }  // namespace errors
 
 }  // namespace phigs

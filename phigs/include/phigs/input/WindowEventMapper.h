@@ -44,8 +44,9 @@ using WindowEvent = std::variant<window_event::ButtonPress, window_event::Button
 /// left click: pick (and locator); right click: locator only; pointer motion: move (sample
 /// locators follow it); shift + left drag: stroke;
 /// typed characters then Enter: string (Backspace edits, Escape breaks a request);
-/// F1..F12: choice 1..12. A left click in a choice panel of the echo layout chooses its
-/// alternative; a left press in a valuator slider starts a drag whose release sets the value.
+/// F1..F12: choice 1..12. A left press in a valuator slider of the echo layout starts a drag
+/// whose release sets the value (a click in a choice panel is a pick, which WorkstationInput
+/// turns into the choice).
 class WindowEventMapper {
 public:
     /// The action this event completes, if any.

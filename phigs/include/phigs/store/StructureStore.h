@@ -116,7 +116,8 @@ public:
     SearchResult elementSearch(int id, int start, SearchDirection direction,
                                const std::set<ElementType>& include,
                                const std::set<ElementType>& exclude) const;
-    /// Structures that execute `id`, and how often (INQUIRE ... reference count via paths).
+    /// INQUIRE PATHS TO ANCESTORS / DESCENDANTS: every path written top first, sorted; depth > 0
+    /// keeps the top (TopFirst) or bottom (BottomFirst) `depth` levels, duplicates removed.
     std::vector<StructurePath> pathsToAncestors(int id, StructurePathOrder order, int depth) const;
     std::vector<StructurePath> pathsToDescendants(int id, StructurePathOrder order, int depth) const;
     /// The structure and every structure it executes, directly or not (sorted).

@@ -2,6 +2,7 @@
 
 #include "phigs/image/Image.h"
 #include "phigs/vk/Context.h"
+#include "phigs/vk/ImageAttachment.h"
 
 #include <vulkan/vulkan.h>
 
@@ -34,22 +35,14 @@ public:
     Image readbackPixels() const;
 
 private:
-    struct Attachment {
-        VkImage image = VK_NULL_HANDLE;
-        VkDeviceMemory memory = VK_NULL_HANDLE;
-        VkImageView view = VK_NULL_HANDLE;
-    };
-    Attachment createAttachment(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect);
-    void destroyAttachment(Attachment& attachment);
     void release();
 
     Context& context_;
     std::uint32_t width_;
     std::uint32_t height_;
-    Attachment color_;
-    Attachment depth_;
-    VkBuffer readback_ = VK_NULL_HANDLE;
-    VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
+    ImageAttachment color_;
+    ImageAttachment depth_;
+    ReadbackBuffer readback_;
 };
 
 }  // namespace phigs::vk

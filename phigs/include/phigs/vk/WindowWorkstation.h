@@ -3,6 +3,7 @@
 #include "phigs/image/Image.h"
 #include "phigs/traverse/DrawList.h"
 #include "phigs/vk/Context.h"
+#include "phigs/vk/ImageAttachment.h"
 #include "phigs/vk/Renderer.h"
 
 #include <vulkan/vulkan.h>
@@ -44,11 +45,6 @@ public:
     Renderer& renderer() { return *renderer_; }
 
 private:
-    struct Attachment {
-        VkImage image = VK_NULL_HANDLE;
-        VkDeviceMemory memory = VK_NULL_HANDLE;
-        VkImageView view = VK_NULL_HANDLE;
-    };
     void createSwapchain();
     void destroySwapchain();
     void release();
@@ -62,15 +58,13 @@ private:
     std::vector<VkImage> images_;
     std::vector<VkImageView> views_;
     std::vector<VkFramebuffer> framebuffers_;
-    Attachment depth_;
+    ImageAttachment depth_;
     std::unique_ptr<Renderer> renderer_;
     VkSemaphore acquired_ = VK_NULL_HANDLE;
     VkSemaphore rendered_ = VK_NULL_HANDLE;
     VkFence done_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-    VkBuffer readback_ = VK_NULL_HANDLE;
-    VkDeviceMemory readbackMemory_ = VK_NULL_HANDLE;
-    VkDeviceSize readbackSize_ = 0;
+    ReadbackBuffer readback_;
     bool closed_ = false;
     bool canReadBack_ = false;
 };
