@@ -222,6 +222,11 @@ TEST_CASE("SURF_REDN menu: by count and by tolerance, U, W, U & W, error map, th
 
 TEST_CASE("MODELS menu: list, next, previous, rename, delete") {
     Driver d("models");
+    d.run({"choice CURVE_MAP"});
+    CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
+    CHECK(d.session.menuTitle() == "MAIN");
+    d.run({"choice SURF_REDN"});
+    CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
     d.run({"choice MODELS", "choice LIST"});
     CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
     d.run({"choice RETURN", "choice FILE", "choice READ_MODEL", "string transport.acm", "choice READ_MODEL",

@@ -188,7 +188,8 @@ void Session::handle(const EventReport& report) {
         fail(e.what());
     } catch (const phigs::Error& e) {
         fail(e.what());
-    } catch (const std::runtime_error& e) {
+    } catch (const std::exception& e) {
+        // Anything else (a retrieved archive that does not match the model, ...): reported, not fatal.
         fail(e.what());
     }
 }

@@ -54,8 +54,9 @@ void Session::choose(std::string item) {
         if (item == "FILE") setMenu("FILE", fileItems);
         if (item == "VIEW") setMenu("VIEW", viewItems);
         if (item == "MODELS") setMenu("MODELS", modelItems);
-        if (item == "CURVE_MAP" && requireModel()) setMenu("CURVE MAP", curveItems);
-        if (item == "SURF_REDN" && requireModel()) setMenu("SURF_REDN", reductionItems);
+        if ((item == "CURVE_MAP" || item == "SURF_REDN") && !requireModel()) return;
+        if (item == "CURVE_MAP") setMenu("CURVE MAP", curveItems);
+        if (item == "SURF_REDN") setMenu("SURF_REDN", reductionItems);
         if (item == "EXIT") {
             say("EXIT");
             finished_ = true;
@@ -292,7 +293,8 @@ void Session::pick(const PickMeasure& measure) {
             return;
         }
     const auto picked = ModelPicture::fromPath(measure.path);
-    if (!picked) return;
+    if (!picked || models_.empty() || std::size_t(picked->component) >= models_.current().components.size())
+        return;
     lastPick_ = picked;
     lastPickDetail_ = measure.surface;
     const Model& model = models_.current();
