@@ -1,7 +1,7 @@
-// Benchmark of the geom kernel against SISL in the same run: grid evaluation (point, first
-// derivatives, unit normal), line/surface intersection and point inversion on a 40 x 40
-// non-uniform bicubic surface, polynomial and rational. Prints figures, then one JSON object.
-// OpenCASCADE is not linked (see bench/README.md).
+// Benchmark of the geom kernel against SISL and OpenCASCADE in the same run: grid evaluation
+// (point, first derivatives, unit normal), line/surface intersection and point inversion on a
+// 40 x 40 non-uniform bicubic surface, polynomial and rational. Prints figures, then one JSON
+// object.
 
 #include "geom/Evaluate.h"
 #include "geom/GridEvaluator.h"
@@ -11,6 +11,19 @@
 
 #include <sisl.h>
 #include <glm/geometric.hpp>
+
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <GeomAdaptor_Surface.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Line.hxx>
+#include <IntCurveSurface_HInter.hxx>
+#include <IntCurveSurface_IntersectionPoint.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <gp_Lin.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -77,18 +90,83 @@ SISLSurf* toSisl(const geom::Surface& s) {
                    ku.data(), kv.data(), coef.data(), s.rational() ? 2 : 1, 3, 1);
 }
 
+/// OpenCASCADE keeps a knot vector as distinct values with multiplicities.
+void toOcctKnots(const std::vector<double>& knots, Handle(TColStd_HArray1OfReal) & values,
+                 Handle(TColStd_HArray1OfInteger) & multiplicities) {
+    std::vector<double> distinct;
+    std::vector<int> counts;
+    for (double k : knots) {
+        if (!distinct.empty() && k == distinct.back())
+            ++counts.back();
+        else {
+            distinct.push_back(k);
+            counts.push_back(1);
+        }
+    }
+    const int n = static_cast<int>(distinct.size());
+    values = new TColStd_HArray1OfReal(1, n);
+    multiplicities = new TColStd_HArray1OfInteger(1, n);
+    for (int i = 0; i < n; ++i) {
+        values->SetValue(i + 1, distinct[static_cast<std::size_t>(i)]);
+        multiplicities->SetValue(i + 1, counts[static_cast<std::size_t>(i)]);
+    }
+}
+
+/// The same surface for OpenCASCADE: pole (i, j) is control point (i, j), u the first index.
+Handle(Geom_BSplineSurface) toOcct(const geom::Surface& s) {
+    const int nu = static_cast<int>(s.countU), nv = static_cast<int>(s.countV);
+    TColgp_Array2OfPnt poles(1, nu, 1, nv);
+    TColStd_Array2OfReal weights(1, nu, 1, nv);
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const glm::dvec3& p = s.point(static_cast<std::size_t>(i), static_cast<std::size_t>(j));
+            poles.SetValue(i + 1, j + 1, gp_Pnt(p.x, p.y, p.z));
+            weights.SetValue(i + 1, j + 1,
+                             s.weight(static_cast<std::size_t>(i), static_cast<std::size_t>(j)));
+        }
+    Handle(TColStd_HArray1OfReal) ku, kv;
+    Handle(TColStd_HArray1OfInteger) mu, mv;
+    toOcctKnots(s.knotsU, ku, mu);
+    toOcctKnots(s.knotsV, kv, mv);
+    if (s.rational())
+        return new Geom_BSplineSurface(poles, weights, ku->Array1(), kv->Array1(), mu->Array1(), mv->Array1(),
+                                       s.degreeU, s.degreeV);
+    return new Geom_BSplineSurface(poles, ku->Array1(), kv->Array1(), mu->Array1(), mv->Array1(), s.degreeU,
+                                   s.degreeV);
+}
+
+glm::dvec3 toGlm(const gp_XYZ& p) {
+    return {p.X(), p.Y(), p.Z()};
+}
+
+// Queries per surface for intersection and closest point; OpenCASCADE, slower by 100x or more,
+// gets every occtStride-th one.
+constexpr int queries = 10000;
+constexpr std::size_t occtStride = 10;
+constexpr int occtQueries = queries / static_cast<int>(occtStride);
+
 struct Figures {
     double fastNs = 0, plainNs = 0, sislPointNs = 0, sislGridNs = 0;
     double intersectUs = 0, sislIntersectUs = 0, worstHitError = 0;
     int missed = 0, sislMissed = 0, countMismatch = 0;
     double closestUs = 0, sislClosestUs = 0, worstClosestError = 0, worstSislClosestError = 0;
     int closestFartherThanFoot = 0, sislFartherThanFoot = 0;
+    // OpenCASCADE: GeomAdaptor_Surface::D1 (span cache) and Geom_BSplineSurface::D1 per point,
+    // IntCurveSurface_HInter, GeomAPI_ProjectPointOnSurf.
+    double occtAdaptorNs = 0, occtBsplineNs = 0, occtWorstNormalDiff = 0;
+    double occtIntersectUs = 0, occtWorstHitDistance = 0;
+    int occtMissed = 0, occtCountMismatch = 0;
+    double occtClosestUs = 0, worstOcctClosestError = 0;
+    int occtFartherThanFoot = 0, occtNoAnswer = 0;
+    double occtTreeClosestUs = 0, worstOcctTreeClosestError = 0;
+    int occtTreeFartherThanFoot = 0, occtTreeNoAnswer = 0;
 };
 
 Figures run(bool rational) {
     Figures f;
     const geom::Surface s = benchSurface(rational);
     SISLSurf* ss = toSisl(s);
+    const Handle(Geom_BSplineSurface) occt = toOcct(s);
     const int grid = 512;
     std::vector<double> us(grid), vs(grid);
     for (int i = 0; i < grid; ++i) us[i] = vs[i] = (i + 0.5) / grid;
@@ -148,10 +226,42 @@ Figures run(bool rational) {
         f.sislGridNs = std::min(f.sislGridNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
     }
 
+    // OpenCASCADE: the adaptor caches the polynomial form of the current span (best of several
+    // passes, like the grid evaluators); the bare surface evaluates from the poles each call.
+    {
+        const GeomAdaptor_Surface adaptor(occt);
+        gp_Pnt p;
+        gp_Vec du, dv;
+        f.occtAdaptorNs = 1e300;
+        for (int r = 0; r < repeats; ++r) {
+            const auto a = Clock::now();
+            for (int i = 0; i < grid; ++i)
+                for (int j = 0; j < grid; ++j) {
+                    adaptor.D1(us[i], vs[j], p, du, dv);
+                    const gp_Vec n = du.Crossed(dv).Normalized();
+                    checksum += n.Z();
+                    if (r == 0)
+                        f.occtWorstNormalDiff =
+                            std::max(f.occtWorstNormalDiff,
+                                     glm::length(toGlm(n.XYZ()) -
+                                                 samples[static_cast<std::size_t>(i * grid + j)].normal) +
+                                         glm::length(toGlm(p.XYZ()) -
+                                                     samples[static_cast<std::size_t>(i * grid + j)].point));
+                }
+            f.occtAdaptorNs = std::min(f.occtAdaptorNs, seconds(a, Clock::now()) * 1e9 / (grid * grid));
+        }
+        t0 = Clock::now();
+        for (int i = 0; i < grid; ++i)
+            for (int j = 0; j < grid; ++j) {
+                occt->D1(us[i], vs[j], p, du, dv);
+                checksum += du.Crossed(dv).Normalized().Z();
+            }
+        f.occtBsplineNs = seconds(t0, Clock::now()) * 1e9 / (grid * grid);
+    }
+
     // Line/surface intersection: random lines through known points, within 45 degrees of the normal.
     std::mt19937 rng(99);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const int queries = 10000;
     struct Line {
         glm::dvec3 o, d, p;
     };
@@ -168,6 +278,7 @@ Figures run(bool rational) {
     }
     const geom::SurfaceIntersector intersector(s);
     std::vector<std::size_t> ourCounts;
+    std::vector<std::vector<glm::dvec3>> occtHits(lines.size());
     t0 = Clock::now();
     for (const Line& l : lines) {
         const auto hits = intersector.intersect(l.o, l.d);
@@ -207,6 +318,40 @@ Figures run(bool rational) {
     t1 = Clock::now();
     f.sislIntersectUs = seconds(t0, t1) * 1e6 / queries;
 
+    // OpenCASCADE on the infinite line, like ours and s1856, on every occtStride-th line only: it
+    // builds a polyhedron of the surface per query, tens of ms each. Each OCCT hit is compared
+    // with the nearest of our hits on the same line.
+    {
+        const Handle(GeomAdaptor_Surface) surface = new GeomAdaptor_Surface(occt);
+        IntCurveSurface_HInter inter;
+        t0 = Clock::now();
+        for (std::size_t k = 0; k < lines.size(); k += occtStride) {
+            const Line& l = lines[k];
+            const Handle(GeomAdaptor_Curve) curve = new GeomAdaptor_Curve(
+                new Geom_Line(gp_Lin(gp_Pnt(l.o.x, l.o.y, l.o.z), gp_Dir(l.d.x, l.d.y, l.d.z))));
+            inter.Perform(curve, surface);
+            const int count = inter.IsDone() ? inter.NbPoints() : 0;
+            bool found = false;
+            for (int h = 1; h <= count; ++h) {
+                const glm::dvec3 x = toGlm(inter.Point(h).Pnt().XYZ());
+                found = found || glm::length(x - l.p) < 1e-7;
+                occtHits[k].push_back(x);
+                checksum += inter.Point(h).W();
+            }
+            if (!found) ++f.occtMissed;
+            if (static_cast<std::size_t>(count) != ourCounts[k]) ++f.occtCountMismatch;
+        }
+        f.occtIntersectUs = seconds(t0, Clock::now()) * 1e6 / occtQueries;
+        for (std::size_t k = 0; k < lines.size(); k += occtStride) {
+            const auto ours = intersector.intersect(lines[k].o, lines[k].d);
+            for (const glm::dvec3& x : occtHits[k]) {
+                double nearest = 1e300;
+                for (const auto& h : ours) nearest = std::min(nearest, glm::length(h.point - x));
+                if (!ours.empty()) f.occtWorstHitDistance = std::max(f.occtWorstHitDistance, nearest);
+            }
+        }
+    }
+
     // Closest points for points near the surface (the foot point is known).
     const geom::SurfaceProjector projector(s);
     std::vector<std::pair<glm::dvec3, double>> near;
@@ -232,6 +377,29 @@ Figures run(bool rational) {
     }
     t1 = Clock::now();
     f.sislClosestUs = seconds(t0, t1) * 1e6 / queries;
+    // OpenCASCADE, initialised once for many points, then one Perform per point (every
+    // occtStride-th point), with its default search (Grad) and its tree search.
+    for (const Extrema_ExtAlgo algo : {Extrema_ExtAlgo_Grad, Extrema_ExtAlgo_Tree}) {
+        const bool tree = algo == Extrema_ExtAlgo_Tree;
+        double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
+        occt->Bounds(u1, u2, v1, v2);
+        GeomAPI_ProjectPointOnSurf projection;
+        projection.Init(occt, u1, u2, v1, v2, algo);
+        t0 = Clock::now();
+        for (std::size_t k = 0; k < near.size(); k += occtStride) {
+            const auto& [p, h] = near[k];
+            projection.Perform(gp_Pnt(p.x, p.y, p.z));
+            if (projection.NbPoints() == 0) {
+                ++(tree ? f.occtTreeNoAnswer : f.occtNoAnswer);
+                continue;
+            }
+            const double dist = projection.LowerDistance();
+            double& worst = tree ? f.worstOcctTreeClosestError : f.worstOcctClosestError;
+            worst = std::max(worst, std::abs(dist - h));
+            if (dist > h + 1e-12) ++(tree ? f.occtTreeFartherThanFoot : f.occtFartherThanFoot);
+        }
+        (tree ? f.occtTreeClosestUs : f.occtClosestUs) = seconds(t0, Clock::now()) * 1e6 / occtQueries;
+    }
 
     freeSurf(ss);
     std::printf(
@@ -245,12 +413,28 @@ Figures run(bool rational) {
     std::printf(
         "  closest point %.2f us (worst |d - h| %.2e), SISL s1958 %.2f us (worst %.2e)   [checksum %.3f]\n",
         f.closestUs, f.worstClosestError, f.sislClosestUs, f.worstSislClosestError, checksum);
+    std::printf(
+        "  OpenCASCADE: GeomAdaptor_Surface::D1 %.1f ns/pt, Geom_BSplineSurface::D1 %.1f ns/pt (worst point "
+        "+ "
+        "normal diff from ours %.2e)\n",
+        f.occtAdaptorNs, f.occtBsplineNs, f.occtWorstNormalDiff);
+    std::printf(
+        "  OpenCASCADE IntCurveSurface_HInter %.2f us/query (missed %d, hit-count mismatches with ours %d, "
+        "worst distance of a hit from ours %.2e)\n",
+        f.occtIntersectUs, f.occtMissed, f.occtCountMismatch, f.occtWorstHitDistance);
+    std::printf(
+        "  OpenCASCADE GeomAPI_ProjectPointOnSurf Grad %.2f us (worst %.2e, farther than foot %d, no answer "
+        "%d), "
+        "Tree %.2f us (worst %.2e, farther than foot %d, no answer %d)\n",
+        f.occtClosestUs, f.worstOcctClosestError, f.occtFartherThanFoot, f.occtNoAnswer, f.occtTreeClosestUs,
+        f.worstOcctTreeClosestError, f.occtTreeFartherThanFoot, f.occtTreeNoAnswer);
     return f;
 }
 
 }  // namespace
 
 int main() {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // figures appear as they come: a run takes minutes
     const Figures poly = run(false);
     const Figures rat = run(true);
     auto emit = [](const char* prefix, const Figures& f, bool last) {
@@ -262,14 +446,29 @@ int main() {
             "\"%s_worst_hit_error\": %.3e, \"%s_closest_us_per_query\": %.3f, "
             "\"%s_sisl_s1958_us_per_query\": %.3f, \"%s_closest_worst_error\": %.3e, "
             "\"%s_sisl_closest_worst_error\": %.3e, \"%s_closest_farther_than_foot\": %d, "
-            "\"%s_sisl_closest_farther_than_foot\": %d%s",
+            "\"%s_sisl_closest_farther_than_foot\": %d, ",
             prefix, f.fastNs, prefix, f.plainNs, prefix, f.sislPointNs, prefix, f.sislGridNs, prefix,
             f.intersectUs, prefix, f.sislIntersectUs, prefix, f.missed, prefix, f.sislMissed, prefix,
             f.countMismatch, prefix, f.worstHitError, prefix, f.closestUs, prefix, f.sislClosestUs, prefix,
             f.worstClosestError, prefix, f.worstSislClosestError, prefix, f.closestFartherThanFoot, prefix,
-            f.sislFartherThanFoot, last ? "" : ", ");
+            f.sislFartherThanFoot);
+        std::printf(
+            "\"%s_occt_adaptor_d1_ns_per_point\": %.2f, \"%s_occt_bspline_d1_ns_per_point\": %.2f, "
+            "\"%s_occt_grid_worst_diff\": %.3e, \"%s_occt_hinter_us_per_query\": %.3f, "
+            "\"%s_occt_missed\": %d, \"%s_occt_hit_count_mismatches\": %d, "
+            "\"%s_occt_worst_hit_distance_from_ours\": %.3e, \"%s_occt_project_us_per_query\": %.3f, "
+            "\"%s_occt_closest_worst_error\": %.3e, \"%s_occt_closest_farther_than_foot\": %d, "
+            "\"%s_occt_closest_no_answer\": %d, \"%s_occt_project_tree_us_per_query\": %.3f, "
+            "\"%s_occt_tree_closest_worst_error\": %.3e, \"%s_occt_tree_closest_farther_than_foot\": %d, "
+            "\"%s_occt_tree_closest_no_answer\": %d%s",
+            prefix, f.occtAdaptorNs, prefix, f.occtBsplineNs, prefix, f.occtWorstNormalDiff, prefix,
+            f.occtIntersectUs, prefix, f.occtMissed, prefix, f.occtCountMismatch, prefix,
+            f.occtWorstHitDistance, prefix, f.occtClosestUs, prefix, f.worstOcctClosestError, prefix,
+            f.occtFartherThanFoot, prefix, f.occtNoAnswer, prefix, f.occtTreeClosestUs, prefix,
+            f.worstOcctTreeClosestError, prefix, f.occtTreeFartherThanFoot, prefix, f.occtTreeNoAnswer,
+            last ? "" : ", ");
     };
-    std::printf("{");
+    std::printf("{\"occt_queries_per_surface\": %d, ", occtQueries);
     emit("poly", poly, false);
     emit("rational", rat, true);
     std::printf("}\n");

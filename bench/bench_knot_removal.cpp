@@ -73,8 +73,8 @@ int main() {
     };
     const std::vector<Named> curves{{"ibeam", geom::iBeamCurve()}, {"airfoil", geom::nacaAirfoilCurve()}};
     std::printf("Curves: control points left, measured Hausdorff error, time (best of up to 5 runs)\n");
-    std::printf("%-8s %8s | %6s %10s %9s | %6s %10s %9s | %6s\n", "curve", "tol", "geom", "error", "ms",
-                "sisl", "error", "ms", "ratio");
+    std::printf("%-8s %8s | %6s %10s %9s | %6s %10s %9s | %6s | %6s %10s %9s\n", "curve", "tol", "geom",
+                "error", "ms", "sisl", "error", "ms", "ratio", "batch", "error", "ms");
     for (const Named& c : curves)
         for (double tol : {1e-2, 1.2e-3, 1e-3, 1e-4}) {
             geom::ReductionOptions o;
@@ -87,8 +87,14 @@ int main() {
             const double serr = s.points.empty() ? -1.0 : geom::measureDeviation(c.curve, s).maxError;
             const double ratio =
                 s.points.empty() ? 0.0 : double(r.curve.points.size()) / double(s.points.size());
-            std::printf("%-8s %8.1e | %6zu %10.3e %9.3f | %6zu %10.3e %9.3f | %6.2f\n", c.name, tol,
-                        r.curve.points.size(), r.deviation.maxError, ms, s.points.size(), serr, sms, ratio);
+            // The optional batch loop (ReductionOptions::batch) on the same input.
+            geom::ReductionOptions ob = o;
+            ob.batch = true;
+            geom::CurveReduction b;
+            const double bms = timeMs([&] { b = geom::reduceCurve(c.curve, ob); }, 3);
+            std::printf("%-8s %8.1e | %6zu %10.3e %9.3f | %6zu %10.3e %9.3f | %6.2f | %6zu %10.3e %9.3f\n",
+                        c.name, tol, r.curve.points.size(), r.deviation.maxError, ms, s.points.size(), serr,
+                        sms, ratio, b.curve.points.size(), b.deviation.maxError, bms);
             char key[64];
             std::snprintf(key, sizeof key, "%s_tol%.1e", c.name, tol);
             const std::string k = key;
@@ -98,6 +104,9 @@ int main() {
             figure(k + "_sisl_control_points", double(s.points.size()));
             figure(k + "_sisl_max_error", serr);
             figure(k + "_sisl_ms", sms);
+            figure(k + "_geom_batch_control_points", double(b.curve.points.size()));
+            figure(k + "_geom_batch_max_error", b.deviation.maxError);
+            figure(k + "_geom_batch_ms", bms);
         }
 
     std::printf("\nThesis count-driven cases (tolerance off, partitions of 5)\n");

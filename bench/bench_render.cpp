@@ -2,6 +2,7 @@
 // plus iso-lines, against a minimal baseline that draws the same vertex data with one pipeline
 // per topology and no toolkit around it; and the frame after editing one structure (one mesh).
 // Usage: bench_render [--triangles N] [--width W] [--height H] [--frames F]. Ends with one JSON object.
+#include "SceneMeshes.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/traverse/DrawList.h"
 #include "phigs/vk/Context.h"
@@ -29,33 +30,6 @@ using namespace phigs;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::shared_ptr<MeshData> sphere(glm::vec3 centre, float radius, int slices, int stacks, int isoLines) {
-    auto mesh = std::make_shared<MeshData>();
-    for (int j = 0; j <= stacks; ++j)
-        for (int i = 0; i <= slices; ++i) {
-            const float theta = 6.2831853f * float(i) / float(slices),
-                        phi = 3.14159265f * float(j) / float(stacks);
-            const glm::vec3 n(std::sin(phi) * std::cos(theta), std::sin(phi) * std::sin(theta),
-                              std::cos(phi));
-            mesh->positions.push_back(centre + radius * n);
-            mesh->normals.push_back(n);
-        }
-    const int row = slices + 1;
-    for (int j = 0; j < stacks; ++j)
-        for (int i = 0; i < slices; ++i) {
-            const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-            mesh->triangles.insert(mesh->triangles.end(), {a, c, b, b, c, d});
-        }
-    for (int k = 1; k < isoLines; ++k) {
-        std::vector<std::uint32_t> u, v;
-        for (int s = 0; s <= slices; ++s) u.push_back((k * stacks / isoLines) * row + s);
-        for (int s = 0; s <= stacks; ++s) v.push_back(s * row + k * slices / isoLines);
-        mesh->isoLines.push_back(u);
-        mesh->isoLines.push_back(v);
-    }
-    return mesh;
-}
 
 VkShaderModule shader(VkDevice device, const char* name) {
     const auto words = shaders::spirv(name);
@@ -333,9 +307,9 @@ int main(int argc, char** argv) {
         long isoSegments = 0;
         for (int k = 0; k < count; ++k) {
             const float r = 0.5f / float(side);
-            auto m =
-                sphere({(float(k % side) + 0.5f) / float(side), (float(k / side) + 0.5f) / float(side), 0.5f},
-                       r * 0.95f, slices, stacks, 8);
+            auto m = render_test::sphere(
+                {(float(k % side) + 0.5f) / float(side), (float(k / side) + 0.5f) / float(side), 0.5f},
+                r * 0.95f, slices, stacks, 8);
             for (const auto& line : m->isoLines) isoSegments += long(line.size()) - 1;
             meshes.push_back(m);
             DrawMesh d;

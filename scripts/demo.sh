@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# README command 1: set up, build, and run the main job headless on lavapipe, writing its
-# pictures under out/ and printing their paths.
+# README command 1: set up, build, and run the main job headless on lavapipe: the ACSYNT demo
+# session (apps/acsynt/data/demo.session) replayed, writing its four-view pictures and a text
+# summary under out/ and printing their paths.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-./build/apps/smoke/phigs-smoke --output out/smoke.png
+./build/apps/acsynt/acsynt --script apps/acsynt/data/demo.session --output out/

@@ -15,6 +15,10 @@ packages=(
   catch2                             # tests
   hershey-fonts-data                 # stroke fonts for PHIGS text
   libsisl-dev                        # baseline in the geometry benchmarks
+  libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths
+  libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)
+  libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
+  libtbb-dev                         #   libtbb.so, named by OpenCASCADE's CMake config
 )
 missing=()
 for package in "${packages[@]}"; do

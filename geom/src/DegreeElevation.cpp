@@ -1,5 +1,6 @@
 #include "geom/DegreeElevation.h"
 
+#include "DenseLu.h"
 #include "geom/Basis.h"
 #include "geom/ControlNet.h"
 #include "geom/GeometryError.h"
@@ -40,31 +41,15 @@ void clampNet(int degree, std::vector<double>& knots, ControlNet& net) {
     }
 }
 
-/// Solves A X = B in place by LU with partial pivoting; A is n x n, B is n rows of m doubles.
+/// Solves A X = B in place; A is n x n, B is n rows of m doubles, solved one column at a time.
 void solveDense(std::vector<double>& A, std::vector<double>& B, std::size_t n, std::size_t m) {
-    for (std::size_t k = 0; k < n; ++k) {
-        std::size_t pivot = k;
-        for (std::size_t i = k + 1; i < n; ++i)
-            if (std::abs(A[i * n + k]) > std::abs(A[pivot * n + k])) pivot = i;
-        if (!(std::abs(A[pivot * n + k]) > 0.0))
-            throw GeometryError("elevateDegree: the collocation system is singular");
-        if (pivot != k) {
-            for (std::size_t j = 0; j < n; ++j) std::swap(A[k * n + j], A[pivot * n + j]);
-            for (std::size_t j = 0; j < m; ++j) std::swap(B[k * m + j], B[pivot * m + j]);
-        }
-        for (std::size_t i = k + 1; i < n; ++i) {
-            const double f = A[i * n + k] / A[k * n + k];
-            if (f == 0.0) continue;
-            for (std::size_t j = k; j < n; ++j) A[i * n + j] -= f * A[k * n + j];
-            for (std::size_t j = 0; j < m; ++j) B[i * m + j] -= f * B[k * m + j];
-        }
-    }
-    for (std::size_t k = n; k-- > 0;) {
-        for (std::size_t j = 0; j < m; ++j) {
-            double x = B[k * m + j];
-            for (std::size_t i = k + 1; i < n; ++i) x -= A[k * n + i] * B[i * m + j];
-            B[k * m + j] = x / A[k * n + k];
-        }
+    const detail::DenseLu lu(std::move(A), n, 0.0);
+    if (lu.singular()) throw GeometryError("elevateDegree: the collocation system is singular");
+    std::vector<double> column(n);
+    for (std::size_t j = 0; j < m; ++j) {
+        for (std::size_t i = 0; i < n; ++i) column[i] = B[i * m + j];
+        column = lu.solve(std::move(column));
+        for (std::size_t i = 0; i < n; ++i) B[i * m + j] = column[i];
     }
 }
 

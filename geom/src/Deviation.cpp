@@ -1,5 +1,6 @@
 #include "geom/Deviation.h"
 
+#include "RemovalDetail.h"
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace geom {
@@ -19,6 +21,7 @@ namespace {
 // shape, so they bound the true ones from above; the global projection (geom's projectors) is
 // run on the samples that could hold the maximum (at least half the largest local distance),
 // where a nearer point elsewhere would change the answer. Elsewhere the local answer stands.
+// (Rational curves.)
 template <class Global>
 void refineLargest(std::vector<double>& distances, Global&& global) {
     double worst = 0.0;
@@ -28,6 +31,22 @@ void refineLargest(std::vector<double>& distances, Global&& global) {
             distances[i] = std::min(distances[i], global(i));
 }
 
+// The same maximum with fewer global projections: the samples go largest local distance first,
+// and the global projection stops once no local distance left exceeds the largest result.
+template <class Global>
+void largestFirst(std::vector<double>& distances, Global&& global) {
+    std::vector<std::size_t> order(distances.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return distances[a] > distances[b]; });
+    double worst = 0.0;
+    for (std::size_t i : order) {
+        if (distances[i] <= worst) break;
+        distances[i] = std::min(distances[i], global(i));
+        worst = std::max(worst, distances[i]);
+    }
+}
+
 std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3>& points,
                                 const std::vector<double>& seeds) {
     const CurveProjector projector(curve);
@@ -35,6 +54,59 @@ std::vector<double> distancesTo(const Curve& curve, const std::vector<glm::dvec3
     for (std::size_t i = 0; i < points.size(); ++i)
         out[i] = projector.closestPointFrom(points[i], seeds[i]).distance;
     refineLargest(out, [&](std::size_t i) { return projector.closestPoint(points[i]).distance; });
+    return out;
+}
+
+CurveDeviation summary(const std::vector<double>& da, const std::vector<double>& db) {
+    CurveDeviation out;
+    double sum = 0.0;
+    for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
+    for (double d : db) out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d), sum += d;
+    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
+    out.samples = da.size() + db.size();
+    out.meanError = sum / static_cast<double>(out.samples);
+    return out;
+}
+
+// Every sample's distance measured by point inversion (rational curves, different domains).
+CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    const std::vector<double> pa =
+        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
+    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
+    return summary(distancesTo(reduced, a, pa), distancesTo(original, b, pb));
+}
+
+// Distances from samples of `from` (at ascending params) to `to`, two polynomial curves on one
+// domain. |from(t) - to(t)| is the distance to a point of `to`, so it bounds the closest
+// distance from above: the samples are taken largest bound first, and each is measured by
+// Newton from t and, where that could still be the maximum, by the global closest point, until
+// the next bound is below the largest distance measured (no sample left can reach it). A sample
+// not measured keeps its bound, which is below the maximum, so the maximum is exactly that of
+// measuring them all; the mean is an upper bound.
+std::vector<double> sampleDistances(const Curve& from, const Curve& to, const std::vector<double>& params,
+                                    std::optional<CurveProjector>& projector) {
+    std::vector<glm::dvec3> a(params.size()), b(params.size());
+    detail::evaluateAscending(from.degree, from.knots, from.points.data(), from.points.size(), params,
+                              a.data());
+    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), params, b.data());
+    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
+    std::vector<double> out(params.size());
+    std::vector<std::size_t> order(params.size());
+    for (std::size_t i = 0; i < params.size(); ++i) out[i] = glm::length(a[i] - b[i]), order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
+    double worst = 0.0;
+    for (std::size_t i : order) {
+        if (out[i] <= worst) break;
+        double d = detail::newtonDistance(toSampler, a[i], params[i], out[i]);
+        if (d > worst) {
+            if (!projector) projector.emplace(to);
+            d = std::min(d, projector->closestPoint(a[i]).distance);
+        }
+        out[i] = d;
+        worst = std::max(worst, d);
+    }
     return out;
 }
 
@@ -54,21 +126,18 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    if (original.rational() || reduced.rational())
+        return measureDeviationByProjection(original, reduced, samplesPerSpan);
+    if (original.domainStart() != reduced.domainStart() || original.domainEnd() != reduced.domainEnd())
+        return measureDeviationByProjection(original, reduced, samplesPerSpan);
     const std::vector<double> pa =
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    const std::vector<glm::dvec3> a = evaluateMany(original, pa), b = evaluateMany(reduced, pb);
-    const std::vector<double> da = distancesTo(reduced, a, pa);
-    const std::vector<double> db = distancesTo(original, b, pb);
-    CurveDeviation out;
-    double sum = 0.0;
-    for (double d : da) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d), sum += d;
-    for (double d : db) out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d), sum += d;
-    out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
-    out.samples = da.size() + db.size();
-    out.meanError = sum / static_cast<double>(out.samples);
-    return out;
+    std::optional<CurveProjector> toReduced, toOriginal;
+    const std::vector<double> da = sampleDistances(original, reduced, pa, toReduced);
+    const std::vector<double> db = sampleDistances(reduced, original, pb, toOriginal);
+    return summary(da, db);
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {
@@ -88,7 +157,7 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
             onReduced[k] = reducedGrid[k].point;
             out.error[k] = toOriginal.closestPointFrom(onReduced[k], {out.u[i], out.v[j]}).distance;
         }
-    refineLargest(out.error, [&](std::size_t k) { return toOriginal.closestPoint(onReduced[k]).distance; });
+    largestFirst(out.error, [&](std::size_t k) { return toOriginal.closestPoint(onReduced[k]).distance; });
     double sum = 0.0;
     for (double d : out.error) {
         out.maxReducedToOriginal = std::max(out.maxReducedToOriginal, d);
@@ -100,17 +169,25 @@ SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduce
         spanSamples(original.knotsU, original.degreeU, original.countU, samplesPerSpan);
     const std::vector<double> ov =
         spanSamples(original.knotsV, original.degreeV, original.countV, samplesPerSpan);
+    // The other way only the maximum is reported: |S(u,v) - S'(u,v)| bounds each vertex's
+    // distance from above, so the vertices are measured largest bound first (Newton from (u,v),
+    // then the global closest point where that could still be the maximum) until no bound left
+    // can reach the largest distance found.
     const std::vector<GridSample> originalGrid = GridEvaluator(original).evaluate(ou, ov);
-    std::vector<glm::dvec3> onOriginal(ou.size() * ov.size());
-    std::vector<double> back(onOriginal.size());
-    for (std::size_t i = 0; i < ou.size(); ++i)
-        for (std::size_t j = 0; j < ov.size(); ++j) {
-            const std::size_t k = i * ov.size() + j;
-            onOriginal[k] = originalGrid[k].point;
-            back[k] = toReduced.closestPointFrom(onOriginal[k], {ou[i], ov[j]}).distance;
-        }
-    refineLargest(back, [&](std::size_t k) { return toReduced.closestPoint(onOriginal[k]).distance; });
-    for (double d : back) out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
+    const std::vector<GridSample> reducedThere = GridEvaluator(reduced).evaluate(ou, ov);
+    std::vector<double> bound(originalGrid.size());
+    std::vector<std::size_t> order(bound.size());
+    for (std::size_t k = 0; k < bound.size(); ++k)
+        bound[k] = glm::length(originalGrid[k].point - reducedThere[k].point), order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bound[a] > bound[b]; });
+    for (std::size_t k : order) {
+        if (bound[k] <= out.maxOriginalToReduced) break;
+        const glm::dvec3& q = originalGrid[k].point;
+        double d = std::min(bound[k],
+                            toReduced.closestPointFrom(q, {ou[k / ov.size()], ov[k % ov.size()]}).distance);
+        if (d > out.maxOriginalToReduced) d = std::min(d, toReduced.closestPoint(q).distance);
+        out.maxOriginalToReduced = std::max(out.maxOriginalToReduced, d);
+    }
     out.maxError = std::max(out.maxOriginalToReduced, out.maxReducedToOriginal);
     return out;
 }

@@ -1,5 +1,6 @@
 #include "geom/Interpolate.h"
 
+#include "DenseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -29,36 +30,22 @@ struct Row {
     glm::dvec3 rhs{0.0};
 };
 
-/// Solves A X = B (A square, three right-hand sides) by Gaussian elimination with partial
-/// pivoting; the systems are small (one unknown per control point) so a dense solve is fine.
-std::vector<glm::dvec3> solve(std::vector<Row> rows) {
+/// Solves the square system of the rows; they are few (one unknown per control point), so a
+/// dense solve is fine.
+std::vector<glm::dvec3> solve(const std::vector<Row>& rows) {
     const std::size_t n = rows.size();
-    double scale = 0.0;
-    for (const Row& r : rows)
-        for (double a : r.coefficients) scale = std::max(scale, std::abs(a));
-    for (std::size_t col = 0; col < n; ++col) {
-        std::size_t pivot = col;
-        for (std::size_t r = col + 1; r < n; ++r)
-            if (std::abs(rows[r].coefficients[col]) > std::abs(rows[pivot].coefficients[col])) pivot = r;
-        if (std::abs(rows[pivot].coefficients[col]) <= 1e-13 * scale)
-            throw GeometryError("interpolateCubic: the interpolation system is singular (unknown " +
-                                std::to_string(col) + "); check the continuities and tangents");
-        std::swap(rows[col], rows[pivot]);
-        const Row& p = rows[col];
-        for (std::size_t r = col + 1; r < n; ++r) {
-            const double f = rows[r].coefficients[col] / p.coefficients[col];
-            if (f == 0.0) continue;
-            for (std::size_t k = col; k < n; ++k) rows[r].coefficients[k] -= f * p.coefficients[k];
-            rows[r].rhs -= f * p.rhs;
-        }
+    std::vector<double> matrix;
+    std::vector<glm::dvec3> rhs;
+    matrix.reserve(n * n);
+    for (const Row& r : rows) {
+        matrix.insert(matrix.end(), r.coefficients.begin(), r.coefficients.end());
+        rhs.push_back(r.rhs);
     }
-    std::vector<glm::dvec3> x(n);
-    for (std::size_t i = n; i-- > 0;) {
-        glm::dvec3 s = rows[i].rhs;
-        for (std::size_t k = i + 1; k < n; ++k) s -= rows[i].coefficients[k] * x[k];
-        x[i] = s / rows[i].coefficients[i];
-    }
-    return x;
+    const detail::DenseLu lu(std::move(matrix), n, 1e-13);
+    if (lu.singular())
+        throw GeometryError("interpolateCubic: the interpolation system is singular (unknown " +
+                            std::to_string(lu.singularColumn()) + "); check the continuities and tangents");
+    return lu.solve(std::move(rhs));
 }
 
 void checkData(const InterpolationData& data, const std::vector<Continuity>& continuities) {
@@ -212,7 +199,7 @@ Curve interpolateCubic(const InterpolationData& data) {
         throw GeometryError("interpolateCubic: internal error, " + std::to_string(rows.size()) +
                             " equations for " + std::to_string(unknowns) + " unknowns");
 
-    const std::vector<glm::dvec3> x = solve(std::move(rows));
+    const std::vector<glm::dvec3> x = solve(rows);
     std::vector<glm::dvec3> control(controlCount);
     for (std::size_t c = 0; c < controlCount; ++c) control[c] = x[c % unknowns];
     return Curve(kDegree, std::move(knots), std::move(control));

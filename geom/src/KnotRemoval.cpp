@@ -113,10 +113,13 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     return out;
 }
 
-LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> knots,
-                                            std::span<const glm::dvec3> points, std::size_t sequences,
-                                            std::span<const double> values, const EndConditions& ends,
-                                            int margin) {
+namespace {
+
+// removeKnotsLeastSquares; with fit false the window's coefficients are left as placeholders
+// (the caller refits them) and only the bookkeeping is done.
+LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::span<const glm::dvec3> points,
+                                std::size_t sequences, std::span<const double> values,
+                                const EndConditions& ends, int margin, bool fit) {
     const char* where = "removeKnotsLeastSquares";
     if (degree < 1) throw GeometryError(std::string(where) + ": degree must be at least 1");
     if (sequences == 0 || points.size() % sequences != 0)
@@ -174,6 +177,21 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
         throw GeometryError(std::string(where) + ": the end conditions leave no coefficient free near " +
                             std::to_string(knots[removed.front()]));
 
+    auto oldIndex = [&](std::size_t c) { return static_cast<long>(c) < cL ? c : c + nr; };
+    LeastSquaresRemoval out;
+    out.firstChanged = static_cast<std::size_t>(cL);
+    out.lastChanged = static_cast<std::size_t>(cH);
+    out.changedFrom = tau[out.firstChanged];
+    out.changedTo = tau[out.lastChanged + p + 1];
+    if (!fit) {
+        out.points.resize(nt * sequences);
+        for (std::size_t c = 0; c < nt; ++c)
+            for (std::size_t s = 0; s < sequences; ++s)
+                out.points[c * sequences + s] = points[oldIndex(c) * sequences + s];
+        out.knots = std::move(tau);
+        return out;
+    }
+
     // Local knot insertion matrix from tau to knots over tau columns [c0, c1]: insert the removed
     // values into the identity, one Boehm step each.
     const std::size_t c0 = static_cast<std::size_t>(std::max(0L, cL - static_cast<long>(p) - 1));
@@ -184,7 +202,6 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
     for (std::size_t idx : removed) removedValues.push_back(knots[idx]);
     const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, removedValues, where);
 
-    auto oldIndex = [&](std::size_t c) { return static_cast<long>(c) < cL ? c : c + nr; };
     const std::size_t freeCount = static_cast<std::size_t>(cH - cL + 1);
     const std::size_t width = 3 * sequences;
     std::vector<double> mat, rhs;
@@ -215,7 +232,6 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
     const std::vector<double> x =
         detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
 
-    LeastSquaresRemoval out;
     out.knots = std::move(tau);
     out.points.resize(nt * sequences);
     for (std::size_t c = 0; c < nt; ++c)
@@ -227,11 +243,23 @@ LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> 
                 out.points[c * sequences + s] = points[oldIndex(c) * sequences + s];
             }
         }
-    out.firstChanged = static_cast<std::size_t>(cL);
-    out.lastChanged = static_cast<std::size_t>(cH);
-    out.changedFrom = out.knots[out.firstChanged];
-    out.changedTo = out.knots[out.lastChanged + p + 1];
     return out;
+}
+
+}  // namespace
+
+LeastSquaresRemoval removeKnotsLeastSquares(int degree, std::span<const double> knots,
+                                            std::span<const glm::dvec3> points, std::size_t sequences,
+                                            std::span<const double> values, const EndConditions& ends,
+                                            int margin) {
+    return removeKnots(degree, knots, points, sequences, values, ends, margin, true);
+}
+
+LeastSquaresRemoval detail::removalWindow(int degree, std::span<const double> knots,
+                                          std::span<const glm::dvec3> points, std::size_t sequences,
+                                          std::span<const double> values, const EndConditions& ends,
+                                          int margin) {
+    return removeKnots(degree, knots, points, sequences, values, ends, margin, false);
 }
 
 Curve removeKnotsLeastSquares(const Curve& curve, std::span<const double> values, const EndConditions& ends,

@@ -51,7 +51,14 @@ double removalWeight(int degree, std::span<const double> knots, std::span<const 
     const double z = knots[r];
     auto reduced = [&](std::size_t i) { return i < r ? knots[i] : knots[i + 1]; };
 
-    std::vector<double> a(m * m, 0.0);
+    // Small systems (every degree up to 8 with one sequence) stay on the stack: this runs for
+    // every knot in every ranking of the reduction loop.
+    double smallA[100];
+    V smallRhs[10];
+    std::vector<double> heapA(m * m > 100 ? m * m : 0);
+    std::vector<V> heapRhs(m * sequences > 10 ? m * sequences : 0);
+    const std::span<double> a = m * m > 100 ? std::span<double>(heapA) : std::span<double>(smallA, m * m);
+    std::fill(a.begin(), a.end(), 0.0);
     a[0] = 1.0;
     for (std::size_t q = 1; q + 1 < m; ++q) {
         const std::size_t i = firstRow + q;
@@ -64,7 +71,8 @@ double removalWeight(int degree, std::span<const double> knots, std::span<const 
     for (std::size_t q = 0; q < m; ++q) a[q * m + m - 1] = (q % 2 == 0) ? 1.0 : -1.0;
 
     // One matrix, one right-hand side per sequence: eliminate with partial pivoting once.
-    std::vector<V> rhs(m * sequences);
+    const std::span<V> rhs =
+        m * sequences > 10 ? std::span<V>(heapRhs) : std::span<V>(smallRhs, m * sequences);
     for (std::size_t q = 0; q < m; ++q)
         for (std::size_t k = 0; k < sequences; ++k)
             rhs[q * sequences + k] = points[(firstRow + q) * sequences + k];

@@ -1,7 +1,7 @@
 #include "geom/ReferenceShapes.h"
 
-#include "geom/CurveFit.h"
 #include "geom/GeometryError.h"
+#include "geom/GlobalInterpolation.h"
 
 #include <cmath>
 #include <numbers>
@@ -17,7 +17,7 @@ Curve iBeamCurve(std::size_t controlPoints) {
         const double y = 5.0 + (x * x * x - x) * std::sin(std::numbers::pi * x / 180.0) / 7500.0;
         points[i] = {x, y, 0.0};
     }
-    return interpolateCurve(points, uniformParameters(controlPoints), 3);
+    return interpolateCurve(points, uniformParameters(controlPoints), 3, Closure::Open);
 }
 
 std::vector<glm::dvec3> nacaSymmetricPoints(std::size_t count, double chord, double thickness) {
@@ -41,7 +41,7 @@ std::vector<glm::dvec3> nacaSymmetricPoints(std::size_t count, double chord, dou
 
 Curve nacaAirfoilCurve(double chord, std::size_t controlPoints, double thickness) {
     const std::vector<glm::dvec3> points = nacaSymmetricPoints(controlPoints, chord, thickness);
-    return interpolateCurve(points, chordLengthParameters(points), 3);
+    return interpolateCurve(points, chordLengthParameters(points, Closure::Open), 3, Closure::Open);
 }
 
 Surface paraboloidSurface(std::size_t count) {
@@ -54,7 +54,8 @@ Surface paraboloidSurface(std::size_t count) {
             const double y = -50.0 + 100.0 * params[j];
             grid[i * count + j] = {x, y, (x * x + y * y) / 50.0};
         }
-    return interpolateSurface(grid, params, params, 3, 3);
+    return interpolateSurface(grid, count, count, GridParameters{params, params}, 3, 3, Closure::Open,
+                              Closure::Open);
 }
 
 Surface wingSurface(std::size_t sections, std::size_t pointsPerSection) {
@@ -63,7 +64,7 @@ Surface wingSurface(std::size_t sections, std::size_t pointsPerSection) {
     const double sweep = std::tan(30.0 * std::numbers::pi / 180.0);
     const double dihedral = std::tan(3.0 * std::numbers::pi / 180.0);
     const std::vector<glm::dvec3> airfoil = nacaSymmetricPoints(pointsPerSection, 1.0, 0.12);
-    const std::vector<double> paramsV = chordLengthParameters(airfoil);
+    const std::vector<double> paramsV = chordLengthParameters(airfoil, Closure::Open);
     const std::vector<double> paramsU = uniformParameters(sections);
     std::vector<glm::dvec3> grid(sections * pointsPerSection);
     for (std::size_t i = 0; i < sections; ++i) {
@@ -79,7 +80,8 @@ Surface wingSurface(std::size_t sections, std::size_t pointsPerSection) {
             grid[i * pointsPerSection + j] = {x, s * semiSpan, z};
         }
     }
-    return interpolateSurface(grid, paramsU, paramsV, 3, 3);
+    return interpolateSurface(grid, sections, pointsPerSection, GridParameters{paramsU, paramsV}, 3, 3,
+                              Closure::Open, Closure::Open);
 }
 
 }  // namespace geom

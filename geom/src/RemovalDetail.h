@@ -2,15 +2,27 @@
 
 // Private to geom: the dense pieces shared by least-squares knot removal and data reduction.
 
+#include "geom/Basis.h"
 #include "geom/GeometryError.h"
+#include "geom/KnotRemoval.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace geom::detail {
+
+// removeKnotsLeastSquares without the local fit: the new knots, the window, and the old
+// coefficients in it as placeholders, for a caller that refits the window itself.
+LeastSquaresRemoval removalWindow(int degree, std::span<const double> knots,
+                                  std::span<const glm::dvec3> points, std::size_t sequences,
+                                  std::span<const double> values, const EndConditions& ends, int margin);
 
 // Least squares min |M x - B| for a dense rows x cols matrix (row-major) and `width` right-hand
 // sides (row-major rows x width) by Householder QR; returns cols x width. M must have full column
@@ -109,6 +121,204 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
         out[level] = saved;
     }
     return mu;
+}
+
+// The largest degree the span power forms below take; higher degrees use Basis.h.
+constexpr std::size_t smallDegree = 7;
+
+// The polynomial of one non-empty span in powers of s = (u - knots[span]) / (span length): the
+// Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
+// are their binomial differences. Horner on these is several times cheaper than Cox-de Boor
+// per point when a span holds several samples.
+inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, const glm::dvec3* points,
+                          glm::dvec3* power) {
+    static constexpr double binomial[smallDegree + 1][smallDegree + 1] = {{1},
+                                                                          {1, 1},
+                                                                          {1, 2, 1},
+                                                                          {1, 3, 3, 1},
+                                                                          {1, 4, 6, 4, 1},
+                                                                          {1, 5, 10, 10, 5, 1},
+                                                                          {1, 6, 15, 20, 15, 6, 1},
+                                                                          {1, 7, 21, 35, 35, 21, 7, 1}};
+    const double a = knots[span], b = knots[span + 1];
+    // Bezier point k is the blossom at (a^(p-k), b^k): the levels taken at a are shared, so
+    // state holds the de Boor triangle after r levels at a and each k finishes it at b.
+    glm::dvec3 state[smallDegree + 1], d[smallDegree + 1], bezier[smallDegree + 1];
+    for (std::size_t j = 0; j <= p; ++j) state[j] = points[span - p + j];
+    auto level = [&](glm::dvec3* net, std::size_t l, double x) {
+        for (std::size_t j = p; j >= l; --j) {
+            const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
+            const double alpha = (x - lo) / (hi - lo);
+            net[j] = (1.0 - alpha) * net[j - 1] + alpha * net[j];
+        }
+    };
+    for (std::size_t r = 0; r <= p; ++r) {
+        for (std::size_t j = r; j <= p; ++j) d[j] = state[j];
+        for (std::size_t l = r + 1; l <= p; ++l) level(d, l, b);
+        bezier[p - r] = d[p];
+        if (r < p) level(state, r + 1, a);
+    }
+    for (std::size_t k = 0; k <= p; ++k) {
+        glm::dvec3 sum(0.0);
+        for (std::size_t j = 0; j <= k; ++j)
+            sum += ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial[k][j] * bezier[j];
+        power[k] = binomial[p][k] * sum;
+    }
+}
+
+// Values and derivatives of one polynomial spline (degree, knots, count coefficients, which
+// must outlive it) at many parameters: the power form of the last span used is kept, so points
+// near each other (samples in order, Newton iterations) cost a Horner step each.
+class SplineSampler {
+public:
+    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count)
+        : degree_(degree),
+          p_(static_cast<std::size_t>(degree)),
+          knots_(knots),
+          points_(points),
+          count_(count) {
+        if (p_ > smallDegree) basis_.resize(3 * (p_ + 1));
+    }
+
+    double start() const { return knots_[p_]; }
+    double end() const { return knots_[count_]; }
+
+    glm::dvec3 value(double u) {
+        if (p_ > smallDegree) {
+            const std::size_t span = findSpan(degree_, knots_, count_, u);
+            basisFunctions(span, u, degree_, knots_, std::span<double>(basis_).first(p_ + 1));
+            glm::dvec3 c(0.0);
+            for (std::size_t k = 0; k <= p_; ++k) c += basis_[k] * points_[span - p_ + k];
+            return c;
+        }
+        const double s = locate(u);
+        glm::dvec3 c = power_[p_];
+        for (std::size_t k = p_; k-- > 0;) c = c * s + power_[k];
+        return c;
+    }
+
+    // The point and its first and second derivatives with respect to u.
+    void derivatives(double u, glm::dvec3& c, glm::dvec3& d1, glm::dvec3& d2) {
+        if (p_ > smallDegree) {
+            const std::size_t span = findSpan(degree_, knots_, count_, u);
+            basisDerivatives(span, u, degree_, knots_, 2, basis_);
+            c = d1 = d2 = glm::dvec3(0.0);
+            for (std::size_t k = 0; k <= p_; ++k) {
+                const glm::dvec3& q = points_[span - p_ + k];
+                c += basis_[k] * q;
+                d1 += basis_[p_ + 1 + k] * q;
+                d2 += basis_[2 * (p_ + 1) + k] * q;
+            }
+            return;
+        }
+        const double s = locate(u);
+        c = power_[p_];
+        d1 = d2 = glm::dvec3(0.0);
+        for (std::size_t k = p_; k-- > 0;) {
+            d2 = d2 * s + d1;
+            d1 = d1 * s + c;
+            c = c * s + power_[k];
+        }
+        const double h = knots_[span_ + 1] - knots_[span_];
+        d1 /= h;
+        d2 *= 2.0 / (h * h);
+    }
+
+private:
+    // Makes span_ the span of u (as findSpan) and returns u's local parameter in it.
+    double locate(double u) {
+        const bool inside = formed_ && knots_[span_] <= u &&
+                            (u < knots_[span_ + 1] || (span_ + 1 == count_ && u <= knots_[count_]));
+        if (!inside) {
+            span_ = findSpan(degree_, knots_, count_, u);
+            spanPowerForm(span_, p_, knots_.data(), points_, power_);
+            formed_ = true;
+        }
+        return (u - knots_[span_]) / (knots_[span_ + 1] - knots_[span_]);
+    }
+
+    int degree_;
+    std::size_t p_;
+    const std::vector<double>& knots_;
+    const glm::dvec3* points_;
+    std::size_t count_;
+    std::size_t span_ = 0;
+    bool formed_ = false;
+    glm::dvec3 power_[smallDegree + 1];
+    std::vector<double> basis_;
+};
+
+// Values of a polynomial spline (degree, knots, count coefficients) at parameters inside its
+// domain (ascending ones cost one power form per span).
+inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
+                              std::size_t count, std::span<const double> params, glm::dvec3* out) {
+    SplineSampler sampler(degree, knots, points, count);
+    for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
+}
+
+// The distance from target to a polynomial spline found by Newton from parameter u, never more
+// than `bound` (the caller's distance to a known point of the spline), stopping early once it is
+// at most `enough`. Every distance it takes is to a real point of the spline, so the answer
+// bounds the true closest distance from above.
+inline double newtonDistance(SplineSampler& spline, const glm::dvec3& target, double u, double bound,
+                             double* foot = nullptr, double enough = 0.0) {
+    const double lo = spline.start(), hi = spline.end();
+    double best = bound;
+    for (int it = 0; it < 8; ++it) {
+        glm::dvec3 c, d1, d2;
+        spline.derivatives(u, c, d1, d2);
+        const glm::dvec3 r = c - target;
+        if (glm::length(r) < best) {
+            best = glm::length(r);
+            if (foot) *foot = u;
+            if (best <= enough) break;
+        }
+        double h = glm::dot(d1, d1) + glm::dot(r, d2);
+        if (h <= 1e-6 * glm::dot(d1, d1)) h = glm::dot(d1, d1);
+        if (!(h > 0.0)) break;
+        const double next = std::clamp(u - glm::dot(r, d1) / h, lo, hi);
+        if (std::abs(next - u) <= 1e-15 * (hi - lo)) break;
+        u = next;
+    }
+    return best;
+}
+
+// Solves the symmetric positive definite banded system N X = B in place by Cholesky: N is n x n
+// with half bandwidth w, stored by rows as band[i * (w + 1) + k] = N(i, i + k); B has n rows of
+// `columns` glm::dvec3 each (b[i * columns + c]). Returns false when N is not positive definite.
+inline bool solveBanded(std::vector<double>& band, std::size_t n, std::size_t w, std::vector<glm::dvec3>& b,
+                        std::size_t columns = 1) {
+    const std::size_t wb = w + 1;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t k0 = i > w ? i - w : 0;
+        double d = band[i * wb];
+        for (std::size_t k = k0; k < i; ++k) d -= band[k * wb + (i - k)] * band[k * wb + (i - k)];
+        if (!(d > 0.0)) return false;
+        d = std::sqrt(d);
+        band[i * wb] = d;
+        for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j) {
+            double s = band[i * wb + (j - i)];
+            const std::size_t kj = j > w ? j - w : 0;
+            for (std::size_t k = std::max(k0, kj); k < i; ++k)
+                s -= band[k * wb + (i - k)] * band[k * wb + (j - k)];
+            band[i * wb + (j - i)] = s / d;
+        }
+    }
+    for (std::size_t c = 0; c < columns; ++c) {
+        for (std::size_t i = 0; i < n; ++i) {  // U^T y = b
+            glm::dvec3 s = b[i * columns + c];
+            for (std::size_t k = i > w ? i - w : 0; k < i; ++k)
+                s -= band[k * wb + (i - k)] * b[k * columns + c];
+            b[i * columns + c] = s / band[i * wb];
+        }
+        for (std::size_t i = n; i-- > 0;) {  // U x = y
+            glm::dvec3 s = b[i * columns + c];
+            for (std::size_t j = i + 1; j <= std::min(n - 1, i + w); ++j)
+                s -= band[i * wb + (j - i)] * b[j * columns + c];
+            b[i * columns + c] = s / band[i * wb];
+        }
+    }
+    return true;
 }
 
 }  // namespace geom::detail

@@ -1,5 +1,6 @@
 #include "GeomTestUtil.h"
 #include "geom/Basis.h"
+#include "geom/CurveProjector.h"
 #include "geom/DataReduction.h"
 #include "geom/Deviation.h"
 #include "geom/Evaluate.h"
@@ -256,4 +257,140 @@ TEST_CASE("the final measurement steps back when coarse loop samples let the tol
         REQUIRE(measureDeviation(c, r.curve, 2).maxError == r.deviation.maxError);
     }
     REQUIRE(steppedBack > 0);
+}
+
+TEST_CASE("batch curve reduction keeps the measured distance within the tolerance, degrees 2 to 5",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(61);
+    for (int p = 2; p <= 5; ++p)
+        for (double tol : {1e-2, 1e-3}) {
+            const Curve c = noisyRefinedCurve(rng, p, 40, 2e-4);
+            ReductionOptions o;
+            o.tolerance = tol;
+            o.batch = true;
+            const CurveReduction r = reduceCurve(c, o);
+            INFO("degree " << p << " tolerance " << tol);
+            REQUIRE(r.removed > 20);
+            REQUIRE(r.curve.points.size() == c.points.size() - r.removed);
+            REQUIRE(r.deviation.maxError <= tol);
+            const CurveDeviation dense = measureDeviation(c, r.curve, 64);
+            REQUIRE(dense.maxError <= tol * 1.001);
+            REQUIRE(r.curve.points.front() == c.points.front());
+            REQUIRE(r.curve.points.back() == c.points.back());
+            // The batch loop does fewer fits than there are knots removed one at a time.
+            REQUIRE(r.fits < r.removed);
+        }
+}
+
+TEST_CASE("batch reduction recovers the simpler curve and keeps fixed end derivatives",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(62);
+    for (int p = 2; p <= 5; ++p) {
+        const Curve simple = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 5), false, true);
+        std::uniform_real_distribution<double> unit(0.05, 0.95);
+        std::vector<double> inserted;
+        for (int i = 0; i < 12; ++i) inserted.push_back(unit(rng));
+        const Curve refined = refineKnots(simple, inserted);
+        ReductionOptions o;
+        o.tolerance = 1e-9;
+        o.batch = true;
+        const CurveReduction r = reduceCurve(refined, o);
+        INFO("degree " << p);
+        REQUIRE(r.removed == inserted.size());
+        REQUIRE(r.curve.knots == simple.knots);
+        for (std::size_t i = 0; i < simple.points.size(); ++i)
+            REQUIRE(glm::length(r.curve.points[i] - simple.points[i]) < 1e-10);
+    }
+    const Curve c = noisyRefinedCurve(rng, 4, 30, 1e-4);
+    ReductionOptions o;
+    o.tolerance = 1e-2;
+    o.batch = true;
+    o.ends.fixedDerivatives = 2;
+    const CurveReduction r = reduceCurve(c, o);
+    REQUIRE(r.removed > 0);
+    REQUIRE(r.deviation.maxError <= o.tolerance);
+    for (double u : {c.domainStart(), c.domainEnd()}) {
+        const std::vector<glm::dvec3> a = derivatives(c, u, 2), b = derivatives(r.curve, u, 2);
+        for (std::size_t k = 0; k <= 2; ++k)
+            REQUIRE(glm::length(a[k] - b[k]) <= 1e-8 * (1.0 + glm::length(a[k])));
+    }
+    ReductionOptions bad = o;
+    bad.rounds = 0;
+    REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("rounds"));
+}
+
+TEST_CASE("the curve deviation's maximum is that of the closest points of every sample",
+          "[geom][knots][reduction]") {
+    // measureDeviation inverts only the samples whose parametric distance could hold the
+    // maximum; inverting every sample globally must give the same maxima.
+    std::mt19937 rng(63);
+    for (int p = 2; p <= 5; ++p) {
+        const Curve c = noisyRefinedCurve(rng, p, 30, 1e-3);
+        ReductionOptions o;
+        o.maxRemovals = 20;
+        o.report = false;
+        const Curve reduced = reduceCurve(c, o).curve;
+        const CurveDeviation d = measureDeviation(c, reduced, 8);
+        auto bruteForce = [](const Curve& from, const Curve& to) {
+            const CurveProjector projector(to);
+            double worst = 0.0;
+            for (double u : spanSamples(from.knots, from.degree, from.points.size(), 8))
+                worst = std::max(worst, projector.closestPoint(evaluate(from, u)).distance);
+            return worst;
+        };
+        INFO("degree " << p);
+        REQUIRE(d.maxOriginalToReduced == Approx(bruteForce(c, reduced)).epsilon(1e-9));
+        REQUIRE(d.maxReducedToOriginal == Approx(bruteForce(reduced, c)).epsilon(1e-9));
+        REQUIRE(d.meanError <= d.maxError);
+        REQUIRE(d.maxError > 0.0);
+    }
+}
+
+TEST_CASE("a surface made by inserting knot rows reduces back to the simpler surface",
+          "[geom][knots][reduction]") {
+    // Every removal here is exact, so the coefficient bound on S - S' accepts it without the
+    // grid; the result must be the simpler surface itself.
+    std::mt19937 rng(64);
+    for (int p = 2; p <= 4; ++p) {
+        const Surface base = geomtest::bumpySurface(rng, p, p + 1, static_cast<std::size_t>(p + 3),
+                                                    static_cast<std::size_t>(p + 4), false);
+        std::uniform_real_distribution<double> unit(0.05, 0.95);
+        std::vector<double> iu, iv;
+        for (int i = 0; i < 8; ++i) iu.push_back(unit(rng)), iv.push_back(unit(rng));
+        const Surface refined = refineKnotsV(refineKnotsU(base, iu), iv);
+        ReductionOptions o;
+        o.tolerance = 1e-9;
+        const SurfaceReduction r = reduceSurface(refined, ReductionDirection::Both, o);
+        INFO("degree " << p);
+        REQUIRE(r.removedU == iu.size());
+        REQUIRE(r.removedV == iv.size());
+        REQUIRE(r.surface.knotsU == base.knotsU);
+        REQUIRE(r.surface.knotsV == base.knotsV);
+        for (std::size_t k = 0; k < base.points.size(); ++k)
+            REQUIRE(glm::length(r.surface.points[k] - base.points[k]) < 1e-9);
+        REQUIRE(r.deviation.maxError <= o.tolerance);
+    }
+}
+
+TEST_CASE("curve reduction and deviation above the power-form degree limit", "[geom][knots][reduction]") {
+    // Degrees above 7 take Cox-de Boor instead of the span power form in sampling and Newton.
+    std::mt19937 rng(65);
+    for (int p : {7, 8}) {
+        const Curve c = noisyRefinedCurve(rng, p, 30, 2e-4);
+        for (bool batch : {false, true}) {
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            o.batch = batch;
+            const CurveReduction r = reduceCurve(c, o);
+            INFO("degree " << p << " batch " << batch);
+            REQUIRE(r.removed > 10);
+            REQUIRE(r.deviation.maxError <= o.tolerance);
+            REQUIRE(measureDeviation(c, r.curve, 64).maxError <= o.tolerance * 1.001);
+            const CurveProjector projector(c);
+            double worst = 0.0;
+            for (double u : spanSamples(r.curve.knots, r.curve.degree, r.curve.points.size(), 16))
+                worst = std::max(worst, projector.closestPoint(evaluate(r.curve, u)).distance);
+            REQUIRE(r.deviation.maxReducedToOriginal == Approx(worst).epsilon(1e-9));
+        }
+    }
 }

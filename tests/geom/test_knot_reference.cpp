@@ -1,7 +1,6 @@
 // The reference cases of note 000 (Marcaly 1991, chapter 7) through the generators in
 // geom/ReferenceShapes.h, with the thesis's figures as the bar to meet.
 
-#include "geom/CurveFit.h"
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/ReferenceShapes.h"

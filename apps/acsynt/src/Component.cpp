@@ -1,6 +1,6 @@
 #include "acsynt/Component.h"
 
-#include "geom/SurfaceInterpolation.h"
+#include "geom/GlobalInterpolation.h"
 
 namespace acsynt {
 

@@ -1,51 +1,14 @@
 #include "acsynt/Patch.h"
 
+#include "geom/Bezier.h"
+#include "geom/BezierExtraction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 
 #include <algorithm>
+#include <span>
 
 namespace acsynt {
-namespace {
-
-/// Blossom of one cubic B-spline segment with local knots t[0..7] (segment [t3, t4]) and
-/// control points d[0..3], at the three arguments x (de Boor with one argument per level).
-glm::dvec3 blossom(const std::array<double, 8>& t, std::array<glm::dvec3, 4> d,
-                   const std::array<double, 3>& x) {
-    for (int r = 1; r <= 3; ++r)
-        for (int i = 3; i >= r; --i) {
-            const double a = (x[static_cast<std::size_t>(r - 1)] - t[static_cast<std::size_t>(i)]) /
-                             (t[static_cast<std::size_t>(i + 4 - r)] - t[static_cast<std::size_t>(i)]);
-            d[static_cast<std::size_t>(i)] =
-                (1.0 - a) * d[static_cast<std::size_t>(i - 1)] + a * d[static_cast<std::size_t>(i)];
-        }
-    return d[3];
-}
-
-/// The four Bezier points of a cubic B-spline segment: blossoms at (u0,u0,u0), (u0,u0,u1), ...
-std::array<glm::dvec3, 4> segmentToBezier(const std::array<double, 8>& t,
-                                          const std::array<glm::dvec3, 4>& d) {
-    const double a = t[3], b = t[4];
-    return {blossom(t, d, {a, a, a}), blossom(t, d, {a, a, b}), blossom(t, d, {a, b, b}),
-            blossom(t, d, {b, b, b})};
-}
-
-glm::dvec3 deCasteljau(std::array<glm::dvec3, 4> b, double s) {
-    for (int r = 1; r <= 3; ++r)
-        for (int i = 0; i + r <= 3; ++i)
-            b[static_cast<std::size_t>(i)] =
-                (1.0 - s) * b[static_cast<std::size_t>(i)] + s * b[static_cast<std::size_t>(i + 1)];
-    return b[0];
-}
-
-std::vector<std::size_t> nonEmptySpans(const std::vector<double>& knots, std::size_t count) {
-    std::vector<std::size_t> spans;
-    for (std::size_t s = 3; s < count; ++s)
-        if (knots[s] < knots[s + 1]) spans.push_back(s);
-    return spans;
-}
-
-}  // namespace
 
 PatchList buildPatches(const geom::Surface& surface) {
     geom::validate(surface);
@@ -54,52 +17,43 @@ PatchList buildPatches(const geom::Surface& surface) {
                                   std::to_string(surface.degreeU) + " x " + std::to_string(surface.degreeV));
     if (surface.rational())
         throw geom::GeometryError("patch list: the surface must be polynomial (no weights)");
-    const std::vector<std::size_t> spansU = nonEmptySpans(surface.knotsU, surface.countU);
-    const std::vector<std::size_t> spansW = nonEmptySpans(surface.knotsV, surface.countV);
+    // extractBezier gives one piece per non-empty span pair, u span slow, w span fast: the patches.
+    const std::vector<geom::BezierSurfacePiece> pieces = geom::extractBezier(surface);
     PatchList list;
-    list.countU = spansU.size();
-    list.countW = spansW.size();
-    list.patches.reserve(list.countU * list.countW);
-    for (std::size_t r = 0; r < spansU.size(); ++r)
-        for (std::size_t c = 0; c < spansW.size(); ++c) {
-            Patch p;
-            p.number = static_cast<int>(r * list.countW + c + 1);
-            p.row = r;
-            p.column = c;
-            p.spanU = spansU[r];
-            p.spanW = spansW[c];
-            for (std::size_t k = 0; k < 8; ++k) {
-                p.knotsU[k] = surface.knotsU[p.spanU - 3 + k];
-                p.knotsW[k] = surface.knotsV[p.spanW - 3 + k];
-            }
-            p.u0 = p.knotsU[3];
-            p.u1 = p.knotsU[4];
-            p.w0 = p.knotsW[3];
-            p.w1 = p.knotsW[4];
-            for (std::size_t i = 0; i < 4; ++i)
-                for (std::size_t j = 0; j < 4; ++j)
-                    p.hull[i * 4 + j] = surface.point(p.spanU - 3 + i, p.spanW - 3 + j);
-            // Bezier extraction: rows along w first, then the columns of the result along u.
-            std::array<glm::dvec3, 16> rows{};
-            for (std::size_t i = 0; i < 4; ++i) {
-                const auto b = segmentToBezier(
-                    p.knotsW, {p.hull[i * 4], p.hull[i * 4 + 1], p.hull[i * 4 + 2], p.hull[i * 4 + 3]});
-                for (std::size_t j = 0; j < 4; ++j) rows[i * 4 + j] = b[j];
-            }
-            for (std::size_t j = 0; j < 4; ++j) {
-                const auto b = segmentToBezier(p.knotsU, {rows[j], rows[4 + j], rows[8 + j], rows[12 + j]});
-                for (std::size_t i = 0; i < 4; ++i) p.bezier[i * 4 + j] = b[i];
-            }
-            p.corner = geom::evaluate(surface, p.u0, p.w0);
-            p.u1w0 = geom::evaluate(surface, p.u1, p.w0);
-            p.u0w1 = geom::evaluate(surface, p.u0, p.w1);
-            p.middle = geom::evaluate(surface, 0.5 * (p.u0 + p.u1), 0.5 * (p.w0 + p.w1));
-            const geom::SurfaceDerivatives d = geom::derivatives(surface, p.u0, p.w0, 1);
-            p.tangentU = d.at(1, 0);
-            p.tangentW = d.at(0, 1);
-            p.normal = geom::normalFromDerivatives(surface, p.u0, p.w0, p.tangentU, p.tangentW);
-            list.patches.push_back(p);
+    list.countW = static_cast<std::size_t>(std::count_if(
+        pieces.begin(), pieces.end(), [&](const auto& b) { return b.spanU == pieces[0].spanU; }));
+    list.countU = pieces.size() / list.countW;
+    list.patches.reserve(pieces.size());
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const geom::BezierSurfacePiece& piece = pieces[k];
+        Patch p;
+        p.number = static_cast<int>(k + 1);
+        p.row = k / list.countW;
+        p.column = k % list.countW;
+        p.spanU = piece.spanU;
+        p.spanW = piece.spanV;
+        for (std::size_t i = 0; i < 8; ++i) {
+            p.knotsU[i] = surface.knotsU[p.spanU - 3 + i];
+            p.knotsW[i] = surface.knotsV[p.spanW - 3 + i];
         }
+        p.u0 = piece.u0;
+        p.u1 = piece.u1;
+        p.w0 = piece.v0;
+        p.w1 = piece.v1;
+        for (std::size_t i = 0; i < 4; ++i)
+            for (std::size_t j = 0; j < 4; ++j)
+                p.hull[i * 4 + j] = surface.point(p.spanU - 3 + i, p.spanW - 3 + j);
+        std::copy(piece.surface.points.begin(), piece.surface.points.end(), p.bezier.begin());
+        p.corner = geom::evaluate(surface, p.u0, p.w0);
+        p.u1w0 = geom::evaluate(surface, p.u1, p.w0);
+        p.u0w1 = geom::evaluate(surface, p.u0, p.w1);
+        p.middle = geom::evaluate(surface, 0.5 * (p.u0 + p.u1), 0.5 * (p.w0 + p.w1));
+        const geom::SurfaceDerivatives d = geom::derivatives(surface, p.u0, p.w0, 1);
+        p.tangentU = d.at(1, 0);
+        p.tangentW = d.at(0, 1);
+        p.normal = geom::normalFromDerivatives(surface, p.u0, p.w0, p.tangentU, p.tangentW);
+        list.patches.push_back(p);
+    }
     return list;
 }
 
@@ -115,11 +69,10 @@ const Patch* PatchList::find(double u, double w) const {
 }
 
 glm::dvec3 evaluatePatchHull(const Patch& p, double u, double w) {
-    std::array<glm::dvec3, 4> column{};
-    for (std::size_t i = 0; i < 4; ++i)
-        column[i] = blossom(
-            p.knotsW, {p.hull[i * 4], p.hull[i * 4 + 1], p.hull[i * 4 + 2], p.hull[i * 4 + 3]}, {w, w, w});
-    return blossom(p.knotsU, column, {u, u, u});
+    // The piece alone: 4 x 4 control points on the 8 + 8 local knots, domain [u0, u1] x [w0, w1].
+    const geom::Surface local(3, 3, {p.knotsU.begin(), p.knotsU.end()}, {p.knotsW.begin(), p.knotsW.end()}, 4,
+                              4, {p.hull.begin(), p.hull.end()});
+    return geom::evaluate(local, u, w);
 }
 
 glm::dvec3 evaluateBezierPatch(const Patch& p, double u, double w) {
@@ -127,9 +80,8 @@ glm::dvec3 evaluateBezierPatch(const Patch& p, double u, double w) {
     const double t = (w - p.w0) / (p.w1 - p.w0);
     std::array<glm::dvec3, 4> column{};
     for (std::size_t i = 0; i < 4; ++i)
-        column[i] =
-            deCasteljau({p.bezier[i * 4], p.bezier[i * 4 + 1], p.bezier[i * 4 + 2], p.bezier[i * 4 + 3]}, t);
-    return deCasteljau(column, s);
+        column[i] = geom::deCasteljau<glm::dvec3>(std::span(p.bezier).subspan(i * 4, 4), t);
+    return geom::deCasteljau<glm::dvec3>(column, s);
 }
 
 std::array<glm::dvec3, 16> powerBasisCoefficients(const Patch& p) {

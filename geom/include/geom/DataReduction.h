@@ -25,6 +25,14 @@ struct ReductionOptions {
     /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
     /// (they would fail); 0 tries every knot.
     double weightCutoff = 8.0;
+    /// In tolerance mode, remove knots in batches with one global banded least-squares refit per
+    /// batch (about 1.5x fewer instructions, but 5-10% more control points left on the reference
+    /// curves); false (the default) runs the group-at-a-time loop with local refits.
+    bool batch = false;
+    /// Batch mode only: rounds of removal; between rounds, lawsonSteps reweighted refits even the
+    /// error out (towards the best max-norm fit) and the knots that failed are tried again.
+    int rounds = 4;
+    int lawsonSteps = 3;
     EndConditions ends;
     /// Measurement density: samples per knot span of the original shape (each direction).
     int samplesPerSpan = 8;

@@ -11,16 +11,21 @@ namespace geom {
 /// The measured distance between two curves (an original and its approximation), both ways.
 struct CurveDeviation {
     double maxError = 0.0;              ///< Hausdorff distance: the larger of the two below
-    double meanError = 0.0;             ///< mean distance over every sample of both curves
+    double meanError = 0.0;             ///< mean distance over every sample of both curves (see below)
     double maxOriginalToReduced = 0.0;  ///< max over samples of the original of their distance to the other
     double maxReducedToOriginal = 0.0;  ///< the same the other way
     std::size_t samples = 0;            ///< points measured, both curves together
 };
 
 /// Samples each curve densely (samplesPerSpan points in every non-empty knot span, ends
-/// included) and measures each sample's distance to the other curve by point inversion: Newton
-/// from the same parameter, and for the samples that could hold the maximum (at least half the
-/// largest) also the global closest point of CurveProjector, the nearer of the two counting.
+/// included) and measures each sample's distance to the other curve by point inversion. For two
+/// polynomial curves on one domain, |f(t) - g(t)| bounds a sample's distance from above, so the
+/// samples are inverted largest bound first (Newton from t, then CurveProjector's global closest
+/// point where the result could be the maximum) until no bound left exceeds the largest distance
+/// found: the maxima are those of inverting every sample, and the mean counts the bound for the
+/// samples not inverted (an upper bound, below the maximum). Otherwise (rational curves,
+/// different domains) every sample gets Newton from the same parameter and those that could
+/// hold the maximum (at least half the largest) also the global closest point.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
@@ -37,9 +42,11 @@ struct SurfaceDeviation {
 
 /// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and
 /// measures every vertex's distance to the original surface by point inversion (Newton from the
-/// same parameters; for the vertices that could hold the maximum also the global closest point
-/// of SurfaceProjector), then the original's grid to the reduced surface the same way. Both surfaces must
-/// share the parameter domain (as knot removal keeps it).
+/// same parameters; then SurfaceProjector's global closest point for the largest values first,
+/// until no Newton value left exceeds the largest result), then the maximum from the original's
+/// grid to the reduced surface: |S(u,v) - S'(u,v)| bounds each vertex's distance, and the
+/// vertices are inverted largest bound first until no bound left exceeds the largest distance
+/// found. Both surfaces must share the parameter domain (as knot removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
 /// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.

@@ -50,7 +50,7 @@ struct PatchList {
 /// The patch list of a polynomial bicubic surface; throws geom::GeometryError for any other.
 PatchList buildPatches(const geom::Surface& surface);
 
-/// The patch's piece evaluated from its local knots and hull alone (de Boor on 8 + 8 knots).
+/// The patch's piece evaluated from its local knots and hull alone (a 4 x 4 surface on 8 + 8 knots).
 glm::dvec3 evaluatePatchHull(const Patch& patch, double u, double w);
 
 /// The patch's piece evaluated from its Bezier points (de Casteljau), (u, w) in surface parameters.

@@ -15,6 +15,9 @@ namespace geom {
 /// Periodic closes the curve with C^(degree-1) continuity across the seam.
 enum class Closure { Open, Periodic };
 
+/// Parameters spaced evenly on [0, 1], one per point (count >= 2), for Open data.
+std::vector<double> uniformParameters(std::size_t count);
+
 /// Chord-length parameters of a polyline, normalized to [0, 1]. Open: one value per point, 0
 /// first and 1 last. Periodic: the points do not repeat the first one; the closing chord back to
 /// it counts, and the answer has one more value (1) for the closing point. Throws GeometryError

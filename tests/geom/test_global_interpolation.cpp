@@ -1,6 +1,6 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
-#include "geom/SurfaceInterpolation.h"
+#include "geom/GlobalInterpolation.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>

@@ -1,5 +1,6 @@
-#include "geom/SurfaceInterpolation.h"
+#include "geom/GlobalInterpolation.h"
 
+#include "DenseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -12,52 +13,6 @@
 namespace geom {
 namespace {
 
-/// LU factorization with partial pivoting of a small dense square matrix, reused for every
-/// right-hand side of one interpolation direction.
-class DenseLu {
-public:
-    DenseLu(std::vector<double> matrix, std::size_t size) : a_(std::move(matrix)), n_(size), pivot_(size) {
-        double scale = 0.0;
-        for (double x : a_) scale = std::max(scale, std::abs(x));
-        for (std::size_t k = 0; k < n_; ++k) {
-            std::size_t best = k;
-            for (std::size_t r = k + 1; r < n_; ++r)
-                if (std::abs(at(r, k)) > std::abs(at(best, k))) best = r;
-            if (!(std::abs(at(best, k)) > 1e-13 * scale))
-                throw GeometryError("interpolation: the collocation matrix is singular at column " +
-                                    std::to_string(k) + " (parameters too close together)");
-            pivot_[k] = best;
-            if (best != k)
-                for (std::size_t c = 0; c < n_; ++c) std::swap(at(k, c), at(best, c));
-            for (std::size_t r = k + 1; r < n_; ++r) {
-                const double f = at(r, k) / at(k, k);
-                at(r, k) = f;
-                for (std::size_t c = k + 1; c < n_; ++c) at(r, c) -= f * at(k, c);
-            }
-        }
-    }
-
-    std::vector<glm::dvec3> solve(std::vector<glm::dvec3> b) const {
-        // The stored multipliers went through every later row swap, so all swaps come first.
-        for (std::size_t k = 0; k < n_; ++k) std::swap(b[k], b[pivot_[k]]);
-        for (std::size_t k = 0; k < n_; ++k)
-            for (std::size_t r = k + 1; r < n_; ++r) b[r] -= at(r, k) * b[k];
-        for (std::size_t k = n_; k-- > 0;) {
-            for (std::size_t c = k + 1; c < n_; ++c) b[k] -= at(k, c) * b[c];
-            b[k] /= at(k, k);
-        }
-        return b;
-    }
-
-private:
-    double& at(std::size_t r, std::size_t c) { return a_[r * n_ + c]; }
-    double at(std::size_t r, std::size_t c) const { return a_[r * n_ + c]; }
-
-    std::vector<double> a_;
-    std::size_t n_;
-    std::vector<std::size_t> pivot_;
-};
-
 /// The interpolation problem of one direction: knots, the factored collocation matrix and
 /// how many control points a solution has.
 struct Interpolator {
@@ -65,7 +20,7 @@ struct Interpolator {
     Closure closure;
     std::size_t dataCount;
     std::vector<double> knots;
-    DenseLu lu;
+    detail::DenseLu lu;
 
     std::size_t controlCount() const {
         return closure == Closure::Periodic ? dataCount + static_cast<std::size_t>(degree) : dataCount;
@@ -118,7 +73,11 @@ Interpolator makeInterpolator(std::span<const double> parameters, std::size_t da
             matrix[k * dataCount + column] += basis[j];
         }
     }
-    return Interpolator{degree, closure, dataCount, std::move(knots), DenseLu(std::move(matrix), dataCount)};
+    detail::DenseLu lu(std::move(matrix), dataCount, 1e-13);
+    if (lu.singular())
+        throw GeometryError("interpolation: the collocation matrix is singular at column " +
+                            std::to_string(lu.singularColumn()) + " (parameters too close together)");
+    return Interpolator{degree, closure, dataCount, std::move(knots), std::move(lu)};
 }
 
 /// Chord-length parameters of one polyline, or empty when it has no length.
@@ -141,6 +100,14 @@ void checkFinite(std::span<const glm::dvec3> points) {
 }
 
 }  // namespace
+
+std::vector<double> uniformParameters(std::size_t count) {
+    if (count < 2)
+        throw GeometryError("uniformParameters: need at least 2 points, got " + std::to_string(count));
+    std::vector<double> t(count);
+    for (std::size_t i = 0; i < count; ++i) t[i] = static_cast<double>(i) / static_cast<double>(count - 1);
+    return t;
+}
 
 std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Closure closure) {
     if (points.size() < 2) throw GeometryError("chord-length parameters: need at least 2 points");

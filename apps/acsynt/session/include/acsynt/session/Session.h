@@ -1,0 +1,236 @@
+#pragma once
+
+#include "acsynt/ModelList.h"
+#include "acsynt/session/ModelPicture.h"
+#include "acsynt/session/ScreenLayout.h"
+#include "geom/CurveFile.h"
+#include "geom/Deviation.h"
+#include "geom/curvemap/CurveMapper.h"
+#include "phigs/core/Phigs.h"
+#include "phigs/input/InputQueue.h"
+#include "phigs/input/InputSource.h"
+#include "phigs/input/WorkstationInput.h"
+#include "phigs/pick/WorkstationInteraction.h"
+#include "phigs/ws/WorkstationMapping.h"
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace acsynt {
+
+/// What a session starts from.
+struct SessionSettings {
+    int width = 1024, height = 768;               ///< screen size in pixels
+    std::filesystem::path outputDirectory = ".";  ///< snapshots, summary, saved files
+    /// Where relative names of files to read are looked up after the working directory.
+    std::vector<std::filesystem::path> searchPath{ACSYNT_DATA_DIR};
+    /// The workstation type (its display surface, 1024 x 768 device units, is shown on the
+    /// width x height pixels, which must have its 4:3 shape).
+    phigs::WorkstationType workstationType = phigs::WorkstationType::OffscreenImage;
+};
+
+/// The marker of DEFINE POINT: the reference point on the picked patch.
+struct ReferencePoint {
+    int component = -1;
+    int patch = 0;
+    double u = 0, w = 0;
+};
+
+/// One MAP CURVE: which curve on which component, and what came out.
+struct MappingRecord {
+    std::string model, component, curveFile;
+    ReferencePoint reference;
+    std::size_t parts = 0, loops = 0, boundaryWalks = 0;
+    std::vector<std::size_t> loopsPerPart;
+    std::vector<std::vector<glm::dvec3>> polylines;  ///< the mapped loops in model coordinates
+};
+
+/// One data reduction of a component (SURF_REDN).
+struct ReductionRecord {
+    std::string model, reducedModel, component, direction, mode;
+    double tolerance = 0;
+    std::size_t count = 0;
+    std::size_t countUBefore = 0, countWBefore = 0, countUAfter = 0, countWAfter = 0;
+    std::size_t removedU = 0, removedW = 0;
+    double maxError = 0;
+    geom::SurfaceDeviation deviation;
+    int componentIndex = -1;
+};
+
+/// The menu-driven ACSYNT design session: a PHIGS workstation showing the model (one or four
+/// views), the menu panel, the pointer-valuator pad, sliders and the message line, all as
+/// structures; its devices (choice 1 the menu, choice 2 the pad, pick 1, valuators 1-4, string 1)
+/// are fed by any input source (a script or a window), and every action is recorded.
+class Session {
+public:
+    /// `snapshot(file)` writes what the workstation shows to a PNG, for `snapshot NAME`.
+    using PictureSink = std::function<void(const std::filesystem::path&)>;
+
+    /// Opens PHIGS and the workstation; throws std::invalid_argument for a screen whose shape is
+    /// not the display surface's.
+    Session(SessionSettings settings, phigs::InputSource& source);
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    /// The directives a session script may use: snapshot NAME, summary NAME.
+    static std::set<std::string> directives();
+
+    /// Handles events until EXIT or until the source is exhausted.
+    void run();
+    /// Handles at most one event (waiting up to `timeout`); false once the session is over.
+    bool step(std::chrono::milliseconds timeout);
+    /// Where `snapshot NAME` pictures go (a vk::WorkstationDisplay of workstation(), a window).
+    void setSnapshot(PictureSink snapshot) { snapshot_ = std::move(snapshot); }
+    /// Called after each handled event (a window presents the picture).
+    void setPresenter(std::function<void(const phigs::DrawList&)> present) { present_ = std::move(present); }
+    bool finished() const { return finished_; }
+
+    /// The current picture (regenerated when the structures changed).
+    const phigs::DrawList& picture();
+    phigs::Workstation& workstation() { return *workstation_; }
+    const ScreenLayout& layout() const { return layout_; }
+    /// Screen pixel of a world point in view `view` (the view table's orientation and mapping).
+    glm::dvec2 pixelOf(const glm::dvec3& world, int view);
+    /// The workstation transformation on the screen's pixels (render, pick and echo share it).
+    const phigs::WorkstationMapping& mapping() const { return *mapping_; }
+
+    const std::string& message() const { return message_; }
+    const std::vector<std::string>& log() const { return log_; }
+    const std::string& menuTitle() const { return menuTitle_; }
+    const std::vector<std::string>& menuItems() const { return menuItems_; }
+    const ModelList& models() const { return models_; }
+    const std::optional<ReferencePoint>& reference() const { return reference_; }
+    const std::optional<PickedPatch>& lastPick() const { return lastPick_; }
+    const std::optional<phigs::SurfacePickDetail>& lastPickDetail() const { return lastPickDetail_; }
+    const std::vector<MappingRecord>& mappings() const { return mappings_; }
+    const std::vector<ReductionRecord>& reductions() const { return reductions_; }
+    const std::vector<std::filesystem::path>& pictures() const { return pictures_; }
+    bool fourViews() const { return fourViews_; }
+    const DisplayStyle& style() const { return style_; }
+
+    /// The text summary (patch picked, marker (u, w), mapped loops, control points before and after).
+    std::string summary() const;
+    /// The session so far as a script that replays it.
+    std::string recording() const;
+
+private:
+    enum class Phase {
+        None,
+        SelectComponent,
+        SelectPatch,
+        AcceptReject,
+        MoveMarker,
+        Placed,
+        SelectReduction
+    };
+    enum class Awaiting {
+        Nothing,
+        ModelFile,
+        CurveFile,
+        SaveFile,
+        ArchiveFile,
+        RetrieveFile,
+        Tolerance,
+        Count,
+        ModelName
+    };
+
+    void setupWorkstation();
+    void setupDevices();
+    void setMenu(const std::string& title, std::vector<std::string> items);
+    void say(const std::string& text);
+    void fail(const std::string& text);
+    void handle(const phigs::EventReport& report);
+    void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
+    void choose(std::string item);
+    void padButton(int button);
+    void pick(const phigs::PickMeasure& measure);
+    void valuator(int device, double value);
+    void text(const std::string& input);
+    void prompt(const std::string& text, Awaiting what);
+
+    void mainMenu();
+    void fileMenu(const std::string& item);
+    void viewMenu(const std::string& item);
+    void curveMenu(const std::string& item);
+    void reductionMenu(const std::string& item);
+    void modelsMenu(const std::string& item);
+
+    void readModel(const std::string& name);
+    void readCurve(const std::string& input);
+    void saveModel(const std::string& name);
+    void archive(const std::string& name, bool retrieve);
+    void reduce(int component, double tolerance, std::size_t count);
+    void mapCurve(bool previewOnly);
+    void showModel();  ///< rebuilds the model structures after the current model changed
+    void updateViews();
+    void drawScreen();  ///< menu, pad, sliders, message
+    glm::dvec3 npc(glm::dvec2 pixel, double z = 0.5) const { return mapping_->pixelsToNpc(pixel, z); }
+    std::vector<glm::dvec3> outline(const PixelBox& box) const;
+    void drawOverlay();
+    void drawMapped(bool all);
+    void drawErrorMap();
+    void moveMarker(double u, double w);
+    bool requireModel();
+    std::filesystem::path findInput(const std::string& name) const;
+    std::filesystem::path outputPath(const std::string& name) const;
+
+    SessionSettings settings_;
+    ScreenLayout layout_;
+    phigs::InputSource& source_;
+    PictureSink snapshot_;
+    std::function<void(const phigs::DrawList&)> present_;
+
+    phigs::Phigs phigs_;
+    phigs::Workstation* workstation_ = nullptr;
+    std::optional<phigs::WorkstationMapping> mapping_;
+    phigs::InputQueue queue_;
+    std::unique_ptr<phigs::WorkstationInteraction> interaction_;
+    phigs::WorkstationInput* input_ = nullptr;
+    ModelPicture modelPicture_;
+
+    ModelList models_;
+    DisplayStyle style_;
+    bool fourViews_ = false;
+    double azimuth_ = -135, zoom_ = 1;
+    std::optional<glm::dvec3> viewCentre_;  ///< CENTRE ON MARKER; else the model's middle
+
+    std::string menuTitle_;
+    std::vector<std::string> menuItems_;
+    std::string message_;
+    std::vector<std::string> log_;
+    Phase phase_ = Phase::None;
+    Awaiting awaiting_ = Awaiting::Nothing;
+    bool finished_ = false;
+
+    // CURVE MAP
+    std::optional<geom::CurveModel> curveModel_;
+    std::vector<geom::Curve> curves_;  ///< interpolated parts, scaled
+    std::string curveFile_;
+    double curveScale_ = 1.0;
+    geom::curvemap::Placement placement_;
+    int pickedComponent_ = -1;
+    std::optional<ReferencePoint> reference_;
+    std::optional<PickedPatch> lastPick_;
+    std::optional<phigs::SurfacePickDetail> lastPickDetail_;
+    std::vector<MappingRecord> mappings_;
+    bool mappedSincePlaced_ = false;
+    std::vector<std::vector<glm::dvec3>> previewLines_;
+
+    // SURF_REDN
+    std::string reductionDirection_ = "U";
+    bool reductionByCount_ = false;
+    int reductionComponent_ = -1;
+    std::vector<ReductionRecord> reductions_;
+
+    std::vector<std::filesystem::path> pictures_;
+};
+
+}  // namespace acsynt

@@ -1,0 +1,276 @@
+// The session: PHIGS and its workstation, the devices, the event loop, directives, reports.
+#include "acsynt/session/Session.h"
+
+#include "SessionShared.h"
+
+#include "acsynt/ModelFile.h"
+#include "geom/DataReduction.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "phigs/core/Error.h"
+#include "phigs/input/EchoStructures.h"
+#include "phigs/input/ScriptInputSource.h"
+#include "phigs/view/ViewMatrices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace acsynt {
+
+using namespace phigs;
+using namespace session_detail;
+
+Session::Session(SessionSettings settings, InputSource& source)
+    : settings_(std::move(settings)),
+      layout_(settings_.width, settings_.height),
+      source_(source),
+      modelPicture_((phigs_.open(), phigs_.store())) {
+    setupWorkstation();
+    setupDevices();
+    mainMenu();
+    say("SELECT MENU ITEM");
+}
+
+Session::~Session() = default;
+
+std::set<std::string> Session::directives() {
+    return {"snapshot", "summary"};
+}
+
+void Session::setupWorkstation() {
+    workstation_ = &phigs_.openWorkstation(1, settings_.workstationType);
+    Workstation& ws = *workstation_;
+    // The screen shows the whole display surface: the viewport is all of it, the window has its shape.
+    const glm::dvec2 display = ws.description().displaySize;
+    if (std::abs(display.x * layout_.height - display.y * layout_.width) > display.x)
+        throw std::invalid_argument(
+            "a " + std::to_string(layout_.width) + " x " + std::to_string(layout_.height) +
+            " screen does not have the shape of the display surface (" + std::to_string(int(display.x)) +
+            " x " + std::to_string(int(display.y)) + ")");
+    ws.setWorkstationWindow({0, 0, 0}, {1, display.y / display.x, 1});
+    ws.setWorkstationViewport({0, 0, 0}, {display.x, display.y, 1});
+    ws.setHlhsrMode(1);
+    ws.setPickFilter(NameSetFilter{{structures::pickableName, structures::buttonName}, {}});
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.colour = glm::vec3(0.85f);
+    sun.direction = glm::normalize(glm::dvec3(0.4, 0.6, -1.0));
+    ws.setLightSourceRepresentation(2, sun);
+    Light ambient;
+    ambient.colour = glm::vec3(0.8f);
+    ws.setLightSourceRepresentation(1, ambient);
+    ws.setColourRepresentation(0, {0.02, 0.03, 0.08});
+
+    auto& store = phigs_.store();
+    rewriteStructure(store, structures::modelRoot, {});
+    rewriteStructure(store, structures::mapped, {});
+    rewriteStructure(store, structures::overlay, {});
+    rewriteStructure(store, structures::errorMap, {});
+    ws.postStructure(structures::geometry, 0.5);
+    ws.postStructure(structures::menu, 0.8);
+    ws.postStructure(structures::pad, 0.8);
+    for (int d = 1; d <= 4; ++d) ws.postStructure(structures::sliders + d - 1, 0.8);
+    ws.postStructure(structures::message, 0.9);
+    mapping_.emplace(ws.display(), std::uint32_t(layout_.width), std::uint32_t(layout_.height));
+    updateViews();
+}
+
+void Session::setupDevices() {
+    interaction_ = std::make_unique<WorkstationInteraction>(*workstation_, source_, queue_);
+    interaction_->setSurfaceSize(std::uint32_t(layout_.width), std::uint32_t(layout_.height));
+    input_ = &interaction_->input();
+    input_->setDirectiveHandler(
+        [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
+
+    DeviceInitialisation pickSetup;
+    pickSetup.initial = PickMeasure{};
+    pickSetup.pickAperture = 0.004;
+    input_->initialise(InputClass::Pick, 1, pickSetup);
+    input_->setMode(InputClass::Pick, 1, OperatingMode::Event);
+
+    DeviceInitialisation pad;
+    pad.initial = ChoiceMeasure{InputStatus::Ok, 1};
+    pad.choiceStrings = padItems;
+    input_->initialise(InputClass::Choice, 2, pad);
+    input_->setMode(InputClass::Choice, 2, OperatingMode::Event);
+
+    for (int d = 1; d <= 4; ++d) {
+        DeviceInitialisation v;
+        v.initial = ValuatorMeasure{d == 4 ? 1.0 : d == 3 ? -135.0 : 0.0};
+        v.promptEchoType = 2;
+        v.echoVolume = layout_.slider(d).echoVolume();
+        v.valuatorLow = sliderLow[d - 1];
+        v.valuatorHigh = sliderHigh[d - 1];
+        input_->initialise(InputClass::Valuator, d, v);
+        input_->setMode(InputClass::Valuator, d, OperatingMode::Event);
+    }
+
+    DeviceInitialisation s;
+    s.initial = StringMeasure{};
+    input_->initialise(InputClass::String, 1, s);
+    input_->setMode(InputClass::String, 1, OperatingMode::Event);
+}
+
+void Session::setMenu(const std::string& menuTitle, std::vector<std::string> items) {
+    menuTitle_ = menuTitle;
+    menuItems_ = std::move(items);
+    // INITIALIZE CHOICE needs REQUEST mode; the panel is the menu area, one row per item.
+    input_->setMode(InputClass::Choice, 1, OperatingMode::Request);
+    DeviceInitialisation menu;
+    menu.initial = ChoiceMeasure{InputStatus::Ok, 1};
+    menu.promptEchoType = 3;
+    menu.echoVolume = layout_.menuFor(menuItems_.size()).echoVolume();
+    menu.choiceStrings = menuItems_;
+    input_->initialise(InputClass::Choice, 1, menu);  // hands the panels to the source
+    input_->setMode(InputClass::Choice, 1, OperatingMode::Event);
+    drawScreen();
+}
+
+void Session::say(const std::string& s) {
+    message_ = s;
+    log_.push_back(s);
+    drawScreen();
+}
+
+void Session::fail(const std::string& s) {
+    message_ = s;
+    log_.push_back("ERROR: " + s);
+    drawScreen();
+}
+
+const DrawList& Session::picture() {
+    return workstation_->display();
+}
+
+void Session::run() {
+    while (step(std::chrono::milliseconds(100))) {
+    }
+}
+
+bool Session::step(std::chrono::milliseconds timeout) {
+    if (finished_) return false;
+    picture();  // the measurer picks on the current picture
+    try {
+        std::optional<EventReport> report = queue_.awaitEvent(timeout);
+        if (report) handle(*report);
+    } catch (const InputExhausted&) {
+        finished_ = true;
+    } catch (const phigs::Error& e) {
+        fail(e.what());
+    } catch (const ScriptError& e) {
+        fail(e.what());
+    }
+    if (!finished_ && source_.exhausted() && queue_.size() == 0) finished_ = true;
+    if (present_) present_(picture());
+    return !finished_;
+}
+
+void Session::handle(const EventReport& report) {
+    try {
+        if (const auto* c = std::get_if<ChoiceMeasure>(&report.measure)) {
+            if (c->status != InputStatus::Ok) return;
+            if (report.device == 1)
+                choose(menuItems_.at(std::size_t(c->choice - 1)));
+            else if (report.device == 2)
+                padButton(c->choice);
+        } else if (const auto* p = std::get_if<PickMeasure>(&report.measure)) {
+            pick(*p);
+        } else if (const auto* v = std::get_if<ValuatorMeasure>(&report.measure)) {
+            valuator(report.device, v->value);
+        } else if (const auto* s = std::get_if<StringMeasure>(&report.measure)) {
+            text(s->text);
+        }
+    } catch (const ModelFileError& e) {
+        fail(e.what());
+    } catch (const geom::GeometryError& e) {
+        fail(e.what());
+    } catch (const phigs::Error& e) {
+        fail(e.what());
+    } catch (const std::runtime_error& e) {
+        fail(e.what());
+    }
+}
+
+void Session::directive(const action::Directive& d, const InputAction& a) {
+    const std::string where = source_.position();
+    if (d.arguments.size() != 1) {
+        fail(where + ": '" + a.text + "': expected " + d.name + " NAME");
+        return;
+    }
+    std::filesystem::create_directories(settings_.outputDirectory);
+    if (d.name == "snapshot") {
+        const auto file = settings_.outputDirectory / (d.arguments[0] + ".png");
+        if (!snapshot_) {
+            fail("NO PICTURE OUTPUT FOR SNAPSHOT " + d.arguments[0]);
+            return;
+        }
+        picture();
+        snapshot_(file);
+        pictures_.push_back(file);
+        log_.push_back("snapshot " + file.string());
+    } else if (d.name == "summary") {
+        const auto file = settings_.outputDirectory / (d.arguments[0] + ".txt");
+        std::ofstream(file) << summary();
+        log_.push_back("summary " + file.string());
+    }
+}
+
+// ---- reports
+
+std::string Session::summary() const {
+    std::ostringstream out;
+    out.precision(10);
+    out << "ACSYNT session summary\n";
+    for (std::size_t i = 0; i < models_.size(); ++i) {
+        const Model& m = models_.at(i);
+        out << "model " << m.name << (i == models_.currentIndex() ? " (current)" : "") << ": "
+            << m.components.size() << " components, " << m.patchCount() << " patches\n";
+    }
+    static const std::vector<Component> none;
+    const std::vector<Component>& components = models_.empty() ? none : models_.current().components;
+    if (lastPick_ && std::size_t(lastPick_->component) < components.size()) {
+        out << "last pick: " << components[std::size_t(lastPick_->component)].name << " patch "
+            << lastPick_->patch;
+        if (lastPickDetail_) out << " at u " << lastPickDetail_->uv.x << " w " << lastPickDetail_->uv.y;
+        out << "\n";
+    }
+    if (reference_ && std::size_t(reference_->component) < components.size()) {
+        const Component& c = components[std::size_t(reference_->component)];
+        out << "reference point: " << c.name << " patch " << reference_->patch << " u " << reference_->u
+            << " w " << reference_->w << "\n";
+    }
+    for (std::size_t i = 0; i < mappings_.size(); ++i) {
+        const MappingRecord& m = mappings_[i];
+        out << "mapping " << i + 1 << ": " << m.curveFile << " on " << m.model << "/" << m.component
+            << " patch " << m.reference.patch << " marker u " << m.reference.u << " w " << m.reference.w
+            << ": " << m.parts << " parts, " << m.loops << " loops (per part";
+        for (auto n : m.loopsPerPart) out << " " << n;
+        out << "), boundary walks " << m.boundaryWalks << "\n";
+    }
+    for (std::size_t i = 0; i < reductions_.size(); ++i) {
+        const ReductionRecord& r = reductions_[i];
+        out << "reduction " << i + 1 << ": " << r.model << "/" << r.component << " -> " << r.reducedModel
+            << ", " << r.direction << " by " << r.mode;
+        if (r.mode == "tolerance")
+            out << " " << r.tolerance;
+        else
+            out << " " << r.count;
+        out << ": control points " << r.countUBefore << " x " << r.countWBefore << " = "
+            << r.countUBefore * r.countWBefore << " -> " << r.countUAfter << " x " << r.countWAfter << " = "
+            << r.countUAfter * r.countWAfter << ", knots removed u " << r.removedU << " w " << r.removedW
+            << ", max error " << r.maxError << "\n";
+    }
+    for (const auto& p : pictures_) out << "picture " << p.string() << "\n";
+    out << "message: " << message_ << "\n";
+    return out.str();
+}
+
+std::string Session::recording() const {
+    std::string out = "# acsynt session recorded\n";
+    for (const InputAction& a : input_->history()) out += ScriptInputSource::format(a) + "\n";
+    return out;
+}
+
+}  // namespace acsynt

@@ -1,0 +1,267 @@
+// What the session shows: the views, the screen areas, the marker overlay, mapped curves, the error map.
+#include "acsynt/session/Session.h"
+
+#include "SessionShared.h"
+
+#include "acsynt/ModelFile.h"
+#include "geom/DataReduction.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "phigs/core/Error.h"
+#include "phigs/input/EchoStructures.h"
+#include "phigs/input/ScriptInputSource.h"
+#include "phigs/view/ViewMatrices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace acsynt {
+
+using namespace phigs;
+using namespace session_detail;
+
+// ---- the model on the screen
+
+void Session::showModel() {
+    style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
+    style_.errorMapComponent = -1;
+    reference_.reset();
+    previewLines_.clear();
+    phase_ = Phase::None;
+    if (models_.empty()) {
+        modelPicture_.clear();
+        rewriteStructure(phigs_.store(), structures::modelRoot, {});
+    } else {
+        modelPicture_.build(models_.current(), style_);
+    }
+    drawMapped(false);
+    drawErrorMap();
+    drawOverlay();
+    updateViews();
+}
+
+void Session::updateViews() {
+    glm::dvec3 lo(-1), hi(1);
+    if (!models_.empty()) {
+        lo = glm::dvec3(1e300);
+        hi = glm::dvec3(-1e300);
+        for (const Component& c : models_.current().components)
+            for (const glm::dvec3& p : c.surface.points) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+    }
+    const glm::dvec3 centre = viewCentre_.value_or((lo + hi) / 2.0);
+    const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
+    const double az = glm::radians(azimuth_), el = glm::radians(25.0);
+    struct Direction {
+        glm::dvec3 normal, up;
+    };
+    const Direction oblique{{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)},
+                            {0, 0, 1}};
+    const Direction directions[] = {
+        {{0, 0, 1}, {-1, 0, 0}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, -1, 0}, {0, 0, 1}}, oblique};
+    std::vector<Element> geometry;
+    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v) {
+        const Direction& d = fourViews_ ? directions[v - 1] : oblique;
+        const PixelBox b = layout_.viewBox(v, fourViews_);
+        const glm::dvec3 npcMin = npc({b.x0, b.y1}, 0), npcMax = npc({b.x1, b.y0}, 1);
+        ViewMapping mapping;
+        const double aspect = (npcMax.x - npcMin.x) / (npcMax.y - npcMin.y);
+        const double half = radius * (fourViews_ && v < 4 ? 0.9 : 0.75) / zoom_;
+        const glm::dvec2 halfSize =
+            aspect >= 1 ? glm::dvec2(half * aspect, half) : glm::dvec2(half, half / aspect);
+        mapping.windowMin = -halfSize;
+        mapping.windowMax = halfSize;
+        mapping.viewportMin = npcMin;
+        mapping.viewportMax = npcMax;
+        mapping.projectionReferencePoint = {0, 0, 4 * radius};
+        mapping.backPlaneDistance = -2 * radius;
+        mapping.frontPlaneDistance = 2 * radius;
+        ViewRepresentation view;
+        view.orientation = evaluateViewOrientationMatrix(centre, d.normal, d.up);
+        view.mapping = evaluateViewMappingMatrix(mapping);
+        view.clipMin = npcMin;
+        view.clipMax = npcMax;
+        workstation_->setViewRepresentation(v, view);
+        geometry.push_back(viewIndex(v));
+        geometry.push_back(executeStructure(structures::modelRoot));
+    }
+    // The view frames, drawn in NPC.
+    geometry.push_back(viewIndex(0));
+    geometry.push_back(addNamesToSet({structures::lineName}));
+    geometry.push_back(colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}));
+    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v)
+        geometry.push_back(polyline3(outline(layout_.viewBox(v, fourViews_))));
+    rewriteStructure(phigs_.store(), structures::geometry, geometry);
+}
+
+glm::dvec2 Session::pixelOf(const glm::dvec3& world, int view) {
+    const ViewRepresentation& v = workstation_->tables().views.get(view);
+    glm::dvec4 p = v.mapping * v.orientation * glm::dvec4(world, 1.0);
+    p /= p.w;
+    return mapping_->toPixels(glm::dvec3(p));
+}
+
+std::vector<glm::dvec3> Session::outline(const PixelBox& b) const {
+    return {npc({b.x0, b.y0}), npc({b.x1, b.y0}), npc({b.x1, b.y1}), npc({b.x0, b.y1}), npc({b.x0, b.y0})};
+}
+
+void Session::drawScreen() {
+    auto& store = phigs_.store();
+    const ScreenLayout& l = layout_;
+    const double unit = 1.0 / mapping_->pixelsPerNpc;  // one pixel in NPC
+
+    // The menu panel of choice device 1 and the sliders of valuators 1-4: phigs echo structures.
+    std::vector<std::string> labels;
+    for (const auto& item : menuItems_) labels.push_back(shown(item));
+    buildChoicePanel(store, structures::menu,
+                     ChoicePanel{1, l.menuFor(menuItems_.size()).echoVolume(), labels}, 0, *mapping_);
+    double values[4] = {0, 0, azimuth_, zoom_};
+    if (reference_) {
+        const Patch& p = models_.current()
+                             .components[std::size_t(reference_->component)]
+                             .patches.patches[std::size_t(reference_->patch - 1)];
+        values[0] = (reference_->u - p.u0) / (p.u1 - p.u0);
+        values[1] = (reference_->w - p.w0) / (p.w1 - p.w0);
+    }
+    for (int d = 1; d <= 4; ++d) {
+        const ValuatorSlider slider{d, l.slider(d).echoVolume(), sliderLow[d - 1], sliderHigh[d - 1]};
+        buildValuatorSlider(store, structures::sliders + d - 1, slider,
+                            std::clamp(values[d - 1], sliderLow[d - 1], sliderHigh[d - 1]),
+                            sliderNames[d - 1], *mapping_);
+    }
+
+    // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
+    const bool padLive = phase_ == Phase::MoveMarker || phase_ == Phase::Placed;
+    std::vector<Element> pad{
+        viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
+        RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
+        AlignmentAttribute{ElementType::TextAlignment, 2, 3}, addNamesToSet({structures::buttonName})};
+    static const char* const arrows[] = {"NW", "N", "NE", "W", "[]", "E", "SW", "S", "SE", "DONE"};
+    for (int button = 1; button <= 10; ++button) {
+        const PixelBox b = l.padButton(button);
+        pad.push_back(pickId(button));
+        pad.push_back(colourAttr(ElementType::InteriorColour,
+                                 padLive ? glm::dvec3(0.2, 0.3, 0.2) : glm::dvec3(0.1, 0.1, 0.12)));
+        auto corners = outline(b);
+        corners.pop_back();
+        pad.push_back(fillArea3(corners));
+        pad.push_back(
+            colourAttr(ElementType::TextColour, padLive ? glm::dvec3(0.7, 1, 0.7) : glm::dvec3(0.4)));
+        pad.push_back(textAt(npc(b.centre()), arrows[button - 1]));
+    }
+    rewriteStructure(store, structures::pad, pad);
+
+    // Title, menu name, current model and the message line.
+    const PixelBox& m = l.message;
+    const double rowHeight = (m.y1 - m.y0) / 2;
+    std::string heading = std::string(title) + "   MENU: " + shown(menuTitle_);
+    if (!models_.empty()) heading += "   MODEL: " + models_.current().name;
+    std::vector<Element> msg{viewIndex(0),
+                             addNamesToSet({structures::lineName}),
+                             RealAttribute{ElementType::CharacterHeight, 0.45 * rowHeight * unit},
+                             AlignmentAttribute{ElementType::TextAlignment, 1, 3},
+                             colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}),
+                             polyline3(outline(m)),
+                             colourAttr(ElementType::TextColour, {0.6, 0.75, 1.0}),
+                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 0.5}), heading),
+                             colourAttr(ElementType::TextColour, {1.0, 1.0, 0.55}),
+                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 1.5}), message_)};
+    rewriteStructure(store, structures::message, msg);
+}
+
+void Session::drawOverlay() {
+    std::vector<Element> e{addNamesToSet({structures::lineName})};
+    if (reference_ && !models_.empty()) {
+        const Component& comp = models_.current().components[std::size_t(reference_->component)];
+        const glm::dvec3 at = geom::evaluate(comp.surface, reference_->u, reference_->w);
+        e.push_back(IndexAttribute{ElementType::MarkerType, int(MarkerType::Circle)});
+        e.push_back(RealAttribute{ElementType::MarkerSizeScaleFactor, 2.0});
+        e.push_back(colourAttr(ElementType::PolymarkerColour, {1, 0.2, 0.2}));
+        e.push_back(polymarker3({at}));
+        if (phase_ == Phase::Placed && !mappedSincePlaced_) {
+            geom::curvemap::Placement placement = placement_;
+            placement.reference = {reference_->u, reference_->w};
+            placement.offset = 0.5;
+            const auto frame = geom::curvemap::placementFrame(comp.surface, placement);
+            const double length = 1.5;
+            e.push_back(RealAttribute{ElementType::LinewidthScaleFactor, 2.0});
+            e.push_back(colourAttr(ElementType::PolylineColour, {0.1, 1.0, 0.2}));  // u tangent: green
+            e.push_back(polyline3({frame.surfacePoint, frame.surfacePoint + length * frame.tangentU}));
+            e.push_back(colourAttr(ElementType::PolylineColour, {0.75, 0.2, 1.0}));  // w tangent: purple
+            e.push_back(polyline3({frame.surfacePoint, frame.surfacePoint + length * frame.tangentW}));
+            e.push_back(colourAttr(ElementType::PolylineColour, {1, 1, 1}));  // normal: white
+            e.push_back(polyline3({frame.surfacePoint, frame.surfacePoint + length * frame.z}));
+            e.push_back(RealAttribute{ElementType::AnnotationTextCharacterHeight, 0.012});
+            e.push_back(colourAttr(ElementType::TextColour, {0.1, 1.0, 0.2}));
+            e.push_back(AnnotationTextElement{
+                frame.surfacePoint + length * frame.tangentU, {0.004, 0.004, 0}, "U", false});
+            e.push_back(colourAttr(ElementType::TextColour, {0.75, 0.2, 1.0}));
+            e.push_back(AnnotationTextElement{
+                frame.surfacePoint + length * frame.tangentW, {0.004, 0.004, 0}, "W", false});
+            e.push_back(RealAttribute{ElementType::LinewidthScaleFactor, 1.0});
+            // The placed curve above the patch.
+            e.push_back(colourAttr(ElementType::PolylineColour, {0.3, 0.9, 1.0}));
+            for (const geom::Curve& c : curves_) {
+                std::vector<glm::dvec3> points;
+                const int n = 200;
+                for (int k = 0; k <= n; ++k) {
+                    const double t = c.domainStart() + (c.domainEnd() - c.domainStart()) * k / n;
+                    points.push_back(frame.toModel(geom::evaluate(c, t)));
+                }
+                e.push_back(polyline3(points));
+            }
+        }
+    }
+    e.push_back(colourAttr(ElementType::PolylineColour, {0.9, 0.9, 0.4}));
+    for (const auto& line : previewLines_) e.push_back(polyline3(line));
+    rewriteStructure(phigs_.store(), structures::overlay, e);
+}
+
+void Session::drawMapped(bool all) {
+    std::vector<Element> e{addNamesToSet({structures::lineName}),
+                           RealAttribute{ElementType::LinewidthScaleFactor, 2.0}};
+    if (!models_.empty()) {
+        const std::string& name = models_.current().name;
+        for (std::size_t i = 0; i < mappings_.size(); ++i) {
+            const MappingRecord& m = mappings_[i];
+            if (m.model != name || (!all && i + 1 != mappings_.size())) continue;
+            e.push_back(colourAttr(ElementType::PolylineColour,
+                                   i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
+            for (const auto& line : m.polylines) e.push_back(polyline3(line));
+        }
+    }
+    rewriteStructure(phigs_.store(), structures::mapped, e);
+}
+
+void Session::drawErrorMap() {
+    std::vector<Element> e;
+    if (style_.errorMapComponent >= 0 && !reductions_.empty() && !models_.empty()) {
+        const ReductionRecord& r = reductions_.back();
+        const Component& comp = models_.current().components[std::size_t(r.componentIndex)];
+        const auto& d = r.deviation;
+        QuadrilateralMeshElement mesh;
+        mesh.rows = int(d.u.size());
+        mesh.columns = int(d.v.size());
+        const double top = std::max(d.maxError, 1e-12);
+        for (std::size_t i = 0; i < d.u.size(); ++i)
+            for (std::size_t j = 0; j < d.v.size(); ++j) {
+                mesh.points.push_back(geom::evaluate(comp.surface, d.u[i], d.v[j]));
+                const double t = std::clamp(d.error[i * d.v.size() + j] / top, 0.0, 1.0);
+                // Blue (no error) through green to red (the largest error).
+                const glm::dvec3 c =
+                    t < 0.5 ? glm::mix(glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(0.1, 0.9, 0.2), t * 2)
+                            : glm::mix(glm::dvec3(0.1, 0.9, 0.2), glm::dvec3(1.0, 0.1, 0.1), t * 2 - 1);
+                mesh.vertexColours.push_back(Colour::fromRgb(c));
+            }
+        e.push_back(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
+        e.push_back(IndexAttribute{ElementType::InteriorShadingMethod, int(ShadingMethod::Colour)});
+        e.push_back(std::move(mesh));
+    }
+    rewriteStructure(phigs_.store(), structures::errorMap, e);
+}
+
+}  // namespace acsynt

@@ -1,0 +1,176 @@
+// The shipped demo session replayed from its file, picking a known surface point, bad input that
+// leaves the session going, and a recorded session that replays to the same result.
+#include "SessionTestSupport.h"
+
+#include "geom/Evaluate.h"
+
+#include <fstream>
+#include <sstream>
+
+using session_test::Driver;
+
+namespace {
+
+std::string read(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool logContains(const acsynt::Session& s, const std::string& text) {
+    for (const auto& line : s.log())
+        if (line.find(text) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("the shipped demo session replays headless: logo and circle mapped, fuselage reduced, pictures") {
+    const auto out = session_test::outputDirectory("demo");
+    std::filesystem::remove_all(out);
+    auto script = phigs::ScriptInputSource::fromFile(std::filesystem::path(ACSYNT_DATA_DIR) / "demo.session",
+                                                     acsynt::Session::directives());
+    acsynt::SessionSettings settings;  // the demo's own 1024 x 768 screen: its picks are in those pixels
+    settings.outputDirectory = out;
+    acsynt::Session session(settings, script);
+    phigs::vk::WorkstationDisplay display(session.workstation(), session_test::context());
+    session.setSnapshot([&](const std::filesystem::path& file) {
+        display.update();
+        phigs::writePng(display.image(), file);
+    });
+    session.run();
+    CHECK(session.finished());
+    for (const auto& line : session.log()) {
+        INFO(line);
+        CHECK(line.rfind("ERROR: ", 0) != 0);
+    }
+
+    REQUIRE(session.mappings().size() == 2);
+    const acsynt::MappingRecord& logo = session.mappings()[0];
+    CHECK(logo.curveFile == "acslogo.crv");
+    CHECK(logo.component == "right_wing");
+    CHECK(logo.reference.patch == 19);
+    CHECK(logo.loopsPerPart == std::vector<std::size_t>{1, 1, 1, 1, 1});
+    const acsynt::MappingRecord& circle = session.mappings()[1];
+    CHECK(circle.curveFile == "circle.crv");
+    CHECK(circle.loops == 1);
+    CHECK(circle.boundaryWalks >= 1);  // out of bounds over the tip, closed along the boundary
+
+    // The marker: pad centre (the middle of patch 19), then w at 0.55 of the patch, then one step east.
+    const auto& wing = session.models().at(0).components[1];
+    const acsynt::Patch& patch = wing.patches.patches[18];
+    CHECK(logo.reference.u == Approx((patch.u0 + patch.u1) / 2 + (patch.u1 - patch.u0) / 8));
+    CHECK(logo.reference.w == Approx(patch.w0 + 0.55 * (patch.w1 - patch.w0)));
+
+    REQUIRE(session.reductions().size() == 1);
+    const acsynt::ReductionRecord& r = session.reductions()[0];
+    CHECK(r.component == "fuselage");
+    CHECK(r.countUBefore * r.countWBefore == 247);
+    CHECK(r.countUAfter * r.countWAfter < 247);
+    CHECK(r.maxError <= 0.01);
+
+    REQUIRE(session.pictures().size() == 7);
+    for (const auto& p : session.pictures()) CHECK(std::filesystem::exists(p));
+    const std::string summary = read(out / "summary.txt");
+    CHECK(summary.find("mapping 1: acslogo.crv on transport/right_wing patch 19") != std::string::npos);
+    CHECK(summary.find("5 parts, 5 loops (per part 1 1 1 1 1)") != std::string::npos);
+    CHECK(
+        summary.find("reduction 1: transport/fuselage -> transport_R1, U&W by tolerance 0.01: control points "
+                     "13 x 19 = 247 -> ") != std::string::npos);
+}
+
+TEST_CASE("picking the screen position of a known surface point returns its component, patch and (u, w)") {
+    Driver d("pick");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN"});
+    struct Probe {
+        std::string component;
+        double u, w;
+        int view;
+    };
+    // Plan view (1) from above: upper surfaces; the 3D view (4) from the front left.
+    const Probe probes[] = {{"right_wing", 0.5, 0.25, 1}, {"right_wing", 0.13, 0.31, 1},
+                            {"fuselage", 0.42, 0.5, 1},   {"fin", 0.5, 0.3, 4},
+                            {"left_wing", 0.6, 0.75, 1},  {"right_htail", 0.4, 0.3, 1}};
+    const auto& components = d.session.models().current().components;
+    for (const Probe& probe : probes) {
+        int index = -1;
+        for (std::size_t i = 0; i < components.size(); ++i)
+            if (components[i].name == probe.component) index = int(i);
+        REQUIRE(index >= 0);
+        const acsynt::Component& c = components[std::size_t(index)];
+        d.pickAt(geom::evaluate(c.surface, probe.u, probe.w), probe.view);
+        INFO(probe.component << " at (" << probe.u << ", " << probe.w << ") in view " << probe.view);
+        REQUIRE(d.session.lastPick());
+        REQUIRE(d.session.lastPickDetail());
+        CHECK(d.session.lastPick()->component == index);
+        CHECK(d.session.lastPick()->patch == c.patches.find(probe.u, probe.w)->number);
+        CHECK(std::abs(d.session.lastPickDetail()->uv.x - probe.u) < 1e-6);
+        CHECK(std::abs(d.session.lastPickDetail()->uv.y - probe.w) < 1e-6);
+        CHECK(d.session.message().rfind("PICKED " + probe.component + " PATCH ", 0) == 0);
+    }
+    // Outside the aircraft: nothing.
+    d.run({"pick 5 5"});
+    CHECK(d.session.message().rfind("PICKED right_htail", 0) == 0);  // unchanged: the last pick's message
+}
+
+TEST_CASE("bad input: a wrong section count, a curve that does not close, an unknown menu choice") {
+    Driver d("bad_input");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm"});
+    const std::size_t patches = d.session.models().current().patchCount();
+
+    d.run({"choice READ_MODEL", "string bad_sections.acm"});
+    INFO(d.session.message());
+    CHECK(d.session.message().find("bad_sections.acm:") != std::string::npos);
+    CHECK(d.session.message().find("sections") != std::string::npos);
+    CHECK(logContains(d.session, "ERROR: "));
+    CHECK(d.session.models().size() == 1);
+    CHECK(d.session.models().current().patchCount() == patches);
+
+    d.run({"choice READ_CURVE_FILE", "string open.crv"});
+    CHECK(d.session.message().find("open.crv:") != std::string::npos);
+    CHECK(d.session.message().find("close") != std::string::npos);
+    CHECK(d.session.summary().find("mapping") == std::string::npos);
+
+    d.run({"choice READ_MODEL", "string no_such_model.acm"});
+    CHECK(d.session.message().find("no_such_model.acm") != std::string::npos);
+
+    // A script naming a menu item the current menu does not have: the message names the line.
+    const std::string text = "choice RETURN\nchoice VIEW\nchoice NO_SUCH_ITEM\nchoice FOUR_VIEWS\n";
+    phigs::ScriptInputSource script(text, "bad.session", acsynt::Session::directives());
+    acsynt::Session session(Driver::settings("bad_input_script"), script);
+    session.run();
+    bool named = false;
+    for (const auto& line : session.log())
+        if (line.find("ERROR: ") == 0 && line.find("bad.session line 3") != std::string::npos &&
+            line.find("NO_SUCH_ITEM") != std::string::npos)
+            named = true;
+    CHECK(named);
+    CHECK(session.fourViews());  // the session went on
+    CHECK(session.message() == "FOUR VIEWS DONE");
+}
+
+TEST_CASE("a recorded session replays to the same summary") {
+    std::string recording, summary;
+    {
+        Driver d("record");
+        d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice CURVE_MAP",
+               "choice LOAD_CURVE", "string circle.crv 0.08", "choice DEFINE_POINT"});
+        const auto& wing = d.session.models().current().components[1];
+        REQUIRE(wing.name == "right_wing");
+        const glm::dvec3 p = geom::evaluate(wing.surface, 0.4, 0.25);
+        d.pickAt(p, 1);
+        d.pickAt(p, 1);
+        d.run({"choice ACCEPT", "valuator 1 0.5", "valuator 2 0.5", "choice DONE device 2",
+               "choice MAP_CURVE"});
+        REQUIRE(d.session.mappings().size() == 1);
+        CHECK(d.session.mappings()[0].loops == 1);
+        recording = d.session.recording();
+        summary = d.session.summary();
+    }
+    phigs::ScriptInputSource script(recording, "recorded", acsynt::Session::directives());
+    acsynt::Session replay(Driver::settings("record_replay"), script);
+    replay.run();
+    CHECK(replay.summary() == summary);
+}
