@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace phigs {
 
@@ -33,6 +34,9 @@ public:
     void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
         measurer_.setSurfaceSize(width, height);
     }
+    /// The paths of the items the last pick's echo highlights (empty when it hit nothing or the
+    /// device's echo is off): hand them to the display (vk::WorkstationDisplay::setEcho).
+    std::vector<std::vector<DrawPathLevel>> lastEcho() const;
 
 private:
     const DrawList& pickList(const InputDevice& device);
@@ -41,6 +45,7 @@ private:
     DrawListMeasurer measurer_;
     std::map<int, DrawList> pickLists_;  ///< by pick device number, the last traversal for it
     std::uint64_t traversals_ = 0;
+    const DrawList* lastPickList_ = nullptr;  ///< the list the last pick was measured on
     std::unique_ptr<WorkstationInput> input_;
 };
 
