@@ -7,6 +7,7 @@
 #include "phigs/ws/Workstation.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -33,6 +34,11 @@ public:
     /// pixel per device coordinate of the workstation's display surface.
     void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
         measurer_.setSurfaceSize(width, height);
+    }
+    /// The surface size asked at each measure, e.g. a window display's current size:
+    /// `followSurface([&] { return std::pair{display.width(), display.height()}; })`.
+    void followSurface(std::function<DrawListMeasurer::SurfaceSize()> size) {
+        measurer_.setSurfaceSize(std::move(size));
     }
     /// The paths of the items the last pick's echo highlights (empty when it hit nothing or the
     /// device's echo is off): hand them to the display (vk::WorkstationDisplay::setEcho).
