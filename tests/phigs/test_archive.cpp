@@ -1,3 +1,4 @@
+#include "ErrorNumber.h"
 #include "RandomElements.h"
 #include "phigs/core/Phigs.h"
 
@@ -8,6 +9,7 @@
 #include <sstream>
 
 using namespace phigs;
+using phigs::test::errorOf;
 
 namespace {
 
@@ -44,16 +46,6 @@ std::string readFile(const std::filesystem::path& p) {
 void writeFile(const std::filesystem::path& p, const std::string& text) {
     std::ofstream out(p, std::ios::binary | std::ios::trunc);
     out << text;
-}
-
-template <class F>
-int errorOf(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.number();
-    }
-    return 0;
 }
 
 }  // namespace

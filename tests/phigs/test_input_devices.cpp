@@ -1,3 +1,4 @@
+#include "ErrorNumber.h"
 #include "InputFakes.h"
 
 #include "phigs/core/Error.h"
@@ -7,21 +8,13 @@
 #include <catch2/catch.hpp>
 
 using namespace phigs;
+using phigs::test::errorOf;
 using namespace std::chrono_literals;
 using Catch::Matchers::Contains;
 using phigs::test::FakeMeasurer;
 using phigs::test::IdleSource;
 
 namespace {
-
-int errorNumber(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.number();
-    }
-    return 0;
-}
 
 struct Rig {
     explicit Rig(const std::string& script, std::size_t capacity = 64)
@@ -75,9 +68,9 @@ TEST_CASE("input devices: valuator range and initial value", "[input]") {
                       Contains("s.txt line 2") && Contains("outside the range [0.000000, 10.000000]"));
 
     v.initial = ValuatorMeasure{12.0};
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Valuator, 1, v); }) == 261);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Valuator, 1, v); }) == 261);
     v.valuatorHigh = -1.0;
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Valuator, 1, v); }) == 260);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Valuator, 1, v); }) == 260);
     // A refused initialisation leaves the device as it was.
     CHECK(r.input.device(InputClass::Valuator, 1).setup.valuatorHigh == 10.0);
 }
@@ -96,7 +89,7 @@ TEST_CASE("input devices: choice alternatives are chosen by number or by name", 
     CHECK_THROWS_WITH(r.input.request(InputClass::Choice, 1),
                       Contains("line 5") && Contains("no alternative 'Engine'"));
     c.initial = ChoiceMeasure{InputStatus::Ok, 4};
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Choice, 1, c); }) == 261);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Choice, 1, c); }) == 261);
 }
 
 TEST_CASE("input devices: initialisation is checked against its class's rules", "[input]") {
@@ -104,32 +97,32 @@ TEST_CASE("input devices: initialisation is checked against its class's rules", 
     DeviceInitialisation s;
     s.initial = StringMeasure{"abcdef"};
     s.bufferSize = 4;
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::String, 1, s); }) == 263);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::String, 1, s); }) == 263);
     s.initial = LocatorMeasure{};
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::String, 1, s); }) == 261);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::String, 1, s); }) == 261);
     DeviceInitialisation k;
     k.initial = StrokeMeasure{0, {{0, 0, 0}, {1, 1, 1}}};
     k.bufferSize = 1;
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Stroke, 1, k); }) == 262);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Stroke, 1, k); }) == 262);
     DeviceInitialisation e;
     e.initial = LocatorMeasure{};
     e.promptEchoType = 9;
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 254);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 254);
     e.promptEchoType = 1;
     e.echoVolume = {10, 5, 0, 1, 0, 1};
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 255);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 255);
     DeviceInitialisation p;
     p.initial = PickMeasure{};
     p.pickAperture = 0.0;
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Pick, 1, p); }) == 260);
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Pick, 2, p); }) == 250);  // one pick device
-    CHECK(errorNumber([&] { r.input.device(InputClass::Valuator, 13); }) == 250);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Pick, 1, p); }) == 260);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Pick, 2, p); }) == 250);  // one pick device
+    CHECK(errorOf([&] { r.input.device(InputClass::Valuator, 13); }) == 250);
 
     p.pickAperture = 0.02;
     r.input.setMode(InputClass::Pick, 1, OperatingMode::Event);
-    CHECK(errorNumber([&] { r.input.initialise(InputClass::Pick, 1, p); }) == 251);
-    CHECK(errorNumber([&] { r.input.request(InputClass::Pick, 1); }) == 251);
-    CHECK(errorNumber([&] { r.input.sample(InputClass::Pick, 1); }) == 252);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Pick, 1, p); }) == 251);
+    CHECK(errorOf([&] { r.input.request(InputClass::Pick, 1); }) == 251);
+    CHECK(errorOf([&] { r.input.sample(InputClass::Pick, 1); }) == 252);
 }
 
 TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and filter", "[input]") {
@@ -152,7 +145,7 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     CHECK(d.pickExclusion == std::set<int>{3});
     CHECK(d.pickFilterSet);
     CHECK(d.pickPathDepth == 2);
-    CHECK(errorNumber([&] { r.input.setPickPathDepth(1, -1); }) == 207);
+    CHECK(errorOf([&] { r.input.setPickPathDepth(1, -1); }) == 207);
 }
 
 TEST_CASE("input devices: SAMPLE reads the latest measure without waiting", "[input]") {
@@ -178,7 +171,7 @@ TEST_CASE("input devices: EVENT mode queues reports; AWAIT EVENT and GET read th
     CHECK(e->device == 2);
     CHECK(std::get<ValuatorMeasure>(r.queue.currentMeasure(InputClass::Valuator, "GET VALUATOR")).value ==
           0.5);
-    CHECK(errorNumber([&] { r.queue.currentMeasure(InputClass::Choice, "GET CHOICE"); }) == 259);
+    CHECK(errorOf([&] { r.queue.currentMeasure(InputClass::Choice, "GET CHOICE"); }) == 259);
     e = r.queue.awaitEvent(0ms);
     REQUIRE(e);
     CHECK(e->inputClass == InputClass::Choice);
@@ -214,7 +207,7 @@ TEST_CASE("input devices: a full queue overflows, loses the trigger's events and
     r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);
     r.input.setMode(InputClass::Pick, 1, OperatingMode::Event);
     r.input.setMode(InputClass::Locator, 1, OperatingMode::Event);
-    CHECK(errorNumber([&] { r.queue.inquireOverflow(); }) == 257);
+    CHECK(errorOf([&] { r.queue.inquireOverflow(); }) == 257);
     for (int i = 0; i < 3; ++i) r.input.pump(0ms);
     // choice 1, choice 2 fit; the pick and its locator (two events) do not: neither is queued.
     CHECK(r.queue.size() == 2);
@@ -223,7 +216,7 @@ TEST_CASE("input devices: a full queue overflows, loses the trigger's events and
     CHECK(o.workstation == 1);
     CHECK(o.inputClass == InputClass::Pick);
     CHECK(o.device == 1);
-    CHECK(errorNumber([&] { r.queue.inquireOverflow(); }) == 257);  // cleared by the inquiry
+    CHECK(errorOf([&] { r.queue.inquireOverflow(); }) == 257);  // cleared by the inquiry
     r.input.pump(0ms);
     CHECK(r.queue.size() == 3);  // choice 3 still fits
     CHECK_THROWS_AS(InputQueue(0), std::invalid_argument);
@@ -249,7 +242,7 @@ TEST_CASE("input devices: AWAIT EVENT times out on a script 'wait' and on an idl
     // The sample line is consumed, the wait line ends the await with no event.
     CHECK_FALSE(r.queue.awaitEvent(10s).has_value());
     CHECK(std::get<ValuatorMeasure>(r.input.sample(InputClass::Valuator, 1)).value == 0.5);
-    CHECK(errorNumber([&] { r.queue.currentMeasure(InputClass::Valuator, "GET VALUATOR"); }) == 259);
+    CHECK(errorOf([&] { r.queue.currentMeasure(InputClass::Valuator, "GET VALUATOR"); }) == 259);
     CHECK(r.queue.awaitEvent(10s)->inputClass == InputClass::Choice);
 
     IdleSource idle;

@@ -63,20 +63,12 @@ TEST_CASE("input echo: initialising menu and slider devices gives the source its
     InputQueue queue;
     WorkstationInput input(1, source, measurer, queue);
     CHECK(input.echoLayout().empty());
-    DeviceInitialisation c;
-    c.initial = ChoiceMeasure{InputStatus::Ok, 1};
-    c.promptEchoType = 3;
-    c.echoVolume = {0, 100, 0, 40, 0, 1};
-    c.choiceStrings = {"Open", "Save"};
-    input.initialise(InputClass::Choice, 2, c);
+    input.initialise(InputClass::Choice, 2,
+                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
     REQUIRE(source.layout.panels.size() == 1);
     CHECK(source.layout.panels[0].device == 2);
     CHECK(source.layout.panels[0].alternatives == std::vector<std::string>{"Open", "Save"});
-    DeviceInitialisation v;
-    v.initial = ValuatorMeasure{5};
-    v.promptEchoType = 2;
-    v.echoVolume = {0, 100, 50, 60, 0, 1};
-    v.valuatorHigh = 10;
+    DeviceInitialisation v = valuatorSliderInitialisation(0, 10, 5, {0, 100, 50, 60, 0, 1});
     input.initialise(InputClass::Valuator, 4, v);
     REQUIRE(source.layout.sliders.size() == 1);
     CHECK(source.layout.sliders[0].device == 4);
@@ -93,17 +85,9 @@ TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses 
     FakeMeasurer measurer;
     InputQueue queue;
     WorkstationInput input(1, source, measurer, queue);
-    DeviceInitialisation c;
-    c.initial = ChoiceMeasure{InputStatus::Ok, 1};
-    c.promptEchoType = 3;
-    c.echoVolume = {0, 100, 0, 40, 0, 1};
-    c.choiceStrings = {"Open", "Save"};
-    input.initialise(InputClass::Choice, 2, c);
-    DeviceInitialisation v;
-    v.initial = ValuatorMeasure{5};
-    v.promptEchoType = 2;
-    v.echoVolume = {0, 100, 50, 60, 0, 1};
-    v.valuatorHigh = 10;
+    input.initialise(InputClass::Choice, 2,
+                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    DeviceInitialisation v = valuatorSliderInitialisation(0, 10, 5, {0, 100, 50, 60, 0, 1});
     input.initialise(InputClass::Valuator, 4, v);
     input.setMode(InputClass::Choice, 2, OperatingMode::Event);
     input.setMode(InputClass::Valuator, 4, OperatingMode::Event);

@@ -1,9 +1,11 @@
+#include "ErrorNumber.h"
 #include "phigs/core/Phigs.h"
 #include "phigs/store/StructureStore.h"
 
 #include <catch2/catch.hpp>
 
 using namespace phigs;
+using phigs::test::errorOf;
 
 namespace {
 
@@ -24,16 +26,6 @@ std::vector<int> labels(const StructureStore& store, int id) {
 void fillLabels(StructureStore& store, int id, int n) {
     store.openStructure(id);
     for (int i = 1; i <= n; ++i) store.insert(label(i));
-}
-
-template <class F>
-int errorOf(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.number();
-    }
-    return 0;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // A randomized comparison of the structure store against a small reference model that does
 // the same operations in the most direct way; every inquiry must agree after every operation.
 
+#include "ErrorNumber.h"
 #include "phigs/store/StructureStore.h"
 
 #include <catch2/catch.hpp>
@@ -13,6 +14,7 @@
 #include <set>
 
 using namespace phigs;
+using phigs::test::errorOf;
 
 namespace {
 
@@ -289,16 +291,6 @@ struct Model {
         return unique;
     }
 };
-
-template <class F>
-int errorOf(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.number();
-    }
-    return 0;
-}
 
 void compare(const StructureStore& store, const Model& model) {
     std::vector<int> ids;

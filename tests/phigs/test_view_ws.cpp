@@ -1,21 +1,13 @@
+#include "ErrorNumber.h"
 #include "phigs/core/Phigs.h"
 #include "phigs/view/ViewMatrices.h"
 
 #include <catch2/catch.hpp>
 
 using namespace phigs;
+using phigs::test::errorOf;
 
 namespace {
-
-template <class F>
-int errorOf(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.number();
-    }
-    return 0;
-}
 
 glm::dvec3 project(const glm::dmat4& m, glm::dvec3 p) {
     glm::dvec4 h = m * glm::dvec4(p, 1.0);

@@ -94,4 +94,10 @@ TEST_CASE("workstation interaction: picks see the current structures and the sur
     CHECK(pick().empty());
     CHECK(interaction.measurer().toNpc({200, 300}).x == Approx(400.0 / 768.0));
     CHECK(interaction.measurer().toNpc({200, 300}).y == Approx(168.0 / 768.0));
+    // A surface that changes (a resized window) is asked at each measure.
+    std::uint32_t width = 1024, height = 768;
+    interaction.followSurface([&] { return std::pair{width, height}; });
+    CHECK(interaction.measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
+    width = 2048, height = 1536;
+    CHECK(interaction.measurer().toNpc({400, 368}).y == Approx((1536.0 - 368.0) / 2.0 / 768.0));
 }

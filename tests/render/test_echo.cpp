@@ -20,25 +20,6 @@ std::size_t pixelsLike(const Image& image, glm::dvec2 from, glm::dvec2 to, glm::
     return n;
 }
 
-DeviceInitialisation menu(std::vector<std::string> names, EchoVolume area) {
-    DeviceInitialisation d;
-    d.initial = ChoiceMeasure{InputStatus::Ok, 1};
-    d.promptEchoType = 3;
-    d.echoVolume = area;
-    d.choiceStrings = std::move(names);
-    return d;
-}
-
-DeviceInitialisation slider(double low, double high, double initial, EchoVolume area) {
-    DeviceInitialisation d;
-    d.initial = ValuatorMeasure{initial};
-    d.promptEchoType = 2;
-    d.echoVolume = area;
-    d.valuatorLow = low;
-    d.valuatorHigh = high;
-    return d;
-}
-
 }  // namespace
 
 TEST_CASE("echo structures: a menu panel and a slider are drawn by the toolkit and clicked by a script",
@@ -59,8 +40,10 @@ TEST_CASE("echo structures: a menu panel and a slider are drawn by the toolkit a
     WorkstationInteraction interaction(ws, script, queue);
     interaction.setSurfaceSize(display.width(), display.height());
     WorkstationInput& input = interaction.input();
-    input.initialise(InputClass::Choice, 1, menu({"Wing", "Tail", "Body"}, {10, 90, 10, 70, 0, 1}));
-    input.initialise(InputClass::Valuator, 1, slider(0, 10, 5, {100, 180, 150, 170, 0, 1}));
+    input.initialise(InputClass::Choice, 1,
+                     choicePanelInitialisation({"Wing", "Tail", "Body"}, {10, 90, 10, 70, 0, 1}));
+    input.initialise(InputClass::Valuator, 1,
+                     valuatorSliderInitialisation(0, 10, 5, {100, 180, 150, 170, 0, 1}));
     const EchoLayout layout = input.echoLayout();
     REQUIRE(layout.panels.size() == 1);
     REQUIRE(layout.sliders.size() == 1);

@@ -64,18 +64,11 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
         WorkstationInteraction interaction(ws, source, queue);
         interaction.setSurfaceSize(display.width(), display.height());
         WorkstationInput& input = interaction.input();
-        DeviceInitialisation menu;
-        menu.initial = ChoiceMeasure{InputStatus::Ok, 1};
-        menu.promptEchoType = 3;
-        menu.echoVolume = {10, 90, 10, 70, 0, 1};  // rows of 20 pixels
-        menu.choiceStrings = {"Wing", "Tail", "Body"};
-        input.initialise(InputClass::Choice, 1, menu);
-        DeviceInitialisation slider;
-        slider.initial = ValuatorMeasure{5.0};
-        slider.promptEchoType = 2;
-        slider.echoVolume = {100, 180, 150, 170, 0, 1};  // in the workstation window's 192 x 192
-        slider.valuatorHigh = 10.0;
-        input.initialise(InputClass::Valuator, 1, slider);
+        // Rows of 20 pixels; the slider inside the workstation window's 192 x 192 pixels.
+        input.initialise(InputClass::Choice, 1,
+                         choicePanelInitialisation({"Wing", "Tail", "Body"}, {10, 90, 10, 70, 0, 1}));
+        input.initialise(InputClass::Valuator, 1,
+                         valuatorSliderInitialisation(0, 10, 5, {100, 180, 150, 170, 0, 1}));
         input.setMode(InputClass::Choice, 1, OperatingMode::Event);
         input.setMode(InputClass::Valuator, 1, OperatingMode::Event);
         const EchoLayout layout = input.echoLayout();

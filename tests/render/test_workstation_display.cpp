@@ -164,6 +164,17 @@ TEST_CASE("workstation display: a posted network rendered offscreen is picked at
     auto [status, measure] = interaction.input().request(InputClass::Pick, 1);
     REQUIRE(status == InputStatus::Ok);
     CHECK(std::get<PickMeasure>(measure).path == std::vector<PickPathItem>{{1, 6, 5}});
+    // The pick echo: the display highlights the picked square (60 % toward yellow) and
+    // re-uploads no geometry for it.
+    REQUIRE(interaction.lastEcho().size() == 1);
+    display.setEcho(interaction.lastEcho());
+    REQUIRE(display.update());
+    CHECK(display.renderer().lastFrame().buffersCreated == 0);
+    const glm::dvec2 centre = red.centroid();
+    CHECK(shows(display.image(), centre, {1.0, 0.6, 0.0}, 16));
+    display.setEcho({});
+    REQUIRE(display.update());
+    CHECK(shows(display.image(), centre, {1.0, 0.0, 0.0}));
 
     auto [status2, measure2] = interaction.input().request(InputClass::Pick, 1);
     REQUIRE(status2 == InputStatus::Ok);

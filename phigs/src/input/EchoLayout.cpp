@@ -47,4 +47,24 @@ double ValuatorSlider::knobAt(double value) const {
                             : area.ymax - f * (area.ymax - area.ymin);
 }
 
+DeviceInitialisation choicePanelInitialisation(std::vector<std::string> alternatives, EchoVolume area,
+                                               int initial) {
+    DeviceInitialisation d;
+    d.initial = ChoiceMeasure{InputStatus::Ok, initial};
+    d.promptEchoType = 3;
+    d.echoVolume = area;
+    d.choiceStrings = std::move(alternatives);
+    return d;
+}
+
+DeviceInitialisation valuatorSliderInitialisation(double low, double high, double initial, EchoVolume area) {
+    DeviceInitialisation d;
+    d.initial = ValuatorMeasure{initial};
+    d.promptEchoType = 2;
+    d.echoVolume = area;
+    d.valuatorLow = low;
+    d.valuatorHigh = high;
+    return d;
+}
+
 }  // namespace phigs

@@ -14,7 +14,9 @@ DrawListMeasurer::DrawListMeasurer(std::function<const DrawList&()> display) : d
 }
 
 WorkstationMapping DrawListMeasurer::mappingOf(const DrawList& list) const {
-    return surface_ ? WorkstationMapping(list, surface_->first, surface_->second) : WorkstationMapping(list);
+    if (!surface_) return WorkstationMapping(list);
+    const auto [width, height] = surface_();
+    return WorkstationMapping(list, width, height);
 }
 
 glm::dvec3 DrawListMeasurer::toNpc(glm::dvec2 pixels) const {

@@ -15,10 +15,18 @@ const DrawList& WorkstationInteraction::pickList(const InputDevice& device) {
     TraversalFilters filters = workstation_.filters();
     if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
     DrawList& list = pickLists_[device.number];
+    lastPickList_ = &list;
     list = workstation_.traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
     list.generation = ++traversals_;
     return list;
+}
+
+std::vector<std::vector<DrawPathLevel>> WorkstationInteraction::lastEcho() const {
+    std::vector<std::vector<DrawPathLevel>> paths;
+    if (!lastPickList_) return paths;
+    for (std::size_t i : measurer_.lastEcho()) paths.push_back(lastPickList_->items.at(i).source.path);
+    return paths;
 }
 
 }  // namespace phigs

@@ -1,5 +1,6 @@
 #include "phigs/vk/WorkstationDisplay.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -55,7 +56,17 @@ void WorkstationDisplay::open(DisplaySettings settings) {
 }
 
 bool WorkstationDisplay::update() {
-    const DrawList& picture = workstation_.display();
+    const DrawList* shown = &workstation_.display();
+    if (!echo_.empty()) {
+        // A copy with the echoed items highlighted: highlighting is a draw record flag, so the
+        // renderer re-uploads only those records.
+        echoed_ = *shown;
+        for (DrawItem& item : echoed_.items)
+            if (std::find(echo_.begin(), echo_.end(), item.source.path) != echo_.end())
+                item.highlighted = true;
+        shown = &echoed_;
+    }
+    const DrawList& picture = *shown;
     if (offscreen_) {
         image_ = offscreen_->draw(picture);
         return true;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "phigs/input/InputDevice.h"
 #include "phigs/input/InputTypes.h"
 
 #include <glm/vec2.hpp>
@@ -44,5 +45,12 @@ struct EchoLayout {
     std::vector<ValuatorSlider> sliders;
     bool empty() const { return panels.empty() && sliders.empty(); }
 };
+
+/// The initialisation of a choice device shown as a menu panel (prompt/echo type 3) over
+/// `area` (pixels, y down) with the named alternatives, `initial` current (1-based).
+DeviceInitialisation choicePanelInitialisation(std::vector<std::string> alternatives, EchoVolume area,
+                                               int initial = 1);
+/// The initialisation of a valuator shown as a slider (prompt/echo type 2) over `area`.
+DeviceInitialisation valuatorSliderInitialisation(double low, double high, double initial, EchoVolume area);
 
 }  // namespace phigs

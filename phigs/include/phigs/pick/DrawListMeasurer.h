@@ -7,7 +7,7 @@
 
 #include <cstdint>
 #include <functional>
-#include <optional>
+#include <utility>
 #include <vector>
 
 namespace phigs {
@@ -32,7 +32,12 @@ public:
     }
     /// The source's surface in pixels (the rendered image or window). Default: one pixel per
     /// device coordinate of the display surface (`DrawList::displaySize`).
-    void setSurfaceSize(std::uint32_t width, std::uint32_t height) { surface_ = {width, height}; }
+    using SurfaceSize = std::pair<std::uint32_t, std::uint32_t>;
+    void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
+        surface_ = [width, height] { return SurfaceSize{width, height}; };
+    }
+    /// The surface size asked at each measure (a window the operator may resize).
+    void setSurfaceSize(std::function<SurfaceSize()> size) { surface_ = std::move(size); }
     /// NPC z given to 2D locator and stroke positions (default 0, the back of NPC space).
     void setLocatorDepth(double npcZ) { locatorDepth_ = npcZ; }
 
@@ -58,7 +63,7 @@ private:
 
     std::function<const DrawList&()> display_;
     std::function<const DrawList&(const InputDevice&)> pickList_;
-    std::optional<std::pair<std::uint32_t, std::uint32_t>> surface_;
+    std::function<SurfaceSize()> surface_;  ///< empty: one pixel per device unit
     double locatorDepth_ = 0.0;
     Picker picker_;
     mutable std::vector<std::size_t> echo_;

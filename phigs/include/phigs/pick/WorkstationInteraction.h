@@ -7,8 +7,10 @@
 #include "phigs/ws/Workstation.h"
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace phigs {
 
@@ -33,6 +35,14 @@ public:
     void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
         measurer_.setSurfaceSize(width, height);
     }
+    /// The surface size asked at each measure, e.g. a window display's current size:
+    /// `followSurface([&] { return std::pair{display.width(), display.height()}; })`.
+    void followSurface(std::function<DrawListMeasurer::SurfaceSize()> size) {
+        measurer_.setSurfaceSize(std::move(size));
+    }
+    /// The paths of the items the last pick's echo highlights (empty when it hit nothing or the
+    /// device's echo is off): hand them to the display (vk::WorkstationDisplay::setEcho).
+    std::vector<std::vector<DrawPathLevel>> lastEcho() const;
 
 private:
     const DrawList& pickList(const InputDevice& device);
@@ -41,6 +51,7 @@ private:
     DrawListMeasurer measurer_;
     std::map<int, DrawList> pickLists_;  ///< by pick device number, the last traversal for it
     std::uint64_t traversals_ = 0;
+    const DrawList* lastPickList_ = nullptr;  ///< the list the last pick was measured on
     std::unique_ptr<WorkstationInput> input_;
 };
 

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace phigs::vk {
 
@@ -41,6 +42,9 @@ public:
 
     /// Draws what the workstation shows now. Returns false once a window has been closed.
     bool update();
+    /// Pick echo: the items with these paths (WorkstationInteraction::lastEcho) are drawn
+    /// highlighted until the echo is set again (empty: none).
+    void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { echo_ = std::move(paths); }
     /// The last picture (offscreen and hardcopy; a window only with `readBack`).
     const Image& image() const { return image_; }
 
@@ -66,6 +70,8 @@ private:
     std::unique_ptr<WindowWorkstation> window_;
     bool readBack_ = false;
     Image image_;
+    std::vector<std::vector<DrawPathLevel>> echo_;
+    DrawList echoed_;  ///< the picture with the echo applied
 };
 
 }  // namespace phigs::vk
