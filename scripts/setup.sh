@@ -13,6 +13,7 @@ packages=(
   libglfw3-dev xvfb xauth            # windows, and a virtual X server to test them
   libxtst-dev                        # real pointer and key events on the virtual X server
   catch2                             # tests
+  clang-format                       # the style test (sources follow .clang-format)
   hershey-fonts-data                 # stroke fonts for PHIGS text
   libsisl-dev                        # baseline in the geometry benchmarks
   libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths

@@ -494,7 +494,6 @@ void PartMapper::run() {
             arc.used = true;
             loop.insert(loop.end(), arc.vertices.begin(), arc.vertices.end());
             const int c = arc.exit.component;
-            const double l = boundary_.lengths[static_cast<std::size_t>(c)];
             std::size_t next = arcs.size();
             double nearest = 1e300, nearestExit = 1e300;
             for (std::size_t j = 0; j < arcs.size(); ++j) {
@@ -522,7 +521,6 @@ void PartMapper::run() {
                 ++walks;
                 for (const Vertex& v : boundaryWalk(c, arc.exit.sigma, nearest)) loop.push_back(v);
             }
-            (void)l;
             cur = next;
             if (cur == first) break;
             if (arcs[cur].used) {
