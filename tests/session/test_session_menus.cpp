@@ -1,10 +1,11 @@
-// Session replays of each menu path, driven line by line on a 320 x 256 screen, with their
+// Session replays of each menu path, driven line by line on a 320 x 240 screen, with their
 // summaries checked and their pictures compared with tests/data/session/*.png.
 #include "SessionTestSupport.h"
 
 #include "geom/Evaluate.h"
 
 #include <fstream>
+#include <map>
 
 using session_test::Driver;
 
@@ -265,19 +266,100 @@ TEST_CASE("FILE menu: save and read back a model, archive and retrieve its struc
     d.run({"choice READ_MODEL", "string " + (out / "saved.acm").string()});
     CHECK(d.session.message() == "A MODEL NAMED fighter IS ALREADY LOADED");
     CHECK(d.session.models().size() == 1);
+
+    // Read back beside the original once that is renamed: the saved file lofts to the same model.
+    d.run({"choice RETURN", "choice MODELS", "choice NAME_MODEL", "string original", "choice RETURN",
+           "choice FILE", "choice READ_MODEL", "string " + (out / "saved.acm").string()});
+    CHECK(d.session.message() == "MODEL fighter READ: 6 COMPONENTS, 192 PATCHES");
+    REQUIRE(d.session.models().size() == 2);
+    const acsynt::Model& original = d.session.models().at(0);
+    const acsynt::Model& readBack = d.session.models().at(1);
+    CHECK(original.name == "original");
+    CHECK(readBack.name == "fighter");
+    CHECK(d.session.models().current().name == "fighter");
+    REQUIRE(readBack.components.size() == original.components.size());
+    CHECK(readBack.patchCount() == original.patchCount());
+    for (std::size_t c = 0; c < original.components.size(); ++c) {
+        const acsynt::Component& a = original.components[c];
+        const acsynt::Component& b = readBack.components[c];
+        INFO("component " << a.name);
+        CHECK(b.name == a.name);
+        CHECK(b.patches.patches.size() == a.patches.patches.size());
+        CHECK(b.surface.countU == a.surface.countU);
+        CHECK(b.surface.countV == a.surface.countV);
+        for (const glm::dvec2 uw : {glm::dvec2(0.0, 0.0), glm::dvec2(0.3, 0.7), glm::dvec2(0.5, 0.5),
+                                    glm::dvec2(0.9, 0.15), glm::dvec2(1.0, 1.0)})
+            CHECK(glm::length(geom::evaluate(b.surface, uw.x, uw.y) - geom::evaluate(a.surface, uw.x, uw.y)) <
+                  1e-12);
+    }
+
+    // ARCHIVE the network of the model root, spoil two of its structures, RETRIEVE puts them back.
+    phigs::StructureStore& store = d.session.phigs().store();
+    std::map<int, int> elementCounts;
+    for (const int id : store.network(acsynt::structures::modelRoot))
+        elementCounts[id] = store.elementCount(id);
     d.run({"choice ARCHIVE", "string fighter.phar"});
     CHECK(d.session.message().rfind("ARCHIVED ", 0) == 0);
     const std::size_t structures = std::size_t(std::stoi(d.session.message().substr(9)));
     CHECK(structures ==
           1 + 6 + 192 + 3);  // root, components, patches, overlays (hulls are off, not in the network)
+    CHECK(elementCounts.size() == structures);
+    const int component = acsynt::structures::component(1), patch = acsynt::structures::patch(1, 5);
+    REQUIRE(elementCounts.count(component));
+    REQUIRE(elementCounts.count(patch));
+    REQUIRE(elementCounts[component] > 0);
+    REQUIRE(elementCounts[patch] > 0);
+    store.emptyStructure(component);
+    store.deleteStructure(patch);
+    REQUIRE(store.elementCount(component) == 0);
+    REQUIRE_FALSE(store.exists(patch));
     d.run({"choice RETRIEVE", "string " + (out / "fighter.phar").string()});
     CHECK(d.session.message() ==
           "RETRIEVED " + std::to_string(structures) + " STRUCTURES FROM " + (out / "fighter.phar").string());
+    for (const auto& [id, count] : elementCounts) {
+        INFO("structure " << id);
+        REQUIRE(store.exists(id));
+        CHECK(store.elementCount(id) == count);
+    }
     d.run({"choice RETRIEVE", "string missing.phar"});
     CHECK(d.session.message() == "ARCHIVE FILE missing.phar NOT FOUND");
     d.run({"choice READ_CURVE_FILE", "string acslogo.crv"});
     CHECK(d.session.message() == "CURVE MODEL acslogo.crv LOADED: 5 PARTS");
     d.run({"choice EXIT"});
+    CHECK(d.session.finished());
+}
+
+TEST_CASE("numbered choices: `choice N` takes the Nth item of the menu shown") {
+    Driver d("numbered");
+    d.run({"choice 1"});  // MAIN: FILE
+    CHECK(d.session.menuTitle() == "FILE");
+    d.run({"choice 2", "string fighter.acm"});  // READ_MODEL
+    CHECK(d.session.message() == "MODEL fighter READ: 6 COMPONENTS, 192 PATCHES");
+    d.run({"choice 1", "choice 2"});  // RETURN, then MAIN: VIEW
+    CHECK(d.session.menuTitle() == "VIEW");
+    d.run({"choice 3", "choice 5", "choice 6"});  // FOUR_VIEWS, WIREFRAME, HULL_ON
+    CHECK(d.session.fourViews());
+    CHECK_FALSE(d.session.style().shaded);
+    CHECK(d.session.style().hull);
+    d.run({"choice 7", "choice 4", "choice 2"});  // HULL_OFF, SHADE, ONE_VIEW
+    CHECK_FALSE(d.session.fourViews());
+    CHECK(d.session.style().shaded);
+    CHECK_FALSE(d.session.style().hull);
+    d.run({"choice 1", "choice 5"});  // RETURN, then MAIN: MODELS
+    CHECK(d.session.menuTitle() == "MODELS");
+    d.run({"choice 5", "string jet"});  // NAME_MODEL
+    CHECK(d.session.message() == "CURRENT MODEL NAMED jet");
+    d.run({"choice 4"});  // LIST
+    CHECK(d.session.message() == "MODELS: jet*");
+    d.run({"choice 2"});  // NEXT_MODEL
+    CHECK(d.session.message() == "NEXT MODEL DOES NOT EXIST");
+    // A number past the end of the menu is refused with the range: the menu stays, the session goes on.
+    d.run({"choice 7"});
+    CHECK(d.session.message().find("CHOICE 1 has alternatives 1..6") != std::string::npos);
+    CHECK(d.logHasError());
+    CHECK(d.session.menuTitle() == "MODELS");
+    CHECK(d.session.models().size() == 1);
+    d.run({"choice 1", "choice 6"});  // RETURN, then MAIN: EXIT
     CHECK(d.session.finished());
 }
 

@@ -95,6 +95,8 @@ public:
     /// The current picture (regenerated when the structures changed).
     const phigs::DrawList& picture();
     phigs::Workstation& workstation() { return *workstation_; }
+    /// The session's PHIGS: its structure store holds the model structures (tests inspect them).
+    phigs::Phigs& phigs() { return phigs_; }
     const ScreenLayout& layout() const { return layout_; }
     /// Screen pixel of a world point in view `view` (the view table's orientation and mapping).
     glm::dvec2 pixelOf(const glm::dvec3& world, int view);
