@@ -21,6 +21,10 @@ require_found(Vulkan_FOUND libvulkan-dev "Vulkan headers and loader")
 find_program(GLSLANG_VALIDATOR glslangValidator)
 require_found(GLSLANG_VALIDATOR glslang-tools "glslangValidator")
 
+# The renderer specialises its shaders with the SPIRV-Tools optimiser (phigs/src/vk/ShaderSpecialisation.cpp).
+find_package(SPIRV-Tools-opt CONFIG QUIET)
+require_found(SPIRV-Tools-opt_FOUND spirv-tools "SPIRV-Tools (optimiser library)")
+
 find_package(glfw3 CONFIG QUIET)
 require_found(glfw3_FOUND libglfw3-dev "GLFW 3")
 

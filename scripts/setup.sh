@@ -10,6 +10,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers  # Vulkan loader + headers, Mesa lavapipe
   vulkan-validationlayers            # Khronos validation layer, on in every render test
   glslang-tools                      # GLSL -> SPIR-V at build time
+  spirv-tools                        # SPIRV-Tools optimiser: the renderer specialises its shaders
   libglfw3-dev xvfb xauth            # windows, and a virtual X server to test them
   libxtst-dev                        # real pointer and key events on the virtual X server
   catch2                             # tests

@@ -1,5 +1,5 @@
 #version 450
-// The one fragment shader: NPC z and model clipping, hatch and line patterns, flat / Gouraud / Phong
+// The one fragment shader (specialised per pipeline, see scene.glsl): NPC z and model clipping, hatch and line patterns, flat / Gouraud / Phong
 // lighting with distinct back faces, depth cueing and highlighting.
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
@@ -13,17 +13,6 @@ layout(location = 5) in vec3 vLitFront;
 layout(location = 6) in vec3 vLitBack;
 
 layout(location = 0) out vec4 outColour;
-
-// False for pipelines whose draws never discard (no hatch, pattern, z or model clip): the compiler then
-// drops every discard and the depth test can run before shading.
-layout(constant_id = 0) const bool MAY_DISCARD = true;
-// The shading this pipeline does per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
-layout(constant_id = 1) const int FRAGMENT_SHADING = 0;
-// False where the pipeline's draws have no depth cue, no vertex colours, or need no world position
-// (only directional and ambient lights): the inputs then go unread and the varyings are dropped.
-layout(constant_id = 4) const bool USE_DEPTH_CUE = true;
-layout(constant_id = 5) const bool USE_VERTEX_COLOURS = true;
-layout(constant_id = 6) const bool USE_WORLD_POSITION = true;
 
 bool hatchOn(int index, vec2 p) {
     const float spacing = 8.0;
@@ -57,9 +46,9 @@ bool patternOn(int type, float width, float distance) {
 }
 
 void main() {
-    int viewIndex = DRAW.indices.x;
-    int flags = DRAW.indices.w;
+    int viewIndex = push.viewIndex;
     if (MAY_DISCARD) {
+        int flags = DRAW.indices.w;
         vec4 clip = frame.views[viewIndex].clip;
         if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
         if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
@@ -71,9 +60,13 @@ void main() {
             if (dot(frame.clipPlanes[i].xyz, vWorld) + frame.clipPlanes[i].w < 0.0) discard;
     }
 
-    bool back = !gl_FrontFacing && (flags & FLAG_TRIANGLES) != 0;
-    vec3 colour = back ? vLitBack : vLitFront;
-    if (FRAGMENT_SHADING != 0) {
+    bool back = TRIANGLES && !gl_FrontFacing;
+    bool useBack = DISTINGUISH_BACK && back;
+    vec3 base = USE_VERTEX_COLOURS ? vColour : DRAW.colour.rgb;
+    vec3 colour;
+    if (VERTEX_LIGHTING) {
+        colour = back ? vLitBack : vLitFront;
+    } else if (FRAGMENT_SHADING != 0) {
         vec3 n;
         if (FRAGMENT_SHADING == SHADE_PHONG) {
             n = normalize(vNormal);
@@ -90,20 +83,17 @@ void main() {
             }
         }
         if (back) n = -n;
-        bool useBack = back && (flags & FLAG_DISTINGUISH_BACK) != 0;
-        vec3 base = USE_VERTEX_COLOURS ? vColour : DRAW.colour.rgb;
         vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
         colour = lit(useBack, useBack ? DRAW.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
+    } else {
+        colour = useBack ? DRAW.backColour.rgb : base;
     }
-    if (USE_DEPTH_CUE && DRAW.indices.z >= 0) {
-        int cueIndex = DRAW.indices.z;
-        DepthCue cue = frame.cues[cueIndex];
-        if (cue.colour.w > 0.0) {
-            float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);
-            float s = mix(cue.planes.w, cue.planes.z, t);
-            colour = s * colour + (1.0 - s) * cue.colour.rgb;
-        }
+    if (USE_DEPTH_CUE) {
+        DepthCue cue = frame.cues[push.depthCue];
+        float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);
+        float s = mix(cue.planes.w, cue.planes.z, t);
+        colour = s * colour + (1.0 - s) * cue.colour.rgb;
     }
-    if ((flags & FLAG_HIGHLIGHT) != 0) colour = mix(colour, frame.highlight.rgb, frame.highlight.w);
+    if (HIGHLIGHTED) colour = mix(colour, frame.highlight.rgb, frame.highlight.w);
     outColour = vec4(clamp(colour, 0.0, 1.0), 1.0);
 }

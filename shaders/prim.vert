@@ -20,25 +20,31 @@ layout(location = 5) out vec3 vLitFront;
 layout(location = 6) out vec3 vLitBack;
 
 void main() {
-    int viewIndex = DRAW.indices.x;
+    // Outputs are written, never read back: the renderer removes the stores the fragment shader
+    // does not need (phigs/src/vk/ShaderSpecialisation.cpp), which a read-back would then miss.
+    int viewIndex = push.viewIndex;
     vec4 world = DRAW.model * vec4(inPosition, 1.0);
-    vWorld = world.xyz / world.w;
+    vec3 worldPoint = world.xyz / world.w;
     vec3 normal = mat3(DRAW.normalMatrix) * inNormal;
-    vNormal = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
-    vColour = (DRAW.indices.w & FLAG_VERTEX_COLOURS) != 0 ? inColour : DRAW.colour.rgb;
+    normal = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
+    vec3 colour = USE_VERTEX_COLOURS ? inColour : DRAW.colour.rgb;
+    vWorld = worldPoint;
+    vNormal = normal;
+    vColour = colour;
     vPattern = inPattern;
     vec4 npc = frame.views[viewIndex].worldToNpc * world;
     vNpcZ = npc.z / npc.w;
-    gl_Position = frame.views[viewIndex].worldToClip * world;
-    if ((DRAW.indices.w & FLAG_OFFSET_NPC) != 0)
-        gl_Position.xy += inOffset * frame.pixelScale.z * frame.pixelScale.xy * gl_Position.w;
-    else
-        gl_Position.xy += inOffset * frame.pixelScale.xy * gl_Position.w;
-    vLitFront = vColour;
-    vLitBack = (DRAW.indices.w & FLAG_DISTINGUISH_BACK) != 0 ? DRAW.backColour.rgb : vColour;
-    if ((DRAW.indices.w & FLAG_LIT) != 0 && DRAW.style.w == SHADE_GOURAUD) {
-        vec3 n = vNormal;
-        vLitFront = lit(false, vLitFront, vWorld, n, frame.views[viewIndex].eye.xyz);
-        vLitBack = lit((DRAW.indices.w & FLAG_DISTINGUISH_BACK) != 0, vLitBack, vWorld, -n, frame.views[viewIndex].eye.xyz);
+    vec4 clip = frame.views[viewIndex].worldToClip * world;
+    if (SCREEN_OFFSETS != 0) {
+        float offsetScale = SCREEN_OFFSETS == 2 ? frame.pixelScale.z : 1.0;
+        clip.xy += inOffset * offsetScale * frame.pixelScale.xy * clip.w;
+    }
+    gl_Position = clip;
+    vLitFront = vec3(0.0);
+    vLitBack = vec3(0.0);
+    if (VERTEX_LIGHTING) {
+        vec3 eye = frame.views[viewIndex].eye.xyz;
+        vLitFront = lit(false, colour, worldPoint, normal, eye);
+        vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? DRAW.backColour.rgb : colour, worldPoint, -normal, eye);
     }
 }

@@ -67,18 +67,47 @@ layout(std430, set = 0, binding = 1) readonly buffer Draws {
     DrawParams draws[];
 };
 
+// The draw record's index and the frame-block indices the shaders look up with. Indices from push
+// constants are uniform by rule, so lavapipe loads through them once per draw call instead of
+// gathering per fragment as it does through an index read from a buffer.
 layout(push_constant) uniform Push {
     uint drawIndex;
+    int viewIndex;
+    int firstLight;  // the light set's first light in frame.lights
+    int depthCue;
 } push;
 
 // The current draw's record, read field by field (copying whole records is slow on lavapipe).
 #define DRAW draws[push.drawIndex]
 
-// Pipelines may fix the light set's shape at compile time: LIGHT_SIGNATURE is -1 (read the set
-// at run time) or count | type1 << 3 | type2 << 6 | ... (up to 4 lights); REFLECTANCE_MODEL is 0
-// (read it from the draw record) or the model. Fixed shapes let the compiler unroll the loop.
+// Specialisation constants, the same in both stages: phigs/src/vk/Renderer.cpp derives them from
+// the pipeline key, so every draw of a pipeline shares them, and freezes them into the SPIR-V
+// before the driver sees it. Each optional feature is switched here rather than by a flag in the
+// draw record: lavapipe pays for a branch on a flag per vertex or fragment, taken or not.
+
+// False for pipelines whose draws never discard (no hatch, pattern, z or model clip): the compiler then
+// drops every discard and the depth test can run before shading.
+layout(constant_id = 0) const bool MAY_DISCARD = true;
+// The shading done per fragment: 0 none (unlit or Gouraud), SHADE_FLAT or SHADE_PHONG.
+layout(constant_id = 1) const int FRAGMENT_SHADING = 0;
+// The light set's shape: -1 (read the set at run time) or count | type1 << 3 | type2 << 6 | ...
+// (up to 4 lights); REFLECTANCE_MODEL is 0 (read it from the draw record) or the model. Fixed
+// shapes let the compiler unroll the loop.
 layout(constant_id = 2) const int LIGHT_SIGNATURE = -1;
 layout(constant_id = 3) const int REFLECTANCE_MODEL = 0;
+// The draws are depth cued / have vertex colours / need the world position per fragment (local
+// lights, flat normals, model clipping).
+layout(constant_id = 4) const bool USE_DEPTH_CUE = true;
+layout(constant_id = 5) const bool USE_VERTEX_COLOURS = true;
+layout(constant_id = 6) const bool USE_WORLD_POSITION = true;
+// Gouraud: the vertex shader lights the vertices.
+layout(constant_id = 7) const bool VERTEX_LIGHTING = false;
+// The draws are highlighted / give back faces their own colour and reflectance / are triangles.
+layout(constant_id = 8) const bool HIGHLIGHTED = false;
+layout(constant_id = 9) const bool DISTINGUISH_BACK = false;
+layout(constant_id = 10) const bool TRIANGLES = true;
+// Screen offsets of the vertices: 0 none, 1 in pixels (markers), 2 in NPC (annotation text).
+layout(constant_id = 11) const int SCREEN_OFFSETS = 1;
 
 vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world, vec3 n, vec3 eye) {
     vec4 colour = frame.lights[i].colour;
@@ -100,13 +129,14 @@ vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world
             attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
         }
     }
+    // No branch on the facing: light from behind adds nothing, diffuse or specular.
     float nl = dot(n, l);
-    if (nl <= 0.0) return vec3(0.0);
-    vec3 sum = k.y * colour.rgb * base * nl * attenuation;
+    float facing = nl > 0.0 ? attenuation : 0.0;
+    vec3 sum = k.y * colour.rgb * base * (max(nl, 0.0) * attenuation);
     if (model >= 4) {
         vec3 r = reflect(-l, n);
         float rv = max(dot(r, eye), 0.0);
-        sum += k.z * colour.rgb * sc.rgb * pow(rv, max(k.w, 0.0)) * attenuation;
+        sum += k.z * colour.rgb * sc.rgb * (pow(rv, max(k.w, 0.0)) * facing);
     }
     return sum;
 }
@@ -117,16 +147,22 @@ vec3 lit(bool back, vec3 base, vec3 world, vec3 n, vec3 eye) {
     vec4 sc = back ? DRAW.backSpecularColour : DRAW.specularColour;
     int model = REFLECTANCE_MODEL != 0 ? REFLECTANCE_MODEL : int(sc.w + 0.5);
     int lightSet = DRAW.indices.y;
-    if (model <= 1 || lightSet < 0) return base;
-    ivec2 set = frame.lightSets[lightSet].xy;
+    // A fixed model means a lit pipeline, whose draws always name a light set.
+    if (model <= 1 || (REFLECTANCE_MODEL == 0 && lightSet < 0)) return base;
+    int first = push.firstLight;
     vec3 sum = vec3(0.0);
     if (LIGHT_SIGNATURE >= 0) {
+        // Unrolled by hand: with the shape frozen each light's type is a constant, and the code
+        // of the other types goes (SPIRV-Tools does not unroll the loop form).
         int count = LIGHT_SIGNATURE & 7;
-        for (int j = 0; j < 4; ++j)
-            if (j < count) sum += oneLight((LIGHT_SIGNATURE >> (3 + 3 * j)) & 7, set.x + j, model, k, sc, base, world, n, eye);
+        if (count > 0) sum += oneLight((LIGHT_SIGNATURE >> 3) & 7, first, model, k, sc, base, world, n, eye);
+        if (count > 1) sum += oneLight((LIGHT_SIGNATURE >> 6) & 7, first + 1, model, k, sc, base, world, n, eye);
+        if (count > 2) sum += oneLight((LIGHT_SIGNATURE >> 9) & 7, first + 2, model, k, sc, base, world, n, eye);
+        if (count > 3) sum += oneLight((LIGHT_SIGNATURE >> 12) & 7, first + 3, model, k, sc, base, world, n, eye);
         return sum;
     }
-    for (int i = set.x; i < set.x + set.y; ++i)
+    int count = frame.lightSets[lightSet].y;
+    for (int i = first; i < first + count; ++i)
         sum += oneLight(int(frame.lights[i].colour.w + 0.5), i, model, k, sc, base, world, n, eye);
     return sum;
 }

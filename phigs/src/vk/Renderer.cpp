@@ -1,6 +1,7 @@
 #include "phigs/vk/Renderer.h"
 
 #include "GpuLayout.h"
+#include "ShaderSpecialisation.h"
 #include "phigs/ws/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -28,12 +30,17 @@ constexpr int kSignatureShift = 11;   // light set signature + 1 (0: read at run
 constexpr std::uint64_t kNoDepthCue = 1ull << 27;
 constexpr std::uint64_t kNoVertexColours = 1ull << 28;
 constexpr std::uint64_t kNoWorldPosition = 1ull << 29;
+// Features a pipeline's draws all have, so the shaders test nothing per vertex or fragment
+// (lavapipe runs both sides of every branch that is not constant).
+constexpr std::uint64_t kVertexLighting = 1ull << 30;
+constexpr std::uint64_t kHighlighted = 1ull << 31;
+constexpr std::uint64_t kDistinguishBack = 1ull << 32;
+constexpr int kOffsetShift = 33;  // screen offsets: 0 none, 1 pixels (markers), 2 NPC (annotation text)
 
-VkShaderModule createShader(VkDevice device, const char* name) {
-    const auto words = shaders::spirv(name);
+VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-    info.codeSize = words.size_bytes();
+    info.codeSize = words.size() * sizeof(std::uint32_t);
     info.pCode = words.data();
     VkShaderModule module = VK_NULL_HANDLE;
     check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
@@ -124,8 +131,6 @@ Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalL
         check(vkCreateRenderPass(device, &rpInfo, nullptr, &renderPass_), "vkCreateRenderPass");
 
         createDescriptors();
-        vertexShader_ = createShader(device, "prim.vert");
-        fragmentShader_ = createShader(device, "prim.frag");
     } catch (...) {
         release();
         throw;
@@ -145,13 +150,10 @@ void Renderer::release() {
     frameBuffer_.reset();
     for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
     pipelines_.clear();
-    if (vertexShader_) vkDestroyShaderModule(device, vertexShader_, nullptr);
-    if (fragmentShader_) vkDestroyShaderModule(device, fragmentShader_, nullptr);
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
     if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
     if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
-    vertexShader_ = fragmentShader_ = VK_NULL_HANDLE;
     pool_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     setLayout_ = VK_NULL_HANDLE;
@@ -176,7 +178,7 @@ void Renderer::createDescriptors() {
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
 
     VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                              sizeof(std::uint32_t)};
+                              sizeof(Command::Push)};
     VkPipelineLayoutCreateInfo layoutInfo{};
     layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
     layoutInfo.setLayoutCount = 1;
@@ -207,50 +209,62 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     const bool depth = key & kDepth;
     const auto cull = static_cast<CullMode>((key >> kCullShift) & 3);
     const VkBool32 mayDiscard = (key & kMayDiscard) ? VK_TRUE : VK_FALSE;
-    struct {
-        VkBool32 mayDiscard;
-        std::int32_t fragmentShading, lightSignature, reflectance;
-        VkBool32 depthCue, vertexColours, worldPosition;
-    } constants{mayDiscard,
-                std::int32_t((key >> kShadeShift) & 7),
-                std::int32_t((key >> kSignatureShift) & 0xffff) - 1,
-                std::int32_t((key >> kReflectanceShift) & 7),
-                (key & kNoDepthCue) ? VK_FALSE : VK_TRUE,
-                (key & kNoVertexColours) ? VK_FALSE : VK_TRUE,
-                (key & kNoWorldPosition) ? VK_FALSE : VK_TRUE};
-    const VkSpecializationMapEntry entries[7] = {{0, 0, 4},  {1, 4, 4},  {2, 8, 4}, {3, 12, 4},
-                                                 {4, 16, 4}, {5, 20, 4}, {6, 24, 4}};
-    VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = 7;
-    specialization.pMapEntries = entries;
-    specialization.dataSize = sizeof constants;
-    specialization.pData = &constants;
+    auto flag = [&](std::uint64_t bit) { return (key & bit) ? 1 : 0; };
+    // The specialisation constants of shaders/scene.glsl.
+    const SpecialisationValue constants[] = {
+        {0, mayDiscard ? 1 : 0},
+        {1, std::int32_t((key >> kShadeShift) & 7)},
+        {2, std::int32_t((key >> kSignatureShift) & 0xffff) - 1},
+        {3, std::int32_t((key >> kReflectanceShift) & 7)},
+        {4, 1 - flag(kNoDepthCue)},
+        {5, 1 - flag(kNoVertexColours)},
+        {6, 1 - flag(kNoWorldPosition)},
+        {7, flag(kVertexLighting)},
+        {8, flag(kHighlighted)},
+        {9, flag(kDistinguishBack)},
+        {10, lines ? 0 : 1},
+        {11, std::int32_t((key >> kOffsetShift) & 3)},
+    };
+    const SpecialisedStages code =
+        specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
+    VkDevice device = context_.device();
+    struct Modules {
+        VkDevice device;
+        VkShaderModule vertex = VK_NULL_HANDLE, fragment = VK_NULL_HANDLE;
+        ~Modules() {
+            if (vertex) vkDestroyShaderModule(device, vertex, nullptr);
+            if (fragment) vkDestroyShaderModule(device, fragment, nullptr);
+        }
+    } modules{device};
+    modules.vertex = createShader(device, code.vertex);
+    modules.fragment = createShader(device, code.fragment);
 
     VkPipelineShaderStageCreateInfo stages[2]{};
     stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vertexShader_;
+    stages[0].module = modules.vertex;
     stages[0].pName = "main";
     stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = fragmentShader_;
+    stages[1].module = modules.fragment;
     stages[1].pName = "main";
-    stages[1].pSpecializationInfo = &specialization;
 
     VkVertexInputBindingDescription binding{0, sizeof(render::RenderVertex), VK_VERTEX_INPUT_RATE_VERTEX};
-    VkVertexInputAttributeDescription attributes[5] = {
+    const VkVertexInputAttributeDescription allAttributes[5] = {
         {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, position)},
         {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, normal)},
         {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(render::RenderVertex, colour)},
         {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(render::RenderVertex, offset)},
         {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(render::RenderVertex, pattern)},
     };
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    for (std::uint32_t location : code.vertexInputLocations) attributes.push_back(allAttributes[location]);
     VkPipelineVertexInputStateCreateInfo vertexInput{};
     vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
     vertexInput.vertexBindingDescriptionCount = 1;
     vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = 5;
-    vertexInput.pVertexAttributeDescriptions = attributes;
+    vertexInput.vertexAttributeDescriptionCount = std::uint32_t(attributes.size());
+    vertexInput.pVertexAttributeDescriptions = attributes.data();
     VkPipelineInputAssemblyStateCreateInfo assembly{};
     assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
     assembly.topology = lines ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -371,7 +385,12 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     std::vector<gpu::DrawParams> draws;
     // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
     std::vector<int> signatures;
+    // Each light set's first light in the frame block's light array (see uploadFrame).
+    std::vector<int> firstLights;
+    int nextLight = 0;
     for (const auto& set : list.lightSets) {
+        firstLights.push_back(nextLight);
+        nextLight += int(set.size());
         int signature = set.size() <= 4 ? int(set.size()) : -1;
         for (std::size_t j = 0; signature >= 0 && j < set.size(); ++j)
             signature |= (int(set[j].type) & 7) << (3 + 3 * j);
@@ -451,24 +470,37 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
             if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
                 c.pipeline |= kMayDiscard;
-            if ((flags & gpu::Lit) && shade != gpu::Gouraud) {
-                c.pipeline |= shade << kShadeShift;
+            bool fragmentNeedsWorld = modelClip.y > 0;
+            if (flags & gpu::Lit) {
                 // Front and back share the model; a fixed light set shape lets the shader unroll.
                 c.pipeline |= int(interior->reflectance) << kReflectanceShift;
                 const int signature = signatures[std::size_t(item.lightSet)];
                 c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
-                if (!cued) c.pipeline |= kNoDepthCue;
-                if (!part.vertexColours) c.pipeline |= kNoVertexColours;
-                bool local = signature < 0 || shade == gpu::Flat;
-                for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
-                    local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
-                if (!local && modelClip.y == 0) c.pipeline |= kNoWorldPosition;
+                if (shade == gpu::Gouraud) {
+                    c.pipeline |= kVertexLighting;
+                } else {
+                    c.pipeline |= shade << kShadeShift;
+                    bool local = signature < 0 || shade == gpu::Flat;
+                    for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
+                        local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
+                    fragmentNeedsWorld = fragmentNeedsWorld || local;
+                }
             }
+            if (!cued) c.pipeline |= kNoDepthCue;
+            if (!part.vertexColours) c.pipeline |= kNoVertexColours;
+            if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
+            if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
+            if (flags & gpu::DistinguishBack) c.pipeline |= kDistinguishBack;
+            const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
+            c.pipeline |= std::uint64_t(offsets) << kOffsetShift;
             c.vertices = vertices;
             c.indices = indices;
             c.first = part.first;
             c.count = part.count;
-            c.drawIndex = static_cast<std::uint32_t>(draws.size());
+            c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
+            c.push.viewIndex = item.viewIndex;
+            c.push.firstLight = item.lightSet >= 0 ? firstLights[std::size_t(item.lightSet)] : 0;
+            c.push.depthCue = item.depthCue;
             c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
             c.scissor = scissor;
             pipeline(c.pipeline);
@@ -695,6 +727,9 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
     std::uint64_t bound = ~0ull;
     VkBuffer boundVertices = VK_NULL_HANDLE, boundIndices = VK_NULL_HANDLE;
+    VkRect2D scissor{};
+    float lineWidth = 0.0f;
+    bool first = true;
     for (const Command& c : commands_) {
         if (c.pipeline != bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.at(c.pipeline));
@@ -705,10 +740,18 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
             vkCmdBindVertexBuffers(cmd, 0, 1, &c.vertices, &offset);
             boundVertices = c.vertices;
         }
-        vkCmdSetScissor(cmd, 0, 1, &c.scissor);
-        vkCmdSetLineWidth(cmd, c.lineWidth);
+        // Only changes: each dynamic state change costs lavapipe a rasteriser state rebuild.
+        if (first || std::memcmp(&c.scissor, &scissor, sizeof scissor) != 0) {
+            vkCmdSetScissor(cmd, 0, 1, &c.scissor);
+            scissor = c.scissor;
+        }
+        if (first || c.lineWidth != lineWidth) {
+            vkCmdSetLineWidth(cmd, c.lineWidth);
+            lineWidth = c.lineWidth;
+        }
+        first = false;
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                           sizeof c.drawIndex, &c.drawIndex);
+                           sizeof c.push, &c.push);
         if (c.indices) {
             if (c.indices != boundIndices) {
                 vkCmdBindIndexBuffer(cmd, c.indices, 0, VK_INDEX_TYPE_UINT32);

@@ -61,7 +61,11 @@ private:
         VkBuffer vertices = VK_NULL_HANDLE;
         VkBuffer indices = VK_NULL_HANDLE;
         std::uint32_t first = 0, count = 0;
-        std::uint32_t drawIndex = 0;
+        /// The push constants (shaders/scene.glsl): draw record, view, first light, depth cue.
+        struct Push {
+            std::uint32_t drawIndex = 0;
+            std::int32_t viewIndex = 0, firstLight = 0, depthCue = -1;
+        } push;
         float lineWidth = 1.0f;
         VkRect2D scissor{};
     };
@@ -83,8 +87,6 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;
-    VkShaderModule vertexShader_ = VK_NULL_HANDLE;
-    VkShaderModule fragmentShader_ = VK_NULL_HANDLE;
     std::map<std::uint64_t, VkPipeline> pipelines_;
     float maxLineWidth_ = 1.0f;
 
