@@ -62,7 +62,7 @@ void main() {
 
     bool back = TRIANGLES && !gl_FrontFacing;
     bool useBack = DISTINGUISH_BACK && back;
-    vec3 base = USE_VERTEX_COLOURS ? vColour : DRAW.colour.rgb;
+    vec3 base = USE_VERTEX_COLOURS ? vColour : push.colour.rgb;
     vec3 colour;
     if (VERTEX_LIGHTING) {
         colour = back ? vLitBack : vLitFront;
@@ -84,9 +84,9 @@ void main() {
         }
         if (back) n = -n;
         vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
-        colour = lit(useBack, useBack ? DRAW.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
+        colour = lit(useBack, useBack ? push.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
     } else {
-        colour = useBack ? DRAW.backColour.rgb : base;
+        colour = useBack ? push.backColour.rgb : base;
     }
     if (USE_DEPTH_CUE) {
         DepthCue cue = frame.cues[push.depthCue];

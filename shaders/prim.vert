@@ -27,7 +27,7 @@ void main() {
     vec3 worldPoint = world.xyz / world.w;
     vec3 normal = mat3(DRAW.normalMatrix) * inNormal;
     normal = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
-    vec3 colour = USE_VERTEX_COLOURS ? inColour : DRAW.colour.rgb;
+    vec3 colour = USE_VERTEX_COLOURS ? inColour : push.colour.rgb;
     vWorld = worldPoint;
     vNormal = normal;
     vColour = colour;
@@ -45,6 +45,6 @@ void main() {
     if (VERTEX_LIGHTING) {
         vec3 eye = frame.views[viewIndex].eye.xyz;
         vLitFront = lit(false, colour, worldPoint, normal, eye);
-        vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? DRAW.backColour.rgb : colour, worldPoint, -normal, eye);
+        vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye);
     }
 }

@@ -72,19 +72,28 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(renderer.lastFrame().buffersCreated == 1);
             CHECK(renderer.lastFrame().buffersDestroyed == 1);
         }
-        SECTION(
-            "recolouring a polyline re-uploads its vertices (colour is part of its key) and its draw "
-            "record") {
+        SECTION("recolouring a polyline re-uploads its vertices only (colour is part of its key)") {
             std::get<DrawPolyline>(list.items[0].primitive).style.colour = {0, 1, 1};
             ws.draw(list);
             CHECK(renderer.lastFrame().buffersCreated == 1);  // its geometry key includes the style
-            CHECK(renderer.lastFrame().uploads == 2);         // that buffer and one draw record
+            CHECK(renderer.lastFrame().uploads == 1);         // that buffer; colours are push constants
         }
-        SECTION("changing the mesh's interior colour uploads one draw record and no geometry") {
+        SECTION("changing the mesh's interior colour uploads nothing and draws the new colour") {
             std::get<DrawMesh>(list.items[3].primitive).interior.colour = {1, 0, 0};
+            const Image red = ws.draw(list);
+            CHECK(renderer.lastFrame().uploads == 0);
+            CHECK(renderer.lastFrame().uploadedBytes == 0);
+            CHECK(renderer.lastFrame().buffersCreated == 0);
+            const Rgb centre = at(red, 64, 64);
+            CHECK(centre.r > 100);
+            CHECK(centre.g < 30);
+            CHECK(at(first, 64, 64).g > 100);  // white before
+        }
+        SECTION("moving the mesh uploads its draw records only (the modelling matrix)") {
+            list.items[3].modelTransform[3][0] = 0.1;
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 1);
-            CHECK(renderer.lastFrame().uploadedBytes == 272);
+            CHECK(renderer.lastFrame().uploadedBytes == 2 * 176);  // interior and iso-lines, adjacent
             CHECK(renderer.lastFrame().buffersCreated == 0);
         }
         SECTION("a new mesh pointer uploads its vertices and indices, and the old buffers are freed") {

@@ -54,19 +54,15 @@ struct Frame {
     glm::vec4 clipPlanes[kMaxClipPlanes];  ///< world: keep where dot(xyz, p) + w >= 0
 };
 
+/// What the vertex shader and the discard tests read per draw (colours and reflectance travel as
+/// push constants, Renderer::Command::Push).
 struct DrawParams {
     glm::mat4 model{1.0f};
     glm::mat4 normalMatrix{1.0f};
-    glm::vec4 colour{0.0f};
-    glm::vec4 backColour{0.0f};
-    glm::vec4 reflectance{0.0f};
-    glm::vec4 specularColour{0.0f};
-    glm::vec4 backReflectance{0.0f};
-    glm::vec4 backSpecularColour{0.0f};
     glm::ivec4 indices{0};
     glm::ivec4 style{0};
     glm::vec4 misc{0.0f};  ///< line width, first model clip plane, clip plane count
 };
-static_assert(sizeof(DrawParams) == 272);
+static_assert(sizeof(DrawParams) == 176);
 
 }  // namespace phigs::vk::gpu

@@ -435,8 +435,10 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                            bool meshNormals, VkBuffer vertices, VkBuffer indices) {
             gpu::DrawParams d = base;
             if (!indices) d.model = glm::mat4(1.0f), d.normalMatrix = glm::mat4(1.0f);
-            d.colour = glm::vec4(part.colour, 1.0f);
-            d.backColour = d.colour;
+            Command c;
+            Command::Push& push = c.push;
+            push.colour = glm::vec4(part.colour, 1.0f);
+            push.backColour = push.colour;
             int flags = d.indices.w;
             int shade = gpu::Flat;
             if (part.vertexColours) flags |= gpu::VertexColours;
@@ -449,7 +451,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 if (s.reflectance != ReflectanceModel::None && item.lightSet >= 0) flags |= gpu::Lit;
                 if (s.distinguishBackFaces) {
                     flags |= gpu::DistinguishBack;
-                    d.backColour = glm::vec4(s.backColour, 1.0f);
+                    push.backColour = glm::vec4(s.backColour, 1.0f);
                 }
                 shade = meshNormals ? shadeOf(s.shading) : gpu::Flat;
                 auto reflect = [&](const Reflectance& r, ReflectanceModel model, glm::vec4& k,
@@ -457,15 +459,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     k = glm::vec4(r.ambient, r.diffuse, r.specular, r.specularExponent);
                     sc = glm::vec4(r.specularColour, float(int(model)));
                 };
-                reflect(s.properties, s.reflectance, d.reflectance, d.specularColour);
+                reflect(s.properties, s.reflectance, push.reflectance, push.specularColour);
                 reflect(s.distinguishBackFaces ? s.backProperties : s.properties, s.reflectance,
-                        d.backReflectance, d.backSpecularColour);
+                        push.backReflectance, push.backSpecularColour);
             }
             d.indices.w = flags;
             d.style =
                 glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
             d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, 0);
-            Command c;
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
             if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
             if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)

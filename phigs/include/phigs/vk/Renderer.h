@@ -6,6 +6,7 @@
 #include "phigs/vk/GpuBuffer.h"
 
 #include <vulkan/vulkan.h>
+#include <glm/vec4.hpp>
 
 #include <cstdint>
 #include <map>
@@ -61,10 +62,17 @@ private:
         VkBuffer vertices = VK_NULL_HANDLE;
         VkBuffer indices = VK_NULL_HANDLE;
         std::uint32_t first = 0, count = 0;
-        /// The push constants (shaders/scene.glsl): draw record, view, first light, depth cue.
+        /// The push constants (shaders/scene.glsl): the draw record's and the frame block's
+        /// indices, and what the fragment shader reads per draw (faster there than a buffer).
         struct Push {
             std::uint32_t drawIndex = 0;
             std::int32_t viewIndex = 0, firstLight = 0, depthCue = -1;
+            glm::vec4 colour{0.0f};
+            glm::vec4 backColour{0.0f};
+            glm::vec4 reflectance{0.0f};     ///< ambient, diffuse, specular, exponent
+            glm::vec4 specularColour{0.0f};  ///< rgb, reflectance model
+            glm::vec4 backReflectance{0.0f};
+            glm::vec4 backSpecularColour{0.0f};
         } push;
         float lineWidth = 1.0f;
         VkRect2D scissor{};
