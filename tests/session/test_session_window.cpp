@@ -78,7 +78,7 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
         pointer.moveTo(p);
         pointer.button(true);
         pointer.button(false);
-        for (int i = 0; i < 200 && session.log().size() == before; ++i)
+        for (int i = 0; i < 2000 && session.log().size() == before; ++i)  // up to 10 s when loaded
             session.step(std::chrono::milliseconds(5));
         settle();
     };
@@ -145,7 +145,7 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
     for (int i = 0; i < 4; ++i) session.step(std::chrono::milliseconds(5));
     pointer.moveTo(to);
     pointer.button(false);
-    for (int i = 0; i < 200 && session.reference()->w == wBefore; ++i)
+    for (int i = 0; i < 2000 && session.reference()->w == wBefore; ++i)
         session.step(std::chrono::milliseconds(5));
     settle();
 #else

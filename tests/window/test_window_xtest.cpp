@@ -23,9 +23,14 @@ TEST_CASE("window: real X pointer and button events reach the pick device", "[wi
     glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
     GLFWwindow* window = glfwCreateWindow(100, 100, "xtest pick", nullptr, nullptr);
     REQUIRE(window);
-    // Let the server map the window before pointing at it.
-    const auto until = std::chrono::steady_clock::now() + 500ms;
-    while (std::chrono::steady_clock::now() < until) glfwWaitEventsTimeout(0.02);
+    // Point at the window only once the server has mapped it: its first Expose event reaches
+    // GLFW's refresh callback (a fixed wait could be too short on a loaded machine).
+    static bool exposed = false;
+    exposed = false;
+    glfwSetWindowRefreshCallback(window, [](GLFWwindow*) { exposed = true; });
+    const auto until = std::chrono::steady_clock::now() + 10s;
+    while (!exposed && std::chrono::steady_clock::now() < until) glfwWaitEventsTimeout(0.02);
+    REQUIRE(exposed);
     int wx = 0, wy = 0;
     glfwGetWindowPos(window, &wx, &wy);
 
