@@ -251,3 +251,65 @@ TEST_CASE("retrieving a network that would be cyclic is refused and changes noth
     CHECK(errorOf([&] { phigs.retrieveStructures(1, {1}); }) == errors::StructureCycle);
     CHECK(snapshot(store) == before);
 }
+
+TEST_CASE("retrieve paths to ancestors and descendants read the archive's network, as the store's inquiries",
+          "[archive]") {
+    auto path = outputFile("paths.phar");
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    // 1 executes 2 twice and 4; 2 executes 3; 4 executes 3 and 5; 6 stands alone.
+    const std::map<int, std::vector<int>> network{{1, {2, 2, 4}}, {2, {3}}, {3, {}},
+                                                  {4, {3, 5}},    {5, {}},  {6, {}}};
+    for (const auto& [id, children] : network) {
+        store.openStructure(id);
+        store.insert(LabelElement{id});
+        for (int child : children) store.insert(executeStructure(child));
+        store.closeStructure();
+    }
+    using Key = std::tuple<int, StructurePathOrder, int>;
+    std::map<Key, std::vector<StructurePath>> ancestors, descendants;
+    for (const auto& entry : network)
+        for (auto order : {StructurePathOrder::TopFirst, StructurePathOrder::BottomFirst})
+            for (int depth : {0, 1, 2}) {
+                const Key key{entry.first, order, depth};
+                ancestors[key] = store.pathsToAncestors(entry.first, order, depth);
+                descendants[key] = store.pathsToDescendants(entry.first, order, depth);
+            }
+    CHECK(ancestors[{3, StructurePathOrder::TopFirst, 0}] ==
+          std::vector<StructurePath>{
+              {{1, 2}, {2, 2}, {3, 0}}, {{1, 3}, {2, 2}, {3, 0}}, {{1, 4}, {4, 2}, {3, 0}}});
+    phigs.openArchiveFile(1, path);
+    phigs.archiveAllStructures(1);
+    store.deleteAllStructures();
+
+    for (const auto& [key, paths] : ancestors) {
+        const auto [id, order, depth] = key;
+        INFO("structure " << id << " depth " << depth);
+        CHECK(phigs.retrievePathsToAncestors(1, id, order, depth) == paths);
+        CHECK(phigs.retrievePathsToDescendants(1, id, order, depth) == descendants[key]);
+    }
+    CHECK(store.structureIds().empty());  // the store is not touched
+
+    const std::size_t warnings = phigs.errorLog().entries().size();
+    CHECK(phigs.retrievePathsToAncestors(1, 42, StructurePathOrder::TopFirst, 0).empty());
+    CHECK(phigs.errorLog().entries().size() == warnings + 1);
+    CHECK(phigs.errorLog().entries().back().number == errors::MissingInArchive);
+    CHECK(phigs.retrievePathsToDescendants(1, 42, StructurePathOrder::TopFirst, 0).empty());
+    CHECK(errorOf([&] { phigs.retrievePathsToDescendants(1, 1, StructurePathOrder::TopFirst, -1); }) ==
+          errors::NegativePathDepth);
+    CHECK(errorOf([&] { phigs.retrievePathsToAncestors(2, 1, StructurePathOrder::TopFirst, 0); }) ==
+          errors::ArchiveNotOpen);
+    phigs.closeArchiveFile(1);
+
+    // A hand-made archive whose network is cyclic (this toolkit never writes one) is reported, not
+    // walked for ever.
+    auto cyclicPath = outputFile("paths_cyclic.phar");
+    writeFile(cyclicPath, ArchiveFile::encode({{7, {executeStructure(8)}}, {8, {executeStructure(7)}}}));
+    phigs.openArchiveFile(2, cyclicPath);
+    CHECK(errorOf([&] { phigs.retrievePathsToDescendants(2, 7, StructurePathOrder::TopFirst, 0); }) ==
+          errors::StructureCycle);
+    CHECK(errorOf([&] { phigs.retrievePathsToAncestors(2, 7, StructurePathOrder::TopFirst, 0); }) ==
+          errors::StructureCycle);
+    phigs.closeArchiveFile(2);
+}

@@ -1,5 +1,7 @@
 #include "phigs/core/Phigs.h"
 
+#include "phigs/store/StructurePaths.h"
+
 namespace phigs {
 
 void Phigs::requireOpen(const char* function) const {
@@ -198,6 +200,35 @@ std::set<int> Phigs::archiveNetwork(const ArchiveFile& file, int id) {
             if (auto x = std::get_if<ExecuteStructureElement>(&e)) todo.push_back(x->structureId);
     }
     return seen;
+}
+
+std::vector<StructurePath> Phigs::retrievePathsToAncestors(int archiveId, int id, StructurePathOrder order,
+                                                           int depth) {
+    const char* function = "RETRIEVE PATHS TO ANCESTORS";
+    const ArchiveFile& file = archive(archiveId, function);
+    if (depth < 0) raise(&log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
+    // An executed structure the archive does not hold still ends paths, as in the store.
+    const ExecuteReferences references = executeReferences(file.contents());
+    bool referenced = false;
+    for (const auto& [parent, refs] : references)
+        for (const auto& ref : refs) referenced = referenced || ref.second == id;
+    if (!file.contains(id) && !referenced) {
+        warn(errors::MissingInArchive, function, "structure " + std::to_string(id));
+        return {};
+    }
+    return ancestorPaths(references, id, order, depth, &log_, function);
+}
+
+std::vector<StructurePath> Phigs::retrievePathsToDescendants(int archiveId, int id, StructurePathOrder order,
+                                                             int depth) {
+    const char* function = "RETRIEVE PATHS TO DESCENDANTS";
+    const ArchiveFile& file = archive(archiveId, function);
+    if (depth < 0) raise(&log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
+    if (!file.contains(id)) {
+        warn(errors::MissingInArchive, function, "structure " + std::to_string(id));
+        return {};
+    }
+    return descendantPaths(executeReferences(file.contents()), id, order, depth, &log_, function);
 }
 
 void Phigs::retrieveStructures(int archiveId, const std::vector<int>& ids) {

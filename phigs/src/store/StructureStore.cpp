@@ -1,5 +1,7 @@
 #include "phigs/store/StructureStore.h"
 
+#include "phigs/store/StructurePaths.h"
+
 #include <algorithm>
 
 namespace phigs {
@@ -469,90 +471,29 @@ SearchResult StructureStore::elementSearch(int id, int start, SearchDirection di
     return {};
 }
 
-namespace {
-
-std::vector<StructurePath> truncateAndUnique(std::vector<StructurePath> paths, StructurePathOrder order,
-                                             int depth) {
-    std::sort(paths.begin(), paths.end());
-    if (depth > 0)
-        for (auto& p : paths)
-            if (static_cast<int>(p.size()) > depth) {
-                if (order == StructurePathOrder::TopFirst)
-                    p.resize(static_cast<std::size_t>(depth));
-                else
-                    p.erase(p.begin(), p.end() - depth);
-            }
-    std::vector<StructurePath> unique;
-    std::set<StructurePath> seen;
-    for (auto& p : paths)
-        if (seen.insert(p).second) unique.push_back(std::move(p));
-    return unique;
+ExecuteReferences StructureStore::executeReferences() const {
+    ExecuteReferences references;
+    for (const auto& [id, s] : structures_) {
+        auto& refs = references[id];
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s.elements[i].value))
+                refs.emplace_back(static_cast<int>(i) + 1, x->structureId);
+    }
+    return references;
 }
-
-}  // namespace
 
 std::vector<StructurePath> StructureStore::pathsToAncestors(int id, StructurePathOrder order,
                                                             int depth) const {
     const char* function = "INQUIRE PATHS TO ANCESTORS";
     if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
-    if (depth < 0) raise(log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
-    // parents[child] = every (parent, element number) executing it
-    std::map<int, std::vector<ElementRef>> parents;
-    for (const auto& [sid, s] : structures_)
-        for (std::size_t i = 0; i < s.elements.size(); ++i)
-            if (auto x = asExecute(s.elements[i].value))
-                parents[x->structureId].push_back({sid, static_cast<int>(i) + 1});
-    std::vector<StructurePath> out;
-    // Walk upward, building paths bottom-up, then reverse each to top-first.
-    std::vector<StructurePath> partial{{ElementRef{id, 0}}};
-    while (!partial.empty()) {
-        StructurePath p = std::move(partial.back());
-        partial.pop_back();
-        auto it = parents.find(p.back().structureId);
-        if (it == parents.end()) {
-            std::reverse(p.begin(), p.end());
-            out.push_back(std::move(p));
-            continue;
-        }
-        for (auto ref = it->second.rbegin(); ref != it->second.rend(); ++ref) {
-            StructurePath longer = p;
-            longer.push_back(*ref);
-            partial.push_back(std::move(longer));
-        }
-    }
-    return truncateAndUnique(std::move(out), order, depth);
-}
-
-void StructureStore::collectDescendants(int id, StructurePath& path, std::vector<StructurePath>& out) const {
-    if (path.size() > kMaxNetworkDepth)
-        raise(log_, errors::NetworkTooDeep, "INQUIRE PATHS TO DESCENDANTS",
-              "more than " + std::to_string(kMaxNetworkDepth) + " levels");
-    const Structure* s = find(id);
-    bool leaf = true;
-    if (s)
-        for (std::size_t i = 0; i < s->elements.size(); ++i)
-            if (auto x = asExecute(s->elements[i].value)) {
-                leaf = false;
-                path.push_back({id, static_cast<int>(i) + 1});
-                collectDescendants(x->structureId, path, out);
-                path.pop_back();
-            }
-    if (leaf) {
-        path.push_back({id, 0});
-        out.push_back(path);
-        path.pop_back();
-    }
+    return ancestorPaths(executeReferences(), id, order, depth, log_, function);
 }
 
 std::vector<StructurePath> StructureStore::pathsToDescendants(int id, StructurePathOrder order,
                                                               int depth) const {
     const char* function = "INQUIRE PATHS TO DESCENDANTS";
     if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
-    if (depth < 0) raise(log_, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
-    std::vector<StructurePath> out;
-    StructurePath path;
-    collectDescendants(id, path, out);
-    return truncateAndUnique(std::move(out), order, depth);
+    return descendantPaths(executeReferences(), id, order, depth, log_, function);
 }
 
 void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>& contents,

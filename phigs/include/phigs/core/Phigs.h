@@ -67,6 +67,14 @@ public:
     void retrieveAllStructures(int archiveId);
     /// RETRIEVE STRUCTURE IDENTIFIERS: what the archive holds.
     std::vector<int> archiveContents(int archiveId);
+    /// RETRIEVE PATHS TO ANCESTORS / DESCENDANTS: the paths of the network as the archive holds
+    /// it (the store is not touched), as INQUIRE PATHS TO ... gives them for the store. A
+    /// structure the archive does not hold gives no paths and warning 407; error 207 for a
+    /// negative depth, -201 for a cyclic archive (one this toolkit did not write).
+    std::vector<StructurePath> retrievePathsToAncestors(int archiveId, int id, StructurePathOrder order,
+                                                        int depth);
+    std::vector<StructurePath> retrievePathsToDescendants(int archiveId, int id, StructurePathOrder order,
+                                                          int depth);
     void deleteStructuresFromArchive(int archiveId, const std::vector<int>& ids);
     void deleteStructureNetworksFromArchive(int archiveId, const std::vector<int>& ids);
     void deleteAllStructuresFromArchive(int archiveId);

@@ -143,7 +143,8 @@ private:
     bool postedAnywhere(int id) const;
     bool referenced(int id) const;
     std::map<int, std::set<int>> childrenGraph() const;
-    void collectDescendants(int id, StructurePath& path, std::vector<StructurePath>& out) const;
+    /// Each structure's EXECUTE STRUCTURE elements (see StructurePaths.h).
+    std::map<int, std::vector<std::pair<int, int>>> executeReferences() const;
 
     ErrorLog* log_ = nullptr;
     std::map<int, Structure> structures_;

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "phigs/core/ErrorLog.h"
+#include "phigs/store/Element.h"
+#include "phigs/store/StructureStore.h"
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace phigs {
+
+/// Each structure's EXECUTE STRUCTURE elements as (element number, executed structure id), in
+/// element order: all the path inquiries need of a network, in the store or in an archive.
+using ExecuteReferences = std::map<int, std::vector<std::pair<int, int>>>;
+
+/// The execute references of a set of structures (an archive's contents).
+ExecuteReferences executeReferences(const std::map<int, std::vector<Element>>& contents);
+
+/// PATHS TO ANCESTORS: every path from a structure that nothing executes down to `id`, written
+/// top first and ending (id, 0); cut to its last (BottomFirst) or first (TopFirst) `depth`
+/// references when depth > 0; sorted, duplicates removed. A cyclic network (only a hand-made
+/// archive can hold one) raises StructureCycle naming `function`.
+std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, int id,
+                                         StructurePathOrder order, int depth, ErrorLog* log,
+                                         const char* function);
+
+/// PATHS TO DESCENDANTS: every path from `id` down to a structure that executes nothing, as
+/// (structure, element number) references ending (leaf, 0); cut, sorted and checked as above,
+/// and NetworkTooDeep beyond kMaxNetworkDepth levels.
+std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, int id,
+                                           StructurePathOrder order, int depth, ErrorLog* log,
+                                           const char* function);
+
+}  // namespace phigs
