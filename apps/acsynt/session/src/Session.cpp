@@ -16,6 +16,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace acsynt {
 
@@ -188,8 +189,11 @@ void Session::handle(const EventReport& report) {
         fail(e.what());
     } catch (const phigs::Error& e) {
         fail(e.what());
-    } catch (const std::exception& e) {
-        // Anything else (a retrieved archive that does not match the model, ...): reported, not fatal.
+    } catch (const std::runtime_error& e) {
+        // Other bad input (a retrieved archive that does not match the model, ...): reported, not
+        // fatal. Logic errors are not caught here: they are bugs, and must not pass as messages.
+        fail(e.what());
+    } catch (const std::invalid_argument& e) {
         fail(e.what());
     }
 }
