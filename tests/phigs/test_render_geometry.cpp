@@ -175,6 +175,16 @@ TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cann
     CHECK(m.triangleCount == 6);
     CHECK(m.isoLineCount == 4);
     CHECK(m.edgeCount == 10);  // 5 unique edges
+    // The iso-line runs through its own vertex copies (4, 5, 6), which carry the length along it.
+    CHECK(std::vector<std::uint32_t>(m.indices.begin() + 6, m.indices.begin() + 10) ==
+          std::vector<std::uint32_t>{4, 5, 5, 6});
+    const auto vertices = meshVertices(mesh);
+    REQUIRE(vertices.size() == 7);
+    CHECK(vertices[5].position == glm::vec3(1, 0, 0));
+    CHECK(vertices[4].pattern == 0.0f);
+    CHECK(vertices[5].pattern == Approx(1.0f));
+    CHECK(vertices[6].pattern == Approx(2.0f));
     mesh.triangles = {0, 1, 99};
-    for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < 4);
+    mesh.isoLines = {{0, 42}};
+    for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < meshVertices(mesh).size());
 }

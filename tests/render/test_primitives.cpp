@@ -1,5 +1,6 @@
 // One small scene per 2D primitive family and attribute group, compared with reference images.
 #include "RenderTestSupport.h"
+#include "SceneMeshes.h"
 #include "phigs/vk/OffscreenWorkstation.h"
 
 using namespace phigs;
@@ -54,6 +55,72 @@ TEST_CASE("polylines: the four PHIGS line types at widths 1, 2 and 4", "[render]
         CHECK(dashedLit > 60);
         CHECK(dashedLit < 100);
         compareWithReference(image, "polylines");
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("mesh iso-lines take the PHIGS line types, their dashes measured in pixels",
+          "[render][primitives]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 256, 256);
+        // A flat grid in modelling units 0..2, scaled by 0.5 to world 0..1 (the dashes must not
+        // follow the modelling units), with one iso-line along its middle row.
+        const int n = 16;
+        auto mesh = grid(0.2, 0.2, 1.8, 1.8, 1.0, n);
+        std::vector<std::uint32_t> row;
+        for (int i = 0; i <= n; ++i) row.push_back(std::uint32_t((n / 2) * (n + 1) + i));
+        mesh->isoLines.push_back(row);
+        auto draw = [&](LineType type) {
+            DrawList list = emptyScene();
+            DrawMesh m;
+            m.mesh = mesh;
+            m.interior.style = InteriorStyle::Solid;
+            m.interior.colour = {0.3f, 0.3f, 0.3f};
+            m.isoLineStyle.colour = {1, 1, 0};
+            m.isoLineStyle.type = type;
+            DrawItem i = item(m);
+            i.modelTransform = glm::dmat4(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
+                                          glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0, 0, 0, 1));
+            list.items.push_back(i);
+            list.hiddenSurfaceRemoval = true;
+            return ws.draw(list);
+        };
+        // The runs of yellow pixels along the line (world y = 0.5, x from 0.1 to 0.9).
+        auto runs = [](const Image& image) {
+            std::vector<int> lengths;
+            int run = 0, lit = 0;
+            for (std::uint32_t x = 30; x < 226; ++x) {
+                bool yellow = false;
+                for (std::uint32_t y = 126; y <= 130; ++y) {
+                    const Rgb c = at(image, x, y);
+                    yellow = yellow || (c.r > 200 && c.g > 200 && c.b < 80);
+                }
+                lit += yellow;
+                if (yellow) {
+                    ++run;
+                } else if (run > 0) {
+                    lengths.push_back(run);
+                    run = 0;
+                }
+            }
+            if (run > 0) lengths.push_back(run);
+            return std::pair{lit, lengths};
+        };
+        const auto [solidLit, solidRuns] = runs(draw(LineType::Solid));
+        CHECK(solidLit == 196);
+        CHECK(solidRuns.size() == 1);
+        const Image dashedImage = draw(LineType::Dashed);
+        const auto [dashedLit, dashedRuns] = runs(dashedImage);
+        // 12 pixels on, 6 off: about two thirds lit, the inner dashes 12 pixels long.
+        CHECK(dashedLit > 196 * 0.55);
+        CHECK(dashedLit < 196 * 0.78);
+        REQUIRE(dashedRuns.size() >= 8);
+        for (std::size_t k = 1; k + 1 < dashedRuns.size(); ++k) CHECK(std::abs(dashedRuns[k] - 12) <= 1);
+        const auto [dottedLit, dottedRuns] = runs(draw(LineType::Dotted));
+        CHECK(dottedLit < 196 / 2);  // 2 on, 4 off
+        CHECK(dottedRuns.size() > dashedRuns.size() * 2);
+        compareWithReference(dashedImage, "iso_line_types");
     }
     requireNoValidationMessages(context);
 }

@@ -300,9 +300,14 @@ MeshIndices meshIndices(const MeshData& mesh) {
     out.indices = mesh.triangles;
     out.triangleCount = static_cast<std::uint32_t>(mesh.triangles.size() / 3 * 3);
     out.indices.resize(out.triangleCount);
-    for (const auto& line : mesh.isoLines)
+    // Iso-lines run through their own copies of the vertices (see meshVertices), which carry the
+    // distance along the line for line types.
+    auto copy = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const auto& line : mesh.isoLines) {
         for (std::size_t i = 0; i + 1 < line.size(); ++i)
-            out.indices.insert(out.indices.end(), {line[i], line[i + 1]});
+            out.indices.insert(out.indices.end(), {copy + std::uint32_t(i), copy + std::uint32_t(i + 1)});
+        copy += static_cast<std::uint32_t>(line.size());
+    }
     out.isoLineCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount;
     std::unordered_set<std::uint64_t> seen;
     for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3)
@@ -313,7 +318,7 @@ MeshIndices meshIndices(const MeshData& mesh) {
                 out.indices.insert(out.indices.end(), {a, b});
         }
     out.edgeCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount - out.isoLineCount;
-    const auto limit = static_cast<std::uint32_t>(mesh.positions.size());
+    const auto limit = copy;
     for (std::uint32_t& i : out.indices)
         if (i >= limit) i = 0;  // a bad index must not read past the vertex buffer
     return out;
@@ -325,6 +330,19 @@ std::vector<RenderVertex> meshVertices(const MeshData& mesh) {
         v[i].position = mesh.positions[i];
         if (i < mesh.normals.size()) v[i].normal = mesh.normals[i];
         if (i < mesh.colours.size()) v[i].colour = mesh.colours[i];
+    }
+    // The iso-lines' own vertices, in meshIndices' order: `pattern` is the length along the line in
+    // modelling coordinates; the fragment shader turns it into pixels by its screen derivative, so
+    // the mesh buffer need not change with the view.
+    for (const auto& line : mesh.isoLines) {
+        float length = 0.0f;
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            RenderVertex r = line[i] < v.size() ? v[line[i]] : RenderVertex{};
+            if (i > 0 && line[i] < v.size() && line[i - 1] < v.size())
+                length += glm::distance(v[line[i]].position, v[line[i - 1]].position);
+            r.pattern = length;
+            v.push_back(r);
+        }
     }
     return v;
 }

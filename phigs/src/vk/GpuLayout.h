@@ -22,6 +22,7 @@ enum Flag : int {
     Pattern = 32,
     OffsetNpc = 64,
     Triangles = 128,
+    PatternInModelUnits = 256,
 };
 enum Shade : int { Flat = 1, Gouraud = 2, Phong = 4 };
 

@@ -444,6 +444,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (part.vertexColours) flags |= gpu::VertexColours;
             if (part.offsetInNpc) flags |= gpu::OffsetNpc;
             if (part.lines && part.lineType != LineType::Solid) flags |= gpu::Pattern;
+            if (part.patternInModelUnits) flags |= gpu::PatternInModelUnits;
             if (!part.lines) flags |= gpu::Triangles;
             if (interior && part.role == render::PartRole::Interior) {
                 const InteriorStyleSet& s = *interior;
@@ -542,8 +543,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 iso.lineWidth = mesh->isoLineStyle.width;
                 iso.first = cached.counts.triangleCount;
                 iso.count = cached.counts.isoLineCount;
-                // Patterns need screen distances the shared mesh buffer does not carry: iso-lines are solid.
-                iso.lineType = LineType::Solid;
+                iso.patternInModelUnits = true;
                 addPart(iso, nullptr, false, cached.vertices->handle(), cached.indices->handle());
             }
             if (mesh->edges.visible && cached.counts.edgeCount) {

@@ -36,6 +36,8 @@ struct GeometryPart {
     bool vertexColours = false;  ///< the vertices carry colours (else `colour`)
     bool vertexNormals = false;  ///< the vertices carry normals (else facet normals)
     bool offsetInNpc = false;    ///< offsets are NPC units (annotation text), else pixels
+    /// `pattern` is a length in modelling units (mesh iso-lines), else pixels on screen.
+    bool patternInModelUnits = false;
 };
 
 /// The CPU-side geometry of one non-mesh draw item (the "describe" step): world coordinates, the
@@ -58,7 +60,8 @@ struct MeshIndices {
     std::uint32_t edgeCount = 0;      ///< index count of the unique triangle edges (last)
 };
 MeshIndices meshIndices(const MeshData& mesh);
-/// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero).
+/// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero), then a
+/// copy of each iso-line's vertices whose `pattern` is the length along that line.
 std::vector<RenderVertex> meshVertices(const MeshData& mesh);
 
 /// A content hash of a non-mesh item and the transforms its geometry depends on, to key caches.
