@@ -3,6 +3,7 @@
 #include "RemovalDetail.h"
 #include "geom/Basis.h"
 #include "geom/Evaluate.h"
+#include "geom/FreeKnotFit.h"
 #include "geom/GeometryError.h"
 #include "geom/GridEvaluator.h"
 #include "geom/Inversion.h"
@@ -38,6 +39,7 @@ void checkOptions(const ReductionOptions& o, const char* where) {
     if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
     if (o.samplesPerSpan < 1) throw GeometryError(w + ": samplesPerSpan must be at least 1");
     if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
+    if (o.freeKnotIterations < 1) throw GeometryError(w + ": freeKnotIterations must be at least 1");
 }
 
 // Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
@@ -659,6 +661,96 @@ private:
     std::vector<glm::dvec3> samples_, values_;
 };
 
+// Removes, by The NURBS Book's A5.8, every knot that can go while the curve moves by at most
+// `tolerance` (knots inserted into a simpler curve), outside the knots the end conditions keep
+// and up to `most` of them.
+Curve removeExactKnots(const Curve& curve, const EndConditions& ends, double tolerance, std::size_t most) {
+    Curve c = curve;
+    const std::size_t p = static_cast<std::size_t>(c.degree),
+                      k = static_cast<std::size_t>(ends.fixedDerivatives);
+    std::size_t removed = 0;
+    for (bool again = true; again && removed < most;) {
+        again = false;
+        for (const KnotSignificance& s : rankKnots(c)) {
+            if (s.weight > tolerance || removed >= most) break;
+            const std::size_t first = s.index + 1 - static_cast<std::size_t>(s.multiplicity);
+            if (first <= p + k || s.index + k >= c.points.size()) continue;
+            ExactKnotRemoval r = removeKnot(c, s.value, 1, tolerance);
+            if (r.removed == 0) continue;
+            c = std::move(r.curve);
+            ++removed;
+            again = true;
+        }
+    }
+    return c;
+}
+
+// Tolerance mode with free knots: the exact removals first, then a search over the control
+// point count n. Each probe is a free-knot fit; it passes when measureDeviation (the final
+// check itself) finds it within the tolerance. The next n comes from the error model
+// c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest count
+// that passed and the largest that failed; once they meet, one count below the failure is
+// tried too (the fits are not monotone in n).
+CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o) {
+    const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
+    const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
+    const int measureDensity = 2 * o.samplesPerSpan;
+    double size = 0.0;
+    for (const glm::dvec3& q : curve.points) size = std::max(size, glm::length(q));
+    CurveReduction out;
+    out.curve = removeExactKnots(curve, o.ends, std::max(1e-6 * o.tolerance, 1e-13 * size), o.maxRemovals);
+    out.deviation = measureDeviation(curve, out.curve, measureDensity);
+    if (out.deviation.maxError > o.tolerance) {
+        out.curve = curve;
+        out.deviation = measureDeviation(curve, curve, measureDensity);
+    }
+    std::size_t lowest = std::max({p + 1, 2 * (k + 1), p + 1 + 2 * k});
+    if (o.maxRemovals < n0) lowest = std::max(lowest, n0 - o.maxRemovals);
+    std::size_t pass = out.curve.points.size();
+    if (pass <= lowest) {
+        out.removed = n0 - pass;
+        return out;
+    }
+    std::size_t fail = lowest - 1;
+    FreeKnotOptions fo;
+    fo.samplesPerSpan = o.samplesPerSpan;
+    fo.iterations = o.freeKnotIterations;
+    fo.ends = o.ends;
+    const FreeKnotFitter fitter(curve, fo);
+    double constant = 1e-3;  // the error model's constant, as measured on the reference curves
+    auto next = [&] {
+        std::size_t n = fail + 1;
+        while (n + 1 < pass && constant * fitter.predictedError(n) > 0.97 * o.tolerance) ++n;
+        return n;
+    };
+    auto probe = [&](std::size_t n) {
+        ++out.fits;
+        const FreeKnotFit f = fitter.fit(n);
+        if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
+            constant = f.sampleError / fitter.predictedError(n);
+        if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
+        Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
+        // The fit's few spans are sampled four times as densely: a fit may turn sharply between
+        // samples where the original does not.
+        const CurveDeviation d =
+            measureDeviation(curve, candidate, measureDensity, f.map, 4 * measureDensity);
+        if (!(d.maxError <= o.tolerance)) return false;
+        out.curve = std::move(candidate);
+        out.deviation = d;
+        return true;
+    };
+    while (pass > fail + 1) {
+        const std::size_t n = next();
+        (probe(n) ? pass : fail) = n;
+    }
+    for (std::size_t n = fail; n > lowest;) {
+        if (!probe(--n)) break;
+        pass = n;
+    }
+    out.removed = n0 - out.curve.points.size();
+    return out;
+}
+
 }  // namespace
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
@@ -667,6 +759,13 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     if (curve.rational())
         throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
     const bool measuring = std::isfinite(options.tolerance);
+    if (measuring && options.freeKnots) {
+        CurveReduction free = reduceCurveByFreeKnots(curve, options);
+        if (free.removed > 0 || curve.points.size() <= static_cast<std::size_t>(curve.degree) + 1)
+            return free;
+        // Nothing fitted below the original: the removal loop, which keeps the original's
+        // knots (kinks, for one), may still find something.
+    }
     // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
     // final measurement below has the last word.
     const double tol = options.tolerance * 0.99;

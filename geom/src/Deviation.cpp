@@ -79,33 +79,89 @@ CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& 
 }
 
 // Distances from samples of `from` (at ascending params) to `to`, two polynomial curves on one
-// domain. |from(t) - to(t)| is the distance to a point of `to`, so it bounds the closest
+// domain; seeds[i] is a parameter of `to` near from(params[i]) (params itself for the plain
+// measurement). |from(t) - to(seed)| is the distance to a point of `to`, so it bounds the closest
 // distance from above: the samples are taken largest bound first, and each is measured by
-// Newton from t and, where that could still be the maximum, by the global closest point, until
-// the next bound is below the largest distance measured (no sample left can reach it). A sample
-// not measured keeps its bound, which is below the maximum, so the maximum is exactly that of
-// measuring them all; the mean is an upper bound.
-std::vector<double> sampleDistances(const Curve& from, const Curve& to, const std::vector<double>& params,
+// Newton from the seed and, where that could still be the maximum, by the global closest point,
+// until the next bound is below the largest distance measured (no sample left can reach it). A
+// sample not measured keeps its bound, which is below the maximum, so the maximum is exactly
+// that of measuring them all; the mean is an upper bound.
+std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
+                                    const std::vector<double>& seeds, const std::vector<double>& toParams,
+                                    const std::vector<glm::dvec3>& toPoints,
                                     std::optional<CurveProjector>& projector) {
-    std::vector<glm::dvec3> a(params.size()), b(params.size());
-    detail::evaluateAscending(from.degree, from.knots, from.points.data(), from.points.size(), params,
-                              a.data());
-    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), params, b.data());
+    std::vector<glm::dvec3> b(seeds.size());
+    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data());
     detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
-    std::vector<double> out(params.size());
-    std::vector<std::size_t> order(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) out[i] = glm::length(a[i] - b[i]), order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
+    std::vector<double> out(seeds.size());
+    for (std::size_t i = 0; i < seeds.size(); ++i) out[i] = glm::length(a[i] - b[i]);
     double worst = 0.0;
-    for (std::size_t i : order) {
-        if (out[i] <= worst) break;
-        double d = detail::newtonDistance(toSampler, a[i], params[i], out[i]);
+    auto measure = [&](std::size_t i) {
+        double d = detail::newtonDistance(toSampler, a[i], seeds[i], out[i]);
         if (d > worst) {
             if (!projector) projector.emplace(to);
             d = std::min(d, projector->closestPoint(a[i]).distance);
         }
+        if (d > worst) {
+            // The projector's Newton runs may all end in local minima on a wiggly curve; Newton
+            // from the nearest of the other curve's samples is one more chance.
+            std::size_t nearest = 0;
+            double nearestDistance = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < toPoints.size(); ++k) {
+                const double e = glm::dot(toPoints[k] - a[i], toPoints[k] - a[i]);
+                if (e < nearestDistance) nearestDistance = e, nearest = k;
+            }
+            d = std::min(d, detail::newtonDistance(toSampler, a[i], toParams[nearest], d));
+        }
         out[i] = d;
         worst = std::max(worst, d);
+    };
+    if (out.empty()) return out;
+    // The largest bound first gives a first maximum; only the samples whose bound exceeds it
+    // are sorted and measured.
+    measure(static_cast<std::size_t>(std::max_element(out.begin(), out.end()) - out.begin()));
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+        if (out[i] > worst) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
+    for (std::size_t i : order) {
+        if (out[i] <= worst) break;
+        measure(i);
+    }
+    return out;
+}
+
+// Both directions, each sample seeded at its parameter on the other curve (seedsOnReduced[i] for
+// original sample pa[i], seedsOnOriginal[j] for reduced sample pb[j]).
+CurveDeviation bothWays(const Curve& original, const Curve& reduced, const std::vector<double>& pa,
+                        const std::vector<double>& pb, const std::vector<double>& seedsOnReduced,
+                        const std::vector<double>& seedsOnOriginal) {
+    std::vector<glm::dvec3> a(pa.size()), b(pb.size());
+    detail::evaluateAscending(original.degree, original.knots, original.points.data(), original.points.size(),
+                              pa, a.data());
+    detail::evaluateAscending(reduced.degree, reduced.knots, reduced.points.data(), reduced.points.size(), pb,
+                              b.data());
+    std::optional<CurveProjector> toReduced, toOriginal;
+    const std::vector<double> da = sampleDistances(reduced, a, seedsOnReduced, pb, b, toReduced);
+    const std::vector<double> db = sampleDistances(original, b, seedsOnOriginal, pa, a, toOriginal);
+    return summary(da, db);
+}
+
+// The map's piecewise linear interpolant at ascending parameters x (clamped to its ends).
+std::vector<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
+                                const std::vector<double>& x) {
+    std::vector<double> out(x.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        while (k + 2 < xs.size() && xs[k + 1] <= x[i]) ++k;
+        if (xs.size() == 1 || x[i] <= xs[k]) {
+            out[i] = ys[k];
+        } else if (x[i] >= xs[k + 1]) {
+            out[i] = ys[k + 1];
+        } else {
+            const double f = (x[i] - xs[k]) / (xs[k + 1] - xs[k]);
+            out[i] = ys[k] + f * (ys[k + 1] - ys[k]);
+        }
     }
     return out;
 }
@@ -134,10 +190,31 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    std::optional<CurveProjector> toReduced, toOriginal;
-    const std::vector<double> da = sampleDistances(original, reduced, pa, toReduced);
-    const std::vector<double> db = sampleDistances(reduced, original, pb, toOriginal);
-    return summary(da, db);
+    return bothWays(original, reduced, pa, pb, pa, pb);
+}
+
+CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
+                                const ParameterMap& map, int reducedSamplesPerSpan) {
+    if (original.rational() || reduced.rational())
+        throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
+    if (original.domainStart() != reduced.domainStart() || original.domainEnd() != reduced.domainEnd())
+        throw GeometryError("measureDeviation: a parameter map needs curves on one domain");
+    if (map.from.empty() || map.from.size() != map.to.size() ||
+        !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
+        throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
+    if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
+    const std::vector<double> pa =
+        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(),
+                    reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan);
+    auto clampTo = [](std::vector<double> u, const Curve& c) {
+        for (double& x : u) x = std::clamp(x, c.domainStart(), c.domainEnd());
+        return u;
+    };
+    const std::vector<double> seedsOnReduced = clampTo(interpolate(map.from, map.to, pa), reduced);
+    const std::vector<double> seedsOnOriginal = clampTo(interpolate(map.to, map.from, pb), original);
+    return bothWays(original, reduced, pa, pb, seedsOnReduced, seedsOnOriginal);
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {
