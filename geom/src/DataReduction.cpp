@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -699,11 +700,11 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     for (const glm::dvec3& q : curve.points) size = std::max(size, glm::length(q));
     CurveReduction out;
     out.curve = removeExactKnots(curve, o.ends, std::max(1e-6 * o.tolerance, 1e-13 * size), o.maxRemovals);
-    out.deviation = measureDeviation(curve, out.curve, measureDensity);
-    if (out.deviation.maxError > o.tolerance) {
-        out.curve = curve;
-        out.deviation = measureDeviation(curve, curve, measureDensity);
+    if (out.curve.points.size() < n0) {
+        out.deviation = measureDeviation(curve, out.curve, measureDensity);
+        if (out.deviation.maxError > o.tolerance) out.curve = curve;
     }
+    if (out.curve.points.size() == n0) out.deviation = measureDeviation(curve, curve, 1);
     std::size_t lowest = std::max({p + 1, 2 * (k + 1), p + 1 + 2 * k});
     if (o.maxRemovals < n0) lowest = std::max(lowest, n0 - o.maxRemovals);
     std::size_t pass = out.curve.points.size();
@@ -717,23 +718,25 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     fo.iterations = o.freeKnotIterations;
     fo.ends = o.ends;
     const FreeKnotFitter fitter(curve, fo);
+    const CurveDeviationMeter meter(curve, measureDensity);
     double constant = 1e-3;  // the error model's constant, as measured on the reference curves
     auto next = [&] {
         std::size_t n = fail + 1;
         while (n + 1 < pass && constant * fitter.predictedError(n) > 0.97 * o.tolerance) ++n;
         return n;
     };
+    std::vector<double> previousKnots;  // the last fit's, whose knot density starts the next
     auto probe = [&](std::size_t n) {
         ++out.fits;
-        const FreeKnotFit f = fitter.fit(n);
-        if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
+        const FreeKnotFit f = fitter.fit(n, previousKnots);
+        if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
+        if (std::isfinite(f.sampleError) && f.sampleError > 0.0 && fitter.predictedError(n) > 0.0)
             constant = f.sampleError / fitter.predictedError(n);
         if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
         Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
         // The fit's few spans are sampled four times as densely: a fit may turn sharply between
         // samples where the original does not.
-        const CurveDeviation d =
-            measureDeviation(curve, candidate, measureDensity, f.map, 4 * measureDensity);
+        const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
         if (!(d.maxError <= o.tolerance)) return false;
         out.curve = std::move(candidate);
         out.deviation = d;
@@ -759,10 +762,15 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     if (curve.rational())
         throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
     const bool measuring = std::isfinite(options.tolerance);
-    if (measuring && options.freeKnots) {
-        CurveReduction free = reduceCurveByFreeKnots(curve, options);
-        if (free.removed > 0 || curve.points.size() <= static_cast<std::size_t>(curve.degree) + 1)
-            return free;
+    const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
+    const bool clamped =
+        std::equal(curve.knots.begin(), curve.knots.begin() + static_cast<std::ptrdiff_t>(p),
+                   curve.knots.begin() + 1) &&
+        std::equal(curve.knots.begin() + static_cast<std::ptrdiff_t>(n), curve.knots.end() - 1,
+                   curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+    if (measuring && options.freeKnots && clamped) {
+        CurveReduction fitted = reduceCurveByFreeKnots(curve, options);
+        if (fitted.removed > 0 || n <= p + 1) return fitted;
         // Nothing fitted below the original: the removal loop, which keeps the original's
         // knots (kinks, for one), may still find something.
     }

@@ -132,19 +132,24 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
 }
 
 // Both directions, each sample seeded at its parameter on the other curve (seedsOnReduced[i] for
-// original sample pa[i], seedsOnOriginal[j] for reduced sample pb[j]).
+// original sample pa[i] at a[i], seedsOnOriginal[j] for reduced sample pb[j]).
 CurveDeviation bothWays(const Curve& original, const Curve& reduced, const std::vector<double>& pa,
-                        const std::vector<double>& pb, const std::vector<double>& seedsOnReduced,
-                        const std::vector<double>& seedsOnOriginal) {
-    std::vector<glm::dvec3> a(pa.size()), b(pb.size());
-    detail::evaluateAscending(original.degree, original.knots, original.points.data(), original.points.size(),
-                              pa, a.data());
+                        const std::vector<glm::dvec3>& a, const std::vector<double>& pb,
+                        const std::vector<double>& seedsOnReduced, const std::vector<double>& seedsOnOriginal,
+                        std::optional<CurveProjector>& toOriginal) {
+    std::vector<glm::dvec3> b(pb.size());
     detail::evaluateAscending(reduced.degree, reduced.knots, reduced.points.data(), reduced.points.size(), pb,
                               b.data());
-    std::optional<CurveProjector> toReduced, toOriginal;
+    std::optional<CurveProjector> toReduced;
     const std::vector<double> da = sampleDistances(reduced, a, seedsOnReduced, pb, b, toReduced);
     const std::vector<double> db = sampleDistances(original, b, seedsOnOriginal, pa, a, toOriginal);
     return summary(da, db);
+}
+
+std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params) {
+    std::vector<glm::dvec3> out(params.size());
+    detail::evaluateAscending(c.degree, c.knots, c.points.data(), c.points.size(), params, out.data());
+    return out;
 }
 
 // The map's piecewise linear interpolant at ascending parameters x (clamped to its ends).
@@ -190,31 +195,41 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    return bothWays(original, reduced, pa, pb, pa, pb);
+    std::optional<CurveProjector> toOriginal;
+    return bothWays(original, reduced, pa, valuesAt(original, pa), pb, pa, pb, toOriginal);
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
                                 const ParameterMap& map, int reducedSamplesPerSpan) {
-    if (original.rational() || reduced.rational())
-        throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
-    if (original.domainStart() != reduced.domainStart() || original.domainEnd() != reduced.domainEnd())
+    return CurveDeviationMeter(original, samplesPerSpan).measure(reduced, map, reducedSamplesPerSpan);
+}
+
+CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
+    : original_(original), samplesPerSpan_(samplesPerSpan) {
+    if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
+    params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    points_ = valuesAt(original, params_);
+}
+
+CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
+                                            int reducedSamplesPerSpan) const {
+    if (reduced.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
+    if (original_.domainStart() != reduced.domainStart() || original_.domainEnd() != reduced.domainEnd())
         throw GeometryError("measureDeviation: a parameter map needs curves on one domain");
     if (map.from.empty() || map.from.size() != map.to.size() ||
         !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
         throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
     if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
-    const std::vector<double> pa =
-        spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(),
-                    reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan);
+                    reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan_);
     auto clampTo = [](std::vector<double> u, const Curve& c) {
         for (double& x : u) x = std::clamp(x, c.domainStart(), c.domainEnd());
         return u;
     };
-    const std::vector<double> seedsOnReduced = clampTo(interpolate(map.from, map.to, pa), reduced);
-    const std::vector<double> seedsOnOriginal = clampTo(interpolate(map.to, map.from, pb), original);
-    return bothWays(original, reduced, pa, pb, seedsOnReduced, seedsOnOriginal);
+    return bothWays(original_, reduced, params_, points_, pb,
+                    clampTo(interpolate(map.from, map.to, params_), reduced),
+                    clampTo(interpolate(map.to, map.from, pb), original_), projector_);
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {

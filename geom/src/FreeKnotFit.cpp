@@ -23,7 +23,8 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
             throw GeometryError("FreeKnotFitter: the curve must have clamped ends");
     if (options.samplesPerSpan < 1 || options.samplesPerFitSpan < 1)
         throw GeometryError("FreeKnotFitter: samplesPerSpan and samplesPerFitSpan must be at least 1");
-    if (options.iterations < 1) throw GeometryError("FreeKnotFitter: iterations must be at least 1");
+    if (options.iterations < 1 || options.warmIterations < 1)
+        throw GeometryError("FreeKnotFitter: iterations and warmIterations must be at least 1");
     if (options.ends.fixedDerivatives < 0)
         throw GeometryError("FreeKnotFitter: fixedDerivatives must be non-negative");
     samples_.resize(static_cast<std::size_t>(options.samplesPerSpan) + 1);
@@ -119,11 +120,22 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
     FreeKnotFit out;
     if (count < p + 1 || count < 2 * fixed || count - p - 1 < 2 * k || count > n0) return out;
     if (k > 0 && !(original_.knots[p + k] < original_.knots[n0 - k])) return out;
-    std::vector<double> knots;
-    if (startKnots.size() == count + p + 1)
-        knots.assign(startKnots.begin(), startKnots.end());
-    else
-        knots = initialKnots(count);
+    std::vector<double> knots = initialKnots(count);
+    const bool warm = startKnots.size() > 2 * (p + 1 + k);
+    if (warm) {
+        // The given free knots are quantiles of a knot density: knot j of m at fraction
+        // j / (m + 1) of [lo, hi]; the new ones are read off at i / (free + 1), linearly.
+        const std::size_t given = startKnots.size() - 2 * (p + 1 + k), want = count - p - 1 - 2 * k;
+        std::vector<double> q{original_.knots[p + k]};
+        for (std::size_t j = 0; j < given; ++j)
+            q.push_back(std::clamp(startKnots[p + 1 + k + j], q.back(), original_.knots[n0 - k]));
+        q.push_back(original_.knots[n0 - k]);
+        for (std::size_t i = 1; i <= want; ++i) {
+            const double at = double(i) * double(given + 1) / double(want + 1);
+            const std::size_t j = std::min(static_cast<std::size_t>(at), given);
+            knots[p + k + i] = q[j] + (at - double(j)) * (q[j + 1] - q[j]);
+        }
+    }
     const double a = original_.knots[p], b = original_.knots[n0];
     const double lo = original_.knots[p + k], hi = original_.knots[n0 - k];
     const std::size_t free = count - p - 1 - 2 * k, gaps = free + 1;
@@ -140,18 +152,44 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         points[count - 1 - i] = original_.points[n0 - 1 - i];
     }
     const std::size_t nf = count - 2 * fixed, wb = p + 1;
-    std::vector<double> band, gapError(gaps), h(gaps);
+    std::vector<double> band, inverse, gapError(gaps), h(gaps);
     std::vector<glm::dvec3> rhs;
-    for (int iteration = 0; iteration < options_.iterations; ++iteration) {
+    const int iterations = warm ? options_.warmIterations : options_.iterations;
+    for (int iteration = 0; iteration < iterations; ++iteration) {
         // Least squares on the samples at their current parameters, end points held.
         if (nf > 0) {
             band.assign(nf * wb, 0.0);
             rhs.assign(nf, glm::dvec3(0.0));
+            // Cox-de Boor's knot differences do not depend on the parameter: their reciprocals
+            // are made once per span, and the (ascending) parameters walk the spans forward.
+            const std::size_t triangle = p * (p + 1) / 2;
+            inverse.assign(count * triangle, 0.0);
+            for (std::size_t span = p; span < count; ++span)
+                for (std::size_t j = 1, at = span * triangle; j <= p; ++j)
+                    for (std::size_t r = 0; r < j; ++r, ++at) {
+                        const double d = knots[span + r + 1] - knots[span + 1 + r - j];
+                        inverse[at] = d > 0.0 ? 1.0 / d : 0.0;
+                    }
+            std::size_t span = p;
             for (std::size_t i = 0; i < m; ++i) {
                 const double w = spacing_[i] * lawson[i];
+                while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
+                while (span > p && s[i] < knots[span]) --span;
                 if (w == 0.0) continue;
-                const std::size_t span = findSpan(degree, knots, count, s[i]);
-                basisFunctions(span, s[i], degree, knots, basis);
+                {
+                    const double u = s[i];
+                    const double* inv = inverse.data() + span * triangle;
+                    basis[0] = 1.0;
+                    for (std::size_t j = 1; j <= p; ++j) {
+                        double saved = 0.0;
+                        for (std::size_t r = 0; r < j; ++r, ++inv) {
+                            const double temp = basis[r] * *inv;
+                            basis[r] = saved + (knots[span + r + 1] - u) * temp;
+                            saved = (u - knots[span + 1 + r - j]) * temp;
+                        }
+                        basis[j] = saved;
+                    }
+                }
                 const std::size_t c0 = span - p;
                 glm::dvec3 target = samples_[i];
                 for (std::size_t c = 0; c <= p; ++c)
@@ -174,17 +212,17 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         double worst = 0.0;
         for (std::size_t i = 0; i < m; ++i) {
             glm::dvec3 c, d1, d2;
-            if (i > 0 && i + 1 < m)
-                for (int step = 0; step < 2; ++step) {
-                    fitted.derivatives(s[i], c, d1, d2);
-                    const glm::dvec3 r = c - samples_[i];
-                    double hess = glm::dot(d1, d1) + glm::dot(r, d2);
-                    if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
-                    if (!(hess > 0.0)) break;
-                    // Kept in order, so that the parameters stay a monotone map of the samples'.
+            // One Newton step per round is enough: the rounds repeat it.
+            if (i > 0 && i + 1 < m) {
+                fitted.derivatives(s[i], c, d1, d2);
+                const glm::dvec3 r = c - samples_[i];
+                double hess = glm::dot(d1, d1) + glm::dot(r, d2);
+                if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
+                // Kept in order, so that the parameters stay a monotone map of the samples'.
+                if (hess > 0.0)
                     s[i] = std::clamp(s[i] - glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
                                       std::min(b, s[i + 1]));
-                }
+            }
             error[i] = glm::length(fitted.value(s[i]) - samples_[i]);
             worst = std::max(worst, error[i]);
         }
@@ -195,12 +233,12 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
             out.curve.points = points;
             out.map.to = s;
         }
-        if (!(worst > 0.0) || iteration + 1 == options_.iterations) break;
+        if (!(worst > 0.0) || iteration + 1 == iterations) break;
 
         // The first half moves the knots on plain least squares (Lawson weights made for other
         // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
         // weights grow where the error is large, towards the equioscillating best max-norm fit.
-        if (2 * iteration < options_.iterations) {
+        if (2 * iteration < iterations) {
             std::fill(lawson.begin(), lawson.end(), 1.0);
         } else {
             double sum = 0.0;

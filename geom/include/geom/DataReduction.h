@@ -32,7 +32,7 @@ struct ReductionOptions {
     /// removal loop alone (the one below). Surfaces and count mode always take the removal loop.
     bool freeKnots = true;
     /// Fit / correct / move rounds of each free-knot fit.
-    int freeKnotIterations = 40;
+    int freeKnotIterations = 16;
     /// In tolerance mode, remove knots in batches with one global banded least-squares refit per
     /// batch (about 1.5x fewer instructions, but 5-10% more control points left on the reference
     /// curves); false (the default) runs the group-at-a-time loop with local refits.

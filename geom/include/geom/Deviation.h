@@ -1,9 +1,11 @@
 #pragma once
 
 #include "geom/Curve.h"
+#include "geom/CurveProjector.h"
 #include "geom/Surface.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace geom {
@@ -46,6 +48,24 @@ struct ParameterMap {
 /// or a map that is empty or not ascending.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
                                 const ParameterMap& map, int reducedSamplesPerSpan = 0);
+
+/// measureDeviation with a parameter map against one original, many times: the original's
+/// samples and its global projector are made once (a search measures every candidate).
+class CurveDeviationMeter {
+public:
+    /// Throws GeometryError for a rational curve or samplesPerSpan < 1.
+    CurveDeviationMeter(const Curve& original, int samplesPerSpan);
+    /// The same as measureDeviation(original, reduced, samplesPerSpan, map, reducedSamplesPerSpan).
+    CurveDeviation measure(const Curve& reduced, const ParameterMap& map,
+                           int reducedSamplesPerSpan = 0) const;
+
+private:
+    Curve original_;
+    int samplesPerSpan_;
+    std::vector<double> params_;
+    std::vector<glm::dvec3> points_;
+    mutable std::optional<CurveProjector> projector_;
+};
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
 /// reduced surface for a colour map.

@@ -16,9 +16,11 @@ struct FreeKnotOptions {
     /// Samples per non-empty knot span of the original curve, at most; a fit of n control points
     /// takes about samplesPerFitSpan samples per span of its own (at least one per original span).
     int samplesPerSpan = 8;
-    int samplesPerFitSpan = 24;
-    /// Fit / correct / move rounds per fit; the best round is kept.
-    int iterations = 40;
+    int samplesPerFitSpan = 12;
+    /// Fit / correct / move rounds per fit (the best round is kept); a fit started from given
+    /// knots (converged for another count) takes warmIterations.
+    int iterations = 16;
+    int warmIterations = 8;
     /// The end points always stay; fixedDerivatives = k also keeps the first and last k+1
     /// control points and k interior knots of the original, so derivatives up to k stay.
     EndConditions ends;
@@ -50,7 +52,8 @@ public:
     FreeKnotFitter(const Curve& original, const FreeKnotOptions& options);
 
     /// The best fit with `count` control points found in the options' iterations, started from
-    /// `startKnots` (a knot vector of count + degree + 1 knots on the original's domain) when
+    /// the interior knots of `startKnots` (a clamped knot vector on the original's domain, of
+    /// any count, e.g. another fit's: its knot distribution is resampled to this count) when
     /// given, else from knots spread by the original's (p+1)-th derivative. sampleError is
     /// infinite when the count cannot keep the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}) const;
