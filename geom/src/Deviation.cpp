@@ -86,10 +86,10 @@ CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& 
 // until the next bound is below the largest distance measured (no sample left can reach it). A
 // sample not measured keeps its bound, which is below the maximum, so the maximum is exactly
 // that of measuring them all; the mean is an upper bound.
+// global(q, d) is the closest distance from q to `to`, given a distance d to a point of it.
+template <class Global>
 std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
-                                    const std::vector<double>& seeds, const std::vector<double>& toParams,
-                                    const std::vector<glm::dvec3>& toPoints,
-                                    std::optional<CurveProjector>& projector) {
+                                    const std::vector<double>& seeds, Global&& global) {
     std::vector<glm::dvec3> b(seeds.size());
     detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data());
     detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
@@ -98,53 +98,95 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
     double worst = 0.0;
     auto measure = [&](std::size_t i) {
         double d = detail::newtonDistance(toSampler, a[i], seeds[i], out[i]);
-        if (d > worst) {
-            if (!projector) projector.emplace(to);
-            d = std::min(d, projector->closestPoint(a[i]).distance);
-        }
-        if (d > worst) {
-            // The projector's Newton runs may all end in local minima on a wiggly curve; Newton
-            // from the nearest of the other curve's samples is one more chance.
-            std::size_t nearest = 0;
-            double nearestDistance = std::numeric_limits<double>::infinity();
-            for (std::size_t k = 0; k < toPoints.size(); ++k) {
-                const double e = glm::dot(toPoints[k] - a[i], toPoints[k] - a[i]);
-                if (e < nearestDistance) nearestDistance = e, nearest = k;
-            }
-            d = std::min(d, detail::newtonDistance(toSampler, a[i], toParams[nearest], d));
-        }
+        if (d > worst) d = std::min(d, global(a[i], d));
         out[i] = d;
         worst = std::max(worst, d);
     };
-    if (out.empty()) return out;
-    // The largest bound first gives a first maximum; only the samples whose bound exceeds it
-    // are sorted and measured.
-    measure(static_cast<std::size_t>(std::max_element(out.begin(), out.end()) - out.begin()));
-    std::vector<std::size_t> order;
-    for (std::size_t i = 0; i < seeds.size(); ++i)
-        if (out[i] > worst) order.push_back(i);
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
-    for (std::size_t i : order) {
-        if (out[i] <= worst) break;
-        measure(i);
-    }
+    // The largest bounds first give a maximum close to the final one; every other sample is
+    // measured only where its bound exceeds the maximum so far (no sample skipped can reach it).
+    std::vector<std::size_t> order(out.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t head = std::min<std::size_t>(order.size(), 16);
+    auto larger = [&](std::size_t x, std::size_t y) { return out[x] > out[y]; };
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(head), order.end(), larger);
+    for (std::size_t k = 0; k < head && out[order[k]] > worst; ++k) measure(order[k]);
+    for (std::size_t k = head; k < order.size(); ++k)
+        if (out[order[k]] > worst) measure(order[k]);
     return out;
 }
 
-// Both directions, each sample seeded at its parameter on the other curve (seedsOnReduced[i] for
-// original sample pa[i] at a[i], seedsOnOriginal[j] for reduced sample pb[j]).
-CurveDeviation bothWays(const Curve& original, const Curve& reduced, const std::vector<double>& pa,
-                        const std::vector<glm::dvec3>& a, const std::vector<double>& pb,
-                        const std::vector<double>& seedsOnReduced, const std::vector<double>& seedsOnOriginal,
-                        std::optional<CurveProjector>& toOriginal) {
-    std::vector<glm::dvec3> b(pb.size());
-    detail::evaluateAscending(reduced.degree, reduced.knots, reduced.points.data(), reduced.points.size(), pb,
-                              b.data());
-    std::optional<CurveProjector> toReduced;
-    const std::vector<double> da = sampleDistances(reduced, a, seedsOnReduced, pb, b, toReduced);
-    const std::vector<double> db = sampleDistances(original, b, seedsOnOriginal, pa, a, toOriginal);
-    return summary(da, db);
-}
+// The global step of the plain measurement: geom's CurveProjector, and since its Newton runs may
+// all end in local minima on a wiggly curve, Newton from the nearest of the other curve's samples.
+struct ProjectorStep {
+    const Curve& to;
+    const std::vector<double>& toParams;
+    const std::vector<glm::dvec3>& toPoints;
+    std::optional<CurveProjector> projector;
+    std::optional<detail::SplineSampler> sampler;
+
+    double operator()(const glm::dvec3& q, double d) {
+        if (!projector) projector.emplace(to);
+        d = std::min(d, projector->closestPoint(q).distance);
+        std::size_t nearest = 0;
+        double nearestDistance = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < toPoints.size(); ++k) {
+            const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
+            if (e < nearestDistance) nearestDistance = e, nearest = k;
+        }
+        if (!sampler) sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size());
+        return std::min(d, detail::newtonDistance(*sampler, q, toParams[nearest], d));
+    }
+};
+
+// The global step of the meter: every non-empty span whose control points' box (the span lies
+// in their convex hull) is nearer than the best distance so far, by Newton from the nearest of
+// the span's samples. Cheaper to set up than a projector (no Bezier extraction).
+struct SpanStep {
+    const Curve& to;
+    const std::vector<double>& toParams;
+    const std::vector<glm::dvec3>& toPoints;
+    std::vector<glm::dvec3> low, high;
+    std::vector<std::size_t> first, last;  // the samples in each box's span, ends included
+    detail::SplineSampler sampler;
+
+    SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points)
+        : to(c),
+          toParams(params),
+          toPoints(points),
+          sampler(c.degree, c.knots, c.points.data(), c.points.size()) {
+        const std::size_t p = static_cast<std::size_t>(c.degree);
+        for (std::size_t j = p; j < c.points.size(); ++j) {
+            if (!(c.knots[j + 1] > c.knots[j])) continue;
+            glm::dvec3 lo = c.points[j - p], hi = lo;
+            for (std::size_t k = j - p + 1; k <= j; ++k)
+                lo = glm::min(lo, c.points[k]), hi = glm::max(hi, c.points[k]);
+            low.push_back(lo);
+            high.push_back(hi);
+            first.push_back(static_cast<std::size_t>(
+                std::lower_bound(params.begin(), params.end(), c.knots[j]) - params.begin()));
+            last.push_back(std::min(
+                params.size(),
+                static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), c.knots[j + 1]) -
+                                         params.begin())));
+        }
+    }
+
+    double operator()(const glm::dvec3& q, double d) {
+        for (std::size_t s = 0; s < low.size(); ++s) {
+            const glm::dvec3 out = glm::max(glm::max(low[s] - q, q - high[s]), glm::dvec3(0.0));
+            if (glm::dot(out, out) >= d * d) continue;
+            std::size_t nearest = first[s];
+            double nearestDistance = std::numeric_limits<double>::infinity();
+            for (std::size_t k = first[s]; k < last[s]; ++k) {
+                const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
+                if (e < nearestDistance) nearestDistance = e, nearest = k;
+            }
+            if (nearest < toParams.size())
+                d = std::min(d, detail::newtonDistance(sampler, q, toParams[nearest], d));
+        }
+        return d;
+    }
+};
 
 std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params) {
     std::vector<glm::dvec3> out(params.size());
@@ -195,8 +237,10 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    std::optional<CurveProjector> toOriginal;
-    return bothWays(original, reduced, pa, valuesAt(original, pa), pb, pa, pb, toOriginal);
+    const std::vector<glm::dvec3> a = valuesAt(original, pa), b = valuesAt(reduced, pb);
+    const std::vector<double> da = sampleDistances(reduced, a, pa, ProjectorStep{reduced, pb, b, {}, {}});
+    const std::vector<double> db = sampleDistances(original, b, pb, ProjectorStep{original, pa, a, {}, {}});
+    return summary(da, db);
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
@@ -227,9 +271,13 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
         for (double& x : u) x = std::clamp(x, c.domainStart(), c.domainEnd());
         return u;
     };
-    return bothWays(original_, reduced, params_, points_, pb,
-                    clampTo(interpolate(map.from, map.to, params_), reduced),
-                    clampTo(interpolate(map.to, map.from, pb), original_), projector_);
+    const std::vector<glm::dvec3> b = valuesAt(reduced, pb);
+    const std::vector<double> da = sampleDistances(
+        reduced, points_, clampTo(interpolate(map.from, map.to, params_), reduced), SpanStep(reduced, pb, b));
+    const std::vector<double> db =
+        sampleDistances(original_, b, clampTo(interpolate(map.to, map.from, pb), original_),
+                        SpanStep(original_, params_, points_));
+    return summary(da, db);
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {

@@ -1,11 +1,9 @@
 #pragma once
 
 #include "geom/Curve.h"
-#include "geom/CurveProjector.h"
 #include "geom/Surface.h"
 
 #include <cstddef>
-#include <optional>
 #include <vector>
 
 namespace geom {
@@ -64,7 +62,6 @@ private:
     int samplesPerSpan_;
     std::vector<double> params_;
     std::vector<glm::dvec3> points_;
-    mutable std::optional<CurveProjector> projector_;
 };
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
