@@ -704,7 +704,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         out.deviation = measureDeviation(curve, out.curve, measureDensity);
         if (out.deviation.maxError > o.tolerance) out.curve = curve;
     }
-    if (out.curve.points.size() == n0) out.deviation = measureDeviation(curve, curve, 1);
+    if (out.curve.points.size() == n0) out.deviation = CurveDeviation{};  // the original: no error
     std::size_t lowest = std::max({p + 1, 2 * (k + 1), p + 1 + 2 * k});
     if (o.maxRemovals < n0) lowest = std::max(lowest, n0 - o.maxRemovals);
     std::size_t pass = out.curve.points.size();

@@ -145,39 +145,24 @@ struct SpanStep {
     const Curve& to;
     const std::vector<double>& toParams;
     const std::vector<glm::dvec3>& toPoints;
-    std::vector<glm::dvec3> low, high;
-    std::vector<std::size_t> first, last;  // the samples in each box's span, ends included
+    const CurveDeviationMeter::SpanBoxes& boxes;
     detail::SplineSampler sampler;
 
-    SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points)
+    SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points,
+             const CurveDeviationMeter::SpanBoxes& b)
         : to(c),
           toParams(params),
           toPoints(points),
-          sampler(c.degree, c.knots, c.points.data(), c.points.size()) {
-        const std::size_t p = static_cast<std::size_t>(c.degree);
-        for (std::size_t j = p; j < c.points.size(); ++j) {
-            if (!(c.knots[j + 1] > c.knots[j])) continue;
-            glm::dvec3 lo = c.points[j - p], hi = lo;
-            for (std::size_t k = j - p + 1; k <= j; ++k)
-                lo = glm::min(lo, c.points[k]), hi = glm::max(hi, c.points[k]);
-            low.push_back(lo);
-            high.push_back(hi);
-            first.push_back(static_cast<std::size_t>(
-                std::lower_bound(params.begin(), params.end(), c.knots[j]) - params.begin()));
-            last.push_back(std::min(
-                params.size(),
-                static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), c.knots[j + 1]) -
-                                         params.begin())));
-        }
-    }
+          boxes(b),
+          sampler(c.degree, c.knots, c.points.data(), c.points.size()) {}
 
     double operator()(const glm::dvec3& q, double d) {
-        for (std::size_t s = 0; s < low.size(); ++s) {
-            const glm::dvec3 out = glm::max(glm::max(low[s] - q, q - high[s]), glm::dvec3(0.0));
+        for (std::size_t s = 0; s < boxes.low.size(); ++s) {
+            const glm::dvec3 out = glm::max(glm::max(boxes.low[s] - q, q - boxes.high[s]), glm::dvec3(0.0));
             if (glm::dot(out, out) >= d * d) continue;
-            std::size_t nearest = first[s];
+            std::size_t nearest = boxes.first[s];
             double nearestDistance = std::numeric_limits<double>::infinity();
-            for (std::size_t k = first[s]; k < last[s]; ++k) {
+            for (std::size_t k = boxes.first[s]; k < boxes.last[s]; ++k) {
                 const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
                 if (e < nearestDistance) nearestDistance = e, nearest = k;
             }
@@ -248,11 +233,31 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
     return CurveDeviationMeter(original, samplesPerSpan).measure(reduced, map, reducedSamplesPerSpan);
 }
 
+CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
+                                                              const std::vector<double>& params) {
+    SpanBoxes out;
+    const std::size_t p = static_cast<std::size_t>(c.degree);
+    for (std::size_t j = p; j < c.points.size(); ++j) {
+        if (!(c.knots[j + 1] > c.knots[j])) continue;
+        glm::dvec3 lo = c.points[j - p], hi = lo;
+        for (std::size_t k = j - p + 1; k <= j; ++k)
+            lo = glm::min(lo, c.points[k]), hi = glm::max(hi, c.points[k]);
+        out.low.push_back(lo);
+        out.high.push_back(hi);
+        const auto from = std::lower_bound(params.begin(), params.end(), c.knots[j]);
+        const auto to = std::upper_bound(from, params.end(), c.knots[j + 1]);
+        out.first.push_back(static_cast<std::size_t>(from - params.begin()));
+        out.last.push_back(static_cast<std::size_t>(to - params.begin()));
+    }
+    return out;
+}
+
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
     : original_(original), samplesPerSpan_(samplesPerSpan) {
     if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     points_ = valuesAt(original, params_);
+    boxes_ = spanBoxes(original, params_);
 }
 
 CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
@@ -272,11 +277,12 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
         return u;
     };
     const std::vector<glm::dvec3> b = valuesAt(reduced, pb);
-    const std::vector<double> da = sampleDistances(
-        reduced, points_, clampTo(interpolate(map.from, map.to, params_), reduced), SpanStep(reduced, pb, b));
+    const std::vector<double> da =
+        sampleDistances(reduced, points_, clampTo(interpolate(map.from, map.to, params_), reduced),
+                        SpanStep(reduced, pb, b, spanBoxes(reduced, pb)));
     const std::vector<double> db =
         sampleDistances(original_, b, clampTo(interpolate(map.to, map.from, pb), original_),
-                        SpanStep(original_, params_, points_));
+                        SpanStep(original_, params_, points_, boxes_));
     return summary(da, db);
 }
 

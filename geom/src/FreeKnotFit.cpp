@@ -191,6 +191,17 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                     }
                 }
                 const std::size_t c0 = span - p;
+                if (c0 >= fixed && c0 + p + fixed < count) {
+                    // Every column free (most samples): no end terms.
+                    double* row = band.data() + (c0 - fixed) * wb;
+                    glm::dvec3* right = rhs.data() + (c0 - fixed);
+                    for (std::size_t x = 0; x <= p; ++x, row += wb) {
+                        const double wx = w * basis[x];
+                        right[x] += wx * samples_[i];
+                        for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
+                    }
+                    continue;
+                }
                 glm::dvec3 target = samples_[i];
                 for (std::size_t c = 0; c <= p; ++c)
                     if (c0 + c < fixed || c0 + c + fixed >= count) target -= basis[c] * points[c0 + c];

@@ -48,7 +48,7 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
                                 const ParameterMap& map, int reducedSamplesPerSpan = 0);
 
 /// measureDeviation with a parameter map against one original, many times: the original's
-/// samples and its global projector are made once (a search measures every candidate).
+/// samples and span boxes are made once (a search measures every candidate).
 class CurveDeviationMeter {
 public:
     /// Throws GeometryError for a rational curve or samplesPerSpan < 1.
@@ -57,11 +57,20 @@ public:
     CurveDeviation measure(const Curve& reduced, const ParameterMap& map,
                            int reducedSamplesPerSpan = 0) const;
 
+    /// Per non-empty span of a curve: the box of its control points (the span lies in their
+    /// convex hull) and the range [first, last) of the ascending samples in it, ends included.
+    struct SpanBoxes {
+        std::vector<glm::dvec3> low, high;
+        std::vector<std::size_t> first, last;
+    };
+    static SpanBoxes spanBoxes(const Curve& curve, const std::vector<double>& params);
+
 private:
     Curve original_;
     int samplesPerSpan_;
     std::vector<double> params_;
     std::vector<glm::dvec3> points_;
+    SpanBoxes boxes_;
 };
 
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
