@@ -719,19 +719,28 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     fo.ends = o.ends;
     const FreeKnotFitter fitter(curve, fo);
     const CurveDeviationMeter meter(curve, measureDensity);
-    double constant = 1e-3;  // the error model's constant, as measured on the reference curves
+    // The error model E(n) = C (n - p)^-(p+1): before any fit C from the density integral (with
+    // the constant measured on the reference curves), then through the last fit. (A secant
+    // through the last two fits follows their noise: the fits are not monotone in n.)
+    std::vector<std::pair<double, double>> seen;  // (log(n - p), log sampleError)
+    const double target = std::log(0.97 * o.tolerance);
     auto next = [&] {
-        std::size_t n = fail + 1;
-        while (n + 1 < pass && constant * fitter.predictedError(n) > 0.97 * o.tolerance) ++n;
-        return n;
+        const double q = double(p + 1);
+        double logC = std::log(1e-3 * fitter.predictedError(p + 1));
+        if (!seen.empty()) logC = seen.back().second + q * seen.back().first;
+        const double want = double(p) + std::exp((logC - target) / q);
+        const double n = std::isfinite(want) ? std::ceil(want) : double(pass - 1);
+        return static_cast<std::size_t>(std::clamp(n, double(fail + 1), double(pass - 1)));
     };
+    std::vector<double> errorAt(n0 + 1, std::numeric_limits<double>::infinity());  // by count
     std::vector<double> previousKnots;  // the last fit's, whose knot density starts the next
     auto probe = [&](std::size_t n) {
         ++out.fits;
         const FreeKnotFit f = fitter.fit(n, previousKnots);
         if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
-        if (std::isfinite(f.sampleError) && f.sampleError > 0.0 && fitter.predictedError(n) > 0.0)
-            constant = f.sampleError / fitter.predictedError(n);
+        if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
+            seen.emplace_back(std::log(double(n - p)), std::log(f.sampleError));
+        errorAt[n] = f.sampleError;
         if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
         Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
         // The fit's few spans are sampled four times as densely: a fit may turn sharply between
@@ -746,7 +755,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         const std::size_t n = next();
         (probe(n) ? pass : fail) = n;
     }
-    for (std::size_t n = fail; n > lowest;) {
+    // One count below a near miss too: the fits are not monotone in n.
+    for (std::size_t n = fail; n > lowest && errorAt[n] <= 1.15 * o.tolerance;) {
         if (!probe(--n)) break;
         pass = n;
     }

@@ -92,7 +92,7 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
                                     const std::vector<double>& seeds, Global&& global) {
     std::vector<glm::dvec3> b(seeds.size());
     detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data());
-    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
+    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size(), true);
     std::vector<double> out(seeds.size());
     for (std::size_t i = 0; i < seeds.size(); ++i) out[i] = glm::length(a[i] - b[i]);
     double worst = 0.0;
@@ -154,7 +154,7 @@ struct SpanStep {
           toParams(params),
           toPoints(points),
           boxes(b),
-          sampler(c.degree, c.knots, c.points.data(), c.points.size()) {}
+          sampler(c.degree, c.knots, c.points.data(), c.points.size(), true) {}
 
     double operator()(const glm::dvec3& q, double d) {
         for (std::size_t s = 0; s < boxes.low.size(); ++s) {

@@ -33,10 +33,19 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     // The original's p-th derivative is constant on each span; its jumps over the neighbouring
     // spans' mean length estimate f^(p+1) at the knots.
     const std::vector<double>& t = original.knots;
+    // The p-th derivative on span j is p! a_p / h^p for the span's power form a (in s = (u - t_j) / h).
     std::vector<glm::dvec3> top(n0, glm::dvec3(0.0));
+    glm::dvec3 power[detail::smallDegree + 1];
     std::vector<double> basis((p + 1) * (p + 1));
+    double factorial = 1.0;
+    for (std::size_t i = 2; i <= p; ++i) factorial *= double(i);
     for (std::size_t j = p; j < n0; ++j) {
         if (!(t[j + 1] > t[j])) continue;
+        if (p <= detail::smallDegree) {
+            detail::spanPowerForm(j, p, t.data(), original.points.data(), power);
+            top[j] = power[p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
+            continue;
+        }
         basisDerivatives(j, 0.5 * (t[j] + t[j + 1]), original.degree, t, original.degree, basis);
         for (std::size_t b = 0; b <= p; ++b) top[j] += basis[p * (p + 1) + b] * original.points[j - p + b];
     }
@@ -219,7 +228,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         }
 
         // Parameter correction: Newton towards each sample's foot point on the fit.
-        detail::SplineSampler fitted(degree, knots, points.data(), count);
+        detail::SplineSampler fitted(degree, knots, points.data(), count, true);
         double worst = 0.0;
         for (std::size_t i = 0; i < m; ++i) {
             glm::dvec3 c, d1, d2;
