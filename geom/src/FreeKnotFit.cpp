@@ -122,7 +122,7 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
     return knots;
 }
 
-FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots) const {
+FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
@@ -258,7 +258,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         // The first half moves the knots on plain least squares (Lawson weights made for other
         // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
         // weights grow where the error is large, towards the equioscillating best max-norm fit.
-        if (2 * iteration < iterations) {
+        if (moveKnots && 2 * iteration < iterations) {
             std::fill(lawson.begin(), lawson.end(), 1.0);
         } else {
             double sum = 0.0;

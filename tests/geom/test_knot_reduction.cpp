@@ -395,7 +395,7 @@ TEST_CASE("curve reduction and deviation above the power-form degree limit", "[g
             const CurveProjector projector(c);
             double worst = 0.0;
             // The report samples a free-knot fit four times as densely as the original.
-            const int density = o.freeKnots ? 64 : 16;
+            const int density = r.freeKnotFit ? 64 : 16;
             for (double u : spanSamples(r.curve.knots, r.curve.degree, r.curve.points.size(), density))
                 worst = std::max(worst, projector.closestPoint(evaluate(r.curve, u)).distance);
             REQUIRE(r.deviation.maxReducedToOriginal == Approx(worst).epsilon(1e-9));

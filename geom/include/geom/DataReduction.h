@@ -55,6 +55,9 @@ struct CurveReduction {
     std::size_t removed = 0;      ///< knots removed
     std::size_t fits = 0;         ///< least-squares fits tried (accepted or not)
     std::size_t steppedBack = 0;  ///< accepted states the final measurement undid (usually 0)
+    /// True when the curve is a free-knot fit (its knots moved; the report samples it at four
+    /// times samplesPerSpan per span), false when it keeps a subset of the original's knots.
+    bool freeKnotFit = false;
     CurveDeviation deviation;     ///< measureDeviation(original, curve) when options.report
 };
 

@@ -54,9 +54,11 @@ public:
     /// The best fit with `count` control points found in the options' iterations, started from
     /// the interior knots of `startKnots` (a clamped knot vector on the original's domain, of
     /// any count, e.g. another fit's: its knot distribution is resampled to this count) when
-    /// given, else from knots spread by the original's (p+1)-th derivative. sampleError is
-    /// infinite when the count cannot keep the end conditions.
-    FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}) const;
+    /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
+    /// the knots stay where they start (every round corrects parameters and reweights), for
+    /// start knots that are already right, e.g. the original's most significant ones.
+    /// sampleError is infinite when the count cannot keep the end conditions.
+    FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true) const;
 
     const Curve& original() const { return original_; }
 
