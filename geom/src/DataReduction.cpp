@@ -664,16 +664,19 @@ private:
 
 // Removes, by The NURBS Book's A5.8, every knot that can go while the curve moves by at most
 // `tolerance` each time (knots inserted into a simpler curve), outside the knots the end
-// conditions keep and up to `most` of them, in rank order, ranking again at most `passes` times.
+// conditions keep and up to `most` of them, in rank order, ranking again at most `passes` times
+// (the first ranking, of the curve given, goes to firstRanking).
 Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, double tolerance,
-                             std::size_t most, int passes) {
+                             std::size_t most, int passes, std::vector<KnotSignificance>* firstRanking) {
     Curve c = curve;
     const std::size_t p = static_cast<std::size_t>(c.degree),
                       k = static_cast<std::size_t>(ends.fixedDerivatives);
     std::size_t removed = 0;
     for (bool again = true; again && removed < most && passes-- > 0;) {
         again = false;
-        for (const KnotSignificance& s : rankKnots(c)) {
+        const std::vector<KnotSignificance> ranking = rankKnots(c);
+        if (firstRanking && firstRanking->empty()) *firstRanking = ranking;
+        for (const KnotSignificance& s : ranking) {
             if (s.weight > tolerance || removed >= most) break;
             const std::size_t first = s.index + 1 - static_cast<std::size_t>(s.multiplicity);
             if (first <= p + k || s.index + k >= c.points.size()) continue;
@@ -700,8 +703,9 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     double size = 0.0;
     for (const glm::dvec3& q : curve.points) size = std::max(size, glm::length(q));
     CurveReduction out;
+    std::vector<KnotSignificance> ranked;  // the original's knots by weight
     out.curve = removeKnotsInRankOrder(curve, o.ends, std::max(1e-6 * o.tolerance, 1e-13 * size),
-                                       o.maxRemovals, std::numeric_limits<int>::max());
+                                       o.maxRemovals, std::numeric_limits<int>::max(), &ranked);
     if (out.curve.points.size() < n0) {
         out.deviation = measureDeviation(curve, out.curve, measureDensity);
         if (out.deviation.maxError > o.tolerance) out.curve = curve;
@@ -724,10 +728,9 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // The original's most significant knots (by removal weight), kept, fit a refined curve whose
     // few knots that matter are where the p-th derivative jumps (equidistribution cannot hit
     // those exactly); on a smooth curve they fit far worse than moved knots (on the reference
-    // curves 50 to 10^5 times the error). Where they come within 30 times (on random refined
-    // test curves they do, from 0.01 to 10 times), the caller runs the removal loop too, which
-    // finds such knots.
-    std::vector<KnotSignificance> ranked = rankKnots(curve);
+    // curves 50 to 10^5 times the error after three rounds). Where they come within 45 times (on
+    // random refined test curves they do, from 0.01 to 10 times), the caller runs the removal
+    // loop too, which finds such knots.
     std::stable_sort(ranked.begin(), ranked.end(), [](const KnotSignificance& x, const KnotSignificance& y) {
         return x.weight > y.weight;
     });
@@ -809,7 +812,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     ++out.fits;
     FreeKnotFit moved = fitter.fit(first);
     ++out.fits;
-    refined = fitter.fit(first, significant(first), false).sampleError <= 30.0 * moved.sampleError;
+    refined = fitter.fit(first, significant(first), false, 3).sampleError <= 45.0 * moved.sampleError;
     search(first, std::move(moved));
     out.removed = n0 - out.curve.points.size();
     return out;

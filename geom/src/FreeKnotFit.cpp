@@ -122,7 +122,8 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
     return knots;
 }
 
-FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots) const {
+FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
+                                int rounds) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
@@ -163,7 +164,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
     const std::size_t nf = count - 2 * fixed, wb = p + 1;
     std::vector<double> band, inverse, gapError(gaps), h(gaps);
     std::vector<glm::dvec3> rhs;
-    const int iterations = warm ? options_.warmIterations : options_.iterations;
+    const int iterations = rounds > 0 ? rounds : warm ? options_.warmIterations : options_.iterations;
     for (int iteration = 0; iteration < iterations; ++iteration) {
         // Least squares on the samples at their current parameters, end points held.
         if (nf > 0) {

@@ -57,8 +57,10 @@ public:
     /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
-    /// sampleError is infinite when the count cannot keep the end conditions.
-    FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true) const;
+    /// rounds > 0 replaces the options' number of rounds. sampleError is infinite when the count
+    /// cannot keep the end conditions.
+    FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
+                    int rounds = 0) const;
 
     const Curve& original() const { return original_; }
 
