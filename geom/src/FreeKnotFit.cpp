@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
+#include <limits>
 
 namespace geom {
 
@@ -30,10 +30,10 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     samples_.resize(static_cast<std::size_t>(options.samplesPerSpan) + 1);
 
     // The best knots for an l-infinity spline fit put h_i proportional to |f^(p+1)|^(-1/(p+1)).
-    // The original's p-th derivative is constant on each span; its jumps over the neighbouring
-    // spans' mean length estimate f^(p+1) at the knots.
+    // The original's p-th derivative is constant on each span (p! a_p / h^p for the span's power
+    // form a in s = (u - t_j) / h); its jumps over the neighbouring spans' mean length estimate
+    // f^(p+1) at the knots.
     const std::vector<double>& t = original.knots;
-    // The p-th derivative on span j is p! a_p / h^p for the span's power form a (in s = (u - t_j) / h).
     std::vector<glm::dvec3> top(n0, glm::dvec3(0.0));
     glm::dvec3 power[detail::smallDegree + 1];
     std::vector<double> basis((p + 1) * (p + 1));
@@ -63,12 +63,8 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     }
     for (std::size_t j = p; j < n0; ++j) densityIntegral_ += density_[j] * (t[j + 1] - t[j]);
     // A floor, so that straight parts still get knots and no span is empty of samples.
-    double mean = 0.0;
-    for (std::size_t j = p; j < n0; ++j) mean += density_[j] * (t[j + 1] - t[j]);
-    mean /= t[n0] - t[p];
-    for (std::size_t j = p; j < n0; ++j) density_[j] = std::max(density_[j], 0.2 * mean);
-    if (!(mean > 0.0))
-        for (std::size_t j = p; j < n0; ++j) density_[j] = 1.0;
+    const double mean = densityIntegral_ / (t[n0] - t[p]);
+    for (std::size_t j = p; j < n0; ++j) density_[j] = mean > 0.0 ? std::max(density_[j], 0.2 * mean) : 1.0;
 }
 
 const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) const {
@@ -152,8 +148,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
     const double minGap = 0.05 * (hi - lo) / double(gaps);
 
     const Samples& data = samplesFor(count);
-    const std::vector<glm::dvec3>& samples_ = data.points;
-    const std::vector<double>& spacing_ = data.spacing;
+    const std::vector<glm::dvec3>& targets = data.points;
     const std::size_t m = data.params.size();
     std::vector<double> s = data.params, lawson(m, 1.0), error(m, 0.0), basis(p + 1);
     std::vector<glm::dvec3> points(count);
@@ -182,7 +177,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                     }
             std::size_t span = p;
             for (std::size_t i = 0; i < m; ++i) {
-                const double w = spacing_[i] * lawson[i];
+                const double w = data.spacing[i] * lawson[i];
                 while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
                 while (span > p && s[i] < knots[span]) --span;
                 if (w == 0.0) continue;
@@ -207,12 +202,12 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                     glm::dvec3* right = rhs.data() + (c0 - fixed);
                     for (std::size_t x = 0; x <= p; ++x, row += wb) {
                         const double wx = w * basis[x];
-                        right[x] += wx * samples_[i];
+                        right[x] += wx * targets[i];
                         for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
                     }
                     continue;
                 }
-                glm::dvec3 target = samples_[i];
+                glm::dvec3 target = targets[i];
                 for (std::size_t c = 0; c <= p; ++c)
                     if (c0 + c < fixed || c0 + c + fixed >= count) target -= basis[c] * points[c0 + c];
                 for (std::size_t x = 0; x <= p; ++x) {
@@ -236,7 +231,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
             // One Newton step per round is enough: the rounds repeat it.
             if (i > 0 && i + 1 < m) {
                 fitted.derivatives(s[i], c, d1, d2);
-                const glm::dvec3 r = c - samples_[i];
+                const glm::dvec3 r = c - targets[i];
                 double hess = glm::dot(d1, d1) + glm::dot(r, d2);
                 if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
                 // Kept in order, so that the parameters stay a monotone map of the samples'.
@@ -244,7 +239,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                     s[i] = std::clamp(s[i] - glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
                                       std::min(b, s[i + 1]));
             }
-            error[i] = glm::length(fitted.value(s[i]) - samples_[i]);
+            error[i] = glm::length(fitted.value(s[i]) - targets[i]);
             worst = std::max(worst, error[i]);
         }
         if (worst < out.sampleError) {
