@@ -721,6 +721,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     FreeKnotOptions fo;
     fo.samplesPerSpan = o.samplesPerSpan;
     fo.iterations = o.freeKnotIterations;
+    fo.warmIterations = std::max(1, o.freeKnotIterations / 2);
     fo.ends = o.ends;
     const FreeKnotFitter fitter(curve, fo);
     const CurveDeviationMeter meter(curve, measureDensity);

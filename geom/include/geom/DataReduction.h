@@ -33,11 +33,13 @@ struct ReductionOptions {
     /// no count passes, the removal loop runs too and the fewer points win. false runs the
     /// removal loop alone. Surfaces and count mode always take the removal loop.
     bool freeKnots = true;
-    /// Fit / correct / move rounds of each free-knot fit.
+    /// Fit / correct / move rounds of a free-knot fit from a cold start (the search's later fits,
+    /// started from the last one's knots, take half).
     int freeKnotIterations = 16;
-    /// In tolerance mode, remove knots in batches with one global banded least-squares refit per
-    /// batch (about 1.5x fewer instructions, but 5-10% more control points left on the reference
-    /// curves); false (the default) runs the group-at-a-time loop with local refits.
+    /// The removal loop in tolerance mode (freeKnots false, or where it runs too): remove knots
+    /// in batches with one global banded least-squares refit per batch (about 1.5x fewer
+    /// instructions, but 5-10% more control points left on the reference curves); false (the
+    /// default) runs the group-at-a-time loop with local refits.
     bool batch = false;
     /// Batch mode only: rounds of removal; between rounds, lawsonSteps reweighted refits even the
     /// error out (towards the best max-norm fit) and the knots that failed are tried again.
