@@ -79,33 +79,121 @@ CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& 
 }
 
 // Distances from samples of `from` (at ascending params) to `to`, two polynomial curves on one
-// domain. |from(t) - to(t)| is the distance to a point of `to`, so it bounds the closest
+// domain; seeds[i] is a parameter of `to` near from(params[i]) (params itself for the plain
+// measurement). |from(t) - to(seed)| is the distance to a point of `to`, so it bounds the closest
 // distance from above: the samples are taken largest bound first, and each is measured by
-// Newton from t and, where that could still be the maximum, by the global closest point, until
-// the next bound is below the largest distance measured (no sample left can reach it). A sample
-// not measured keeps its bound, which is below the maximum, so the maximum is exactly that of
-// measuring them all; the mean is an upper bound.
-std::vector<double> sampleDistances(const Curve& from, const Curve& to, const std::vector<double>& params,
-                                    std::optional<CurveProjector>& projector) {
-    std::vector<glm::dvec3> a(params.size()), b(params.size());
-    detail::evaluateAscending(from.degree, from.knots, from.points.data(), from.points.size(), params,
-                              a.data());
-    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), params, b.data());
-    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size());
-    std::vector<double> out(params.size());
-    std::vector<std::size_t> order(params.size());
-    for (std::size_t i = 0; i < params.size(); ++i) out[i] = glm::length(a[i] - b[i]), order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return out[x] > out[y]; });
+// Newton from the seed and, where that could still be the maximum, by the global closest point,
+// until the next bound is below the largest distance measured (no sample left can reach it). A
+// sample not measured keeps its bound, which is below the maximum, so the maximum is exactly
+// that of measuring them all; the mean is an upper bound.
+// global(q, d) is the closest distance from q to `to`, given a distance d to a point of it.
+template <class Global>
+std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
+                                    const std::vector<double>& seeds, Global&& global) {
+    std::vector<glm::dvec3> b(seeds.size());
+    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data());
+    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size(), true);
+    std::vector<double> out(seeds.size());
+    for (std::size_t i = 0; i < seeds.size(); ++i) out[i] = glm::length(a[i] - b[i]);
     double worst = 0.0;
-    for (std::size_t i : order) {
-        if (out[i] <= worst) break;
-        double d = detail::newtonDistance(toSampler, a[i], params[i], out[i]);
-        if (d > worst) {
-            if (!projector) projector.emplace(to);
-            d = std::min(d, projector->closestPoint(a[i]).distance);
-        }
+    auto measure = [&](std::size_t i) {
+        double d = detail::newtonDistance(toSampler, a[i], seeds[i], out[i]);
+        if (d > worst) d = std::min(d, global(a[i], d));
         out[i] = d;
         worst = std::max(worst, d);
+    };
+    // The largest bounds first give a maximum close to the final one; every other sample is
+    // measured only where its bound exceeds the maximum so far (no sample skipped can reach it).
+    std::vector<std::size_t> order(out.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const std::size_t head = std::min<std::size_t>(order.size(), 16);
+    auto larger = [&](std::size_t x, std::size_t y) { return out[x] > out[y]; };
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(head), order.end(), larger);
+    for (std::size_t k = 0; k < head && out[order[k]] > worst; ++k) measure(order[k]);
+    for (std::size_t k = head; k < order.size(); ++k)
+        if (out[order[k]] > worst) measure(order[k]);
+    return out;
+}
+
+// The global step of the plain measurement: geom's CurveProjector, and since its Newton runs may
+// all end in local minima on a wiggly curve, Newton from the nearest of the other curve's samples.
+struct ProjectorStep {
+    const Curve& to;
+    const std::vector<double>& toParams;
+    const std::vector<glm::dvec3>& toPoints;
+    std::optional<CurveProjector> projector;
+    std::optional<detail::SplineSampler> sampler;
+
+    double operator()(const glm::dvec3& q, double d) {
+        if (!projector) projector.emplace(to);
+        d = std::min(d, projector->closestPoint(q).distance);
+        std::size_t nearest = 0;
+        double nearestDistance = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < toPoints.size(); ++k) {
+            const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
+            if (e < nearestDistance) nearestDistance = e, nearest = k;
+        }
+        if (!sampler) sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size());
+        return std::min(d, detail::newtonDistance(*sampler, q, toParams[nearest], d));
+    }
+};
+
+// The global step of the meter: every non-empty span whose control points' box (the span lies
+// in their convex hull) is nearer than the best distance so far, by Newton from the nearest of
+// the span's samples. Cheaper to set up than a projector (no Bezier extraction).
+struct SpanStep {
+    const Curve& to;
+    const std::vector<double>& toParams;
+    const std::vector<glm::dvec3>& toPoints;
+    const CurveDeviationMeter::SpanBoxes& boxes;
+    detail::SplineSampler sampler;
+
+    SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points,
+             const CurveDeviationMeter::SpanBoxes& b)
+        : to(c),
+          toParams(params),
+          toPoints(points),
+          boxes(b),
+          sampler(c.degree, c.knots, c.points.data(), c.points.size(), true) {}
+
+    double operator()(const glm::dvec3& q, double d) {
+        for (std::size_t s = 0; s < boxes.low.size(); ++s) {
+            const glm::dvec3 out = glm::max(glm::max(boxes.low[s] - q, q - boxes.high[s]), glm::dvec3(0.0));
+            if (glm::dot(out, out) >= d * d) continue;
+            std::size_t nearest = boxes.first[s];
+            double nearestDistance = std::numeric_limits<double>::infinity();
+            for (std::size_t k = boxes.first[s]; k < boxes.last[s]; ++k) {
+                const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
+                if (e < nearestDistance) nearestDistance = e, nearest = k;
+            }
+            if (nearest < toParams.size())
+                d = std::min(d, detail::newtonDistance(sampler, q, toParams[nearest], d));
+        }
+        return d;
+    }
+};
+
+std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params) {
+    std::vector<glm::dvec3> out(params.size());
+    detail::evaluateAscending(c.degree, c.knots, c.points.data(), c.points.size(), params, out.data());
+    return out;
+}
+
+// The map's piecewise linear interpolant at ascending parameters x (clamped to its ends).
+std::vector<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
+                                const std::vector<double>& x) {
+    std::vector<double> out(x.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        while (k + 2 < xs.size() && xs[k + 1] <= x[i]) ++k;
+        if (xs.size() == 1 || x[i] <= xs[k]) {
+            out[i] = ys[k];
+        } else if (x[i] >= xs[k + 1]) {
+            out[i] = ys[k + 1];
+        } else {
+            const double f = (x[i] - xs[k]) / (xs[k + 1] - xs[k]);
+            out[i] = ys[k] + f * (ys[k + 1] - ys[k]);
+        }
     }
     return out;
 }
@@ -134,9 +222,67 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    std::optional<CurveProjector> toReduced, toOriginal;
-    const std::vector<double> da = sampleDistances(original, reduced, pa, toReduced);
-    const std::vector<double> db = sampleDistances(reduced, original, pb, toOriginal);
+    const std::vector<glm::dvec3> a = valuesAt(original, pa), b = valuesAt(reduced, pb);
+    const std::vector<double> da = sampleDistances(reduced, a, pa, ProjectorStep{reduced, pb, b, {}, {}});
+    const std::vector<double> db = sampleDistances(original, b, pb, ProjectorStep{original, pa, a, {}, {}});
+    return summary(da, db);
+}
+
+CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
+                                const ParameterMap& map, int reducedSamplesPerSpan) {
+    return CurveDeviationMeter(original, samplesPerSpan).measure(reduced, map, reducedSamplesPerSpan);
+}
+
+CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
+                                                              const std::vector<double>& params) {
+    SpanBoxes out;
+    const std::size_t p = static_cast<std::size_t>(c.degree);
+    for (std::size_t j = p; j < c.points.size(); ++j) {
+        if (!(c.knots[j + 1] > c.knots[j])) continue;
+        glm::dvec3 lo = c.points[j - p], hi = lo;
+        for (std::size_t k = j - p + 1; k <= j; ++k)
+            lo = glm::min(lo, c.points[k]), hi = glm::max(hi, c.points[k]);
+        out.low.push_back(lo);
+        out.high.push_back(hi);
+        const auto from = std::lower_bound(params.begin(), params.end(), c.knots[j]);
+        const auto to = std::upper_bound(from, params.end(), c.knots[j + 1]);
+        out.first.push_back(static_cast<std::size_t>(from - params.begin()));
+        out.last.push_back(static_cast<std::size_t>(to - params.begin()));
+    }
+    return out;
+}
+
+CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
+    : original_(original), samplesPerSpan_(samplesPerSpan) {
+    if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
+    params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
+    points_ = valuesAt(original, params_);
+    boxes_ = spanBoxes(original, params_);
+}
+
+CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
+                                            int reducedSamplesPerSpan) const {
+    if (reduced.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
+    if (original_.domainStart() != reduced.domainStart() || original_.domainEnd() != reduced.domainEnd())
+        throw GeometryError("measureDeviation: a parameter map needs curves on one domain");
+    if (map.from.empty() || map.from.size() != map.to.size() ||
+        !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
+        throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
+    if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
+    const std::vector<double> pb =
+        spanSamples(reduced.knots, reduced.degree, reduced.points.size(),
+                    reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan_);
+    auto clampTo = [](std::vector<double> u, const Curve& c) {
+        for (double& x : u) x = std::clamp(x, c.domainStart(), c.domainEnd());
+        return u;
+    };
+    const std::vector<glm::dvec3> b = valuesAt(reduced, pb);
+    const std::vector<double> da =
+        sampleDistances(reduced, points_, clampTo(interpolate(map.from, map.to, params_), reduced),
+                        SpanStep(reduced, pb, b, spanBoxes(reduced, pb)));
+    const std::vector<double> db =
+        sampleDistances(original_, b, clampTo(interpolate(map.to, map.from, pb), original_),
+                        SpanStep(original_, params_, points_, boxes_));
     return summary(da, db);
 }
 

@@ -171,13 +171,20 @@ inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, 
 // near each other (samples in order, Newton iterations) cost a Horner step each.
 class SplineSampler {
 public:
-    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count)
+    // everySpan keeps the power form of every span once made (for parameters that jump between
+    // spans, as Newton from scattered seeds or samples sliding across knots do).
+    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
+                  bool everySpan = false)
         : degree_(degree),
           p_(static_cast<std::size_t>(degree)),
           knots_(knots),
           points_(points),
           count_(count) {
         if (p_ > smallDegree) basis_.resize(3 * (p_ + 1));
+        if (everySpan && p_ <= smallDegree) {
+            made_.assign(count_ + 1, false);
+            forms_.resize((count_ + 1) * (p_ + 1));
+        }
     }
 
     double start() const { return knots_[p_]; }
@@ -231,7 +238,14 @@ private:
                             (u < knots_[span_ + 1] || (span_ + 1 == count_ && u <= knots_[count_]));
         if (!inside) {
             span_ = findSpan(degree_, knots_, count_, u);
-            spanPowerForm(span_, p_, knots_.data(), points_, power_);
+            if (made_.empty()) {
+                spanPowerForm(span_, p_, knots_.data(), points_, power_);
+            } else {
+                glm::dvec3* form = forms_.data() + span_ * (p_ + 1);
+                if (!made_[span_])
+                    spanPowerForm(span_, p_, knots_.data(), points_, form), made_[span_] = true;
+                std::copy(form, form + p_ + 1, power_);
+            }
             formed_ = true;
         }
         return (u - knots_[span_]) / (knots_[span_ + 1] - knots_[span_]);
@@ -246,6 +260,8 @@ private:
     bool formed_ = false;
     glm::dvec3 power_[smallDegree + 1];
     std::vector<double> basis_;
+    std::vector<bool> made_;
+    std::vector<glm::dvec3> forms_;
 };
 
 // Values of a polynomial spline (degree, knots, count coefficients) at parameters inside its

@@ -25,9 +25,21 @@ struct ReductionOptions {
     /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
     /// (they would fail); 0 tries every knot.
     double weightCutoff = 8.0;
-    /// In tolerance mode, remove knots in batches with one global banded least-squares refit per
-    /// batch (about 1.5x fewer instructions, but 5-10% more control points left on the reference
-    /// curves); false (the default) runs the group-at-a-time loop with local refits.
+    /// Curves in tolerance mode: after the knots that go exactly, search the control point count
+    /// with free-knot fits (FreeKnotFit.h: the knots move, the samples slip along the curve,
+    /// Lawson reweighting towards the best max-norm fit), each measured by CurveDeviationMeter;
+    /// 25-35% fewer control points than the removal loop on the reference curves. Where the
+    /// curve looks refined from a few knots (its most significant knots fit nearly as well), or
+    /// no count passes, the removal loop runs too and the fewer points win. false runs the
+    /// removal loop alone. Surfaces and count mode always take the removal loop.
+    bool freeKnots = true;
+    /// Fit / correct / move rounds of a free-knot fit from a cold start (the search's later fits,
+    /// started from the last one's knots, take half).
+    int freeKnotIterations = 16;
+    /// The removal loop in tolerance mode (freeKnots false, or where it runs too): remove knots
+    /// in batches with one global banded least-squares refit per batch (about 1.5x fewer
+    /// instructions, but 5-10% more control points left on the reference curves); false (the
+    /// default) runs the group-at-a-time loop with local refits.
     bool batch = false;
     /// Batch mode only: rounds of removal; between rounds, lawsonSteps reweighted refits even the
     /// error out (towards the best max-norm fit) and the knots that failed are tried again.
@@ -47,11 +59,18 @@ struct CurveReduction {
     std::size_t removed = 0;      ///< knots removed
     std::size_t fits = 0;         ///< least-squares fits tried (accepted or not)
     std::size_t steppedBack = 0;  ///< accepted states the final measurement undid (usually 0)
-    CurveDeviation deviation;     ///< measureDeviation(original, curve) when options.report
+    /// True when the curve is a free-knot fit (its knots moved; the report samples it at four
+    /// times samplesPerSpan per span), false when it keeps a subset of the original's knots.
+    bool freeKnotFit = false;
+    CurveDeviation deviation;  ///< measureDeviation(original, curve) when options.report
 };
 
-/// Rank / remove / approximate data reduction of a polynomial curve (Lyche and Morken, as in
-/// note 000 with its errata fixed): rank the interior knots by removal weight, take the
+/// Data reduction of a polynomial curve. In tolerance mode with options.freeKnots (the default)
+/// and clamped ends: the knots that go exactly, then a search over the control point count with
+/// free-knot fits, each kept only if measureDeviation's parameter-map form finds the Hausdorff
+/// distance within the tolerance (see ReductionOptions::freeKnots for when the removal loop runs
+/// too). Otherwise the removal loop, rank / remove / approximate (Lyche and Morken, as in note
+/// 000 with its errata fixed): rank the interior knots by removal weight, take the
 /// partitionSize least significant, group the ones that share a local window, remove each group
 /// with one local least-squares fit, and keep a removal only if the distance from the original
 /// stays within the tolerance, measured on dense samples of both curves by point inversion in

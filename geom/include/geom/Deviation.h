@@ -28,6 +28,51 @@ struct CurveDeviation {
 /// hold the maximum (at least half the largest) also the global closest point.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
+/// A monotone correspondence between the parameters of two curves: the point of the first at
+/// from[k] lies near the point of the second at to[k]; both ascending (foot points of a fit).
+struct ParameterMap {
+    std::vector<double> from;
+    std::vector<double> to;
+};
+
+/// measureDeviation for two polynomial curves on one domain whose parameters may slip against
+/// each other (a fit with free knots and corrected parameters), helped by a map from the
+/// original's parameters to the reduced curve's (interpolated linearly): a sample's bound is the
+/// distance to the mapped point of the other curve and Newton starts there, so far fewer samples
+/// need inverting. The maxima are still those of inverting every sample (the map only changes
+/// the bounds and seeds); the mean is an upper bound, as above. The reduced curve is sampled at
+/// reducedSamplesPerSpan per span (0: samplesPerSpan), so that a fit with few spans can be
+/// sampled densely at little cost. Throws GeometryError for rational curves, different domains
+/// or a map that is empty or not ascending.
+CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
+                                const ParameterMap& map, int reducedSamplesPerSpan = 0);
+
+/// measureDeviation with a parameter map against one original, many times: the original's
+/// samples and span boxes are made once (a search measures every candidate).
+class CurveDeviationMeter {
+public:
+    /// Throws GeometryError for a rational curve or samplesPerSpan < 1.
+    CurveDeviationMeter(const Curve& original, int samplesPerSpan);
+    /// The same as measureDeviation(original, reduced, samplesPerSpan, map, reducedSamplesPerSpan).
+    CurveDeviation measure(const Curve& reduced, const ParameterMap& map,
+                           int reducedSamplesPerSpan = 0) const;
+
+    /// Per non-empty span of a curve: the box of its control points (the span lies in their
+    /// convex hull) and the range [first, last) of the ascending samples in it, ends included.
+    struct SpanBoxes {
+        std::vector<glm::dvec3> low, high;
+        std::vector<std::size_t> first, last;
+    };
+    static SpanBoxes spanBoxes(const Curve& curve, const std::vector<double>& params);
+
+private:
+    Curve original_;
+    int samplesPerSpan_;
+    std::vector<double> params_;
+    std::vector<glm::dvec3> points_;
+    SpanBoxes boxes_;
+};
+
 /// The measured distance between two surfaces, with a per-vertex error field on a grid of the
 /// reduced surface for a colour map.
 struct SurfaceDeviation {

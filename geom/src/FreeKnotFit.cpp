@@ -1,0 +1,299 @@
+#include "geom/FreeKnotFit.h"
+
+#include "RemovalDetail.h"
+#include "geom/Basis.h"
+#include "geom/Deviation.h"
+#include "geom/GeometryError.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace geom {
+
+FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& options)
+    : original_(original), options_(options) {
+    validate(original);
+    if (original.rational()) throw GeometryError("FreeKnotFitter: rational curves are not supported");
+    const std::size_t p = static_cast<std::size_t>(original.degree), n0 = original.points.size();
+    for (std::size_t i = 0; i < p; ++i)
+        if (original.knots[i] != original.knots[p] || original.knots[n0 + 1 + i] != original.knots[n0])
+            throw GeometryError("FreeKnotFitter: the curve must have clamped ends");
+    if (options.samplesPerSpan < 1 || options.samplesPerFitSpan < 1)
+        throw GeometryError("FreeKnotFitter: samplesPerSpan and samplesPerFitSpan must be at least 1");
+    if (options.iterations < 1 || options.warmIterations < 1)
+        throw GeometryError("FreeKnotFitter: iterations and warmIterations must be at least 1");
+    if (options.ends.fixedDerivatives < 0)
+        throw GeometryError("FreeKnotFitter: fixedDerivatives must be non-negative");
+    samples_.resize(static_cast<std::size_t>(options.samplesPerSpan) + 1);
+
+    // The best knots for an l-infinity spline fit put h_i proportional to |f^(p+1)|^(-1/(p+1)).
+    // The original's p-th derivative is constant on each span (p! a_p / h^p for the span's power
+    // form a in s = (u - t_j) / h); its jumps over the neighbouring spans' mean length estimate
+    // f^(p+1) at the knots.
+    const std::vector<double>& t = original.knots;
+    std::vector<glm::dvec3> top(n0, glm::dvec3(0.0));
+    glm::dvec3 power[detail::smallDegree + 1];
+    std::vector<double> basis((p + 1) * (p + 1));
+    double factorial = 1.0;
+    for (std::size_t i = 2; i <= p; ++i) factorial *= double(i);
+    for (std::size_t j = p; j < n0; ++j) {
+        if (!(t[j + 1] > t[j])) continue;
+        if (p <= detail::smallDegree) {
+            detail::spanPowerForm(j, p, t.data(), original.points.data(), power);
+            top[j] = power[p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
+            continue;
+        }
+        basisDerivatives(j, 0.5 * (t[j] + t[j + 1]), original.degree, t, original.degree, basis);
+        for (std::size_t b = 0; b <= p; ++b) top[j] += basis[p * (p + 1) + b] * original.points[j - p + b];
+    }
+    density_.assign(n0, 0.0);
+    std::size_t previous = n0;
+    for (std::size_t j = p; j < n0; ++j) {
+        if (!(t[j + 1] > t[j])) continue;
+        if (previous != n0) {
+            const double mean = 0.5 * (t[j + 1] - t[j] + t[previous + 1] - t[previous]);
+            const double jump = std::pow(glm::length(top[j] - top[previous]) / mean, 1.0 / double(p + 1));
+            density_[j] = std::max(density_[j], jump);
+            density_[previous] = std::max(density_[previous], jump);
+        }
+        previous = j;
+    }
+    for (std::size_t j = p; j < n0; ++j) densityIntegral_ += density_[j] * (t[j + 1] - t[j]);
+    // A floor, so that straight parts still get knots and no span is empty of samples.
+    const double mean = densityIntegral_ / (t[n0] - t[p]);
+    for (std::size_t j = p; j < n0; ++j) density_[j] = mean > 0.0 ? std::max(density_[j], 0.2 * mean) : 1.0;
+}
+
+const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) const {
+    const std::size_t n0 = original_.points.size();
+    const int perSpan = std::clamp(static_cast<int>((options_.samplesPerFitSpan * count + n0 - 1) / n0), 1,
+                                   options_.samplesPerSpan);
+    Samples& out = samples_[static_cast<std::size_t>(perSpan)];
+    if (!out.params.empty()) return out;
+    out.params = spanSamples(original_.knots, original_.degree, n0, perSpan);
+    out.points.resize(out.params.size());
+    detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
+                              out.points.data());
+    // Each sample stands for the parameter interval half way to its neighbours.
+    out.spacing.resize(out.params.size());
+    for (std::size_t k = 0; k < out.params.size(); ++k) {
+        const double left = k > 0 ? out.params[k - 1] : out.params[k];
+        const double right = k + 1 < out.params.size() ? out.params[k + 1] : out.params[k];
+        out.spacing[k] = 0.5 * (right - left);
+    }
+    return out;
+}
+
+double FreeKnotFitter::predictedError(std::size_t count) const {
+    const std::size_t p = static_cast<std::size_t>(original_.degree);
+    if (count <= p) return std::numeric_limits<double>::infinity();
+    return std::pow(densityIntegral_ / double(count - p), double(p + 1));
+}
+
+std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
+    const std::size_t p = static_cast<std::size_t>(original_.degree), n0 = original_.points.size();
+    const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives);
+    const std::vector<double>& t = original_.knots;
+    std::vector<double> knots(count + p + 1);
+    for (std::size_t i = 0; i <= p; ++i) knots[i] = t[p], knots[count + i] = t[n0];
+    for (std::size_t i = 0; i < k; ++i) knots[p + 1 + i] = t[p + 1 + i], knots[count - k + i] = t[n0 - k + i];
+    const double lo = t[p + k], hi = t[n0 - k];
+    const std::size_t free = count - p - 1 - 2 * k;
+    // The density's integral over [lo, hi], inverted at equal steps.
+    auto clipped = [&](std::size_t j) { return std::max(0.0, std::min(hi, t[j + 1]) - std::max(lo, t[j])); };
+    double total = 0.0;
+    for (std::size_t j = p; j < n0; ++j) total += density_[j] * clipped(j);
+    double below = 0.0;
+    std::size_t j = p;
+    for (std::size_t i = 1; i <= free; ++i) {
+        const double goal = total * double(i) / double(free + 1);
+        while (j + 1 < n0 && below + density_[j] * clipped(j) < goal) below += density_[j] * clipped(j), ++j;
+        const double start = std::max(lo, t[j]);
+        const double along = density_[j] > 0.0 ? (goal - below) / density_[j] : 0.0;
+        knots[p + k + i] = std::clamp(start + along, lo, hi);
+    }
+    return knots;
+}
+
+FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
+                                int rounds) const {
+    const int degree = original_.degree;
+    const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
+    const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
+    FreeKnotFit out;
+    if (count < p + 1 || count < 2 * fixed || count - p - 1 < 2 * k || count > n0) return out;
+    if (k > 0 && !(original_.knots[p + k] < original_.knots[n0 - k])) return out;
+    std::vector<double> knots = initialKnots(count);
+    const bool warm = startKnots.size() > 2 * (p + 1 + k);
+    if (warm) {
+        // The given free knots are quantiles of a knot density: knot j of m at fraction
+        // j / (m + 1) of [lo, hi]; the new ones are read off at i / (free + 1), linearly.
+        const std::size_t given = startKnots.size() - 2 * (p + 1 + k), want = count - p - 1 - 2 * k;
+        std::vector<double> q{original_.knots[p + k]};
+        for (std::size_t j = 0; j < given; ++j)
+            q.push_back(std::clamp(startKnots[p + 1 + k + j], q.back(), original_.knots[n0 - k]));
+        q.push_back(original_.knots[n0 - k]);
+        for (std::size_t i = 1; i <= want; ++i) {
+            const double at = double(i) * double(given + 1) / double(want + 1);
+            const std::size_t j = std::min(static_cast<std::size_t>(at), given);
+            knots[p + k + i] = q[j] + (at - double(j)) * (q[j + 1] - q[j]);
+        }
+    }
+    const double a = original_.knots[p], b = original_.knots[n0];
+    const double lo = original_.knots[p + k], hi = original_.knots[n0 - k];
+    const std::size_t free = count - p - 1 - 2 * k, gaps = free + 1;
+    const double minGap = 0.05 * (hi - lo) / double(gaps);
+
+    const Samples& data = samplesFor(count);
+    const std::vector<glm::dvec3>& targets = data.points;
+    const std::size_t m = data.params.size();
+    std::vector<double> s = data.params, lawson(m, 1.0), error(m, 0.0), basis(p + 1);
+    std::vector<glm::dvec3> points(count);
+    for (std::size_t i = 0; i < fixed; ++i) {
+        points[i] = original_.points[i];
+        points[count - 1 - i] = original_.points[n0 - 1 - i];
+    }
+    const std::size_t nf = count - 2 * fixed, wb = p + 1;
+    std::vector<double> band, inverse, gapError(gaps), h(gaps);
+    std::vector<glm::dvec3> rhs;
+    const int iterations = rounds > 0 ? rounds : warm ? options_.warmIterations : options_.iterations;
+    for (int iteration = 0; iteration < iterations; ++iteration) {
+        // Least squares on the samples at their current parameters, end points held.
+        if (nf > 0) {
+            band.assign(nf * wb, 0.0);
+            rhs.assign(nf, glm::dvec3(0.0));
+            // Cox-de Boor's knot differences do not depend on the parameter: their reciprocals
+            // are made once per span, and the (ascending) parameters walk the spans forward.
+            const std::size_t triangle = p * (p + 1) / 2;
+            inverse.assign(count * triangle, 0.0);
+            for (std::size_t span = p; span < count; ++span)
+                for (std::size_t j = 1, at = span * triangle; j <= p; ++j)
+                    for (std::size_t r = 0; r < j; ++r, ++at) {
+                        const double d = knots[span + r + 1] - knots[span + 1 + r - j];
+                        inverse[at] = d > 0.0 ? 1.0 / d : 0.0;
+                    }
+            std::size_t span = p;
+            for (std::size_t i = 0; i < m; ++i) {
+                const double w = data.spacing[i] * lawson[i];
+                while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
+                while (span > p && s[i] < knots[span]) --span;
+                if (w == 0.0) continue;
+                {
+                    const double u = s[i];
+                    const double* inv = inverse.data() + span * triangle;
+                    basis[0] = 1.0;
+                    for (std::size_t j = 1; j <= p; ++j) {
+                        double saved = 0.0;
+                        for (std::size_t r = 0; r < j; ++r, ++inv) {
+                            const double temp = basis[r] * *inv;
+                            basis[r] = saved + (knots[span + r + 1] - u) * temp;
+                            saved = (u - knots[span + 1 + r - j]) * temp;
+                        }
+                        basis[j] = saved;
+                    }
+                }
+                const std::size_t c0 = span - p;
+                if (c0 >= fixed && c0 + p + fixed < count) {
+                    // Every column free (most samples): no end terms.
+                    double* row = band.data() + (c0 - fixed) * wb;
+                    glm::dvec3* right = rhs.data() + (c0 - fixed);
+                    for (std::size_t x = 0; x <= p; ++x, row += wb) {
+                        const double wx = w * basis[x];
+                        right[x] += wx * targets[i];
+                        for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
+                    }
+                    continue;
+                }
+                glm::dvec3 target = targets[i];
+                for (std::size_t c = 0; c <= p; ++c)
+                    if (c0 + c < fixed || c0 + c + fixed >= count) target -= basis[c] * points[c0 + c];
+                for (std::size_t x = 0; x <= p; ++x) {
+                    const std::size_t cx = c0 + x;
+                    if (cx < fixed || cx + fixed >= count) continue;
+                    const std::size_t fx = cx - fixed;
+                    rhs[fx] += (w * basis[x]) * target;
+                    for (std::size_t y = x; y <= p && c0 + y + fixed < count; ++y)
+                        band[fx * wb + (y - x)] += w * basis[x] * basis[y];
+                }
+            }
+            if (!detail::solveBanded(band, nf, p, rhs)) break;
+            for (std::size_t i = 0; i < nf; ++i) points[fixed + i] = rhs[i];
+        }
+
+        // Parameter correction: Newton towards each sample's foot point on the fit.
+        detail::SplineSampler fitted(degree, knots, points.data(), count, true);
+        double worst = 0.0;
+        for (std::size_t i = 0; i < m; ++i) {
+            glm::dvec3 c, d1, d2;
+            // One Newton step per round is enough: the rounds repeat it.
+            if (i > 0 && i + 1 < m) {
+                fitted.derivatives(s[i], c, d1, d2);
+                const glm::dvec3 r = c - targets[i];
+                double hess = glm::dot(d1, d1) + glm::dot(r, d2);
+                if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
+                // Kept in order, so that the parameters stay a monotone map of the samples'.
+                if (hess > 0.0)
+                    s[i] = std::clamp(s[i] - glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
+                                      std::min(b, s[i + 1]));
+            }
+            error[i] = glm::length(fitted.value(s[i]) - targets[i]);
+            worst = std::max(worst, error[i]);
+        }
+        if (worst < out.sampleError) {
+            out.sampleError = worst;
+            out.curve.degree = degree;
+            out.curve.knots = knots;
+            out.curve.points = points;
+            out.map.to = s;
+        }
+        if (!(worst > 0.0) || iteration + 1 == iterations) break;
+
+        // The first half moves the knots on plain least squares (Lawson weights made for other
+        // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
+        // weights grow where the error is large, towards the equioscillating best max-norm fit.
+        if (moveKnots && 2 * iteration < iterations) {
+            std::fill(lawson.begin(), lawson.end(), 1.0);
+        } else {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < m; ++i) sum += lawson[i] * error[i];
+            for (std::size_t i = 0; i < m; ++i)
+                lawson[i] = std::max(lawson[i] * error[i] * double(m) / sum, 1e-6);
+            continue;
+        }
+
+        // Equidistribution: each gap between free knots scaled by its error^(-1/(p+1)).
+        std::fill(gapError.begin(), gapError.end(), 0.0);
+        for (std::size_t i = 0; i < m; ++i) {
+            if (s[i] < lo || s[i] > hi) continue;
+            const std::size_t g = std::min<std::size_t>(
+                gaps - 1,
+                static_cast<std::size_t>(
+                    std::upper_bound(knots.begin() + static_cast<std::ptrdiff_t>(p + k + 1),
+                                     knots.begin() + static_cast<std::ptrdiff_t>(p + k + 1 + free), s[i]) -
+                    (knots.begin() + static_cast<std::ptrdiff_t>(p + k + 1))));
+            gapError[g] = std::max(gapError[g], error[i]);
+        }
+        if (free == 0) continue;
+        double total = 0.0;
+        for (std::size_t g = 0; g < gaps; ++g) {
+            const double width = knots[p + k + g + 1] - knots[p + k + g];
+            const double e = std::max(gapError[g], 1e-3 * worst);
+            // Half the full step, at most 1.5 times wider: the full step overshoots and oscillates.
+            h[g] = width * std::clamp(std::pow(worst / e, 0.5 / double(p + 1)), 1.0, 1.5);
+            total += h[g];
+        }
+        double at = lo;
+        for (std::size_t g = 0; g + 1 < gaps; ++g) {
+            at += std::max(h[g] * (hi - lo) / total, minGap);
+            knots[p + k + 1 + g] = std::min(at, hi - minGap * double(gaps - 1 - g));
+        }
+    }
+    if (out.curve.points.empty()) out.sampleError = std::numeric_limits<double>::infinity();
+    out.map.from = data.params;
+    return out;
+}
+
+}  // namespace geom

@@ -1,0 +1,207 @@
+#include "GeomTestUtil.h"
+#include "geom/DataReduction.h"
+#include "geom/Deviation.h"
+#include "geom/Evaluate.h"
+#include "geom/FreeKnotFit.h"
+#include "geom/GeometryError.h"
+#include "geom/KnotInsertion.h"
+#include "geom/ReferenceShapes.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+using namespace geom;
+
+namespace {
+
+// A random curve with few control points, refined with `extra` knots and disturbed by `noise`.
+Curve noisyRefinedCurve(std::mt19937& rng, int p, std::size_t extra, double noise) {
+    const Curve base = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 3), false, true);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
+    std::vector<double> inserted;
+    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(0.02 + 0.96 * unit(rng));
+    Curve c = refineKnots(base, inserted);
+    for (std::size_t i = 1; i + 1 < c.points.size(); ++i)
+        c.points[i] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+    return c;
+}
+
+// The free interior knots (all but `kept` at each end) strictly increase.
+void requireStrictInterior(const Curve& c, std::size_t kept = 0) {
+    const std::size_t p = static_cast<std::size_t>(c.degree), n = c.points.size();
+    for (std::size_t i = p + kept; i < n - kept; ++i) REQUIRE(c.knots[i] < c.knots[i + 1]);
+}
+
+}  // namespace
+
+TEST_CASE("free-knot reduction leaves fewer control points than the removal loop on the reference curves",
+          "[geom][knots][reduction][freeknots]") {
+    struct Case {
+        Curve curve;
+        double tolerance;
+        std::size_t most;  // the target: 0.8 x SISL s1940's count at this tolerance
+    };
+    const std::vector<Case> cases{{nacaAirfoilCurve(), 1e-3, 33}, {iBeamCurve(), 1e-3, 41}};
+    for (const Case& c : cases) {
+        ReductionOptions o;
+        o.tolerance = c.tolerance;
+        const CurveReduction fitted = reduceCurve(c.curve, o);
+        o.freeKnots = false;
+        const CurveReduction removed = reduceCurve(c.curve, o);
+        INFO("control points: free knots " << fitted.curve.points.size() << ", removal loop "
+                                           << removed.curve.points.size());
+        REQUIRE(fitted.freeKnotFit);
+        REQUIRE_FALSE(removed.freeKnotFit);
+        REQUIRE(fitted.curve.points.size() <= c.most);
+        REQUIRE(10 * fitted.curve.points.size() <= 8 * removed.curve.points.size());
+        REQUIRE(fitted.removed == c.curve.points.size() - fitted.curve.points.size());
+        REQUIRE(fitted.deviation.maxError <= c.tolerance);
+        // An independent measurement (no parameter map, denser) agrees.
+        REQUIRE(measureDeviation(c.curve, fitted.curve, 32).maxError <= c.tolerance * 1.001);
+        REQUIRE(fitted.curve.points.front() == c.curve.points.front());
+        REQUIRE(fitted.curve.points.back() == c.curve.points.back());
+        REQUIRE(fitted.curve.domainStart() == c.curve.domainStart());
+        REQUIRE(fitted.curve.domainEnd() == c.curve.domainEnd());
+        requireStrictInterior(fitted.curve);
+    }
+}
+
+TEST_CASE("a free-knot fit keeps the end points and, when asked, the end derivatives",
+          "[geom][knots][freeknots]") {
+    std::mt19937 rng(71);
+    for (int p = 2; p <= 5; ++p) {
+        const Curve c = noisyRefinedCurve(rng, p, 40, 1e-4);
+        for (int k = 0; k <= 2; ++k) {
+            FreeKnotOptions fo;
+            fo.ends.fixedDerivatives = k;
+            fo.samplesPerSpan = 16;
+            fo.samplesPerFitSpan = 1000;
+            const FreeKnotFitter fitter(c, fo);
+            const std::size_t count = static_cast<std::size_t>(p + 2 * k + 6);
+            const FreeKnotFit f = fitter.fit(count);
+            INFO("degree " << p << " fixed derivatives " << k);
+            REQUIRE(std::isfinite(f.sampleError));
+            REQUIRE(f.curve.points.size() == count);
+            REQUIRE(f.curve.knots.size() == count + static_cast<std::size_t>(p) + 1);
+            const Curve g(f.curve.degree, f.curve.knots, f.curve.points);
+            requireStrictInterior(g, static_cast<std::size_t>(k));
+            for (int i = 1; i <= k; ++i) {  // the kept interior knots are the original's
+                REQUIRE(g.knots[static_cast<std::size_t>(p + i)] == c.knots[static_cast<std::size_t>(p + i)]);
+                REQUIRE(g.knots[count - static_cast<std::size_t>(i)] ==
+                        c.knots[c.points.size() - static_cast<std::size_t>(i)]);
+            }
+            for (double u : {c.domainStart(), c.domainEnd()}) {
+                const auto a = derivatives(c, u, k), b = derivatives(g, u, k);
+                for (int d = 0; d <= k; ++d)
+                    REQUIRE(glm::length(a[static_cast<std::size_t>(d)] - b[static_cast<std::size_t>(d)]) <=
+                            1e-9 * (1.0 + glm::length(a[static_cast<std::size_t>(d)])));
+            }
+            // The fit and the measurement take the same samples here (16 per original span), so
+            // the sample error, a distance to a point of the fit, bounds the closest distances.
+            const CurveDeviation d = measureDeviation(c, g, 16, f.map);
+            REQUIRE(d.maxOriginalToReduced <= f.sampleError * (1.0 + 1e-9));
+            REQUIRE(d.maxOriginalToReduced >= 0.3 * f.sampleError);
+        }
+    }
+    // Too few control points for the end conditions: no fit.
+    FreeKnotOptions fo;
+    fo.ends.fixedDerivatives = 2;
+    const Curve c = noisyRefinedCurve(rng, 3, 20, 1e-4);
+    REQUIRE(std::isinf(FreeKnotFitter(c, fo).fit(5).sampleError));
+}
+
+TEST_CASE("a free-knot fit started from another fit's knots resamples their distribution",
+          "[geom][knots][freeknots]") {
+    const Curve c = nacaAirfoilCurve();
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    const FreeKnotFit first = fitter.fit(30);
+    for (std::size_t count : {24u, 30u, 36u}) {
+        const FreeKnotFit next = fitter.fit(count, first.curve.knots);
+        INFO("count " << count);
+        REQUIRE(next.curve.points.size() == count);
+        const Curve g(next.curve.degree, next.curve.knots, next.curve.points);
+        requireStrictInterior(g);
+        REQUIRE(next.sampleError < 1e-2);
+    }
+    // Warm from converged knots, the same count does at least about as well as a cold start.
+    REQUIRE(fitter.fit(30, first.curve.knots).sampleError <= 1.5 * first.sampleError);
+    // More control points fit better (the error model the search relies on).
+    REQUIRE(fitter.fit(40).sampleError < fitter.fit(20).sampleError);
+    REQUIRE(fitter.predictedError(40) < fitter.predictedError(20));
+}
+
+TEST_CASE("the deviation with a parameter map has the plain measurement's maxima",
+          "[geom][knots][deviation][freeknots]") {
+    std::mt19937 rng(72);
+    std::vector<Curve> originals{nacaAirfoilCurve(), noisyRefinedCurve(rng, 3, 40, 1e-4),
+                                 noisyRefinedCurve(rng, 4, 40, 1e-4)};
+    for (const Curve& c : originals) {
+        const FreeKnotFit f = FreeKnotFitter(c, FreeKnotOptions{}).fit(14);
+        const Curve g(f.curve.degree, f.curve.knots, f.curve.points);
+        const CurveDeviation plain = measureDeviation(c, g, 16);
+        const CurveDeviation mapped = measureDeviation(c, g, 16, f.map);
+        const CurveDeviationMeter meter(c, 16);
+        const CurveDeviation again = meter.measure(g, f.map);
+        REQUIRE(mapped.maxOriginalToReduced == Approx(plain.maxOriginalToReduced).epsilon(1e-9));
+        REQUIRE(mapped.maxReducedToOriginal == Approx(plain.maxReducedToOriginal).epsilon(1e-9));
+        REQUIRE(again.maxError == mapped.maxError);
+        REQUIRE(mapped.samples == plain.samples);
+        REQUIRE(mapped.meanError <= mapped.maxError);
+        // A denser sampling of the fit alone finds at least as much.
+        REQUIRE(meter.measure(g, f.map, 64).maxReducedToOriginal >= mapped.maxReducedToOriginal);
+    }
+    const Curve c = nacaAirfoilCurve();
+    ParameterMap bad;
+    REQUIRE_THROWS_AS(measureDeviation(c, c, 4, bad), GeometryError);
+    bad.from = {0.0, 0.5, 0.4};
+    bad.to = {0.0, 0.5, 0.6};
+    REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, bad), Catch::Contains("ascending"));
+}
+
+TEST_CASE("free-knot reduction: limits and fallbacks", "[geom][knots][reduction][freeknots]") {
+    std::mt19937 rng(73);
+    // An unclamped curve goes to the removal loop.
+    const Curve open = geomtest::randomCurve(rng, 3, 30, false, false);
+    ReductionOptions o;
+    o.tolerance = 0.5;
+    const CurveReduction r = reduceCurve(open, o);
+    REQUIRE(r.deviation.maxError <= o.tolerance);
+    // A count limit with a loose tolerance stops the search at that count.
+    const Curve c = noisyRefinedCurve(rng, 3, 40, 1e-4);
+    o.tolerance = 1.0;
+    o.maxRemovals = 7;
+    const CurveReduction limited = reduceCurve(c, o);
+    REQUIRE(limited.removed == 7);
+    REQUIRE(limited.curve.points.size() == c.points.size() - 7);
+    // Bad options and input.
+    ReductionOptions bad;
+    bad.tolerance = 1e-3;
+    bad.freeKnotIterations = 0;
+    REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("freeKnotIterations"));
+    FreeKnotOptions fo;
+    fo.iterations = 0;
+    REQUIRE_THROWS_AS(FreeKnotFitter(c, fo), GeometryError);
+    REQUIRE_THROWS_WITH(FreeKnotFitter(open, FreeKnotOptions{}), Catch::Contains("clamped"));
+    REQUIRE_THROWS_WITH(FreeKnotFitter(geomtest::randomCurve(rng, 3, 8, true, true), FreeKnotOptions{}),
+                        Catch::Contains("rational"));
+}
+
+TEST_CASE("on a refined curve the default does at least as well as the removal loop",
+          "[geom][knots][reduction][freeknots]") {
+    // A few knots where the p-th derivative jumps, hidden among many inserted ones: the removal
+    // loop finds them, equidistributed knots do not; the default then runs the loop too.
+    std::mt19937 rng(74);
+    for (int p = 2; p <= 5; ++p)
+        for (double noise : {1e-5, 2e-4}) {
+            const Curve c = noisyRefinedCurve(rng, p, 60, noise);
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            const CurveReduction best = reduceCurve(c, o);
+            o.freeKnots = false;
+            const CurveReduction loop = reduceCurve(c, o);
+            INFO("degree " << p << " noise " << noise);
+            REQUIRE(best.curve.points.size() <= loop.curve.points.size());
+            REQUIRE(best.deviation.maxError <= 1e-3);
+            REQUIRE(measureDeviation(c, best.curve, 64).maxError <= 1e-3 * 1.001);
+        }
+}
