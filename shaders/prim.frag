@@ -49,10 +49,16 @@ void main() {
     int viewIndex = push.viewIndex;
     if (MAY_DISCARD) {
         int flags = DRAW.indices.w;
+        // A pattern length in modelling units (mesh iso-lines) becomes pixels by its rate along
+        // the line on screen; derivatives are taken before anything may discard.
+        vec2 patternRate = vec2(dFdx(vPattern), dFdy(vPattern));
+        float patternPixels = (flags & FLAG_PATTERN_IN_MODEL_UNITS) != 0
+                                  ? vPattern / max(length(patternRate), 1e-9)
+                                  : vPattern;
         vec4 clip = frame.views[viewIndex].clip;
         if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
         if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
-        if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, vPattern)) discard;
+        if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, patternPixels)) discard;
         // Model clipping volume: the intersection of half spaces in world coordinates.
         int firstPlane = int(DRAW.misc.y);
         int planeEnd = firstPlane + int(DRAW.misc.z);

@@ -9,6 +9,7 @@ const int FLAG_HATCH = 16;
 const int FLAG_PATTERN = 32;
 const int FLAG_OFFSET_NPC = 64;
 const int FLAG_TRIANGLES = 128;
+const int FLAG_PATTERN_IN_MODEL_UNITS = 256;
 
 const int SHADE_FLAT = 1;
 const int SHADE_GOURAUD = 2;
