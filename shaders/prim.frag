@@ -101,5 +101,7 @@ void main() {
         colour = s * colour + (1.0 - s) * cue.colour.rgb;
     }
     if (HIGHLIGHTED) colour = mix(colour, frame.highlight.rgb, frame.highlight.w);
-    outColour = vec4(clamp(colour, 0.0, 1.0), 1.0);
+    // Opacity (1 - PHIGS PLUS transparency) rides in the colours' alpha; only transparent
+    // pipelines blend with it.
+    outColour = vec4(clamp(colour, 0.0, 1.0), useBack ? push.backColour.a : push.colour.a);
 }

@@ -320,3 +320,40 @@ TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; 
     }
     requireNoValidationMessages(context);
 }
+
+TEST_CASE("transparency: a surface blends over what lies behind it, whatever the traversal order",
+          "[render][shading]") {
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::OffscreenWorkstation ws(context, 128, 128);
+        DrawList list = emptyScene();
+        list.hiddenSurfaceRemoval = true;
+        auto square = [](double x0, double x1, double z, glm::vec3 colour, float transparency) {
+            DrawFillArea f;
+            f.contours = {{{x0, 0.2, z}, {x1, 0.2, z}, {x1, 0.8, z}, {x0, 0.8, z}}};
+            f.interior.style = InteriorStyle::Solid;
+            f.interior.colour = colour;
+            f.interior.properties.transparency = transparency;
+            return f;
+        };
+        // Traversal order: the see-through blue square (front) first, then the opaque red one
+        // behind it, then an opaque green one in front of the blue on the right.
+        list.items.push_back(item(square(0.1, 0.9, 0.8, {0, 0, 1}, 0.5f)));
+        list.items.push_back(item(square(0.1, 0.5, 0.3, {1, 0, 0}, 0.0f)));
+        list.items.push_back(item(square(0.7, 0.9, 0.95, {0, 1, 0}, 0.0f)));
+        const Image image = ws.draw(list);
+        CHECK(near(at(image, 38, 64), 128, 0, 128));  // blue half over red
+        CHECK(near(at(image, 77, 64), 13, 13, 140));  // blue half over the background (0.1 grey)
+        CHECK(near(at(image, 102, 64), 0, 255, 0));   // opaque green in front hides the blue
+        CHECK(near(at(image, 64, 8), 26, 26, 26));    // background untouched
+        CHECK(image.pixel(38, 64)[3] == 255);         // the picture itself stays opaque
+        compareWithReference(image, "transparency");
+
+        // Without hidden-surface removal the traversal order paints: red then green over the blue.
+        list.hiddenSurfaceRemoval = false;
+        const Image painted = ws.draw(list);
+        CHECK(near(at(painted, 38, 64), 255, 0, 0));
+        CHECK(near(at(painted, 77, 64), 13, 13, 140));
+    }
+    requireNoValidationMessages(context);
+}

@@ -36,6 +36,8 @@ constexpr std::uint64_t kVertexLighting = 1ull << 30;
 constexpr std::uint64_t kHighlighted = 1ull << 31;
 constexpr std::uint64_t kDistinguishBack = 1ull << 32;
 constexpr int kOffsetShift = 33;  // screen offsets: 0 none, 1 pixels (markers), 2 NPC (annotation text)
+// PHIGS PLUS transparency: blended over what is behind, without writing depth.
+constexpr std::uint64_t kTransparent = 1ull << 35;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -292,9 +294,21 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     VkPipelineDepthStencilStateCreateInfo depthState{};
     depthState.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
     depthState.depthTestEnable = depth;
-    depthState.depthWriteEnable = depth;
+    const bool transparent = key & kTransparent;
+    depthState.depthWriteEnable = depth && !transparent;
     depthState.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     VkPipelineColorBlendAttachmentState blendAttachment{};
+    if (transparent) {
+        // Colour: source over destination by the surface's opacity; the picture's alpha stays
+        // opaque (PNG files and swapchains show the colour, not a see-through image).
+        blendAttachment.blendEnable = VK_TRUE;
+        blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
+        blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                      VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{};
@@ -461,8 +475,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     sc = glm::vec4(r.specularColour, float(int(model)));
                 };
                 reflect(s.properties, s.reflectance, push.reflectance, push.specularColour);
-                reflect(s.distinguishBackFaces ? s.backProperties : s.properties, s.reflectance,
-                        push.backReflectance, push.backSpecularColour);
+                const Reflectance& back = s.distinguishBackFaces ? s.backProperties : s.properties;
+                reflect(back, s.reflectance, push.backReflectance, push.backSpecularColour);
+                // The colours' alpha is the opacity the fragment shader writes.
+                push.colour.w = 1.0f - std::clamp(s.properties.transparency, 0.0f, 1.0f);
+                push.backColour.w = 1.0f - std::clamp(back.transparency, 0.0f, 1.0f);
             }
             d.indices.w = flags;
             d.style =
@@ -493,6 +510,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
             if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
             if (flags & gpu::DistinguishBack) c.pipeline |= kDistinguishBack;
+            if (push.colour.w < 1.0f || push.backColour.w < 1.0f) c.pipeline |= kTransparent;
             const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
             c.pipeline |= std::uint64_t(offsets) << kOffsetShift;
             c.vertices = vertices;
@@ -589,6 +607,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     if (!draws.empty()) std::memcpy(drawBytes_.data(), draws.data(), drawBytes_.size());
     uploadFrame(list, extent);
     uploadDraws();
+    // With hidden-surface removal, transparent draws come after every opaque one (in traversal
+    // order among themselves), so what lies behind them is there to show through.
+    if (depthTest_)
+        std::stable_partition(commands_.begin(), commands_.end(),
+                              [](const Command& c) { return !(c.pipeline & kTransparent); });
     frame_.drawCalls = commands_.size();
     total_.add(frame_);
 }
