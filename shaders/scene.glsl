@@ -1,14 +1,9 @@
 // Shared by prim.vert and prim.frag: the frame and draw data the renderer uploads, in the layout
 // of phigs/src/vk/GpuLayout.h, and the PHIGS PLUS reflectance equations.
 
-const int FLAG_VERTEX_COLOURS = 1;
-const int FLAG_LIT = 2;
-const int FLAG_DISTINGUISH_BACK = 4;
-const int FLAG_HIGHLIGHT = 8;
+// The draw record's flags the shaders test (the others of GpuLayout.h only decide the pipeline).
 const int FLAG_HATCH = 16;
 const int FLAG_PATTERN = 32;
-const int FLAG_OFFSET_NPC = 64;
-const int FLAG_TRIANGLES = 128;
 const int FLAG_PATTERN_IN_MODEL_UNITS = 256;
 
 const int SHADE_FLAT = 1;

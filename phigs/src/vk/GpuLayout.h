@@ -13,6 +13,8 @@ inline constexpr int kMaxLightSets = 16;
 inline constexpr int kMaxCues = 16;
 inline constexpr int kMaxClipPlanes = 64;  ///< model clipping half spaces of all items together
 
+/// The draw record's flags: the shaders test Hatch, Pattern and PatternInModelUnits; the others
+/// decide the pipeline's specialisation (shaders/scene.glsl) and are kept for inspection.
 enum Flag : int {
     VertexColours = 1,
     Lit = 2,
