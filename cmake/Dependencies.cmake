@@ -34,8 +34,14 @@ if(PHIGS_BUILD_TESTS)
 endif()
 
 # Render tests need the lavapipe driver and the Khronos validation layer at run time.
-set(PHIGS_LAVAPIPE_ICD "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json" CACHE FILEPATH
-    "Vulkan ICD manifest of Mesa lavapipe")
+# Debian names the manifest after the architecture (lvp_icd.x86_64.json, lvp_icd.aarch64.json, ...).
+file(GLOB lavapipe_manifests /usr/share/vulkan/icd.d/lvp_icd.*.json)
+list(SORT lavapipe_manifests)
+set(lavapipe_default "/usr/share/vulkan/icd.d/lvp_icd.${CMAKE_SYSTEM_PROCESSOR}.json")
+if(NOT EXISTS "${lavapipe_default}" AND lavapipe_manifests)
+  list(GET lavapipe_manifests 0 lavapipe_default)
+endif()
+set(PHIGS_LAVAPIPE_ICD "${lavapipe_default}" CACHE FILEPATH "Vulkan ICD manifest of Mesa lavapipe")
 if(NOT EXISTS "${PHIGS_LAVAPIPE_ICD}")
   message(FATAL_ERROR "Mesa lavapipe not found at ${PHIGS_LAVAPIPE_ICD}: install the Debian "
                       "package 'mesa-vulkan-drivers'")
