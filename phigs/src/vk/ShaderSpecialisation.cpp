@@ -87,8 +87,7 @@ SpecialisedStages specialiseStages(std::span<const std::uint32_t> vertex,
         out.fragment = run(optimizer, fragment, "fragment");
     }
     {
-        // SPIRV-Tools' own live-input analysis missed inputs read only under a select or by a
-        // derivative, so the fragment shader's remaining interface decides.
+        // The vertex outputs that live are the inputs the specialised fragment shader still lists.
         for (std::uint32_t location : inputLocations(out.fragment)) liveLocations.insert(location);
         // The rasteriser, not the fragment shader, reads these.
         liveBuiltins.insert({kBuiltInPosition, kBuiltInPointSize});
