@@ -130,8 +130,11 @@ constexpr std::size_t smallDegree = 7;
 // Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
 // are their binomial differences. Horner on these is several times cheaper than Cox-de Boor
 // per point when a span holds several samples.
-inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, const glm::dvec3* points,
+// P > 0 fixes the degree at compile time (p must equal it), which lets the loops unroll.
+template <std::size_t P = 0>
+inline void spanPowerForm(std::size_t span, std::size_t degree, const double* knots, const glm::dvec3* points,
                           glm::dvec3* power) {
+    const std::size_t p = P > 0 ? P : degree;
     static constexpr double binomial[smallDegree + 1][smallDegree + 1] = {{1},
                                                                           {1, 1},
                                                                           {1, 2, 1},
@@ -182,9 +185,20 @@ public:
           count_(count) {
         if (p_ > smallDegree) basis_.resize(3 * (p_ + 1));
         if (everySpan && p_ <= smallDegree) {
-            made_.assign(count_ + 1, false);
+            made_.assign(count_ + 1, 0);
             forms_.resize((count_ + 1) * (p_ + 1));
         }
+    }
+
+    // form_ may point into the object itself.
+    SplineSampler(const SplineSampler&) = delete;
+    SplineSampler& operator=(const SplineSampler&) = delete;
+
+    // Forgets every power form made: the knots or coefficients (the same vector and array, the
+    // same count) have changed in place.
+    void restart() {
+        formed_ = false;
+        std::fill(made_.begin(), made_.end(), 0);
     }
 
     double start() const { return knots_[p_]; }
@@ -199,8 +213,8 @@ public:
             return c;
         }
         const double s = locate(u);
-        glm::dvec3 c = power_[p_];
-        for (std::size_t k = p_; k-- > 0;) c = c * s + power_[k];
+        glm::dvec3 c = form_[p_];
+        for (std::size_t k = p_; k-- > 0;) c = c * s + form_[k];
         return c;
     }
 
@@ -219,12 +233,12 @@ public:
             return;
         }
         const double s = locate(u);
-        c = power_[p_];
+        c = form_[p_];
         d1 = d2 = glm::dvec3(0.0);
         for (std::size_t k = p_; k-- > 0;) {
             d2 = d2 * s + d1;
             d1 = d1 * s + c;
-            c = c * s + power_[k];
+            c = c * s + form_[k];
         }
         const double h = knots_[span_ + 1] - knots_[span_];
         d1 /= h;
@@ -240,11 +254,11 @@ private:
             span_ = findSpan(degree_, knots_, count_, u);
             if (made_.empty()) {
                 spanPowerForm(span_, p_, knots_.data(), points_, power_);
+                form_ = power_;
             } else {
                 glm::dvec3* form = forms_.data() + span_ * (p_ + 1);
-                if (!made_[span_])
-                    spanPowerForm(span_, p_, knots_.data(), points_, form), made_[span_] = true;
-                std::copy(form, form + p_ + 1, power_);
+                if (!made_[span_]) spanPowerForm(span_, p_, knots_.data(), points_, form), made_[span_] = 1;
+                form_ = form;
             }
             formed_ = true;
         }
@@ -259,8 +273,9 @@ private:
     std::size_t span_ = 0;
     bool formed_ = false;
     glm::dvec3 power_[smallDegree + 1];
+    const glm::dvec3* form_ = power_;
     std::vector<double> basis_;
-    std::vector<bool> made_;
+    std::vector<char> made_;
     std::vector<glm::dvec3> forms_;
 };
 
