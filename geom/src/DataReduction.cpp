@@ -762,10 +762,12 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // meter (the final check) finds the Hausdorff distance within it.
     const double target = std::log(0.97 * o.tolerance);
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
-        std::size_t pass = out.curve.points.size(), fail = lowest - 1;
-        std::vector<double> errorAt(n0 + 1, std::numeric_limits<double>::infinity());
+        const std::size_t none = out.curve.points.size();  // no fit below it is needed
+        std::size_t pass = none, fail = lowest - 1;
         double logC = std::log(1e-3 * fitter.predictedError(p + 1));
         std::vector<double> previousKnots;  // the last fit's, whose knot density starts the next
+        std::vector<std::optional<FreeKnotFit>> passed(none + 1);  // by count, on samples
+        std::vector<bool> failed(none + 1, false);
         bool firstUsed = false;
         auto probe = [&](std::size_t n) {
             FreeKnotFit f;
@@ -779,16 +781,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
             if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
                 logC = std::log(f.sampleError) + double(p + 1) * std::log(double(n - p));
-            errorAt[n] = f.sampleError;
             if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
-            Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
-            // The fit's few spans are sampled four times as densely: a fit may turn sharply
-            // between samples where the original does not.
-            const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
-            if (!(d.maxError <= o.tolerance)) return false;
-            out.curve = std::move(candidate);
-            out.deviation = d;
-            out.freeKnotFit = true;
+            passed[n] = std::move(f);
             return true;
         };
         auto next = [&] {
@@ -796,11 +790,32 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
             const double n = std::isfinite(want) ? std::ceil(want) : double(pass - 1);
             return static_cast<std::size_t>(std::clamp(n, double(fail + 1), double(pass - 1)));
         };
-        for (std::size_t n = first < pass ? first : next(); pass > fail + 1; n = next())
-            (probe(n) ? pass : fail) = n;
-        for (std::size_t n = fail; n > lowest && errorAt[n] <= 1.15 * o.tolerance;) {
-            if (!probe(--n)) break;
-            pass = n;
+        for (std::size_t n = first < pass ? first : next();;) {
+            for (; pass > fail + 1; n = next()) {
+                const bool ok = probe(n);
+                (ok ? pass : fail) = n;
+                failed[n] = !ok;
+            }
+            // The smallest count that passed on samples gets the final check (the meter); the
+            // larger ones are measured only where it fails, so most searches measure once.
+            if (pass == none) return;
+            FreeKnotFit& f = *passed[pass];
+            Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
+            // The fit's few spans are sampled four times as densely: a fit may turn sharply
+            // between samples where the original does not.
+            const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
+            if (d.maxError <= o.tolerance) {
+                out.curve = std::move(candidate);
+                out.deviation = d;
+                out.freeKnotFit = true;
+                return;
+            }
+            // The bracket again: the next count that passed above, the largest failure below it.
+            passed[pass].reset();
+            failed[pass] = true;
+            while (pass < none && !passed[pass]) ++pass;
+            for (fail = pass - 1; fail >= lowest && !failed[fail];) --fail;
+            n = next();
         }
     };
     auto guess = [&] {

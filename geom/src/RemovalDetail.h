@@ -169,6 +169,28 @@ inline void spanPowerForm(std::size_t span, std::size_t degree, const double* kn
     }
 }
 
+// spanPowerForm with the common degrees fixed at compile time (the same arithmetic, unrolled).
+inline void spanPowerFormAnyDegree(std::size_t span, std::size_t p, const double* knots,
+                                   const glm::dvec3* points, glm::dvec3* power) {
+    switch (p) {
+        case 2:
+            spanPowerForm<2>(span, p, knots, points, power);
+            break;
+        case 3:
+            spanPowerForm<3>(span, p, knots, points, power);
+            break;
+        case 4:
+            spanPowerForm<4>(span, p, knots, points, power);
+            break;
+        case 5:
+            spanPowerForm<5>(span, p, knots, points, power);
+            break;
+        default:
+            spanPowerForm(span, p, knots, points, power);
+            break;
+    }
+}
+
 // Values and derivatives of one polynomial spline (degree, knots, count coefficients, which
 // must outlive it) at many parameters: the power form of the last span used is kept, so points
 // near each other (samples in order, Newton iterations) cost a Horner step each.
@@ -253,11 +275,12 @@ private:
         if (!inside) {
             span_ = findSpan(degree_, knots_, count_, u);
             if (made_.empty()) {
-                spanPowerForm(span_, p_, knots_.data(), points_, power_);
+                spanPowerFormAnyDegree(span_, p_, knots_.data(), points_, power_);
                 form_ = power_;
             } else {
                 glm::dvec3* form = forms_.data() + span_ * (p_ + 1);
-                if (!made_[span_]) spanPowerForm(span_, p_, knots_.data(), points_, form), made_[span_] = 1;
+                if (!made_[span_])
+                    spanPowerFormAnyDegree(span_, p_, knots_.data(), points_, form), made_[span_] = 1;
                 form_ = form;
             }
             formed_ = true;
