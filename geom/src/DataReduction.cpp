@@ -795,6 +795,12 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
                 const bool ok = probe(n);
                 (ok ? pass : fail) = n;
                 failed[n] = !ok;
+                // The error model, calibrated on this fit, predicts the count below fails too:
+                // it is not tried (a fit that beat the model by that much is rare).
+                if (ok && n > p + 1 &&
+                    passed[n]->sampleError * std::pow(double(n - p) / double(n - 1 - p), double(p + 1)) >
+                        0.99 * o.tolerance)
+                    fail = std::max(fail, n - 1);
             }
             // The smallest count that passed on samples gets the final check (the meter); the
             // larger ones are measured only where it fails, so most searches measure once.
