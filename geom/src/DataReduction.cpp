@@ -761,6 +761,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // is tried too. A count passes when its sample error is within 0.99 of the tolerance and the
     // meter (the final check) finds the Hausdorff distance within it.
     const double target = std::log(0.97 * o.tolerance);
+    const double giveUp = 1.2 * 0.99 * o.tolerance;
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
         const std::size_t none = out.curve.points.size();  // no fit below it is needed
         std::size_t pass = none, fail = lowest - 1;
@@ -776,11 +777,13 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
                 firstUsed = true;
             } else {
                 ++out.fits;
-                f = fitter.fit(n, previousKnots);
+                f = fitter.fit(n, previousKnots, true, 0, giveUp);
             }
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
-            if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
-                logC = std::log(f.sampleError) + double(p + 1) * std::log(double(n - p));
+            // A fit that gave up calibrates the model with the error it would have reached.
+            const double reached = f.gaveUp ? f.expectedError : f.sampleError;
+            if (std::isfinite(reached) && reached > 0.0)
+                logC = std::log(reached) + double(p + 1) * std::log(double(n - p));
             if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
             passed[n] = std::move(f);
             return true;
@@ -832,7 +835,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     };
     const std::size_t first = guess();
     ++out.fits;
-    FreeKnotFit moved = fitter.fit(first);
+    FreeKnotFit moved = fitter.fit(first, {}, true, 0, giveUp);
     ++out.fits;
     refined = fitter.fit(first, significant(first), false, 3).sampleError <= 45.0 * moved.sampleError;
     search(first, std::move(moved));

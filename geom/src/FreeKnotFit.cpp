@@ -15,6 +15,9 @@ namespace geom {
 
 namespace {
 
+// About the factor by which Lawson's rounds lower a fit's sample error (see FreeKnotFit::gaveUp).
+constexpr double lawsonGain = 0.8;
+
 // The rounds of one fit (FreeKnotFitter::fit): P > 0 is the degree fixed at compile time, so that
 // the loops over the p+1 basis functions unroll; P = 0 takes any degree (degree).
 struct FitRounds {
@@ -28,6 +31,7 @@ struct FitRounds {
     double a, b, lo, hi;   // the domain, and the part of it the free knots take
     bool moveKnots;
     int iterations;
+    double giveUpAbove;
 
     template <std::size_t P>
     void run(FreeKnotFit& out) {
@@ -172,6 +176,14 @@ struct FitRounds {
                 out.map.to = s;
             }
             if (!(worst > 0.0) || iteration + 1 == iterations) break;
+            // The first round on the final knots: Lawson's rounds will lower its error by about a
+            // fifth (0.77-0.83 on the reference curves).
+            if (moveKnots && 2 * iteration >= iterations &&
+                std::min(out.sampleError, lawsonGain * worst) > giveUpAbove) {
+                out.gaveUp = true;
+                out.expectedError = std::min(out.sampleError, lawsonGain * worst);
+                break;
+            }
 
             // The first half moves the knots on plain least squares (Lawson weights made for other
             // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
@@ -322,7 +334,7 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
 }
 
 FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
-                                int rounds) const {
+                                int rounds, double giveUpAbove) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
@@ -361,7 +373,8 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                   moveKnots,
                   rounds > 0 ? rounds
                   : warm     ? options_.warmIterations
-                             : options_.iterations};
+                             : options_.iterations,
+                  giveUpAbove};
     for (std::size_t i = 0; i < fixed; ++i) {
         run.points[i] = original_.points[i];
         run.points[count - 1 - i] = original_.points[n0 - 1 - i];

@@ -36,6 +36,11 @@ struct FreeKnotFit {
     /// The samples' parameters on the original (from) and their corrected ones on the fit (to),
     /// for measureDeviation's parameter map.
     ParameterMap map;
+    /// The fit stopped at its first round on the final knots, where the error expected after
+    /// Lawson's rounds (expectedError: 0.8 of that round's, or the best round's if lower) was
+    /// above the caller's giveUpAbove; sampleError is that of the rounds run.
+    bool gaveUp = false;
+    double expectedError = std::numeric_limits<double>::infinity();
 };
 
 /// Least-squares approximation of a polynomial curve by a spline of the same degree with a given
@@ -57,10 +62,11 @@ public:
     /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
-    /// rounds > 0 replaces the options' number of rounds. sampleError is infinite when the count
+    /// rounds > 0 replaces the options' number of rounds. A fit that cannot be expected to come
+    /// within giveUpAbove stops early (FreeKnotFit::gaveUp). sampleError is infinite when the count
     /// cannot keep the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
-                    int rounds = 0) const;
+                    int rounds = 0, double giveUpAbove = std::numeric_limits<double>::infinity()) const;
 
     const Curve& original() const { return original_; }
 
