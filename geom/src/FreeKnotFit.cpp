@@ -257,7 +257,7 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     for (std::size_t j = p; j < n0; ++j) {
         if (!(t[j + 1] > t[j])) continue;
         if (p <= detail::smallDegree) {
-            detail::spanPowerForm(j, p, t.data(), original.points.data(), power);
+            detail::spanPowerFormAnyDegree(j, p, t.data(), original.points.data(), power);
             top[j] = power[p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
             continue;
         }

@@ -155,9 +155,17 @@ inline void spanPowerForm(std::size_t span, std::size_t degree, const double* kn
             net[j] = (1.0 - alpha) * net[j - 1] + alpha * net[j];
         }
     };
+    // The levels at b repeat for every r: their ratios are made once.
+    double atB[smallDegree + 1][smallDegree + 1];
+    for (std::size_t l = 1; l <= p; ++l)
+        for (std::size_t j = p; j >= l; --j) {
+            const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
+            atB[l][j] = (b - lo) / (hi - lo);
+        }
     for (std::size_t r = 0; r <= p; ++r) {
         for (std::size_t j = r; j <= p; ++j) d[j] = state[j];
-        for (std::size_t l = r + 1; l <= p; ++l) level(d, l, b);
+        for (std::size_t l = r + 1; l <= p; ++l)
+            for (std::size_t j = p; j >= l; --j) d[j] = (1.0 - atB[l][j]) * d[j - 1] + atB[l][j] * d[j];
         bezier[p - r] = d[p];
         if (r < p) level(state, r + 1, a);
     }
@@ -304,8 +312,42 @@ private:
 
 // Values of a polynomial spline (degree, knots, count coefficients) at parameters inside its
 // domain (ascending ones cost one power form per span).
+// The same as SplineSampler::value at each parameter, with the degree fixed at compile time.
+template <std::size_t P>
+void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
+                            std::span<const double> params, glm::dvec3* out) {
+    glm::dvec3 form[P + 1];
+    std::size_t span = 0;
+    bool formed = false;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const double u = params[i];
+        if (!formed ||
+            !(knots[span] <= u && (u < knots[span + 1] || (span + 1 == count && u <= knots[count])))) {
+            span = findSpan(static_cast<int>(P), knots, count, u);
+            spanPowerForm<P>(span, P, knots.data(), points, form);
+            formed = true;
+        }
+        const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
+        glm::dvec3 c = form[P];
+        for (std::size_t k = P; k-- > 0;) c = c * s + form[k];
+        out[i] = c;
+    }
+}
+
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
                               std::size_t count, std::span<const double> params, glm::dvec3* out) {
+    switch (degree) {
+        case 2:
+            return evaluateAscendingFixed<2>(knots, points, count, params, out);
+        case 3:
+            return evaluateAscendingFixed<3>(knots, points, count, params, out);
+        case 4:
+            return evaluateAscendingFixed<4>(knots, points, count, params, out);
+        case 5:
+            return evaluateAscendingFixed<5>(knots, points, count, params, out);
+        default:
+            break;
+    }
     SplineSampler sampler(degree, knots, points, count);
     for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
 }
