@@ -287,19 +287,38 @@ const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) con
     const int perSpan = std::clamp(static_cast<int>((options_.samplesPerFitSpan * count + n0 - 1) / n0), 1,
                                    options_.samplesPerSpan);
     Samples& out = samples_[static_cast<std::size_t>(perSpan)];
-    if (!out.params.empty()) return out;
-    out.params = spanSamples(original_.knots, original_.degree, n0, perSpan);
-    out.points.resize(out.params.size());
-    detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
-                              out.points.data());
-    // Each sample stands for the parameter interval half way to its neighbours.
-    out.spacing.resize(out.params.size());
-    for (std::size_t k = 0; k < out.params.size(); ++k) {
-        const double left = k > 0 ? out.params[k - 1] : out.params[k];
-        const double right = k + 1 < out.params.size() ? out.params[k + 1] : out.params[k];
-        out.spacing[k] = 0.5 * (right - left);
+    if (out.params.empty()) {
+        out.params = spanSamples(original_.knots, original_.degree, n0, perSpan);
+        out.points.resize(out.params.size());
+        detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
+                                  out.points.data());
+        out.spacing = spacingOf(out.params);
     }
-    return out;
+    // Fewer than one sample per original span: every few of the original's knots (a fit of few
+    // spans to an original of many).
+    const std::size_t wanted = static_cast<std::size_t>(options_.samplesPerFitSpan) * count;
+    if (perSpan > 1 || wanted + 1 >= out.params.size()) return out;
+    Samples& fewer = sparse_[wanted];
+    if (!fewer.params.empty()) return fewer;
+    const std::size_t last = out.params.size() - 1;
+    for (std::size_t k = 0; k <= wanted; ++k) {
+        const std::size_t i = (k * last + wanted / 2) / wanted;
+        fewer.params.push_back(out.params[i]);
+        fewer.points.push_back(out.points[i]);
+    }
+    fewer.spacing = spacingOf(fewer.params);
+    return fewer;
+}
+
+std::vector<double> FreeKnotFitter::spacingOf(const std::vector<double>& params) {
+    // Each sample stands for the parameter interval half way to its neighbours.
+    std::vector<double> spacing(params.size());
+    for (std::size_t k = 0; k < params.size(); ++k) {
+        const double left = k > 0 ? params[k - 1] : params[k];
+        const double right = k + 1 < params.size() ? params[k + 1] : params[k];
+        spacing[k] = 0.5 * (right - left);
+    }
+    return spacing;
 }
 
 double FreeKnotFitter::predictedError(std::size_t count) const {

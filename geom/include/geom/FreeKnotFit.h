@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -14,7 +15,8 @@ namespace geom {
 /// How a free-knot fit runs: sampling density, iterations and the end conditions it keeps.
 struct FreeKnotOptions {
     /// Samples per non-empty knot span of the original curve, at most; a fit of n control points
-    /// takes about samplesPerFitSpan samples per span of its own (at least one per original span).
+    /// takes about samplesPerFitSpan samples per span of its own (where that is less than one per
+    /// original span, every few of the original's knots).
     int samplesPerSpan = 8;
     int samplesPerFitSpan = 12;
     /// Fit / correct / move rounds per fit (the best round is kept); a fit started from given
@@ -89,7 +91,10 @@ private:
 
     Curve original_;
     FreeKnotOptions options_;
-    mutable std::vector<Samples> samples_;  // by samples per original span, made when first needed
+    static std::vector<double> spacingOf(const std::vector<double>& params);
+
+    mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
+    mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by count
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
 };
