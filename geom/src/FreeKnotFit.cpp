@@ -250,15 +250,14 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     // f^(p+1) at the knots.
     const std::vector<double>& t = original.knots;
     std::vector<glm::dvec3> top(n0, glm::dvec3(0.0));
-    glm::dvec3 power[detail::smallDegree + 1];
+    forms_ = detail::powerForms(original_.degree, original_.knots, original_.points.data(), n0);
     std::vector<double> basis((p + 1) * (p + 1));
     double factorial = 1.0;
     for (std::size_t i = 2; i <= p; ++i) factorial *= double(i);
     for (std::size_t j = p; j < n0; ++j) {
         if (!(t[j + 1] > t[j])) continue;
         if (p <= detail::smallDegree) {
-            detail::spanPowerFormAnyDegree(j, p, t.data(), original.points.data(), power);
-            top[j] = power[p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
+            top[j] = forms_[j * (p + 1) + p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
             continue;
         }
         basisDerivatives(j, 0.5 * (t[j] + t[j + 1]), original.degree, t, original.degree, basis);
@@ -291,7 +290,7 @@ const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) con
         out.params = spanSamples(original_.knots, original_.degree, n0, perSpan);
         out.points.resize(out.params.size());
         detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
-                                  out.points.data());
+                                  out.points.data(), &forms_);
         out.spacing = spacingOf(out.params);
     }
     // Fewer than one sample per original span: every few of the original's knots (a fit of few

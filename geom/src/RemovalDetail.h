@@ -220,6 +220,14 @@ public:
         }
     }
 
+    // With every span's power form given (powerForms below, which must outlive it; empty for a
+    // degree above smallDegree).
+    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
+                  const std::vector<glm::dvec3>& forms)
+        : SplineSampler(degree, knots, points, count) {
+        if (!forms.empty()) shared_ = forms.data();
+    }
+
     // form_ may point into the object itself.
     SplineSampler(const SplineSampler&) = delete;
     SplineSampler& operator=(const SplineSampler&) = delete;
@@ -282,7 +290,9 @@ private:
                             (u < knots_[span_ + 1] || (span_ + 1 == count_ && u <= knots_[count_]));
         if (!inside) {
             span_ = findSpan(degree_, knots_, count_, u);
-            if (made_.empty()) {
+            if (shared_) {
+                form_ = shared_ + span_ * (p_ + 1);
+            } else if (made_.empty()) {
                 spanPowerFormAnyDegree(span_, p_, knots_.data(), points_, power_);
                 form_ = power_;
             } else {
@@ -305,6 +315,7 @@ private:
     bool formed_ = false;
     glm::dvec3 power_[smallDegree + 1];
     const glm::dvec3* form_ = power_;
+    const glm::dvec3* shared_ = nullptr;
     std::vector<double> basis_;
     std::vector<char> made_;
     std::vector<glm::dvec3> forms_;
@@ -315,8 +326,9 @@ private:
 // The same as SplineSampler::value at each parameter, with the degree fixed at compile time.
 template <std::size_t P>
 void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
-                            std::span<const double> params, glm::dvec3* out) {
-    glm::dvec3 form[P + 1];
+                            std::span<const double> params, glm::dvec3* out, const glm::dvec3* forms) {
+    glm::dvec3 made[P + 1];
+    const glm::dvec3* form = made;
     std::size_t span = 0;
     bool formed = false;
     for (std::size_t i = 0; i < params.size(); ++i) {
@@ -324,7 +336,10 @@ void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* 
         if (!formed ||
             !(knots[span] <= u && (u < knots[span + 1] || (span + 1 == count && u <= knots[count])))) {
             span = findSpan(static_cast<int>(P), knots, count, u);
-            spanPowerForm<P>(span, P, knots.data(), points, form);
+            if (forms)
+                form = forms + span * (P + 1);
+            else
+                spanPowerForm<P>(span, P, knots.data(), points, made);
             formed = true;
         }
         const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
@@ -334,17 +349,33 @@ void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* 
     }
 }
 
+// Every non-empty span's power form, at span * (p + 1); empty for a degree above smallDegree.
+inline std::vector<glm::dvec3> powerForms(int degree, const std::vector<double>& knots,
+                                          const glm::dvec3* points, std::size_t count) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    std::vector<glm::dvec3> out;
+    if (p > smallDegree) return out;
+    out.resize((count + 1) * (p + 1));
+    for (std::size_t span = p; span < count; ++span)
+        if (knots[span + 1] > knots[span])
+            spanPowerFormAnyDegree(span, p, knots.data(), points, &out[span * (p + 1)]);
+    return out;
+}
+
+// forms: powerForms of the same spline, or null.
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
-                              std::size_t count, std::span<const double> params, glm::dvec3* out) {
+                              std::size_t count, std::span<const double> params, glm::dvec3* out,
+                              const std::vector<glm::dvec3>* forms = nullptr) {
+    const glm::dvec3* given = forms && !forms->empty() ? forms->data() : nullptr;
     switch (degree) {
         case 2:
-            return evaluateAscendingFixed<2>(knots, points, count, params, out);
+            return evaluateAscendingFixed<2>(knots, points, count, params, out, given);
         case 3:
-            return evaluateAscendingFixed<3>(knots, points, count, params, out);
+            return evaluateAscendingFixed<3>(knots, points, count, params, out, given);
         case 4:
-            return evaluateAscendingFixed<4>(knots, points, count, params, out);
+            return evaluateAscendingFixed<4>(knots, points, count, params, out, given);
         case 5:
-            return evaluateAscendingFixed<5>(knots, points, count, params, out);
+            return evaluateAscendingFixed<5>(knots, points, count, params, out, given);
         default:
             break;
     }

@@ -70,6 +70,7 @@ private:
     int samplesPerSpan_;
     std::vector<double> params_;
     std::vector<glm::dvec3> points_;
+    std::vector<glm::dvec3> originalForms_;  // every span's power form (private to geom)
     SpanBoxes boxes_;
 };
 

@@ -95,6 +95,7 @@ private:
 
     mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
     mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by count
+    std::vector<glm::dvec3> forms_;                  // the original's span power forms (private to geom)
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
 };
