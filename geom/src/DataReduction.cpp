@@ -691,11 +691,10 @@ Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, doub
 }
 
 // Tolerance mode with free knots: the exact removals first, then a search over the control
-// point count n. Each probe is a free-knot fit; it passes when measureDeviation (the final
-// check itself) finds it within the tolerance. The next n comes from the error model
-// c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest count
-// that passed and the largest that failed; once they meet, one count below the failure is
-// tried too (the fits are not monotone in n).
+// point count n. Each probe is a free-knot fit; the smallest count whose fit passes on samples
+// must also pass measureDeviation (the final check itself). The next n comes from the error
+// model c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest
+// count that passed and the largest that failed.
 CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, bool& refined) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
@@ -757,9 +756,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // density integral (with the constant measured on the reference curves) before any fit, then
     // from the last fit (a secant through the last two follows their noise: the fits are not
     // monotone in n); the bracket lies between the smallest count that passed and the largest
-    // that failed; after a near miss (within 15% of the tolerance) one count below the failure
-    // is tried too. A count passes when its sample error is within 0.99 of the tolerance and the
-    // meter (the final check) finds the Hausdorff distance within it.
+    // that failed (or that the model, calibrated on the pass above it, rules out). A count passes
+    // when its sample error is within 0.99 of the tolerance and, for the one the search ends
+    // on, the meter (the final check) finds the Hausdorff distance within it. A probe that
+    // cannot come within 1.2 times the pass gives up early (FreeKnotFit::gaveUp).
     const double target = std::log(0.97 * o.tolerance);
     const double giveUp = 1.2 * 0.99 * o.tolerance;
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
