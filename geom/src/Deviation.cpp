@@ -165,10 +165,20 @@ struct SpanStep {
             sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), true);
     }
 
+    static bool fartherThan(const glm::dvec3& low, const glm::dvec3& high, const glm::dvec3& q, double d) {
+        const glm::dvec3 out = glm::max(glm::max(low - q, q - high), glm::dvec3(0.0));
+        return glm::dot(out, out) >= d * d;
+    }
+
     double operator()(const glm::dvec3& q, double d) {
+        // A group's box holds its spans' boxes: where it is farther than d, so is each of them.
+        const std::size_t size = CurveDeviationMeter::SpanBoxes::groupSize;
         for (std::size_t s = 0; s < boxes.low.size(); ++s) {
-            const glm::dvec3 out = glm::max(glm::max(boxes.low[s] - q, q - boxes.high[s]), glm::dvec3(0.0));
-            if (glm::dot(out, out) >= d * d) continue;
+            if (s % size == 0 && fartherThan(boxes.groupLow[s / size], boxes.groupHigh[s / size], q, d)) {
+                s += size - 1;
+                continue;
+            }
+            if (fartherThan(boxes.low[s], boxes.high[s], q, d)) continue;
             std::size_t nearest = boxes.first[s];
             double nearestDistance = std::numeric_limits<double>::infinity();
             for (std::size_t k = boxes.first[s]; k < boxes.last[s]; ++k) {
@@ -258,6 +268,12 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
         const auto to = std::upper_bound(from, params.end(), c.knots[j + 1]);
         out.first.push_back(static_cast<std::size_t>(from - params.begin()));
         out.last.push_back(static_cast<std::size_t>(to - params.begin()));
+    }
+    for (std::size_t s = 0; s < out.low.size(); ++s) {
+        if (s % SpanBoxes::groupSize == 0)
+            out.groupLow.push_back(out.low[s]), out.groupHigh.push_back(out.high[s]);
+        out.groupLow.back() = glm::min(out.groupLow.back(), out.low[s]);
+        out.groupHigh.back() = glm::max(out.groupHigh.back(), out.high[s]);
     }
     return out;
 }
