@@ -88,13 +88,13 @@ private:
         std::vector<double> spacing;
     };
     const Samples& samplesFor(std::size_t count) const;
+    static std::vector<double> spacingOf(const std::vector<double>& params);
 
     Curve original_;
     FreeKnotOptions options_;
-    static std::vector<double> spacingOf(const std::vector<double>& params);
 
     mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
-    mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by count
+    mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by number
     std::vector<glm::dvec3> forms_;                  // the original's span power forms (private to geom)
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
