@@ -691,11 +691,10 @@ Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, doub
 }
 
 // Tolerance mode with free knots: the exact removals first, then a search over the control
-// point count n. Each probe is a free-knot fit; it passes when measureDeviation (the final
-// check itself) finds it within the tolerance. The next n comes from the error model
-// c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest count
-// that passed and the largest that failed; once they meet, one count below the failure is
-// tried too (the fits are not monotone in n).
+// point count n. Each probe is a free-knot fit; the smallest count whose fit passes on samples
+// must also pass measureDeviation (the final check itself). The next n comes from the error
+// model c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest
+// count that passed and the largest that failed.
 CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, bool& refined) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
@@ -757,15 +756,19 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // density integral (with the constant measured on the reference curves) before any fit, then
     // from the last fit (a secant through the last two follows their noise: the fits are not
     // monotone in n); the bracket lies between the smallest count that passed and the largest
-    // that failed; after a near miss (within 15% of the tolerance) one count below the failure
-    // is tried too. A count passes when its sample error is within 0.99 of the tolerance and the
-    // meter (the final check) finds the Hausdorff distance within it.
+    // that failed (or that the model, calibrated on the pass above it, rules out). A count passes
+    // when its sample error is within 0.99 of the tolerance and, for the one the search ends
+    // on, the meter (the final check) finds the Hausdorff distance within it. A probe that
+    // cannot come within 1.2 times the pass gives up early (FreeKnotFit::gaveUp).
     const double target = std::log(0.97 * o.tolerance);
+    const double giveUp = 1.2 * 0.99 * o.tolerance;
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
-        std::size_t pass = out.curve.points.size(), fail = lowest - 1;
-        std::vector<double> errorAt(n0 + 1, std::numeric_limits<double>::infinity());
+        const std::size_t none = out.curve.points.size();  // no fit below it is needed
+        std::size_t pass = none, fail = lowest - 1;
         double logC = std::log(1e-3 * fitter.predictedError(p + 1));
         std::vector<double> previousKnots;  // the last fit's, whose knot density starts the next
+        std::vector<std::optional<FreeKnotFit>> passed(none + 1);  // by count, on samples
+        std::vector<bool> failed(none + 1, false);
         bool firstUsed = false;
         auto probe = [&](std::size_t n) {
             FreeKnotFit f;
@@ -774,21 +777,15 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
                 firstUsed = true;
             } else {
                 ++out.fits;
-                f = fitter.fit(n, previousKnots);
+                f = fitter.fit(n, previousKnots, true, 0, giveUp);
             }
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
-            if (std::isfinite(f.sampleError) && f.sampleError > 0.0)
-                logC = std::log(f.sampleError) + double(p + 1) * std::log(double(n - p));
-            errorAt[n] = f.sampleError;
+            // A fit that gave up calibrates the model with the error it would have reached.
+            const double reached = f.gaveUp ? f.expectedError : f.sampleError;
+            if (std::isfinite(reached) && reached > 0.0)
+                logC = std::log(reached) + double(p + 1) * std::log(double(n - p));
             if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
-            Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
-            // The fit's few spans are sampled four times as densely: a fit may turn sharply
-            // between samples where the original does not.
-            const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
-            if (!(d.maxError <= o.tolerance)) return false;
-            out.curve = std::move(candidate);
-            out.deviation = d;
-            out.freeKnotFit = true;
+            passed[n] = std::move(f);
             return true;
         };
         auto next = [&] {
@@ -796,11 +793,38 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
             const double n = std::isfinite(want) ? std::ceil(want) : double(pass - 1);
             return static_cast<std::size_t>(std::clamp(n, double(fail + 1), double(pass - 1)));
         };
-        for (std::size_t n = first < pass ? first : next(); pass > fail + 1; n = next())
-            (probe(n) ? pass : fail) = n;
-        for (std::size_t n = fail; n > lowest && errorAt[n] <= 1.15 * o.tolerance;) {
-            if (!probe(--n)) break;
-            pass = n;
+        for (std::size_t n = first < pass ? first : next();;) {
+            for (; pass > fail + 1; n = next()) {
+                const bool ok = probe(n);
+                (ok ? pass : fail) = n;
+                failed[n] = !ok;
+                // The error model, calibrated on this fit, predicts the count below fails too:
+                // it is not tried (a fit that beat the model by that much is rare).
+                if (ok && n > p + 1 &&
+                    passed[n]->sampleError * std::pow(double(n - p) / double(n - 1 - p), double(p + 1)) >
+                        0.99 * o.tolerance)
+                    fail = std::max(fail, n - 1);
+            }
+            // The smallest count that passed on samples gets the final check (the meter); the
+            // larger ones are measured only where it fails, so most searches measure once.
+            if (pass == none) return;
+            FreeKnotFit& f = *passed[pass];
+            Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
+            // The fit's few spans are sampled four times as densely: a fit may turn sharply
+            // between samples where the original does not.
+            const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
+            if (d.maxError <= o.tolerance) {
+                out.curve = std::move(candidate);
+                out.deviation = d;
+                out.freeKnotFit = true;
+                return;
+            }
+            // The bracket again: the next count that passed above, the largest failure below it.
+            passed[pass].reset();
+            failed[pass] = true;
+            while (pass < none && !passed[pass]) ++pass;
+            for (fail = pass - 1; fail >= lowest && !failed[fail];) --fail;
+            n = next();
         }
     };
     auto guess = [&] {
@@ -811,7 +835,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     };
     const std::size_t first = guess();
     ++out.fits;
-    FreeKnotFit moved = fitter.fit(first);
+    FreeKnotFit moved = fitter.fit(first, {}, true, 0, giveUp);
     ++out.fits;
     refined = fitter.fit(first, significant(first), false, 3).sampleError <= 45.0 * moved.sampleError;
     search(first, std::move(moved));

@@ -86,13 +86,21 @@ CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& 
 // until the next bound is below the largest distance measured (no sample left can reach it). A
 // sample not measured keeps its bound, which is below the maximum, so the maximum is exactly
 // that of measuring them all; the mean is an upper bound.
-// global(q, d) is the closest distance from q to `to`, given a distance d to a point of it.
+// global(q, d) is the closest distance from q to `to`, given a distance d to a point of it;
+// toForms, where given, are the power forms of `to` (detail::powerForms).
 template <class Global>
 std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
-                                    const std::vector<double>& seeds, Global&& global) {
+                                    const std::vector<double>& seeds, Global&& global,
+                                    const std::vector<glm::dvec3>* toForms = nullptr) {
     std::vector<glm::dvec3> b(seeds.size());
-    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data());
-    detail::SplineSampler toSampler(to.degree, to.knots, to.points.data(), to.points.size(), true);
+    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data(),
+                              toForms);
+    std::optional<detail::SplineSampler> sampler;
+    if (toForms)
+        sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), *toForms);
+    else
+        sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), true);
+    detail::SplineSampler& toSampler = *sampler;
     std::vector<double> out(seeds.size());
     for (std::size_t i = 0; i < seeds.size(); ++i) out[i] = glm::length(a[i] - b[i]);
     double worst = 0.0;
@@ -146,20 +154,31 @@ struct SpanStep {
     const std::vector<double>& toParams;
     const std::vector<glm::dvec3>& toPoints;
     const CurveDeviationMeter::SpanBoxes& boxes;
-    detail::SplineSampler sampler;
+    std::optional<detail::SplineSampler> sampler;
 
     SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points,
-             const CurveDeviationMeter::SpanBoxes& b)
-        : to(c),
-          toParams(params),
-          toPoints(points),
-          boxes(b),
-          sampler(c.degree, c.knots, c.points.data(), c.points.size(), true) {}
+             const CurveDeviationMeter::SpanBoxes& b, const std::vector<glm::dvec3>* forms = nullptr)
+        : to(c), toParams(params), toPoints(points), boxes(b) {
+        if (forms)
+            sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), *forms);
+        else
+            sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), true);
+    }
+
+    static bool fartherThan(const glm::dvec3& low, const glm::dvec3& high, const glm::dvec3& q, double d) {
+        const glm::dvec3 out = glm::max(glm::max(low - q, q - high), glm::dvec3(0.0));
+        return glm::dot(out, out) >= d * d;
+    }
 
     double operator()(const glm::dvec3& q, double d) {
+        // A group's box holds its spans' boxes: where it is farther than d, so is each of them.
+        const std::size_t size = CurveDeviationMeter::SpanBoxes::groupSize;
         for (std::size_t s = 0; s < boxes.low.size(); ++s) {
-            const glm::dvec3 out = glm::max(glm::max(boxes.low[s] - q, q - boxes.high[s]), glm::dvec3(0.0));
-            if (glm::dot(out, out) >= d * d) continue;
+            if (s % size == 0 && fartherThan(boxes.groupLow[s / size], boxes.groupHigh[s / size], q, d)) {
+                s += size - 1;
+                continue;
+            }
+            if (fartherThan(boxes.low[s], boxes.high[s], q, d)) continue;
             std::size_t nearest = boxes.first[s];
             double nearestDistance = std::numeric_limits<double>::infinity();
             for (std::size_t k = boxes.first[s]; k < boxes.last[s]; ++k) {
@@ -167,15 +186,16 @@ struct SpanStep {
                 if (e < nearestDistance) nearestDistance = e, nearest = k;
             }
             if (nearest < toParams.size())
-                d = std::min(d, detail::newtonDistance(sampler, q, toParams[nearest], d));
+                d = std::min(d, detail::newtonDistance(*sampler, q, toParams[nearest], d));
         }
         return d;
     }
 };
 
-std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params) {
+std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params,
+                                 const std::vector<glm::dvec3>* forms = nullptr) {
     std::vector<glm::dvec3> out(params.size());
-    detail::evaluateAscending(c.degree, c.knots, c.points.data(), c.points.size(), params, out.data());
+    detail::evaluateAscending(c.degree, c.knots, c.points.data(), c.points.size(), params, out.data(), forms);
     return out;
 }
 
@@ -249,6 +269,12 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
         out.first.push_back(static_cast<std::size_t>(from - params.begin()));
         out.last.push_back(static_cast<std::size_t>(to - params.begin()));
     }
+    for (std::size_t s = 0; s < out.low.size(); ++s) {
+        if (s % SpanBoxes::groupSize == 0)
+            out.groupLow.push_back(out.low[s]), out.groupHigh.push_back(out.high[s]);
+        out.groupLow.back() = glm::min(out.groupLow.back(), out.low[s]);
+        out.groupHigh.back() = glm::max(out.groupHigh.back(), out.high[s]);
+    }
     return out;
 }
 
@@ -256,7 +282,9 @@ CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSp
     : original_(original), samplesPerSpan_(samplesPerSpan) {
     if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
-    points_ = valuesAt(original, params_);
+    originalForms_ = detail::powerForms(original.degree, original_.knots, original_.points.data(),
+                                        original_.points.size());
+    points_ = valuesAt(original_, params_, &originalForms_);
     boxes_ = spanBoxes(original, params_);
 }
 
@@ -282,7 +310,7 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
                         SpanStep(reduced, pb, b, spanBoxes(reduced, pb)));
     const std::vector<double> db =
         sampleDistances(original_, b, clampTo(interpolate(map.to, map.from, pb), original_),
-                        SpanStep(original_, params_, points_, boxes_));
+                        SpanStep(original_, params_, points_, boxes_, &originalForms_), &originalForms_);
     return summary(da, db);
 }
 

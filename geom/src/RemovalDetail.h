@@ -130,8 +130,11 @@ constexpr std::size_t smallDegree = 7;
 // Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
 // are their binomial differences. Horner on these is several times cheaper than Cox-de Boor
 // per point when a span holds several samples.
-inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, const glm::dvec3* points,
+// P > 0 fixes the degree at compile time (p must equal it), which lets the loops unroll.
+template <std::size_t P = 0>
+inline void spanPowerForm(std::size_t span, std::size_t degree, const double* knots, const glm::dvec3* points,
                           glm::dvec3* power) {
+    const std::size_t p = P > 0 ? P : degree;
     static constexpr double binomial[smallDegree + 1][smallDegree + 1] = {{1},
                                                                           {1, 1},
                                                                           {1, 2, 1},
@@ -152,9 +155,17 @@ inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, 
             net[j] = (1.0 - alpha) * net[j - 1] + alpha * net[j];
         }
     };
+    // The levels at b repeat for every r: their ratios are made once.
+    double atB[smallDegree + 1][smallDegree + 1];
+    for (std::size_t l = 1; l <= p; ++l)
+        for (std::size_t j = p; j >= l; --j) {
+            const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
+            atB[l][j] = (b - lo) / (hi - lo);
+        }
     for (std::size_t r = 0; r <= p; ++r) {
         for (std::size_t j = r; j <= p; ++j) d[j] = state[j];
-        for (std::size_t l = r + 1; l <= p; ++l) level(d, l, b);
+        for (std::size_t l = r + 1; l <= p; ++l)
+            for (std::size_t j = p; j >= l; --j) d[j] = (1.0 - atB[l][j]) * d[j - 1] + atB[l][j] * d[j];
         bezier[p - r] = d[p];
         if (r < p) level(state, r + 1, a);
     }
@@ -163,6 +174,28 @@ inline void spanPowerForm(std::size_t span, std::size_t p, const double* knots, 
         for (std::size_t j = 0; j <= k; ++j)
             sum += ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial[k][j] * bezier[j];
         power[k] = binomial[p][k] * sum;
+    }
+}
+
+// spanPowerForm with the common degrees fixed at compile time (the same arithmetic, unrolled).
+inline void spanPowerFormAnyDegree(std::size_t span, std::size_t p, const double* knots,
+                                   const glm::dvec3* points, glm::dvec3* power) {
+    switch (p) {
+        case 2:
+            spanPowerForm<2>(span, p, knots, points, power);
+            break;
+        case 3:
+            spanPowerForm<3>(span, p, knots, points, power);
+            break;
+        case 4:
+            spanPowerForm<4>(span, p, knots, points, power);
+            break;
+        case 5:
+            spanPowerForm<5>(span, p, knots, points, power);
+            break;
+        default:
+            spanPowerForm(span, p, knots, points, power);
+            break;
     }
 }
 
@@ -182,9 +215,28 @@ public:
           count_(count) {
         if (p_ > smallDegree) basis_.resize(3 * (p_ + 1));
         if (everySpan && p_ <= smallDegree) {
-            made_.assign(count_ + 1, false);
+            made_.assign(count_ + 1, 0);
             forms_.resize((count_ + 1) * (p_ + 1));
         }
+    }
+
+    // With every span's power form given (powerForms below, which must outlive it; empty for a
+    // degree above smallDegree).
+    SplineSampler(int degree, const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
+                  const std::vector<glm::dvec3>& forms)
+        : SplineSampler(degree, knots, points, count) {
+        if (!forms.empty()) shared_ = forms.data();
+    }
+
+    // form_ may point into the object itself.
+    SplineSampler(const SplineSampler&) = delete;
+    SplineSampler& operator=(const SplineSampler&) = delete;
+
+    // Forgets every power form made: the knots or coefficients (the same vector and array, the
+    // same count) have changed in place.
+    void restart() {
+        formed_ = false;
+        std::fill(made_.begin(), made_.end(), 0);
     }
 
     double start() const { return knots_[p_]; }
@@ -199,8 +251,8 @@ public:
             return c;
         }
         const double s = locate(u);
-        glm::dvec3 c = power_[p_];
-        for (std::size_t k = p_; k-- > 0;) c = c * s + power_[k];
+        glm::dvec3 c = form_[p_];
+        for (std::size_t k = p_; k-- > 0;) c = c * s + form_[k];
         return c;
     }
 
@@ -219,12 +271,12 @@ public:
             return;
         }
         const double s = locate(u);
-        c = power_[p_];
+        c = form_[p_];
         d1 = d2 = glm::dvec3(0.0);
         for (std::size_t k = p_; k-- > 0;) {
             d2 = d2 * s + d1;
             d1 = d1 * s + c;
-            c = c * s + power_[k];
+            c = c * s + form_[k];
         }
         const double h = knots_[span_ + 1] - knots_[span_];
         d1 /= h;
@@ -238,13 +290,16 @@ private:
                             (u < knots_[span_ + 1] || (span_ + 1 == count_ && u <= knots_[count_]));
         if (!inside) {
             span_ = findSpan(degree_, knots_, count_, u);
-            if (made_.empty()) {
-                spanPowerForm(span_, p_, knots_.data(), points_, power_);
+            if (shared_) {
+                form_ = shared_ + span_ * (p_ + 1);
+            } else if (made_.empty()) {
+                spanPowerFormAnyDegree(span_, p_, knots_.data(), points_, power_);
+                form_ = power_;
             } else {
                 glm::dvec3* form = forms_.data() + span_ * (p_ + 1);
                 if (!made_[span_])
-                    spanPowerForm(span_, p_, knots_.data(), points_, form), made_[span_] = true;
-                std::copy(form, form + p_ + 1, power_);
+                    spanPowerFormAnyDegree(span_, p_, knots_.data(), points_, form), made_[span_] = 1;
+                form_ = form;
             }
             formed_ = true;
         }
@@ -259,15 +314,71 @@ private:
     std::size_t span_ = 0;
     bool formed_ = false;
     glm::dvec3 power_[smallDegree + 1];
+    const glm::dvec3* form_ = power_;
+    const glm::dvec3* shared_ = nullptr;
     std::vector<double> basis_;
-    std::vector<bool> made_;
+    std::vector<char> made_;
     std::vector<glm::dvec3> forms_;
 };
 
 // Values of a polynomial spline (degree, knots, count coefficients) at parameters inside its
 // domain (ascending ones cost one power form per span).
+// The same as SplineSampler::value at each parameter, with the degree fixed at compile time.
+template <std::size_t P>
+void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* points, std::size_t count,
+                            std::span<const double> params, glm::dvec3* out, const glm::dvec3* forms) {
+    glm::dvec3 made[P + 1];
+    const glm::dvec3* form = made;
+    std::size_t span = 0;
+    bool formed = false;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        const double u = params[i];
+        if (!formed ||
+            !(knots[span] <= u && (u < knots[span + 1] || (span + 1 == count && u <= knots[count])))) {
+            span = findSpan(static_cast<int>(P), knots, count, u);
+            if (forms)
+                form = forms + span * (P + 1);
+            else
+                spanPowerForm<P>(span, P, knots.data(), points, made);
+            formed = true;
+        }
+        const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
+        glm::dvec3 c = form[P];
+        for (std::size_t k = P; k-- > 0;) c = c * s + form[k];
+        out[i] = c;
+    }
+}
+
+// Every non-empty span's power form, at span * (p + 1); empty for a degree above smallDegree.
+inline std::vector<glm::dvec3> powerForms(int degree, const std::vector<double>& knots,
+                                          const glm::dvec3* points, std::size_t count) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    std::vector<glm::dvec3> out;
+    if (p > smallDegree) return out;
+    out.resize((count + 1) * (p + 1));
+    for (std::size_t span = p; span < count; ++span)
+        if (knots[span + 1] > knots[span])
+            spanPowerFormAnyDegree(span, p, knots.data(), points, &out[span * (p + 1)]);
+    return out;
+}
+
+// forms: powerForms of the same spline, or null.
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,
-                              std::size_t count, std::span<const double> params, glm::dvec3* out) {
+                              std::size_t count, std::span<const double> params, glm::dvec3* out,
+                              const std::vector<glm::dvec3>* forms = nullptr) {
+    const glm::dvec3* given = forms && !forms->empty() ? forms->data() : nullptr;
+    switch (degree) {
+        case 2:
+            return evaluateAscendingFixed<2>(knots, points, count, params, out, given);
+        case 3:
+            return evaluateAscendingFixed<3>(knots, points, count, params, out, given);
+        case 4:
+            return evaluateAscendingFixed<4>(knots, points, count, params, out, given);
+        case 5:
+            return evaluateAscendingFixed<5>(knots, points, count, params, out, given);
+        default:
+            break;
+    }
     SplineSampler sampler(degree, knots, points, count);
     for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
 }

@@ -130,6 +130,49 @@ TEST_CASE("a free-knot fit started from another fit's knots resamples their dist
     REQUIRE(fitter.predictedError(40) < fitter.predictedError(20));
 }
 
+TEST_CASE("a free-knot fit that cannot reach the caller's bound gives up after its knot-moving rounds",
+          "[geom][knots][freeknots]") {
+    const Curve c = nacaAirfoilCurve();
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    const FreeKnotFit full = fitter.fit(30);
+    REQUIRE_FALSE(full.gaveUp);
+    // Any bound below the error expected after Lawson's rounds stops it on its first round on
+    // the final knots: a real fit (its sample error a distance to it), only less converged.
+    const FreeKnotFit early = fitter.fit(30, {}, true, 0, 0.1 * full.sampleError);
+    REQUIRE(early.gaveUp);
+    REQUIRE(early.curve.points.size() == 30);
+    REQUIRE(early.sampleError >= full.sampleError);
+    REQUIRE(early.expectedError <= early.sampleError);
+    REQUIRE(early.expectedError >= 0.5 * full.sampleError);
+    REQUIRE(early.map.to.size() == early.map.from.size());
+    const CurveDeviation d =
+        measureDeviation(c, Curve(early.curve.degree, early.curve.knots, early.curve.points), 8, early.map);
+    REQUIRE(std::isfinite(d.maxError));
+    // A bound it can reach lets it run all its rounds, to the same fit.
+    const FreeKnotFit reached = fitter.fit(30, {}, true, 0, 10.0 * full.sampleError);
+    REQUIRE_FALSE(reached.gaveUp);
+    REQUIRE(reached.sampleError == full.sampleError);
+}
+
+TEST_CASE("a free-knot fit of few spans to an original of many samples every few of its knots",
+          "[geom][knots][freeknots]") {
+    const Curve c = iBeamCurve();  // 401 control points, 398 spans
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    const FreeKnotFit few = fitter.fit(20);
+    // About samplesPerFitSpan (12) samples per control point of the fit, all at knots of the
+    // original, ascending, the domain's ends included.
+    REQUIRE(few.map.from.size() == 12 * 20 + 1);
+    REQUIRE(few.map.from.front() == c.domainStart());
+    REQUIRE(few.map.from.back() == c.domainEnd());
+    for (std::size_t k = 0; k < few.map.from.size(); ++k) {
+        if (k > 0) REQUIRE(few.map.from[k] > few.map.from[k - 1]);
+        REQUIRE(std::binary_search(c.knots.begin(), c.knots.end(), few.map.from[k]));
+    }
+    REQUIRE(few.sampleError < 2e-2);
+    // Enough control points for one sample per original span: the spans' samples.
+    REQUIRE(fitter.fit(40).map.from.size() == 2 * 398 + 1);
+}
+
 TEST_CASE("the deviation with a parameter map has the plain measurement's maxima",
           "[geom][knots][deviation][freeknots]") {
     std::mt19937 rng(72);

@@ -59,9 +59,13 @@ public:
 
     /// Per non-empty span of a curve: the box of its control points (the span lies in their
     /// convex hull) and the range [first, last) of the ascending samples in it, ends included.
+    /// The boxes of every groupSize consecutive spans together (groupLow, groupHigh), so that a
+    /// search can pass over a far group at once.
     struct SpanBoxes {
         std::vector<glm::dvec3> low, high;
         std::vector<std::size_t> first, last;
+        static constexpr std::size_t groupSize = 16;
+        std::vector<glm::dvec3> groupLow, groupHigh;
     };
     static SpanBoxes spanBoxes(const Curve& curve, const std::vector<double>& params);
 
@@ -70,6 +74,7 @@ private:
     int samplesPerSpan_;
     std::vector<double> params_;
     std::vector<glm::dvec3> points_;
+    std::vector<glm::dvec3> originalForms_;  // every span's power form (private to geom)
     SpanBoxes boxes_;
 };
 

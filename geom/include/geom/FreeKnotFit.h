@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -14,7 +15,8 @@ namespace geom {
 /// How a free-knot fit runs: sampling density, iterations and the end conditions it keeps.
 struct FreeKnotOptions {
     /// Samples per non-empty knot span of the original curve, at most; a fit of n control points
-    /// takes about samplesPerFitSpan samples per span of its own (at least one per original span).
+    /// takes about samplesPerFitSpan samples per span of its own (where that is less than one per
+    /// original span, every few of the original's knots).
     int samplesPerSpan = 8;
     int samplesPerFitSpan = 12;
     /// Fit / correct / move rounds per fit (the best round is kept); a fit started from given
@@ -36,6 +38,11 @@ struct FreeKnotFit {
     /// The samples' parameters on the original (from) and their corrected ones on the fit (to),
     /// for measureDeviation's parameter map.
     ParameterMap map;
+    /// The fit stopped at its first round on the final knots, where the error expected after
+    /// Lawson's rounds (expectedError: 0.8 of that round's, or the best round's if lower) was
+    /// above the caller's giveUpAbove; sampleError is that of the rounds run.
+    bool gaveUp = false;
+    double expectedError = std::numeric_limits<double>::infinity();
 };
 
 /// Least-squares approximation of a polynomial curve by a spline of the same degree with a given
@@ -57,10 +64,11 @@ public:
     /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
-    /// rounds > 0 replaces the options' number of rounds. sampleError is infinite when the count
+    /// rounds > 0 replaces the options' number of rounds. A fit that cannot be expected to come
+    /// within giveUpAbove stops early (FreeKnotFit::gaveUp). sampleError is infinite when the count
     /// cannot keep the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
-                    int rounds = 0) const;
+                    int rounds = 0, double giveUpAbove = std::numeric_limits<double>::infinity()) const;
 
     const Curve& original() const { return original_; }
 
@@ -80,10 +88,14 @@ private:
         std::vector<double> spacing;
     };
     const Samples& samplesFor(std::size_t count) const;
+    static std::vector<double> spacingOf(const std::vector<double>& params);
 
     Curve original_;
     FreeKnotOptions options_;
-    mutable std::vector<Samples> samples_;  // by samples per original span, made when first needed
+
+    mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
+    mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by number
+    std::vector<glm::dvec3> forms_;                  // the original's span power forms (private to geom)
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
 };
