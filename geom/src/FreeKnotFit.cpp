@@ -48,8 +48,10 @@ struct FitRounds {
         for (int iteration = 0; iteration < iterations; ++iteration) {
             // Least squares on the samples at their current parameters, end points held.
             if (nf > 0) {
-                band.assign(nf * wb, 0.0);
-                rhs.assign(nf, glm::dvec3(0.0));
+                // The normal equations of every column, the held ones too (each sample adds to p+1
+                // neighbouring rows, no end cases); the held columns' terms then move to the right.
+                band.assign(count * wb, 0.0);
+                rhs.assign(count, glm::dvec3(0.0));
                 // Cox-de Boor's knot differences do not depend on the parameter: their reciprocals
                 // are made once per span, and the (ascending) parameters walk the spans forward.
                 const std::size_t triangle = p * (p + 1) / 2;
@@ -81,29 +83,22 @@ struct FitRounds {
                         }
                     }
                     const std::size_t c0 = span - p;
-                    if (c0 >= fixed && c0 + p + fixed < count) {
-                        // Every column free (most samples): no end terms.
-                        double* row = band.data() + (c0 - fixed) * wb;
-                        glm::dvec3* right = rhs.data() + (c0 - fixed);
-                        for (std::size_t x = 0; x <= p; ++x, row += wb) {
-                            const double wx = w * basis[x];
-                            right[x] += wx * targets[i];
-                            for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
-                        }
-                        continue;
-                    }
-                    glm::dvec3 target = targets[i];
-                    for (std::size_t c = 0; c <= p; ++c)
-                        if (c0 + c < fixed || c0 + c + fixed >= count) target -= basis[c] * points[c0 + c];
-                    for (std::size_t x = 0; x <= p; ++x) {
-                        const std::size_t cx = c0 + x;
-                        if (cx < fixed || cx + fixed >= count) continue;
-                        const std::size_t fx = cx - fixed;
-                        rhs[fx] += (w * basis[x]) * target;
-                        for (std::size_t y = x; y <= p && c0 + y + fixed < count; ++y)
-                            band[fx * wb + (y - x)] += w * basis[x] * basis[y];
+                    double* row = band.data() + c0 * wb;
+                    glm::dvec3* right = rhs.data() + c0;
+                    for (std::size_t x = 0; x <= p; ++x, row += wb) {
+                        const double wx = w * basis[x];
+                        right[x] += wx * targets[i];
+                        for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
                     }
                 }
+                for (std::size_t r = fixed; r < count - fixed; ++r)
+                    for (std::size_t c = 0; c < fixed; ++c) {
+                        if (r <= c + p) rhs[r] -= band[c * wb + (r - c)] * points[c];
+                        const std::size_t e = count - 1 - c;  // the held column at the far end
+                        if (e <= r + p) rhs[r] -= band[r * wb + (e - r)] * points[e];
+                    }
+                band.erase(band.begin(), band.begin() + static_cast<std::ptrdiff_t>(fixed * wb));
+                rhs.erase(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(fixed));
                 if (!detail::solveBanded(band, nf, p, rhs)) break;
                 for (std::size_t i = 0; i < nf; ++i) points[fixed + i] = rhs[i];
             }
