@@ -135,6 +135,9 @@ template <std::size_t P = 0>
 inline void spanPowerForm(std::size_t span, std::size_t degree, const double* knots, const glm::dvec3* points,
                           glm::dvec3* power) {
     const std::size_t p = P > 0 ? P : degree;
+    // The loops below are unrolled for the degrees fixed at compile time; the bound (callers
+    // take Basis.h above it) lets the compiler see that any degree stays inside the arrays.
+    if (p > smallDegree) return;
     static constexpr double binomial[smallDegree + 1][smallDegree + 1] = {{1},
                                                                           {1, 1},
                                                                           {1, 2, 1},
@@ -147,8 +150,10 @@ inline void spanPowerForm(std::size_t span, std::size_t degree, const double* kn
     // Bezier point k is the blossom at (a^(p-k), b^k): the levels taken at a are shared, so
     // state holds the de Boor triangle after r levels at a and each k finishes it at b.
     glm::dvec3 state[smallDegree + 1], d[smallDegree + 1], bezier[smallDegree + 1];
+#pragma GCC unroll 8
     for (std::size_t j = 0; j <= p; ++j) state[j] = points[span - p + j];
     auto level = [&](glm::dvec3* net, std::size_t l, double x) {
+#pragma GCC unroll 8
         for (std::size_t j = p; j >= l; --j) {
             const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
             const double alpha = (x - lo) / (hi - lo);
@@ -157,20 +162,28 @@ inline void spanPowerForm(std::size_t span, std::size_t degree, const double* kn
     };
     // The levels at b repeat for every r: their ratios are made once.
     double atB[smallDegree + 1][smallDegree + 1];
+#pragma GCC unroll 8
     for (std::size_t l = 1; l <= p; ++l)
+#pragma GCC unroll 8
         for (std::size_t j = p; j >= l; --j) {
             const double lo = knots[span - p + j], hi = knots[span + 1 + j - l];
             atB[l][j] = (b - lo) / (hi - lo);
         }
+#pragma GCC unroll 8
     for (std::size_t r = 0; r <= p; ++r) {
+#pragma GCC unroll 8
         for (std::size_t j = r; j <= p; ++j) d[j] = state[j];
+#pragma GCC unroll 8
         for (std::size_t l = r + 1; l <= p; ++l)
+#pragma GCC unroll 8
             for (std::size_t j = p; j >= l; --j) d[j] = (1.0 - atB[l][j]) * d[j - 1] + atB[l][j] * d[j];
         bezier[p - r] = d[p];
         if (r < p) level(state, r + 1, a);
     }
+#pragma GCC unroll 8
     for (std::size_t k = 0; k <= p; ++k) {
         glm::dvec3 sum(0.0);
+#pragma GCC unroll 8
         for (std::size_t j = 0; j <= k; ++j)
             sum += ((k - j) % 2 == 0 ? 1.0 : -1.0) * binomial[k][j] * bezier[j];
         power[k] = binomial[p][k] * sum;
