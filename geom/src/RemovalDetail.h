@@ -357,7 +357,8 @@ void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* 
         }
         const double s = (u - knots[span]) / (knots[span + 1] - knots[span]);
         glm::dvec3 c = form[P];
-        for (std::size_t k = P; k-- > 0;) c = c * s + form[k];
+#pragma GCC unroll 8
+        for (std::size_t k = P; k > 0; --k) c = c * s + form[k - 1];
         out[i] = c;
     }
 }
