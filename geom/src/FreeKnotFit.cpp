@@ -121,6 +121,9 @@ struct FitRounds {
                                                  &forms[span * (P + 1)]);
                 std::size_t span = p;
                 auto locate = [&](double u) {
+                    // Most samples stay in their span (then the walks below would not move).
+                    if (knots[span] <= u && u < knots[span + 1])
+                        return (u - knots[span]) / (knots[span + 1] - knots[span]);
                     while (span + 1 < count && !(u < knots[span + 1])) ++span;
                     while (span > p && (u < knots[span] || !(knots[span + 1] > knots[span]))) --span;
                     return (u - knots[span]) / (knots[span + 1] - knots[span]);
