@@ -139,14 +139,15 @@ struct FitRounds {
                             d1 = d1 * x + c;
                             c = c * x + form[e - 1];
                         }
+                        // The Newton step in the span's local parameter x, then scaled to u (one
+                        // division instead of five).
                         const double length = knots[span + 1] - knots[span];
-                        d1 /= length;
-                        d2 *= 2.0 / (length * length);
                         const glm::dvec3 r = c - targets[i];
-                        double hess = glm::dot(d1, d1) + glm::dot(r, d2);
-                        if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
+                        const double speed = glm::dot(d1, d1);
+                        double hess = speed + 2.0 * glm::dot(r, d2);
+                        if (hess <= 0.1 * speed) hess = speed;
                         if (hess > 0.0)
-                            s[i] = std::clamp(s[i] - glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
+                            s[i] = std::clamp(s[i] - length * glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
                                               std::min(b, s[i + 1]));
                     }
                     const double x = locate(s[i]);
