@@ -38,6 +38,16 @@ inline phigs::DrawList emptyScene() {
     return list;
 }
 
+/// A solid fill area over [x0, x1] x [y0, y1] at depth z, counter-clockwise seen from +z.
+inline phigs::DrawFillArea solidRectangle(double x0, double y0, double x1, double y1, double z,
+                                          glm::vec3 colour) {
+    phigs::DrawFillArea f;
+    f.contours = {{{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}}};
+    f.interior.style = phigs::InteriorStyle::Solid;
+    f.interior.colour = colour;
+    return f;
+}
+
 template <class Primitive>
 phigs::DrawItem item(Primitive primitive, int view = 0) {
     phigs::DrawItem i;

@@ -157,11 +157,7 @@ TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surfa
         list.lightSets.push_back(keyLights());
         // Near red square drawn first, far blue square second: with HLHSR the red one stays in front.
         auto square = [](double x, double z, glm::vec3 colour) {
-            DrawFillArea f;
-            f.contours = {{{x, 0.55, z}, {x + 0.3, 0.55, z}, {x + 0.3, 0.95, z}, {x, 0.95, z}}};
-            f.interior.style = InteriorStyle::Solid;
-            f.interior.colour = colour;
-            return f;
+            return solidRectangle(x, 0.55, x + 0.3, 0.95, z, colour);
         };
         list.items.push_back(item(square(0.05, 0.8, {1, 0.2f, 0.2f})));
         list.items.push_back(item(square(0.2, 0.3, {0.2f, 0.2f, 1})));
@@ -212,12 +208,8 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
         cue.colour = {0.1f, 0.1f, 0.1f};
         list.depthCues.push_back(cue);
         for (int k = 0; k < 5; ++k) {
-            DrawFillArea f;
             const double x = 0.05 + 0.18 * k, z = 1.0 - 0.2 * k;
-            f.contours = {{{x, 0.55, z}, {x + 0.15, 0.55, z}, {x + 0.15, 0.95, z}, {x, 0.95, z}}};
-            f.interior.style = InteriorStyle::Solid;
-            f.interior.colour = {1, 1, 1};
-            DrawItem i = item(f);
+            DrawItem i = item(solidRectangle(x, 0.55, x + 0.15, 0.95, z, {1, 1, 1}));
             i.depthCue = 0;
             list.items.push_back(i);
         }
@@ -329,10 +321,7 @@ TEST_CASE("transparency: a surface blends over what lies behind it, whatever the
         DrawList list = emptyScene();
         list.hiddenSurfaceRemoval = true;
         auto square = [](double x0, double x1, double z, glm::vec3 colour, float transparency) {
-            DrawFillArea f;
-            f.contours = {{{x0, 0.2, z}, {x1, 0.2, z}, {x1, 0.8, z}, {x0, 0.8, z}}};
-            f.interior.style = InteriorStyle::Solid;
-            f.interior.colour = colour;
+            DrawFillArea f = solidRectangle(x0, 0.2, x1, 0.8, z, colour);
             f.interior.properties.transparency = transparency;
             return f;
         };
