@@ -399,7 +399,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     std::vector<gpu::DrawParams> draws;
     // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
     std::vector<int> signatures;
-    // Each light set's first light in the frame block's light array (see uploadFrame).
+    // Each light set's first light in the frame block's light array: the sets packed in order
+    // (uploadFrame packs them so).
     std::vector<int> firstLights;
     int nextLight = 0;
     for (const auto& set : list.lightSets) {
@@ -605,7 +606,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
 
     drawBytes_.resize(draws.size() * sizeof(gpu::DrawParams));
     if (!draws.empty()) std::memcpy(drawBytes_.data(), draws.data(), drawBytes_.size());
-    uploadFrame(list, extent);
+    uploadFrame(list, extent, firstLights);
     uploadDraws();
     // With hidden-surface removal, transparent draws come after every opaque one (in traversal
     // order among themselves), so what lies behind them is there to show through.
@@ -630,7 +631,7 @@ glm::vec2 Renderer::clipPlaneRange(const DrawItem& item, std::size_t index) {
     return glm::vec2(float(first), float(item.modelClipPlanes.size()));
 }
 
-void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
+void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights) {
     const WorkstationMapping mapping(list, extent.width, extent.height);
     gpu::Frame f{};
     const DrawView defaultView;
@@ -646,9 +647,9 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent) {
         f.views[v].clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
                                     view.clipFront ? 1.0f : 0.0f);
     }
-    int next = 0;
     for (std::size_t s = 0; s < list.lightSets.size() && s < std::size_t(gpu::kMaxLightSets); ++s) {
-        const int first = next;
+        const int first = firstLights[s];
+        int next = first;
         for (const Light& light : list.lightSets[s]) {
             if (next >= gpu::kMaxLights)
                 throw std::invalid_argument("Renderer: more than " + std::to_string(gpu::kMaxLights) +

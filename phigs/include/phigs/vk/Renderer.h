@@ -80,7 +80,8 @@ private:
 
     VkPipeline pipeline(std::uint64_t key);
     void createDescriptors();
-    void uploadFrame(const DrawList& list, VkExtent2D extent);
+    /// Writes the frame block; firstLights[s] is where light set s starts in its light array.
+    void uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights);
     void uploadDraws();
     /// Where item `index`'s model clipping planes sit in the frame block (first, count); equal
     /// plane sets share one run.
