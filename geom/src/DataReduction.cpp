@@ -723,7 +723,17 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     fo.warmIterations = std::max(1, o.freeKnotIterations / 2);
     fo.ends = o.ends;
     const FreeKnotFitter fitter(curve, fo);
-    const CurveDeviationMeter meter(curve, measureDensity);
+    // Made for the first candidate measured: its spans are sampled 4 * measureDensity times each,
+    // and the original as densely in parameter (at least twice per span, at most measureDensity
+    // times): many more original samples (an original of many spans reduced to few) would only
+    // repeat what the candidate's samples already pin down.
+    std::optional<CurveDeviationMeter> meter;
+    auto spansOf = [](const Curve& c) {
+        std::size_t spans = 0;
+        for (std::size_t j = static_cast<std::size_t>(c.degree); j < c.points.size(); ++j)
+            spans += c.knots[j + 1] > c.knots[j] ? 1 : 0;
+        return std::max<std::size_t>(spans, 1);
+    };
 
     // The original's most significant knots (by removal weight), kept, fit a refined curve whose
     // few knots that matter are where the p-th derivative jumps (equidistribution cannot hit
@@ -763,14 +773,23 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // cannot come within 1.2 times the pass gives up early (FreeKnotFit::gaveUp).
     const double target = std::log(0.97 * o.tolerance);
     const double giveUp = 1.2 * 0.99 * o.tolerance;
+    // A probe expected to pass so easily that the model has the count two below it pass too
+    // stops early (FreeKnotFit::overshot): it will not be the one the search ends on. That
+    // needs the count two below to be still open (above the largest failure); a count that
+    // overshot once is fitted in full if probed again.
+    auto stopBelow = [&](std::size_t n, std::size_t fail) {
+        if (n < p + 3 || n - 2 <= fail) return 0.0;
+        return 0.97 * o.tolerance * std::pow(double(n - 2 - p) / double(n - p), double(p + 1));
+    };
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
         const std::size_t none = out.curve.points.size();  // no fit below it is needed
         std::size_t pass = none, fail = lowest - 1;
         double logC = std::log(1e-3 * fitter.predictedError(p + 1));
         std::vector<double> previousKnots;  // the last fit's, whose knot density starts the next
         std::vector<std::optional<FreeKnotFit>> passed(none + 1);  // by count, on samples
-        std::vector<bool> failed(none + 1, false);
+        std::vector<bool> failed(none + 1, false), overshot(none + 1, false);
         bool firstUsed = false;
+        enum class Probe { passes, fails, overshoots };
         auto probe = [&](std::size_t n) {
             FreeKnotFit f;
             if (n == first && !firstUsed) {
@@ -778,16 +797,20 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
                 firstUsed = true;
             } else {
                 ++out.fits;
-                f = fitter.fit(n, previousKnots, true, 0, giveUp);
+                f = fitter.fit(n, previousKnots, true, 0, giveUp, overshot[n] ? 0.0 : stopBelow(n, fail));
             }
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
-            // A fit that gave up calibrates the model with the error it would have reached.
-            const double reached = f.gaveUp ? f.expectedError : f.sampleError;
+            // A fit that stopped early calibrates the model with the error it would have reached.
+            const double reached = f.gaveUp || f.overshot ? f.expectedError : f.sampleError;
             if (std::isfinite(reached) && reached > 0.0)
                 logC = std::log(reached) + double(p + 1) * std::log(double(n - p));
-            if (!(f.sampleError <= 0.99 * o.tolerance)) return false;
+            if (f.overshot) {
+                overshot[n] = true;
+                return Probe::overshoots;
+            }
+            if (!(f.sampleError <= 0.99 * o.tolerance)) return Probe::fails;
             passed[n] = std::move(f);
-            return true;
+            return Probe::passes;
         };
         auto next = [&] {
             const double want = double(p) + std::exp((logC - target) / double(p + 1));
@@ -796,7 +819,9 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         };
         for (std::size_t n = first < pass ? first : next();;) {
             for (; pass > fail + 1; n = next()) {
-                const bool ok = probe(n);
+                const Probe result = probe(n);
+                if (result == Probe::overshoots) continue;
+                const bool ok = result == Probe::passes;
                 (ok ? pass : fail) = n;
                 failed[n] = !ok;
                 // The error model, calibrated on this fit, predicts the count below fails too:
@@ -813,7 +838,13 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
             Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
             // The fit's few spans are sampled four times as densely: a fit may turn sharply
             // between samples where the original does not.
-            const CurveDeviation d = meter.measure(candidate, f.map, 4 * measureDensity);
+            if (!meter) {
+                const std::size_t wanted = 4 * static_cast<std::size_t>(measureDensity) * spansOf(candidate);
+                const std::size_t spans = spansOf(curve);
+                meter.emplace(curve, static_cast<int>(std::clamp<std::size_t>((wanted + spans - 1) / spans, 2,
+                                                                              std::size_t(measureDensity))));
+            }
+            const CurveDeviation d = meter->measure(candidate, f.map, 4 * measureDensity);
             if (d.maxError <= o.tolerance) {
                 out.curve = std::move(candidate);
                 out.deviation = d;
@@ -836,7 +867,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     };
     const std::size_t first = guess();
     ++out.fits;
-    FreeKnotFit moved = fitter.fit(first, {}, true, 0, giveUp);
+    FreeKnotFit moved = fitter.fit(first, {}, true, 0, giveUp, stopBelow(first, lowest - 1));
     ++out.fits;
     refined = fitter.fit(first, significant(first), false, 2).sampleError <= 45.0 * moved.sampleError;
     search(first, std::move(moved));

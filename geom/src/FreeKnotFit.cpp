@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -17,6 +18,26 @@ namespace {
 
 // About the factor by which Lawson's rounds lower a fit's sample error (see FreeKnotFit::gaveUp).
 constexpr double lawsonGain = 0.8;
+
+// The p+1 non-zero B-splines at u in the span whose knots start at t[0] = t_span (Cox-de Boor,
+// with the reciprocals of the knot differences it divides by made once per span: inverse holds
+// them level by level). P > 0 fixes the degree at compile time, P = 0 takes it from degree.
+template <std::size_t P>
+inline void spanBasis(const double* t, const double* inverse, double u, double* n, std::size_t degree = P) {
+    const std::size_t p = P > 0 ? P : degree;
+    n[0] = 1.0;
+#pragma GCC unroll 6
+    for (std::size_t j = 1; j <= p; ++j) {
+        double saved = 0.0;
+#pragma GCC unroll 6
+        for (std::size_t r = 0; r < j; ++r, ++inverse) {
+            const double temp = n[r] * *inverse;
+            n[r] = saved + (t[r + 1] - u) * temp;
+            saved = (u - t[1 + r - j]) * temp;
+        }
+        n[j] = saved;
+    }
+}
 
 // The rounds of one fit (FreeKnotFitter::fit): P > 0 is the degree fixed at compile time, so that
 // the loops over the p+1 basis functions unroll; P = 0 takes any degree (degree).
@@ -30,8 +51,8 @@ struct FitRounds {
     std::size_t count, k;  // control points, interior knots held at each end
     double a, b, lo, hi;   // the domain, and the part of it the free knots take
     bool moveKnots;
-    int iterations;
-    double giveUpAbove;
+    int iterations, movingRounds;
+    double giveUpAbove, stopBelow;
 
     template <std::size_t P>
     void run(FreeKnotFit& out) {
@@ -39,13 +60,24 @@ struct FitRounds {
         const std::size_t m = params.size(), free = count - p - 1 - 2 * k, gaps = free + 1;
         const double minGap = 0.05 * (hi - lo) / double(gaps);
         std::vector<double> s = params, lawson(m, 1.0), error(m, 0.0), basisStore(P > 0 ? 0 : p + 1);
-        double basisFixed[P + 1];
-        double* basis = P > 0 ? basisFixed : basisStore.data();
+        double* basis = basisStore.data();
         const std::size_t nf = count - 2 * fixed, wb = p + 1;
         std::vector<double> band, inverse, gapError(gaps), h(gaps);
         std::vector<glm::dvec3> rhs, forms(P > 0 ? count * (P + 1) : 0);
+        std::vector<double> reciprocal(P > 0 ? count : 0);  // of each span's length
         detail::SplineSampler fitted(degree, knots, points.data(), count, true);
+        // Every sample's span and basis values, kept from a round that moved neither the knots
+        // nor the parameters for the next (P > 0).
+        std::vector<std::size_t> spanOf(P > 0 ? m : 0);
+        std::vector<double> basisOf(P > 0 ? m * (P + 1) : 0);
+        bool basisKept = false;
         for (int iteration = 0; iteration < iterations; ++iteration) {
+            // Lawson's rounds on fixed knots barely move the parameters (the knot-moving rounds
+            // have corrected them): only the last two correct them again, and the others, with
+            // the samples' basis values unchanged, reuse them. The same counts on the reference
+            // curves, a third of the work of those rounds.
+            const bool lawsonRound = moveKnots && iteration >= movingRounds;
+            const bool stepParams = !lawsonRound || iteration == movingRounds || iteration + 2 >= iterations;
             // Least squares on the samples at their current parameters, end points held.
             if (nf > 0) {
                 // The normal equations of every column, the held ones too (each sample adds to p+1
@@ -56,7 +88,7 @@ struct FitRounds {
                 // are made once per span, and the (ascending) parameters walk the spans forward.
                 const std::size_t triangle = p * (p + 1) / 2;
                 inverse.assign(count * triangle, 0.0);
-                for (std::size_t span = p; span < count; ++span)
+                for (std::size_t span = p; span < count && !(P > 0 && basisKept); ++span)
                     for (std::size_t j = 1, at = span * triangle; j <= p; ++j)
                         for (std::size_t r = 0; r < j; ++r, ++at) {
                             const double d = knots[span + r + 1] - knots[span + 1 + r - j];
@@ -65,36 +97,47 @@ struct FitRounds {
                 std::size_t span = p;
                 for (std::size_t i = 0; i < m; ++i) {
                     const double w = spacing[i] * lawson[i];
-                    while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
-                    while (span > p && s[i] < knots[span]) --span;
-                    if (w == 0.0) continue;
-                    {
-                        const double u = s[i];
-                        const double* inv = inverse.data() + span * triangle;
-                        basis[0] = 1.0;
-                        // The short loops over the p+1 basis functions are unrolled (P fixed at
-                        // compile time; -O2 does not unroll them by itself): 13-16% of the fit.
-#pragma GCC unroll 6
-                        for (std::size_t j = 1; j <= p; ++j) {
-                            double saved = 0.0;
-#pragma GCC unroll 6
-                            for (std::size_t r = 0; r < j; ++r, ++inv) {
-                                const double temp = basis[r] * *inv;
-                                basis[r] = saved + (knots[span + r + 1] - u) * temp;
-                                saved = (u - knots[span + 1 + r - j]) * temp;
-                            }
-                            basis[j] = saved;
-                        }
+                    if (P > 0 && basisKept) {
+                        span = spanOf[i];
+                    } else {
+                        while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
+                        while (span > p && s[i] < knots[span]) --span;
+                        if constexpr (P > 0) spanOf[i] = span;
                     }
+                    if (w == 0.0) continue;
                     const std::size_t c0 = span - p;
                     double* row = band.data() + c0 * wb;
                     glm::dvec3* right = rhs.data() + c0;
+                    if constexpr (P > 0) {
+                        // In locals, which the band's stores cannot alias: the loops over the p+1
+                        // basis functions then stay in registers (P fixed at compile time; -O2
+                        // does not unroll them by itself).
+                        std::array<double, P + 1> n;
+                        double* kept = &basisOf[i * (P + 1)];
+                        if (basisKept) {
 #pragma GCC unroll 6
-                    for (std::size_t x = 0; x <= p; ++x, row += wb) {
-                        const double wx = w * basis[x];
-                        right[x] += wx * targets[i];
+                            for (std::size_t x = 0; x <= P; ++x) n[x] = kept[x];
+                        } else {
+                            spanBasis<P>(knots.data() + span, inverse.data() + span * triangle, s[i],
+                                         n.data());
 #pragma GCC unroll 6
-                        for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
+                            for (std::size_t x = 0; x <= P; ++x) kept[x] = n[x];
+                        }
+                        const glm::dvec3 q = targets[i];
+#pragma GCC unroll 6
+                        for (std::size_t x = 0; x <= P; ++x, row += wb) {
+                            const double wx = w * n[x];
+                            right[x] += wx * q;
+#pragma GCC unroll 6
+                            for (std::size_t y = x; y <= P; ++y) row[y - x] += wx * n[y];
+                        }
+                    } else {
+                        spanBasis<0>(knots.data() + span, inverse.data() + span * triangle, s[i], basis, p);
+                        for (std::size_t x = 0; x <= p; ++x, row += wb) {
+                            const double wx = w * basis[x];
+                            right[x] += wx * targets[i];
+                            for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
+                        }
                     }
                 }
                 for (std::size_t r = fixed; r < count - fixed; ++r)
@@ -116,40 +159,21 @@ struct FitRounds {
             if constexpr (P > 0) {
                 // Every span's power form, and the ascending parameters walk the spans.
                 for (std::size_t span = p; span < count; ++span)
-                    if (knots[span + 1] > knots[span])
+                    if (knots[span + 1] > knots[span]) {
                         detail::spanPowerForm<P>(span, P, knots.data(), points.data(),
                                                  &forms[span * (P + 1)]);
+                        reciprocal[span] = 1.0 / (knots[span + 1] - knots[span]);
+                    }
                 std::size_t span = p;
                 auto locate = [&](double u) {
                     // Most samples stay in their span (then the walks below would not move).
-                    if (knots[span] <= u && u < knots[span + 1])
-                        return (u - knots[span]) / (knots[span + 1] - knots[span]);
-                    while (span + 1 < count && !(u < knots[span + 1])) ++span;
-                    while (span > p && (u < knots[span] || !(knots[span + 1] > knots[span]))) --span;
-                    return (u - knots[span]) / (knots[span + 1] - knots[span]);
-                };
-                for (std::size_t i = 0; i < m; ++i) {
-                    if (i > 0 && i + 1 < m) {
-                        const double x = locate(s[i]);
-                        const glm::dvec3* form = &forms[span * (P + 1)];
-                        glm::dvec3 c = form[P], d1(0.0), d2(0.0);
-#pragma GCC unroll 6
-                        for (std::size_t e = P; e > 0; --e) {
-                            d2 = d2 * x + d1;
-                            d1 = d1 * x + c;
-                            c = c * x + form[e - 1];
-                        }
-                        // The Newton step in the span's local parameter x, then scaled to u (one
-                        // division instead of five).
-                        const double length = knots[span + 1] - knots[span];
-                        const glm::dvec3 r = c - targets[i];
-                        const double speed = glm::dot(d1, d1);
-                        double hess = speed + 2.0 * glm::dot(r, d2);
-                        if (hess <= 0.1 * speed) hess = speed;
-                        if (hess > 0.0)
-                            s[i] = std::clamp(s[i] - length * glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
-                                              std::min(b, s[i + 1]));
+                    if (!(knots[span] <= u && u < knots[span + 1])) {
+                        while (span + 1 < count && !(u < knots[span + 1])) ++span;
+                        while (span > p && (u < knots[span] || !(knots[span + 1] > knots[span]))) --span;
                     }
+                    return (u - knots[span]) * reciprocal[span];
+                };
+                for (std::size_t i = 0; i < m && !stepParams; ++i) {
                     const double x = locate(s[i]);
                     const glm::dvec3* form = &forms[span * (P + 1)];
                     glm::dvec3 c = form[P];
@@ -158,11 +182,54 @@ struct FitRounds {
                     error[i] = glm::length(c - targets[i]);
                     worst = std::max(worst, error[i]);
                 }
+                for (std::size_t i = 0; i < m && stepParams; ++i) {
+                    // The span's polynomial in its local parameter, re-expanded about the sample's
+                    // (Taylor coefficients taylor[e] = C^(e) / e!, by repeated synthetic division):
+                    // the Newton step needs the first three, and the point after the step, while
+                    // it stays in the span, is their polynomial in the step (no second locate).
+                    const double x = locate(s[i]);
+                    glm::dvec3 taylor[P + 1];
+                    const glm::dvec3* form = &forms[span * (P + 1)];
+#pragma GCC unroll 6
+                    for (std::size_t e = 0; e <= P; ++e) taylor[e] = form[e];
+#pragma GCC unroll 6
+                    for (std::size_t level = 0; level < P; ++level)
+#pragma GCC unroll 6
+                        for (std::size_t e = P - 1; e + 1 > level; --e) taylor[e] += x * taylor[e + 1];
+                    double step = 0.0;  // in the local parameter
+                    if (i > 0 && i + 1 < m) {
+                        const glm::dvec3 r = taylor[0] - targets[i];
+                        const double speed = glm::dot(taylor[1], taylor[1]);
+                        double hess = speed + 2.0 * glm::dot(r, taylor[2 <= P ? 2 : P]);
+                        if (hess <= 0.1 * speed) hess = speed;
+                        if (hess > 0.0) {
+                            const double length = knots[span + 1] - knots[span];
+                            const double u = std::clamp(s[i] - length * glm::dot(r, taylor[1]) / hess,
+                                                        std::max(a, s[i - 1]), std::min(b, s[i + 1]));
+                            step = (u - s[i]) * reciprocal[span];
+                            s[i] = u;
+                        }
+                    }
+                    glm::dvec3 c;
+                    if (x + step >= 0.0 && x + step <= 1.0) {
+                        c = taylor[P];
+#pragma GCC unroll 6
+                        for (std::size_t e = P; e > 0; --e) c = c * step + taylor[e - 1];
+                    } else {
+                        const double moved = locate(s[i]);
+                        form = &forms[span * (P + 1)];
+                        c = form[P];
+#pragma GCC unroll 6
+                        for (std::size_t e = P; e > 0; --e) c = c * moved + form[e - 1];
+                    }
+                    error[i] = glm::length(c - targets[i]);
+                    worst = std::max(worst, error[i]);
+                }
             } else {
                 fitted.restart();
                 for (std::size_t i = 0; i < m; ++i) {
                     glm::dvec3 c, d1, d2;
-                    if (i > 0 && i + 1 < m) {
+                    if (stepParams && i > 0 && i + 1 < m) {
                         fitted.derivatives(s[i], c, d1, d2);
                         const glm::dvec3 r = c - targets[i];
                         double hess = glm::dot(d1, d1) + glm::dot(r, d2);
@@ -175,6 +242,7 @@ struct FitRounds {
                     worst = std::max(worst, error[i]);
                 }
             }
+            basisKept = P > 0 && nf > 0 && !stepParams && lawsonRound;
             if (worst < out.sampleError) {
                 out.sampleError = worst;
                 out.curve.degree = degree;
@@ -185,17 +253,22 @@ struct FitRounds {
             if (!(worst > 0.0) || iteration + 1 == iterations) break;
             // The first round on the final knots: Lawson's rounds will lower its error by about a
             // fifth (0.77-0.83 on the reference curves).
-            if (moveKnots && 2 * iteration >= iterations &&
-                std::min(out.sampleError, lawsonGain * worst) > giveUpAbove) {
-                out.gaveUp = true;
-                out.expectedError = std::min(out.sampleError, lawsonGain * worst);
-                break;
+            // A fit expected to come below stopBelow (a smaller count would do) stops there too;
+            // Lawson's gain is that of all its rounds, so only the first is judged by it.
+            if (moveKnots && iteration >= movingRounds) {
+                const double expected = std::min(out.sampleError, lawsonGain * worst);
+                const bool first = iteration == movingRounds;
+                if (expected > giveUpAbove || (first && expected < stopBelow)) {
+                    (expected > giveUpAbove ? out.gaveUp : out.overshot) = true;
+                    out.expectedError = expected;
+                    break;
+                }
             }
 
             // The first half moves the knots on plain least squares (Lawson weights made for other
             // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
             // weights grow where the error is large, towards the equioscillating best max-norm fit.
-            if (moveKnots && 2 * iteration < iterations) {
+            if (moveKnots && iteration < movingRounds) {
                 std::fill(lawson.begin(), lawson.end(), 1.0);
             } else {
                 double sum = 0.0;
@@ -300,10 +373,11 @@ const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) con
                                   out.points.data(), &forms_);
         out.spacing = spacingOf(out.params);
     }
-    // Fewer than one sample per original span: every few of the original's knots (a fit of few
-    // spans to an original of many).
+    // Where whole samples per original span would give many more than wanted, every few of them
+    // (a fit of few spans to an original of many; 2 per span for 1.1 wanted would double the
+    // fit's work).
     const std::size_t wanted = static_cast<std::size_t>(options_.samplesPerFitSpan) * count;
-    if (perSpan > 1 || wanted + 1 >= out.params.size()) return out;
+    if (4 * out.params.size() <= 5 * (wanted + 1)) return out;
     Samples& fewer = sparse_[wanted];
     if (!fewer.params.empty()) return fewer;
     const std::size_t last = out.params.size() - 1;
@@ -359,7 +433,7 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
 }
 
 FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
-                                int rounds, double giveUpAbove) const {
+                                int rounds, double giveUpAbove, double stopBelow) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
@@ -399,7 +473,10 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                   rounds > 0 ? rounds
                   : warm     ? options_.warmIterations
                              : options_.iterations,
-                  giveUpAbove};
+                  0,
+                  giveUpAbove,
+                  stopBelow};
+    run.movingRounds = (run.iterations + 1) / 2;
     for (std::size_t i = 0; i < fixed; ++i) {
         run.points[i] = original_.points[i];
         run.points[count - 1 - i] = original_.points[n0 - 1 - i];

@@ -42,6 +42,9 @@ struct FreeKnotFit {
     /// Lawson's rounds (expectedError: 0.8 of that round's, or the best round's if lower) was
     /// above the caller's giveUpAbove; sampleError is that of the rounds run.
     bool gaveUp = false;
+    /// The same stop where that expected error was below the caller's stopBelow (a smaller
+    /// count would do).
+    bool overshot = false;
     double expectedError = std::numeric_limits<double>::infinity();
 };
 
@@ -65,10 +68,12 @@ public:
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
     /// rounds > 0 replaces the options' number of rounds. A fit that cannot be expected to come
-    /// within giveUpAbove stops early (FreeKnotFit::gaveUp). sampleError is infinite when the count
+    /// within giveUpAbove stops early (FreeKnotFit::gaveUp), and so does one expected to come
+    /// below stopBelow (FreeKnotFit::overshot). sampleError is infinite when the count
     /// cannot keep the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
-                    int rounds = 0, double giveUpAbove = std::numeric_limits<double>::infinity()) const;
+                    int rounds = 0, double giveUpAbove = std::numeric_limits<double>::infinity(),
+                    double stopBelow = 0.0) const;
 
     const Curve& original() const { return original_; }
 
@@ -94,7 +99,7 @@ private:
     FreeKnotOptions options_;
 
     mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
-    mutable std::map<std::size_t, Samples> sparse_;  // fewer than one per original span, by number
+    mutable std::map<std::size_t, Samples> sparse_;  // every few of those, by number
     std::vector<glm::dvec3> forms_;                  // the original's span power forms (private to geom)
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
