@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <optional>
 #include <string>
@@ -92,17 +93,22 @@ template <class Global>
 std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
                                     const std::vector<double>& seeds, Global&& global,
                                     const std::vector<glm::dvec3>* toForms = nullptr) {
-    std::vector<glm::dvec3> b(seeds.size());
-    detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(), seeds, b.data(),
-                              toForms);
     std::optional<detail::SplineSampler> sampler;
     if (toForms)
         sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), *toForms);
     else
         sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), true);
     detail::SplineSampler& toSampler = *sampler;
+    // The bounds |a_i - to(seed_i)|, the curve evaluated a chunk at a time (no array of points
+    // as long as the samples').
     std::vector<double> out(seeds.size());
-    for (std::size_t i = 0; i < seeds.size(); ++i) out[i] = glm::length(a[i] - b[i]);
+    std::array<glm::dvec3, 256> chunk;
+    for (std::size_t start = 0; start < seeds.size(); start += chunk.size()) {
+        const std::size_t n = std::min(chunk.size(), seeds.size() - start);
+        detail::evaluateAscending(to.degree, to.knots, to.points.data(), to.points.size(),
+                                  std::span<const double>(seeds).subspan(start, n), chunk.data(), toForms);
+        for (std::size_t k = 0; k < n; ++k) out[start + k] = glm::length(a[start + k] - chunk[k]);
+    }
     double worst = 0.0;
     auto measure = [&](std::size_t i) {
         double d = detail::newtonDistance(toSampler, a[i], seeds[i], out[i]);
@@ -112,14 +118,19 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
     };
     // The largest bounds first give a maximum close to the final one; every other sample is
     // measured only where its bound exceeds the maximum so far (no sample skipped can reach it).
-    std::vector<std::size_t> order(out.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    const std::size_t head = std::min<std::size_t>(order.size(), 16);
-    auto larger = [&](std::size_t x, std::size_t y) { return out[x] > out[y]; };
-    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(head), order.end(), larger);
-    for (std::size_t k = 0; k < head && out[order[k]] > worst; ++k) measure(order[k]);
-    for (std::size_t k = head; k < order.size(); ++k)
-        if (out[order[k]] > worst) measure(order[k]);
+    // A sample measured has out[i] <= worst from then on, so the pass over all of them skips it.
+    constexpr std::size_t head = 16;
+    std::array<std::size_t, head> largest{};
+    std::size_t kept = 0;  // largest[0, kept) by descending bound
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        if (kept == head && !(out[i] > out[largest[head - 1]])) continue;
+        std::size_t at = kept < head ? kept++ : head - 1;
+        for (; at > 0 && out[largest[at - 1]] < out[i]; --at) largest[at] = largest[at - 1];
+        largest[at] = i;
+    }
+    for (std::size_t k = 0; k < kept && out[largest[k]] > worst; ++k) measure(largest[k]);
+    for (std::size_t i = 0; i < out.size(); ++i)
+        if (out[i] > worst) measure(i);
     return out;
 }
 
@@ -224,6 +235,9 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
                                 int samplesPerSpan) {
     if (samplesPerSpan < 1) throw GeometryError("spanSamples: samplesPerSpan must be at least 1");
     std::vector<double> out;
+    out.reserve((count - std::min<std::size_t>(count, static_cast<std::size_t>(degree))) *
+                    static_cast<std::size_t>(samplesPerSpan) +
+                1);
     for (std::size_t i = static_cast<std::size_t>(degree); i < count; ++i) {
         const double a = knots[i], b = knots[i + 1];
         if (!(b > a)) continue;
