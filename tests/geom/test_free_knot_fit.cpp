@@ -10,6 +10,8 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <limits>
+
 using namespace geom;
 
 namespace {
@@ -151,6 +153,28 @@ TEST_CASE("a free-knot fit that cannot reach the caller's bound gives up after i
     // A bound it can reach lets it run all its rounds, to the same fit.
     const FreeKnotFit reached = fitter.fit(30, {}, true, 0, 10.0 * full.sampleError);
     REQUIRE_FALSE(reached.gaveUp);
+    REQUIRE(reached.sampleError == full.sampleError);
+}
+
+TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops after its knot-moving rounds",
+          "[geom][knots][freeknots]") {
+    const Curve c = nacaAirfoilCurve();
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    const FreeKnotFit full = fitter.fit(30);
+    // A stopBelow above the error expected after Lawson's rounds: the fit overshoots (a smaller
+    // count would do) and stops on its first round on the final knots, less converged.
+    const FreeKnotFit early =
+        fitter.fit(30, {}, true, 0, std::numeric_limits<double>::infinity(), 10.0 * full.sampleError);
+    REQUIRE(early.overshot);
+    REQUIRE_FALSE(early.gaveUp);
+    REQUIRE(early.curve.points.size() == 30);
+    REQUIRE(early.sampleError >= full.sampleError);
+    REQUIRE(early.expectedError <= early.sampleError);
+    REQUIRE(early.expectedError < 10.0 * full.sampleError);
+    // One below what it can reach: all its rounds, to the same fit as without the bound.
+    const FreeKnotFit reached =
+        fitter.fit(30, {}, true, 0, std::numeric_limits<double>::infinity(), 0.1 * full.sampleError);
+    REQUIRE_FALSE(reached.overshot);
     REQUIRE(reached.sampleError == full.sampleError);
 }
 
