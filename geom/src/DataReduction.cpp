@@ -718,7 +718,6 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return out;
     }
     FreeKnotOptions fo;
-    fo.samplesPerSpan = o.samplesPerSpan;
     fo.iterations = o.freeKnotIterations;
     fo.warmIterations = std::max(1, o.freeKnotIterations / 2);
     fo.ends = o.ends;

@@ -14,11 +14,10 @@ namespace geom {
 
 /// How a free-knot fit runs: sampling density, iterations and the end conditions it keeps.
 struct FreeKnotOptions {
-    /// Samples per non-empty knot span of the original curve, at most; a fit of n control points
-    /// takes about samplesPerFitSpan samples per span of its own (where that is less than one per
-    /// original span, every few of the original's knots).
-    int samplesPerSpan = 8;
-    int samplesPerFitSpan = 12;
+    /// A fit of n control points samples the original samplesPerFitSpan * n times, spread along
+    /// it as the starting knots are (by the estimated |C^(p+1)|^(1/(p+1))), so that every span of
+    /// the fit gets about that many.
+    int samplesPerFitSpan = 10;
     /// Fit / correct / move rounds per fit (the best round is kept); a fit started from given
     /// knots (converged for another count) takes warmIterations.
     int iterations = 16;
@@ -98,9 +97,8 @@ private:
     Curve original_;
     FreeKnotOptions options_;
 
-    mutable std::vector<Samples> samples_;           // by samples per original span, made when first needed
-    mutable std::map<std::size_t, Samples> sparse_;  // every few of those, by number
-    std::vector<glm::dvec3> forms_;                  // the original's span power forms (private to geom)
+    mutable std::map<std::size_t, Samples> samples_;  // by number, made when first needed
+    std::vector<glm::dvec3> forms_;                   // the original's span power forms (private to geom)
     std::vector<double> density_;
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
 };
