@@ -799,7 +799,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
                 firstUsed = true;
             } else {
                 ++out.fits;
-                f = fitter.fit(n, previousKnots, true, 0, giveUp, overshot[n] ? 0.0 : stopBelow(n, fail));
+                f = fitter.fit(n, previousKnots, true, 0,
+                               FreeKnotStops{giveUp, overshot[n] ? 0.0 : stopBelow(n, fail)});
             }
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
             // A fit that stopped early calibrates the model with the error it would have reached.
@@ -871,7 +872,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     };
     const std::size_t first = guess();
     ++out.fits;
-    FreeKnotFit moved = fitter.fit(first, {}, true, 0, giveUp, stopBelow(first, lowest - 1));
+    FreeKnotFit moved = fitter.fit(first, {}, true, 0, FreeKnotStops{giveUp, stopBelow(first, lowest - 1)});
     ++out.fits;
     refined = fitter.fit(first, significant(first), false, 2).sampleError <= 45.0 * moved.sampleError;
     search(first, std::move(moved));

@@ -16,7 +16,8 @@ namespace geom {
 
 namespace {
 
-// About the factor by which Lawson's rounds lower a fit's sample error (see FreeKnotFit::gaveUp).
+// About the factor by which Lawson's rounds lower the error of a fit's first round on its final
+// knots (FreeKnotStops; 0.77-0.93 on the reference curves).
 constexpr double lawsonGain = 0.8;
 
 // The p+1 non-zero B-splines at u in the span whose knots start at t[0] = t_span (Cox-de Boor,
@@ -252,9 +253,8 @@ struct FitRounds {
             }
             if (!(worst > 0.0) || iteration + 1 == iterations) break;
             // The first round on the final knots: Lawson's rounds will lower its error by about a
-            // fifth (0.77-0.83 on the reference curves).
-            // A fit expected to come below stopBelow (a smaller count would do) stops there too;
-            // Lawson's gain is that of all its rounds, so only the first is judged by it.
+            // fifth (lawsonGain). A fit expected to come below stopBelow (a smaller count would do) stops
+            // there too; Lawson's gain is that of all its rounds, so only the first is judged by it.
             if (moveKnots && iteration >= movingRounds) {
                 const double expected = std::min(out.sampleError, lawsonGain * worst);
                 const bool first = iteration == movingRounds;
@@ -434,7 +434,7 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
 }
 
 FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
-                                int rounds, double giveUpAbove, double stopBelow) const {
+                                int rounds, const FreeKnotStops& stops) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
@@ -475,8 +475,8 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                   : warm     ? options_.warmIterations
                              : options_.iterations,
                   0,
-                  giveUpAbove,
-                  stopBelow};
+                  stops.giveUpAbove,
+                  stops.stopBelow};
     run.movingRounds = (run.iterations + 1) / 2;
     for (std::size_t i = 0; i < fixed; ++i) {
         run.points[i] = original_.points[i];

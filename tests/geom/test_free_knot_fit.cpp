@@ -145,7 +145,7 @@ TEST_CASE("a free-knot fit that cannot reach the caller's bound gives up after i
     REQUIRE_FALSE(full.gaveUp);
     // Any bound below the error expected after Lawson's rounds stops it on its first round on
     // the final knots: a real fit (its sample error a distance to it), only less converged.
-    const FreeKnotFit early = fitter.fit(30, {}, true, 0, 0.1 * full.sampleError);
+    const FreeKnotFit early = fitter.fit(30, {}, true, 0, FreeKnotStops{0.1 * full.sampleError});
     REQUIRE(early.gaveUp);
     REQUIRE(early.curve.points.size() == 30);
     REQUIRE(early.sampleError >= full.sampleError);
@@ -156,7 +156,7 @@ TEST_CASE("a free-knot fit that cannot reach the caller's bound gives up after i
         measureDeviation(c, Curve(early.curve.degree, early.curve.knots, early.curve.points), 8, early.map);
     REQUIRE(std::isfinite(d.maxError));
     // A bound it can reach lets it run all its rounds, to the same fit.
-    const FreeKnotFit reached = fitter.fit(30, {}, true, 0, 10.0 * full.sampleError);
+    const FreeKnotFit reached = fitter.fit(30, {}, true, 0, FreeKnotStops{10.0 * full.sampleError});
     REQUIRE_FALSE(reached.gaveUp);
     REQUIRE(reached.sampleError == full.sampleError);
 }
@@ -168,8 +168,8 @@ TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops a
     const FreeKnotFit full = fitter.fit(30);
     // A stopBelow above the error expected after Lawson's rounds: the fit overshoots (a smaller
     // count would do) and stops on its first round on the final knots, less converged.
-    const FreeKnotFit early =
-        fitter.fit(30, {}, true, 0, std::numeric_limits<double>::infinity(), 10.0 * full.sampleError);
+    const FreeKnotFit early = fitter.fit(
+        30, {}, true, 0, FreeKnotStops{std::numeric_limits<double>::infinity(), 10.0 * full.sampleError});
     REQUIRE(early.overshot);
     REQUIRE_FALSE(early.gaveUp);
     REQUIRE(early.curve.points.size() == 30);
@@ -177,8 +177,8 @@ TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops a
     REQUIRE(early.expectedError <= early.sampleError);
     REQUIRE(early.expectedError < 10.0 * full.sampleError);
     // One below what it can reach: all its rounds, to the same fit as without the bound.
-    const FreeKnotFit reached =
-        fitter.fit(30, {}, true, 0, std::numeric_limits<double>::infinity(), 0.1 * full.sampleError);
+    const FreeKnotFit reached = fitter.fit(
+        30, {}, true, 0, FreeKnotStops{std::numeric_limits<double>::infinity(), 0.1 * full.sampleError});
     REQUIRE_FALSE(reached.overshot);
     REQUIRE(reached.sampleError == full.sampleError);
 }

@@ -27,6 +27,15 @@ struct FreeKnotOptions {
     EndConditions ends;
 };
 
+/// Where a free-knot fit may stop early, judged at its first round on the final knots by the
+/// error expected after Lawson's rounds (0.8 of that round's, or the best round's if lower).
+struct FreeKnotStops {
+    /// Give up where the expected error is above this (FreeKnotFit::gaveUp).
+    double giveUpAbove = std::numeric_limits<double>::infinity();
+    /// Stop where it is below this: a smaller count would do (FreeKnotFit::overshot).
+    double stopBelow = 0.0;
+};
+
 /// A free-knot fit of one control point count, with its sample error.
 struct FreeKnotFit {
     Curve curve;
@@ -38,8 +47,8 @@ struct FreeKnotFit {
     /// for measureDeviation's parameter map.
     ParameterMap map;
     /// The fit stopped at its first round on the final knots, where the error expected after
-    /// Lawson's rounds (expectedError: 0.8 of that round's, or the best round's if lower) was
-    /// above the caller's giveUpAbove; sampleError is that of the rounds run.
+    /// Lawson's rounds (expectedError, FreeKnotStops) was above the caller's giveUpAbove;
+    /// sampleError is that of the rounds run.
     bool gaveUp = false;
     /// The same stop where that expected error was below the caller's stopBelow (a smaller
     /// count would do).
@@ -66,13 +75,10 @@ public:
     /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
-    /// rounds > 0 replaces the options' number of rounds. A fit that cannot be expected to come
-    /// within giveUpAbove stops early (FreeKnotFit::gaveUp), and so does one expected to come
-    /// below stopBelow (FreeKnotFit::overshot). sampleError is infinite when the count
-    /// cannot keep the end conditions.
+    /// rounds > 0 replaces the options' number of rounds. A fit may stop early (stops). sampleError
+    /// is infinite when the count cannot keep the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
-                    int rounds = 0, double giveUpAbove = std::numeric_limits<double>::infinity(),
-                    double stopBelow = 0.0) const;
+                    int rounds = 0, const FreeKnotStops& stops = {}) const;
 
     const Curve& original() const { return original_; }
 
