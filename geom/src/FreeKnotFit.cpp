@@ -360,8 +360,10 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     for (std::size_t j = p; j < n0; ++j) density_[j] = mean > 0.0 ? std::max(density_[j], 0.2 * mean) : 1.0;
 }
 
-const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count) const {
-    const std::size_t wanted = static_cast<std::size_t>(options_.samplesPerFitSpan) * count;
+const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count, int samplesPerFitSpan) const {
+    const std::size_t wanted =
+        static_cast<std::size_t>(samplesPerFitSpan > 0 ? samplesPerFitSpan : options_.samplesPerFitSpan) *
+        count;
     Samples& out = samples_[wanted];
     if (!out.params.empty()) return out;
     // The original's parameters at equal steps of the density's integral, as the starting knots
@@ -434,11 +436,13 @@ std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
 }
 
 FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
-                                int rounds, const FreeKnotStops& stops) const {
+                                int rounds, const FreeKnotStops& stops, int samplesPerFitSpan) const {
     const int degree = original_.degree;
     const std::size_t p = static_cast<std::size_t>(degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives), fixed = k + 1;
     FreeKnotFit out;
+    if (samplesPerFitSpan < 0)
+        throw GeometryError("FreeKnotFitter::fit: samplesPerFitSpan must not be negative");
     if (count < p + 1 || count < 2 * fixed || count - p - 1 < 2 * k || count > n0) return out;
     if (k > 0 && !(original_.knots[p + k] < original_.knots[n0 - k])) return out;
     std::vector<double> knots = initialKnots(count);
@@ -457,7 +461,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
             knots[p + k + i] = q[j] + (at - double(j)) * (q[j + 1] - q[j]);
         }
     }
-    const Samples& data = samplesFor(count);
+    const Samples& data = samplesFor(count, samplesPerFitSpan);
     FitRounds run{data.params,
                   data.points,
                   data.spacing,

@@ -212,6 +212,9 @@ TEST_CASE("a free-knot fit's samples are spread like its knots, about samplesPer
         INFO("samples per fit span " << fewest << " to " << most);
         REQUIRE(fewest >= 5);
         REQUIRE(most <= 25);
+        // The caller's density instead of the options'.
+        REQUIRE(fitter.fit(t.count, {}, true, 2, {}, 4).map.from.size() == 4 * t.count + 1);
+        REQUIRE_THROWS_AS(fitter.fit(t.count, {}, true, 2, {}, -1), GeometryError);
     }
 }
 

@@ -75,10 +75,11 @@ public:
     /// given, else from knots spread by the original's (p+1)-th derivative. With moveKnots false
     /// the knots stay where they start (every round corrects parameters and reweights), for
     /// start knots that are already right, e.g. the original's most significant ones.
-    /// rounds > 0 replaces the options' number of rounds. A fit may stop early (stops). sampleError
-    /// is infinite when the count cannot keep the end conditions.
+    /// rounds > 0 replaces the options' number of rounds, samplesPerFitSpan > 0 the options'
+    /// samples. A fit may stop early (stops). sampleError is infinite when the count cannot keep
+    /// the end conditions.
     FreeKnotFit fit(std::size_t count, std::span<const double> startKnots = {}, bool moveKnots = true,
-                    int rounds = 0, const FreeKnotStops& stops = {}) const;
+                    int rounds = 0, const FreeKnotStops& stops = {}, int samplesPerFitSpan = 0) const;
 
     const Curve& original() const { return original_; }
 
@@ -97,7 +98,7 @@ private:
         std::vector<glm::dvec3> points;
         std::vector<double> spacing;
     };
-    const Samples& samplesFor(std::size_t count) const;
+    const Samples& samplesFor(std::size_t count, int samplesPerFitSpan) const;
     static std::vector<double> spacingOf(const std::vector<double>& params);
 
     Curve original_;
