@@ -74,9 +74,9 @@ struct FitRounds {
         bool basisKept = false;
         for (int iteration = 0; iteration < iterations; ++iteration) {
             // Lawson's rounds on fixed knots barely move the parameters (the knot-moving rounds
-            // have corrected them): only the last two correct them again, and the others, with
-            // the samples' basis values unchanged, reuse them. The same counts on the reference
-            // curves, a third of the work of those rounds.
+            // have corrected them): only the first (after the last knot move; it is also the one
+            // FreeKnotStops judges) and the last two correct them again, and the others, with the
+            // samples' basis values unchanged, reuse them (the same counts on the reference curves).
             const bool lawsonRound = moveKnots && iteration >= movingRounds;
             const bool stepParams = !lawsonRound || iteration == movingRounds || iteration + 2 >= iterations;
             // Least squares on the samples at their current parameters, end points held.
