@@ -176,7 +176,7 @@ TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops a
     REQUIRE(early.sampleError >= full.sampleError);
     REQUIRE(early.expectedError <= early.sampleError);
     REQUIRE(early.expectedError < 10.0 * full.sampleError);
-    // One below what it can reach: all its rounds, to the same fit as without the bound.
+    // A stopBelow it does not come under: all its rounds, to the same fit as without one.
     const FreeKnotFit reached = fitter.fit(
         30, {}, true, 0, FreeKnotStops{std::numeric_limits<double>::infinity(), 0.1 * full.sampleError});
     REQUIRE_FALSE(reached.overshot);
