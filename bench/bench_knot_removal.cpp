@@ -97,8 +97,8 @@ int main(int argc, char** argv) {
             geom::CurveReduction b;
             const double bms = timeMs([&] { b = geom::reduceCurve(c.curve, ob); }, 3);
             std::printf("%-8s %8.1e | %6zu %10.3e %9.3f | %6zu %10.3e %9.3f | %6.2f | %6zu %10.3e %9.3f\n",
-                        c.name, tol, r.curve.points.size(), gerr, ms, s.points.size(), serr,
-                        sms, ratio, b.curve.points.size(), b.deviation.maxError, bms);
+                        c.name, tol, r.curve.points.size(), gerr, ms, s.points.size(), serr, sms, ratio,
+                        b.curve.points.size(), b.deviation.maxError, bms);
             char key[64];
             std::snprintf(key, sizeof key, "%s_tol%.1e", c.name, tol);
             const std::string k = key;
