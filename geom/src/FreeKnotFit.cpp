@@ -486,23 +486,7 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         run.points[i] = original_.points[i];
         run.points[count - 1 - i] = original_.points[n0 - 1 - i];
     }
-    switch (p) {
-        case 2:
-            run.run<2>(out);
-            break;
-        case 3:
-            run.run<3>(out);
-            break;
-        case 4:
-            run.run<4>(out);
-            break;
-        case 5:
-            run.run<5>(out);
-            break;
-        default:
-            run.run<0>(out);
-            break;
-    }
+    detail::withFixedDegree(p, [&](auto compiled) { run.run<compiled()>(out); });
     if (out.curve.points.empty()) out.sampleError = std::numeric_limits<double>::infinity();
     out.map.from = data.params;
     return out;

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace geom::detail {
@@ -126,6 +127,24 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
 // The largest degree the span power forms below take; higher degrees use Basis.h.
 constexpr std::size_t smallDegree = 7;
 
+// Calls f(std::integral_constant<std::size_t, P>{}) with P = degree for the common degrees
+// (2-5), whose loops the callers' templates unroll, and P = 0 (any degree) for the others.
+template <class F>
+inline void withFixedDegree(std::size_t degree, F&& f) {
+    switch (degree) {
+        case 2:
+            return f(std::integral_constant<std::size_t, 2>{});
+        case 3:
+            return f(std::integral_constant<std::size_t, 3>{});
+        case 4:
+            return f(std::integral_constant<std::size_t, 4>{});
+        case 5:
+            return f(std::integral_constant<std::size_t, 5>{});
+        default:
+            return f(std::integral_constant<std::size_t, 0>{});
+    }
+}
+
 // The polynomial of one non-empty span in powers of s = (u - knots[span]) / (span length): the
 // Bezier points are blossoms (de Boor with a or b at each level), then the power coefficients
 // are their binomial differences. Horner on these is several times cheaper than Cox-de Boor
@@ -193,23 +212,7 @@ inline void spanPowerForm(std::size_t span, std::size_t degree, const double* kn
 // spanPowerForm with the common degrees fixed at compile time (the same arithmetic, unrolled).
 inline void spanPowerFormAnyDegree(std::size_t span, std::size_t p, const double* knots,
                                    const glm::dvec3* points, glm::dvec3* power) {
-    switch (p) {
-        case 2:
-            spanPowerForm<2>(span, p, knots, points, power);
-            break;
-        case 3:
-            spanPowerForm<3>(span, p, knots, points, power);
-            break;
-        case 4:
-            spanPowerForm<4>(span, p, knots, points, power);
-            break;
-        case 5:
-            spanPowerForm<5>(span, p, knots, points, power);
-            break;
-        default:
-            spanPowerForm(span, p, knots, points, power);
-            break;
-    }
+    withFixedDegree(p, [&](auto fixed) { spanPowerForm<fixed()>(span, p, knots, points, power); });
 }
 
 // Values and derivatives of one polynomial spline (degree, knots, count coefficients, which
@@ -381,20 +384,14 @@ inline void evaluateAscending(int degree, const std::vector<double>& knots, cons
                               std::size_t count, std::span<const double> params, glm::dvec3* out,
                               const std::vector<glm::dvec3>* forms = nullptr) {
     const glm::dvec3* given = forms && !forms->empty() ? forms->data() : nullptr;
-    switch (degree) {
-        case 2:
-            return evaluateAscendingFixed<2>(knots, points, count, params, out, given);
-        case 3:
-            return evaluateAscendingFixed<3>(knots, points, count, params, out, given);
-        case 4:
-            return evaluateAscendingFixed<4>(knots, points, count, params, out, given);
-        case 5:
-            return evaluateAscendingFixed<5>(knots, points, count, params, out, given);
-        default:
-            break;
-    }
-    SplineSampler sampler(degree, knots, points, count);
-    for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
+    withFixedDegree(static_cast<std::size_t>(degree), [&](auto fixed) {
+        if constexpr (fixed() > 0) {
+            evaluateAscendingFixed<fixed()>(knots, points, count, params, out, given);
+        } else {
+            SplineSampler sampler(degree, knots, points, count);
+            for (std::size_t i = 0; i < params.size(); ++i) out[i] = sampler.value(params[i]);
+        }
+    });
 }
 
 // The distance from target to a polynomial spline found by Newton from parameter u, never more

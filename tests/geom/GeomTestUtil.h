@@ -1,6 +1,7 @@
 #pragma once
 
 #include "geom/Curve.h"
+#include "geom/KnotInsertion.h"
 #include "geom/Surface.h"
 
 #include <glm/vec3.hpp>
@@ -47,6 +48,20 @@ inline geom::Curve randomCurve(std::mt19937& rng, int degree, std::size_t count,
         if (rational) wts.push_back(w(rng));
     }
     return geom::Curve(degree, randomKnots(rng, degree, count, clamped), pts, wts);
+}
+
+/// A smooth curve of degree p with many knots: a random clamped curve of p+3 control points,
+/// refined with `extra` knots and its interior points then disturbed by up to `noise`, so that
+/// reduction has real work to do.
+inline geom::Curve noisyRefinedCurve(std::mt19937& rng, int p, std::size_t extra, double noise) {
+    const geom::Curve base = randomCurve(rng, p, static_cast<std::size_t>(p + 3), false, true);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
+    std::vector<double> inserted;
+    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(0.02 + 0.96 * unit(rng));
+    geom::Curve c = geom::refineKnots(base, inserted);
+    for (std::size_t i = 1; i + 1 < c.points.size(); ++i)
+        c.points[i] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+    return c;
 }
 
 inline geom::Surface randomSurface(std::mt19937& rng, int p, int q, std::size_t nu, std::size_t nv,

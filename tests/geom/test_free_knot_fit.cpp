@@ -16,17 +16,7 @@ using namespace geom;
 
 namespace {
 
-// A random curve with few control points, refined with `extra` knots and disturbed by `noise`.
-Curve noisyRefinedCurve(std::mt19937& rng, int p, std::size_t extra, double noise) {
-    const Curve base = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 3), false, true);
-    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
-    std::vector<double> inserted;
-    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(0.02 + 0.96 * unit(rng));
-    Curve c = refineKnots(base, inserted);
-    for (std::size_t i = 1; i + 1 < c.points.size(); ++i)
-        c.points[i] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
-    return c;
-}
+using geomtest::noisyRefinedCurve;
 
 // The free interior knots (all but `kept` at each end) strictly increase.
 void requireStrictInterior(const Curve& c, std::size_t kept = 0) {

@@ -17,18 +17,7 @@ using namespace geom;
 
 namespace {
 
-// A smooth curve of degree p with many knots: a random curve with few control points, refined
-// with `extra` knots and then disturbed by `noise`, so that reduction has real work to do.
-Curve noisyRefinedCurve(std::mt19937& rng, int p, std::size_t extra, double noise) {
-    const Curve base = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p + 3), false, true);
-    std::uniform_real_distribution<double> unit(0.0, 1.0), jitter(-noise, noise);
-    std::vector<double> inserted;
-    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(0.02 + 0.96 * unit(rng));
-    Curve c = refineKnots(base, inserted);
-    for (std::size_t i = 1; i + 1 < c.points.size(); ++i)
-        c.points[i] += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
-    return c;
-}
+using geomtest::noisyRefinedCurve;
 
 Surface noisyRefinedSurface(std::mt19937& rng, int p, int q, std::size_t extra, double noise) {
     const Surface base = geomtest::bumpySurface(rng, p, q, static_cast<std::size_t>(p + 2),
