@@ -79,6 +79,28 @@ CurveDeviation measureDeviationByProjection(const Curve& original, const Curve& 
     return summary(distancesTo(reduced, a, pa), distancesTo(original, b, pb));
 }
 
+// A sampler of c that keeps every span's power form: the given forms (detail::powerForms of c),
+// or made as the spans are first used.
+void emplaceSampler(std::optional<detail::SplineSampler>& sampler, const Curve& c,
+                    const std::vector<glm::dvec3>* forms) {
+    if (forms)
+        sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), *forms);
+    else
+        sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), true);
+}
+
+// The index in [first, last) of the point nearest to q (first where the range is empty).
+std::size_t nearestOf(const std::vector<glm::dvec3>& points, std::size_t first, std::size_t last,
+                      const glm::dvec3& q) {
+    std::size_t nearest = first;
+    double nearestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = first; k < last; ++k) {
+        const double e = glm::dot(points[k] - q, points[k] - q);
+        if (e < nearestDistance) nearestDistance = e, nearest = k;
+    }
+    return nearest;
+}
+
 // Distances from samples of `from` (at ascending params) to `to`, two polynomial curves on one
 // domain; seeds[i] is a parameter of `to` near from(params[i]) (params itself for the plain
 // measurement). |from(t) - to(seed)| is the distance to a point of `to`, so it bounds the closest
@@ -94,10 +116,7 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
                                     const std::vector<double>& seeds, Global&& global,
                                     const std::vector<glm::dvec3>* toForms = nullptr) {
     std::optional<detail::SplineSampler> sampler;
-    if (toForms)
-        sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), *toForms);
-    else
-        sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size(), true);
+    emplaceSampler(sampler, to, toForms);
     detail::SplineSampler& toSampler = *sampler;
     // The bounds |a_i - to(seed_i)|, the curve evaluated a chunk at a time (no array of points
     // as long as the samples').
@@ -146,12 +165,7 @@ struct ProjectorStep {
     double operator()(const glm::dvec3& q, double d) {
         if (!projector) projector.emplace(to);
         d = std::min(d, projector->closestPoint(q).distance);
-        std::size_t nearest = 0;
-        double nearestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < toPoints.size(); ++k) {
-            const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
-            if (e < nearestDistance) nearestDistance = e, nearest = k;
-        }
+        const std::size_t nearest = nearestOf(toPoints, 0, toPoints.size(), q);
         if (!sampler) sampler.emplace(to.degree, to.knots, to.points.data(), to.points.size());
         return std::min(d, detail::newtonDistance(*sampler, q, toParams[nearest], d));
     }
@@ -170,10 +184,7 @@ struct SpanStep {
     SpanStep(const Curve& c, const std::vector<double>& params, const std::vector<glm::dvec3>& points,
              const CurveDeviationMeter::SpanBoxes& b, const std::vector<glm::dvec3>* forms = nullptr)
         : to(c), toParams(params), toPoints(points), boxes(b) {
-        if (forms)
-            sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), *forms);
-        else
-            sampler.emplace(c.degree, c.knots, c.points.data(), c.points.size(), true);
+        emplaceSampler(sampler, c, forms);
     }
 
     static bool fartherThan(const glm::dvec3& low, const glm::dvec3& high, const glm::dvec3& q, double d) {
@@ -190,12 +201,7 @@ struct SpanStep {
                 continue;
             }
             if (fartherThan(boxes.low[s], boxes.high[s], q, d)) continue;
-            std::size_t nearest = boxes.first[s];
-            double nearestDistance = std::numeric_limits<double>::infinity();
-            for (std::size_t k = boxes.first[s]; k < boxes.last[s]; ++k) {
-                const double e = glm::dot(toPoints[k] - q, toPoints[k] - q);
-                if (e < nearestDistance) nearestDistance = e, nearest = k;
-            }
+            const std::size_t nearest = nearestOf(toPoints, boxes.first[s], boxes.last[s], q);
             if (nearest < toParams.size())
                 d = std::min(d, detail::newtonDistance(*sampler, q, toParams[nearest], d));
         }
