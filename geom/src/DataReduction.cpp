@@ -780,6 +780,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         if (n < p + 3 || n - 2 <= fail) return 0.0;
         return 0.97 * o.tolerance * std::pow(double(n - 2 - p) / double(n - p), double(p + 1));
     };
+    // A probe just above the largest failure ends the search if it passes: it stops at its first
+    // round within 0.95 of the tolerance (FreeKnotStops::passAt), the margin for the meter
+    // (within 0.99 it missed the meter on the I-beam at 1e-4 and cost a point).
+    const double passAt = 0.95 * o.tolerance;
     auto search = [&](std::size_t first, FreeKnotFit firstFit) {
         const std::size_t none = out.curve.points.size();  // no fit below it is needed
         std::size_t pass = none, fail = lowest - 1;
@@ -800,7 +804,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
             } else {
                 ++out.fits;
                 f = fitter.fit(n, previousKnots, true, 0,
-                               FreeKnotStops{giveUp, overshot[n] ? 0.0 : stopBelow(n, fail)});
+                               FreeKnotStops{giveUp, overshot[n] ? 0.0 : stopBelow(n, fail),
+                                             n == fail + 1 ? passAt : 0.0});
             }
             if (!f.curve.knots.empty()) previousKnots = f.curve.knots;
             // A fit that stopped early calibrates the model with the error it would have reached.

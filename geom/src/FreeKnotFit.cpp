@@ -53,17 +53,18 @@ struct FitRounds {
     double a, b, lo, hi;   // the domain, and the part of it the free knots take
     bool moveKnots;
     int iterations, movingRounds;
-    double giveUpAbove, stopBelow;
+    double settledMove, lawsonSettled;
+    double giveUpAbove, stopBelow, passAt;
+    std::vector<char> pinned;  // by free knot: stays where it starts (empty: none)
 
     template <std::size_t P>
     void run(FreeKnotFit& out) {
         const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree), fixed = k + 1;
         const std::size_t m = params.size(), free = count - p - 1 - 2 * k, gaps = free + 1;
-        const double minGap = 0.05 * (hi - lo) / double(gaps);
         std::vector<double> s = params, lawson(m, 1.0), error(m, 0.0), basisStore(P > 0 ? 0 : p + 1);
         double* basis = basisStore.data();
         const std::size_t nf = count - 2 * fixed, wb = p + 1;
-        std::vector<double> band, inverse, gapError(gaps), h(gaps);
+        std::vector<double> band, inverse, gapError(gaps), h(gaps), before;
         std::vector<glm::dvec3> rhs, forms(P > 0 ? count * (P + 1) : 0);
         std::vector<double> reciprocal(P > 0 ? count : 0);  // of each span's length
         detail::SplineSampler fitted(degree, knots, points.data(), count, true);
@@ -72,6 +73,7 @@ struct FitRounds {
         std::vector<std::size_t> spanOf(P > 0 ? m : 0);
         std::vector<double> basisOf(P > 0 ? m * (P + 1) : 0);
         bool basisKept = false;
+        double previousWorst = std::numeric_limits<double>::infinity();
         for (int iteration = 0; iteration < iterations; ++iteration) {
             // Lawson's rounds on fixed knots barely move the parameters (the knot-moving rounds
             // have corrected them): only the first (after the last knot move; it is also the one
@@ -244,6 +246,7 @@ struct FitRounds {
                 }
             }
             basisKept = P > 0 && nf > 0 && !stepParams && lawsonRound;
+            out.rounds = iteration + 1;
             if (worst < out.sampleError) {
                 out.sampleError = worst;
                 out.curve.degree = degree;
@@ -251,7 +254,16 @@ struct FitRounds {
                 out.curve.points = points;
                 out.map.to = s;
             }
-            if (!(worst > 0.0) || iteration + 1 == iterations) break;
+            if (!(worst > 0.0) || iteration + 1 == iterations || worst <= passAt) break;
+            // Lawson's rounds end where one no longer pays (it lowered the error by less than
+            // lawsonSettled): the rest, the last two's parameter correction included, would gain
+            // as little.
+            if (lawsonRound) {
+                if (lawsonSettled > 0.0 && iteration > movingRounds && iteration + 2 < iterations &&
+                    worst > (1.0 - lawsonSettled) * previousWorst)
+                    break;
+                previousWorst = worst;
+            }
             // The first round on the final knots: Lawson's rounds will lower its error by about a
             // fifth (lawsonGain). A fit expected to come below stopBelow (a smaller count would do) stops
             // there too; Lawson's gain is that of all its rounds, so only the first is judged by it.
@@ -289,18 +301,43 @@ struct FitRounds {
                 gapError[gap] = std::max(gapError[gap], error[i]);
             }
             if (free == 0) continue;
-            double total = 0.0;
             for (std::size_t gap = 0; gap < gaps; ++gap) {
                 const double width = knots[p + k + gap + 1] - knots[p + k + gap];
                 const double e = std::max(gapError[gap], 1e-3 * worst);
                 // Half the full step, at most 1.5 times wider: the full step overshoots and oscillates.
                 h[gap] = width * std::clamp(std::pow(worst / e, 0.5 / double(p + 1)), 1.0, 1.5);
-                total += h[gap];
             }
-            double at = lo;
-            for (std::size_t gap = 0; gap + 1 < gaps; ++gap) {
-                at += std::max(h[gap] * (hi - lo) / total, minGap);
-                knots[p + k + 1 + gap] = std::min(at, hi - minGap * double(gaps - 1 - gap));
+            // Each run of knots between two that stay (or the domain's ends) spreads over its
+            // interval by its own gaps' steps.
+            before.assign(knots.begin() + static_cast<std::ptrdiff_t>(p + k),
+                          knots.begin() + static_cast<std::ptrdiff_t>(p + k + free + 2));
+            auto knotAt = [&](std::size_t i) { return i == 0 ? lo : i > free ? hi : knots[p + k + i]; };
+            for (std::size_t from = 0, to = 1; to <= free + 1; ++to) {
+                if (to <= free && (pinned.empty() || !pinned[to - 1])) continue;
+                // Free knots from + 1 .. to - 1 (1-based, lo and hi at 0 and free + 1), gaps from .. to - 1.
+                const double start = knotAt(from), length = knotAt(to) - start;
+                double sum = 0.0;
+                for (std::size_t gap = from; gap < to; ++gap) sum += h[gap];
+                const double minimum = 0.05 * length / double(to - from);
+                double at = start;
+                for (std::size_t gap = from; gap + 1 < to; ++gap) {
+                    at += std::max(h[gap] * length / sum, minimum);
+                    knots[p + k + 1 + gap] = std::min(at, start + length - minimum * double(to - 1 - gap));
+                }
+                from = to;
+            }
+            // Knots that have settled (on average a round moves them by less than settledMove of
+            // their nearer neighbour's distance) end the knot-moving rounds; Lawson's rounds follow.
+            double moved = 0.0;
+            std::size_t moving = 0;
+            for (std::size_t i = 1; i <= free; ++i) {
+                const double near = std::min(before[i] - before[i - 1], before[i + 1] - before[i]);
+                if ((pinned.empty() || !pinned[i - 1]) && near > 0.0)
+                    moved += std::abs(knots[p + k + i] - before[i]) / near, ++moving;
+            }
+            if (moved < settledMove * double(moving) && iteration + 1 < movingRounds) {
+                iterations -= movingRounds - (iteration + 1);
+                movingRounds = iteration + 1;
             }
         }
     }
@@ -322,6 +359,8 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
         throw GeometryError("FreeKnotFitter: iterations and warmIterations must be at least 1");
     if (options.ends.fixedDerivatives < 0)
         throw GeometryError("FreeKnotFitter: fixedDerivatives must be non-negative");
+    if (!(options.pinShare >= 0.0) || !(options.settledMove >= 0.0) || !(options.lawsonSettled >= 0.0))
+        throw GeometryError("FreeKnotFitter: pinShare, settledMove and lawsonSettled must be non-negative");
 
     // The best knots for an l-infinity spline fit put h_i proportional to |f^(p+1)|^(-1/(p+1)).
     // The original's p-th derivative is constant on each span (p! a_p / h^p for the span's power
@@ -410,29 +449,136 @@ double FreeKnotFitter::predictedError(std::size_t count) const {
     return std::pow(densityIntegral_ / double(count - p), double(p + 1));
 }
 
-std::vector<double> FreeKnotFitter::initialKnots(std::size_t count) const {
+FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::span<const double> startKnots,
+                                                        bool pin) const {
     const std::size_t p = static_cast<std::size_t>(original_.degree), n0 = original_.points.size();
     const std::size_t k = static_cast<std::size_t>(options_.ends.fixedDerivatives);
     const std::vector<double>& t = original_.knots;
-    std::vector<double> knots(count + p + 1);
+    KnotLayout out;
+    std::vector<double>& knots = out.knots;
+    knots.resize(count + p + 1);
     for (std::size_t i = 0; i <= p; ++i) knots[i] = t[p], knots[count + i] = t[n0];
     for (std::size_t i = 0; i < k; ++i) knots[p + 1 + i] = t[p + 1 + i], knots[count - k + i] = t[n0 - k + i];
     const double lo = t[p + k], hi = t[n0 - k];
     const std::size_t free = count - p - 1 - 2 * k;
-    // The density's integral over [lo, hi], inverted at equal steps.
-    auto clipped = [&](std::size_t j) { return std::max(0.0, std::min(hi, t[j + 1]) - std::max(lo, t[j])); };
-    double total = 0.0;
-    for (std::size_t j = p; j < n0; ++j) total += density_[j] * clipped(j);
-    double below = 0.0;
-    std::size_t j = p;
-    for (std::size_t i = 1; i <= free; ++i) {
-        const double goal = total * double(i) / double(free + 1);
-        while (j + 1 < n0 && below + density_[j] * clipped(j) < goal) below += density_[j] * clipped(j), ++j;
-        const double start = std::max(lo, t[j]);
-        const double along = density_[j] > 0.0 ? (goal - below) / density_[j] : 0.0;
-        knots[p + k + i] = std::clamp(start + along, lo, hi);
+    auto clipped = [&](std::size_t j, double from, double to) {
+        return std::max(0.0, std::min(to, t[j + 1]) - std::max(from, t[j]));
+    };
+    auto integral = [&](double from, double to) {
+        double sum = 0.0;
+        for (std::size_t j = p; j < n0; ++j) sum += density_[j] * clipped(j, from, to);
+        return sum;
+    };
+    const double total = integral(lo, hi);
+
+    // The original's spans that the density gives at least pinShare of a knot each (raised where
+    // their knots would be more than the fit has): their end knots, with their multiplicity,
+    // stay.
+    std::vector<char> hot(n0, 0);
+    std::vector<double> pins;
+    for (double share = options_.pinShare; pin && share > 0.0 && total > 0.0; share *= 1.25) {
+        pins.clear();
+        std::vector<double> ends;
+        for (std::size_t j = p; j < n0; ++j) {
+            const double length = clipped(j, lo, hi);
+            hot[j] = length > 0.0 && double(free + 1) * density_[j] * length / total >= share;
+            if (!hot[j]) continue;
+            if (ends.empty() || ends.back() != t[j]) ends.push_back(t[j]);
+            ends.push_back(t[j + 1]);
+        }
+        for (std::size_t i = p + 1; i < n0; ++i)
+            if (t[i] > lo && t[i] < hi && std::binary_search(ends.begin(), ends.end(), t[i]))
+                pins.push_back(t[i]);
+        if (pins.size() <= free) break;
     }
-    return knots;
+    if (pins.empty()) std::fill(hot.begin(), hot.end(), 0);
+
+    // The free knots go to the intervals between pinned knots (and lo, hi), except the pinned
+    // spans, by the density's share (largest remainders), each spread like the start knots
+    // inside it where there are any, else at equal steps of the density's integral.
+    std::vector<double> anchors{lo};
+    for (double v : pins)
+        if (v != anchors.back()) anchors.push_back(v);
+    if (anchors.back() != hi) anchors.push_back(hi);
+    auto pinnedSpan = [&](std::size_t a) {  // anchors a, a + 1 bound a pinned span of the original
+        const std::size_t j =
+            static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), anchors[a]) - t.begin()) - 1;
+        return j < n0 && hot[j] && t[j + 1] == anchors[a + 1];
+    };
+    struct Interval {
+        double from, to, weight;
+        std::size_t knots = 0;
+        double remainder = 0.0;
+    };
+    std::vector<Interval> intervals;
+    for (std::size_t a = 0; a + 1 < anchors.size(); ++a)
+        if (!pinnedSpan(a))
+            intervals.push_back({anchors[a], anchors[a + 1], integral(anchors[a], anchors[a + 1])});
+    const std::size_t movable = free - pins.size();
+    double weights = 0.0;
+    for (const Interval& in : intervals) weights += in.weight;
+    std::size_t given = 0;
+    for (Interval& in : intervals) {
+        const double exact = weights > 0.0 ? double(movable) * in.weight / weights : 0.0;
+        in.knots = static_cast<std::size_t>(exact);
+        in.remainder = exact - double(in.knots);
+        given += in.knots;
+    }
+    // (No interval is left only where every span is pinned, and then no knot either: the fit
+    // has as many as the original.)
+    for (; given < movable && !intervals.empty(); ++given) {
+        Interval& most =
+            *std::max_element(intervals.begin(), intervals.end(),
+                              [](const Interval& x, const Interval& y) { return x.remainder < y.remainder; });
+        ++most.knots, most.remainder = -1.0;
+    }
+
+    // Start knots from a count whose pins differ (they change with the count) would spread wrongly
+    // around these (the bump at 1e-4 started from them fit 42 points to 3.8e-4, from the density
+    // to 9.7e-5): with pins, the start is kept only where it has every pin and no knot inside a
+    // pinned span.
+    bool compatible = true;
+    for (double v : pins)
+        compatible = compatible && std::binary_search(startKnots.begin(), startKnots.end(), v);
+    for (std::size_t a = 0; compatible && a + 1 < anchors.size(); ++a)
+        if (pinnedSpan(a)) {
+            const auto inside = std::upper_bound(startKnots.begin(), startKnots.end(), anchors[a]);
+            compatible = inside == startKnots.end() || !(*inside < anchors[a + 1]);
+        }
+    if (!pins.empty() && !compatible) startKnots = {};
+    std::vector<double> placed;
+    std::size_t nextPin = 0;
+    for (const Interval& in : intervals) {
+        while (nextPin < pins.size() && pins[nextPin] <= in.from)
+            placed.push_back(pins[nextPin++]), out.pinned.push_back(1);
+        // Start knots inside: quantiles of a knot density, knot j of m at fraction j / (m + 1);
+        // the new ones are read off at i / (knots + 1), linearly.
+        std::vector<double> q{in.from};
+        for (double v : startKnots)
+            if (v > in.from && v < in.to) q.push_back(v);
+        q.push_back(in.to);
+        const std::size_t inside = q.size() - 2;
+        double below = 0.0;
+        std::size_t j = p;
+        for (std::size_t i = 1; i <= in.knots; ++i) {
+            if (inside > 0) {
+                const double at = double(i) * double(inside + 1) / double(in.knots + 1);
+                const std::size_t m = std::min(static_cast<std::size_t>(at), inside);
+                placed.push_back(q[m] + (at - double(m)) * (q[m + 1] - q[m]));
+            } else {
+                const double goal = in.weight * double(i) / double(in.knots + 1);
+                while (j + 1 < n0 && below + density_[j] * clipped(j, in.from, in.to) < goal)
+                    below += density_[j] * clipped(j, in.from, in.to), ++j;
+                const double along = density_[j] > 0.0 ? (goal - below) / density_[j] : 0.0;
+                placed.push_back(std::clamp(std::max(in.from, t[j]) + along, in.from, in.to));
+            }
+            out.pinned.push_back(0);
+        }
+    }
+    while (nextPin < pins.size()) placed.push_back(pins[nextPin++]), out.pinned.push_back(1);
+    std::copy(placed.begin(), placed.end(), knots.begin() + static_cast<std::ptrdiff_t>(p + k + 1));
+    if (pins.empty()) out.pinned.clear();
+    return out;
 }
 
 FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> startKnots, bool moveKnots,
@@ -445,27 +591,15 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
         throw GeometryError("FreeKnotFitter::fit: samplesPerFitSpan must not be negative");
     if (count < p + 1 || count < 2 * fixed || count - p - 1 < 2 * k || count > n0) return out;
     if (k > 0 && !(original_.knots[p + k] < original_.knots[n0 - k])) return out;
-    std::vector<double> knots = initialKnots(count);
     const bool warm = startKnots.size() > 2 * (p + 1 + k);
-    if (warm) {
-        // The given free knots are quantiles of a knot density: knot j of m at fraction
-        // j / (m + 1) of [lo, hi]; the new ones are read off at i / (free + 1), linearly.
-        const std::size_t given = startKnots.size() - 2 * (p + 1 + k), want = count - p - 1 - 2 * k;
-        std::vector<double> q{original_.knots[p + k]};
-        for (std::size_t j = 0; j < given; ++j)
-            q.push_back(std::clamp(startKnots[p + 1 + k + j], q.back(), original_.knots[n0 - k]));
-        q.push_back(original_.knots[n0 - k]);
-        for (std::size_t i = 1; i <= want; ++i) {
-            const double at = double(i) * double(given + 1) / double(want + 1);
-            const std::size_t j = std::min(static_cast<std::size_t>(at), given);
-            knots[p + k + i] = q[j] + (at - double(j)) * (q[j + 1] - q[j]);
-        }
-    }
+    // Knots that do not move are taken as given (resampled to the count); moving ones may pin.
+    KnotLayout layout = initialKnots(count, warm ? startKnots : std::span<const double>{}, moveKnots);
+    out.pinnedKnots = static_cast<std::size_t>(std::count(layout.pinned.begin(), layout.pinned.end(), 1));
     const Samples& data = samplesFor(count, samplesPerFitSpan);
     FitRounds run{data.params,
                   data.points,
                   data.spacing,
-                  std::move(knots),
+                  std::move(layout.knots),
                   std::vector<glm::dvec3>(count),
                   degree,
                   count,
@@ -479,8 +613,12 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
                   : warm     ? options_.warmIterations
                              : options_.iterations,
                   0,
+                  options_.settledMove,
+                  options_.lawsonSettled,
                   stops.giveUpAbove,
-                  stops.stopBelow};
+                  stops.stopBelow,
+                  stops.passAt,
+                  std::move(layout.pinned)};
     run.movingRounds = (run.iterations + 1) / 2;
     for (std::size_t i = 0; i < fixed; ++i) {
         run.points[i] = original_.points[i];

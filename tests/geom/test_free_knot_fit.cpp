@@ -4,12 +4,15 @@
 #include "geom/Evaluate.h"
 #include "geom/FreeKnotFit.h"
 #include "geom/GeometryError.h"
+#include "geom/GlobalInterpolation.h"
 #include "geom/KnotInsertion.h"
 #include "geom/ReferenceShapes.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 using namespace geom;
@@ -18,10 +21,28 @@ namespace {
 
 using geomtest::noisyRefinedCurve;
 
-// The free interior knots (all but `kept` at each end) strictly increase.
-void requireStrictInterior(const Curve& c, std::size_t kept = 0) {
+// The interior knots of a fit (all but `kept` at each end) increase strictly, except where they
+// repeat a multiple knot of the original (pinned there), at most as often as it has it.
+void requireStrictInterior(const Curve& c, const Curve& original, std::size_t kept = 0) {
     const std::size_t p = static_cast<std::size_t>(c.degree), n = c.points.size();
-    for (std::size_t i = p + kept; i < n - kept; ++i) REQUIRE(c.knots[i] < c.knots[i + 1]);
+    for (std::size_t i = p + kept; i < n - kept; ++i) {
+        if (c.knots[i] < c.knots[i + 1]) continue;
+        INFO("knot " << i << " repeats " << c.knots[i]);
+        REQUIRE(c.knots[i] == c.knots[i + 1]);
+        const auto inFit = std::count(c.knots.begin(), c.knots.end(), c.knots[i]);
+        REQUIRE(inFit <= std::count(original.knots.begin(), original.knots.end(), c.knots[i]));
+    }
+}
+
+// A Gaussian bump interpolated at 200 points: its peak takes about one knot per span of the
+// original where a fit has 40.
+Curve bumpCurve() {
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < 200; ++i) {
+        const double t = double(i) / 199.0;
+        points.push_back({100.0 * t, 5.0 * std::exp(-std::pow((t - 0.4) / 0.03, 2.0)), 0.0});
+    }
+    return interpolateCurve(points, 3, Closure::Open);
 }
 
 }  // namespace
@@ -33,7 +54,10 @@ TEST_CASE("free-knot reduction leaves fewer control points than the removal loop
         double tolerance;
         std::size_t most;  // the issue's target: 0.8 x SISL s1940's count at this tolerance
     };
-    const std::vector<Case> cases{{nacaAirfoilCurve(), 1e-3, 33}, {iBeamCurve(), 1e-3, 41}};
+    // At 1e-4 the airfoil's target is 53; its leading edge, pinned to the original's knots,
+    // leaves 44 (51 with every knot free): 46 at most holds that gain.
+    const std::vector<Case> cases{
+        {nacaAirfoilCurve(), 1e-3, 33}, {nacaAirfoilCurve(), 1e-4, 46}, {iBeamCurve(), 1e-3, 41}};
     for (const Case& c : cases) {
         ReductionOptions o;
         o.tolerance = c.tolerance;
@@ -54,7 +78,7 @@ TEST_CASE("free-knot reduction leaves fewer control points than the removal loop
         REQUIRE(fitted.curve.points.back() == c.curve.points.back());
         REQUIRE(fitted.curve.domainStart() == c.curve.domainStart());
         REQUIRE(fitted.curve.domainEnd() == c.curve.domainEnd());
-        requireStrictInterior(fitted.curve);
+        requireStrictInterior(fitted.curve, c.curve);
     }
 }
 
@@ -75,7 +99,7 @@ TEST_CASE("a free-knot fit keeps the end points and, when asked, the end derivat
             REQUIRE(f.curve.points.size() == count);
             REQUIRE(f.curve.knots.size() == count + static_cast<std::size_t>(p) + 1);
             const Curve g(f.curve.degree, f.curve.knots, f.curve.points);
-            requireStrictInterior(g, static_cast<std::size_t>(k));
+            requireStrictInterior(g, c, static_cast<std::size_t>(k));
             for (int i = 1; i <= k; ++i) {  // the kept interior knots are the original's
                 REQUIRE(g.knots[static_cast<std::size_t>(p + i)] == c.knots[static_cast<std::size_t>(p + i)]);
                 REQUIRE(g.knots[count - static_cast<std::size_t>(i)] ==
@@ -94,10 +118,12 @@ TEST_CASE("a free-knot fit keeps the end points and, when asked, the end derivat
                 largest =
                     std::max(largest, glm::length(evaluate(c, f.map.from[i]) - evaluate(g, f.map.to[i])));
             REQUIRE(largest == Approx(f.sampleError).epsilon(1e-9));
-            // Densely measured, the closest distances stay near it (the samples are dense).
+            // Densely measured, the closest distances stay near it (the samples are dense; where
+            // Lawson's rounds end early on a fit as poor as 12 points for these 45, degree 4, the
+            // parameters are still a few rounds from their foot points: 0.27 of it).
             const CurveDeviation d = measureDeviation(c, g, 16, f.map);
             REQUIRE(d.maxOriginalToReduced <= 1.2 * f.sampleError);
-            REQUIRE(d.maxOriginalToReduced >= 0.3 * f.sampleError);
+            REQUIRE(d.maxOriginalToReduced >= 0.25 * f.sampleError);
         }
     }
     // Too few control points for the end conditions: no fit.
@@ -117,7 +143,7 @@ TEST_CASE("a free-knot fit started from another fit's knots resamples their dist
         INFO("count " << count);
         REQUIRE(next.curve.points.size() == count);
         const Curve g(next.curve.degree, next.curve.knots, next.curve.points);
-        requireStrictInterior(g);
+        requireStrictInterior(g, c);
         REQUIRE(next.sampleError < 1e-2);
     }
     // Warm from converged knots, the same count does at least about as well as a cold start.
@@ -171,6 +197,70 @@ TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops a
         30, {}, true, 0, FreeKnotStops{std::numeric_limits<double>::infinity(), 0.1 * full.sampleError});
     REQUIRE_FALSE(reached.overshot);
     REQUIRE(reached.sampleError == full.sampleError);
+}
+
+TEST_CASE("a free-knot fit keeps the original's knots where the density asks for one per span of it",
+          "[geom][knots][freeknots]") {
+    const Curve c = nacaAirfoilCurve();
+    const FreeKnotFit pinned = FreeKnotFitter(c, FreeKnotOptions{}).fit(44);
+    FreeKnotOptions free;
+    free.pinShare = 0.0;
+    const FreeKnotFit moved = FreeKnotFitter(c, free).fit(44);
+    REQUIRE(moved.pinnedKnots == 0);
+    REQUIRE(pinned.pinnedKnots >= 8);
+    // The pinned knots are the original's, all at the leading edge (the middle of the chord-length
+    // parameter), where the curve turns fastest.
+    const std::size_t p = static_cast<std::size_t>(c.degree);
+    std::size_t originals = 0;
+    for (std::size_t i = p + 1; i < 44; ++i) {
+        const double u = pinned.curve.knots[i];
+        if (!std::binary_search(c.knots.begin(), c.knots.end(), u)) continue;
+        ++originals;
+        REQUIRE(std::abs(u - 0.5) < 0.05);
+    }
+    REQUIRE(originals >= pinned.pinnedKnots);
+    // Moved knots there leave errors between the original's: at least half again as large.
+    INFO("sample error pinned " << pinned.sampleError << ", moved " << moved.sampleError);
+    REQUIRE(1.5 * pinned.sampleError < moved.sampleError);
+    requireStrictInterior(Curve(pinned.curve.degree, pinned.curve.knots, pinned.curve.points), c);
+    // A start from a fit whose pins differ is not used (spread around other pins it misleads):
+    // on the bump, 31 -> 42 points, such a start fit to 4 times the error of a cold one.
+    const Curve bump = bumpCurve();
+    const FreeKnotFitter fitter(bump, FreeKnotOptions{});
+    const FreeKnotFit from = fitter.fit(31), cold = fitter.fit(42), warm = fitter.fit(42, from.curve.knots);
+    REQUIRE(from.pinnedKnots != cold.pinnedKnots);
+    REQUIRE(warm.sampleError <= 1.5 * cold.sampleError);
+    free.pinShare = -1.0;
+    REQUIRE_THROWS_WITH(FreeKnotFitter(c, free), Catch::Contains("pinShare"));
+}
+
+TEST_CASE("a free-knot fit ends its rounds early where they have settled or any pass will do",
+          "[geom][knots][freeknots]") {
+    const Curve c = nacaAirfoilCurve();
+    FreeKnotOptions all;
+    all.settledMove = 0.0;
+    all.lawsonSettled = 0.0;
+    const FreeKnotFit full = FreeKnotFitter(c, all).fit(44);
+    REQUIRE(full.rounds == all.iterations);
+    // Pinned at the leading edge, the knots settle in a few rounds and Lawson's gain soon drops
+    // below half a percent a round: fewer rounds, within a few percent of all of them.
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    const FreeKnotFit settled = fitter.fit(44);
+    INFO("rounds " << settled.rounds << ", error " << settled.sampleError << " against " << full.sampleError);
+    REQUIRE(settled.rounds < full.rounds);
+    REQUIRE(settled.sampleError <= 1.05 * full.sampleError);
+    // passAt: the first round within it ends the fit, here the very first (the same fit as one
+    // round), and a bound no round reaches changes nothing.
+    const FreeKnotFit first = fitter.fit(44, {}, true, 0, FreeKnotStops{1e9, 0.0, 1e9});
+    const FreeKnotFit one = fitter.fit(44, {}, true, 1);
+    REQUIRE(first.rounds == 1);
+    REQUIRE(first.sampleError == one.sampleError);
+    REQUIRE(first.curve.knots == one.curve.knots);
+    const FreeKnotFit none = fitter.fit(44, {}, true, 0, FreeKnotStops{1e9, 0.0, 1e-3 * settled.sampleError});
+    REQUIRE(none.sampleError == settled.sampleError);
+    REQUIRE(none.rounds == settled.rounds);
+    all.lawsonSettled = -1.0;
+    REQUIRE_THROWS_WITH(FreeKnotFitter(c, all), Catch::Contains("lawsonSettled"));
 }
 
 TEST_CASE("a free-knot fit's samples are spread like its knots, about samplesPerFitSpan per span of the fit",

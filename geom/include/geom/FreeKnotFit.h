@@ -18,22 +18,38 @@ struct FreeKnotOptions {
     /// it as the starting knots are (by the estimated |C^(p+1)|^(1/(p+1))), so that every span of
     /// the fit gets about that many.
     int samplesPerFitSpan = 10;
-    /// Fit / correct / move rounds per fit (the best round is kept); a fit started from given
-    /// knots (converged for another count) takes warmIterations.
+    /// Fit / correct / move rounds per fit (the best round is kept): the first half moves the
+    /// knots, the second runs Lawson's reweighting on them. A fit started from given knots
+    /// (converged for another count) takes warmIterations.
     int iterations = 16;
     int warmIterations = 8;
+    /// The knot-moving rounds end early where one moves the free knots by less than settledMove
+    /// of their nearer neighbour's distance on average (the knots have settled), Lawson's where
+    /// one lowers the sample error by less than lawsonSettled (relative); 0 runs them all.
+    double settledMove = 0.01;
+    double lawsonSettled = 0.005;
+    /// Where the knot density gives a fit at least pinShare knots in a span of the original, the
+    /// fit keeps the original's knots there (pinned), and the other knots move between them.
+    /// The original is exact on its own knots; moved knots at about that density land between
+    /// them, and the fit needs more of them for the same error (the airfoil's leading edge). 0
+    /// lets every knot move.
+    double pinShare = 1.0;
     /// The end points always stay; fixedDerivatives = k also keeps the first and last k+1
     /// control points and k interior knots of the original, so derivatives up to k stay.
     EndConditions ends;
 };
 
-/// Where a free-knot fit may stop early, judged at its first round on the final knots by the
-/// error expected after Lawson's rounds (0.8 of that round's, or the best round's if lower).
+/// Where a free-knot fit may stop early: giveUpAbove and stopBelow are judged at its first round
+/// on the final knots by the error expected after Lawson's rounds (0.8 of that round's, or the
+/// best round's if lower), passAt at every round.
 struct FreeKnotStops {
     /// Give up where the expected error is above this (FreeKnotFit::gaveUp).
     double giveUpAbove = std::numeric_limits<double>::infinity();
     /// Stop where it is below this: a smaller count would do (FreeKnotFit::overshot).
     double stopBelow = 0.0;
+    /// Stop at the first round (of either kind) whose sample error is at most this: any fit that
+    /// good will do (the caller's next count down has failed).
+    double passAt = 0.0;
 };
 
 /// A free-knot fit of one control point count, with its sample error.
@@ -54,6 +70,10 @@ struct FreeKnotFit {
     /// count would do).
     bool overshot = false;
     double expectedError = std::numeric_limits<double>::infinity();
+    /// Interior knots kept at the original's (FreeKnotOptions::pinShare).
+    std::size_t pinnedKnots = 0;
+    /// Rounds run: fewer than asked where the knots or Lawson's rounds settled or a stop came.
+    int rounds = 0;
 };
 
 /// Least-squares approximation of a polynomial curve by a spline of the same degree with a given
@@ -61,9 +81,10 @@ struct FreeKnotFit {
 /// the coefficients to dense samples of the original by one banded least-squares solve, moves
 /// every sample's parameter to its foot point on the fit (the distance lets the fit slip along
 /// the curve), reweights the samples towards the best max-norm fit (Lawson) and moves the knots
-/// so that every span carries about the same error (h_i scaled by e_i^(-1/(p+1))). The samples
-/// are made once, so fits of several counts share them. The domain and the clamped end points
-/// of the original stay.
+/// so that every span carries about the same error (h_i scaled by e_i^(-1/(p+1))), except where
+/// the density reaches a knot per span of the original: there the original's knots stay
+/// (FreeKnotOptions::pinShare). The samples are made once, so fits of several counts share
+/// them. The domain and the clamped end points of the original stay.
 class FreeKnotFitter {
 public:
     /// Throws GeometryError for a rational or unclamped curve or bad options.
@@ -89,7 +110,13 @@ public:
     double predictedError(std::size_t count) const;
 
 private:
-    std::vector<double> initialKnots(std::size_t count) const;
+    // A fit's starting knots, and by free knot (interior, not held by the end conditions) whether
+    // it stays at the original's (none where pin is false).
+    struct KnotLayout {
+        std::vector<double> knots;
+        std::vector<char> pinned;
+    };
+    KnotLayout initialKnots(std::size_t count, std::span<const double> startKnots, bool pin) const;
 
     // Samples of the original at one density: parameters, points, the parameter length each
     // stands for.
