@@ -351,7 +351,13 @@ void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* 
         const double u = params[i];
         if (!formed ||
             !(knots[span] <= u && (u < knots[span + 1] || (span + 1 == count && u <= knots[count])))) {
-            span = findSpan(static_cast<int>(P), knots, count, u);
+            // The parameters ascend: a walk forward over the next few spans is cheaper than a
+            // binary search (samples about as dense as the spans move one or two).
+            std::size_t next = formed ? span : count;
+            for (int steps = 0; next < count && steps < 4 && !(u < knots[next + 1]); ++steps) ++next;
+            const bool found = next + 1 < count ? knots[next] <= u && u < knots[next + 1]
+                                                : next + 1 == count && knots[next] <= u && u <= knots[count];
+            span = found ? next : findSpan(static_cast<int>(P), knots, count, u);
             if (forms)
                 form = forms + span * (P + 1);
             else
