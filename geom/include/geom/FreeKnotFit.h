@@ -25,7 +25,7 @@ struct FreeKnotOptions {
     int warmIterations = 8;
     /// The knot-moving rounds end early where one moves the free knots by less than settledMove
     /// of their nearer neighbour's distance on average (the knots have settled), Lawson's where
-    /// one lowers the sample error by less than lawsonSettled (relative); 0 runs them all.
+    /// one lowers the sample error by less than lawsonSettled (relative); 0 runs all of either.
     double settledMove = 0.01;
     double lawsonSettled = 0.005;
     /// Where the knot density gives a fit at least pinShare knots in a span of the original, the
