@@ -397,6 +397,26 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     // A floor, so that straight parts still get knots and no span is empty of samples.
     const double mean = densityIntegral_ / (t[n0] - t[p]);
     for (std::size_t j = p; j < n0; ++j) density_[j] = mean > 0.0 ? std::max(density_[j], 0.2 * mean) : 1.0;
+
+    // The original's corners: interior knots of multiplicity p or more where the first derivative
+    // jumps. The p-th derivative's jumps do not see them, and moved knots cannot make one.
+    std::vector<double> first(2 * (p + 1));
+    auto slope = [&](std::size_t span, double u) {
+        basisDerivatives(span, u, original.degree, t, 1, first);
+        glm::dvec3 d(0.0);
+        for (std::size_t b = 0; b <= p; ++b) d += first[p + 1 + b] * original.points[span - p + b];
+        return d;
+    };
+    for (std::size_t i = p + 1; i < n0;) {
+        std::size_t last = i;
+        while (last + 1 < n0 && t[last + 1] == t[i]) ++last;
+        if (last + 1 - i >= p) {
+            const glm::dvec3 left = slope(i - 1, t[i]), right = slope(last, t[i]);
+            if (glm::length(left - right) > 1e-9 * (glm::length(left) + glm::length(right)))
+                corners_.push_back(t[i]);
+        }
+        i = last + 1;
+    }
 }
 
 const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count, int samplesPerFitSpan) const {
@@ -471,24 +491,29 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     };
     const double total = integral(lo, hi);
 
-    // The original's spans that the density gives at least pinShare of a knot each (raised where
-    // their knots would be more than the fit has): their end knots, with their multiplicity,
-    // stay.
+    // The original's corners (where the fit has knots enough for them all), and the end knots
+    // of its spans that the density gives at least pinShare of a knot each (raised where their
+    // knots would be more than the fit has) stay, with their multiplicity.
+    auto interior = [&](double v) { return v > lo && v < hi; };
+    std::vector<double> corners;
+    std::size_t cornerKnots = 0;
+    for (double v : corners_)
+        if (interior(v))
+            corners.push_back(v), cornerKnots += static_cast<std::size_t>(std::count(t.begin(), t.end(), v));
+    if (cornerKnots > free) corners.clear();
     std::vector<char> hot(n0, 0);
     std::vector<double> pins;
     for (double share = options_.pinShare; pin && share > 0.0 && total > 0.0; share *= 1.25) {
         pins.clear();
-        std::vector<double> ends;
+        std::vector<double> ends = corners;
         for (std::size_t j = p; j < n0; ++j) {
             const double length = clipped(j, lo, hi);
             hot[j] = length > 0.0 && double(free + 1) * density_[j] * length / total >= share;
-            if (!hot[j]) continue;
-            if (ends.empty() || ends.back() != t[j]) ends.push_back(t[j]);
-            ends.push_back(t[j + 1]);
+            if (hot[j]) ends.push_back(t[j]), ends.push_back(t[j + 1]);
         }
+        std::sort(ends.begin(), ends.end());
         for (std::size_t i = p + 1; i < n0; ++i)
-            if (t[i] > lo && t[i] < hi && std::binary_search(ends.begin(), ends.end(), t[i]))
-                pins.push_back(t[i]);
+            if (interior(t[i]) && std::binary_search(ends.begin(), ends.end(), t[i])) pins.push_back(t[i]);
         if (pins.size() <= free) break;
     }
     if (pins.empty()) std::fill(hot.begin(), hot.end(), 0);

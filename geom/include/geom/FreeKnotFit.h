@@ -134,6 +134,7 @@ private:
     mutable std::map<std::size_t, Samples> samples_;  // by number, made when first needed
     std::vector<glm::dvec3> forms_;                   // the original's span power forms (private to geom)
     std::vector<double> density_;
+    std::vector<double> corners_;   // interior knots of multiplicity >= p where C' jumps
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
 };
 
