@@ -432,18 +432,11 @@ const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count, int
     // the fits there needed more samples in all (10 per fit span now do better than 12 did).
     const std::vector<double>& t = original_.knots;
     const std::size_t p = static_cast<std::size_t>(original_.degree), n0 = original_.points.size();
-    double total = 0.0;
-    for (std::size_t j = p; j < n0; ++j) total += density_[j] * (t[j + 1] - t[j]);
+    std::vector<double> steps;
+    densitySteps(t[p], t[n0], wanted - 1, steps);
     out.params.push_back(t[p]);
-    double below = 0.0;
-    std::size_t j = p;
-    for (std::size_t k = 1; k < wanted; ++k) {
-        const double goal = total * double(k) / double(wanted);
-        while (j + 1 < n0 && below + density_[j] * (t[j + 1] - t[j]) < goal)
-            below += density_[j] * (t[j + 1] - t[j]), ++j;
-        const double u = t[j] + (goal - below) / density_[j];
+    for (double u : steps)
         if (u > out.params.back() && u < t[n0]) out.params.push_back(u);
-    }
     out.params.push_back(t[n0]);
     out.points.resize(out.params.size());
     detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
@@ -461,6 +454,33 @@ std::vector<double> FreeKnotFitter::spacingOf(const std::vector<double>& params)
         spacing[k] = 0.5 * (right - left);
     }
     return spacing;
+}
+
+double FreeKnotFitter::clippedLength(std::size_t span, double from, double to) const {
+    const std::vector<double>& t = original_.knots;
+    return std::max(0.0, std::min(to, t[span + 1]) - std::max(from, t[span]));
+}
+
+double FreeKnotFitter::densityIntegral(double from, double to) const {
+    const std::size_t p = static_cast<std::size_t>(original_.degree), n0 = original_.points.size();
+    double sum = 0.0;
+    for (std::size_t j = p; j < n0; ++j) sum += density_[j] * clippedLength(j, from, to);
+    return sum;
+}
+
+void FreeKnotFitter::densitySteps(double from, double to, std::size_t count, std::vector<double>& out) const {
+    const std::vector<double>& t = original_.knots;
+    const std::size_t p = static_cast<std::size_t>(original_.degree), n0 = original_.points.size();
+    const double total = densityIntegral(from, to);
+    double below = 0.0;
+    std::size_t j = p;
+    for (std::size_t i = 1; i <= count; ++i) {
+        const double goal = total * double(i) / double(count + 1);
+        while (j + 1 < n0 && below + density_[j] * clippedLength(j, from, to) < goal)
+            below += density_[j] * clippedLength(j, from, to), ++j;
+        const double along = density_[j] > 0.0 ? (goal - below) / density_[j] : 0.0;
+        out.push_back(std::clamp(std::max(from, t[j]) + along, from, to));
+    }
 }
 
 double FreeKnotFitter::predictedError(std::size_t count) const {
@@ -481,15 +501,7 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     for (std::size_t i = 0; i < k; ++i) knots[p + 1 + i] = t[p + 1 + i], knots[count - k + i] = t[n0 - k + i];
     const double lo = t[p + k], hi = t[n0 - k];
     const std::size_t free = count - p - 1 - 2 * k;
-    auto clipped = [&](std::size_t j, double from, double to) {
-        return std::max(0.0, std::min(to, t[j + 1]) - std::max(from, t[j]));
-    };
-    auto integral = [&](double from, double to) {
-        double sum = 0.0;
-        for (std::size_t j = p; j < n0; ++j) sum += density_[j] * clipped(j, from, to);
-        return sum;
-    };
-    const double total = integral(lo, hi);
+    const double total = densityIntegral(lo, hi);
 
     // The original's corners (where the fit has knots enough for them all), and the end knots
     // of its spans that the density gives at least pinShare of a knot each (raised where their
@@ -507,7 +519,7 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
         pins.clear();
         std::vector<double> ends = corners;
         for (std::size_t j = p; j < n0; ++j) {
-            const double length = clipped(j, lo, hi);
+            const double length = clippedLength(j, lo, hi);
             hot[j] = length > 0.0 && double(free + 1) * density_[j] * length / total >= share;
             if (hot[j]) ends.push_back(t[j]), ends.push_back(t[j + 1]);
         }
@@ -538,7 +550,7 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     std::vector<Interval> intervals;
     for (std::size_t a = 0; a + 1 < anchors.size(); ++a)
         if (!pinnedSpan(a))
-            intervals.push_back({anchors[a], anchors[a + 1], integral(anchors[a], anchors[a + 1])});
+            intervals.push_back({anchors[a], anchors[a + 1], densityIntegral(anchors[a], anchors[a + 1])});
     const std::size_t movable = free - pins.size();
     double weights = 0.0;
     for (const Interval& in : intervals) weights += in.weight;
@@ -583,22 +595,13 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
             if (v > in.from && v < in.to) q.push_back(v);
         q.push_back(in.to);
         const std::size_t inside = q.size() - 2;
-        double below = 0.0;
-        std::size_t j = p;
-        for (std::size_t i = 1; i <= in.knots; ++i) {
-            if (inside > 0) {
-                const double at = double(i) * double(inside + 1) / double(in.knots + 1);
-                const std::size_t m = std::min(static_cast<std::size_t>(at), inside);
-                placed.push_back(q[m] + (at - double(m)) * (q[m + 1] - q[m]));
-            } else {
-                const double goal = in.weight * double(i) / double(in.knots + 1);
-                while (j + 1 < n0 && below + density_[j] * clipped(j, in.from, in.to) < goal)
-                    below += density_[j] * clipped(j, in.from, in.to), ++j;
-                const double along = density_[j] > 0.0 ? (goal - below) / density_[j] : 0.0;
-                placed.push_back(std::clamp(std::max(in.from, t[j]) + along, in.from, in.to));
-            }
-            out.pinned.push_back(0);
+        if (inside == 0) densitySteps(in.from, in.to, in.knots, placed);
+        for (std::size_t i = 1; i <= in.knots && inside > 0; ++i) {
+            const double at = double(i) * double(inside + 1) / double(in.knots + 1);
+            const std::size_t m = std::min(static_cast<std::size_t>(at), inside);
+            placed.push_back(q[m] + (at - double(m)) * (q[m + 1] - q[m]));
         }
+        out.pinned.insert(out.pinned.end(), in.knots, 0);
     }
     while (nextPin < pins.size()) placed.push_back(pins[nextPin++]), out.pinned.push_back(1);
     std::copy(placed.begin(), placed.end(), knots.begin() + static_cast<std::ptrdiff_t>(p + k + 1));

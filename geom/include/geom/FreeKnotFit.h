@@ -117,6 +117,12 @@ private:
         std::vector<char> pinned;
     };
     KnotLayout initialKnots(std::size_t count, std::span<const double> startKnots, bool pin) const;
+    // The length of an original span inside [from, to]; the density's integral over [from, to];
+    // count parameters at equal steps of that integral inside it (appended to out), as the
+    // starting knots and the samples are spread.
+    double clippedLength(std::size_t span, double from, double to) const;
+    double densityIntegral(double from, double to) const;
+    void densitySteps(double from, double to, std::size_t count, std::vector<double>& out) const;
 
     // Samples of the original at one density: parameters, points, the parameter length each
     // stands for.
