@@ -1,5 +1,6 @@
 #include "geom/CurveProjector.h"
 
+#include "ProjectionBounds.h"
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
 #include "geom/ControlNet.h"
@@ -9,21 +10,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <queue>
 
 namespace geom {
+namespace {
 
-CurveProjector::CurveProjector(const Curve& curve) : degree_(curve.degree) {
-    for (const BezierCurvePiece& piece : extractBezier(curve))
-        pieces_.push_back(
-            {homogeneousNet(piece.curve).data, boundingBox(piece.curve), piece.start, piece.end});
+bool finite(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
-CurveProjector::Point CurveProjector::evaluate(double u) const {
-    auto it = std::upper_bound(pieces_.begin(), pieces_.end(), u,
-                               [](double x, const Piece& piece) { return x < piece.end; });
-    if (it == pieces_.end()) --it;
-    const Piece& piece = *it;
+/// One part of a piece in the global search: fractions [s0, s1] of the piece's parameters, its
+/// Bézier polygon (an offset into a pool) and its subdivision depth.
+struct Segment {
+    std::size_t piece = 0;
+    double s0 = 0.0, s1 = 1.0;
+    std::size_t polygon = 0;
+    int depth = 0;
+};
+
+/// Segments are halved at most this often: below it a Newton basin is smaller than a segment.
+constexpr int kMaxDepth = 10;
+
+}  // namespace
+
+CurveProjector::CurveProjector(const Curve& curve) : degree_(curve.degree), rational_(curve.rational()) {
+    validate(curve);
+    for (const BezierCurvePiece& piece : extractBezier(curve)) {
+        pieces_.push_back(
+            {homogeneousNet(piece.curve).data, boundingBox(piece.curve), piece.start, piece.end});
+        scale_ = std::max(scale_, pieces_.back().box.diagonal());
+    }
+}
+
+CurveProjector::Point CurveProjector::evaluate(std::size_t index, double u) const {
+    const Piece& piece = pieces_[index];
     const std::size_t n = static_cast<std::size_t>(degree_) + 1;
     thread_local std::vector<double> b, db, ddb;
     b.resize(n);
@@ -46,13 +68,14 @@ CurveProjector::Point CurveProjector::evaluate(double u) const {
     return r;
 }
 
-CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw GeometryError("closestPoint: the query point has a non-finite coordinate");
-    if (!std::isfinite(u)) throw GeometryError("closestPoint: the start guess is not finite");
-    const double a = pieces_.front().start, b = pieces_.back().end;
+CurvePoint CurveProjector::polishOnPiece(std::size_t index, const glm::dvec3& p, double u) const {
+    return polishIn(index, p, u, pieces_[index].start, pieces_[index].end);
+}
+
+CurvePoint CurveProjector::polishIn(std::size_t index, const glm::dvec3& p, double u, double a,
+                                    double b) const {
     u = std::clamp(u, a, b);
-    Point e = evaluate(u);
+    Point e = evaluate(index, u);
     double f = glm::dot(e.c - p, e.c - p);
     for (int it = 0; it < 60; ++it) {
         const glm::dvec3 r = e.c - p;
@@ -62,12 +85,15 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
         const double floor = 1e-6 * glm::dot(e.d1, e.d1) + 1e-300;
         if (h < floor) h = std::abs(h) + floor;
         const double du = -g / h;
+        // A step this small that rounding lets grow f ends the search: halving it further only
+        // spends evaluations on the last bits.
+        const bool small = std::abs(du) < 1e-6 * (b - a);
         bool moved = false;
         double step = 1.0;
         for (int k = 0; k < 40; ++k, step *= 0.5) {
             const double next = std::clamp(u + step * du, a, b);
             if (next == u) break;
-            const Point en = evaluate(next);
+            const Point en = evaluate(index, next);
             const double fn = glm::dot(en.c - p, en.c - p);
             if (fn <= f) {
                 moved = std::abs(next - u) > 1e-16 * (b - a);
@@ -76,40 +102,119 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
                 f = fn;
                 break;
             }
+            if (small) break;
         }
-        if (!moved) break;
+        if (!moved || std::abs(du) < 1e-14 * (b - a)) break;
     }
     return {u, e.c, std::sqrt(f)};
 }
 
+CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const {
+    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!std::isfinite(u)) throw GeometryError("closestPoint: the start guess is not finite");
+    u = std::clamp(u, pieces_.front().start, pieces_.back().end);
+    auto it = std::upper_bound(pieces_.begin(), pieces_.end(), u,
+                               [](double x, const Piece& piece) { return x < piece.end; });
+    std::size_t index =
+        it == pieces_.end() ? pieces_.size() - 1 : static_cast<std::size_t>(it - pieces_.begin());
+    CurvePoint best = polishOnPiece(index, p, u);
+    // Across a piece end (a corner, say) the search goes on in the neighbour while that lowers
+    // the distance; each step strictly lowers it, the count only bounds the work.
+    for (std::size_t round = 0; round < pieces_.size() + 2; ++round) {
+        std::size_t next = index;
+        if (best.u <= pieces_[index].start && index > 0)
+            next = index - 1;
+        else if (best.u >= pieces_[index].end && index + 1 < pieces_.size())
+            next = index + 1;
+        if (next == index) break;
+        const CurvePoint there = polishOnPiece(next, p, best.u);
+        if (!(there.distance < best.distance * (1.0 - 1e-14))) break;
+        best = there;
+        index = next;
+    }
+    return best;
+}
+
 CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw GeometryError("closestPoint: the query point has a non-finite coordinate");
-    std::vector<std::pair<double, std::size_t>> order;
-    order.reserve(pieces_.size());
-    for (std::size_t i = 0; i < pieces_.size(); ++i) order.push_back({pieces_[i].box.distance(p), i});
-    std::sort(order.begin(), order.end());
+    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    const std::size_t n = static_cast<std::size_t>(degree_) + 1;
+    thread_local std::vector<Segment> segments;
+    thread_local std::vector<glm::dvec4> pool, work;
+    thread_local std::vector<glm::dvec3> points;
+    segments.clear();
+    pool.clear();
     CurvePoint best;
     best.distance = std::numeric_limits<double>::infinity();
-    for (const auto& [boxDistance, i] : order) {
-        if (boxDistance >= best.distance) break;
-        const Piece& piece = pieces_[i];
-        // Start at the nearest control point's Bézier abscissa, and at the piece's middle.
-        std::size_t nearest = 0;
-        double nearestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < piece.net.size(); ++k) {
-            const glm::dvec3 c = glm::dvec3(piece.net[k]) / piece.net[k].w;
-            const double d = glm::dot(c - p, c - p);
-            if (d < nearestDistance) {
-                nearestDistance = d;
-                nearest = k;
-            }
+    std::size_t bestPiece = 0;
+    glm::dvec3 toward(0.0);
+    const double tolerance = 1e-13 * scale_;
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+        segments.push_back({i, 0.0, 1.0, pool.size(), 0});
+        pool.insert(pool.end(), pieces_[i].net.begin(), pieces_[i].net.end());
+        queue.push({pieces_[i].box.distance(p), i});
+    }
+    auto take = [&](const CurvePoint& candidate, std::size_t piece) {
+        if (!(candidate.distance < best.distance)) return;
+        best = candidate;
+        bestPiece = piece;
+        if (best.distance > 0.0) toward = (best.point - p) / best.distance;
+    };
+    auto split = [&](const Segment& segment) {
+        const std::size_t base = pool.size();
+        pool.resize(base + 2 * n);
+        detail::halveLine(pool.data() + segment.polygon, 1, n, pool.data() + base, pool.data() + base + n,
+                          work);
+        const double mid = 0.5 * (segment.s0 + segment.s1);
+        for (std::size_t k = 0; k < 2; ++k) {
+            const Segment child{segment.piece, k == 0 ? segment.s0 : mid, k == 0 ? mid : segment.s1,
+                                base + k * n, segment.depth + 1};
+            const glm::dvec4* polygon = pool.data() + child.polygon;
+            detail::project(polygon, n, points);
+            const double bound =
+                detail::lowerBound(points, p, std::isfinite(best.distance) ? &toward : nullptr);
+            if (bound >= best.distance - tolerance) continue;
+            // Where the distance provably grows along the segment towards an end inside the
+            // piece, the segment's nearest point is that end, which its neighbour holds.
+            const int sign = detail::gradientSign(polygon, points, n, 1, rational_, false, p);
+            if ((sign > 0 && child.s0 > 0.0) || (sign < 0 && child.s1 < 1.0)) continue;
+            segments.push_back(child);
+            queue.push({bound, segments.size() - 1});
         }
-        const double s = static_cast<double>(nearest) / static_cast<double>(degree_);
-        for (double start : {piece.start + s * (piece.end - piece.start), 0.5 * (piece.start + piece.end)}) {
-            const CurvePoint c = closestPointFrom(p, start);
-            if (c.distance < best.distance) best = c;
+    };
+    while (!queue.empty()) {
+        const auto [bound, id] = queue.top();
+        queue.pop();
+        if (bound >= best.distance - tolerance) break;
+        const Segment segment = segments[id];
+        const Piece& piece = pieces_[segment.piece];
+        const double width = piece.end - piece.start;
+        const double ua = piece.start + segment.s0 * width, ub = piece.start + segment.s1 * width;
+        const bool holdsBest =
+            std::isfinite(best.distance) && bestPiece == segment.piece && best.u >= ua && best.u <= ub;
+        const glm::dvec4* polygon = pool.data() + segment.polygon;
+        detail::project(polygon, n, points);
+        // Start at the best point or at the segment's control point nearest to p.
+        double start = best.u;
+        if (!holdsBest) {
+            std::size_t nearest = 0;
+            for (std::size_t k = 1; k < n; ++k)
+                if (glm::dot(points[k] - p, points[k] - p) <
+                    glm::dot(points[nearest] - p, points[nearest] - p))
+                    nearest = k;
+            start = ua + (ub - ua) * static_cast<double>(nearest) / static_cast<double>(degree_);
         }
+        if (detail::provablyConvex(polygon, points, n, 1, p)) {
+            // Convex on the segment: Newton held inside it finds the segment's minimum.
+            take(polishIn(segment.piece, p, start, ua, ub), segment.piece);
+            continue;
+        }
+        if (!holdsBest) {
+            take(polishOnPiece(segment.piece, p, start), segment.piece);
+            if (segment.depth == 0) take(polishOnPiece(segment.piece, p, 0.5 * (ua + ub)), segment.piece);
+        }
+        if (segment.depth < kMaxDepth && bound < best.distance - tolerance) split(segment);
     }
     return best;
 }

@@ -1,13 +1,16 @@
 #include "geom/SurfaceProjector.h"
 
-#include "geom/Evaluate.h"
+#include "ProjectionBounds.h"
 #include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <queue>
+#include <vector>
 
 namespace geom {
 namespace {
@@ -73,8 +76,12 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
                 f = fn;
                 break;
             }
+            // A step that small which rounding lets grow f ends the search: halving it further
+            // only spends evaluations on the last bits.
+            if (small) break;
         }
-        if (!moved) break;
+        const bool converged = std::abs(du) < 1e-13 * (ub - ua) && std::abs(dv) < 1e-13 * (vb - va);
+        if (!moved || converged) break;
     }
     SurfacePoint out;
     out.uv = uv;
@@ -83,14 +90,55 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
     return out;
 }
 
+/// Regions are subdivided at most this deep (4^5 pieces of a patch at most, and only where the
+/// bound still lets them hold a nearer point): below it a Newton basin is smaller than a piece.
+constexpr int kMaxDepth = 8;
+
 }  // namespace
 
-SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface) {
+SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface), rational_(surface.rational()) {
+}
+
+SurfacePoint SurfaceProjector::polishIn(std::size_t index, const glm::dvec3& p, glm::dvec2 uv, double ua,
+                                        double ub, double va, double vb) const {
+    return polishWith([this, index](double u, double v) { return tree_.evaluate(index, u, v, 2); }, ua, ub,
+                      va, vb, p, uv);
+}
+
+SurfacePoint SurfaceProjector::polishOnPatch(std::size_t index, const glm::dvec3& p, glm::dvec2 uv) const {
+    const BezierPatchTree::Patch& patch = tree_.patches()[index];
+    return polishIn(index, p, uv, patch.u0, patch.u1, patch.v0, patch.v1);
 }
 
 SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const {
-    return polishWith([this](double u, double v) { return tree_.evaluate(u, v, 2); }, tree_.domainStartU(),
-                      tree_.domainEndU(), tree_.domainStartV(), tree_.domainEndV(), p, uv);
+    uv = glm::dvec2(std::clamp(uv.x, tree_.domainStartU(), tree_.domainEndU()),
+                    std::clamp(uv.y, tree_.domainStartV(), tree_.domainEndV()));
+    std::size_t index = tree_.patchAt(uv.x, uv.y);
+    SurfacePoint best = polishOnPatch(index, p, uv);
+    const std::vector<double>& bu = tree_.breaksU();
+    const std::vector<double>& bv = tree_.breaksV();
+    const std::size_t spansU = bu.size() - 1, spansV = bv.size() - 1;
+    // Each round strictly lowers the distance, so no patch is left and re-entered for nothing;
+    // the count only bounds the work.
+    const std::size_t rounds = 2 * tree_.patches().size() + 8;
+    for (std::size_t round = 0; round < rounds; ++round) {
+        const std::size_t iu = index / spansV, iv = index % spansV;
+        bool moved = false;
+        for (std::size_t a = iu > 0 ? iu - 1 : 0; a <= std::min(iu + 1, spansU - 1) && !moved; ++a)
+            for (std::size_t b = iv > 0 ? iv - 1 : 0; b <= std::min(iv + 1, spansV - 1) && !moved; ++b) {
+                if (a == iu && b == iv) continue;
+                if (best.uv.x < bu[a] || best.uv.x > bu[a + 1] || best.uv.y < bv[b] || best.uv.y > bv[b + 1])
+                    continue;
+                const SurfacePoint next = polishOnPatch(a * spansV + b, p, best.uv);
+                if (next.distance < best.distance * (1.0 - 1e-14)) {
+                    best = next;
+                    index = a * spansV + b;
+                    moved = true;
+                }
+            }
+        if (!moved) break;
+    }
+    return best;
 }
 
 SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const {
@@ -100,62 +148,220 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
     return polish(p, guess);
 }
 
-SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
-    const auto& nodes = tree_.nodes();
-    const auto& patches = tree_.patches();
-    const std::size_t pu = static_cast<std::size_t>(tree_.degreeU()) + 1;
+glm::dvec2 SurfaceProjector::patchStart(std::size_t index, const glm::dvec3& p) const {
+    const BezierPatchTree::Patch& patch = tree_.patches()[index];
     const std::size_t qv = static_cast<std::size_t>(tree_.degreeV()) + 1;
-    SurfacePoint best;
-    best.distance = std::numeric_limits<double>::infinity();
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    queue.push({nodes[0].box.distance(p), 0});
-    while (!queue.empty()) {
-        const auto [boxDistance, index] = queue.top();
-        queue.pop();
-        if (boxDistance >= best.distance) break;
-        const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(index)];
-        if (node.patch < 0) {
-            queue.push({nodes[static_cast<std::size_t>(node.first)].box.distance(p), node.first});
-            queue.push({nodes[static_cast<std::size_t>(node.second)].box.distance(p), node.second});
-            continue;
+    const std::size_t pu = static_cast<std::size_t>(tree_.degreeU()) + 1;
+    std::size_t nearest = 0;
+    double nearestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < patch.net.size(); ++k) {
+        const glm::dvec3 c = glm::dvec3(patch.net[k]) / patch.net[k].w;
+        const double d = glm::dot(c - p, c - p);
+        if (d < nearestDistance) {
+            nearestDistance = d;
+            nearest = k;
         }
-        // Start at the best of the nearest control point's Bézier abscissae and a small grid.
-        const BezierPatchTree::Patch& patch = patches[static_cast<std::size_t>(node.patch)];
+    }
+    auto at = [&](double a, double b) {
+        return glm::dvec2(patch.u0 + a * (patch.u1 - patch.u0), patch.v0 + b * (patch.v1 - patch.v0));
+    };
+    glm::dvec2 start = at(static_cast<double>(nearest / qv) / static_cast<double>(pu - 1),
+                          static_cast<double>(nearest % qv) / static_cast<double>(qv - 1));
+    const glm::dvec3 sp = tree_.evaluate(index, start.x, start.y, 0).point;
+    double startDistance = glm::dot(sp - p, sp - p);
+    constexpr int kGrid = 2;
+    for (int a = 0; a <= kGrid; ++a)
+        for (int b = 0; b <= kGrid; ++b) {
+            const glm::dvec2 g = at(static_cast<double>(a) / kGrid, static_cast<double>(b) / kGrid);
+            const glm::dvec3 gp = tree_.evaluate(index, g.x, g.y, 0).point;
+            const double d = glm::dot(gp - p, gp - p);
+            if (d < startDistance) {
+                startDistance = d;
+                start = g;
+            }
+        }
+    return start;
+}
+
+/// One global closest-point query: a branch and bound over the patches and the regions they are
+/// cut into, nearest bound first.
+class SurfaceProjector::Search {
+public:
+    Search(const SurfaceProjector& projector, const glm::dvec3& p)
+        : projector_(projector),
+          tree_(projector.tree_),
+          p_(p),
+          pu_(static_cast<std::size_t>(tree_.degreeU()) + 1),
+          qv_(static_cast<std::size_t>(tree_.degreeV()) + 1),
+          netSize_(pu_ * qv_),
+          tolerance_(1e-13 * tree_.scale()) {
+        regions_.clear();
+        pool_.clear();
+        best_.distance = std::numeric_limits<double>::infinity();
+    }
+
+    SurfacePoint run() {
+        const auto& nodes = tree_.nodes();
+        // Queue entries: a tree node (index >= 0) or a region (index -1 - r).
+        queue_.push({nodes[0].box.distance(p_), 0});
+        while (!queue_.empty()) {
+            const auto [bound, id] = queue_.top();
+            queue_.pop();
+            if (bound >= best_.distance - tolerance_) break;
+            if (id < 0) {
+                visit(regions_[static_cast<std::size_t>(-1 - id)], bound);
+                continue;
+            }
+            const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(id)];
+            if (node.patch >= 0) {
+                pushPatch(static_cast<std::size_t>(node.patch));
+                continue;
+            }
+            queue_.push({nodes[static_cast<std::size_t>(node.first)].box.distance(p_), node.first});
+            queue_.push({nodes[static_cast<std::size_t>(node.second)].box.distance(p_), node.second});
+        }
+        return best_;
+    }
+
+private:
+    /// A part of a patch: fractions [s0, s1] x [t0, t1] of the patch's own parameters, its Bézier
+    /// net (an offset into the pool) and its subdivision depth.
+    struct Region {
+        std::size_t patch = 0;
+        double s0 = 0.0, s1 = 1.0, t0 = 0.0, t1 = 1.0;
+        std::size_t net = 0;
+        int depth = 0;
+    };
+
+    const glm::dvec3* toward() const { return std::isfinite(best_.distance) ? &toward_ : nullptr; }
+
+    void take(const SurfacePoint& candidate, std::size_t patch) {
+        if (!(candidate.distance < best_.distance)) return;
+        best_ = candidate;
+        bestPatch_ = patch;
+        if (best_.distance > 0.0) toward_ = (best_.point - p_) / best_.distance;
+    }
+
+    void push(const Region& region, double bound) {
+        regions_.push_back(region);
+        queue_.push({bound, -1 - static_cast<std::ptrdiff_t>(regions_.size() - 1)});
+    }
+
+    void pushPatch(std::size_t patch) {
+        Region whole;
+        whole.patch = patch;
+        whole.net = pool_.size();
+        const std::vector<glm::dvec4>& net = tree_.patches()[patch].net;
+        pool_.insert(pool_.end(), net.begin(), net.end());
+        detail::project(pool_.data() + whole.net, netSize_, points_);
+        const double bound = detail::lowerBound(points_, p_, toward());
+        if (bound < best_.distance - tolerance_) push(whole, bound);
+    }
+
+    /// Where the distance provably grows across the region towards one of its edges inside the
+    /// patch, the region's nearest point lies on that edge, which a neighbour holds.
+    bool settledByNeighbour(const Region& region) const {
+        const glm::dvec4* net = pool_.data() + region.net;
+        const int signU = detail::gradientSign(net, points_, pu_, qv_, projector_.rational_, false, p_);
+        if ((signU > 0 && region.s0 > 0.0) || (signU < 0 && region.s1 < 1.0)) return true;
+        const int signV = detail::gradientSign(net, points_, pu_, qv_, projector_.rational_, true, p_);
+        return (signV > 0 && region.t0 > 0.0) || (signV < 0 && region.t1 < 1.0);
+    }
+
+    void split(const Region& region) {
+        // Four quarter nets: halve along u into the pool, then each half along v.
+        const std::size_t base = pool_.size();
+        pool_.resize(base + 6 * netSize_);
+        glm::dvec4* lowU = pool_.data() + base;
+        glm::dvec4* highU = lowU + netSize_;
+        const glm::dvec4* net = pool_.data() + region.net;
+        for (std::size_t j = 0; j < qv_; ++j)
+            detail::halveLine(net + j, qv_, pu_, lowU + j, highU + j, work_);
+        glm::dvec4* quarters = highU + netSize_;
+        for (std::size_t h = 0; h < 2; ++h)
+            for (std::size_t i = 0; i < pu_; ++i)
+                detail::halveLine(lowU + h * netSize_ + i * qv_, 1, qv_,
+                                  quarters + (2 * h) * netSize_ + i * qv_,
+                                  quarters + (2 * h + 1) * netSize_ + i * qv_, work_);
+        const double sm = 0.5 * (region.s0 + region.s1), tm = 0.5 * (region.t0 + region.t1);
+        for (std::size_t k = 0; k < 4; ++k) {
+            Region child = region;
+            child.depth = region.depth + 1;
+            child.net = base + (2 + k) * netSize_;
+            (k < 2 ? child.s1 : child.s0) = sm;
+            (k % 2 == 0 ? child.t1 : child.t0) = tm;
+            detail::project(pool_.data() + child.net, netSize_, points_);
+            const double bound = detail::lowerBound(points_, p_, toward());
+            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child)) push(child, bound);
+        }
+    }
+
+    /// The region's control point nearest to p, at its Bézier abscissa.
+    glm::dvec2 nearestNetPoint(const Region& region, double ua, double ub, double va, double vb) const {
+        const glm::dvec4* net = pool_.data() + region.net;
         std::size_t nearest = 0;
         double nearestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < patch.net.size(); ++k) {
-            const glm::dvec3 c = glm::dvec3(patch.net[k]) / patch.net[k].w;
-            const double d = glm::dot(c - p, c - p);
+        for (std::size_t k = 0; k < netSize_; ++k) {
+            const glm::dvec3 c = glm::dvec3(net[k]) / net[k].w;
+            const double d = glm::dot(c - p_, c - p_);
             if (d < nearestDistance) {
                 nearestDistance = d;
                 nearest = k;
             }
         }
-        const double s = pu > 1 ? static_cast<double>(nearest / qv) / static_cast<double>(pu - 1) : 0.5;
-        const double t = qv > 1 ? static_cast<double>(nearest % qv) / static_cast<double>(qv - 1) : 0.5;
-        auto at = [&](double a, double b) {
-            return glm::dvec2(patch.u0 + a * (patch.u1 - patch.u0), patch.v0 + b * (patch.v1 - patch.v0));
-        };
-        glm::dvec2 start = at(s, t);
-        glm::dvec3 sp = tree_.evaluate(static_cast<std::size_t>(node.patch), start.x, start.y, 0).point;
-        double startDistance = glm::dot(sp - p, sp - p);
-        constexpr int kGrid = 4;
-        for (int a = 0; a <= kGrid; ++a)
-            for (int b = 0; b <= kGrid; ++b) {
-                const glm::dvec2 g = at(static_cast<double>(a) / kGrid, static_cast<double>(b) / kGrid);
-                const glm::dvec3 gp = tree_.evaluate(static_cast<std::size_t>(node.patch), g.x, g.y, 0).point;
-                const double d = glm::dot(gp - p, gp - p);
-                if (d < startDistance) {
-                    startDistance = d;
-                    start = g;
-                }
-            }
-        const SurfacePoint candidate = polish(p, start);
-        if (candidate.distance < best.distance) best = candidate;
+        return {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
+                va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
     }
-    return best;
+
+    void visit(Region region, double bound) {
+        const BezierPatchTree::Patch& patch = tree_.patches()[region.patch];
+        const double ua = patch.u0 + region.s0 * (patch.u1 - patch.u0);
+        const double ub = patch.u0 + region.s1 * (patch.u1 - patch.u0);
+        const double va = patch.v0 + region.t0 * (patch.v1 - patch.v0);
+        const double vb = patch.v0 + region.t1 * (patch.v1 - patch.v0);
+        const bool holdsBest = std::isfinite(best_.distance) && bestPatch_ == region.patch &&
+                               best_.uv.x >= ua && best_.uv.x <= ub && best_.uv.y >= va && best_.uv.y <= vb;
+        glm::dvec2 start = best_.uv;
+        if (!holdsBest)
+            start = region.depth == 0 ? projector_.patchStart(region.patch, p_)
+                                      : nearestNetPoint(region, ua, ub, va, vb);
+        const glm::dvec4* net = pool_.data() + region.net;
+        detail::project(net, netSize_, points_);
+        if (detail::provablyConvex(net, points_, pu_, qv_, p_)) {
+            // Convex on the region: Newton held inside it finds the region's minimum.
+            take(projector_.polishIn(region.patch, p_, start, ua, ub, va, vb), region.patch);
+            return;
+        }
+        if (!holdsBest)
+            take(projector_.polishIn(region.patch, p_, start, patch.u0, patch.u1, patch.v0, patch.v1),
+                 region.patch);
+        if (region.depth < kMaxDepth && bound < best_.distance - tolerance_) split(region);
+    }
+
+    using Entry = std::pair<double, std::ptrdiff_t>;
+
+    const SurfaceProjector& projector_;
+    const BezierPatchTree& tree_;
+    const glm::dvec3 p_;
+    const std::size_t pu_, qv_, netSize_;
+    const double tolerance_;
+    SurfacePoint best_;
+    std::size_t bestPatch_ = 0;
+    glm::dvec3 toward_{0.0};
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+    // Scratch kept per thread between queries, so a query allocates nothing once warm.
+    static thread_local std::vector<Region> regions_;
+    static thread_local std::vector<glm::dvec4> pool_, work_;
+    static thread_local std::vector<glm::dvec3> points_;
+};
+
+thread_local std::vector<SurfaceProjector::Search::Region> SurfaceProjector::Search::regions_;
+thread_local std::vector<glm::dvec4> SurfaceProjector::Search::pool_, SurfaceProjector::Search::work_;
+thread_local std::vector<glm::dvec3> SurfaceProjector::Search::points_;
+
+SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
+    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    return Search(*this, p).run();
 }
 
 SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p) {
@@ -163,17 +369,7 @@ SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p) {
 }
 
 SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p, const glm::dvec2& guess) {
-    // A local search needs no patch tree: the plain de Boor path is cheaper than building one.
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
-    if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
-        throw GeometryError("closestPoint: the start guess is not finite");
-    auto eval = [&surface](double u, double v) {
-        const SurfaceDerivatives d = derivatives(surface, u, v, 2);
-        return BezierPatchTree::PatchPoint{d.at(0, 0), d.at(1, 0), d.at(0, 1),
-                                           d.at(2, 0), d.at(1, 1), d.at(0, 2)};
-    };
-    return polishWith(eval, surface.domainStartU(), surface.domainEndU(), surface.domainStartV(),
-                      surface.domainEndV(), p, guess);
+    return SurfaceProjector(surface).closestPointFrom(p, guess);
 }
 
 }  // namespace geom

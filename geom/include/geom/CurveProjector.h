@@ -11,14 +11,16 @@
 namespace geom {
 
 /// Point inversion against one curve, many times: its Bézier pieces and their boxes are built
-/// once; a query tries pieces nearest first and stops when no box can hold a nearer point.
+/// once; a query searches each piece on its own (corners lie on piece ends), nearest first, and
+/// subdivides a piece wherever its polygon's bound could still hold a nearer point.
 class CurveProjector {
 public:
     explicit CurveProjector(const Curve& curve);
 
     /// Global closest point.
     CurvePoint closestPoint(const glm::dvec3& p) const;
-    /// Newton from the guess u, held in the domain.
+    /// Local closest point: Newton from the guess u inside its piece, going on into the next
+    /// piece while that lowers the distance.
     CurvePoint closestPointFrom(const glm::dvec3& p, double guess) const;
 
 private:
@@ -30,9 +32,15 @@ private:
     struct Point {
         glm::dvec3 c, d1, d2;
     };
-    Point evaluate(double u) const;
+    Point evaluate(std::size_t piece, double u) const;
+    /// Newton from u on piece `index`, held inside [a, b] (a part of the piece).
+    CurvePoint polishIn(std::size_t index, const glm::dvec3& p, double u, double a, double b) const;
+    /// Newton from u held inside piece `index` (a local minimum of the distance on it).
+    CurvePoint polishOnPiece(std::size_t index, const glm::dvec3& p, double u) const;
 
     int degree_ = 0;
+    bool rational_ = false;
+    double scale_ = 0.0;  ///< the largest piece's box diagonal: the length scale for tolerances
     std::vector<Piece> pieces_;
 };
 

@@ -4,26 +4,40 @@
 #include "geom/Inversion.h"
 #include "geom/Surface.h"
 
+#include <cstddef>
+
 namespace geom {
 
 /// Point inversion against one surface, many times: patches and box tree built once; a query
-/// visits patches nearest first and stops when no box can hold a nearer point.
+/// searches each Bézier patch on its own (creases and seams lie on patch edges), nearest first,
+/// and subdivides a patch wherever its net's bound could still hold a nearer point.
 class SurfaceProjector {
 public:
     explicit SurfaceProjector(const Surface& surface);
 
     /// Global closest point.
     SurfacePoint closestPoint(const glm::dvec3& p) const;
-    /// Newton from a guess, kept in the domain (edges held as constraints).
+    /// Local closest point from a guess: Newton inside the guess's patch, edges held as
+    /// constraints, going on into a neighbouring patch while that lowers the distance.
     SurfacePoint closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const;
 
     const BezierPatchTree& tree() const { return tree_; }
 
 private:
-    /// Newton from uv on the whole domain (a local minimum of the distance).
+    class Search;
+
+    /// Newton from uv on patch `index`, held inside [ua, ub] x [va, vb] (a part of the patch).
+    SurfacePoint polishIn(std::size_t index, const glm::dvec3& p, glm::dvec2 uv, double ua, double ub,
+                          double va, double vb) const;
+    /// Newton from uv held inside patch `index` (a local minimum of the distance on that patch).
+    SurfacePoint polishOnPatch(std::size_t index, const glm::dvec3& p, glm::dvec2 uv) const;
+    /// polishOnPatch, then on into neighbouring patches while the distance falls.
     SurfacePoint polish(const glm::dvec3& p, glm::dvec2 uv) const;
+    /// The start of a patch's search: the best of its control points' abscissae and a small grid.
+    glm::dvec2 patchStart(std::size_t index, const glm::dvec3& p) const;
 
     BezierPatchTree tree_;
+    bool rational_ = false;
 };
 
 }  // namespace geom

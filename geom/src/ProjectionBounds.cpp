@@ -1,0 +1,198 @@
+#include "ProjectionBounds.h"
+
+#include "geom/BoundingBox.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace geom::detail {
+namespace {
+
+/// The sign of (S - p) . S_u over a polynomial Bézier piece with net points c, +1 or -1 where
+/// the net proves it, else 0: S - p lies in the hull of the points c - p, and S_u is a positive
+/// combination of the net's differences along u. alongV swaps the roles of u and v.
+int polynomialGradientSign(const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv, bool alongV,
+                           const glm::dvec3& p) {
+    const std::size_t lines = alongV ? qv : pu, across = alongV ? pu : qv;
+    auto at = [&](std::size_t line, std::size_t k) { return alongV ? c[k * qv + line] : c[line * qv + k]; };
+    int sign = 0;
+    for (std::size_t i = 0; i + 1 < lines; ++i)
+        for (std::size_t k = 0; k < across; ++k) {
+            const glm::dvec3 a = at(i + 1, k) - at(i, k);
+            for (const glm::dvec3& q : c) {
+                const double d = glm::dot(a, q - p);
+                const int here = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
+                if (here == 0 || (sign != 0 && here != sign)) return 0;
+                sign = here;
+            }
+        }
+    return sign;
+}
+
+/// A closed interval of reals, for bounding a rational piece's derivative.
+struct Interval {
+    double lo, hi;
+};
+Interval operator*(Interval a, Interval b) {
+    const double x = a.lo * b.lo, y = a.lo * b.hi, z = a.hi * b.lo, w = a.hi * b.hi;
+    return {std::min({x, y, z, w}), std::max({x, y, z, w})};
+}
+Interval operator-(Interval a, Interval b) {
+    return {a.lo - b.hi, a.hi - b.lo};
+}
+Interval operator+(Interval a, Interval b) {
+    return {a.lo + b.lo, a.hi + b.hi};
+}
+
+/// gradientSign for a rational piece with homogeneous net h and points c: S_u = (X_u w - X w_u)
+/// / w^2 bounded coordinate by coordinate from the ranges of the net and of its differences.
+int rationalGradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu,
+                         std::size_t qv, bool alongV, const glm::dvec3& p) {
+    const std::size_t lines = alongV ? qv : pu, across = alongV ? pu : qv;
+    const glm::dvec3 origin = c[0];  // as in provablyConvex
+    auto at = [&](std::size_t line, std::size_t k) {
+        const glm::dvec4 x = alongV ? h[k * qv + line] : h[line * qv + k];
+        return glm::dvec4(glm::dvec3(x) - origin * x.w, x.w);
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    Interval x[4], dx[4];
+    for (int m = 0; m < 4; ++m) x[m] = dx[m] = {inf, -inf};
+    for (std::size_t i = 0; i < lines; ++i)
+        for (std::size_t k = 0; k < across; ++k) {
+            const glm::dvec4 a = at(i, k);
+            const glm::dvec4 d = i + 1 < lines ? at(i + 1, k) - a : glm::dvec4(0.0);
+            for (int m = 0; m < 4; ++m) {
+                x[m] = {std::min(x[m].lo, a[m]), std::max(x[m].hi, a[m])};
+                if (i + 1 < lines) dx[m] = {std::min(dx[m].lo, d[m]), std::max(dx[m].hi, d[m])};
+            }
+        }
+    Interval g{0.0, 0.0};
+    for (int m = 0; m < 3; ++m) {
+        // The sign of S_u is that of X_u w - X w_u (w > 0); scale does not matter.
+        const Interval derivative = dx[m] * x[3] - x[m] * dx[3];
+        double lo = inf, hi = -inf;
+        for (const glm::dvec3& q : c) {
+            lo = std::min(lo, q[m] - p[m]);
+            hi = std::max(hi, q[m] - p[m]);
+        }
+        g = g + derivative * Interval{lo, hi};
+    }
+    return g.lo > 0.0 ? 1 : (g.hi < 0.0 ? -1 : 0);
+}
+
+Interval operator/(Interval a, Interval positive) {
+    return a * Interval{1.0 / positive.hi, 1.0 / positive.lo};
+}
+Interval operator*(double k, Interval a) {
+    return k >= 0.0 ? Interval{k * a.lo, k * a.hi} : Interval{k * a.hi, k * a.lo};
+}
+Interval square(Interval a) {
+    const double lo = a.lo > 0.0 ? a.lo * a.lo : (a.hi < 0.0 ? a.hi * a.hi : 0.0);
+    return {lo, std::max(a.lo * a.lo, a.hi * a.hi)};
+}
+
+/// The range of each homogeneous coordinate of a net's (i, j) -> value(i, j) over the net.
+template <class F>
+std::array<Interval, 4> range(std::size_t rows, std::size_t columns, F&& value) {
+    const double inf = std::numeric_limits<double>::infinity();
+    std::array<Interval, 4> r;
+    r.fill({inf, -inf});
+    if (rows == 0 || columns == 0) r.fill({0.0, 0.0});
+    for (std::size_t i = 0; i < rows; ++i)
+        for (std::size_t j = 0; j < columns; ++j) {
+            const glm::dvec4 x = value(i, j);
+            for (int m = 0; m < 4; ++m) r[m] = {std::min(r[m].lo, x[m]), std::max(r[m].hi, x[m])};
+        }
+    return r;
+}
+
+}  // namespace
+
+void halveLine(const glm::dvec4* in, std::size_t stride, std::size_t n, glm::dvec4* left, glm::dvec4* right,
+               std::vector<glm::dvec4>& work) {
+    work.resize(n);
+    for (std::size_t k = 0; k < n; ++k) work[k] = in[k * stride];
+    left[0] = work[0];
+    right[(n - 1) * stride] = work[n - 1];
+    for (std::size_t r = 1; r < n; ++r) {
+        for (std::size_t i = 0; i + r < n; ++i) work[i] = 0.5 * (work[i] + work[i + 1]);
+        left[r * stride] = work[0];
+        right[(n - 1 - r) * stride] = work[n - 1 - r];
+    }
+}
+
+void project(const glm::dvec4* net, std::size_t count, std::vector<glm::dvec3>& points) {
+    points.resize(count);
+    for (std::size_t k = 0; k < count; ++k) points[k] = glm::dvec3(net[k]) / net[k].w;
+}
+
+double lowerBound(const std::vector<glm::dvec3>& c, const glm::dvec3& p, const glm::dvec3* toward) {
+    BoundingBox box;
+    double along = std::numeric_limits<double>::infinity();
+    for (const glm::dvec3& q : c) {
+        box.add(q);
+        if (toward) along = std::min(along, glm::dot(q - p, *toward));
+    }
+    const double d = box.distance(p);
+    return toward ? std::max(d, along) : d;
+}
+
+// The Hessian of |S - p|^2 / 2 bounded by interval arithmetic on the ranges of the net and of its
+// differences (the derivatives of the rational point by the quotient rule), then shown positive
+// definite everywhere.
+bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
+                    const glm::dvec3& p) {
+    // Taken about the piece's first point: the quotient rule's terms then stay as small as the piece.
+    const glm::dvec3 origin = c[0];
+    auto at = [&](std::size_t i, std::size_t j) {
+        const glm::dvec4 x = h[i * qv + j];
+        return glm::dvec4(glm::dvec3(x) - origin * x.w, x.w);
+    };
+    const double nu = static_cast<double>(pu - 1), nv = static_cast<double>(qv - 1);
+    const auto x = range(pu, qv, at);
+    const auto xu =
+        range(pu - 1, qv, [&](std::size_t i, std::size_t j) { return nu * (at(i + 1, j) - at(i, j)); });
+    const auto xv =
+        range(pu, qv - 1, [&](std::size_t i, std::size_t j) { return nv * (at(i, j + 1) - at(i, j)); });
+    const auto xuu = range(pu >= 3 ? pu - 2 : 0, qv, [&](std::size_t i, std::size_t j) {
+        return nu * (nu - 1.0) * (at(i + 2, j) - 2.0 * at(i + 1, j) + at(i, j));
+    });
+    const auto xvv = range(pu, qv >= 3 ? qv - 2 : 0, [&](std::size_t i, std::size_t j) {
+        return nv * (nv - 1.0) * (at(i, j + 2) - 2.0 * at(i, j + 1) + at(i, j));
+    });
+    const auto xuv = range(pu - 1, qv - 1, [&](std::size_t i, std::size_t j) {
+        return nu * nv * (at(i + 1, j + 1) - at(i + 1, j) - at(i, j + 1) + at(i, j));
+    });
+    const Interval w = x[3];
+    if (!(w.lo > 0.0)) return false;
+    Interval huu{0.0, 0.0}, huv{0.0, 0.0}, hvv{0.0, 0.0};
+    for (int m = 0; m < 3; ++m) {
+        const double inf = std::numeric_limits<double>::infinity();
+        Interval point{inf, -inf};
+        for (const glm::dvec3& q : c)
+            point = {std::min(point.lo, q[m] - origin[m]), std::max(point.hi, q[m] - origin[m])};
+        const Interval su = (xu[m] - xu[3] * point) / w;
+        const Interval sv = (xv[m] - xv[3] * point) / w;
+        const Interval suu = (xuu[m] - 2.0 * (xu[3] * su) - xuu[3] * point) / w;
+        const Interval svv = (xvv[m] - 2.0 * (xv[3] * sv) - xvv[3] * point) / w;
+        const Interval suv = (xuv[m] - xu[3] * sv - xv[3] * su - xuv[3] * point) / w;
+        const Interval r{point.lo - (p[m] - origin[m]), point.hi - (p[m] - origin[m])};
+        huu = huu + square(su) + r * suu;
+        hvv = hvv + square(sv) + r * svv;
+        huv = huv + su * sv + r * suv;
+    }
+    if (qv == 1) return huu.lo > 0.0;
+    const double cross = std::max(huv.lo * huv.lo, huv.hi * huv.hi);
+    return huu.lo > 0.0 && hvv.lo > 0.0 && huu.lo * hvv.lo > cross;
+}
+
+int gradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
+                 bool rational, bool alongV, const glm::dvec3& p) {
+    return rational ? rationalGradientSign(h, c, pu, qv, alongV, p)
+                    : polynomialGradientSign(c, pu, qv, alongV, p);
+}
+
+}  // namespace geom::detail

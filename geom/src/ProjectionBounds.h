@@ -1,0 +1,39 @@
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <vector>
+
+// Private to geom: the bounds with which the closest-point searches (SurfaceProjector,
+// CurveProjector) discard or settle a Bézier piece without running Newton on it. A piece is its
+// homogeneous net h, (pu x qv), u slow, positive weights, in its own parameters [0, 1]^2, and the
+// net's points c = h.xyz / h.w; a curve piece is one row (qv = 1).
+namespace geom::detail {
+
+/// Splits the Bézier polygon in[0], in[stride], ... of n points at 1/2 into left and right
+/// (same stride), by de Casteljau's midpoint rule; work is scratch.
+void halveLine(const glm::dvec4* in, std::size_t stride, std::size_t n, glm::dvec4* left, glm::dvec4* right,
+               std::vector<glm::dvec4>& work);
+
+/// The points of a homogeneous net.
+void project(const glm::dvec4* net, std::size_t count, std::vector<glm::dvec3>& points);
+
+/// A lower bound on the distance from p to the piece: the box of its points, and their extent
+/// along the unit direction `toward` (the best point so far; null for none). Both hold the piece
+/// by the convex hull property.
+double lowerBound(const std::vector<glm::dvec3>& c, const glm::dvec3& p, const glm::dvec3* toward);
+
+/// The sign of (S - p) . S_u over the piece (alongV: of (S - p) . S_v), +1 or -1 where the net
+/// proves it, else 0. Where it is proved, the piece's nearest point lies on the edge towards
+/// which the distance falls.
+int gradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
+                 bool rational, bool alongV, const glm::dvec3& p);
+
+/// True when |S - p|^2 is provably strictly convex over the piece (for a curve piece, qv = 1:
+/// along u). Then a local minimum of the distance found inside the piece is the piece's minimum.
+bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
+                    const glm::dvec3& p);
+
+}  // namespace geom::detail

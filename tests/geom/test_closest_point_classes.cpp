@@ -1,0 +1,355 @@
+// Closest point on every class of input: degree 1, creases (knots of multiplicity >= degree),
+// rational nets with weights over four decades, closed (periodic) curves and surfaces. Each
+// answer is compared with an independent reference: dense samples on every knot span, the best
+// of them refined by a compass search inside their span (the plain de Boor evaluation).
+
+#include "geom/CurveProjector.h"
+#include "geom/Evaluate.h"
+#include "geom/GlobalInterpolation.h"
+#include "geom/Inversion.h"
+#include "geom/SurfaceProjector.h"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+using namespace geom;
+
+namespace {
+
+/// A clamped knot vector for `count` points of `degree` with random interior knots; `repeat`
+/// of them (when there are that many) get multiplicity `multiplicity`.
+std::vector<double> knotsWith(std::mt19937& rng, int degree, std::size_t count, int multiplicity,
+                              int repeat) {
+    std::uniform_real_distribution<double> unit(0.05, 0.95);
+    const std::size_t interiorSlots = count - static_cast<std::size_t>(degree) - 1;
+    std::vector<double> interior;
+    while (interior.size() < interiorSlots) {
+        const double k = unit(rng);
+        const std::size_t times = repeat > 0 ? std::min<std::size_t>(static_cast<std::size_t>(multiplicity),
+                                                                     interiorSlots - interior.size())
+                                             : 1;
+        if (repeat > 0) --repeat;
+        interior.insert(interior.end(), times, k);
+    }
+    std::sort(interior.begin(), interior.end());
+    std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
+    knots.insert(knots.end(), interior.begin(), interior.end());
+    knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, 1.0);
+    return knots;
+}
+
+/// The distinct knot values inside the domain: the span breaks.
+std::vector<double> breaks(const std::vector<double>& knots, int degree, std::size_t count) {
+    std::vector<double> out;
+    for (std::size_t i = static_cast<std::size_t>(degree); i <= count; ++i)
+        if (out.empty() || knots[i] > out.back()) out.push_back(knots[i]);
+    return out;
+}
+
+/// The reference distance: samples on every span rectangle, the best few refined by a compass
+/// search held inside their rectangle.
+double referenceDistance(const Surface& s, const glm::dvec3& p) {
+    const std::vector<double> bu = breaks(s.knotsU, s.degreeU, s.countU);
+    const std::vector<double> bv = breaks(s.knotsV, s.degreeV, s.countV);
+    struct Sample {
+        double d;
+        double u, v;
+        std::size_t i, j;
+    };
+    std::vector<Sample> samples;
+    constexpr int kGrid = 10;
+    auto distance = [&](double u, double v) { return glm::length(evaluate(s, u, v) - p); };
+    for (std::size_t i = 0; i + 1 < bu.size(); ++i)
+        for (std::size_t j = 0; j + 1 < bv.size(); ++j)
+            for (int a = 0; a <= kGrid; ++a)
+                for (int b = 0; b <= kGrid; ++b) {
+                    const double u = bu[i] + (bu[i + 1] - bu[i]) * a / kGrid;
+                    const double v = bv[j] + (bv[j + 1] - bv[j]) * b / kGrid;
+                    samples.push_back({distance(u, v), u, v, i, j});
+                }
+    const std::size_t keep = std::min<std::size_t>(6, samples.size());
+    std::partial_sort(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep), samples.end(),
+                      [](const Sample& a, const Sample& b) { return a.d < b.d; });
+    double best = samples.front().d;
+    for (std::size_t k = 0; k < keep; ++k) {
+        Sample x = samples[k];
+        const double u0 = bu[x.i], u1 = bu[x.i + 1], v0 = bv[x.j], v1 = bv[x.j + 1];
+        double hu = (u1 - u0) / kGrid, hv = (v1 - v0) / kGrid;
+        while (hu > 1e-13 * (u1 - u0) || hv > 1e-13 * (v1 - v0)) {
+            bool improved = false;
+            for (int du = -1; du <= 1; ++du)
+                for (int dv = -1; dv <= 1; ++dv) {
+                    const double u = std::clamp(x.u + du * hu, u0, u1), v = std::clamp(x.v + dv * hv, v0, v1);
+                    const double d = distance(u, v);
+                    if (d < x.d) {
+                        x = {d, u, v, x.i, x.j};
+                        improved = true;
+                    }
+                }
+            if (!improved) {
+                hu *= 0.5;
+                hv *= 0.5;
+            }
+        }
+        best = std::min(best, x.d);
+    }
+    return best;
+}
+
+double referenceDistance(const Curve& c, const glm::dvec3& p) {
+    const std::vector<double> b = breaks(c.knots, c.degree, c.points.size());
+    struct Sample {
+        double d, u;
+        std::size_t i;
+    };
+    std::vector<Sample> samples;
+    constexpr int kGrid = 40;
+    auto distance = [&](double u) { return glm::length(evaluate(c, u) - p); };
+    for (std::size_t i = 0; i + 1 < b.size(); ++i)
+        for (int a = 0; a <= kGrid; ++a) {
+            const double u = b[i] + (b[i + 1] - b[i]) * a / kGrid;
+            samples.push_back({distance(u), u, i});
+        }
+    const std::size_t keep = std::min<std::size_t>(6, samples.size());
+    std::partial_sort(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep), samples.end(),
+                      [](const Sample& x, const Sample& y) { return x.d < y.d; });
+    double best = samples.front().d;
+    for (std::size_t k = 0; k < keep; ++k) {
+        Sample x = samples[k];
+        const double u0 = b[x.i], u1 = b[x.i + 1];
+        for (double h = (u1 - u0) / kGrid; h > 1e-14 * (u1 - u0);) {
+            const double left = std::clamp(x.u - h, u0, u1), right = std::clamp(x.u + h, u0, u1);
+            const double dl = distance(left), dr = distance(right);
+            if (dl < x.d && dl <= dr)
+                x = {dl, left, x.i};
+            else if (dr < x.d)
+                x = {dr, right, x.i};
+            else
+                h *= 0.5;
+        }
+        best = std::min(best, x.d);
+    }
+    return best;
+}
+
+/// Query points: half anywhere around the shape, a quarter just off it, a quarter near its
+/// knot lines (where creases are).
+std::vector<glm::dvec3> queries(std::mt19937& rng, const Surface& s, int count) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0), side(-1.0, 1.0);
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const glm::dvec3& q : s.points) {
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+    }
+    const glm::dvec3 mid = 0.5 * (lo + hi), half = 0.75 * (hi - lo) + glm::dvec3(0.1);
+    const std::vector<double> bu = breaks(s.knotsU, s.degreeU, s.countU);
+    const double small = 0.05 * glm::length(hi - lo);
+    std::vector<glm::dvec3> out;
+    for (int k = 0; k < count; ++k) {
+        double u = s.domainStartU() + unit(rng) * (s.domainEndU() - s.domainStartU());
+        const double v = s.domainStartV() + unit(rng) * (s.domainEndV() - s.domainStartV());
+        const glm::dvec3 offset(side(rng), side(rng), side(rng));
+        if (k % 4 < 2)
+            out.push_back(mid + half * offset);
+        else if (k % 4 == 2)
+            out.push_back(evaluate(s, u, v) + small * offset);
+        else {
+            u = bu[static_cast<std::size_t>(unit(rng) * static_cast<double>(bu.size() - 1) + 0.5)];
+            out.push_back(evaluate(s, u, v) + small * offset);
+        }
+    }
+    return out;
+}
+
+/// Runs `count` queries on the surface; returns how many answers are farther than the reference
+/// by more than 1e-9, and checks each answer's point and distance agree with its (u, v).
+int surfaceFailures(std::mt19937& rng, const Surface& s, int count) {
+    const SurfaceProjector projector(s);
+    int failures = 0;
+    for (const glm::dvec3& p : queries(rng, s, count)) {
+        const SurfacePoint q = projector.closestPoint(p);
+        REQUIRE(glm::length(evaluate(s, q.uv.x, q.uv.y) - q.point) < 1e-9);
+        REQUIRE(std::abs(glm::length(q.point - p) - q.distance) < 1e-12);
+        const double reference = referenceDistance(s, p);
+        if (q.distance > reference + 1e-9) {
+            ++failures;
+            WARN("query (" << p.x << ", " << p.y << ", " << p.z << "): " << q.distance << " at (" << q.uv.x
+                           << ", " << q.uv.y << "), reference " << reference);
+        }
+    }
+    return failures;
+}
+
+std::vector<glm::dvec3> randomNet(std::mt19937& rng, std::size_t nu, std::size_t nv, double height) {
+    std::uniform_real_distribution<double> z(-height, height);
+    std::vector<glm::dvec3> pts;
+    for (std::size_t i = 0; i < nu; ++i)
+        for (std::size_t j = 0; j < nv; ++j)
+            pts.emplace_back(static_cast<double>(i), static_cast<double>(j), z(rng));
+    return pts;
+}
+
+std::vector<double> wideWeights(std::mt19937& rng, std::size_t count) {
+    std::uniform_real_distribution<double> decade(-2.0, 2.0);
+    std::vector<double> w;
+    for (std::size_t i = 0; i < count; ++i) w.push_back(std::pow(10.0, decade(rng)));
+    return w;
+}
+
+}  // namespace
+
+TEST_CASE("closest point on a degree-1 surface with a crease is the nearest (the issue's example)",
+          "[geom][inversion][classes]") {
+    const std::vector<double> knots{0, 0, 0.5, 1, 1};
+    const double z[3][3] = {{-0.25, -0.25, -0.25}, {-0.75, 0.5, 0}, {-0.5, -1, 0.75}};
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) pts.emplace_back(i, j, z[i][j]);
+    const Surface s(1, 1, knots, knots, 3, 3, pts);
+    const glm::dvec3 p(1.75, 1.125, -1.125);
+    const SurfacePoint q = SurfaceProjector(s).closestPoint(p);
+    CHECK(q.distance <= glm::length(evaluate(s, 0.99, 0.5) - p));
+    CHECK(q.distance <= referenceDistance(s, p) + 1e-12);
+    // The local search from the crease goes on into the patch that holds the nearer point.
+    const SurfacePoint local = closestPoint(s, p, glm::dvec2(1.0, 0.5));
+    CHECK(local.distance <= glm::length(evaluate(s, 0.99, 0.5) - p));
+}
+
+TEST_CASE("closest point is exact on degree-1 surfaces with interior knots", "[geom][inversion][classes]") {
+    std::mt19937 rng(101);
+    int failures = 0;
+    for (int k = 0; k < 12; ++k) {
+        const std::size_t nu = 3 + k % 3, nv = 3 + (k / 3) % 3;
+        const Surface s(1, 1, knotsWith(rng, 1, nu, 1, 0), knotsWith(rng, 1, nv, 1, 0), nu, nv,
+                        randomNet(rng, nu, nv, 1.0));
+        failures += surfaceFailures(rng, s, 200);
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point is exact on degree 2x5 surfaces with double knots", "[geom][inversion][classes]") {
+    std::mt19937 rng(202);
+    int failures = 0;
+    for (int k = 0; k < 8; ++k) {
+        const std::size_t nu = 6, nv = 9;
+        const Surface s(2, 5, knotsWith(rng, 2, nu, 2, 1), knotsWith(rng, 5, nv, 2, 1), nu, nv,
+                        randomNet(rng, nu, nv, 1.5));
+        failures += surfaceFailures(rng, s, 250);
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point is exact on surfaces with C0 and C1 knot lines of any degree",
+          "[geom][inversion][classes]") {
+    std::mt19937 rng(303);
+    std::uniform_int_distribution<int> degree(1, 4);
+    int failures = 0;
+    for (int k = 0; k < 16; ++k) {
+        const int p = degree(rng), q = degree(rng);
+        const std::size_t nu = static_cast<std::size_t>(p) + 4, nv = static_cast<std::size_t>(q) + 4;
+        // Multiplicity p (C0, a crease) or p - 1 (C1) in each direction.
+        const int mu = std::max(1, p - k % 2), mv = std::max(1, q - (k / 2) % 2);
+        const Surface s(p, q, knotsWith(rng, p, nu, mu, 1), knotsWith(rng, q, nv, mv, 1), nu, nv,
+                        randomNet(rng, nu, nv, 1.5));
+        failures += surfaceFailures(rng, s, 150);
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point is exact on rational surfaces with weights from 1e-2 to 1e2",
+          "[geom][inversion][classes]") {
+    std::mt19937 rng(404);
+    int failures = 0;
+    for (int k = 0; k < 10; ++k) {
+        const int p = 1 + k % 3, q = 2 + k % 2;
+        const std::size_t nu = static_cast<std::size_t>(p) + 3, nv = static_cast<std::size_t>(q) + 3;
+        const Surface s(p, q, knotsWith(rng, p, nu, 1, 0), knotsWith(rng, q, nv, q, k % 2), nu, nv,
+                        randomNet(rng, nu, nv, 1.0), wideWeights(rng, nu * nv));
+        failures += surfaceFailures(rng, s, 200);
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point is exact on closed (periodic) surfaces", "[geom][inversion][classes]") {
+    std::mt19937 rng(505);
+    std::uniform_real_distribution<double> bump(-0.15, 0.15);
+    int failures = 0;
+    for (int k = 0; k < 6; ++k) {
+        // A bumpy torus through a grid, periodic in both directions (seams on the domain edges).
+        const std::size_t nu = 7 + static_cast<std::size_t>(k % 3), nv = 6;
+        std::vector<glm::dvec3> grid;
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(nu);
+                const double b = 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(nv);
+                const double r = 0.5 + bump(rng);
+                grid.emplace_back((1.5 + r * std::cos(b)) * std::cos(a),
+                                  (1.5 + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+            }
+        const int degree = k % 2 == 0 ? 3 : 1;
+        const Surface s =
+            interpolateSurface(grid, nu, nv, degree, degree, Closure::Periodic, Closure::Periodic);
+        failures += surfaceFailures(rng, s, 200);
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point on curves of degree 1 to 7, with corners, wide weights, closed",
+          "[geom][inversion][classes]") {
+    std::mt19937 rng(606);
+    std::uniform_real_distribution<double> c(-1.0, 1.0), unit(0.0, 1.0);
+    int failures = 0, queriesRun = 0;
+    for (int k = 0; k < 42; ++k) {
+        const int degree = 1 + k % 7;
+        const int kind = (k / 7) % 3;  // 0: corners (multiplicity = degree), 1: rational, 2: closed
+        Curve curve;
+        if (kind == 2) {
+            std::vector<glm::dvec3> data;
+            const std::size_t count = 8 + static_cast<std::size_t>(k % 5);
+            for (std::size_t i = 0; i < count; ++i) {
+                const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(count);
+                data.emplace_back(std::cos(a) + 0.2 * c(rng), std::sin(a) + 0.2 * c(rng), 0.3 * c(rng));
+            }
+            curve = interpolateCurve(data, degree % 2 == 1 ? degree : degree + 1, Closure::Periodic);
+        } else {
+            const std::size_t count = static_cast<std::size_t>(degree) + 6;
+            std::vector<glm::dvec3> pts;
+            for (std::size_t i = 0; i < count; ++i) pts.emplace_back(c(rng), c(rng), c(rng));
+            curve = Curve(degree, knotsWith(rng, degree, count, kind == 0 ? degree : 1, kind == 0 ? 2 : 0),
+                          pts, kind == 1 ? wideWeights(rng, count) : std::vector<double>{});
+        }
+        const CurveProjector projector(curve);
+        for (int trial = 0; trial < 120; ++trial, ++queriesRun) {
+            glm::dvec3 p(1.5 * c(rng), 1.5 * c(rng), 1.5 * c(rng));
+            if (trial % 2 == 1) {
+                const double u = curve.domainStart() + unit(rng) * (curve.domainEnd() - curve.domainStart());
+                p = evaluate(curve, u) + 0.05 * glm::dvec3(c(rng), c(rng), c(rng));
+            }
+            const CurvePoint q = projector.closestPoint(p);
+            REQUIRE(glm::length(evaluate(curve, q.u) - q.point) < 1e-9);
+            const double reference = referenceDistance(curve, p);
+            if (q.distance > reference + 1e-9) {
+                ++failures;
+                WARN("curve " << k << " query (" << p.x << ", " << p.y << ", " << p.z << "): " << q.distance
+                              << " at " << q.u << ", reference " << reference);
+            }
+        }
+    }
+    CHECK(queriesRun == 42 * 120);
+    CHECK(failures == 0);
+}
+
+TEST_CASE("local closest point on a curve goes on past a corner", "[geom][inversion][classes]") {
+    // A V: two lines meeting at (0, 1); from the corner, the nearest point of the right arm.
+    const Curve v(1, {0, 0, 0.5, 1, 1}, {{-1, 0, 0}, {0, 1, 0}, {1, 0, 0}});
+    const glm::dvec3 p(0.8, 0.6, 0.0);
+    const CurvePoint q = closestPoint(v, p, 0.3);
+    CHECK(q.u > 0.5);
+    CHECK(q.distance == Approx(std::abs(0.8 + 0.6 - 1.0) / std::sqrt(2.0)).margin(1e-12));
+}
