@@ -1,7 +1,12 @@
 # Warnings and sanitizers shared by every target of the project.
 add_library(project_options INTERFACE)
-target_compile_options(project_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow=local
-                                                  -Wnon-virtual-dtor -Wcast-align)
+target_compile_options(project_options INTERFACE -Wall -Wextra -Wpedantic -Wnon-virtual-dtor -Wcast-align)
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(project_options INTERFACE -Wshadow=local)
+else()
+  # clang: shadowing of locals; "#pragma GCC unroll" is a hint it may decline on a loop it cannot count.
+  target_compile_options(project_options INTERFACE -Wshadow-uncaptured-local -Wno-pass-failed)
+endif()
 if(PHIGS_WERROR)
   target_compile_options(project_options INTERFACE -Werror)
 endif()

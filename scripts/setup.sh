@@ -22,6 +22,10 @@ packages=(
   libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
   libtbb-dev                         #   libtbb.so, named by OpenCASCADE's CMake config
 )
+# CI's second sanitizer stage builds the kernel's tests with clang as well (PHIGS_SETUP_CLANG=1).
+if [ "${PHIGS_SETUP_CLANG:-0}" = 1 ]; then
+  packages+=(clang libclang-rt-14-dev)  # clang 14 and its ASan/UBSan runtime
+fi
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

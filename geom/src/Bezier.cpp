@@ -68,14 +68,17 @@ void bernsteinBasis(int degree, double t, std::span<double> values, std::span<do
 }
 
 bool isBezier(const Curve& curve) {
+    validate(curve, "isBezier");
     return bezierKnots(curve.knots, curve.degree, curve.points.size());
 }
 
 bool isBezier(const Surface& s) {
+    validate(s, "isBezier");
     return bezierKnots(s.knotsU, s.degreeU, s.countU) && bezierKnots(s.knotsV, s.degreeV, s.countV);
 }
 
 glm::dvec3 evaluateBezier(const Curve& bezier, double u) {
+    validate(bezier, "evaluateBezier");
     if (!isBezier(bezier)) throw GeometryError("evaluateBezier: the curve is not a single Bézier segment");
     const ControlNet net = homogeneousNet(bezier);
     const glm::dvec4 h =
@@ -84,6 +87,7 @@ glm::dvec3 evaluateBezier(const Curve& bezier, double u) {
 }
 
 glm::dvec3 evaluateBezier(const Surface& bezier, double u, double v) {
+    validate(bezier, "evaluateBezier");
     if (!isBezier(bezier)) throw GeometryError("evaluateBezier: the surface is not a single Bézier patch");
     const ControlNet net = homogeneousNet(bezier, false);
     const double tv = localParameter(v, bezier.domainStartV(), bezier.domainEndV());
@@ -97,6 +101,7 @@ glm::dvec3 evaluateBezier(const Surface& bezier, double u, double v) {
 }
 
 std::pair<Curve, Curve> subdivide(const Curve& bezier, double u) {
+    validate(bezier, "subdivide");
     if (!isBezier(bezier)) throw GeometryError("subdivide: the curve is not a single Bézier segment");
     const double a = bezier.domainStart(), b = bezier.domainEnd();
     if (!(u > a && u < b))
@@ -116,6 +121,7 @@ std::pair<Curve, Curve> subdivide(const Curve& bezier, double u) {
 }
 
 std::pair<Surface, Surface> subdivide(const Surface& bezier, double t, bool alongV) {
+    validate(bezier, "subdivide");
     if (!isBezier(bezier)) throw GeometryError("subdivide: the surface is not a single Bézier patch");
     const double a = alongV ? bezier.domainStartV() : bezier.domainStartU();
     const double b = alongV ? bezier.domainEndV() : bezier.domainEndU();

@@ -48,6 +48,7 @@ std::vector<double> bezierKnots(int degree, double a, double b) {
 }  // namespace
 
 std::vector<BezierCurvePiece> extractBezier(const Curve& curve) {
+    validate(curve, "extractBezier");
     std::vector<double> knots = curve.knots;
     ControlNet net = homogeneousNet(curve);
     refineNet(curve.degree, knots, net,
@@ -71,6 +72,7 @@ std::vector<BezierCurvePiece> extractBezier(const Curve& curve) {
 }
 
 std::vector<BezierSurfacePiece> extractBezier(const Surface& surface) {
+    validate(surface, "extractBezier");
     std::vector<double> knotsU = surface.knotsU;
     std::vector<double> knotsV = surface.knotsV;
     ControlNet netU = homogeneousNet(surface, false);

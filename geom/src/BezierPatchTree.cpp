@@ -11,6 +11,7 @@ namespace geom {
 
 BezierPatchTree::BezierPatchTree(const Surface& surface)
     : degreeU_(surface.degreeU), degreeV_(surface.degreeV) {
+    validate(surface, "BezierPatchTree");
     const std::vector<BezierSurfacePiece> pieces = extractBezier(surface);
     patches_.reserve(pieces.size());
     BoundingBox all;

@@ -9,6 +9,9 @@
 namespace geom {
 
 ControlNet homogeneousNet(const Curve& curve) {
+    if (!curve.weights.empty() && curve.weights.size() != curve.points.size())
+        throw GeometryError("homogeneousNet: " + std::to_string(curve.weights.size()) + " weights for " +
+                            std::to_string(curve.points.size()) + " control points");
     ControlNet net;
     net.stride = 1;
     net.data.reserve(curve.points.size());
@@ -20,6 +23,11 @@ ControlNet homogeneousNet(const Curve& curve) {
 }
 
 ControlNet homogeneousNet(const Surface& surface, bool alongV) {
+    if (surface.points.size() != surface.countU * surface.countV ||
+        (!surface.weights.empty() && surface.weights.size() != surface.points.size()))
+        throw GeometryError("homogeneousNet: " + std::to_string(surface.points.size()) + " points and " +
+                            std::to_string(surface.weights.size()) + " weights for a " +
+                            std::to_string(surface.countU) + " x " + std::to_string(surface.countV) + " net");
     ControlNet net;
     net.stride = alongV ? surface.countU : surface.countV;
     net.data.resize(surface.points.size());

@@ -894,7 +894,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
     checkOptions(options, "reduceCurve");
-    validate(curve);
+    validate(curve, "reduceCurve");
     if (curve.rational())
         throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
     const bool measuring = std::isfinite(options.tolerance);
@@ -1043,7 +1043,7 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
 SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
                                const ReductionOptions& options) {
     checkOptions(options, "reduceSurface");
-    validate(surface);
+    validate(surface, "reduceSurface");
     if (surface.rational())
         throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
     SurfaceReduction out;

@@ -104,6 +104,7 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
 }  // namespace
 
 Curve elevateDegree(const Curve& curve, int times) {
+    validate(curve, "elevateDegree");
     Curve out = curve;
     ControlNet net = homogeneousNet(curve);
     elevateNet(curve.degree, out.knots, net, times);
@@ -114,6 +115,7 @@ Curve elevateDegree(const Curve& curve, int times) {
 }
 
 Surface elevateDegree(const Surface& surface, int times, bool alongV) {
+    validate(surface, "elevateDegree");
     Surface out = surface;
     ControlNet net = homogeneousNet(surface, alongV);
     elevateNet(alongV ? surface.degreeV : surface.degreeU, alongV ? out.knotsV : out.knotsU, net, times);

@@ -254,6 +254,8 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    validate(original, "measureDeviation: original");
+    validate(reduced, "measureDeviation: reduced");
     if (original.rational() || reduced.rational())
         return measureDeviationByProjection(original, reduced, samplesPerSpan);
     if (original.domainStart() != reduced.domainStart() || original.domainEnd() != reduced.domainEnd())
@@ -300,6 +302,7 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
     : original_(original), samplesPerSpan_(samplesPerSpan) {
+    validate(original, "measureDeviation: original");
     if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     originalForms_ = detail::powerForms(original.degree, original_.knots, original_.points.data(),
@@ -310,6 +313,7 @@ CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSp
 
 CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
                                             int reducedSamplesPerSpan) const {
+    validate(reduced, "measureDeviation: reduced");
     if (reduced.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     if (original_.domainStart() != reduced.domainStart() || original_.domainEnd() != reduced.domainEnd())
         throw GeometryError("measureDeviation: a parameter map needs curves on one domain");
@@ -335,6 +339,8 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {
+    validate(original, "measureDeviation: original");
+    validate(reduced, "measureDeviation: reduced");
     if (original.domainStartU() != reduced.domainStartU() || original.domainEndU() != reduced.domainEndU() ||
         original.domainStartV() != reduced.domainStartV() || original.domainEndV() != reduced.domainEndV())
         throw GeometryError("measureDeviation: the two surfaces have different parameter domains");

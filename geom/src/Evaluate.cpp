@@ -1,12 +1,15 @@
 #include "geom/Evaluate.h"
 
+#include "Checked.h"
 #include "geom/Basis.h"
+#include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace geom {
 namespace {
@@ -21,18 +24,21 @@ double clampTo(double x, double lo, double hi) {
     return std::min(std::max(x, lo), hi);
 }
 
-}  // namespace
-
-glm::dvec3 evaluate(const Curve& curve, double u) {
-    return derivatives(curve, u, 0)[0];
+void checkOrder(int order, const char* where) {
+    if (order < 0 || order > 64)
+        throw GeometryError(std::string(where) + ": derivative order " + std::to_string(order) +
+                            " is outside 0..64");
 }
 
-std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order) {
+std::vector<glm::dvec3> curveDerivatives(const Curve& curve, double u, int order, const char* where) {
+    detail::checkShape(curve, where);
+    checkOrder(order, where);
     const int p = curve.degree;
     const std::size_t w = static_cast<std::size_t>(p) + 1;
     const int du = std::min(order, p);
-    u = clampTo(u, curve.domainStart(), curve.domainEnd());
+    u = detail::checkedParameter(u, curve.domainStart(), curve.domainEnd(), where, "u");
     const std::size_t span = findSpan(p, curve.knots, curve.points.size(), u);
+    detail::checkSpan(curve.knots, span, p, where);
     std::vector<double> nders(w * static_cast<std::size_t>(du + 1));
     basisDerivatives(span, u, p, curve.knots, du, nders);
 
@@ -42,6 +48,9 @@ std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order) {
         for (std::size_t j = 0; j < w; ++j) {
             const std::size_t idx = span - static_cast<std::size_t>(p) + j;
             const double wt = curve.weight(idx);
+            if (!(wt > 0.0))
+                throw GeometryError(std::string(where) + ": weight " + std::to_string(idx) +
+                                    " is not positive");
             hom[static_cast<std::size_t>(k)] +=
                 nders[static_cast<std::size_t>(k) * w + j] * glm::dvec4(curve.points[idx] * wt, wt);
         }
@@ -52,25 +61,27 @@ std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order) {
         for (int i = 1; i <= k; ++i)
             v -= binomial(k, i) * hom[static_cast<std::size_t>(i)].w * ck[static_cast<std::size_t>(k - i)];
         ck[static_cast<std::size_t>(k)] = v / hom[0].w;
+        detail::checkResult(ck[static_cast<std::size_t>(k)], where);
     }
     return ck;
 }
 
-glm::dvec3 evaluate(const Surface& surface, double u, double v) {
-    return derivatives(surface, u, v, 0).at(0, 0);
-}
-
-SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int order) {
+SurfaceDerivatives surfaceDerivatives(const Surface& surface, double u, double v, int order,
+                                      const char* where) {
+    detail::checkShape(surface, where);
+    checkOrder(order, where);
     const int p = surface.degreeU;
     const int q = surface.degreeV;
     const std::size_t wu = static_cast<std::size_t>(p) + 1;
     const std::size_t wv = static_cast<std::size_t>(q) + 1;
     const int du = std::min(order, p);
     const int dv = std::min(order, q);
-    u = clampTo(u, surface.domainStartU(), surface.domainEndU());
-    v = clampTo(v, surface.domainStartV(), surface.domainEndV());
+    u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), where, "u");
+    v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), where, "v");
     const std::size_t spanU = findSpan(p, surface.knotsU, surface.countU, u);
     const std::size_t spanV = findSpan(q, surface.knotsV, surface.countV, v);
+    detail::checkSpan(surface.knotsU, spanU, p, where);
+    detail::checkSpan(surface.knotsV, spanV, q, where);
     std::vector<double> nu(wu * static_cast<std::size_t>(du + 1));
     std::vector<double> nv(wv * static_cast<std::size_t>(dv + 1));
     basisDerivatives(spanU, u, p, surface.knotsU, du, nu);
@@ -86,6 +97,9 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
                 const std::size_t i = spanU - static_cast<std::size_t>(p) + r;
                 const std::size_t j = spanV - static_cast<std::size_t>(q) + s;
                 const double wt = surface.weight(i, j);
+                if (!(wt > 0.0))
+                    throw GeometryError(std::string(where) + ": weight (" + std::to_string(i) + ", " +
+                                        std::to_string(j) + ") is not positive");
                 temp[s] +=
                     nu[static_cast<std::size_t>(k) * wu + r] * glm::dvec4(surface.point(i, j) * wt, wt);
             }
@@ -117,12 +131,36 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
                 val -= binomial(k, i) * v2;
             }
             out.at(k, l) = val / w00;
+            detail::checkResult(out.at(k, l), where);
         }
     return out;
 }
 
+}  // namespace
+
+glm::dvec3 evaluate(const Curve& curve, double u) {
+    return curveDerivatives(curve, u, 0, "evaluate")[0];
+}
+
+std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order) {
+    return curveDerivatives(curve, u, order, "derivatives");
+}
+
+glm::dvec3 evaluate(const Surface& surface, double u, double v) {
+    return surfaceDerivatives(surface, u, v, 0, "evaluate").at(0, 0);
+}
+
+SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int order) {
+    return surfaceDerivatives(surface, u, v, order, "derivatives");
+}
+
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
+    detail::checkShape(surface, "normalFromDerivatives");
+    u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
+                                 "u");
+    v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), "normalFromDerivatives",
+                                 "v");
     const glm::dvec3 n = glm::cross(su, sv);
     const double len = glm::length(n);
     const double scale = glm::length(su) * glm::length(sv);
@@ -146,7 +184,7 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
 }
 
 glm::dvec3 normal(const Surface& surface, double u, double v) {
-    const SurfaceDerivatives d = derivatives(surface, u, v, 1);
+    const SurfaceDerivatives d = surfaceDerivatives(surface, u, v, 1, "normal");
     return normalFromDerivatives(surface, u, v, d.at(1, 0), d.at(0, 1));
 }
 

@@ -34,7 +34,8 @@ inline void spanBasis(const double* t, const double* inverse, double u, double* 
         for (std::size_t r = 0; r < j; ++r, ++inverse) {
             const double temp = n[r] * *inverse;
             n[r] = saved + (t[r + 1] - u) * temp;
-            saved = (u - t[1 + r - j]) * temp;
+            // 1 + r - j is negative for r < j - 1: t points inside the knot vector.
+            saved = (u - t[static_cast<std::ptrdiff_t>(1 + r) - static_cast<std::ptrdiff_t>(j)]) * temp;
         }
         n[j] = saved;
     }
@@ -347,7 +348,7 @@ struct FitRounds {
 
 FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& options)
     : original_(original), options_(options) {
-    validate(original);
+    validate(original, "FreeKnotFitter");
     if (original.rational()) throw GeometryError("FreeKnotFitter: rational curves are not supported");
     const std::size_t p = static_cast<std::size_t>(original.degree), n0 = original.points.size();
     for (std::size_t i = 0; i < p; ++i)

@@ -14,6 +14,14 @@
 namespace geom {
 namespace {
 
+/// Parameters must be finite (they are clamped into the domain, which NaN defeats).
+void checkFinite(std::span<const double> values, const char* where, const char* name) {
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (!std::isfinite(values[i]))
+            throw GeometryError(std::string(where) + ": parameter " + name + "[" + std::to_string(i) +
+                                "] is not finite");
+}
+
 /// Span and basis values with first derivatives for each parameter of one direction.
 struct DirectionBasis {
     std::vector<std::size_t> spans;
@@ -90,7 +98,7 @@ void evaluateRow(const Surface& s, const DirectionBasis& bv, const std::vector<g
 }  // namespace
 
 GridEvaluator::GridEvaluator(const Surface& surface)
-    : surface_(surface), net_(homogeneousNet(surface, false).data) {
+    : surface_((validate(surface, "GridEvaluator"), surface)), net_(homogeneousNet(surface, false).data) {
 }
 
 void GridEvaluator::evaluate(std::span<const double> us, std::span<const double> vs,
@@ -98,6 +106,8 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
     if (out.size() < us.size() * vs.size())
         throw GeometryError("GridEvaluator: output holds " + std::to_string(out.size()) + " samples, " +
                             std::to_string(us.size() * vs.size()) + " needed");
+    checkFinite(us, "GridEvaluator", "us");
+    checkFinite(vs, "GridEvaluator", "vs");
     const Surface& s = surface_;
     const std::size_t p = static_cast<std::size_t>(s.degreeU), q = static_cast<std::size_t>(s.degreeV);
     const std::size_t wu = p + 1, wv = q + 1;
@@ -161,6 +171,8 @@ std::vector<GridSample> GridEvaluator::evaluate(std::span<const double> us,
 }
 
 std::vector<glm::dvec3> evaluateMany(const Curve& curve, std::span<const double> us) {
+    validate(curve, "evaluateMany");
+    checkFinite(us, "evaluateMany", "us");
     const std::size_t w = static_cast<std::size_t>(curve.degree) + 1;
     std::vector<double> basis(w);
     std::vector<glm::dvec3> out;

@@ -5,6 +5,7 @@
 namespace geom {
 
 Curve insertKnot(const Curve& curve, double u, int times) {
+    validate(curve, "insertKnot");
     Curve out = curve;
     ControlNet net = homogeneousNet(curve);
     insertKnotInNet(curve.degree, out.knots, net, u, times, "insertKnot");
@@ -13,6 +14,7 @@ Curve insertKnot(const Curve& curve, double u, int times) {
 }
 
 Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert) {
+    validate(curve, "refineKnots");
     Curve out = curve;
     ControlNet net = homogeneousNet(curve);
     refineNet(curve.degree, out.knots, net, {knotsToInsert.begin(), knotsToInsert.end()}, "refineKnots");
@@ -21,6 +23,7 @@ Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert) {
 }
 
 Surface insertKnotU(const Surface& surface, double u, int times) {
+    validate(surface, "insertKnotU");
     Surface out = surface;
     ControlNet net = homogeneousNet(surface, false);
     insertKnotInNet(surface.degreeU, out.knotsU, net, u, times, "insertKnotU");
@@ -29,6 +32,7 @@ Surface insertKnotU(const Surface& surface, double u, int times) {
 }
 
 Surface insertKnotV(const Surface& surface, double v, int times) {
+    validate(surface, "insertKnotV");
     Surface out = surface;
     ControlNet net = homogeneousNet(surface, true);
     insertKnotInNet(surface.degreeV, out.knotsV, net, v, times, "insertKnotV");
@@ -37,6 +41,7 @@ Surface insertKnotV(const Surface& surface, double v, int times) {
 }
 
 Surface refineKnotsU(const Surface& surface, std::span<const double> knotsToInsert) {
+    validate(surface, "refineKnotsU");
     Surface out = surface;
     ControlNet net = homogeneousNet(surface, false);
     refineNet(surface.degreeU, out.knotsU, net, {knotsToInsert.begin(), knotsToInsert.end()}, "refineKnotsU");
@@ -45,6 +50,7 @@ Surface refineKnotsU(const Surface& surface, std::span<const double> knotsToInse
 }
 
 Surface refineKnotsV(const Surface& surface, std::span<const double> knotsToInsert) {
+    validate(surface, "refineKnotsV");
     Surface out = surface;
     ControlNet net = homogeneousNet(surface, true);
     refineNet(surface.degreeV, out.knotsV, net, {knotsToInsert.begin(), knotsToInsert.end()}, "refineKnotsV");

@@ -20,6 +20,7 @@ double distance4(const glm::dvec4& a, const glm::dvec4& b) {
 }  // namespace
 
 ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
+    validate(curve, "removeKnot");
     if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
     if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
     const int p = curve.degree;
@@ -264,6 +265,7 @@ LeastSquaresRemoval detail::removalWindow(int degree, std::span<const double> kn
 
 Curve removeKnotsLeastSquares(const Curve& curve, std::span<const double> values, const EndConditions& ends,
                               int margin) {
+    validate(curve, "removeKnotsLeastSquares");
     if (curve.rational())
         throw GeometryError("removeKnotsLeastSquares: rational curves are not supported (polynomial only)");
     LeastSquaresRemoval r =

@@ -1,4 +1,5 @@
 #include "geom/KnotSignificance.h"
+#include "Checked.h"
 
 #include "geom/GeometryError.h"
 
@@ -144,11 +145,36 @@ double knotRemovalWeight(int degree, std::span<const double> knots, std::span<co
 }
 
 double knotRemovalWeight(const Curve& curve, std::size_t knotIndex) {
-    if (!curve.rational()) return knotRemovalWeight(curve.degree, curve.knots, curve.points, 1, knotIndex);
-    const auto [r, s] =
-        interiorKnot(curve.degree, curve.knots, curve.points.size(), knotIndex, "knotRemovalWeight");
-    const std::vector<glm::dvec4> h = homogeneous(curve);
-    return removalWeight<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1, r, s);
+    // A per-knot entry (called for every knot of a curve): the sizes, the knots it reads and its
+    // result are checked rather than the whole curve.
+    detail::checkShape(curve, "knotRemovalWeight");
+    const std::size_t p = static_cast<std::size_t>(curve.degree);
+    const std::size_t from = knotIndex > p + 1 ? knotIndex - p - 1 : 0;
+    for (std::size_t i = from; i < std::min(knotIndex + p + 1, curve.knots.size() - 1); ++i)
+        if (!std::isfinite(curve.knots[i + 1]) || !(curve.knots[i] <= curve.knots[i + 1]))
+            throw GeometryError("knotRemovalWeight: the knots around index " + std::to_string(knotIndex) +
+                                " are not finite and non-decreasing");
+    for (std::size_t i = from; i < std::min(knotIndex + 1, curve.points.size()); ++i) {
+        const glm::dvec3& c = curve.points[i];
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !(curve.weight(i) > 0.0) ||
+            !std::isfinite(curve.weight(i)))
+            throw GeometryError("knotRemovalWeight: control point " + std::to_string(i) +
+                                " is not finite or its weight is not positive");
+    }
+    double weight = 0.0;
+    if (!curve.rational()) {
+        weight = knotRemovalWeight(curve.degree, curve.knots, curve.points, 1, knotIndex);
+    } else {
+        const auto [r, s] =
+            interiorKnot(curve.degree, curve.knots, curve.points.size(), knotIndex, "knotRemovalWeight");
+        const std::vector<glm::dvec4> h = homogeneous(curve);
+        weight =
+            removalWeight<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1, r, s);
+    }
+    if (!std::isfinite(weight))
+        throw GeometryError("knotRemovalWeight: the weight of knot " + std::to_string(knotIndex) +
+                            " is not finite (control points or weights near it are not finite or positive)");
+    return weight;
 }
 
 std::vector<KnotSignificance> rankKnots(int degree, std::span<const double> knots,
@@ -158,6 +184,7 @@ std::vector<KnotSignificance> rankKnots(int degree, std::span<const double> knot
 }
 
 std::vector<KnotSignificance> rankKnots(const Curve& curve) {
+    validate(curve, "rankKnots");
     if (!curve.rational()) return rankImpl<glm::dvec3>(curve.degree, curve.knots, std::span(curve.points), 1);
     const std::vector<glm::dvec4> h = homogeneous(curve);
     return rankImpl<glm::dvec4>(curve.degree, curve.knots, std::span<const glm::dvec4>(h), 1);

@@ -60,7 +60,7 @@ Curve makePeriodicCurve(int degree, const std::vector<glm::dvec3>& points,
 }
 
 Surface makeRevolution(const Curve& profile) {
-    validate(profile);
+    validate(profile, "makeRevolution");
     const std::size_t nu = profile.points.size();
     std::vector<glm::dvec3> points;
     std::vector<double> weights;

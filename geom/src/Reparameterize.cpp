@@ -38,6 +38,7 @@ std::vector<double> mappedKnots(const std::vector<double>& knots, double a, doub
 }  // namespace
 
 Curve reverse(const Curve& curve) {
+    validate(curve, "reverse");
     Curve out = curve;
     out.knots = reversedKnots(curve.knots, curve.domainStart(), curve.domainEnd());
     std::reverse(out.points.begin(), out.points.end());
@@ -46,6 +47,7 @@ Curve reverse(const Curve& curve) {
 }
 
 Surface reverse(const Surface& surface, bool alongV) {
+    validate(surface, "reverse");
     Surface out = surface;
     if (alongV)
         out.knotsV = reversedKnots(surface.knotsV, surface.domainStartV(), surface.domainEndV());
@@ -62,6 +64,7 @@ Surface reverse(const Surface& surface, bool alongV) {
 }
 
 Curve reparameterize(const Curve& curve, double start, double end) {
+    validate(curve, "reparameterize");
     Curve out = curve;
     out.knots =
         mappedKnots(curve.knots, curve.domainStart(), curve.domainEnd(), start, end, "reparameterize");
@@ -69,6 +72,7 @@ Curve reparameterize(const Curve& curve, double start, double end) {
 }
 
 Surface reparameterize(const Surface& surface, double u0, double u1, double v0, double v1) {
+    validate(surface, "reparameterize");
     Surface out = surface;
     out.knotsU =
         mappedKnots(surface.knotsU, surface.domainStartU(), surface.domainEndU(), u0, u1, "reparameterize");

@@ -44,6 +44,7 @@ Halves splitNet(int degree, std::vector<double> knots, ControlNet net, double t,
 }  // namespace
 
 std::pair<Curve, Curve> split(const Curve& curve, double u) {
+    validate(curve, "split");
     Halves h = splitNet(curve.degree, curve.knots, homogeneousNet(curve), u, "split");
     std::pair<Curve, Curve> out{curve, curve};
     out.first.knots = std::move(h.leftKnots);
@@ -54,6 +55,7 @@ std::pair<Curve, Curve> split(const Curve& curve, double u) {
 }
 
 std::pair<Surface, Surface> split(const Surface& surface, double t, bool alongV) {
+    validate(surface, "split");
     Halves h = splitNet(alongV ? surface.degreeV : surface.degreeU, alongV ? surface.knotsV : surface.knotsU,
                         homogeneousNet(surface, alongV), t, "split");
     std::pair<Surface, Surface> out{surface, surface};

@@ -68,6 +68,7 @@ std::vector<double> lines(const std::vector<double>& breaks, const std::vector<i
 }  // namespace
 
 SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segmentsV) {
+    validate(surface, "tessellateUniform");
     if (segmentsU < 1 || segmentsV < 1)
         throw GeometryError("tessellateUniform: segment counts " + std::to_string(segmentsU) + " x " +
                             std::to_string(segmentsV) + " must both be at least 1");
@@ -75,7 +76,6 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
         static_cast<double>(kMaxVertices))
         throw GeometryError("tessellateUniform: " + std::to_string(segmentsU) + " x " +
                             std::to_string(segmentsV) + " segments are too many");
-    validate(surface);
     const BezierPatchTree tree(surface);
     return gridMesh(surface, tree, evenly(surface.domainStartU(), surface.domainEndU(), segmentsU),
                     evenly(surface.domainStartV(), surface.domainEndV(), segmentsV));
@@ -83,7 +83,7 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
 
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
     checkTolerance(tolerance, "tessellateAdaptive");
-    validate(surface);
+    validate(surface, "tessellateAdaptive");
     const BezierPatchTree tree(surface);
     const std::vector<double>& breaksU = tree.breaksU();
     const std::vector<double>& breaksV = tree.breaksV();
@@ -153,7 +153,7 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
 
 std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
     checkTolerance(tolerance, "tessellate");
-    validate(curve);
+    validate(curve, "tessellate");
     auto segmentDistance = [](const glm::dvec3& x, const glm::dvec3& a, const glm::dvec3& b) {
         const glm::dvec3 ab = b - a;
         const double len2 = glm::dot(ab, ab);

@@ -4,12 +4,12 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
 
 namespace geom {
 namespace {
 
-void checkKnots(const std::vector<double>& knots, int degree, std::size_t count, const char* what) {
-    const std::string where = what;
+void checkKnots(const std::vector<double>& knots, int degree, std::size_t count, const std::string& where) {
     if (degree < 1) throw GeometryError(where + ": degree " + std::to_string(degree) + " must be at least 1");
     if (count < static_cast<std::size_t>(degree) + 1)
         throw GeometryError(where + ": " + std::to_string(count) + " control points are too few for degree " +
@@ -38,8 +38,7 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
 }
 
 void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vector<double>& weights,
-                           const char* what) {
-    const std::string where = what;
+                           const std::string& where) {
     for (std::size_t i = 0; i < points.size(); ++i)
         if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
             throw GeometryError(where + ": control point " + std::to_string(i) +
@@ -54,21 +53,26 @@ void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vec
                                 std::to_string(weights[i]) + ", weights must be positive and finite");
 }
 
-}  // namespace
-
-void validate(const Curve& curve) {
-    checkKnots(curve.knots, curve.degree, curve.points.size(), "curve");
-    checkPointsAndWeights(curve.points, curve.weights, "curve");
+std::string prefixed(std::string_view where, const char* what) {
+    return where.empty() ? std::string(what) : std::string(where) + ": " + what;
 }
 
-void validate(const Surface& surface) {
-    checkKnots(surface.knotsU, surface.degreeU, surface.countU, "surface u direction");
-    checkKnots(surface.knotsV, surface.degreeV, surface.countV, "surface v direction");
-    if (surface.points.size() != surface.countU * surface.countV)
-        throw GeometryError("surface: " + std::to_string(surface.points.size()) +
+}  // namespace
+
+void validate(const Curve& curve, std::string_view where) {
+    checkKnots(curve.knots, curve.degree, curve.points.size(), prefixed(where, "curve"));
+    checkPointsAndWeights(curve.points, curve.weights, prefixed(where, "curve"));
+}
+
+void validate(const Surface& surface, std::string_view where) {
+    checkKnots(surface.knotsU, surface.degreeU, surface.countU, prefixed(where, "surface u direction"));
+    checkKnots(surface.knotsV, surface.degreeV, surface.countV, prefixed(where, "surface v direction"));
+    if (surface.countV == 0 || surface.points.size() / surface.countV != surface.countU ||
+        surface.points.size() % surface.countV != 0)
+        throw GeometryError(prefixed(where, "surface") + ": " + std::to_string(surface.points.size()) +
                             " control points given for a " + std::to_string(surface.countU) + " x " +
                             std::to_string(surface.countV) + " net");
-    checkPointsAndWeights(surface.points, surface.weights, "surface");
+    checkPointsAndWeights(surface.points, surface.weights, prefixed(where, "surface"));
 }
 
 Curve::Curve(int degree_, std::vector<double> knots_, std::vector<glm::dvec3> points_,

@@ -6,6 +6,7 @@
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
 #include "geom/GlobalInterpolation.h"
+#include "geom/GridEvaluator.h"
 #include "geom/Inversion.h"
 #include "geom/SurfaceProjector.h"
 
@@ -65,15 +66,23 @@ double referenceDistance(const Surface& s, const glm::dvec3& p) {
     std::vector<Sample> samples;
     constexpr int kGrid = 10;
     auto distance = [&](double u, double v) { return glm::length(evaluate(s, u, v) - p); };
+    // The samples by the batch evaluator (the projector does not use it), per span rectangle.
+    const GridEvaluator grid(s);
+    std::vector<double> us, vs;
     for (std::size_t i = 0; i + 1 < bu.size(); ++i)
-        for (std::size_t j = 0; j + 1 < bv.size(); ++j)
-            for (int a = 0; a <= kGrid; ++a)
-                for (int b = 0; b <= kGrid; ++b) {
-                    const double u = bu[i] + (bu[i + 1] - bu[i]) * a / kGrid;
-                    const double v = bv[j] + (bv[j + 1] - bv[j]) * b / kGrid;
-                    samples.push_back({distance(u, v), u, v, i, j});
-                }
-    const std::size_t keep = std::min<std::size_t>(6, samples.size());
+        for (std::size_t j = 0; j + 1 < bv.size(); ++j) {
+            us.clear();
+            vs.clear();
+            for (int a = 0; a <= kGrid; ++a) {
+                us.push_back(bu[i] + (bu[i + 1] - bu[i]) * a / kGrid);
+                vs.push_back(bv[j] + (bv[j + 1] - bv[j]) * a / kGrid);
+            }
+            const std::vector<GridSample> values = grid.evaluate(us, vs);
+            for (std::size_t a = 0; a < us.size(); ++a)
+                for (std::size_t b = 0; b < vs.size(); ++b)
+                    samples.push_back({glm::length(values[a * vs.size() + b].point - p), us[a], vs[b], i, j});
+        }
+    const std::size_t keep = std::min<std::size_t>(4, samples.size());
     std::partial_sort(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep), samples.end(),
                       [](const Sample& a, const Sample& b) { return a.d < b.d; });
     double best = samples.front().d;
@@ -81,7 +90,7 @@ double referenceDistance(const Surface& s, const glm::dvec3& p) {
         Sample x = samples[k];
         const double u0 = bu[x.i], u1 = bu[x.i + 1], v0 = bv[x.j], v1 = bv[x.j + 1];
         double hu = (u1 - u0) / kGrid, hv = (v1 - v0) / kGrid;
-        while (hu > 1e-13 * (u1 - u0) || hv > 1e-13 * (v1 - v0)) {
+        while (hu > 1e-11 * (u1 - u0) || hv > 1e-11 * (v1 - v0)) {
             bool improved = false;
             for (int du = -1; du <= 1; ++du)
                 for (int dv = -1; dv <= 1; ++dv) {
@@ -116,7 +125,7 @@ double referenceDistance(const Curve& c, const glm::dvec3& p) {
             const double u = b[i] + (b[i + 1] - b[i]) * a / kGrid;
             samples.push_back({distance(u), u, i});
         }
-    const std::size_t keep = std::min<std::size_t>(6, samples.size());
+    const std::size_t keep = std::min<std::size_t>(4, samples.size());
     std::partial_sort(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep), samples.end(),
                       [](const Sample& x, const Sample& y) { return x.d < y.d; });
     double best = samples.front().d;

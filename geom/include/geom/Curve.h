@@ -2,6 +2,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <string_view>
 #include <vector>
 
 namespace geom {
@@ -28,7 +29,9 @@ struct Curve {
 
 /// Checks every rule a curve must keep: degree >= 1, knots.size() == points.size() + degree + 1,
 /// non-decreasing knots with a non-empty domain, multiplicity <= degree + 1, finite numbers,
-/// weights absent or one positive weight per point. Throws GeometryError naming the rule and index.
-void validate(const Curve& curve);
+/// weights absent or one positive weight per point. Throws GeometryError naming the rule and index,
+/// after `where` (the calling function's name) when given. Every geom entry point checks its
+/// curves so (per-point evaluation checks the sizes, the span it reads and its result instead).
+void validate(const Curve& curve, std::string_view where = {});
 
 }  // namespace geom

@@ -9,7 +9,9 @@
 
 namespace geom {
 
-/// Point C(u) of a curve; u is clamped into the curve's domain.
+/// Point C(u) of a curve. Per-point entries here check what they read (sizes, the span's knots,
+/// a finite result) and that the parameter is finite and in the domain (up to 1e-9 of its width,
+/// clamped); anything else throws GeometryError naming the function and the argument.
 glm::dvec3 evaluate(const Curve& curve, double u);
 
 /// C(u), C'(u), ..., C^(order)(u); rational curves by the quotient rule (The NURBS Book A4.2).
@@ -23,7 +25,7 @@ struct SurfaceDerivatives {
     glm::dvec3& at(int k, int l) { return values[static_cast<std::size_t>(k * (order + 1) + l)]; }
 };
 
-/// Point S(u, v) of a surface; (u, v) is clamped into the domain.
+/// Point S(u, v) of a surface; (u, v) checked as for curves.
 glm::dvec3 evaluate(const Surface& surface, double u, double v);
 
 /// All partial derivatives up to total order `order` (plain de Boor path, A3.6 / A4.4).

@@ -3,6 +3,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <string_view>
 #include <vector>
 
 namespace geom {
@@ -38,7 +39,7 @@ struct Surface {
 };
 
 /// Checks the same rules as validate(const Curve&) in both directions, plus
-/// points.size() == countU * countV. Throws GeometryError naming the rule and index.
-void validate(const Surface& surface);
+/// points.size() == countU * countV. Throws GeometryError naming the rule and index, after `where`.
+void validate(const Surface& surface, std::string_view where = {});
 
 }  // namespace geom

@@ -20,6 +20,7 @@ glm::dvec3 PlacementFrame::toCurve(const glm::dvec3& p) const {
 }
 
 PlacementFrame placementFrame(const Surface& surface, const Placement& placement) {
+    validate(surface, "placementFrame");
     const double u = placement.reference.x, w = placement.reference.y;
     const double slack = 1e-12 * (1.0 + std::abs(surface.domainEndU() - surface.domainStartU()) +
                                   std::abs(surface.domainEndV() - surface.domainStartV()));

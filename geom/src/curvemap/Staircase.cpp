@@ -47,11 +47,20 @@ std::vector<glm::dvec2> staircaseApproximation(const std::vector<glm::dvec2>& lo
     if (!(tolerance > 0.0) || !std::isfinite(tolerance))
         throw GeometryError("staircaseApproximation: the tolerance must be a positive number");
     // Densify so that every loop segment is at most one tolerance long: a single step then fits.
+    for (std::size_t i = 0; i < loop.size(); ++i)
+        if (!std::isfinite(loop[i].x) || !std::isfinite(loop[i].y))
+            throw GeometryError("staircaseApproximation: loop point " + std::to_string(i) + " is not finite");
+    // Bounded work: a loop longer than this many tolerances is refused, not densified.
+    constexpr double kMaxPieces = 1e7;
+    double pieceCount = 0.0;
+    for (std::size_t i = 0; i + 1 < loop.size(); ++i)
+        pieceCount += std::ceil(glm::length(loop[i + 1] - loop[i]) / tolerance);
+    if (!(pieceCount <= kMaxPieces))
+        throw GeometryError("staircaseApproximation: the loop is " + std::to_string(pieceCount) +
+                            " tolerances long, more than " + std::to_string(kMaxPieces));
     std::vector<glm::dvec2> p;
     for (std::size_t i = 0; i + 1 < loop.size(); ++i) {
         const glm::dvec2 a = loop[i], b = loop[i + 1];
-        if (!std::isfinite(a.x) || !std::isfinite(a.y))
-            throw GeometryError("staircaseApproximation: loop point " + std::to_string(i) + " is not finite");
         const int pieces = std::max(1, static_cast<int>(std::ceil(glm::length(b - a) / tolerance)));
         for (int k = 0; k < pieces; ++k) p.push_back(a + (b - a) * (static_cast<double>(k) / pieces));
     }

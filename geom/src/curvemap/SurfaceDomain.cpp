@@ -41,6 +41,7 @@ glm::dvec2 SurfaceDomain::unwrapNear(const glm::dvec2& uv, const glm::dvec2& nea
 }
 
 bool closesInU(const Surface& s, double tolerance) {
+    validate(s, "closesInU");
     const double limit = tolerance * surfaceSize(s);
     for (int i = 0; i <= 16; ++i) {
         const double v = s.domainStartV() + (s.domainEndV() - s.domainStartV()) * i / 16.0;
@@ -51,6 +52,7 @@ bool closesInU(const Surface& s, double tolerance) {
 }
 
 bool closesInV(const Surface& s, double tolerance) {
+    validate(s, "closesInV");
     const double limit = tolerance * surfaceSize(s);
     for (int i = 0; i <= 16; ++i) {
         const double u = s.domainStartU() + (s.domainEndU() - s.domainStartU()) * i / 16.0;
@@ -61,6 +63,7 @@ bool closesInV(const Surface& s, double tolerance) {
 }
 
 SurfaceDomain surfaceDomain(const Surface& s, std::optional<bool> closedU, std::optional<bool> closedW) {
+    validate(s, "surfaceDomain");
     SurfaceDomain d;
     d.u0 = s.domainStartU();
     d.u1 = s.domainEndU();

@@ -1,0 +1,256 @@
+// Bad input at every public entry point of geom: objects whose fields were set by hand (empty or
+// decreasing knots, too few points, sizes that disagree, non-finite numbers, zero weights),
+// non-finite and out-of-domain parameters. Each must give GeometryError, never a crash.
+
+#include "geom/Bezier.h"
+#include "geom/BezierExtraction.h"
+#include "geom/BezierPatchTree.h"
+#include "geom/ControlNet.h"
+#include "geom/Curvature.h"
+#include "geom/CurveProjector.h"
+#include "geom/DataReduction.h"
+#include "geom/DegreeElevation.h"
+#include "geom/Deviation.h"
+#include "geom/Evaluate.h"
+#include "geom/FreeKnotFit.h"
+#include "geom/GeometryError.h"
+#include "geom/GridEvaluator.h"
+#include "geom/Intersect.h"
+#include "geom/Inversion.h"
+#include "geom/KnotInsertion.h"
+#include "geom/KnotRemoval.h"
+#include "geom/KnotSignificance.h"
+#include "geom/Primitives.h"
+#include "geom/Reparameterize.h"
+#include "geom/Split.h"
+#include "geom/SurfaceIntersector.h"
+#include "geom/SurfaceProjector.h"
+#include "geom/Tessellate.h"
+#include "geom/curvemap/CurveMapper.h"
+#include "geom/curvemap/Placement.h"
+#include "geom/curvemap/Staircase.h"
+#include "geom/curvemap/SurfaceDomain.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace geom;
+using namespace geom::curvemap;
+
+namespace {
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+Curve validCurve(bool rational) {
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 7; ++i) pts.emplace_back(i, std::sin(i), 0.1 * i * i);
+    return Curve(3, {0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1}, pts,
+                 rational ? std::vector<double>(7, 1.0) : std::vector<double>{});
+}
+
+/// Hand-made breakages of a valid curve; each touches the span around u = 0.3 (span 4, points
+/// 1..4), so that per-point evaluation there reads it too.
+std::vector<std::pair<std::string, Curve>> brokenCurves() {
+    std::vector<std::pair<std::string, Curve>> out;
+    auto add = [&](const char* name, bool rational, const std::function<void(Curve&)>& breakIt) {
+        Curve c = validCurve(rational);
+        breakIt(c);
+        out.emplace_back(name, c);
+    };
+    add("empty knots", false, [](Curve& c) { c.knots.clear(); });
+    add("no points", false, [](Curve& c) { c.points.clear(); });
+    add("too few points", false, [](Curve& c) { c.points.resize(2); });
+    add("degree 0", false, [](Curve& c) { c.degree = 0; });
+    add("negative degree", false, [](Curve& c) { c.degree = -2; });
+    add("huge degree", false, [](Curve& c) { c.degree = 1 << 30; });
+    add("a knot missing", false, [](Curve& c) { c.knots.pop_back(); });
+    add("decreasing knots", false, [](Curve& c) { c.knots[5] = 0.1; });
+    add("NaN knot", false, [](Curve& c) { c.knots[5] = kNaN; });
+    add("empty domain", false, [](Curve& c) { c.knots.assign(c.knots.size(), 0.0); });
+    add("NaN point", false, [](Curve& c) { c.points[3].x = kNaN; });
+    add("infinite point", false, [](Curve& c) { c.points[2].y = kInf; });
+    add("zero weight", true, [](Curve& c) { c.weights[3] = 0.0; });
+    add("negative weight", true, [](Curve& c) { c.weights[2] = -1.0; });
+    add("weights for too few points", true, [](Curve& c) { c.weights.resize(3); });
+    return out;
+}
+
+Surface validSurface(bool rational) {
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 4; ++j) pts.emplace_back(i, j, 0.1 * std::sin(i + j));
+    return Surface(3, 2, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0.5, 1, 1, 1}, 5, 4, pts,
+                   rational ? std::vector<double>(20, 1.0) : std::vector<double>{});
+}
+
+/// Breakages of a valid surface; each touches the patch around (0.3, 0.3) (points i 1..4, j 0..2).
+std::vector<std::pair<std::string, Surface>> brokenSurfaces() {
+    std::vector<std::pair<std::string, Surface>> out;
+    auto add = [&](const char* name, bool rational, const std::function<void(Surface&)>& breakIt) {
+        Surface s = validSurface(rational);
+        breakIt(s);
+        out.emplace_back(name, s);
+    };
+    add("empty u knots", false, [](Surface& s) { s.knotsU.clear(); });
+    add("empty v knots", false, [](Surface& s) { s.knotsV.clear(); });
+    add("too few points", false, [](Surface& s) { s.points.resize(7); });
+    add("net size disagrees", false, [](Surface& s) { s.countU = 6; });
+    add("zero columns", false, [](Surface& s) { s.countV = 0; });
+    add("degree 0", false, [](Surface& s) { s.degreeV = 0; });
+    add("decreasing v knots", false, [](Surface& s) { s.knotsV[3] = -0.5; });
+    add("NaN u knot", false, [](Surface& s) { s.knotsU[4] = kNaN; });
+    add("NaN point", false, [](Surface& s) { s.points[2 * 4 + 1].z = kNaN; });
+    add("zero weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = 0.0; });
+    add("weights for too few points", true, [](Surface& s) { s.weights.resize(5); });
+    return out;
+}
+
+void requireAllThrow(const std::string& entry, const std::function<void(const Curve&)>& call) {
+    for (const auto& [name, curve] : brokenCurves()) {
+        INFO(entry << " with " << name);
+        REQUIRE_THROWS_AS(call(curve), GeometryError);
+    }
+}
+
+void requireAllThrow(const std::string& entry, const std::function<void(const Surface&)>& call) {
+    for (const auto& [name, surface] : brokenSurfaces()) {
+        INFO(entry << " with " << name);
+        REQUIRE_THROWS_AS(call(surface), GeometryError);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("every curve entry point refuses a hand-broken curve", "[geom][bad-input]") {
+    const Curve good = validCurve(false);
+    const glm::dvec3 p(1.0, 0.5, 0.2);
+    requireAllThrow("evaluate", [](const Curve& c) { evaluate(c, 0.3); });
+    requireAllThrow("derivatives", [](const Curve& c) { derivatives(c, 0.3, 2); });
+    requireAllThrow("evaluateMany", [](const Curve& c) { evaluateMany(c, std::vector<double>{0.3, 0.6}); });
+    requireAllThrow("extractBezier", [](const Curve& c) { extractBezier(c); });
+    requireAllThrow("isBezier", [](const Curve& c) { isBezier(c); });
+    requireAllThrow("insertKnot", [](const Curve& c) { insertKnot(c, 0.3); });
+    requireAllThrow("refineKnots", [](const Curve& c) { refineKnots(c, std::vector<double>{0.3, 0.6}); });
+    requireAllThrow("split", [](const Curve& c) { split(c, 0.3); });
+    requireAllThrow("elevateDegree", [](const Curve& c) { elevateDegree(c, 1); });
+    requireAllThrow("reverse", [](const Curve& c) { reverse(c); });
+    requireAllThrow("reparameterize", [](const Curve& c) { reparameterize(c, 0.0, 2.0); });
+    requireAllThrow("tessellate", [](const Curve& c) { tessellate(c, 1e-3); });
+    requireAllThrow("CurveProjector", [](const Curve& c) { CurveProjector projector(c); });
+    requireAllThrow("closestPoint", [&](const Curve& c) { closestPoint(c, p); });
+    requireAllThrow("closestPoint from a guess", [&](const Curve& c) { closestPoint(c, p, 0.3); });
+    requireAllThrow("rankKnots", [](const Curve& c) { rankKnots(c); });
+    requireAllThrow("knotRemovalWeight", [](const Curve& c) { knotRemovalWeight(c, 5); });
+    requireAllThrow("removeKnot", [](const Curve& c) { removeKnot(c, 0.5); });
+    requireAllThrow("removeKnotsLeastSquares",
+                    [](const Curve& c) { removeKnotsLeastSquares(c, std::vector<double>{0.5}); });
+    requireAllThrow("reduceCurve", [](const Curve& c) {
+        ReductionOptions options;
+        options.tolerance = 1e-3;
+        reduceCurve(c, options);
+    });
+    requireAllThrow("measureDeviation original", [&](const Curve& c) { measureDeviation(c, good); });
+    requireAllThrow("measureDeviation reduced", [&](const Curve& c) { measureDeviation(good, c); });
+    requireAllThrow("FreeKnotFitter", [](const Curve& c) { FreeKnotFitter fitter(c, FreeKnotOptions{}); });
+    requireAllThrow("makeRevolution", [](const Curve& c) { makeRevolution(c); });
+}
+
+TEST_CASE("every surface entry point refuses a hand-broken surface", "[geom][bad-input]") {
+    const Surface good = validSurface(false);
+    const glm::dvec3 p(1.0, 1.0, 0.5);
+    requireAllThrow("evaluate", [](const Surface& s) { evaluate(s, 0.3, 0.3); });
+    requireAllThrow("derivatives", [](const Surface& s) { derivatives(s, 0.3, 0.3, 2); });
+    requireAllThrow("normal", [](const Surface& s) { normal(s, 0.3, 0.3); });
+    requireAllThrow("curvature", [](const Surface& s) { curvature(s, 0.3, 0.3); });
+    requireAllThrow("GridEvaluator", [](const Surface& s) { GridEvaluator grid(s); });
+    requireAllThrow("extractBezier", [](const Surface& s) { extractBezier(s); });
+    requireAllThrow("isBezier", [](const Surface& s) { isBezier(s); });
+    requireAllThrow("BezierPatchTree", [](const Surface& s) { BezierPatchTree tree(s); });
+    requireAllThrow("SurfaceProjector", [](const Surface& s) { SurfaceProjector projector(s); });
+    requireAllThrow("closestPoint", [&](const Surface& s) { closestPoint(s, p); });
+    requireAllThrow("closestPoint from a guess", [&](const Surface& s) { closestPoint(s, p, {0.3, 0.3}); });
+    requireAllThrow("SurfaceIntersector", [](const Surface& s) { SurfaceIntersector intersector(s); });
+    requireAllThrow("intersectLine", [](const Surface& s) { intersectLine(s, {1, 1, 5}, {0, 0, -1}); });
+    requireAllThrow("tessellateUniform", [](const Surface& s) { tessellateUniform(s, 4, 4); });
+    requireAllThrow("tessellateAdaptive", [](const Surface& s) { tessellateAdaptive(s, 1e-3); });
+    requireAllThrow("insertKnotU", [](const Surface& s) { insertKnotU(s, 0.3); });
+    requireAllThrow("insertKnotV", [](const Surface& s) { insertKnotV(s, 0.3); });
+    requireAllThrow("refineKnotsU", [](const Surface& s) { refineKnotsU(s, std::vector<double>{0.3}); });
+    requireAllThrow("split", [](const Surface& s) { split(s, 0.3, false); });
+    requireAllThrow("reverse", [](const Surface& s) { reverse(s, true); });
+    requireAllThrow("reparameterize", [](const Surface& s) { reparameterize(s, 0, 2, 0, 2); });
+    requireAllThrow("elevateDegree", [](const Surface& s) { elevateDegree(s, 1, false); });
+    requireAllThrow("reduceSurface", [](const Surface& s) {
+        ReductionOptions options;
+        options.tolerance = 1e-3;
+        reduceSurface(s, ReductionDirection::Both, options);
+    });
+    requireAllThrow("measureDeviation original", [&](const Surface& s) { measureDeviation(s, good); });
+    requireAllThrow("measureDeviation reduced", [&](const Surface& s) { measureDeviation(good, s); });
+    requireAllThrow("surfaceDomain", [](const Surface& s) { surfaceDomain(s); });
+    requireAllThrow("closesInU", [](const Surface& s) { closesInU(s); });
+    requireAllThrow("placementFrame", [](const Surface& s) { placementFrame(s, Placement{{0.3, 0.3}}); });
+    requireAllThrow("CurveMapper", [](const Surface& s) { CurveMapper mapper(s); });
+    requireAllThrow("homogeneousNet", [](const Surface& s) {
+        // Only the sizes matter to the net itself; a content breakage is left to the users above.
+        if (s.points.size() == s.countU * s.countV &&
+            (s.weights.empty() || s.weights.size() == s.points.size()))
+            throw GeometryError("sizes agree");
+        homogeneousNet(s, false);
+    });
+}
+
+TEST_CASE("parameters that are not finite or lie outside the domain are refused by name",
+          "[geom][bad-input]") {
+    const Curve c = validCurve(false);
+    const Surface s = validSurface(false);
+    for (double bad : {kNaN, kInf, -kInf, 1.5, -0.01}) {
+        INFO("parameter " << bad);
+        REQUIRE_THROWS_WITH(evaluate(c, bad), Catch::Contains("evaluate") && Catch::Contains("parameter u"));
+        REQUIRE_THROWS_WITH(derivatives(c, bad, 1), Catch::Contains("derivatives") && Catch::Contains("u"));
+        REQUIRE_THROWS_WITH(evaluate(s, 0.5, bad), Catch::Contains("parameter v"));
+        REQUIRE_THROWS_WITH(derivatives(s, bad, 0.5, 1), Catch::Contains("parameter u"));
+        REQUIRE_THROWS_WITH(normal(s, bad, 0.5), Catch::Contains("normal"));
+        REQUIRE_THROWS_AS(curvature(s, 0.5, bad), GeometryError);
+        REQUIRE_THROWS_AS(insertKnot(c, bad), GeometryError);
+        REQUIRE_THROWS_AS(split(c, bad), GeometryError);
+        REQUIRE_THROWS_AS(insertKnotV(s, bad), GeometryError);
+    }
+    // Rounding just past an end is clamped, not refused.
+    REQUIRE(evaluate(c, 1.0 + 1e-12) == evaluate(c, 1.0));
+    REQUIRE(evaluate(s, -1e-12, 0.5) == evaluate(s, 0.0, 0.5));
+    // Batches name the position of the bad parameter.
+    REQUIRE_THROWS_WITH(evaluateMany(c, std::vector<double>{0.1, kNaN}), Catch::Contains("us[1]"));
+    const GridEvaluator grid(s);
+    REQUIRE_THROWS_WITH(grid.evaluate(std::vector<double>{0.5}, std::vector<double>{0.2, 0.3, kInf}),
+                        Catch::Contains("vs[2]"));
+    REQUIRE_THROWS_WITH(derivatives(c, 0.5, -1), Catch::Contains("order"));
+    REQUIRE_THROWS_AS(closestPoint(s, {kNaN, 0, 0}), GeometryError);
+    REQUIRE_THROWS_AS(intersectLine(s, {0, 0, kNaN}, {0, 0, 1}), GeometryError);
+}
+
+TEST_CASE("a broken object's message names the entry point and the rule", "[geom][bad-input]") {
+    Curve c = validCurve(false);
+    c.knots.clear();
+    REQUIRE_THROWS_WITH(evaluate(c, 0.5), Catch::Contains("evaluate") && Catch::Contains("knots"));
+    REQUIRE_THROWS_WITH(extractBezier(c), Catch::Contains("extractBezier") && Catch::Contains("knots"));
+    Surface s = validSurface(false);
+    s.knotsV[3] = -0.5;
+    REQUIRE_THROWS_WITH(GridEvaluator(s), Catch::Contains("GridEvaluator") && Catch::Contains("decrease"));
+    REQUIRE_THROWS_WITH(evaluate(s, 0.3, 0.3), Catch::Contains("evaluate") && Catch::Contains("knots"));
+}
+
+TEST_CASE("a staircase refuses non-finite loop points and unbounded work", "[geom][bad-input]") {
+    const std::vector<glm::dvec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    REQUIRE_FALSE(staircaseApproximation(square, 0.1).empty());
+    std::vector<glm::dvec2> lastNaN = square;
+    lastNaN.back().x = kNaN;
+    REQUIRE_THROWS_WITH(staircaseApproximation(lastNaN, 0.1), Catch::Contains("loop point 4"));
+    REQUIRE_THROWS_WITH(staircaseApproximation(square, 1e-12), Catch::Contains("tolerances long"));
+}
