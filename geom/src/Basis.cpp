@@ -61,7 +61,18 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
     const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t n = static_cast<std::size_t>(std::max(order, 0));
     const std::size_t w = p + 1;
-    std::vector<double> ndu(w * w), left(w), right(w), a(2 * w);
+    // Per-point callers evaluate millions of times: the tables live on the stack up to degree 15.
+    constexpr std::size_t kStack = 16;
+    double nduStack[kStack * kStack], leftStack[kStack], rightStack[kStack], aStack[2 * kStack];
+    std::vector<double> heap;
+    double *ndu = nduStack, *left = leftStack, *right = rightStack, *a = aStack;
+    if (w > kStack) {
+        heap.resize(w * w + 4 * w);
+        ndu = heap.data();
+        left = ndu + w * w;
+        right = left + w;
+        a = right + w;
+    }
     ndu[0] = 1.0;
     for (std::size_t j = 1; j <= p; ++j) {
         left[j] = u - knots[span + 1 - j];
@@ -81,8 +92,8 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
 
     const std::size_t top = std::min(n, p);
     for (std::size_t r = 0; r <= p; ++r) {
-        double* a0 = a.data();
-        double* a1 = a.data() + w;
+        double* a0 = a;
+        double* a1 = a + w;
         a0[0] = 1.0;
         for (std::size_t k = 1; k <= top; ++k) {
             double d = 0.0;
@@ -113,6 +124,29 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
         for (std::size_t j = 0; j <= p; ++j) out[k * w + j] *= factor;
         factor *= static_cast<double>(p - k);
     }
+}
+
+void basisWithFirstDerivatives(std::size_t span, double u, int degree, std::span<const double> knots,
+                               std::span<double> values, std::span<double> firsts) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    // The degree p-1 values first, then N'_{i,p} = p (N_{i,p-1} / (t_{i+p} - t_i) -
+    // N_{i+1,p-1} / (t_{i+p+1} - t_{i+1})) and one more Cox-de Boor step for the values, from the
+    // same quotients.
+    basisFunctions(span, u, degree - 1, knots, values);
+    double previous = 0.0;  // N_{i,p-1} / (t_{i+p} - t_i) for the function before
+    double carried = 0.0;
+    for (std::size_t r = 0; r < p; ++r) {
+        const double lo = knots[span + r + 1 - p], hi = knots[span + r + 1];
+        const double scaled = hi > lo ? values[r] / (hi - lo) : 0.0;
+        firsts[r] = static_cast<double>(p) * (previous - scaled);
+        previous = scaled;
+        // N_{i,p} = (u - t_i) N_{i,p-1} / (t_{i+p} - t_i) + (t_{i+p+1} - u) N_{i+1,p-1} / (t_{i+p+1} -
+        // t_{i+1}).
+        values[r] = carried + (hi - u) * scaled;
+        carried = (u - lo) * scaled;
+    }
+    firsts[p] = static_cast<double>(p) * previous;
+    values[p] = carried;
 }
 
 int knotMultiplicity(std::span<const double> knots, double u) {

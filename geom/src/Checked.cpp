@@ -43,8 +43,9 @@ void checkShape(const Curve& curve, const char* where) {
 }
 
 void checkShape(const Surface& surface, const char* where) {
-    if (surface.countV == 0 || surface.points.size() / surface.countV != surface.countU ||
-        surface.points.size() % surface.countV != 0)
+    std::size_t total = 0;  // countU * countV, refused when it overflows (no division per point)
+    if (__builtin_mul_overflow(surface.countU, surface.countV, &total) || total != surface.points.size() ||
+        total == 0)
         fail(where, "surface",
              std::to_string(surface.points.size()) + " control points for a " +
                  std::to_string(surface.countU) + " x " + std::to_string(surface.countV) + " net");
@@ -66,8 +67,9 @@ void checkSpan(std::span<const double> knots, std::size_t span, int degree, cons
     const std::size_t p = static_cast<std::size_t>(degree);
     const bool inRange = span + 1 >= p && span + p < knots.size();
     bool ordered = inRange && knots[span] < knots[span + 1];
-    for (std::size_t i = span + 1 - p; ordered && i < span + p; ++i)
-        ordered = std::isfinite(knots[i]) && std::isfinite(knots[i + 1]) && knots[i] <= knots[i + 1];
+    // NaN fails every comparison; an infinite knot in the window makes the result non-finite,
+    // which checkResult catches.
+    for (std::size_t i = span + 1 - p; ordered && i < span + p; ++i) ordered = knots[i] <= knots[i + 1];
     if (!ordered)
         throw GeometryError(std::string(where) + ": the knots around span " + std::to_string(span) +
                             " are not finite and non-decreasing");

@@ -22,7 +22,7 @@ void checkShape(const Surface& surface, const char* where);
 /// clamped there); else GeometryError naming where and name.
 double checkedParameter(double value, double start, double end, const char* where, const char* name);
 
-/// knots[span - degree + 1 .. span + degree] finite and non-decreasing, knots[span] < knots[span + 1]:
+/// knots[span - degree + 1 .. span + degree] non-decreasing (no NaN), knots[span] < knots[span + 1]:
 /// the window the basis functions of one span read.
 void checkSpan(std::span<const double> knots, std::size_t span, int degree, const char* where);
 

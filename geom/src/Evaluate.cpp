@@ -1,6 +1,7 @@
 #include "geom/Evaluate.h"
 
 #include "Checked.h"
+#include "SmallBuffer.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -30,7 +31,8 @@ void checkOrder(int order, const char* where) {
                             " is outside 0..64");
 }
 
-std::vector<glm::dvec3> curveDerivatives(const Curve& curve, double u, int order, const char* where) {
+/// C(u) .. C^(order)(u) into out[0..order].
+void curveDerivatives(const Curve& curve, double u, int order, const char* where, glm::dvec3* out) {
     detail::checkShape(curve, where);
     checkOrder(order, where);
     const int p = curve.degree;
@@ -39,11 +41,11 @@ std::vector<glm::dvec3> curveDerivatives(const Curve& curve, double u, int order
     u = detail::checkedParameter(u, curve.domainStart(), curve.domainEnd(), where, "u");
     const std::size_t span = findSpan(p, curve.knots, curve.points.size(), u);
     detail::checkSpan(curve.knots, span, p, where);
-    std::vector<double> nders(w * static_cast<std::size_t>(du + 1));
-    basisDerivatives(span, u, p, curve.knots, du, nders);
+    detail::SmallBuffer<double, 64> nders(w * static_cast<std::size_t>(du + 1));
+    basisDerivatives(span, u, p, curve.knots, du, nders.span());
 
     // Derivatives of the homogeneous curve (w*P, w).
-    std::vector<glm::dvec4> hom(static_cast<std::size_t>(order) + 1, glm::dvec4(0.0));
+    detail::SmallBuffer<glm::dvec4, 8> hom(static_cast<std::size_t>(order) + 1, glm::dvec4(0.0));
     for (int k = 0; k <= du; ++k)
         for (std::size_t j = 0; j < w; ++j) {
             const std::size_t idx = span - static_cast<std::size_t>(p) + j;
@@ -55,19 +57,81 @@ std::vector<glm::dvec3> curveDerivatives(const Curve& curve, double u, int order
                 nders[static_cast<std::size_t>(k) * w + j] * glm::dvec4(curve.points[idx] * wt, wt);
         }
 
-    std::vector<glm::dvec3> ck(static_cast<std::size_t>(order) + 1);
     for (int k = 0; k <= order; ++k) {
         glm::dvec3 v(hom[static_cast<std::size_t>(k)]);
-        for (int i = 1; i <= k; ++i)
-            v -= binomial(k, i) * hom[static_cast<std::size_t>(i)].w * ck[static_cast<std::size_t>(k - i)];
-        ck[static_cast<std::size_t>(k)] = v / hom[0].w;
-        detail::checkResult(ck[static_cast<std::size_t>(k)], where);
+        for (int i = 1; i <= k; ++i) v -= binomial(k, i) * hom[static_cast<std::size_t>(i)].w * out[k - i];
+        out[k] = v / hom[0].w;
+        detail::checkResult(out[k], where);
     }
-    return ck;
 }
 
-SurfaceDerivatives surfaceDerivatives(const Surface& surface, double u, double v, int order,
-                                      const char* where) {
+[[noreturn]] void weightNotPositive(const char* where, std::size_t i, std::size_t j) {
+    throw GeometryError(std::string(where) + ": weight (" + std::to_string(i) + ", " + std::to_string(j) +
+                        ") is not positive");
+}
+
+/// S, and for order 1 also Sv, Su (out as surfaceDerivatives lays it out: S, Sv, Su, 0), in one
+/// pass over the span's net: the per-point path most callers take (points, normals).
+void firstOrder(const Surface& surface, double u, double v, std::size_t spanU, std::size_t spanV, int order,
+                const char* where, glm::dvec3* out) {
+    const std::size_t p = static_cast<std::size_t>(surface.degreeU),
+                      q = static_cast<std::size_t>(surface.degreeV);
+    detail::SmallBuffer<double, 32> nu(p + 1), dnu(p + 1), nv(q + 1), dnv(q + 1);
+    if (order == 0) {
+        basisFunctions(spanU, u, surface.degreeU, surface.knotsU, nu.span());
+        basisFunctions(spanV, v, surface.degreeV, surface.knotsV, nv.span());
+    } else {
+        basisWithFirstDerivatives(spanU, u, surface.degreeU, surface.knotsU, nu.span(), dnu.span());
+        basisWithFirstDerivatives(spanV, v, surface.degreeV, surface.knotsV, nv.span(), dnv.span());
+    }
+    glm::dvec4 h(0.0), hu(0.0), hv(0.0);
+    if (surface.rational()) {
+        for (std::size_t r = 0; r <= p; ++r) {
+            const std::size_t i = spanU - p + r;
+            glm::dvec4 row(0.0), rowV(0.0);
+            for (std::size_t c = 0; c <= q; ++c) {
+                const std::size_t j = spanV - q + c;
+                const double wt = surface.weights[i * surface.countV + j];
+                if (!(wt > 0.0)) weightNotPositive(where, i, j);
+                const glm::dvec4 pw(surface.points[i * surface.countV + j] * wt, wt);
+                row += nv[c] * pw;
+                rowV += dnv[c] * pw;
+            }
+            h += nu[r] * row;
+            hu += dnu[r] * row;
+            hv += nu[r] * rowV;
+        }
+    } else {
+        // Polynomial: three coordinates, weight 1.
+        glm::dvec3 s(0.0), su(0.0), sv(0.0);
+        for (std::size_t r = 0; r <= p; ++r) {
+            const glm::dvec3* line = surface.points.data() + (spanU - p + r) * surface.countV + (spanV - q);
+            glm::dvec3 row(0.0), rowV(0.0);
+            for (std::size_t c = 0; c <= q; ++c) {
+                row += nv[c] * line[c];
+                rowV += dnv[c] * line[c];
+            }
+            s += nu[r] * row;
+            su += dnu[r] * row;
+            sv += nu[r] * rowV;
+        }
+        h = glm::dvec4(s, 1.0);
+        hu = glm::dvec4(su, 0.0);
+        hv = glm::dvec4(sv, 0.0);
+    }
+    out[0] = glm::dvec3(h) / h.w;
+    detail::checkResult(out[0], where);
+    if (order == 0) return;
+    out[1] = (glm::dvec3(hv) - hv.w * out[0]) / h.w;
+    out[2] = (glm::dvec3(hu) - hu.w * out[0]) / h.w;
+    out[3] = glm::dvec3(0.0);
+    detail::checkResult(out[1], where);
+    detail::checkResult(out[2], where);
+}
+
+/// All partial derivatives up to total order into out, (order+1) x (order+1), row k column l.
+void surfaceDerivatives(const Surface& surface, double u, double v, int order, const char* where,
+                        glm::dvec3* out) {
     detail::checkShape(surface, where);
     checkOrder(order, where);
     const int p = surface.degreeU;
@@ -82,14 +146,15 @@ SurfaceDerivatives surfaceDerivatives(const Surface& surface, double u, double v
     const std::size_t spanV = findSpan(q, surface.knotsV, surface.countV, v);
     detail::checkSpan(surface.knotsU, spanU, p, where);
     detail::checkSpan(surface.knotsV, spanV, q, where);
-    std::vector<double> nu(wu * static_cast<std::size_t>(du + 1));
-    std::vector<double> nv(wv * static_cast<std::size_t>(dv + 1));
-    basisDerivatives(spanU, u, p, surface.knotsU, du, nu);
-    basisDerivatives(spanV, v, q, surface.knotsV, dv, nv);
+    if (order <= 1) return firstOrder(surface, u, v, spanU, spanV, order, where, out);
+    detail::SmallBuffer<double, 64> nu(wu * static_cast<std::size_t>(du + 1));
+    detail::SmallBuffer<double, 64> nv(wv * static_cast<std::size_t>(dv + 1));
+    basisDerivatives(spanU, u, p, surface.knotsU, du, nu.span());
+    basisDerivatives(spanV, v, q, surface.knotsV, dv, nv.span());
 
     const std::size_t side = static_cast<std::size_t>(order) + 1;
-    std::vector<glm::dvec4> hom(side * side, glm::dvec4(0.0));
-    std::vector<glm::dvec4> temp(wv);
+    detail::SmallBuffer<glm::dvec4, 16> hom(side * side, glm::dvec4(0.0));
+    detail::SmallBuffer<glm::dvec4, 16> temp(wv);
     for (int k = 0; k <= du; ++k) {
         for (std::size_t s = 0; s < wv; ++s) {
             temp[s] = glm::dvec4(0.0);
@@ -113,9 +178,10 @@ SurfaceDerivatives surfaceDerivatives(const Surface& surface, double u, double v
     }
 
     // Quotient rule for rational surfaces (The NURBS Book A4.4).
-    SurfaceDerivatives out;
-    out.order = order;
-    out.values.assign(side * side, glm::dvec3(0.0));
+    std::fill_n(out, side * side, glm::dvec3(0.0));
+    auto at = [&](int k, int l) -> glm::dvec3& {
+        return out[static_cast<std::size_t>(k) * side + static_cast<std::size_t>(l)];
+    };
     auto H = [&](int k, int l) -> const glm::dvec4& {
         return hom[static_cast<std::size_t>(k) * side + static_cast<std::size_t>(l)];
     };
@@ -123,48 +189,58 @@ SurfaceDerivatives surfaceDerivatives(const Surface& surface, double u, double v
     for (int k = 0; k <= order; ++k)
         for (int l = 0; l <= order - k; ++l) {
             glm::dvec3 val(H(k, l));
-            for (int j = 1; j <= l; ++j) val -= binomial(l, j) * H(0, j).w * out.at(k, l - j);
+            for (int j = 1; j <= l; ++j) val -= binomial(l, j) * H(0, j).w * at(k, l - j);
             for (int i = 1; i <= k; ++i) {
-                val -= binomial(k, i) * H(i, 0).w * out.at(k - i, l);
+                val -= binomial(k, i) * H(i, 0).w * at(k - i, l);
                 glm::dvec3 v2(0.0);
-                for (int j = 1; j <= l; ++j) v2 += binomial(l, j) * H(i, j).w * out.at(k - i, l - j);
+                for (int j = 1; j <= l; ++j) v2 += binomial(l, j) * H(i, j).w * at(k - i, l - j);
                 val -= binomial(k, i) * v2;
             }
-            out.at(k, l) = val / w00;
-            detail::checkResult(out.at(k, l), where);
+            at(k, l) = val / w00;
+            detail::checkResult(at(k, l), where);
         }
-    return out;
 }
 
 }  // namespace
 
 glm::dvec3 evaluate(const Curve& curve, double u) {
-    return curveDerivatives(curve, u, 0, "evaluate")[0];
+    glm::dvec3 point;
+    curveDerivatives(curve, u, 0, "evaluate", &point);
+    return point;
 }
 
 std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order) {
-    return curveDerivatives(curve, u, order, "derivatives");
+    checkOrder(order, "derivatives");
+    std::vector<glm::dvec3> out(static_cast<std::size_t>(order) + 1);
+    curveDerivatives(curve, u, order, "derivatives", out.data());
+    return out;
 }
 
 glm::dvec3 evaluate(const Surface& surface, double u, double v) {
-    return surfaceDerivatives(surface, u, v, 0, "evaluate").at(0, 0);
+    glm::dvec3 point;
+    surfaceDerivatives(surface, u, v, 0, "evaluate", &point);
+    return point;
 }
 
 SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int order) {
-    return surfaceDerivatives(surface, u, v, order, "derivatives");
+    checkOrder(order, "derivatives");
+    SurfaceDerivatives out(order);
+    surfaceDerivatives(surface, u, v, order, "derivatives", out.data());
+    return out;
 }
 
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
+    const glm::dvec3 n = glm::cross(su, sv);
+    const double len = glm::length(n);
+    const double scale = glm::length(su) * glm::length(sv);
+    if (len > 1e-12 * scale && len > 0.0) return n / len;
+    // Only the degenerate case reads the surface.
     detail::checkShape(surface, "normalFromDerivatives");
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
                                  "u");
     v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), "normalFromDerivatives",
                                  "v");
-    const glm::dvec3 n = glm::cross(su, sv);
-    const double len = glm::length(n);
-    const double scale = glm::length(su) * glm::length(sv);
-    if (len > 1e-12 * scale && len > 0.0) return n / len;
 
     // Degenerate point: step towards the inside of the domain along the diagonal and take the
     // limit of the normals there (they converge on a collapsed edge or at a pole).
@@ -184,8 +260,9 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
 }
 
 glm::dvec3 normal(const Surface& surface, double u, double v) {
-    const SurfaceDerivatives d = surfaceDerivatives(surface, u, v, 1, "normal");
-    return normalFromDerivatives(surface, u, v, d.at(1, 0), d.at(0, 1));
+    glm::dvec3 d[4];  // row k, column l of order 1: S, Sv, Su, Suv
+    surfaceDerivatives(surface, u, v, 1, "normal", d);
+    return normalFromDerivatives(surface, u, v, d[2], d[1]);
 }
 
 }  // namespace geom

@@ -19,6 +19,11 @@ void basisFunctions(std::size_t span, double u, int degree, std::span<const doub
 void basisDerivatives(std::size_t span, double u, int degree, std::span<const double> knots, int order,
                       std::span<double> out);
 
+/// The degree+1 non-zero basis values and their first derivatives at u (each span of size >=
+/// degree+1): the common case of basisDerivatives, from the degree-1 values without its tables.
+void basisWithFirstDerivatives(std::size_t span, double u, int degree, std::span<const double> knots,
+                               std::span<double> values, std::span<double> firsts);
+
 /// Multiplicity of the knot value u in knots (exact comparison).
 int knotMultiplicity(std::span<const double> knots, double u);
 

@@ -5,6 +5,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace geom {
@@ -17,12 +19,29 @@ glm::dvec3 evaluate(const Curve& curve, double u);
 /// C(u), C'(u), ..., C^(order)(u); rational curves by the quotient rule (The NURBS Book A4.2).
 std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order);
 
-/// Partial derivatives of a surface: at(k, l) = d^(k+l) S / du^k dv^l for k + l <= order.
-struct SurfaceDerivatives {
-    int order = 0;
-    std::vector<glm::dvec3> values;  ///< (order+1) x (order+1), row k, column l
-    const glm::dvec3& at(int k, int l) const { return values[static_cast<std::size_t>(k * (order + 1) + l)]; }
-    glm::dvec3& at(int k, int l) { return values[static_cast<std::size_t>(k * (order + 1) + l)]; }
+/// Partial derivatives of a surface: at(k, l) = d^(k+l) S / du^k dv^l for k + l <= order (the
+/// others are zero). Orders up to 3 are held inline, so a per-point call allocates nothing.
+class SurfaceDerivatives {
+public:
+    explicit SurfaceDerivatives(int order = 0) : order_(order) {
+        if (side() * side() > small_.size()) large_.resize(side() * side());
+    }
+    int order() const { return order_; }
+    const glm::dvec3& at(int k, int l) const { return data()[index(k, l)]; }
+    glm::dvec3& at(int k, int l) { return data()[index(k, l)]; }
+    /// (order+1) x (order+1) values, row k, column l.
+    const glm::dvec3* data() const { return large_.empty() ? small_.data() : large_.data(); }
+    glm::dvec3* data() { return large_.empty() ? small_.data() : large_.data(); }
+
+private:
+    std::size_t side() const { return static_cast<std::size_t>(order_) + 1; }
+    std::size_t index(int k, int l) const {
+        return static_cast<std::size_t>(k) * side() + static_cast<std::size_t>(l);
+    }
+
+    int order_ = 0;
+    std::array<glm::dvec3, 16> small_;  // filled by whoever computes the derivatives
+    std::vector<glm::dvec3> large_;
 };
 
 /// Point S(u, v) of a surface; (u, v) checked as for curves.
