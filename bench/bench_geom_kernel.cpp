@@ -1,10 +1,14 @@
 // Benchmark of the geom kernel against SISL and OpenCASCADE in the same run: grid evaluation
 // (point, first derivatives, unit normal), line/surface intersection and point inversion on a
-// 40 x 40 non-uniform bicubic surface, polynomial and rational. Prints figures, then one JSON
+// 40 x 40 non-uniform bicubic surface, polynomial and rational (with OpenCASCADE too), and on
+// the classes that break kernels tuned to it: degree 1, 2 x 5 with double knots, weights over four
+// decades, a closed periodic tube. Prints figures, then one JSON
 // object.
 
 #include "geom/Evaluate.h"
+#include "geom/GlobalInterpolation.h"
 #include "geom/GridEvaluator.h"
+#include "geom/KnotInsertion.h"
 #include "geom/Surface.h"
 #include "geom/SurfaceIntersector.h"
 #include "geom/SurfaceProjector.h"
@@ -30,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <random>
 #include <string>
 #include <vector>
@@ -69,6 +74,93 @@ geom::Surface benchSurface(bool rational) {
             if (rational) weights.push_back(weight(rng));
         }
     return geom::Surface(3, 3, nonUniformKnots(rng, 3, n), nonUniformKnots(rng, 3, n), n, n, points, weights);
+}
+
+/// Degree 1 x 1 over the same heights: every interior knot line is a crease.
+geom::Surface degreeOneSurface() {
+    const geom::Surface base = benchSurface(false);
+    std::mt19937 rng(7);
+    return geom::Surface(1, 1, nonUniformKnots(rng, 1, base.countU), nonUniformKnots(rng, 1, base.countV),
+                         base.countU, base.countV, base.points);
+}
+
+/// Clamped knots for `count` points of `degree` with every other interior knot doubled.
+std::vector<double> doubledKnots(std::mt19937& rng, int degree, std::size_t count) {
+    const std::size_t interior = count - static_cast<std::size_t>(degree) - 1;
+    std::uniform_real_distribution<double> unit(0.02, 0.98);
+    std::vector<double> distinct;
+    for (std::size_t i = 0; i < interior; ++i) distinct.push_back(unit(rng));
+    std::sort(distinct.begin(), distinct.end());
+    std::vector<double> k(static_cast<std::size_t>(degree + 1), 0.0);
+    for (std::size_t i = 0; k.size() < interior + static_cast<std::size_t>(degree) + 1; ++i) {
+        k.push_back(distinct[i]);
+        if (i % 2 == 0 && k.size() < interior + static_cast<std::size_t>(degree) + 1)
+            k.push_back(distinct[i]);
+    }
+    k.insert(k.end(), static_cast<std::size_t>(degree + 1), 1.0);
+    return k;
+}
+
+/// Degree 2 x 5 over the same heights with doubled knots: C0 creases along u, C3 lines along v.
+geom::Surface creasedSurface() {
+    const geom::Surface base = benchSurface(false);
+    std::mt19937 rng(8);
+    return geom::Surface(2, 5, doubledKnots(rng, 2, base.countU), doubledKnots(rng, 5, base.countV),
+                         base.countU, base.countV, base.points);
+}
+
+/// The bicubic surface with weights spread log-uniformly over 1e-2 .. 1e2.
+geom::Surface wideWeightSurface() {
+    geom::Surface s = benchSurface(true);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> decade(-2.0, 2.0);
+    for (double& w : s.weights) w = std::pow(10.0, decade(rng));
+    geom::validate(s);
+    return s;
+}
+
+/// A bumpy closed tube, periodic around (the seam on the domain edge), bicubic, interpolated.
+geom::Surface tubeSurface() {
+    std::mt19937 rng(10);
+    std::uniform_real_distribution<double> bump(-0.03, 0.03);
+    const std::size_t around = 32, along = 24;
+    std::vector<glm::dvec3> grid;
+    for (std::size_t i = 0; i < around; ++i)
+        for (std::size_t j = 0; j < along; ++j) {
+            const double a = 6.283185307179586 * static_cast<double>(i) / around;
+            const double r = 0.3 + bump(rng);
+            grid.emplace_back(0.5 + r * std::cos(a), 0.5 + r * std::sin(a),
+                              static_cast<double>(j) / (along - 1));
+        }
+    return geom::interpolateSurface(grid, around, along, 3, 3, geom::Closure::Periodic, geom::Closure::Open);
+}
+
+/// The same surface with clamped knots in u (end knots of multiplicity degree + 1): SISL's
+/// surfaces are clamped, and s1856 runs on for minutes on the periodic tube's unclamped knots.
+geom::Surface clampedInU(geom::Surface s) {
+    const int p = s.degreeU;
+    const double u0 = s.domainStartU(), u1 = s.domainEndU();
+    for (double end : {u0, u1}) {
+        const int m = static_cast<int>(std::count(s.knotsU.begin(), s.knotsU.end(), end));
+        if (m < p) s = geom::insertKnotU(s, end, p - m);
+    }
+    // The surface passes through row `first` at u0, where first = (last index of u0) - p.
+    const std::size_t first =
+        static_cast<std::size_t>(std::upper_bound(s.knotsU.begin(), s.knotsU.end(), u0) - s.knotsU.begin()) -
+        1 - static_cast<std::size_t>(p);
+    std::vector<double> knots(static_cast<std::size_t>(p) + 1, u0);
+    for (double k : s.knotsU)
+        if (k > u0 && k < u1) knots.push_back(k);
+    knots.insert(knots.end(), static_cast<std::size_t>(p) + 1, u1);
+    const std::size_t rows = knots.size() - static_cast<std::size_t>(p) - 1;
+    std::vector<glm::dvec3> points;
+    std::vector<double> weights;
+    for (std::size_t i = first; i < first + rows; ++i)
+        for (std::size_t j = 0; j < s.countV; ++j) {
+            points.push_back(s.point(i, j));
+            if (s.rational()) weights.push_back(s.weight(i, j));
+        }
+    return geom::Surface(p, s.degreeV, knots, s.knotsV, rows, s.countV, points, weights);
 }
 
 /// The same surface for SISL: first parameter direction = u, vertices with u running fastest.
@@ -162,10 +254,9 @@ struct Figures {
     int occtTreeFartherThanFoot = 0, occtTreeNoAnswer = 0;
 };
 
-Figures run(bool rational) {
+Figures run(const geom::Surface& s, const char* name, bool withOcct) {
     Figures f;
-    const geom::Surface s = benchSurface(rational);
-    SISLSurf* ss = toSisl(s);
+    SISLSurf* ss = toSisl(clampedInU(s));
     const Handle(Geom_BSplineSurface) occt = toOcct(s);
     const int grid = 512;
     std::vector<double> us(grid), vs(grid);
@@ -228,7 +319,7 @@ Figures run(bool rational) {
 
     // OpenCASCADE: the adaptor caches the polynomial form of the current span (best of several
     // passes, like the grid evaluators); the bare surface evaluates from the poles each call.
-    {
+    if (withOcct) {
         const GeomAdaptor_Surface adaptor(occt);
         gp_Pnt p;
         gp_Vec du, dv;
@@ -321,7 +412,7 @@ Figures run(bool rational) {
     // OpenCASCADE on the infinite line, like ours and s1856, on every occtStride-th line only: it
     // builds a polyhedron of the surface per query, tens of ms each. Each OCCT hit is compared
     // with the nearest of our hits on the same line.
-    {
+    if (withOcct) {
         const Handle(GeomAdaptor_Surface) surface = new GeomAdaptor_Surface(occt);
         IntCurveSurface_HInter inter;
         t0 = Clock::now();
@@ -380,6 +471,7 @@ Figures run(bool rational) {
     // OpenCASCADE, initialised once for many points, then one Perform per point (every
     // occtStride-th point), with its default search (Grad) and its tree search.
     for (const Extrema_ExtAlgo algo : {Extrema_ExtAlgo_Grad, Extrema_ExtAlgo_Tree}) {
+        if (!withOcct) break;
         const bool tree = algo == Extrema_ExtAlgo_Tree;
         double u1 = 0, u2 = 0, v1 = 0, v2 = 0;
         occt->Bounds(u1, u2, v1, v2);
@@ -405,7 +497,7 @@ Figures run(bool rational) {
     std::printf(
         "%s surface: grid fast %.1f ns/pt, plain %.1f ns/pt (fast vs plain max normal diff %.2e), "
         "SISL s1421 %.1f ns/pt, SISL s1506 %.1f ns/pt\n",
-        rational ? "rational" : "polynomial", f.fastNs, f.plainNs, worstDiff, f.sislPointNs, f.sislGridNs);
+        name, f.fastNs, f.plainNs, worstDiff, f.sislPointNs, f.sislGridNs);
     std::printf(
         "  intersect %.2f us/query (missed %d, worst hit error %.2e), SISL s1856 %.2f us/query (missed %d), "
         "hit-count mismatches %d\n",
@@ -413,6 +505,7 @@ Figures run(bool rational) {
     std::printf(
         "  closest point %.2f us (worst |d - h| %.2e), SISL s1958 %.2f us (worst %.2e)   [checksum %.3f]\n",
         f.closestUs, f.worstClosestError, f.sislClosestUs, f.worstSislClosestError, checksum);
+    if (!withOcct) return f;
     std::printf(
         "  OpenCASCADE: GeomAdaptor_Surface::D1 %.1f ns/pt, Geom_BSplineSurface::D1 %.1f ns/pt (worst point "
         "+ "
@@ -435,9 +528,20 @@ Figures run(bool rational) {
 
 int main() {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // figures appear as they come: a run takes minutes
-    const Figures poly = run(false);
-    const Figures rat = run(true);
-    auto emit = [](const char* prefix, const Figures& f, bool last) {
+    const auto wallStart = Clock::now();
+    const std::clock_t cpuStart = std::clock();
+    struct Case {
+        const char* name;
+        geom::Surface surface;
+        bool withOcct;  // OpenCASCADE (tens of ms a query) on the two reference surfaces only
+    };
+    const std::vector<Case> cases{
+        {"poly", benchSurface(false), true},          {"rational", benchSurface(true), true},
+        {"degree1", degreeOneSurface(), false},       {"deg2x5_double_knots", creasedSurface(), false},
+        {"wide_weights", wideWeightSurface(), false}, {"periodic_tube", tubeSurface(), false}};
+    std::vector<Figures> figures;
+    for (const Case& c : cases) figures.push_back(run(c.surface, c.name, c.withOcct));
+    auto emit = [](const char* prefix, const Figures& f, bool withOcct) {
         std::printf(
             "\"%s_grid_fast_ns_per_point\": %.2f, \"%s_grid_plain_ns_per_point\": %.2f, "
             "\"%s_sisl_s1421_ns_per_point\": %.2f, \"%s_sisl_s1506_ns_per_point\": %.2f, "
@@ -446,12 +550,15 @@ int main() {
             "\"%s_worst_hit_error\": %.3e, \"%s_closest_us_per_query\": %.3f, "
             "\"%s_sisl_s1958_us_per_query\": %.3f, \"%s_closest_worst_error\": %.3e, "
             "\"%s_sisl_closest_worst_error\": %.3e, \"%s_closest_farther_than_foot\": %d, "
-            "\"%s_sisl_closest_farther_than_foot\": %d, ",
+            "\"%s_sisl_closest_farther_than_foot\": %d, \"%s_plain_vs_s1421\": %.3f, "
+            "\"%s_intersect_speedup_vs_s1856\": %.2f, \"%s_closest_speedup_vs_s1958\": %.2f, ",
             prefix, f.fastNs, prefix, f.plainNs, prefix, f.sislPointNs, prefix, f.sislGridNs, prefix,
             f.intersectUs, prefix, f.sislIntersectUs, prefix, f.missed, prefix, f.sislMissed, prefix,
             f.countMismatch, prefix, f.worstHitError, prefix, f.closestUs, prefix, f.sislClosestUs, prefix,
             f.worstClosestError, prefix, f.worstSislClosestError, prefix, f.closestFartherThanFoot, prefix,
-            f.sislFartherThanFoot);
+            f.sislFartherThanFoot, prefix, f.plainNs / f.sislPointNs, prefix,
+            f.sislIntersectUs / f.intersectUs, prefix, f.sislClosestUs / f.closestUs);
+        if (!withOcct) return;
         std::printf(
             "\"%s_occt_adaptor_d1_ns_per_point\": %.2f, \"%s_occt_bspline_d1_ns_per_point\": %.2f, "
             "\"%s_occt_grid_worst_diff\": %.3e, \"%s_occt_hinter_us_per_query\": %.3f, "
@@ -460,17 +567,31 @@ int main() {
             "\"%s_occt_closest_worst_error\": %.3e, \"%s_occt_closest_farther_than_foot\": %d, "
             "\"%s_occt_closest_no_answer\": %d, \"%s_occt_project_tree_us_per_query\": %.3f, "
             "\"%s_occt_tree_closest_worst_error\": %.3e, \"%s_occt_tree_closest_farther_than_foot\": %d, "
-            "\"%s_occt_tree_closest_no_answer\": %d%s",
+            "\"%s_occt_tree_closest_no_answer\": %d, ",
             prefix, f.occtAdaptorNs, prefix, f.occtBsplineNs, prefix, f.occtWorstNormalDiff, prefix,
             f.occtIntersectUs, prefix, f.occtMissed, prefix, f.occtCountMismatch, prefix,
             f.occtWorstHitDistance, prefix, f.occtClosestUs, prefix, f.worstOcctClosestError, prefix,
             f.occtFartherThanFoot, prefix, f.occtNoAnswer, prefix, f.occtTreeClosestUs, prefix,
-            f.worstOcctTreeClosestError, prefix, f.occtTreeFartherThanFoot, prefix, f.occtTreeNoAnswer,
-            last ? "" : ", ");
+            f.worstOcctTreeClosestError, prefix, f.occtTreeFartherThanFoot, prefix, f.occtTreeNoAnswer);
     };
+    // The worst surface of each comparison: what the targets are read against.
+    double worstPlain = 0.0, worstIntersect = 1e300, worstClosest = 1e300;
+    int farther = 0, missed = 0;
     std::printf("{\"occt_queries_per_surface\": %d, ", occtQueries);
-    emit("poly", poly, false);
-    emit("rational", rat, true);
-    std::printf("}\n");
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Figures& f = figures[k];
+        emit(cases[k].name, f, cases[k].withOcct);
+        worstPlain = std::max(worstPlain, f.plainNs / f.sislPointNs);
+        worstIntersect = std::min(worstIntersect, f.sislIntersectUs / f.intersectUs);
+        worstClosest = std::min(worstClosest, f.sislClosestUs / f.closestUs);
+        farther += f.closestFartherThanFoot;
+        missed += f.missed;
+    }
+    std::printf(
+        "\"worst_plain_vs_s1421\": %.3f, \"worst_intersect_speedup_vs_s1856\": %.2f, "
+        "\"worst_closest_speedup_vs_s1958\": %.2f, \"closest_farther_than_foot\": %d, "
+        "\"intersect_missed\": %d, \"wall_seconds\": %.1f, \"cpu_seconds\": %.1f}\n",
+        worstPlain, worstIntersect, worstClosest, farther, missed, seconds(wallStart, Clock::now()),
+        static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
     return 0;
 }

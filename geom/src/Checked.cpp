@@ -65,7 +65,8 @@ double checkedParameter(double value, double start, double end, const char* wher
 
 void checkSpan(std::span<const double> knots, std::size_t span, int degree, const char* where) {
     const std::size_t p = static_cast<std::size_t>(degree);
-    const bool inRange = span + 1 >= p && span + p < knots.size();
+    // The span must index control points span - degree .. span of the n = knots - degree - 1.
+    const bool inRange = span >= p && span + p + 1 < knots.size();
     bool ordered = inRange && knots[span] < knots[span + 1];
     // NaN fails every comparison; an infinite knot in the window makes the result non-finite,
     // which checkResult catches.

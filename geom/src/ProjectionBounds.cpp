@@ -189,6 +189,44 @@ bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::
     return huu.lo > 0.0 && hvv.lo > 0.0 && huu.lo * hvv.lo > cross;
 }
 
+bool provablyFarther(const glm::dvec4* h, std::size_t pu, std::size_t qv, const glm::dvec3& p,
+                     double distance) {
+    // Bernstein products: B_i^n B_j^n = C(n,i) C(n,j) / C(2n,i+j) B_{i+j}^{2n}, in each direction;
+    // only the signs of the coefficients matter, so the positive C(2n,i+j) is left out.
+    auto binomial = [](std::size_t n, std::size_t k) {
+        double r = 1.0;
+        for (std::size_t i = 1; i <= k; ++i) r = r * static_cast<double>(n - k + i) / static_cast<double>(i);
+        return r;
+    };
+    const std::size_t nu = pu - 1, nv = qv - 1, ku = 2 * nu + 1, kv = 2 * nv + 1;
+    constexpr std::size_t kMax = 16;
+    if (pu > kMax || qv > kMax) return false;
+    double cu[kMax], cv[kMax];
+    for (std::size_t i = 0; i <= nu; ++i) cu[i] = binomial(nu, i);
+    for (std::size_t j = 0; j <= nv; ++j) cv[j] = binomial(nv, j);
+    thread_local std::vector<glm::dvec4> y;
+    thread_local std::vector<double> g;
+    y.resize(pu * qv);
+    for (std::size_t k = 0; k < pu * qv; ++k) y[k] = glm::dvec4(glm::dvec3(h[k]) - p * h[k].w, h[k].w);
+    g.assign(ku * kv, 0.0);
+    const double m2 = distance * distance;
+    for (std::size_t i = 0; i <= nu; ++i)
+        for (std::size_t j = 0; j <= nv; ++j) {
+            const glm::dvec4& a = y[i * qv + j];
+            const double wa = cu[i] * cv[j];
+            for (std::size_t i2 = 0; i2 <= nu; ++i2)
+                for (std::size_t j2 = 0; j2 <= nv; ++j2) {
+                    const glm::dvec4& b = y[i2 * qv + j2];
+                    const double value = glm::dot(glm::dvec3(a), glm::dvec3(b)) - m2 * a.w * b.w;
+                    g[(i + i2) * kv + (j + j2)] += wa * cu[i2] * cv[j2] * value;
+                }
+        }
+    for (std::size_t k = 0; k < ku; ++k)
+        for (std::size_t l = 0; l < kv; ++l)
+            if (g[k * kv + l] < 0.0) return false;
+    return true;
+}
+
 int gradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
                  bool rational, bool alongV, const glm::dvec3& p) {
     return rational ? rationalGradientSign(h, c, pu, qv, alongV, p)

@@ -25,6 +25,13 @@ void project(const glm::dvec4* net, std::size_t count, std::vector<glm::dvec3>& 
 /// by the convex hull property.
 double lowerBound(const std::vector<glm::dvec3>& c, const glm::dvec3& p, const glm::dvec3* toward);
 
+/// True when no point of the piece is nearer to p than `distance`: every Bernstein coefficient
+/// of |X - p w|^2 - distance^2 w^2 (X = w S, the homogeneous point; a polynomial of twice the
+/// degrees) is non-negative. Unlike the hull bounds it sees the weights, so it stays tight on
+/// rational nets whose small weights leave control points far from the surface.
+bool provablyFarther(const glm::dvec4* h, std::size_t pu, std::size_t qv, const glm::dvec3& p,
+                     double distance);
+
 /// The sign of (S - p) . S_u over the piece (alongV: of (S - p) . S_v), +1 or -1 where the net
 /// proves it, else 0. Where it is proved, the piece's nearest point lies on the edge towards
 /// which the distance falls.

@@ -255,7 +255,7 @@ private:
         pool_.insert(pool_.end(), net.begin(), net.end());
         detail::project(pool_.data() + whole.net, netSize_, points_);
         const double bound = detail::lowerBound(points_, p_, toward());
-        if (bound < best_.distance - tolerance_) push(whole, bound);
+        if (bound < best_.distance - tolerance_ && !fartherThanBest(whole)) push(whole, bound);
     }
 
     /// Where the distance provably grows across the region towards one of its edges inside the
@@ -266,6 +266,12 @@ private:
         if ((signU > 0 && region.s0 > 0.0) || (signU < 0 && region.s1 < 1.0)) return true;
         const int signV = detail::gradientSign(net, points_, pu_, qv_, projector_.rational_, true, p_);
         return (signV > 0 && region.t0 > 0.0) || (signV < 0 && region.t1 < 1.0);
+    }
+
+    /// The weights-aware test for rational nets, whose hull bounds small weights loosen.
+    bool fartherThanBest(const Region& region) const {
+        return projector_.rational_ && std::isfinite(best_.distance) &&
+               detail::provablyFarther(pool_.data() + region.net, pu_, qv_, p_, best_.distance - tolerance_);
     }
 
     void split(const Region& region) {
@@ -292,7 +298,8 @@ private:
             (k % 2 == 0 ? child.t1 : child.t0) = tm;
             detail::project(pool_.data() + child.net, netSize_, points_);
             const double bound = detail::lowerBound(points_, p_, toward());
-            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child)) push(child, bound);
+            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
+                push(child, bound);
         }
     }
 
@@ -314,6 +321,8 @@ private:
     }
 
     void visit(Region region, double bound) {
+        // The best may have improved since the region was queued.
+        if (region.depth > 0 && fartherThanBest(region)) return;
         const BezierPatchTree::Patch& patch = tree_.patches()[region.patch];
         const double ua = patch.u0 + region.s0 * (patch.u1 - patch.u0);
         const double ub = patch.u0 + region.s1 * (patch.u1 - patch.u0);
