@@ -129,6 +129,14 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
 void basisWithFirstDerivatives(std::size_t span, double u, int degree, std::span<const double> knots,
                                std::span<double> values, std::span<double> firsts) {
     const std::size_t p = static_cast<std::size_t>(degree);
+    if (p == 1) {  // hat functions: no recursion needed
+        const double lo = knots[span], hi = knots[span + 1], scale = 1.0 / (hi - lo);
+        values[0] = (hi - u) * scale;
+        values[1] = (u - lo) * scale;
+        firsts[0] = -scale;
+        firsts[1] = scale;
+        return;
+    }
     // The degree p-1 values first, then N'_{i,p} = p (N_{i,p-1} / (t_{i+p} - t_i) -
     // N_{i+1,p-1} / (t_{i+p+1} - t_{i+1})) and one more Cox-de Boor step for the values, from the
     // same quotients.

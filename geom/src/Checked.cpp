@@ -37,12 +37,13 @@ void checkWeightCount(std::size_t weights, std::size_t points, const char* where
 
 }  // namespace
 
-void checkShape(const Curve& curve, const char* where) {
+void explainShape(const Curve& curve, const char* where) {
     checkDirection(curve.knots, curve.degree, curve.points.size(), where, "curve");
     checkWeightCount(curve.weights.size(), curve.points.size(), where, "curve");
+    fail(where, "curve", "its shape is invalid");  // unreachable while the rules match checkShape's
 }
 
-void checkShape(const Surface& surface, const char* where) {
+void explainShape(const Surface& surface, const char* where) {
     std::size_t total = 0;  // countU * countV, refused when it overflows (no division per point)
     if (__builtin_mul_overflow(surface.countU, surface.countV, &total) || total != surface.points.size() ||
         total == 0)
@@ -52,35 +53,24 @@ void checkShape(const Surface& surface, const char* where) {
     checkDirection(surface.knotsU, surface.degreeU, surface.countU, where, "surface u direction");
     checkDirection(surface.knotsV, surface.degreeV, surface.countV, where, "surface v direction");
     checkWeightCount(surface.weights.size(), surface.points.size(), where, "surface");
+    fail(where, "surface", "its shape is invalid");  // unreachable while the rules match checkShape's
 }
 
-double checkedParameter(double value, double start, double end, const char* where, const char* name) {
-    const double slack = 1e-9 * (end - start);
-    if (!std::isfinite(value) || value < start - slack || value > end + slack)
-        throw GeometryError(std::string(where) + ": parameter " + name + " = " + std::to_string(value) +
-                            " is outside the domain [" + std::to_string(start) + ", " + std::to_string(end) +
-                            "]");
-    return value < start ? start : (value > end ? end : value);
+void parameterOutside(double value, double start, double end, const char* where, const char* name) {
+    throw GeometryError(std::string(where) + ": parameter " + name + " = " + std::to_string(value) +
+                        " is outside the domain [" + std::to_string(start) + ", " + std::to_string(end) +
+                        "]");
 }
 
-void checkSpan(std::span<const double> knots, std::size_t span, int degree, const char* where) {
-    const std::size_t p = static_cast<std::size_t>(degree);
-    // The span must index control points span - degree .. span of the n = knots - degree - 1.
-    const bool inRange = span >= p && span + p + 1 < knots.size();
-    bool ordered = inRange && knots[span] < knots[span + 1];
-    // NaN fails every comparison; an infinite knot in the window makes the result non-finite,
-    // which checkResult catches.
-    for (std::size_t i = span + 1 - p; ordered && i < span + p; ++i) ordered = knots[i] <= knots[i + 1];
-    if (!ordered)
-        throw GeometryError(std::string(where) + ": the knots around span " + std::to_string(span) +
-                            " are not finite and non-decreasing");
+void spanNotOrdered(std::size_t span, const char* where) {
+    throw GeometryError(std::string(where) + ": the knots around span " + std::to_string(span) +
+                        " are not finite and non-decreasing");
 }
 
-void checkResult(const glm::dvec3& value, const char* where) {
-    if (!std::isfinite(value.x) || !std::isfinite(value.y) || !std::isfinite(value.z))
-        throw GeometryError(std::string(where) +
-                            ": the result is not finite (a control point that is not finite, or a weight "
-                            "that is not positive, near the parameter)");
+void resultNotFinite(const char* where) {
+    throw GeometryError(std::string(where) +
+                        ": the result is not finite (a control point that is not finite, or a weight "
+                        "that is not positive, near the parameter)");
 }
 
 }  // namespace geom::detail

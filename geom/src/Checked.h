@@ -5,8 +5,10 @@
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 // Private to geom: the checks a per-point entry (evaluate, derivatives, normal, curvature) makes
 // instead of a full validate(), which would cost O(control points) per point: the sizes agree
@@ -15,18 +17,62 @@
 // catches a non-finite point or a non-positive weight among those it read).
 namespace geom::detail {
 
-void checkShape(const Curve& curve, const char* where);
-void checkShape(const Surface& surface, const char* where);
+/// The shape checks' full form: finds the broken rule and throws naming it.
+[[noreturn]] void explainShape(const Curve& curve, const char* where);
+[[noreturn]] void explainShape(const Surface& surface, const char* where);
+
+/// One direction's sizes agree and its domain is finite and not empty.
+inline bool directionShapeOk(const std::vector<double>& knots, int degree, std::size_t count) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    return degree >= 1 && count >= p + 1 && knots.size() == count + p + 1 && std::isfinite(knots[p]) &&
+           std::isfinite(knots[count]) && knots[p] < knots[count];
+}
+
+inline void checkShape(const Curve& curve, const char* where) {
+    if (!directionShapeOk(curve.knots, curve.degree, curve.points.size()) ||
+        (!curve.weights.empty() && curve.weights.size() != curve.points.size()))
+        explainShape(curve, where);
+}
+
+inline void checkShape(const Surface& surface, const char* where) {
+    std::size_t total = 0;  // countU * countV, refused when it overflows (no division per point)
+    if (__builtin_mul_overflow(surface.countU, surface.countV, &total) || total != surface.points.size() ||
+        total == 0 || !directionShapeOk(surface.knotsU, surface.degreeU, surface.countU) ||
+        !directionShapeOk(surface.knotsV, surface.degreeV, surface.countV) ||
+        (!surface.weights.empty() && surface.weights.size() != surface.points.size()))
+        explainShape(surface, where);
+}
+
+/// The throws behind the inline checks below, out of line: the checks run once per point.
+[[noreturn]] void parameterOutside(double value, double start, double end, const char* where,
+                                   const char* name);
+[[noreturn]] void spanNotOrdered(std::size_t span, const char* where);
+[[noreturn]] void resultNotFinite(const char* where);
 
 /// The parameter `name`, finite and inside [start, end] up to rounding (1e-9 of the width, and
 /// clamped there); else GeometryError naming where and name.
-double checkedParameter(double value, double start, double end, const char* where, const char* name);
+inline double checkedParameter(double value, double start, double end, const char* where, const char* name) {
+    const double slack = 1e-9 * (end - start);
+    // NaN fails both comparisons, infinities the range.
+    if (!(value >= start - slack && value <= end + slack)) parameterOutside(value, start, end, where, name);
+    return value < start ? start : (value > end ? end : value);
+}
 
-/// knots[span - degree + 1 .. span + degree] non-decreasing (no NaN), knots[span] < knots[span + 1]:
-/// the window the basis functions of one span read.
-void checkSpan(std::span<const double> knots, std::size_t span, int degree, const char* where);
+/// knots[span - degree + 1 .. span + degree] non-decreasing (no NaN), knots[span] < knots[span + 1],
+/// span in [degree, n - 1]: the window the basis functions of one span read.
+inline void checkSpan(std::span<const double> knots, std::size_t span, int degree, const char* where) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    // NaN fails every comparison; an infinite knot in the window makes the result non-finite,
+    // which checkResult catches.
+    bool ordered = span >= p && span + p + 1 < knots.size() && knots[span] < knots[span + 1];
+    for (std::size_t i = span + 1 - p; ordered && i < span + p; ++i) ordered = knots[i] <= knots[i + 1];
+    if (!ordered) spanNotOrdered(span, where);
+}
 
-/// Throws when a computed point or vector is not finite: the data it came from is not.
-void checkResult(const glm::dvec3& value, const char* where);
+/// Throws when a computed point or vector is not finite: the data it came from is not (a point
+/// that is not finite, or a weight that is not positive).
+inline void checkResult(const glm::dvec3& value, const char* where) {
+    if (!(std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z))) resultNotFinite(where);
+}
 
 }  // namespace geom::detail

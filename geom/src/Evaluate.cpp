@@ -25,6 +25,27 @@ double clampTo(double x, double lo, double hi) {
     return std::min(std::max(x, lo), hi);
 }
 
+/// findSpan with a per-thread hint: per-point callers walk their parameters in order, so the span
+/// of a recent call on the same knot vector usually still holds u (SISL's s1421 takes the same
+/// hint from its caller). A hint is used only where it is the span findSpan would return.
+std::size_t hintedSpan(int degree, const std::vector<double>& knots, std::size_t count, double u) {
+    struct Hint {
+        const double* knots = nullptr;
+        std::size_t span = 0;
+    };
+    thread_local Hint hints[2];  // a surface's two directions
+    thread_local std::size_t next = 0;
+    const std::size_t p = static_cast<std::size_t>(degree);
+    for (const Hint& hint : hints)
+        if (hint.knots == knots.data() && hint.span >= p && hint.span < count && knots[hint.span] <= u &&
+            u < knots[hint.span + 1])
+            return hint.span;
+    const std::size_t span = findSpan(degree, knots, count, u);
+    hints[next] = {knots.data(), span};
+    next ^= 1;
+    return span;
+}
+
 void checkOrder(int order, const char* where) {
     if (order < 0 || order > 64)
         throw GeometryError(std::string(where) + ": derivative order " + std::to_string(order) +
@@ -39,7 +60,7 @@ void curveDerivatives(const Curve& curve, double u, int order, const char* where
     const std::size_t w = static_cast<std::size_t>(p) + 1;
     const int du = std::min(order, p);
     u = detail::checkedParameter(u, curve.domainStart(), curve.domainEnd(), where, "u");
-    const std::size_t span = findSpan(p, curve.knots, curve.points.size(), u);
+    const std::size_t span = hintedSpan(p, curve.knots, curve.points.size(), u);
     detail::checkSpan(curve.knots, span, p, where);
     detail::SmallBuffer<double, 64> nders(w * static_cast<std::size_t>(du + 1));
     basisDerivatives(span, u, p, curve.knots, du, nders.span());
@@ -142,8 +163,8 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
     const int dv = std::min(order, q);
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), where, "u");
     v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), where, "v");
-    const std::size_t spanU = findSpan(p, surface.knotsU, surface.countU, u);
-    const std::size_t spanV = findSpan(q, surface.knotsV, surface.countV, v);
+    const std::size_t spanU = hintedSpan(p, surface.knotsU, surface.countU, u);
+    const std::size_t spanV = hintedSpan(q, surface.knotsV, surface.countV, v);
     detail::checkSpan(surface.knotsU, spanU, p, where);
     detail::checkSpan(surface.knotsV, spanV, q, where);
     if (order <= 1) return firstOrder(surface, u, v, spanU, spanV, order, where, out);
@@ -232,9 +253,9 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
     const glm::dvec3 n = glm::cross(su, sv);
-    const double len = glm::length(n);
-    const double scale = glm::length(su) * glm::length(sv);
-    if (len > 1e-12 * scale && len > 0.0) return n / len;
+    // |n| > 1e-12 |su| |sv|, compared squared: one square root a point instead of three.
+    const double len2 = glm::dot(n, n);
+    if (len2 > 1e-24 * glm::dot(su, su) * glm::dot(sv, sv) && len2 > 0.0) return n / std::sqrt(len2);
     // Only the degenerate case reads the surface.
     detail::checkShape(surface, "normalFromDerivatives");
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
