@@ -101,6 +101,8 @@ void firstOrder(const Surface& surface, double u, double v, std::size_t spanU, s
     if (order == 0) {
         basisFunctions(spanU, u, surface.degreeU, surface.knotsU, nu.span());
         basisFunctions(spanV, v, surface.degreeV, surface.knotsV, nv.span());
+        std::fill_n(dnu.span().begin(), p + 1, 0.0);
+        std::fill_n(dnv.span().begin(), q + 1, 0.0);
     } else {
         basisWithFirstDerivatives(spanU, u, surface.degreeU, surface.knotsU, nu.span(), dnu.span());
         basisWithFirstDerivatives(spanV, v, surface.degreeV, surface.knotsV, nv.span(), dnv.span());

@@ -12,14 +12,14 @@ namespace geom::detail {
 template <class T, std::size_t N>
 class SmallBuffer {
 public:
-    explicit SmallBuffer(std::size_t n, const T& value = T()) : size_(n) {
+    /// n values left as T's default constructor leaves them (scratch the caller fills).
+    explicit SmallBuffer(std::size_t n) : size_(n) {
         if (n > N) {
-            heap_.assign(n, value);
+            heap_.resize(n);
             data_ = heap_.data();
-        } else {
-            std::fill_n(stack_, n, value);
         }
     }
+    SmallBuffer(std::size_t n, const T& value) : SmallBuffer(n) { std::fill_n(data_, n, value); }
     SmallBuffer(const SmallBuffer&) = delete;
     SmallBuffer& operator=(const SmallBuffer&) = delete;
 
