@@ -197,14 +197,9 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
         detail::project(polygon, n, points);
         // Start at the best point or at the segment's control point nearest to p.
         double start = best.u;
-        if (!holdsBest) {
-            std::size_t nearest = 0;
-            for (std::size_t k = 1; k < n; ++k)
-                if (glm::dot(points[k] - p, points[k] - p) <
-                    glm::dot(points[nearest] - p, points[nearest] - p))
-                    nearest = k;
-            start = ua + (ub - ua) * static_cast<double>(nearest) / static_cast<double>(degree_);
-        }
+        if (!holdsBest)
+            start = ua + (ub - ua) * static_cast<double>(detail::nearestPoint(points, p)) /
+                             static_cast<double>(degree_);
         if (detail::provablyConvex(polygon, points, n, 1, p)) {
             // Convex on the segment: Newton held inside it finds the segment's minimum.
             take(polishIn(segment.piece, p, start, ua, ub), segment.piece);

@@ -129,6 +129,19 @@ void project(const glm::dvec4* net, std::size_t count, std::vector<glm::dvec3>& 
     for (std::size_t k = 0; k < count; ++k) points[k] = glm::dvec3(net[k]) / net[k].w;
 }
 
+std::size_t nearestPoint(const std::vector<glm::dvec3>& c, const glm::dvec3& p) {
+    std::size_t nearest = 0;
+    double nearestDistance = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        const double d = glm::dot(c[k] - p, c[k] - p);
+        if (d < nearestDistance) {
+            nearestDistance = d;
+            nearest = k;
+        }
+    }
+    return nearest;
+}
+
 double lowerBound(const std::vector<glm::dvec3>& c, const glm::dvec3& p, const glm::dvec3* toward) {
     BoundingBox box;
     double along = std::numeric_limits<double>::infinity();

@@ -20,6 +20,9 @@ void halveLine(const glm::dvec4* in, std::size_t stride, std::size_t n, glm::dve
 /// The points of a homogeneous net.
 void project(const glm::dvec4* net, std::size_t count, std::vector<glm::dvec3>& points);
 
+/// The index of the net point nearest to p: its Bézier abscissa starts Newton on the piece.
+std::size_t nearestPoint(const std::vector<glm::dvec3>& c, const glm::dvec3& p);
+
 /// A lower bound on the distance from p to the piece: the box of its points, and their extent
 /// along the unit direction `toward` (the best point so far; null for none). Both hold the piece
 /// by the convex hull property.

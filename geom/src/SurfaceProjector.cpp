@@ -303,23 +303,6 @@ private:
         }
     }
 
-    /// The region's control point nearest to p, at its Bézier abscissa.
-    glm::dvec2 nearestNetPoint(const Region& region, double ua, double ub, double va, double vb) const {
-        const glm::dvec4* net = pool_.data() + region.net;
-        std::size_t nearest = 0;
-        double nearestDistance = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < netSize_; ++k) {
-            const glm::dvec3 c = glm::dvec3(net[k]) / net[k].w;
-            const double d = glm::dot(c - p_, c - p_);
-            if (d < nearestDistance) {
-                nearestDistance = d;
-                nearest = k;
-            }
-        }
-        return {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
-                va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
-    }
-
     void visit(Region region, double bound) {
         // The best may have improved since the region was queued.
         if (region.depth > 0 && fartherThanBest(region)) return;
@@ -330,12 +313,16 @@ private:
         const double vb = patch.v0 + region.t1 * (patch.v1 - patch.v0);
         const bool holdsBest = std::isfinite(best_.distance) && bestPatch_ == region.patch &&
                                best_.uv.x >= ua && best_.uv.x <= ub && best_.uv.y >= va && best_.uv.y <= vb;
-        glm::dvec2 start = best_.uv;
-        if (!holdsBest)
-            start = region.depth == 0 ? projector_.patchStart(region.patch, p_)
-                                      : nearestNetPoint(region, ua, ub, va, vb);
         const glm::dvec4* net = pool_.data() + region.net;
         detail::project(net, netSize_, points_);
+        glm::dvec2 start = best_.uv;
+        if (!holdsBest && region.depth == 0) {
+            start = projector_.patchStart(region.patch, p_);
+        } else if (!holdsBest) {
+            const std::size_t nearest = detail::nearestPoint(points_, p_);
+            start = {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
+                     va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
+        }
         if (detail::provablyConvex(net, points_, pu_, qv_, p_)) {
             // Convex on the region: Newton held inside it finds the region's minimum.
             take(projector_.polishIn(region.patch, p_, start, ua, ub, va, vb), region.patch);
