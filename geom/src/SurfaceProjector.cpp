@@ -90,8 +90,8 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
     return out;
 }
 
-/// Regions are subdivided at most this deep (4^5 pieces of a patch at most, and only where the
-/// bound still lets them hold a nearer point): below it a Newton basin is smaller than a piece.
+/// Regions are halved at most this often in each direction (1/256 of a patch a side, and only
+/// where no bound settles them): below it a Newton basin is smaller than a region.
 constexpr int kMaxDepth = 8;
 
 }  // namespace
