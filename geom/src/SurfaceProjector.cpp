@@ -1,6 +1,7 @@
 #include "geom/SurfaceProjector.h"
 
 #include "ProjectionBounds.h"
+#include "geom/BoundingBox.h"
 #include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
@@ -91,8 +92,12 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
 }
 
 /// Regions are halved at most this often in each direction (1/256 of a patch a side, and only
-/// where no bound settles them): below it a Newton basin is smaller than a region.
+/// where no bound settles them): below it a Newton basin is smaller than a region. Small weights
+/// can squeeze much of a patch's shape into a tiny corner of its parameters; there a region
+/// still larger than kLargeRegion of the surface goes on being halved, down to kHardDepth.
 constexpr int kMaxDepth = 8;
+constexpr int kHardDepth = 24;
+constexpr double kLargeRegion = 1e-3;
 
 }  // namespace
 
@@ -303,6 +308,15 @@ private:
         }
     }
 
+    /// Whether a region may be halved again (points_ holds its net's points).
+    bool mayHalve(const Region& region) const {
+        if (region.depth < kMaxDepth) return true;
+        if (region.depth >= kHardDepth) return false;
+        BoundingBox box;
+        for (const glm::dvec3& q : points_) box.add(q);
+        return box.diagonal() > kLargeRegion * tree_.scale();
+    }
+
     void visit(Region region, double bound) {
         // The best may have improved since the region was queued.
         if (region.depth > 0 && fartherThanBest(region)) return;
@@ -331,7 +345,7 @@ private:
         if (!holdsBest)
             take(projector_.polishIn(region.patch, p_, start, patch.u0, patch.u1, patch.v0, patch.v1),
                  region.patch);
-        if (region.depth < kMaxDepth && bound < best_.distance - tolerance_) split(region);
+        if (bound < best_.distance - tolerance_ && mayHalve(region)) split(region);
     }
 
     using Entry = std::pair<double, std::ptrdiff_t>;
