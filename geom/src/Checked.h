@@ -17,7 +17,7 @@
 // catches a non-finite point or a non-positive weight among those it read).
 namespace geom::detail {
 
-/// The shape checks' full form: finds the broken rule and throws naming it.
+/// The shape checks' failure path: validate(), which names the broken rule, then a plain throw.
 [[noreturn]] void explainShape(const Curve& curve, const char* where);
 [[noreturn]] void explainShape(const Surface& surface, const char* where);
 
@@ -69,10 +69,15 @@ inline void checkSpan(std::span<const double> knots, std::size_t span, int degre
     if (!ordered) spanNotOrdered(span, where);
 }
 
+/// All three coordinates finite.
+inline bool finite(const glm::dvec3& value) {
+    return std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z);
+}
+
 /// Throws when a computed point or vector is not finite: the data it came from is not (a point
 /// that is not finite, or a weight that is not positive).
 inline void checkResult(const glm::dvec3& value, const char* where) {
-    if (!(std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z))) resultNotFinite(where);
+    if (!finite(value)) resultNotFinite(where);
 }
 
 }  // namespace geom::detail

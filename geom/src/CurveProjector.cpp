@@ -1,5 +1,6 @@
 #include "geom/CurveProjector.h"
 
+#include "Checked.h"
 #include "ProjectionBounds.h"
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
@@ -17,10 +18,6 @@
 namespace geom {
 namespace {
 
-bool finite(const glm::dvec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 /// One part of a piece in the global search: fractions [s0, s1] of the piece's parameters, its
 /// Bézier polygon (an offset into a pool) and its subdivision depth.
 struct Segment {
@@ -36,7 +33,7 @@ constexpr int kMaxDepth = 10;
 }  // namespace
 
 CurveProjector::CurveProjector(const Curve& curve) : degree_(curve.degree), rational_(curve.rational()) {
-    validate(curve);
+    validate(curve, "CurveProjector");
     for (const BezierCurvePiece& piece : extractBezier(curve)) {
         pieces_.push_back(
             {homogeneousNet(piece.curve).data, boundingBox(piece.curve), piece.start, piece.end});
@@ -110,7 +107,7 @@ CurvePoint CurveProjector::polishIn(std::size_t index, const glm::dvec3& p, doub
 }
 
 CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const {
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
     if (!std::isfinite(u)) throw GeometryError("closestPoint: the start guess is not finite");
     u = std::clamp(u, pieces_.front().start, pieces_.back().end);
     auto it = std::upper_bound(pieces_.begin(), pieces_.end(), u,
@@ -136,7 +133,7 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
 }
 
 CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
     const std::size_t n = static_cast<std::size_t>(degree_) + 1;
     thread_local std::vector<Segment> segments;
     thread_local std::vector<glm::dvec4> pool, work;

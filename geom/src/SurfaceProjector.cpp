@@ -1,5 +1,6 @@
 #include "geom/SurfaceProjector.h"
 
+#include "Checked.h"
 #include "ProjectionBounds.h"
 #include "geom/BoundingBox.h"
 #include "geom/GeometryError.h"
@@ -15,10 +16,6 @@
 
 namespace geom {
 namespace {
-
-bool finite(const glm::dvec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
 
 /// Newton on the gradient of |S - p|^2 / 2 over [ua,ub] x [va,vb], with the Hessian shifted where
 /// it is not positive definite, a backtracking step, and parameters held on the domain edges they
@@ -147,31 +144,17 @@ SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const 
 }
 
 SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const {
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
     if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
         throw GeometryError("closestPoint: the start guess is not finite");
     return polish(p, guess);
 }
 
-glm::dvec2 SurfaceProjector::patchStart(std::size_t index, const glm::dvec3& p) const {
+glm::dvec2 SurfaceProjector::patchStart(std::size_t index, const glm::dvec3& p, glm::dvec2 start) const {
     const BezierPatchTree::Patch& patch = tree_.patches()[index];
-    const std::size_t qv = static_cast<std::size_t>(tree_.degreeV()) + 1;
-    const std::size_t pu = static_cast<std::size_t>(tree_.degreeU()) + 1;
-    std::size_t nearest = 0;
-    double nearestDistance = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < patch.net.size(); ++k) {
-        const glm::dvec3 c = glm::dvec3(patch.net[k]) / patch.net[k].w;
-        const double d = glm::dot(c - p, c - p);
-        if (d < nearestDistance) {
-            nearestDistance = d;
-            nearest = k;
-        }
-    }
     auto at = [&](double a, double b) {
         return glm::dvec2(patch.u0 + a * (patch.u1 - patch.u0), patch.v0 + b * (patch.v1 - patch.v0));
     };
-    glm::dvec2 start = at(static_cast<double>(nearest / qv) / static_cast<double>(pu - 1),
-                          static_cast<double>(nearest % qv) / static_cast<double>(qv - 1));
     const glm::dvec3 sp = tree_.evaluate(index, start.x, start.y, 0).point;
     double startDistance = glm::dot(sp - p, sp - p);
     constexpr int kGrid = 2;
@@ -330,12 +313,11 @@ private:
         const glm::dvec4* net = pool_.data() + region.net;
         detail::project(net, netSize_, points_);
         glm::dvec2 start = best_.uv;
-        if (!holdsBest && region.depth == 0) {
-            start = projector_.patchStart(region.patch, p_);
-        } else if (!holdsBest) {
+        if (!holdsBest) {
             const std::size_t nearest = detail::nearestPoint(points_, p_);
             start = {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
                      va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
+            if (region.depth == 0) start = projector_.patchStart(region.patch, p_, start);
         }
         if (detail::provablyConvex(net, points_, pu_, qv_, p_)) {
             // Convex on the region: Newton held inside it finds the region's minimum.
@@ -370,7 +352,7 @@ thread_local std::vector<glm::dvec4> SurfaceProjector::Search::pool_, SurfacePro
 thread_local std::vector<glm::dvec3> SurfaceProjector::Search::points_;
 
 SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
-    if (!finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
     return Search(*this, p).run();
 }
 

@@ -33,8 +33,9 @@ private:
     SurfacePoint polishOnPatch(std::size_t index, const glm::dvec3& p, glm::dvec2 uv) const;
     /// polishOnPatch, then on into neighbouring patches while the distance falls.
     SurfacePoint polish(const glm::dvec3& p, glm::dvec2 uv) const;
-    /// The start of a patch's search: the best of its control points' abscissae and a small grid.
-    glm::dvec2 patchStart(std::size_t index, const glm::dvec3& p) const;
+    /// The start of a patch's search: `start` (its nearest control point's abscissa) or the point
+    /// of a 3 x 3 grid on the patch nearer to p.
+    glm::dvec2 patchStart(std::size_t index, const glm::dvec3& p, glm::dvec2 start) const;
 
     BezierPatchTree tree_;
     bool rational_ = false;
