@@ -12,43 +12,101 @@
 #endif
 
 #include <getopt.h>
+#include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <optional>
 
 namespace {
 
+// Exit codes: 0 every input line succeeded; 1 the session could not run (a script that does not
+// parse, no Vulkan device, a file that cannot be written); 2 bad options; 3 some lines failed.
+constexpr int kExitFatal = 1, kExitUsage = 2, kExitLinesFailed = 3;
+
 struct Options {
     std::string script;
     std::filesystem::path output = "out";
     std::string record;
     bool window = false;
+    bool keepGoing = false;
     int width = 1024, height = 768;
 };
 
 void usage(std::ostream& out) {
-    out << "usage: acsynt --script FILE [--output DIR] [--record FILE] [--size WxH]\n"
+    out << "usage: acsynt --script FILE [--keep-going] [--output DIR] [--record FILE] [--size WxH]\n"
            "       acsynt --window [--output DIR] [--record FILE] [--size WxH]\n"
-           "  --script FILE  replay a session script headless (lavapipe), writing its snapshots\n"
-           "  --output DIR   where pictures, summary.txt, acsynt.log and saved files go (default out)\n"
+           "  --script FILE  replay a session script headless (lavapipe), writing its snapshots;\n"
+           "                 it stops at the first line that fails\n"
+           "  --keep-going   carry on after a failing line (the count is still reported)\n"
+           "  --output DIR   where pictures, summary.txt, acsynt.log and saved files go (default out);\n"
+           "                 files a script names stay inside it\n"
            "  --record FILE  write the session as a script that replays it\n"
            "  --window       interactive session in a GLFW window\n"
-           "  --size WxH     screen size in pixels, 4:3 like the display surface (default 1024x768)\n";
+           "  --size WxH     screen size in pixels, 4:3 like the display surface (default 1024x768)\n"
+           "exit status: 0 every line succeeded, 1 the session could not run, 2 bad options,\n"
+           "             3 some lines failed (the last line printed says how many)\n";
+}
+
+bool parseSize(const char* text, int& width, int& height) {
+    const char* end = text + std::strlen(text);
+    const auto [afterWidth, ec1] = std::from_chars(text, end, width);
+    if (ec1 != std::errc() || afterWidth == end || *afterWidth != 'x') return false;
+    const auto [afterHeight, ec2] = std::from_chars(afterWidth + 1, end, height);
+    return ec2 == std::errc() && afterHeight == end && width >= 160 && height >= 120 && width <= 1024 &&
+           height <= 768;
+}
+
+/// Why a file cannot be written at `path` (empty when it can): a directory, or a folder that
+/// is missing or not writable.
+std::string unwritable(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return "is a directory";
+    if (std::filesystem::exists(path, ec)) return access(path.c_str(), W_OK) == 0 ? "" : "is not writable";
+    const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+    if (!std::filesystem::is_directory(folder, ec)) return "is in a folder that does not exist";
+    return access(folder.c_str(), W_OK) == 0 ? "" : "is in a folder that is not writable";
+}
+
+/// Refuses, before anything runs, a script that is not a readable file and a record or output
+/// path that cannot be written.
+bool checkPaths(const Options& o) {
+    std::error_code ec;
+    if (!o.script.empty() &&
+        (std::filesystem::is_directory(o.script, ec) || access(o.script.c_str(), R_OK) != 0)) {
+        std::cerr << "acsynt: --script " << o.script
+                  << (std::filesystem::is_directory(o.script, ec) ? " is a directory" : " cannot be read")
+                  << "\n";
+        return false;
+    }
+    if (!o.record.empty())
+        if (const std::string why = unwritable(o.record); !why.empty()) {
+            std::cerr << "acsynt: --record " << o.record << " " << why << "\n";
+            return false;
+        }
+    std::filesystem::create_directories(o.output, ec);
+    if (!std::filesystem::is_directory(o.output) || access(o.output.c_str(), W_OK) != 0) {
+        std::cerr << "acsynt: --output " << o.output.string()
+                  << (std::filesystem::exists(o.output) && !std::filesystem::is_directory(o.output)
+                          ? " is not a directory\n"
+                          : " cannot be created or written\n");
+        return false;
+    }
+    return true;
 }
 
 std::optional<Options> parse(int argc, char** argv) {
-    static const option longOptions[] = {{"script", required_argument, nullptr, 's'},
-                                         {"output", required_argument, nullptr, 'o'},
-                                         {"record", required_argument, nullptr, 'r'},
-                                         {"window", no_argument, nullptr, 'w'},
-                                         {"size", required_argument, nullptr, 'z'},
-                                         {"help", no_argument, nullptr, 'h'},
-                                         {nullptr, 0, nullptr, 0}};
+    static const option longOptions[] = {
+        {"script", required_argument, nullptr, 's'}, {"output", required_argument, nullptr, 'o'},
+        {"record", required_argument, nullptr, 'r'}, {"window", no_argument, nullptr, 'w'},
+        {"size", required_argument, nullptr, 'z'},   {"keep-going", no_argument, nullptr, 'k'},
+        {"help", no_argument, nullptr, 'h'},         {nullptr, 0, nullptr, 0}};
     Options o;
     int c;
-    while ((c = getopt_long(argc, argv, "s:o:r:wz:h", longOptions, nullptr)) != -1) {
+    while ((c = getopt_long(argc, argv, "s:o:r:wz:kh", longOptions, nullptr)) != -1) {
         switch (c) {
             case 's':
                 o.script = optarg;
@@ -63,12 +121,14 @@ std::optional<Options> parse(int argc, char** argv) {
                 o.window = true;
                 break;
             case 'z':
-                if (std::sscanf(optarg, "%dx%d", &o.width, &o.height) != 2 || o.width < 160 ||
-                    o.height < 120 || o.width > 1024 || o.height > 768) {
+                if (!parseSize(optarg, o.width, o.height)) {
                     std::cerr << "acsynt: --size wants WxH within 160x120 .. 1024x768, not '" << optarg
                               << "'\n";
                     return std::nullopt;
                 }
+                break;
+            case 'k':
+                o.keepGoing = true;
                 break;
             case 'h':
                 usage(std::cout);
@@ -78,35 +138,55 @@ std::optional<Options> parse(int argc, char** argv) {
                 return std::nullopt;
         }
     }
-    if (optind < argc || (o.script.empty() && !o.window)) {
+    if (optind < argc || (o.script.empty() && !o.window) || (!o.script.empty() && o.window)) {
         usage(std::cerr);
         return std::nullopt;
     }
+    if (!checkPaths(o)) return std::nullopt;
     return o;
 }
 
-void finish(acsynt::Session& session, const Options& o) {
+/// Writes `text` to `path`; false (with a message) when it could not be written whole.
+bool writeFile(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out || !(out << text) || !out.flush()) {
+        std::cerr << "acsynt: cannot write " << path.string() << "\n";
+        return false;
+    }
+    return true;
+}
+
+/// Writes the summary, the log and the recording, prints what was written and returns the exit
+/// status: only a session whose every line succeeded, and whose files were all written, gets 0.
+int finish(acsynt::Session& session, const Options& o) {
     std::filesystem::create_directories(o.output);
     const auto summary = o.output / "summary.txt";
-    std::ofstream(summary) << session.summary();
     const auto log = o.output / "acsynt.log";
-    std::ofstream out(log);
-    for (const auto& line : session.log()) out << line << "\n";
-    if (!o.record.empty()) std::ofstream(o.record) << session.recording();
+    std::string logText;
+    for (const auto& line : session.log()) logText += line + "\n";
+    bool written = writeFile(summary, session.summary()) && writeFile(log, logText);
+    if (!o.record.empty()) written = writeFile(o.record, session.recording()) && written;
     for (const auto& p : session.pictures()) std::cout << p.string() << "\n";
     std::cout << summary.string() << "\n" << log.string() << "\n";
     if (!o.record.empty()) std::cout << o.record << "\n";
+    if (!written) return kExitFatal;
+    if (session.failedLines() == 0) return 0;
+    const std::string source = o.window ? std::string("the window session") : o.script;
+    std::cout << session.failedLines() << (session.failedLines() == 1 ? " error in " : " errors in ")
+              << source << "\n";
+    return o.window ? 0 : kExitLinesFailed;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     const auto options = parse(argc, argv);
-    if (!options) return 2;
+    if (!options) return kExitUsage;
     acsynt::SessionSettings settings;
     settings.width = options->width;
     settings.height = options->height;
     settings.outputDirectory = options->output;
+    settings.stopAtFirstError = !options->window && !options->keepGoing;
     try {
         if (!options->window) {
             auto script = phigs::ScriptInputSource::fromFile(options->script, acsynt::Session::directives());
@@ -123,8 +203,7 @@ int main(int argc, char** argv) {
                 phigs::writePng(display.image(), file);
             });
             session.run();
-            finish(session, *options);
-            return 0;
+            return finish(session, *options);
         }
 #ifdef ACSYNT_HAVE_WINDOW
         settings.workstationType = phigs::WorkstationType::Window;
@@ -142,14 +221,13 @@ int main(int argc, char** argv) {
         window.draw(session.picture());
         while (!window.shouldClose() && session.step(std::chrono::milliseconds(30))) {
         }
-        finish(session, *options);
-        return 0;
+        return finish(session, *options);
 #else
         std::cerr << "acsynt: built without the GLFW window source\n";
-        return 2;
+        return kExitUsage;
 #endif
     } catch (const std::exception& e) {
         std::cerr << "acsynt: " << e.what() << "\n";
-        return 1;
+        return kExitFatal;
     }
 }

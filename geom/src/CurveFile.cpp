@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -31,11 +32,11 @@ class LineReader {
 public:
     LineReader(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
 
-    /// The next non-blank line (trimmed); false at the end of the input.
+    /// The next non-blank line (trimmed); false at the end of the input. A line longer than
+    /// kCurveFileMaxLineLength, or with a control character, is refused as it is read.
     bool next(std::string& line) {
         std::string raw;
-        while (std::getline(in_, raw)) {
-            ++line_;
+        while (readLine(raw)) {
             line = trim(raw);
             if (!line.empty()) return true;
         }
@@ -49,6 +50,27 @@ public:
     [[noreturn]] void fail(const std::string& reason) const { throw CurveFileError(source_, line_, reason); }
 
 private:
+    bool readLine(std::string& raw) {
+        raw.clear();
+        std::streambuf* buffer = in_.rdbuf();
+        int c = buffer ? buffer->sbumpc() : std::char_traits<char>::eof();
+        if (c == std::char_traits<char>::eof()) return false;
+        ++line_;
+        for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
+            if (c < 0x20 && c != '\t' && c != '\r') {
+                char code[16];
+                std::snprintf(code, sizeof code, "0x%02x", static_cast<unsigned>(c));
+                fail(std::string("control character ") + code + " at column " +
+                     std::to_string(raw.size() + 1));
+            }
+            if (raw.size() == kCurveFileMaxLineLength)
+                fail("the line is longer than the limit of " + std::to_string(kCurveFileMaxLineLength) +
+                     " characters");
+            raw.push_back(static_cast<char>(c));
+        }
+        return true;
+    }
+
     std::istream& in_;
     std::string source_;
     std::size_t line_ = 0;
@@ -102,6 +124,7 @@ CurveFileError::CurveFileError(std::string file, std::size_t line, const std::st
 CurveModel parseCurveFile(std::istream& in, const std::string& source) {
     LineReader reader(in, source);
     CurveModel model;
+    std::size_t totalPoints = 0;
     const std::string title = reader.require("the title 'CURVE INPUT FILE'");
     if (title != kTitle)
         reader.fail("expected the title '" + std::string(kTitle) + "', found '" + title + "'");
@@ -110,6 +133,16 @@ CurveModel parseCurveFile(std::istream& in, const std::string& source) {
         long count = 0;
         if (!isCount(line, count) || count < 3)
             reader.fail("expected the number of data points of a part (at least 3), found '" + line + "'");
+        if (count > static_cast<long>(kCurveFileMaxPointsPerPart))
+            reader.fail("a part of " + line + " data points; the limit is " +
+                        std::to_string(kCurveFileMaxPointsPerPart) + " per part");
+        if (model.parts.size() == kCurveFileMaxParts)
+            reader.fail("more than " + std::to_string(kCurveFileMaxParts) + " parts; the limit is " +
+                        std::to_string(kCurveFileMaxParts));
+        totalPoints += static_cast<std::size_t>(count);
+        if (totalPoints > kCurveFileMaxPoints)
+            reader.fail("the parts so far declare " + std::to_string(totalPoints) +
+                        " data points; the limit is " + std::to_string(kCurveFileMaxPoints) + " per file");
         CurvePart part;
         part.name = reader.require("the part name");
         expectHeading(reader, kPointsHeading, part.name);
@@ -159,6 +192,9 @@ CurveModel parseCurveFile(std::istream& in, const std::string& source) {
 }
 
 CurveModel readCurveFile(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw CurveFileError(path.string(), 0, "is a directory, not a curve file");
     std::ifstream in(path);
     if (!in) throw CurveFileError(path.string(), 0, "cannot open the curve file");
     return parseCurveFile(in, path.string());

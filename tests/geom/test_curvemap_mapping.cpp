@@ -419,3 +419,54 @@ TEST_CASE("on a straight tube the logo runs over the open end and closes along t
     CHECK(exits >= 2);
     CHECK(walks == exits);
 }
+
+TEST_CASE("a placed curve far larger than the surface is refused before any projection",
+          "[geom][curvemap][limits]") {
+    const std::vector<Curve> logo = loadCurves("acslogo.crv");
+    double surfaceSize = 0, logoSize = 0;
+    {
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (const glm::dvec3& p : wave().surface().points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        surfaceSize = glm::length(hi - lo);
+        lo = glm::dvec3(1e300), hi = glm::dvec3(-1e300);
+        for (const glm::dvec3& p : logo[0].points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        logoSize = glm::length(hi - lo);
+    }
+    // Just inside the ratio the part is mapped (it misses the surface, or surrounds it); just
+    // outside, and at the scales that once ran out of memory, it is refused by name.
+    MapOptions options{2e-3};
+    for (double ratio : {0.99, 1.01, 1e30, 1e150}) {
+        std::vector<Curve> scaled{logo[0]};
+        for (glm::dvec3& p : scaled[0].points) p *= ratio * options.maxExtentRatio * surfaceSize / logoSize;
+        INFO("ratio " << ratio);
+        if (ratio < 1) {
+            const MapResult r = wave().map(scaled, at(4, 4), options);
+            CHECK(r.parts.size() == 1);
+        } else {
+            try {
+                wave().map(scaled, at(4, 4), options);
+                FAIL("an oversized part was mapped");
+            } catch (const GeometryError& e) {
+                CHECK(std::string(e.what()).find("curve part 1 is") != std::string::npos);
+                CHECK(std::string(e.what()).find("times the surface") != std::string::npos);
+            }
+        }
+    }
+}
+
+TEST_CASE("refinement stops at the projection budget and says so", "[geom][curvemap][limits]") {
+    const std::vector<Curve> logo = loadCurves("acslogo.crv");
+    MapOptions options{1e-9};
+    options.maxProjections = 500;
+    const MapResult r = wave().map(logo, at(4, 4, 2), options);
+    for (std::size_t i = 0; i < r.parts.size(); ++i) {
+        const MappedPart& part = r.parts[i];
+        // Beyond the budget only the starting samples (at most 4 per knot span and the end).
+        const std::size_t spans = logo[i].points.size() - std::size_t(logo[i].degree);
+        CHECK(part.projections <= options.maxProjections + 4 * spans + 1);
+        REQUIRE(!part.issues.empty());
+        CHECK(part.issues.front().find("budget of 500 projection lines") != std::string::npos);
+    }
+    options.maxProjections = 8;
+    CHECK_THROWS_AS(wave().map(logo, at(4, 4, 2), options), GeometryError);
+}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <istream>
 #include <optional>
@@ -13,8 +14,9 @@
 namespace acsynt {
 namespace {
 
-constexpr std::size_t maxLineLength = 4096;
-constexpr std::size_t maxComponents = 64;
+constexpr std::size_t maxLineLength = kModelFileMaxLineLength;
+constexpr std::uintmax_t maxFileBytes = kModelFileMaxBytes;
+constexpr std::size_t maxComponents = kModelMaxComponents;
 constexpr int maxSections = 200;
 constexpr int maxPoints = 201;
 
@@ -52,6 +54,7 @@ public:
             fail("format version " + std::to_string(d.version) + " is not supported (this reads version " +
                  std::to_string(aircraftDescriptionVersion) + ")");
         std::set<std::string> names;
+        std::size_t patches = 0;
         while (next()) {
             const std::string_view key = tokens_[0];
             if (key == "model") {
@@ -63,6 +66,10 @@ public:
                 if (d.components.size() == maxComponents)
                     fail("more than " + std::to_string(maxComponents) + " components");
                 ComponentDescription c = component();
+                patches += loftedPatchCount(c) * (c.mirrorName.empty() ? 1 : 2);
+                if (patches > kModelMaxPatches)
+                    fail("the components so far loft to " + std::to_string(patches) +
+                         " patches; the limit is " + std::to_string(kModelMaxPatches) + " per model");
                 for (const std::string* n : {&c.name, &c.mirrorName}) {
                     if (n->empty()) continue;
                     if (!names.insert(*n).second)
@@ -91,6 +98,12 @@ private:
             ++line_;
             if (text.size() > maxLineLength)
                 fail("line longer than " + std::to_string(maxLineLength) + " characters");
+            for (std::size_t k = 0; k < text.size(); ++k)
+                if (static_cast<unsigned char>(text[k]) < 0x20 && text[k] != '\t' && text[k] != '\r') {
+                    char code[16];
+                    std::snprintf(code, sizeof code, "0x%02x", static_cast<unsigned>(text[k]));
+                    fail(std::string("control character ") + code + " at column " + std::to_string(k + 1));
+                }
             // The tokens view text_, which keeps the line until the next one is read.
             text_ = std::move(text);
             tokens_ = tokenize(text_);
@@ -406,6 +419,23 @@ const char* componentKindKeyword(ComponentKind kind) {
     return "fuselage";
 }
 
+std::size_t loftedPatchCount(const ComponentDescription& c) {
+    // A cubic interpolating n data points in an open direction has n - 3 knot spans; a periodic
+    // one (closed sections round w) has one span per data point.
+    std::size_t sections = 0;
+    if (const auto* f = std::get_if<FuselageShape>(&c.shape))
+        sections = f->stations.size();
+    else if (const auto* w = std::get_if<LiftingSurfaceShape>(&c.shape))
+        sections = static_cast<std::size_t>(std::max(w->sections, 0));
+    else
+        sections = std::get<NacelleShape>(c.shape).profile.size();
+    const bool closed = c.kind == ComponentKind::Fuselage || c.kind == ComponentKind::Nacelle;
+    const std::size_t points = static_cast<std::size_t>(std::max(c.points, 0));
+    const std::size_t spansU = sections > 3 ? sections - 3 : 0;
+    const std::size_t spansW = closed ? points : (points > 3 ? points - 3 : 0);
+    return spansU * spansW;
+}
+
 bool isValidName(std::string_view name) {
     if (name.empty() || name.size() > 20) return false;
     return std::all_of(name.begin(), name.end(), [](char c) {
@@ -419,8 +449,15 @@ AircraftDescription parseAircraftDescription(std::istream& in, const std::string
 }
 
 AircraftDescription readAircraftDescription(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw ModelFileError(path.string(), 0, "is a directory, not an aircraft description");
     std::ifstream in(path);
     if (!in) throw ModelFileError(path.string(), 0, "cannot open the file");
+    if (const auto size = std::filesystem::file_size(path, ec); !ec && size > maxFileBytes)
+        throw ModelFileError(
+            path.string(), 0,
+            "the file is " + std::to_string(size) + " bytes; the limit is " + std::to_string(maxFileBytes));
     return parseAircraftDescription(in, path.string());
 }
 

@@ -39,8 +39,16 @@ private:
     std::size_t line_;
 };
 
-/// Reads a `.crv` file; throws CurveFileError (file, line, reason) for a missing file, a wrong
-/// heading, a wrong count, a bad number or continuity, or a part that does not close.
+/// Limits of a `.crv` file, each refused with CurveFileError at the line that breaks it (the
+/// part's interpolation is a dense solve, so points per part bound its time and memory).
+inline constexpr std::size_t kCurveFileMaxPointsPerPart = 1000;
+inline constexpr std::size_t kCurveFileMaxParts = 256;
+inline constexpr std::size_t kCurveFileMaxPoints = 10000;  ///< all parts together
+inline constexpr std::size_t kCurveFileMaxLineLength = 1024;
+
+/// Reads a `.crv` file; throws CurveFileError (file, line, reason) for a missing file or a
+/// directory, a wrong heading, a wrong count, a bad number or continuity, a part that does not
+/// close, a control character, or a limit above broken.
 CurveModel readCurveFile(const std::filesystem::path& path);
 /// Parses `.crv` text; `source` names it in error messages.
 CurveModel parseCurveFile(std::istream& in, const std::string& source);

@@ -119,6 +119,15 @@ struct Boundary {
 };
 
 /// Crossing-number test of a closed polygon (first point repeated or not) around p.
+double boxDiagonal(const std::vector<glm::dvec3>& points) {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return points.empty() ? 0.0 : glm::length(hi - lo);
+}
+
 bool insidePolygon(const std::vector<glm::dvec2>& poly, const glm::dvec2& p) {
     bool inside = false;
     for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
@@ -166,6 +175,7 @@ private:
     const MapOptions& options_;
     MappedPart& out_;
     Boundary boundary_;
+    bool budgetSpent_ = false;  ///< refinement stopped at options_.maxProjections
 };
 
 Sample PartMapper::project(double s) {
@@ -217,6 +227,11 @@ bool PartMapper::jumps(const Sample& a, const Sample& b) const {
 void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples) {
     // Two inner samples at the thirds: one midpoint alone misses an S-bend (an inflection
     // between the ends puts the middle back on the chord).
+    if (out_.projections + 2 > options_.maxProjections) {
+        budgetSpent_ = true;
+        samples.push_back(b);
+        return;
+    }
     const Sample m1 = project(a.s + (b.s - a.s) / 3.0);
     const Sample m2 = project(a.s + 2.0 * (b.s - a.s) / 3.0);
     if (depth < options_.maxDepth && (needsSplit(a, m1, b, 1.0 / 3.0) || needsSplit(a, m2, b, 2.0 / 3.0))) {
@@ -378,6 +393,11 @@ void PartMapper::run() {
         const Sample a = samples.back();
         refine(a, project(params[i]), 0, samples);
     }
+    if (budgetSpent_)
+        out_.issues.push_back("refinement stopped at the budget of " +
+                              std::to_string(options_.maxProjections) +
+                              " projection lines; the mapped curve may be farther than the tolerance from "
+                              "the true one");
     // The closing sample repeats the first line.
     samples.back() = samples.front();
     samples.back().s = s1;
@@ -544,6 +564,19 @@ MapResult CurveMapper::map(const std::vector<Curve>& curves, const Placement& pl
                            const MapOptions& options) const {
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         throw GeometryError("CurveMapper::map: the tolerance must be a positive number");
+    if (options.maxProjections < 16 || !(options.maxExtentRatio > 0.0))
+        throw GeometryError(
+            "CurveMapper::map: maxProjections must be at least 16 and maxExtentRatio positive");
+    const double surfaceExtent = boxDiagonal(surface_.points);
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+        validate(curves[i], "CurveMapper::map");
+        const double extent = boxDiagonal(curves[i].points);
+        if (!(extent <= options.maxExtentRatio * surfaceExtent))
+            throw GeometryError("CurveMapper::map: curve part " + std::to_string(i + 1) + " is " +
+                                std::to_string(extent) + " across, more than " +
+                                std::to_string(options.maxExtentRatio) + " times the surface's " +
+                                std::to_string(surfaceExtent) + "; not mapped");
+    }
     MapResult result;
     result.frame = placementFrame(surface_, placement);
     result.parts.resize(curves.size());

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -80,6 +81,18 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
     while (std::getline(in, raw)) {
         ++lineNumber;
         if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+        if (raw.size() > kMaxScriptLineLength)
+            throw ScriptError(name_ + ":" + std::to_string(lineNumber) + ": the line is " +
+                              std::to_string(raw.size()) + " bytes long; the limit is " +
+                              std::to_string(kMaxScriptLineLength));
+        for (std::size_t k = 0; k < raw.size(); ++k)
+            if (static_cast<unsigned char>(raw[k]) < 0x20 && raw[k] != '\t') {
+                char code[16];
+                std::snprintf(code, sizeof code, "0x%02x",
+                              static_cast<unsigned>(static_cast<unsigned char>(raw[k])));
+                throw ScriptError(name_ + ":" + std::to_string(lineNumber) + ": control character " + code +
+                                  " at column " + std::to_string(k + 1));
+            }
         const std::size_t hash = raw.find('#');
         const std::string line = raw.substr(0, hash);
         const auto words = splitWords(line);
@@ -152,10 +165,18 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
 
 ScriptInputSource ScriptInputSource::fromFile(const std::filesystem::path& path,
                                               std::set<std::string> directives) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw ScriptError(path.string() + ": is a directory, not a session script");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ScriptError(path.string() + ": cannot open the session script");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > kMaxScriptBytes)
+        throw ScriptError(path.string() + ": the script is " + std::to_string(size) +
+                          " bytes; the limit is " + std::to_string(kMaxScriptBytes));
     std::ostringstream text;
     text << in.rdbuf();
+    if (!in && !in.eof()) throw ScriptError(path.string() + ": cannot read the session script");
     return ScriptInputSource(text.str(), path.string(), std::move(directives));
 }
 

@@ -2,6 +2,7 @@
 
 #include "acsynt/AircraftDescription.h"
 
+#include <cstddef>
 #include <filesystem>
 #include <iosfwd>
 #include <stdexcept>
@@ -30,6 +31,17 @@ inline constexpr int aircraftDescriptionVersion = 1;
 
 /// A model or component name: 1 to 20 characters of letters, digits, '_', '-' and '.'.
 bool isValidName(std::string_view name);
+
+/// Limits of a description file (each a ModelFileError at the line that breaks it). The patch
+/// budget bounds what a model costs the session: every patch is a structure, a pick target and
+/// a tessellation, about 20 KB and 0.15 ms each.
+inline constexpr std::size_t kModelFileMaxBytes = 1u << 20;
+inline constexpr std::size_t kModelFileMaxLineLength = 4096;
+inline constexpr std::size_t kModelMaxComponents = 64;  ///< components in the file (mirrors not counted)
+inline constexpr std::size_t kModelMaxPatches = 8192;   ///< all components, mirror images included
+
+/// The patches the loft of `component` has (its mirror image has as many again).
+std::size_t loftedPatchCount(const ComponentDescription& component);
 
 /// Parses a description (format in apps/acsynt/README.md). Any fault throws ModelFileError
 /// naming fileName, the line and the reason; nothing is returned half-read.

@@ -1,6 +1,7 @@
 #include "acsynt/session/ModelPicture.h"
 
 #include "geom/Evaluate.h"
+#include "phigs/core/Error.h"
 #include "phigs/traverse/DrawList.h"
 
 #include <algorithm>
@@ -10,6 +11,24 @@ namespace acsynt {
 using namespace phigs;
 
 void rewriteStructure(StructureStore& store, int id, const std::vector<Element>& elements) {
+    const char* function = "REWRITE STRUCTURE";
+    if (store.isStructureOpen())
+        throw Error(errors::NotStructureClosed, function,
+                    "structure " + std::to_string(store.openStructureId()) + " is open");
+    // Everything the store would refuse is refused before the structure is emptied, so a bad
+    // element leaves the structure as it was.
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        const std::string where = "structure " + std::to_string(id) + " element " + std::to_string(i + 1);
+        if (std::string reason = validateElement(elements[i]); !reason.empty())
+            throw Error(
+                errors::InvalidElementData, function,
+                where + " (" + std::string(elementTypeName(elementType(elements[i]))) + "): " + reason);
+        if (const auto* x = std::get_if<ExecuteStructureElement>(&elements[i]))
+            if (x->structureId == id ||
+                (store.exists(x->structureId) && store.wouldCycle(id, x->structureId)))
+                throw Error(errors::StructureCycle, function,
+                            where + " executes " + std::to_string(x->structureId));
+    }
     store.emptyStructure(id);
     store.openStructure(id);
     for (const Element& e : elements) store.insert(e);

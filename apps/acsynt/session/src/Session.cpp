@@ -136,6 +136,11 @@ void Session::say(const std::string& s) {
 }
 
 void Session::fail(const std::string& s) {
+    // One count per input action (a script line), however many errors it causes: actions are
+    // told apart by how many the devices had consumed when the error came.
+    const std::size_t action = input_ ? input_->history().size() : 0;
+    if (failedLines_ == 0 || action != lastFailedAction_) ++failedLines_;
+    lastFailedAction_ = action;
     message_ = s;
     log_.push_back("ERROR: " + s);
     drawScreen();
@@ -164,6 +169,7 @@ bool Session::step(std::chrono::milliseconds timeout) {
         fail(e.what());
     }
     if (!finished_ && source_.exhausted() && queue_.size() == 0) finished_ = true;
+    if (settings_.stopAtFirstError && failedLines_ > 0) finished_ = true;
     if (present_) present_(picture());
     return !finished_;
 }
@@ -204,9 +210,20 @@ void Session::directive(const action::Directive& d, const InputAction& a) {
         fail(where + ": '" + a.text + "': expected " + d.name + " NAME");
         return;
     }
-    std::filesystem::create_directories(settings_.outputDirectory);
+    try {
+        writeDirective(d);
+    } catch (const std::runtime_error& e) {
+        fail(where + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        // A directive's file is refused (outside the output directory, unwritable): reported
+        // like any bad line, and the session goes on.
+        fail(where + ": " + e.what());
+    }
+}
+
+void Session::writeDirective(const action::Directive& d) {
     if (d.name == "snapshot") {
-        const auto file = settings_.outputDirectory / (d.arguments[0] + ".png");
+        const auto file = outputPath(d.arguments[0] + ".png");
         if (!snapshot_) {
             fail("NO PICTURE OUTPUT FOR SNAPSHOT " + d.arguments[0]);
             return;
@@ -216,8 +233,9 @@ void Session::directive(const action::Directive& d, const InputAction& a) {
         pictures_.push_back(file);
         log_.push_back("snapshot " + file.string());
     } else if (d.name == "summary") {
-        const auto file = settings_.outputDirectory / (d.arguments[0] + ".txt");
-        std::ofstream(file) << summary();
+        const auto file = outputPath(d.arguments[0] + ".txt");
+        std::ofstream out(file);
+        if (!(out << summary()) || !out.flush()) throw std::runtime_error("CANNOT WRITE " + file.string());
         log_.push_back("summary " + file.string());
     }
 }

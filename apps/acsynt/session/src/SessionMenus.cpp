@@ -13,6 +13,7 @@
 #include "phigs/view/ViewMatrices.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -410,10 +411,18 @@ std::filesystem::path Session::findInput(const std::string& name) const {
 }
 
 std::filesystem::path Session::outputPath(const std::string& name) const {
+    // Files a session writes stay inside the output directory: a script cannot reach further.
     const std::filesystem::path path(name);
-    if (path.is_absolute()) return path;
-    std::filesystem::create_directories(settings_.outputDirectory);
-    return settings_.outputDirectory / path;
+    const bool climbs = std::any_of(path.begin(), path.end(), [](const auto& part) { return part == ".."; });
+    if (name.empty() || path.is_absolute() || climbs || !path.has_filename())
+        throw std::invalid_argument(
+            "OUTPUT FILE '" + name +
+            "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
+    const std::filesystem::path full = settings_.outputDirectory / path;
+    std::filesystem::create_directories(full.parent_path());
+    if (std::filesystem::is_directory(full))
+        throw std::invalid_argument("OUTPUT FILE " + full.string() + " IS A DIRECTORY");
+    return full;
 }
 
 void Session::readModel(const std::string& name) {
@@ -433,19 +442,29 @@ void Session::readModel(const std::string& name) {
 }
 
 void Session::readCurve(const std::string& input) {
+    // FILE [SCALE]: the scale, when given, must be a whole positive number and the last word.
     std::istringstream in(input);
-    std::string name;
+    std::string name, scaleText, extra;
+    in >> name >> scaleText >> extra;
     double scale = 1.0;
-    in >> name;
-    if (!(in >> scale)) scale = 1.0;
-    if (name.empty() || !(scale > 0) || !std::isfinite(scale)) {
-        fail("BAD INPUT IN CURVE MAP: '" + input + "'");
+    if (!scaleText.empty()) {
+        const auto [end, ec] = std::from_chars(scaleText.data(), scaleText.data() + scaleText.size(), scale);
+        if (ec != std::errc() || end != scaleText.data() + scaleText.size()) scale = -1.0;
+    }
+    if (name.empty() || !extra.empty() || !(scale > 0) || !std::isfinite(scale)) {
+        fail("BAD INPUT IN CURVE MAP: '" + input + "': expected FILE [SCALE], SCALE a positive number");
         return;
     }
     geom::CurveModel model = geom::readCurveFile(findInput(name));
     std::vector<geom::Curve> curves = geom::interpolateModel(model);
     for (auto& c : curves)
-        for (auto& p : c.points) p *= scale;
+        for (auto& p : c.points) {
+            p *= scale;
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                fail("CURVE SCALE " + scaleText + " IS TOO LARGE: THE CURVE IS NOT FINITE");
+                return;
+            }
+        }
     curveModel_ = std::move(model);
     curves_ = std::move(curves);
     curveFile_ = std::filesystem::path(name).filename().string();

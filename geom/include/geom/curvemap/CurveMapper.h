@@ -22,6 +22,13 @@ struct MapOptions {
     /// from the mapped curve. Boundary walks keep the same tolerance.
     double tolerance = 1e-3;
     int maxDepth = 20;  ///< subdivision levels (each into thirds) per initial interval
+    /// Projection lines per part; refinement stops there (and says so in the part's issues),
+    /// which bounds the time and memory of one part whatever the tolerance and curve size.
+    std::size_t maxProjections = 200000;
+    /// A part whose plane extent (the diagonal of its control points' box) exceeds this many
+    /// times the surface's (its control net's box diagonal) is refused with GeometryError:
+    /// nearly all of it would miss the surface, at a cost that grows with its size.
+    double maxExtentRatio = 100.0;
 };
 
 /// A closed mapped loop: the same vertices in (u, w) and in model space; the first vertex is
@@ -70,6 +77,8 @@ public:
     explicit CurveMapper(Surface surface, std::optional<bool> closedU = {}, std::optional<bool> closedW = {});
 
     /// Maps each curve (in its own plane coordinates, z = 0 the curve plane) into a part.
+    /// Throws GeometryError for a bad tolerance or budget, a curve with non-finite control points,
+    /// or one larger than options.maxExtentRatio times the surface, before any part is mapped.
     MapResult map(const std::vector<Curve>& curves, const Placement& placement,
                   const MapOptions& options = {}) const;
 

@@ -24,9 +24,14 @@ public:
 ///
 /// X and Y are device coordinates (pixels from the top left). Directives are the words the
 /// application registers (e.g. "snapshot"); any other word is an error. The whole script is
-/// parsed up front, so a bad line is reported before anything runs.
+/// parsed up front, so a bad line is reported before anything runs. Limits: kMaxScriptBytes per
+/// file, kMaxScriptLineLength per line, and no control characters but tab (and a CR before the
+/// newline).
 class ScriptInputSource : public InputSource {
 public:
+    static constexpr std::size_t kMaxScriptBytes = 16u << 20;
+    static constexpr std::size_t kMaxScriptLineLength = 4096;
+
     /// Parses `text`; `name` is used in messages (usually the file name).
     ScriptInputSource(const std::string& text, std::string name, std::set<std::string> directives = {});
     /// Reads and parses a script file; throws ScriptError naming the file when it cannot be read.

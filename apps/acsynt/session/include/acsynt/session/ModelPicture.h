@@ -78,7 +78,9 @@ private:
     std::vector<int> built_;  ///< structure ids written by build()
 };
 
-/// Replaces the contents of structure `id` with `elements` (creating it when missing).
+/// Replaces the contents of structure `id` with `elements` (creating it when missing), all or
+/// nothing: an element the store would refuse (phigs::Error -202 or -201), or a structure left
+/// open (6), throws before the structure is touched.
 void rewriteStructure(phigs::StructureStore& store, int id, const std::vector<phigs::Element>& elements);
 
 }  // namespace acsynt

@@ -33,6 +33,9 @@ struct SessionSettings {
     /// The workstation type (its display surface, 1024 x 768 device units, is shown on the
     /// width x height pixels, which must have its 4:3 shape).
     phigs::WorkstationType workstationType = phigs::WorkstationType::OffscreenImage;
+    /// End the session after the first input line that fails (a script run's default in the
+    /// program; its --keep-going carries on).
+    bool stopAtFirstError = false;
 };
 
 /// The marker of DEFINE POINT: the reference point on the picked patch.
@@ -91,6 +94,8 @@ public:
     /// Called after each handled event (a window presents the picture).
     void setPresenter(std::function<void(const phigs::DrawList&)> present) { present_ = std::move(present); }
     bool finished() const { return finished_; }
+    /// Input lines (script lines, window actions) that failed: each gave one or more `ERROR:`s.
+    std::size_t failedLines() const { return failedLines_; }
 
     /// The current picture (regenerated when the structures changed).
     const phigs::DrawList& picture();
@@ -151,6 +156,7 @@ private:
     void fail(const std::string& text);
     void handle(const phigs::EventReport& report);
     void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
+    void writeDirective(const phigs::action::Directive& d);
     void choose(std::string item);
     void padButton(int button);
     void pick(const phigs::PickMeasure& measure);
@@ -182,6 +188,8 @@ private:
     void moveMarker(double u, double w);
     bool requireModel();
     std::filesystem::path findInput(const std::string& name) const;
+    /// `name` inside the output directory; std::invalid_argument for an absolute name, one with
+    /// "..", or a directory.
     std::filesystem::path outputPath(const std::string& name) const;
 
     SessionSettings settings_;
@@ -211,6 +219,8 @@ private:
     Phase phase_ = Phase::None;
     Awaiting awaiting_ = Awaiting::Nothing;
     bool finished_ = false;
+    std::size_t failedLines_ = 0;
+    std::size_t lastFailedAction_ = 0;
 
     // CURVE MAP
     std::optional<geom::CurveModel> curveModel_;

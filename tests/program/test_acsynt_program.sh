@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# The acsynt program's exit status, its last line and its refusals of paths and options, run as
+# a user runs it: test_acsynt_program.sh ACSYNT_BINARY WORK_DIR. Each check prints what failed.
+set -u
+acsynt=$(realpath "$1")
+work=$2
+rm -rf "$work" && mkdir -p "$work"
+cd "$work" || exit 1
+failures=0
+fail() { echo "FAILED: $*"; failures=$((failures + 1)); }
+
+# run NAME EXPECTED_STATUS ARGS...: runs the program, keeping stdout and stderr in NAME.out/.err.
+run() {
+  local name=$1 expected=$2
+  shift 2
+  "$acsynt" "$@" >"$name.out" 2>"$name.err"
+  local status=$?
+  [ "$status" -eq "$expected" ] || fail "$name: exit status $status, expected $expected ($(cat "$name.err"))"
+}
+# expect_in FILE TEXT: FILE contains TEXT.
+expect_in() { grep -qF -- "$2" "$1" || fail "$1 does not say '$2': $(tail -3 "$1")"; }
+last_line_is() { [ "$(tail -n 1 "$1")" = "$2" ] || fail "$1 ends with '$(tail -n 1 "$1")', not '$2'"; }
+
+printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice RETURN\nsummary good\n' >good.session
+run good 0 --script good.session --output out_good --size 320x240
+[ -f out_good/good.txt ] || fail "good: the summary directive wrote nothing"
+grep -q "errors\? in" good.out && fail "good: a clean run reports errors"
+
+# A failing line stops the run (exit 3, the count last); --keep-going carries on and counts all.
+printf 'choice FILE\nchoice NO_SUCH_ITEM\nstring missing.acm\nchoice RETURN\nsummary after\n' >bad.session
+run stop 3 --script bad.session --output out_stop --size 320x240
+last_line_is stop.out "1 error in bad.session"
+[ -f out_stop/after.txt ] && fail "stop: lines after the first failure ran"
+expect_in out_stop/acsynt.log "ERROR:"
+run keepgoing 3 --script bad.session --keep-going --output out_keep --size 320x240
+last_line_is keepgoing.out "2 errors in bad.session"
+[ -f out_keep/after.txt ] || fail "keep-going: the run stopped early"
+
+# Files a script names stay inside --output.
+printf 'summary ../escaped\nsummary /tmp/acsynt_escaped_%s\nsummary inside\n' "$$" >escape.session
+run escape 3 --script escape.session --keep-going --output out_escape --size 320x240
+[ -e escaped.txt ] && fail "escape: a summary was written outside --output"
+[ -e "/tmp/acsynt_escaped_$$.txt" ] && fail "escape: an absolute summary path was written"
+[ -f out_escape/inside.txt ] || fail "escape: the plain summary was not written"
+last_line_is escape.out "2 errors in escape.session"
+
+# A directory where a model is expected is named as such.
+mkdir -p somedir
+printf 'choice FILE\nchoice READ_MODEL\nstring somedir\n' >dirmodel.session
+run dirmodel 3 --script dirmodel.session --output out_dir --size 320x240
+expect_in out_dir/acsynt.log "is a directory"
+
+# Paths and options refused before anything runs (status 2, the reason on stderr).
+run record_dir 2 --script good.session --record somedir --output out_r1 --size 320x240
+expect_in record_dir.err "--record somedir is a directory"
+run record_missing 2 --script good.session --record no/such/folder/x.session --output out_r2
+expect_in record_missing.err "folder that does not exist"
+run script_dir 2 --script somedir --output out_s
+expect_in script_dir.err "--script somedir is a directory"
+run script_missing 2 --script nothing.session --output out_m
+expect_in script_missing.err "cannot be read"
+touch plainfile
+run output_file 2 --script good.session --output plainfile
+expect_in output_file.err "is not a directory"
+run size_junk 2 --script good.session --size 1024x768junk
+expect_in size_junk.err "--size wants WxH"
+run size_sign 2 --script good.session --size +320x240
+run both_modes 2 --script good.session --window
+
+# A script with a NUL byte is refused whole, naming the byte (the message is not cut at it).
+printf 'choice FILE\nstring ab\0cd\n' >nul.session
+run nul 1 --script nul.session --output out_nul
+expect_in nul.err "nul.session:2: control character 0x00 at column 10"
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures checks failed"
+  exit 1
+fi
+echo "all program checks passed"

@@ -1,0 +1,118 @@
+// Bad input that once broke a session: a refused element half-rewrote a structure and left it
+// open; huge curve scales ran curve mapping out of memory; files named by a script escaped the
+// output directory. Each now fails the one line, leaves everything as it was, and is counted.
+#include "SessionTestSupport.h"
+
+#include "acsynt/session/ModelPicture.h"
+#include "geom/Evaluate.h"
+#include "phigs/core/Error.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+using session_test::Driver;
+
+namespace {
+
+bool sameElements(const phigs::StructureStore& store, int id, const std::vector<phigs::Element>& expected) {
+    if (store.elementCount(id) != int(expected.size())) return false;
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        if (!(store.elementAt(id, int(i) + 1) == expected[i])) return false;
+    return true;
+}
+
+/// CURVE MAP with `curve` loaded, DEFINE POINT on the right wing's middle, DONE.
+void placeCurve(Driver& d, const std::string& curve) {
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice CURVE_MAP",
+           "choice LOAD_CURVE", "string " + curve, "choice DEFINE_POINT"});
+    const auto& components = d.session.models().current().components;
+    std::size_t wing = 0;
+    while (components[wing].name != "right_wing") ++wing;
+    const glm::dvec3 p = geom::evaluate(components[wing].surface, 0.5, 0.38);
+    d.pickAt(p, 1);
+    d.pickAt(p, 1);
+    d.run({"choice ACCEPT", "choice DONE device 2"});
+    REQUIRE(d.session.reference());
+}
+
+}  // namespace
+
+TEST_CASE("a structure rewrite is all or nothing: a refused element leaves it as it was and closed") {
+    phigs::StructureStore store;
+    const std::vector<phigs::Element> before{phigs::polyline3({{0, 0, 0}, {1, 0, 0}}),
+                                             phigs::executeStructure(8)};
+    acsynt::rewriteStructure(store, 7, before);
+    REQUIRE(sameElements(store, 7, before));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<std::vector<phigs::Element>> refused{
+        {phigs::polyline3({{0, 0, 0}, {2, 0, 0}}), phigs::polyline3({{0, 0, 0}, {nan, 0, 0}})},
+        {phigs::polyline3({{0, 0, 0}, {1e308, 0, 0}}), phigs::polyline3({{0, 0, 0}, {HUGE_VAL, 0, 0}})},
+        {phigs::executeStructure(7)},  // itself
+    };
+    for (const auto& elements : refused) {
+        CHECK_THROWS_AS(acsynt::rewriteStructure(store, 7, elements), phigs::Error);
+        CHECK(sameElements(store, 7, before));
+        CHECK_FALSE(store.isStructureOpen());
+    }
+    // 8 executing 7 would close a cycle through 7's reference to 8.
+    CHECK_THROWS_AS(acsynt::rewriteStructure(store, 8, {phigs::executeStructure(7)}), phigs::Error);
+    CHECK(store.elementCount(8) == 0);
+    // A structure left open by someone else is not touched either.
+    store.openStructure(9);
+    CHECK_THROWS_AS(acsynt::rewriteStructure(store, 7, {}), phigs::Error);
+    CHECK(sameElements(store, 7, before));
+}
+
+TEST_CASE("curve scales that overflow or dwarf the surface fail their line quickly; the session goes on") {
+    Driver d("bounds_scale");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice CURVE_MAP",
+           "choice LOAD_CURVE", "string acslogo.crv 1e308"});
+    CHECK(d.session.message().find("IS TOO LARGE") != std::string::npos);
+    CHECK(d.session.failedLines() == 1);
+    // Words after the scale, or a scale that is not a number, are refused rather than ignored.
+    d.run({"choice LOAD_CURVE", "string acslogo.crv notanumber"});
+    CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
+    d.run({"choice LOAD_CURVE", "string acslogo.crv 0.45 abc"});
+    CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
+    CHECK(d.session.failedLines() == 3);
+
+    for (const char* scale : {"1e150", "1e30"}) {
+        Driver big(std::string("bounds_scale_") + scale);
+        placeCurve(big, std::string("acslogo.crv ") + scale);
+        // DONE drew the placed curve (finite, if huge) into the overlay structure, closed.
+        CHECK_FALSE(big.session.phigs().store().isStructureOpen());
+        const std::size_t failedBefore = big.session.failedLines();
+        for (const char* item : {"choice MAP_PREVIEW", "choice MAP_CURVE"}) {
+            const auto start = std::chrono::steady_clock::now();
+            big.run({item});
+            CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 5.0);
+            CHECK(big.session.message().find("times the surface") != std::string::npos);
+        }
+        CHECK(big.session.failedLines() == failedBefore + 2);
+        CHECK(big.session.mappings().empty());
+        CHECK_FALSE(big.session.phigs().store().isStructureOpen());
+        // The session still answers: a menu change works and shows no error.
+        big.run({"choice RETURN"});
+        CHECK(big.session.menuTitle() == "MAIN");
+        big.picture();
+    }
+}
+
+TEST_CASE("files a script names stay inside the output directory") {
+    Driver d("bounds_paths");
+    const auto outside = session_test::outputDirectory("bounds_paths").parent_path() / "escaped.txt";
+    std::filesystem::remove(outside);
+    d.run({"summary ../escaped", "summary /tmp/acsynt_escaped", "summary fine"});
+    CHECK_FALSE(std::filesystem::exists(outside));
+    CHECK(std::filesystem::exists(session_test::outputDirectory("bounds_paths") / "fine.txt"));
+    CHECK(d.session.failedLines() == 2);
+    d.run(
+        {"choice FILE", "choice READ_MODEL", "string transport.acm", "choice SAVE_MODEL", "string ../x.acm"});
+    CHECK(d.session.message().find("INSIDE THE OUTPUT DIRECTORY") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(outside.parent_path() / "x.acm"));
+    d.run({"choice SAVE_MODEL", "string saved/copy.acm"});
+    CHECK(std::filesystem::exists(session_test::outputDirectory("bounds_paths") / "saved" / "copy.acm"));
+    CHECK(d.session.failedLines() == 3);
+}
