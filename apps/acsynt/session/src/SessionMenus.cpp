@@ -491,6 +491,10 @@ void Session::archive(const std::string& name, bool retrieve) {
         fail("ARCHIVE FILE " + path.string() + " NOT FOUND");
         return;
     }
+    if (retrieve && std::filesystem::is_directory(path)) {
+        fail("ARCHIVE FILE " + path.string() + " IS A DIRECTORY");
+        return;
+    }
     phigs_.openArchiveFile(1, path);
     try {
         if (retrieve) {
