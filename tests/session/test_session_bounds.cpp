@@ -115,4 +115,11 @@ TEST_CASE("files a script names stay inside the output directory") {
     d.run({"choice SAVE_MODEL", "string saved/copy.acm"});
     CHECK(std::filesystem::exists(session_test::outputDirectory("bounds_paths") / "saved" / "copy.acm"));
     CHECK(d.session.failedLines() == 3);
+    // A directory named as an archive or a curve file is called one.
+    const std::string folder = session_test::outputDirectory("bounds_paths").string();
+    d.run({"choice RETRIEVE", "string " + folder});
+    CHECK(d.session.message().find("IS A DIRECTORY") != std::string::npos);
+    d.run({"choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE", "string " + folder});
+    CHECK(d.session.message().find("is a directory") != std::string::npos);
+    CHECK(d.session.failedLines() == 5);
 }
