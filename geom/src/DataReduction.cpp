@@ -890,13 +890,124 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     return out;
 }
 
+// The Euclidean bound of a rational removal. The reduced homogeneous spline (X' = w' P', w') is
+// refined onto the original knots by Oslo rows; then C - C' = (dX - C dw) / w' at every t, where
+// dX, dw are the refined differences. C(t) lies in the hull of the original points whose
+// B-splines reach t, so with e_j = max |dX_j - P_i dw_j| over those points (i within p of j),
+// |C - C'| <= max e_j / min w'_k over the coefficients j, k that reach t: a bound, not a sample.
+class RationalBound {
+public:
+    explicit RationalBound(const Curve& original) : original_(original) {}
+
+    /// True when the candidate keeps every weight positive and, if tolerance is finite, the
+    /// bound within it wherever the spline changed.
+    bool holds(const LeastSquaresRemoval& fit, double tolerance) const {
+        const std::size_t p = static_cast<std::size_t>(original_.degree), n = original_.points.size();
+        for (std::size_t i = fit.firstChanged; i <= fit.lastChanged; ++i)
+            if (!(fit.points[2 * i + 1].x > 0.0)) return false;
+        // Original coefficients that changed, p more each side whose neighbours changed, p more
+        // for those neighbours' weights.
+        std::size_t lo = n, hi = 0;
+        for (std::size_t j = 0; j < n; ++j)
+            if (original_.knots[j + p + 1] > fit.changedFrom && original_.knots[j] < fit.changedTo)
+                lo = std::min(lo, j), hi = std::max(hi, j);
+        if (lo > hi) return true;
+        const std::size_t first = lo > 2 * p ? lo - 2 * p : 0, last = std::min(n - 1, hi + 2 * p);
+        const std::size_t count = fit.points.size() / 2;
+        std::vector<double> row(p + 1), refinedW(last - first + 1);
+        std::vector<glm::dvec3> dX(last - first + 1);
+        std::vector<double> dW(last - first + 1);
+        for (std::size_t j = first; j <= last; ++j) {
+            const std::size_t c0 =
+                detail::osloRow(original_.degree, fit.knots, count, original_.knots, j, row.data()) - p;
+            glm::dvec3 x(0.0);
+            double w = 0.0;
+            for (std::size_t a = 0; a <= p; ++a) {
+                x += row[a] * fit.points[2 * (c0 + a)];
+                w += row[a] * fit.points[2 * (c0 + a) + 1].x;
+            }
+            if (!(w > 0.0)) return false;
+            refinedW[j - first] = w;
+            dX[j - first] = original_.weights[j] * original_.points[j] - x;
+            dW[j - first] = original_.weights[j] - w;
+        }
+        if (!std::isfinite(tolerance)) return true;
+        const std::size_t checkFirst = lo > p ? lo - p : 0, checkLast = std::min(n - 1, hi + p);
+        for (std::size_t j = checkFirst; j <= checkLast; ++j) {
+            const std::size_t from = j > p ? j - p : 0, to = std::min(n - 1, j + p);
+            double e = 0.0, wMin = std::numeric_limits<double>::infinity();
+            for (std::size_t i = from; i <= to; ++i) {
+                e = std::max(e, glm::length(dX[j - first] - original_.points[i] * dW[j - first]));
+                if (i >= first && i <= last) wMin = std::min(wMin, refinedW[i - first]);
+            }
+            if (e > tolerance * wMin) return false;
+        }
+        return true;
+    }
+
+private:
+    const Curve& original_;
+};
+
+// Rational curves: the removal loop on the homogeneous coefficient sequences X_i = w_i P_i and
+// (w_i, 0, 0), sharing the knots, each removal kept only under RationalBound; measureDeviation
+// (point inversion, Euclidean) checks the result and steps back should it ever disagree.
+CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& options) {
+    // Centred on its control box and with its largest weight 1 (neither changes the curve), the
+    // homogeneous coefficients' removal weights are on the scale of the Euclidean error, which
+    // the ranking's weight cutoff compares with the tolerance.
+    const std::size_t n = curve.points.size();
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const glm::dvec3& q : curve.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double largest = *std::max_element(curve.weights.begin(), curve.weights.end());
+    Curve centred = curve;
+    std::vector<glm::dvec3> homogeneous(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        centred.points[i] -= centre;
+        centred.weights[i] /= largest;
+        homogeneous[2 * i] = centred.weights[i] * centred.points[i];
+        homogeneous[2 * i + 1] = glm::dvec3(centred.weights[i], 0.0, 0.0);
+    }
+    Spline s{curve.degree, curve.knots, std::move(homogeneous), 2};
+    const RationalBound bound(centred);
+    const bool measuring = std::isfinite(options.tolerance);
+    auto toCurve = [&centre](const Spline& h) {
+        const std::size_t count = h.points.size() / 2;
+        std::vector<glm::dvec3> points(count);
+        std::vector<double> weights(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            weights[i] = h.points[2 * i + 1].x;
+            points[i] = h.points[2 * i] / weights[i] + centre;
+        }
+        return Curve(h.degree, h.knots, std::move(points), std::move(weights));
+    };
+    CurveReduction out;
+    std::vector<Spline> history;
+    out.removed = reduceLoop(
+        s, options, out.fits,
+        [&](const LeastSquaresRemoval& fit) { return bound.holds(fit, options.tolerance); },
+        [](double, double) { return 0.0; }, &history);
+    out.curve = toCurve(s);
+    if (measuring || options.report)
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    while (measuring && out.deviation.maxError > options.tolerance) {
+        if (!history.empty()) history.pop_back();
+        ++out.steppedBack;
+        out.curve = history.empty() ? curve : toCurve(history.back());
+        out.removed = n - out.curve.points.size();
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        if (history.empty()) break;
+    }
+    return out;
+}
+
 }  // namespace
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
     checkOptions(options, "reduceCurve");
     validate(curve, "reduceCurve");
-    if (curve.rational())
-        throw GeometryError("reduceCurve: rational curves are not supported (polynomial only)");
+    if (curve.rational()) return reduceRationalCurve(curve, options);
     const bool measuring = std::isfinite(options.tolerance);
     const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
     const bool clamped =
