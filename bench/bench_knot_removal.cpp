@@ -5,13 +5,19 @@
 
 #include "geom/DataReduction.h"
 #include "geom/Deviation.h"
+#include "geom/Evaluate.h"
+#include "geom/GlobalInterpolation.h"
+#include "geom/KnotInsertion.h"
 #include "geom/ReferenceShapes.h"
 
 #include <sisl.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -73,6 +79,76 @@ geom::Curve sislReduce(const geom::Curve& c, double tol, int& status) {
     return result;
 }
 
+// ---- Generated classes of curves (every class the reduction must handle, not only the two
+// reference curves).
+
+struct CurveCase {
+    std::string name;
+    geom::Curve curve;
+    double tolerance;
+};
+
+std::vector<double> clampedUniformKnots(int degree, std::size_t count) {
+    std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
+    const std::size_t interior = count - static_cast<std::size_t>(degree) - 1;
+    for (std::size_t i = 1; i <= interior; ++i) knots.push_back(double(i) / double(interior + 1));
+    knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, 1.0);
+    return knots;
+}
+
+/// A random smooth curve of `count` poles on a clamped uniform knot vector (a wandering path).
+geom::Curve randomCurve(std::mt19937& rng, int degree, std::size_t count, double step) {
+    std::normal_distribution<double> n(0.0, step);
+    std::vector<glm::dvec3> points{glm::dvec3(0.0)};
+    glm::dvec3 v(step, 0, 0);
+    while (points.size() < count) {
+        v = 0.7 * v + glm::dvec3(n(rng), n(rng), 0.3 * n(rng));
+        points.push_back(points.back() + v);
+    }
+    return geom::Curve(degree, clampedUniformKnots(degree, count), std::move(points));
+}
+
+/// `base` with `extra` random knots inserted and every pole jittered by up to `noise`.
+geom::Curve refinedAndJittered(std::mt19937& rng, const geom::Curve& base, std::size_t extra, double noise) {
+    std::uniform_real_distribution<double> unit(0.01, 0.99), jitter(-noise, noise);
+    std::vector<double> inserted;
+    for (std::size_t i = 0; i < extra; ++i) inserted.push_back(unit(rng));
+    geom::Curve c = geom::refineKnots(base, inserted);
+    for (glm::dvec3& p : c.points) p += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+    return c;
+}
+
+std::vector<CurveCase> generatedCases() {
+    std::mt19937 rng(2026);
+    std::vector<CurveCase> cases;
+    for (int p = 1; p <= 7; ++p)
+        cases.push_back({"degree" + std::to_string(p),
+                         refinedAndJittered(rng, randomCurve(rng, p, std::size_t(p + 8), 1.0), 80, 1e-5),
+                         1e-3});
+    {
+        // C0 corners: a cubic with three triple interior knots, refined.
+        geom::Curve base = randomCurve(rng, 3, 16, 1.0);
+        base.knots = {0, 0, 0, 0, 0.25, 0.25, 0.25, 0.5, 0.5, 0.5, 0.75, 0.75, 0.75, 1, 1, 1, 1};
+        base.points.resize(13);
+        cases.push_back({"c0_corners", refinedAndJittered(rng, base, 80, 1e-5), 1e-3});
+    }
+    {
+        // Digitised data: 400 points on a smooth path with 1e-4 noise, interpolated by a cubic.
+        const geom::Curve path = randomCurve(rng, 3, 12, 1.0);
+        std::uniform_real_distribution<double> jitter(-1e-4, 1e-4);
+        std::vector<glm::dvec3> data;
+        for (int i = 0; i < 400; ++i)
+            data.push_back(geom::evaluate(path, i / 399.0) +
+                           glm::dvec3(jitter(rng), jitter(rng), jitter(rng)));
+        cases.push_back({"noisy_digitised", geom::interpolateCurve(data, 3, geom::Closure::Open), 1e-3});
+    }
+    // Nothing to remove: random poles far apart against the tolerance.
+    cases.push_back({"incompressible", randomCurve(rng, 3, 200, 1.0), 1e-4});
+    // Long: 2,500 poles.
+    cases.push_back({"long_2500", refinedAndJittered(rng, randomCurve(rng, 3, 100, 1.0), 2400, 1e-6), 1e-3});
+    return cases;
+}
+
 std::string json;
 void figure(const std::string& name, double value) {
     char buf[128];
@@ -80,10 +156,81 @@ void figure(const std::string& name, double value) {
     json += buf;
 }
 
+/// Reduces every generated class with geom and SISL by turns; prints the table and returns the
+/// worst geom/SISL time ratio and control point ratio (where SISL removes anything).
+void runClasses() {
+    std::printf("\nGenerated classes: control points left, measured error / tolerance, best of 3 runs\n");
+    std::printf("%-16s %6s %8s | %6s %7s %9s | %6s %7s %9s | %6s %6s\n", "class", "poles", "tol", "geom",
+                "err/tol", "ms", "sisl", "err/tol", "ms", "time", "cps");
+    double worstTime = 0, worstCps = 0, worstError = 0;
+    for (const CurveCase& c : generatedCases()) {
+        geom::ReductionOptions o;
+        o.tolerance = c.tolerance;
+        geom::CurveReduction r;
+        int status = 0;
+        geom::Curve s;
+        const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
+                                          [&] { s = sislReduce(c.curve, c.tolerance, status); }, 3);
+        const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
+        const double serr =
+            s.points.empty() ? -1.0 : geom::measureDeviation(c.curve, s).maxError / c.tolerance;
+        const double timeRatio = ms / sms;
+        const bool sislRemoved = !s.points.empty() && s.points.size() < c.curve.points.size();
+        const double cpRatio = sislRemoved ? double(r.curve.points.size()) / double(s.points.size()) : 0.0;
+        std::printf("%-16s %6zu %8.1e | %6zu %7.3f %9.3f | %6zu %7.3f %9.3f | %6.2f %6.2f\n", c.name.c_str(),
+                    c.curve.points.size(), c.tolerance, r.curve.points.size(), gerr, ms, s.points.size(),
+                    serr, sms, timeRatio, cpRatio);
+        worstTime = std::max(worstTime, timeRatio);
+        worstCps = std::max(worstCps, cpRatio);
+        worstError = std::max(worstError, gerr);
+        figure(c.name + "_geom_control_points", double(r.curve.points.size()));
+        figure(c.name + "_sisl_control_points", double(s.points.size()));
+        figure(c.name + "_geom_ms", ms);
+        figure(c.name + "_sisl_ms", sms);
+        figure(c.name + "_geom_error_over_tolerance", gerr);
+    }
+    {
+        // Rational: geom only (s1940 takes the homogeneous coefficients and returns NaN poles).
+        std::mt19937 rng(7);
+        geom::Curve base = randomCurve(rng, 3, 12, 1.0);
+        std::uniform_real_distribution<double> exponent(-1.0, 1.0);
+        for (std::size_t i = 0; i < base.points.size(); ++i)
+            base.weights.push_back(std::pow(10.0, exponent(rng)));
+        const geom::Curve c = refinedAndJittered(rng, base, 80, 1e-5);
+        geom::ReductionOptions o;
+        o.tolerance = 1e-3;
+        geom::CurveReduction r;
+        const double ms = timeMs([&] { r = geom::reduceCurve(c, o); }, 3);
+        const double gerr = geom::measureDeviation(c, r.curve).maxError / o.tolerance;
+        std::printf("%-16s %6zu %8.1e | %6zu %7.3f %9.3f | %6s %7s %9s |\n", "rational", c.points.size(),
+                    o.tolerance, r.curve.points.size(), gerr, ms, "-", "-", "-");
+        worstError = std::max(worstError, gerr);
+        figure("rational_geom_control_points", double(r.curve.points.size()));
+        figure("rational_geom_ms", ms);
+        figure("rational_geom_error_over_tolerance", gerr);
+    }
+    figure("worst_time_ratio_vs_sisl", worstTime);
+    figure("worst_cp_ratio_vs_sisl", worstCps);
+    figure("worst_error_over_tolerance", worstError);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     const bool curvesOnly = argc > 1 && std::string(argv[1]) == "--curves";
+    const bool classesOnly = argc > 1 && std::string(argv[1]) == "--classes";
+    const auto wallStart = Clock::now();
+    const std::clock_t cpuStart = std::clock();
+    auto finish = [&] {
+        figure("wall_seconds", std::chrono::duration<double>(Clock::now() - wallStart).count());
+        figure("cpu_seconds", static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC);
+        std::printf("{%s}\n", json.c_str());
+        return 0;
+    };
+    if (classesOnly) {
+        runClasses();
+        return finish();
+    }
     struct Named {
         const char* name;
         geom::Curve curve;
@@ -133,10 +280,8 @@ int main(int argc, char** argv) {
             figure(k + "_geom_loop_ms", bms);
         }
 
-    if (curvesOnly) {
-        std::printf("{%s}\n", json.c_str());
-        return 0;
-    }
+    runClasses();
+    if (curvesOnly) return finish();
     std::printf("\nThesis count-driven cases (tolerance off, partitions of 5)\n");
     {
         geom::ReductionOptions o;
@@ -179,6 +324,5 @@ int main(int argc, char** argv) {
             figure(k + "_max_error", r.deviation.maxError);
             figure(k + "_ms", ms);
         }
-    std::printf("{%s}\n", json.c_str());
-    return 0;
+    return finish();
 }
