@@ -156,14 +156,15 @@ void figure(const std::string& name, double value) {
     json += buf;
 }
 
-/// Reduces every generated class with geom and SISL by turns; prints the table and returns the
-/// worst geom/SISL time ratio and control point ratio (where SISL removes anything).
-void runClasses() {
+/// Reduces every generated class (or the one named `only`) with geom and SISL by turns; prints
+/// the table and adds the worst geom/SISL time and control point ratios to the JSON.
+void runClasses(const std::string& only = {}) {
     std::printf("\nGenerated classes: control points left, measured error / tolerance, best of 3 runs\n");
     std::printf("%-16s %6s %8s | %6s %7s %9s | %6s %7s %9s | %6s %6s\n", "class", "poles", "tol", "geom",
                 "err/tol", "ms", "sisl", "err/tol", "ms", "time", "cps");
     double worstTime = 0, worstCps = 0, worstError = 0;
     for (const CurveCase& c : generatedCases()) {
+        if (!only.empty() && c.name != only) continue;
         geom::ReductionOptions o;
         o.tolerance = c.tolerance;
         geom::CurveReduction r;
@@ -189,7 +190,7 @@ void runClasses() {
         figure(c.name + "_sisl_ms", sms);
         figure(c.name + "_geom_error_over_tolerance", gerr);
     }
-    {
+    if (only.empty() || only == "rational") {
         // Rational: geom only (s1940 takes the homogeneous coefficients and returns NaN poles).
         std::mt19937 rng(7);
         geom::Curve base = randomCurve(rng, 3, 12, 1.0);
@@ -228,7 +229,7 @@ int main(int argc, char** argv) {
         return 0;
     };
     if (classesOnly) {
-        runClasses();
+        runClasses(argc > 2 ? argv[2] : "");
         return finish();
     }
     struct Named {

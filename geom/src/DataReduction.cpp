@@ -13,9 +13,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <string>
+#include <unordered_set>
 
 namespace geom {
 namespace {
@@ -27,6 +29,34 @@ struct Spline {
     std::vector<double> knots;
     std::vector<glm::dvec3> points;
     std::size_t sequences = 1;
+};
+
+// The states a reduction accepted before its current one, newest last, for the final
+// measurement's step back: the last kKeep only (a step back past them goes to the original),
+// handed over by move so that a long curve's thousands of removals copy nothing.
+class AcceptedStates {
+public:
+    static constexpr std::size_t kKeep = 16;
+
+    /// `current` becomes `next`; what it was is kept.
+    void accept(Spline& current, Spline next) {
+        keep(std::move(current));
+        current = std::move(next);
+    }
+    void keep(Spline previous) {
+        states_.push_back(std::move(previous));
+        if (states_.size() > kKeep) states_.pop_front();
+    }
+    /// The state before the last one stepped to, or nothing when no kept state is left.
+    std::optional<Spline> stepBack() {
+        if (states_.empty()) return std::nullopt;
+        Spline previous = std::move(states_.back());
+        states_.pop_back();
+        return previous;
+    }
+
+private:
+    std::deque<Spline> states_;
 };
 
 void checkOptions(const ReductionOptions& o, const char* where) {
@@ -106,31 +136,44 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
 // tolerance, updates the caller's measurement state and returns true.
 template <class Accept, class Present>
 std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
-                       Present&& presentError, std::vector<Spline>* history = nullptr) {
+                       Present&& presentError, AcceptedStates* history = nullptr) {
     const Spline original = s;
     const bool measuring = std::isfinite(o.tolerance);
-    std::vector<double> blocked;
+    std::unordered_set<double> blocked;  // by value; a long curve blocks thousands
     std::size_t removed = 0;
-    auto isBlocked = [&](double v) { return std::find(blocked.begin(), blocked.end(), v) != blocked.end(); };
+    auto isBlocked = [&](double v) { return blocked.contains(v); };
     // rankKnots, with the weights of knots whose local data no accepted fit touched kept from
     // before (the same numbers, computed once): a knot's weight depends only on the knots and
     // coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
-    std::vector<std::pair<double, double>> cache;  // (knot value, weight), by value
+    // A knot's score is its weight plus, when measuring, the error already spent near it (vs
+    // the original): removing a knot moves the curve by about its weight on top of what is
+    // there, so this spreads the tolerance over the curve instead of exhausting it in one place.
+    struct Cached {
+        double value, score;
+    };
+    std::vector<Cached> cache;  // by value
     auto rank = [&] {
         const std::size_t p = static_cast<std::size_t>(s.degree), count = s.points.size() / s.sequences;
         std::vector<KnotSignificance> out;
-        std::vector<std::pair<double, double>> next;
+        std::vector<Cached> next;
         for (std::size_t i = p + 1; i < count; ++i) {
             if (s.knots[i] == s.knots[i + 1] || !(s.knots[i] > s.knots[p]) || !(s.knots[i] < s.knots[count]))
                 continue;
-            const auto it = std::lower_bound(cache.begin(), cache.end(), std::pair(s.knots[i], -1.0));
-            const double weight = it != cache.end() && it->first == s.knots[i]
-                                      ? it->second
-                                      : knotRemovalWeight(s.degree, s.knots, s.points, s.sequences, i);
+            const auto it = std::lower_bound(cache.begin(), cache.end(), s.knots[i],
+                                             [](const Cached& c, double v) { return c.value < v; });
+            double score = 0.0;
+            if (it != cache.end() && it->value == s.knots[i]) {
+                score = it->score;
+            } else {
+                score = knotRemovalWeight(s.degree, s.knots, s.points, s.sequences, i);
+                if (measuring)
+                    score += presentError(s.knots[i > p + 1 ? i - p - 1 : 0],
+                                          s.knots[std::min(s.knots.size() - 1, i + p + 1)]);
+            }
             std::size_t first = i;
             while (first > 0 && s.knots[first - 1] == s.knots[i]) --first;
-            out.push_back({i, s.knots[i], static_cast<int>(i - first + 1), weight});
-            next.emplace_back(s.knots[i], weight);
+            out.push_back({i, s.knots[i], static_cast<int>(i - first + 1), score});
+            next.push_back({s.knots[i], score});
         }
         cache = std::move(next);
         std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
@@ -138,15 +181,34 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         });
         return out;
     };
+    // Where the spline changed on [from, to], the caller's errors changed up to about an original
+    // span further (its samples there are measured again); two spans of the original are safe.
+    auto widened = [&](double& from, double& to) {
+        const std::size_t p = static_cast<std::size_t>(original.degree);
+        const std::size_t n = original.points.size() / original.sequences;
+        const auto& t = original.knots;
+        std::size_t a = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), from) - t.begin());
+        std::size_t b = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), to) - t.begin());
+        a = a > p + 3 ? a - 3 : p;
+        b = std::min(n, b + 2);
+        from = std::min(from, t[a]);
+        to = std::max(to, t[b]);
+    };
     auto forget = [&](double from, double to) {
-        const std::size_t p = static_cast<std::size_t>(s.degree);
-        std::erase_if(cache, [&](const std::pair<double, double>& entry) {
-            const auto it = std::upper_bound(s.knots.begin(), s.knots.end(), entry.first);
-            const std::size_t r = static_cast<std::size_t>(it - s.knots.begin()) - 1;
-            const double lo = s.knots[r > p + 1 ? r - p - 1 : 0];
-            const double hi = s.knots[std::min(s.knots.size() - 1, r + p + 1)];
-            return lo <= to && hi >= from;
-        });
+        if (measuring) widened(from, to);
+        // The knots r whose [knots[r-p-1], knots[r+p+1]] meets [from, to] lie within p + 1 places
+        // of the knots in [from, to]; the cache is sorted by value, so they go as one range.
+        const std::size_t p = static_cast<std::size_t>(s.degree), last = s.knots.size() - 1;
+        const std::size_t a = static_cast<std::size_t>(
+            std::lower_bound(s.knots.begin(), s.knots.end(), from) - s.knots.begin());
+        const std::size_t b =
+            static_cast<std::size_t>(std::upper_bound(s.knots.begin(), s.knots.end(), to) - s.knots.begin());
+        const double lo = s.knots[a > p + 1 ? a - p - 1 : 0];
+        const double hi = s.knots[std::min(last, b + p)];
+        cache.erase(std::lower_bound(cache.begin(), cache.end(), lo,
+                                     [](const Cached& c, double v) { return c.value < v; }),
+                    std::upper_bound(cache.begin(), cache.end(), hi,
+                                     [](double v, const Cached& c) { return v < c.value; }));
     };
     auto tryRemove = [&](std::vector<double> values) {
         std::sort(values.begin(), values.end());
@@ -165,9 +227,11 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         }
         if (!accept(fit)) return false;
         forget(fit.changedFrom, fit.changedTo);
-        s.knots = std::move(fit.knots);
-        s.points = std::move(fit.points);
-        if (history) history->push_back(s);
+        Spline next{s.degree, std::move(fit.knots), std::move(fit.points), s.sequences};
+        if (history)
+            history->accept(s, std::move(next));
+        else
+            s = std::move(next);
         return true;
     };
 
@@ -178,21 +242,7 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
             const std::size_t want =
                 std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
             std::vector<KnotSignificance> partition;
-            // Rank by the weight plus the error already spent near the knot (vs the original):
-            // removing a knot moves the curve by about its weight on top of what is there, so this
-            // spreads the tolerance over the curve instead of exhausting it in one place.
-            std::vector<KnotSignificance> ranked = rank();
-            if (measuring) {
-                const std::size_t p = static_cast<std::size_t>(s.degree);
-                for (KnotSignificance& k : ranked) {
-                    const double from = s.knots[k.index > p + 1 ? k.index - p - 1 : 0];
-                    const double to = s.knots[std::min(s.knots.size() - 1, k.index + p + 1)];
-                    k.weight += presentError(from, to);
-                }
-                std::stable_sort(
-                    ranked.begin(), ranked.end(),
-                    [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
-            }
+            const std::vector<KnotSignificance> ranked = rank();  // by score
             for (const KnotSignificance& k : ranked) {
                 if (isBlocked(k.value)) continue;
                 if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
@@ -231,7 +281,7 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
                     if (tryRemove({k.value}))
                         ++removed;
                     else
-                        blocked.push_back(k.value);
+                        blocked.insert(k.value);
                 }
             }
         }
@@ -254,8 +304,11 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
         ++fits;
         if (!accept(global)) break;
         cache.clear();
-        s.points = std::move(global.points);
-        if (history) history->push_back(s);
+        Spline next{s.degree, std::move(global.knots), std::move(global.points), s.sequences};
+        if (history)
+            history->accept(s, std::move(next));
+        else
+            s = std::move(next);
     }
     return removed;
 }
@@ -434,7 +487,7 @@ public:
     }
 
     std::size_t run(std::vector<double>& knots, std::vector<glm::dvec3>& points, std::size_t& fits,
-                    std::vector<Spline>& history) {
+                    AcceptedStates& history) {
         std::size_t removed = 0;
         for (int round = 0; round < o_.rounds; ++round) {
             const std::size_t before = removed;
@@ -449,11 +502,11 @@ public:
                     const bool fitted = removeAndFit(knots, batch, tau, c);
                     std::vector<double> failures;
                     if (fitted && measure(tau, c, failures)) {
+                        history.keep(Spline{degree_, knots, points, 1});
                         knots = std::move(tau);
                         points = std::move(c);
                         error_.swap(trialError_);
                         removed += batch.size();
-                        history.push_back(Spline{degree_, knots, points, 1});
                         break;
                     }
                     if (batch.size() == 1) {
@@ -474,7 +527,7 @@ private:
     // coefficients grow where the error is large, which evens the error out and leaves room for
     // more removals. Each reweighted fit is kept only if it keeps the tolerance.
     bool equalize(const std::vector<double>& knots, std::vector<glm::dvec3>& points, std::size_t& fits,
-                  std::vector<Spline>& history) {
+                  AcceptedStates& history) {
         bool changed = false;
         for (int step = 0; step < o_.lawsonSteps; ++step) {
             std::vector<double> local(d0_.size(), 0.0);
@@ -495,9 +548,9 @@ private:
                 emphasis_ = saved;
                 break;
             }
+            history.keep(Spline{degree_, knots, points, 1});
             points = std::move(c);
             error_.swap(trialError_);
-            history.push_back(Spline{degree_, knots, points, 1});
             changed = true;
         }
         return changed;
@@ -695,7 +748,8 @@ Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, doub
 // must also pass measureDeviation (the final check itself). The next n comes from the error
 // model c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest
 // count that passed and the largest that failed.
-CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, bool& refined) {
+CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, bool& refined,
+                                      bool& settled) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
     const int measureDensity = 2 * o.samplesPerSpan;
@@ -710,6 +764,18 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         if (out.deviation.maxError > o.tolerance) out.curve = curve;
     }
     if (out.curve.points.size() == n0) out.deviation = CurveDeviation{};  // the original: no error
+    // Measure before searching: where every knot left would move the curve by more than
+    // weightCutoff times the tolerance (the cutoff the removal loop trusts), no fit with fewer
+    // points keeps it either, and the search would only confirm that, probe by probe.
+    if (o.weightCutoff > 0.0) {
+        double smallest = std::numeric_limits<double>::infinity();
+        for (const KnotSignificance& s : rankKnots(out.curve)) smallest = std::min(smallest, s.weight);
+        if (smallest > o.weightCutoff * o.tolerance) {
+            out.removed = n0 - out.curve.points.size();
+            settled = true;
+            return out;
+        }
+    }
     std::size_t lowest = std::max({p + 1, 2 * (k + 1), p + 1 + 2 * k});
     if (o.maxRemovals < n0) lowest = std::max(lowest, n0 - o.maxRemovals);
     refined = false;
@@ -983,7 +1049,7 @@ CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& o
         return Curve(h.degree, h.knots, std::move(points), std::move(weights));
     };
     CurveReduction out;
-    std::vector<Spline> history;
+    AcceptedStates history;
     out.removed = reduceLoop(
         s, options, out.fits,
         [&](const LeastSquaresRemoval& fit) { return bound.holds(fit, options.tolerance); },
@@ -992,12 +1058,12 @@ CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& o
     if (measuring || options.report)
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
     while (measuring && out.deviation.maxError > options.tolerance) {
-        if (!history.empty()) history.pop_back();
         ++out.steppedBack;
-        out.curve = history.empty() ? curve : toCurve(history.back());
+        const std::optional<Spline> previous = history.stepBack();
+        out.curve = previous ? toCurve(*previous) : curve;
         out.removed = n - out.curve.points.size();
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
-        if (history.empty()) break;
+        if (!previous) break;
     }
     return out;
 }
@@ -1017,11 +1083,12 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                    curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
     std::optional<CurveReduction> fitted;
     if (measuring && options.freeKnots && clamped) {
-        bool refined = false;
-        fitted = reduceCurveByFreeKnots(curve, options, refined);
+        bool refined = false, settled = false;
+        fitted = reduceCurveByFreeKnots(curve, options, refined, settled);
         // The removal loop runs too where nothing fitted below the original or the original
-        // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win.
-        if ((fitted->removed > 0 && !refined) || n <= p + 1) return *fitted;
+        // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win. Where
+        // every knot's weight is past the cutoff (settled), the loop would try none.
+        if ((fitted->removed > 0 && !refined) || n <= p + 1 || settled) return *fitted;
     }
     // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
     // final measurement below has the last word.
@@ -1121,7 +1188,7 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         for (; a < b; ++a) worst = std::max(worst, error[a]);
         return worst;
     };
-    std::vector<Spline> history;
+    AcceptedStates history;
     if (batch) {
         BatchReducer reducer(curve, options, tol);
         out.removed = reducer.run(s.knots, s.points, out.fits, history);
@@ -1134,14 +1201,12 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     // The guarantee: if the denser final measurement finds the tolerance broken, step back
     // through the accepted states until it holds (the original always does).
     while (measuring && out.deviation.maxError > options.tolerance) {
-        if (!history.empty()) history.pop_back();
         ++out.steppedBack;
-        const Spline& previous =
-            history.empty() ? Spline{curve.degree, curve.knots, curve.points, 1} : history.back();
-        out.curve = Curve(previous.degree, previous.knots, previous.points);
+        const std::optional<Spline> previous = history.stepBack();
+        out.curve = previous ? Curve(previous->degree, previous->knots, previous->points) : curve;
         out.removed = curve.points.size() - out.curve.points.size();
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
-        if (history.empty()) break;
+        if (!previous) break;
     }
     if (fitted && fitted->curve.points.size() <= out.curve.points.size()) {
         fitted->fits += out.fits;

@@ -23,7 +23,9 @@ struct ReductionOptions {
     /// to the original on that window, so a wider one spreads the error; 4 measured best).
     int margin = 4;
     /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
-    /// (they would fail); 0 tries every knot.
+    /// (they would fail), and where every knot left after the exact removals is past it, the
+    /// free-knot search is not run either (a curve with nothing to remove returns at once); 0
+    /// tries every knot.
     double weightCutoff = 8.0;
     /// Curves in tolerance mode: after the knots that go exactly, search the control point count
     /// with free-knot fits (FreeKnotFit.h: the knots move, the samples slip along the curve,
