@@ -114,6 +114,12 @@ std::vector<double> interpolationParameters(const std::vector<glm::dvec3>& point
             throw GeometryError("interpolateCubic: " + pointName(i - 1) + " and " + pointName(i) +
                                 " coincide, so they get the same parameter");
         t[i] = t[i - 1] + step;
+        // A chord too long for a double (coordinates past about 1e154), or one lost to rounding
+        // next to a much longer sum, leaves no usable parameter.
+        if (!std::isfinite(t[i]) || !(t[i] > t[i - 1]))
+            throw GeometryError("interpolateCubic: the parameter of " + pointName(i) +
+                                " is not a finite number above the one before (the points are too far "
+                                "apart, or too close for their distance from the start)");
     }
     return t;
 }

@@ -94,3 +94,17 @@ TEST_CASE("curve file: long lines, control characters and directories are refuse
         CHECK(e.line() == 0);
     }
 }
+
+TEST_CASE("curve file: points too far apart for a double chord are refused, not read past the knots",
+          "[curvefile][limits]") {
+    // Found by fuzz_crv: a chord past ~1e154 overflowed to inf and the span search ran off the knots.
+    for (const char* far : {"1e200", "1e300", "1.5e154"}) {
+        const std::string text = std::string("CURVE INPUT FILE\n4\nT\nData-Points:\n0 0 0\n1 0 0\n0 ") + far +
+                                 " 0\n0 0 0\nContinuities:\n0\n0\n0\n0\nConstraints:\n" +
+                                 "0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n";
+        const geom::CurveModel model = parse(text);
+        INFO(far);
+        CHECK_THROWS_WITH(geom::interpolateModel(model),
+                          Catch::Contains("not a finite number above the one before"));
+    }
+}
