@@ -1,9 +1,16 @@
 #include "phigs/store/ArchiveFile.h"
 
+#include "ElementFields.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 
@@ -11,124 +18,7 @@ namespace phigs {
 
 namespace {
 
-// ---- one list of fields per payload, shared by the writer and the reader. The leading type
-// token already says 2D / 3D, add / remove and which tagged attribute, so those are not fields.
-template <class V>
-void fields(V& v, PolylineElement& e) {
-    v(e.points);
-}
-template <class V>
-void fields(V& v, PolymarkerElement& e) {
-    v(e.points);
-}
-template <class V>
-void fields(V& v, FillAreaElement& e) {
-    v(e.points);
-}
-template <class V>
-void fields(V& v, FillAreaSetElement& e) {
-    v(e.contours);
-}
-template <class V>
-void fields(V& v, TextElement& e) {
-    v(e.position), v(e.direction1), v(e.direction2), v(e.text);
-}
-template <class V>
-void fields(V& v, AnnotationTextElement& e) {
-    v(e.reference), v(e.offset), v(e.text);
-}
-template <class V>
-void fields(V& v, CellArrayElement& e) {
-    v(e.p), v(e.q), v(e.r), v(e.columns), v(e.rows), v(e.colourIndices);
-}
-template <class V>
-void fields(V& v, NurbsCurveElement& e) {
-    v(e.curve), v(e.rangeStart), v(e.rangeEnd);
-}
-template <class V>
-void fields(V& v, NurbsSurfaceElement& e) {
-    v(e.surface), v(e.trimLoops);
-}
-template <class V>
-void fields(V& v, FillAreaSetWithDataElement& e) {
-    v(e.contours), v(e.vertexColours), v(e.vertexNormals), v(e.hasFacetColour), v(e.facetColour),
-        v(e.hasFacetNormal), v(e.facetNormal);
-}
-template <class V>
-void fields(V& v, TriangleStripElement& e) {
-    v(e.points), v(e.vertexColours), v(e.vertexNormals);
-}
-template <class V>
-void fields(V& v, QuadrilateralMeshElement& e) {
-    v(e.rows), v(e.columns), v(e.points), v(e.vertexColours), v(e.vertexNormals);
-}
-template <class V>
-void fields(V& v, IndexAttribute& e) {
-    v(e.value);
-}
-template <class V>
-void fields(V& v, RealAttribute& e) {
-    v(e.value);
-}
-template <class V>
-void fields(V& v, ColourAttribute& e) {
-    v(e.colour);
-}
-template <class V>
-void fields(V& v, UpVectorAttribute& e) {
-    v(e.up);
-}
-template <class V>
-void fields(V& v, AlignmentAttribute& e) {
-    v(e.horizontal), v(e.vertical);
-}
-template <class V>
-void fields(V& v, AreaPropertiesAttribute& e) {
-    v(e.ambient), v(e.diffuse), v(e.specular), v(e.specularColour), v(e.specularExponent), v(e.transparency);
-}
-template <class V>
-void fields(V& v, AsfAttribute& e) {
-    v(e.aspect), v(e.individual);
-}
-template <class V>
-void fields(V& v, ApproximationAttribute& e) {
-    v(e.criteria), v(e.valueU), v(e.valueV);
-}
-template <class V>
-void fields(V& v, SurfaceCharacteristicsAttribute& e) {
-    v(e.style), v(e.placement), v(e.curvesU), v(e.curvesV);
-}
-template <class V>
-void fields(V& v, LightSourceStateAttribute& e) {
-    v(e.activate), v(e.deactivate);
-}
-template <class V>
-void fields(V& v, TransformElement& e) {
-    v(e.matrix), v(e.composition);
-}
-template <class V>
-void fields(V& v, ModelClipElement& e) {
-    v(e.op), v(e.halfSpaces);
-}
-template <class V>
-void fields(V&, RestoreModelClipElement&) {
-}
-template <class V>
-void fields(V& v, NameSetElement& e) {
-    v(e.names);
-}
-template <class V>
-void fields(V& v, ExecuteStructureElement& e) {
-    v(e.structureId);
-}
-template <class V>
-void fields(V& v, LabelElement& e) {
-    v(e.label);
-}
-template <class V>
-void fields(V& v, ApplicationDataElement& e) {
-    v(e.data);
-}
+using detail::fields;
 
 std::string typeToken(ElementType t) {
     std::string name(elementTypeName(t));
@@ -184,6 +74,73 @@ struct Writer {
     }
 };
 
+// ---- the fewest bytes of text one value of a field type takes, with the white space before it.
+// Underestimates are safe (a count is then checked less tightly), overestimates would refuse
+// good files: a number is " 0", a string " 0:", a colour " I 0", a list " 0" (empty).
+template <class T>
+struct MinText {
+    static constexpr std::size_t value = 2;
+};
+template <>
+struct MinText<std::string> {
+    static constexpr std::size_t value = 3;
+};
+template <>
+struct MinText<glm::dvec2> {
+    static constexpr std::size_t value = 4;
+};
+template <>
+struct MinText<glm::dvec3> {
+    static constexpr std::size_t value = 6;
+};
+template <>
+struct MinText<glm::dmat4> {
+    static constexpr std::size_t value = 32;
+};
+template <>
+struct MinText<Colour> {
+    static constexpr std::size_t value = 4;
+};
+template <class T>
+struct MinText<std::vector<T>> {
+    static constexpr std::size_t value = 2;
+};
+template <class A, class B>
+struct MinText<std::pair<A, B>> {
+    static constexpr std::size_t value = MinText<A>::value + MinText<B>::value;
+};
+template <>
+struct MinText<geom::Curve> {
+    static constexpr std::size_t value = 4 * 2;  // degree and three empty lists
+};
+template <>
+struct MinText<geom::Surface> {
+    static constexpr std::size_t value = 8 * 2;  // two degrees, two counts, four empty lists
+};
+
+/// Adds up MinText over the fields of a payload.
+struct MinTextCounter {
+    std::size_t total = 0;
+    template <class T>
+    void operator()(T&) {
+        total += MinText<T>::value;
+    }
+};
+
+/// Room is made for at most this many list items before they are read; longer lists grow as
+/// their items arrive, so memory follows what the file really holds.
+constexpr std::size_t kReserveItems = 4096;
+
+/// A token as an error message quotes it: at most 40 bytes of it, control bytes shown as '?'.
+std::string quoted(std::string_view token) {
+    constexpr std::size_t kShown = 40;
+    std::string shown(token.substr(0, kShown));
+    for (char& c : shown)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    if (token.size() <= kShown) return "'" + shown + "'";
+    return "'" + shown + "...' (" + std::to_string(token.size()) + " bytes)";
+}
+
 /// A token reader over the whole text that knows its line, so errors can say where.
 struct Reader {
     const std::string& text;
@@ -219,12 +176,17 @@ struct Reader {
         N value{};
         auto r = std::from_chars(t.data(), t.data() + t.size(), value);
         if (r.ec != std::errc() || r.ptr != t.data() + t.size())
-            fail(std::string("bad ") + what + " '" + std::string(t) + "'");
+            fail(std::string("bad ") + what + " " + quoted(t));
         return value;
     }
-    std::size_t count() {
-        auto n = number<std::size_t>("count");
-        if (n > text.size() - at) fail("list count " + std::to_string(n) + " exceeds the rest of the file");
+    /// A list count, refused when its items, `itemBytes` each at the least, cannot fit in the
+    /// bytes left: checked before any room is made for them.
+    std::size_t count(std::size_t itemBytes) {
+        const auto n = number<std::size_t>("count");
+        const std::size_t left = text.size() - at;
+        if (n > left / itemBytes)
+            fail("count " + std::to_string(n) + " needs at least " + std::to_string(itemBytes) +
+                 " bytes per item, only " + std::to_string(left) + " bytes are left in the file");
         return n;
     }
     void operator()(int& x) { x = number<int>("integer"); }
@@ -242,7 +204,9 @@ struct Reader {
         std::size_t n = 0;
         auto r = std::from_chars(text.data() + at, text.data() + colon, n);
         if (r.ec != std::errc() || r.ptr != text.data() + colon) fail("bad string length");
-        if (n > text.size() - colon - 1) fail("string runs past the end of the file (truncated archive)");
+        if (n > text.size() - colon - 1)
+            fail("string of " + std::to_string(n) +
+                 " bytes runs past the end of the file (truncated archive)");
         s.assign(text, colon + 1, n);
         for (char c : s)
             if (c == '\n') ++line;
@@ -261,7 +225,7 @@ struct Reader {
         else if (kind == "I")
             c.direct = false, (*this)(c.index);
         else
-            fail("bad colour kind '" + std::string(kind) + "'");
+            fail("bad colour kind " + quoted(kind));
     }
     void operator()(AspectId& a) {
         int v = number<int>("aspect");
@@ -286,8 +250,10 @@ struct Reader {
     }
     template <class T>
     void operator()(std::vector<T>& list) {
-        list.resize(count());
-        for (T& item : list) (*this)(item);
+        const std::size_t n = count(MinText<T>::value);
+        list.clear();
+        list.reserve(std::min(n, kReserveItems));
+        for (std::size_t i = 0; i < n; ++i) (*this)(list.emplace_back());
     }
 };
 
@@ -299,12 +265,17 @@ Element makeAlternative(std::size_t index, std::index_sequence<I...>) {
 }
 
 Element decodeElement(Reader& in) {
-    std::string name(in.token());
-    for (char& c : name)
-        if (c == '_') c = ' ';
-    ElementType type = elementTypeFromName(name);
+    const std::string_view token = in.token();
+    ElementType type = ElementType::Count_;
+    std::string name;
+    if (token.size() <= 64) {  // longer than any type name
+        name = token;
+        for (char& c : name)
+            if (c == '_') c = ' ';
+        type = elementTypeFromName(name);
+    }
     int index = payloadIndexOf(type);
-    if (index < 0) in.fail("unknown element type '" + name + "'");
+    if (index < 0) in.fail("unknown element type " + quoted(token));
     Element element = makeAlternative(static_cast<std::size_t>(index),
                                       std::make_index_sequence<std::variant_size_v<Element>>{});
     std::visit(
@@ -324,6 +295,26 @@ Element decodeElement(Reader& in) {
     return element;
 }
 
+/// The fewest bytes of text any element takes: the line break before it, its type name and its
+/// smallest fields ("LABEL 0").
+std::size_t minElementText() {
+    static const std::size_t bytes = [] {
+        std::size_t least = std::numeric_limits<std::size_t>::max();
+        for (int t = 0; t < static_cast<int>(ElementType::Count_); ++t) {
+            const auto type = static_cast<ElementType>(t);
+            const int index = payloadIndexOf(type);
+            if (index < 0) continue;
+            Element element = makeAlternative(static_cast<std::size_t>(index),
+                                              std::make_index_sequence<std::variant_size_v<Element>>{});
+            MinTextCounter counter;
+            std::visit([&](auto& e) { fields(counter, e); }, element);
+            least = std::min(least, 1 + typeToken(type).size() + counter.total);
+        }
+        return least;
+    }();
+    return bytes;
+}
+
 std::uint64_t fnv1a(std::string_view bytes) {
     std::uint64_t hash = 1469598103934665603ull;
     for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
@@ -336,24 +327,91 @@ std::string hex(std::uint64_t v) {
     return buffer;
 }
 
+/// `<archive>.tmp`: where the next version is written before it replaces the archive.
+std::filesystem::path temporaryPath(const std::filesystem::path& archive) {
+    std::filesystem::path p = archive;
+    p += ".tmp";
+    return p;
+}
+
+std::string errnoText(int number) {
+    return std::error_code(number, std::generic_category()).message();
+}
+
+/// Writes `text` to a new file at `path` and flushes it to the disk; on failure removes what it
+/// created and returns the cause.
+std::string writeSynced(const std::filesystem::path& path, std::string_view text) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (fd < 0) return errnoText(errno);
+    std::string cause;
+    for (std::size_t done = 0; cause.empty() && done < text.size();) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n > 0)
+            done += static_cast<std::size_t>(n);
+        else if (n == 0)
+            cause = "no bytes written";
+        else if (errno != EINTR)
+            cause = errnoText(errno);
+    }
+    if (cause.empty() && ::fsync(fd) != 0) cause = errnoText(errno);
+    if (::close(fd) != 0 && cause.empty()) cause = errnoText(errno);
+    if (!cause.empty()) ::unlink(path.c_str());
+    return cause;
+}
+
+/// Flushes the directory holding `path` to the disk, so that a rename into it lasts; the cause
+/// when that fails (a file system that cannot flush a directory, EINVAL, has nothing to do).
+std::string syncDirectory(const std::filesystem::path& path) {
+    std::filesystem::path directory = path.parent_path();
+    if (directory.empty()) directory = ".";
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return errnoText(errno);
+    std::string cause;
+    if (::fsync(fd) != 0 && errno != EINVAL) cause = errnoText(errno);
+    ::close(fd);
+    return cause;
+}
+
 }  // namespace
 
-ArchiveFile::ArchiveFile(std::filesystem::path path, ErrorLog* log) : path_(std::move(path)), log_(log) {
+ArchiveFile::ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t maxFileBytes)
+    : path_(std::move(path)), log_(log), maxFileBytes_(maxFileBytes) {
     const char* function = "OPEN ARCHIVE FILE";
+    // A temporary file left by a killed write holds at most part of an archive; the archive
+    // itself is still the last complete one.
     std::error_code ec;
-    if (!std::filesystem::exists(path_, ec)) {
+    const std::filesystem::path temporary = temporaryPath(path_);
+    const auto leftover = std::filesystem::symlink_status(temporary, ec).type();
+    if (leftover == std::filesystem::file_type::regular || leftover == std::filesystem::file_type::symlink)
+        std::filesystem::remove(temporary, ec);
+    if (std::filesystem::status(path_, ec).type() == std::filesystem::file_type::not_found) {
         try {
-            commit({}, {});
-        } catch (const Error&) {
-            raise(log_, errors::ArchiveCannotOpen, function, path_.string() + ": cannot be created");
+            write({}, function);
+        } catch (const Error& e) {
+            raise(log_, errors::ArchiveCannotOpen, function,
+                  path_.string() + ": cannot be created: " + e.detail());
         }
         return;
     }
+    contents_ = decode(readText(function), path_.string(), log_);
+}
+
+std::string ArchiveFile::readText(const char* function) const {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path_, ec))
+        raise(log_, errors::ArchiveCannotOpen, function, path_.string() + ": not a regular file");
+    const std::uintmax_t size = std::filesystem::file_size(path_, ec);
+    if (ec) raise(log_, errors::ArchiveCannotOpen, function, path_.string() + ": " + ec.message());
+    if (size > maxFileBytes_)
+        raise(log_, errors::NotAnArchive, function,
+              path_.string() + ": " + std::to_string(size) + " bytes, more than the limit of " +
+                  std::to_string(maxFileBytes_) + " bytes for an archive");
     std::ifstream in(path_, std::ios::binary);
-    if (!in) raise(log_, errors::ArchiveCannotOpen, function, path_.string() + ": cannot be read");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    contents_ = decode(buffer.str(), path_.string(), log_);
+    std::string text(static_cast<std::size_t>(size), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(size));
+    if (!in || in.peek() != std::ifstream::traits_type::eof())
+        raise(log_, errors::ArchiveCannotOpen, function, path_.string() + ": cannot be read whole");
+    return text;
 }
 
 std::vector<int> ArchiveFile::structureIds() const {
@@ -402,13 +460,12 @@ std::map<int, std::vector<Element>> ArchiveFile::decode(const std::string& text,
                 if (!in.atEnd()) in.fail("data after END");
                 break;
             }
-            if (keyword != "STRUCTURE")
-                in.fail("expected STRUCTURE or END, found '" + std::string(keyword) + "'");
+            if (keyword != "STRUCTURE") in.fail("expected STRUCTURE or END, found " + quoted(keyword));
             int id = in.number<int>("structure id");
             if (contents.contains(id)) in.fail("structure " + std::to_string(id) + " appears twice");
-            std::size_t n = in.count();
+            const std::size_t n = in.count(minElementText());
             std::vector<Element> elements;
-            elements.reserve(n);
+            elements.reserve(std::min(n, kReserveItems));
             for (std::size_t i = 0; i < n; ++i) elements.push_back(decodeElement(in));
             contents.emplace(id, std::move(elements));
         }
@@ -423,26 +480,32 @@ void ArchiveFile::commit(const std::map<int, std::vector<Element>>& put, const s
     auto next = contents_;
     for (int id : remove) next.erase(id);
     for (const auto& [id, elements] : put) next[id] = elements;
-    std::string text = encode(next);
-    std::filesystem::path temporary = path_;
-    temporary += ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(temporary, ec);
-            raise(log_, errors::WriteError, "ARCHIVE STRUCTURES", temporary.string() + ": cannot be written");
-        }
-    }
+    if (next == contents_) return;  // the file already says this
+    write(std::move(next), "ARCHIVE STRUCTURES");
+}
+
+void ArchiveFile::write(std::map<int, std::vector<Element>> next, const char* function) {
+    const std::string text = encode(next);
+    if (text.size() > maxFileBytes_)
+        raise(log_, errors::WriteError, function,
+              path_.string() + ": the archive would be " + std::to_string(text.size()) +
+                  " bytes, more than the limit of " + std::to_string(maxFileBytes_) + " bytes");
+    const std::filesystem::path temporary = temporaryPath(path_);
+    if (std::string cause = writeSynced(temporary, text); !cause.empty())
+        raise(log_, errors::WriteError, function, temporary.string() + ": cannot be written (" + cause + ")");
     std::error_code ec;
     std::filesystem::rename(temporary, path_, ec);
     if (ec) {
+        const std::string cause = ec.message();
         std::filesystem::remove(temporary, ec);
-        raise(log_, errors::WriteError, "ARCHIVE STRUCTURES", path_.string() + ": cannot be replaced");
+        raise(log_, errors::WriteError, function, path_.string() + ": cannot be replaced (" + cause + ")");
     }
     contents_ = std::move(next);
+    // The rename itself is on the disk only once the directory is.
+    if (std::string cause = syncDirectory(path_); !cause.empty())
+        raise(log_, errors::WriteError, function,
+              path_.string() + ": written, but its directory could not be flushed (" + cause +
+                  "), so the change may not survive a crash");
 }
 
 }  // namespace phigs

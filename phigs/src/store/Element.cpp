@@ -1,5 +1,7 @@
 #include "phigs/store/Element.h"
 
+#include "ElementFields.h"
+
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -142,6 +144,114 @@ std::string checkCurve(const geom::Curve& curve) {
         return e.what();
     }
     return {};
+}
+
+/// Whether every real of a payload is finite (curves and surfaces: geom::validate says).
+struct FiniteCheck {
+    bool finite = true;
+    void operator()(double x) { finite = finite && std::isfinite(x); }
+    void operator()(const glm::dvec2& p) { (*this)(p.x), (*this)(p.y); }
+    void operator()(const glm::dvec3& p) { (*this)(p.x), (*this)(p.y), (*this)(p.z); }
+    void operator()(const glm::dmat4& m) {
+        for (int c = 0; c < 4; ++c) (*this)(glm::dvec3(m[c])), (*this)(m[c].w);
+    }
+    void operator()(const Colour& c) {
+        if (c.direct) (*this)(c.rgb);
+    }
+    template <class A, class B>
+    void operator()(const std::pair<A, B>& p) {
+        (*this)(p.first), (*this)(p.second);
+    }
+    template <class T>
+    void operator()(const std::vector<T>& list) {
+        for (const T& item : list) (*this)(item);
+    }
+    template <class T>
+    void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces
+};
+
+bool allFinite(const Element& element) {
+    FiniteCheck check;
+    std::visit([&](const auto& e) { detail::fields(check, const_cast<std::decay_t<decltype(e)>&>(e)); },
+               element);
+    return check.finite;
+}
+
+/// The rules of each payload family: counts, consistent lists, finite points, valid curves.
+std::string validatePayload(const Element& element) {
+    return std::visit(
+        [](const auto& e) -> std::string {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, PolylineElement>)
+                return checkPoints(e.points, 0, "polyline");
+            else if constexpr (std::is_same_v<E, PolymarkerElement>)
+                return checkPoints(e.points, 0, "polymarker");
+            else if constexpr (std::is_same_v<E, FillAreaElement>)
+                return checkPoints(e.points, 0, "fill area");
+            else if constexpr (std::is_same_v<E, FillAreaSetElement>) {
+                for (const auto& c : e.contours)
+                    if (auto r = checkPoints(c, 0, "fill area set contour"); !r.empty()) return r;
+                return {};
+            } else if constexpr (std::is_same_v<E, CellArrayElement>) {
+                if (e.columns < 0 || e.rows < 0) return "cell array dimensions are negative";
+                if (e.colourIndices.size() !=
+                    static_cast<std::size_t>(e.columns) * static_cast<std::size_t>(e.rows))
+                    return "cell array has " + std::to_string(e.colourIndices.size()) + " colours for " +
+                           std::to_string(e.columns) + " x " + std::to_string(e.rows) + " cells";
+                return {};
+            } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
+                return checkCurve(e.curve);
+            } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
+                try {
+                    geom::validate(e.surface);
+                } catch (const std::exception& x) {
+                    return x.what();
+                }
+                for (const auto& loop : e.trimLoops)
+                    for (const auto& c : loop)
+                        if (auto r = checkCurve(c); !r.empty()) return "trimming curve: " + r;
+                return {};
+            } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
+                if (!e.vertexColours.empty() && e.vertexColours.size() != e.contours.size())
+                    return "vertex colours are not given for every contour";
+                if (!e.vertexNormals.empty() && e.vertexNormals.size() != e.contours.size())
+                    return "vertex normals are not given for every contour";
+                for (std::size_t i = 0; i < e.contours.size(); ++i) {
+                    if (auto r = checkPoints(e.contours[i], 0, "contour"); !r.empty()) return r;
+                    if (!e.vertexColours.empty())
+                        if (auto r =
+                                checkPerVertex(e.vertexColours[i], e.contours[i].size(), "vertex colours");
+                            !r.empty() || e.vertexColours[i].empty())
+                            return r.empty() && !e.contours[i].empty() ? "contour without vertex colours" : r;
+                    if (!e.vertexNormals.empty())
+                        if (auto r =
+                                checkPerVertex(e.vertexNormals[i], e.contours[i].size(), "vertex normals");
+                            !r.empty())
+                            return r;
+                }
+                return {};
+            } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
+                if (auto r = checkPoints(e.points, 0, "triangle strip"); !r.empty()) return r;
+                if (auto r = checkPerVertex(e.vertexColours, e.points.size(), "vertex colours"); !r.empty())
+                    return r;
+                return checkPerVertex(e.vertexNormals, e.points.size(), "vertex normals");
+            } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
+                if (e.rows < 0 || e.columns < 0) return "quadrilateral mesh dimensions are negative";
+                std::size_t n = static_cast<std::size_t>(e.rows) * static_cast<std::size_t>(e.columns);
+                if (e.points.size() != n)
+                    return "quadrilateral mesh has " + std::to_string(e.points.size()) + " points for " +
+                           std::to_string(e.rows) + " x " + std::to_string(e.columns);
+                if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
+                if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
+                return checkPerVertex(e.vertexNormals, n, "vertex normals");
+            } else if constexpr (std::is_same_v<E, AsfAttribute>) {
+                if (static_cast<int>(e.aspect) < 0 || e.aspect >= AspectId::Count_) return "unknown aspect";
+                return {};
+            } else {
+                return {};
+            }
+        },
+        element);
 }
 
 }  // namespace
@@ -328,79 +438,9 @@ std::string validateElement(const Element& element) {
     if (payloadIndexOf(elementType(element)) != static_cast<int>(element.index()))
         return "element type " + std::string(elementTypeName(elementType(element))) +
                " does not belong to this payload";
-    return std::visit(
-        [](const auto& e) -> std::string {
-            using E = std::decay_t<decltype(e)>;
-            if constexpr (std::is_same_v<E, PolylineElement>)
-                return checkPoints(e.points, 0, "polyline");
-            else if constexpr (std::is_same_v<E, PolymarkerElement>)
-                return checkPoints(e.points, 0, "polymarker");
-            else if constexpr (std::is_same_v<E, FillAreaElement>)
-                return checkPoints(e.points, 0, "fill area");
-            else if constexpr (std::is_same_v<E, FillAreaSetElement>) {
-                for (const auto& c : e.contours)
-                    if (auto r = checkPoints(c, 0, "fill area set contour"); !r.empty()) return r;
-                return {};
-            } else if constexpr (std::is_same_v<E, CellArrayElement>) {
-                if (e.columns < 0 || e.rows < 0) return "cell array dimensions are negative";
-                if (e.colourIndices.size() !=
-                    static_cast<std::size_t>(e.columns) * static_cast<std::size_t>(e.rows))
-                    return "cell array has " + std::to_string(e.colourIndices.size()) + " colours for " +
-                           std::to_string(e.columns) + " x " + std::to_string(e.rows) + " cells";
-                return {};
-            } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
-                return checkCurve(e.curve);
-            } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
-                try {
-                    geom::validate(e.surface);
-                } catch (const std::exception& x) {
-                    return x.what();
-                }
-                for (const auto& loop : e.trimLoops)
-                    for (const auto& c : loop)
-                        if (auto r = checkCurve(c); !r.empty()) return "trimming curve: " + r;
-                return {};
-            } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
-                if (!e.vertexColours.empty() && e.vertexColours.size() != e.contours.size())
-                    return "vertex colours are not given for every contour";
-                if (!e.vertexNormals.empty() && e.vertexNormals.size() != e.contours.size())
-                    return "vertex normals are not given for every contour";
-                for (std::size_t i = 0; i < e.contours.size(); ++i) {
-                    if (auto r = checkPoints(e.contours[i], 0, "contour"); !r.empty()) return r;
-                    if (!e.vertexColours.empty())
-                        if (auto r =
-                                checkPerVertex(e.vertexColours[i], e.contours[i].size(), "vertex colours");
-                            !r.empty() || e.vertexColours[i].empty())
-                            return r.empty() && !e.contours[i].empty() ? "contour without vertex colours" : r;
-                    if (!e.vertexNormals.empty())
-                        if (auto r =
-                                checkPerVertex(e.vertexNormals[i], e.contours[i].size(), "vertex normals");
-                            !r.empty())
-                            return r;
-                }
-                return {};
-            } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
-                if (auto r = checkPoints(e.points, 0, "triangle strip"); !r.empty()) return r;
-                if (auto r = checkPerVertex(e.vertexColours, e.points.size(), "vertex colours"); !r.empty())
-                    return r;
-                return checkPerVertex(e.vertexNormals, e.points.size(), "vertex normals");
-            } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
-                if (e.rows < 0 || e.columns < 0) return "quadrilateral mesh dimensions are negative";
-                std::size_t n = static_cast<std::size_t>(e.rows) * static_cast<std::size_t>(e.columns);
-                if (e.points.size() != n)
-                    return "quadrilateral mesh has " + std::to_string(e.points.size()) + " points for " +
-                           std::to_string(e.rows) + " x " + std::to_string(e.columns);
-                if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
-                if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
-                return checkPerVertex(e.vertexNormals, n, "vertex normals");
-            } else if constexpr (std::is_same_v<E, AsfAttribute>) {
-                if (static_cast<int>(e.aspect) < 0 || e.aspect >= AspectId::Count_) return "unknown aspect";
-                return {};
-            } else {
-                return {};
-            }
-        },
-        element);
+    std::string reason = validatePayload(element);
+    if (reason.empty() && !allFinite(element)) reason = "a coordinate or real value is not finite";
+    return reason;
 }
 
 std::size_t elementSize(const Element& element) {

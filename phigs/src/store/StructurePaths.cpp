@@ -3,15 +3,14 @@
 #include "phigs/core/Error.h"
 
 #include <algorithm>
-#include <set>
 #include <string>
 
 namespace phigs {
 namespace {
 
+// Sorted after the cut, so BottomFirst results are sorted too.
 std::vector<StructurePath> truncateAndUnique(std::vector<StructurePath> paths, StructurePathOrder order,
                                              int depth) {
-    std::sort(paths.begin(), paths.end());
     if (depth > 0)
         for (auto& p : paths)
             if (static_cast<int>(p.size()) > depth) {
@@ -20,11 +19,9 @@ std::vector<StructurePath> truncateAndUnique(std::vector<StructurePath> paths, S
                 else
                     p.erase(p.begin(), p.end() - depth);
             }
-    std::vector<StructurePath> unique;
-    std::set<StructurePath> seen;
-    for (auto& p : paths)
-        if (seen.insert(p).second) unique.push_back(std::move(p));
-    return unique;
+    std::sort(paths.begin(), paths.end());
+    paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
+    return paths;
 }
 
 // Only a hand-made archive can hold a cyclic network (the store refuses one).
@@ -76,6 +73,9 @@ std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, in
     std::map<int, std::vector<ElementRef>> parents;
     for (const auto& [parent, refs] : references)
         for (const auto& [elementNumber, child] : refs) parents[child].push_back({parent, elementNumber});
+    // A path is at least two references (ISO 9592 defect 066, NIST PVT 02.01 SR5): a structure
+    // that nothing executes has no paths to ancestors.
+    if (!parents.contains(id)) return {};
     std::vector<StructurePath> out;
     // Walk upward, building paths bottom-up, then reverse each to top-first.
     std::vector<StructurePath> partial{{ElementRef{id, 0}}};
@@ -102,6 +102,9 @@ std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, 
                                            StructurePathOrder order, int depth, ErrorLog* log,
                                            const char* function) {
     if (depth < 0) raise(log, errors::NegativePathDepth, function, "depth " + std::to_string(depth));
+    // As for ancestors: a structure that executes nothing has no paths to descendants.
+    const auto it = references.find(id);
+    if (it == references.end() || it->second.empty()) return {};
     std::vector<StructurePath> out;
     StructurePath path;
     collectDescendants(references, id, path, out, log, function);

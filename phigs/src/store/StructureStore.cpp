@@ -346,10 +346,15 @@ void StructureStore::deleteAllStructures() {
     }
 }
 
+// CHANGE STRUCTURE IDENTIFIER (ISO 9592 as the NIST PHIGS validation tests 02.01.03.01 read it): a
+// missing original counts as an empty one, so the result is emptied (created when missing), and
+// original == result only creates it when missing; neither is an error.
 void StructureStore::changeStructureIdentifier(int original, int result) {
     const char* function = "CHANGE STRUCTURE IDENTIFIER";
-    Structure& from = mutableStructure(original, function);
-    if (original == result) return;
+    if (original == result) {
+        createIfMissing(original);
+        return;
+    }
     auto graph = childrenGraph();
     graph[result] = graph[original];
     graph[original].clear();
@@ -357,9 +362,12 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
         raise(log_, errors::StructureCycle, function,
               "structure " + std::to_string(result) + " would execute itself through " +
                   std::to_string(original));
-    std::vector<StoredElement> moved = std::move(from.elements);
-    from.elements.clear();
-    touch(from);
+    std::vector<StoredElement> moved;
+    if (auto from = structures_.find(original); from != structures_.end()) {
+        moved = std::move(from->second.elements);
+        from->second.elements.clear();
+        touch(from->second);
+    }
     Structure& to = createIfMissing(result);
     to.elements = std::move(moved);
     for (const auto& e : to.elements)
@@ -367,9 +375,12 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
     touch(to);
     if (open_ == result) pointer_ = static_cast<int>(to.elements.size());
     if (open_ == original) pointer_ = 0;
-    if (open_ != original && !referenced(original) && !postedAnywhere(original)) structures_.erase(original);
+    if (exists(original) && open_ != original && !referenced(original) && !postedAnywhere(original))
+        structures_.erase(original);
 }
 
+// CHANGE STRUCTURE REFERENCES: the result is created only when something (an execute or a
+// posting) comes to name it; with nothing to move the store is left alone (NIST PVT 02.01.03.02).
 void StructureStore::changeStructureReferences(int original, int result) {
     const char* function = "CHANGE STRUCTURE REFERENCES";
     if (original == result) return;
@@ -380,6 +391,7 @@ void StructureStore::changeStructureReferences(int original, int result) {
     if (hasCycle(graph))
         raise(log_, errors::StructureCycle, function,
               "references to " + std::to_string(original) + " redirected to " + std::to_string(result));
+    if (!referenced(original) && !postedAnywhere(original)) return;
     createIfMissing(result);
     for (auto& [id, s] : structures_) {
         bool changed = false;
@@ -397,8 +409,10 @@ void StructureStore::changeStructureReferences(int original, int result) {
 
 void StructureStore::changeStructureIdentifierAndReferences(int original, int result) {
     const char* function = "CHANGE STRUCTURE IDENTIFIER AND REFERENCES";
-    mutableStructure(original, function);
-    if (original == result) return;
+    if (original == result) {
+        createIfMissing(original);
+        return;
+    }
     auto graph = childrenGraph();
     graph[result] = graph[original];
     graph.erase(original);

@@ -3,6 +3,7 @@
 #include "phigs/core/ErrorLog.h"
 #include "phigs/store/Element.h"
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <vector>
@@ -10,8 +11,10 @@
 namespace phigs {
 
 /// One PHIGS archive file: structures (id -> elements) kept in memory and written back whole
-/// after every change, to a temporary file in the same directory renamed over the old one, so
-/// the file on disk is always a complete archive.
+/// after every change, to `<name>.tmp` in the same directory, flushed to the disk (fsync) and
+/// renamed over the old one, the directory flushed after; so the file on disk is always a
+/// complete archive, and a change that returned survives a crash. A `<name>.tmp` left by a killed
+/// write is removed when the archive is opened.
 ///
 /// Format (version 1, text, UTF-8, tokens separated by white space):
 ///   PHIGS-ARCHIVE 1
@@ -24,10 +27,19 @@ namespace phigs {
 /// reals column by column, colours as D r g b or I index, B-spline curves as degree, knots,
 /// points, weights. A file that does not parse, misses its END line or fails its checksum is
 /// refused with error 403 naming the file and the line.
+///
+/// Limits: a file of more than maxFileBytes (default kMaxFileBytes) is refused before it is
+/// read (403) and never written (903). Every count is checked against the bytes left in the
+/// file, each item needing at least the text of its smallest form (6 bytes for a point, 8 for
+/// an element), before room is made for it, so a false count cannot make memory grow beyond
+/// what the file itself holds (read, an archive takes at most about 23 bytes per file byte).
 class ArchiveFile {
 public:
+    /// The largest archive file read or written by default (64 MiB).
+    static constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
+
     /// Opens (creating when missing) the archive at `path`; error 400 / 403 on failure.
-    ArchiveFile(std::filesystem::path path, ErrorLog* log);
+    ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t maxFileBytes = kMaxFileBytes);
 
     const std::filesystem::path& path() const { return path_; }
     const std::map<int, std::vector<Element>>& contents() const { return contents_; }
@@ -35,18 +47,23 @@ public:
     std::vector<int> structureIds() const;
 
     /// Replaces or adds structures and deletes others, then writes the file (error 903 on failure,
-    /// leaving the old file and this object as they were).
+    /// leaving the old file and this object as they were). Writes nothing when nothing changes.
     void commit(const std::map<int, std::vector<Element>>& put, const std::vector<int>& remove);
 
     /// Serializes / parses the format above (exposed for tests and tools).
     static std::string encode(const std::map<int, std::vector<Element>>& contents);
-    /// Throws Error 403 naming `sourceName` and the line of the first problem.
+    /// Throws Error 403 naming `sourceName`, the line of the first problem and, for a count, the
+    /// bytes it would need and the bytes left.
     static std::map<int, std::vector<Element>> decode(const std::string& text, const std::string& sourceName,
                                                       ErrorLog* log);
 
 private:
+    std::string readText(const char* function) const;
+    void write(std::map<int, std::vector<Element>> next, const char* function);
+
     std::filesystem::path path_;
     ErrorLog* log_;
+    std::size_t maxFileBytes_;
     std::map<int, std::vector<Element>> contents_;
 };
 

@@ -388,7 +388,7 @@ ElementType elementType(const Element& element);
 /// Which payload family carries a type (the variant index), -1 for All, Nil and Count_.
 int payloadIndexOf(ElementType type);
 /// Checks an element against the rules of its type (counts, consistent lists, the type tag
-/// matching its family); returns an empty string when valid, else the reason.
+/// matching its family, every real finite); returns an empty string when valid, else the reason.
 std::string validateElement(const Element& element);
 /// Approximate storage of an element in bytes (INQUIRE ELEMENT TYPE AND SIZE).
 std::size_t elementSize(const Element& element);

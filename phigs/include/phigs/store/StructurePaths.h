@@ -19,15 +19,16 @@ ExecuteReferences executeReferences(const std::map<int, std::vector<Element>>& c
 
 /// PATHS TO ANCESTORS: every path from a structure that nothing executes down to `id`, written
 /// top first and ending (id, 0); cut to its last (BottomFirst) or first (TopFirst) `depth`
-/// references when depth > 0; sorted, duplicates removed. A cyclic network (only a hand-made
-/// archive can hold one) raises StructureCycle naming `function`.
+/// references when depth > 0; sorted, duplicates removed. A path has at least two references,
+/// so a structure that nothing executes has none. A cyclic network (only a hand-made archive
+/// can hold one) raises StructureCycle naming `function`.
 std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, int id,
                                          StructurePathOrder order, int depth, ErrorLog* log,
                                          const char* function);
 
 /// PATHS TO DESCENDANTS: every path from `id` down to a structure that executes nothing, as
-/// (structure, element number) references ending (leaf, 0); cut, sorted and checked as above,
-/// and NetworkTooDeep beyond kMaxNetworkDepth levels.
+/// (structure, element number) references ending (leaf, 0), none when `id` executes nothing;
+/// cut, sorted and checked as above, and NetworkTooDeep beyond kMaxNetworkDepth levels.
 std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, int id,
                                            StructurePathOrder order, int depth, ErrorLog* log,
                                            const char* function);

@@ -94,7 +94,9 @@ public:
     void deleteStructure(int id);
     void deleteStructureNetwork(int id, ReferenceHandling handling);
     void deleteAllStructures();
+    /// CHANGE STRUCTURE IDENTIFIER: a missing original counts as empty (the result is emptied).
     void changeStructureIdentifier(int original, int result);
+    /// CHANGE STRUCTURE REFERENCES: creates the result only when an execute or posting moves to it.
     void changeStructureReferences(int original, int result);
     void changeStructureIdentifierAndReferences(int original, int result);
 
@@ -117,7 +119,8 @@ public:
                                const std::set<ElementType>& include,
                                const std::set<ElementType>& exclude) const;
     /// INQUIRE PATHS TO ANCESTORS / DESCENDANTS: every path written top first, sorted; depth > 0
-    /// keeps the top (TopFirst) or bottom (BottomFirst) `depth` levels, duplicates removed.
+    /// keeps the top (TopFirst) or bottom (BottomFirst) `depth` levels, duplicates removed; a
+    /// root has no ancestor paths and a leaf no descendant paths (a path has two references).
     std::vector<StructurePath> pathsToAncestors(int id, StructurePathOrder order, int depth) const;
     std::vector<StructurePath> pathsToDescendants(int id, StructurePathOrder order, int depth) const;
     /// The structure and every structure it executes, directly or not (sorted).

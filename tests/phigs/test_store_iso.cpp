@@ -1,0 +1,159 @@
+// Cases where ISO 9592, as the NIST PHIGS validation tests (PVT) read it, decides what the store
+// does and a plain reading might not: CHANGE STRUCTURE IDENTIFIER (AND REFERENCES) of a missing
+// structure, CHANGE STRUCTURE REFERENCES with nothing to move, and paths of a single structure.
+// The PVT test numbers name the source of each expectation.
+
+#include "ErrorNumber.h"
+#include "phigs/core/Phigs.h"
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+
+using namespace phigs;
+using phigs::test::errorOf;
+
+namespace {
+
+void build(StructureStore& store, int id, const std::vector<Element>& elements) {
+    store.openStructure(id);
+    for (const auto& e : elements) store.insert(e);
+    store.closeStructure();
+}
+
+}  // namespace
+
+TEST_CASE("change structure identifier of a missing structure empties the result, no error", "[store][iso]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    build(store, 1, {executeStructure(2)});
+    build(store, 2, {label(20)});
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    ws.postStructure(2, 0.5);
+
+    store.changeStructureIdentifier(300, 350);  // PVT 02.01.03.01/01 case 1: result created, empty
+    CHECK(store.structureStatus(350) == StructureStatus::Empty);
+    CHECK_FALSE(store.exists(300));
+    store.changeStructureIdentifier(300, 2);  // cases 4-5: referenced, posted result emptied
+    CHECK(store.structureStatus(2) == StructureStatus::Empty);
+    CHECK(std::get<ExecuteStructureElement>(store.elementAt(1, 1)).structureId == 2);
+    CHECK(ws.postedStructures() == std::vector<PostedStructure>{{2, 0.5}});
+    CHECK_FALSE(store.exists(300));
+    store.changeStructureIdentifier(301, 301);  // PVT 02.01.03.01/02: the same identifier creates it
+    CHECK(store.structureStatus(301) == StructureStatus::Empty);
+    store.changeStructureIdentifierAndReferences(302, 302);  // PVT 02.01.03.03/02
+    CHECK(store.structureStatus(302) == StructureStatus::Empty);
+
+    build(store, 4, {label(1), label(2), label(3)});
+    store.openStructure(4);
+    store.setElementPointer(2);
+    store.changeStructureIdentifier(303, 4);  // PVT 02.01.03.01/03: the open result, pointer 0
+    CHECK(store.elementPointer() == 0);
+    CHECK(store.elementCount(4) == 0);
+    store.changeStructureIdentifierAndReferences(304, 4);  // PVT 02.01.03.03/03 likewise
+    CHECK(store.elementPointer() == 0);
+    store.closeStructure();
+    CHECK_FALSE(store.exists(304));
+}
+
+TEST_CASE("change structure references with nothing to move changes nothing", "[store][iso]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    build(store, 1, {executeStructure(2)});
+    const auto before = store.structureIds();
+    const std::uint64_t operations = store.operationCount();
+    store.changeStructureReferences(300, 320);  // PVT 02.01.03.02/01: both missing
+    store.changeStructureReferences(300, 1);    // the original missing, the result there
+    store.changeStructureReferences(1, 2);      // the original not referenced
+    store.changeStructureReferences(2, 2);      // the same identifier
+    CHECK(store.structureIds() == before);
+    CHECK(store.operationCount() == operations);
+
+    // A posted original moves its posting to a result that did not exist, which is created
+    // (PVT 02.01.03.02/03); a referenced one its executes (02.01.03.02/02).
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    ws.postStructure(1, 0.42);
+    store.changeStructureReferences(1, 40);
+    CHECK(store.exists(40));
+    CHECK(ws.postedStructures() == std::vector<PostedStructure>{{40, 0.42}});
+    store.changeStructureReferences(2, 41);
+    CHECK(std::get<ExecuteStructureElement>(store.elementAt(1, 1)).structureId == 41);
+    CHECK(store.exists(41));
+    CHECK(store.exists(2));
+}
+
+TEST_CASE("paths are at least two references: a root has no ancestors, a leaf no descendants",
+          "[store][iso][paths]") {
+    // The network of PVT 02.01 programs 2 and 3 (SR5, ISO 9592 defect 066):
+    // 101 -> 102 (1), 103 (2), 107 (3); 102 -> 109 (1), 104 (2); 103 -> 104 (1), 105 (2), 105 (3);
+    // 104 -> 109 (1); 105 -> 109 (1); 106 -> 107 (1); 108 alone.
+    StructureStore store;
+    build(store, 101, {executeStructure(102), executeStructure(103), executeStructure(107)});
+    build(store, 102, {executeStructure(109), executeStructure(104)});
+    build(store, 103, {executeStructure(104), executeStructure(105), executeStructure(105)});
+    build(store, 104, {executeStructure(109)});
+    build(store, 105, {executeStructure(109)});
+    build(store, 106, {executeStructure(107)});
+    build(store, 108, {});
+    using P = std::vector<StructurePath>;
+    const auto top = StructurePathOrder::TopFirst;
+    const auto bottom = StructurePathOrder::BottomFirst;
+    CHECK(store.pathsToAncestors(109, top, 0) == P{{{101, 1}, {102, 1}, {109, 0}},
+                                                   {{101, 1}, {102, 2}, {104, 1}, {109, 0}},
+                                                   {{101, 2}, {103, 1}, {104, 1}, {109, 0}},
+                                                   {{101, 2}, {103, 2}, {105, 1}, {109, 0}},
+                                                   {{101, 2}, {103, 3}, {105, 1}, {109, 0}}});
+    CHECK(store.pathsToAncestors(107, bottom, 0) == P{{{101, 3}, {107, 0}}, {{106, 1}, {107, 0}}});
+    CHECK(store.pathsToAncestors(106, bottom, 0).empty());
+    CHECK(store.pathsToAncestors(108, top, 0).empty());
+    CHECK(store.pathsToAncestors(109, bottom, 2) ==
+          P{{{102, 1}, {109, 0}}, {{104, 1}, {109, 0}}, {{105, 1}, {109, 0}}});
+    CHECK(store.pathsToAncestors(105, top, 1) == P{{{101, 2}}});
+    CHECK(store.pathsToAncestors(101, top, 5).empty());
+    CHECK(store.pathsToAncestors(107, bottom, 1) == P{{{107, 0}}});
+    CHECK(store.pathsToAncestors(106, bottom, 1).empty());
+
+    CHECK(store.pathsToDescendants(103, bottom, 0) ==
+          P{{{103, 1}, {104, 1}, {109, 0}}, {{103, 2}, {105, 1}, {109, 0}}, {{103, 3}, {105, 1}, {109, 0}}});
+    CHECK(store.pathsToDescendants(109, bottom, 0).empty());
+    CHECK(store.pathsToDescendants(108, top, 0).empty());
+    CHECK(store.pathsToDescendants(101, top, 1) == P{{{101, 1}}, {{101, 2}}, {{101, 3}}});
+    CHECK(store.pathsToDescendants(101, top, 2) == P{{{101, 1}, {102, 1}},
+                                                     {{101, 1}, {102, 2}},
+                                                     {{101, 2}, {103, 1}},
+                                                     {{101, 2}, {103, 2}},
+                                                     {{101, 2}, {103, 3}},
+                                                     {{101, 3}, {107, 0}}});
+    CHECK(errorOf([&] { store.pathsToDescendants(110, top, 0); }) == errors::StructureDoesNotExist);
+}
+
+TEST_CASE("an element with a value that is not finite is refused, whatever its type", "[store][errors]") {
+    StructureStore store;
+    store.openStructure(1);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    glm::dmat4 m(1.0);
+    m[3][0] = inf;
+    const std::vector<Element> bad{
+        TextElement{{0, nan, 0}, {1, 0, 0}, {0, 1, 0}, "x", false},
+        AnnotationTextElement{{0, 0, 0}, {inf, 0, 0}, "x", false},
+        RealAttribute{ElementType::CharacterHeight, nan},
+        UpVectorAttribute{ElementType::CharacterUpVector, {nan, 1}},
+        ColourAttribute{ElementType::TextColour, Colour::fromRgb({0, nan, 0})},
+        localTransformation3(m, Composition::Preconcatenate),
+        ModelClipElement{1, {{{0, 0, 0}, {0, 0, inf}}}, false},
+        ApproximationAttribute{ElementType::CurveApproximationCriteria, 2, nan, 1},
+        NurbsCurveElement{geom::Curve(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 0, 0}}), nan, 1}};
+    for (const auto& e : bad) {
+        INFO(elementTypeName(elementType(e)));
+        CHECK(errorOf([&] { store.insert(e); }) == errors::InvalidElementData);
+    }
+    CHECK(store.elementCount(1) == 0);
+    // an indexed colour's unused rgb is not looked at
+    Colour indexed = Colour::indexed(3);
+    indexed.rgb = {nan, nan, nan};
+    store.insert(ColourAttribute{ElementType::TextColour, indexed});
+    CHECK(store.elementCount(1) == 1);
+}
