@@ -55,9 +55,13 @@ struct ArchiveModel {
         if (conflict && retrieval == ConflictResolution::Abandon) return errors::ArchiveNameConflict;
         if (retrieval == ConflictResolution::Maintain)
             std::erase_if(taken, [&](const auto& entry) { return store.structures.contains(entry.first); });
-        Contents after = store.structures;
-        for (const auto& [id, elements] : taken) after[id] = elements;
-        if (cyclic(graphOf(after))) return errors::StructureCycle;
+        Graph after = graphOf(store.structures);
+        for (const auto& [id, elements] : taken) {
+            std::erase_if(after.edges, [&](auto& edge) { return edge.first == id; });
+            for (const auto& e : elements)
+                if (auto x = executeOf(e)) after.add(id, x->structureId);
+        }
+        if (after.cyclic()) return errors::StructureCycle;
         for (const auto& [id, elements] : taken) {
             store.structures[id] = elements;
             for (const auto& e : elements)

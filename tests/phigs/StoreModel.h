@@ -24,43 +24,57 @@ inline const ExecuteStructureElement* executeOf(const Element& e) {
     return std::get_if<ExecuteStructureElement>(&e);
 }
 
-/// Each structure's children.
-inline std::map<int, std::set<int>> graphOf(const Contents& contents) {
-    std::map<int, std::set<int>> g;
-    for (const auto& [id, elements] : contents) {
-        g[id];
-        for (const auto& e : elements)
-            if (auto x = executeOf(e)) g[id].insert(x->structureId);
+/// The execute edges (parent, child) of a set of structures, without repeats, for the cycle
+/// checks: a few structures, so a sorted vector does.
+struct Graph {
+    std::vector<std::pair<int, int>> edges;
+
+    void add(int parent, int child) {
+        auto at = std::lower_bound(edges.begin(), edges.end(), std::make_pair(parent, child));
+        if (at == edges.end() || *at != std::make_pair(parent, child)) edges.insert(at, {parent, child});
     }
-    return g;
-}
-
-inline bool reaches(const std::map<int, std::set<int>>& g, int from, int to, std::set<int>& seen) {
-    if (from == to) return true;
-    if (!seen.insert(from).second) return false;
-    auto it = g.find(from);
-    if (it == g.end()) return false;
-    for (int c : it->second)
-        if (reaches(g, c, to, seen)) return true;
-    return false;
-}
-
-/// Whether the graph has a cycle: depth first, colour 1 while on the path, 2 when done.
-inline bool cyclic(const std::map<int, std::set<int>>& g) {
-    std::map<int, int> colour;
-    std::function<bool(int)> visit = [&](int node) {
-        int& c = colour[node];
-        if (c != 0) return c == 1;
-        c = 1;
-        if (auto it = g.find(node); it != g.end())
-            for (int child : it->second)
-                if (visit(child)) return true;
-        colour[node] = 2;
+    /// `to` executes what `from` executed, and `from` nothing.
+    void moveChildren(int from, int to) {
+        std::vector<std::pair<int, int>> old;
+        old.swap(edges);
+        for (auto [p, c] : old)
+            if (p != to && p != from) add(p, c);
+        for (auto [p, c] : old)
+            if (p == from) add(to, c);
+    }
+    /// Every execute of `from` executes `to` instead.
+    void redirect(int from, int to) {
+        std::vector<std::pair<int, int>> old;
+        old.swap(edges);
+        for (auto [p, c] : old) add(p, c == from ? to : c);
+    }
+    bool reaches(int from, int to) const {
+        std::vector<int> todo{from}, seen;
+        while (!todo.empty()) {
+            const int node = todo.back();
+            todo.pop_back();
+            if (node == to) return true;
+            if (std::find(seen.begin(), seen.end(), node) != seen.end()) continue;
+            seen.push_back(node);
+            for (auto [p, c] : edges)
+                if (p == node) todo.push_back(c);
+        }
         return false;
-    };
-    for (const auto& [id, children] : g)
-        if (visit(id)) return true;
-    return false;
+    }
+    /// Whether some structure executes itself, directly or not.
+    bool cyclic() const {
+        for (auto [p, c] : edges)
+            if (reaches(c, p)) return true;
+        return false;
+    }
+};
+
+inline Graph graphOf(const Contents& contents) {
+    Graph g;
+    for (const auto& [id, elements] : contents)
+        for (const auto& e : elements)
+            if (auto x = executeOf(e)) g.add(id, x->structureId);
+    return g;
 }
 
 /// The structure and everything it executes, directly or not (missing structures included).
@@ -156,10 +170,7 @@ struct StoreModel {
 
     std::vector<Element>& current() { return structures.at(*open); }
     int count() { return static_cast<int>(current().size()); }
-    bool wouldCycle(int parent, int child) const {
-        std::set<int> seen;
-        return reaches(graphOf(structures), child, parent, seen);
-    }
+    bool wouldCycle(int parent, int child) const { return graphOf(structures).reaches(child, parent); }
     bool referenced(int id) const {
         for (const auto& [sid, elements] : structures)
             for (const auto& e : elements)
@@ -296,14 +307,14 @@ struct StoreModel {
             doomed = members;
         } else {  // PVT 02.01.02.02: every member all of whose ancestor paths pass through `id`
             doomed = {id};
-            auto g = graphOf(structures);
+            const Graph g = graphOf(structures);
             for (bool grew = true; grew;) {
                 grew = false;
                 for (int m : members) {
                     if (doomed.contains(m)) continue;
                     bool all = true;
-                    for (const auto& [p, children] : g)
-                        if (children.contains(m) && !doomed.contains(p)) all = false;
+                    for (auto [p, c] : g.edges)
+                        if (c == m && !doomed.contains(p)) all = false;
                     if (all) doomed.insert(m), grew = true;
                 }
             }
@@ -325,10 +336,9 @@ struct StoreModel {
             structures[from];
             return 0;
         }
-        auto g = graphOf(structures);
-        g[to] = g[from];
-        g[from].clear();
-        if (cyclic(g)) return errors::StructureCycle;
+        Graph g = graphOf(structures);
+        g.moveChildren(from, to);
+        if (g.cyclic()) return errors::StructureCycle;
         std::vector<Element> moved;
         if (structures.contains(from)) moved = structures[from], structures[from].clear();
         structures[to] = moved;
@@ -343,11 +353,9 @@ struct StoreModel {
     // the result, which keeps its own posting; nothing to move, nothing changes.
     int changeReferences(int from, int to) {
         if (from == to) return 0;
-        auto g = graphOf(structures);
-        g[to];
-        for (auto& [id, children] : g)
-            if (children.erase(from)) children.insert(to);
-        if (cyclic(g)) return errors::StructureCycle;
+        Graph g = graphOf(structures);
+        g.redirect(from, to);
+        if (g.cyclic()) return errors::StructureCycle;
         if (!referenced(from) && !isPosted(from)) return 0;
         structures[to];
         for (auto& [id, elements] : structures)
@@ -368,12 +376,10 @@ struct StoreModel {
             structures[from];
             return 0;
         }
-        auto g = graphOf(structures);
-        g[to] = g[from];
-        g.erase(from);
-        for (auto& [id, children] : g)
-            if (children.erase(from)) children.insert(to);
-        if (cyclic(g)) return errors::StructureCycle;
+        Graph g = graphOf(structures);
+        g.moveChildren(from, to);
+        g.redirect(from, to);
+        if (g.cyclic()) return errors::StructureCycle;
         changeIdentifier(from, to);
         changeReferences(from, to);
         if (open != from) structures.erase(from);
