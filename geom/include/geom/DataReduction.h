@@ -79,12 +79,12 @@ struct CurveReduction {
 /// the changed interval. A group that fails is retried knot by knot; a knot that fails is not
 /// tried again until a global refit to the original succeeds. A denser final measurement
 /// (measureDeviation) checks the result; should it find the tolerance broken, the result steps
-/// back to the last accepted state that keeps it (of the last 16; else to the original). A rational curve is reduced in homogeneous
-/// space by the removal loop (freeKnots and batch do not apply): the sequences w P and w share
-/// the knots, and a removal is kept only if a bound on the Euclidean distance holds (the
-/// reduced spline refined onto the original knots: |C - C'| <= max_j |dX_j - P_i dw_j| / min w'
-/// over the coefficients that reach each parameter), with every weight kept positive; the final
-/// measurement checks it. Throws GeometryError for bad options.
+/// back to the last accepted state that keeps it (of the last 16; else to the original). A rational curve is
+/// reduced in homogeneous space by the removal loop (freeKnots and batch do not apply): the sequences w P and
+/// w share the knots, and a removal is kept only if a bound on the Euclidean distance holds (the reduced
+/// spline refined onto the original knots: |C - C'| <= max_j |dX_j - P_i dw_j| / min w' over the coefficients
+/// that reach each parameter), with every weight kept positive; the final measurement checks it. Throws
+/// GeometryError for bad options.
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options);
 
 /// Which knot vectors of a surface to reduce; Both reduces u, then v.
