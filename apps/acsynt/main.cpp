@@ -7,8 +7,9 @@
 #include "phigs/vk/WorkstationDisplay.h"
 
 #ifdef ACSYNT_HAVE_WINDOW
-#include "phigs/vk/WindowWorkstation.h"
+#include "acsynt/session/WindowPresentation.h"
 #include "phigs/window/GlfwInputSource.h"
+#include "phigs/window/GlfwWindow.h"
 #endif
 
 #include <getopt.h>
@@ -19,6 +20,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 namespace {
@@ -46,7 +48,10 @@ void usage(std::ostream& out) {
            "                 files a script names stay inside it\n"
            "  --record FILE  write the session as a script that replays it\n"
            "  --window       interactive session in a GLFW window\n"
-           "  --size WxH     screen size in pixels, 4:3 like the display surface (default 1024x768)\n"
+           "  --size WxH     screen size in pixels (default 1024x768); a script's must be 4:3 like the\n"
+           "                 display surface, a window's any shape (it also follows the window's size)\n"
+           "environment: PHIGS_VK_VALIDATION=1 turns the Vulkan validation layer on (off by default)\n"
+           "             and prints every message; PHIGS_VK_DEVICE=lavapipe|hardware picks the device\n"
            "exit status: 0 every line succeeded, 1 the session could not run, 2 bad options,\n"
            "             3 some lines failed (the last line printed says how many)\n";
 }
@@ -56,8 +61,8 @@ bool parseSize(const char* text, int& width, int& height) {
     const auto [afterWidth, ec1] = std::from_chars(text, end, width);
     if (ec1 != std::errc() || afterWidth == end || *afterWidth != 'x') return false;
     const auto [afterHeight, ec2] = std::from_chars(afterWidth + 1, end, height);
-    return ec2 == std::errc() && afterHeight == end && width >= 160 && height >= 120 && width <= 1024 &&
-           height <= 768;
+    return ec2 == std::errc() && afterHeight == end && width >= 160 && height >= 120 && width <= 4096 &&
+           height <= 4096;
 }
 
 /// Why a file cannot be written at `path` (empty when it can): a directory, or a folder that
@@ -122,7 +127,7 @@ std::optional<Options> parse(int argc, char** argv) {
                 break;
             case 'z':
                 if (!parseSize(optarg, o.width, o.height)) {
-                    std::cerr << "acsynt: --size wants WxH within 160x120 .. 1024x768, not '" << optarg
+                    std::cerr << "acsynt: --size wants WxH within 160x120 .. 4096x4096, not '" << optarg
                               << "'\n";
                     return std::nullopt;
                 }
@@ -179,6 +184,52 @@ int finish(acsynt::Session& session, const Options& o) {
 
 }  // namespace
 
+/// Runs the session on its one display (vk::WorkstationDisplay on the workstation's target):
+/// headless, the script's snapshots; in a window, a picture whenever the workstation's picture
+/// changed or the window lost it, the layout following the window's size. Between events the
+/// window blocks in the input source's wait.
+int runSession(const Options& options, acsynt::SessionSettings settings) {
+    phigs::vk::ContextSettings defaults;
+    defaults.validation = false;  // speed; PHIGS_VK_VALIDATION=1 turns it on
+    phigs::vk::DisplaySettings surface;
+    surface.width = std::uint32_t(settings.width);
+    surface.height = std::uint32_t(settings.height);
+    std::unique_ptr<phigs::InputSource> source;
+#ifdef ACSYNT_HAVE_WINDOW
+    std::unique_ptr<phigs::GlfwWindow> window;
+#endif
+    if (options.window) {
+#ifdef ACSYNT_HAVE_WINDOW
+        window = std::make_unique<phigs::GlfwWindow>(surface.width, surface.height, "ACSYNT B-SPLINE MODULE");
+        source = std::make_unique<phigs::GlfwInputSource>(*window);
+        settings.workstationType = phigs::WorkstationType::Window;
+        defaults.device = phigs::vk::DevicePreference::Hardware;
+        surface.window = window.get();
+#else
+        std::cerr << "acsynt: built without the GLFW window source\n";
+        return kExitUsage;
+#endif
+    } else {
+        source = std::make_unique<phigs::ScriptInputSource>(
+            phigs::ScriptInputSource::fromFile(options.script, acsynt::Session::directives()));
+    }
+    acsynt::Session session(settings, *source);
+    phigs::vk::ContextSettings context = phigs::vk::ContextSettings::fromEnvironment(defaults);
+    context.printMessages = context.validation;
+    phigs::vk::WorkstationDisplay display(session.workstation(), context, surface);
+    session.setSnapshot([&](const std::filesystem::path& file) { phigs::writePng(display.capture(), file); });
+    if (!options.window) {
+        session.run();
+        return finish(session, options);
+    }
+#ifdef ACSYNT_HAVE_WINDOW
+    acsynt::WindowPresentation presentation(session, *window, display);
+    while (presentation.step(std::chrono::seconds(1))) {
+    }
+#endif
+    return finish(session, options);
+}
+
 int main(int argc, char** argv) {
     const auto options = parse(argc, argv);
     if (!options) return kExitUsage;
@@ -188,44 +239,7 @@ int main(int argc, char** argv) {
     settings.outputDirectory = options->output;
     settings.stopAtFirstError = !options->window && !options->keepGoing;
     try {
-        if (!options->window) {
-            auto script = phigs::ScriptInputSource::fromFile(options->script, acsynt::Session::directives());
-            acsynt::Session session(settings, script);
-            phigs::vk::ContextSettings defaults;
-            defaults.validation = false;
-            phigs::vk::DisplaySettings surface;
-            surface.width = std::uint32_t(settings.width);
-            surface.height = std::uint32_t(settings.height);
-            phigs::vk::WorkstationDisplay display(
-                session.workstation(), phigs::vk::ContextSettings::fromEnvironment(defaults), surface);
-            session.setSnapshot([&](const std::filesystem::path& file) {
-                display.update();
-                phigs::writePng(display.image(), file);
-            });
-            session.run();
-            return finish(session, *options);
-        }
-#ifdef ACSYNT_HAVE_WINDOW
-        settings.workstationType = phigs::WorkstationType::Window;
-        phigs::vk::Context context(phigs::vk::WindowWorkstation::contextSettings());
-        phigs::vk::WindowWorkstation window(context, std::uint32_t(settings.width),
-                                            std::uint32_t(settings.height), "ACSYNT B-SPLINE MODULE");
-        phigs::GlfwInputSource source(window.window());
-        acsynt::Session session(settings, source);
-        session.setSnapshot([&](const std::filesystem::path& file) {
-            phigs::Image image;
-            window.draw(session.picture(), &image);
-            phigs::writePng(image, file);
-        });
-        session.setPresenter([&](const phigs::DrawList& list) { window.draw(list); });
-        window.draw(session.picture());
-        while (!window.shouldClose() && session.step(std::chrono::milliseconds(30))) {
-        }
-        return finish(session, *options);
-#else
-        std::cerr << "acsynt: built without the GLFW window source\n";
-        return kExitUsage;
-#endif
+        return runSession(*options, settings);
     } catch (const std::exception& e) {
         std::cerr << "acsynt: " << e.what() << "\n";
         return kExitFatal;

@@ -37,7 +37,8 @@ TEST_CASE("input echo: a slider maps position to value along its long axis", "[i
     CHECK(upright.knobAt(7.5) == 25.0);
 }
 
-TEST_CASE("input echo: slider drags set values, clicks elsewhere (panels too) pick", "[input]") {
+TEST_CASE("input echo: slider drags set values while dragged, clicks elsewhere (panels too) pick",
+          "[input]") {
     WindowEventMapper m;
     EchoLayout layout;
     layout.panels.push_back({3, {0, 100, 0, 40, 0, 1}, {"Open", "Save"}});
@@ -45,9 +46,14 @@ TEST_CASE("input echo: slider drags set values, clicks elsewhere (panels too) pi
     m.setLayout(layout);
     auto a = m.handle(ButtonPress{Button::Left, {50, 30}, false});
     REQUIRE(a);
-    CHECK(std::holds_alternative<action::Pick>(a->what));  // WorkstationInput makes it the choice
-    CHECK_FALSE(m.handle(ButtonPress{Button::Left, {10, 55}, false}));  // starts the drag
-    m.handle(CursorMove{{40, 55}});
+    CHECK(std::holds_alternative<action::Pick>(a->what));      // WorkstationInput makes it the choice
+    a = m.handle(ButtonPress{Button::Left, {10, 55}, false});  // starts the drag: the value there
+    REQUIRE(a);
+    CHECK(std::get<action::Valuator>(a->what).value == 10.0);
+    a = m.handle(CursorMove{{40, 55}});  // before the release
+    REQUIRE(a);
+    CHECK(std::get<action::Valuator>(a->what).value == 40.0);
+    CHECK_FALSE(m.handle(CursorMove{{40, 59}}));  // across the track: the value stays
     a = m.handle(ButtonRelease{Button::Left, {75, 58}});
     REQUIRE(a);
     CHECK(std::get<action::Valuator>(a->what).device == 2);

@@ -46,6 +46,8 @@ TEST_CASE("input window: typed text with edits becomes a string on Enter", "[inp
     REQUIRE(a);
     CHECK(std::get<action::String>(a->what).text == "wing");
     CHECK(m.pendingText().empty());
+    CHECK(m.stringEcho().edits == 9);  // 5 + 1 + 1 + 1 characters and edits, and the Enter
+    CHECK_FALSE(m.stringEcho().cancelled);
 }
 
 TEST_CASE("input window: Escape breaks, function keys choose", "[input]") {
@@ -55,6 +57,10 @@ TEST_CASE("input window: Escape breaks, function keys choose", "[input]") {
     REQUIRE(a);
     CHECK(std::holds_alternative<action::Break>(a->what));
     CHECK(m.pendingText().empty());
+    CHECK(m.stringEcho().cancelled);  // the echo area says so until the next character
+    m.handle(Character{U'b'});
+    CHECK_FALSE(m.stringEcho().cancelled);
+    CHECK(m.pendingText() == "b");
     a = m.handle(KeyPress{Key::Function, 3});
     REQUIRE(a);
     CHECK(std::get<action::Choice>(a->what).choice == 3);

@@ -146,6 +146,28 @@ TEST_CASE("workstation tables, window, viewport and HLHSR mode with their errors
     CHECK(list.background == glm::vec3(0.2f));
 }
 
+TEST_CASE("a window's display surface follows its drawable; the whole-surface viewport with it", "[ws]") {
+    Phigs phigs;
+    phigs.open();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    CHECK(ws.displaySize() == glm::dvec2(1024, 768));
+    const std::uint64_t before = ws.regenerations();
+    ws.display();
+    ws.setDisplaySize({1600, 900});
+    CHECK(ws.displaySize() == glm::dvec2(1600, 900));
+    CHECK(ws.description().displaySize == glm::dvec2(1600, 900));
+    const DrawList& wide = ws.display();
+    CHECK(ws.regenerations() > before + 1);  // a new size is a new picture
+    CHECK(wide.displaySize == glm::dvec2(1600, 900));
+    CHECK(wide.viewportMax == glm::dvec3(1600, 900, 1));   // it covered the surface: it still does
+    ws.setWorkstationViewport({0, 0, 0}, {1200, 900, 1});  // allowed now, refused at 1024 x 768
+    ws.setDisplaySize({800, 600});
+    CHECK(ws.display().viewportMax == glm::dvec3(1200, 900, 1));  // a chosen viewport stays
+    CHECK(errorOf([&] { ws.setDisplaySize({0, 600}); }) == errors::InvalidViewport);
+    CHECK(errorOf([&] { ws.setDisplaySize({800, -1}); }) == errors::InvalidViewport);
+    CHECK(ws.displaySize() == glm::dvec2(800, 600));  // unchanged by the refusals
+}
+
 TEST_CASE("deferral and modification modes, the state of visual representation, update", "[ws]") {
     Phigs phigs;
     phigs.open();

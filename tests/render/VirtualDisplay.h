@@ -17,15 +17,16 @@ extern char** environ;
 
 namespace render_test {
 
-/// An Xvfb server on a free display number for the lifetime of the object.
+/// An Xvfb server on a free display number for the lifetime of the object; `screen` is Xvfb's
+/// WxHxDEPTH (windows larger than the screen are clipped by the server).
 class VirtualDisplay {
 public:
-    VirtualDisplay() {
+    explicit VirtualDisplay(const char* screen = "640x480x24") {
         int fds[2];
         REQUIRE(pipe(fds) == 0);
         const std::string fd = std::to_string(fds[1]);
-        const char* argv[] = {"Xvfb",       "-displayfd", fd.c_str(), "-screen",  "0",
-                              "640x480x24", "-nolisten",  "tcp",      "-noreset", nullptr};
+        const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen",  "0",
+                              screen, "-nolisten",  "tcp",      "-noreset", nullptr};
         posix_spawn_file_actions_t actions;
         posix_spawn_file_actions_init(&actions);
         posix_spawn_file_actions_addclose(&actions, fds[0]);

@@ -10,6 +10,7 @@
 
 #if defined(PHIGS_HAVE_XTEST)
 #include "phigs/window/GlfwInputSource.h"
+#include "phigs/window/GlfwWindow.h"
 
 #include <GLFW/glfw3.h>
 
@@ -52,14 +53,15 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
     Phigs phigs;
     phigs.open();
     Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    GlfwWindow window(256, 192, "phigs echo test");
+    // The test keeps the workstation's 1024 x 768 display surface (not the window's drawable),
+    // shown at a quarter pixel per device unit.
     vk::DisplaySettings settings;
-    settings.width = 256;
-    settings.height = 192;
-    settings.title = "phigs echo test";
+    settings.window = &window;
     settings.readBack = true;
     vk::WorkstationDisplay display(ws, lavapipeWithValidation(), settings);
     {
-        GlfwInputSource source(display.window()->window());
+        GlfwInputSource source(window);
         InputQueue queue;
         WorkstationInteraction interaction(ws, source, queue);
         interaction.setSurfaceSize(display.width(), display.height());
@@ -90,7 +92,7 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
         // Let the server map the window before pointing at it.
         const auto until = std::chrono::steady_clock::now() + 500ms;
         while (std::chrono::steady_clock::now() < until) glfwWaitEventsTimeout(0.02);
-        Pointer pointer(display.window()->window());
+        Pointer pointer(window.handle());
         pointer.moveTo({50, 62});  // Body
         pointer.button(true);
         pointer.button(false);
@@ -99,15 +101,22 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
         CHECK(chosen->inputClass == InputClass::Choice);
         CHECK(std::get<ChoiceMeasure>(chosen->measure).choice == 3);
 
-        pointer.moveTo({110, 160});  // drag the knob to x = 168: 8.5
-        pointer.button(true);
-        pointer.moveTo({140, 161});
-        pointer.moveTo({168, 160});
-        pointer.button(false);
-        const auto valued = queue.awaitEvent(3s);
-        REQUIRE(valued);
-        CHECK(valued->inputClass == InputClass::Valuator);
-        CHECK(std::get<ValuatorMeasure>(valued->measure).value == Approx(8.5));
+        // Drag the knob to x = 168 (8.5): the value follows the pointer before the release.
+        auto valueAfter = [&](auto act) {
+            act();
+            const auto valued = queue.awaitEvent(3s);
+            REQUIRE(valued);
+            CHECK(valued->inputClass == InputClass::Valuator);
+            return std::get<ValuatorMeasure>(valued->measure).value;
+        };
+        CHECK(valueAfter([&] {
+                  pointer.moveTo({110, 160});
+                  pointer.button(true);
+              }) == Approx(1.25));
+        CHECK(valueAfter([&] { pointer.moveTo({140, 161}); }) == Approx(5.0));
+        CHECK(valueAfter([&] { pointer.moveTo({168, 160}); }) == Approx(8.5));
+        pointer.button(false);  // the value at the release is the one already delivered
+        CHECK_FALSE(queue.awaitEvent(300ms));
 
         const Image after = show(3, 8.5);
         CHECK(shows(after, {14, 20}, style.box));

@@ -4,7 +4,8 @@
 #include "RenderTestSupport.h"
 #include "VirtualDisplay.h"
 #include "phigs/vk/OffscreenWorkstation.h"
-#include "phigs/vk/WindowWorkstation.h"
+#include "phigs/vk/WindowTarget.h"
+#include "phigs/window/GlfwWindow.h"
 
 #include <unistd.h>
 
@@ -31,11 +32,11 @@ DrawList knownScene() {
 
 }  // namespace
 
-TEST_CASE("window: a GLFW window workstation presents the same picture as the offscreen one",
-          "[render][window]") {
+TEST_CASE("window: a window target presents the same picture as the offscreen one", "[render][window]") {
     VirtualDisplay display;
+    GlfwWindow window(200, 160, "phigs window test");
     std::vector<std::string> shutdownLog;
-    vk::ContextSettings settings = vk::WindowWorkstation::contextSettings(lavapipeWithValidation());
+    vk::ContextSettings settings = vk::WindowTarget::contextSettings(window, lavapipeWithValidation());
     settings.messageLog = &shutdownLog;
     {
         vk::Context context(settings);
@@ -47,32 +48,35 @@ TEST_CASE("window: a GLFW window workstation presents the same picture as the of
                 vk::OffscreenWorkstation ws(context, 200, 160);
                 offscreen = ws.draw(list);
             }
-            vk::WindowWorkstation window(context, 200, 160, "phigs window test");
+            vk::WindowTarget target(context, window);
             Image presented;
-            REQUIRE(window.draw(list, &presented));
+            REQUIRE(target.draw(list, &presented));
             REQUIRE(presented.width == 200);
             REQUIRE(presented.height == 160);
             CHECK(differingPixels(presented, offscreen, 2) == 0);
             CHECK(near(at(presented, 100, 100), 255, 128, 0, 2));
             CHECK(near(at(presented, 5, 5), 0, 0, 76, 2));
             // An unchanged second frame in the window uploads nothing either.
-            REQUIRE(window.draw(list));
-            CHECK(window.renderer().lastFrame().uploads == 0);
+            REQUIRE(target.draw(list));
+            CHECK(target.renderer().lastFrame().uploads == 0);
 
             // Resize: the swapchain follows and the picture is drawn at the new size.
+            const std::uint64_t damage = window.damage();
             window.resize(120, 100);
             Image resized;
             for (int attempt = 0; attempt < 20 && resized.width != 120; ++attempt) {
-                REQUIRE(window.draw(list, &resized));
+                window.pollEvents();
+                REQUIRE(target.draw(list, &resized));
                 usleep(20000);
             }
+            CHECK(window.damage() > damage);  // the window says its picture was lost
             CHECK(resized.width == 120);
             CHECK(resized.height == 100);
             CHECK(near(at(resized, 60, 60), 255, 128, 0, 2));
 
+            CHECK_FALSE(window.shouldClose());
             window.requestClose();
             CHECK(window.shouldClose());
-            CHECK_FALSE(window.draw(list));
         }
         requireNoValidationMessages(context);
     }

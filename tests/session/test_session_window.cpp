@@ -6,10 +6,11 @@
 
 #ifdef ACSYNT_HAVE_WINDOW
 
+#include "acsynt/session/WindowPresentation.h"
 #include "geom/Evaluate.h"
-#include "phigs/vk/Context.h"
-#include "phigs/vk/WindowWorkstation.h"
+#include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/window/GlfwInputSource.h"
+#include "phigs/window/GlfwWindow.h"
 
 #include "../render/VirtualDisplay.h"
 
@@ -53,33 +54,31 @@ private:
 TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and slider drive DEFINE POINT") {
     using namespace phigs::window_event;
     render_test::VirtualDisplay display;
-    phigs::vk::ContextSettings base;
-    base.device = phigs::vk::DevicePreference::Lavapipe;
-    base.validation = false;
-    phigs::vk::Context context(phigs::vk::WindowWorkstation::contextSettings(base));
-    phigs::vk::WindowWorkstation window(context, session_test::width, session_test::height, "acsynt test");
-    phigs::GlfwInputSource source(window.window());
-    acsynt::Session session(session_test::Driver::settings("window"), source);
-    int frames = 0;
-    session.setPresenter([&](const phigs::DrawList& list) {
-        window.draw(list);
-        ++frames;
-    });
+    phigs::GlfwWindow window(session_test::width, session_test::height, "acsynt test");
+    phigs::GlfwInputSource source(window);
+    acsynt::SessionSettings settings = session_test::Driver::settings("window");
+    settings.workstationType = phigs::WorkstationType::Window;
+    acsynt::Session session(settings, source);
+    phigs::vk::DisplaySettings surface;
+    surface.window = &window;
+    phigs::vk::WorkstationDisplay shown(session.workstation(), render_test::lavapipeWithValidation(),
+                                        surface);
+    acsynt::WindowPresentation presentation(session, window, shown);
     const acsynt::ScreenLayout& layout = session.layout();
 
     auto settle = [&] {
-        for (int i = 0; i < 6; ++i) session.step(std::chrono::milliseconds(5));
+        for (int i = 0; i < 6; ++i) presentation.step(std::chrono::milliseconds(5));
     };
 #if defined(PHIGS_HAVE_XTEST)
     // Clicks are real X events; the session's steps poll GLFW until the click has been handled.
-    Pointer pointer(window.window());
+    Pointer pointer(window.handle());
     auto click = [&](glm::dvec2 p) {
         const std::size_t before = session.log().size();
         pointer.moveTo(p);
         pointer.button(true);
         pointer.button(false);
         for (int i = 0; i < 2000 && session.log().size() == before; ++i)  // up to 10 s when loaded
-            session.step(std::chrono::milliseconds(5));
+            presentation.step(std::chrono::milliseconds(5));
         settle();
     };
 #else
@@ -139,14 +138,15 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
     const glm::dvec2 from{slider.x0 + 2, slider.centre().y},
         to{slider.x0 + 0.25 * (slider.x1 - slider.x0), slider.centre().y};
 #if defined(PHIGS_HAVE_XTEST)
-    const double wBefore = session.reference()->w;
+    const phigs::ValuatorSlider dragged{2, slider.echoVolume(), 0, 1};
+    const double wAtRelease = patch->w0 + dragged.valueAt(to) * (patch->w1 - patch->w0);
     pointer.moveTo(from);
     pointer.button(true);
-    for (int i = 0; i < 4; ++i) session.step(std::chrono::milliseconds(5));
+    for (int i = 0; i < 4; ++i) presentation.step(std::chrono::milliseconds(5));
     pointer.moveTo(to);
     pointer.button(false);
-    for (int i = 0; i < 2000 && session.reference()->w == wBefore; ++i)
-        session.step(std::chrono::milliseconds(5));
+    for (int i = 0; i < 2000 && std::abs(session.reference()->w - wAtRelease) > 1e-12; ++i)
+        presentation.step(std::chrono::milliseconds(5));
     settle();
 #else
     source.post(ButtonPress{Button::Left, from, false});
@@ -159,11 +159,12 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
 
     click(layout.padButton(10).centre());  // DONE
     CHECK(session.message().rfind("REFERENCE POINT U = ", 0) == 0);
-    CHECK(frames > 10);
+    CHECK(presentation.frames() > 10);
     for (const auto& line : session.log()) {
         INFO(line);
         CHECK(line.rfind("ERROR: ", 0) != 0);
     }
+    render_test::requireNoValidationMessages(shown.context());
 }
 
 #endif

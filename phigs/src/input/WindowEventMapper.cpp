@@ -54,7 +54,8 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                     for (const ValuatorSlider& s : layout_.sliders)
                         if (s.contains(e.position)) {
                             dragging_ = &s;
-                            return std::nullopt;
+                            dragValue_ = s.valueAt(e.position);
+                            return make(action::Valuator{s.device, dragValue_}, "slider");
                         }
                 }
                 if (e.button == Button::Left && e.shift) {
@@ -66,34 +67,40 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                 if (e.button == Button::Right) return make(action::Locate{e.position, 1}, "right click");
                 return std::nullopt;
             } else if constexpr (std::is_same_v<T, CursorMove>) {
+                if (dragging_) return dragTo(e.position);
                 if (!stroking_) return make(action::Move{e.position, 1}, "pointer move");
                 if (glm::distance(stroke_.back(), e.position) >= strokeSpacing) stroke_.push_back(e.position);
                 return std::nullopt;
             } else if constexpr (std::is_same_v<T, ButtonRelease>) {
                 if (dragging_ && e.button == Button::Left) {
-                    const ValuatorSlider& s = *dragging_;
+                    auto last = dragTo(e.position);
                     dragging_ = nullptr;
-                    return make(action::Valuator{s.device, s.valueAt(e.position)}, "slider");
+                    return last;
                 }
                 if (!stroking_ || e.button != Button::Left) return std::nullopt;
                 stroking_ = false;
                 if (stroke_.back() != e.position) stroke_.push_back(e.position);
                 return make(action::Stroke{std::move(stroke_), 1}, "stroke drag");
             } else if constexpr (std::is_same_v<T, Character>) {
-                appendUtf8(text_, e.codepoint);
+                std::string text = echo_.text;
+                appendUtf8(text, e.codepoint);
+                edit(std::move(text), false);
                 return std::nullopt;
             } else {
                 switch (e.key) {
                     case Key::Enter: {
-                        std::string done = std::move(text_);
-                        text_.clear();
+                        std::string done = echo_.text;
+                        edit({}, false);
                         return make(action::String{done, 1}, "typed '" + done + "'");
                     }
-                    case Key::Backspace:
-                        popUtf8(text_);
+                    case Key::Backspace: {
+                        std::string text = echo_.text;
+                        popUtf8(text);
+                        edit(std::move(text), false);
                         return std::nullopt;
+                    }
                     case Key::Escape:
-                        text_.clear();
+                        edit({}, true);
                         stroking_ = false;
                         dragging_ = nullptr;
                         return make(action::Break{}, "escape");
@@ -105,6 +112,19 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
             }
         },
         event);
+}
+
+std::optional<InputAction> WindowEventMapper::dragTo(glm::dvec2 position) {
+    const double value = dragging_->valueAt(position);
+    if (value == dragValue_) return std::nullopt;  // motion along the knob's axis only
+    dragValue_ = value;
+    return make(action::Valuator{dragging_->device, value}, "slider");
+}
+
+void WindowEventMapper::edit(std::string text, bool cancelled) {
+    echo_.text = std::move(text);
+    echo_.cancelled = cancelled;
+    ++echo_.edits;
 }
 
 }  // namespace phigs

@@ -274,8 +274,11 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
                                                 std::pair<InputStatus, Measure>* result) {
     std::optional<InputAction> a = source_.next(timeout);
     if (!a) return Pumped::Nothing;
+    if (const auto* wait = std::get_if<action::Wait>(&a->what)) {
+        if (!wait->surfaceChanged) history_.push_back(*a);
+        return Pumped::Waited;
+    }
     history_.push_back(*a);
-    if (std::holds_alternative<action::Wait>(a->what)) return Pumped::Waited;
     if (const auto* d = std::get_if<action::Directive>(&a->what)) {
         if (directiveHandler_) directiveHandler_(*d, *a);
         return Pumped::Delivered;

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <stdexcept>
 #include <string_view>
 
@@ -61,7 +62,8 @@ ContextSettings ContextSettings::fromEnvironment(ContextSettings defaults) {
     return defaults;
 }
 
-Context::Context(const ContextSettings& settings) : messageLog_(settings.messageLog) {
+Context::Context(const ContextSettings& settings)
+    : messageLog_(settings.messageLog), printMessages_(settings.printMessages) {
     std::vector<const char*> layers;
     std::vector<const char*> extensions = settings.instanceExtensions;
     if (settings.validation) {
@@ -267,6 +269,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(VkDebugUtilsMessageSeveri
     text += data->pMessage ? data->pMessage : "";
     std::lock_guard lock(context->messagesMutex_);
     if (context->messageLog_) context->messageLog_->push_back(text);
+    if (context->printMessages_) std::cerr << "Vulkan validation " << text << "\n";
     context->messages_.push_back(std::move(text));
     return VK_FALSE;
 }

@@ -8,8 +8,18 @@ namespace phigs::vk {
 
 namespace {
 
-ContextSettings forType(WorkstationType type, const ContextSettings& settings) {
-    return type == WorkstationType::Window ? WindowWorkstation::contextSettings(settings) : settings;
+WindowSurface& windowOf(const Workstation& workstation, const DisplaySettings& settings) {
+    if (!settings.window)
+        throw std::invalid_argument("WorkstationDisplay: window workstation " +
+                                    std::to_string(workstation.id()) +
+                                    " needs a window (DisplaySettings::window)");
+    return *settings.window;
+}
+
+ContextSettings forType(const Workstation& workstation, const ContextSettings& context,
+                        const DisplaySettings& settings) {
+    if (workstation.type() != WorkstationType::Window) return context;
+    return WindowTarget::contextSettings(windowOf(workstation, settings), context);
 }
 
 }  // namespace
@@ -17,7 +27,7 @@ ContextSettings forType(WorkstationType type, const ContextSettings& settings) {
 WorkstationDisplay::WorkstationDisplay(Workstation& workstation, const ContextSettings& context,
                                        DisplaySettings settings)
     : workstation_(workstation),
-      ownContext_(std::make_unique<Context>(forType(workstation.type(), context))),
+      ownContext_(std::make_unique<Context>(forType(workstation, context, settings))),
       context_(ownContext_.get()) {
     open(std::move(settings));
 }
@@ -50,12 +60,12 @@ void WorkstationDisplay::open(DisplaySettings settings) {
             hardcopy_ = std::make_unique<HardcopyWorkstation>(*context_, width, height, settings.file);
             break;
         case WorkstationType::Window:
-            window_ = std::make_unique<WindowWorkstation>(*context_, width, height, settings.title);
+            window_ = std::make_unique<WindowTarget>(*context_, windowOf(workstation_, settings));
             break;
     }
 }
 
-bool WorkstationDisplay::update() {
+const DrawList& WorkstationDisplay::shown() {
     const DrawList* shown = &workstation_.display();
     if (!echo_.empty()) {
         // A copy with the echoed items highlighted: highlighting is a draw record flag, so the
@@ -66,7 +76,11 @@ bool WorkstationDisplay::update() {
                 item.highlighted = true;
         shown = &echoed_;
     }
-    const DrawList& picture = *shown;
+    return *shown;
+}
+
+bool WorkstationDisplay::update() {
+    const DrawList& picture = shown();
     if (offscreen_) {
         image_ = offscreen_->draw(picture);
         return true;
@@ -79,6 +93,16 @@ bool WorkstationDisplay::update() {
     return window_->draw(picture, readBack_ ? &image_ : nullptr);
 }
 
+const Image& WorkstationDisplay::capture() {
+    if (!window_ || readBack_) {
+        update();
+        return image_;
+    }
+    if (!window_->draw(shown(), &image_))
+        throw std::runtime_error("WorkstationDisplay: the window has no picture to capture (minimised)");
+    return image_;
+}
+
 Renderer& WorkstationDisplay::renderer() {
     if (offscreen_) return offscreen_->renderer();
     if (hardcopy_) return hardcopy_->renderer();
@@ -88,13 +112,13 @@ Renderer& WorkstationDisplay::renderer() {
 std::uint32_t WorkstationDisplay::width() const {
     if (offscreen_) return offscreen_->width();
     if (hardcopy_) return hardcopy_->width();
-    return window_->extent().width;
+    return window_->drawableSize().width;
 }
 
 std::uint32_t WorkstationDisplay::height() const {
     if (offscreen_) return offscreen_->height();
     if (hardcopy_) return hardcopy_->height();
-    return window_->extent().height;
+    return window_->drawableSize().height;
 }
 
 WorkstationMapping WorkstationDisplay::mapping() {

@@ -1,4 +1,4 @@
-// The only file that includes GLFW for input.
+// GLFW for input: the window callbacks feed the event mapper.
 #include "phigs/window/GlfwInputSource.h"
 
 #include <GLFW/glfw3.h>
@@ -86,6 +86,11 @@ GlfwInputSource::GlfwInputSource(GLFWwindow* window) : window_(window) {
     glfwSetCharCallback(window_, onCharacter);
 }
 
+GlfwInputSource::GlfwInputSource(GlfwWindow& window) : GlfwInputSource(window.handle()) {
+    owner_ = &window;
+    damageSeen_ = window.damage();
+}
+
 GlfwInputSource::~GlfwInputSource() {
     glfwSetMouseButtonCallback(window_, nullptr);
     glfwSetCursorPosCallback(window_, nullptr);
@@ -105,6 +110,13 @@ std::optional<InputAction> GlfwInputSource::next(std::chrono::milliseconds timeo
             glfwWaitEventsTimeout(static_cast<double>(timeout.count()) / 1000.0);
         else
             glfwPollEvents();
+    }
+    if (pending_.empty() && owner_ && owner_->damage() != damageSeen_) {
+        damageSeen_ = owner_->damage();
+        InputAction wake;
+        wake.what = action::Wait{true};
+        wake.text = "window resized or exposed";
+        return wake;
     }
     if (pending_.empty()) return std::nullopt;
     InputAction a = std::move(pending_.front());

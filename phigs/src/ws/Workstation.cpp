@@ -246,6 +246,20 @@ void Workstation::setWorkstationViewport(const glm::dvec3& min, const glm::dvec3
     changed();
 }
 
+void Workstation::setDisplaySize(glm::dvec2 size) {
+    if (!(size.x > 0.0 && size.y > 0.0))
+        raise(log_, errors::InvalidViewport, "SET DISPLAY SIZE",
+              std::to_string(size.x) + " x " + std::to_string(size.y) + " device units");
+    if (size == description_.displaySize) return;
+    const glm::dvec2 old = description_.displaySize;
+    const bool whole = tables_.viewportMin.x == 0.0 && tables_.viewportMin.y == 0.0 &&
+                       tables_.viewportMax.x == old.x && tables_.viewportMax.y == old.y;
+    description_.displaySize = size;
+    tables_.displaySize = size;
+    if (whole) tables_.viewportMax = {size.x, size.y, tables_.viewportMax.z};
+    changed();
+}
+
 void Workstation::setHighlightingFilter(const NameSetFilter& filter) {
     filters_.highlight = filter;
     changed();

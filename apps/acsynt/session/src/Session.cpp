@@ -43,15 +43,7 @@ std::set<std::string> Session::directives() {
 void Session::setupWorkstation() {
     workstation_ = &phigs_.openWorkstation(1, settings_.workstationType);
     Workstation& ws = *workstation_;
-    // The screen shows the whole display surface: the viewport is all of it, the window has its shape.
-    const glm::dvec2 display = ws.description().displaySize;
-    if (std::abs(display.x * layout_.height - display.y * layout_.width) > display.x)
-        throw std::invalid_argument(
-            "a " + std::to_string(layout_.width) + " x " + std::to_string(layout_.height) +
-            " screen does not have the shape of the display surface (" + std::to_string(int(display.x)) +
-            " x " + std::to_string(int(display.y)) + ")");
-    ws.setWorkstationWindow({0, 0, 0}, {1, display.y / display.x, 1});
-    ws.setWorkstationViewport({0, 0, 0}, {display.x, display.y, 1});
+    fitWorkstation();
     ws.setHlhsrMode(1);
     ws.setPickFilter(NameSetFilter{{structures::pickableName, structures::buttonName}, {}});
     Light sun;
@@ -74,7 +66,45 @@ void Session::setupWorkstation() {
     ws.postStructure(structures::pad, 0.8);
     for (int d = 1; d <= 4; ++d) ws.postStructure(structures::sliders + d - 1, 0.8);
     ws.postStructure(structures::message, 0.9);
+    updateViews();
+}
+
+void Session::fitWorkstation() {
+    Workstation& ws = *workstation_;
+    if (layout_.width < 1 || layout_.height < 1)
+        throw std::invalid_argument("an empty screen of " + std::to_string(layout_.width) + " x " +
+                                    std::to_string(layout_.height) + " pixels");
+    // A window's display surface is its drawable, one device unit per pixel.
+    if (ws.type() == WorkstationType::Window)
+        ws.setDisplaySize({double(layout_.width), double(layout_.height)});
+    // The screen shows the whole display surface: the viewport is all of it, the window has its shape.
+    const glm::dvec2 display = ws.displaySize();
+    if (std::abs(display.x * layout_.height - display.y * layout_.width) > display.x)
+        throw std::invalid_argument(
+            "a " + std::to_string(layout_.width) + " x " + std::to_string(layout_.height) +
+            " screen does not have the shape of the display surface (" + std::to_string(int(display.x)) +
+            " x " + std::to_string(int(display.y)) + ")");
+    const double longer = std::max(display.x, display.y);
+    ws.setWorkstationWindow({0, 0, 0}, {display.x / longer, display.y / longer, 1});
+    ws.setWorkstationViewport({0, 0, 0}, {display.x, display.y, 1});
     mapping_.emplace(ws.display(), std::uint32_t(layout_.width), std::uint32_t(layout_.height));
+}
+
+void Session::resize(int width, int height) {
+    if (width == layout_.width && height == layout_.height) return;
+    const ScreenLayout before = layout_;
+    layout_ = ScreenLayout(width, height);
+    try {
+        fitWorkstation();
+    } catch (...) {
+        layout_ = before;
+        throw;
+    }
+    settings_.width = width;
+    settings_.height = height;
+    interaction_->setSurfaceSize(std::uint32_t(width), std::uint32_t(height));
+    initialiseSliders();
+    setMenu(menuTitle_, menuItems_);  // the panel's rows move with the layout; redraws the screen
     updateViews();
 }
 
@@ -97,21 +127,32 @@ void Session::setupDevices() {
     input_->initialise(InputClass::Choice, 2, pad);
     input_->setMode(InputClass::Choice, 2, OperatingMode::Event);
 
-    for (int d = 1; d <= 4; ++d) {
-        DeviceInitialisation v;
-        v.initial = ValuatorMeasure{d == 4 ? 1.0 : d == 3 ? -135.0 : 0.0};
-        v.promptEchoType = 2;
-        v.echoVolume = layout_.slider(d).echoVolume();
-        v.valuatorLow = sliderLow[d - 1];
-        v.valuatorHigh = sliderHigh[d - 1];
-        input_->initialise(InputClass::Valuator, d, v);
-        input_->setMode(InputClass::Valuator, d, OperatingMode::Event);
-    }
+    initialiseSliders();
 
     DeviceInitialisation s;
     s.initial = StringMeasure{};
     input_->initialise(InputClass::String, 1, s);
     input_->setMode(InputClass::String, 1, OperatingMode::Event);
+}
+
+void Session::initialiseSliders() {
+    for (int d = 1; d <= 4; ++d) {
+        // INITIALIZE VALUATOR needs REQUEST mode; the value now stays the initial one.
+        const InputDevice& now = input_->device(InputClass::Valuator, d);
+        const auto* value = std::get_if<ValuatorMeasure>(&now.current);
+        DeviceInitialisation v;
+        v.initial = value && now.setup.promptEchoType == 2 ? *value
+                                                           : ValuatorMeasure{d == 4   ? 1.0
+                                                                             : d == 3 ? -135.0
+                                                                                      : 0.0};
+        v.promptEchoType = 2;
+        v.echoVolume = layout_.slider(d).echoVolume();
+        v.valuatorLow = sliderLow[d - 1];
+        v.valuatorHigh = sliderHigh[d - 1];
+        input_->setMode(InputClass::Valuator, d, OperatingMode::Request);
+        input_->initialise(InputClass::Valuator, d, v);
+        input_->setMode(InputClass::Valuator, d, OperatingMode::Event);
+    }
 }
 
 void Session::setMenu(const std::string& menuTitle, std::vector<std::string> items) {
@@ -170,8 +211,29 @@ bool Session::step(std::chrono::milliseconds timeout) {
     }
     if (!finished_ && source_.exhausted() && queue_.size() == 0) finished_ = true;
     if (settings_.stopAtFirstError && failedLines_ > 0) finished_ = true;
-    if (present_) present_(picture());
+    followStringEcho();
     return !finished_;
+}
+
+void Session::followStringEcho() {
+    const StringEcho echo = source_.stringEcho();
+    if (echo.edits == echoEdits_) return;
+    echoEdits_ = echo.edits;
+    typed_ = echo.text;
+    if (echo.cancelled) {
+        awaiting_ = Awaiting::Nothing;  // Escape: the prompt is withdrawn, and the line says so
+        say("CANCELLED");
+        return;
+    }
+    drawScreen();
+}
+
+double Session::valuatorValue(int device) const {
+    return std::get<ValuatorMeasure>(input_->device(InputClass::Valuator, device).current).value;
+}
+
+std::string Session::messageLine() const {
+    return typed_.empty() ? message_ : message_ + "  > " + typed_ + "_";
 }
 
 void Session::handle(const EventReport& report) {

@@ -34,7 +34,7 @@ void Session::mapCurve(bool previewOnly) {
     const Model& model = models_.current();
     const Component& comp = model.components[std::size_t(reference_->component)];
     if (!previewOnly) say("CALCULATING INTERSECTIONS, PLEASE WAIT...");
-    if (!previewOnly && present_) present_(picture());
+    if (!previewOnly && showNow_) showNow_();
     geom::curvemap::CurveMapper mapper(comp.surface, comp.closedU, comp.closedW);
     geom::curvemap::Placement placement = placement_;
     placement.reference = {reference_->u, reference_->w};
@@ -96,7 +96,7 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
                                                : reductionDirection_ == "W" ? geom::ReductionDirection::V
                                                                             : geom::ReductionDirection::Both;
     if (count > 0) say("REMOVE " + std::to_string(count) + " KNOTS FROM EACH CROSS SECTION");
-    if (present_) present_(picture());
+    if (showNow_) showNow_();
     geom::SurfaceReduction reduced = geom::reduceSurface(comp.surface, direction, options);
     PatchList patches = buildPatches(reduced.surface);  // may throw: nothing is changed yet
 

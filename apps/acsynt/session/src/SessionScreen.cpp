@@ -169,7 +169,7 @@ void Session::drawScreen() {
                              colourAttr(ElementType::TextColour, {0.6, 0.75, 1.0}),
                              textAt(npc({m.x0 + 6, m.y0 + rowHeight * 0.5}), heading),
                              colourAttr(ElementType::TextColour, {1.0, 1.0, 0.55}),
-                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 1.5}), message_)};
+                             textAt(npc({m.x0 + 6, m.y0 + rowHeight * 1.5}), messageLine())};
     rewriteStructure(store, structures::message, msg);
 }
 

@@ -42,7 +42,12 @@ struct String {
     int device = 1;
 };
 struct Break {};  ///< the operator breaks a pending request (status NONE)
-struct Wait {};   ///< nothing happens for one await period (an AWAIT EVENT times out)
+/// Nothing happens for one await period (an AWAIT EVENT times out). A window also ends the
+/// wait this way when its picture was lost (resized, exposed), so the application can redraw
+/// at once; that is no operator action and is not recorded.
+struct Wait {
+    bool surfaceChanged = false;
+};
 /// A line addressed to the application, not to a device (e.g. "snapshot front.png").
 struct Directive {
     std::string name;

@@ -4,11 +4,21 @@
 #include "phigs/input/InputAction.h"
 
 #include <chrono>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 namespace phigs {
+
+/// What a string device's echo area shows while the operator types (a window; a script types
+/// nothing): the text so far, or that the entry was cancelled (Escape). `edits` counts the
+/// changes, so a reader redraws only when it moves.
+struct StringEcho {
+    std::string text;
+    bool cancelled = false;
+    std::uint64_t edits = 0;
+};
 
 /// Raised when a script runs out while the application still waits for input.
 class InputExhausted : public std::runtime_error {
@@ -31,6 +41,8 @@ public:
     /// The choice panels and valuator sliders now on the screen; a window maps clicks in them
     /// to choices and values, a script has no use for them.
     virtual void setEchoLayout(const EchoLayout&) {}
+    /// The string echo now (typed text not yet accepted).
+    virtual StringEcho stringEcho() const { return {}; }
 };
 
 }  // namespace phigs

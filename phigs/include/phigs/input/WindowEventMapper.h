@@ -2,6 +2,7 @@
 
 #include "phigs/input/EchoLayout.h"
 #include "phigs/input/InputAction.h"
+#include "phigs/input/InputSource.h"
 
 #include <glm/vec2.hpp>
 
@@ -45,8 +46,9 @@ using WindowEvent = std::variant<window_event::ButtonPress, window_event::Button
 /// locators follow it); shift + left drag: stroke;
 /// typed characters then Enter: string (Backspace edits, Escape breaks a request);
 /// F1..F12: choice 1..12. A left press in a valuator slider of the echo layout starts a drag
-/// whose release sets the value (a click in a choice panel is a pick, which WorkstationInput
-/// turns into the choice).
+/// that sets the value at the press, at every motion that changes it and at the release (a
+/// click in a choice panel is a pick, which WorkstationInput turns into the choice). The text
+/// being typed is the string device's echo (stringEcho()).
 class WindowEventMapper {
 public:
     /// The action this event completes, if any.
@@ -58,15 +60,21 @@ public:
         dragging_ = nullptr;
     }
     const EchoLayout& layout() const { return layout_; }
-    const std::string& pendingText() const { return text_; }
+    const std::string& pendingText() const { return echo_.text; }
+    /// What the string echo area shows: the text typed so far, or that Escape cancelled it.
+    const StringEcho& stringEcho() const { return echo_; }
     bool stroking() const { return stroking_; }
     /// Stroke points closer than this to the previous one are dropped (pixels).
     double strokeSpacing = 2.0;
 
 private:
     EchoLayout layout_;
+    std::optional<InputAction> dragTo(glm::dvec2 position);
+    void edit(std::string text, bool cancelled);
+
     const ValuatorSlider* dragging_ = nullptr;
-    std::string text_;
+    double dragValue_ = 0.0;
+    StringEcho echo_;
     bool stroking_ = false;
     std::vector<glm::dvec2> stroke_;
 };

@@ -24,6 +24,9 @@ struct ContextSettings {
     /// Also receives every validation message and outlives the Context, so the messages of the
     /// shutdown itself (objects still alive when the device is destroyed) can be checked.
     std::vector<std::string>* messageLog = nullptr;
+    /// Also prints every validation message to stderr as it arrives (an interactive program run
+    /// with PHIGS_VK_VALIDATION=1; tests collect them instead and fail on any).
+    bool printMessages = false;
     /// Reads PHIGS_VK_DEVICE=lavapipe|hardware and PHIGS_VK_VALIDATION=0|1 over the defaults.
     static ContextSettings fromEnvironment(ContextSettings defaults);
     static ContextSettings fromEnvironment();
@@ -86,6 +89,7 @@ private:
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;
     std::vector<std::string>* messageLog_ = nullptr;
+    bool printMessages_ = false;
 };
 
 /// Throws std::runtime_error naming `what` when result is not VK_SUCCESS.

@@ -5,7 +5,8 @@
 #include "phigs/vk/HardcopyWorkstation.h"
 #include "phigs/vk/OffscreenWorkstation.h"
 #include "phigs/vk/Renderer.h"
-#include "phigs/vk/WindowWorkstation.h"
+#include "phigs/vk/WindowSurface.h"
+#include "phigs/vk/WindowTarget.h"
 #include "phigs/ws/Workstation.h"
 #include "phigs/ws/WorkstationMapping.h"
 
@@ -21,27 +22,33 @@ namespace phigs::vk {
 /// How a WorkstationDisplay shows its workstation.
 struct DisplaySettings {
     std::uint32_t width = 0, height = 0;  ///< the surface in pixels; 0: the type's display size
-    std::string title = "PHIGS";          ///< window title
-    std::filesystem::path file;           ///< hardcopy: the PNG file (required for that type)
-    bool readBack = false;                ///< window: copy every presented picture into image()
+    /// window: the window to draw in (phigs/window's GlfwWindow), which outlives the display;
+    /// required for that type. Its drawable decides the size (width and height are unused).
+    WindowSurface* window = nullptr;
+    std::filesystem::path file;  ///< hardcopy: the PNG file (required for that type)
+    bool readBack = false;       ///< window: copy every presented picture into image()
 };
 
 /// Shows a model-side phigs::Workstation through the Vulkan backend on the target its type
-/// asks for (offscreen image, GLFW window, PNG hardcopy); update() draws ws.display() with the
-/// target's one Renderer, whose caches make an unchanged picture upload nothing.
+/// asks for (offscreen image, a window's surface, PNG hardcopy); update() draws ws.display()
+/// with the target's one Renderer, whose caches make an unchanged picture upload nothing.
 class WorkstationDisplay {
 public:
     /// With a context of its own, made from `context` (window types add the surface extensions).
     WorkstationDisplay(Workstation& workstation, const ContextSettings& context,
                        DisplaySettings settings = {});
-    /// Sharing a context (for a window, made from WindowWorkstation::contextSettings()).
+    /// Sharing a context (for a window, made from WindowTarget::contextSettings()).
     WorkstationDisplay(Workstation& workstation, Context& context, DisplaySettings settings = {});
     ~WorkstationDisplay();
     WorkstationDisplay(const WorkstationDisplay&) = delete;
     WorkstationDisplay& operator=(const WorkstationDisplay&) = delete;
 
-    /// Draws what the workstation shows now. Returns false once a window has been closed.
+    /// Draws what the workstation shows now. False when a window had nothing to show it on
+    /// (minimised).
     bool update();
+    /// Draws what the workstation shows now and returns the picture (a window reads the
+    /// presented image back), for snapshots.
+    const Image& capture();
     /// Pick echo: the items with these paths (WorkstationInteraction::lastEcho) are drawn
     /// highlighted until the echo is set again (empty: none).
     void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { echo_ = std::move(paths); }
@@ -57,17 +64,18 @@ public:
     /// The workstation transformation of the current picture on this surface.
     WorkstationMapping mapping();
     /// The window target (null for other types).
-    WindowWorkstation* window() { return window_.get(); }
+    WindowTarget* window() { return window_.get(); }
 
 private:
     void open(DisplaySettings settings);
+    const DrawList& shown();
 
     Workstation& workstation_;
     std::unique_ptr<Context> ownContext_;
     Context* context_ = nullptr;
     std::unique_ptr<OffscreenWorkstation> offscreen_;
     std::unique_ptr<HardcopyWorkstation> hardcopy_;
-    std::unique_ptr<WindowWorkstation> window_;
+    std::unique_ptr<WindowTarget> window_;
     bool readBack_ = false;
     Image image_;
     std::vector<std::vector<DrawPathLevel>> echo_;

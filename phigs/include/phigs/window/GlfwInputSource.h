@@ -2,6 +2,7 @@
 
 #include "phigs/input/InputSource.h"
 #include "phigs/input/WindowEventMapper.h"
+#include "phigs/window/GlfwWindow.h"
 
 #include <deque>
 
@@ -10,12 +11,15 @@ struct GLFWwindow;
 namespace phigs {
 
 /// An input source reading a GLFW window: its mouse and keyboard callbacks go through a
-/// WindowEventMapper, and next() waits in glfwWaitEventsTimeout. Positions are framebuffer
-/// pixels (window coordinates scaled on high-density displays), y down.
+/// WindowEventMapper, and next() blocks in glfwWaitEventsTimeout (no polling: an idle window
+/// costs no CPU). Positions are framebuffer pixels (window coordinates scaled on high-density
+/// displays), y down. Given a GlfwWindow, a wait ends early with a `Wait{surfaceChanged}` when
+/// the window was resized or exposed, so the application redraws at once.
 class GlfwInputSource : public InputSource {
 public:
     /// Installs the callbacks on `window` (GLFW must be initialised; one source per window).
     explicit GlfwInputSource(GLFWwindow* window);
+    explicit GlfwInputSource(GlfwWindow& window);
     ~GlfwInputSource() override;
     GlfwInputSource(const GlfwInputSource&) = delete;
     GlfwInputSource& operator=(const GlfwInputSource&) = delete;
@@ -24,6 +28,7 @@ public:
     bool exhausted() const override { return false; }
     std::string position() const override { return "window"; }
     void setEchoLayout(const EchoLayout& layout) override { mapper_.setLayout(layout); }
+    StringEcho stringEcho() const override { return mapper_.stringEcho(); }
 
     /// Delivers an event as the window's callbacks do.
     void post(const WindowEvent& event);
@@ -31,6 +36,8 @@ public:
 
 private:
     GLFWwindow* window_;
+    const GlfwWindow* owner_ = nullptr;  ///< for its damage count, when given one
+    std::uint64_t damageSeen_ = 0;
     WindowEventMapper mapper_;
     std::deque<InputAction> pending_;
 };

@@ -85,6 +85,12 @@ public:
     /// SET WORKSTATION WINDOW 3 (NPC; errors 151, 156) and VIEWPORT 3 (device coordinates; 152, 157).
     void setWorkstationWindow(const glm::dvec3& min, const glm::dvec3& max);
     void setWorkstationViewport(const glm::dvec3& min, const glm::dvec3& max);
+    /// The display surface follows the drawable of a target that can change size (a window
+    /// resized or restored): `size` in device coordinates (one per pixel for a window; error 152
+    /// when not positive). A viewport that covered the whole surface keeps covering it; another
+    /// stays where it is. INQUIRE DISPLAY SPACE SIZE answers the new size.
+    void setDisplaySize(glm::dvec2 size);
+    glm::dvec2 displaySize() const { return description_.displaySize; }
     void setHighlightingFilter(const NameSetFilter& filter);
     void setInvisibilityFilter(const NameSetFilter& filter);
     /// The pick filter used for DrawItem::pickable in display(); none: everything pickable.

@@ -26,12 +26,13 @@ namespace acsynt {
 
 /// What a session starts from.
 struct SessionSettings {
-    int width = 1024, height = 768;               ///< screen size in pixels
+    int width = 1024, height = 768;               ///< screen size in pixels (resize() changes it)
     std::filesystem::path outputDirectory = ".";  ///< snapshots, summary, saved files
     /// Where relative names of files to read are looked up after the working directory.
     std::vector<std::filesystem::path> searchPath{ACSYNT_DATA_DIR};
-    /// The workstation type (its display surface, 1024 x 768 device units, is shown on the
-    /// width x height pixels, which must have its 4:3 shape).
+    /// The workstation type. A window's display surface is its drawable (any shape, one device
+    /// unit per pixel); the others' (1024 x 768 device units) is shown on the width x height
+    /// pixels, which must then have its 4:3 shape.
     phigs::WorkstationType workstationType = phigs::WorkstationType::OffscreenImage;
     /// End the session after the first input line that fails (a script run's default in the
     /// program; its --keep-going carries on).
@@ -76,7 +77,7 @@ public:
     using PictureSink = std::function<void(const std::filesystem::path&)>;
 
     /// Opens PHIGS and the workstation; throws std::invalid_argument for a screen whose shape is
-    /// not the display surface's.
+    /// not the display surface's (a window's follows the screen).
     Session(SessionSettings settings, phigs::InputSource& source);
     ~Session();
     Session(const Session&) = delete;
@@ -91,8 +92,14 @@ public:
     bool step(std::chrono::milliseconds timeout);
     /// Where `snapshot NAME` pictures go (a vk::WorkstationDisplay of workstation(), a window).
     void setSnapshot(PictureSink snapshot) { snapshot_ = std::move(snapshot); }
-    /// Called after each handled event (a window presents the picture).
-    void setPresenter(std::function<void(const phigs::DrawList&)> present) { present_ = std::move(present); }
+    /// The screen is now `width` x `height` pixels (a window resized): the display surface of a
+    /// window workstation, the layout (views, menu panel, pad, sliders, message line), the echo
+    /// areas and the input mapping all follow. Throws std::invalid_argument for an empty screen
+    /// (a minimised window: skip it) or, for other types, one not of the display's shape.
+    void resize(int width, int height);
+    /// How to show the picture now, before a long computation (MAP CURVE's "PLEASE WAIT"): the
+    /// program's one present function. Otherwise the program presents after each step().
+    void setShowNow(std::function<void()> show) { showNow_ = std::move(show); }
     bool finished() const { return finished_; }
     /// Input lines (script lines, window actions) that failed: each gave one or more `ERROR:`s.
     std::size_t failedLines() const { return failedLines_; }
@@ -108,7 +115,12 @@ public:
     /// The workstation transformation on the screen's pixels (render, pick and echo share it).
     const phigs::WorkstationMapping& mapping() const { return *mapping_; }
 
+    /// The current value of valuator `device` (1..4: marker u, w, rotation, zoom).
+    double valuatorValue(int device) const;
     const std::string& message() const { return message_; }
+    /// The message line as drawn: the message and, while the operator types, the string echo
+    /// (the text so far and a cursor).
+    std::string messageLine() const;
     const std::vector<std::string>& log() const { return log_; }
     const std::string& menuTitle() const { return menuTitle_; }
     const std::vector<std::string>& menuItems() const { return menuItems_; }
@@ -150,7 +162,10 @@ private:
     };
 
     void setupWorkstation();
+    void fitWorkstation();  ///< the workstation's display, window, viewport and mapping for the layout
     void setupDevices();
+    void initialiseSliders();
+    void followStringEcho();
     void setMenu(const std::string& title, std::vector<std::string> items);
     void say(const std::string& text);
     void fail(const std::string& text);
@@ -196,7 +211,7 @@ private:
     ScreenLayout layout_;
     phigs::InputSource& source_;
     PictureSink snapshot_;
-    std::function<void(const phigs::DrawList&)> present_;
+    std::function<void()> showNow_;
 
     phigs::Phigs phigs_;
     phigs::Workstation* workstation_ = nullptr;
@@ -215,6 +230,8 @@ private:
     std::string menuTitle_;
     std::vector<std::string> menuItems_;
     std::string message_;
+    std::string typed_;  ///< the string echo: text typed, not yet accepted
+    std::uint64_t echoEdits_ = 0;
     std::vector<std::string> log_;
     Phase phase_ = Phase::None;
     Awaiting awaiting_ = Awaiting::Nothing;

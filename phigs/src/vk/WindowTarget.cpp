@@ -1,74 +1,24 @@
-#include "phigs/vk/WindowWorkstation.h"
-
-#define GLFW_INCLUDE_VULKAN
-#include <GLFW/glfw3.h>
+#include "phigs/vk/WindowTarget.h"
 
 #include <algorithm>
 #include <cstring>
-#include <mutex>
 #include <stdexcept>
 
 namespace phigs::vk {
-namespace {
 
-// GLFW is process-global: the first window initialises it, the last one terminates it.
-std::mutex glfwMutex;
-int glfwUsers = 0;
-
-void acquireGlfw() {
-    std::lock_guard lock(glfwMutex);
-    if (glfwUsers == 0 && !glfwInit()) {
-        const char* reason = nullptr;
-        glfwGetError(&reason);
-        throw std::runtime_error(std::string("GLFW: cannot initialise (no display?): ") +
-                                 (reason ? reason : "unknown reason"));
-    }
-    ++glfwUsers;
-}
-
-void releaseGlfw() {
-    std::lock_guard lock(glfwMutex);
-    if (--glfwUsers == 0) glfwTerminate();
-}
-
-}  // namespace
-
-ContextSettings WindowWorkstation::contextSettings() {
-    ContextSettings defaults;
-    defaults.device = DevicePreference::Hardware;
-    return contextSettings(ContextSettings::fromEnvironment(defaults));
-}
-
-ContextSettings WindowWorkstation::contextSettings(ContextSettings base) {
-    acquireGlfw();
-    std::uint32_t count = 0;
-    const char** names = glfwGetRequiredInstanceExtensions(&count);
-    if (!names) {
-        releaseGlfw();
-        throw std::runtime_error("GLFW: Vulkan surfaces are not supported on this display");
-    }
-    for (std::uint32_t i = 0; i < count; ++i) base.instanceExtensions.push_back(names[i]);
-    releaseGlfw();
+ContextSettings WindowTarget::contextSettings(const WindowSurface& window, ContextSettings base) {
+    for (const char* name : window.instanceExtensions()) base.instanceExtensions.push_back(name);
     base.deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     return base;
 }
 
-WindowWorkstation::WindowWorkstation(Context& context, std::uint32_t width, std::uint32_t height,
-                                     const std::string& title)
-    : context_(context) {
-    acquireGlfw();
+WindowTarget::WindowTarget(Context& context, WindowSurface& window) : context_(context), window_(window) {
     try {
-        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-        glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
-        window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
-        if (!window_) throw std::runtime_error("GLFW: cannot create the window '" + title + "'");
-        check(glfwCreateWindowSurface(context_.instance(), window_, nullptr, &surface_),
-              "glfwCreateWindowSurface");
+        surface_ = window_.createSurface(context_.instance());
         VkBool32 supported = VK_FALSE;
         vkGetPhysicalDeviceSurfaceSupportKHR(context_.physicalDevice(), context_.queueFamily(), surface_,
                                              &supported);
         if (!supported) throw std::runtime_error("Vulkan: the chosen queue cannot present to the window");
-
         std::uint32_t count = 0;
         vkGetPhysicalDeviceSurfaceFormatsKHR(context_.physicalDevice(), surface_, &count, nullptr);
         std::vector<VkSurfaceFormatKHR> formats(count);
@@ -103,11 +53,11 @@ WindowWorkstation::WindowWorkstation(Context& context, std::uint32_t width, std:
     }
 }
 
-WindowWorkstation::~WindowWorkstation() {
+WindowTarget::~WindowTarget() {
     release();
 }
 
-void WindowWorkstation::release() {
+void WindowTarget::release() {
     VkDevice device = context_.device();
     vkDeviceWaitIdle(device);
     destroySwapchain();
@@ -122,17 +72,9 @@ void WindowWorkstation::release() {
     rendered_ = acquired_ = VK_NULL_HANDLE;
     if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
     surface_ = VK_NULL_HANDLE;
-    if (window_) {
-        glfwDestroyWindow(window_);
-        window_ = nullptr;
-        releaseGlfw();
-    } else if (!closed_) {
-        releaseGlfw();
-    }
-    closed_ = true;
 }
 
-void WindowWorkstation::createSwapchain() {
+void WindowTarget::createSwapchain() {
     VkDevice device = context_.device();
     VkSurfaceCapabilitiesKHR caps{};
     check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice(), surface_, &caps),
@@ -140,10 +82,9 @@ void WindowWorkstation::createSwapchain() {
     if (caps.currentExtent.width != UINT32_MAX) {
         extent_ = caps.currentExtent;
     } else {
-        int w = 0, h = 0;
-        glfwGetFramebufferSize(window_, &w, &h);
-        extent_ = {std::clamp(std::uint32_t(w), caps.minImageExtent.width, caps.maxImageExtent.width),
-                   std::clamp(std::uint32_t(h), caps.minImageExtent.height, caps.maxImageExtent.height)};
+        const VkExtent2D size = window_.drawableSize();
+        extent_ = {std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width),
+                   std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
     }
     if (extent_.width == 0 || extent_.height == 0) return;  // minimised: wait for a size
     VkSwapchainCreateInfoKHR info{};
@@ -200,7 +141,7 @@ void WindowWorkstation::createSwapchain() {
     }
 }
 
-void WindowWorkstation::destroySwapchain() {
+void WindowTarget::destroySwapchain() {
     VkDevice device = context_.device();
     for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(device, f, nullptr);
     for (VkImageView v : views_) vkDestroyImageView(device, v, nullptr);
@@ -212,42 +153,29 @@ void WindowWorkstation::destroySwapchain() {
     swapchain_ = VK_NULL_HANDLE;
 }
 
-bool WindowWorkstation::shouldClose() {
-    if (!window_) return true;
-    glfwPollEvents();
-    return glfwWindowShouldClose(window_);
+void WindowTarget::recreateSwapchain() {
+    vkDeviceWaitIdle(context_.device());
+    destroySwapchain();
+    createSwapchain();
 }
 
-void WindowWorkstation::requestClose() {
-    if (window_) glfwSetWindowShouldClose(window_, GLFW_TRUE);
-}
-
-void WindowWorkstation::resize(std::uint32_t width, std::uint32_t height) {
-    if (window_) glfwSetWindowSize(window_, int(width), int(height));
-}
-
-bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
-    if (shouldClose()) return false;
+bool WindowTarget::draw(const DrawList& list, Image* readback) {
     if (readback && swapchain_ && !canReadBack_)
-        throw std::runtime_error(
-            "WindowWorkstation::draw: this surface's swapchain images cannot be read back");
+        throw std::runtime_error("WindowTarget::draw: this surface's swapchain images cannot be read back");
     VkDevice device = context_.device();
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window_, &w, &h);
-    if (!swapchain_ || std::uint32_t(w) != extent_.width || std::uint32_t(h) != extent_.height) {
-        vkDeviceWaitIdle(device);
-        destroySwapchain();
-        createSwapchain();
-        if (!swapchain_) return true;
+    const VkExtent2D size = window_.drawableSize();
+    if (size.width == 0 || size.height == 0) return false;  // minimised: nothing to show
+    if (!swapchain_ || size.width != extent_.width || size.height != extent_.height) {
+        recreateSwapchain();
+        if (!swapchain_) return false;
     }
     std::uint32_t index = 0;
     VkResult result =
         vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
     if (result == VK_ERROR_OUT_OF_DATE_KHR) {
-        vkDeviceWaitIdle(device);
-        destroySwapchain();
-        createSwapchain();
-        return true;  // the next draw uses the new swapchain
+        recreateSwapchain();  // the drawable changed under us: draw again on the new swapchain
+        if (!swapchain_) return false;
+        result = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index);
     }
     if (result != VK_SUBOPTIMAL_KHR) check(result, "vkAcquireNextImageKHR");
 
@@ -319,9 +247,7 @@ bool WindowWorkstation::draw(const DrawList& list, Image* readback) {
     // Frames are drawn one at a time, so the renderer may change its buffers in the next prepare().
     check(vkWaitForFences(device, 1, &done_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
     if (result == VK_ERROR_OUT_OF_DATE_KHR || result == VK_SUBOPTIMAL_KHR) {
-        vkDeviceWaitIdle(device);
-        destroySwapchain();
-        createSwapchain();
+        recreateSwapchain();
     } else {
         check(result, "vkQueuePresentKHR");
     }

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "phigs/vk/WindowSurface.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace phigs {
+
+/// A GLFW window: GLFW itself (the first window initialises it, the last terminates it), the
+/// window, its size, its close request and its events, and the Vulkan surface factory a
+/// vk::WindowTarget draws on. The only code besides GlfwInputSource that includes GLFW.
+class GlfwWindow : public vk::WindowSurface {
+public:
+    /// Opens a resizable window; throws std::runtime_error naming the reason when GLFW cannot
+    /// start (no display) or the window cannot be made.
+    GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title);
+    ~GlfwWindow() override;
+    GlfwWindow(const GlfwWindow&) = delete;
+    GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+    std::vector<const char*> instanceExtensions() const override;
+    VkSurfaceKHR createSurface(VkInstance instance) override;
+    VkExtent2D drawableSize() const override;
+
+    /// True once the user (or requestClose) asked to close. Does not process events: the input
+    /// source's wait does.
+    bool shouldClose() const;
+    void requestClose();
+    /// Asks the window system for a new size (the drawable follows once the server agrees).
+    void resize(std::uint32_t width, std::uint32_t height);
+    /// Processes pending events without waiting.
+    void pollEvents();
+    /// Counts the times the picture was lost: resized, restored, exposed. A presenter draws
+    /// again when it moves.
+    std::uint64_t damage() const { return damage_; }
+    GLFWwindow* handle() const { return window_; }
+
+private:
+    static void onDamage(GLFWwindow* window);
+    static void onResize(GLFWwindow* window, int, int);
+
+    GLFWwindow* window_ = nullptr;
+    std::uint64_t damage_ = 0;
+};
+
+}  // namespace phigs

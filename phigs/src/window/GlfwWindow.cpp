@@ -1,0 +1,102 @@
+// GLFW with its Vulkan declarations: the window makes the surface the vk target draws on.
+#include "phigs/window/GlfwWindow.h"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <mutex>
+#include <stdexcept>
+
+namespace phigs {
+namespace {
+
+// GLFW is process-global: the first window initialises it, the last one terminates it.
+std::mutex glfwMutex;
+int glfwUsers = 0;
+
+void acquireGlfw() {
+    std::lock_guard lock(glfwMutex);
+    if (glfwUsers == 0 && !glfwInit()) {
+        const char* reason = nullptr;
+        glfwGetError(&reason);
+        throw std::runtime_error(std::string("GLFW: cannot initialise (no display?): ") +
+                                 (reason ? reason : "unknown reason"));
+    }
+    ++glfwUsers;
+}
+
+void releaseGlfw() {
+    std::lock_guard lock(glfwMutex);
+    if (--glfwUsers == 0) glfwTerminate();
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title) {
+    if (width == 0 || height == 0 || width > 16384 || height > 16384)
+        throw std::invalid_argument("GlfwWindow: a window of " + std::to_string(width) + " x " +
+                                    std::to_string(height) + " pixels (1..16384 each)");
+    acquireGlfw();
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
+    if (!window_) {
+        releaseGlfw();
+        throw std::runtime_error("GLFW: cannot create the window '" + title + "'");
+    }
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetFramebufferSizeCallback(window_, onResize);
+    glfwSetWindowRefreshCallback(window_, onDamage);
+}
+
+GlfwWindow::~GlfwWindow() {
+    glfwDestroyWindow(window_);
+    releaseGlfw();
+}
+
+void GlfwWindow::onDamage(GLFWwindow* window) {
+    if (auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window))) ++self->damage_;
+}
+
+void GlfwWindow::onResize(GLFWwindow* window, int, int) {
+    onDamage(window);
+}
+
+std::vector<const char*> GlfwWindow::instanceExtensions() const {
+    std::uint32_t count = 0;
+    const char** names = glfwGetRequiredInstanceExtensions(&count);
+    if (!names) throw std::runtime_error("GLFW: Vulkan surfaces are not supported on this display");
+    return {names, names + count};
+}
+
+VkSurfaceKHR GlfwWindow::createSurface(VkInstance instance) {
+    VkSurfaceKHR surface = VK_NULL_HANDLE;
+    if (const VkResult r = glfwCreateWindowSurface(instance, window_, nullptr, &surface); r != VK_SUCCESS)
+        throw std::runtime_error("glfwCreateWindowSurface failed (VkResult " + std::to_string(int(r)) + ")");
+    return surface;
+}
+
+VkExtent2D GlfwWindow::drawableSize() const {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_, &w, &h);
+    return {std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
+}
+
+bool GlfwWindow::shouldClose() const {
+    return glfwWindowShouldClose(window_);
+}
+
+void GlfwWindow::requestClose() {
+    glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
+
+void GlfwWindow::resize(std::uint32_t width, std::uint32_t height) {
+    glfwSetWindowSize(window_, int(width), int(height));
+}
+
+void GlfwWindow::pollEvents() {
+    glfwPollEvents();
+}
+
+}  // namespace phigs
