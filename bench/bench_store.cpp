@@ -3,7 +3,7 @@
 // traversal ns per element, bytes per element, and what one edit of a posted network costs:
 // how many elements are re-traversed and how many surfaces re-tessellated. Ends with one JSON object.
 
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <cstdio>
 #include <ctime>

@@ -3,8 +3,8 @@
 // With --scene FILE.png it also draws a small PHIGS scene through the real renderer.
 #include "phigs/image/Image.h"
 #include "phigs/vk/Context.h"
+#include "phigs/vk/ImageTarget.h"
 #include "phigs/vk/OffscreenTarget.h"
-#include "phigs/vk/OffscreenWorkstation.h"
 #include "phigs/vk/SmokeRenderer.h"
 
 #include <filesystem>
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
             image = renderer.render(vk::SmokeTriangle{});
         }
         if (!scene.empty()) {
-            vk::OffscreenWorkstation workstation(context, 256, 256);
+            vk::ImageTarget workstation(context, 256, 256);
             if (scene.has_parent_path()) std::filesystem::create_directories(scene.parent_path());
             workstation.drawToPng(demoScene(), scene);
         }

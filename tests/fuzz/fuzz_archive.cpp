@@ -8,7 +8,7 @@
 // input at the check, so the target rewrites the checksum of the last END line first: a finding's
 // input file reproduces with this target, not necessarily with OPEN ARCHIVE FILE alone.
 #include "FuzzSupport.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/ws/WorkstationMapping.h"
 

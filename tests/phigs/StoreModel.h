@@ -6,7 +6,7 @@
 // error number it must raise (0: none) and changes nothing then; `warning` holds the warning it
 // must log. ArchiveModel.h adds one archive file.
 
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <algorithm>
 #include <climits>

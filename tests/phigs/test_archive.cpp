@@ -1,6 +1,6 @@
 #include "ErrorNumber.h"
 #include "RandomElements.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 // disk, and a temporary file left by a killed write is removed when the archive is opened.
 
 #include "ErrorNumber.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <catch2/catch.hpp>
 

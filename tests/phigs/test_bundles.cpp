@@ -1,6 +1,6 @@
 // Bundle tables: polymarker, text and interior representations set on the workstation, selected
 // by the bundle index elements and used only for the aspects whose source flag says BUNDLED.
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <catch2/catch.hpp>
 

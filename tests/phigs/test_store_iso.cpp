@@ -4,7 +4,7 @@
 // The PVT test numbers name the source of each expectation.
 
 #include "ErrorNumber.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 #include "ErrorNumber.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 #include "phigs/view/ViewMatrices.h"
 
 #include <catch2/catch.hpp>

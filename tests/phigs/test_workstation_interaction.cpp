@@ -1,6 +1,6 @@
 // WorkstationInteraction: the logical input devices of a model workstation, measured on its
 // picture (no GPU: the pixels are the workstation's device coordinates unless told otherwise).
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/pick/WorkstationInteraction.h"
 

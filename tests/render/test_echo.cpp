@@ -2,11 +2,11 @@
 // buildValuatorSlider), posted on an offscreen workstation, and clicked through a session
 // script: a pick inside a panel row chooses it, inside a slider sets the value.
 #include "RenderTestSupport.h"
-#include "phigs/core/Phigs.h"
-#include "phigs/input/EchoStructures.h"
+#include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/vk/WorkstationDisplay.h"
+#include "phigs/ws/EchoStructures.h"
 
 using namespace phigs;
 using namespace render_test;

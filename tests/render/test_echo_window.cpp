@@ -3,10 +3,10 @@
 // structures show it in the presented picture.
 #include "RenderTestSupport.h"
 #include "VirtualDisplay.h"
-#include "phigs/core/Phigs.h"
-#include "phigs/input/EchoStructures.h"
+#include "phigs/Phigs.h"
 #include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/vk/WorkstationDisplay.h"
+#include "phigs/ws/EchoStructures.h"
 
 #if defined(PHIGS_HAVE_XTEST)
 #include "phigs/window/GlfwInputSource.h"

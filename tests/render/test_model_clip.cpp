@@ -2,7 +2,7 @@
 // the fragment shader applies to every primitive family; compared with a reference image.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -11,7 +11,7 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
           "[render][views]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         // A sphere cut by the plane x = 0.3: only its left half stays (its inside shows).
         DrawMesh ball;
@@ -81,7 +81,7 @@ TEST_CASE("model clipping: more distinct planes than the frame holds are refused
           "[render][views]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 32, 32);
+        vk::ImageTarget ws(context, 32, 32);
         DrawList list = emptyScene();
         for (int i = 0; i < 70; ++i) {
             DrawPolymarker m;

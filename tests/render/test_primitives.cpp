@@ -1,7 +1,7 @@
 // One small scene per 2D primitive family and attribute group, compared with reference images.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -34,7 +34,7 @@ std::vector<glm::dvec3> rectangle(double x0, double y0, double x1, double y1) {
 TEST_CASE("polylines: the four PHIGS line types at widths 1, 2 and 4", "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         const LineType types[] = {LineType::Solid, LineType::Dashed, LineType::Dotted, LineType::DashDotted};
         const float widths[] = {1.0f, 2.0f, 4.0f};
@@ -63,7 +63,7 @@ TEST_CASE("mesh iso-lines take the PHIGS line types, their dashes measured in pi
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         // A flat grid in modelling units 0..2, scaled by 0.5 to world 0..1 (the dashes must not
         // follow the modelling units), with one iso-line along its middle row.
         const int n = 16;
@@ -128,7 +128,7 @@ TEST_CASE("mesh iso-lines take the PHIGS line types, their dashes measured in pi
 TEST_CASE("polymarkers: the five marker types at three scales", "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         const MarkerType types[] = {MarkerType::Dot, MarkerType::Plus, MarkerType::Asterisk,
                                     MarkerType::Circle, MarkerType::Cross};
@@ -160,7 +160,7 @@ TEST_CASE("fill areas: hollow, solid, hatch, a concave outline and a set with ho
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         list.items.push_back(
             item(fill({rectangle(0.05, 0.55, 0.3, 0.95)}, InteriorStyle::Hollow, {1, 1, 0})));
@@ -213,7 +213,7 @@ TEST_CASE("text: stroke text with height, up vector, path, alignment and expansi
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         auto text = [&](std::string s, glm::dvec3 at, auto&& adjust) {
             DrawText t;

@@ -2,7 +2,7 @@
 // hidden-surface removal, iso-lines on shaded surfaces, highlighting.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -38,7 +38,7 @@ std::vector<Light> keyLights() {
 TEST_CASE("surfaces: flat, Gouraud and Phong shading with specular reflectance", "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         list.hiddenSurfaceRemoval = true;
         list.lightSets.push_back(keyLights());
@@ -63,7 +63,7 @@ TEST_CASE("surfaces: flat, Gouraud and Phong shading with specular reflectance",
 TEST_CASE("lights: ambient, directional, positional and spot light on four grids", "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         Light ambient;
         ambient.type = LightType::Ambient;
@@ -110,7 +110,7 @@ TEST_CASE("lights: ambient, directional, positional and spot light on four grids
 TEST_CASE("back faces: distinguished colour, and culling of back or front faces", "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         // Top row faces the viewer, bottom row faces away (clockwise seen from +z).
         auto quad = [](double x, double y, bool front) {
@@ -152,7 +152,7 @@ TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surfa
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         list.lightSets.push_back(keyLights());
         // Near red square drawn first, far blue square second: with HLHSR the red one stays in front.
@@ -197,7 +197,7 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         DepthCue cue;
         cue.enabled = true;
@@ -241,7 +241,7 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 64, 64);
+        vk::ImageTarget ws(context, 64, 64);
         DrawList list = emptyScene();
         Light toward;
         toward.type = LightType::Directional;
@@ -273,7 +273,7 @@ TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; 
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 64, 64);
+        vk::ImageTarget ws(context, 64, 64);
         DrawList list = emptyScene();
         DrawMesh solid;
         solid.mesh = grid(0.05, 0.05, 0.45, 0.45, 0.5, 2);
@@ -317,7 +317,7 @@ TEST_CASE("transparency: a surface blends over what lies behind it, whatever the
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 128, 128);
+        vk::ImageTarget ws(context, 128, 128);
         DrawList list = emptyScene();
         list.hiddenSurfaceRemoval = true;
         auto square = [](double x0, double x1, double z, glm::vec3 colour, float transparency) {

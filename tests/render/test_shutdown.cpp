@@ -1,8 +1,8 @@
 // Clean shutdown: after every workstation type has drawn and been destroyed, destroying the
 // device and instance reports no object still alive; and a leak would be reported.
 #include "RenderTestSupport.h"
-#include "phigs/vk/HardcopyWorkstation.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/HardcopyTarget.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -18,10 +18,10 @@ TEST_CASE("shutdown: workstations and the context leave no Vulkan object behind"
         l.points = {{0.1, 0.1, 0.5}, {0.9, 0.9, 0.5}};
         list.items.push_back(item(l));
         {
-            vk::OffscreenWorkstation ws(context, 64, 64);
+            vk::ImageTarget ws(context, 64, 64);
             ws.draw(list);
-            vk::HardcopyWorkstation hardcopy(context, 32, 32,
-                                             std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "shutdown.png");
+            vk::HardcopyTarget hardcopy(context, 32, 32,
+                                        std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "shutdown.png");
             hardcopy.update(list);
         }
     }

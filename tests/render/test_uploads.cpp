@@ -2,7 +2,7 @@
 // frame with no edits uploads nothing; an edit uploads only what it changed.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -39,7 +39,7 @@ DrawList editableScene(std::shared_ptr<const MeshData> mesh) {
 TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what changed", "[render][uploads]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 128, 128);
+        vk::ImageTarget ws(context, 128, 128);
         const vk::Renderer& renderer = ws.renderer();
         auto mesh = sphere({0.5f, 0.5f, 0.5f}, 0.2f, 16, 8, 2);
         DrawList list = editableScene(mesh);

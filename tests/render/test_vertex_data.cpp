@@ -2,8 +2,8 @@
 // mesh (draw lists built by hand), and the PHIGS PLUS triangle strip, quadrilateral mesh and
 // cell array going through the store and traversal; compared with reference images.
 #include "RenderTestSupport.h"
-#include "phigs/core/Phigs.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/Phigs.h"
+#include "phigs/vk/ImageTarget.h"
 
 using namespace phigs;
 using namespace render_test;
@@ -23,7 +23,7 @@ TEST_CASE("vertex colours: a fill area set with data and a mesh blend the colour
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, kSize, kSize);
+        vk::ImageTarget ws(context, kSize, kSize);
         DrawList list = emptyScene();
         // A square with a square hole, red and green along the bottom, blue and white on top; the
         // hole's corners are yellow, which blends in around the hole.
@@ -112,7 +112,7 @@ TEST_CASE("triangle strip, quadrilateral mesh and cell array from the store, thr
 
         // The display surface is 1024 x 768 device units, NPC on its lower-left 768 x 768: on
         // 128 x 96 pixels, NPC (x, y) is pixel (96 x, 96 (1 - y)).
-        vk::OffscreenWorkstation ws(context, 128, 96);
+        vk::ImageTarget ws(context, 128, 96);
         const Image image = ws.draw(list);
         auto px = [&](double x, double y) {
             return at(image, std::uint32_t(x * 96), std::uint32_t((1 - y) * 96));

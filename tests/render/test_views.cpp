@@ -2,8 +2,8 @@
 // window/viewport mapping, and the PNG hardcopy workstation.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
-#include "phigs/vk/HardcopyWorkstation.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/HardcopyTarget.h"
+#include "phigs/vk/ImageTarget.h"
 #include "phigs/ws/WorkstationMapping.h"
 
 #include <glm/geometric.hpp>
@@ -67,7 +67,7 @@ void addAxesAndBody(DrawList& list, int view, std::shared_ptr<const MeshData> bo
 TEST_CASE("views: four views with their own orientation, mapping and clip limits", "[render][views]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawList list = emptyScene();
         list.views.clear();
         list.hiddenSurfaceRemoval = true;
@@ -131,7 +131,7 @@ TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically"
     }
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 256, 256);
+        vk::ImageTarget ws(context, 256, 256);
         DrawPolymarker m;
         m.points = {{0.25, 0.25, 0.5}, {0.75, 0.75, 0.5}};  // the second lies outside the window
         m.style.type = MarkerType::Plus;
@@ -157,7 +157,7 @@ TEST_CASE("hardcopy: the PNG workstation writes its picture on update and on clo
     const auto file = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy" / "picture.png";
     std::filesystem::remove(file);
     {
-        vk::HardcopyWorkstation hardcopy(context, 128, 96, file);
+        vk::HardcopyTarget hardcopy(context, 128, 96, file);
         DrawList list = emptyScene();
         list.background = {0.0f, 0.5f, 0.0f};
         hardcopy.update(list);
@@ -178,7 +178,7 @@ TEST_CASE("renderer: a draw item naming a missing view or light set is refused w
           "[render][views]") {
     vk::Context context(lavapipeWithValidation());
     {
-        vk::OffscreenWorkstation ws(context, 64, 64);
+        vk::ImageTarget ws(context, 64, 64);
         DrawList list = emptyScene();
         DrawPolyline l;
         l.points = {{0, 0, 0}, {1, 1, 0}};

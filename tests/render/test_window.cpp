@@ -3,7 +3,7 @@
 // its own Xvfb, so it needs no display set up beforehand.
 #include "RenderTestSupport.h"
 #include "VirtualDisplay.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 #include "phigs/vk/WindowTarget.h"
 #include "phigs/window/GlfwWindow.h"
 
@@ -45,7 +45,7 @@ TEST_CASE("window: a window target presents the same picture as the offscreen on
             const DrawList list = knownScene();
             Image offscreen;
             {
-                vk::OffscreenWorkstation ws(context, 200, 160);
+                vk::ImageTarget ws(context, 200, 160);
                 offscreen = ws.draw(list);
             }
             vk::WindowTarget target(context, window);

@@ -3,7 +3,7 @@
 // (WorkstationInteraction with a script source). The pixel found in the rendered image must be
 // the pixel the pick resolves: one WorkstationMapping serves both.
 #include "RenderTestSupport.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/view/ViewMatrices.h"

@@ -163,9 +163,9 @@ bool WindowTarget::draw(const DrawList& list, Image* readback) {
     if (readback && swapchain_ && !canReadBack_)
         throw std::runtime_error("WindowTarget::draw: this surface's swapchain images cannot be read back");
     VkDevice device = context_.device();
-    const VkExtent2D size = window_.drawableSize();
-    if (size.width == 0 || size.height == 0) return false;  // minimised: nothing to show
-    if (!swapchain_ || size.width != extent_.width || size.height != extent_.height) {
+    const VkExtent2D drawable = window_.drawableSize();
+    if (drawable.width == 0 || drawable.height == 0) return false;  // minimised: nothing to show
+    if (!swapchain_ || drawable.width != extent_.width || drawable.height != extent_.height) {
         recreateSwapchain();
         if (!swapchain_) return false;
     }

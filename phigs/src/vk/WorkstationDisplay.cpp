@@ -51,13 +51,13 @@ void WorkstationDisplay::open(DisplaySettings settings) {
     readBack_ = settings.readBack;
     switch (workstation_.type()) {
         case WorkstationType::OffscreenImage:
-            offscreen_ = std::make_unique<OffscreenWorkstation>(*context_, width, height);
+            offscreen_ = std::make_unique<ImageTarget>(*context_, width, height);
             break;
         case WorkstationType::Hardcopy:
             if (settings.file.empty())
                 throw std::invalid_argument("WorkstationDisplay: hardcopy workstation " +
                                             std::to_string(workstation_.id()) + " needs a file");
-            hardcopy_ = std::make_unique<HardcopyWorkstation>(*context_, width, height, settings.file);
+            hardcopy_ = std::make_unique<HardcopyTarget>(*context_, width, height, settings.file);
             break;
         case WorkstationType::Window:
             window_ = std::make_unique<WindowTarget>(*context_, windowOf(workstation_, settings));

@@ -7,7 +7,7 @@
 #include "acsynt/session/ModelPicture.h"
 #include "geom/Evaluate.h"
 #include "phigs/input/EchoLayout.h"
-#include "phigs/input/EchoStructures.h"
+#include "phigs/ws/EchoStructures.h"
 
 #include <ctime>
 

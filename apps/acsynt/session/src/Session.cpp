@@ -8,9 +8,9 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "phigs/core/Error.h"
-#include "phigs/input/EchoStructures.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
+#include "phigs/ws/EchoStructures.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "phigs/traverse/DrawList.h"
 #include "phigs/traverse/NameSetFilter.h"
 #include "phigs/traverse/TessellationCache.h"
-#include "phigs/ws/WorkstationTables.h"
+#include "phigs/view/WorkstationTables.h"
 
 #include <cstdint>
 #include <memory>

@@ -2,8 +2,8 @@
 
 #include "phigs/image/Image.h"
 #include "phigs/vk/Context.h"
-#include "phigs/vk/HardcopyWorkstation.h"
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/HardcopyTarget.h"
+#include "phigs/vk/ImageTarget.h"
 #include "phigs/vk/Renderer.h"
 #include "phigs/vk/WindowSurface.h"
 #include "phigs/vk/WindowTarget.h"
@@ -73,8 +73,8 @@ private:
     Workstation& workstation_;
     std::unique_ptr<Context> ownContext_;
     Context* context_ = nullptr;
-    std::unique_ptr<OffscreenWorkstation> offscreen_;
-    std::unique_ptr<HardcopyWorkstation> hardcopy_;
+    std::unique_ptr<ImageTarget> offscreen_;
+    std::unique_ptr<HardcopyTarget> hardcopy_;
     std::unique_ptr<WindowTarget> window_;
     bool readBack_ = false;
     Image image_;

@@ -2,7 +2,7 @@
 
 #include "phigs/store/StructureStore.h"
 #include "phigs/traverse/Traverser.h"
-#include "phigs/ws/WorkstationTables.h"
+#include "phigs/view/WorkstationTables.h"
 #include "phigs/ws/WorkstationType.h"
 
 #include <cstdint>

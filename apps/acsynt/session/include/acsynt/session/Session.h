@@ -6,7 +6,7 @@
 #include "geom/CurveFile.h"
 #include "geom/Deviation.h"
 #include "geom/curvemap/CurveMapper.h"
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 #include "phigs/input/InputQueue.h"
 #include "phigs/input/InputSource.h"
 #include "phigs/input/WorkstationInput.h"

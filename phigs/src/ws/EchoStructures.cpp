@@ -1,4 +1,4 @@
-#include "phigs/input/EchoStructures.h"
+#include "phigs/ws/EchoStructures.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,8 @@
-#include "phigs/vk/OffscreenWorkstation.h"
+#include "phigs/vk/ImageTarget.h"
 
 namespace phigs::vk {
 
-OffscreenWorkstation::OffscreenWorkstation(Context& context, std::uint32_t width, std::uint32_t height)
+ImageTarget::ImageTarget(Context& context, std::uint32_t width, std::uint32_t height)
     : context_(context),
       target_(context, width, height),
       renderer_(context, OffscreenTarget::kColorFormat, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL) {
@@ -18,12 +18,12 @@ OffscreenWorkstation::OffscreenWorkstation(Context& context, std::uint32_t width
     check(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer_), "vkCreateFramebuffer");
 }
 
-OffscreenWorkstation::~OffscreenWorkstation() {
+ImageTarget::~ImageTarget() {
     vkDeviceWaitIdle(context_.device());
     vkDestroyFramebuffer(context_.device(), framebuffer_, nullptr);
 }
 
-Image OffscreenWorkstation::draw(const DrawList& list) {
+Image ImageTarget::draw(const DrawList& list) {
     const VkExtent2D extent{target_.width(), target_.height()};
     renderer_.prepare(list, extent);
     context_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -33,7 +33,7 @@ Image OffscreenWorkstation::draw(const DrawList& list) {
     return target_.readbackPixels();
 }
 
-void OffscreenWorkstation::drawToPng(const DrawList& list, const std::filesystem::path& file) {
+void ImageTarget::drawToPng(const DrawList& list, const std::filesystem::path& file) {
     writePng(draw(list), file);
 }
 

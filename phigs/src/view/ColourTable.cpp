@@ -1,4 +1,4 @@
-#include "phigs/ws/WorkstationTables.h"
+#include "phigs/view/WorkstationTables.h"
 
 namespace phigs {
 

@@ -11,13 +11,13 @@
 
 namespace phigs::vk {
 
-/// A workstation without a window: draws a DrawList into an offscreen image and reads it back.
-class OffscreenWorkstation {
+/// The offscreen image target: draws a DrawList into an offscreen image and reads it back.
+class ImageTarget {
 public:
-    OffscreenWorkstation(Context& context, std::uint32_t width, std::uint32_t height);
-    ~OffscreenWorkstation();
-    OffscreenWorkstation(const OffscreenWorkstation&) = delete;
-    OffscreenWorkstation& operator=(const OffscreenWorkstation&) = delete;
+    ImageTarget(Context& context, std::uint32_t width, std::uint32_t height);
+    ~ImageTarget();
+    ImageTarget(const ImageTarget&) = delete;
+    ImageTarget& operator=(const ImageTarget&) = delete;
 
     /// Draws the list and returns the picture (rows top to bottom).
     Image draw(const DrawList& list);

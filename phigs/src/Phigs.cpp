@@ -1,4 +1,4 @@
-#include "phigs/core/Phigs.h"
+#include "phigs/Phigs.h"
 
 #include "phigs/store/StructurePaths.h"
 

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "phigs/core/Attributes.h"
 #include "phigs/core/ErrorLog.h"
 #include "phigs/store/Element.h"
-#include "phigs/traverse/DrawList.h"
 #include "phigs/view/ViewTable.h"
 
 #include <glm/vec3.hpp>
