@@ -3,7 +3,7 @@
 # one that imports it back (tsort finds any loop in the folder graph), only phigs/src/window
 # includes GLFW, and only phigs/vk (and the window's surface seam) includes Vulkan.
 set -euo pipefail
-root="${1:?usage: check_layers.sh SOURCE_ROOT}"
+root="$(cd "${1:?usage: check_layers.sh SOURCE_ROOT}" && pwd)"
 cd "$root/phigs"
 status=0
 

@@ -4,6 +4,8 @@
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/pick/WorkstationInteraction.h"
 
+#include "InputFakes.h"
+
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -100,4 +102,46 @@ TEST_CASE("workstation interaction: picks see the current structures and the sur
     CHECK(interaction.measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
     width = 2048, height = 1536;
     CHECK(interaction.measurer().toNpc({400, 368}).y == Approx((1536.0 - 368.0) / 2.0 / 768.0));
+}
+
+TEST_CASE("workstation output seam: the picture with the echo, input through the drawable's size",
+          "[ws][wiring]") {
+    /// An output in memory: keeps the last picture, reports the drawable it is told.
+    struct MemoryOutput : WorkstationOutput {
+        DrawList last;
+        int presents = 0;
+        DrawableSize size{512, 384};
+        bool present(const DrawList& picture) override {
+            last = picture;
+            ++presents;
+            return true;
+        }
+        DrawableSize drawableSize() const override { return size; }
+    };
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    CHECK_FALSE(ws.present());  // nothing attached
+    CHECK(ws.drawableSize() == DrawableSize{1024, 768});
+    MemoryOutput out;
+    ws.attachOutput(&out);
+    REQUIRE(ws.present());
+    REQUIRE(out.last.items.size() == 2);
+    CHECK_FALSE(out.last.items[1].highlighted);
+    ws.setEcho({out.last.items[1].source.path});
+    REQUIRE(ws.present());
+    CHECK(out.presents == 2);
+    CHECK_FALSE(out.last.items[0].highlighted);
+    CHECK(out.last.items[1].highlighted);
+    CHECK_FALSE(ws.display().items[1].highlighted);  // the workstation's own picture is untouched
+    // Input maps through the output's drawable: 512 x 384 pixels, half a pixel per device unit.
+    test::IdleSource source;
+    InputQueue queue;
+    WorkstationInteraction interaction(ws, source, queue);
+    CHECK(interaction.measurer().toNpc({200, 300}).x == Approx(400.0 / 768.0));
+    out.size = {2048, 1536};  // resized: asked at each measure
+    CHECK(interaction.measurer().toNpc({400, 368}).y == Approx((1536.0 - 368.0) / 2.0 / 768.0));
+    out.size = {0, 0};  // minimised: one pixel per device unit meanwhile
+    CHECK(interaction.measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
+    ws.attachOutput(nullptr);
+    CHECK_FALSE(ws.present());
 }

@@ -7,6 +7,12 @@ WorkstationInteraction::WorkstationInteraction(Workstation& workstation, InputSo
     : workstation_(workstation),
       measurer_([this]() -> const DrawList& { return workstation_.display(); }),
       input_(std::make_unique<WorkstationInput>(workstation.id(), source, measurer_, queue, counts)) {
+    measurer_.setSurfaceSize([this] {
+        const DrawableSize size = workstation_.drawableSize();
+        if (size.width > 0 && size.height > 0) return DrawListMeasurer::SurfaceSize{size.width, size.height};
+        const glm::dvec2 display = workstation_.displaySize();  // minimised: no pixels to map
+        return DrawListMeasurer::SurfaceSize{std::uint32_t(display.x), std::uint32_t(display.y)};
+    });
     measurer_.setPickListProvider(
         [this](const InputDevice& device) -> const DrawList& { return pickList(device); });
 }

@@ -38,6 +38,7 @@ WorkstationDisplay::WorkstationDisplay(Workstation& workstation, Context& contex
 }
 
 WorkstationDisplay::~WorkstationDisplay() {
+    if (workstation_.output() == this) workstation_.attachOutput(nullptr);
     // The targets go before a context of our own (member order would do it too; said for clarity).
     window_.reset();
     hardcopy_.reset();
@@ -63,24 +64,10 @@ void WorkstationDisplay::open(DisplaySettings settings) {
             window_ = std::make_unique<WindowTarget>(*context_, windowOf(workstation_, settings));
             break;
     }
+    workstation_.attachOutput(this);
 }
 
-const DrawList& WorkstationDisplay::shown() {
-    const DrawList* shown = &workstation_.display();
-    if (!echo_.empty()) {
-        // A copy with the echoed items highlighted: highlighting is a draw record flag, so the
-        // renderer re-uploads only those records.
-        echoed_ = *shown;
-        for (DrawItem& item : echoed_.items)
-            if (std::find(echo_.begin(), echo_.end(), item.source.path) != echo_.end())
-                item.highlighted = true;
-        shown = &echoed_;
-    }
-    return *shown;
-}
-
-bool WorkstationDisplay::update() {
-    const DrawList& picture = shown();
+bool WorkstationDisplay::present(const DrawList& picture) {
     if (offscreen_) {
         image_ = offscreen_->draw(picture);
         return true;
@@ -98,7 +85,7 @@ const Image& WorkstationDisplay::capture() {
         update();
         return image_;
     }
-    if (!window_->draw(shown(), &image_))
+    if (!window_->draw(workstation_.shownPicture(), &image_))
         throw std::runtime_error("WorkstationDisplay: the window has no picture to capture (minimised)");
     return image_;
 }

@@ -1,6 +1,7 @@
 #include "phigs/ws/Workstation.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phigs {
 
@@ -258,6 +259,25 @@ void Workstation::setDisplaySize(glm::dvec2 size) {
     tables_.displaySize = size;
     if (whole) tables_.viewportMax = {size.x, size.y, tables_.viewportMax.z};
     changed();
+}
+
+const DrawList& Workstation::shownPicture() {
+    const DrawList& picture = display();
+    if (echo_.empty()) return picture;
+    echoed_ = picture;
+    for (DrawItem& item : echoed_.items)
+        if (std::find(echo_.begin(), echo_.end(), item.source.path) != echo_.end()) item.highlighted = true;
+    return echoed_;
+}
+
+bool Workstation::present() {
+    return output_ && output_->present(shownPicture());
+}
+
+DrawableSize Workstation::drawableSize() const {
+    if (output_) return output_->drawableSize();
+    return {static_cast<std::uint32_t>(std::lround(description_.displaySize.x)),
+            static_cast<std::uint32_t>(std::lround(description_.displaySize.y))};
 }
 
 void Workstation::setHighlightingFilter(const NameSetFilter& filter) {

@@ -30,8 +30,9 @@ public:
     const DrawListMeasurer& measurer() const { return measurer_; }
     DrawListMeasurer& measurer() { return measurer_; }
     Workstation& workstation() { return workstation_; }
-    /// The source's surface in pixels (the size of the rendered image or window); by default one
-    /// pixel per device coordinate of the workstation's display surface.
+    /// The source's surface in pixels (the size of the rendered image or window); by default the
+    /// workstation's drawable as its output reports it at each measure (one pixel per device
+    /// unit of the display surface when it has none, or while the drawable is empty).
     void setSurfaceSize(std::uint32_t width, std::uint32_t height) {
         measurer_.setSurfaceSize(width, height);
     }

@@ -9,6 +9,7 @@
 #include "phigs/vk/WindowTarget.h"
 #include "phigs/ws/Workstation.h"
 #include "phigs/ws/WorkstationMapping.h"
+#include "phigs/ws/WorkstationOutput.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -29,29 +30,32 @@ struct DisplaySettings {
     bool readBack = false;       ///< window: copy every presented picture into image()
 };
 
-/// Shows a model-side phigs::Workstation through the Vulkan backend on the target its type
-/// asks for (offscreen image, a window's surface, PNG hardcopy); update() draws ws.display()
-/// with the target's one Renderer, whose caches make an unchanged picture upload nothing.
-class WorkstationDisplay {
+/// The workstation's output (WorkstationOutput) through the Vulkan backend, on the target its
+/// type asks for (offscreen image, a window's surface, PNG hardcopy); it attaches itself to the
+/// workstation, and update() presents ws.shownPicture() with the target's one Renderer, whose
+/// caches make an unchanged picture upload nothing.
+class WorkstationDisplay : public WorkstationOutput {
 public:
     /// With a context of its own, made from `context` (window types add the surface extensions).
     WorkstationDisplay(Workstation& workstation, const ContextSettings& context,
                        DisplaySettings settings = {});
     /// Sharing a context (for a window, made from WindowTarget::contextSettings()).
     WorkstationDisplay(Workstation& workstation, Context& context, DisplaySettings settings = {});
-    ~WorkstationDisplay();
+    ~WorkstationDisplay() override;
     WorkstationDisplay(const WorkstationDisplay&) = delete;
     WorkstationDisplay& operator=(const WorkstationDisplay&) = delete;
 
-    /// Draws what the workstation shows now. False when a window had nothing to show it on
-    /// (minimised).
-    bool update();
+    /// Draws what the workstation shows now (Workstation::present). False when a window had
+    /// nothing to show it on (minimised).
+    bool update() { return workstation_.present(); }
+    bool present(const DrawList& picture) override;
+    DrawableSize drawableSize() const override { return {width(), height()}; }
     /// Draws what the workstation shows now and returns the picture (a window reads the
     /// presented image back), for snapshots.
     const Image& capture();
     /// Pick echo: the items with these paths (WorkstationInteraction::lastEcho) are drawn
     /// highlighted until the echo is set again (empty: none).
-    void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { echo_ = std::move(paths); }
+    void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { workstation_.setEcho(std::move(paths)); }
     /// The last picture (offscreen and hardcopy; a window only with `readBack`).
     const Image& image() const { return image_; }
 
@@ -68,7 +72,6 @@ public:
 
 private:
     void open(DisplaySettings settings);
-    const DrawList& shown();
 
     Workstation& workstation_;
     std::unique_ptr<Context> ownContext_;
@@ -78,8 +81,6 @@ private:
     std::unique_ptr<WindowTarget> window_;
     bool readBack_ = false;
     Image image_;
-    std::vector<std::vector<DrawPathLevel>> echo_;
-    DrawList echoed_;  ///< the picture with the echo applied
 };
 
 }  // namespace phigs::vk

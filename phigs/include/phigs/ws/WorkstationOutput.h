@@ -1,0 +1,28 @@
+#pragma once
+
+#include "phigs/traverse/DrawList.h"
+
+#include <cstdint>
+
+namespace phigs {
+
+/// A drawable's size in pixels (0 x 0 while a window is minimised).
+struct DrawableSize {
+    std::uint32_t width = 0, height = 0;
+    bool operator==(const DrawableSize&) const = default;
+};
+
+/// The one seam between a workstation and what shows it: present a picture, report the
+/// drawable's size. The workstation keeps everything else (its state, the pick echo applied to
+/// the picture it hands over). phigs/vk implements it for the image, hardcopy and window
+/// targets (vk::WorkstationDisplay); a test may implement it in memory.
+class WorkstationOutput {
+public:
+    virtual ~WorkstationOutput() = default;
+    /// Shows `picture`; false when nothing could be shown (a minimised window).
+    virtual bool present(const DrawList& picture) = 0;
+    /// The drawable now, in pixels.
+    virtual DrawableSize drawableSize() const = 0;
+};
+
+}  // namespace phigs
