@@ -117,7 +117,8 @@ TEST_CASE("window session: after resizes, menu rows, surface picks and slider dr
                                                         {"SURF_REDN", "SURF_REDN"},
                                                         {"MODELS", "MODELS"}};
     const phigs::EchoStyle style;
-    for (const auto& [width, height] : {std::pair{1280, 1024}, std::pair{1600, 900}, std::pair{800, 600}}) {
+    for (const auto& [width, height] :
+         {std::pair{1280, 1024}, std::pair{1600, 900}, std::pair{1500, 1000}, std::pair{800, 600}}) {
         INFO("window " << width << " x " << height);
         REQUIRE(w.resize(width, height));
         CHECK(w.session.workstation().displaySize() == glm::dvec2(width, height));
