@@ -50,3 +50,17 @@ if(NOT EXISTS "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.jso
   message(FATAL_ERROR "Vulkan validation layer not found: install the Debian package "
                       "'vulkan-validationlayers'")
 endif()
+
+# phigs_hardcopy writes PDF, SVG and EPS through cairo's file surfaces; its tests rasterise the
+# files with poppler's pdftoppm (and list images with pdfimages) and librsvg's rsvg-convert.
+require_found(PKG_CONFIG_FOUND pkg-config "pkg-config")
+pkg_check_modules(CAIRO QUIET IMPORTED_TARGET cairo cairo-pdf cairo-svg cairo-ps)
+require_found(CAIRO_FOUND libcairo2-dev "cairo with its PDF, SVG and PostScript surfaces")
+if(PHIGS_BUILD_TESTS)
+  find_program(PDFTOPPM pdftoppm)
+  require_found(PDFTOPPM poppler-utils "pdftoppm (the vector hardcopy tests rasterise PDF files with it)")
+  find_program(PDFIMAGES pdfimages)
+  require_found(PDFIMAGES poppler-utils "pdfimages (the vector hardcopy tests check PDF files hold no image)")
+  find_program(RSVG_CONVERT rsvg-convert)
+  require_found(RSVG_CONVERT librsvg2-bin "rsvg-convert (the vector hardcopy tests rasterise SVG files with it)")
+endif()

@@ -16,6 +16,8 @@ packages=(
   catch2                             # tests
   clang-format                       # the style test (sources follow .clang-format)
   hershey-fonts-data                 # stroke fonts for PHIGS text
+  libcairo2-dev                      # PDF, SVG and EPS hardcopy (phigs_hardcopy)
+  poppler-utils librsvg2-bin         # the hardcopy tests rasterise PDF and SVG files
   libsisl-dev                        # baseline in the geometry benchmarks
   libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths
   libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)

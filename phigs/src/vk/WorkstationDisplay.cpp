@@ -52,6 +52,12 @@ void WorkstationDisplay::open(DisplaySettings settings) {
         case WorkstationType::Window:
             window_ = std::make_unique<WindowWorkstation>(*context_, width, height, settings.title);
             break;
+        case WorkstationType::PdfFile:
+        case WorkstationType::SvgFile:
+        case WorkstationType::EpsFile:
+            throw std::invalid_argument("WorkstationDisplay: workstation " +
+                                        std::to_string(workstation_.id()) +
+                                        " is a vector hardcopy: draw it with hardcopy::VectorWorkstation");
     }
 }
 
