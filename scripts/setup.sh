@@ -23,6 +23,7 @@ packages=(
   libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)
   libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
   libtbb-dev                         #   libtbb.so, named by OpenCASCADE's CMake config
+  libocct-data-exchange-dev          # IGES and STEP export and import (geom_exchange)
 )
 # CI's second sanitizer stage builds the kernel's tests with clang as well (PHIGS_SETUP_CLANG=1).
 if [ "${PHIGS_SETUP_CLANG:-0}" = 1 ]; then
