@@ -16,11 +16,14 @@ packages=(
   catch2                             # tests
   clang-format                       # the style test (sources follow .clang-format)
   hershey-fonts-data                 # stroke fonts for PHIGS text
+  libcairo2-dev                      # PDF, SVG and EPS hardcopy (phigs_hardcopy)
+  poppler-utils librsvg2-bin         # the hardcopy tests rasterise PDF and SVG files
   libsisl-dev                        # baseline in the geometry benchmarks
   libocct-foundation-dev             # OpenCASCADE, second baseline in bench_geom_kernel: kernel, maths
   libocct-modeling-data-dev          #   its B-spline surfaces (TKG3d)
   libocct-modeling-algorithms-dev    #   its intersection and projection (TKGeomAlgo)
   libtbb-dev                         #   libtbb.so, named by OpenCASCADE's CMake config
+  libocct-data-exchange-dev          # IGES and STEP export and import (geom_exchange)
 )
 # CI's second sanitizer stage builds the kernel's tests with clang as well (PHIGS_SETUP_CLANG=1).
 if [ "${PHIGS_SETUP_CLANG:-0}" = 1 ]; then

@@ -1,7 +1,10 @@
 // acsynt: the ACSYNT-like design program. Replays a session script headless (pictures through
 // the Vulkan offscreen workstation) or runs interactively in a GLFW window; either way the
-// session can be recorded as a script.
+// session can be recorded as a script. --export converts a model to IGES or STEP without a session.
+#include "acsynt/session/ModelExchange.h"
 #include "acsynt/session/Session.h"
+#include "geom/exchange/CadFile.h"
+#include "geom/exchange/ExchangeError.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/WorkstationDisplay.h"
@@ -31,6 +34,9 @@ constexpr int kExitFatal = 1, kExitUsage = 2, kExitLinesFailed = 3;
 
 struct Options {
     std::string script;
+    std::string exportFile;  ///< --export OUT: write MODEL as IGES or STEP and stop
+    std::string model;       ///< the model file --export converts
+    std::string importFile;  ///< --import IN: read an IGES or STEP file as the first model
     std::filesystem::path output = "out";
     std::string record;
     bool window = false;
@@ -39,8 +45,10 @@ struct Options {
 };
 
 void usage(std::ostream& out) {
-    out << "usage: acsynt --script FILE [--keep-going] [--output DIR] [--record FILE] [--size WxH]\n"
-           "       acsynt --window [--output DIR] [--record FILE] [--size WxH]\n"
+    out << "usage: acsynt --script FILE [--import CAD] [--keep-going] [--output DIR] [--record FILE]\n"
+           "                            [--size WxH]\n"
+           "       acsynt --window [--import CAD] [--output DIR] [--record FILE] [--size WxH]\n"
+           "       acsynt --export OUT.step|OUT.stp|OUT.igs|OUT.iges MODEL.acm\n"
            "  --script FILE  replay a session script headless (lavapipe), writing its snapshots;\n"
            "                 it stops at the first line that fails\n"
            "  --keep-going   carry on after a failing line (the count is still reported)\n"
@@ -50,6 +58,9 @@ void usage(std::ostream& out) {
            "  --window       interactive session in a GLFW window\n"
            "  --size WxH     screen size in pixels (default 1024x768); a script's must be 4:3 like the\n"
            "                 display surface, a window's any shape (it also follows the window's size)\n"
+           "  --import CAD   read an IGES or STEP file as the first model before the session's input\n"
+           "  --export OUT   write MODEL.acm (lofted) as IGES or STEP, by OUT's extension, and stop;\n"
+           "                 MODEL and CAD are looked up in the shipped data folder when not found\n"
            "environment: PHIGS_VK_VALIDATION=1 turns the Vulkan validation layer on (off by default)\n"
            "             and prints every message; PHIGS_VK_DEVICE=lavapipe|hardware picks the device\n"
            "exit status: 0 every line succeeded, 1 the session could not run, 2 bad options,\n"
@@ -76,10 +87,52 @@ std::string unwritable(const std::filesystem::path& path) {
     return access(folder.c_str(), W_OK) == 0 ? "" : "is in a folder that is not writable";
 }
 
+/// A file to read as given, else (a relative name) from the shipped data folder, as the
+/// session's file names are found.
+std::string resolveInput(const std::string& name) {
+    std::error_code ec;
+    const std::filesystem::path data = std::filesystem::path(ACSYNT_DATA_DIR) / name;
+    if (!std::filesystem::exists(name, ec) && std::filesystem::path(name).is_relative() &&
+        std::filesystem::exists(data, ec))
+        return data.string();
+    return name;
+}
+
+/// Why a file to read cannot be read at `path` (empty when it can).
+std::string unreadable(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) return "is a directory";
+    return access(path.c_str(), R_OK) == 0 ? "" : "cannot be read";
+}
+
+/// --export OUT MODEL: OUT an IGES or STEP name that can be written, MODEL readable.
+bool checkExport(const Options& o) {
+    try {
+        geom::exchange::cadFormatOf(o.exportFile);
+    } catch (const geom::exchange::ExchangeError& e) {
+        std::cerr << "acsynt: --export " << e.reason() << "\n";
+        return false;
+    }
+    if (const std::string why = unwritable(o.exportFile); !why.empty()) {
+        std::cerr << "acsynt: --export " << o.exportFile << " " << why << "\n";
+        return false;
+    }
+    if (const std::string why = unreadable(o.model); !why.empty()) {
+        std::cerr << "acsynt: model " << o.model << " " << why << "\n";
+        return false;
+    }
+    return true;
+}
+
 /// Refuses, before anything runs, a script that is not a readable file and a record or output
 /// path that cannot be written.
 bool checkPaths(const Options& o) {
     std::error_code ec;
+    if (!o.importFile.empty())
+        if (const std::string why = unreadable(o.importFile); !why.empty()) {
+            std::cerr << "acsynt: --import " << o.importFile << " " << why << "\n";
+            return false;
+        }
     if (!o.script.empty() &&
         (std::filesystem::is_directory(o.script, ec) || access(o.script.c_str(), R_OK) != 0)) {
         std::cerr << "acsynt: --script " << o.script
@@ -108,11 +161,18 @@ std::optional<Options> parse(int argc, char** argv) {
         {"script", required_argument, nullptr, 's'}, {"output", required_argument, nullptr, 'o'},
         {"record", required_argument, nullptr, 'r'}, {"window", no_argument, nullptr, 'w'},
         {"size", required_argument, nullptr, 'z'},   {"keep-going", no_argument, nullptr, 'k'},
+        {"export", required_argument, nullptr, 'e'}, {"import", required_argument, nullptr, 'i'},
         {"help", no_argument, nullptr, 'h'},         {nullptr, 0, nullptr, 0}};
     Options o;
     int c;
-    while ((c = getopt_long(argc, argv, "s:o:r:wz:kh", longOptions, nullptr)) != -1) {
+    while ((c = getopt_long(argc, argv, "s:o:r:wz:ke:i:h", longOptions, nullptr)) != -1) {
         switch (c) {
+            case 'e':
+                o.exportFile = optarg;
+                break;
+            case 'i':
+                o.importFile = resolveInput(optarg);
+                break;
             case 's':
                 o.script = optarg;
                 break;
@@ -143,6 +203,17 @@ std::optional<Options> parse(int argc, char** argv) {
                 return std::nullopt;
         }
     }
+    if (!o.exportFile.empty()) {
+        // --export OUT MODEL stands alone: no session runs.
+        if (optind + 1 != argc || !o.script.empty() || o.window || !o.importFile.empty() ||
+            !o.record.empty()) {
+            usage(std::cerr);
+            return std::nullopt;
+        }
+        o.model = resolveInput(argv[optind]);
+        if (!checkExport(o)) return std::nullopt;
+        return o;
+    }
     if (optind < argc || (o.script.empty() && !o.window) || (!o.script.empty() && o.window)) {
         usage(std::cerr);
         return std::nullopt;
@@ -172,6 +243,7 @@ int finish(acsynt::Session& session, const Options& o) {
     bool written = writeFile(summary, session.summary()) && writeFile(log, logText);
     if (!o.record.empty()) written = writeFile(o.record, session.recording()) && written;
     for (const auto& p : session.pictures()) std::cout << p.string() << "\n";
+    for (const auto& p : session.hardcopies()) std::cout << p.string() << "\n";
     std::cout << summary.string() << "\n" << log.string() << "\n";
     if (!o.record.empty()) std::cout << o.record << "\n";
     if (!written) return kExitFatal;
@@ -180,6 +252,26 @@ int finish(acsynt::Session& session, const Options& o) {
     std::cout << session.failedLines() << (session.failedLines() == 1 ? " error in " : " errors in ")
               << source << "\n";
     return o.window ? 0 : kExitLinesFailed;
+}
+
+/// --export: the model lofted from its description and written as IGES or STEP.
+int exportModel(const Options& o) {
+    try {
+        const acsynt::Model model = acsynt::loadModel(o.model);
+        geom::exchange::writeCadFile(acsynt::cadModelOf(model, {}), o.exportFile);
+        std::cout << o.exportFile << "\n";
+        return 0;
+    } catch (const std::exception& e) {  // a model file that does not parse, a file that cannot be written
+        std::cerr << "acsynt: " << e.what() << "\n";
+        return kExitFatal;
+    }
+}
+
+/// --import: the CAD file read as the first model; false (with the reason) when it is refused.
+bool importFirst(acsynt::Session& session, const Options& o) {
+    if (o.importFile.empty() || session.importCadFile(o.importFile)) return true;
+    std::cerr << "acsynt: --import " << session.message() << "\n";
+    return false;
 }
 
 }  // namespace
@@ -218,6 +310,7 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     context.printMessages = context.validation;
     phigs::vk::WorkstationDisplay display(session.workstation(), context, surface);
     session.setSnapshot([&](const std::filesystem::path& file) { phigs::writePng(display.capture(), file); });
+    if (!importFirst(session, options)) return kExitFatal;
     if (!options.window) {
         session.run();
         return finish(session, options);
@@ -233,6 +326,7 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
 int main(int argc, char** argv) {
     const auto options = parse(argc, argv);
     if (!options) return kExitUsage;
+    if (!options->exportFile.empty()) return exportModel(*options);
     acsynt::SessionSettings settings;
     settings.width = options->width;
     settings.height = options->height;

@@ -17,18 +17,7 @@ using namespace phigs;
 namespace {
 
 std::string refusal(const std::function<void()>& read) {
-    std::string message;
-    const auto cost = test_support::measureWork([&] {
-        try {
-            read();
-        } catch (const ScriptError& e) {
-            message = e.what();
-        }
-    });
-    CHECK(cost.seconds < 1.0);
-    REQUIRE(cost.peakMeasured);
-    CHECK(cost.peakBytes < (256u << 20));
-    return message;
+    return test_support::cheapRefusal<ScriptError>(read);
 }
 
 std::filesystem::path scratch(const std::string& name) {

@@ -72,6 +72,33 @@ printf 'choice FILE\nstring ab\0cd\n' >nul.session
 run nul 1 --script nul.session --output out_nul
 expect_in nul.err "nul.session:2: control character 0x00 at column 10"
 
+# --export converts a model to STEP or IGES without a session; --import reads one as the first model.
+run export_step 0 --export transport.step transport.acm
+[ -s transport.step ] || fail "export_step: no transport.step"
+run export_iges 0 --export fighter.igs fighter.acm
+[ -s fighter.igs ] || fail "export_iges: no fighter.igs"
+run export_ext 2 --export transport.dxf transport.acm
+expect_in export_ext.err "unknown extension '.dxf'"
+run export_missing 2 --export t.step nothing.acm
+expect_in export_missing.err "nothing.acm cannot be read"
+mkdir -p dir.step
+run export_dir 2 --export dir.step transport.acm
+expect_in export_dir.err "is a directory"
+printf 'acsynt-model 1\nmodel broken\n' >broken.acm
+run export_broken 1 --export broken.step broken.acm
+expect_in export_broken.err "broken.acm:"
+run export_and_script 2 --export t.step transport.acm --script good.session
+printf 'choice MODELS\nchoice LIST\nsummary imported\n' >list.session
+run import_step 0 --import transport.step --script list.session --output out_import --size 320x240
+expect_in out_import/imported.txt "model transport (current): 8 components, 376 patches"
+run import_iges 0 --import fighter.igs --script list.session --output out_import_iges --size 320x240
+expect_in out_import_iges/imported.txt "model fighter (current): 6 components, 192 patches"
+run import_missing 2 --import nothing.step --script list.session --output out_import_missing
+expect_in import_missing.err "--import nothing.step cannot be read"
+head -c 20000 transport.step >cut.step
+run import_cut 1 --import cut.step --script list.session --output out_import_cut --size 320x240
+expect_in import_cut.err "cut.step: not a readable STEP file"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures checks failed"
   exit 1

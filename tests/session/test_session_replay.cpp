@@ -3,6 +3,7 @@
 // result.
 #include "SessionTestSupport.h"
 
+#include "../support/VectorRaster.h"
 #include "geom/Evaluate.h"
 
 #include <fstream>
@@ -81,6 +82,11 @@ TEST_CASE("the shipped demo session replays headless: logo and circle mapped, fu
         REQUIRE(std::filesystem::exists(picture));
         session_test::compareWithReference(phigs::readPng(picture), name);
     }
+    // The PDF of the mapped logo's views: vectors only, and the picture looked at and kept.
+    REQUIRE(session.hardcopies() == std::vector<std::filesystem::path>{out / "demo_6_mapped.pdf"});
+    CHECK(vector_test::pdfImageCount(out / "demo_6_mapped.pdf") == 0);
+    session_test::compareWithReference(vector_test::rasterisePdf(out / "demo_6_mapped.pdf", 842, 595),
+                                       "demo_6_mapped_pdf");
     const std::string summary = read(out / "summary.txt");
     CHECK(summary.find("mapping 1: acslogo.crv on transport/right_wing patch 19") != std::string::npos);
     CHECK(summary.find("5 parts, 5 loops (per part 1 1 1 1 1)") != std::string::npos);

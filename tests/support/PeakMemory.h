@@ -3,6 +3,8 @@
 // current size when "5" is written to /proc/self/clear_refs, so the peak after the work, less
 // the resident size before it, is what the work itself needed at most.
 
+#include <catch2/catch.hpp>
+
 #include <chrono>
 #include <cstddef>
 #include <fstream>
@@ -43,6 +45,24 @@ inline WorkCost measureWork(const std::function<void()>& work) {
     const std::size_t peak = procStatusBytes("VmHWM");
     if (cost.peakMeasured) cost.peakBytes = peak > before ? peak - before : 0;
     return cost;
+}
+
+/// Runs `read`, which must refuse its input by throwing `Refusal`, and returns the message; checks
+/// that the refusal came quickly (under a second) and small (under 256 MB of peak memory).
+template <class Refusal>
+std::string cheapRefusal(const std::function<void()>& read) {
+    std::string message;
+    const WorkCost cost = measureWork([&] {
+        try {
+            read();
+        } catch (const Refusal& e) {
+            message = e.what();
+        }
+    });
+    CHECK(cost.seconds < 1.0);
+    REQUIRE(cost.peakMeasured);
+    CHECK(cost.peakBytes < (256u << 20));
+    return message;
 }
 
 }  // namespace test_support

@@ -581,7 +581,9 @@ private:
                             detail::tessellateCurve(e.curve, e.rangeStart, e.rangeEnd, a.criteria, a.valueU);
                         return built;
                     });
-                    emit(s, number, state, DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state)});
+                    emit(s, number, state,
+                         DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), e.rangeStart,
+                                   e.rangeEnd});
                 } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                     ApproximationAttribute a = resolve_.surfaceApproximation(state);
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;

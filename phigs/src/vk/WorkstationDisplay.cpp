@@ -63,6 +63,12 @@ void WorkstationDisplay::open(DisplaySettings settings) {
         case WorkstationType::Window:
             window_ = std::make_unique<WindowTarget>(*context_, windowOf(workstation_, settings));
             break;
+        case WorkstationType::PdfFile:
+        case WorkstationType::SvgFile:
+        case WorkstationType::EpsFile:
+            throw std::invalid_argument("WorkstationDisplay: workstation " +
+                                        std::to_string(workstation_.id()) +
+                                        " is a vector hardcopy: draw it with hardcopy::VectorWorkstation");
     }
     workstation_.attachOutput(this);
 }

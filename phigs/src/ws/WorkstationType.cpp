@@ -17,6 +17,14 @@ WorkstationDescription describeWorkstationType(WorkstationType type) {
             d.name = "hardcopy";
             d.displaySize = {3508, 2480};  // A4 landscape at 300 dpi
             break;
+        case WorkstationType::PdfFile:
+        case WorkstationType::SvgFile:
+        case WorkstationType::EpsFile:
+            d.name = type == WorkstationType::PdfFile   ? "PDF hardcopy"
+                     : type == WorkstationType::SvgFile ? "SVG hardcopy"
+                                                        : "EPS hardcopy";
+            d.displaySize = {841.8898, 595.2756};  // A4 landscape in points: one device unit is 1/72 inch
+            break;
     }
     return d;
 }

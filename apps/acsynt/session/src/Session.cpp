@@ -37,7 +37,7 @@ Session::Session(SessionSettings settings, InputSource& source)
 Session::~Session() = default;
 
 std::set<std::string> Session::directives() {
-    return {"snapshot", "summary"};
+    return {"snapshot", "summary", "hardcopy"};
 }
 
 void Session::setupWorkstation() {
@@ -294,6 +294,8 @@ void Session::writeDirective(const action::Directive& d) {
         snapshot_(file);
         pictures_.push_back(file);
         log_.push_back("snapshot " + file.string());
+    } else if (d.name == "hardcopy") {
+        writeHardcopy(d.arguments[0]);
     } else if (d.name == "summary") {
         const auto file = outputPath(d.arguments[0] + ".txt");
         std::ofstream out(file);

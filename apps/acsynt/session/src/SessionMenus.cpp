@@ -4,9 +4,11 @@
 #include "SessionShared.h"
 
 #include "acsynt/ModelFile.h"
+#include "acsynt/session/ModelExchange.h"
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/exchange/CadFile.h"
 #include "phigs/core/Error.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
@@ -104,6 +106,11 @@ void Session::fileMenu(const std::string& item) {
         prompt("ENTER FILE NAME TO SAVE THE MODEL", Awaiting::SaveFile);
     if (item == "ARCHIVE" && requireModel()) prompt("ENTER ARCHIVE FILE NAME", Awaiting::ArchiveFile);
     if (item == "RETRIEVE") prompt("ENTER ARCHIVE FILE NAME TO RETRIEVE", Awaiting::RetrieveFile);
+    if (item == "EXPORT" && requireModel())
+        prompt("ENTER IGES OR STEP FILE NAME TO EXPORT (.igs, .iges, .stp, .step)", Awaiting::ExportFile);
+    if (item == "IMPORT") prompt("ENTER IGES OR STEP FILE NAME TO IMPORT", Awaiting::ImportFile);
+    if (item == "HARDCOPY" && requireModel())
+        prompt("ENTER HARDCOPY FILE NAME (.pdf, .svg, .eps)", Awaiting::HardcopyFile);
     if (item == "EXIT") {
         say("EXIT");
         finished_ = true;
@@ -245,6 +252,15 @@ void Session::text(const std::string& input) {
             break;
         case Awaiting::SaveFile:
             saveModel(input);
+            break;
+        case Awaiting::ExportFile:
+            exportModel(input);
+            break;
+        case Awaiting::ImportFile:
+            importModel(input);
+            break;
+        case Awaiting::HardcopyFile:
+            writeHardcopy(input);
             break;
         case Awaiting::ArchiveFile:
             archive(input, false);
@@ -474,6 +490,10 @@ void Session::readCurve(const std::string& input) {
 }
 
 void Session::saveModel(const std::string& name) {
+    if (models_.current().description.components.empty()) {
+        fail("MODEL " + models_.current().name + " HAS NO DESCRIPTION TO SAVE (IMPORTED): USE EXPORT");
+        return;
+    }
     const auto path = outputPath(name);
     std::ostringstream text;
     writeAircraftDescription(text, models_.current().description);
@@ -483,6 +503,53 @@ void Session::saveModel(const std::string& name) {
         return;
     }
     say("MODEL SAVED TO " + path.string());
+}
+
+void Session::exportModel(const std::string& name) {
+    const auto path = outputPath(name);
+    const Model& model = models_.current();
+    const geom::exchange::CadModel cad = cadModelOf(model, mappings_);
+    geom::exchange::writeCadFile(cad, path);  // ExchangeError (a runtime_error) names the file and cause
+    std::size_t curves = 0;
+    for (const auto& s : cad.surfaces) curves += s.curves.size();
+    say("MODEL " + model.name + " EXPORTED TO " + path.string() + ": " +
+        std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(model.patchCount()) +
+        " PATCHES, " + std::to_string(curves) + " MAPPED CURVES");
+}
+
+void Session::importModel(const std::string& name) {
+    ImportedModel imported =
+        importCadModel(findInput(name));  // all or nothing: throws before anything changes
+    for (std::size_t i = 0; i < models_.size(); ++i)
+        if (models_.at(i).name == imported.model.name) {
+            fail("A MODEL NAMED " + imported.model.name + " IS ALREADY LOADED");
+            return;
+        }
+    viewCentre_.reset();
+    for (const auto& w : imported.warnings) log_.push_back("import: " + w);
+    const std::string modelName = imported.model.name;
+    const std::size_t patches = imported.model.patchCount(), components = imported.model.components.size();
+    const std::size_t curves = imported.mappings.size();
+    models_.add(std::move(imported.model));
+    for (auto& m : imported.mappings) mappings_.push_back(std::move(m));
+    showModel();
+    say("MODEL " + modelName + " IMPORTED: " + std::to_string(components) + " COMPONENTS, " +
+        std::to_string(patches) + " PATCHES, " + std::to_string(curves) + " MAPPED CURVES" +
+        (imported.warnings.empty()
+             ? ""
+             : ", " + std::to_string(imported.warnings.size()) + " WARNINGS IN THE LOG"));
+}
+
+bool Session::importCadFile(const std::filesystem::path& path) {
+    const std::size_t before = failedLines_;
+    try {
+        importModel(path.string());
+    } catch (const std::runtime_error& e) {
+        fail(e.what());
+    } catch (const std::invalid_argument& e) {
+        fail(e.what());
+    }
+    return failedLines_ == before;
 }
 
 void Session::archive(const std::string& name, bool retrieve) {

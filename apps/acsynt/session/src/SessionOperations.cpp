@@ -67,6 +67,7 @@ void Session::mapCurve(bool previewOnly) {
         for (const auto& loop : part.loops) {
             record.boundaryWalks += loop.boundaryWalks;
             record.polylines.push_back(loop.points);
+            record.uvPolylines.push_back(loop.uv);
         }
         for (const auto& issue : part.issues) log_.push_back("mapping: " + issue);
     }

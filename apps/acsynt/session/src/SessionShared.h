@@ -15,8 +15,9 @@ using namespace phigs;
 
 inline const char* const title = "ACSYNT B-SPLINE MODULE V1.2.2";
 inline const std::vector<std::string> mainItems{"FILE", "VIEW", "CURVE_MAP", "SURF_REDN", "MODELS", "EXIT"};
-inline const std::vector<std::string> fileItems{
-    "RETURN", "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL", "ARCHIVE", "RETRIEVE", "EXIT"};
+inline const std::vector<std::string> fileItems{"RETURN",   "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL",
+                                                "ARCHIVE",  "RETRIEVE",   "EXPORT",          "IMPORT",
+                                                "HARDCOPY", "EXIT"};
 inline const std::vector<std::string> viewItems{"RETURN",   "ONE_VIEW",         "FOUR_VIEWS",
                                                 "SHADE",    "WIREFRAME",        "HULL_ON",
                                                 "HULL_OFF", "CENTRE_ON_MARKER", "RESET_VIEW"};

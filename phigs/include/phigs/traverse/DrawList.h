@@ -95,11 +95,13 @@ struct DrawMesh {
     LineStyle isoLineStyle;
 };
 
-/// A B-spline curve already tessellated into a polyline; `curve` keeps the exact form.
+/// A B-spline curve already tessellated into a polyline; `curve` keeps the exact form and the
+/// range the part drawn (a vector target tessellates it again to its own tolerance).
 struct DrawCurve {
     std::vector<glm::dvec3> points;
     std::shared_ptr<const geom::Curve> curve;
     LineStyle style;
+    double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
 };
 
 /// The closed family of primitives a draw list holds.

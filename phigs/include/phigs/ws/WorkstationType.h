@@ -7,8 +7,9 @@
 
 namespace phigs {
 
-/// The workstation types this implementation knows.
-enum class WorkstationType { OffscreenImage, Window, Hardcopy };
+/// The workstation types this implementation knows: Hardcopy is the PNG of the raster picture
+/// (phigs_vk); PdfFile, SvgFile and EpsFile are the vector hardcopies (phigs_hardcopy).
+enum class WorkstationType { OffscreenImage, Window, Hardcopy, PdfFile, SvgFile, EpsFile };
 
 /// PHIGS workstation categories.
 enum class WorkstationCategory { Output, OutIn };
@@ -17,7 +18,7 @@ enum class WorkstationCategory { Output, OutIn };
 struct WorkstationDescription {
     WorkstationType type = WorkstationType::OffscreenImage;
     WorkstationCategory category = WorkstationCategory::Output;
-    glm::dvec2 displaySize{1024, 768};  ///< display space in device coordinates (pixels)
+    glm::dvec2 displaySize{1024, 768};  ///< display space in device coordinates (pixels; points for vectors)
     int viewTableSize = 32;
     int colourTableSize = 256;
     int bundleTableSize = 32;

@@ -13,6 +13,9 @@
 #include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/ws/WorkstationMapping.h"
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -52,7 +55,8 @@ struct MappingRecord {
     ReferencePoint reference;
     std::size_t parts = 0, loops = 0, boundaryWalks = 0;
     std::vector<std::size_t> loopsPerPart;
-    std::vector<std::vector<glm::dvec3>> polylines;  ///< the mapped loops in model coordinates
+    std::vector<std::vector<glm::dvec3>> polylines;    ///< the mapped loops in model coordinates
+    std::vector<std::vector<glm::dvec2>> uvPolylines;  ///< the same loops in the component's (u, w)
 };
 
 /// One data reduction of a component (SURF_REDN).
@@ -83,7 +87,7 @@ public:
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    /// The directives a session script may use: snapshot NAME, summary NAME.
+    /// The directives a session script may use: snapshot NAME, summary NAME, hardcopy NAME.pdf|svg|eps.
     static std::set<std::string> directives();
 
     /// Handles events until EXIT or until the source is exhausted.
@@ -131,8 +135,14 @@ public:
     const std::vector<MappingRecord>& mappings() const { return mappings_; }
     const std::vector<ReductionRecord>& reductions() const { return reductions_; }
     const std::vector<std::filesystem::path>& pictures() const { return pictures_; }
+    /// The vector hardcopies written (FILE > HARDCOPY, `hardcopy NAME`).
+    const std::vector<std::filesystem::path>& hardcopies() const { return hardcopies_; }
     bool fourViews() const { return fourViews_; }
     const DisplayStyle& style() const { return style_; }
+
+    /// FILE > IMPORT of an IGES or STEP file, as the command line's --import does it before a
+    /// session's input: false (with the message) when it is refused and nothing changed.
+    bool importCadFile(const std::filesystem::path& path);
 
     /// The text summary (patch picked, marker (u, w), mapped loops, control points before and after).
     std::string summary() const;
@@ -154,6 +164,9 @@ private:
         ModelFile,
         CurveFile,
         SaveFile,
+        ExportFile,
+        ImportFile,
+        HardcopyFile,
         ArchiveFile,
         RetrieveFile,
         Tolerance,
@@ -189,6 +202,10 @@ private:
     void readModel(const std::string& name);
     void readCurve(const std::string& input);
     void saveModel(const std::string& name);
+    void exportModel(const std::string& name);  ///< FILE > EXPORT: IGES or STEP by the name's extension
+    void importModel(const std::string& name);  ///< FILE > IMPORT
+    /// FILE > HARDCOPY and `hardcopy NAME`: the views as PDF, SVG or EPS by the name's extension.
+    void writeHardcopy(const std::string& name);
     void archive(const std::string& name, bool retrieve);
     void reduce(int component, double tolerance, std::size_t count);
     void mapCurve(bool previewOnly);
@@ -260,6 +277,7 @@ private:
     std::vector<ReductionRecord> reductions_;
 
     std::vector<std::filesystem::path> pictures_;
+    std::vector<std::filesystem::path> hardcopies_;
 };
 
 }  // namespace acsynt

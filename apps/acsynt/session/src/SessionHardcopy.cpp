@@ -1,0 +1,100 @@
+// FILE > HARDCOPY and the `hardcopy FILE` directive: the geometry area (one or four views) as a
+// PDF, SVG or EPS file through a vector hardcopy workstation showing the same structures.
+#include "acsynt/session/Session.h"
+
+#include "SessionShared.h"
+
+#include "phigs/hardcopy/VectorWorkstation.h"
+
+#include <algorithm>
+
+namespace acsynt {
+
+using namespace phigs;
+using namespace session_detail;
+
+namespace {
+
+/// The hardcopy workstation's identifier: open only while a hardcopy is written.
+constexpr int kHardcopyWorkstation = 2;
+
+WorkstationType workstationTypeOf(hardcopy::VectorFormat format) {
+    switch (format) {
+        case hardcopy::VectorFormat::Pdf:
+            return WorkstationType::PdfFile;
+        case hardcopy::VectorFormat::Svg:
+            return WorkstationType::SvgFile;
+        case hardcopy::VectorFormat::Eps:
+            return WorkstationType::EpsFile;
+    }
+    return WorkstationType::PdfFile;
+}
+
+/// Closes the hardcopy workstation however the writing ends.
+class OpenWorkstation {
+public:
+    OpenWorkstation(Phigs& phigs, int id, WorkstationType type)
+        : phigs_(phigs), id_(id), workstation_(phigs.openWorkstation(id, type)) {}
+    ~OpenWorkstation() { phigs_.closeWorkstation(id_); }
+    OpenWorkstation(const OpenWorkstation&) = delete;
+    OpenWorkstation& operator=(const OpenWorkstation&) = delete;
+    Workstation& operator*() { return workstation_; }
+
+private:
+    Phigs& phigs_;
+    int id_;
+    Workstation& workstation_;
+};
+
+/// The screen's tables that the geometry uses: views, lights, colours and the HLHSR mode.
+void copyTables(const WorkstationTables& from, Workstation& to) {
+    for (int index : from.views.definedIndices())
+        if (index > 0) to.setViewRepresentation(index, from.views.get(index));
+    for (const auto& [index, light] : from.lights) to.setLightSourceRepresentation(index, light);
+    for (int index : from.colours.definedIndices())
+        to.setColourRepresentation(index, from.colours.get(index));
+    to.setHlhsrMode(from.hlhsrMode);
+}
+
+/// Maps the NPC box [lo, hi] onto the middle of the display surface, keeping its shape.
+void frame(Workstation& ws, glm::dvec3 lo, glm::dvec3 hi) {
+    const glm::dvec2 display = ws.description().displaySize;
+    const glm::dvec2 size(hi.x - lo.x, hi.y - lo.y);
+    const double scale = std::min(display.x / size.x, display.y / size.y);
+    const glm::dvec2 used = size * scale, offset = (display - used) / 2.0;
+    ws.setWorkstationWindow(lo, hi);
+    ws.setWorkstationViewport({offset.x, offset.y, 0}, {offset.x + used.x, offset.y + used.y, 1});
+}
+
+}  // namespace
+
+void Session::writeHardcopy(const std::string& name) {
+    const std::filesystem::path path = outputPath(name);
+    const hardcopy::VectorFormat format = hardcopy::vectorFormatForFile(path);  // invalid_argument
+    OpenWorkstation paper(phigs_, kHardcopyWorkstation, workstationTypeOf(format));
+    picture();  // the screen's views and model structures up to date
+    copyTables(workstation_->tables(), *paper);
+    // The geometry area and a pixel round it inside the screen, so that its frame is drawn whole.
+    const PixelBox& g = layout_.geometry;
+    const PixelBox area{std::max(g.x0 - 1, 0.0), std::max(g.y0 - 1, 0.0),
+                        std::min(g.x1 + 1, double(layout_.width)),
+                        std::min(g.y1 + 1, double(layout_.height))};
+    frame(*paper, npc({area.x0, area.y1}, 0), npc({area.x1, area.y0}, 1));
+    (*paper).postStructure(structures::geometry, 0.5);
+
+    // What the screen sizes in pixels (line widths, markers) keeps its size relative to the views.
+    hardcopy::PageSetup page;
+    const glm::dvec2 pageSize = page.pageSize();
+    page.nominalPixel = std::min(pageSize.x / (area.x1 - area.x0), pageSize.y / (area.y1 - area.y0));
+    hardcopy::VectorOptions options;
+    options.surfaces =
+        style_.shaded ? hardcopy::SurfaceDrawing::Shaded : hardcopy::SurfaceDrawing::HiddenLine;
+    hardcopy::VectorWorkstation file(path, format, page, options);
+    file.update((*paper).display());  // std::runtime_error naming the file when it cannot be written
+    hardcopies_.push_back(path);
+    log_.push_back("hardcopy " + path.string());
+    say(std::string(hardcopy::vectorFormatName(format)) + " HARDCOPY OF " +
+        (fourViews_ ? "FOUR VIEWS" : "THE VIEW") + " WRITTEN TO " + path.string());
+}
+
+}  // namespace acsynt

@@ -1,0 +1,269 @@
+// readCadFile: an IGES or STEP file's faces back to named B-spline surfaces and curve sets.
+#include "CadDocument.h"
+#include "ImportCodec.h"
+#include "Isolated.h"
+#include "MessageCollector.h"
+#include "OcctSession.h"
+#include "ShapeRead.h"
+#include "Units.h"
+
+#include "geom/exchange/CadFile.h"
+#include "geom/exchange/ExchangeError.h"
+#include "geom/exchange/PatchGrid.h"
+
+#include <IGESCAFControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <XSControl_WorkSession.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+namespace geom::exchange {
+
+namespace {
+
+std::string failureText(const Standard_Failure& e) {
+    const char* text = e.GetMessageString();
+    return text && *text ? text : e.DynamicType()->Name();
+}
+
+/// Refuses, before OpenCASCADE sees it, a path that is not a readable, non-empty file within the limit.
+void checkFile(const std::filesystem::path& path, const CadReadOptions& options) {
+    const std::string file = path.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw ExchangeError(file, "no such file");
+    if (std::filesystem::is_directory(path, ec)) throw ExchangeError(file, "is a directory");
+    if (!std::filesystem::is_regular_file(path, ec)) throw ExchangeError(file, "is not a regular file");
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || !std::ifstream(path)) throw ExchangeError(file, "cannot be read");
+    if (size == 0) throw ExchangeError(file, "is empty");
+    if (size > options.maxFileBytes)
+        throw ExchangeError(file, std::to_string(size) + " bytes: larger than the limit of " +
+                                      std::to_string(options.maxFileBytes));
+}
+
+/// Refuses a file whose loading failed (truncated, corrupt): the first failure OpenCASCADE noted.
+void checkLoad(const opencascade::handle<XSControl_WorkSession>& session, const std::string& file,
+               const char* format) {
+    const Interface_CheckIterator checks = session->ModelCheckList();
+    for (checks.Start(); checks.More(); checks.Next()) {
+        const opencascade::handle<Interface_Check>& check = checks.Value();
+        if (!check->HasFailed()) continue;
+        std::string text = check->NbFails() > 0 ? check->CFail(1) : "a load failure";
+        // Some of OpenCASCADE's messages keep their printf templates ("parameter %d").
+        for (std::size_t at; (at = text.find(" %d")) != std::string::npos;) text.erase(at, 3);
+        if (const std::size_t at = text.find(" Process continues."); at != std::string::npos) text.erase(at);
+        const int entity = checks.Number();
+        if (entity > 0) text = "entity " + std::to_string(entity) + ": " + text;
+        throw ExchangeError(file, std::string("not a valid ") + format + " file (" + text + ")");
+    }
+}
+
+void checkUnit(const std::string& unit, const std::string& file) {
+    static const char* known = " (m, mm, cm, km, um, in, ft, mi, mil, uin)";
+    if (unit.empty())
+        throw ExchangeError(file, std::string("its length unit is not one the program knows") + known);
+    if (!metresPerUnit(unit))
+        throw ExchangeError(file, "length unit '" + unit + "' is not one the program knows" + known);
+}
+
+/// "why", with OpenCASCADE's first failure message after it where there was one.
+std::string because(const std::string& why, const MessageCollector& messages) {
+    const std::string first = messages.first();
+    return first.empty() ? why : why + " (" + first + ")";
+}
+
+void readStep(const std::string& file, opencascade::handle<TDocStd_Document> document, CadImport& result,
+              const MessageCollector& messages) {
+    STEPCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    reader.SetColorMode(true);
+    if (reader.ReadFile(file.c_str()) != IFSelect_RetDone)
+        throw ExchangeError(file, because("not a readable STEP file", messages));
+    checkLoad(reader.Reader().WS(), file, "STEP");
+    TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
+    reader.ChangeReader().FileUnits(lengths, angles, solidAngles);
+    for (int i = 1; i <= lengths.Length(); ++i) checkUnit(lengths.Value(i).ToCString(), file);
+    if (lengths.IsEmpty())
+        result.warnings.push_back(
+            "the file declares no length unit: read as millimetres, OpenCASCADE's default");
+    else
+        result.fileUnit = lengths.First().ToCString();
+    if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+}
+
+std::string readIges(const std::string& file, opencascade::handle<TDocStd_Document> document,
+                     CadImport& result, const MessageCollector& messages) {
+    IGESCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    reader.SetColorMode(true);
+    if (reader.ReadFile(file.c_str()) != IFSelect_RetDone)
+        throw ExchangeError(file, because("not a readable IGES file", messages));
+    checkLoad(reader.WS(), file, "IGES");
+    const IGESData_GlobalSection& header = reader.IGESModel()->GlobalSection();
+    const int flag = header.UnitFlag();
+    const std::string unit = header.UnitName().IsNull() ? "" : header.UnitName()->ToCString();
+    if (flag == 3 || (flag >= 1 && flag <= 11 && !unit.empty()))
+        checkUnit(unit, file);
+    else if (flag < 1 || flag > 11)
+        throw ExchangeError(file,
+                            "unit flag " + std::to_string(flag) + " is not an IGES length unit (1 to 11)");
+    result.fileUnit = unit;
+    if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+    return header.SendName().IsNull() ? "" : header.SendName()->ToCString();
+}
+
+double netSize(const std::vector<Surface>& surfaces) {
+    double size = 0;
+    for (const Surface& s : surfaces)
+        for (const auto& p : s.points) size = std::max({size, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    return 1.0 + size;
+}
+
+/// What a part's faces give: one surface (its patches joined) or one per face.
+void addSurfaces(const NamedShape& part, const std::string& name, CadModel& model, CadImport& result,
+                 std::size_t& poles, const CadReadOptions& options, const std::string& file) {
+    std::vector<Surface> surfaces;
+    std::map<std::string, std::size_t> problems;
+    for (TopExp_Explorer f(part.shape, TopAbs_FACE); f.More(); f.Next()) {
+        FaceSurface s = faceSurface(TopoDS::Face(f.Current()));
+        if (!s.surface) {
+            ++problems[s.problem];
+            continue;
+        }
+        poles += s.surface->points.size();
+        if (poles > options.maxPoles)
+            throw ExchangeError(file,
+                                "more than " + std::to_string(options.maxPoles) + " control points in all");
+        surfaces.push_back(std::move(*s.surface));
+    }
+    for (const auto& [problem, count] : problems)
+        result.warnings.push_back(name + ": " + std::to_string(count) + (count == 1 ? " face" : " faces") +
+                                  " left out: " + problem);
+    if (surfaces.size() > 1)
+        if (auto joined = joinPatches(surfaces, 1e-11 * netSize(surfaces))) surfaces = {std::move(*joined)};
+    for (std::size_t k = 0; k < surfaces.size(); ++k)
+        model.surfaces.push_back({surfaces.size() == 1 ? name : name + "_" + std::to_string(k + 1),
+                                  std::move(surfaces[k]),
+                                  part.colour,
+                                  {}});
+}
+
+/// A part named "SURFACE/NAME": its faces' loops become that surface's curves.
+void addCurves(const NamedShape& part, CadSurface& surface, CadImport& result) {
+    SurfaceCurves curves;
+    curves.name = part.name.substr(surface.name.size() + 1);
+    for (TopExp_Explorer f(part.shape, TopAbs_FACE); f.More(); f.Next()) {
+        std::string problem;
+        auto loops = faceLoops(TopoDS::Face(f.Current()), problem);
+        if (!loops) {
+            result.warnings.push_back(part.name + ": left out: " + problem);
+            return;
+        }
+        for (auto& loop : *loops) curves.loops.push_back(std::move(loop));
+    }
+    unwrapLoops(curves.loops, surface.surface);
+    surface.curves.push_back(std::move(curves));
+}
+
+CadModel modelOf(const std::vector<NamedShape>& parts, CadImport& result, const CadReadOptions& options,
+                 const std::string& file) {
+    std::size_t faces = 0, poles = 0;
+    for (const NamedShape& part : parts)
+        for (TopExp_Explorer f(part.shape, TopAbs_FACE); f.More(); f.Next())
+            if (++faces > options.maxFaces)
+                throw ExchangeError(file, "more than " + std::to_string(options.maxFaces) + " faces");
+    auto curvesOf = [&](const NamedShape& part) {
+        const std::size_t slash = part.name.find('/');
+        for (const NamedShape& other : parts)
+            if (slash != std::string::npos && other.name == part.name.substr(0, slash)) return true;
+        return false;
+    };
+    CadModel model;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (curvesOf(parts[i])) continue;
+        const std::string name = parts[i].name.empty() ? "part_" + std::to_string(i + 1) : parts[i].name;
+        if (!TopExp_Explorer(parts[i].shape, TopAbs_FACE).More())
+            result.warnings.push_back(name + ": no faces (curves or points only), left out");
+        else
+            addSurfaces(parts[i], name, model, result, poles, options, file);
+    }
+    for (const NamedShape& part : parts) {
+        if (!curvesOf(part)) continue;
+        const std::string owner = part.name.substr(0, part.name.find('/'));
+        auto it = std::find_if(model.surfaces.begin(), model.surfaces.end(),
+                               [&](const CadSurface& s) { return s.name == owner; });
+        if (it == model.surfaces.end())
+            result.warnings.push_back(part.name + ": left out: its surface " + owner +
+                                      " did not come in whole");
+        else
+            addCurves(part, *it, result);
+    }
+    if (model.surfaces.empty())
+        throw ExchangeError(file, faces == 0
+                                      ? "no surfaces in it (no faces at all)"
+                                      : "no B-spline surface could be taken from its " +
+                                            std::to_string(faces) + " faces" +
+                                            (result.warnings.empty() ? "" : ": " + result.warnings.front()));
+    return model;
+}
+
+/// The read itself, in the child process readCadFile starts (the lock is held by its parent).
+CadImport readHere(const std::filesystem::path& path, const CadReadOptions& options,
+                   const std::string& unit) {
+    const std::string file = path.string();
+    CadImport result;
+    OcctSession session(unit, OcctSession::Locking::AlreadyHeld);
+    const opencascade::handle<MessageCollector> messages = new MessageCollector;
+    Message::DefaultMessenger()->AddPrinter(messages);  // for this child's life
+    try {
+        const opencascade::handle<TDocStd_Document> document = session.newDocument();
+        std::string modelName;
+        if (cadFormatOf(path) == CadFormat::Step)
+            readStep(file, document, result, *messages);
+        else
+            modelName = readIges(file, document, result, *messages);
+        const std::vector<NamedShape> parts = documentParts(document, modelName);
+        result.model = modelOf(parts, result, options, file);
+        result.model.name = modelName.empty() ? path.stem().string() : modelName;
+        result.model.unit = options.unit;
+    } catch (const Standard_Failure& e) {
+        throw ExchangeError(file, "OpenCASCADE cannot read it: " + failureText(e));
+    }
+    return result;
+}
+
+}  // namespace
+
+CadImport readCadFile(const std::filesystem::path& path, const CadReadOptions& options) {
+    const std::string file = path.string();
+    cadFormatOf(path);
+    const std::optional<std::string> unit = occtUnitCode(options.unit);
+    if (!unit)
+        throw ExchangeError(file,
+                            "the requested length unit '" + options.unit + "' is not one the program knows");
+    checkFile(path, options);
+    const auto lock = OcctSession::lock();
+    const std::string bytes = runIsolated([&] { return encodeImport(readHere(path, options, *unit)); }, file,
+                                          options.maxMemoryBytes, options.maxSeconds);
+    try {
+        return decodeImport(bytes);
+    } catch (const std::exception& e) {
+        throw ExchangeError(file, std::string("the reader's answer cannot be used: ") + e.what());
+    }
+}
+
+}  // namespace geom::exchange

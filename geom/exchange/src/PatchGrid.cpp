@@ -1,0 +1,235 @@
+#include "geom/exchange/PatchGrid.h"
+
+#include "geom/BezierExtraction.h"
+#include "geom/Curve.h"
+#include "geom/KnotRemoval.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace geom::exchange {
+
+namespace {
+
+/// The distinct parameter values at which patches meet, merged within `eps`.
+struct Breaks {
+    std::vector<double> values;
+    double eps = 0;
+
+    std::optional<std::size_t> find(double t) const {
+        const auto it = std::lower_bound(values.begin(), values.end(), t - eps);
+        if (it == values.end() || std::abs(*it - t) > eps) return std::nullopt;
+        return std::size_t(it - values.begin());
+    }
+};
+
+Breaks breaksOf(std::vector<double> all) {
+    std::sort(all.begin(), all.end());
+    Breaks b;
+    b.eps = 1e-12 * (all.back() - all.front());
+    for (double t : all)
+        if (b.values.empty() || t - b.values.back() > b.eps) b.values.push_back(t);
+    return b;
+}
+
+/// The curve along u (alongV false) or v through row or column `line` of the net.
+Curve lineCurve(const Surface& s, std::size_t line, bool alongV) {
+    const std::size_t count = alongV ? s.countV : s.countU;
+    std::vector<glm::dvec3> points(count);
+    std::vector<double> weights;
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t i = alongV ? line : k, j = alongV ? k : line;
+        points[k] = s.point(i, j);
+        if (s.rational()) weights.push_back(s.weight(i, j));
+    }
+    return Curve(alongV ? s.degreeV : s.degreeU, alongV ? s.knotsV : s.knotsU, std::move(points),
+                 std::move(weights));
+}
+
+/// The surface whose lines along u (alongV false) or v are `lines`.
+Surface fromLines(const Surface& shape, const std::vector<Curve>& lines, bool alongV) {
+    const std::size_t count = lines.front().points.size(), other = lines.size();
+    const std::size_t countU = alongV ? other : count, countV = alongV ? count : other;
+    std::vector<glm::dvec3> points(countU * countV);
+    std::vector<double> weights(shape.rational() ? points.size() : 0);
+    for (std::size_t l = 0; l < other; ++l)
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t index = alongV ? l * countV + k : k * countV + l;
+            points[index] = lines[l].points[k];
+            if (shape.rational()) weights[index] = lines[l].weights[k];
+        }
+    return Surface(shape.degreeU, shape.degreeV, alongV ? shape.knotsU : lines.front().knots,
+                   alongV ? lines.front().knots : shape.knotsV, countU, countV, std::move(points),
+                   std::move(weights));
+}
+
+/// Removes the interior knot `value` from every line along u or v as often as all of them allow,
+/// but keeps it once: each patch edge was a knot.
+Surface removeKnotEverywhere(const Surface& s, double value, bool alongV, double tolerance) {
+    const std::size_t other = alongV ? s.countU : s.countV;
+    std::vector<Curve> lines;
+    int times = (alongV ? s.degreeV : s.degreeU) - 1;
+    for (std::size_t l = 0; l < other && times > 0; ++l) {
+        ExactKnotRemoval r = removeKnot(lineCurve(s, l, alongV), value, times, tolerance);
+        times = std::min(times, r.removed);
+        lines.push_back(std::move(r.curve));
+    }
+    if (times == 0) return s;
+    for (std::size_t l = 0; l < other; ++l) {
+        const std::size_t before = lines[l].points.size(),
+                          after = (alongV ? s.countV : s.countU) - std::size_t(times);
+        if (before != after) lines[l] = removeKnot(lineCurve(s, l, alongV), value, times, tolerance).curve;
+    }
+    return fromLines(s, lines, alongV);
+}
+
+bool near(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
+    return glm::length(a - b) <= tolerance;
+}
+
+/// The pieces' Bézier patches on the grid of their breaks, joined with C0 knots; nullopt when
+/// they do not tile the grid or neighbouring edges differ.
+std::optional<Surface> assemble(const std::vector<BezierSurfacePiece>& cells, double tolerance) {
+    std::vector<double> us, vs;
+    for (const auto& c : cells) {
+        us.insert(us.end(), {c.u0, c.u1});
+        vs.insert(vs.end(), {c.v0, c.v1});
+    }
+    const Breaks bu = breaksOf(us), bv = breaksOf(vs);
+    const std::size_t mu = bu.values.size() - 1, mv = bv.values.size() - 1;
+    if (mu * mv != cells.size()) return std::nullopt;
+    const std::size_t p = std::size_t(cells.front().surface.degreeU),
+                      q = std::size_t(cells.front().surface.degreeV);
+    const std::size_t countU = mu * p + 1, countV = mv * q + 1;
+    const bool rational = cells.front().surface.rational();
+    std::vector<glm::dvec3> points(countU * countV);
+    std::vector<double> weights(rational ? points.size() : 0);
+    std::vector<char> filled(points.size(), 0), used(mu * mv, 0);
+    for (const auto& c : cells) {
+        const auto i0 = bu.find(c.u0), i1 = bu.find(c.u1), j0 = bv.find(c.v0), j1 = bv.find(c.v1);
+        if (!i0 || !i1 || !j0 || !j1 || *i1 != *i0 + 1 || *j1 != *j0 + 1 || used[*i0 * mv + *j0])
+            return std::nullopt;
+        used[*i0 * mv + *j0] = 1;
+        for (std::size_t a = 0; a <= p; ++a)
+            for (std::size_t b = 0; b <= q; ++b) {
+                const std::size_t index = (*i0 * p + a) * countV + *j0 * q + b;
+                const glm::dvec3& point = c.surface.point(a, b);
+                const double w = c.surface.weight(a, b);
+                if (filled[index] && (!near(points[index], point, tolerance) ||
+                                      (rational && std::abs(weights[index] - w) > tolerance * w)))
+                    return std::nullopt;
+                points[index] = point;
+                if (rational) weights[index] = w;
+                filled[index] = 1;
+            }
+    }
+    auto knots = [](const Breaks& b, std::size_t degree) {
+        std::vector<double> k(degree + 1, b.values.front());
+        for (std::size_t i = 1; i + 1 < b.values.size(); ++i) k.insert(k.end(), degree, b.values[i]);
+        k.insert(k.end(), degree + 1, b.values.back());
+        return k;
+    };
+    return Surface(int(p), int(q), knots(bu, p), knots(bv, q), countU, countV, std::move(points),
+                   std::move(weights));
+}
+
+/// Unclamps the start of a spline clamped there to the periodic extension of its knots, by
+/// undoing, last first, the `degree` insertions of the start knot that would clamp it again.
+void unclampStart(int degree, std::vector<double>& knots, std::vector<glm::dvec4>& poles) {
+    const std::size_t p = std::size_t(degree), n = poles.size() - 1;
+    const std::vector<double> U = knots;
+    const double a = U[p];
+    for (std::size_t k = 0; k < p; ++k) knots[p - 1 - k] = knots[p - k] - (U[n + 1 - k] - U[n - k]);
+    std::vector<glm::dvec4> r(n + 1 + p);
+    std::copy(poles.begin(), poles.end(), r.begin() + std::ptrdiff_t(p));
+    for (std::size_t j = p; j-- > 0;) {
+        // Inserting the start knot once more (j + 1 times there) maps r_j to r: r[i] = alpha
+        // r_j[i] + (1 - alpha) r_j[i - 1] for i in j + 1 .. p - 1, a shift above; solved downwards.
+        std::vector<glm::dvec4> previous(n + 1 + j);
+        for (std::size_t i = p; i <= n + j + 1; ++i) previous[i - 1] = r[i];
+        for (std::size_t i = p - 1; i >= j + 1; --i) {
+            const double alpha = (a - knots[i]) / (U[p + i - j] - knots[i]);
+            previous[i - 1] = (r[i] - alpha * previous[i]) / (1.0 - alpha);
+        }
+        r = std::move(previous);
+    }
+    poles = std::move(r);
+}
+
+/// The same spline with its parameter reversed (t -> -t), so its end becomes its start.
+void mirror(std::vector<double>& knots, std::vector<glm::dvec4>& poles) {
+    std::reverse(knots.begin(), knots.end());
+    for (double& t : knots) t = -t;
+    std::reverse(poles.begin(), poles.end());
+}
+
+bool clamped(const std::vector<double>& knots, int degree) {
+    const std::size_t p = std::size_t(degree), m = knots.size() - 1;
+    return knots[0] == knots[p] && knots[m] == knots[m - p];
+}
+
+}  // namespace
+
+std::optional<Surface> makePeriodic(const Surface& surface, bool alongV, double tolerance) {
+    validate(surface, "makePeriodic");
+    const int degree = alongV ? surface.degreeV : surface.degreeU;
+    const std::vector<double>& knots = alongV ? surface.knotsV : surface.knotsU;
+    const std::size_t count = alongV ? surface.countV : surface.countU,
+                      other = alongV ? surface.countU : surface.countV;
+    const std::size_t period = count - std::size_t(degree);
+    if (!clamped(knots, degree) || period < std::size_t(degree) + 1) return std::nullopt;
+    std::vector<Curve> lines;
+    std::vector<double> unclamped;
+    for (std::size_t l = 0; l < other; ++l) {
+        Curve c = lineCurve(surface, l, alongV);
+        std::vector<glm::dvec4> poles;
+        for (std::size_t k = 0; k < count; ++k) poles.emplace_back(c.points[k] * c.weight(k), c.weight(k));
+        unclamped = knots;
+        unclampStart(degree, unclamped, poles);
+        mirror(unclamped, poles);
+        unclampStart(degree, unclamped, poles);
+        mirror(unclamped, poles);
+        for (std::size_t k = 0; k < count; ++k) {
+            c.points[k] = glm::dvec3(poles[k]) / poles[k].w;
+            if (c.rational()) c.weights[k] = poles[k].w;
+        }
+        for (std::size_t k = period; k < count; ++k) {
+            if (!near(c.points[k], c.points[k - period], tolerance) ||
+                (c.rational() && std::abs(c.weights[k] - c.weights[k - period]) > tolerance * c.weights[k]))
+                return std::nullopt;
+            c.points[k] = c.points[k - period];
+            if (c.rational()) c.weights[k] = c.weights[k - period];
+        }
+        c.knots = unclamped;
+        lines.push_back(std::move(c));
+    }
+    return fromLines(surface, lines, alongV);
+}
+
+std::optional<Surface> joinPatches(const std::vector<Surface>& pieces, double tolerance) {
+    if (pieces.empty()) return std::nullopt;
+    std::vector<BezierSurfacePiece> cells;
+    for (const Surface& s : pieces) {
+        const Surface& first = pieces.front();
+        if (s.degreeU != first.degreeU || s.degreeV != first.degreeV || s.rational() != first.rational())
+            return std::nullopt;
+        for (auto& c : extractBezier(s)) cells.push_back(std::move(c));
+    }
+    std::optional<Surface> joined = assemble(cells, tolerance);
+    if (!joined) return std::nullopt;
+    Surface s = std::move(*joined);
+    for (const bool alongV : {false, true}) {
+        const std::vector<double> knots = alongV ? s.knotsV : s.knotsU;
+        const int degree = alongV ? s.degreeV : s.degreeU;
+        for (std::size_t i = std::size_t(degree) + 1; i + std::size_t(degree) + 1 < knots.size(); ++i)
+            if (knots[i] != knots[i - 1]) s = removeKnotEverywhere(s, knots[i], alongV, tolerance);
+    }
+    for (const bool alongV : {false, true})
+        if (auto periodic = makePeriodic(s, alongV, tolerance)) s = std::move(*periodic);
+    return s;
+}
+
+}  // namespace geom::exchange

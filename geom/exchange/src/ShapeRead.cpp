@@ -1,0 +1,223 @@
+#include "ShapeRead.h"
+
+#include "geom/GeometryError.h"
+#include "geom/Reparameterize.h"
+#include "geom/exchange/OcctConversion.h"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace geom::exchange {
+
+namespace {
+
+std::string typeName(const opencascade::handle<Standard_Transient>& object) {
+    const std::string name = object->DynamicType()->Name();
+    return name.rfind("Geom_", 0) == 0 ? name.substr(5) : name;
+}
+
+std::string failureText(const Standard_Failure& e) {
+    const char* text = e.GetMessageString();
+    return text && *text ? text : e.DynamicType()->Name();
+}
+
+/// Every edge's curve on the face runs along the sides of the (u, v) box.
+bool rectangular(const TopoDS_Face& face, double u0, double u1, double v0, double v1) {
+    const double eu = 1e-7 * (u1 - u0), ev = 1e-7 * (v1 - v0);
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+        double f = 0, l = 0;
+        opencascade::handle<Geom2d_Curve> pcurve =
+            BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, f, l);
+        if (pcurve.IsNull()) return false;
+        for (int k = 0; k <= 8; ++k) {
+            const gp_Pnt2d p = pcurve->Value(f + (l - f) * k / 8.0);
+            const bool onU = std::abs(p.X() - u0) <= eu || std::abs(p.X() - u1) <= eu;
+            const bool onV = std::abs(p.Y() - v0) <= ev || std::abs(p.Y() - v1) <= ev;
+            if (!onU && !onV) return false;
+        }
+    }
+    return true;
+}
+
+/// The face's surface as a B-spline on [u0, u1] x [v0, v1] (converted and cut by OpenCASCADE).
+opencascade::handle<Geom_BSplineSurface> bsplineOn(opencascade::handle<Geom_Surface> s, double u0, double u1,
+                                                   double v0, double v1) {
+    while (auto trimmed = opencascade::handle<Geom_RectangularTrimmedSurface>::DownCast(s))
+        s = trimmed->BasisSurface();
+    opencascade::handle<Geom_BSplineSurface> b = opencascade::handle<Geom_BSplineSurface>::DownCast(s);
+    if (b.IsNull())
+        return GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(s, u0, u1, v0, v1));
+    double a0, a1, b0, b1;
+    b->Bounds(a0, a1, b0, b1);
+    const double eu = 1e-12 * (a1 - a0), ev = 1e-12 * (b1 - b0);
+    if (std::abs(a0 - u0) <= eu && std::abs(a1 - u1) <= eu && std::abs(b0 - v0) <= ev &&
+        std::abs(b1 - v1) <= ev)
+        return b;
+    b = opencascade::handle<Geom_BSplineSurface>::DownCast(b->Copy());
+    b->Segment(u0, u1, v0, v1);
+    return b;
+}
+
+/// Gauss-Newton from `guess` to the (u, v) where the surface passes through x.
+gp_Pnt2d refine(const BRepAdaptor_Surface& surface, const gp_Pnt& x, gp_Pnt2d guess) {
+    double u = guess.X(), v = guess.Y();
+    gp_Pnt p;
+    gp_Vec su, sv;
+    surface.D0(u, v, p);
+    if (p.Distance(x) <= 1e-12 * (1.0 + gp_Vec(x.XYZ()).Magnitude())) return guess;  // exact already
+    for (int k = 0; k < 30; ++k) {
+        surface.D1(u, v, p, su, sv);
+        const gp_Vec r(p, x);
+        const double a = su.Dot(su), b = su.Dot(sv), c = sv.Dot(sv), ru = su.Dot(r), rv = sv.Dot(r);
+        const double det = a * c - b * b;
+        if (!(det > 0)) break;
+        const double du = (c * ru - b * rv) / det, dv = (a * rv - b * ru) / det;
+        u += du;
+        v += dv;
+        if (std::abs(du) + std::abs(dv) <= 1e-15 * (1.0 + std::abs(u) + std::abs(v))) break;
+    }
+    return gp_Pnt2d(u, v);
+}
+
+/// Appends an edge's poles (in the wire's direction) and their (u, v) to the loop.
+bool appendEdge(const TopoDS_Edge& edge, const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
+                SurfaceLoop& loop, std::string& problem) {
+    double f = 0, l = 0;
+    opencascade::handle<Geom_Curve> curve = BRep_Tool::Curve(edge, f, l);
+    double pf = 0, pl = 0;
+    opencascade::handle<Geom2d_Curve> pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
+    if (curve.IsNull() || pcurve.IsNull()) {
+        problem = "an edge without a curve in space and on its surface";
+        return false;
+    }
+    opencascade::handle<Geom_BSplineCurve> b =
+        GeomConvert::CurveToBSplineCurve(new Geom_TrimmedCurve(curve, f, l));
+    if (b->Degree() != 1) {
+        problem = "edges of degree " + std::to_string(b->Degree()) + " (mapped curves are polylines)";
+        return false;
+    }
+    std::vector<glm::dvec3> points;
+    std::vector<glm::dvec2> uv;
+    TColStd_Array1OfReal flat(1, b->NbPoles() + 2);
+    b->KnotSequence(flat);
+    for (int i = 1; i <= b->NbPoles(); ++i) {
+        const gp_Pnt& p = b->Pole(i);
+        points.emplace_back(p.X(), p.Y(), p.Z());
+        const gp_Pnt2d w = refine(surface, p, pcurve->Value(flat(i + 1)));  // a pole's parameter: its knot
+        uv.emplace_back(w.X(), w.Y());
+    }
+    if (edge.Orientation() == TopAbs_REVERSED) {
+        std::reverse(points.begin(), points.end());
+        std::reverse(uv.begin(), uv.end());
+    }
+    const std::size_t skip = loop.points.empty() ? 0 : 1;  // the vertex the previous edge ended at
+    loop.points.insert(loop.points.end(), points.begin() + std::ptrdiff_t(skip), points.end());
+    loop.uv.insert(loop.uv.end(), uv.begin() + std::ptrdiff_t(skip), uv.end());
+    return true;
+}
+
+/// Makes a loop's (u, v) continuous along a periodic direction (a reader may have moved some
+/// vertices by a period) with the middle of its range inside the domain, as the curve mapper
+/// leaves its loops.
+void unwrap(std::vector<glm::dvec2>& uv, int axis, double start, double period) {
+    for (std::size_t k = 1; k < uv.size(); ++k)
+        uv[k][axis] -= period * std::round((uv[k][axis] - uv[k - 1][axis]) / period);
+    double low = uv[0][axis], high = low;
+    for (const auto& p : uv) low = std::min(low, p[axis]), high = std::max(high, p[axis]);
+    // A middle within rounding of the domain's end counts as at its start (the same seam).
+    const double shift = period * std::floor(((low + high) / 2 - start) / period + 1e-9);
+    if (shift != 0)
+        for (auto& p : uv) p[axis] -= shift;
+}
+
+}  // namespace
+
+FaceSurface faceSurface(const TopoDS_Face& face) {
+    FaceSurface r;
+    const opencascade::handle<Geom_Surface> s = BRep_Tool::Surface(face);
+    if (s.IsNull()) {
+        r.problem = "a face without a surface";
+        return r;
+    }
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    if (!(u1 > u0 && v1 > v0) || !std::isfinite(u1 - u0) || !std::isfinite(v1 - v0)) {
+        r.problem = "a face with an empty or unbounded (u, v) box";
+        return r;
+    }
+    if (!rectangular(face, u0, u1, v0, v1)) {
+        r.problem = "a face trimmed inside its " + typeName(s) + " surface (surfaces are kept untrimmed)";
+        return r;
+    }
+    try {
+        Surface g = fromOcct(*bsplineOn(s, u0, u1, v0, v1));
+        r.surface = face.Orientation() == TopAbs_REVERSED ? reverse(g, false) : std::move(g);
+    } catch (const Standard_Failure& e) {
+        r.problem =
+            "a " + typeName(s) + " surface OpenCASCADE cannot convert to a B-spline (" + failureText(e) + ")";
+    } catch (const GeometryError& e) {
+        r.problem = std::string("a surface that is not a valid B-spline: ") + e.what();
+    }
+    return r;
+}
+
+std::optional<std::vector<SurfaceLoop>> faceLoops(const TopoDS_Face& face, std::string& problem) {
+    const BRepAdaptor_Surface surface(face, false);
+    std::vector<TopoDS_Wire> wires{BRepTools::OuterWire(face)};
+    for (TopExp_Explorer e(face, TopAbs_WIRE); e.More(); e.Next())
+        if (!e.Current().IsSame(wires.front())) wires.push_back(TopoDS::Wire(e.Current()));
+    std::vector<SurfaceLoop> loops;
+    try {
+        for (const TopoDS_Wire& wire : wires) {
+            if (wire.IsNull()) continue;
+            SurfaceLoop loop;
+            for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next())
+                if (!appendEdge(ex.Current(), face, surface, loop, problem)) return std::nullopt;
+            if (loop.points.size() < 4 || glm::length(loop.points.front() - loop.points.back()) >
+                                              1e-9 * (1.0 + glm::length(loop.points.front()))) {
+                problem = "a wire that is not a closed loop";
+                return std::nullopt;
+            }
+            loop.points.back() = loop.points.front();
+            loop.uv.back() = loop.uv.front();
+            if (face.Orientation() == TopAbs_REVERSED) {
+                std::reverse(loop.points.begin(), loop.points.end());
+                std::reverse(loop.uv.begin(), loop.uv.end());
+            }
+            loops.push_back(std::move(loop));
+        }
+    } catch (const Standard_Failure& e) {
+        problem = "edges OpenCASCADE cannot read: " + failureText(e);
+        return std::nullopt;
+    }
+    return loops;
+}
+
+void unwrapLoops(std::vector<SurfaceLoop>& loops, const Surface& surface) {
+    for (const int axis : {0, 1})
+        if (periodicByConstruction(surface, axis == 1)) {
+            const double start = axis == 0 ? surface.domainStartU() : surface.domainStartV();
+            const double end = axis == 0 ? surface.domainEndU() : surface.domainEndV();
+            for (SurfaceLoop& loop : loops) unwrap(loop.uv, axis, start, end - start);
+        }
+}
+
+}  // namespace geom::exchange

@@ -1,0 +1,72 @@
+#pragma once
+
+#include "phigs/hardcopy/HomogeneousClipper.h"
+#include "phigs/hardcopy/ItemColouring.h"
+#include "phigs/hardcopy/PageMapping.h"
+#include "phigs/hardcopy/ProjectedScene.h"
+#include "phigs/hardcopy/VectorOptions.h"
+#include "phigs/traverse/DrawList.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace phigs::hardcopy {
+
+/// How a facet is to be painted (its colour comes from ItemColouring).
+struct FacetPaint {
+    glm::vec3 colour{1.0f};
+    float opacity = 1.0f;
+    bool hatch = false;
+    int hatchIndex = 1;
+    bool coverOnly = false;
+    bool seam = false;
+};
+
+/// The road from one draw item's world coordinates to the page: model clipping volume (world),
+/// view orientation and mapping, the view's volume (homogeneous NPC), the division, the page
+/// mapping; lines carry the distance along them in nominal pixels for their dashes, measured on
+/// the page before clipping as the raster measures it on screen. Appends to a ProjectedScene.
+class ItemPipeline {
+public:
+    ItemPipeline(const DrawList& list, const DrawItem& item, const PageMapping& mapping,
+                 const VectorOptions& options, ProjectedScene& out);
+
+    /// A polyline (closed: back to its first point) in world coordinates.
+    void line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
+              float width);
+    /// A polyline given as homogeneous NPC points (annotation text), past the model clipping.
+    void npcLine(const std::vector<ClipVertex>& npc, glm::vec3 colour, LineType type, float width);
+    /// A planar region (even-odd contours) in world coordinates.
+    void facet(const std::vector<std::vector<glm::dvec3>>& world, const FacetPaint& paint);
+    /// A marker at a world point (kept whole when its position is inside, as the raster does).
+    void marker(const glm::dvec3& world, const MarkerStyle& style);
+    /// +1 when the world triangle a, b, c is counter-clockwise on screen (its front), -1 when
+    /// clockwise, 0 when it cannot tell (edge on, or reaching behind the eye).
+    int facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) const;
+    /// Homogeneous NPC of a world point.
+    glm::dvec4 toNpc(const glm::dvec3& world) const { return worldToNpc_ * glm::dvec4(world, 1.0); }
+    /// Whether a world point survives the model clipping volume.
+    bool modelClipKeeps(const glm::dvec3& world) const;
+
+    const DrawItem& item() const { return item_; }
+    const PageMapping& mapping() const { return mapping_; }
+    const VectorOptions& options() const { return options_; }
+    const ItemColouring& colouring() const { return colouring_; }
+    /// World to homogeneous page points (x / w, y / w in points), for curve refinement.
+    glm::dmat4 worldToPage() const { return mapping_.npcToPage * worldToNpc_; }
+
+private:
+    void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
+
+    const DrawList& list_;
+    const DrawItem& item_;
+    const PageMapping& mapping_;
+    const VectorOptions& options_;
+    ProjectedScene& out_;
+    glm::dmat4 worldToNpc_{1.0};
+    std::vector<HalfSpace> view_, model_;
+    ItemColouring colouring_;
+};
+
+}  // namespace phigs::hardcopy

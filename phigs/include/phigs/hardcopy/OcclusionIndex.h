@@ -1,0 +1,58 @@
+#pragma once
+
+#include "phigs/hardcopy/ProjectedScene.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace phigs::hardcopy {
+
+/// The occluding facets of a page, triangulated and binned on a grid, for hidden-line removal
+/// in object space: a segment is tested against the triangles over it and keeps the parameter
+/// intervals no triangle hides. As with the raster's depth bias, a line is hidden only where it
+/// lies behind a triangle by more than the depth the triangle's slope spans over 1.5 pixels, so
+/// lines on a surface (iso-lines, edges, boundaries) stay visible.
+class OcclusionIndex {
+public:
+    /// `pixel`: points per raster pixel (PageMapping::nominalPixel).
+    OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel);
+
+    /// The parameter intervals [t0, t1] of the segment a + t (b - a), t in [0, 1], that are visible.
+    std::vector<glm::dvec2> visibleParts(const PagePoint& a, const PagePoint& b) const;
+    /// Whether a point is visible.
+    bool visible(const PagePoint& p) const;
+    /// Whether a facet is hidden whole: its centre and every edge of its outline, taken `margin`
+    /// points inside (at most a tenth of the way to the centre), are. The margin lets a back face
+    /// that meets a silhouette count as hidden although the edge it shares is seen; a sliver of a
+    /// facet narrower than the margin, or a hole in what hides it that touches none of the tested
+    /// edges, goes unseen.
+    bool hidden(const ProjectedFacet& facet, double margin) const;
+    /// A line's visible runs (each with its own dash phase).
+    std::vector<ProjectedLine> visibleRuns(const ProjectedLine& line) const;
+    std::size_t triangleCount() const { return triangles_.size(); }
+
+private:
+    struct Triangle {
+        glm::dvec2 p[3];
+        glm::dvec3 plane{0.0};  ///< depth = plane.x * x + plane.y * y + plane.z
+        double tolerance = 0.0;
+        glm::dvec2 lo{0.0}, hi{0.0};
+    };
+    void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel);
+    void bin();
+    template <class F>
+    void forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const;
+    /// The interval of t in [0, 1] where the segment is inside the triangle and behind it.
+    bool hides(const Triangle& t, const PagePoint& a, const PagePoint& b, glm::dvec2& interval) const;
+
+    std::vector<Triangle> triangles_;
+    glm::dvec2 lo_{0.0}, cell_{1.0};
+    int columns_ = 0, rows_ = 0;
+    std::vector<std::vector<std::uint32_t>> cells_;
+    mutable std::vector<std::uint32_t> stamp_;
+    mutable std::uint32_t query_ = 0;
+};
+
+}  // namespace phigs::hardcopy

@@ -1,0 +1,127 @@
+#include "CairoPainter.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+namespace phigs::hardcopy {
+
+void CairoPainter::paint(const VectorPicture& picture) {
+    picture_ = &picture;
+    clip_ = -1;
+    cairo_reset_clip(cr_);
+    cairo_set_line_cap(cr_, CAIRO_LINE_CAP_BUTT);
+    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+    if (picture.paintBackground && !picture.backgroundRect.empty()) {
+        const PageRect& r = picture.backgroundRect;
+        colour(picture.background);
+        cairo_rectangle(cr_, r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
+        cairo_fill(cr_);
+    }
+    for (const VectorOp& op : picture.ops) std::visit(*this, op);
+    cairo_reset_clip(cr_);
+    picture_ = nullptr;
+}
+
+void CairoPainter::useClip(int clip) {
+    if (clip == clip_) return;
+    clip_ = clip;
+    cairo_reset_clip(cr_);
+    if (clip < 0 || clip >= int(picture_->clips.size())) return;
+    const PageRect& r = picture_->clips[std::size_t(clip)];
+    cairo_rectangle(cr_, r.min.x, r.min.y, std::max(0.0, r.max.x - r.min.x),
+                    std::max(0.0, r.max.y - r.min.y));
+    cairo_clip(cr_);
+}
+
+void CairoPainter::contours(const std::vector<std::vector<glm::dvec2>>& contours) {
+    cairo_new_path(cr_);
+    for (const auto& c : contours) {
+        if (c.size() < 2) continue;
+        cairo_move_to(cr_, c[0].x, c[0].y);
+        for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr_, c[i].x, c[i].y);
+        cairo_close_path(cr_);
+    }
+}
+
+void CairoPainter::colour(glm::vec3 rgb, float opacity) {
+    if (opaque_ || opacity >= 1.0f)
+        cairo_set_source_rgb(cr_, rgb.x, rgb.y, rgb.z);
+    else
+        cairo_set_source_rgba(cr_, rgb.x, rgb.y, rgb.z, std::max(0.0f, opacity));
+}
+
+void CairoPainter::operator()(const VectorFill& fill) {
+    useClip(fill.clip);
+    contours(fill.contours);
+    colour(fill.colour, fill.opacity);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
+    if (fill.seamWidth > 0.0) {
+        cairo_fill_preserve(cr_);
+        cairo_set_line_width(cr_, fill.seamWidth);
+        cairo_set_dash(cr_, nullptr, 0, 0.0);
+        cairo_stroke(cr_);
+    } else {
+        cairo_fill(cr_);
+    }
+}
+
+void CairoPainter::operator()(const VectorHatch& hatch) {
+    useClip(hatch.clip);
+    cairo_save(cr_);
+    contours(hatch.contours);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
+    double x0, y0, x1, y1;
+    cairo_path_extents(cr_, &x0, &y0, &x1, &y1);
+    cairo_clip(cr_);
+    colour(hatch.colour);
+    cairo_set_line_width(cr_, hatch.width);
+    cairo_set_dash(cr_, nullptr, 0, 0.0);
+    const double spacing = std::max(hatch.spacing, 1e-3);
+    const glm::dvec2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    for (double degrees : hatch.angles) {
+        // Lines n . p = k spacing with n across them; y is down on the page, angles count up.
+        const double a = degrees * 3.14159265358979323846 / 180.0;
+        const glm::dvec2 along(std::cos(a), -std::sin(a)), across(std::sin(a), std::cos(a));
+        double lo = 1e300, hi = -1e300, far = 0.0;
+        for (const glm::dvec2& c : corners) {
+            lo = std::min(lo, glm::dot(across, c)), hi = std::max(hi, glm::dot(across, c));
+            far = std::max(far, std::abs(glm::dot(along, c)));
+        }
+        for (double k = std::ceil(lo / spacing); k * spacing <= hi; k += 1.0) {
+            const glm::dvec2 base = across * (k * spacing);
+            cairo_move_to(cr_, base.x - along.x * far, base.y - along.y * far);
+            cairo_line_to(cr_, base.x + along.x * far, base.y + along.y * far);
+        }
+        cairo_stroke(cr_);
+    }
+    cairo_restore(cr_);  // back to the view's clip, which useClip set
+}
+
+void CairoPainter::operator()(const VectorStroke& stroke) {
+    useClip(stroke.clip);
+    cairo_new_path(cr_);
+    cairo_move_to(cr_, stroke.points[0].x, stroke.points[0].y);
+    for (std::size_t i = 1; i < stroke.points.size(); ++i)
+        cairo_line_to(cr_, stroke.points[i].x, stroke.points[i].y);
+    colour(stroke.colour);
+    cairo_set_line_width(cr_, stroke.width);
+    cairo_set_dash(cr_, stroke.dashes.empty() ? nullptr : stroke.dashes.data(), int(stroke.dashes.size()),
+                   stroke.dashOffset);
+    cairo_stroke(cr_);
+}
+
+void CairoPainter::operator()(const VectorCircle& circle) {
+    useClip(circle.clip);
+    cairo_new_path(cr_);
+    cairo_arc(cr_, circle.centre.x, circle.centre.y, circle.radius, 0.0, 2.0 * 3.14159265358979323846);
+    cairo_close_path(cr_);
+    colour(circle.colour);
+    cairo_set_line_width(cr_, circle.width);
+    cairo_set_dash(cr_, nullptr, 0, 0.0);
+    cairo_stroke(cr_);
+}
+
+}  // namespace phigs::hardcopy

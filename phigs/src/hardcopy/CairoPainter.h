@@ -1,0 +1,36 @@
+#pragma once
+
+// Private to phigs_hardcopy: the only code that includes cairo.
+
+#include "phigs/hardcopy/VectorPicture.h"
+
+#include <cairo.h>
+
+namespace phigs::hardcopy {
+
+/// The record step: one VectorPicture as cairo calls on the current page of a cairo context.
+/// `opaque` paints every fill opaque (PostScript has no transparency, and cairo would fall back
+/// to a raster image for it).
+class CairoPainter {
+public:
+    CairoPainter(cairo_t* cairo, bool opaque) : cr_(cairo), opaque_(opaque) {}
+
+    void paint(const VectorPicture& picture);
+
+    void operator()(const VectorFill& fill);
+    void operator()(const VectorHatch& hatch);
+    void operator()(const VectorStroke& stroke);
+    void operator()(const VectorCircle& circle);
+
+private:
+    void useClip(int clip);
+    void contours(const std::vector<std::vector<glm::dvec2>>& contours);
+    void colour(glm::vec3 rgb, float opacity = 1.0f);
+
+    cairo_t* cr_;
+    bool opaque_;
+    const VectorPicture* picture_ = nullptr;
+    int clip_ = -1;
+};
+
+}  // namespace phigs::hardcopy

@@ -1,0 +1,107 @@
+#include "phigs/hardcopy/HomogeneousClipper.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace phigs::hardcopy {
+namespace {
+
+/// w stays above this, so the division that follows clipping is safe.
+constexpr double kMinW = 1e-12;
+
+double signedDistance(const HalfSpace& s, const ClipVertex& v) {
+    return glm::dot(s.plane, v.h) - s.offset;
+}
+
+ClipVertex between(const ClipVertex& a, const ClipVertex& b, double da, double db) {
+    const double t = da / (da - db);
+    return {a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance)};
+}
+
+}  // namespace
+
+std::vector<HalfSpace> viewVolume(const DrawView& view, const DrawList& list) {
+    std::vector<HalfSpace> volume;
+    volume.push_back({{0, 0, 0, 1}, kMinW});
+    // NPC z in [lo, hi] as z - lo w >= 0 and hi w - z >= 0 (w > 0).
+    double zLo = 0.0, zHi = 1.0;
+    if (view.clipBack) zLo = std::max(zLo, view.clipMin.z);
+    if (view.clipFront) zHi = std::min(zHi, view.clipMax.z);
+    volume.push_back({{0, 0, 1, -zLo}, 0.0});
+    volume.push_back({{0, 0, -1, zHi}, 0.0});
+    glm::dvec2 lo(list.windowMin), hi(list.windowMax);
+    if (view.clipXY) lo = glm::max(lo, glm::dvec2(view.clipMin)), hi = glm::min(hi, glm::dvec2(view.clipMax));
+    volume.push_back({{1, 0, 0, -lo.x}, 0.0});
+    volume.push_back({{-1, 0, 0, hi.x}, 0.0});
+    volume.push_back({{0, 1, 0, -lo.y}, 0.0});
+    volume.push_back({{0, -1, 0, hi.y}, 0.0});
+    return volume;
+}
+
+std::vector<HalfSpace> modelVolume(const std::vector<glm::dvec4>& planes) {
+    std::vector<HalfSpace> volume;
+    for (const glm::dvec4& p : planes) volume.push_back({p, 0.0});
+    return volume;
+}
+
+bool inside(const glm::dvec4& h, const std::vector<HalfSpace>& volume) {
+    return std::all_of(volume.begin(), volume.end(),
+                       [&](const HalfSpace& s) { return glm::dot(s.plane, h) - s.offset >= 0.0; });
+}
+
+std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::vector<HalfSpace>& volume) {
+    std::vector<ClipVertex> next;
+    for (const HalfSpace& s : volume) {
+        if (polygon.size() < 3) return {};
+        next.clear();
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const ClipVertex& a = polygon[i];
+            const ClipVertex& b = polygon[(i + 1) % polygon.size()];
+            const double da = signedDistance(s, a), db = signedDistance(s, b);
+            if (da >= 0.0) next.push_back(a);
+            if ((da >= 0.0) != (db >= 0.0)) next.push_back(between(a, b, da, db));
+        }
+        polygon.swap(next);
+    }
+    if (polygon.size() < 3) return {};
+    return polygon;
+}
+
+std::vector<std::vector<ClipVertex>> clipPolyline(const std::vector<ClipVertex>& line,
+                                                  const std::vector<HalfSpace>& volume) {
+    std::vector<std::vector<ClipVertex>> runs;
+    std::vector<ClipVertex> run;
+    auto finish = [&] {
+        if (run.size() >= 2) runs.push_back(run);
+        run.clear();
+    };
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        // The segment's part inside every half space: [t0, t1] of a + t (b - a).
+        double t0 = 0.0, t1 = 1.0;
+        for (const HalfSpace& s : volume) {
+            const double da = signedDistance(s, line[i]), db = signedDistance(s, line[i + 1]);
+            if (da < 0.0 && db < 0.0) t0 = 1.0, t1 = 0.0;
+            if (da < 0.0 && db >= 0.0) t0 = std::max(t0, da / (da - db));
+            if (da >= 0.0 && db < 0.0) t1 = std::min(t1, da / (da - db));
+        }
+        if (t0 > t1) {
+            finish();
+            continue;
+        }
+        const ClipVertex &a = line[i], &b = line[i + 1];
+        auto at = [&](double t) {
+            return ClipVertex{a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance)};
+        };
+        if (t0 > 0.0 || run.empty()) {
+            finish();
+            run.push_back(at(t0));
+        }
+        run.push_back(at(t1));
+        if (t1 < 1.0) finish();
+    }
+    finish();
+    return runs;
+}
+
+}  // namespace phigs::hardcopy

@@ -1,0 +1,123 @@
+#include "phigs/hardcopy/ItemColouring.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace phigs::hardcopy {
+namespace {
+
+/// One light's share (scene.glsl oneLight): ambient always, diffuse from model 3, specular from 4.
+glm::dvec3 oneLight(const Light& light, int model, const Reflectance& k, glm::dvec3 base,
+                    const glm::dvec3& world, const glm::dvec3& n, const glm::dvec3& eye) {
+    const glm::dvec3 colour(light.colour);
+    if (light.type == LightType::Ambient) return double(k.ambient) * colour * base;
+    if (model < 3) return glm::dvec3(0.0);
+    const glm::dvec3 direction =
+        glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
+    glm::dvec3 l = -direction;
+    double attenuation = 1.0;
+    if (light.type != LightType::Directional) {
+        const glm::dvec3 toLight = light.position - world;
+        const double distance = glm::length(toLight);
+        l = toLight / std::max(distance, 1e-9);
+        attenuation = 1.0 / std::max(double(light.attenuation.x) + light.attenuation.y * distance, 1e-9);
+        if (light.type == LightType::Spot) {
+            const double c = glm::dot(-l, direction);
+            attenuation *= c >= std::cos(double(light.spreadAngle))
+                               ? std::pow(std::max(c, 0.0), light.concentration)
+                               : 0.0;
+        }
+    }
+    const double nl = glm::dot(n, l);
+    glm::dvec3 sum = double(k.diffuse) * colour * base * (std::max(nl, 0.0) * attenuation);
+    if (model >= 4) {
+        const glm::dvec3 r = glm::reflect(-l, n);
+        const double rv = std::max(glm::dot(r, eye), 0.0);
+        const double facing = nl > 0.0 ? attenuation : 0.0;
+        sum += double(k.specular) * colour * glm::dvec3(k.specularColour) *
+               (std::pow(rv, std::max(double(k.specularExponent), 0.0)) * facing);
+    }
+    return sum;
+}
+
+glm::dvec3 unit(const glm::dvec3& v) {
+    const double length = glm::length(v);
+    return length > 0.0 ? v / length : glm::dvec3(0.0);
+}
+
+}  // namespace
+
+ItemColouring::ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec3& eye,
+                             const glm::vec4& highlight)
+    : eye_(eye), highlight_(item.highlighted ? highlight : glm::vec4(0.0f)) {
+    if (item.lightSet >= 0 && item.lightSet < int(list.lightSets.size()))
+        lights_ = &list.lightSets[std::size_t(item.lightSet)];
+    if (item.depthCue >= 0 && item.depthCue < int(list.depthCues.size()) &&
+        list.depthCues[std::size_t(item.depthCue)].enabled)
+        cue_ = &list.depthCues[std::size_t(item.depthCue)];
+}
+
+glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::vec3 base,
+                             const glm::dvec3& world, const glm::dvec3& normal) const {
+    const int model = int(interior.reflectance);
+    if (model <= 1 || !lights_) return base;
+    const Reflectance& k = back ? interior.backProperties : interior.properties;
+    glm::dvec3 sum(0.0);
+    for (const Light& light : *lights_)
+        sum += oneLight(light, model, k, glm::dvec3(base), world, normal, eye_);
+    return glm::vec3(sum);
+}
+
+glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vector<FacetVertex>& vertices,
+                               bool vertexNormals, bool back) const {
+    if (vertices.empty()) return interior.colour;
+    const bool useBack = interior.distinguishBackFaces && back;
+    glm::dvec3 centre(0.0), normal(0.0), base(0.0);
+    for (const FacetVertex& v : vertices)
+        centre += v.position, normal += v.normal, base += glm::dvec3(v.colour);
+    const double n = double(vertices.size());
+    centre /= n, base /= n;
+    const glm::vec3 front = glm::vec3(base), backBase = useBack ? interior.backColour : front;
+    const bool lighting = interior.reflectance != ReflectanceModel::None && lights_;
+    if (!lighting) return useBack ? interior.backColour : front;
+    const ShadingMethod method = vertexNormals ? interior.shading : ShadingMethod::None;
+    if (method == ShadingMethod::Colour || method == ShadingMethod::DotProduct) {
+        // Gouraud: each vertex lit (the back with the normal turned round), then averaged.
+        glm::dvec3 sum(0.0);
+        for (const FacetVertex& v : vertices) {
+            const glm::vec3 b = useBack ? interior.backColour : v.colour;
+            sum += glm::dvec3(lit(interior, useBack, b, v.position, back ? -unit(v.normal) : unit(v.normal)));
+        }
+        return glm::vec3(sum / n);
+    }
+    glm::dvec3 facetNormal(0.0);
+    if (method == ShadingMethod::Normal) {
+        facetNormal = unit(normal);
+    } else {
+        // Flat: the plane's normal, turned the way the vertex normals point, else toward the viewer.
+        for (std::size_t i = 1; i + 1 < vertices.size(); ++i)
+            facetNormal += glm::cross(vertices[i].position - vertices[0].position,
+                                      vertices[i + 1].position - vertices[0].position);
+        facetNormal = unit(facetNormal);
+        const glm::dvec3 towards = glm::dot(normal, normal) > 0.0 ? normal : (back ? -eye_ : eye_);
+        if (glm::dot(facetNormal, towards) < 0.0) facetNormal = -facetNormal;
+    }
+    if (back) facetNormal = -facetNormal;
+    return lit(interior, useBack, backBase, centre, facetNormal);
+}
+
+glm::vec3 ItemColouring::finish(glm::vec3 colour, double npcZ) const {
+    if (cue_) {
+        const double range = std::max(cue_->frontPlane - cue_->backPlane, 1e-9);
+        const float t = float(std::clamp((npcZ - cue_->backPlane) / range, 0.0, 1.0));
+        const float s = cue_->backScale + (cue_->frontScale - cue_->backScale) * t;
+        colour = s * colour + (1.0f - s) * cue_->colour;
+    }
+    colour = glm::mix(colour, glm::vec3(highlight_), highlight_.w);
+    return glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
+}
+
+}  // namespace phigs::hardcopy

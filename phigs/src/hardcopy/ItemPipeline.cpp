@@ -1,0 +1,140 @@
+#include "phigs/hardcopy/ItemPipeline.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+namespace phigs::hardcopy {
+namespace {
+
+const DrawView& viewOf(const DrawList& list, const DrawItem& item) {
+    static const DrawView identity;
+    return list.views.empty() ? identity : list.views[std::size_t(item.viewIndex)];
+}
+
+/// The direction toward the viewer in world coordinates (the raster's frame.views[v].eye).
+glm::dvec3 eyeOf(const DrawView& view) {
+    const glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
+    return glm::length(eye) > 0.0 ? glm::normalize(eye) : glm::dvec3(0, 0, 1);
+}
+
+}  // namespace
+
+ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const PageMapping& mapping,
+                           const VectorOptions& options, ProjectedScene& out)
+    : list_(list),
+      item_(item),
+      mapping_(mapping),
+      options_(options),
+      out_(out),
+      worldToNpc_(viewOf(list, item).mapping * viewOf(list, item).orientation),
+      view_(viewVolume(viewOf(list, item), list)),
+      model_(modelVolume(item.modelClipPlanes)),
+      colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
+}
+
+bool ItemPipeline::modelClipKeeps(const glm::dvec3& world) const {
+    return inside(glm::dvec4(world, 1.0), model_);
+}
+
+void ItemPipeline::line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
+                        float width) {
+    if (world.size() < 2) return;
+    // Dashes are measured along the line on the page, before clipping (the raster measures on screen).
+    std::vector<ClipVertex> vertices;
+    double distance = 0.0;
+    glm::dvec2 previous(0.0);
+    const std::size_t count = world.size() + (closed ? 1 : 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3& p = world[i % world.size()];
+        const glm::dvec4 page = mapping_.npcToPage * toNpc(p);
+        const glm::dvec2 q = page.w > 0.0 ? glm::dvec2(page) / page.w : previous;
+        if (i > 0) distance += glm::length(q - previous) / mapping_.nominalPixel;
+        previous = q;
+        vertices.push_back({glm::dvec4(p, 1.0), distance});
+    }
+    for (auto& run : clipPolyline(vertices, model_)) {
+        for (ClipVertex& v : run) v.h = worldToNpc_ * v.h;
+        npcLine(run, colour, type, width);
+    }
+}
+
+void ItemPipeline::npcLine(const std::vector<ClipVertex>& npc, glm::vec3 colour, LineType type, float width) {
+    for (const auto& run : clipPolyline(npc, view_)) emitRun(run, colour, type, width);
+}
+
+void ItemPipeline::emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width) {
+    ProjectedLine line;
+    line.type = type;
+    line.width = width;
+    line.clip = item_.viewIndex;
+    for (const ClipVertex& v : run) {
+        line.points.push_back(mapping_.toPage(glm::dvec3(v.h) / v.h.w));
+        line.distances.push_back(v.distance);
+    }
+    if (!colouring_.cued()) {
+        line.colour = colouring_.finish(colour, line.points.front().z);
+        out_.parts.push_back(std::move(line));
+        return;
+    }
+    // Depth cued: one piece per segment, each coloured at its middle's depth.
+    for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
+        ProjectedLine piece = line;
+        piece.points = {line.points[i], line.points[i + 1]};
+        piece.distances = {line.distances[i], line.distances[i + 1]};
+        piece.colour = colouring_.finish(colour, 0.5 * (line.points[i].z + line.points[i + 1].z));
+        out_.parts.push_back(std::move(piece));
+    }
+}
+
+void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, const FacetPaint& paint) {
+    ProjectedFacet f;
+    double depth = 0.0;
+    std::size_t count = 0;
+    for (const auto& contour : world) {
+        std::vector<ClipVertex> polygon;
+        for (const glm::dvec3& p : contour) polygon.push_back({glm::dvec4(p, 1.0), 0.0});
+        polygon = clipPolygon(std::move(polygon), model_);
+        for (ClipVertex& v : polygon) v.h = worldToNpc_ * v.h;
+        polygon = clipPolygon(std::move(polygon), view_);
+        if (polygon.empty()) continue;
+        f.contours.emplace_back();
+        for (const ClipVertex& v : polygon) {
+            f.contours.back().push_back(mapping_.toPage(glm::dvec3(v.h) / v.h.w));
+            depth += f.contours.back().back().z;
+            ++count;
+        }
+    }
+    if (f.contours.empty()) return;
+    f.colour = paint.coverOnly ? list_.background : colouring_.finish(paint.colour, depth / double(count));
+    f.opacity = paint.opacity;
+    f.hatch = paint.hatch;
+    f.hatchIndex = paint.hatchIndex;
+    f.occludes = !paint.hatch && paint.opacity >= 1.0f;
+    f.coverOnly = paint.coverOnly;
+    f.seam = paint.seam;
+    f.clip = item_.viewIndex;
+    out_.parts.push_back(std::move(f));
+}
+
+void ItemPipeline::marker(const glm::dvec3& world, const MarkerStyle& style) {
+    if (!modelClipKeeps(world)) return;
+    const glm::dvec4 h = toNpc(world);
+    if (!inside(h, view_)) return;
+    ProjectedMarker m;
+    m.position = mapping_.toPage(glm::dvec3(h) / h.w);
+    m.style = style;
+    m.style.colour = colouring_.finish(style.colour, m.position.z);
+    m.clip = item_.viewIndex;
+    out_.parts.push_back(m);
+}
+
+int ItemPipeline::facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) const {
+    const glm::dvec4 ha = toNpc(a), hb = toNpc(b), hc = toNpc(c);
+    if (!(ha.w > 0.0 && hb.w > 0.0 && hc.w > 0.0)) return 0;
+    const glm::dvec2 pa = glm::dvec2(ha) / ha.w, pb = glm::dvec2(hb) / hb.w, pc = glm::dvec2(hc) / hc.w;
+    // NPC has y up: counter-clockwise there is the front, as the raster's winding test says.
+    const double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
+    return area > 0.0 ? 1 : area < 0.0 ? -1 : 0;
+}
+
+}  // namespace phigs::hardcopy

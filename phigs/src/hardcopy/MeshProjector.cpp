@@ -1,0 +1,106 @@
+#include "phigs/hardcopy/MeshProjector.h"
+
+#include "phigs/hardcopy/MeshOutline.h"
+
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+
+namespace phigs::hardcopy {
+
+MeshProjector::MeshProjector(ItemPipeline& pipeline, const DrawMesh& mesh)
+    : pipeline_(pipeline), mesh_(mesh), data_(*mesh.mesh) {
+    const glm::dmat4& model = pipeline_.item().modelTransform;
+    world_.reserve(data_.positions.size());
+    for (const glm::vec3& p : data_.positions) {
+        const glm::dvec4 q = model * glm::dvec4(glm::dvec3(p), 1.0);
+        world_.push_back(glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0));
+    }
+    const std::size_t count = world_.size();
+    for (std::size_t t = 0; t + 2 < data_.triangles.size(); t += 3) {
+        const std::uint32_t a = data_.triangles[t], b = data_.triangles[t + 1], c = data_.triangles[t + 2];
+        facing_.push_back(
+            a < count && b < count && c < count ? pipeline_.facing(world_[a], world_[b], world_[c]) : 0);
+    }
+}
+
+void MeshProjector::project() {
+    const InteriorStyleSet& in = mesh_.interior;
+    if (pipeline_.options().surfaces == SurfaceDrawing::HiddenLine && in.style != InteriorStyle::Empty) {
+        facets(true);
+        outline();
+        isoLines();
+    } else {
+        if (in.style == InteriorStyle::Hollow)
+            edgeLines(chainEdges(uniqueEdges(data_)), in.colour, LineType::Solid, 1.0f);
+        else if (in.style != InteriorStyle::Empty)
+            facets(false);
+        isoLines();
+    }
+    // Mesh edges are solid, as the raster draws them.
+    if (mesh_.edges.visible)
+        edgeLines(chainEdges(uniqueEdges(data_)), mesh_.edges.colour, LineType::Solid, mesh_.edges.width);
+}
+
+void MeshProjector::facets(bool coverOnly) {
+    const InteriorStyleSet& in = mesh_.interior;
+    const std::size_t count = world_.size();
+    const bool normals = data_.normals.size() == count && count > 0;
+    const bool colours = data_.colours.size() == count && count > 0;
+    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform)));
+    std::vector<FacetVertex> vertices(3);
+    for (std::size_t t = 0; t < facing_.size(); ++t) {
+        const std::uint32_t* index = &data_.triangles[3 * t];
+        if (index[0] >= count || index[1] >= count || index[2] >= count) continue;
+        const int facing = facing_[t];
+        // A hidden-line surface hides with both sides; a shaded one is culled as the raster culls.
+        if (!coverOnly && ((in.cull == CullMode::BackFaces && facing < 0) ||
+                           (in.cull == CullMode::FrontFaces && facing > 0)))
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t i = index[k];
+            vertices[std::size_t(k)] = {
+                world_[i], normals ? normalMatrix * glm::dvec3(data_.normals[i]) : glm::dvec3(0.0),
+                colours ? data_.colours[i] : in.colour};
+        }
+        FacetPaint paint;
+        paint.coverOnly = coverOnly;
+        paint.seam = true;
+        if (!coverOnly) {
+            const bool back = facing < 0;
+            paint.colour = pipeline_.colouring().facet(in, vertices, normals, back);
+            const Reflectance& r = back && in.distinguishBackFaces ? in.backProperties : in.properties;
+            paint.opacity = 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
+            paint.hatch = in.style == InteriorStyle::Hatch;
+            paint.hatchIndex = in.styleIndex;
+        }
+        pipeline_.facet({{vertices[0].position, vertices[1].position, vertices[2].position}}, paint);
+    }
+}
+
+void MeshProjector::edgeLines(const std::vector<std::vector<std::uint32_t>>& chains, glm::vec3 colour,
+                              LineType type, float width) {
+    std::vector<glm::dvec3> points;
+    for (const auto& chain : chains) {
+        points.clear();
+        for (std::uint32_t i : chain)
+            if (i < world_.size()) points.push_back(world_[i]);
+        pipeline_.line(points, false, colour, type, width);
+    }
+}
+
+void MeshProjector::isoLines() {
+    const LineStyle& style = mesh_.isoLineStyle;
+    edgeLines(data_.isoLines, style.colour, style.type, style.width);
+}
+
+void MeshProjector::outline() {
+    std::vector<MeshEdge> edges = patchBoundaryEdges(data_, mesh_.surface.get());
+    const std::vector<MeshEdge> silhouette = silhouetteEdges(data_, facing_);
+    edges.insert(edges.end(), silhouette.begin(), silhouette.end());
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    edgeLines(chainEdges(edges), mesh_.interior.colour, LineType::Solid, 1.0f);
+}
+
+}  // namespace phigs::hardcopy

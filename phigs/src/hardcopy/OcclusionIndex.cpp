@@ -1,0 +1,198 @@
+#include "phigs/hardcopy/OcclusionIndex.h"
+
+#include "phigs/render/Triangulation.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace phigs::hardcopy {
+namespace {
+
+/// Depth bias of the raster path (Renderer: slope factor 1.5 pixels), and a floor for flat facets.
+constexpr double kSlopePixels = 1.5;
+constexpr double kMinTolerance = 1e-7;
+constexpr int kMaxCells = 512;
+
+/// Where f(t) = fa + t (fb - fa) >= c for t in [lo, hi]; narrows [lo, hi], false when empty.
+bool atLeast(double fa, double fb, double c, double& lo, double& hi) {
+    if (fa >= c && fb >= c) return lo <= hi;
+    if (fa < c && fb < c) return false;
+    const double t = (c - fa) / (fb - fa);
+    if (fa < c)
+        lo = std::max(lo, t);
+    else
+        hi = std::min(hi, t);
+    return lo <= hi;
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
+
+}  // namespace
+
+OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) {
+    for (const ProjectedFacet& f : facets) {
+        if (!f.occludes) continue;
+        if (f.contours.size() == 1 && f.contours[0].size() == 3) {
+            add(f.contours[0][0], f.contours[0][1], f.contours[0][2], pixel);
+            continue;
+        }
+        std::vector<std::vector<glm::dvec2>> flat;
+        std::vector<glm::dvec3> all;
+        for (const auto& c : f.contours) {
+            flat.emplace_back();
+            for (const PagePoint& p : c) flat.back().push_back(glm::dvec2(p)), all.push_back(p);
+        }
+        const render::Triangulation tri = render::triangulateEvenOdd(flat);
+        auto at = [&](std::uint32_t i) {
+            const render::TriangulationVertex& v = tri.vertices[i];
+            return all[v.from] + (all[v.to] - all[v.from]) * v.t;
+        };
+        for (std::size_t t = 0; t + 2 < tri.triangles.size(); t += 3)
+            add(at(tri.triangles[t]), at(tri.triangles[t + 1]), at(tri.triangles[t + 2]), pixel);
+    }
+    bin();
+}
+
+void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel) {
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    // Edge-on on the page: it covers nothing.
+    if (!(std::abs(n.z) > 1e-12 * glm::length(n))) return;
+    Triangle t;
+    t.p[0] = glm::dvec2(a), t.p[1] = glm::dvec2(b), t.p[2] = glm::dvec2(c);
+    t.plane = {-n.x / n.z, -n.y / n.z, 0.0};
+    t.plane.z = a.z - t.plane.x * a.x - t.plane.y * a.y;
+    t.tolerance = kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel;
+    t.lo = glm::min(t.p[0], glm::min(t.p[1], t.p[2]));
+    t.hi = glm::max(t.p[0], glm::max(t.p[1], t.p[2]));
+    triangles_.push_back(t);
+}
+
+void OcclusionIndex::bin() {
+    if (triangles_.empty()) return;
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo), hi = glm::max(hi, t.hi);
+    const int n = std::clamp(int(std::ceil(std::sqrt(double(triangles_.size())))), 1, kMaxCells);
+    columns_ = rows_ = n;
+    lo_ = lo;
+    cell_ = glm::max((hi - lo) / double(n), glm::dvec2(1e-9));
+    cells_.assign(std::size_t(columns_) * std::size_t(rows_), {});
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i)
+        forCells(triangles_[i].lo, triangles_[i].hi, [&](std::size_t cell) { cells_[cell].push_back(i); });
+    stamp_.assign(triangles_.size(), 0);
+}
+
+template <class F>
+void OcclusionIndex::forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
+    if (cells_.empty()) return;
+    const int x0 = std::clamp(int(std::floor((lo.x - lo_.x) / cell_.x)), 0, columns_ - 1);
+    const int x1 = std::clamp(int(std::floor((hi.x - lo_.x) / cell_.x)), 0, columns_ - 1);
+    const int y0 = std::clamp(int(std::floor((lo.y - lo_.y) / cell_.y)), 0, rows_ - 1);
+    const int y1 = std::clamp(int(std::floor((hi.y - lo_.y) / cell_.y)), 0, rows_ - 1);
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) f(std::size_t(y) * std::size_t(columns_) + std::size_t(x));
+}
+
+bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoint& b,
+                           glm::dvec2& interval) const {
+    const glm::dvec2 pa(a), pb(b);
+    if (std::max(pa.x, pb.x) < t.lo.x || std::min(pa.x, pb.x) > t.hi.x || std::max(pa.y, pb.y) < t.lo.y ||
+        std::min(pa.y, pb.y) > t.hi.y)
+        return false;
+    const double area = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    if (area == 0.0) return false;
+    const double sign = area > 0.0 ? 1.0 : -1.0;
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec2 p = t.p[i], edge = t.p[(i + 1) % 3] - p;
+        if (!atLeast(sign * cross(edge, pa - p), sign * cross(edge, pb - p), 0.0, lo, hi)) return false;
+    }
+    // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
+    const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
+    const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
+    if (!atLeast(ga, gb, t.tolerance, lo, hi) || hi - lo <= 1e-12) return false;
+    interval = {lo, hi};
+    return true;
+}
+
+std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
+    std::vector<glm::dvec2> hidden;
+    if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
+    const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
+    forCells(lo, hi, [&](std::size_t cell) {
+        for (std::uint32_t i : cells_[cell]) {
+            if (stamp_[i] == query_) continue;
+            stamp_[i] = query_;
+            glm::dvec2 interval;
+            if (hides(triangles_[i], a, b, interval)) hidden.push_back(interval);
+        }
+    });
+    std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+    std::vector<glm::dvec2> visible;
+    double from = 0.0;
+    for (const glm::dvec2& h : hidden) {
+        if (h.x > from + 1e-9) visible.push_back({from, h.x});
+        from = std::max(from, h.y);
+    }
+    if (from < 1.0 - 1e-9) visible.push_back({from, 1.0});
+    return visible;
+}
+
+bool OcclusionIndex::visible(const PagePoint& p) const {
+    bool hidden = false;
+    forCells(glm::dvec2(p), glm::dvec2(p), [&](std::size_t cell) {
+        for (std::uint32_t i : cells_[cell]) {
+            glm::dvec2 interval;
+            hidden = hidden || hides(triangles_[i], p, p, interval);
+        }
+    });
+    return !hidden;
+}
+
+bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
+    PagePoint centre(0.0);
+    std::size_t count = 0;
+    for (const auto& c : facet.contours)
+        for (const PagePoint& p : c) centre += p, ++count;
+    if (count == 0) return false;
+    centre /= double(count);
+    if (visible(centre)) return false;
+    auto inside = [&](const PagePoint& p) {
+        const double distance = glm::length(glm::dvec2(centre - p));
+        return distance > 0.0 ? p + (centre - p) * std::min(0.1, margin / distance) : p;
+    };
+    for (const auto& c : facet.contours)
+        for (std::size_t i = 0; i < c.size(); ++i)
+            if (!visibleParts(inside(c[i]), inside(c[(i + 1) % c.size()])).empty()) return false;
+    return true;
+}
+
+std::vector<ProjectedLine> OcclusionIndex::visibleRuns(const ProjectedLine& line) const {
+    std::vector<ProjectedLine> runs;
+    bool open = false;  // the last run reaches the end of the previous segment
+    for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
+        const PagePoint &a = line.points[i], &b = line.points[i + 1];
+        const double da = line.distances[i], db = line.distances[i + 1];
+        bool reachedEnd = false;
+        for (const glm::dvec2& part : visibleParts(a, b)) {
+            if (!(open && part.x <= 1e-9)) {
+                ProjectedLine run = line;
+                run.points = {a + (b - a) * part.x};
+                run.distances = {da + (db - da) * part.x};
+                runs.push_back(std::move(run));
+            }
+            runs.back().points.push_back(a + (b - a) * part.y);
+            runs.back().distances.push_back(da + (db - da) * part.y);
+            open = false;
+            reachedEnd = part.y >= 1.0 - 1e-9;
+        }
+        open = reachedEnd;
+    }
+    return runs;
+}
+
+}  // namespace phigs::hardcopy

@@ -1,0 +1,89 @@
+#include "phigs/hardcopy/VectorDescriber.h"
+
+#include "phigs/hardcopy/ItemProjector.h"
+#include "phigs/hardcopy/OcclusionIndex.h"
+#include "phigs/hardcopy/PaintBuilder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phigs::hardcopy {
+namespace {
+
+/// How far inside its outline a facet is tested for being hidden whole, in nominal pixels: the
+/// width of a seam stroke (PaintBuilder), so what a neighbour's seam would cover.
+constexpr double kHiddenMargin = 0.25;
+
+/// Whether a facet covers any area on the page (an edge-on one paints and hides nothing).
+bool coversArea(const ProjectedFacet& f) {
+    double area = 0.0;
+    for (const auto& c : f.contours) {
+        double a = 0.0;
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const PagePoint &p = c[i], &q = c[(i + 1) % c.size()];
+            a += p.x * q.y - q.x * p.y;
+        }
+        area += std::abs(a);
+    }
+    return area > 1e-12;
+}
+
+void describeHidden(const ProjectedScene& scene, const PageMapping& mapping, PaintBuilder& paint,
+                    DescribeStats& stats) {
+    std::vector<ProjectedFacet> facets;
+    for (const ProjectedPart& part : scene.parts)
+        if (const auto* f = std::get_if<ProjectedFacet>(&part); f && coversArea(*f)) facets.push_back(*f);
+    const OcclusionIndex occlusion(facets, mapping.nominalPixel);
+    stats.occluders = occlusion.triangleCount();
+    // Hidden-line surfaces need painting only where other facets could show through them; facets
+    // hidden whole need no painting (most back faces, and the far sides of things).
+    const bool paintCovers =
+        std::any_of(facets.begin(), facets.end(), [](const ProjectedFacet& f) { return !f.coverOnly; });
+    if (!paintCovers) facets.clear();
+    const std::size_t before = facets.size();
+    std::erase_if(facets, [&](const ProjectedFacet& f) {
+        return occlusion.hidden(f, kHiddenMargin * mapping.nominalPixel);
+    });
+    stats.hiddenFacets = before - facets.size();
+    for (const ProjectedFacet& f : orderBackToFront(std::move(facets), mapping.pointsPerNpc, &stats.facets))
+        paint(f);
+    for (const ProjectedPart& part : scene.parts) {
+        if (const auto* line = std::get_if<ProjectedLine>(&part))
+            for (const ProjectedLine& run : occlusion.visibleRuns(*line)) paint(run);
+        if (const auto* marker = std::get_if<ProjectedMarker>(&part);
+            marker && occlusion.visible(marker->position))
+            paint(*marker);
+    }
+}
+
+}  // namespace
+
+VectorPicture describePicture(const DrawList& list, const PageSetup& page, const VectorOptions& options,
+                              DescribeStats* stats) {
+    const PageMapping mapping(list, page);
+    const ProjectedScene scene = projectScene(list, mapping, options);
+    VectorPicture picture;
+    picture.pageSize = mapping.pageSize;
+    picture.paintBackground = page.background;
+    picture.backgroundRect = mapping.display;
+    picture.background = list.background;
+    const DrawView identity;
+    for (std::size_t v = 0; v < std::max<std::size_t>(1, list.views.size()); ++v)
+        picture.clips.push_back(mapping.clipRect(list.views.empty() ? identity : list.views[v]));
+    DescribeStats local;
+    local.hidden = list.hiddenSurfaceRemoval || options.surfaces == SurfaceDrawing::HiddenLine;
+    PaintBuilder paint(mapping, picture);
+    if (local.hidden) {
+        describeHidden(scene, mapping, paint, local);
+    } else {
+        // The raster's painter's order: traversal order, each item's parts in turn.
+        for (const ProjectedPart& part : scene.parts) {
+            const auto* facet = std::get_if<ProjectedFacet>(&part);
+            if (!facet || coversArea(*facet)) std::visit(paint, part);
+        }
+    }
+    if (stats) *stats = local;
+    return picture;
+}
+
+}  // namespace phigs::hardcopy
