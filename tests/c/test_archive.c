@@ -21,6 +21,60 @@ static void build(Pint id, Pint labels) {
     pclose_struct();
 }
 
+/* Networks: 10 executes 11, 11 executes 12; archive, retrieve and delete them as networks. */
+static void networks(Pstore store) {
+    Pint err = -1, total = -1, buffer[8], ten[1] = {10}, eleven[1] = {11};
+    Pint_list ids = {0, buffer}, list_ten = {1, ten}, list_eleven = {1, eleven};
+    Pelem_ref_list_list* paths = NULL;
+    popen_struct(10);
+    pexec_struct(11);
+    pclose_struct();
+    popen_struct(11);
+    plabel(1);
+    pexec_struct(12);
+    pclose_struct();
+    EXPECT_NO_ERROR(par_struct_nets(1, &list_ten));
+    pret_struct_ids(1, 8, 0, &ids, &total);
+    CHECK(total == 3 && buffer[0] == 10 && buffer[2] == 12);
+    EXPECT_NO_ERROR(pret_paths_ances(1, 12, PORDER_TOP_FIRST, 0, store, &paths));
+    CHECK(paths != NULL && paths->num_elem_ref_lists == 1 && paths->elem_ref_lists[0].num_elem_refs == 3);
+    if (paths && paths->num_elem_ref_lists == 1)
+        CHECK(paths->elem_ref_lists[0].elem_refs[1].struct_id == 11 &&
+              paths->elem_ref_lists[0].elem_refs[1].elem_pos == 2);
+    EXPECT_NO_ERROR(pret_paths_descs(1, 10, PORDER_BOTTOM_FIRST, 1, store, &paths));
+    CHECK(paths->num_elem_ref_lists == 1 && paths->elem_ref_lists[0].elem_refs[0].struct_id == 12);
+    EXPECT_ERROR(pret_paths_descs(1, 10, PORDER_TOP_FIRST, -1, store, &paths), 207, Pfn_ret_paths_descs);
+    pempty_struct(13);
+    par_structs(1, &(Pint_list){1, (Pint[]){13}});
+    EXPECT_NO_ERROR(pret_paths_ances(1, 13, PORDER_TOP_FIRST, 0, store, &paths)); /* isolated: none */
+    CHECK(paths->num_elem_ref_lists == 0);
+    EXPECT_NO_ERROR(pret_paths_descs(1, 13, PORDER_TOP_FIRST, 0, store, &paths));
+    CHECK(paths->num_elem_ref_lists == 0);
+    pdel_structs_ar(1, &(Pint_list){1, (Pint[]){13}});
+    pdel_struct(13);
+    pinq_conf_structs_net(1, 10, PNET_CSS, 8, 0, &err, &ids, &total);
+    CHECK(err == 0 && total == 3);
+    pinq_conf_structs_net(1, 11, PNET_AR, 1, 1, &err, &ids, &total);
+    CHECK(err == 0 && total == 2 && ids.num_ints == 1 && buffer[0] == 12);
+    pinq_conf_structs_net(1, 11, (Pstruct_net_source)7, 1, 0, &err, &ids, &total);
+    CHECK(err == PE_ENUM_TYPE_INVAL);
+    pdel_all_structs();
+    pset_conf_res(PRES_UPDATE, PRES_ABANDON);
+    EXPECT_NO_ERROR(pret_struct_nets(1, &list_eleven));
+    CHECK(count_of(11) == 2 && count_of(12) == 0 && count_of(10) == -1);
+    pdel_all_structs();
+    EXPECT_NO_ERROR(pret_all_structs(1));
+    CHECK(count_of(10) == 1 && count_of(11) == 2);
+    EXPECT_NO_ERROR(pdel_all_structs_ar(1));
+    pret_struct_ids(1, 8, 0, &ids, &total);
+    CHECK(total == 0);
+    EXPECT_NO_ERROR(par_all_structs(1));
+    pret_struct_ids(1, 8, 0, &ids, &total);
+    CHECK(total == 3);
+    EXPECT_NO_ERROR(pdel_all_structs_ar(1));
+    pdel_all_structs();
+}
+
 int main(int argc, char** argv) {
     char file[512], archive[512];
     Pint err = -1, total = -1, buffer[8], one[1] = {1}, two[1] = {2}, missing[2] = {1, 9};
@@ -74,7 +128,10 @@ int main(int argc, char** argv) {
     pret_struct_ids(1, 8, 0, &ids, &total);
     CHECK(total == 0);
     EXPECT_ERROR(pdel_structs_ar(1, &list_one), 407, Pfn_del_structs_ar);
+    pdel_all_structs();
+    networks(store);
     pclose_ar_file(1);
+    EXPECT_ERROR(pret_all_structs(1), 7, Pfn_ret_all_structs);
     pinq_ar_st(&st);
     CHECK(st == PAR_ST_CL);
     CHECK(file_has_line(file,

@@ -117,6 +117,28 @@ static void search_and_sizes(Pstore store) {
     CHECK(err == 5);
 }
 
+/* NULL where an answer should go: the binding's -204, or nothing at all without err_ind. */
+static void null_arguments(Pstore store) {
+    Pint err = -1, total = -1;
+    size_t size = 0;
+    Pelem_data* data = NULL;
+    Pint_list ids = {0, NULL};
+    pinq_elem_type_size(103, 1, &err, NULL, &size);
+    CHECK(err == -204);
+    pinq_struct_ids(3, 0, &err, &ids, &total); /* room for 3 but no array */
+    CHECK(err == -204);
+    pinq_struct_ids(3, 0, &err, NULL, NULL);
+    CHECK(err == -204);
+    pinq_elem_content(103, 1, store, &err, NULL);
+    CHECK(err == -204);
+    pelem_search(103, 0, PDIR_FORWARD, NULL, NULL, &err, NULL, NULL);
+    CHECK(err == -204);
+    pinq_elem_ptr(NULL, NULL);
+    pinq_elem_content(103, 1, store, NULL, &data);
+    pinq_sys_st(NULL);
+    pinq_struct_st(NULL);
+}
+
 static void states(void) {
     Pint err = -1, id = -1;
     Pstruct_st st = PSTRUCT_ST_STOP;
@@ -154,6 +176,7 @@ int main(int argc, char** argv) {
     lists();
     paths(store);
     search_and_sizes(store);
+    null_arguments(store);
     states();
     CHECK(error_count == 0); /* no inquiry called the handler */
     CHECK(file_line_count(file) == 0);
