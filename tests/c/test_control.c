@@ -104,6 +104,14 @@ int main(int argc, char** argv) {
     CHECK(st == PSYS_ST_PHCL);
     pemergency_close_phigs(); /* nothing open: nothing happens */
     open_with_handler(file);
+    pset_err_hand_mode(PERR_OFF);
+    pemergency_close_phigs();
+    open_with_handler(file);
+    {
+        Perr_mode mode = PERR_OFF;
+        pinq_err_hand_mode(&err, &mode);
+        CHECK(err == 0 && mode == PERR_ON); /* OPEN PHIGS starts with the mode ON */
+    }
     pinq_struct_ids(0, 0, &err, NULL, &total);
     CHECK(err == 0 && total == 0);
     EXPECT_NO_ERROR(pclose_phigs());

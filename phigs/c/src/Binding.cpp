@@ -136,6 +136,7 @@ void Binding::open(const char* errorFile) {
     // The error file is (re)written from the start at OPEN PHIGS; without one, stderr.
     errorFile_ = errorFile ? errorFile : "";
     stream_ = errorFile ? std::fopen(errorFile, "w") : nullptr;
+    mode_ = PERR_ON;  // each OPEN PHIGS starts with the error handling mode ON; the handler stays
     phigs_ = std::make_unique<Phigs>();
     phigs_->open();  // an error file that cannot be written leaves the lines on stderr
 }
