@@ -159,6 +159,12 @@ static void attributes(void) {
     pset_line_colr(&rgb);
     d = last(PELEM_LINE_COLR);
     CHECK(d->colr.type == PMODEL_RGB && d->colr.val.direct.y == 0.5f);
+    pset_marker_colr(&rgb);
+    CHECK(last(PELEM_MARKER_COLR)->colr.val.direct.x == 0.25f);
+    pset_text_colr(&rgb);
+    CHECK(last(PELEM_TEXT_COLR)->colr.type == PMODEL_RGB);
+    pset_edge_colr(&(Pgcolr){PINDIRECT, {3}}); /* an index through the general form */
+    CHECK(last(PELEM_EDGE_COLR_IND)->int_data == 3);
     pset_int_colr(&rgb);
     CHECK(last(PELEM_INT_COLR)->colr.val.direct.z == 1.0f);
     pset_indiv_asf(PASPECT_EDGE_FLAG, PASF_INDIV);
