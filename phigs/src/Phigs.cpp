@@ -63,9 +63,9 @@ std::vector<int> Phigs::openWorkstationIds() const {
 
 std::vector<int> Phigs::workstationsPostedTo(int structureId) {
     const char* function = "INQUIRE SET OF WORKSTATIONS TO WHICH POSTED";
-    requireOpen(function);
+    if (!open_) raise(nullptr, errors::NotPhigsOpen, function);
     if (!store_.exists(structureId))
-        raise(&log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(structureId));
+        raise(nullptr, errors::StructureDoesNotExist, function, "structure " + std::to_string(structureId));
     std::vector<int> ids;
     for (const auto& [id, ws] : workstations_)
         if (ws->isPosted(structureId)) ids.push_back(id);
@@ -97,12 +97,13 @@ void Phigs::closeArchiveFile(int archiveId) {
     archives_.erase(archiveId);
 }
 
-ArchiveFile& Phigs::archive(int archiveId, const char* function) {
-    requireOpen(function);
-    if (archives_.empty()) raise(&log_, errors::NoArchiveOpen, function);
+ArchiveFile& Phigs::archive(int archiveId, const char* function, bool inquiry) {
+    ErrorLog* log = inquiry ? nullptr : &log_;  // inquiries never log
+    if (!open_) raise(log, errors::NotPhigsOpen, function);
+    if (archives_.empty()) raise(log, errors::NoArchiveOpen, function);
     auto it = archives_.find(archiveId);
     if (it == archives_.end())
-        raise(&log_, errors::ArchiveNotOpen, function, "archive " + std::to_string(archiveId));
+        raise(log, errors::ArchiveNotOpen, function, "archive " + std::to_string(archiveId));
     return *it->second;
 }
 
@@ -168,12 +169,16 @@ void Phigs::retrieveSet(int archiveId, std::set<int> ids, const char* function) 
     ArchiveFile& file = archive(archiveId, function);
     std::string missing;
     std::map<int, std::vector<Element>> contents;
+    // ISO 9592: a structure the archive lacks is retrieved as an empty one (warning 408), and
+    // meets the conflict resolution like any other: ABANDON refuses, UPDATE empties the CSS one.
     for (int id : ids) {
         auto it = file.contents().find(id);
-        if (it == file.contents().end())
+        if (it == file.contents().end()) {
             missing += (missing.empty() ? "" : ", ") + std::to_string(id);
-        else
+            contents.emplace(id, std::vector<Element>{});
+        } else {
             contents.emplace(id, it->second);
+        }
     }
     std::set<int> conflicts;
     for (const auto& [id, e] : contents)
@@ -184,7 +189,7 @@ void Phigs::retrieveSet(int archiveId, std::set<int> ids, const char* function) 
     if (retrieval_ == ConflictResolution::Maintain)
         for (int id : conflicts) contents.erase(id);
     store_.replaceStructures(contents, function);
-    if (!missing.empty()) warn(errors::MissingInArchive, function, "structures " + missing);
+    if (!missing.empty()) warn(errors::MissingInArchiveCreatedEmpty, function, "structures " + missing);
 }
 
 std::set<int> Phigs::archiveNetwork(const ArchiveFile& file, int id) {
@@ -267,11 +272,16 @@ void Phigs::deleteStructureNetworksFromArchive(int archiveId, const std::vector<
     const char* function = "DELETE STRUCTURE NETWORKS FROM ARCHIVE";
     ArchiveFile& file = archive(archiveId, function);
     std::set<int> all;
-    for (int id : ids) all.merge(archiveNetwork(file, id));
+    std::string missing;
+    for (int id : ids) {
+        if (!file.contains(id)) missing += (missing.empty() ? "" : ", ") + std::to_string(id);
+        all.merge(archiveNetwork(file, id));
+    }
     std::vector<int> present;
     for (int id : all)
         if (file.contains(id)) present.push_back(id);
     file.commit({}, present);
+    if (!missing.empty()) warn(errors::MissingInArchive, function, "structures " + missing);
 }
 
 void Phigs::deleteAllStructuresFromArchive(int archiveId) {
@@ -280,7 +290,7 @@ void Phigs::deleteAllStructuresFromArchive(int archiveId) {
 }
 
 std::vector<int> Phigs::conflictingStructures(int archiveId) {
-    ArchiveFile& file = archive(archiveId, "INQUIRE ALL CONFLICTING STRUCTURES");
+    ArchiveFile& file = archive(archiveId, "INQUIRE ALL CONFLICTING STRUCTURES", true);
     std::vector<int> out;
     for (int id : file.structureIds())
         if (store_.exists(id)) out.push_back(id);
@@ -289,9 +299,9 @@ std::vector<int> Phigs::conflictingStructures(int archiveId) {
 
 std::vector<int> Phigs::conflictingStructuresInNetwork(int archiveId, int id, NetworkSource source) {
     const char* function = "INQUIRE CONFLICTING STRUCTURES IN NETWORK";
-    ArchiveFile& file = archive(archiveId, function);
+    ArchiveFile& file = archive(archiveId, function, true);
     if (source == NetworkSource::Css && !store_.exists(id))
-        raise(&log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+        raise(nullptr, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
     std::set<int> network = source == NetworkSource::Css ? store_.network(id) : archiveNetwork(file, id);
     std::vector<int> out;
     for (int member : network)

@@ -45,11 +45,10 @@ struct ArchiveModel {
     int retrieve(StoreModel& store, const std::set<int>& ids) {
         Contents taken;
         bool missing = false;
-        for (int id : ids)
-            if (contents.contains(id))
-                taken[id] = contents.at(id);
-            else
-                missing = true;
+        for (int id : ids) {  // one the archive lacks comes back empty (ISO 9592, warning 408)
+            missing = missing || !contents.contains(id);
+            taken[id] = contents.contains(id) ? contents.at(id) : std::vector<Element>{};
+        }
         bool conflict = false;
         for (const auto& [id, e] : taken) conflict = conflict || store.structures.contains(id);
         if (conflict && retrieval == ConflictResolution::Abandon) return errors::ArchiveNameConflict;
@@ -68,7 +67,7 @@ struct ArchiveModel {
                 if (auto x = executeOf(e)) store.structures[x->structureId];
             if (store.open == id) store.pointer = static_cast<int>(elements.size());
         }
-        if (missing) store.warning = errors::MissingInArchive;
+        if (missing) store.warning = errors::MissingInArchiveCreatedEmpty;
         return 0;
     }
     int remove(StoreModel& store, const std::vector<int>& ids) {

@@ -252,7 +252,8 @@ struct StoreModel {
         if (!open) return errors::NotStructureOpen;
         int low = std::max(1, std::clamp(std::min(a, b), 0, count()));
         int high = std::clamp(std::max(a, b), 0, count());
-        if (high >= low) current().erase(current().begin() + low - 1, current().begin() + high);
+        if (high < low) return 0;  // nothing deleted: the pointer stays (ISO 9592)
+        current().erase(current().begin() + low - 1, current().begin() + high);
         pointer = low - 1;
         return 0;
     }
@@ -267,7 +268,7 @@ struct StoreModel {
     }
     int copyAll(int id) {
         if (!open) return errors::NotStructureOpen;
-        if (!structures.contains(id)) return errors::StructureDoesNotExist;
+        if (!structures.contains(id)) return 0;  // nothing to copy (ISO 9592)
         std::vector<Element> copies = structures.at(id);
         for (const auto& e : copies)
             if (auto x = executeOf(e); x && wouldCycle(*open, x->structureId)) return errors::StructureCycle;
@@ -276,7 +277,7 @@ struct StoreModel {
         return 0;
     }
     int emptyStructure(int id) {
-        if (structures.contains(id)) structures[id].clear();
+        structures[id].clear();  // creates a missing one (ISO 9592)
         if (open == id) pointer = 0;
         return 0;
     }
@@ -301,7 +302,7 @@ struct StoreModel {
         return 0;
     }
     int deleteNetwork(int id, bool keep) {
-        if (!structures.contains(id)) return errors::StructureDoesNotExist;
+        if (!structures.contains(id)) return 0;  // an empty network (ISO 9592)
         std::set<int> members = networkOf(structures, id), doomed;
         if (!keep) {
             doomed = members;

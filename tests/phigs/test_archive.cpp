@@ -196,9 +196,10 @@ TEST_CASE("archive conflict resolution: maintain, abandon, update", "[archive]")
         phigs.retrieveStructures(1, {1});
         CHECK(labelOf(1) == 11);
         phigs.setConflictResolution(ConflictResolution::Update, ConflictResolution::Update);
-        phigs.retrieveStructures(1, {1, 7});  // 7 is not in the archive: warning 407
+        phigs.retrieveStructures(1, {1, 7});  // 7 is not in the archive: created empty, warning 408
         CHECK(labelOf(1) == 10);
-        CHECK(phigs.errorLog().entries().back().number == errors::MissingInArchive);
+        CHECK(store.structureStatus(7) == StructureStatus::Empty);
+        CHECK(phigs.errorLog().entries().back().number == errors::MissingInArchiveCreatedEmpty);
     }
 }
 

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <limits>
 
 using namespace phigs;
@@ -156,4 +157,125 @@ TEST_CASE("an element with a value that is not finite is refused, whatever its t
     indexed.rgb = {nan, nan, nan};
     store.insert(ColourAttribute{ElementType::TextColour, indexed});
     CHECK(store.elementCount(1) == 1);
+}
+
+TEST_CASE("empty structure creates, copy and delete network of a missing structure do nothing",
+          "[store][iso]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.emptyStructure(5);  // ISO 9592 EMPTY STRUCTURE: a structure that does not exist is created
+    CHECK(store.structureStatus(5) == StructureStatus::Empty);
+    build(store, 1, {label(1), label(2)});
+    store.openStructure(1);
+    store.setElementPointer(1);
+    const std::size_t logged = phigs.errorLog().size();
+    store.copyAllElementsFromStructure(77);  // nothing to copy, no error 201
+    CHECK(store.elementCount(1) == 2);
+    CHECK(store.elementPointer() == 1);
+    store.closeStructure();
+    store.deleteStructureNetwork(77, ReferenceHandling::Delete);  // no error 201
+    store.deleteStructureNetwork(77, ReferenceHandling::Keep);
+    CHECK_FALSE(store.exists(77));
+    CHECK(store.structureIds() == std::vector<int>{1, 5});
+    CHECK(phigs.errorLog().size() == logged);
+}
+
+TEST_CASE("delete element range that deletes nothing leaves the pointer", "[store][iso]") {
+    StructureStore store;
+    build(store, 1, {label(1), label(2), label(3)});
+    store.openStructure(1);
+    store.setElementPointer(2);
+    store.deleteElementRange(0, 0);
+    CHECK(store.elementPointer() == 2);
+    CHECK(store.elementCount(1) == 3);
+    store.deleteElementRange(3, 5);  // clamped to 3..3: the pointer goes before the deleted one
+    CHECK(store.elementCount(1) == 2);
+    CHECK(store.elementPointer() == 2);
+    store.deleteElementRange(0, 1);
+    CHECK(store.elementPointer() == 0);
+    store.setElementPointer(1);
+    store.deleteElementRange(-4, -1);  // clamped to 0..0: nothing
+    CHECK(store.elementPointer() == 1);
+    store.closeStructure();
+}
+
+TEST_CASE("position 0 is the NIL element: type and size, element search", "[store][iso]") {
+    StructureStore store;
+    build(store, 1, {label(1), pickId(3)});
+    build(store, 2, {});
+    CHECK(store.elementTypeAt(1, 0) == ElementType::Nil);
+    CHECK(store.elementSizeAt(1, 0) == 0);
+    CHECK(store.elementTypeAt(2, 0) == ElementType::Nil);
+    CHECK(errorOf([&] { store.elementTypeAt(1, 3); }) == errors::ElementDoesNotExist);
+    CHECK(errorOf([&] { store.elementTypeAt(1, -1); }) == errors::ElementDoesNotExist);
+    CHECK(errorOf([&] { store.elementTypeAt(3, 0); }) == errors::StructureDoesNotExist);
+    const auto fwd = SearchDirection::Forward;
+    const auto back = SearchDirection::Backward;
+    const std::set<ElementType> all{ElementType::All}, nil{ElementType::Nil}, none{};
+    const std::set<ElementType> labels{ElementType::Label};
+    auto at = [](SearchResult r) { return r.found ? r.elementNumber : -1; };
+    CHECK(at(store.elementSearch(1, 0, fwd, all, none)) == 0);
+    CHECK(at(store.elementSearch(1, 0, fwd, nil, none)) == 0);
+    CHECK(at(store.elementSearch(1, 2, back, nil, none)) == 0);
+    CHECK(at(store.elementSearch(1, 0, fwd, labels, none)) == 1);
+    CHECK(at(store.elementSearch(1, 0, fwd, all, nil)) == 1);
+    CHECK(at(store.elementSearch(1, 1, fwd, nil, none)) == -1);
+    CHECK(at(store.elementSearch(2, 5, back, all, none)) == 0);  // clamped to 0
+}
+
+TEST_CASE("inquiry errors are not logged", "[store][iso][errors]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    build(store, 1, {label(1)});
+    CHECK(errorOf([&] { store.elementAt(1, 2); }) == errors::ElementDoesNotExist);
+    CHECK(errorOf([&] { store.elementAt(9, 1); }) == errors::StructureDoesNotExist);
+    CHECK(errorOf([&] { store.currentElement(); }) == errors::NotStructureOpen);
+    CHECK(errorOf([&] { store.elementPointer(); }) == errors::NotStructureOpen);
+    CHECK(errorOf([&] { store.openStructureId(); }) == errors::NotStructureOpen);
+    CHECK(errorOf([&] { store.elementSearch(9, 0, SearchDirection::Forward, {}, {}); }) ==
+          errors::StructureDoesNotExist);
+    CHECK(errorOf([&] { store.pathsToAncestors(9, StructurePathOrder::TopFirst, 0); }) ==
+          errors::StructureDoesNotExist);
+    CHECK(errorOf([&] { store.pathsToDescendants(1, StructurePathOrder::TopFirst, -1); }) ==
+          errors::NegativePathDepth);
+    CHECK(errorOf([&] { phigs.workstationsPostedTo(9); }) == errors::StructureDoesNotExist);
+    CHECK(errorOf([&] { phigs.conflictingStructures(1); }) == errors::NoArchiveOpen);
+    CHECK(phigs.errorLog().size() == 0);
+}
+
+TEST_CASE("retrieve of a structure the archive lacks creates it empty, warning 408", "[archive][iso]") {
+    const std::filesystem::path file = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "iso_retrieve.phar";
+    std::filesystem::remove(file);
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    build(store, 1, {label(10)});
+    phigs.openArchiveFile(1, file);
+    phigs.archiveStructures(1, {1});
+    build(store, 2, {label(20)});  // 2 exists only in the store
+    const auto lastNumber = [&] { return phigs.errorLog().entries().back().number; };
+
+    phigs.setConflictResolution(ConflictResolution::Update, ConflictResolution::Abandon);
+    CHECK(errorOf([&] { phigs.retrieveStructures(1, {2}); }) == errors::ArchiveNameConflict);
+    CHECK(store.elementCount(2) == 1);
+    phigs.retrieveStructures(1, {3});  // neither in the store nor in the archive
+    CHECK(store.structureStatus(3) == StructureStatus::Empty);
+    CHECK(lastNumber() == errors::MissingInArchiveCreatedEmpty);
+    phigs.setConflictResolution(ConflictResolution::Update, ConflictResolution::Maintain);
+    phigs.retrieveStructures(1, {2});
+    CHECK(store.elementCount(2) == 1);
+    CHECK(lastNumber() == errors::MissingInArchiveCreatedEmpty);
+    phigs.setConflictResolution(ConflictResolution::Update, ConflictResolution::Update);
+    phigs.retrieveStructures(1, {2});
+    CHECK(store.structureStatus(2) == StructureStatus::Empty);
+
+    const std::size_t logged = phigs.errorLog().size();
+    phigs.deleteStructureNetworksFromArchive(1, {1, 9});
+    CHECK(phigs.errorLog().size() == logged + 1);
+    CHECK(lastNumber() == errors::MissingInArchive);
+    CHECK(phigs.archiveContents(1).empty());
+    phigs.closeArchiveFile(1);
+    std::filesystem::remove(file);
 }

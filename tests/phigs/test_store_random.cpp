@@ -473,6 +473,8 @@ void Runner::archiveStep(int kind) {
         check([&] { phigs_.deleteStructuresFromArchive(kArchive, list); }, archive_.remove(model_, list));
     } else if (kind < 73) {
         std::set<int> members = archive_.archiveNetworks(list);
+        for (int id : list)
+            if (!archive_.contents.contains(id)) model_.warning = errors::MissingInArchive;
         std::vector<int> present;
         for (int m : members)
             if (archive_.contents.contains(m)) present.push_back(m);
@@ -532,17 +534,17 @@ void Runner::inquire(int a) {
         const auto& elements = model_.structures.at(a);
         const int count = static_cast<int>(elements.size());
         const bool forward = direction == SearchDirection::Forward;
-        int expectedAt = 0;
-        for (int n = std::max(std::clamp(start, 0, count), forward ? 1 : 0); n >= 1 && n <= count;
-             n += forward ? 1 : -1) {
-            const ElementType t = elementType(elements[static_cast<std::size_t>(n - 1)]);
+        int expectedAt = -1;  // position 0 is the NIL element, which ALL finds
+        for (int n = std::clamp(start, 0, count); n >= 0 && n <= count; n += forward ? 1 : -1) {
+            const ElementType t =
+                n == 0 ? ElementType::Nil : elementType(elements[static_cast<std::size_t>(n - 1)]);
             if ((include.contains(ElementType::All) || include.contains(t)) && !exclude.contains(t)) {
                 expectedAt = n;
                 break;
             }
         }
         const SearchResult found = store.elementSearch(a, start, direction, include, exclude);
-        REQUIRE(found.found == (expectedAt != 0));
+        REQUIRE(found.found == (expectedAt >= 0));
         if (found.found) REQUIRE(found.elementNumber == expectedAt);
     }
     // RETRIEVE PATHS: the archive's network as it holds it; a cycle there is error -201

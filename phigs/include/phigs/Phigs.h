@@ -55,6 +55,11 @@ public:
     bool anyArchiveOpen() const { return !archives_.empty(); }
     /// INQUIRE ARCHIVE FILES: the open archive identifiers.
     std::vector<int> openArchiveIds() const;
+    /// The open archive `archiveId`, or nullptr (INQUIRE ARCHIVE FILES names their files).
+    const ArchiveFile* findArchive(int archiveId) const {
+        auto it = archives_.find(archiveId);
+        return it == archives_.end() ? nullptr : it->second.get();
+    }
     void setConflictResolution(ConflictResolution archival, ConflictResolution retrieval);
     ConflictResolution archivalResolution() const { return archival_; }
     ConflictResolution retrievalResolution() const { return retrieval_; }
@@ -62,6 +67,9 @@ public:
     void archiveStructures(int archiveId, const std::vector<int>& ids);
     void archiveStructureNetworks(int archiveId, const std::vector<int>& ids);
     void archiveAllStructures(int archiveId);
+    /// RETRIEVE STRUCTURES (and NETWORKS, ALL): a structure the archive lacks is retrieved empty
+    /// (warning 408) under the conflict resolution like any other (ABANDON: 405 when the store
+    /// has it; UPDATE empties it; MAINTAIN keeps it).
     void retrieveStructures(int archiveId, const std::vector<int>& ids);
     void retrieveStructureNetworks(int archiveId, const std::vector<int>& ids);
     void retrieveAllStructures(int archiveId);
@@ -78,14 +86,15 @@ public:
     void deleteStructuresFromArchive(int archiveId, const std::vector<int>& ids);
     void deleteStructureNetworksFromArchive(int archiveId, const std::vector<int>& ids);
     void deleteAllStructuresFromArchive(int archiveId);
-    /// INQUIRE ALL CONFLICTING STRUCTURES: ids both in the store and in the archive.
+    /// INQUIRE ALL CONFLICTING STRUCTURES: ids both in the store and in the archive. This and the
+    /// other inquiries throw phigs::Error without logging it (the C binding's error indicator).
     std::vector<int> conflictingStructures(int archiveId);
     /// INQUIRE CONFLICTING STRUCTURES IN NETWORK: of the network of `id` (in the store or the archive).
     std::vector<int> conflictingStructuresInNetwork(int archiveId, int id, NetworkSource source);
 
 private:
     void requireOpen(const char* function) const;
-    ArchiveFile& archive(int archiveId, const char* function);
+    ArchiveFile& archive(int archiveId, const char* function, bool inquiry = false);
     void warn(int number, const char* function, std::string detail);
     std::map<int, std::vector<Element>> cssContents(const std::set<int>& ids) const;
     void archiveSet(int archiveId, std::set<int> ids, const char* function);

@@ -91,10 +91,22 @@ const std::map<int, const char*>& messages() {
         {404, "Ignoring function, the specified archive file is not open"},
         {405, "Ignoring function, name conflict occurred while conflict resolution flag has value ABANDON"},
         {407, "Warning, some of the specified structures do not exist on the archive file"},
+        {408,
+         "Warning, some of the specified structures do not exist on the archive file. PHIGS will create "
+         "empty structures in their places"},
+        {900, "Storage overflow has occurred in PHIGS"},
         {903, "Input/Output error has occurred while writing"},
+        {908, "Arithmetic error has occurred"},
+        {2200, "Start index out of range"},
+        {2201, "The length of the application's list is negative"},
+        {2202, "Enumeration type out of range"},
+        {2203, "Error while allocating a Store"},
+        {2204, "Error while allocating memory for a Store"},
         {-201, "Ignoring function, executing this structure would make the structure network cyclic"},
         {-202, "Ignoring function, the element data is invalid"},
         {-203, "Ignoring function, the structure network is nested too deeply"},
+        {-204, "Ignoring function, a required argument is a null pointer or a negative count"},
+        {-205, "The element's content has no C binding form in this implementation"},
     };
     return table;
 }

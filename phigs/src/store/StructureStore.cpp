@@ -63,13 +63,6 @@ Structure& StructureStore::createIfMissing(int id) {
     return it->second;
 }
 
-Structure& StructureStore::mutableStructure(int id, const char* function) {
-    auto it = structures_.find(id);
-    if (it == structures_.end())
-        raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
-    return it->second;
-}
-
 const Structure* StructureStore::find(int id) const {
     auto it = structures_.find(id);
     return it == structures_.end() ? nullptr : &it->second;
@@ -78,7 +71,7 @@ const Structure* StructureStore::find(int id) const {
 const Structure& StructureStore::structure(int id) const {
     const Structure* s = find(id);
     if (!s)
-        raise(log_, errors::StructureDoesNotExist, "INQUIRE STRUCTURE", "structure " + std::to_string(id));
+        raise(nullptr, errors::StructureDoesNotExist, "INQUIRE STRUCTURE", "structure " + std::to_string(id));
     return *s;
 }
 
@@ -98,12 +91,12 @@ void StructureStore::closeStructure() {
 }
 
 int StructureStore::openStructureId() const {
-    requireOpen("INQUIRE OPEN STRUCTURE");
+    if (!open_) raise(nullptr, errors::NotStructureOpen, "INQUIRE OPEN STRUCTURE");
     return *open_;
 }
 
 int StructureStore::elementPointer() const {
-    requireOpen("INQUIRE ELEMENT POINTER");
+    if (!open_) raise(nullptr, errors::NotStructureOpen, "INQUIRE ELEMENT POINTER");
     return pointer_;
 }
 
@@ -203,10 +196,11 @@ void StructureStore::deleteElementRange(int first, int second) {
     int low = std::clamp(std::min(first, second), 0, count);
     int high = std::clamp(std::max(first, second), 0, count);
     if (low == 0) low = 1;
-    if (high >= low) {
-        s.elements.erase(s.elements.begin() + (low - 1), s.elements.begin() + high);
-        touch(s);
-    }
+    // ISO 9592: the pointer goes to the element before the deleted ones; a range that deletes
+    // nothing (0..0, or an empty structure) leaves it where it was.
+    if (high < low) return;
+    s.elements.erase(s.elements.begin() + (low - 1), s.elements.begin() + high);
+    touch(s);
     pointer_ = low - 1;
 }
 
@@ -237,9 +231,11 @@ void StructureStore::deleteElementsBetweenLabels(int first, int second) {
 void StructureStore::copyAllElementsFromStructure(int id) {
     const char* function = "COPY ALL ELEMENTS FROM STRUCTURE";
     requireOpen(function);
-    const Structure& source = mutableStructure(id, function);
+    // ISO 9592: copying from a structure that does not exist copies nothing (no error 201).
+    const Structure* source = find(id);
+    if (!source) return;
     std::vector<Element> copies;
-    for (const auto& e : source.elements) {
+    for (const auto& e : source->elements) {
         checkElement(e.value, *open_, function);
         copies.push_back(e.value);
     }
@@ -253,9 +249,11 @@ void StructureStore::copyAllElementsFromStructure(int id) {
 }
 
 void StructureStore::emptyStructure(int id) {
-    auto it = structures_.find(id);
-    if (it == structures_.end()) return;
-    if (!it->second.elements.empty()) {
+    auto [it, created] = structures_.try_emplace(id);
+    if (created) {
+        it->second.id = id;
+        touch(it->second);
+    } else if (!it->second.elements.empty()) {
         it->second.elements.clear();
         touch(it->second);
     }
@@ -306,8 +304,8 @@ void StructureStore::deleteStructure(int id) {
 }
 
 void StructureStore::deleteStructureNetwork(int id, ReferenceHandling handling) {
-    const char* function = "DELETE STRUCTURE NETWORK";
-    mutableStructure(id, function);
+    // ISO 9592: the network of a structure that does not exist is empty; nothing to delete.
+    if (!exists(id)) return;
     std::set<int> members = network(id);
     std::set<int> doomed;
     if (handling == ReferenceHandling::Delete) {
@@ -439,49 +437,61 @@ std::vector<int> StructureStore::structureIds() const {
     return ids;
 }
 
+// Inquiries (INQUIRE ..., ELEMENT SEARCH) never log: ISO 9592 has them return an error
+// indicator, so they throw phigs::Error with no ErrorLog (raise(nullptr, ...)) and the C
+// binding turns the number into the indicator.
 const Element& StructureStore::elementAt(int id, int elementNumber) const {
     const Structure* s = find(id);
     if (!s)
-        raise(log_, errors::StructureDoesNotExist, "INQUIRE ELEMENT CONTENT",
+        raise(nullptr, errors::StructureDoesNotExist, "INQUIRE ELEMENT CONTENT",
               "structure " + std::to_string(id));
     if (elementNumber < 1 || elementNumber > static_cast<int>(s->elements.size()))
-        raise(log_, errors::ElementDoesNotExist, "INQUIRE ELEMENT CONTENT",
+        raise(nullptr, errors::ElementDoesNotExist, "INQUIRE ELEMENT CONTENT",
               "element " + std::to_string(elementNumber) + " of structure " + std::to_string(id));
     return s->elements[static_cast<std::size_t>(elementNumber - 1)].value;
 }
 
+// Position 0 of an existing structure holds no element: ISO 9592 answers NIL, size 0 there.
 ElementType StructureStore::elementTypeAt(int id, int elementNumber) const {
+    if (elementNumber == 0 && exists(id)) return ElementType::Nil;
     return elementType(elementAt(id, elementNumber));
 }
 
 std::size_t StructureStore::elementSizeAt(int id, int elementNumber) const {
+    if (elementNumber == 0 && exists(id)) return 0;
     return elementSize(elementAt(id, elementNumber));
 }
 
 const Element& StructureStore::currentElement() const {
-    requireOpen("INQUIRE CURRENT ELEMENT CONTENT");
+    if (!open_) raise(nullptr, errors::NotStructureOpen, "INQUIRE CURRENT ELEMENT CONTENT");
     if (pointer_ == 0)
-        raise(log_, errors::ElementDoesNotExist, "INQUIRE CURRENT ELEMENT CONTENT", "element pointer is 0");
+        raise(nullptr, errors::ElementDoesNotExist, "INQUIRE CURRENT ELEMENT CONTENT",
+              "element pointer is 0");
     return structures_.at(*open_).elements[static_cast<std::size_t>(pointer_ - 1)].value;
 }
 
 SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
                                            const std::set<ElementType>& include,
                                            const std::set<ElementType>& exclude) const {
-    const Structure* s = find(id);
-    if (!s) raise(log_, errors::StructureDoesNotExist, "ELEMENT SEARCH", "structure " + std::to_string(id));
-    int count = static_cast<int>(s->elements.size());
-    auto matches = [&](ElementType t) {
+    auto matches = [&](const Element* e) {
+        const ElementType t = e ? elementType(*e) : ElementType::Nil;
         bool in = include.contains(ElementType::All) || include.contains(t);
         bool out = exclude.contains(ElementType::All) || exclude.contains(t);
         return in && !out;
     };
-    // Position 0 holds no element: a forward search from it starts at element 1.
+    return elementSearch(id, start, direction, matches);
+}
+
+SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
+                                           const std::function<bool(const Element*)>& matches) const {
+    const Structure* s = find(id);
+    if (!s)
+        raise(nullptr, errors::StructureDoesNotExist, "ELEMENT SEARCH", "structure " + std::to_string(id));
+    const int count = static_cast<int>(s->elements.size());
+    // Position 0 holds the NIL element (ISO 9592): NIL or ALL in the inclusion set finds it.
     const bool forward = direction == SearchDirection::Forward;
-    int first = std::clamp(start, 0, count);
-    if (first == 0 && forward) first = 1;
-    for (int n = first; n >= 1 && n <= count; n += forward ? 1 : -1)
-        if (matches(elementType(s->elements[static_cast<std::size_t>(n - 1)].value))) return {true, n};
+    for (int n = std::clamp(start, 0, count); n >= 0 && n <= count; n += forward ? 1 : -1)
+        if (matches(n == 0 ? nullptr : &s->elements[static_cast<std::size_t>(n - 1)].value)) return {true, n};
     return {};
 }
 
@@ -499,15 +509,17 @@ ExecuteReferences StructureStore::executeReferences() const {
 std::vector<StructurePath> StructureStore::pathsToAncestors(int id, StructurePathOrder order,
                                                             int depth) const {
     const char* function = "INQUIRE PATHS TO ANCESTORS";
-    if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
-    return ancestorPaths(executeReferences(), id, order, depth, log_, function);
+    if (!exists(id))
+        raise(nullptr, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    return ancestorPaths(executeReferences(), id, order, depth, nullptr, function);
 }
 
 std::vector<StructurePath> StructureStore::pathsToDescendants(int id, StructurePathOrder order,
                                                               int depth) const {
     const char* function = "INQUIRE PATHS TO DESCENDANTS";
-    if (!exists(id)) raise(log_, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
-    return descendantPaths(executeReferences(), id, order, depth, log_, function);
+    if (!exists(id))
+        raise(nullptr, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    return descendantPaths(executeReferences(), id, order, depth, nullptr, function);
 }
 
 void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>& contents,

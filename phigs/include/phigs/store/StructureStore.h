@@ -80,18 +80,21 @@ public:
     int elementPointer() const;
     /// DELETE ELEMENT: the element at the pointer; the pointer moves to the one before.
     void deleteElement();
-    /// DELETE ELEMENT RANGE: elements between the two positions inclusive (clamped).
+    /// DELETE ELEMENT RANGE: elements between the two positions inclusive (clamped); the pointer
+    /// goes to the element before them, and stays where it was when nothing is deleted.
     void deleteElementRange(int first, int second);
     /// DELETE ELEMENTS BETWEEN LABELS: strictly between the next `first` and the next `second` after it.
     void deleteElementsBetweenLabels(int first, int second);
-    /// COPY ALL ELEMENTS FROM STRUCTURE: inserted after the pointer, which then points at the last copy.
+    /// COPY ALL ELEMENTS FROM STRUCTURE: inserted after the pointer, which then points at the last
+    /// copy; a structure that does not exist has nothing to copy (no error).
     void copyAllElementsFromStructure(int id);
 
     // ---- structures
-    /// EMPTY STRUCTURE: removes every element (no effect on a structure that does not exist).
+    /// EMPTY STRUCTURE: removes every element; creates a structure that does not exist, empty.
     void emptyStructure(int id);
     /// DELETE STRUCTURE: removes references to it and its postings; the open structure is emptied instead.
     void deleteStructure(int id);
+    /// DELETE STRUCTURE NETWORK: nothing happens for a structure that does not exist.
     void deleteStructureNetwork(int id, ReferenceHandling handling);
     void deleteAllStructures();
     /// CHANGE STRUCTURE IDENTIFIER: a missing original counts as empty (the result is emptied).
@@ -103,21 +106,28 @@ public:
     /// Creates an empty structure when `id` does not exist (POST STRUCTURE, EXECUTE STRUCTURE do).
     void createStructure(int id) { createIfMissing(id); }
 
-    // ---- inquiries
+    // ---- inquiries: they never log; an error is thrown as phigs::Error with no ErrorLog entry,
+    // which the C binding answers as the error indicator (ISO 9592 inquiries raise no error).
     bool exists(int id) const { return structures_.contains(id); }
     StructureStatus structureStatus(int id) const;
     std::vector<int> structureIds() const;
     const Structure& structure(int id) const;  ///< error 201 when it does not exist
     const Structure* find(int id) const;
     int elementCount(int id) const { return static_cast<int>(structure(id).elements.size()); }
+    /// INQUIRE ELEMENT TYPE AND SIZE: NIL and 0 at position 0; error 202 outside 0..count.
     ElementType elementTypeAt(int id, int elementNumber) const;
     std::size_t elementSizeAt(int id, int elementNumber) const;
     const Element& elementAt(int id, int elementNumber) const;  ///< error 202 outside 1..count
     /// The element at the pointer of the open structure (error 202 at position 0).
     const Element& currentElement() const;
+    /// ELEMENT SEARCH: position 0 is the NIL element, which NIL or ALL in `include` finds.
     SearchResult elementSearch(int id, int start, SearchDirection direction,
                                const std::set<ElementType>& include,
                                const std::set<ElementType>& exclude) const;
+    /// ELEMENT SEARCH with the caller's test of each element (nullptr: the NIL element at 0),
+    /// for type sets finer than ElementType (the C binding's index and general colour forms).
+    SearchResult elementSearch(int id, int start, SearchDirection direction,
+                               const std::function<bool(const Element*)>& matches) const;
     /// INQUIRE PATHS TO ANCESTORS / DESCENDANTS: every path written top first, sorted; depth > 0
     /// keeps the top (TopFirst) or bottom (BottomFirst) `depth` levels, duplicates removed; a
     /// root has no ancestor paths and a leaf no descendant paths (a path has two references).
@@ -135,7 +145,6 @@ public:
     void replaceStructures(const std::map<int, std::vector<Element>>& contents, const char* function);
 
 private:
-    Structure& mutableStructure(int id, const char* function);
     Structure& createIfMissing(int id);
     void touch(Structure& s) { s.version = ++serial_; }
     StoredElement stored(Element e) { return {std::move(e), ++serial_}; }

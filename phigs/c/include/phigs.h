@@ -1,0 +1,712 @@
+/* phigs.h: the ISO C binding of PHIGS (ISO/IEC 9593-4) over this toolkit, part 1: control,
+ * error handling, structures and their elements, archives, the transformation utilities and
+ * the structure, CSS and archive inquiries. Written for this project from the standard's
+ * published interface (names, types and constants); phigs/c/README.md lists what is done.
+ * C11 and C++ clean; nothing of the toolkit's C++ is visible here. */
+#ifndef PHIGS_C_BINDING_H
+#define PHIGS_C_BINDING_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- basic types */
+typedef int Pint;
+typedef float Pfloat;
+typedef long Plong;
+
+/* OPEN PHIGS defaults: no error file (errors go to stderr), the memory the system has. */
+#define PDEF_MEM_SIZE ((size_t)(-1))
+#define PDEF_ERR_FILE ((char*)0)
+
+/* ---- C binding error numbers (ISO 9593-4) */
+#define PE_START_IND_INVAL 2200     /* start index out of range */
+#define PE_LIST_LENGTH_LT_ZERO 2201 /* the length of the application's list is negative */
+#define PE_ENUM_TYPE_INVAL 2202     /* enumeration type out of range */
+#define PE_ALLOC_STORE 2203         /* error while allocating a Store */
+#define PE_ALLOC_STORE_MEM 2204     /* error while allocating memory for a Store */
+
+/* ---- geometry */
+typedef struct {
+    Pfloat x, y;
+} Ppoint;
+typedef struct {
+    Pfloat x, y, z;
+} Ppoint3;
+typedef struct {
+    Pfloat delta_x, delta_y;
+} Pvec;
+typedef struct {
+    Pfloat delta_x, delta_y, delta_z;
+} Pvec3;
+typedef Pfloat Pmatrix[3][3];  /* [row][column], x' = M x: translation in the last column */
+typedef Pfloat Pmatrix3[4][4]; /* likewise */
+typedef struct {
+    Pint num_points;
+    Ppoint* points;
+} Ppoint_list;
+typedef struct {
+    Pint num_points;
+    Ppoint3* points;
+} Ppoint_list3;
+typedef struct {
+    Pint num_point_lists;
+    Ppoint_list* point_lists;
+} Ppoint_list_list;
+typedef struct {
+    Pint num_point_lists;
+    Ppoint_list3* point_lists;
+} Ppoint_list_list3;
+typedef struct {
+    Pint num_ints;
+    Pint* ints;
+} Pint_list;
+typedef struct {
+    Pfloat x_min, x_max, y_min, y_max;
+} Plimit;
+typedef struct {
+    Pfloat x_min, x_max, y_min, y_max, z_min, z_max;
+} Plimit3;
+typedef struct {
+    Ppoint p, q;
+} Prect;
+typedef struct {
+    Ppoint3 p, q, r;
+} Pparal;
+typedef struct {
+    Pint size_x, size_y;
+} Pint_size;
+typedef struct {
+    Pint_size dims;
+    Pint* colr_array; /* dims.size_x * dims.size_y colour indices, row by row */
+} Ppat_rep;
+typedef struct {
+    Ppoint point;
+    Pvec norm;
+} Phalf_space;
+typedef struct {
+    Ppoint3 point;
+    Pvec3 norm;
+} Phalf_space3;
+typedef struct {
+    Pint num_half_spaces;
+    Phalf_space* half_spaces;
+} Phalf_space_list;
+typedef struct {
+    Pint num_half_spaces;
+    Phalf_space3* half_spaces;
+} Phalf_space_list3;
+typedef struct {
+    Pint size;
+    void* data;
+} Pdata;
+
+/* ---- enumerations */
+typedef enum { PSYS_ST_PHCL, PSYS_ST_PHOP } Psys_st;
+typedef enum { PSTRUCT_ST_STCL, PSTRUCT_ST_STOP } Pstruct_st;
+typedef enum { PAR_ST_CL, PAR_ST_OP } Par_st;
+typedef enum { PSTRUCT_NONE, PSTRUCT_OPEN } Popen_struct_status;
+typedef enum { PEDIT_INSERT, PEDIT_REPLACE } Pedit_mode;
+typedef enum { PSTRUCT_STATUS_NON_EXIST, PSTRUCT_STATUS_EMPTY, PSTRUCT_STATUS_NOT_EMPTY } Pstruct_status;
+typedef enum { PDIR_BACKWARD, PDIR_FORWARD } Psearch_dir;
+typedef enum { PSEARCH_STATUS_FAILURE, PSEARCH_STATUS_SUCCESS } Psearch_status;
+typedef enum { PFLAG_DEL, PFLAG_KEEP } Pref_flag;
+typedef enum { PORDER_TOP_FIRST, PORDER_BOTTOM_FIRST } Ppath_order;
+typedef enum { PTYPE_PRECONCAT, PTYPE_POSTCONCAT, PTYPE_REPLACE } Pcompose_type;
+typedef enum { PRES_MAINTAIN, PRES_ABANDON, PRES_UPDATE } Pconf_res;
+typedef enum { PNET_CSS, PNET_AR } Pstruct_net_source;
+typedef enum { PERR_OFF, PERR_ON } Perr_mode;
+typedef enum { PTYPE_PARAL, PTYPE_PERSPECT } Pproj_type;
+typedef enum { PPREC_STRING, PPREC_CHAR, PPREC_STROKE } Ptext_prec;
+typedef enum { PPATH_RIGHT, PPATH_LEFT, PPATH_UP, PPATH_DOWN } Ptext_path;
+typedef enum { PHOR_NORM, PHOR_LEFT, PHOR_CTR, PHOR_RIGHT } Phor_text_align;
+typedef enum { PVERT_NORM, PVERT_TOP, PVERT_CAP, PVERT_HALF, PVERT_BASE, PVERT_BOTTOM } Pvert_text_align;
+typedef struct {
+    Phor_text_align hor;
+    Pvert_text_align vert;
+} Ptext_align;
+typedef enum { PSTYLE_HOLLOW, PSTYLE_SOLID, PSTYLE_PAT, PSTYLE_HATCH, PSTYLE_EMPTY } Pint_style;
+typedef enum { PEDGE_OFF, PEDGE_ON } Pedge_flag;
+typedef enum { PIND_NO_CLIP, PIND_CLIP } Pclip_ind;
+typedef enum { PASF_BUNDLED, PASF_INDIV } Pasf;
+typedef enum {
+    PASPECT_LINETYPE,
+    PASPECT_LINEWIDTH,
+    PASPECT_LINE_COLR_IND,
+    PASPECT_MARKER_TYPE,
+    PASPECT_MARKER_SIZE,
+    PASPECT_MARKER_COLR_IND,
+    PASPECT_TEXT_FONT,
+    PASPECT_TEXT_PREC,
+    PASPECT_CHAR_EXPAN,
+    PASPECT_CHAR_SPACE,
+    PASPECT_TEXT_COLR_IND,
+    PASPECT_INT_STYLE,
+    PASPECT_INT_STYLE_IND,
+    PASPECT_INT_COLR_IND,
+    PASPECT_EDGE_FLAG,
+    PASPECT_EDGETYPE,
+    PASPECT_EDGEWIDTH,
+    PASPECT_EDGE_COLR_IND
+} Paspect;
+
+/* Model clipping operators and the common line and marker types. */
+#define PMC_REPLACE 1
+#define PMC_INTERSECT 2
+#define PLINE_SOLID 1
+#define PLINE_DASH 2
+#define PLINE_DOT 3
+#define PLINE_DASH_DOT 4
+#define PMARKER_DOT 1
+#define PMARKER_PLUS 2
+#define PMARKER_ASTERISK 3
+#define PMARKER_CIRCLE 4
+#define PMARKER_CROSS 5
+#define PANNO_STYLE_UNCONNECTED 1
+#define PANNO_STYLE_LEAD_LINE 2
+
+/* Element types: PHIGS's in the standard's order, then the PHIGS PLUS ones this toolkit
+ * stores (PELEM_*_COLR are the general-colour forms of the colour index attributes). GDP,
+ * GSE and the pattern attributes are listed for completeness; the store holds none yet. */
+typedef enum {
+    PELEM_ALL,
+    PELEM_NIL,
+    PELEM_POLYLINE3,
+    PELEM_POLYLINE,
+    PELEM_POLYMARKER3,
+    PELEM_POLYMARKER,
+    PELEM_TEXT3,
+    PELEM_TEXT,
+    PELEM_ANNO_TEXT_REL3,
+    PELEM_ANNO_TEXT_REL,
+    PELEM_FILL_AREA3,
+    PELEM_FILL_AREA,
+    PELEM_FILL_AREA_SET3,
+    PELEM_FILL_AREA_SET,
+    PELEM_CELL_ARRAY3,
+    PELEM_CELL_ARRAY,
+    PELEM_GDP3,
+    PELEM_GDP,
+    PELEM_LINE_IND,
+    PELEM_MARKER_IND,
+    PELEM_TEXT_IND,
+    PELEM_INT_IND,
+    PELEM_EDGE_IND,
+    PELEM_LINETYPE,
+    PELEM_LINEWIDTH,
+    PELEM_LINE_COLR_IND,
+    PELEM_MARKER_TYPE,
+    PELEM_MARKER_SIZE,
+    PELEM_MARKER_COLR_IND,
+    PELEM_TEXT_FONT,
+    PELEM_TEXT_PREC,
+    PELEM_CHAR_EXPAN,
+    PELEM_CHAR_SPACE,
+    PELEM_TEXT_COLR_IND,
+    PELEM_CHAR_HT,
+    PELEM_CHAR_UP_VEC,
+    PELEM_TEXT_PATH,
+    PELEM_TEXT_ALIGN,
+    PELEM_ANNO_CHAR_HT,
+    PELEM_ANNO_CHAR_UP_VEC,
+    PELEM_ANNO_PATH,
+    PELEM_ANNO_ALIGN,
+    PELEM_ANNO_STYLE,
+    PELEM_INT_STYLE,
+    PELEM_INT_STYLE_IND,
+    PELEM_INT_COLR_IND,
+    PELEM_EDGE_FLAG,
+    PELEM_EDGETYPE,
+    PELEM_EDGEWIDTH,
+    PELEM_EDGE_COLR_IND,
+    PELEM_PAT_SIZE,
+    PELEM_PAT_REF_POINT_VECS,
+    PELEM_PAT_REF_POINT,
+    PELEM_ADD_NAMES_SET,
+    PELEM_REMOVE_NAMES_SET,
+    PELEM_INDIV_ASF,
+    PELEM_HLHSR_ID,
+    PELEM_LOCAL_MODEL_TRAN3,
+    PELEM_LOCAL_MODEL_TRAN,
+    PELEM_GLOBAL_MODEL_TRAN3,
+    PELEM_GLOBAL_MODEL_TRAN,
+    PELEM_MODEL_CLIP_VOL3,
+    PELEM_MODEL_CLIP_VOL,
+    PELEM_MODEL_CLIP_IND,
+    PELEM_RESTORE_MODEL_CLIP_VOL,
+    PELEM_VIEW_IND,
+    PELEM_EXEC_STRUCT,
+    PELEM_LABEL,
+    PELEM_APPL_DATA,
+    PELEM_GSE,
+    PELEM_PICK_ID,
+    /* PHIGS PLUS */
+    PELEM_LINE_COLR,
+    PELEM_MARKER_COLR,
+    PELEM_TEXT_COLR,
+    PELEM_INT_COLR,
+    PELEM_BACK_INT_COLR,
+    PELEM_EDGE_COLR,
+    PELEM_BACK_INT_COLR_IND,
+    PELEM_LINE_SHAD_METH,
+    PELEM_INT_SHAD_METH,
+    PELEM_BACK_INT_SHAD_METH,
+    PELEM_REFL_EQN,
+    PELEM_BACK_REFL_EQN,
+    PELEM_REFL_PROPS,
+    PELEM_BACK_REFL_PROPS,
+    PELEM_BACK_INT_STYLE,
+    PELEM_BACK_INT_STYLE_IND,
+    PELEM_FACE_DISTING_MODE,
+    PELEM_FACE_CULL_MODE,
+    PELEM_CURVE_APPROX_CRIT,
+    PELEM_SURF_APPROX_CRIT,
+    PELEM_PARA_SURF_CHARS,
+    PELEM_LIGHT_SRC_STATE,
+    PELEM_DCUE_IND,
+    PELEM_COLR_MAP_IND,
+    PELEM_FILL_AREA_SET3_DATA,
+    PELEM_TRI_STRIP3_DATA,
+    PELEM_QUAD_MESH3_DATA,
+    PELEM_NUNI_BSP_CURVE,
+    PELEM_NUNI_BSP_SURF
+} Pelem_type;
+#define PFIRST_PHIGS_ELEM PELEM_POLYLINE3
+#define PLAST_PHIGS_ELEM PELEM_PICK_ID
+
+typedef struct {
+    Pint num_elem_types;
+    Pelem_type* elem_types;
+} Pelem_type_list;
+typedef struct {
+    Pint struct_id;
+    Pint elem_pos;
+} Pelem_ref;
+typedef struct {
+    Pint num_elem_refs;
+    Pelem_ref* elem_refs;
+} Pelem_ref_list;
+typedef struct {
+    Pint num_elem_ref_lists;
+    Pelem_ref_list* elem_ref_lists;
+} Pelem_ref_list_list;
+typedef struct {
+    Pint ar_id;
+    char* name;
+} Par_file;
+typedef struct {
+    Pint num_ar_files;
+    Par_file* ar_files;
+} Par_file_list;
+typedef struct {
+    Plimit win;
+    Plimit proj_vp;
+} Pview_map;
+typedef struct {
+    Plimit win;
+    Plimit3 proj_vp;
+    Pproj_type proj_type;
+    Ppoint3 proj_ref_point;
+    Pfloat view_plane;
+    Pfloat back_plane;
+    Pfloat front_plane;
+} Pview_map3;
+/* A general colour (PHIGS PLUS): an index, or a direct colour in the RGB model. */
+typedef struct {
+    Pint type; /* PINDIRECT or PMODEL_RGB */
+    union {
+        Pint ind;
+        struct {
+            Pfloat x, y, z;
+        } direct;
+    } val;
+} Pgcolr;
+#define PINDIRECT 0
+#define PMODEL_RGB 1
+
+/* The contents of an element (INQUIRE (CURRENT) ELEMENT CONTENT). Every pointer in it points
+ * into the Pstore the inquiry was given, valid until that store's next use or deletion. */
+typedef union {
+    Pint int_data;
+    Pfloat float_data;
+    Ppoint_list3 point_list3;
+    Ppoint_list point_list;
+    Ppoint_list_list3 point_list_list3;
+    Ppoint_list_list point_list_list;
+    struct {
+        Ppoint3 pos;
+        Pvec3 dir[2];
+        char* char_string;
+    } text3;
+    struct {
+        Ppoint pos;
+        char* char_string;
+    } text;
+    struct {
+        Ppoint3 ref_point;
+        Pvec3 offset;
+        char* char_string;
+    } anno_text_rel3;
+    struct {
+        Ppoint ref_point;
+        Pvec offset;
+        char* char_string;
+    } anno_text_rel;
+    struct {
+        Pparal paral;
+        Ppat_rep colr_array;
+    } cell_array3;
+    struct {
+        Prect rect;
+        Ppat_rep colr_array;
+    } cell_array;
+    Ptext_prec text_prec;
+    Pvec char_up_vec;
+    Ptext_path text_path;
+    Ptext_align text_align;
+    Pint_style int_style;
+    Pedge_flag edge_flag;
+    Pint_list names;
+    struct {
+        Paspect id;
+        Pasf source;
+    } asf;
+    struct {
+        Pcompose_type compose_type;
+        Pmatrix3 matrix;
+    } local_tran3;
+    struct {
+        Pcompose_type compose_type;
+        Pmatrix matrix;
+    } local_tran;
+    Pmatrix3 global_tran3;
+    Pmatrix global_tran;
+    struct {
+        Pint op;
+        Phalf_space_list3 half_spaces;
+    } model_clip3;
+    struct {
+        Pint op;
+        Phalf_space_list half_spaces;
+    } model_clip;
+    Pclip_ind clip_ind;
+    Pdata appl_data;
+    Pgcolr colr;
+} Pelem_data;
+
+/* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
+typedef struct Phigs_store* Pstore;
+
+/* ISO function identifiers (the error handler's func_num). */
+enum {
+    Pfn_open_phigs = 0,
+    Pfn_close_phigs = 1,
+    Pfn_message = 7,
+    Pfn_polyline3 = 8,
+    Pfn_polyline = 9,
+    Pfn_polymarker3 = 10,
+    Pfn_polymarker = 11,
+    Pfn_text3 = 12,
+    Pfn_text = 13,
+    Pfn_anno_text_rel3 = 14,
+    Pfn_anno_text_rel = 15,
+    Pfn_fill_area3 = 16,
+    Pfn_fill_area = 17,
+    Pfn_fill_area_set3 = 18,
+    Pfn_fill_area_set = 19,
+    Pfn_cell_array3 = 20,
+    Pfn_cell_array = 21,
+    Pfn_set_line_ind = 24,
+    Pfn_set_marker_ind = 25,
+    Pfn_set_text_ind = 26,
+    Pfn_set_int_ind = 27,
+    Pfn_set_edge_ind = 28,
+    Pfn_set_linetype = 29,
+    Pfn_set_linewidth = 30,
+    Pfn_set_line_colr_ind = 31,
+    Pfn_set_marker_type = 32,
+    Pfn_set_marker_size = 33,
+    Pfn_set_marker_colr_ind = 34,
+    Pfn_set_text_font = 35,
+    Pfn_set_text_prec = 36,
+    Pfn_set_char_expan = 37,
+    Pfn_set_char_space = 38,
+    Pfn_set_text_colr_ind = 39,
+    Pfn_set_char_ht = 40,
+    Pfn_set_char_up_vec = 41,
+    Pfn_set_text_path = 42,
+    Pfn_set_text_align = 43,
+    Pfn_set_anno_char_ht = 44,
+    Pfn_set_anno_char_up_vec = 45,
+    Pfn_set_anno_path = 46,
+    Pfn_set_anno_align = 47,
+    Pfn_set_anno_style = 48,
+    Pfn_set_int_style = 49,
+    Pfn_set_int_style_ind = 50,
+    Pfn_set_int_colr_ind = 51,
+    Pfn_set_edge_flag = 52,
+    Pfn_set_edgetype = 53,
+    Pfn_set_edgewidth = 54,
+    Pfn_set_edge_colr_ind = 55,
+    Pfn_add_names_set = 59,
+    Pfn_remove_names_set = 60,
+    Pfn_set_indiv_asf = 61,
+    Pfn_set_hlhsr_id = 72,
+    Pfn_set_local_tran3 = 74,
+    Pfn_set_local_tran = 75,
+    Pfn_set_global_tran3 = 76,
+    Pfn_set_global_tran = 77,
+    Pfn_set_model_clip_vol3 = 78,
+    Pfn_set_model_clip_vol = 79,
+    Pfn_set_model_clip_ind = 80,
+    Pfn_restore_model_clip_vol = 81,
+    Pfn_set_view_ind = 82,
+    Pfn_open_struct = 90,
+    Pfn_close_struct = 91,
+    Pfn_exec_struct = 92,
+    Pfn_label = 93,
+    Pfn_appl_data = 94,
+    Pfn_set_edit_mode = 96,
+    Pfn_copy_all_elems_struct = 97,
+    Pfn_set_elem_ptr = 98,
+    Pfn_offset_elem_ptr = 99,
+    Pfn_set_elem_ptr_label = 100,
+    Pfn_del_elem = 101,
+    Pfn_del_elem_range = 102,
+    Pfn_del_elems_labels = 103,
+    Pfn_empty_struct = 104,
+    Pfn_del_struct = 105,
+    Pfn_del_struct_net = 106,
+    Pfn_del_all_structs = 107,
+    Pfn_change_struct_id = 108,
+    Pfn_change_struct_refs = 109,
+    Pfn_change_struct_id_refs = 110,
+    Pfn_open_ar_file = 114,
+    Pfn_close_ar_file = 115,
+    Pfn_ar_structs = 116,
+    Pfn_ar_struct_nets = 117,
+    Pfn_ar_all_structs = 118,
+    Pfn_set_conf_res = 119,
+    Pfn_ret_struct_ids = 120,
+    Pfn_ret_structs = 121,
+    Pfn_ret_struct_nets = 122,
+    Pfn_ret_all_structs = 123,
+    Pfn_ret_paths_ances = 124,
+    Pfn_ret_paths_descs = 125,
+    Pfn_del_structs_ar = 126,
+    Pfn_del_struct_nets_ar = 127,
+    Pfn_del_all_structs_ar = 128,
+    Pfn_set_pick_id = 129,
+    Pfn_set_err_hand_mode = 179,
+    Pfn_line_colr = 310,
+    Pfn_marker_colr = 312,
+    Pfn_text_colr = 313,
+    Pfn_int_colr = 316,
+    Pfn_edge_colr = 327
+};
+#define Pfn_set_line_colr Pfn_line_colr
+#define Pfn_set_marker_colr Pfn_marker_colr
+#define Pfn_set_text_colr Pfn_text_colr
+#define Pfn_set_int_colr Pfn_int_colr
+#define Pfn_set_edge_colr Pfn_edge_colr
+
+/* ---- control */
+void popen_phigs(const char* err_file, size_t mem_units);
+void pclose_phigs(void);
+void pemergency_close_phigs(void);
+void pinq_sys_st(Psys_st* sys_st);
+/* MESSAGE: needs the workstation open (errors 3, 54); the message goes to the error file
+ * (stderr without one) as the line "MESSAGE <ws_id>: <message>". */
+void pmessage(Pint ws_id, const char* message);
+/* The PHIGS description table: this implementation sets no limit on open workstations, open
+ * archive files, names in name sets or filter lengths (INT_MAX each) and lists no character
+ * set beyond the ISO 646 one every implementation has (an empty list). */
+void pinq_phigs_facs(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint* max_open_ws,
+                     Pint* max_open_ar, Pint* num_names, Pint_list* char_sets, Pint* num_elems_impl_list,
+                     Pint* max_norm_filter_list, Pint* max_inv_filter_list);
+
+/* ---- error handling */
+void perr_hand(Pint err_num, Pint func_num, const char* err_file);
+void perr_log(Pint err_num, Pint func_num, const char* err_file);
+void pset_err_hand(void (*new_err_hand)(Pint, Pint, const char*),
+                   void (**old_err_hand)(Pint, Pint, const char*));
+void pset_err_hand_mode(Perr_mode mode);
+void pinq_err_hand_mode(Pint* err_ind, Perr_mode* mode);
+
+/* ---- stores */
+void pcreate_store(Pint* err_ind, Pstore* store);
+void pdel_store(Pstore store);
+
+/* ---- structures */
+void popen_struct(Pint struct_id);
+void pclose_struct(void);
+void pset_edit_mode(Pedit_mode mode);
+void pset_elem_ptr(Pint elem_ptr_value);
+void poffset_elem_ptr(Pint elem_ptr_offset);
+void pset_elem_ptr_label(Pint label_id);
+void pdel_elem(void);
+void pdel_elem_range(Pint elem_ptr1_value, Pint elem_ptr2_value);
+void pdel_elems_labels(Pint label1_id, Pint label2_id);
+void pempty_struct(Pint struct_id);
+void pdel_struct(Pint struct_id);
+void pdel_struct_net(Pint struct_id, Pref_flag ref_flag);
+void pdel_all_structs(void);
+void pcopy_all_elems_struct(Pint struct_id);
+void pchange_struct_id(Pint orig_struct_id, Pint result_struct_id);
+void pchange_struct_refs(Pint orig_struct_id, Pint result_struct_id);
+void pchange_struct_id_refs(Pint orig_struct_id, Pint result_struct_id);
+
+/* ---- output primitives */
+void ppolyline3(const Ppoint_list3* point_list);
+void ppolyline(const Ppoint_list* point_list);
+void ppolymarker3(const Ppoint_list3* point_list);
+void ppolymarker(const Ppoint_list* point_list);
+void ptext3(const Ppoint3* text_pos, const Pvec3 text_dir[2], const char* char_string);
+void ptext(const Ppoint* text_pos, const char* char_string);
+void panno_text_rel3(const Ppoint3* ref_point, const Pvec3* offset, const char* char_string);
+void panno_text_rel(const Ppoint* ref_point, const Pvec* offset, const char* char_string);
+void pfill_area3(const Ppoint_list3* point_list);
+void pfill_area(const Ppoint_list* point_list);
+void pfill_area_set3(const Ppoint_list_list3* point_list_list);
+void pfill_area_set(const Ppoint_list_list* point_list_list);
+void pcell_array3(const Pparal* paral, const Ppat_rep* colr_array);
+void pcell_array(const Prect* rect, const Ppat_rep* colr_array);
+
+/* ---- attributes */
+void pset_line_ind(Pint line_ind);
+void pset_marker_ind(Pint marker_ind);
+void pset_text_ind(Pint text_ind);
+void pset_int_ind(Pint int_ind);
+void pset_edge_ind(Pint edge_ind);
+void pset_linetype(Pint linetype);
+void pset_linewidth(Pfloat linewidth);
+void pset_line_colr_ind(Pint colr_ind);
+void pset_marker_type(Pint marker_type);
+void pset_marker_size(Pfloat marker_size);
+void pset_marker_colr_ind(Pint colr_ind);
+void pset_text_font(Pint font);
+void pset_text_prec(Ptext_prec prec);
+void pset_char_expan(Pfloat char_expan);
+void pset_char_space(Pfloat char_space);
+void pset_text_colr_ind(Pint colr_ind);
+void pset_char_ht(Pfloat char_ht);
+void pset_char_up_vec(const Pvec* char_up_vec);
+void pset_text_path(Ptext_path text_path);
+void pset_text_align(const Ptext_align* text_align);
+void pset_anno_char_ht(Pfloat char_ht);
+void pset_anno_char_up_vec(const Pvec* char_up_vec);
+void pset_anno_path(Ptext_path text_path);
+void pset_anno_align(const Ptext_align* text_align);
+void pset_anno_style(Pint anno_style);
+void pset_int_style(Pint_style int_style);
+void pset_int_style_ind(Pint int_style_ind);
+void pset_int_colr_ind(Pint colr_ind);
+void pset_edge_flag(Pedge_flag edge_flag);
+void pset_edgetype(Pint edgetype);
+void pset_edgewidth(Pfloat edgewidth);
+void pset_edge_colr_ind(Pint colr_ind);
+void pset_line_colr(const Pgcolr* colr);
+void pset_marker_colr(const Pgcolr* colr);
+void pset_text_colr(const Pgcolr* colr);
+void pset_int_colr(const Pgcolr* colr);
+void pset_edge_colr(const Pgcolr* colr);
+void pset_indiv_asf(Paspect asf_id, Pasf asf_source);
+void padd_names_set(const Pint_list* names);
+void premove_names_set(const Pint_list* names);
+void pset_local_tran3(Pmatrix3 local_tran, Pcompose_type compose_type);
+void pset_local_tran(Pmatrix local_tran, Pcompose_type compose_type);
+void pset_global_tran3(Pmatrix3 global_tran);
+void pset_global_tran(Pmatrix global_tran);
+void pset_model_clip_vol3(Pint op, const Phalf_space_list3* half_spaces);
+void pset_model_clip_vol(Pint op, const Phalf_space_list* half_spaces);
+void pset_model_clip_ind(Pclip_ind clip_ind);
+void prestore_model_clip_vol(void);
+void pset_view_ind(Pint view_ind);
+void pset_hlhsr_id(Pint hlhsr_id);
+void pset_pick_id(Pint pick_id);
+void pexec_struct(Pint struct_id);
+void plabel(Pint label_id);
+void pappl_data(const Pdata* data);
+
+/* ---- archives */
+void popen_ar_file(Pint ar_id, const char* ar_file);
+void pclose_ar_file(Pint ar_id);
+void par_structs(Pint ar_id, const Pint_list* struct_ids);
+void par_struct_nets(Pint ar_id, const Pint_list* struct_ids);
+void par_all_structs(Pint ar_id);
+void pset_conf_res(Pconf_res archive_res, Pconf_res retrieve_res);
+void pret_struct_ids(Pint ar_id, Pint num_elems_appl_list, Pint start_ind, Pint_list* ids,
+                     Pint* num_elems_impl_list);
+void pret_structs(Pint ar_id, const Pint_list* struct_ids);
+void pret_struct_nets(Pint ar_id, const Pint_list* struct_ids);
+void pret_all_structs(Pint ar_id);
+void pret_paths_ances(Pint ar_id, Pint struct_id, Ppath_order order, Pint depth, Pstore store,
+                      Pelem_ref_list_list** paths);
+void pret_paths_descs(Pint ar_id, Pint struct_id, Ppath_order order, Pint depth, Pstore store,
+                      Pelem_ref_list_list** paths);
+void pdel_structs_ar(Pint ar_id, const Pint_list* struct_ids);
+void pdel_struct_nets_ar(Pint ar_id, const Pint_list* struct_ids);
+void pdel_all_structs_ar(Pint ar_id);
+
+/* ---- transformation utilities (error indicator 2 while PHIGS is closed) */
+void ptranslate3(const Pvec3* trans_vector, Pint* err_ind, Pmatrix3 tran_matrix);
+void ptranslate(const Pvec* trans_vector, Pint* err_ind, Pmatrix tran_matrix);
+void pscale3(const Pvec3* scale_vector, Pint* err_ind, Pmatrix3 tran_matrix);
+void pscale(const Pvec* scale_vector, Pint* err_ind, Pmatrix tran_matrix);
+void protate_x(Pfloat angle, Pint* err_ind, Pmatrix3 tran_matrix);
+void protate_y(Pfloat angle, Pint* err_ind, Pmatrix3 tran_matrix);
+void protate_z(Pfloat angle, Pint* err_ind, Pmatrix3 tran_matrix);
+void protate(Pfloat angle, Pint* err_ind, Pmatrix tran_matrix);
+void pcompose_matrix3(Pmatrix3 mat_a, Pmatrix3 mat_b, Pint* err_ind, Pmatrix3 mat_comp);
+void pcompose_matrix(Pmatrix mat_a, Pmatrix mat_b, Pint* err_ind, Pmatrix mat_comp);
+void ptran_point3(const Ppoint3* point, Pmatrix3 tran_matrix, Pint* err_ind, Ppoint3* result);
+void ptran_point(const Ppoint* point, Pmatrix tran_matrix, Pint* err_ind, Ppoint* result);
+void pbuild_tran_matrix3(const Ppoint3* point, const Pvec3* shift_vec, Pfloat x_angle, Pfloat y_angle,
+                         Pfloat z_angle, const Pvec3* scale_vec, Pint* err_ind, Pmatrix3 tran_matrix);
+void pbuild_tran_matrix(const Ppoint* point, const Pvec* shift_vec, Pfloat angle, const Pvec* scale_vec,
+                        Pint* err_ind, Pmatrix tran_matrix);
+void pcompose_tran_matrix3(Pmatrix3 matrix, const Ppoint3* point, const Pvec3* shift_vec, Pfloat x_angle,
+                           Pfloat y_angle, Pfloat z_angle, const Pvec3* scale_vec, Pint* err_ind,
+                           Pmatrix3 tran_matrix);
+void pcompose_tran_matrix(Pmatrix matrix, const Ppoint* point, const Pvec* shift_vec, Pfloat angle,
+                          const Pvec* scale_vec, Pint* err_ind, Pmatrix tran_matrix);
+void peval_view_ori_matrix3(const Ppoint3* vrp, const Pvec3* vpn, const Pvec3* vup, Pint* err_ind,
+                            Pmatrix3 view_ori_matrix);
+void peval_view_ori_matrix(const Ppoint* vrp, const Pvec* vup, Pint* err_ind, Pmatrix view_ori_matrix);
+void peval_view_map_matrix3(const Pview_map3* map, Pint* err_ind, Pmatrix3 view_map_matrix);
+void peval_view_map_matrix(const Pview_map* map, Pint* err_ind, Pmatrix view_map_matrix);
+
+/* ---- inquiries: they never call the error handler; *err_ind is 0 or the error number */
+void pinq_struct_st(Pstruct_st* struct_st);
+void pinq_ar_st(Par_st* ar_st);
+void pinq_open_struct(Pint* err_ind, Popen_struct_status* status, Pint* struct_id);
+void pinq_elem_ptr(Pint* err_ind, Pint* elem_ptr_value);
+void pinq_edit_mode(Pint* err_ind, Pedit_mode* edit_mode);
+void pinq_cur_elem_type_size(Pint* err_ind, Pelem_type* elem_type, size_t* elem_size);
+void pinq_cur_elem_content(Pstore store, Pint* err_ind, Pelem_data** elem_data);
+void pinq_elem_type_size(Pint struct_id, Pint elem_num, Pint* err_ind, Pelem_type* elem_type,
+                         size_t* elem_size);
+void pinq_elem_content(Pint struct_id, Pint elem_num, Pstore store, Pint* err_ind, Pelem_data** elem_data);
+void pinq_struct_status(Pint struct_id, Pint* err_ind, Pstruct_status* status);
+void pinq_struct_ids(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* struct_ids,
+                     Pint* num_elems_impl_list);
+void pinq_paths_ances(Pint struct_id, Ppath_order order, Pint depth, Pstore store, Pint* err_ind,
+                      Pelem_ref_list_list** paths);
+void pinq_paths_descs(Pint struct_id, Ppath_order order, Pint depth, Pstore store, Pint* err_ind,
+                      Pelem_ref_list_list** paths);
+void pelem_search(Pint struct_id, Pint start_elem, Psearch_dir dir, const Pelem_type_list* incl,
+                  const Pelem_type_list* excl, Pint* err_ind, Psearch_status* status, Pint* found_elem);
+void pinq_ar_files(Pstore store, Pint* err_ind, Par_file_list** ar_files);
+void pinq_conf_res(Pint* err_ind, Pconf_res* archive_res, Pconf_res* retrieve_res);
+void pinq_all_conf_structs(Pint ar_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                           Pint_list* ids, Pint* num_elems_impl_list);
+void pinq_conf_structs_net(Pint ar_id, Pint struct_id, Pstruct_net_source source, Pint num_elems_appl_list,
+                           Pint start_ind, Pint* err_ind, Pint_list* ids, Pint* num_elems_impl_list);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PHIGS_C_BINDING_H */

@@ -1,0 +1,201 @@
+#include "Binding.h"
+
+#include <map>
+
+namespace phigs::c {
+
+namespace {
+
+const std::map<int, const char*>& names() {
+    static const std::map<int, const char*> table = {
+        {Pfn_open_phigs, "OPEN PHIGS"},
+        {Pfn_close_phigs, "CLOSE PHIGS"},
+        {Pfn_message, "MESSAGE"},
+        {Pfn_polyline3, "POLYLINE 3"},
+        {Pfn_polyline, "POLYLINE"},
+        {Pfn_polymarker3, "POLYMARKER 3"},
+        {Pfn_polymarker, "POLYMARKER"},
+        {Pfn_text3, "TEXT 3"},
+        {Pfn_text, "TEXT"},
+        {Pfn_anno_text_rel3, "ANNOTATION TEXT RELATIVE 3"},
+        {Pfn_anno_text_rel, "ANNOTATION TEXT RELATIVE"},
+        {Pfn_fill_area3, "FILL AREA 3"},
+        {Pfn_fill_area, "FILL AREA"},
+        {Pfn_fill_area_set3, "FILL AREA SET 3"},
+        {Pfn_fill_area_set, "FILL AREA SET"},
+        {Pfn_cell_array3, "CELL ARRAY 3"},
+        {Pfn_cell_array, "CELL ARRAY"},
+        {Pfn_set_line_ind, "SET POLYLINE INDEX"},
+        {Pfn_set_marker_ind, "SET POLYMARKER INDEX"},
+        {Pfn_set_text_ind, "SET TEXT INDEX"},
+        {Pfn_set_int_ind, "SET INTERIOR INDEX"},
+        {Pfn_set_edge_ind, "SET EDGE INDEX"},
+        {Pfn_set_linetype, "SET LINETYPE"},
+        {Pfn_set_linewidth, "SET LINEWIDTH SCALE FACTOR"},
+        {Pfn_set_line_colr_ind, "SET POLYLINE COLOUR INDEX"},
+        {Pfn_set_marker_type, "SET MARKER TYPE"},
+        {Pfn_set_marker_size, "SET MARKER SIZE SCALE FACTOR"},
+        {Pfn_set_marker_colr_ind, "SET POLYMARKER COLOUR INDEX"},
+        {Pfn_set_text_font, "SET TEXT FONT"},
+        {Pfn_set_text_prec, "SET TEXT PRECISION"},
+        {Pfn_set_char_expan, "SET CHARACTER EXPANSION FACTOR"},
+        {Pfn_set_char_space, "SET CHARACTER SPACING"},
+        {Pfn_set_text_colr_ind, "SET TEXT COLOUR INDEX"},
+        {Pfn_set_char_ht, "SET CHARACTER HEIGHT"},
+        {Pfn_set_char_up_vec, "SET CHARACTER UP VECTOR"},
+        {Pfn_set_text_path, "SET TEXT PATH"},
+        {Pfn_set_text_align, "SET TEXT ALIGNMENT"},
+        {Pfn_set_anno_char_ht, "SET ANNOTATION TEXT CHARACTER HEIGHT"},
+        {Pfn_set_anno_char_up_vec, "SET ANNOTATION TEXT CHARACTER UP VECTOR"},
+        {Pfn_set_anno_path, "SET ANNOTATION TEXT PATH"},
+        {Pfn_set_anno_align, "SET ANNOTATION TEXT ALIGNMENT"},
+        {Pfn_set_anno_style, "SET ANNOTATION STYLE"},
+        {Pfn_set_int_style, "SET INTERIOR STYLE"},
+        {Pfn_set_int_style_ind, "SET INTERIOR STYLE INDEX"},
+        {Pfn_set_int_colr_ind, "SET INTERIOR COLOUR INDEX"},
+        {Pfn_set_edge_flag, "SET EDGE FLAG"},
+        {Pfn_set_edgetype, "SET EDGETYPE"},
+        {Pfn_set_edgewidth, "SET EDGEWIDTH SCALE FACTOR"},
+        {Pfn_set_edge_colr_ind, "SET EDGE COLOUR INDEX"},
+        {Pfn_add_names_set, "ADD NAMES TO SET"},
+        {Pfn_remove_names_set, "REMOVE NAMES FROM SET"},
+        {Pfn_set_indiv_asf, "SET INDIVIDUAL ASF"},
+        {Pfn_set_hlhsr_id, "SET HLHSR IDENTIFIER"},
+        {Pfn_set_local_tran3, "SET LOCAL TRANSFORMATION 3"},
+        {Pfn_set_local_tran, "SET LOCAL TRANSFORMATION"},
+        {Pfn_set_global_tran3, "SET GLOBAL TRANSFORMATION 3"},
+        {Pfn_set_global_tran, "SET GLOBAL TRANSFORMATION"},
+        {Pfn_set_model_clip_vol3, "SET MODELLING CLIPPING VOLUME 3"},
+        {Pfn_set_model_clip_vol, "SET MODELLING CLIPPING VOLUME"},
+        {Pfn_set_model_clip_ind, "SET MODELLING CLIPPING INDICATOR"},
+        {Pfn_restore_model_clip_vol, "RESTORE MODELLING CLIPPING VOLUME"},
+        {Pfn_set_view_ind, "SET VIEW INDEX"},
+        {Pfn_open_struct, "OPEN STRUCTURE"},
+        {Pfn_close_struct, "CLOSE STRUCTURE"},
+        {Pfn_exec_struct, "EXECUTE STRUCTURE"},
+        {Pfn_label, "LABEL"},
+        {Pfn_appl_data, "APPLICATION DATA"},
+        {Pfn_set_edit_mode, "SET EDIT MODE"},
+        {Pfn_copy_all_elems_struct, "COPY ALL ELEMENTS FROM STRUCTURE"},
+        {Pfn_set_elem_ptr, "SET ELEMENT POINTER"},
+        {Pfn_offset_elem_ptr, "OFFSET ELEMENT POINTER"},
+        {Pfn_set_elem_ptr_label, "SET ELEMENT POINTER AT LABEL"},
+        {Pfn_del_elem, "DELETE ELEMENT"},
+        {Pfn_del_elem_range, "DELETE ELEMENT RANGE"},
+        {Pfn_del_elems_labels, "DELETE ELEMENTS BETWEEN LABELS"},
+        {Pfn_empty_struct, "EMPTY STRUCTURE"},
+        {Pfn_del_struct, "DELETE STRUCTURE"},
+        {Pfn_del_struct_net, "DELETE STRUCTURE NETWORK"},
+        {Pfn_del_all_structs, "DELETE ALL STRUCTURES"},
+        {Pfn_change_struct_id, "CHANGE STRUCTURE IDENTIFIER"},
+        {Pfn_change_struct_refs, "CHANGE STRUCTURE REFERENCES"},
+        {Pfn_change_struct_id_refs, "CHANGE STRUCTURE IDENTIFIER AND REFERENCES"},
+        {Pfn_open_ar_file, "OPEN ARCHIVE FILE"},
+        {Pfn_close_ar_file, "CLOSE ARCHIVE FILE"},
+        {Pfn_ar_structs, "ARCHIVE STRUCTURES"},
+        {Pfn_ar_struct_nets, "ARCHIVE STRUCTURE NETWORKS"},
+        {Pfn_ar_all_structs, "ARCHIVE ALL STRUCTURES"},
+        {Pfn_set_conf_res, "SET CONFLICT RESOLUTION"},
+        {Pfn_ret_struct_ids, "RETRIEVE STRUCTURE IDENTIFIERS"},
+        {Pfn_ret_structs, "RETRIEVE STRUCTURES"},
+        {Pfn_ret_struct_nets, "RETRIEVE STRUCTURE NETWORKS"},
+        {Pfn_ret_all_structs, "RETRIEVE ALL STRUCTURES"},
+        {Pfn_ret_paths_ances, "RETRIEVE PATHS TO ANCESTORS"},
+        {Pfn_ret_paths_descs, "RETRIEVE PATHS TO DESCENDANTS"},
+        {Pfn_del_structs_ar, "DELETE STRUCTURES FROM ARCHIVE"},
+        {Pfn_del_struct_nets_ar, "DELETE STRUCTURE NETWORKS FROM ARCHIVE"},
+        {Pfn_del_all_structs_ar, "DELETE ALL STRUCTURES FROM ARCHIVE"},
+        {Pfn_set_pick_id, "SET PICK IDENTIFIER"},
+        {Pfn_set_err_hand_mode, "SET ERROR HANDLING MODE"},
+        {Pfn_line_colr, "SET POLYLINE COLOUR"},
+        {Pfn_marker_colr, "SET POLYMARKER COLOUR"},
+        {Pfn_text_colr, "SET TEXT COLOUR"},
+        {Pfn_int_colr, "SET INTERIOR COLOUR"},
+        {Pfn_edge_colr, "SET EDGE COLOUR"},
+    };
+    return table;
+}
+
+}  // namespace
+
+std::string functionName(int function) {
+    auto it = names().find(function);
+    return it != names().end() ? it->second : "function " + std::to_string(function);
+}
+
+Binding& Binding::instance() {
+    static Binding binding;
+    return binding;
+}
+
+void Binding::open(const char* errorFile) {
+    if (phigs_) {
+        report(errors::NotPhigsClosed, Pfn_open_phigs);
+        return;
+    }
+    // The error file is (re)written from the start at OPEN PHIGS; without one, stderr.
+    errorFile_ = errorFile ? errorFile : "";
+    stream_ = errorFile ? std::fopen(errorFile, "w") : nullptr;
+    mode_ = PERR_ON;  // each OPEN PHIGS starts with the error handling mode ON; the handler stays
+    phigs_ = std::make_unique<Phigs>();
+    phigs_->open();  // an error file that cannot be written leaves the lines on stderr
+}
+
+void Binding::close() {
+    call(Pfn_close_phigs, [](Phigs& p) { p.close(); });
+    if (phigs_ && phigs_->isOpen()) return;
+    phigs_.reset();
+    if (stream_) std::fclose(stream_);
+    stream_ = nullptr;
+}
+
+void Binding::emergencyClose() {
+    // EMERGENCY CLOSE PHIGS: whatever is open is closed; archives are always complete on disk.
+    phigs_.reset();
+    if (stream_) std::fclose(stream_);
+    stream_ = nullptr;
+}
+
+void Binding::report(int number, int function) {
+    if (mode_ == PERR_ON && handler_) handler_(number, function, errorFileName());
+}
+
+void Binding::reportSince(int function, std::size_t before, int thrown) {
+    const auto& entries = phigs_ ? phigs_->errorLog().entries() : std::vector<ErrorLog::Entry>{};
+    bool thrownLogged = false;
+    for (std::size_t i = before; i < entries.size(); ++i) {
+        report(entries[i].number, function);
+        thrownLogged =
+            thrownLogged || (thrown != 0 && entries[i].number == thrown && i + 1 == entries.size());
+    }
+    if (thrown != 0 && !thrownLogged) report(thrown, function);
+}
+
+void Binding::log(int number, int function, const char* file) {
+    const std::string message = errorMessage(number);
+    const bool warning = message.starts_with("Warning");
+    const std::string line = std::string(warning ? "WARNING " : "ERROR ") + std::to_string(number) + " in " +
+                             functionName(function) + " (function " + std::to_string(function) +
+                             "): " + message + "\n";
+    std::FILE* out = stream_;
+    std::FILE* own = nullptr;
+    // Another file than the open error file (or any file while PHIGS is closed) is appended to.
+    if (file && (!stream_ || errorFile_ != file)) out = own = std::fopen(file, "a");
+    if (!out) out = stderr;
+    std::fputs(line.c_str(), out);
+    std::fflush(out);
+    if (own) std::fclose(own);
+}
+
+void Binding::message(int workstation, const char* text) {
+    std::FILE* out = stream_ ? stream_ : stderr;
+    std::fprintf(out, "MESSAGE %d: %s\n", workstation, text);
+    std::fflush(out);
+}
+
+void Binding::setHandler(Handler handler, Handler* old) {
+    if (old) *old = handler_;
+    handler_ = handler ? handler : perr_hand;
+}
+
+}  // namespace phigs::c

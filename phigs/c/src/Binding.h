@@ -1,0 +1,86 @@
+#pragma once
+
+// The state of the C binding behind phigs.h: the PHIGS system while it is open, the error
+// file, the error handler and its mode. Internal to libphigs.
+
+#include "phigs.h"
+#include "phigs/core/Error.h"
+#include "phigs/Phigs.h"
+
+#include <cstddef>
+#include <cstdio>
+#include <memory>
+#include <new>
+#include <string>
+
+namespace phigs::c {
+
+/// Implementation error numbers of the binding (negative: implementation-defined, ISO 9592).
+inline constexpr int kBadArgument = -204;  ///< a NULL pointer or a negative count where data is needed
+
+/// The ISO name of a function identifier ("OPEN STRUCTURE"), or "function <n>".
+std::string functionName(int function);
+
+/// The one PHIGS system of the C binding and its error handling.
+class Binding {
+public:
+    using Handler = void (*)(Pint, Pint, const char*);
+
+    static Binding& instance();
+
+    /// The open system, or nullptr while PHIGS is closed.
+    Phigs* system() { return phigs_.get(); }
+    void open(const char* errorFile);
+    /// CLOSE PHIGS: the core checks that everything is closed (error 4) before anything goes.
+    void close();
+    void emergencyClose();
+
+    /// Hands error `number` of `function` to the error handler (when the mode is ON).
+    void report(int number, int function);
+    /// MESSAGE's line on the error file (stderr without one).
+    void message(int workstation, const char* text);
+    /// ERROR LOGGING: one line on the error file (or on `file` when it names another file).
+    void log(int number, int function, const char* file);
+    void setHandler(Handler handler, Handler* old);
+    void setMode(Perr_mode mode) { mode_ = mode; }
+    Perr_mode mode() const { return mode_; }
+    const char* errorFileName() const { return errorFile_.empty() ? nullptr : errorFile_.c_str(); }
+
+    /// Runs `body` on the open system as function `function`: error 2 while PHIGS is closed; every
+    /// error and warning the core raised or logged goes to the handler, in order.
+    template <class Body>
+    void call(int function, Body&& body) {
+        Phigs* p = system();
+        if (!p) {
+            report(errors::NotPhigsOpen, function);
+            return;
+        }
+        const std::size_t before = p->errorLog().size();
+        int thrown = 0;
+        try {
+            body(*p);
+        } catch (const Error& e) {
+            thrown = e.number();
+        } catch (const std::bad_alloc&) {
+            thrown = kOutOfMemory;
+        }
+        reportSince(function, before, thrown);
+    }
+
+private:
+    static constexpr int kOutOfMemory = 900;  // ISO 9592: storage overflow has occurred in PHIGS
+    void reportSince(int function, std::size_t before, int thrown);
+
+    std::unique_ptr<Phigs> phigs_;
+    std::string errorFile_;
+    std::FILE* stream_ = nullptr;
+    Handler handler_ = perr_hand;
+    Perr_mode mode_ = PERR_ON;
+};
+
+/// Throws the binding's bad-argument error when `pointer` is NULL (checked after the state).
+inline void require(const void* pointer, const char* function) {
+    if (!pointer) throw Error(kBadArgument, function, "a required argument is NULL");
+}
+
+}  // namespace phigs::c

@@ -1,0 +1,175 @@
+#include "ElementContent.h"
+
+#include "Conversions.h"
+
+#include <type_traits>
+
+namespace phigs::c {
+
+namespace {
+
+Ppoint3 p3(const glm::dvec3& v) {
+    return {static_cast<Pfloat>(v.x), static_cast<Pfloat>(v.y), static_cast<Pfloat>(v.z)};
+}
+Ppoint p2(const glm::dvec3& v) {
+    return {static_cast<Pfloat>(v.x), static_cast<Pfloat>(v.y)};
+}
+Pvec3 v3(const glm::dvec3& v) {
+    return {static_cast<Pfloat>(v.x), static_cast<Pfloat>(v.y), static_cast<Pfloat>(v.z)};
+}
+Pvec v2(const glm::dvec3& v) {
+    return {static_cast<Pfloat>(v.x), static_cast<Pfloat>(v.y)};
+}
+
+// Lists of lists: every point goes into one vector first, so growing it cannot move what a
+// list already points at.
+void pointLists(const std::vector<std::vector<glm::dvec3>>& contours, bool twoD, Phigs_store& s) {
+    for (const auto& c : contours)
+        for (const auto& v : c) twoD ? s.points.push_back(p2(v)) : s.points3.push_back(p3(v));
+    std::size_t at = 0;
+    for (const auto& c : contours) {
+        const Pint n = static_cast<Pint>(c.size());
+        if (twoD)
+            s.lists.push_back({n, s.points.data() + at});
+        else
+            s.lists3.push_back({n, s.points3.data() + at});
+        at += c.size();
+    }
+    if (twoD)
+        s.data.point_list_list = {static_cast<Pint>(s.lists.size()), s.lists.data()};
+    else
+        s.data.point_list_list3 = {static_cast<Pint>(s.lists3.size()), s.lists3.data()};
+}
+
+void pointList(const std::vector<glm::dvec3>& points, bool twoD, Phigs_store& s) {
+    for (const auto& v : points) twoD ? s.points.push_back(p2(v)) : s.points3.push_back(p3(v));
+    if (twoD)
+        s.data.point_list = {static_cast<Pint>(s.points.size()), s.points.data()};
+    else
+        s.data.point_list3 = {static_cast<Pint>(s.points3.size()), s.points3.data()};
+}
+
+void textContent(const TextElement& e, Phigs_store& s) {
+    s.text = e.text;
+    if (e.twoD) {
+        s.data.text = {p2(e.position), s.text.data()};
+    } else {
+        s.data.text3.pos = p3(e.position);
+        s.data.text3.dir[0] = v3(e.direction1);
+        s.data.text3.dir[1] = v3(e.direction2);
+        s.data.text3.char_string = s.text.data();
+    }
+}
+
+void annotationContent(const AnnotationTextElement& e, Phigs_store& s) {
+    s.text = e.text;
+    if (e.twoD)
+        s.data.anno_text_rel = {p2(e.reference), v2(e.offset), s.text.data()};
+    else
+        s.data.anno_text_rel3 = {p3(e.reference), v3(e.offset), s.text.data()};
+}
+
+void cellArrayContent(const CellArrayElement& e, Phigs_store& s) {
+    s.ints.assign(e.colourIndices.begin(), e.colourIndices.end());
+    const Ppat_rep rep{{e.columns, e.rows}, s.ints.data()};
+    if (e.twoD)
+        s.data.cell_array = {{p2(e.p), {static_cast<Pfloat>(e.q.x), static_cast<Pfloat>(e.r.y)}}, rep};
+    else
+        s.data.cell_array3 = {{p3(e.p), p3(e.q), p3(e.r)}, rep};
+}
+
+void transformContent(const TransformElement& e, Phigs_store& s) {
+    const auto compose = static_cast<Pcompose_type>(e.composition);
+    switch (e.type) {
+        case ElementType::LocalModellingTransformation3:
+            s.data.local_tran3.compose_type = compose;
+            fromGlm(e.matrix, s.data.local_tran3.matrix);
+            break;
+        case ElementType::LocalModellingTransformation:
+            s.data.local_tran.compose_type = compose;
+            fromGlm(lower(e.matrix), s.data.local_tran.matrix);
+            break;
+        case ElementType::GlobalModellingTransformation3:
+            fromGlm(e.matrix, s.data.global_tran3);
+            break;
+        default:
+            fromGlm(lower(e.matrix), s.data.global_tran);
+            break;
+    }
+}
+
+void modelClipContent(const ModelClipElement& e, Phigs_store& s) {
+    for (const auto& [point, normal] : e.halfSpaces)
+        e.twoD ? s.halfSpaces.push_back({p2(point), v2(normal)})
+               : s.halfSpaces3.push_back({p3(point), v3(normal)});
+    if (e.twoD)
+        s.data.model_clip = {e.op, {static_cast<Pint>(s.halfSpaces.size()), s.halfSpaces.data()}};
+    else
+        s.data.model_clip3 = {e.op, {static_cast<Pint>(s.halfSpaces3.size()), s.halfSpaces3.data()}};
+}
+
+void colourContent(const ColourAttribute& e, Phigs_store& s) {
+    if (!e.colour.direct) {
+        s.data.int_data = e.colour.index;
+        return;
+    }
+    s.data.colr.type = PMODEL_RGB;
+    s.data.colr.val.direct = {static_cast<Pfloat>(e.colour.rgb.x), static_cast<Pfloat>(e.colour.rgb.y),
+                              static_cast<Pfloat>(e.colour.rgb.z)};
+}
+
+}  // namespace
+
+int fillContent(const Element& element, Phigs_store& s) {
+    s.clear();
+    return std::visit(
+        [&](const auto& e) -> int {
+            using E = std::decay_t<decltype(e)>;
+            if constexpr (std::is_same_v<E, PolylineElement> || std::is_same_v<E, PolymarkerElement> ||
+                          std::is_same_v<E, FillAreaElement>)
+                pointList(e.points, e.twoD, s);
+            else if constexpr (std::is_same_v<E, FillAreaSetElement>)
+                pointLists(e.contours, e.twoD, s);
+            else if constexpr (std::is_same_v<E, TextElement>)
+                textContent(e, s);
+            else if constexpr (std::is_same_v<E, AnnotationTextElement>)
+                annotationContent(e, s);
+            else if constexpr (std::is_same_v<E, CellArrayElement>)
+                cellArrayContent(e, s);
+            else if constexpr (std::is_same_v<E, IndexAttribute>)
+                s.data.int_data = e.value;
+            else if constexpr (std::is_same_v<E, RealAttribute>)
+                s.data.float_data = static_cast<Pfloat>(e.value);
+            else if constexpr (std::is_same_v<E, ColourAttribute>)
+                colourContent(e, s);
+            else if constexpr (std::is_same_v<E, UpVectorAttribute>)
+                s.data.char_up_vec = {static_cast<Pfloat>(e.up.x), static_cast<Pfloat>(e.up.y)};
+            else if constexpr (std::is_same_v<E, AlignmentAttribute>)
+                s.data.text_align = {static_cast<Phor_text_align>(e.horizontal),
+                                     static_cast<Pvert_text_align>(e.vertical)};
+            else if constexpr (std::is_same_v<E, AsfAttribute>)
+                s.data.asf = {static_cast<Paspect>(e.aspect), e.individual ? PASF_INDIV : PASF_BUNDLED};
+            else if constexpr (std::is_same_v<E, NameSetElement>) {
+                s.ints.assign(e.names.begin(), e.names.end());
+                s.data.names = {static_cast<Pint>(s.ints.size()), s.ints.data()};
+            } else if constexpr (std::is_same_v<E, TransformElement>)
+                transformContent(e, s);
+            else if constexpr (std::is_same_v<E, ModelClipElement>)
+                modelClipContent(e, s);
+            else if constexpr (std::is_same_v<E, RestoreModelClipElement>)
+                return 0;  // no data
+            else if constexpr (std::is_same_v<E, ExecuteStructureElement>)
+                s.data.int_data = e.structureId;
+            else if constexpr (std::is_same_v<E, LabelElement>)
+                s.data.int_data = e.label;
+            else if constexpr (std::is_same_v<E, ApplicationDataElement>) {
+                s.text = e.data;
+                s.data.appl_data = {static_cast<Pint>(s.text.size()), s.text.data()};
+            } else
+                return kNoContentForm;
+            return 0;
+        },
+        element);
+}
+
+}  // namespace phigs::c

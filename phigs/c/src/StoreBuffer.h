@@ -1,0 +1,37 @@
+#pragma once
+
+// Pstore (ISO 9593-4): the memory of one variable-size inquiry answer. Each inquiry that is
+// given the store replaces what it held, so answers stay valid until the store's next use.
+
+#include "phigs.h"
+
+#include <string>
+#include <vector>
+
+/// What an inquiry answer points into (the C binding's opaque Pstore).
+struct Phigs_store {
+    Pelem_data data{};
+    std::vector<Ppoint3> points3;
+    std::vector<Ppoint> points;
+    std::vector<Ppoint_list3> lists3;
+    std::vector<Ppoint_list> lists;
+    std::vector<Pint> ints;
+    std::vector<Phalf_space3> halfSpaces3;
+    std::vector<Phalf_space> halfSpaces;
+    std::string text;
+    std::vector<Pelem_ref> refs;
+    std::vector<Pelem_ref_list> refLists;
+    Pelem_ref_list_list paths{};
+    std::vector<std::string> names;
+    std::vector<Par_file> files;
+    Par_file_list fileList{};
+
+    /// Forgets the previous answer (its memory is reused).
+    void clear() {
+        data = {};
+        points3.clear(), points.clear(), lists3.clear(), lists.clear(), ints.clear();
+        halfSpaces3.clear(), halfSpaces.clear(), text.clear();
+        refs.clear(), refLists.clear(), paths = {};
+        names.clear(), files.clear(), fileList = {};
+    }
+};

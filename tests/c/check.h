@@ -1,0 +1,148 @@
+/* Shared checks of the C binding's tests: plain C11, nothing but <phigs.h>. */
+#ifndef PHIGS_C_TEST_CHECK_H
+#define PHIGS_C_TEST_CHECK_H
+
+#include <phigs.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures = 0;
+
+#define CHECK(cond)                                                                  \
+    do {                                                                             \
+        if (!(cond)) {                                                               \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
+            ++failures;                                                              \
+        }                                                                            \
+    } while (0)
+
+/* Every call of the error handler, in order; each is passed on to perr_hand (the error file). */
+#define MAX_ERRORS 32
+static Pint error_numbers[MAX_ERRORS];
+static Pint error_functions[MAX_ERRORS];
+static int error_count = 0;
+
+static inline void recording_handler(Pint err, Pint fn, const char* file) {
+    if (error_count < MAX_ERRORS) {
+        error_numbers[error_count] = err;
+        error_functions[error_count] = fn;
+    }
+    ++error_count;
+    perr_hand(err, fn, file);
+}
+
+/* The call reports exactly error `num` of function `fn` through the handler. */
+#define EXPECT_ERROR(call, num, fn)                                                       \
+    do {                                                                                  \
+        error_count = 0;                                                                  \
+        call;                                                                             \
+        CHECK(error_count == 1);                                                          \
+        if (error_count == 1) {                                                           \
+            if (error_numbers[0] != (num) || error_functions[0] != (fn))                  \
+                fprintf(stderr, "  got error %d of function %d\n", (int)error_numbers[0], \
+                        (int)error_functions[0]);                                         \
+            CHECK(error_numbers[0] == (num));                                             \
+            CHECK(error_functions[0] == (fn));                                            \
+        }                                                                                 \
+    } while (0)
+
+#define EXPECT_NO_ERROR(call)                                                                    \
+    do {                                                                                         \
+        error_count = 0;                                                                         \
+        call;                                                                                    \
+        if (error_count != 0) fprintf(stderr, "  unexpected error %d\n", (int)error_numbers[0]); \
+        CHECK(error_count == 0);                                                                 \
+    } while (0)
+
+/* What the CSS holds, to show that a refused call changed nothing. */
+#define SNAP_MAX 32
+typedef struct {
+    Pint ids[SNAP_MAX];
+    Pint count;
+    Pelem_type types[SNAP_MAX][SNAP_MAX];
+    Pint lengths[SNAP_MAX];
+    Popen_struct_status open_status;
+    Pint open_id;
+    Pint pointer;
+} Snapshot;
+
+static inline void snapshot(Snapshot* s) {
+    Pint err = 0, total = 0;
+    Pint_list ids;
+    memset(s, 0, sizeof *s);
+    ids.ints = s->ids;
+    pinq_struct_ids(SNAP_MAX, 0, &err, &ids, &total);
+    s->count = err == 0 ? ids.num_ints : -1;
+    for (Pint i = 0; i < s->count; ++i) {
+        for (Pint n = 1; n < SNAP_MAX; ++n) {
+            size_t size = 0;
+            pinq_elem_type_size(s->ids[i], n, &err, &s->types[i][n], &size);
+            if (err != 0) break;
+            s->lengths[i] = n;
+        }
+    }
+    pinq_open_struct(&err, &s->open_status, &s->open_id);
+    s->pointer = -1;
+    if (s->open_status == PSTRUCT_OPEN) pinq_elem_ptr(&err, &s->pointer);
+}
+
+static inline int same_snapshot(const Snapshot* a, const Snapshot* b) {
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+/* The call reports error `num` of `fn` and leaves the CSS as it was. */
+#define EXPECT_REFUSED(call, num, fn)            \
+    do {                                         \
+        Snapshot before_, after_;                \
+        snapshot(&before_);                      \
+        EXPECT_ERROR(call, num, fn);             \
+        snapshot(&after_);                       \
+        CHECK(same_snapshot(&before_, &after_)); \
+    } while (0)
+
+/* Whether `path` has the line `line` (without its newline). */
+static inline int file_has_line(const char* path, const char* line) {
+    char buffer[512];
+    int found = 0;
+    FILE* f = fopen(path, "r");
+    if (!f) return 0;
+    while (!found && fgets(buffer, sizeof buffer, f)) {
+        buffer[strcspn(buffer, "\n")] = '\0';
+        found = strcmp(buffer, line) == 0;
+    }
+    fclose(f);
+    return found;
+}
+
+static inline int file_line_count(const char* path) {
+    int lines = 0, c;
+    FILE* f = fopen(path, "r");
+    if (!f) return -1;
+    while ((c = fgetc(f)) != EOF) lines += c == '\n';
+    fclose(f);
+    return lines;
+}
+
+/* Opens PHIGS with `file` as the error file and the recording handler. */
+static inline void open_with_handler(const char* file) {
+    void (*old)(Pint, Pint, const char*) = NULL;
+    pset_err_hand(recording_handler, &old);
+    popen_phigs(file, PDEF_MEM_SIZE);
+}
+
+static inline int finish(const char* name) {
+    if (failures)
+        fprintf(stderr, "%s: %d checks failed\n", name, failures);
+    else
+        printf("%s: all checks passed\n", name);
+    return failures ? 1 : 0;
+}
+
+static inline int near(double a, double b) {
+    return fabs(a - b) <= 1e-5 * (1.0 + fabs(b));
+}
+
+#endif

@@ -1,0 +1,119 @@
+/* Control and error handling: OPEN / CLOSE / EMERGENCY CLOSE PHIGS, the system state, the
+ * error handler, its mode, ERROR LOGGING's lines in the error file, and that inquiries never
+ * call the handler. argv[1]: a directory for the error file. */
+#include "check.h"
+
+static void handler_and_mode(const char* file) {
+    void (*old)(Pint, Pint, const char*) = NULL;
+    Pint err = -1;
+    Perr_mode mode = PERR_OFF;
+
+    pset_err_hand(recording_handler, &old);
+    CHECK(old == recording_handler); /* open_with_handler installed it */
+    pinq_err_hand_mode(&err, &mode);
+    CHECK(err == 0 && mode == PERR_ON);
+
+    EXPECT_ERROR(popen_phigs(file, PDEF_MEM_SIZE), 1, Pfn_open_phigs);
+    EXPECT_REFUSED(pdel_elem(), 5, Pfn_del_elem);
+    pset_err_hand_mode(PERR_OFF);
+    EXPECT_NO_ERROR(pdel_elem()); /* still refused, but the handler is not called */
+    pinq_err_hand_mode(&err, &mode);
+    CHECK(err == 0 && mode == PERR_OFF);
+    pset_err_hand_mode(PERR_ON);
+    EXPECT_ERROR(pset_err_hand_mode((Perr_mode)7), PE_ENUM_TYPE_INVAL, Pfn_set_err_hand_mode);
+    pinq_err_hand_mode(&err, &mode);
+    CHECK(mode == PERR_ON);
+
+    /* Inquiries answer an error indicator only. */
+    error_count = 0;
+    pinq_elem_ptr(&err, &(Pint){0});
+    CHECK(err == 5);
+    pinq_elem_type_size(99, 1, &err, &(Pelem_type){PELEM_ALL}, &(size_t){0});
+    CHECK(err == 201);
+    CHECK(error_count == 0);
+}
+
+static void message_and_facilities(void) {
+    Pint err = -1, ws = 0, ar = 0, names = 0, normal = 0, inverse = 0, total = -1, sets[4];
+    Pint_list char_sets = {-1, sets};
+    EXPECT_REFUSED(pmessage(1, "hello"), 3, Pfn_message); /* no workstation open */
+    pinq_phigs_facs(4, 0, &err, &ws, &ar, &names, &char_sets, &total, &normal, &inverse);
+    CHECK(err == 0 && ws == 2147483647 && ar == 2147483647 && names == 2147483647);
+    CHECK(normal == 2147483647 && inverse == 2147483647 && total == 0 && char_sets.num_ints == 0);
+    pinq_phigs_facs(-1, 0, &err, &ws, &ar, &names, &char_sets, &total, &normal, &inverse);
+    CHECK(err == PE_LIST_LENGTH_LT_ZERO);
+}
+
+static void close_needs_everything_closed(void) {
+    Psys_st st = PSYS_ST_PHCL;
+    popen_struct(1);
+    EXPECT_ERROR(pclose_phigs(), 4, Pfn_close_phigs);
+    pinq_sys_st(&st);
+    CHECK(st == PSYS_ST_PHOP);
+    pclose_struct();
+}
+
+int main(int argc, char** argv) {
+    char file[512];
+    Psys_st st = PSYS_ST_PHOP;
+    Pint err = -1, total = -1;
+    Pstruct_status status = PSTRUCT_STATUS_NON_EXIST;
+    snprintf(file, sizeof file, "%s/control_errors.txt", argc > 1 ? argv[1] : ".");
+
+    pinq_sys_st(&st);
+    CHECK(st == PSYS_ST_PHCL);
+    pset_err_hand(recording_handler, NULL);
+    EXPECT_ERROR(popen_struct(1), 2, Pfn_open_struct); /* PHIGS closed: on stderr */
+    pinq_struct_status(1, &err, &status);
+    CHECK(err == 2);
+
+    open_with_handler(file);
+    pinq_sys_st(&st);
+    CHECK(st == PSYS_ST_PHOP);
+    handler_and_mode(file);
+    message_and_facilities();
+    close_needs_everything_closed();
+    EXPECT_NO_ERROR(pclose_phigs());
+    pinq_sys_st(&st);
+    CHECK(st == PSYS_ST_PHCL);
+
+    /* ERROR LOGGING's lines, in the order they were raised; the PERR_OFF error is not there. */
+    CHECK(file_line_count(file) == 5);
+    CHECK(file_has_line(file,
+                        "ERROR 1 in OPEN PHIGS (function 0): Ignoring function, function requires state "
+                        "(PHCL, WSCL, STCL, ARCL)"));
+    CHECK(file_has_line(file,
+                        "ERROR 5 in DELETE ELEMENT (function 101): Ignoring function, function requires "
+                        "state (PHOP, *, STOP, *)"));
+    CHECK(file_has_line(
+        file, "ERROR 2202 in SET ERROR HANDLING MODE (function 179): Enumeration type out of range"));
+    CHECK(file_has_line(file,
+                        "ERROR 4 in CLOSE PHIGS (function 1): Ignoring function, function requires state "
+                        "(PHOP, WSCL, STCL, ARCL)"));
+    perr_log(201, Pfn_empty_struct, file); /* ERROR LOGGING called directly, PHIGS closed */
+    CHECK(file_has_line(file,
+                        "ERROR 201 in EMPTY STRUCTURE (function 104): Ignoring function, the specified "
+                        "structure does not exist"));
+
+    /* EMERGENCY CLOSE PHIGS closes whatever is open; the next OPEN PHIGS starts afresh. */
+    open_with_handler(file);
+    CHECK(file_line_count(file) == 0); /* the error file starts again */
+    popen_struct(3);
+    pemergency_close_phigs();
+    pinq_sys_st(&st);
+    CHECK(st == PSYS_ST_PHCL);
+    pemergency_close_phigs(); /* nothing open: nothing happens */
+    open_with_handler(file);
+    pset_err_hand_mode(PERR_OFF);
+    pemergency_close_phigs();
+    open_with_handler(file);
+    {
+        Perr_mode mode = PERR_OFF;
+        pinq_err_hand_mode(&err, &mode);
+        CHECK(err == 0 && mode == PERR_ON); /* OPEN PHIGS starts with the mode ON */
+    }
+    pinq_struct_ids(0, 0, &err, NULL, &total);
+    CHECK(err == 0 && total == 0);
+    EXPECT_NO_ERROR(pclose_phigs());
+    return finish("test_control");
+}
