@@ -4,8 +4,8 @@
 // file, the error handler and its mode. Internal to libphigs.
 
 #include "phigs.h"
-#include "phigs/core/Error.h"
 #include "phigs/Phigs.h"
+#include "phigs/core/Error.h"
 
 #include <cstddef>
 #include <cstdio>
