@@ -1,7 +1,8 @@
 // libFuzzer target: a whole ACSYNT design session replayed from a script, GPU-free. The input is
 // the script; acsynt::Session runs it as `acsynt --script` does (menus, picks on the model
 // workstation's draw list, reading models and curves, curve mapping, data reduction, saving and
-// archiving), except that snapshots draw nothing: only the program's pictures need Vulkan.
+// archiving), except that snapshots draw nothing (only the program's pictures need Vulkan) and
+// vector hardcopies are refused (too slow under the sanitizers).
 // Files are read from the shipped data, tests/fuzz/data (a small model, quick to loft) and a
 // scratch directory emptied for every input, and written to that directory; a script that names
 // a file with a '/' is rejected, so nothing elsewhere is read or written. Bad input must end as
@@ -42,6 +43,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     acsynt::SessionSettings settings;
     settings.outputDirectory = fuzz::scratch();
     settings.searchPath = {ACSYNT_DATA_DIR, FUZZ_DATA_DIR, settings.outputDirectory};
+    // A shaded PDF of the demo's transport costs 17 s here, past the time an input may take; the
+    // vector writer has its own tests (tests/hardcopy), the fuzzer explores the session's input.
+    settings.vectorHardcopies = false;
     acsynt::Session session(settings, *script);
     session.setSnapshot([](const std::filesystem::path&) {});
     session.run();

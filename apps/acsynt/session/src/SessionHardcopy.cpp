@@ -69,6 +69,10 @@ void frame(Workstation& ws, glm::dvec3 lo, glm::dvec3 hi) {
 }  // namespace
 
 void Session::writeHardcopy(const std::string& name) {
+    if (!settings_.vectorHardcopies) {
+        fail("HARDCOPIES ARE OFF IN THIS SESSION");
+        return;
+    }
     const std::filesystem::path path = outputPath(name);
     const hardcopy::VectorFormat format = hardcopy::vectorFormatForFile(path);  // invalid_argument
     OpenWorkstation paper(phigs_, kHardcopyWorkstation, workstationTypeOf(format));

@@ -40,6 +40,9 @@ struct SessionSettings {
     /// End the session after the first input line that fails (a script run's default in the
     /// program; its --keep-going carries on).
     bool stopAtFirstError = false;
+    /// FILE > HARDCOPY and `hardcopy` write vector files; false refuses them (the session fuzz
+    /// target: a shaded PDF of the transport takes about 17 s under the sanitizers).
+    bool vectorHardcopies = true;
 };
 
 /// The marker of DEFINE POINT: the reference point on the picked patch.
