@@ -169,6 +169,8 @@ TEST_CASE("vector hardcopy: formats by name and type, errors name the file", "[h
     CHECK(vectorFormatOf(WorkstationType::SvgFile) == VectorFormat::Svg);
     CHECK(vectorFormatOf(WorkstationType::EpsFile) == VectorFormat::Eps);
     CHECK_FALSE(vectorFormatOf(WorkstationType::Hardcopy));
+    for (VectorFormat f : {VectorFormat::Pdf, VectorFormat::Svg, VectorFormat::Eps})
+        CHECK(vectorFormatOf(workstationTypeOf(f)) == f);
     const WorkstationDescription pdf = describeWorkstationType(WorkstationType::PdfFile);
     CHECK(pdf.name == "PDF hardcopy");
     CHECK(pdf.category == WorkstationCategory::Output);

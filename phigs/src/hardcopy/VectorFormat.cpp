@@ -34,6 +34,18 @@ std::optional<VectorFormat> vectorFormatOf(WorkstationType type) {
     return std::nullopt;
 }
 
+WorkstationType workstationTypeOf(VectorFormat format) {
+    switch (format) {
+        case VectorFormat::Pdf:
+            return WorkstationType::PdfFile;
+        case VectorFormat::Svg:
+            return WorkstationType::SvgFile;
+        case VectorFormat::Eps:
+            return WorkstationType::EpsFile;
+    }
+    throw std::invalid_argument("vector hardcopy: unknown format " + std::to_string(int(format)));
+}
+
 std::string_view vectorFormatName(VectorFormat format) {
     switch (format) {
         case VectorFormat::Pdf:

@@ -18,18 +18,6 @@ namespace {
 /// The hardcopy workstation's identifier: open only while a hardcopy is written.
 constexpr int kHardcopyWorkstation = 2;
 
-WorkstationType workstationTypeOf(hardcopy::VectorFormat format) {
-    switch (format) {
-        case hardcopy::VectorFormat::Pdf:
-            return WorkstationType::PdfFile;
-        case hardcopy::VectorFormat::Svg:
-            return WorkstationType::SvgFile;
-        case hardcopy::VectorFormat::Eps:
-            return WorkstationType::EpsFile;
-    }
-    return WorkstationType::PdfFile;
-}
-
 /// Closes the hardcopy workstation however the writing ends.
 class OpenWorkstation {
 public:
@@ -75,7 +63,7 @@ void Session::writeHardcopy(const std::string& name) {
     }
     const std::filesystem::path path = outputPath(name);
     const hardcopy::VectorFormat format = hardcopy::vectorFormatForFile(path);  // invalid_argument
-    OpenWorkstation paper(phigs_, kHardcopyWorkstation, workstationTypeOf(format));
+    OpenWorkstation paper(phigs_, kHardcopyWorkstation, hardcopy::workstationTypeOf(format));
     picture();  // the screen's views and model structures up to date
     copyTables(workstation_->tables(), *paper);
     // The geometry area and a pixel round it inside the screen, so that its frame is drawn whole.

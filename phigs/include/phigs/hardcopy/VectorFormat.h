@@ -18,6 +18,9 @@ VectorFormat vectorFormatForFile(const std::filesystem::path& file);
 /// The vector format of a workstation type (none for the raster types).
 std::optional<VectorFormat> vectorFormatOf(WorkstationType type);
 
+/// The workstation type of a vector format (the inverse of vectorFormatOf).
+WorkstationType workstationTypeOf(VectorFormat format);
+
 /// "PDF", "SVG" or "EPS".
 std::string_view vectorFormatName(VectorFormat format);
 
