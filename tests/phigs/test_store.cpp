@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <random>
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -355,6 +358,77 @@ TEST_CASE("paths to ancestors and descendants with order and depth", "[store]") 
     CHECK(errorOf([&] { store.pathsToAncestors(3, StructurePathOrder::TopFirst, -1); }) ==
           errors::NegativePathDepth);
     CHECK(errorOf([&] { store.pathsToDescendants(9, StructurePathOrder::TopFirst, 0); }) == 201);
+}
+
+namespace {
+
+// `depth` references of every path, cut as the inquiry cuts them, sorted and unique.
+std::vector<StructurePath> cutPaths(std::vector<StructurePath> paths, StructurePathOrder order, int depth) {
+    for (auto& p : paths)
+        if (static_cast<int>(p.size()) > depth) {
+            if (order == StructurePathOrder::TopFirst)
+                p.resize(static_cast<std::size_t>(depth));
+            else
+                p.erase(p.begin(), p.end() - depth);
+        }
+    std::sort(paths.begin(), paths.end());
+    paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
+    return paths;
+}
+
+// n chained diamonds: structure 3k+1 executes 3k+2 and 3k+3, which both execute 3k+4.
+void chainDiamonds(StructureStore& store, int n) {
+    for (int k = 0; k < n; ++k) {
+        const int top = 3 * k + 1;
+        store.openStructure(top);
+        store.insert(executeStructure(top + 1));
+        store.insert(executeStructure(top + 2));
+        store.closeStructure();
+        for (int side : {top + 1, top + 2}) {
+            store.openStructure(side);
+            store.insert(executeStructure(top + 3));
+            store.closeStructure();
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a cut path inquiry equals the whole answer cut, on random networks", "[store]") {
+    std::mt19937 random(20261202);
+    for (int network = 0; network < 40; ++network) {
+        StructureStore store;
+        const int count = 4 + static_cast<int>(random() % 8);
+        // Executes only go to higher ids, so the network is acyclic.
+        for (int id = 1; id <= count; ++id) {
+            store.openStructure(id);
+            for (int child = id + 1; child <= count; ++child)
+                if (random() % 3 == 0) store.insert(executeStructure(child));
+            store.closeStructure();
+        }
+        for (int id = 1; id <= count; ++id)
+            for (auto order : {StructurePathOrder::TopFirst, StructurePathOrder::BottomFirst})
+                for (int depth = 1; depth <= 4; ++depth) {
+                    CHECK(store.pathsToDescendants(id, order, depth) ==
+                          cutPaths(store.pathsToDescendants(id, order, 0), order, depth));
+                    CHECK(store.pathsToAncestors(id, order, depth) ==
+                          cutPaths(store.pathsToAncestors(id, order, 0), order, depth));
+                }
+    }
+}
+
+TEST_CASE("a path inquiry with 2^n answers is refused, a cut one answers", "[store]") {
+    StructureStore store;
+    chainDiamonds(store, 64);  // 2^64 paths from structure 1 to structure 193
+    CHECK(errorOf([&] { store.pathsToDescendants(1, StructurePathOrder::TopFirst, 0); }) ==
+          errors::StorageOverflow);
+    CHECK(errorOf([&] { store.pathsToAncestors(193, StructurePathOrder::TopFirst, 0); }) ==
+          errors::StorageOverflow);
+    // A cut that keeps the references near the start of the walk stops the walk there.
+    CHECK(store.pathsToDescendants(1, StructurePathOrder::TopFirst, 4).size() == 4);
+    CHECK(store.pathsToAncestors(193, StructurePathOrder::BottomFirst, 3).size() == 2);
+    // The refusal changed nothing: a small inquiry still answers in full.
+    CHECK(store.pathsToDescendants(190, StructurePathOrder::TopFirst, 0).size() == 2);
 }
 
 TEST_CASE("versions change on every edit and only on edits", "[store]") {

@@ -3,6 +3,8 @@
 #include "phigs/core/Error.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <map>
 #include <string>
 
 namespace phigs {
@@ -32,22 +34,81 @@ void checkAcyclic(const StructurePath& path, int id, ErrorLog* log, const char* 
                   "structure " + std::to_string(id) + " executes itself through its descendants");
 }
 
-void collectDescendants(const ExecuteReferences& references, int id, StructurePath& path,
-                        std::vector<StructurePath>& out, ErrorLog* log, const char* function) {
+// Raises StructureCycle when a cycle is reachable from `id` through `edges` (children or
+// parents): a cut walk may stop before it meets one, and the answer must not depend on the cut.
+// Colours every structure once, so the check is linear in the network.
+template <class Edges, class Next>
+void checkReachableAcyclic(const Edges& edges, int id, Next next, ErrorLog* log, const char* function) {
+    enum class Colour { OnPath, Done };
+    std::map<int, Colour> colour;
+    // (structure, index of the next edge to follow)
+    std::vector<std::pair<int, std::size_t>> stack{{id, 0}};
+    colour[id] = Colour::OnPath;
+    while (!stack.empty()) {
+        auto& [at, edge] = stack.back();
+        const auto it = edges.find(at);
+        if (it == edges.end() || edge == it->second.size()) {
+            colour[at] = Colour::Done;
+            stack.pop_back();
+            continue;
+        }
+        const int to = next(it->second[edge++]);
+        const auto seen = colour.find(to);
+        if (seen == colour.end()) {
+            colour[to] = Colour::OnPath;
+            stack.emplace_back(to, 0);
+        } else if (seen->second == Colour::OnPath) {
+            raise(log, errors::StructureCycle, function,
+                  "structure " + std::to_string(to) + " executes itself through its descendants");
+        }
+    }
+}
+
+// Counts the references an inquiry collects, so that an answer past kMaxPathReferences is
+// refused before it exhausts memory or time.
+class PathCollector {
+public:
+    PathCollector(ErrorLog* log, const char* function) : log_(log), function_(function) {}
+
+    void add(StructurePath path) {
+        collected_ += path.size();
+        if (collected_ > kMaxPathReferences)
+            raise(log_, errors::StorageOverflow, function_,
+                  "more than " + std::to_string(kMaxPathReferences) + " path references");
+        paths_.push_back(std::move(path));
+    }
+    std::vector<StructurePath> take() { return std::move(paths_); }
+    ErrorLog* log() const { return log_; }
+    const char* function() const { return function_; }
+
+private:
+    ErrorLog* log_;
+    const char* function_;
+    std::size_t collected_ = 0;
+    std::vector<StructurePath> paths_;
+};
+
+// `cut`: the length at which a TopFirst answer is complete (0: none).
+void collectDescendants(const ExecuteReferences& references, int id, StructurePath& path, std::size_t cut,
+                        PathCollector& out) {
     if (path.size() > kMaxNetworkDepth)
-        raise(log, errors::NetworkTooDeep, function,
+        raise(out.log(), errors::NetworkTooDeep, out.function(),
               "more than " + std::to_string(kMaxNetworkDepth) + " levels");
-    checkAcyclic(path, id, log, function);
+    checkAcyclic(path, id, out.log(), out.function());
+    if (cut > 0 && path.size() == cut) {
+        out.add(path);
+        return;
+    }
     const auto it = references.find(id);
     if (it == references.end() || it->second.empty()) {
         path.push_back({id, 0});
-        out.push_back(path);
+        out.add(path);
         path.pop_back();
         return;
     }
     for (const auto& [elementNumber, child] : it->second) {
         path.push_back({id, elementNumber});
-        collectDescendants(references, child, path, out, log, function);
+        collectDescendants(references, child, path, cut, out);
         path.pop_back();
     }
 }
@@ -76,16 +137,20 @@ std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, in
     // A path is at least two references (ISO 9592 defect 066, NIST PVT 02.01 SR5): a structure
     // that nothing executes has no paths to ancestors.
     if (!parents.contains(id)) return {};
-    std::vector<StructurePath> out;
+    checkReachableAcyclic(
+        parents, id, [](const ElementRef& r) { return r.structureId; }, log, function);
+    PathCollector out(log, function);
+    // A BottomFirst answer is complete once it holds `depth` references.
+    const std::size_t cut = order == StructurePathOrder::BottomFirst ? static_cast<std::size_t>(depth) : 0;
     // Walk upward, building paths bottom-up, then reverse each to top-first.
     std::vector<StructurePath> partial{{ElementRef{id, 0}}};
     while (!partial.empty()) {
         StructurePath p = std::move(partial.back());
         partial.pop_back();
         auto it = parents.find(p.back().structureId);
-        if (it == parents.end()) {
+        if (it == parents.end() || (cut > 0 && p.size() == cut)) {
             std::reverse(p.begin(), p.end());
-            out.push_back(std::move(p));
+            out.add(std::move(p));
             continue;
         }
         for (auto ref = it->second.rbegin(); ref != it->second.rend(); ++ref) {
@@ -95,7 +160,7 @@ std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, in
             partial.push_back(std::move(longer));
         }
     }
-    return truncateAndUnique(std::move(out), order, depth);
+    return truncateAndUnique(out.take(), order, depth);
 }
 
 std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, int id,
@@ -105,10 +170,13 @@ std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, 
     // As for ancestors: a structure that executes nothing has no paths to descendants.
     const auto it = references.find(id);
     if (it == references.end() || it->second.empty()) return {};
-    std::vector<StructurePath> out;
+    checkReachableAcyclic(
+        references, id, [](const std::pair<int, int>& r) { return r.second; }, log, function);
+    PathCollector out(log, function);
+    const std::size_t cut = order == StructurePathOrder::TopFirst ? static_cast<std::size_t>(depth) : 0;
     StructurePath path;
-    collectDescendants(references, id, path, out, log, function);
-    return truncateAndUnique(std::move(out), order, depth);
+    collectDescendants(references, id, path, cut, out);
+    return truncateAndUnique(out.take(), order, depth);
 }
 
 }  // namespace phigs

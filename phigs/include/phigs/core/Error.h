@@ -95,6 +95,7 @@ inline constexpr int ArchiveNotOpen = 404;
 inline constexpr int ArchiveNameConflict = 405;
 inline constexpr int MissingInArchive = 407;              ///< warning
 inline constexpr int MissingInArchiveCreatedEmpty = 408;  ///< warning: RETRIEVE made them empty
+inline constexpr int StorageOverflow = 900;  ///< an answer would exceed the implementation's limits
 inline constexpr int WriteError = 903;
 inline constexpr int StructureCycle = -201;      ///< execute structure would make the network cyclic
 inline constexpr int InvalidElementData = -202;  ///< element contents break the primitive's rules
