@@ -2,7 +2,9 @@
 
 #include "geom/GeometryError.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace geom {
@@ -33,6 +35,36 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
         weights.push_back(circleWeight(j));
     }
     return Curve(2, kCircleKnots, points, weights);
+}
+
+Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
+              double startAngle, double endAngle) {
+    checkPositive(radius, "radius", "makeArc");
+    const double sweep = endAngle - startAngle;
+    if (!std::isfinite(startAngle) || !std::isfinite(sweep) || !(sweep > 0.0) ||
+        sweep > 2.0 * std::numbers::pi + 1e-12)
+        throw GeometryError("makeArc: sweep " + std::to_string(sweep) + " must lie in (0, 2 pi]");
+    // Each segment spans at most a quarter turn, so its middle weight cos(half angle) stays >= 0.7.
+    const int segments = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * std::numbers::pi) - 1e-12)));
+    const double step = sweep / segments;
+    auto onCircle = [&](double angle, double r) {
+        return center + r * (std::cos(angle) * xAxis + std::sin(angle) * yAxis);
+    };
+    std::vector<glm::dvec3> points{onCircle(startAngle, radius)};
+    std::vector<double> weights{1.0};
+    std::vector<double> knots{0.0, 0.0, 0.0};
+    for (int i = 1; i <= segments; ++i) {
+        const double end = startAngle + step * i;
+        // The middle point is where the end tangents meet: on the bisector, r / cos(step / 2) out.
+        points.push_back(onCircle(end - 0.5 * step, radius / std::cos(0.5 * step)));
+        weights.push_back(std::cos(0.5 * step));
+        points.push_back(onCircle(end, radius));
+        weights.push_back(1.0);
+        const double knot = i == segments ? 1.0 : static_cast<double>(i) / segments;
+        knots.insert(knots.end(), {knot, knot});
+    }
+    knots.push_back(1.0);
+    return Curve(2, knots, points, weights);
 }
 
 Curve makePeriodicCurve(int degree, const std::vector<glm::dvec3>& points,

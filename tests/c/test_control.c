@@ -44,6 +44,21 @@ static void message_and_facilities(void) {
     CHECK(err == PE_LIST_LENGTH_LT_ZERO);
 }
 
+/* No escape is registered: any identifier is warning 350 and a NULL output record. */
+static void escapes(const char* file) {
+    Pstore store = NULL;
+    Pescape_out_data* out = (Pescape_out_data*)&store; /* not NULL, so the reset shows */
+    Pint err = -1;
+    pcreate_store(&err, &store);
+    EXPECT_REFUSED(pescape(-1, NULL, store, &out), 350, Pfn_escape);
+    CHECK(out == NULL);
+    CHECK(file_has_line(
+        file,
+        "WARNING 350 in ESCAPE (function 180): Warning, the specified escape is not available on "
+        "one or more workstations in this implementation"));
+    pdel_store(store);
+}
+
 static void close_needs_everything_closed(void) {
     Psys_st st = PSYS_ST_PHCL;
     popen_struct(1);
@@ -72,13 +87,14 @@ int main(int argc, char** argv) {
     CHECK(st == PSYS_ST_PHOP);
     handler_and_mode(file);
     message_and_facilities();
+    escapes(file);
     close_needs_everything_closed();
     EXPECT_NO_ERROR(pclose_phigs());
     pinq_sys_st(&st);
     CHECK(st == PSYS_ST_PHCL);
 
     /* ERROR LOGGING's lines, in the order they were raised; the PERR_OFF error is not there. */
-    CHECK(file_line_count(file) == 5);
+    CHECK(file_line_count(file) == 6);
     CHECK(file_has_line(file,
                         "ERROR 1 in OPEN PHIGS (function 0): Ignoring function, function requires state "
                         "(PHCL, WSCL, STCL, ARCL)"));

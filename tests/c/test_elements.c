@@ -190,6 +190,38 @@ static void attributes(void) {
     CHECK(d->appl_data.size == 4 && memcmp(d->appl_data.data, "abcd", 4) == 0);
 }
 
+/* GDPs: the two this implementation draws keep no record; any other identifier keeps its
+ * record's bytes. GSEs keep identifier and record. */
+static void generalized(void) {
+    Ppoint3 circle3[3] = {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+    Ppoint arc2[3] = {{1, 0}, {0, 1}, {-1, 0}};
+    Ppoint3 any3[1] = {{7, 8, 9}};
+    Pgdp_data3 record3;
+    Pgdp_data record2;
+    Pgse_data gse;
+    Pelem_data* d;
+    record3.unsupp = (Pdata){3, "xyz"};
+    pgdp3(&(Ppoint_list3){3, circle3}, PGDP_CIRCLE, NULL);
+    d = last(PELEM_GDP3);
+    CHECK(d->gdp3.id == PGDP_CIRCLE && d->gdp3.point_list.num_points == 3);
+    CHECK(d->gdp3.point_list.points[1].x == 2 && d->gdp3.data.unsupp.size == 0);
+    pgdp3(&(Ppoint_list3){1, any3}, 4711, &record3);
+    d = last(PELEM_GDP3);
+    CHECK(d->gdp3.id == 4711 && d->gdp3.point_list.points[0].z == 9);
+    CHECK(d->gdp3.data.unsupp.size == 3 && memcmp(d->gdp3.data.unsupp.data, "xyz", 3) == 0);
+    record2.unsupp = (Pdata){0, NULL};
+    pgdp(&(Ppoint_list){3, arc2}, PGDP_ARC, &record2);
+    d = last(PELEM_GDP);
+    CHECK(d->gdp.id == PGDP_ARC && d->gdp.point_list.num_points == 3 && d->gdp.point_list.points[1].y == 1);
+    gse.unsupp = (Pdata){2, "ok"};
+    pgse(-12, &gse);
+    d = last(PELEM_GSE);
+    CHECK(d->gse.id == -12 && d->gse.data.unsupp.size == 2 && memcmp(d->gse.data.unsupp.data, "ok", 2) == 0);
+    pgse(3, NULL);
+    d = last(PELEM_GSE);
+    CHECK(d->gse.id == 3 && d->gse.data.unsupp.size == 0);
+}
+
 static void transforms_and_clipping(void) {
     Pmatrix3 m3 = {{1, 0, 0, 5}, {0, 2, 0, 6}, {0, 0, 3, 7}, {0, 0, 0, 1}};
     Pmatrix m2 = {{1, 0, 5}, {0, 2, 6}, {0, 0, 1}};
@@ -245,6 +277,12 @@ static void refusals(void) {
     EXPECT_REFUSED(pset_local_tran3(NULL, PTYPE_REPLACE), -204, Pfn_set_local_tran3);
     EXPECT_REFUSED(pset_char_ht(INFINITY), -202, Pfn_set_char_ht);
     EXPECT_REFUSED(pappl_data(&(Pdata){-2, NULL}), -204, Pfn_appl_data);
+    /* a 3D circle needs three points, and an arc three that are not collinear */
+    EXPECT_REFUSED(pgdp3(&(Ppoint_list3){2, p3}, PGDP_CIRCLE, NULL), -202, Pfn_gdp3);
+    EXPECT_REFUSED(pgdp(&(Ppoint_list){3, (Ppoint[3]){{0, 0}, {1, 1}, {2, 2}}}, PGDP_ARC, NULL), -202,
+                   Pfn_gdp);
+    EXPECT_REFUSED(pgdp3(NULL, 5, NULL), -204, Pfn_gdp3);
+    EXPECT_REFUSED(pgse(1, &(Pgse_data){.unsupp = {-1, NULL}}), -204, Pfn_gse);
     pclose_struct();
     /* with no structure open the state error comes first, whatever the arguments */
     EXPECT_REFUSED(ppolyline3(NULL), 5, Pfn_polyline3);
@@ -260,6 +298,7 @@ int main(int argc, char** argv) {
     popen_struct(1);
     primitives();
     attributes();
+    generalized();
     transforms_and_clipping();
     refusals();
     CHECK(file_has_line(file,

@@ -49,7 +49,7 @@ inline geom::Surface randomSurface(std::mt19937& rng) {
 inline Element randomElement(std::mt19937& rng, int self, int maxId) {
     using T = ElementType;
     bool twoD = randomInt(rng, 0, 1) == 1;
-    switch (randomInt(rng, 0, 28)) {
+    switch (randomInt(rng, 0, 30)) {
         case 0:
             return PolylineElement{randomPoints(rng, randomInt(rng, 0, 5)), twoD};
         case 1:
@@ -128,6 +128,11 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
             return LabelElement{randomInt(rng, -5, 5)};
         case 27:
             return LabelElement{randomInt(rng, -5, 5)};
+        case 28:  // an identifier this implementation does not register: stored as given
+            return GdpElement{randomInt(rng, 1, 1000), randomPoints(rng, randomInt(rng, 0, 4)),
+                              std::string("gdp\0record", 10), twoD};
+        case 29:
+            return GseElement{randomInt(rng, -1000, 1000), std::string("gse\nrecord")};
         default:
             return ApplicationDataElement{std::string("\0binary\n bytes", 14)};
     }

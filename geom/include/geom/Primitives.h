@@ -13,6 +13,12 @@ namespace geom {
 /// vectors xAxis and yAxis: degree 2, nine control points, parameter [0, 1] from center + r*xAxis.
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius);
 
+/// The exact rational arc of the given radius about center, from startAngle to endAngle
+/// (radians, counterclockwise from xAxis towards yAxis; 0 < endAngle - startAngle <= 2 pi):
+/// degree 2, one rational segment per quarter turn or less, parameter [0, 1].
+Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
+              double startAngle, double endAngle);
+
 /// A closed (periodic) curve of the given degree through the cyclic control polygon `points`:
 /// uniform unclamped knots and the first `degree` points repeated at the end, so the curve
 /// closes with continuity C^(degree-1); domain [0, 1]. Weights, when given, wrap the same way.

@@ -102,6 +102,46 @@ typedef struct {
     Pint size;
     void* data;
 } Pdata;
+/* ESCAPE data records. This implementation registers no escape: every identifier is answered
+ * with warning 350 and a NULL output record. */
+typedef union {
+    struct {
+        Pint unused;
+    } escape_in_u1;
+    Pdata unsupp;
+} Pescape_in_data;
+typedef union {
+    struct {
+        Pint unused;
+    } escape_out_u1;
+    Pdata unsupp;
+} Pescape_out_data;
+/* GDP and GSE data records. This implementation's GDPs (GDP_CIRCLE, GDP_ARC) need none; the
+ * record of any other identifier is kept as the bytes `unsupp` gives. */
+typedef union {
+    struct {
+        Pint unused;
+    } gdp3_r1;
+    Pdata unsupp;
+} Pgdp_data3;
+typedef union {
+    struct {
+        Pint unused;
+    } gdp_r1;
+    Pdata unsupp;
+} Pgdp_data;
+typedef union {
+    struct {
+        Pint unused;
+    } gse_r1;
+    Pdata unsupp;
+} Pgse_data;
+/* The GDP identifiers this implementation draws (implementation-defined, hence negative):
+ * GDP_CIRCLE: centre, a point on the circle and, for pgdp3, a third point fixing its plane;
+ * GDP_ARC: three points on a circular arc, start, any point between, end. Any other
+ * identifier is stored and not drawn. */
+#define PGDP_CIRCLE (-1)
+#define PGDP_ARC (-2)
 
 /* ---- enumerations */
 typedef enum { PSYS_ST_PHCL, PSYS_ST_PHOP } Psys_st;
@@ -168,8 +208,8 @@ typedef enum {
 #define PANNO_STYLE_LEAD_LINE 2
 
 /* Element types: PHIGS's in the standard's order, then the PHIGS PLUS ones this toolkit
- * stores (PELEM_*_COLR are the general-colour forms of the colour index attributes). GDP,
- * GSE and the pattern attributes are listed for completeness; the store holds none yet. */
+ * stores (PELEM_*_COLR are the general-colour forms of the colour index attributes). The
+ * pattern attributes are listed for completeness; the store holds none yet. */
 typedef enum {
     PELEM_ALL,
     PELEM_NIL,
@@ -394,6 +434,20 @@ typedef union {
     Pclip_ind clip_ind;
     Pdata appl_data;
     Pgcolr colr;
+    struct {
+        Pint id;
+        Ppoint_list3 point_list;
+        Pgdp_data3 data;
+    } gdp3;
+    struct {
+        Pint id;
+        Ppoint_list point_list;
+        Pgdp_data data;
+    } gdp;
+    struct {
+        Pint id;
+        Pgse_data data;
+    } gse;
 } Pelem_data;
 
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
@@ -418,6 +472,8 @@ enum {
     Pfn_fill_area_set = 19,
     Pfn_cell_array3 = 20,
     Pfn_cell_array = 21,
+    Pfn_gdp3 = 22,
+    Pfn_gdp = 23,
     Pfn_set_line_ind = 24,
     Pfn_set_marker_ind = 25,
     Pfn_set_text_ind = 26,
@@ -468,6 +524,7 @@ enum {
     Pfn_exec_struct = 92,
     Pfn_label = 93,
     Pfn_appl_data = 94,
+    Pfn_gse = 95,
     Pfn_set_edit_mode = 96,
     Pfn_copy_all_elems_struct = 97,
     Pfn_set_elem_ptr = 98,
@@ -500,6 +557,7 @@ enum {
     Pfn_del_all_structs_ar = 128,
     Pfn_set_pick_id = 129,
     Pfn_set_err_hand_mode = 179,
+    Pfn_escape = 180,
     Pfn_line_colr = 310,
     Pfn_marker_colr = 312,
     Pfn_text_colr = 313,
@@ -519,6 +577,7 @@ void pemergency_close_phigs(void);
 void pinq_sys_st(Psys_st* sys_st);
 /* MESSAGE: needs the workstation open (errors 3, 54); the message goes to the error file
  * (stderr without one) as the line "MESSAGE <ws_id>: <message>". */
+void pescape(Pint func_id, const Pescape_in_data* in_data, Pstore store, Pescape_out_data** out_data);
 void pmessage(Pint ws_id, const char* message);
 /* The PHIGS description table: this implementation sets no limit on open workstations, open
  * archive files, names in name sets or filter lengths (INT_MAX each) and lists no character
@@ -629,6 +688,9 @@ void pset_pick_id(Pint pick_id);
 void pexec_struct(Pint struct_id);
 void plabel(Pint label_id);
 void pappl_data(const Pdata* data);
+void pgdp3(const Ppoint_list3* point_list, Pint gdp3_id, const Pgdp_data3* gdp_data);
+void pgdp(const Ppoint_list* point_list, Pint gdp_id, const Pgdp_data* gdp_data);
+void pgse(Pint id, const Pgse_data* gse_data);
 
 /* ---- archives */
 void popen_ar_file(Pint ar_id, const char* ar_file);

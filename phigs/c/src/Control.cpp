@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <new>
+#include <string>
 
 using phigs::c::Binding;
 
@@ -35,6 +36,15 @@ void pmessage(Pint ws_id, const char* message) {
         p.workstation(ws_id);  // errors 3, 54
         phigs::c::require(message, "MESSAGE");
         b.message(ws_id, message);
+    });
+}
+
+void pescape(Pint func_id, const Pescape_in_data* /*in_data*/, Pstore /*store*/,
+             Pescape_out_data** out_data) {
+    if (out_data) *out_data = nullptr;
+    Binding::instance().call(Pfn_escape, [&](phigs::Phigs&) {
+        throw phigs::Error(phigs::errors::EscapeNotAvailable, "ESCAPE",
+                           "escape " + std::to_string(func_id) + " is not registered");
     });
 }
 

@@ -69,6 +69,23 @@ void annotationContent(const AnnotationTextElement& e, Phigs_store& s) {
         s.data.anno_text_rel3 = {p3(e.reference), v3(e.offset), s.text.data()};
 }
 
+// The point list first (pointList writes the union's leading point list), then id and record.
+void gdpContent(const GdpElement& e, Phigs_store& s) {
+    s.text = e.data;
+    const Pdata record{static_cast<Pint>(s.text.size()), s.text.data()};
+    for (const auto& v : e.points) e.twoD ? s.points.push_back(p2(v)) : s.points3.push_back(p3(v));
+    const Pint n = static_cast<Pint>(e.points.size());
+    if (e.twoD) {
+        s.data.gdp.id = e.identifier;
+        s.data.gdp.point_list = {n, s.points.data()};
+        s.data.gdp.data.unsupp = record;
+    } else {
+        s.data.gdp3.id = e.identifier;
+        s.data.gdp3.point_list = {n, s.points3.data()};
+        s.data.gdp3.data.unsupp = record;
+    }
+}
+
 void cellArrayContent(const CellArrayElement& e, Phigs_store& s) {
     s.ints.assign(e.colourIndices.begin(), e.colourIndices.end());
     const Ppat_rep rep{{e.columns, e.rows}, s.ints.data()};
@@ -165,6 +182,12 @@ int fillContent(const Element& element, Phigs_store& s) {
             else if constexpr (std::is_same_v<E, ApplicationDataElement>) {
                 s.text = e.data;
                 s.data.appl_data = {static_cast<Pint>(s.text.size()), s.text.data()};
+            } else if constexpr (std::is_same_v<E, GdpElement>)
+                gdpContent(e, s);
+            else if constexpr (std::is_same_v<E, GseElement>) {
+                s.text = e.data;
+                s.data.gse.id = e.identifier;
+                s.data.gse.data.unsupp = {static_cast<Pint>(s.text.size()), s.text.data()};
             } else
                 return kNoContentForm;
             return 0;

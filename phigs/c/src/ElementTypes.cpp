@@ -90,6 +90,9 @@ const std::map<ElementType, Pelem_type>& plainTypes() {
         {T::ApplicationData, PELEM_APPL_DATA},
         {T::PickId, PELEM_PICK_ID},
         {T::HlhsrIdentifier, PELEM_HLHSR_ID},
+        {T::GeneralizedDrawingPrimitive3, PELEM_GDP3},
+        {T::GeneralizedDrawingPrimitive, PELEM_GDP},
+        {T::GeneralizedStructureElement, PELEM_GSE},
     };
     return table;
 }

@@ -4,6 +4,7 @@
 #include "Binding.h"
 #include "Conversions.h"
 #include "phigs.h"
+#include "phigs/store/Gdp.h"
 
 #include <cstring>
 
@@ -78,6 +79,20 @@ Element alignment(ElementType type, const Ptext_align* a, const char* name) {
 Element upVector(ElementType type, const Pvec* v, const char* name) {
     c::require(v, name);
     return UpVectorAttribute{type, {v->delta_x, v->delta_y}};
+}
+
+// The bytes a Pdata gives (NULL data with size 0 is an empty record).
+std::string bytesOf(const Pdata& data, const char* name) {
+    const std::size_t size = c::count(data.size, name);
+    if (size > 0) c::require(data.data, name);
+    const char* bytes = static_cast<const char*>(data.data);
+    return std::string(bytes, bytes + size);
+}
+
+// An unregistered GDP's or a GSE's record: its `unsupp` bytes; a NULL record is an empty one.
+template <class Record>
+std::string record(const Record* data, const char* name) {
+    return data ? bytesOf(data->unsupp, name) : std::string();
 }
 
 Composition composition(int type, const char* name) {
@@ -419,11 +434,22 @@ void plabel(Pint id) {
 void pappl_data(const Pdata* data) {
     insertElement(Pfn_appl_data, [&](const char* n) -> Element {
         c::require(data, n);
-        const std::size_t size = c::count(data->size, n);
-        if (size > 0) c::require(data->data, n);
-        const char* bytes = static_cast<const char*>(data->data);
-        return ApplicationDataElement{std::string(bytes, bytes + size)};
+        return ApplicationDataElement{bytesOf(*data, n)};
     });
+}
+
+void pgdp3(const Ppoint_list3* l, Pint id, const Pgdp_data3* data) {
+    insertElement(Pfn_gdp3, [&](const char* n) -> Element {
+        return GdpElement{id, c::points(l, n), isRegisteredGdp(id) ? std::string() : record(data, n), false};
+    });
+}
+void pgdp(const Ppoint_list* l, Pint id, const Pgdp_data* data) {
+    insertElement(Pfn_gdp, [&](const char* n) -> Element {
+        return GdpElement{id, c::points(l, n), isRegisteredGdp(id) ? std::string() : record(data, n), true};
+    });
+}
+void pgse(Pint id, const Pgse_data* data) {
+    insertElement(Pfn_gse, [&](const char* n) -> Element { return GseElement{id, record(data, n)}; });
 }
 
 }  // extern "C"

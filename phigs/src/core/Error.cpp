@@ -94,6 +94,8 @@ const std::map<int, const char*>& messages() {
         {408,
          "Warning, some of the specified structures do not exist on the archive file. PHIGS will create "
          "empty structures in their places"},
+        {350,
+         "Warning, the specified escape is not available on one or more workstations in this implementation"},
         {900, "Storage overflow has occurred in PHIGS"},
         {903, "Input/Output error has occurred while writing"},
         {908, "Arithmetic error has occurred"},

@@ -286,7 +286,8 @@ Element decodeElement(Reader& in) {
                 e.twoD = type == ElementType::Polyline || type == ElementType::Polymarker ||
                          type == ElementType::FillArea || type == ElementType::FillAreaSet ||
                          type == ElementType::Text || type == ElementType::AnnotationTextRelative ||
-                         type == ElementType::CellArray || type == ElementType::ModelClippingVolume;
+                         type == ElementType::CellArray || type == ElementType::ModelClippingVolume ||
+                         type == ElementType::GeneralizedDrawingPrimitive;
             if constexpr (requires { e.add; }) e.add = type == ElementType::AddNamesToSet;
         },
         element);

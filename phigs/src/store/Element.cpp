@@ -1,6 +1,7 @@
 #include "phigs/store/Element.h"
 
 #include "ElementFields.h"
+#include "phigs/store/Gdp.h"
 
 #include <array>
 #include <cmath>
@@ -99,6 +100,9 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(ElementType::Cou
     "APPLICATION DATA",
     "SET PICK IDENTIFIER",
     "SET HLHSR IDENTIFIER",
+    "GENERALIZED DRAWING PRIMITIVE 3",
+    "GENERALIZED DRAWING PRIMITIVE",
+    "GENERALIZED STRUCTURE ELEMENT",
 };
 
 template <class T>
@@ -244,6 +248,9 @@ std::string validatePayload(const Element& element) {
                 if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
                 if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
                 return checkPerVertex(e.vertexNormals, n, "vertex normals");
+            } else if constexpr (std::is_same_v<E, GdpElement>) {
+                if (auto r = checkPoints(e.points, 0, "generalized drawing primitive"); !r.empty()) return r;
+                return checkGdp(e);
             } else if constexpr (std::is_same_v<E, AsfAttribute>) {
                 if (static_cast<int>(e.aspect) < 0 || e.aspect >= AspectId::Count_) return "unknown aspect";
                 return {};
@@ -333,6 +340,10 @@ ElementType elementType(const Element& element) {
                 return T::Label;
             else if constexpr (std::is_same_v<E, ApplicationDataElement>)
                 return T::ApplicationData;
+            else if constexpr (std::is_same_v<E, GdpElement>)
+                return e.twoD ? T::GeneralizedDrawingPrimitive : T::GeneralizedDrawingPrimitive3;
+            else if constexpr (std::is_same_v<E, GseElement>)
+                return T::GeneralizedStructureElement;
             else
                 return e.type;  // the tagged families
         },
@@ -425,6 +436,11 @@ int payloadIndexOf(ElementType type) {
             return indexOf<LabelElement>();
         case T::ApplicationData:
             return indexOf<ApplicationDataElement>();
+        case T::GeneralizedDrawingPrimitive3:
+        case T::GeneralizedDrawingPrimitive:
+            return indexOf<GdpElement>();
+        case T::GeneralizedStructureElement:
+            return indexOf<GseElement>();
         case T::All:
         case T::Nil:
         case T::Count_:
@@ -457,7 +473,9 @@ std::size_t elementSize(const Element& element) {
                 for (const auto& c : e.contours) bytes += c.size() * sizeof(glm::dvec3);
             if constexpr (std::is_same_v<E, TextElement> || std::is_same_v<E, AnnotationTextElement>)
                 bytes += e.text.size();
-            if constexpr (std::is_same_v<E, ApplicationDataElement>) bytes += e.data.size();
+            if constexpr (std::is_same_v<E, ApplicationDataElement> || std::is_same_v<E, GdpElement> ||
+                          std::is_same_v<E, GseElement>)
+                bytes += e.data.size();
             if constexpr (std::is_same_v<E, NameSetElement>) bytes += e.names.size() * sizeof(int);
             if constexpr (std::is_same_v<E, CellArrayElement>) bytes += e.colourIndices.size() * sizeof(int);
             if constexpr (std::is_same_v<E, NurbsCurveElement>) bytes += curveBytes(e.curve);

@@ -125,5 +125,13 @@ template <class V>
 void fields(V& v, ApplicationDataElement& e) {
     v(e.data);
 }
+template <class V>
+void fields(V& v, GdpElement& e) {
+    v(e.identifier), v(e.points), v(e.data);
+}
+template <class V>
+void fields(V& v, GseElement& e) {
+    v(e.identifier), v(e.data);
+}
 
 }  // namespace phigs::detail

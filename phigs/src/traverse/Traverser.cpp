@@ -1,6 +1,7 @@
 #include "phigs/traverse/Traverser.h"
 
 #include "Tessellation.h"
+#include "phigs/store/Gdp.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -572,18 +573,13 @@ private:
                 } else if constexpr (std::is_same_v<E, CellArrayElement>) {
                     cellArray(s, stored, number, state, e);
                 } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
-                    const ApproximationAttribute& a = state.curveApproximation;
-                    TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
-                    const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
-                        TessellationCache::Entry built;
-                        built.curve = std::make_shared<const geom::Curve>(e.curve);
-                        built.curvePoints =
-                            detail::tessellateCurve(e.curve, e.rangeStart, e.rangeEnd, a.criteria, a.valueU);
-                        return built;
-                    });
-                    emit(s, number, state,
-                         DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), e.rangeStart,
-                                   e.rangeEnd});
+                    curve(
+                        s, stored, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
+                } else if constexpr (std::is_same_v<E, GdpElement>) {
+                    // Registered GDPs draw as exact curves; the others are ignored (ISO 9592).
+                    if (isRegisteredGdp(e.identifier) && checkGdp(e).empty())
+                        curve(
+                            s, stored, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
                 } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                     ApproximationAttribute a = resolve_.surfaceApproximation(state);
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
@@ -681,9 +677,27 @@ private:
                         else
                             state.names.erase(n);
                 }
-                // labels and application data do not change the draw list
+                // labels, application data and GSEs (none registered) do not change the draw list
             },
             stored.value);
+    }
+
+    // A curve primitive, tessellated once per element and approximation; `build` makes the
+    // exact curve on a cache miss.
+    template <class Build>
+    void curve(const Structure& s, const StoredElement& stored, int number, const State& state, Build build,
+               double rangeStart, double rangeEnd) {
+        const ApproximationAttribute& a = state.curveApproximation;
+        TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
+        const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
+            TessellationCache::Entry built;
+            built.curve = std::make_shared<const geom::Curve>(build());
+            built.curvePoints =
+                detail::tessellateCurve(*built.curve, rangeStart, rangeEnd, a.criteria, a.valueU);
+            return built;
+        });
+        emit(s, number, state,
+             DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), rangeStart, rangeEnd});
     }
 
     void fillStyle(DrawFillArea& f, const State& state) const {

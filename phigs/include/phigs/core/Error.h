@@ -88,6 +88,7 @@ inline constexpr int BadInputDataRecord = 260;
 inline constexpr int BadInitialValue = 261;
 inline constexpr int StrokeBufferTooSmall = 262;
 inline constexpr int StringBufferTooSmall = 263;
+inline constexpr int EscapeNotAvailable = 350;  ///< warning: no such escape in this implementation
 inline constexpr int ArchiveCannotOpen = 400;
 inline constexpr int ArchiveIdInUse = 402;
 inline constexpr int NotAnArchive = 403;

@@ -111,6 +111,9 @@ enum class ElementType : int {
     ApplicationData,
     PickId,
     HlhsrIdentifier,
+    GeneralizedDrawingPrimitive3,
+    GeneralizedDrawingPrimitive,
+    GeneralizedStructureElement,
     Count_  ///< number of types, not a type
 };
 
@@ -372,6 +375,24 @@ struct ApplicationDataElement {
     bool operator==(const ApplicationDataElement&) const = default;
 };
 
+/// GENERALIZED DRAWING PRIMITIVE 3 / GENERALIZED DRAWING PRIMITIVE: an identified primitive on
+/// points with a data record. Traversal draws the identifiers of phigs/store/Gdp.h and ignores
+/// the others, as ISO 9592 lets a workstation do with a GDP it cannot generate.
+struct GdpElement {
+    int identifier = 0;
+    std::vector<glm::dvec3> points;
+    std::string data;
+    bool twoD = false;
+    bool operator==(const GdpElement&) const = default;
+};
+/// GENERALIZED STRUCTURE ELEMENT: an identified element with a data record; stored, archived
+/// and inquired, and ignored by traversal (this implementation registers no GSE).
+struct GseElement {
+    int identifier = 0;
+    std::string data;
+    bool operator==(const GseElement&) const = default;
+};
+
 /// A structure element.
 using Element =
     std::variant<PolylineElement, PolymarkerElement, FillAreaElement, FillAreaSetElement, TextElement,
@@ -381,7 +402,7 @@ using Element =
                  AreaPropertiesAttribute, AsfAttribute, ApproximationAttribute,
                  SurfaceCharacteristicsAttribute, LightSourceStateAttribute, TransformElement,
                  ModelClipElement, RestoreModelClipElement, NameSetElement, ExecuteStructureElement,
-                 LabelElement, ApplicationDataElement>;
+                 LabelElement, ApplicationDataElement, GdpElement, GseElement>;
 
 /// The PHIGS element type of an element.
 ElementType elementType(const Element& element);
