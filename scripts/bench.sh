@@ -110,8 +110,11 @@ layout() {
 table() {
   awk -v spec="$2" '
     function label(s) { gsub(/_/, " ", s); return s }
-    # Three significant digits for reals; integers and text as they are.
-    function shown(x) { return (x ~ /^-?[0-9]+$/ || x !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/) ? x : sprintf("%.3g", x) }
+    # Reals to three significant digits (whole numbers from 100 up); integers and text as they are.
+    function shown(x) {
+      if (x ~ /^-?[0-9]+$/ || x !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/) return x
+      return (x + 0 >= 100 || x + 0 <= -100) ? sprintf("%.0f", x) : sprintf("%.3g", x)
+    }
     {
       text = text $0
     }
