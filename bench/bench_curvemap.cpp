@@ -1,7 +1,7 @@
-// Curve mapping benchmark (issue 7): the five-curve ACSYNT-like logo mapped onto a 20x20-patch
-// wave and a 20x20-patch wing at tolerance 1e-4 of the span, adaptive sampling against the seed's fixed
-// sampling (ten projected points per curve segment) and against fixed sampling made fine enough to reach the
-// same maximum deviation. Prints figures, then one JSON object.
+// Curve mapping benchmark: the five-curve ACSYNT-like logo mapped onto a 20x20-patch
+// wave and a 20x20-patch wing at tolerance 1e-4 of the span, adaptive sampling against the ACSYNT
+// curve-mapping thesis's fixed sampling (ten projected points per curve segment) and against fixed sampling
+// made fine enough to reach the same maximum deviation. Prints figures, then one JSON object.
 
 #include "geom/CurveFile.h"
 #include "geom/Evaluate.h"
@@ -71,8 +71,8 @@ struct Fixed {
 Fixed fixedSamplingOnce(const Surface& surface, const SurfaceIntersector& intersector,
                         const PlacementFrame& frame, const std::vector<Curve>& curves, int perSegment);
 
-/// The seed's method: a fixed number of projected points per curve segment (knot span); the
-/// time is the best of three runs, like the adaptive one's best of five.
+/// The ACSYNT curve-mapping thesis's method: a fixed number of projected points per curve segment (knot
+/// span); the time is the best of three runs, like the adaptive one's best of five.
 Fixed fixedSampling(const Surface& surface, const SurfaceIntersector& intersector,
                     const PlacementFrame& frame, const std::vector<Curve>& curves, int perSegment) {
     Fixed best = fixedSamplingOnce(surface, intersector, frame, curves, perSegment);
@@ -194,8 +194,8 @@ int main() {
         std::filesystem::path(__FILE__).parent_path().parent_path() / "tests/data/curvemap/acslogo.crv";
     const std::vector<Curve> logo = interpolateModel(readCurveFile(data));
 
-    // The seed's tutorial: the logo in the middle of a wave (here 20 x 20 patches, span 10),
-    // turned twice; and the issue's wing (20 x 20 patches, span 20), on the upper surface at
+    // The thesis's tutorial: the logo in the middle of a wave (here 20 x 20 patches, span 10),
+    // turned twice; and a wing (20 x 20 patches, span 20), on the upper surface at
     // mid-span, long axis along the span. Tolerance 1e-4 of the span in both.
     Placement onWave;
     onWave.reference = {10, 10};

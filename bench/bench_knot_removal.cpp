@@ -1,4 +1,4 @@
-// Knot removal benchmark: the reference curves of note 000 reduced at three tolerances by
+// Knot removal benchmark: the reference curves of Marcaly (1991) reduced at three tolerances by
 // geom::reduceCurve and, in the same run, by SISL's s1940 (ends fixed); the reference surfaces
 // by geom::reduceSurface; the thesis's count-driven cases. Every error printed is measured
 // afterwards by geom::measureDeviation (dense samples of both shapes, point inversion).

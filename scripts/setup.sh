@@ -15,6 +15,7 @@ packages=(
   libxtst-dev                        # real pointer and key events on the virtual X server
   catch2                             # tests
   clang-format                       # the style test (sources follow .clang-format)
+  doxygen                            # the API reference (target docs) and its no-warnings test
   hershey-fonts-data                 # stroke fonts for PHIGS text
   libcairo2-dev                      # PDF, SVG and EPS hardcopy (phigs_hardcopy)
   poppler-utils librsvg2-bin         # the hardcopy tests rasterise PDF and SVG files

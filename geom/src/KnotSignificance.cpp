@@ -41,7 +41,7 @@ std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> kno
 // reduced spline to the p-s+3 coefficients d by a bidiagonal matrix B (rows [1 0..], then
 // (1-alpha, alpha) pairs, then [..0 1]). The best max-norm fit of d by B c equioscillates, so
 // the square system [B | (-1)^i] [c; h] = d gives the error |h| directly. The thesis listing
-// computed the residual of this square system instead, which is zero (note 000, section 1.7).
+// computed the residual of this square system instead, which is zero (Marcaly 1991, section 4.3).
 template <class V>
 double removalWeight(int degree, std::span<const double> knots, std::span<const V> points,
                      std::size_t sequences, std::size_t r, int s) {

@@ -80,7 +80,7 @@ static void labels_between(Pstore store) {
     pclose_struct();
 }
 
-/* The cases the ISO semantics audit found (issue 18). */
+/* The cases the ISO semantics audit found. */
 static void missing_structures(Pstore store) {
     EXPECT_NO_ERROR(pempty_struct(40)); /* creates it, empty */
     CHECK(status_of(40) == PSTRUCT_STATUS_EMPTY);

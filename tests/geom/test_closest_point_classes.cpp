@@ -236,8 +236,7 @@ std::vector<double> wideWeights(std::mt19937& rng, std::size_t count) {
 
 }  // namespace
 
-TEST_CASE("closest point on a degree-1 surface with a crease is the nearest (the issue's example)",
-          "[geom][inversion][classes]") {
+TEST_CASE("closest point on a degree-1 surface with a crease is the nearest ", "[geom][inversion][classes]") {
     const std::vector<double> knots{0, 0, 0.5, 1, 1};
     const double z[3][3] = {{-0.25, -0.25, -0.25}, {-0.75, 0.5, 0}, {-0.5, -1, 0.75}};
     std::vector<glm::dvec3> pts;

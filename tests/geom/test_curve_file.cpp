@@ -32,7 +32,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 
 }  // namespace
 
-TEST_CASE("the seed's RANDOM/CIRCLE sample file reads and interpolates", "[geom][crv]") {
+TEST_CASE("the ACSYNT thesis's RANDOM/CIRCLE sample file reads and interpolates", "[geom][crv]") {
     const CurveModel model = readCurveFile(kSample);
     REQUIRE(model.parts.size() == 2);
     const CurvePart& random = model.parts[0];

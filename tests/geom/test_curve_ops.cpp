@@ -109,7 +109,7 @@ TEST_CASE("reversal and reparameterisation", "[geom][reparameterize]") {
     REQUIRE(glm::length(evaluate(sm, 0.0, 15.0) - evaluate(s, 0.5, 0.5)) < 1e-12);
 }
 
-TEST_CASE("de Casteljau evaluation and subdivision (seed 002 identities)", "[geom][bezier]") {
+TEST_CASE("de Casteljau evaluation and subdivision (Molt 1994 identities)", "[geom][bezier]") {
     // Dyadic control points and parameters: only halvings are used, so the identities hold exactly.
     std::mt19937 rng(81);
     std::uniform_int_distribution<int> coord(-64, 64);
@@ -134,7 +134,7 @@ TEST_CASE("de Casteljau evaluation and subdivision (seed 002 identities)", "[geo
         };
         REQUIRE(std::max(spacing(Q), spacing(R)) <= 0.5 * spacing(P) + 1e-15);
     }
-    // Degree 99 (seed 002's blades): de Casteljau against the B-spline evaluation, and a split.
+    // Degree 99 (Molt's 1994 blades): de Casteljau against the B-spline evaluation, and a split.
     std::vector<double> knots(100, 0.0);
     knots.resize(200, 1.0);
     std::vector<glm::dvec3> points;

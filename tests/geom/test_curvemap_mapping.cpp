@@ -326,7 +326,7 @@ TEST_CASE("mapping reports what it cannot do and rejects bad input", "[geom][cur
     REQUIRE(r.parts[0].issues.size() == 1);
     CHECK_THAT(r.parts[0].issues[0], Catch::Contains("not closed"));
     // A circle wider than the fuselage leaves it at the silhouette, not at a boundary (the
-    // seed's unsolved Fig. 33 case): reported, not guessed.
+    // ACSYNT curve-mapping thesis's unsolved Fig. 33 case): reported, not guessed.
     std::vector<glm::dvec3> ring;
     for (int k = 0; k < 16; ++k) ring.push_back({7 * std::cos(k * 0.3927), 7 * std::sin(k * 0.3927), 0});
     const MapResult s = fuselage().map({polygonCurve(ring)}, at(3, 4.5), {});

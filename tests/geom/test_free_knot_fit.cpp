@@ -72,7 +72,7 @@ TEST_CASE("free-knot reduction leaves fewer control points than the removal loop
     struct Case {
         Curve curve;
         double tolerance;
-        std::size_t most;  // the issue's target: 0.8 x SISL s1940's count at this tolerance
+        std::size_t most;  // the target: 0.8 x SISL s1940's count at this tolerance
     };
     // At 1e-4 the airfoil's target is 53; its leading edge, pinned to the original's knots,
     // leaves 44 (51 with every knot free): 46 at most holds that gain.

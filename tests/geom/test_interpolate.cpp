@@ -33,7 +33,8 @@ InterpolationData randomPart() {
 
 }  // namespace
 
-TEST_CASE("interpolation knot count follows the seed's formula n + 6 + 2*C0 + C1", "[geom][interpolate]") {
+TEST_CASE("interpolation knot count follows the ACSYNT thesis's formula n + 6 + 2*C0 + C1",
+          "[geom][interpolate]") {
     using C = Continuity;
     CHECK(interpolationKnotCount({C::C2, C::C0, C::C1, C::C2, C::C2}, 5) == 14);
     CHECK(interpolationKnotCount({C::C2, C::C2, C::C2, C::C2, C::C2}, 5) == 11);

@@ -170,7 +170,7 @@ TEST_CASE("a line with no direction is refused", "[geom][intersect]") {
     REQUIRE_THROWS_WITH(intersectLine(sphere, {std::nan(""), 0, 0}, {0, 0, 1}), Catch::Contains("origin"));
 }
 
-TEST_CASE("lines hit a seed-002-sized Bezier patch of bidegree 99 x 10", "[geom][intersect]") {
+TEST_CASE("lines hit a Bezier patch of bidegree 99 x 10 (Molt 1994's size)", "[geom][intersect]") {
     std::mt19937 rng(77);
     std::uniform_real_distribution<double> unit(0.0, 1.0), noise(-0.01, 0.01);
     const std::size_t nu = 100, nv = 11;

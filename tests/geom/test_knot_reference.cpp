@@ -1,4 +1,4 @@
-// The reference cases of note 000 (Marcaly 1991, chapter 7) through the generators in
+// The reference cases of Marcaly (1991, chapter 7) through the generators in
 // geom/ReferenceShapes.h, with the thesis's figures as the bar to meet.
 
 #include "geom/DataReduction.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The layering rules of ../shared/DESIGN.md, checked on the sources: no phigs folder imports
+# The layering rules of ARCHITECTURE.md, checked on the sources: no phigs folder imports
 # one that imports it back (tsort finds any loop in the folder graph), only phigs/src/window
 # includes GLFW, and only phigs/vk (and the window's surface seam) includes Vulkan.
 set -euo pipefail

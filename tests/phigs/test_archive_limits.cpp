@@ -1,4 +1,4 @@
-// Archive files under limits (issue 22): a count is checked against the bytes left before room
+// Archive files under limits: a count is checked against the bytes left before room
 // is made for its items, a file over the size limit is refused before it is read and never
 // written, a refused retrieval leaves the store exactly as it was, writes are flushed to the
 // disk, and a temporary file left by a killed write is removed when the archive is opened.

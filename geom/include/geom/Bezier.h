@@ -11,7 +11,7 @@
 namespace geom {
 
 /// de Casteljau evaluation of a Bézier polygon at t in [0, 1] (any vector type: dvec2, dvec3,
-/// dvec4 for homogeneous points, double). Stable for any degree; seed 002 uses degree 99.
+/// dvec4 for homogeneous points, double). Stable for any degree; Molt (1994) uses degree 99.
 template <class V>
 V deCasteljau(std::span<const V> points, double t) {
     std::vector<V> work(points.begin(), points.end());

@@ -8,7 +8,7 @@
 
 namespace geom {
 
-/// When seed 002's recursive midpoint subdivision stops (Molt 1994, section 3.3.2).
+/// When Molt's recursive midpoint subdivision stops (Molt 1994, section 3.3.2).
 enum class StoppingRule {
     FixedDepth,            ///< stop at options.depth
     GlobalError,           ///< depth ceil(log2(M / tol)), M the largest spacing of the input net

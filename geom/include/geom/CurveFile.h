@@ -22,7 +22,8 @@ struct CurvePart {
     std::vector<glm::dvec3> constraints;  ///< 2 per C0 point, 1 per C1 point, in point order
 };
 
-/// A `.crv` curve model (seed 004 §7.2, Table 1): every part of one file, mapped together.
+/// A `.crv` curve model (the ACSYNT curve-mapping thesis, §7.2, Table 1): every part of one file, mapped
+/// together.
 struct CurveModel {
     std::vector<CurvePart> parts;
 };
@@ -53,7 +54,7 @@ CurveModel readCurveFile(const std::filesystem::path& path);
 /// Parses `.crv` text; `source` names it in error messages.
 CurveModel parseCurveFile(std::istream& in, const std::string& source);
 
-/// Writes the model in the seed's layout (exact round trip: 17 significant digits). Throws
+/// Writes the model in the thesis's layout (exact round trip: 17 significant digits). Throws
 /// GeometryError for a part that would not read back (unclosed, wrong constraint count).
 void writeCurveFile(const std::filesystem::path& path, const CurveModel& model);
 void writeCurveFile(std::ostream& out, const CurveModel& model);

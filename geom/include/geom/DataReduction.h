@@ -20,7 +20,7 @@ struct ReductionOptions {
     /// Knots taken from the ranking before the weights are computed again (the thesis used 5).
     int partitionSize = 5;
     /// Extra free coefficients on each side of the least-squares window (each removal is refitted
-    /// to the original on that window, so a wider one spreads the error; 4 measured best).
+    /// to the original on that window, so a wider one spreads the error).
     int margin = 4;
     /// In tolerance mode, knots whose weight exceeds weightCutoff * tolerance are not tried
     /// (they would fail), and where every knot left after the exact removals is past it, the
@@ -30,7 +30,7 @@ struct ReductionOptions {
     /// Curves in tolerance mode: after the knots that go exactly, search the control point count
     /// with free-knot fits (FreeKnotFit.h: the knots move, the samples slip along the curve,
     /// Lawson reweighting towards the best max-norm fit), each measured by CurveDeviationMeter;
-    /// 25-35% fewer control points than the removal loop on the reference curves. Where the
+    /// usually fewer control points than the removal loop. Where the
     /// curve looks refined from a few knots (its most significant knots fit nearly as well), or
     /// no count passes, the removal loop runs too and the fewer points win. false runs the
     /// removal loop alone. Surfaces and count mode always take the removal loop.
@@ -39,9 +39,9 @@ struct ReductionOptions {
     /// started from the last one's knots, take half).
     int freeKnotIterations = 16;
     /// The removal loop in tolerance mode (freeKnots false, or where it runs too): remove knots
-    /// in batches with one global banded least-squares refit per batch (about 1.5x fewer
-    /// instructions, but 5-10% more control points left on the reference curves); false (the
-    /// default) runs the group-at-a-time loop with local refits.
+    /// in batches with one global banded least-squares refit per batch (fewer fits, usually
+    /// more control points left); false (the default) runs the group-at-a-time loop with local
+    /// refits. Either way the result is within the tolerance.
     bool batch = false;
     /// Batch mode only: rounds of removal; between rounds, lawsonSteps reweighted refits even the
     /// error out (towards the best max-norm fit) and the knots that failed are tried again.

@@ -19,7 +19,7 @@ struct GridSample {
 /// The fast batch path: a surface evaluated on a tensor grid of parameters. Basis values and
 /// their derivatives are computed once per u value and once per v value, and for each u row
 /// the net is collapsed once into a row curve (and its u derivative), so a grid point costs a
-/// (degreeV+1)-term sum; the idea of seed 001's precomputed per-span matrices.
+/// (degreeV+1)-term sum; the idea of Pickelmann's (1985) precomputed per-span matrices.
 class GridEvaluator {
 public:
     explicit GridEvaluator(const Surface& surface);

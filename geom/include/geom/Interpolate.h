@@ -9,18 +9,18 @@
 
 namespace geom {
 
-/// How data points are given curve parameters (the seed's `param`: 1, 2, 3).
+/// How data points are given curve parameters (the ACSYNT curve-mapping thesis's `param`: 1, 2, 3).
 enum class Parameterization { Uniform = 1, ChordLength = 2, Centripetal = 3 };
 
-/// Continuity of the interpolating cubic at a data point (the seed's codes 0, 1, 2).
+/// Continuity of the interpolating cubic at a data point (the thesis's codes 0, 1, 2).
 enum class Continuity { C0 = 0, C1 = 1, C2 = 2 };
 
-/// Data for Fleming's constraint-based cubic interpolation (seed 004 §5.4.2): points, one
-/// continuity per point and the tangent constraints in point order (2 per C0 point: incoming
-/// then outgoing derivative; 1 per C1 point). Tangents are derivatives dC/dt in the chosen,
-/// un-normalised parameter (uniform: 1 per point, chord length: distance, centripetal: its
-/// square root). A closed curve repeats its first point at the end; that closing point takes
-/// its continuity and constraints from the first point.
+/// Data for Fleming's constraint-based cubic interpolation (the ACSYNT curve-mapping thesis, §5.4.2): points,
+/// one continuity per point and the tangent constraints in point order (2 per C0 point: incoming then
+/// outgoing derivative; 1 per C1 point). Tangents are derivatives dC/dt in the chosen, un-normalised
+/// parameter (uniform: 1 per point, chord length: distance, centripetal: its square root). A closed curve
+/// repeats its first point at the end; that closing point takes its continuity and constraints from the first
+/// point.
 struct InterpolationData {
     std::vector<glm::dvec3> points;
     std::vector<Continuity> continuities;  ///< empty: C2 everywhere
@@ -33,7 +33,7 @@ struct InterpolationData {
 /// counting the closing point of a closed curve like any other point).
 std::size_t constraintCount(const std::vector<Continuity>& continuities);
 
-/// The seed's knot count: points + 6 + 2 * (interior C0 points) + (interior C1 points), where
+/// The thesis's knot count: points + 6 + 2 * (interior C0 points) + (interior C1 points), where
 /// the end points of an open curve and the closing point of a closed one are not interior.
 std::size_t interpolationKnotCount(const std::vector<Continuity>& continuities, std::size_t pointCount);
 

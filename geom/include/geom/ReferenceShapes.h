@@ -10,7 +10,7 @@
 
 namespace geom {
 
-/// The thesis's "I-beam" test curve (note 000, section 3): y = 5 + (x^3 - x) sin(pi x / 180) / 7500
+/// The thesis's "I-beam" test curve (Marcaly 1991, chapter 7): y = 5 + (x^3 - x) sin(pi x / 180) / 7500
 /// sampled at controlPoints evenly spaced x from -180 to 180 and interpolated by a clamped cubic
 /// with uniform parameters (controlPoints control points, 401 in the thesis), in the z = 0 plane.
 Curve iBeamCurve(std::size_t controlPoints = 401);

@@ -28,7 +28,7 @@ double distanceToPolyline(const glm::dvec2& p, const std::vector<glm::dvec2>& po
 }
 
 /// Whether the step from points[i] to points[j] through `corner` and the loop between them
-/// stay within tol of each other, both ways. (This subsumes the seed's linear fit of the run:
+/// stay within tol of each other, both ways. (This subsumes the thesis's linear fit of the run:
 /// a step fits exactly where a straight run would, and also around an iso-parametric corner.)
 bool stepFits(const std::vector<glm::dvec2>& p, std::size_t i, std::size_t j, const glm::dvec2& corner,
               double tol) {

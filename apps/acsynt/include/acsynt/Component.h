@@ -20,7 +20,7 @@ struct Component {
     std::string name;
     ComponentKind kind = ComponentKind::Fuselage;
     glm::dvec3 colour{1.0};
-    bool closedU = false;  ///< the seed's open[0] == 1: periodic in u (never, for the shipped kinds)
+    bool closedU = false;  ///< ACSYNT's open[0] == 1: periodic in u (never, for the shipped kinds)
     bool closedW = false;  ///< periodic round the section (fuselage, nacelle)
     SectionGrid sections;
     std::vector<double> sectionParameters;  ///< u of each section

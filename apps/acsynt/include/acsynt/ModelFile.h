@@ -34,7 +34,7 @@ bool isValidName(std::string_view name);
 
 /// Limits of a description file (each a ModelFileError at the line that breaks it). The patch
 /// budget bounds what a model costs the session: every patch is a structure, a pick target and
-/// a tessellation, about 20 KB and 0.15 ms each.
+/// a tessellation.
 inline constexpr std::size_t kModelFileMaxBytes = 1u << 20;
 inline constexpr std::size_t kModelFileMaxLineLength = 4096;
 inline constexpr std::size_t kModelMaxComponents = 64;  ///< components in the file (mirrors not counted)

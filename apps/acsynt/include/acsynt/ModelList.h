@@ -8,11 +8,11 @@
 
 namespace acsynt {
 
-/// The seed's MODELS menu as plain data: the models in memory in order (an original and its
+/// ACSYNT's MODELS menu as plain data: the models in memory in order (an original and its
 /// reduced versions), one of them current. Each operation answers with the message-line text.
 class ModelList {
 public:
-    /// What an operation did and the message the seed shows for it.
+    /// What an operation did and the message ACSYNT shows for it.
     struct Outcome {
         bool done = false;
         std::string message;

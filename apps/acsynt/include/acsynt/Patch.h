@@ -10,7 +10,7 @@
 
 namespace acsynt {
 
-/// One knot-span piece of a bicubic component surface, with what the seed's PATCH_DATA keeps:
+/// One knot-span piece of a bicubic component surface, with what ACSYNT's PATCH_DATA keeps:
 /// its 8 + 8 local knots and 16 B-spline control points, the same piece as a Bezier hull, and
 /// the points and tangents the DEFINE POINT and mapping steps start from. The surface's v is w.
 struct Patch {
@@ -56,7 +56,7 @@ glm::dvec3 evaluatePatchHull(const Patch& patch, double u, double w);
 /// The patch's piece evaluated from its Bezier points (de Casteljau), (u, w) in surface parameters.
 glm::dvec3 evaluateBezierPatch(const Patch& patch, double u, double w);
 
-/// Power-basis coefficients of the piece (the seed's bicubic_coef): S = sum c[i * 4 + j] s^i t^j
+/// Power-basis coefficients of the piece (ACSYNT's bicubic_coef): S = sum c[i * 4 + j] s^i t^j
 /// with s = (u - u0) / (u1 - u0) and t = (w - w0) / (w1 - w0) in [0, 1].
 std::array<glm::dvec3, 16> powerBasisCoefficients(const Patch& patch);
 

@@ -374,7 +374,7 @@ void Session::padButton(int button) {
         return;
     }
     const double du = (p.u1 - p.u0) / 8, dw = (p.w1 - p.w0) / 8;
-    // Rows of the compass: w increases upwards, u to the right (seed Table 2).
+    // Rows of the compass: w increases upwards, u to the right (Table 2 of the ACSYNT curve-mapping thesis).
     static const int stepU[] = {-1, 0, 1, -1, 0, 1, -1, 0, 1};
     static const int stepW[] = {1, 1, 1, 0, 0, 0, -1, -1, -1};
     if (button == 5)

@@ -67,11 +67,11 @@ struct MapResult {
     std::vector<MappedPart> parts;
 };
 
-/// Maps plane curves onto one multi-patch surface (seed 004 Ch. 7-8, done robustly): places
-/// them at a reference point, projects them along the normal onto every patch (the hit nearest
-/// the curve point is kept, others reported), samples adaptively to a tolerance, finds exits
-/// and entries exactly on the boundary and closes each part's loops along it for any number
-/// of crossings. Built once per surface (the intersector's patch tree is reused).
+/// Maps plane curves onto one multi-patch surface (the ACSYNT curve-mapping thesis, Ch. 7-8, done robustly):
+/// places them at a reference point, projects them along the normal onto every patch (the hit nearest the
+/// curve point is kept, others reported), samples adaptively to a tolerance, finds exits and entries exactly
+/// on the boundary and closes each part's loops along it for any number of crossings. Built once per surface
+/// (the intersector's patch tree is reused).
 class CurveMapper {
 public:
     explicit CurveMapper(Surface surface, std::optional<bool> closedU = {}, std::optional<bool> closedW = {});

@@ -8,9 +8,9 @@
 
 namespace geom::curvemap {
 
-/// Where and how a plane curve is put on a surface (seed 004 §7.5): the reference point
-/// (u, w), FLIP (reverse the normal), ROTATE (quarter turns counter-clockwise about the
-/// normal) and an offset of the curve plane along the normal (the seed draws it "above").
+/// Where and how a plane curve is put on a surface (the ACSYNT curve-mapping thesis, §7.5): the reference
+/// point (u, w), FLIP (reverse the normal), ROTATE (quarter turns counter-clockwise about the normal) and an
+/// offset of the curve plane along the normal (the thesis draws it "above").
 struct Placement {
     glm::dvec2 reference{0.0};
     bool flipped = false;

@@ -6,9 +6,9 @@
 
 namespace geom::curvemap {
 
-/// The seed's "wave": an open bicubic surface over [-size/2, size/2]^2 (x, y) with heights
-/// amplitude * sin(2 pi x / wavelength) * cos(2 pi y / wavelength); uniform clamped knots
-/// 0..patchesU and 0..patchesV, so patch (i, j) is the unit square [i, i+1] x [j, j+1].
+/// The ACSYNT curve-mapping thesis's "wave": an open bicubic surface over [-size/2, size/2]^2 (x, y) with
+/// heights amplitude * sin(2 pi x / wavelength) * cos(2 pi y / wavelength); uniform clamped knots 0..patchesU
+/// and 0..patchesV, so patch (i, j) is the unit square [i, i+1] x [j, j+1].
 Surface makeWaveSurface(std::size_t patchesU = 8, std::size_t patchesV = 8, double size = 10.0,
                         double amplitude = 0.6, double wavelength = 5.0);
 

@@ -8,7 +8,7 @@
 
 namespace phigs {
 
-/// What INITIALIZE <device> sets: the initial measure, prompt/echo type, echo volume and the
+/// What `INITIALIZE <device>` sets: the initial measure, prompt/echo type, echo volume and the
 /// class's data record fields (only those of the device's class are used).
 struct DeviceInitialisation {
     Measure initial;

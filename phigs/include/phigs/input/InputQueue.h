@@ -23,7 +23,7 @@ struct QueueOverflow {
 };
 
 /// The PHIGS input queue shared by every workstation: event reports in arrival order with a
-/// bound, AWAIT EVENT, the current event report read by GET <device>, FLUSH DEVICE EVENTS, the
+/// bound, AWAIT EVENT, the current event report read by `GET <device>`, FLUSH DEVICE EVENTS, the
 /// overflow condition and simultaneous events.
 class InputQueue {
 public:
@@ -37,7 +37,7 @@ public:
     /// passes (a script's `wait` line counts as the timeout). nullopt: no event (class NONE).
     std::optional<EventReport> awaitEvent(std::chrono::milliseconds timeout);
 
-    /// GET <device>: the measure of the current event report; error 259 when the current report
+    /// `GET <device>`: the measure of the current event report; error 259 when the current report
     /// is of another class (or there is none).
     const Measure& currentMeasure(InputClass inputClass, const char* function) const;
     /// INQUIRE MORE SIMULTANEOUS EVENTS.

@@ -33,9 +33,9 @@ public:
 
     int workstation() const { return workstation_; }
 
-    /// INITIALIZE <class>: the device must be in REQUEST mode (251) and the setup valid.
+    /// `INITIALIZE <class>`: the device must be in REQUEST mode (251) and the setup valid.
     void initialise(InputClass inputClass, int device, DeviceInitialisation setup);
-    /// SET <class> MODE.
+    /// `SET <class> MODE`.
     void setMode(InputClass inputClass, int device, OperatingMode mode, EchoSwitch echo = EchoSwitch::Echo);
     /// SET PICK FILTER.
     void setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion);
@@ -45,12 +45,12 @@ public:
 
     /// SET PICK PATH DEPTH (0: the whole path).
     void setPickPathDepth(int device, int depth);
-    /// INQUIRE <class> DEVICE STATE.
+    /// `INQUIRE <class> DEVICE STATE`.
     const InputDevice& device(InputClass inputClass, int device) const;
 
-    /// REQUEST <class>: waits for the operator to trigger this device; status NONE on a break.
+    /// `REQUEST <class>`: waits for the operator to trigger this device; status NONE on a break.
     std::pair<InputStatus, Measure> request(InputClass inputClass, int device);
-    /// SAMPLE <class>: the device's current measure (device in SAMPLE mode, else 252).
+    /// `SAMPLE <class>`: the device's current measure (device in SAMPLE mode, else 252).
     const Measure& sample(InputClass inputClass, int device) const;
 
     /// Handles lines addressed to the application (script directives such as "snapshot").

@@ -17,13 +17,15 @@ namespace phigs {
 /// write is removed when the archive is opened.
 ///
 /// Format (version 1, text, UTF-8, tokens separated by white space):
+/// @verbatim
 ///   PHIGS-ARCHIVE 1
 ///   STRUCTURE <id> <element count>        one per structure, ascending id
 ///   <ELEMENT_TYPE_NAME> <fields...>       one line per element (names as in ISO 9592,
 ///                                         spaces written as '_', e.g. POLYLINE_3)
 ///   END <structure count> <checksum>      FNV-1a 64 of every byte before "END", in hex
+/// @endverbatim
 /// Fields: integers and reals in decimal (reals shortest round-trip), booleans 0/1, strings as
-/// <byte count>:<bytes>, lists as <count> then the items, points as x y z, matrices as 16
+/// `<byte count>:<bytes>`, lists as `<count>` then the items, points as x y z, matrices as 16
 /// reals column by column, colours as D r g b or I index, B-spline curves as degree, knots,
 /// points, weights. A file that does not parse, misses its END line or fails its checksum is
 /// refused with error 403 naming the file and the line.

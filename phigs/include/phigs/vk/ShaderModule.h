@@ -6,7 +6,7 @@
 
 namespace phigs::vk {
 
-/// A VkShaderModule made from a shader embedded at build time (shaders/<name>), destroyed with it.
+/// A VkShaderModule made from a shader embedded at build time (`shaders/<name>`), destroyed with it.
 class ShaderModule {
 public:
     ShaderModule(VkDevice device, std::string_view name);

@@ -20,7 +20,7 @@ struct DisplayStyle {
     int errorMapComponent = -1;  ///< hidden: its error colour map is drawn instead
 };
 
-/// The PHIGS structures of one model (the seed's acs_root, component acs_id, patch patch_strid
+/// The PHIGS structures of one model (ACSYNT's acs_root, component acs_id, patch patch_strid
 /// and hull_id): a root that executes one structure per component, which sets the component's
 /// attributes and executes one structure per patch; each patch structure holds the patch as a
 /// NON-UNIFORM B-SPLINE SURFACE (its 8 + 8 local knots and 4 x 4 hull, so picks report the

@@ -41,7 +41,7 @@ struct SessionSettings {
     /// program; its --keep-going carries on).
     bool stopAtFirstError = false;
     /// FILE > HARDCOPY and `hardcopy` write vector files; false refuses them (the session fuzz
-    /// target: a shaded PDF of the transport takes about 17 s under the sanitizers).
+    /// target, where a shaded PDF of a whole model takes too long under the sanitizers).
     bool vectorHardcopies = true;
 };
 

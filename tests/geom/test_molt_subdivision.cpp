@@ -1,5 +1,5 @@
-// Seed 002 (Molt 1994): adaptive midpoint subdivision of Bézier patches and its tree invariants
-// (notes/002.md section 5).
+// C. Molt, Implementation Aspects of Bézier Surfaces to Model Complex Geometric Forms (1994):
+// adaptive midpoint subdivision of Bézier patches and its tree invariants (chapter 3).
 #include "geom/Bezier.h"
 #include "geom/BezierSubdivision.h"
 #include "geom/GeometryError.h"
@@ -43,7 +43,7 @@ void requireTreeInvariants(const SubdivisionStats& s, std::size_t pointsPerLeaf)
 
 }  // namespace
 
-TEST_CASE("fixed-depth subdivision: 4^k leaves and the blade point counts", "[geom][seed002]") {
+TEST_CASE("fixed-depth subdivision: 4^k leaves and the blade point counts", "[geom][molt]") {
     std::mt19937 rng(2);
     for (int k = 0; k <= 3; ++k) {
         const auto net = bladeNet(rng, 4, 4);
@@ -66,7 +66,7 @@ TEST_CASE("fixed-depth subdivision: 4^k leaves and the blade point counts", "[ge
     }
 }
 
-TEST_CASE("adaptive subdivision keeps the invariants and the surface", "[geom][seed002]") {
+TEST_CASE("adaptive subdivision keeps the invariants and the surface", "[geom][molt]") {
     std::mt19937 rng(3);
     const std::size_t nu = 12, nv = 6;  // bidegree (11, 5)
     const auto net = bladeNet(rng, nu, nv);

@@ -1,4 +1,5 @@
-// Worked data of seed 001 (Pickelmann 1985) as checked in notes/001.md section 6.
+// Worked data of M. N. Pickelmann, The Design of Rational B-spline Algorithms for Interactive
+// Color Shading of Surfaces (1985): label matrices and Appendices A and E, checked exactly.
 #include "geom/Basis.h"
 #include "geom/BezierExtraction.h"
 #include "geom/Evaluate.h"
@@ -31,7 +32,7 @@ std::array<std::array<double, 4>, 4> labelMatrix(const std::array<double, 6>& ef
 
 }  // namespace
 
-TEST_CASE("seed 001 label matrices of the cubic basis", "[geom][seed001]") {
+TEST_CASE("Pickelmann 1985 label matrices of the cubic basis", "[geom][pickelmann]") {
     struct Label {
         int label;
         std::array<double, 6> knots;
@@ -54,7 +55,7 @@ TEST_CASE("seed 001 label matrices of the cubic basis", "[geom][seed001]") {
     }
 }
 
-TEST_CASE("seed 001 Appendix A: cubic on T = [0 0 0 0 1 .. 8 9 9 9 9]", "[geom][seed001]") {
+TEST_CASE("Pickelmann 1985 Appendix A: cubic on T = [0 0 0 0 1 .. 8 9 9 9 9]", "[geom][pickelmann]") {
     const std::vector<double> T{0, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 9, 9, 9};
     const std::vector<glm::dvec3> xy{{-0.1490382E-01, 0.2372459E+01, 0},  {-0.1279431E+01, 0.2134099E+01, 0},
                                      {-0.1903875E+01, -0.1257925E+01, 0}, {0.1243925E+01, -0.7112664E+00, 0},
@@ -78,7 +79,7 @@ TEST_CASE("seed 001 Appendix A: cubic on T = [0 0 0 0 1 .. 8 9 9 9 9]", "[geom][
     }
 }
 
-TEST_CASE("seed 001 Appendix E: Bezier form of the non-uniform curve", "[geom][seed001]") {
+TEST_CASE("Pickelmann 1985 Appendix E: Bezier form of the non-uniform curve", "[geom][pickelmann]") {
     const Curve c(
         3, {0, 0, 0, 0, 0.3, 0.75, 1.0, 1.66, 1.66, 1.66, 1.66},
         {{0, 0, 0}, {0.5, 1, 0}, {1, 0.5, 0}, {1.5, 0.25, 0}, {2, 0.5, 0}, {2.5, 1, 0}, {3, 0.75, 0}});

@@ -1,0 +1,171 @@
+#!/usr/bin/env bash
+# Runs the benchmarks (or takes their output from a directory), keeps each one's final JSON
+# object in bench/results/NAME.json with the date and the machine added, and rewrites the
+# tables of bench/README.md (between <!-- bench:NAME --> and <!-- /bench:NAME -->) from them.
+#
+#   scripts/bench.sh [--build DIR] [--from DIR] [--tables-only] [NAME...]
+#
+# NAME: geom_kernel knot_removal curvemap render store pick acsynt_loft (default: all).
+# --build DIR    where the bench_* programs are (default build/bench; build them first with
+#                cmake --build build --target bench_NAME).
+# --from DIR     do not run: take DIR/NAME.json, or the last line of DIR/NAME.log or
+#                DIR/bench_NAME.log that is a JSON object (a run's saved output).
+# --tables-only  run nothing: rewrite the README's tables from bench/results/*.json.
+# Only awk and coreutils are needed. Fails when a program's output does not end with one
+# JSON object.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+all=(geom_kernel knot_removal curvemap render store pick acsynt_loft)
+build=build/bench from="" tables_only=0 names=()
+while (($#)); do
+  case $1 in
+    --build) build=$2; shift 2 ;;
+    --from) from=$2; shift 2 ;;
+    --tables-only) tables_only=1; shift ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    -*) echo "bench.sh: unknown option $1" >&2; exit 2 ;;
+    *) names+=("$1"); shift ;;
+  esac
+done
+((${#names[@]})) || names=("${all[@]}")
+results=bench/results
+mkdir -p "$results"
+
+# The machine in words, without commas (it goes into a JSON string).
+machine() {
+  local cpu cores
+  cpu=$(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo 2>/dev/null || true)
+  cores=$(nproc 2>/dev/null || echo "?")
+  echo "${cpu:-unknown CPU} (${cores} cores) $(uname -sr)" | tr -d ',"'
+}
+
+# The last line of a file that is one JSON object; fails naming the file otherwise.
+last_object() {
+  local line
+  line=$(grep -E '^[[:space:]]*\{.*\}[[:space:]]*$' "$1" | tail -n 1 || true)
+  if [ -z "$line" ]; then
+    echo "bench.sh: $1 does not end with a JSON object" >&2
+    return 1
+  fi
+  local last
+  last=$(grep -v '^[[:space:]]*$' "$1" | tail -n 1)
+  if [ "$last" != "$line" ]; then
+    echo "bench.sh: $1: the JSON object is not the last line" >&2
+    return 1
+  fi
+  echo "$line"
+}
+
+# Adds "date", "machine" and the load average at the start in front of an object that lacks them.
+stamp() {
+  local object=$1
+  if [[ $object == *'"date"'* ]]; then
+    echo "$object"
+  else
+    local load
+    load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
+    echo "{\"date\": \"$(date -u +%Y-%m-%d)\", \"machine\": \"$(machine)\", \"load_average\": \"$load\", ${object#\{}"
+  fi
+}
+
+if ((!tables_only)); then
+  for name in "${names[@]}"; do
+    if [ -n "$from" ]; then
+      source=""
+      for candidate in "$from/$name.json" "$from/$name.log" "$from/bench_$name.log"; do
+        if [ -f "$candidate" ]; then source=$candidate; break; fi
+      done
+      [ -n "$source" ] || { echo "bench.sh: no $name.json or $name.log in $from" >&2; exit 1; }
+    else
+      program=$build/bench_$name
+      [ -x "$program" ] || { echo "bench.sh: $program is not built (cmake --build build --target bench_$name)" >&2; exit 1; }
+      source=$(mktemp)
+      echo "bench.sh: running $program" >&2
+      # From the program's folder: some find their data relative to their source file.
+      (cd "$(dirname "$program")" && "./$(basename "$program")") >"$source"
+    fi
+    object=$(last_object "$source")
+    stamp "$object" >"$results/$name.json"
+    echo "bench.sh: $results/$name.json" >&2
+  done
+fi
+
+# Table layouts: rows (key prefixes; "-" = none) | columns (key suffixes, key=Label with _ for
+# blanks) | run-wide figures named in the date line.
+layout() {
+  case $1 in
+    geom_kernel) echo "poly rational degree1 deg2x5_double_knots wide_weights periodic_tube|grid_fast_ns_per_point=fast_grid_ns grid_plain_ns_per_point=plain_ns sisl_s1421_ns_per_point=SISL_s1421_ns plain_vs_s1421=plain/s1421 intersect_us_per_query=intersect_µs sisl_s1856_us_per_query=SISL_s1856_µs intersect_speedup_vs_s1856=speed-up closest_us_per_query=closest_µs sisl_s1958_us_per_query=SISL_s1958_µs closest_speedup_vs_s1958=speed-up closest_farther_than_foot=farther_than_foot sisl_closest_farther_than_foot=SISL_farther|wall_seconds cpu_seconds" ;;
+    knot_removal) echo "ibeam_tol1.0e-02 ibeam_tol1.2e-03 ibeam_tol1.0e-03 ibeam_tol1.0e-04 airfoil_tol1.0e-02 airfoil_tol1.2e-03 airfoil_tol1.0e-03 airfoil_tol1.0e-04|geom_control_points=geom_CPs geom_max_error=geom_error geom_ms sisl_control_points=SISL_CPs sisl_max_error=SISL_error sisl_ms=SISL_ms geom_loop_control_points=loop_CPs geom_loop_max_error=loop_error geom_loop_ms=loop_ms|wall_seconds cpu_seconds" ;;
+    curvemap) echo "wave wing|tolerance_model_units=tolerance adaptive_ms adaptive_projections adaptive_max_deviation seed10_ms=10_per_segment_ms seed10_max_deviation=10_per_segment_deviation fixed_equal_per_segment=equal_deviation_per_segment fixed_equal_ms=equal_deviation_ms fixed_equal_projections=equal_deviation_projections|" ;;
+    render) echo "-|triangles iso_line_segments toolkit_frame_ms baseline_frame_ms toolkit_over_baseline=ratio_wall toolkit_over_baseline_cpu=ratio_CPU edit_one_structure_frame_ms=edit_frame_ms edit_uploaded_bytes unchanged_frame_uploads|width_px height_px" ;;
+    store) echo "-|elements inserts_per_s traversal_ns_per_element incremental_unchanged_ns_per_element=unchanged_ns_per_element resident_bytes_per_element payload_bytes_per_element first_traversal_cpu_s edit_surface_retraversed_elements=edit_retraversed edit_surface_retessellated_surfaces=edit_retessellated edit_surface_update_cpu_s=edit_update_cpu_s|structures" ;;
+    pick) echo "-|patches picks agree_with_brute_force=same_hit pick_median_us pick_p99_us brute_median_us brute_p99_us pick_with_mesh_median_us pick_with_mesh_p99_us|" ;;
+    acsynt_loft) echo "transport fighter|load_loft_ms=load_and_loft_ms patches|" ;;
+    *) echo "bench.sh: no table layout for $1" >&2; return 1 ;;
+  esac
+}
+
+# One dated markdown table from a results file and a layout.
+table() {
+  awk -v spec="$2" '
+    function label(s) { gsub(/_/, " ", s); return s }
+    # Reals to three significant digits (whole numbers from 100 up); integers and text as they are.
+    function shown(x) {
+      if (x ~ /^-?[0-9]+$/ || x !~ /^-?[0-9.]+([eE][-+]?[0-9]+)?$/) return x
+      return (x + 0 >= 100 || x + 0 <= -100) ? sprintf("%.0f", x) : sprintf("%.3g", x)
+    }
+    {
+      text = text $0
+    }
+    END {
+      while (match(text, /"[^"]+": *("[^"]*"|[^,}]+)/)) {
+        pair = substr(text, RSTART, RLENGTH); text = substr(text, RSTART + RLENGTH)
+        key = substr(pair, 2); sub(/".*/, "", key)
+        value = pair; sub(/^"[^"]+": */, "", value); gsub(/^"|"$/, "", value); gsub(/ +$/, "", value)
+        v[key] = value
+      }
+      split(spec, part, "|"); nr = split(part[1], rows, " "); nc = split(part[2], cols, " ")
+      nw = split(part[3], wide, " ")
+      line = "Run of " v["date"] " on " v["machine"]
+      for (i = 1; i <= nw; i++) if (wide[i] in v) line = line ", " label(wide[i]) " " v[wide[i]]
+      if ("load_average" in v) line = line ", load average " v["load_average"]
+      if ("note" in v) line = line " (" v["note"] ")"
+      print line "."
+      print ""
+      header = "|"; rule = "|"
+      if (!(nr == 1 && rows[1] == "-")) { header = header " |"; rule = rule "---|" }
+      for (c = 1; c <= nc; c++) {
+        name = cols[c]; text = name
+        if (index(name, "=")) { text = substr(name, index(name, "=") + 1); cols[c] = substr(name, 1, index(name, "=") - 1) }
+        header = header " " label(text) " |"; rule = rule "---|"
+      }
+      print header; print rule
+      for (r = 1; r <= nr; r++) {
+        prefix = rows[r] == "-" ? "" : rows[r] "_"; out = "|"; any = 0
+        if (rows[r] != "-") out = out " " label(rows[r]) " |"
+        for (c = 1; c <= nc; c++) {
+          k = prefix cols[c]
+          if (k in v) { out = out " " shown(v[k]) " |"; any = 1 } else out = out " - |"
+        }
+        if (any) print out
+      }
+    }' "$1"
+}
+
+# Rewrites each marked block of the README whose results file exists.
+readme=bench/README.md
+for name in "${all[@]}"; do
+  file=$results/$name.json
+  [ -f "$file" ] || continue
+  grep -q "<!-- bench:$name -->" "$readme" || { echo "bench.sh: no <!-- bench:$name --> block in $readme" >&2; exit 1; }
+  block=$(mktemp)
+  table "$file" "$(layout "$name")" >"$block"
+  awk -v name="$name" -v block="$block" '
+    $0 == "<!-- bench:" name " -->" { print; while ((getline line < block) > 0) print line; skip = 1; next }
+    $0 == "<!-- /bench:" name " -->" { skip = 0 }
+    !skip' "$readme" >"$readme.tmp"
+  mv "$readme.tmp" "$readme"
+  rm -f "$block"
+done
+echo "bench.sh: tables of $readme rewritten" >&2
