@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <mutex>
 #include <stdexcept>
 
@@ -15,8 +16,20 @@ namespace {
 std::mutex glfwMutex;
 int glfwUsers = 0;
 
-void acquireGlfw() {
+/// X11 reads the display from DISPLAY when GLFW starts; one display for the whole process.
+void chooseDisplay(const std::string& display) {
+    if (display.empty()) return;
+    const char* current = std::getenv("DISPLAY");
+    if (glfwUsers > 0 && display != (current ? current : ""))
+        throw std::invalid_argument("GLFW: windows are open on display '" +
+                                    std::string(current ? current : "") +
+                                    "'; one process uses one display, not also '" + display + "'");
+    setenv("DISPLAY", display.c_str(), 1);
+}
+
+void acquireGlfw(const std::string& display) {
     std::lock_guard lock(glfwMutex);
+    chooseDisplay(display);
     if (glfwUsers == 0 && !glfwInit()) {
         const char* reason = nullptr;
         glfwGetError(&reason);
@@ -33,11 +46,12 @@ void releaseGlfw() {
 
 }  // namespace
 
-GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title) {
+GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title,
+                       const std::string& display) {
     if (width == 0 || height == 0 || width > 16384 || height > 16384)
         throw std::invalid_argument("GlfwWindow: a window of " + std::to_string(width) + " x " +
                                     std::to_string(height) + " pixels (1..16384 each)");
-    acquireGlfw();
+    acquireGlfw(display);
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
