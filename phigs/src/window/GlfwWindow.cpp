@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace phigs {
 namespace {
@@ -17,24 +19,28 @@ std::mutex glfwMutex;
 int glfwUsers = 0;
 
 /// X11 reads the display from DISPLAY when GLFW starts; one display for the whole process.
-void chooseDisplay(const std::string& display) {
-    if (display.empty()) return;
+/// Answers the DISPLAY to restore when GLFW then fails to start (none: nothing to restore).
+std::optional<std::string> chooseDisplay(const std::string& display) {
+    if (display.empty()) return std::nullopt;
     const char* current = std::getenv("DISPLAY");
-    if (glfwUsers > 0 && display != (current ? current : ""))
-        throw std::invalid_argument("GLFW: windows are open on display '" +
-                                    std::string(current ? current : "") +
+    const std::string was = current ? current : "";
+    if (glfwUsers > 0 && display != was)
+        throw std::invalid_argument("GLFW: windows are open on display '" + was +
                                     "'; one process uses one display, not also '" + display + "'");
     setenv("DISPLAY", display.c_str(), 1);
+    return was;
 }
 
 void acquireGlfw(const std::string& display) {
     std::lock_guard lock(glfwMutex);
-    chooseDisplay(display);
+    const std::optional<std::string> previous = chooseDisplay(display);
     if (glfwUsers == 0 && !glfwInit()) {
         const char* reason = nullptr;
         glfwGetError(&reason);
-        throw std::runtime_error(std::string("GLFW: cannot initialise (no display?): ") +
-                                 (reason ? reason : "unknown reason"));
+        const std::string why = reason ? reason : "unknown reason";
+        if (previous) setenv("DISPLAY", previous->c_str(), 1);
+        throw std::runtime_error("GLFW: cannot initialise (no display" +
+                                 (display.empty() ? std::string() : " '" + display + "'") + "?): " + why);
     }
     ++glfwUsers;
 }

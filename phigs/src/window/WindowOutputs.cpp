@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 namespace phigs {
 
@@ -49,7 +50,11 @@ void registerWindowOutputs(OutputRegistry& registry, const vk::ContextSettings& 
         [program, context](Workstation& ws,
                            const OutputConnection& connection) -> std::unique_ptr<WorkstationOutput> {
             if (program && connection.settings.has_value()) return program(ws, connection);
-            return std::make_unique<OwnWindowOutput>(ws, connection, context);
+            try {
+                return std::make_unique<OwnWindowOutput>(ws, connection, context);
+            } catch (const std::invalid_argument& e) {  // a second display, a bad size
+                throw ConnectionRefused(e.what());
+            }
         });
 }
 
