@@ -7,6 +7,7 @@
 #include "geom/exchange/ExchangeError.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/vk/Context.h"
+#include "phigs/vk/Outputs.h"
 #include "phigs/vk/WorkstationDisplay.h"
 
 #ifdef ACSYNT_HAVE_WINDOW
@@ -283,20 +284,17 @@ bool importFirst(acsynt::Session& session, const Options& o) {
 int runSession(const Options& options, acsynt::SessionSettings settings) {
     phigs::vk::ContextSettings defaults;
     defaults.validation = false;  // speed; PHIGS_VK_VALIDATION=1 turns it on
-    phigs::vk::DisplaySettings surface;
-    surface.width = std::uint32_t(settings.width);
-    surface.height = std::uint32_t(settings.height);
+    const auto width = std::uint32_t(settings.width), height = std::uint32_t(settings.height);
     std::unique_ptr<phigs::InputSource> source;
 #ifdef ACSYNT_HAVE_WINDOW
     std::unique_ptr<phigs::GlfwWindow> window;
 #endif
     if (options.window) {
 #ifdef ACSYNT_HAVE_WINDOW
-        window = std::make_unique<phigs::GlfwWindow>(surface.width, surface.height, "ACSYNT B-SPLINE MODULE");
+        window = std::make_unique<phigs::GlfwWindow>(width, height, "ACSYNT B-SPLINE MODULE");
         source = std::make_unique<phigs::GlfwInputSource>(*window);
         settings.workstationType = phigs::WorkstationType::Window;
         defaults.device = phigs::vk::DevicePreference::Hardware;
-        surface.window = window.get();
 #else
         std::cerr << "acsynt: built without the GLFW window source\n";
         return kExitUsage;
@@ -305,10 +303,20 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
         source = std::make_unique<phigs::ScriptInputSource>(
             phigs::ScriptInputSource::fromFile(options.script, acsynt::Session::directives()));
     }
-    acsynt::Session session(settings, *source);
     phigs::vk::ContextSettings context = phigs::vk::ContextSettings::fromEnvironment(defaults);
     context.printMessages = context.validation;
-    phigs::vk::WorkstationDisplay display(session.workstation(), context, surface);
+    // OPEN WORKSTATION makes the output (the one presentation path): an offscreen image, or
+    // the window target in the program's window.
+    settings.registerOutputs = [&](phigs::OutputRegistry& outputs) {
+        phigs::vk::registerOutputs(outputs, context);
+    };
+    settings.connection.width = width;
+    settings.connection.height = height;
+#ifdef ACSYNT_HAVE_WINDOW
+    if (window) settings.connection.settings = static_cast<phigs::vk::WindowSurface*>(window.get());
+#endif
+    acsynt::Session session(settings, *source);
+    phigs::vk::WorkstationDisplay& display = phigs::vk::WorkstationDisplay::of(session.workstation());
     session.setSnapshot([&](const std::filesystem::path& file) { phigs::writePng(display.capture(), file); });
     if (!importFirst(session, options)) return kExitFatal;
     if (!options.window) {

@@ -30,19 +30,49 @@ StructureStore& Phigs::store() {
     return store_;
 }
 
-Workstation& Phigs::openWorkstation(int id, WorkstationType type) {
+Workstation& Phigs::openWorkstation(int id, WorkstationType type, const OutputConnection& connection) {
     const char* function = "OPEN WORKSTATION";
     requireOpen(function);
+    if (!isWorkstationType(type))
+        raise(&log_, errors::BadWorkstationType, function,
+              "workstation type " + std::to_string(static_cast<int>(type)));
     if (workstations_.contains(id))
         raise(&log_, errors::WorkstationIdInUse, function, "workstation " + std::to_string(id));
+    auto ws = std::make_unique<Workstation>(id, type, store_, &log_);
+    ws->setConnectionIdentifier(connection.identifier);
+    if (const OutputFactory* factory = outputs_.find(type)) {
+        const std::string which =
+            "workstation " + std::to_string(id) + " (" + std::string(ws->description().name) + "): ";
+        try {
+            ws->ownOutput((*factory)(*ws, connection));
+        } catch (const ConnectionRefused& e) {
+            raise(&log_, errors::ConnectionNotRecognized, function, which + e.what());
+        } catch (const Error&) {
+            throw;
+        } catch (const std::exception& e) {
+            raise(&log_, errors::WorkstationCannotOpen, function, which + e.what());
+        }
+    }
     auto& slot = workstations_[id];
-    slot = std::make_unique<Workstation>(id, type, store_, &log_);
+    slot = std::move(ws);
     return *slot;
 }
 
 void Phigs::closeWorkstation(int id) {
-    workstation(id);
+    Workstation& ws = workstation(id);
+    std::string failure;
+    try {
+        ws.closeOutput();
+    } catch (const Error&) {
+        workstations_.erase(id);
+        throw;
+    } catch (const std::exception& e) {
+        failure = e.what();
+    }
     workstations_.erase(id);
+    if (!failure.empty())
+        raise(&log_, errors::WriteError, "CLOSE WORKSTATION",
+              "workstation " + std::to_string(id) + ": " + failure);
 }
 
 Workstation& Phigs::workstation(int id) {

@@ -215,11 +215,14 @@ TEST_CASE("deferral and modification modes, the state of visual representation, 
 TEST_CASE("workstation types and their descriptions", "[ws]") {
     Phigs phigs;
     phigs.open();
+    // The offscreen image is OUTIN: its input comes from a script source (headless programs).
     CHECK(phigs.openWorkstation(1, WorkstationType::OffscreenImage).description().category ==
-          WorkstationCategory::Output);
+          WorkstationCategory::OutIn);
     CHECK(phigs.openWorkstation(2, WorkstationType::Window).description().category ==
           WorkstationCategory::OutIn);
     CHECK(phigs.openWorkstation(3, WorkstationType::Hardcopy).description().name == "hardcopy");
+    CHECK(phigs.workstation(3).description().category == WorkstationCategory::Output);
+    CHECK(describeWorkstationType(WorkstationType::PdfFile).category == WorkstationCategory::Output);
     CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 2, 3});
     phigs.workstation(1).postStructure(5, 0.5);
     phigs.workstation(3).postStructure(5, 0.1);

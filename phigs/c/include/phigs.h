@@ -453,10 +453,60 @@ typedef union {
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
 typedef struct Phigs_store* Pstore;
 
+/* ---- workstations: types, states and tables */
+typedef enum { PWS_ST_WSCL, PWS_ST_WSOP } Pws_st;
+typedef enum { PCAT_OUT, PCAT_IN, PCAT_OUTIN, PCAT_MO, PCAT_MI } Pws_cat;
+typedef enum { PFLAG_POSTPONE, PFLAG_PERFORM } Pregen_flag;
+typedef enum { PFLAG_COND, PFLAG_ALWAYS } Pctrl_flag;
+typedef struct {
+    Pint id;
+    Pfloat disp_pri;
+} Pposted_struct;
+typedef struct {
+    Pint num_postings;
+    Pposted_struct* postings;
+} Pposted_struct_list;
+typedef struct {
+    Pmatrix3 ori_matrix; /* world coordinates -> view reference coordinates */
+    Pmatrix3 map_matrix; /* view reference coordinates -> NPC */
+    Plimit3 clip_limit;  /* NPC */
+    Pclip_ind xy_clip, back_clip, front_clip;
+} Pview_rep3;
+typedef struct {
+    Pmatrix ori_matrix;
+    Pmatrix map_matrix;
+    Plimit clip_limit;
+    Pclip_ind xy_clip;
+} Pview_rep;
+
+/* The workstation types of this implementation (pinq_list_avail_ws_types lists them and
+ * pinq_ws_cat answers their category). The connection identifier popen_ws takes is a
+ * NUL-terminated string whose meaning depends on the type:
+ *   PWST_OFFSCREEN  OUTIN, a Vulkan image drawn by lavapipe, needing no display: NULL, or the
+ *                   name of a PNG file written at every pupd_ws/predraw_all_structs and at
+ *                   pclose_ws;
+ *   PWST_WINDOW     OUTIN, a window of its own: NULL ($DISPLAY) or an X display name;
+ *   PWST_PNG        OUTPUT, raster hardcopy: the PNG file name (required, error 50 without);
+ *   PWST_PDF, PWST_SVG, PWST_EPS  OUTPUT, vector hardcopy (every primitive a vector path, A4
+ *                   landscape, device units are points): the file name (required, error 50),
+ *                   rewritten at every update and complete at pclose_ws.
+ * The Vulkan types read PHIGS_VK_DEVICE=lavapipe|hardware (default lavapipe) and
+ * PHIGS_VK_VALIDATION=1 (validation layer on, every message printed to stderr). */
+#define PWST_OFFSCREEN 1
+#define PWST_WINDOW 2
+#define PWST_PNG 3
+#define PWST_PDF 4
+#define PWST_SVG 5
+#define PWST_EPS 6
+
 /* ISO function identifiers (the error handler's func_num). */
 enum {
     Pfn_open_phigs = 0,
     Pfn_close_phigs = 1,
+    Pfn_open_ws = 2,
+    Pfn_close_ws = 3,
+    Pfn_redraw_all_structs = 4,
+    Pfn_upd_ws = 5,
     Pfn_message = 7,
     Pfn_polyline3 = 8,
     Pfn_polyline = 9,
@@ -519,6 +569,12 @@ enum {
     Pfn_set_model_clip_ind = 80,
     Pfn_restore_model_clip_vol = 81,
     Pfn_set_view_ind = 82,
+    Pfn_set_view_rep3 = 83,
+    Pfn_set_view_rep = 84,
+    Pfn_set_ws_win3 = 86,
+    Pfn_set_ws_win = 87,
+    Pfn_set_ws_vp3 = 88,
+    Pfn_set_ws_vp = 89,
     Pfn_open_struct = 90,
     Pfn_close_struct = 91,
     Pfn_exec_struct = 92,
@@ -555,6 +611,9 @@ enum {
     Pfn_del_structs_ar = 126,
     Pfn_del_struct_nets_ar = 127,
     Pfn_del_all_structs_ar = 128,
+    Pfn_post_struct = 111,
+    Pfn_unpost_struct = 112,
+    Pfn_unpost_all_structs = 113,
     Pfn_set_pick_id = 129,
     Pfn_set_err_hand_mode = 179,
     Pfn_escape = 180,
@@ -740,6 +799,31 @@ void peval_view_ori_matrix(const Ppoint* vrp, const Pvec* vup, Pint* err_ind, Pm
 void peval_view_map_matrix3(const Pview_map3* map, Pint* err_ind, Pmatrix3 view_map_matrix);
 void peval_view_map_matrix(const Pview_map* map, Pint* err_ind, Pmatrix view_map_matrix);
 
+/* ---- workstations (errors 3: no workstation open, 54: this one not open) */
+/* OPEN WORKSTATION: errors 2, 52 (type not one of PWST_*), 53 (identifier in use), 50 (the type
+ * needs a file name and conn_id is NULL or empty), 55 (the target could not be made, e.g. no
+ * Vulkan device or no display). conn_id: see PWST_* above. */
+void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type);
+/* CLOSE WORKSTATION: a file type writes its last picture first (903 when that fails). */
+void pclose_ws(Pint ws_id);
+/* POST STRUCTURE: priority in [0, 1] (208); a structure that does not exist is created empty. */
+void ppost_struct(Pint ws_id, Pint struct_id, Pfloat priority);
+void punpost_struct(Pint ws_id, Pint struct_id);
+void punpost_all_structs(Pint ws_id);
+/* REDRAW ALL STRUCTURES and UPDATE WORKSTATION (PERFORM) draw the picture on the target. */
+void predraw_all_structs(Pint ws_id, Pctrl_flag ctrl_flag);
+void pupd_ws(Pint ws_id, Pregen_flag regen_flag);
+/* Workstation window (NPC: 151, 156) and viewport (device coordinates: 152, 157); the 2D forms
+ * keep z. */
+void pset_ws_win3(Pint ws_id, const Plimit3* ws_win_lim);
+void pset_ws_win(Pint ws_id, const Plimit* ws_win_lim);
+void pset_ws_vp3(Pint ws_id, const Plimit3* ws_vp_lim);
+void pset_ws_vp(Pint ws_id, const Plimit* ws_vp_lim);
+/* SET VIEW REPRESENTATION: index >= 1 (115), table size 32 (150); the 2D form clips z to
+ * [0, 1] with front and back clipping off. */
+void pset_view_rep3(Pint ws_id, Pint view_ind, const Pview_rep3* view_rep);
+void pset_view_rep(Pint ws_id, Pint view_ind, const Pview_rep* view_rep);
+
 /* ---- inquiries: they never call the error handler; *err_ind is 0 or the error number */
 void pinq_struct_st(Pstruct_st* struct_st);
 void pinq_ar_st(Par_st* ar_st);
@@ -766,6 +850,18 @@ void pinq_all_conf_structs(Pint ar_id, Pint num_elems_appl_list, Pint start_ind,
                            Pint_list* ids, Pint* num_elems_impl_list);
 void pinq_conf_structs_net(Pint ar_id, Pint struct_id, Pstruct_net_source source, Pint num_elems_appl_list,
                            Pint start_ind, Pint* err_ind, Pint_list* ids, Pint* num_elems_impl_list);
+
+/* Workstation inquiries. pinq_ws_conn_type answers the connection identifier popen_ws was
+ * given (NULL for none; the string lives in the store) and the type. */
+void pinq_ws_st(Pws_st* ws_state);
+void pinq_open_wss(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* open_ws_ids,
+                   Pint* num_elems_impl_list);
+void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err_ind, const char** conn_id, Pint* ws_type);
+void pinq_posted_structs(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                         Pposted_struct_list* posted_structs, Pint* num_elems_impl_list);
+void pinq_list_avail_ws_types(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* ws_types,
+                              Pint* num_elems_impl_list);
+void pinq_ws_cat(Pint ws_type, Pint* err_ind, Pws_cat* ws_cat);
 
 #ifdef __cplusplus
 }

@@ -10,6 +10,19 @@ const std::map<int, const char*>& names() {
     static const std::map<int, const char*> table = {
         {Pfn_open_phigs, "OPEN PHIGS"},
         {Pfn_close_phigs, "CLOSE PHIGS"},
+        {Pfn_open_ws, "OPEN WORKSTATION"},
+        {Pfn_close_ws, "CLOSE WORKSTATION"},
+        {Pfn_redraw_all_structs, "REDRAW ALL STRUCTURES"},
+        {Pfn_upd_ws, "UPDATE WORKSTATION"},
+        {Pfn_set_view_rep3, "SET VIEW REPRESENTATION 3"},
+        {Pfn_set_view_rep, "SET VIEW REPRESENTATION"},
+        {Pfn_set_ws_win3, "SET WORKSTATION WINDOW 3"},
+        {Pfn_set_ws_win, "SET WORKSTATION WINDOW"},
+        {Pfn_set_ws_vp3, "SET WORKSTATION VIEWPORT 3"},
+        {Pfn_set_ws_vp, "SET WORKSTATION VIEWPORT"},
+        {Pfn_post_struct, "POST STRUCTURE"},
+        {Pfn_unpost_struct, "UNPOST STRUCTURE"},
+        {Pfn_unpost_all_structs, "UNPOST ALL STRUCTURES"},
         {Pfn_message, "MESSAGE"},
         {Pfn_polyline3, "POLYLINE 3"},
         {Pfn_polyline, "POLYLINE"},
@@ -142,6 +155,7 @@ void Binding::open(const char* errorFile) {
     stream_ = errorFile ? std::fopen(errorFile, "w") : nullptr;
     mode_ = PERR_ON;  // each OPEN PHIGS starts with the error handling mode ON; the handler stays
     phigs_ = std::make_unique<Phigs>();
+    registerOutputs(phigs_->outputs());
     phigs_->open();  // an error file that cannot be written leaves the lines on stderr
 }
 

@@ -18,6 +18,12 @@ namespace phigs::c {
 /// Implementation error numbers of the binding (negative: implementation-defined, ISO 9592).
 inline constexpr int kBadArgument = -204;  ///< a NULL pointer or a negative count where data is needed
 
+/// The outputs of the workstation types phigs.h offers (PWST_*): vk's offscreen and PNG
+/// targets, the window (when built with GLFW) and the vector hardcopies. Vulkan's settings come
+/// from PHIGS_VK_DEVICE and PHIGS_VK_VALIDATION (default lavapipe, validation off; on, every
+/// message is printed to stderr).
+void registerOutputs(OutputRegistry& registry);
+
 /// The ISO name of a function identifier ("OPEN STRUCTURE"), or "function <n>".
 std::string functionName(int function);
 

@@ -3,6 +3,7 @@
 #include "phigs/core/ErrorLog.h"
 #include "phigs/store/ArchiveFile.h"
 #include "phigs/store/StructureStore.h"
+#include "phigs/ws/OutputRegistry.h"
 #include "phigs/ws/Workstation.h"
 
 #include <filesystem>
@@ -37,12 +38,25 @@ public:
     StructureStore& store();
 
     // ---- workstations
-    /// OPEN WORKSTATION: errors 2, 53 (identifier in use).
-    Workstation& openWorkstation(int id, WorkstationType type);
-    /// CLOSE WORKSTATION: errors 3, 54.
+    /// The output factories OPEN WORKSTATION uses (each drawing library's registerOutputs adds
+    /// its own: vk::registerOutputs, hardcopy::registerOutputs, window::registerOutputs).
+    OutputRegistry& outputs() { return outputs_; }
+    /// OPEN WORKSTATION: the workstation with the output its type's factory makes on
+    /// `connection`. Errors 2, 52 (not a workstation type), 53 (identifier in use), 50 (the
+    /// factory refused the connection: a file type without a file name), 55 (the target could
+    /// not be made; the reason in the error). A type no library registered opens without an
+    /// output (the GPU-free tests of store, traversal and pick; attachOutput adds one).
+    Workstation& openWorkstation(int id, WorkstationType type, const OutputConnection& connection = {});
+    /// CLOSE WORKSTATION: errors 3, 54; the output writes its last picture first (903 when
+    /// that fails; the workstation is closed all the same).
     void closeWorkstation(int id);
     /// The open workstation `id`: errors 3 (none open), 54 (this one not open).
     Workstation& workstation(int id);
+    /// The open workstation `id`, or null (inquiries, which raise nothing).
+    Workstation* findWorkstation(int id) {
+        auto it = workstations_.find(id);
+        return it == workstations_.end() ? nullptr : it->second.get();
+    }
     std::vector<int> openWorkstationIds() const;
     /// INQUIRE SET OF WORKSTATIONS TO WHICH POSTED (error 201 when the structure does not exist).
     std::vector<int> workstationsPostedTo(int structureId);
@@ -104,6 +118,7 @@ private:
     ErrorLog log_;
     bool open_ = false;
     StructureStore store_;
+    OutputRegistry outputs_;
     std::map<int, std::unique_ptr<Workstation>> workstations_;
     std::map<int, std::unique_ptr<ArchiveFile>> archives_;
     ConflictResolution archival_ = ConflictResolution::Update;

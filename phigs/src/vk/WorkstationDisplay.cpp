@@ -37,6 +37,18 @@ WorkstationDisplay::WorkstationDisplay(Workstation& workstation, Context& contex
     open(std::move(settings));
 }
 
+WorkstationDisplay::WorkstationDisplay(Workstation& workstation, std::shared_ptr<Context> context,
+                                       DisplaySettings settings)
+    : workstation_(workstation), sharedContext_(std::move(context)), context_(sharedContext_.get()) {
+    open(std::move(settings));
+}
+
+WorkstationDisplay& WorkstationDisplay::of(Workstation& workstation) {
+    if (auto* display = dynamic_cast<WorkstationDisplay*>(workstation.output())) return *display;
+    throw std::logic_error("workstation " + std::to_string(workstation.id()) +
+                           " is not shown by a vk::WorkstationDisplay (opened without vk::registerOutputs?)");
+}
+
 WorkstationDisplay::~WorkstationDisplay() {
     if (workstation_.output() == this) workstation_.attachOutput(nullptr);
     // The targets go before a context of our own (member order would do it too; said for clarity).
@@ -53,6 +65,7 @@ void WorkstationDisplay::open(DisplaySettings settings) {
     switch (workstation_.type()) {
         case WorkstationType::OffscreenImage:
             offscreen_ = std::make_unique<ImageTarget>(*context_, width, height);
+            offscreenFile_ = settings.file;
             break;
         case WorkstationType::Hardcopy:
             if (settings.file.empty())
@@ -76,6 +89,7 @@ void WorkstationDisplay::open(DisplaySettings settings) {
 bool WorkstationDisplay::present(const DrawList& picture) {
     if (offscreen_) {
         image_ = offscreen_->draw(picture);
+        if (!offscreenFile_.empty()) writePng(image_, offscreenFile_);
         return true;
     }
     if (hardcopy_) {
@@ -84,6 +98,14 @@ bool WorkstationDisplay::present(const DrawList& picture) {
         return true;
     }
     return window_->draw(picture, readBack_ ? &image_ : nullptr);
+}
+
+void WorkstationDisplay::close(const DrawList& picture) {
+    if (!offscreenFile_.empty()) present(picture);
+    if (hardcopy_) {
+        present(picture);
+        hardcopy_->close();
+    }
 }
 
 const Image& WorkstationDisplay::capture() {

@@ -5,8 +5,11 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace phigs {
 namespace {
@@ -15,13 +18,29 @@ namespace {
 std::mutex glfwMutex;
 int glfwUsers = 0;
 
-void acquireGlfw() {
+/// X11 reads the display from DISPLAY when GLFW starts; one display for the whole process.
+/// Answers the DISPLAY to restore when GLFW then fails to start (none: nothing to restore).
+std::optional<std::string> chooseDisplay(const std::string& display) {
+    if (display.empty()) return std::nullopt;
+    const char* current = std::getenv("DISPLAY");
+    const std::string was = current ? current : "";
+    if (glfwUsers > 0 && display != was)
+        throw std::invalid_argument("GLFW: windows are open on display '" + was +
+                                    "'; one process uses one display, not also '" + display + "'");
+    setenv("DISPLAY", display.c_str(), 1);
+    return was;
+}
+
+void acquireGlfw(const std::string& display) {
     std::lock_guard lock(glfwMutex);
+    const std::optional<std::string> previous = chooseDisplay(display);
     if (glfwUsers == 0 && !glfwInit()) {
         const char* reason = nullptr;
         glfwGetError(&reason);
-        throw std::runtime_error(std::string("GLFW: cannot initialise (no display?): ") +
-                                 (reason ? reason : "unknown reason"));
+        const std::string why = reason ? reason : "unknown reason";
+        if (previous) setenv("DISPLAY", previous->c_str(), 1);
+        throw std::runtime_error("GLFW: cannot initialise (no display" +
+                                 (display.empty() ? std::string() : " '" + display + "'") + "?): " + why);
     }
     ++glfwUsers;
 }
@@ -33,11 +52,12 @@ void releaseGlfw() {
 
 }  // namespace
 
-GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title) {
+GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title,
+                       const std::string& display) {
     if (width == 0 || height == 0 || width > 16384 || height > 16384)
         throw std::invalid_argument("GlfwWindow: a window of " + std::to_string(width) + " x " +
                                     std::to_string(height) + " pixels (1..16384 each)");
-    acquireGlfw();
+    acquireGlfw(display);
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     window_ = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);

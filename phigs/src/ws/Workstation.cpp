@@ -15,7 +15,17 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
 }
 
 Workstation::~Workstation() {
+    ownedOutput_.reset();  // an output may detach itself from the workstation as it goes
     store_.removeListener(this);
+}
+
+void Workstation::ownOutput(std::unique_ptr<WorkstationOutput> output) {
+    ownedOutput_ = std::move(output);
+    output_ = ownedOutput_.get();
+}
+
+void Workstation::closeOutput() {
+    if (output_) output_->close(shownPicture());
 }
 
 void Workstation::postStructure(int structureId, double priority) {

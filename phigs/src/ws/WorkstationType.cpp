@@ -2,12 +2,19 @@
 
 namespace phigs {
 
+bool isWorkstationType(WorkstationType type) {
+    const int value = static_cast<int>(type);
+    return value >= static_cast<int>(WorkstationType::OffscreenImage) &&
+           value <= static_cast<int>(WorkstationType::EpsFile);
+}
+
 WorkstationDescription describeWorkstationType(WorkstationType type) {
     WorkstationDescription d;
     d.type = type;
     switch (type) {
         case WorkstationType::OffscreenImage:
             d.name = "offscreen image";
+            d.category = WorkstationCategory::OutIn;  // its input comes from a script source
             break;
         case WorkstationType::Window:
             d.name = "window";

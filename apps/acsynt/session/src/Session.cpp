@@ -8,6 +8,7 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "phigs/core/Error.h"
+#include "phigs/hardcopy/VectorOutput.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/ws/EchoStructures.h"
@@ -41,7 +42,9 @@ std::set<std::string> Session::directives() {
 }
 
 void Session::setupWorkstation() {
-    workstation_ = &phigs_.openWorkstation(1, settings_.workstationType);
+    hardcopy::registerOutputs(phigs_.outputs());
+    if (settings_.registerOutputs) settings_.registerOutputs(phigs_.outputs());
+    workstation_ = &phigs_.openWorkstation(1, settings_.workstationType, settings_.connection);
     Workstation& ws = *workstation_;
     fitWorkstation();
     ws.setHlhsrMode(1);

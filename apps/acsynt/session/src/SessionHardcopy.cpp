@@ -4,7 +4,7 @@
 
 #include "SessionShared.h"
 
-#include "phigs/hardcopy/VectorWorkstation.h"
+#include "phigs/hardcopy/VectorOutput.h"
 
 #include <algorithm>
 
@@ -18,12 +18,24 @@ namespace {
 /// The hardcopy workstation's identifier: open only while a hardcopy is written.
 constexpr int kHardcopyWorkstation = 2;
 
-/// Closes the hardcopy workstation however the writing ends.
+/// Closes the hardcopy workstation however the writing ends (close() to see its errors).
 class OpenWorkstation {
 public:
-    OpenWorkstation(Phigs& phigs, int id, WorkstationType type)
-        : phigs_(phigs), id_(id), workstation_(phigs.openWorkstation(id, type)) {}
-    ~OpenWorkstation() { phigs_.closeWorkstation(id_); }
+    OpenWorkstation(Phigs& phigs, int id, WorkstationType type, const OutputConnection& connection)
+        : phigs_(phigs), id_(id), workstation_(phigs.openWorkstation(id, type, connection)) {}
+    ~OpenWorkstation() {
+        try {
+            close();
+        } catch (...) {
+            // the error that ended the writing is the one reported
+        }
+    }
+    void close() {
+        if (open_) {
+            open_ = false;
+            phigs_.closeWorkstation(id_);
+        }
+    }
     OpenWorkstation(const OpenWorkstation&) = delete;
     OpenWorkstation& operator=(const OpenWorkstation&) = delete;
     Workstation& operator*() { return workstation_; }
@@ -32,6 +44,7 @@ private:
     Phigs& phigs_;
     int id_;
     Workstation& workstation_;
+    bool open_ = true;
 };
 
 /// The screen's tables that the geometry uses: views, lights, colours and the HLHSR mode.
@@ -63,26 +76,27 @@ void Session::writeHardcopy(const std::string& name) {
     }
     const std::filesystem::path path = outputPath(name);
     const hardcopy::VectorFormat format = hardcopy::vectorFormatForFile(path);  // invalid_argument
-    OpenWorkstation paper(phigs_, kHardcopyWorkstation, hardcopy::workstationTypeOf(format));
-    picture();  // the screen's views and model structures up to date
-    copyTables(workstation_->tables(), *paper);
     // The geometry area and a pixel round it inside the screen, so that its frame is drawn whole.
     const PixelBox& g = layout_.geometry;
     const PixelBox area{std::max(g.x0 - 1, 0.0), std::max(g.y0 - 1, 0.0),
                         std::min(g.x1 + 1, double(layout_.width)),
                         std::min(g.y1 + 1, double(layout_.height))};
+    // What the screen sizes in pixels (line widths, markers) keeps its size relative to the views.
+    hardcopy::VectorSettings vector;
+    const glm::dvec2 pageSize = vector.page.pageSize();
+    vector.page.nominalPixel = std::min(pageSize.x / (area.x1 - area.x0), pageSize.y / (area.y1 - area.y0));
+    vector.options.surfaces =
+        style_.shaded ? hardcopy::SurfaceDrawing::Shaded : hardcopy::SurfaceDrawing::HiddenLine;
+    OutputConnection connection;
+    connection.identifier = path.string();
+    connection.settings = vector;
+    OpenWorkstation paper(phigs_, kHardcopyWorkstation, hardcopy::workstationTypeOf(format), connection);
+    picture();  // the screen's views and model structures up to date
+    copyTables(workstation_->tables(), *paper);
     frame(*paper, npc({area.x0, area.y1}, 0), npc({area.x1, area.y0}, 1));
     (*paper).postStructure(structures::geometry, 0.5);
-
-    // What the screen sizes in pixels (line widths, markers) keeps its size relative to the views.
-    hardcopy::PageSetup page;
-    const glm::dvec2 pageSize = page.pageSize();
-    page.nominalPixel = std::min(pageSize.x / (area.x1 - area.x0), pageSize.y / (area.y1 - area.y0));
-    hardcopy::VectorOptions options;
-    options.surfaces =
-        style_.shaded ? hardcopy::SurfaceDrawing::Shaded : hardcopy::SurfaceDrawing::HiddenLine;
-    hardcopy::VectorWorkstation file(path, format, page, options);
-    file.update((*paper).display());  // std::runtime_error naming the file when it cannot be written
+    (*paper).present();  // std::runtime_error naming the file when it cannot be written
+    paper.close();
     hardcopies_.push_back(path);
     log_.push_back("hardcopy " + path.string());
     say(std::string(hardcopy::vectorFormatName(format)) + " HARDCOPY OF " +

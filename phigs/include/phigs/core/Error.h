@@ -30,16 +30,18 @@ inline constexpr std::size_t kMaxNetworkDepth = 1000;
 
 /// ISO 9592 error numbers used by this implementation (negative: implementation-defined).
 namespace errors {
-inline constexpr int NotPhigsClosed = 1;       ///< requires (PHCL, WSCL, STCL, ARCL)
-inline constexpr int NotPhigsOpen = 2;         ///< requires (PHOP, *, *, *)
-inline constexpr int NoWorkstationOpen = 3;    ///< requires (PHOP, WSOP, *, *)
-inline constexpr int NotAllClosed = 4;         ///< requires (PHOP, WSCL, STCL, ARCL)
-inline constexpr int NotStructureOpen = 5;     ///< requires (PHOP, *, STOP, *)
-inline constexpr int NotStructureClosed = 6;   ///< requires (PHOP, *, STCL, *)
-inline constexpr int NoArchiveOpen = 7;        ///< requires (PHOP, *, *, AROP)
-inline constexpr int BadWorkstationType = 52;  ///< workstation type not recognized
+inline constexpr int NotPhigsClosed = 1;            ///< requires (PHCL, WSCL, STCL, ARCL)
+inline constexpr int NotPhigsOpen = 2;              ///< requires (PHOP, *, *, *)
+inline constexpr int NoWorkstationOpen = 3;         ///< requires (PHOP, WSOP, *, *)
+inline constexpr int NotAllClosed = 4;              ///< requires (PHOP, WSCL, STCL, ARCL)
+inline constexpr int NotStructureOpen = 5;          ///< requires (PHOP, *, STOP, *)
+inline constexpr int NotStructureClosed = 6;        ///< requires (PHOP, *, STCL, *)
+inline constexpr int NoArchiveOpen = 7;             ///< requires (PHOP, *, *, AROP)
+inline constexpr int ConnectionNotRecognized = 50;  ///< connection identifier not usable
+inline constexpr int BadWorkstationType = 52;       ///< workstation type not recognized
 inline constexpr int WorkstationIdInUse = 53;
 inline constexpr int WorkstationNotOpen = 54;
+inline constexpr int WorkstationCannotOpen = 55;  ///< the target could not be made
 inline constexpr int NoOutputCapability = 59;
 inline constexpr int BundleIndexBelowOne = 100;
 inline constexpr int RepresentationNotDefined = 101;

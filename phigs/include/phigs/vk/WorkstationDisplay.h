@@ -26,8 +26,10 @@ struct DisplaySettings {
     /// window: the window to draw in (phigs/window's GlfwWindow), which outlives the display;
     /// required for that type. Its drawable decides the size (width and height are unused).
     WindowSurface* window = nullptr;
-    std::filesystem::path file;  ///< hardcopy: the PNG file (required for that type)
-    bool readBack = false;       ///< window: copy every presented picture into image()
+    /// hardcopy: the PNG file (required for that type); offscreen: a PNG written at every
+    /// presentation and on close (optional)
+    std::filesystem::path file;
+    bool readBack = false;  ///< window: copy every presented picture into image()
 };
 
 /// The workstation's output (WorkstationOutput) through the Vulkan backend, on the target its
@@ -41,6 +43,9 @@ public:
                        DisplaySettings settings = {});
     /// Sharing a context (for a window, made from WindowTarget::contextSettings()).
     WorkstationDisplay(Workstation& workstation, Context& context, DisplaySettings settings = {});
+    /// Sharing a context it keeps alive (the outputs vk::registerOutputs makes).
+    WorkstationDisplay(Workstation& workstation, std::shared_ptr<Context> context,
+                       DisplaySettings settings = {});
     ~WorkstationDisplay() override;
     WorkstationDisplay(const WorkstationDisplay&) = delete;
     WorkstationDisplay& operator=(const WorkstationDisplay&) = delete;
@@ -50,6 +55,8 @@ public:
     bool update() { return workstation_.present(); }
     bool present(const DrawList& picture) override;
     DrawableSize drawableSize() const override { return {width(), height()}; }
+    /// CLOSE WORKSTATION: the files (an offscreen PNG, the hardcopy) get `picture`.
+    void close(const DrawList& picture) override;
     /// Draws what the workstation shows now and returns the picture (a window reads the
     /// presented image back), for snapshots.
     const Image& capture();
@@ -69,17 +76,22 @@ public:
     WorkstationMapping mapping();
     /// The window target (null for other types).
     WindowTarget* window() { return window_.get(); }
+    /// The display showing `workstation` (its output); throws std::logic_error naming the
+    /// workstation when its output is none or another kind.
+    static WorkstationDisplay& of(Workstation& workstation);
 
 private:
     void open(DisplaySettings settings);
 
     Workstation& workstation_;
     std::unique_ptr<Context> ownContext_;
+    std::shared_ptr<Context> sharedContext_;
     Context* context_ = nullptr;
     std::unique_ptr<ImageTarget> offscreen_;
     std::unique_ptr<HardcopyTarget> hardcopy_;
     std::unique_ptr<WindowTarget> window_;
     bool readBack_ = false;
+    std::filesystem::path offscreenFile_;
     Image image_;
 };
 

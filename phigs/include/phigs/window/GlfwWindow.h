@@ -15,9 +15,11 @@ namespace phigs {
 /// vk::WindowTarget draws on. The only code besides GlfwInputSource that includes GLFW.
 class GlfwWindow : public vk::WindowSurface {
 public:
-    /// Opens a resizable window; throws std::runtime_error naming the reason when GLFW cannot
-    /// start (no display) or the window cannot be made.
-    GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title);
+    /// Opens a resizable window on `display` (an X display name; empty: $DISPLAY); throws
+    /// std::runtime_error naming the reason when GLFW cannot start (no display) or the window
+    /// cannot be made, std::invalid_argument for a second display in one process.
+    GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title,
+               const std::string& display = {});
     ~GlfwWindow() override;
     GlfwWindow(const GlfwWindow&) = delete;
     GlfwWindow& operator=(const GlfwWindow&) = delete;

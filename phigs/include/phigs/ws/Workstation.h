@@ -7,7 +7,9 @@
 #include "phigs/ws/WorkstationType.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace phigs {
@@ -105,6 +107,14 @@ public:
     /// detaches). The output stays alive while attached.
     void attachOutput(WorkstationOutput* output) { output_ = output; }
     WorkstationOutput* output() const { return output_; }
+    /// Keeps `output` (made by OPEN WORKSTATION from the type's factory) and attaches it; it goes
+    /// with the workstation.
+    void ownOutput(std::unique_ptr<WorkstationOutput> output);
+    /// CLOSE WORKSTATION's last picture: the output writes what the workstation shows now.
+    void closeOutput();
+    /// The connection identifier the workstation was opened with (empty: none).
+    const std::string& connectionIdentifier() const { return connection_; }
+    void setConnectionIdentifier(std::string connection) { connection_ = std::move(connection); }
     /// Pick echo: the draw items with these paths (WorkstationInteraction::lastEcho) are shown
     /// highlighted until the echo is set again (empty: none).
     void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { echo_ = std::move(paths); }
@@ -144,6 +154,8 @@ private:
     VisualState pictureState_ = VisualState::Correct;
     std::uint64_t regenerations_ = 0;
     WorkstationOutput* output_ = nullptr;
+    std::unique_ptr<WorkstationOutput> ownedOutput_;
+    std::string connection_;
     std::vector<std::vector<DrawPathLevel>> echo_;
     DrawList echoed_;  ///< the picture with the echo applied
 };

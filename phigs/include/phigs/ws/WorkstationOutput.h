@@ -23,6 +23,9 @@ public:
     virtual bool present(const DrawList& picture) = 0;
     /// The drawable now, in pixels.
     virtual DrawableSize drawableSize() const = 0;
+    /// The workstation closes; `picture` is what it shows now. A file output writes it (when
+    /// it has written nothing yet, or keeps every picture) and completes its file.
+    virtual void close(const DrawList& picture) { (void)picture; }
 };
 
 }  // namespace phigs

@@ -11,6 +11,9 @@ namespace phigs {
 /// (phigs_vk); PdfFile, SvgFile and EpsFile are the vector hardcopies (phigs_hardcopy).
 enum class WorkstationType { OffscreenImage, Window, Hardcopy, PdfFile, SvgFile, EpsFile };
 
+/// True for a value of WorkstationType (a number taken from outside, such as the C binding's).
+bool isWorkstationType(WorkstationType type);
+
 /// PHIGS workstation categories.
 enum class WorkstationCategory { Output, OutIn };
 

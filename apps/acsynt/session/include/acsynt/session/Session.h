@@ -43,6 +43,13 @@ struct SessionSettings {
     /// FILE > HARDCOPY and `hardcopy` write vector files; false refuses them (the session fuzz
     /// target, where a shaded PDF of a whole model takes too long under the sanitizers).
     bool vectorHardcopies = true;
+    /// Adds the outputs of the libraries the program links (vk::registerOutputs) before the
+    /// workstation opens, so that OPEN WORKSTATION makes its output; none: the workstation opens
+    /// without one (tests attach a vk::WorkstationDisplay; the fuzz targets draw nothing). The
+    /// session adds the vector hardcopy outputs itself.
+    std::function<void(phigs::OutputRegistry&)> registerOutputs;
+    /// The connection the workstation opens on (a window: the vk::WindowSurface* in settings).
+    phigs::OutputConnection connection;
 };
 
 /// The marker of DEFINE POINT: the reference point on the picked patch.

@@ -1,0 +1,61 @@
+#include "phigs/window/WindowOutputs.h"
+
+#include "phigs/vk/WorkstationDisplay.h"
+#include "phigs/window/GlfwWindow.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace phigs {
+
+namespace {
+
+/// A window the output opened itself and the display drawing in it.
+class OwnWindowOutput : public WorkstationOutput {
+public:
+    OwnWindowOutput(Workstation& ws, const OutputConnection& connection, const vk::ContextSettings& context) {
+        const glm::dvec2 size = ws.description().displaySize;
+        const std::uint32_t width = connection.width ? connection.width : std::uint32_t(std::lround(size.x));
+        const std::uint32_t height =
+            connection.height ? connection.height : std::uint32_t(std::lround(size.y));
+        window_ = std::make_unique<GlfwWindow>(width, height, "PHIGS workstation " + std::to_string(ws.id()),
+                                               connection.identifier);
+        vk::DisplaySettings settings;
+        settings.window = window_.get();
+        display_ = std::make_unique<vk::WorkstationDisplay>(ws, context, settings);
+    }
+    ~OwnWindowOutput() override {
+        display_.reset();  // the display (its surface) before the window
+        window_.reset();
+    }
+    bool present(const DrawList& picture) override {
+        window_->pollEvents();
+        return display_->present(picture);
+    }
+    DrawableSize drawableSize() const override { return display_->drawableSize(); }
+
+private:
+    std::unique_ptr<GlfwWindow> window_;
+    std::unique_ptr<vk::WorkstationDisplay> display_;
+};
+
+}  // namespace
+
+void registerWindowOutputs(OutputRegistry& registry, const vk::ContextSettings& context) {
+    const OutputFactory* given = registry.find(WorkstationType::Window);
+    OutputFactory program = given ? *given : OutputFactory{};
+    registry.add(
+        WorkstationType::Window,
+        [program, context](Workstation& ws,
+                           const OutputConnection& connection) -> std::unique_ptr<WorkstationOutput> {
+            if (program && connection.settings.has_value()) return program(ws, connection);
+            try {
+                return std::make_unique<OwnWindowOutput>(ws, connection, context);
+            } catch (const std::invalid_argument& e) {  // a second display, a bad size
+                throw ConnectionRefused(e.what());
+            }
+        });
+}
+
+}  // namespace phigs

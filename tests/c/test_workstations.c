@@ -1,0 +1,154 @@
+/* Workstations: the types found by inquiry, OPEN / CLOSE WORKSTATION and their errors, posting,
+ * update, window and viewport, view representations, and the workstation inquiries. Opens only
+ * vector hardcopy types (cairo, no GPU). argv[1]: a directory for the files. */
+#include "check.h"
+
+static char error_file[512], pdf_file[512], svg_file[512];
+
+static void types_by_inquiry(void) {
+    Pint err = -1, total = 0, types[8];
+    Pint_list list = {0, types};
+    Pws_cat cat = PCAT_MI;
+    pinq_list_avail_ws_types(8, 0, &err, &list, &total);
+    CHECK(err == 0 && total >= 5 && list.num_ints == total);
+    int offscreen = 0, pdf = 0, svg = 0, eps = 0;
+    for (Pint i = 0; i < list.num_ints; ++i) {
+        offscreen += types[i] == PWST_OFFSCREEN;
+        pdf += types[i] == PWST_PDF;
+        svg += types[i] == PWST_SVG;
+        eps += types[i] == PWST_EPS;
+    }
+    CHECK(offscreen == 1 && pdf == 1 && svg == 1 && eps == 1);
+    pinq_ws_cat(PWST_OFFSCREEN, &err, &cat);
+    CHECK(err == 0 && cat == PCAT_OUTIN);
+    pinq_ws_cat(PWST_WINDOW, &err, &cat);
+    CHECK(err == 0 && cat == PCAT_OUTIN);
+    pinq_ws_cat(PWST_PDF, &err, &cat);
+    CHECK(err == 0 && cat == PCAT_OUT);
+    pinq_ws_cat(PWST_PNG, &err, &cat);
+    CHECK(err == 0 && cat == PCAT_OUT);
+    pinq_ws_cat(77, &err, &cat);
+    CHECK(err == 52);
+}
+
+static void open_and_close_errors(void) {
+    Pws_st st = PWS_ST_WSOP;
+    pinq_ws_st(&st);
+    CHECK(st == PWS_ST_WSCL);
+    EXPECT_ERROR(ppost_struct(1, 1, 0.5f), 3, Pfn_post_struct); /* none open */
+    EXPECT_ERROR(popen_ws(1, pdf_file, 77), 52, Pfn_open_ws);
+    EXPECT_ERROR(popen_ws(1, pdf_file, 0), 52, Pfn_open_ws);
+    EXPECT_ERROR(popen_ws(1, NULL, PWST_PDF), 50, Pfn_open_ws);
+    EXPECT_ERROR(popen_ws(1, "", PWST_SVG), 50, Pfn_open_ws);
+    EXPECT_ERROR(popen_ws(1, NULL, PWST_PNG), 50, Pfn_open_ws);
+    pinq_ws_st(&st);
+    CHECK(st == PWS_ST_WSCL);
+    EXPECT_NO_ERROR(popen_ws(1, pdf_file, PWST_PDF));
+    pinq_ws_st(&st);
+    CHECK(st == PWS_ST_WSOP);
+    EXPECT_ERROR(popen_ws(1, svg_file, PWST_SVG), 53, Pfn_open_ws);
+    EXPECT_ERROR(ppost_struct(2, 1, 0.5f), 54, Pfn_post_struct);
+    EXPECT_ERROR(pupd_ws(2, PFLAG_PERFORM), 54, Pfn_upd_ws);
+    EXPECT_ERROR(pclose_ws(2), 54, Pfn_close_ws);
+    EXPECT_ERROR(ppost_struct(1, 1, 1.5f), 208, Pfn_post_struct);
+    EXPECT_ERROR(pupd_ws(1, (Pregen_flag)9), PE_ENUM_TYPE_INVAL, Pfn_upd_ws);
+    EXPECT_ERROR(pclose_phigs(), 4, Pfn_close_phigs);
+    /* The error file names the function and the standard's message. */
+    CHECK(file_has_line(error_file,
+                        "ERROR 50 in OPEN WORKSTATION (function 2): Ignoring function, connection "
+                        "identifier not recognized by the implementation"));
+    CHECK(file_has_line(error_file,
+                        "ERROR 53 in OPEN WORKSTATION (function 2): Ignoring function, workstation "
+                        "identifier already is in use"));
+    EXPECT_NO_ERROR(pclose_ws(1));
+    EXPECT_ERROR(pclose_ws(1), 3, Pfn_close_ws);
+}
+
+static void posting_and_inquiries(void) {
+    Pint err = -1, total = 0, ids[4], type = 0;
+    Pint_list open = {0, ids};
+    Pposted_struct postings[4];
+    Pposted_struct_list posted = {0, postings};
+    const char* conn = NULL;
+    Pstore store = NULL;
+    pcreate_store(&err, &store);
+    CHECK(err == 0);
+
+    EXPECT_NO_ERROR(popen_ws(3, svg_file, PWST_SVG));
+    EXPECT_NO_ERROR(popen_ws(1, pdf_file, PWST_PDF));
+    pinq_open_wss(4, 0, &err, &open, &total);
+    CHECK(err == 0 && total == 2 && open.num_ints == 2 && ids[0] == 1 && ids[1] == 3);
+    pinq_ws_conn_type(3, store, &err, &conn, &type);
+    CHECK(err == 0 && type == PWST_SVG && conn && strcmp(conn, svg_file) == 0);
+    pinq_ws_conn_type(2, store, &err, &conn, &type);
+    CHECK(err == 54);
+
+    EXPECT_NO_ERROR(ppost_struct(1, 10, 0.7f));
+    EXPECT_NO_ERROR(ppost_struct(1, 11, 0.2f));
+    EXPECT_NO_ERROR(ppost_struct(1, 12, 0.7f));
+    pinq_posted_structs(1, 4, 0, &err, &posted, &total);
+    CHECK(err == 0 && total == 3 && posted.num_postings == 3);
+    CHECK(postings[0].id == 11 && postings[1].id == 10 && postings[2].id == 12);
+    CHECK(fabsf(postings[0].disp_pri - 0.2f) < 1e-6f);
+    pinq_posted_structs(1, 1, 2, &err, &posted, &total); /* from the third on */
+    CHECK(err == 0 && total == 3 && posted.num_postings == 1 && postings[0].id == 12);
+    pinq_posted_structs(1, 1, 3, &err, &posted, &total);
+    CHECK(err == PE_START_IND_INVAL);
+    pinq_posted_structs(9, 1, 0, &err, &posted, &total);
+    CHECK(err == 54);
+    EXPECT_NO_ERROR(punpost_struct(1, 10));
+    pinq_posted_structs(1, 4, 0, &err, &posted, &total);
+    CHECK(err == 0 && total == 2);
+    EXPECT_NO_ERROR(punpost_all_structs(1));
+    pinq_posted_structs(1, 4, 0, &err, &posted, &total);
+    CHECK(err == 0 && total == 0);
+
+    /* Window and viewport: the core's checks. */
+    Plimit3 window = {0, 1, 0, 1, 0, 1}, bad = {0.5f, 0.2f, 0, 1, 0, 1}, outside = {0, 2, 0, 1, 0, 1};
+    Plimit viewport = {0, 500, 0, 500};
+    EXPECT_NO_ERROR(pset_ws_win3(1, &window));
+    EXPECT_ERROR(pset_ws_win3(1, &bad), 151, Pfn_set_ws_win3);
+    EXPECT_ERROR(pset_ws_win3(1, &outside), 156, Pfn_set_ws_win3);
+    EXPECT_ERROR(pset_ws_win3(1, NULL), -204, Pfn_set_ws_win3);
+    EXPECT_NO_ERROR(pset_ws_vp(1, &viewport));
+    viewport.x_max = 5000;
+    EXPECT_ERROR(pset_ws_vp(1, &viewport), 157, Pfn_set_ws_vp);
+
+    Pview_rep3 view;
+    memset(&view, 0, sizeof view);
+    for (int i = 0; i < 4; ++i) view.ori_matrix[i][i] = view.map_matrix[i][i] = 1;
+    view.clip_limit = window;
+    view.xy_clip = view.back_clip = view.front_clip = PIND_CLIP;
+    EXPECT_NO_ERROR(pset_view_rep3(1, 1, &view));
+    EXPECT_ERROR(pset_view_rep3(1, 0, &view), 115, Pfn_set_view_rep3);
+    view.xy_clip = (Pclip_ind)5;
+    EXPECT_ERROR(pset_view_rep3(1, 2, &view), PE_ENUM_TYPE_INVAL, Pfn_set_view_rep3);
+
+    EXPECT_NO_ERROR(pclose_ws(3));
+    EXPECT_NO_ERROR(pclose_ws(1));
+    pdel_store(store);
+}
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    snprintf(error_file, sizeof error_file, "%s/workstations_errors.txt", dir);
+    snprintf(pdf_file, sizeof pdf_file, "%s/workstations.pdf", dir);
+    snprintf(svg_file, sizeof svg_file, "%s/workstations.svg", dir);
+    void (*old)(Pint, Pint, const char*) = NULL;
+    pset_err_hand(recording_handler, &old);
+    EXPECT_ERROR(popen_ws(1, pdf_file, PWST_PDF), 2, Pfn_open_ws); /* PHIGS closed */
+    open_with_handler(error_file);
+    types_by_inquiry();
+    open_and_close_errors();
+    posting_and_inquiries();
+    pclose_phigs();
+    /* The closed hardcopies are complete files. */
+    FILE* f = fopen(pdf_file, "rb");
+    char magic[5] = {0};
+    CHECK(f && fread(magic, 1, 4, f) == 4 && strcmp(magic, "%PDF") == 0);
+    if (f) fclose(f);
+    f = fopen(svg_file, "rb");
+    CHECK(f != NULL);
+    if (f) fclose(f);
+    return finish("test_workstations");
+}

@@ -1,0 +1,143 @@
+/* Pictures on the workstation types: a structure with a fill area and a polyline posted to the
+ * headless offscreen type (lavapipe; the PNG its connection identifier names) and to the PDF
+ * type; the PNG and the rasterised PDF (pdftoppm) have the drawn colours where the primitives
+ * are and the background elsewhere, and the PDF holds no image (pdfimages -list). Links libpng
+ * besides libphigs to read the PNG. argv[1]: a directory for the files. */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include <png.h>
+
+typedef struct {
+    int width, height;
+    unsigned char* rgb; /* rows top to bottom */
+} Picture;
+
+static int read_png(const char* path, Picture* out) {
+    png_image image;
+    memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path)) return 0;
+    image.format = PNG_FORMAT_RGB;
+    out->width = (int)image.width;
+    out->height = (int)image.height;
+    out->rgb = malloc(PNG_IMAGE_SIZE(image));
+    if (!out->rgb || !png_image_finish_read(&image, NULL, out->rgb, 0, NULL)) return 0;
+    return 1;
+}
+
+/* A binary PPM (P6, maxval 255) as pdftoppm writes it. */
+static int read_ppm(const char* path, Picture* out) {
+    FILE* f = fopen(path, "rb");
+    int maxval = 0;
+    if (!f) return 0;
+    if (fscanf(f, "P6 %d %d %d", &out->width, &out->height, &maxval) != 3 || maxval != 255) {
+        fclose(f);
+        return 0;
+    }
+    fgetc(f);
+    const size_t size = (size_t)out->width * (size_t)out->height * 3;
+    out->rgb = malloc(size);
+    const int ok = out->rgb && fread(out->rgb, 1, size, f) == size;
+    fclose(f);
+    return ok;
+}
+
+/* Whether a pixel within `radius` of (x, y) (pixels, y down) is near the colour (r, g, b). */
+static int has_colour_near(const Picture* p, int x, int y, int radius, int r, int g, int b) {
+    for (int j = y - radius; j <= y + radius; ++j)
+        for (int i = x - radius; i <= x + radius; ++i) {
+            if (i < 0 || j < 0 || i >= p->width || j >= p->height) continue;
+            const unsigned char* c = p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
+            if (abs(c[0] - r) < 60 && abs(c[1] - g) < 60 && abs(c[2] - b) < 60) return 1;
+        }
+    return 0;
+}
+
+/* A red fill area over NPC [0.1, 0.4]^2 and a thick green polyline at x = 0.7 from y = 0.2 to 0.8. */
+static void build_scene(void) {
+    Ppoint3 square[4] = {{0.1f, 0.1f, 0}, {0.4f, 0.1f, 0}, {0.4f, 0.4f, 0}, {0.1f, 0.4f, 0}};
+    Ppoint3 line[2] = {{0.7f, 0.2f, 0}, {0.7f, 0.8f, 0}};
+    Ppoint_list3 area = {4, square}, polyline = {2, line};
+    Pgcolr red = {PMODEL_RGB, {0}}, green = {PMODEL_RGB, {0}};
+    red.val.direct.x = 1;
+    green.val.direct.y = 1;
+    popen_struct(1);
+    pset_int_style(PSTYLE_SOLID);
+    pset_int_colr(&red);
+    pfill_area3(&area);
+    pset_line_colr(&green);
+    pset_linewidth(6);
+    ppolyline3(&polyline);
+    pclose_struct();
+}
+
+/* The scene's colours in `p`, whose display surface maps NPC [0, 1]^2 onto `side` pixels at
+ * the lower left (the workstation transformation keeps the shape). */
+static void check_picture(const Picture* p, double side, const char* what) {
+    const int failed = failures;
+#define AT(x, y) (int)((x)*side), (int)(p->height - (y)*side)
+    CHECK(has_colour_near(p, AT(0.25, 0.25), 0, 255, 0, 0)); /* inside the fill area */
+    CHECK(has_colour_near(p, AT(0.12, 0.38), 0, 255, 0, 0)); /* near its corner */
+    CHECK(has_colour_near(p, AT(0.7, 0.5), 3, 0, 255, 0));   /* on the polyline */
+    CHECK(has_colour_near(p, AT(0.7, 0.25), 3, 0, 255, 0));
+    CHECK(!has_colour_near(p, AT(0.25, 0.7), 2, 255, 0, 0)); /* background above the area */
+    CHECK(!has_colour_near(p, AT(0.5, 0.5), 2, 0, 255, 0));  /* background between */
+    CHECK(!has_colour_near(p, AT(0.7, 0.9), 2, 0, 255, 0));  /* beyond the polyline's end */
+#undef AT
+    if (failures != failed) fprintf(stderr, "  in the %s picture (%d x %d)\n", what, p->width, p->height);
+}
+
+static int command_output_lines(const char* command) {
+    char line[512];
+    int lines = 0;
+    FILE* pipe = popen(command, "r");
+    if (!pipe) return -1;
+    while (fgets(line, sizeof line, pipe)) ++lines;
+    return pclose(pipe) == 0 ? lines : -1;
+}
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    char png[512], pdf[512], errors[512], command[2048], ppm[600];
+    snprintf(png, sizeof png, "%s/ws_pictures.png", dir);
+    snprintf(pdf, sizeof pdf, "%s/ws_pictures.pdf", dir);
+    snprintf(errors, sizeof errors, "%s/ws_pictures_errors.txt", dir);
+    remove(png);
+    remove(pdf);
+    open_with_handler(errors);
+    build_scene();
+
+    EXPECT_NO_ERROR(popen_ws(1, png, PWST_OFFSCREEN));
+    EXPECT_NO_ERROR(popen_ws(2, pdf, PWST_PDF));
+    EXPECT_NO_ERROR(ppost_struct(1, 1, 0.5f));
+    EXPECT_NO_ERROR(ppost_struct(2, 1, 0.5f));
+    EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
+    EXPECT_NO_ERROR(pupd_ws(2, PFLAG_PERFORM));
+
+    Picture picture = {0, 0, NULL};
+    CHECK(read_png(png, &picture)); /* written by the update */
+    if (picture.rgb) {
+        CHECK(picture.width == 1024 && picture.height == 768);
+        check_picture(&picture, 768, "offscreen PNG");
+        free(picture.rgb);
+        picture.rgb = NULL;
+    }
+    EXPECT_NO_ERROR(pclose_ws(1));
+    EXPECT_NO_ERROR(pclose_ws(2));
+    pclose_phigs();
+
+    /* The PDF: vectors only, and its page at 72 dpi (one pixel per point) shows the scene. */
+    snprintf(command, sizeof command, "pdfimages -list '%s'", pdf);
+    CHECK(command_output_lines(command) == 2); /* the two heading lines, no image */
+    snprintf(command, sizeof command, "pdftoppm -r 72 -singlefile '%s' '%s/ws_pictures_pdf'", pdf, dir);
+    CHECK(system(command) == 0);
+    snprintf(ppm, sizeof ppm, "%s/ws_pictures_pdf.ppm", dir);
+    CHECK(read_ppm(ppm, &picture));
+    if (picture.rgb) {
+        CHECK(abs(picture.width - 842) <= 1 && abs(picture.height - 595) <= 1);
+        check_picture(&picture, 595.2756, "PDF");
+        free(picture.rgb);
+    }
+    return finish("test_ws_pictures");
+}

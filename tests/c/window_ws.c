@@ -1,0 +1,43 @@
+/* The window workstation type from C, under an Xvfb of its own (label window): opened on
+ * $DISPLAY (NULL) and by display name, drawn at update, its connection identifier inquired; a
+ * second display while a window is open is error 50, a display with no server 55.
+ * argv[1]: a directory for the error file. */
+#include "check.h"
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    char errors[512];
+    snprintf(errors, sizeof errors, "%s/window_ws_errors.txt", dir);
+    const char* display = getenv("DISPLAY");
+    CHECK(display != NULL);
+    if (!display) return finish("window_ws");
+    open_with_handler(errors);
+    Ppoint3 points[2] = {{0.1f, 0.1f, 0}, {0.9f, 0.9f, 0}};
+    Ppoint_list3 line = {2, points};
+    popen_struct(1);
+    ppolyline3(&line);
+    pclose_struct();
+
+    Pint err = -1, type = 0;
+    const char* conn = NULL;
+    Pstore store = NULL;
+    pcreate_store(&err, &store);
+    EXPECT_NO_ERROR(popen_ws(1, NULL, PWST_WINDOW));
+    EXPECT_NO_ERROR(ppost_struct(1, 1, 0.5f));
+    EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
+    EXPECT_NO_ERROR(popen_ws(2, display, PWST_WINDOW)); /* the same display by name */
+    pinq_ws_conn_type(2, store, &err, &conn, &type);
+    CHECK(err == 0 && type == PWST_WINDOW && conn && strcmp(conn, display) == 0);
+    pinq_ws_conn_type(1, store, &err, &conn, &type);
+    CHECK(err == 0 && type == PWST_WINDOW && conn == NULL);
+    EXPECT_NO_ERROR(predraw_all_structs(2, PFLAG_ALWAYS));
+    EXPECT_ERROR(popen_ws(3, ":4711", PWST_WINDOW), 50, Pfn_open_ws); /* one display per process */
+    EXPECT_NO_ERROR(pclose_ws(1));
+    EXPECT_NO_ERROR(pclose_ws(2));
+    EXPECT_ERROR(popen_ws(3, ":4711", PWST_WINDOW), 55, Pfn_open_ws); /* no server there */
+    EXPECT_NO_ERROR(popen_ws(3, NULL, PWST_WINDOW));                  /* $DISPLAY is as it was */
+    EXPECT_NO_ERROR(pclose_ws(3));
+    pdel_store(store);
+    pclose_phigs();
+    return finish("window_ws");
+}
