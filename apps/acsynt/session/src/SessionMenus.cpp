@@ -375,7 +375,11 @@ void Session::pick(const PickMeasure& measure) {
 }
 
 void Session::padButton(int button) {
-    if (!reference_ || (phase_ != Phase::MoveMarker && phase_ != Phase::Placed)) {
+    if (reference_ && phase_ == Phase::Placed) {
+        fail("THE POINTER PAD IS OFF AFTER DONE: USE DEFINE POINT TO MOVE THE MARKER");
+        return;
+    }
+    if (!reference_ || phase_ != Phase::MoveMarker) {
         fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
         return;
     }
@@ -404,7 +408,11 @@ void Session::padButton(int button) {
 
 void Session::valuator(int device, double value) {
     if (device == 1 || device == 2) {
-        if (!reference_ || (phase_ != Phase::MoveMarker && phase_ != Phase::Placed)) {
+        if (reference_ && phase_ == Phase::Placed) {
+            fail("THE MARKER IS PLACED (DONE): USE DEFINE POINT TO MOVE IT");
+            return;
+        }
+        if (!reference_ || phase_ != Phase::MoveMarker) {
             fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
             return;
         }

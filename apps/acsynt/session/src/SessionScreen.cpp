@@ -137,7 +137,7 @@ void Session::drawScreen() {
     }
 
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
-    const bool padLive = phase_ == Phase::MoveMarker || phase_ == Phase::Placed;
+    const bool padLive = phase_ == Phase::MoveMarker;  // DEFINE POINT's marker moves; off after DONE
     std::vector<Element> pad{
         viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
         RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
