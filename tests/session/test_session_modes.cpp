@@ -8,6 +8,9 @@ using session_test::Driver;
 
 TEST_CASE("the pointer pad turns off after DONE: pad buttons and marker valuators are refused") {
     Driver d("modes");
+    // The empty screen says where to start.
+    CHECK(d.session.message() ==
+          "SELECT MENU ITEM: START WITH FILE, READ MODEL (transport.acm OR fighter.acm)");
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
            "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP", "choice DEFINE_POINT"});
     const acsynt::Component* wing = d.session.models().current().find("right_wing");

@@ -31,7 +31,8 @@ Session::Session(SessionSettings settings, InputSource& source)
     setupWorkstation();
     setupDevices();
     mainMenu();
-    say("SELECT MENU ITEM");
+    // The empty screen's hint: where to start.
+    say("SELECT MENU ITEM: START WITH FILE, READ MODEL (transport.acm OR fighter.acm)");
 }
 
 Session::~Session() = default;
