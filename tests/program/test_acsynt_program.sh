@@ -99,6 +99,12 @@ head -c 20000 transport.step >cut.step
 run import_cut 1 --import cut.step --script list.session --output out_import_cut --size 320x240
 expect_in import_cut.err "cut.step: not a readable STEP file"
 
+# --help names the window's buttons and keys.
+run help 0 --help
+expect_in help.out "Enter accepts it"
+expect_in help.out "Escape withdraws it"
+expect_in help.out "drags a slider"
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures checks failed"
   exit 1

@@ -261,15 +261,17 @@ TEST_CASE("FILE menu: save and read back a model, archive and retrieve its struc
     d.run({"choice FILE", "choice SAVE_MODEL"});
     CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
     d.run({"choice READ_MODEL", "string fighter.acm", "choice SAVE_MODEL", "string saved.acm"});
-    CHECK(d.session.message() == "MODEL SAVED TO " + (out / "saved.acm").string());
+    CHECK(d.session.message() ==
+          "MODEL fighter SAVED TO " + (out / "saved.acm").string() + ": 6 COMPONENTS, 0 MAPPED CURVES");
     REQUIRE(std::filesystem::exists(out / "saved.acm"));
     d.run({"choice READ_MODEL", "string " + (out / "saved.acm").string()});
-    CHECK(d.session.message() == "A MODEL NAMED fighter IS ALREADY LOADED");
-    CHECK(d.session.models().size() == 1);
+    CHECK(d.session.message() ==
+          "MODEL fighter READ AS fighter_2 (fighter IS LOADED): 6 COMPONENTS, 192 PATCHES");
+    CHECK(d.session.models().size() == 2);
 
-    // Read back beside the original once that is renamed: the saved file lofts to the same model.
-    d.run({"choice RETURN", "choice MODELS", "choice NAME_MODEL", "string original", "choice RETURN",
-           "choice FILE", "choice READ_MODEL", "string " + (out / "saved.acm").string()});
+    // Read back beside the original once that is renamed: the saved file holds the same surfaces.
+    d.run({"choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice NAME_MODEL", "string original",
+           "choice RETURN", "choice FILE", "choice READ_MODEL", "string " + (out / "saved.acm").string()});
     CHECK(d.session.message() == "MODEL fighter READ: 6 COMPONENTS, 192 PATCHES");
     REQUIRE(d.session.models().size() == 2);
     const acsynt::Model& original = d.session.models().at(0);
@@ -359,7 +361,7 @@ TEST_CASE("numbered choices: `choice N` takes the Nth item of the menu shown") {
     CHECK(d.logHasError());
     CHECK(d.session.menuTitle() == "MODELS");
     CHECK(d.session.models().size() == 1);
-    d.run({"choice 1", "choice 6"});  // RETURN, then MAIN: EXIT
+    d.run({"choice 1", "choice 8"});  // RETURN, then MAIN: EXIT
     CHECK(d.session.finished());
 }
 

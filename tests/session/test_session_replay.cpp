@@ -48,7 +48,13 @@ TEST_CASE("the shipped demo session replays headless: logo and circle mapped, fu
         CHECK(line.rfind("ERROR: ", 0) != 0);
     }
 
-    REQUIRE(session.mappings().size() == 2);
+    // The logo and the circle, and both carried to the reduced model (on the wing, as they were).
+    REQUIRE(session.mappings().size() == 4);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(session.mappings()[i].model == "transport");
+        CHECK(session.mappings()[i + 2].model == "transport_R1");
+        CHECK(session.mappings()[i + 2].polylines == session.mappings()[i].polylines);
+    }
     const acsynt::MappingRecord& logo = session.mappings()[0];
     CHECK(logo.curveFile == "acslogo.crv");
     CHECK(logo.component == "right_wing");

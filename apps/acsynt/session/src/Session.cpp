@@ -32,7 +32,8 @@ Session::Session(SessionSettings settings, InputSource& source)
     setupWorkstation();
     setupDevices();
     mainMenu();
-    say("SELECT MENU ITEM");
+    // The empty screen's hint: where to start.
+    say("SELECT MENU ITEM: START WITH FILE, READ MODEL (transport.acm OR fighter.acm)");
 }
 
 Session::~Session() = default;
@@ -338,6 +339,13 @@ std::string Session::summary() const {
             << ": " << m.parts << " parts, " << m.loops << " loops (per part";
         for (auto n : m.loopsPerPart) out << " " << n;
         out << "), boundary walks " << m.boundaryWalks << "\n";
+        for (const PartReport& p : m.partReports) {
+            if (p.outcome == PartOutcome::Mapped) continue;
+            out << "  part " << p.name << ": " << (p.outcome == PartOutcome::Clipped ? "clipped" : "lost");
+            if (p.outcome == PartOutcome::Clipped)
+                out << ", " << p.loops << " loops, boundary walks " << p.boundaryWalks;
+            out << ": " << p.reason << "\n";
+        }
     }
     for (std::size_t i = 0; i < reductions_.size(); ++i) {
         const ReductionRecord& r = reductions_[i];

@@ -1,6 +1,8 @@
 // The session's menus, the input of each device class, and the files it reads and writes.
 #include "acsynt/session/Session.h"
 
+#include "acsynt/session/ModelStateFile.h"
+
 #include "SessionShared.h"
 
 #include "acsynt/ModelFile.h"
@@ -54,6 +56,13 @@ void Session::choose(std::string item) {
     }
     awaiting_ = Awaiting::Nothing;
     if (menuTitle_ == "MAIN") {
+        if (item == "UNDO" || item == "REDO") {
+            if (item == "UNDO")
+                undo();
+            else
+                redo();
+            return;
+        }
         if (item == "FILE") setMenu("FILE", fileItems);
         if (item == "VIEW") setMenu("VIEW", viewItems);
         if (item == "MODELS") setMenu("MODELS", modelItems);
@@ -149,16 +158,20 @@ void Session::curveMenu(const std::string& item) {
         phase_ = Phase::SelectComponent;
         reference_.reset();
         previewLines_.clear();
+        previewClipped_.clear();
+        previewLost_.clear();
         style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
         modelPicture_.restyle(models_.current(), style_);
         drawOverlay();
         say("SELECT COMPONENT FOR MAPPING");
     } else if (item == "FLIP_CURVE") {
+        remember(state(), "FLIP CURVE");
         placement_.flipped = !placement_.flipped;
         mappedSincePlaced_ = false;
         drawOverlay();
         say(placement_.flipped ? "CURVE FLIPPED" : "CURVE UNFLIPPED");
     } else if (item == "ROTATE_CURVE") {
+        remember(state(), "ROTATE CURVE");
         placement_.quarterTurns = (placement_.quarterTurns + 1) % 4;
         mappedSincePlaced_ = false;
         drawOverlay();
@@ -200,6 +213,7 @@ void Session::reductionMenu(const std::string& item) {
 }
 
 void Session::modelsMenu(const std::string& item) {
+    SessionState before = state();
     ModelList::Outcome outcome;
     if (item == "NEXT_MODEL") {
         say("CHANGING CURRENT MODEL TO NEXT MODEL");
@@ -227,6 +241,7 @@ void Session::modelsMenu(const std::string& item) {
         }
     }
     if (outcome.done) {
+        if (item == "DELETE_MODEL") remember(std::move(before), "DELETE MODEL");
         showModel();
         say(outcome.message);
     } else {
@@ -269,6 +284,7 @@ void Session::text(const std::string& input) {
             archive(input, true);
             break;
         case Awaiting::ModelName: {
+            SessionState before = state();
             const std::string old = models_.current().name;
             const auto outcome = models_.rename(input);
             if (!outcome.done) {
@@ -277,6 +293,7 @@ void Session::text(const std::string& input) {
             }
             for (auto& m : mappings_)
                 if (m.model == old) m.model = models_.current().name;
+            remember(std::move(before), "NAME MODEL");
             say(outcome.message);
             break;
         }
@@ -358,13 +375,18 @@ void Session::pick(const PickMeasure& measure) {
 }
 
 void Session::padButton(int button) {
-    if (!reference_ || (phase_ != Phase::MoveMarker && phase_ != Phase::Placed)) {
+    if (reference_ && phase_ == Phase::Placed) {
+        fail("THE POINTER PAD IS OFF AFTER DONE: USE DEFINE POINT TO MOVE THE MARKER");
+        return;
+    }
+    if (!reference_ || phase_ != Phase::MoveMarker) {
         fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
         return;
     }
     const Component& comp = models_.current().components[std::size_t(reference_->component)];
     const Patch& p = comp.patches.patches[std::size_t(reference_->patch - 1)];
     if (button == 10) {
+        remember(state(), "REFERENCE POINT");
         phase_ = Phase::Placed;
         mappedSincePlaced_ = false;
         style_.onlyComponent = style_.highlightComponent = -1;
@@ -386,7 +408,11 @@ void Session::padButton(int button) {
 
 void Session::valuator(int device, double value) {
     if (device == 1 || device == 2) {
-        if (!reference_ || (phase_ != Phase::MoveMarker && phase_ != Phase::Placed)) {
+        if (reference_ && phase_ == Phase::Placed) {
+            fail("THE MARKER IS PLACED (DONE): USE DEFINE POINT TO MOVE IT");
+            return;
+        }
+        if (!reference_ || phase_ != Phase::MoveMarker) {
             fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
             return;
         }
@@ -442,19 +468,45 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
 }
 
 void Session::readModel(const std::string& name) {
-    Model model = loadModel(findInput(name));  // all or nothing: throws before anything changes
+    // All or nothing: both readers throw before anything changes.
+    const std::filesystem::path path = findInput(name);
+    SessionState before = this->state();
+    ModelState state;
+    if (isModelStateFile(path))
+        state = readModelState(path);
+    else
+        state.model = loadModel(path);
     viewCentre_.reset();
-    for (std::size_t i = 0; i < models_.size(); ++i)
-        if (models_.at(i).name == model.name) {
-            fail("A MODEL NAMED " + model.name + " IS ALREADY LOADED");
-            return;
-        }
-    const std::string modelName = model.name;
-    const std::size_t patches = model.patchCount(), components = model.components.size();
-    models_.add(std::move(model));
+    // A name already loaded: the model read is renamed NAME_2, NAME_3, ... and the line says so.
+    const std::string fileName = state.model.name;
+    std::string modelName = fileName;
+    const auto loaded = [this](const std::string& n) {
+        for (std::size_t i = 0; i < models_.size(); ++i)
+            if (models_.at(i).name == n) return true;
+        return false;
+    };
+    for (int k = 2; loaded(modelName) && k < 1000; ++k) {
+        const std::string suffix = "_" + std::to_string(k);
+        modelName = fileName.substr(0, std::min(fileName.size(), std::size_t(20) - suffix.size())) + suffix;
+    }
+    if (loaded(modelName)) {
+        fail("A MODEL NAMED " + fileName + " IS ALREADY LOADED");
+        return;
+    }
+    state.model.name = modelName;
+    for (MappingRecord& m : state.mappings) m.model = modelName;
+    const std::size_t patches = state.model.patchCount(), components = state.model.components.size();
+    const std::size_t mapped = state.mappings.size();
+    models_.add(std::move(state.model));
+    for (MappingRecord& m : state.mappings) mappings_.push_back(std::move(m));
+    remember(std::move(before), "READ MODEL " + modelName);
     showModel();
-    say("MODEL " + modelName + " READ: " + std::to_string(components) + " COMPONENTS, " +
-        std::to_string(patches) + " PATCHES");
+    if (mapped > 0) drawMapped(true);
+    std::string line = "MODEL " + fileName + " READ";
+    if (modelName != fileName) line += " AS " + modelName + " (" + fileName + " IS LOADED)";
+    line += ": " + std::to_string(components) + " COMPONENTS, " + std::to_string(patches) + " PATCHES";
+    if (mapped > 0) line += ", " + std::to_string(mapped) + " MAPPED CURVES";
+    say(line);
 }
 
 void Session::readCurve(const std::string& input) {
@@ -490,19 +542,21 @@ void Session::readCurve(const std::string& input) {
 }
 
 void Session::saveModel(const std::string& name) {
-    if (models_.current().description.components.empty()) {
-        fail("MODEL " + models_.current().name + " HAS NO DESCRIPTION TO SAVE (IMPORTED): USE EXPORT");
-        return;
-    }
+    // The current model as it is (reduced surfaces, imported or not) and its mapped curves.
     const auto path = outputPath(name);
+    const Model& model = models_.current();
     std::ostringstream text;
-    writeAircraftDescription(text, models_.current().description);
+    writeModelState(text, model, mappings_);
     std::ofstream out(path);
     if (!(out << text.str()) || !out.flush()) {
         fail("CANNOT WRITE " + path.string());
         return;
     }
-    say("MODEL SAVED TO " + path.string());
+    std::size_t mapped = 0;
+    for (const MappingRecord& m : mappings_) mapped += m.model == model.name;
+    say("MODEL " + model.name + " SAVED TO " + path.string() + ": " +
+        std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(mapped) +
+        " MAPPED CURVES");
 }
 
 void Session::exportModel(const std::string& name) {

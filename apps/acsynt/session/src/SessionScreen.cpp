@@ -29,6 +29,8 @@ void Session::showModel() {
     style_.errorMapComponent = -1;
     reference_.reset();
     previewLines_.clear();
+    previewClipped_.clear();
+    previewLost_.clear();
     phase_ = Phase::None;
     if (models_.empty()) {
         modelPicture_.clear();
@@ -135,7 +137,7 @@ void Session::drawScreen() {
     }
 
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
-    const bool padLive = phase_ == Phase::MoveMarker || phase_ == Phase::Placed;
+    const bool padLive = phase_ == Phase::MoveMarker;  // DEFINE POINT's marker moves; off after DONE
     std::vector<Element> pad{
         viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
         RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
@@ -218,6 +220,10 @@ void Session::drawOverlay() {
     }
     e.push_back(colourAttr(ElementType::PolylineColour, {0.9, 0.9, 0.4}));
     for (const auto& line : previewLines_) e.push_back(polyline3(line));
+    e.push_back(colourAttr(ElementType::PolylineColour, {1.0, 0.55, 0.1}));
+    for (const auto& line : previewClipped_) e.push_back(polyline3(line));
+    e.push_back(colourAttr(ElementType::PolylineColour, {1.0, 0.15, 0.15}));
+    for (const auto& line : previewLost_) e.push_back(polyline3(line));
     rewriteStructure(phigs_.store(), structures::overlay, e);
 }
 

@@ -14,7 +14,8 @@ namespace acsynt::session_detail {
 using namespace phigs;
 
 inline const char* const title = "ACSYNT B-SPLINE MODULE V1.2.2";
-inline const std::vector<std::string> mainItems{"FILE", "VIEW", "CURVE_MAP", "SURF_REDN", "MODELS", "EXIT"};
+inline const std::vector<std::string> mainItems{"FILE",   "VIEW", "CURVE_MAP", "SURF_REDN",
+                                                "MODELS", "UNDO", "REDO",      "EXIT"};
 inline const std::vector<std::string> fileItems{"RETURN",   "READ_MODEL", "READ_CURVE_FILE", "SAVE_MODEL",
                                                 "ARCHIVE",  "RETRIEVE",   "EXPORT",          "IMPORT",
                                                 "HARDCOPY", "EXIT"};

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "acsynt/ModelList.h"
+#include "acsynt/session/History.h"
+#include "acsynt/session/MappingRecord.h"
 #include "acsynt/session/ModelPicture.h"
 #include "acsynt/session/ScreenLayout.h"
 #include "geom/CurveFile.h"
@@ -52,23 +54,6 @@ struct SessionSettings {
     phigs::OutputConnection connection;
 };
 
-/// The marker of DEFINE POINT: the reference point on the picked patch.
-struct ReferencePoint {
-    int component = -1;
-    int patch = 0;
-    double u = 0, w = 0;
-};
-
-/// One MAP CURVE: which curve on which component, and what came out.
-struct MappingRecord {
-    std::string model, component, curveFile;
-    ReferencePoint reference;
-    std::size_t parts = 0, loops = 0, boundaryWalks = 0;
-    std::vector<std::size_t> loopsPerPart;
-    std::vector<std::vector<glm::dvec3>> polylines;    ///< the mapped loops in model coordinates
-    std::vector<std::vector<glm::dvec2>> uvPolylines;  ///< the same loops in the component's (u, w)
-};
-
 /// One data reduction of a component (SURF_REDN).
 struct ReductionRecord {
     std::string model, reducedModel, component, direction, mode;
@@ -79,6 +64,17 @@ struct ReductionRecord {
     double maxError = 0;
     geom::SurfaceDeviation deviation;
     int componentIndex = -1;
+};
+
+/// What UNDO and REDO bring back: the models, the mappings and reductions made on them, the
+/// reference point and the curve's placement.
+struct SessionState {
+    ModelList models;
+    std::vector<MappingRecord> mappings;
+    std::vector<ReductionRecord> reductions;
+    std::optional<ReferencePoint> reference;
+    geom::curvemap::Placement placement;
+    bool placed = false;  ///< DEFINE POINT finished (DONE)
 };
 
 /// The menu-driven ACSYNT design session: a PHIGS workstation showing the model (one or four
@@ -154,6 +150,10 @@ public:
     /// session's input: false (with the message) when it is refused and nothing changed.
     bool importCadFile(const std::filesystem::path& path);
 
+    /// Changes UNDO can take back, and undone changes REDO can make again.
+    std::size_t undoCount() const { return history_.undoCount(); }
+    std::size_t redoCount() const { return history_.redoCount(); }
+
     /// The text summary (patch picked, marker (u, w), mapped loops, control points before and after).
     std::string summary() const;
     /// The session so far as a script that replays it.
@@ -203,6 +203,12 @@ private:
     void prompt(const std::string& text, Awaiting what);
 
     void mainMenu();
+    // UNDO / REDO (SessionUndo.cpp)
+    SessionState state() const;
+    void restore(SessionState state);
+    void remember(SessionState before, const std::string& what);  ///< a change was made from `before`
+    void undo();
+    void redo();
     void fileMenu(const std::string& item);
     void viewMenu(const std::string& item);
     void curveMenu(const std::string& item);
@@ -219,6 +225,8 @@ private:
     void archive(const std::string& name, bool retrieve);
     void reduce(int component, double tolerance, std::size_t count);
     void mapCurve(bool previewOnly);
+    /// MAP PREVIEW: every part's projection lines, or its placed outline when it maps nothing.
+    void previewMapping(const ComponentMapping& mapped);
     void showModel();  ///< rebuilds the model structures after the current model changed
     void updateViews();
     void drawScreen();  ///< menu, pad, sliders, message
@@ -278,7 +286,9 @@ private:
     std::optional<phigs::SurfacePickDetail> lastPickDetail_;
     std::vector<MappingRecord> mappings_;
     bool mappedSincePlaced_ = false;
-    std::vector<std::vector<glm::dvec3>> previewLines_;
+    std::vector<std::vector<glm::dvec3>> previewLines_;    ///< MAP PREVIEW: parts that map
+    std::vector<std::vector<glm::dvec3>> previewClipped_;  ///< parts clipped at an edge
+    std::vector<std::vector<glm::dvec3>> previewLost_;     ///< placed outlines of parts that map nothing
 
     // SURF_REDN
     std::string reductionDirection_ = "U";
@@ -288,6 +298,7 @@ private:
 
     std::vector<std::filesystem::path> pictures_;
     std::vector<std::filesystem::path> hardcopies_;
+    History<SessionState> history_;
 };
 
 }  // namespace acsynt

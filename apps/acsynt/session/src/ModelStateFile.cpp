@@ -1,0 +1,285 @@
+#include "acsynt/session/ModelStateFile.h"
+
+#include "acsynt/ModelFile.h"
+
+#include "geom/GeometryError.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace acsynt {
+
+namespace {
+
+std::string hex(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%a", v);
+    return buffer;
+}
+
+void writeVector(std::ostream& out, const char* key, const std::vector<double>& values) {
+    out << key << " " << values.size();
+    for (double v : values) out << " " << hex(v);
+    out << "\n";
+}
+
+const char* kindKeyword(ComponentKind kind) {
+    return componentKindKeyword(kind);
+}
+
+/// Line-by-line reader: each line a keyword and words; faults name file and line.
+class Reader {
+public:
+    Reader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+
+    /// The next non-empty line's words; the first must be `keyword`.
+    std::vector<std::string> line(const std::string& keyword, std::size_t minWords = 1) {
+        std::vector<std::string> words = next();
+        if (words.empty()) fail("the file ends where '" + keyword + "' was expected");
+        if (words[0] != keyword) fail("expected '" + keyword + "', found '" + words[0] + "'");
+        if (words.size() < minWords)
+            fail("'" + keyword + "' needs " + std::to_string(minWords - 1) + " values");
+        return words;
+    }
+    /// The next line's words (empty at the end of the file).
+    std::vector<std::string> next() {
+        std::string text;
+        while (std::getline(in_, text)) {
+            ++number_;
+            if (text.size() > 1u << 20) fail("a line longer than 1 MB");
+            std::istringstream words(text);
+            std::vector<std::string> out;
+            for (std::string w; words >> w;) out.push_back(w);
+            if (!out.empty() && out[0][0] != '#') return out;  // blank lines and comments are skipped
+        }
+        return {};
+    }
+    double real(const std::string& word) {
+        char* end = nullptr;
+        const double v = std::strtod(word.c_str(), &end);
+        if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(v))
+            fail("'" + word + "' is not a finite number");
+        return v;
+    }
+    std::size_t count(const std::string& word, std::size_t limit) {
+        const double v = real(word);
+        if (!(v >= 0) || v != std::floor(v) || v > double(limit))
+            fail("'" + word + "' is not a count from 0 to " + std::to_string(limit));
+        return std::size_t(v);
+    }
+    std::string name(const std::string& word) {
+        if (!isValidName(word)) fail("'" + word + "' is not a valid name");
+        return word;
+    }
+    std::vector<double> reals(const std::vector<std::string>& words, std::size_t from, std::size_t limit) {
+        const std::size_t n = count(words.at(from), limit);
+        if (words.size() != from + 1 + n) fail("expected " + std::to_string(n) + " numbers");
+        std::vector<double> out;
+        for (std::size_t i = 0; i < n; ++i) out.push_back(real(words[from + 1 + i]));
+        return out;
+    }
+    [[noreturn]] void fail(const std::string& reason) const { throw ModelFileError(file_, number_, reason); }
+
+private:
+    std::istream& in_;
+    std::string file_;
+    int number_ = 0;
+};
+
+ComponentKind kindOf(Reader& r, const std::string& word) {
+    for (ComponentKind k : {ComponentKind::Fuselage, ComponentKind::Wing, ComponentKind::HorizontalTail,
+                            ComponentKind::VerticalTail, ComponentKind::Nacelle})
+        if (word == kindKeyword(k)) return k;
+    r.fail("unknown component kind '" + word + "'");
+}
+
+Component readComponent(Reader& r, std::size_t& points) {
+    const auto head = r.line("component", 5);
+    Component c;
+    c.name = r.name(head[1]);
+    c.kind = kindOf(r, head[2]);
+    c.closedU = r.count(head[3], 1) == 1;
+    c.closedW = r.count(head[4], 1) == 1;
+    const auto colour = r.line("colour", 4);
+    c.colour = {r.real(colour[1]), r.real(colour[2]), r.real(colour[3])};
+    const auto s = r.line("surface", 6);
+    const int degreeU = int(r.count(s[1], 9)), degreeV = int(r.count(s[2], 9));
+    const std::size_t countU = r.count(s[3], kModelStateMaxPoints),
+                      countV = r.count(s[4], kModelStateMaxPoints);
+    const bool rational = r.count(s[5], 1) == 1;
+    if (countU * countV > kModelStateMaxPoints || (points += countU * countV) > kModelStateMaxPoints)
+        r.fail("more than " + std::to_string(kModelStateMaxPoints) + " control points");
+    std::vector<double> knotsU = r.reals(r.line("knots_u", 2), 1, countU + 10);
+    std::vector<double> knotsV = r.reals(r.line("knots_w", 2), 1, countV + 10);
+    std::vector<glm::dvec3> net;
+    std::vector<double> weights;
+    for (std::size_t i = 0; i < countU * countV; ++i) {
+        const auto p = r.line("p", rational ? 5 : 4);
+        if (p.size() != (rational ? 5u : 4u))
+            r.fail("a control point has x y z" + std::string(rational ? " w" : ""));
+        net.push_back({r.real(p[1]), r.real(p[2]), r.real(p[3])});
+        if (rational) weights.push_back(r.real(p[4]));
+    }
+    try {
+        c.surface = geom::Surface(degreeU, degreeV, std::move(knotsU), std::move(knotsV), countU, countV,
+                                  std::move(net), std::move(weights));
+        c.updatePatches();
+    } catch (const geom::GeometryError& e) {
+        r.fail(std::string("component ") + c.name + ": " + e.what());
+    }
+    return c;
+}
+
+MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const Model& model,
+                          std::size_t& vertices) {
+    MappingRecord m;
+    m.model = model.name;
+    m.curveFile = head.at(1);
+    m.component = r.name(head.at(2));
+    if (!model.find(m.component)) r.fail("no component " + m.component + " in the model");
+    const auto ref = r.line("reference", 5);
+    m.reference.component = int(r.count(ref[1], model.components.size() - 1));
+    m.reference.patch = int(r.count(ref[2], 1u << 20));
+    m.reference.u = r.real(ref[3]);
+    m.reference.w = r.real(ref[4]);
+    const auto parts = r.line("parts", 2);
+    m.parts = r.count(parts[1], 1u << 16);
+    for (std::size_t i = 0; i < m.parts; ++i) {
+        const auto p = r.line("part", 5);
+        PartReport report;
+        report.name = p[1];
+        if (p[2] == "MAPPED")
+            report.outcome = PartOutcome::Mapped;
+        else if (p[2] == "CLIPPED")
+            report.outcome = PartOutcome::Clipped;
+        else if (p[2] == "LOST")
+            report.outcome = PartOutcome::Lost;
+        else
+            r.fail("unknown part outcome '" + p[2] + "'");
+        report.loops = r.count(p[3], 1u << 20);
+        report.boundaryWalks = r.count(p[4], 1u << 20);
+        for (std::size_t k = 5; k < p.size(); ++k) report.reason += (k > 5 ? " " : "") + p[k];
+        m.loopsPerPart.push_back(report.loops);
+        m.loops += report.loops;
+        m.boundaryWalks += report.boundaryWalks;
+        m.partReports.push_back(std::move(report));
+    }
+    for (std::size_t l = 0; l < m.loops; ++l) {
+        const auto loop = r.line("loop", 2);
+        const std::size_t n = r.count(loop[1], kModelStateMaxVertices);
+        if ((vertices += n) > kModelStateMaxVertices)
+            r.fail("more than " + std::to_string(kModelStateMaxVertices) + " mapped vertices");
+        std::vector<glm::dvec2> uv;
+        std::vector<glm::dvec3> xyz;
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto v = r.line("v", 6);
+            if (v.size() != 6) r.fail("a loop vertex has u w x y z");
+            uv.push_back({r.real(v[1]), r.real(v[2])});
+            xyz.push_back({r.real(v[3]), r.real(v[4]), r.real(v[5])});
+        }
+        m.uvPolylines.push_back(std::move(uv));
+        m.polylines.push_back(std::move(xyz));
+    }
+    r.line("end");
+    return m;
+}
+
+}  // namespace
+
+void writeModelState(std::ostream& out, const Model& model, const std::vector<MappingRecord>& mappings) {
+    out << "acsynt-surfaces " << modelStateVersion << "\n";
+    out << "# " << model.name << ": B-spline surfaces and mapped curves, numbers in C99 hexadecimal\n";
+    out << "model " << model.name << " " << model.components.size() << "\n";
+    for (const Component& c : model.components) {
+        const geom::Surface& s = c.surface;
+        out << "component " << c.name << " " << kindKeyword(c.kind) << " " << c.closedU << " " << c.closedW
+            << "\n";
+        out << "colour " << hex(c.colour.x) << " " << hex(c.colour.y) << " " << hex(c.colour.z) << "\n";
+        out << "surface " << s.degreeU << " " << s.degreeV << " " << s.countU << " " << s.countV << " "
+            << s.rational() << "\n";
+        writeVector(out, "knots_u", s.knotsU);
+        writeVector(out, "knots_w", s.knotsV);
+        for (std::size_t i = 0; i < s.points.size(); ++i) {
+            out << "p " << hex(s.points[i].x) << " " << hex(s.points[i].y) << " " << hex(s.points[i].z);
+            if (s.rational()) out << " " << hex(s.weights[i]);
+            out << "\n";
+        }
+    }
+    for (const MappingRecord& m : mappings) {
+        if (m.model != model.name) continue;
+        std::string file = m.curveFile;
+        for (char& ch : file)
+            if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') ch = '_';
+        out << "mapping " << (file.empty() ? "-" : file) << " " << m.component << "\n";
+        out << "reference " << m.reference.component << " " << m.reference.patch << " " << hex(m.reference.u)
+            << " " << hex(m.reference.w) << "\n";
+        out << "parts " << m.partReports.size() << "\n";
+        for (const PartReport& p : m.partReports) {
+            std::string reason = p.reason;
+            for (char& ch : reason)
+                if (ch == '\n' || ch == '\r') ch = ' ';
+            std::string name = p.name.empty() ? std::string("-") : p.name;
+            for (char& ch : name)
+                if (ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r') ch = '_';
+            out << "part " << name << " " << outcomeName(p.outcome) << " " << p.loops << " "
+                << p.boundaryWalks << (reason.empty() ? "" : " ") << reason << "\n";
+        }
+        for (std::size_t l = 0; l < m.polylines.size(); ++l) {
+            out << "loop " << m.polylines[l].size() << "\n";
+            for (std::size_t i = 0; i < m.polylines[l].size(); ++i) {
+                const glm::dvec2 uv = m.uvPolylines[l][i];
+                const glm::dvec3 p = m.polylines[l][i];
+                out << "v " << hex(uv.x) << " " << hex(uv.y) << " " << hex(p.x) << " " << hex(p.y) << " "
+                    << hex(p.z) << "\n";
+            }
+        }
+        out << "end\n";
+    }
+    out << "end\n";
+}
+
+bool isModelStateFile(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string first;
+    return in && std::getline(in, first) && first.rfind("acsynt-surfaces", 0) == 0;
+}
+
+ModelState parseModelState(std::istream& in, const std::string& fileName) {
+    Reader r(in, fileName);
+    const auto heading = r.line("acsynt-surfaces", 2);
+    if (heading[1] != std::to_string(modelStateVersion))
+        r.fail("version " + heading[1] + " is not " + std::to_string(modelStateVersion));
+    ModelState state;
+    const auto model = r.line("model", 3);
+    state.model.name = r.name(model[1]);
+    state.model.sourceFile = fileName;
+    const std::size_t components = r.count(model[2], kModelMaxComponents * 2);
+    std::size_t points = 0, vertices = 0;
+    for (std::size_t i = 0; i < components; ++i) {
+        Component c = readComponent(r, points);
+        if (state.model.find(c.name)) r.fail("a second component named " + c.name);
+        state.model.components.push_back(std::move(c));
+    }
+    if (state.model.patchCount() > kModelMaxPatches)
+        r.fail("more than " + std::to_string(kModelMaxPatches) + " patches");
+    for (auto words = r.next();; words = r.next()) {
+        if (words.empty()) r.fail("the file ends before 'end'");
+        if (words[0] == "end") break;
+        if (words[0] != "mapping" || words.size() != 3) r.fail("expected 'mapping CURVE COMPONENT' or 'end'");
+        state.mappings.push_back(readMapping(r, words, state.model, vertices));
+    }
+    return state;
+}
+
+ModelState readModelState(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw ModelFileError(path.string(), 0, "is a directory");
+    std::ifstream in(path);
+    if (!in) throw ModelFileError(path.string(), 0, "cannot be opened");
+    return parseModelState(in, path.string());
+}
+
+}  // namespace acsynt

@@ -1,0 +1,31 @@
+// SURF_REDN BY COUNT says how many knots it removed when that is fewer than asked, and why.
+#include "SessionTestSupport.h"
+
+#include "geom/Evaluate.h"
+
+using session_test::Driver;
+
+TEST_CASE("SURF_REDN BY COUNT: asking more knots than the wing's span has says how many and why") {
+    Driver d("reduction_count");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice SURF_REDN", "choice BY_COUNT", "choice REDUCE_U"});
+    const acsynt::Model& m = d.session.models().current();
+    const acsynt::Component* wing = m.find("right_wing");
+    REQUIRE(wing);
+    const std::size_t before = wing->surface.countU;  // 6 sections: 2 interior knots
+    d.pickAt(geom::evaluate(wing->surface, 0.5, 0.3), 1);
+    d.run({"string 5"});
+    REQUIRE(d.session.reductions().size() == 1);
+    const acsynt::ReductionRecord& r = d.session.reductions()[0];
+    CHECK(r.removedU < 5);
+    CHECK(r.countUAfter == before - r.removedU);
+    const std::string expected = "; ONLY " + std::to_string(r.removedU) + " OF 5 KNOTS REMOVED IN U (";
+    CHECK(d.session.message().find(expected) != std::string::npos);
+    CHECK(d.session.message().find("REMOVED IN W") == std::string::npos);
+    // Undone, then asking for no more than there are says nothing more.
+    d.run({"choice RETURN", "choice UNDO", "choice SURF_REDN", "choice BY_COUNT", "choice REDUCE_U"});
+    CHECK(d.session.models().size() == 1);
+    d.pickAt(geom::evaluate(d.session.models().current().find("right_wing")->surface, 0.5, 0.3), 1);
+    d.run({"string 1"});
+    CHECK(d.session.message().find("ONLY") == std::string::npos);
+}

@@ -1,0 +1,155 @@
+// SAVE MODEL writes the current model as it is (reduced surfaces, mapped curves) and READ MODEL
+// gives it back bit for bit; a name already loaded is read under a new name, said on the line.
+#include "SessionTestSupport.h"
+
+#include "acsynt/session/ModelStateFile.h"
+#include "geom/Evaluate.h"
+
+#include <fstream>
+#include <sstream>
+
+using session_test::Driver;
+
+namespace {
+
+int componentIndex(const acsynt::Model& m, const std::string& name) {
+    for (std::size_t i = 0; i < m.components.size(); ++i)
+        if (m.components[i].name == name) return int(i);
+    FAIL("no component " << name);
+    return -1;
+}
+
+void pickOn(Driver& d, const std::string& name, double u, double w) {
+    const acsynt::Model& m = d.session.models().current();
+    d.pickAt(geom::evaluate(m.components[std::size_t(componentIndex(m, name))].surface, u, w), 1);
+}
+
+/// The transport with its fuselage reduced and the logo mapped on the reduced model's wing.
+void reduceAndMap(Driver& d) {
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice SURF_REDN", "choice BY_TOLERANCE",
+           "choice REDUCE_U&W"});
+    pickOn(d, "fuselage", 0.5, 0.5);
+    d.run({"string 0.01", "choice RETURN"});
+    REQUIRE(d.session.models().current().name == "transport_R1");
+    d.run({"choice CURVE_MAP", "choice LOAD_CURVE", "string acslogo.crv 1", "choice DEFINE_POINT"});
+    pickOn(d, "right_wing", 0.5, 0.38);
+    pickOn(d, "right_wing", 0.5, 0.38);
+    d.run({"choice ACCEPT", "choice DONE device 2", "choice MAP_CURVE", "choice RETURN"});
+    REQUIRE(d.session.mappings().size() == 1);
+    REQUIRE(d.session.mappings()[0].model == "transport_R1");
+}
+
+void requireSameModel(const acsynt::Model& a, const acsynt::Model& b) {
+    REQUIRE(a.components.size() == b.components.size());
+    for (std::size_t c = 0; c < a.components.size(); ++c) {
+        const acsynt::Component& x = a.components[c];
+        const acsynt::Component& y = b.components[c];
+        INFO("component " << x.name);
+        CHECK(x.name == y.name);
+        CHECK(x.kind == y.kind);
+        CHECK(x.colour == y.colour);
+        CHECK(x.closedU == y.closedU);
+        CHECK(x.closedW == y.closedW);
+        CHECK(x.surface.degreeU == y.surface.degreeU);
+        CHECK(x.surface.degreeV == y.surface.degreeV);
+        CHECK(x.surface.knotsU == y.surface.knotsU);  // bit for bit
+        CHECK(x.surface.knotsV == y.surface.knotsV);
+        CHECK(x.surface.countU == y.surface.countU);
+        CHECK(x.surface.countV == y.surface.countV);
+        CHECK(x.surface.points == y.surface.points);
+        CHECK(x.surface.weights == y.surface.weights);
+        CHECK(x.patches.patches.size() == y.patches.patches.size());
+    }
+}
+
+void requireSameMapping(const acsynt::MappingRecord& a, const acsynt::MappingRecord& b) {
+    CHECK(a.component == b.component);
+    CHECK(a.curveFile == b.curveFile);
+    CHECK(a.reference.component == b.reference.component);
+    CHECK(a.reference.patch == b.reference.patch);
+    CHECK(a.reference.u == b.reference.u);
+    CHECK(a.reference.w == b.reference.w);
+    CHECK(a.parts == b.parts);
+    CHECK(a.loops == b.loops);
+    CHECK(a.boundaryWalks == b.boundaryWalks);
+    CHECK(a.loopsPerPart == b.loopsPerPart);
+    CHECK(a.polylines == b.polylines);
+    CHECK(a.uvPolylines == b.uvPolylines);
+    REQUIRE(a.partReports.size() == b.partReports.size());
+    for (std::size_t i = 0; i < a.partReports.size(); ++i) {
+        CHECK(a.partReports[i].name == b.partReports[i].name);
+        CHECK(a.partReports[i].outcome == b.partReports[i].outcome);
+        CHECK(a.partReports[i].loops == b.partReports[i].loops);
+        CHECK(a.partReports[i].boundaryWalks == b.partReports[i].boundaryWalks);
+        CHECK(a.partReports[i].reason == b.partReports[i].reason);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("SAVE MODEL: a reduced model with a mapped logo reads back bit for bit, renamed beside itself") {
+    Driver d("save_model");
+    const auto out = session_test::outputDirectory("save_model");
+    std::filesystem::remove_all(out);
+    reduceAndMap(d);
+    const acsynt::Model saved = d.session.models().current();
+    const acsynt::MappingRecord mapping = d.session.mappings()[0];
+    d.run({"choice FILE", "choice SAVE_MODEL", "string reduced.acs"});
+    CHECK(d.session.message() == "MODEL transport_R1 SAVED TO " + (out / "reduced.acs").string() +
+                                     ": 8 COMPONENTS, 1 MAPPED CURVES");
+
+    // The name is loaded: read back as transport_R1_2, said on the message line.
+    d.run({"choice READ_MODEL", "string " + (out / "reduced.acs").string()});
+    CHECK(d.session.message() ==
+          "MODEL transport_R1 READ AS transport_R1_2 (transport_R1 IS LOADED): 8 COMPONENTS, " +
+              std::to_string(saved.patchCount()) + " PATCHES, 1 MAPPED CURVES");
+    REQUIRE(d.session.models().size() == 3);
+    CHECK(d.session.models().current().name == "transport_R1_2");
+    requireSameModel(saved, d.session.models().current());
+    REQUIRE(d.session.mappings().size() == 2);
+    CHECK(d.session.mappings()[1].model == "transport_R1_2");
+    requireSameMapping(mapping, d.session.mappings()[1]);
+
+    // Saved again from the copy read back: the same text (nothing drifts through a round trip).
+    d.run({"choice SAVE_MODEL", "string again.acs"});
+    std::ostringstream first, second;
+    first << std::ifstream(out / "reduced.acs").rdbuf();
+    second << std::ifstream(out / "again.acs").rdbuf();
+    const std::string a = first.str(), b = second.str();
+    CHECK(a.substr(a.find('\n', a.find("model "))) == b.substr(b.find('\n', b.find("model "))));
+
+    // With the original deleted, the file reads back under its own name.
+    d.run({"choice RETURN", "choice MODELS", "choice PREVIOUS_MODEL", "choice DELETE_MODEL", "choice RETURN",
+           "choice FILE", "choice READ_MODEL", "string " + (out / "reduced.acs").string()});
+    CHECK(d.session.message().rfind("MODEL transport_R1 READ: 8 COMPONENTS", 0) == 0);
+    CHECK(d.session.models().current().name == "transport_R1");
+    requireSameModel(saved, d.session.models().current());
+    CHECK_FALSE(d.logHasError());
+}
+
+TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the models stay as they were") {
+    Driver d("save_model_bad");
+    const auto out = session_test::outputDirectory("save_model_bad");
+    std::filesystem::remove_all(out);
+    d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice SAVE_MODEL", "string good.acs"});
+    std::ostringstream text;
+    text << std::ifstream(out / "good.acs").rdbuf();
+    const std::string good = text.str();
+    // Cut at several places, a number spoiled, a wrong version.
+    std::vector<std::string> bad;
+    for (double f : {0.1, 0.5, 0.9, 0.999})
+        bad.push_back(good.substr(0, std::size_t(f * double(good.size()))));
+    std::string spoiled = good;
+    spoiled.replace(spoiled.find("\np ") + 3, 4, "zz z");
+    bad.push_back(spoiled);
+    bad.push_back("acsynt-surfaces 9\n" + good.substr(good.find('\n') + 1));
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+        const auto file = out / ("bad" + std::to_string(i) + ".acs");
+        std::ofstream(file) << bad[i];
+        d.run({"choice READ_MODEL", "string " + file.string()});
+        INFO("file " << i << ": " << d.session.message());
+        CHECK(d.session.message().find(file.string() + ":") != std::string::npos);
+        CHECK(d.session.models().size() == 1);
+    }
+}
