@@ -1,45 +1,21 @@
-/* Example 7, the C binding: the structure of example 1 (a yellow polyline and white text)
- * built through phigs.h alone, written to an archive file, the store emptied, the structure
- * retrieved from the archive and inquired element by element. (phigs.h has no workstation
- * functions yet, so this example stores and inquires where example 1 draws.)
+/* Example 7, the C binding: example 1 through phigs.h alone. A yellow zigzag and white text in
+ * structure 1, posted on an offscreen workstation (lavapipe, no display needed) whose
+ * connection identifier names the PNG it writes at every update and at close.
  *
- *     hello_c [FILE]      the archive file (default: hello_c.phigs)
+ *     hello_c [FILE.png]      the picture (default: hello_c.png)
  */
 #include <phigs.h>
 #include <stdio.h>
 
-static const char* element_name(Pelem_type type) {
-    switch (type) {
-        case PELEM_LINE_COLR:
-            return "SET POLYLINE COLOUR";
-        case PELEM_LINEWIDTH:
-            return "SET LINEWIDTH SCALE FACTOR";
-        case PELEM_POLYLINE3:
-            return "POLYLINE 3";
-        case PELEM_TEXT_COLR:
-            return "SET TEXT COLOUR";
-        case PELEM_CHAR_HT:
-            return "SET CHARACTER HEIGHT";
-        case PELEM_TEXT3:
-            return "TEXT 3";
-        default:
-            return "other";
-    }
-}
-
 int main(int argc, char** argv) {
-    const char* file = argc > 1 ? argv[1] : "hello_c.phigs";
+    const char* file = argc > 1 ? argv[1] : "hello_c.png";
     Ppoint3 zigzag[5] = {{0.1f, 0.2f, 0}, {0.3f, 0.5f, 0}, {0.5f, 0.2f, 0}, {0.7f, 0.5f, 0}, {0.9f, 0.2f, 0}};
     Ppoint_list3 line = {5, zigzag};
     Ppoint3 text_position = {0.1f, 0.7f, 0};
     Pvec3 text_directions[2] = {{1, 0, 0}, {0, 1, 0}};
     Pgcolr yellow, white;
-    Pint one = 1;
-    Pint_list structures = {1, &one};
-    Pint err = 0, n, element;
-    Pstruct_status status;
-    Pelem_type type;
-    size_t size;
+    Pint err = 0, posted = 0;
+    Pws_st ws_state = PWS_ST_WSCL;
 
     yellow.type = PMODEL_RGB;
     yellow.val.direct.x = 1, yellow.val.direct.y = 1, yellow.val.direct.z = 0;
@@ -56,28 +32,19 @@ int main(int argc, char** argv) {
     ptext3(&text_position, text_directions, "Hello, PHIGS");
     pclose_struct();
 
-    /* ARCHIVE STRUCTURES, then DELETE ALL STRUCTURES: the store is empty. */
-    popen_ar_file(1, file);
-    par_structs(1, &structures);
-    pdel_all_structs();
-    pinq_struct_status(1, &err, &status);
-    printf("after deleting: structure 1 %s\n",
-           status == PSTRUCT_STATUS_NON_EXIST ? "does not exist" : "exists");
-
-    /* RETRIEVE STRUCTURES brings it back from the file. */
-    pret_structs(1, &structures);
-    pclose_ar_file(1);
-    pinq_struct_status(1, &err, &status);
-    printf("after retrieving: structure 1 %s\n",
-           status == PSTRUCT_STATUS_NOT_EMPTY ? "is back" : "is missing");
-    n = 0;
-    for (element = 1;; ++element) {
-        pinq_elem_type_size(1, element, &err, &type, &size);
-        if (err != 0) break; /* 202: no such element, the end of the structure */
-        printf("  element %d: %s\n", (int)element, element_name(type));
-        ++n;
+    /* OPEN WORKSTATION on the offscreen type, POST STRUCTURE, UPDATE WORKSTATION: the picture. */
+    popen_ws(1, file, PWST_OFFSCREEN);
+    pinq_ws_st(&ws_state);
+    ppost_struct(1, 1, 0.5f);
+    pupd_ws(1, PFLAG_PERFORM);
+    {
+        Pint ids[4];
+        Pint_list list = {0, ids};
+        pinq_open_wss(4, 0, &err, &list, &posted);
     }
-    printf("%d elements\n", (int)n);
+    printf("workstation %s, %d open, picture in %s\n", ws_state == PWS_ST_WSOP ? "open" : "closed",
+           (int)posted, file);
+    pclose_ws(1);
     pclose_phigs();
-    return n == 6 ? 0 : 1;
+    return err == 0 && ws_state == PWS_ST_WSOP ? 0 : 1;
 }
