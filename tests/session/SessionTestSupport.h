@@ -6,6 +6,7 @@
 
 #include "../render/RenderTestSupport.h"
 #include "acsynt/session/Session.h"
+#include "geom/Evaluate.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/WorkstationDisplay.h"
@@ -127,6 +128,23 @@ inline void compareWithReference(const phigs::Image& image, const std::string& n
     if (differing > allowed) phigs::writePng(diff, out / (name + "_diff.png"));
     INFO(differing << " pixels differ, " << allowed << " allowed");
     CHECK(differing <= allowed);
+}
+
+/// The index of the component named `name` in `model`; fails the test when there is none.
+inline int componentIndex(const acsynt::Model& model, const std::string& name) {
+    for (std::size_t i = 0; i < model.components.size(); ++i)
+        if (model.components[i].name == name) return int(i);
+    FAIL("no component " << name);
+    return -1;
+}
+/// The same in the session's current model.
+inline int componentIndex(const acsynt::Session& s, const std::string& name) {
+    return componentIndex(s.models().current(), name);
+}
+/// Picks the current model's component `name` at its surface point (u, w), pick device 1.
+inline void pickOn(Driver& d, const std::string& name, double u, double w) {
+    const acsynt::Model& m = d.session.models().current();
+    d.pickAt(geom::evaluate(m.components[std::size_t(componentIndex(m, name))].surface, u, w), 1);
 }
 
 }  // namespace session_test

@@ -8,15 +8,10 @@
 
 using session_test::Driver;
 
-namespace {
+using session_test::componentIndex;
+using session_test::pickOn;
 
-int componentIndex(const acsynt::Session& s, const std::string& name) {
-    const auto& components = s.models().current().components;
-    for (std::size_t i = 0; i < components.size(); ++i)
-        if (components[i].name == name) return int(i);
-    FAIL("no component " << name);
-    return -1;
-}
+namespace {
 
 const acsynt::Component& component(const acsynt::Session& s, const std::string& name) {
     return s.models().current().components[std::size_t(componentIndex(s, name))];

@@ -10,19 +10,10 @@
 
 using session_test::Driver;
 
+using session_test::componentIndex;
+using session_test::pickOn;
+
 namespace {
-
-int componentIndex(const acsynt::Model& m, const std::string& name) {
-    for (std::size_t i = 0; i < m.components.size(); ++i)
-        if (m.components[i].name == name) return int(i);
-    FAIL("no component " << name);
-    return -1;
-}
-
-void pickOn(Driver& d, const std::string& name, double u, double w) {
-    const acsynt::Model& m = d.session.models().current();
-    d.pickAt(geom::evaluate(m.components[std::size_t(componentIndex(m, name))].surface, u, w), 1);
-}
 
 void mapLogo(Driver& d) {
     d.run({"choice CURVE_MAP", "choice LOAD_CURVE", "string acslogo.crv 0.45", "choice DEFINE_POINT"});
