@@ -66,7 +66,7 @@ glm::dvec3 high(const Plimit3& l) {
     return {l.x_max, l.y_max, l.z_max};
 }
 
-bool clips(Pclip_ind indicator, const char* function) {
+bool clips(const Pclip_ind& indicator, const char* function) {
     const int v = c::raw(indicator);
     if (v != PIND_NO_CLIP && v != PIND_CLIP) throw Error(PE_ENUM_TYPE_INVAL, function);
     return v == PIND_CLIP;
