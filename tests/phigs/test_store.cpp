@@ -1,10 +1,10 @@
 #include "ErrorNumber.h"
+#include "StoreModel.h"
 #include "phigs/Phigs.h"
 #include "phigs/store/StructureStore.h"
 
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <random>
 
 using namespace phigs;
@@ -362,20 +362,6 @@ TEST_CASE("paths to ancestors and descendants with order and depth", "[store]") 
 
 namespace {
 
-// `depth` references of every path, cut as the inquiry cuts them, sorted and unique.
-std::vector<StructurePath> cutPaths(std::vector<StructurePath> paths, StructurePathOrder order, int depth) {
-    for (auto& p : paths)
-        if (static_cast<int>(p.size()) > depth) {
-            if (order == StructurePathOrder::TopFirst)
-                p.resize(static_cast<std::size_t>(depth));
-            else
-                p.erase(p.begin(), p.end() - depth);
-        }
-    std::sort(paths.begin(), paths.end());
-    paths.erase(std::unique(paths.begin(), paths.end()), paths.end());
-    return paths;
-}
-
 // n chained diamonds: structure 3k+1 executes 3k+2 and 3k+3, which both execute 3k+4.
 void chainDiamonds(StructureStore& store, int n) {
     for (int k = 0; k < n; ++k) {
@@ -410,9 +396,11 @@ TEST_CASE("a cut path inquiry equals the whole answer cut, on random networks", 
             for (auto order : {StructurePathOrder::TopFirst, StructurePathOrder::BottomFirst})
                 for (int depth = 1; depth <= 4; ++depth) {
                     CHECK(store.pathsToDescendants(id, order, depth) ==
-                          cutPaths(store.pathsToDescendants(id, order, 0), order, depth));
+                          test::cutPaths(store.pathsToDescendants(id, order, 0), depth,
+                                         order == StructurePathOrder::TopFirst));
                     CHECK(store.pathsToAncestors(id, order, depth) ==
-                          cutPaths(store.pathsToAncestors(id, order, 0), order, depth));
+                          test::cutPaths(store.pathsToAncestors(id, order, 0), depth,
+                                         order == StructurePathOrder::TopFirst));
                 }
     }
 }

@@ -576,8 +576,9 @@ private:
                     curve(
                         s, stored, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
                 } else if constexpr (std::is_same_v<E, GdpElement>) {
-                    // Registered GDPs draw as exact curves; the others are ignored (ISO 9592).
-                    if (isRegisteredGdp(e.identifier) && checkGdp(e).empty())
+                    // Registered GDPs draw as exact curves (the store refused bad points at
+                    // insert); the others are ignored (ISO 9592).
+                    if (isRegisteredGdp(e.identifier))
                         curve(
                             s, stored, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
                 } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
