@@ -66,8 +66,8 @@ static void build_and_compose(void) {
         ptranslate3(&(Pvec3){10, 0, 0}, &err, t);
         pcompose_tran_matrix3(t, &(Ppoint3){1, 1, 0}, &(Pvec3){0, 0, 5}, 0, 0, half_pi, &(Pvec3){2, 2, 2},
                               &err, composed);
-        ptran_point3(&(Ppoint3){2, 1, 0}, composed, &err, &out); /* built first, then t */
-        CHECK(is_point(&out, 11, 3, 5));
+        ptran_point3(&(Ppoint3){2, 1, 0}, composed, &err, &out); /* t first, then built */
+        CHECK(is_point(&out, 1, 23, 5));
     }
     pbuild_tran_matrix(&(Ppoint){1, 1}, &(Pvec){1, 0}, half_pi, &(Pvec){1, 1}, &err, b2);
     ptran_point(&(Ppoint){2, 1}, b2, &err, &out2);

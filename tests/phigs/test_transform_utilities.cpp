@@ -41,11 +41,17 @@ TEST_CASE("build scales, rotates x, y, z about the fixed point, then shifts; com
         {1, 0, 0}));
     const glm::dmat4 composed = composeTransformationMatrix3(translate3({10, 0, 0}), {1, 1, 0}, {0, 0, 5},
                                                              {0, 0, quarter}, {2, 2, 2});
-    CHECK(near(*transformPoint3(composed, {2, 1, 0}), {11, 3, 5}));
+    // m first ((2, 1, 0) -> (12, 1, 0)), then the built transformation: scale 2 and a quarter
+    // turn about (1, 1, 0), shift 5 in z.
+    CHECK(near(*transformPoint3(composed, {2, 1, 0}), {1, 23, 5}));
     const glm::dmat3 built2 = buildTransformationMatrix2({1, 1}, {1, 0}, quarter, {1, 1});
     const glm::dvec2 p = *transformPoint2(built2, {2, 1});
     CHECK(p.x == Approx(2));
     CHECK(p.y == Approx(2));
+    const glm::dvec2 q = *transformPoint2(
+        composeTransformationMatrix2(translate2({10, 0}), {1, 1}, {1, 0}, quarter, {1, 1}), {2, 1});
+    CHECK(q.x == Approx(2));  // (2, 1) -> (12, 1) -> quarter turn about (1, 1) -> (1, 12) -> shift
+    CHECK(q.y == Approx(12));
 }
 
 TEST_CASE("transform point refuses w = 0", "[transform]") {

@@ -81,12 +81,12 @@ glm::dmat3 buildTransformationMatrix2(const glm::dvec2& fixedPoint, const glm::d
 glm::dmat4 composeTransformationMatrix3(const glm::dmat4& m, const glm::dvec3& fixedPoint,
                                         const glm::dvec3& shift, const glm::dvec3& angles,
                                         const glm::dvec3& scale) {
-    return m * buildTransformationMatrix3(fixedPoint, shift, angles, scale);
+    return buildTransformationMatrix3(fixedPoint, shift, angles, scale) * m;
 }
 
 glm::dmat3 composeTransformationMatrix2(const glm::dmat3& m, const glm::dvec2& fixedPoint,
                                         const glm::dvec2& shift, double angle, const glm::dvec2& scale) {
-    return m * buildTransformationMatrix2(fixedPoint, shift, angle, scale);
+    return buildTransformationMatrix2(fixedPoint, shift, angle, scale) * m;
 }
 
 std::optional<glm::dvec3> transformPoint3(const glm::dmat4& m, const glm::dvec3& p) {

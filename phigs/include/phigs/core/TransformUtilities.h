@@ -31,8 +31,9 @@ glm::dmat4 buildTransformationMatrix3(const glm::dvec3& fixedPoint, const glm::d
 /// BUILD TRANSFORMATION MATRIX: scale, rotate, relative to the fixed point, then shift.
 glm::dmat3 buildTransformationMatrix2(const glm::dvec2& fixedPoint, const glm::dvec2& shift, double angle,
                                       const glm::dvec2& scale);
-/// COMPOSE TRANSFORMATION MATRIX 3 / COMPOSE TRANSFORMATION MATRIX: m x built, so the built
-/// transformation applies first (as COMPOSE MATRIX 3 (m, built) would give).
+/// COMPOSE TRANSFORMATION MATRIX 3 / COMPOSE TRANSFORMATION MATRIX: built x m, so m applies
+/// first and the built transformation after it (the order the PHIGS C binding's manual pages
+/// give: result = a x b with b the input matrix, Sun Microsystems 1991).
 glm::dmat4 composeTransformationMatrix3(const glm::dmat4& m, const glm::dvec3& fixedPoint,
                                         const glm::dvec3& shift, const glm::dvec3& angles,
                                         const glm::dvec3& scale);
