@@ -156,6 +156,16 @@ static void attributes(void) {
     CHECK(last(PELEM_EDGEWIDTH)->float_data == 3.0f);
     pset_edge_colr_ind(5);
     CHECK(last(PELEM_EDGE_COLR_IND)->int_data == 5);
+    pset_pat_size(&(Pfloat_size){0.5f, 2.0f});
+    d = last(PELEM_PAT_SIZE);
+    CHECK(d->pat_size.size_x == 0.5f && d->pat_size.size_y == 2.0f);
+    pset_pat_ref_point(&(Ppoint){3, 4});
+    d = last(PELEM_PAT_REF_POINT);
+    CHECK(d->pat_ref_point.x == 3 && d->pat_ref_point.y == 4);
+    pset_pat_ref_point_vecs(&(Ppoint3){1, 2, 3}, (Pvec3[2]){{0, 1, 0}, {0, 0, 2}});
+    d = last(PELEM_PAT_REF_POINT_VECS);
+    CHECK(d->pat_ref_point_vecs.ref_point.z == 3 && d->pat_ref_point_vecs.ref_vec[0].delta_y == 1);
+    CHECK(d->pat_ref_point_vecs.ref_vec[1].delta_z == 2 && d->pat_ref_point_vecs.ref_vec[1].delta_x == 0);
     pset_line_colr(&rgb);
     d = last(PELEM_LINE_COLR);
     CHECK(d->colr.type == PMODEL_RGB && d->colr.val.direct.y == 0.5f);
@@ -277,6 +287,10 @@ static void refusals(void) {
     EXPECT_REFUSED(pset_local_tran3(NULL, PTYPE_REPLACE), -204, Pfn_set_local_tran3);
     EXPECT_REFUSED(pset_char_ht(INFINITY), -202, Pfn_set_char_ht);
     EXPECT_REFUSED(pappl_data(&(Pdata){-2, NULL}), -204, Pfn_appl_data);
+    EXPECT_REFUSED(pset_pat_size(NULL), -204, Pfn_set_pat_size);
+    EXPECT_REFUSED(pset_pat_ref_point(NULL), -204, Pfn_set_pat_ref_point);
+    EXPECT_REFUSED(pset_pat_ref_point_vecs(&(Ppoint3){0, 0, 0}, NULL), -204, Pfn_set_pat_ref_point_vecs);
+    EXPECT_REFUSED(pset_pat_size(&(Pfloat_size){NAN, 1}), -202, Pfn_set_pat_size);
     /* a 3D circle needs three points, and an arc three that are not collinear */
     EXPECT_REFUSED(pgdp3(&(Ppoint_list3){2, p3}, PGDP_CIRCLE, NULL), -202, Pfn_gdp3);
     EXPECT_REFUSED(pgdp(&(Ppoint_list){3, (Ppoint[3]){{0, 0}, {1, 1}, {2, 2}}}, PGDP_ARC, NULL), -202,

@@ -44,12 +44,30 @@ inline geom::Surface randomSurface(std::mt19937& rng) {
                          randomPoints(rng, static_cast<int>(nu * nv)));
 }
 
+/// One of the three pattern elements, each with only its own fields set.
+inline PatternAttribute randomPattern(std::mt19937& rng) {
+    using T = ElementType;
+    const T types[] = {T::PatternSize, T::PatternReferencePoint, T::PatternReferencePointAndVectors};
+    PatternAttribute e{types[randomInt(rng, 0, 2)]};
+    if (e.type == T::PatternSize) {
+        e.size = {randomReal(rng), randomReal(rng)};
+        return e;
+    }
+    e.referencePoint = randomPoint(rng);
+    if (e.type == T::PatternReferencePoint) {
+        e.referencePoint.z = 0;
+        return e;
+    }
+    e.vectorX = randomPoint(rng), e.vectorY = randomPoint(rng);
+    return e;
+}
+
 /// A random element; executes refer to structures in [1, maxId] greater than `self` so that
 /// networks built this way are acyclic.
 inline Element randomElement(std::mt19937& rng, int self, int maxId) {
     using T = ElementType;
     bool twoD = randomInt(rng, 0, 1) == 1;
-    switch (randomInt(rng, 0, 30)) {
+    switch (randomInt(rng, 0, 31)) {
         case 0:
             return PolylineElement{randomPoints(rng, randomInt(rng, 0, 5)), twoD};
         case 1:
@@ -133,6 +151,8 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
                               std::string("gdp\0record", 10), twoD};
         case 29:
             return GseElement{randomInt(rng, -1000, 1000), std::string("gse\nrecord")};
+        case 30:
+            return randomPattern(rng);
         default:
             return ApplicationDataElement{std::string("\0binary\n bytes", 14)};
     }

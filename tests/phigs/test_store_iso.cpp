@@ -159,6 +159,51 @@ TEST_CASE("an element with a value that is not finite is refused, whatever its t
     CHECK(store.elementCount(1) == 1);
 }
 
+TEST_CASE("pattern elements carry only their own fields and come back from an archive", "[store][iso]") {
+    using T = ElementType;
+    PatternAttribute size{T::PatternSize};
+    size.size = {0.25, 3};
+    PatternAttribute point{T::PatternReferencePoint};
+    point.referencePoint = {1, 2, 0};
+    PatternAttribute vectors{T::PatternReferencePointAndVectors};
+    vectors.referencePoint = {1, 2, 3}, vectors.vectorX = {0, 0, 1}, vectors.vectorY = {0, 2, 0};
+    PatternAttribute sizeWithPoint = size;
+    sizeWithPoint.referencePoint = {1, 0, 0};
+    PatternAttribute pointWithZ = point;
+    pointWithZ.referencePoint.z = 1;  // SET PATTERN REFERENCE POINT is 2D: z is 0
+    PatternAttribute pointWithVectors = point;
+    pointWithVectors.vectorX = {0, 1, 0};  // and it resets the vectors to the axes
+    PatternAttribute vectorsWithSize = vectors;
+    vectorsWithSize.size = {2, 2};
+
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    for (const PatternAttribute& bad : {sizeWithPoint, pointWithZ, pointWithVectors, vectorsWithSize}) {
+        INFO(elementTypeName(bad.type));
+        CHECK(errorOf([&] { store.insert(bad); }) == errors::InvalidElementData);
+    }
+    CHECK(store.elementCount(1) == 0);
+    for (const PatternAttribute& good : {size, point, vectors}) store.insert(good);
+    store.closeStructure();
+    CHECK(elementTypeName(T::PatternReferencePointAndVectors) == "SET PATTERN REFERENCE POINT AND VECTORS");
+
+    const std::filesystem::path file = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "iso_patterns.phar";
+    std::filesystem::remove(file);
+    phigs.openArchiveFile(3, file);
+    phigs.archiveStructures(3, {1});
+    phigs.closeArchiveFile(3);
+    store.deleteAllStructures();
+    phigs.openArchiveFile(3, file);
+    phigs.retrieveStructures(3, {1});
+    phigs.closeArchiveFile(3);
+    REQUIRE(store.elementCount(1) == 3);
+    CHECK(store.elementAt(1, 1) == Element{size});
+    CHECK(store.elementAt(1, 2) == Element{point});
+    CHECK(store.elementAt(1, 3) == Element{vectors});
+}
+
 TEST_CASE("empty structure creates, copy and delete network of a missing structure do nothing",
           "[store][iso]") {
     Phigs phigs;

@@ -79,6 +79,9 @@ typedef struct {
     Pint size_x, size_y;
 } Pint_size;
 typedef struct {
+    Pfloat size_x, size_y;
+} Pfloat_size;
+typedef struct {
     Pint_size dims;
     Pint* colr_array; /* dims.size_x * dims.size_y colour indices, row by row */
 } Ppat_rep;
@@ -208,8 +211,7 @@ typedef enum {
 #define PANNO_STYLE_LEAD_LINE 2
 
 /* Element types: PHIGS's in the standard's order, then the PHIGS PLUS ones this toolkit
- * stores (PELEM_*_COLR are the general-colour forms of the colour index attributes). The
- * pattern attributes are listed for completeness; the store holds none yet. */
+ * stores (PELEM_*_COLR are the general-colour forms of the colour index attributes). */
 typedef enum {
     PELEM_ALL,
     PELEM_NIL,
@@ -408,6 +410,12 @@ typedef union {
     Ptext_align text_align;
     Pint_style int_style;
     Pedge_flag edge_flag;
+    Pfloat_size pat_size;
+    struct {
+        Ppoint3 ref_point;
+        Pvec3 ref_vec[2];
+    } pat_ref_point_vecs;
+    Ppoint pat_ref_point;
     Pint_list names;
     struct {
         Paspect id;
@@ -556,6 +564,9 @@ enum {
     Pfn_set_edgetype = 53,
     Pfn_set_edgewidth = 54,
     Pfn_set_edge_colr_ind = 55,
+    Pfn_set_pat_size = 56,
+    Pfn_set_pat_ref_point_vecs = 57,
+    Pfn_set_pat_ref_point = 58,
     Pfn_add_names_set = 59,
     Pfn_remove_names_set = 60,
     Pfn_set_indiv_asf = 61,
@@ -725,6 +736,11 @@ void pset_edge_flag(Pedge_flag edge_flag);
 void pset_edgetype(Pint edgetype);
 void pset_edgewidth(Pfloat edgewidth);
 void pset_edge_colr_ind(Pint colr_ind);
+/* Pattern size, reference point and vectors: stored, archived and inquired; an interior of
+ * style PATTERN is drawn solid until patterns are drawn (see COVERAGE.md). */
+void pset_pat_size(const Pfloat_size* pat_size);
+void pset_pat_ref_point(const Ppoint* ref_point);
+void pset_pat_ref_point_vecs(const Ppoint3* ref_point, const Pvec3 ref_vec[2]);
 void pset_line_colr(const Pgcolr* colr);
 void pset_marker_colr(const Pgcolr* colr);
 void pset_text_colr(const Pgcolr* colr);

@@ -135,6 +135,15 @@ void colourContent(const ColourAttribute& e, Phigs_store& s) {
                               static_cast<Pfloat>(e.colour.rgb.z)};
 }
 
+void patternContent(const PatternAttribute& e, Phigs_store& s) {
+    if (e.type == ElementType::PatternSize)
+        s.data.pat_size = {static_cast<Pfloat>(e.size.x), static_cast<Pfloat>(e.size.y)};
+    else if (e.type == ElementType::PatternReferencePoint)
+        s.data.pat_ref_point = p2(e.referencePoint);
+    else
+        s.data.pat_ref_point_vecs = {p3(e.referencePoint), {v3(e.vectorX), v3(e.vectorY)}};
+}
+
 }  // namespace
 
 int fillContent(const Element& element, Phigs_store& s) {
@@ -161,6 +170,8 @@ int fillContent(const Element& element, Phigs_store& s) {
                 colourContent(e, s);
             else if constexpr (std::is_same_v<E, UpVectorAttribute>)
                 s.data.char_up_vec = {static_cast<Pfloat>(e.up.x), static_cast<Pfloat>(e.up.y)};
+            else if constexpr (std::is_same_v<E, PatternAttribute>)
+                patternContent(e, s);
             else if constexpr (std::is_same_v<E, AlignmentAttribute>)
                 s.data.text_align = {static_cast<Phor_text_align>(e.horizontal),
                                      static_cast<Pvert_text_align>(e.vertical)};

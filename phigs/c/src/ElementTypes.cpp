@@ -93,6 +93,9 @@ const std::map<ElementType, Pelem_type>& plainTypes() {
         {T::GeneralizedDrawingPrimitive3, PELEM_GDP3},
         {T::GeneralizedDrawingPrimitive, PELEM_GDP},
         {T::GeneralizedStructureElement, PELEM_GSE},
+        {T::PatternSize, PELEM_PAT_SIZE},
+        {T::PatternReferencePoint, PELEM_PAT_REF_POINT},
+        {T::PatternReferencePointAndVectors, PELEM_PAT_REF_POINT_VECS},
     };
     return table;
 }

@@ -296,6 +296,33 @@ void pset_edgewidth(Pfloat v) {
 void pset_edge_colr_ind(Pint v) {
     insertColourIndex(Pfn_set_edge_colr_ind, ElementType::EdgeColour, v);
 }
+void pset_pat_size(const Pfloat_size* size) {
+    insertElement(Pfn_set_pat_size, [&](const char* name) -> Element {
+        c::require(size, name);
+        PatternAttribute e{ElementType::PatternSize};
+        e.size = {size->size_x, size->size_y};
+        return e;
+    });
+}
+void pset_pat_ref_point(const Ppoint* point) {
+    insertElement(Pfn_set_pat_ref_point, [&](const char* name) -> Element {
+        c::require(point, name);
+        PatternAttribute e{ElementType::PatternReferencePoint};
+        e.referencePoint = {point->x, point->y, 0.0};
+        return e;
+    });
+}
+void pset_pat_ref_point_vecs(const Ppoint3* point, const Pvec3 vectors[2]) {
+    insertElement(Pfn_set_pat_ref_point_vecs, [&](const char* name) -> Element {
+        c::require(point, name);
+        c::require(vectors, name);
+        PatternAttribute e{ElementType::PatternReferencePointAndVectors};
+        e.referencePoint = {point->x, point->y, point->z};
+        e.vectorX = {vectors[0].delta_x, vectors[0].delta_y, vectors[0].delta_z};
+        e.vectorY = {vectors[1].delta_x, vectors[1].delta_y, vectors[1].delta_z};
+        return e;
+    });
+}
 void pset_line_colr(const Pgcolr* v) {
     insertColour(Pfn_line_colr, ElementType::PolylineColour, v);
 }

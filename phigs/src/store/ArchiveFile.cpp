@@ -280,8 +280,8 @@ Element decodeElement(Reader& in) {
                                       std::make_index_sequence<std::variant_size_v<Element>>{});
     std::visit(
         [&](auto& e) {
-            fields(in, e);
             if constexpr (requires { e.type; }) e.type = type;
+            fields(in, e);
             if constexpr (requires { e.twoD; })
                 e.twoD = type == ElementType::Polyline || type == ElementType::Polymarker ||
                          type == ElementType::FillArea || type == ElementType::FillAreaSet ||
@@ -308,7 +308,12 @@ std::size_t minElementText() {
             Element element = makeAlternative(static_cast<std::size_t>(index),
                                               std::make_index_sequence<std::variant_size_v<Element>>{});
             MinTextCounter counter;
-            std::visit([&](auto& e) { fields(counter, e); }, element);
+            std::visit(
+                [&](auto& e) {
+                    if constexpr (requires { e.type; }) e.type = type;
+                    fields(counter, e);
+                },
+                element);
             least = std::min(least, 1 + typeToken(type).size() + counter.total);
         }
         return least;

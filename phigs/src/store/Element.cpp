@@ -103,6 +103,9 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(ElementType::Cou
     "GENERALIZED DRAWING PRIMITIVE 3",
     "GENERALIZED DRAWING PRIMITIVE",
     "GENERALIZED STRUCTURE ELEMENT",
+    "SET PATTERN SIZE",
+    "SET PATTERN REFERENCE POINT",
+    "SET PATTERN REFERENCE POINT AND VECTORS",
 };
 
 template <class T>
@@ -182,6 +185,21 @@ bool allFinite(const Element& element) {
 }
 
 /// The rules of each payload family: counts, consistent lists, finite points, valid curves.
+// Each pattern element type carries only its own fields; the others keep their defaults (SET
+// PATTERN REFERENCE POINT resets the vectors to the axes), so equal elements compare equal.
+std::string checkPattern(const PatternAttribute& e) {
+    const PatternAttribute defaults;
+    const bool sizeOnly = e.type == ElementType::PatternSize;
+    if (sizeOnly && (e.referencePoint != defaults.referencePoint || e.vectorX != defaults.vectorX ||
+                     e.vectorY != defaults.vectorY))
+        return "a pattern size element carries a reference point or vectors";
+    if (!sizeOnly && e.size != defaults.size) return "a pattern reference element carries a size";
+    if (e.type == ElementType::PatternReferencePoint &&
+        (e.referencePoint.z != 0.0 || e.vectorX != defaults.vectorX || e.vectorY != defaults.vectorY))
+        return "a 2D pattern reference point has a z coordinate or vectors";
+    return {};
+}
+
 std::string validatePayload(const Element& element) {
     return std::visit(
         [](const auto& e) -> std::string {
@@ -254,6 +272,8 @@ std::string validatePayload(const Element& element) {
             } else if constexpr (std::is_same_v<E, AsfAttribute>) {
                 if (static_cast<int>(e.aspect) < 0 || e.aspect >= AspectId::Count_) return "unknown aspect";
                 return {};
+            } else if constexpr (std::is_same_v<E, PatternAttribute>) {
+                return checkPattern(e);
             } else {
                 return {};
             }
@@ -441,6 +461,10 @@ int payloadIndexOf(ElementType type) {
             return indexOf<GdpElement>();
         case T::GeneralizedStructureElement:
             return indexOf<GseElement>();
+        case T::PatternSize:
+        case T::PatternReferencePoint:
+        case T::PatternReferencePointAndVectors:
+            return indexOf<PatternAttribute>();
         case T::All:
         case T::Nil:
         case T::Count_:

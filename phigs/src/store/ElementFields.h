@@ -75,6 +75,15 @@ void fields(V& v, UpVectorAttribute& e) {
     v(e.up);
 }
 template <class V>
+void fields(V& v, PatternAttribute& e) {  // e.type is set before a reader calls this
+    if (e.type == ElementType::PatternSize) {
+        v(e.size);
+        return;
+    }
+    v(e.referencePoint);
+    if (e.type == ElementType::PatternReferencePointAndVectors) v(e.vectorX), v(e.vectorY);
+}
+template <class V>
 void fields(V& v, AlignmentAttribute& e) {
     v(e.horizontal), v(e.vertical);
 }

@@ -114,6 +114,9 @@ enum class ElementType : int {
     GeneralizedDrawingPrimitive3,
     GeneralizedDrawingPrimitive,
     GeneralizedStructureElement,
+    PatternSize,
+    PatternReferencePoint,
+    PatternReferencePointAndVectors,
     Count_  ///< number of types, not a type
 };
 
@@ -255,6 +258,16 @@ struct UpVectorAttribute {
     ElementType type = ElementType::CharacterUpVector;
     glm::dvec2 up{0, 1};
     bool operator==(const UpVectorAttribute&) const = default;
+};
+/// PATTERN SIZE (`size`), PATTERN REFERENCE POINT (`referencePoint` with z = 0; the vectors
+/// stay the axes) and PATTERN REFERENCE POINT AND VECTORS (all three): where and how large a
+/// PATTERN interior's cells lie in modelling coordinates.
+struct PatternAttribute {
+    ElementType type = ElementType::PatternSize;
+    glm::dvec2 size{1, 1};
+    glm::dvec3 referencePoint{0, 0, 0};
+    glm::dvec3 vectorX{1, 0, 0}, vectorY{0, 1, 0};
+    bool operator==(const PatternAttribute&) const = default;
 };
 /// TEXT ALIGNMENT and ANNOTATION TEXT ALIGNMENT (horizontal, vertical).
 struct AlignmentAttribute {
@@ -402,7 +415,7 @@ using Element =
                  AreaPropertiesAttribute, AsfAttribute, ApproximationAttribute,
                  SurfaceCharacteristicsAttribute, LightSourceStateAttribute, TransformElement,
                  ModelClipElement, RestoreModelClipElement, NameSetElement, ExecuteStructureElement,
-                 LabelElement, ApplicationDataElement, GdpElement, GseElement>;
+                 LabelElement, ApplicationDataElement, GdpElement, GseElement, PatternAttribute>;
 
 /// The PHIGS element type of an element.
 ElementType elementType(const Element& element);
