@@ -31,6 +31,47 @@ static void types_by_inquiry(void) {
     CHECK(err == 52);
 }
 
+/* GDPs and GSEs by workstation type: the two registered GDPs, each with the polyline
+ * attributes; error 64 for another identifier; no GSE. Inquiries log nothing. */
+static void gdps_and_gses(void) {
+    const Pint ws_types[3] = {PWST_OFFSCREEN, PWST_PDF, PWST_WINDOW};
+    for (int t = 0; t < 3; ++t) {
+        Pint err = -1, total = -1, ids[4] = {0, 0, 0, 0}, count = -1;
+        Pint_list list = {0, ids};
+        Pattrs attrs[5];
+        Pgse_id_dep facs[2];
+        Pgse_id_dep_list gse_list = {-1, facs};
+        pinq_list_avail_gdp3(ws_types[t], 4, 0, &err, &list, &total);
+        CHECK(err == 0 && total == 2 && list.num_ints == 2);
+        CHECK((ids[0] == PGDP_CIRCLE && ids[1] == PGDP_ARC) || (ids[0] == PGDP_ARC && ids[1] == PGDP_CIRCLE));
+        const Pint second = ids[1];
+        pinq_list_avail_gdp(ws_types[t], 1, 1, &err, &list, &total); /* the second only */
+        CHECK(err == 0 && total == 2 && list.num_ints == 1 && ids[0] == second);
+        pinq_list_avail_gdp(ws_types[t], 1, 5, &err, &list, &total);
+        CHECK(err == PE_START_IND_INVAL);
+        pinq_gdp3(ws_types[t], PGDP_CIRCLE, &err, &count, attrs);
+        CHECK(err == 0 && count == 1 && attrs[0] == PATTR_LINE);
+        pinq_gdp(ws_types[t], PGDP_ARC, &err, &count, attrs);
+        CHECK(err == 0 && count == 1 && attrs[0] == PATTR_LINE);
+        pinq_gdp3(ws_types[t], 4711, &err, &count, attrs);
+        CHECK(err == 64);
+        pinq_list_avail_gse(ws_types[t], 4, 0, &err, &list, &total);
+        CHECK(err == 0 && total == 0 && list.num_ints == 0);
+        pinq_gse_facs(ws_types[t], 2, 0, &err, &gse_list, &total);
+        CHECK(err == 0 && total == 0 && gse_list.num_id_facs == 0);
+    }
+    {
+        Pint err = -1, total = 0, count = 0;
+        Pattrs attrs[5];
+        pinq_list_avail_gdp3(77, 0, 0, &err, NULL, &total);
+        CHECK(err == 52);
+        pinq_gdp(77, PGDP_CIRCLE, &err, &count, attrs);
+        CHECK(err == 52);
+        pinq_list_avail_gse(PWST_PDF, -1, 0, &err, NULL, &total);
+        CHECK(err == PE_LIST_LENGTH_LT_ZERO);
+    }
+}
+
 static void open_and_close_errors(void) {
     Pws_st st = PWS_ST_WSOP;
     pinq_ws_st(&st);
@@ -139,6 +180,11 @@ int main(int argc, char** argv) {
     EXPECT_ERROR(popen_ws(1, pdf_file, PWST_PDF), 2, Pfn_open_ws); /* PHIGS closed */
     open_with_handler(error_file);
     types_by_inquiry();
+    {
+        const int lines = file_line_count(error_file);
+        gdps_and_gses();
+        CHECK(file_line_count(error_file) == lines); /* inquiries answer, never log */
+    }
     open_and_close_errors();
     posting_and_inquiries();
     pclose_phigs();

@@ -1,8 +1,11 @@
 #include "ErrorNumber.h"
 #include "phigs/Phigs.h"
+#include "phigs/store/Gdp.h"
 #include "phigs/view/ViewMatrices.h"
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 
 using namespace phigs;
 using phigs::test::errorOf;
@@ -210,6 +213,22 @@ TEST_CASE("deferral and modification modes, the state of visual representation, 
     ws.unpostAllStructures();
     CHECK(ws.postedStructures().empty());
     CHECK(ws.visualState() == VisualState::Correct);
+}
+
+TEST_CASE("every workstation type lists exactly the GDPs traversal draws", "[ws][gdp]") {
+    for (WorkstationType type :
+         {WorkstationType::OffscreenImage, WorkstationType::Window, WorkstationType::Hardcopy,
+          WorkstationType::PdfFile, WorkstationType::SvgFile, WorkstationType::EpsFile}) {
+        const WorkstationDescription d = describeWorkstationType(type);
+        for (int id = -100; id <= 100; ++id) {
+            INFO(d.name << " GDP " << id);
+            const bool listed3 = std::find(d.gdps3.begin(), d.gdps3.end(), id) != d.gdps3.end();
+            const bool listed = std::find(d.gdps.begin(), d.gdps.end(), id) != d.gdps.end();
+            CHECK(listed3 == isRegisteredGdp(id));
+            CHECK(listed == isRegisteredGdp(id));
+        }
+        CHECK(d.gses.empty());  // no GSE is registered
+    }
 }
 
 TEST_CASE("workstation types and their descriptions", "[ws]") {

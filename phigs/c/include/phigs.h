@@ -464,6 +464,17 @@ typedef struct Phigs_store* Pstore;
 /* ---- workstations: types, states and tables */
 typedef enum { PWS_ST_WSCL, PWS_ST_WSOP } Pws_st;
 typedef enum { PCAT_OUT, PCAT_IN, PCAT_OUTIN, PCAT_MO, PCAT_MI } Pws_cat;
+/* The attribute sets a GDP uses (pinq_gdp, pinq_gdp3). */
+typedef enum { PATTR_LINE, PATTR_MARKER, PATTR_TEXT, PATTR_INT, PATTR_EDGE } Pattrs;
+typedef enum { PWS_INDEP, PWS_DEP } Pws_dep_ind;
+typedef struct {
+    Pint id;
+    Pws_dep_ind ind;
+} Pgse_id_dep;
+typedef struct {
+    Pint num_id_facs;
+    Pgse_id_dep* id_facs;
+} Pgse_id_dep_list;
 typedef enum { PFLAG_POSTPONE, PFLAG_PERFORM } Pregen_flag;
 typedef enum { PFLAG_COND, PFLAG_ALWAYS } Pctrl_flag;
 typedef struct {
@@ -878,6 +889,18 @@ void pinq_posted_structs(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, P
 void pinq_list_avail_ws_types(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* ws_types,
                               Pint* num_elems_impl_list);
 void pinq_ws_cat(Pint ws_type, Pint* err_ind, Pws_cat* ws_cat);
+/* GDPs and GSEs of a workstation type: PGDP_CIRCLE and PGDP_ARC on every type, each using the
+ * polyline attributes (error 64 for any other identifier); no GSE. */
+void pinq_list_avail_gdp3(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* gdps,
+                          Pint* total_length);
+void pinq_list_avail_gdp(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* gdps,
+                         Pint* total_length);
+void pinq_gdp3(Pint ws_type, Pint gdp, Pint* err_ind, Pint* num_attrs, Pattrs attrs[5]);
+void pinq_gdp(Pint ws_type, Pint gdp, Pint* err_ind, Pint* num_attrs, Pattrs attrs[5]);
+void pinq_list_avail_gse(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* gses,
+                         Pint* total_length);
+void pinq_gse_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pgse_id_dep_list* gses,
+                   Pint* total_length);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
 #include "StoreBuffer.h"
 #include "phigs.h"
 
+#include <algorithm>
 #include <exception>
 
 using phigs::c::Binding;
@@ -29,6 +30,14 @@ WorkstationType coreType(Pint type, const char* function) {
 
 Pint cType(WorkstationType type) {
     return static_cast<Pint>(type) + PWST_OFFSCREEN;
+}
+
+/// INQUIRE GDP (3): the polyline attributes for a GDP the type draws, else error 64.
+void answerGdpAttributes(const std::vector<int>& available, Pint gdp, Pint* count, Pattrs attrs[5]) {
+    if (std::find(available.begin(), available.end(), gdp) == available.end())
+        throw Error(errors::GdpNotAvailable, "inquiry", "GDP " + std::to_string(gdp));
+    if (count) *count = 1;
+    if (attrs) attrs[0] = PATTR_LINE;
 }
 
 /// The open workstation for an inquiry: errors 3 and 54 raised without logging.
@@ -236,6 +245,54 @@ void pinq_list_avail_ws_types(Pint appl, Pint start, Pint* err, Pint_list* types
         std::vector<int> available;
         for (WorkstationType type : p.outputs().types()) available.push_back(cType(type));
         c::answerList(available, appl, start, types, total);
+    });
+}
+
+void pinq_list_avail_gdp3(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GDP 3"));
+        c::answerList(d.gdps3, appl, start, gdps, total);
+    });
+}
+
+void pinq_list_avail_gdp(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GDP"));
+        c::answerList(d.gdps, appl, start, gdps, total);
+    });
+}
+
+void pinq_gdp3(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
+    c::inquire(err, [&](Phigs&) {
+        answerGdpAttributes(describeWorkstationType(coreType(ws_type, "INQUIRE GDP 3")).gdps3, gdp, num_attrs,
+                            attrs);
+    });
+}
+
+void pinq_gdp(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
+    c::inquire(err, [&](Phigs&) {
+        answerGdpAttributes(describeWorkstationType(coreType(ws_type, "INQUIRE GDP")).gdps, gdp, num_attrs,
+                            attrs);
+    });
+}
+
+void pinq_list_avail_gse(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gses, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GSE"));
+        c::answerList(d.gses, appl, start, gses, total);
+    });
+}
+
+void pinq_gse_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pgse_id_dep_list* gses, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE GSE FACILITIES"));
+        std::vector<Pint> buffer(std::min(d.gses.size(), static_cast<std::size_t>(std::max<Pint>(appl, 0))));
+        Pint_list ids{0, buffer.data()};
+        c::answerList(d.gses, appl, start, gses ? &ids : nullptr, total);
+        if (!gses) return;
+        if (ids.num_ints > 0) c::require(gses->id_facs, "inquiry");
+        for (Pint i = 0; i < ids.num_ints; ++i) gses->id_facs[i] = {ids.ints[i], PWS_INDEP};
+        gses->num_id_facs = ids.num_ints;
     });
 }
 

@@ -23,6 +23,9 @@ const std::map<int, const char*>& messages() {
         {54, "Ignoring function, the specified workstation is not open"},
         {55, "Ignoring function, workstation cannot be opened for an implementation dependent reason"},
         {59, "Ignoring function, the specified workstation does not have output capability"},
+        {64,
+         "Ignoring function, the specified workstation type is not able to generate the specified "
+         "generalized drawing primitive"},
         {100, "Ignoring function, the bundle index value is less than one"},
         {101, "Ignoring function, the specified representation has not been defined"},
         {103,

@@ -1,5 +1,7 @@
 #include "phigs/ws/WorkstationType.h"
 
+#include "phigs/store/Gdp.h"
+
 namespace phigs {
 
 bool isWorkstationType(WorkstationType type) {
@@ -11,6 +13,7 @@ bool isWorkstationType(WorkstationType type) {
 WorkstationDescription describeWorkstationType(WorkstationType type) {
     WorkstationDescription d;
     d.type = type;
+    d.gdps3 = d.gdps = {gdp::Circle, gdp::ThreePointArc};  // traversal draws them for every output
     switch (type) {
         case WorkstationType::OffscreenImage:
             d.name = "offscreen image";

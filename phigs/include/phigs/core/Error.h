@@ -43,6 +43,7 @@ inline constexpr int WorkstationIdInUse = 53;
 inline constexpr int WorkstationNotOpen = 54;
 inline constexpr int WorkstationCannotOpen = 55;  ///< the target could not be made
 inline constexpr int NoOutputCapability = 59;
+inline constexpr int GdpNotAvailable = 64;  ///< the workstation type cannot draw that GDP
 inline constexpr int BundleIndexBelowOne = 100;
 inline constexpr int RepresentationNotDefined = 101;
 inline constexpr int BundleTableFull = 103;

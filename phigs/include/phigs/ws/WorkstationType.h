@@ -29,6 +29,9 @@ struct WorkstationDescription {
     int depthCueTableSize = 8;
     std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
     int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
+    std::vector<int> gdps3;  ///< GDP 3 identifiers drawn (each with the polyline attributes)
+    std::vector<int> gdps;   ///< GDP identifiers drawn (each with the polyline attributes)
+    std::vector<int> gses;   ///< GSE identifiers acted on
     std::string_view name;
 };
 
