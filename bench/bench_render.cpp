@@ -1,14 +1,18 @@
-// bench_render: frame time of the toolkit renderer on lavapipe for a scene of shaded triangles
-// plus iso-lines, against a minimal baseline that draws the same vertex data with one pipeline
-// per topology and no toolkit around it; and the frame after editing one structure (one mesh).
+// bench_render: a frame through the whole toolkit on lavapipe (structure store -> traversal ->
+// offscreen workstation -> Renderer -> picture read back), for a grid of shaded bicubic
+// surfaces with iso-lines, against a raw Vulkan draw of the same vertex data (one pipeline per
+// topology, push constants only, the same readback); the uploads of an unchanged frame; and the
+// frame after editing one structure, with what it uploaded.
 // Usage: bench_render [--triangles N] [--width W] [--height H] [--frames F]. Ends with one JSON object.
-#include "SceneMeshes.h"
+#include "phigs/Phigs.h"
+#include "phigs/image/Image.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/traverse/DrawList.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/GpuBuffer.h"
 #include "phigs/vk/OffscreenTarget.h"
 #include "phigs/vk/Renderer.h"
+#include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/ws/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
@@ -63,6 +67,7 @@ struct Baseline {
     VkPipeline triangles = VK_NULL_HANDLE, lines = VK_NULL_HANDLE;
     vk::RenderStats stats;
     std::vector<Mesh> meshes;
+    Image picture;
 
     Baseline(vk::Context& c, vk::OffscreenTarget& target) : context(c) {
         VkDevice device = c.device();
@@ -78,6 +83,7 @@ struct Baseline {
         a[1].format = vk::Renderer::kDepthFormat;
         a[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
         a[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        a[0].initialLayout = a[1].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
         VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
         VkSubpassDescription sub{};
@@ -85,24 +91,31 @@ struct Baseline {
         sub.colorAttachmentCount = 1;
         sub.pColorAttachments = &colourRef;
         sub.pDepthStencilAttachment = &depthRef;
-        VkSubpassDependency dep{};
-        dep.srcSubpass = VK_SUBPASS_EXTERNAL;
-        dep.srcStageMask =
+        VkSubpassDependency dep[2]{};
+        dep[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+        dep[0].srcStageMask =
             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-        dep.dstStageMask =
+        dep[0].dstStageMask =
             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT;
-        dep.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-        dep.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        dep[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        dep[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT;
+        // The readback copy waits for the colour writes, as in the toolkit's render pass.
+        dep[1].srcSubpass = 0;
+        dep[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+        dep[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dep[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+        dep[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        dep[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
         VkRenderPassCreateInfo rp{};
         rp.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
         rp.attachmentCount = 2;
         rp.pAttachments = a;
         rp.subpassCount = 1;
         rp.pSubpasses = &sub;
-        rp.dependencyCount = 1;
-        rp.pDependencies = &dep;
+        rp.dependencyCount = 2;
+        rp.pDependencies = dep;
         vk::check(vkCreateRenderPass(device, &rp, nullptr, &pass), "vkCreateRenderPass");
         VkImageView views[2] = {target.colorView(), target.depthView()};
         VkFramebufferCreateInfo fb{};
@@ -199,7 +212,7 @@ struct Baseline {
         return p;
     }
 
-    void upload(const std::vector<std::shared_ptr<MeshData>>& scene) {
+    void upload(const std::vector<std::shared_ptr<const MeshData>>& scene) {
         for (const auto& m : scene) {
             const auto v = render::meshVertices(*m);
             const auto idx = render::meshIndices(*m);
@@ -216,10 +229,13 @@ struct Baseline {
         }
     }
 
-    void draw(const glm::mat4& worldToClip, VkExtent2D extent) {
+    /// One frame: the same two passes over every mesh, then the same readback the offscreen
+    /// workstation does (its picture has to reach the host).
+    void draw(const glm::mat4& worldToClip, vk::OffscreenTarget& target) {
+        const VkExtent2D extent{target.width(), target.height()};
         context.submitAndWait([&](VkCommandBuffer cmd) {
             VkClearValue clears[2]{};
-            clears[0].color = {{0.1f, 0.1f, 0.1f, 1.0f}};
+            clears[0].color = {{0.0f, 0.0f, 0.0f, 1.0f}};
             clears[1].depthStencil = {1.0f, 0};
             VkRenderPassBeginInfo begin{};
             begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
@@ -248,7 +264,9 @@ struct Baseline {
                 }
             }
             vkCmdEndRenderPass(cmd);
+            target.recordReadback(cmd);
         });
+        picture = target.readbackPixels();
     }
 
     ~Baseline() {
@@ -276,151 +294,232 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-}  // namespace
+/// The scene's layout: `count` surfaces of `slices` x `stacks` quads on a square grid.
+struct Scene {
+    int count = 1, side = 1;
+    int slices = 100, stacks = 50, isoLines = 7;  // iso-lines each way
+    static constexpr int kRoot = 1, kFirstLeaf = 100;
+};
 
-int main(int argc, char** argv) {
+/// Leaf k's surface: a bicubic Bezier dome over its grid cell, raised by `lift`.
+NurbsSurfaceElement dome(const Scene& scene, int k, double lift) {
+    const double cell = 1.0 / scene.side;
+    const double x0 = (k % scene.side + 0.025) * cell, y0 = (k / scene.side + 0.025) * cell;
+    const double size = 0.95 * cell;
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const bool inner = (i == 1 || i == 2) && (j == 1 || j == 2);
+            points.push_back(
+                {x0 + size * i / 3.0, y0 + size * j / 3.0, 0.4 + lift + (inner ? 0.6 * size : 0.0)});
+        }
+    const std::vector<double> knots = {0, 0, 0, 0, 1, 1, 1, 1};
+    return NurbsSurfaceElement{geom::Surface(3, 3, knots, knots, 4, 4, points), {}};
+}
+
+/// The root holds the attributes (solid, Phong, specular, lit, iso-lines, a fixed tessellation)
+/// and executes one leaf structure per surface.
+void buildStore(StructureStore& store, const Scene& scene) {
+    store.openStructure(Scene::kRoot);
+    store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
+    store.insert(IndexAttribute{ElementType::InteriorShadingMethod, int(ShadingMethod::Normal)});
+    store.insert(IndexAttribute{ElementType::InteriorReflectanceEquation, int(ReflectanceModel::Specular)});
+    AreaPropertiesAttribute properties;
+    properties.ambient = 0.2, properties.diffuse = 0.7, properties.specular = 0.5;
+    properties.specularExponent = 20;
+    store.insert(properties);
+    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0.8, 0.8, 0.8})});
+    store.insert(ColourAttribute{ElementType::PolylineColour, Colour::fromRgb({1.0, 1.0, 0.0})});
+    store.insert(LightSourceStateAttribute{{1, 2}, {}});
+    store.insert(ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, double(scene.slices),
+                                        double(scene.stacks)});
+    store.insert(SurfaceCharacteristicsAttribute{3, 0, scene.isoLines, scene.isoLines});
+    for (int k = 0; k < scene.count; ++k) store.insert(executeStructure(Scene::kFirstLeaf + k));
+    store.closeStructure();
+    for (int k = 0; k < scene.count; ++k) {
+        store.openStructure(Scene::kFirstLeaf + k);
+        store.insert(dome(scene, k, 0.0));
+        store.closeStructure();
+    }
+}
+
+void setUpWorkstation(Workstation& ws) {
+    ws.setHlhsrMode(1);
+    Light ambient;
+    ws.setLightSourceRepresentation(1, ambient);
+    Light key;
+    key.type = LightType::Directional;
+    key.direction = {-1, -1, -2};
+    ws.setLightSourceRepresentation(2, key);
+}
+
+/// The bytes of a mesh's vertex and index buffers (what uploading it costs).
+std::uint64_t meshBytes(const MeshData& mesh) {
+    return render::meshVertices(mesh).size() * sizeof(render::RenderVertex) +
+           render::meshIndices(mesh).indices.size() * sizeof(std::uint32_t);
+}
+
+struct Timing {
+    std::vector<double> wall, cpu;
+    template <class Frame>
+    void measure(Frame&& frame) {
+        const double c0 = cpuMs();
+        const auto t0 = Clock::now();
+        frame();
+        wall.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        cpu.push_back(cpuMs() - c0);
+    }
+};
+
+struct Options {
     long triangles = 1000000;
     std::uint32_t width = 1280, height = 1024;
     int frames = 5;
+};
+
+Options parse(int argc, char** argv) {
+    Options o;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string arg = argv[i];
         if (arg == "--triangles")
-            triangles = std::atol(argv[i + 1]);
+            o.triangles = std::atol(argv[i + 1]);
         else if (arg == "--width")
-            width = std::uint32_t(std::atoi(argv[i + 1]));
+            o.width = std::uint32_t(std::atoi(argv[i + 1]));
         else if (arg == "--height")
-            height = std::uint32_t(std::atoi(argv[i + 1]));
+            o.height = std::uint32_t(std::atoi(argv[i + 1]));
         else if (arg == "--frames")
-            frames = std::max(1, std::atoi(argv[i + 1]));
+            o.frames = std::max(1, std::atoi(argv[i + 1]));
     }
+    return o;
+}
+
+/// The meshes of a picture, in item order.
+std::vector<std::shared_ptr<const MeshData>> meshesOf(const DrawList& picture) {
+    std::vector<std::shared_ptr<const MeshData>> meshes;
+    for (const DrawItem& item : picture.items)
+        if (const auto* m = std::get_if<DrawMesh>(&item.primitive); m && m->mesh) meshes.push_back(m->mesh);
+    return meshes;
+}
+
+/// What the frames uploaded.
+struct Uploads {
+    std::uint64_t unchanged = 0, unchangedBytes = 0;  ///< over all unchanged frames
+    std::uint64_t edit = 0, editBytes = 0;            ///< the last edited frame
+    std::uint64_t editStructureBytes = 0;             ///< the edited structure's mesh buffers
+};
+
+void report(const Options& o, long triangles, long isoSegments, const Timing& first, const Timing& toolkit,
+            const Timing& raw, const Timing& edited, const Uploads& u) {
+    const double toolkitMs = median(toolkit.wall), rawMs = median(raw.wall);
+    const double toolkitCpu = median(toolkit.cpu), rawCpu = median(raw.cpu);
+    const bool onlyThat = u.editBytes == u.editStructureBytes;
+    std::printf("first frame (traversal, tessellation, every upload): %.1f ms\n", first.wall[0]);
+    std::printf(
+        "frame through the store, unchanged: %.1f ms wall, %.1f ms CPU (median of %d); "
+        "%llu uploads, %llu bytes\n",
+        toolkitMs, toolkitCpu, o.frames, (unsigned long long)u.unchanged,
+        (unsigned long long)u.unchangedBytes);
+    std::printf(
+        "raw draw of the same buffers: %.1f ms wall, %.1f ms CPU; ratio wall %.3f, CPU %.3f "
+        "(target <= 1.05)\n",
+        rawMs, rawCpu, toolkitMs / rawMs, toolkitCpu / rawCpu);
+    std::printf(
+        "frame after editing one structure: %.1f ms, %llu uploads, %llu bytes (that structure's "
+        "buffers: %llu bytes)\n",
+        median(edited.wall), (unsigned long long)u.edit, (unsigned long long)u.editBytes,
+        (unsigned long long)u.editStructureBytes);
+    std::printf(
+        "{\"triangles\": %ld, \"iso_line_segments\": %ld, \"width_px\": %u, \"height_px\": %u, "
+        "\"frames\": %d, \"first_frame_ms\": %.2f, \"store_frame_ms\": %.2f, \"raw_frame_ms\": %.2f, "
+        "\"store_frame_over_raw\": %.3f, \"store_frame_cpu_ms\": %.2f, \"raw_frame_cpu_ms\": %.2f, "
+        "\"store_frame_over_raw_cpu\": %.3f, \"unchanged_frame_uploads\": %llu, "
+        "\"unchanged_frame_uploaded_bytes\": %llu, \"edit_one_structure_frame_ms\": %.2f, "
+        "\"edit_one_structure_frame_cpu_ms\": %.2f, \"edit_uploads\": %llu, \"edit_uploaded_bytes\": %llu, "
+        "\"edit_structure_buffer_bytes\": %llu, \"edit_uploads_only_that_structure\": %s}\n",
+        triangles, isoSegments, o.width, o.height, o.frames, first.wall[0], toolkitMs, rawMs,
+        toolkitMs / rawMs, toolkitCpu, rawCpu, toolkitCpu / rawCpu, (unsigned long long)u.unchanged,
+        (unsigned long long)u.unchangedBytes, median(edited.wall), median(edited.cpu),
+        (unsigned long long)u.edit, (unsigned long long)u.editBytes, (unsigned long long)u.editStructureBytes,
+        onlyThat ? "true" : "false");
+}
+
+int run(const Options& o) {
+    Scene scene;
+    const long perMesh = 2L * scene.slices * scene.stacks;
+    scene.count = int(std::max(1L, o.triangles / perMesh));
+    scene.side = int(std::ceil(std::sqrt(double(scene.count))));
+
+    vk::ContextSettings settings;
+    settings.device = vk::DevicePreference::Lavapipe;
+    settings.validation = false;
+    vk::Context context(vk::ContextSettings::fromEnvironment(settings));
+    Phigs phigs;
+    phigs.open();
+    buildStore(phigs.store(), scene);
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    setUpWorkstation(ws);
+    vk::DisplaySettings display;
+    display.width = o.width, display.height = o.height;
+    vk::WorkstationDisplay output(ws, context, display);
+    ws.postStructure(Scene::kRoot, 0.5);
+
+    Timing first;
+    first.measure([&] { output.update(); });
+    const DrawList& picture = ws.shownPicture();
+    const auto meshes = meshesOf(picture);
+    long triangles = 0, isoSegments = 0;
+    for (const auto& m : meshes) {
+        triangles += long(m->triangles.size() / 3);
+        for (const auto& line : m->isoLines) isoSegments += long(line.size()) - 1;
+    }
+    std::printf(
+        "scene: %d structures, %zu meshes, %ld triangles, %ld iso-line segments, %ux%u, lavapipe: %s\n",
+        scene.count, meshes.size(), triangles, isoSegments, o.width, o.height,
+        context.isLavapipe() ? "yes" : "no");
+
+    // Toolkit and raw frames alternate, so the load of other processes hits both alike.
+    vk::OffscreenTarget rawTarget(context, o.width, o.height);
+    Baseline base(context, rawTarget);
+    base.upload(meshes);
+    const glm::mat4 worldToClip(output.mapping().npcToClip);
+    base.draw(worldToClip, rawTarget);
+    Timing toolkit, raw;
+    std::uint64_t unchangedUploads = 0, unchangedBytes = 0;
+    for (int f = 0; f < o.frames; ++f) {
+        toolkit.measure([&] { output.update(); });
+        unchangedUploads += output.renderer().lastFrame().uploads;
+        unchangedBytes += output.renderer().lastFrame().uploadedBytes;
+        raw.measure([&] { base.draw(worldToClip, rawTarget); });
+    }
+
+    // Edit one structure through the store: leaf 0's surface replaced by a raised copy.
+    Timing edited;
+    std::uint64_t editBytes = 0, editExpected = 0, editUploads = 0;
+    for (int f = 0; f < o.frames; ++f) {
+        StructureStore& store = phigs.store();
+        store.openStructure(Scene::kFirstLeaf);
+        store.setEditMode(EditMode::Replace);
+        store.setElementPointer(1);
+        store.insert(dome(scene, 0, 0.001 * (f + 1)));
+        store.setEditMode(EditMode::Insert);
+        store.closeStructure();
+        edited.measure([&] { output.update(); });
+        editBytes = output.renderer().lastFrame().uploadedBytes;
+        editUploads = output.renderer().lastFrame().uploads;
+        editExpected = meshBytes(*meshesOf(ws.shownPicture()).front());
+    }
+    report(o, triangles, isoSegments, first, toolkit, raw, edited,
+           Uploads{unchangedUploads, unchangedBytes, editUploads, editBytes, editExpected});
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
     try {
-        vk::ContextSettings settings;
-        settings.device = vk::DevicePreference::Lavapipe;
-        settings.validation = false;
-        vk::Context context(vk::ContextSettings::fromEnvironment(settings));
-
-        // A grid of spheres, 100 x 50 quads each (10,000 triangles), with 8 iso-lines each way.
-        const int slices = 100, stacks = 50;
-        const long perMesh = 2L * slices * stacks;
-        const int count = int(std::max(1L, triangles / perMesh));
-        const int side = int(std::ceil(std::sqrt(double(count))));
-        std::vector<std::shared_ptr<MeshData>> meshes;
-        DrawList list;
-        list.views.push_back(DrawView{});
-        list.hiddenSurfaceRemoval = true;
-        Light ambient;
-        Light key;
-        key.type = LightType::Directional;
-        key.direction = {-1, -1, -2};
-        list.lightSets.push_back({ambient, key});
-        long isoSegments = 0;
-        for (int k = 0; k < count; ++k) {
-            const float r = 0.5f / float(side);
-            auto m = render_test::sphere(
-                {(float(k % side) + 0.5f) / float(side), (float(k / side) + 0.5f) / float(side), 0.5f},
-                r * 0.95f, slices, stacks, 8);
-            for (const auto& line : m->isoLines) isoSegments += long(line.size()) - 1;
-            meshes.push_back(m);
-            DrawMesh d;
-            d.mesh = m;
-            d.interior.style = InteriorStyle::Solid;
-            d.interior.colour = {0.8f, 0.8f, 0.8f};
-            d.interior.shading = ShadingMethod::Normal;
-            d.interior.reflectance = ReflectanceModel::Specular;
-            d.interior.properties = {0.2f, 0.7f, 0.5f, glm::vec3(1.0f), 20.0f, 0.0f};
-            d.isoLineStyle.colour = {1, 1, 0};
-            DrawItem item;
-            item.primitive = d;
-            item.lightSet = 0;
-            item.source.path = {{k + 1, 1, 0}};
-            list.items.push_back(item);
-        }
-        const long totalTriangles = long(count) * perMesh;
-        std::printf("scene: %d meshes, %ld triangles, %ld iso-line segments, %ux%u, lavapipe: %s\n", count,
-                    totalTriangles, isoSegments, width, height, context.isLavapipe() ? "yes" : "no");
-
-        vk::OffscreenTarget target(context, width, height);
-        const VkExtent2D extent{width, height};
-        vk::Renderer renderer(context, vk::OffscreenTarget::kColorFormat,
-                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        VkFramebuffer framebuffer = VK_NULL_HANDLE;
-        {
-            VkImageView views[2] = {target.colorView(), target.depthView()};
-            VkFramebufferCreateInfo fb{};
-            fb.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
-            fb.renderPass = renderer.renderPass();
-            fb.attachmentCount = 2;
-            fb.pAttachments = views;
-            fb.width = width;
-            fb.height = height;
-            fb.layers = 1;
-            vk::check(vkCreateFramebuffer(context.device(), &fb, nullptr, &framebuffer),
-                      "vkCreateFramebuffer");
-        }
-        auto toolkitFrame = [&]() {
-            const auto t0 = Clock::now();
-            renderer.prepare(list, extent);
-            context.submitAndWait([&](VkCommandBuffer cmd) { renderer.record(cmd, framebuffer, extent); });
-            return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-        };
-        const double firstFrame = toolkitFrame();
-
-        // Toolkit and baseline frames alternate, so the load of other processes hits both alike.
-        Baseline base(context, target);
-        base.upload(meshes);
-        const WorkstationMapping mapping(list, width, height);
-        const glm::mat4 worldToClip(mapping.npcToClip);
-        base.draw(worldToClip, extent);
-        std::vector<double> toolkit, baseline, toolkitCpu, baselineCpu;
-        std::uint64_t unchangedUploads = 0;
-        for (int f = 0; f < frames; ++f) {
-            double c0 = cpuMs();
-            toolkit.push_back(toolkitFrame());
-            toolkitCpu.push_back(cpuMs() - c0);
-            unchangedUploads += renderer.lastFrame().uploads;
-            c0 = cpuMs();
-            const auto t0 = Clock::now();
-            base.draw(worldToClip, extent);
-            baseline.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-            baselineCpu.push_back(cpuMs() - c0);
-        }
-
-        // Edit one structure: its mesh is replaced (a new tessellation), the rest stays.
-        std::vector<double> edited;
-        std::uint64_t editUploadedBytes = 0;
-        for (int f = 0; f < frames; ++f) {
-            auto& d = std::get<DrawMesh>(list.items[0].primitive);
-            auto m = std::make_shared<MeshData>(*d.mesh);
-            for (auto& p : m->positions) p.z += 0.001f;
-            d.mesh = m;
-            edited.push_back(toolkitFrame());
-            editUploadedBytes = renderer.lastFrame().uploadedBytes;
-        }
-        vkDestroyFramebuffer(context.device(), framebuffer, nullptr);
-
-        const double toolkitMs = median(toolkit), baselineMs = median(baseline), editMs = median(edited);
-        std::printf("first frame (uploads everything): %.1f ms\n", firstFrame);
-        std::printf("toolkit frame, unchanged: %.1f ms (median of %d), uploads %llu\n", toolkitMs, frames,
-                    (unsigned long long)unchangedUploads);
-        std::printf("baseline frame: %.1f ms; ratio %.3f (target <= 1.25)\n", baselineMs,
-                    toolkitMs / baselineMs);
-        const double toolkitCpuMs = median(toolkitCpu), baselineCpuMs = median(baselineCpu);
-        std::printf("CPU time per frame (all threads): toolkit %.1f ms, baseline %.1f ms; ratio %.3f\n",
-                    toolkitCpuMs, baselineCpuMs, toolkitCpuMs / baselineCpuMs);
-        std::printf("frame after editing one structure: %.1f ms, %llu bytes uploaded\n", editMs,
-                    (unsigned long long)editUploadedBytes);
-        std::printf(
-            "{\"triangles\": %ld, \"iso_line_segments\": %ld, \"width_px\": %u, \"height_px\": %u, "
-            "\"first_frame_ms\": %.2f, \"toolkit_frame_ms\": %.2f, \"baseline_frame_ms\": %.2f, "
-            "\"toolkit_over_baseline\": %.3f, \"toolkit_cpu_ms\": %.2f, \"baseline_cpu_ms\": %.2f, "
-            "\"toolkit_over_baseline_cpu\": %.3f, \"edit_one_structure_frame_ms\": %.2f, "
-            "\"edit_uploaded_bytes\": %llu, \"unchanged_frame_uploads\": %llu}\n",
-            totalTriangles, isoSegments, width, height, firstFrame, toolkitMs, baselineMs,
-            toolkitMs / baselineMs, toolkitCpuMs, baselineCpuMs, toolkitCpuMs / baselineCpuMs, editMs,
-            (unsigned long long)editUploadedBytes, (unsigned long long)unchangedUploads);
+        return run(parse(argc, argv));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_render: %s\n", e.what());
         return 1;
     }
-    return 0;
 }

@@ -5,7 +5,7 @@
 #
 #   scripts/bench.sh [--build DIR] [--from DIR] [--tables-only] [NAME...]
 #
-# NAME: geom_kernel knot_removal curvemap render store pick acsynt_loft (default: all).
+# NAME: geom_kernel knot_removal curvemap render store pick acsynt_loft demo (default: all).
 # --build DIR    where the bench_* programs are (default build/bench; build them first with
 #                cmake --build build --target bench_NAME).
 # --from DIR     do not run: take DIR/NAME.json, or the last line of DIR/NAME.log or
@@ -16,7 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all=(geom_kernel knot_removal curvemap render store pick acsynt_loft)
+all=(geom_kernel knot_removal curvemap render store pick acsynt_loft demo)
 build=build/bench from="" tables_only=0 names=()
 while (($#)); do
   case $1 in
@@ -98,9 +98,10 @@ layout() {
     geom_kernel) echo "poly rational degree1 deg2x5_double_knots wide_weights periodic_tube|grid_fast_ns_per_point=fast_grid_ns grid_plain_ns_per_point=plain_ns sisl_s1421_ns_per_point=SISL_s1421_ns plain_vs_s1421=plain/s1421 intersect_us_per_query=intersect_µs sisl_s1856_us_per_query=SISL_s1856_µs intersect_speedup_vs_s1856=speed-up closest_us_per_query=closest_µs sisl_s1958_us_per_query=SISL_s1958_µs closest_speedup_vs_s1958=speed-up closest_farther_than_foot=farther_than_foot sisl_closest_farther_than_foot=SISL_farther|wall_seconds cpu_seconds" ;;
     knot_removal) echo "ibeam_tol1.0e-02 ibeam_tol1.2e-03 ibeam_tol1.0e-03 ibeam_tol1.0e-04 airfoil_tol1.0e-02 airfoil_tol1.2e-03 airfoil_tol1.0e-03 airfoil_tol1.0e-04 degree1 degree2 degree3 degree4 degree5 degree6 degree7 c0_corners noisy_digitised incompressible long_2500 rational|geom_control_points=geom_CPs geom_max_error=geom_error geom_error_over_tolerance=geom_error_/_tolerance geom_ms sisl_control_points=SISL_CPs sisl_max_error=SISL_error sisl_ms=SISL_ms geom_loop_control_points=loop_CPs geom_loop_max_error=loop_error geom_loop_ms=loop_ms|wall_seconds cpu_seconds worst_time_ratio_vs_sisl worst_cp_ratio_vs_sisl worst_error_over_tolerance" ;;
     curvemap) echo "wave wing|tolerance_model_units=tolerance adaptive_ms adaptive_projections adaptive_max_deviation seed10_ms=10_per_segment_ms seed10_max_deviation=10_per_segment_deviation fixed_equal_per_segment=equal_deviation_per_segment fixed_equal_ms=equal_deviation_ms fixed_equal_projections=equal_deviation_projections|" ;;
-    render) echo "-|triangles iso_line_segments toolkit_frame_ms baseline_frame_ms toolkit_over_baseline=ratio_wall toolkit_over_baseline_cpu=ratio_CPU edit_one_structure_frame_ms=edit_frame_ms edit_uploaded_bytes unchanged_frame_uploads|width_px height_px" ;;
+    render) echo "-|triangles iso_line_segments store_frame_cpu_ms raw_frame_cpu_ms store_frame_over_raw_cpu=ratio_CPU store_frame_over_raw=ratio_wall unchanged_frame_uploaded_bytes=unchanged_bytes edit_uploaded_bytes edit_structure_buffer_bytes=structure_bytes edit_uploads_only_that_structure=only_that_structure|width_px height_px" ;;
     store) echo "-|elements inserts_per_s traversal_ns_per_element incremental_unchanged_ns_per_element=unchanged_ns_per_element resident_bytes_per_element payload_bytes_per_element first_traversal_cpu_s edit_surface_retraversed_elements=edit_retraversed edit_surface_retessellated_surfaces=edit_retessellated edit_surface_update_cpu_s=edit_update_cpu_s|structures" ;;
     pick) echo "-|patches picks agree_with_brute_force=same_hit pick_median_us pick_p99_us brute_median_us brute_p99_us pick_with_mesh_median_us pick_with_mesh_p99_us|" ;;
+    demo) echo "-|demo_cpu_s demo_peak_rss_mb demo_wall_s startup_cpu_s startup_peak_rss_mb demo_without_pdf_cpu_s=without_PDF_cpu_s demo_without_pdf_peak_rss_mb=without_PDF_rss_mb|runs" ;;
     acsynt_loft) echo "transport fighter|load_loft_ms=load_and_loft_ms patches|" ;;
     *) echo "bench.sh: no table layout for $1" >&2; return 1 ;;
   esac

@@ -17,6 +17,7 @@
 #endif
 
 #include <getopt.h>
+#include <malloc.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -280,6 +281,15 @@ bool importFirst(acsynt::Session& session, const Options& o) {
     return false;
 }
 
+/// Keeps freed heap memory in the process rather than handing it back to the kernel at once. A
+/// session allocates and frees picture-sized blocks all the time (read-backs, tessellations,
+/// lavapipe's vertex and command memory); with glibc's defaults each came back as fresh pages
+/// and page faults, measured at about 0.3-0.5 s of the demo's 3 s CPU time, for 2% more peak RSS.
+void keepFreedHeap() {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
+
 }  // namespace
 
 /// Runs the session on its one display (vk::WorkstationDisplay on the workstation's target):
@@ -337,6 +347,7 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
 }
 
 int main(int argc, char** argv) {
+    keepFreedHeap();
     const auto options = parse(argc, argv);
     if (!options) return kExitUsage;
     if (!options->exportFile.empty()) return exportModel(*options);

@@ -3,8 +3,11 @@
 #include <spirv-tools/optimizer.hpp>
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -75,9 +78,34 @@ void freezeConstants(spvtools::Optimizer& optimizer, std::span<const Specialisat
 
 }  // namespace
 
+SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
+                                     std::span<const std::uint32_t> fragment,
+                                     std::span<const SpecialisationValue> values);
+
 SpecialisedStages specialiseStages(std::span<const std::uint32_t> vertex,
                                    std::span<const std::uint32_t> fragment,
                                    std::span<const SpecialisationValue> values) {
+    // SPIRV-Tools takes tens of milliseconds a pair; every renderer of the process (offscreen,
+    // window, hardcopy, each workstation, each test) asks for the same few pairs, so each is
+    // specialised once. Keyed by the code's contents, not its address.
+    using Key = std::tuple<std::vector<std::uint32_t>, std::vector<std::uint32_t>,
+                           std::vector<std::pair<std::uint32_t, std::int32_t>>>;
+    static std::mutex mutex;
+    static std::map<Key, SpecialisedStages> cache;
+    Key key{{vertex.begin(), vertex.end()}, {fragment.begin(), fragment.end()}, {}};
+    for (const SpecialisationValue& v : values) std::get<2>(key).emplace_back(v.id, v.value);
+    {
+        std::lock_guard lock(mutex);
+        if (auto it = cache.find(key); it != cache.end()) return it->second;
+    }
+    SpecialisedStages out = specialiseUncached(vertex, fragment, values);
+    std::lock_guard lock(mutex);
+    return cache.emplace(std::move(key), std::move(out)).first->second;
+}
+
+SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
+                                     std::span<const std::uint32_t> fragment,
+                                     std::span<const SpecialisationValue> values) {
     SpecialisedStages out;
     std::unordered_set<std::uint32_t> liveLocations, liveBuiltins;
     {

@@ -21,7 +21,8 @@ struct Image {
     }
 };
 
-/// Writes an image as an RGBA PNG (libpng); the file appears whole or not at all (written to a
+/// Writes an image as a PNG (libpng, fast compression; RGB when every pixel is opaque, else
+/// RGBA: readPng gives the same pixels back); the file appears whole or not at all (written to a
 /// temporary name and renamed). Throws std::runtime_error naming the file on failure.
 void writePng(const Image& image, const std::filesystem::path& path);
 
