@@ -11,6 +11,7 @@
 #include "phigs/vk/WorkstationDisplay.h"
 
 #ifdef ACSYNT_HAVE_WINDOW
+#include "acsynt/session/ViewNavigation.h"
 #include "acsynt/session/WindowPresentation.h"
 #include "phigs/window/GlfwInputSource.h"
 #include "phigs/window/GlfwWindow.h"
@@ -64,10 +65,14 @@ void usage(std::ostream& out) {
            "  --export OUT   write MODEL.acm (lofted) as IGES or STEP, by OUT's extension, and stop;\n"
            "                 MODEL and CAD are looked up in the shipped data folder when not found\n"
            "in the window: the left button chooses a menu row or a pad button, picks the surface\n"
-           "             (DEFINE POINT, SURF_REDN), drags a slider (U, W: the marker within the patch;\n"
-           "             ROTATE, ZOOM: the views); typed characters fill a prompt, Enter accepts it,\n"
-           "             Backspace deletes, Escape withdraws it; MAIN > UNDO / REDO step back and\n"
-           "             forth through model changes; closing the window ends the session\n"
+           "             (DEFINE POINT, SURF_REDN), drags a slider, live (U, W: the marker, the\n"
+           "             component's parameters within the patch; ROTATE, ZOOM: the views)\n"
+           "             left drag in a view: rotate the 3D view (across: azimuth, up/down: elevation)\n"
+           "             wheel in a view: zoom; middle drag or Shift + left drag in a view: pan\n"
+           "             F1 or H: the key and mouse help over the views (Escape hides it)\n"
+           "             Ctrl+Z / Ctrl+Y: undo / redo (as MAIN > UNDO / REDO); F2..F12: menu item 2..12\n"
+           "             typed characters fill a prompt, Enter accepts it, Backspace deletes,\n"
+           "             Escape withdraws it; closing the window ends the session\n"
            "environment: PHIGS_VK_VALIDATION=1 turns the Vulkan validation layer on (off by default)\n"
            "             and prints every message; PHIGS_VK_DEVICE=lavapipe|hardware picks the device\n"
            "exit status: 0 every line succeeded, 1 the session could not run, 2 bad options,\n"
@@ -340,8 +345,13 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     }
 #ifdef ACSYNT_HAVE_WINDOW
     acsynt::WindowPresentation presentation(session, *window, display);
+    // The views' mouse and key navigation sees the window's events before the input devices.
+    auto& events = static_cast<phigs::GlfwInputSource&>(*source);
+    acsynt::ViewNavigation navigation(session, [&](const phigs::WindowEvent& e) { events.deliver(e); });
+    events.setEventFilter([&](const phigs::WindowEvent& e) { return navigation.handle(e); });
     while (presentation.step(std::chrono::seconds(1))) {
     }
+    events.setEventFilter({});
 #endif
     return finish(session, options);
 }

@@ -104,6 +104,10 @@ run help 0 --help
 expect_in help.out "Enter accepts it"
 expect_in help.out "Escape withdraws it"
 expect_in help.out "drags a slider"
+expect_in help.out "left drag in a view: rotate"
+expect_in help.out "wheel in a view: zoom"
+expect_in help.out "F1 or H"
+expect_in help.out "Ctrl+Z / Ctrl+Y"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures checks failed"

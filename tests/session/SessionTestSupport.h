@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -145,6 +146,19 @@ inline int componentIndex(const acsynt::Session& s, const std::string& name) {
 inline void pickOn(Driver& d, const std::string& name, double u, double w) {
     const acsynt::Model& m = d.session.models().current();
     d.pickAt(geom::evaluate(m.components[std::size_t(componentIndex(m, name))].surface, u, w), 1);
+}
+
+/// The script line `valuator D V` that sets the marker's u (D = 1) or w (D = 2), the component's
+/// own parameters, at `fraction` of the reference patch's span.
+inline std::string markerValuator(const acsynt::Session& s, int device, double fraction) {
+    REQUIRE(s.reference());
+    const acsynt::ReferencePoint& r = *s.reference();
+    const acsynt::Patch& p =
+        s.models().current().components[std::size_t(r.component)].patches.patches[std::size_t(r.patch - 1)];
+    const double v = device == 1 ? p.u0 + fraction * (p.u1 - p.u0) : p.w0 + fraction * (p.w1 - p.w0);
+    char text[64];
+    std::snprintf(text, sizeof text, "valuator %d %.17g", device, v);
+    return text;
 }
 
 }  // namespace session_test

@@ -29,7 +29,9 @@ void definePoint(Driver& d, const std::string& name, double u, double w, bool de
     d.run({"choice ACCEPT"});
     REQUIRE(d.session.reference());
     REQUIRE(d.session.reference()->component == componentIndex(d.session, name));
-    if (demo) d.run({"choice CENTRE device 2", "valuator 2 0.55", "choice EAST device 2"});
+    if (demo)
+        d.run({"choice CENTRE device 2", session_test::markerValuator(d.session, 2, 0.55),
+               "choice EAST device 2"});
     d.run({"choice DONE device 2"});
 }
 

@@ -82,12 +82,14 @@ TEST_CASE("CURVE MAP menu: DEFINE POINT with picks, pad and valuators, then MAP 
     d.run({"choice NORTH_EAST device 2"});  // u and w up by an eighth of the patch
     CHECK(d.session.reference()->u == Approx((patch->u0 + patch->u1) / 2 + (patch->u1 - patch->u0) / 8));
     CHECK(d.session.reference()->w == Approx((patch->w0 + patch->w1) / 2 + (patch->w1 - patch->w0) / 8));
-    d.run({"valuator 1 0.25", "valuator 2 0.75"});
+    d.run(
+        {session_test::markerValuator(d.session, 1, 0.25), session_test::markerValuator(d.session, 2, 0.75)});
     CHECK(d.session.reference()->u == Approx(patch->u0 + 0.25 * (patch->u1 - patch->u0)));
     CHECK(d.session.reference()->w == Approx(patch->w0 + 0.75 * (patch->w1 - patch->w0)));
     d.run({"choice SOUTH_WEST device 2", "choice SOUTH_WEST device 2", "choice SOUTH_WEST device 2"});
     CHECK(d.session.reference()->u == Approx(patch->u0));  // kept inside the patch
-    d.run({"valuator 1 0.5", "valuator 2 0.5", "choice DONE device 2"});
+    d.run({session_test::markerValuator(d.session, 1, 0.5), session_test::markerValuator(d.session, 2, 0.5),
+           "choice DONE device 2"});
     CHECK(d.session.message().rfind("REFERENCE POINT U = ", 0) == 0);
     d.run({"choice FLIP_CURVE"});
     CHECK(d.session.message() == "CURVE FLIPPED");
@@ -120,7 +122,8 @@ TEST_CASE(
     loadTransportInFourViews(d);
     d.run({"choice CURVE_MAP", "choice LOAD_CURVE", "string circle.crv 0.12"});
     definePoint(d, 0.9, 0.2);
-    d.run({"valuator 1 0.9", "valuator 2 0.5", "choice DONE device 2", "choice MAP_CURVE"});
+    d.run({session_test::markerValuator(d.session, 1, 0.9), session_test::markerValuator(d.session, 2, 0.5),
+           "choice DONE device 2", "choice MAP_CURVE"});
     REQUIRE(d.session.mappings().size() == 1);
     CHECK(d.session.mappings()[0].loops == 1);
     CHECK(d.session.mappings()[0].boundaryWalks >= 1);
@@ -208,7 +211,7 @@ TEST_CASE("SURF_REDN menu: by count and by tolerance, U, W, U & W, error map, th
     d.run({"choice REDUCE_U"});
     d.pickAt(top, 1);
     d.run({"string -1"});
-    CHECK(d.session.message() == "BAD INPUT IN SRF_REDUCTION: '-1'");
+    CHECK(d.session.message() == "BAD INPUT IN SRF_REDUCTION: '-1': expected a positive length");
     CHECK(d.session.reductions().size() == 3);
     const std::string summary = d.session.summary();
     CHECK(summary.find(

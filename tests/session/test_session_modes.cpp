@@ -27,7 +27,7 @@ TEST_CASE("the pointer pad turns off after DONE: pad buttons and marker valuator
     const std::size_t failed = d.session.failedLines();
     d.run({"choice WEST device 2"});
     CHECK(d.session.message() == "THE POINTER PAD IS OFF AFTER DONE: USE DEFINE POINT TO MOVE THE MARKER");
-    d.run({"valuator 1 0.1"});
+    d.run({session_test::markerValuator(d.session, 1, 0.1)});
     CHECK(d.session.message() == "THE MARKER IS PLACED (DONE): USE DEFINE POINT TO MOVE IT");
     CHECK(d.session.failedLines() == failed + 2);
     CHECK(d.session.reference()->u == placed.u);

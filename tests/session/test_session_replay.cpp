@@ -183,8 +183,9 @@ TEST_CASE("a recorded session replays to the same summary") {
         const glm::dvec3 p = geom::evaluate(wing.surface, 0.4, 0.25);
         d.pickAt(p, 1);
         d.pickAt(p, 1);
-        d.run({"choice ACCEPT", "valuator 1 0.5", "valuator 2 0.5", "choice DONE device 2",
-               "choice MAP_CURVE"});
+        d.run({"choice ACCEPT"});
+        d.run({session_test::markerValuator(d.session, 1, 0.5),
+               session_test::markerValuator(d.session, 2, 0.5), "choice DONE device 2", "choice MAP_CURVE"});
         REQUIRE(d.session.mappings().size() == 1);
         CHECK(d.session.mappings()[0].loops == 1);
         recording = d.session.recording();
@@ -194,4 +195,86 @@ TEST_CASE("a recorded session replays to the same summary") {
     acsynt::Session replay(Driver::settings("record_replay"), script);
     replay.run();
     CHECK(replay.summary() == summary);
+}
+
+TEST_CASE("a recorded session replays to the same summary on a screen of another size") {
+    std::string recording, summary;
+    {
+        Driver d("record_sized");
+        d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice VIEW",
+               "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE",
+               "string circle.crv 0.08", "choice DEFINE_POINT"});
+        const auto& wing = d.session.models().current().components[1];
+        REQUIRE(wing.name == "right_wing");
+        const glm::dvec3 p = geom::evaluate(wing.surface, 0.4, 0.25);
+        d.pickAt(p, 1);
+        d.pickAt(p, 4);  // the patch in the 3D view
+        // The menu row and pad button by where they are on this screen, as a click makes them.
+        const acsynt::PixelBox accept = d.session.layout().menuFor(2);
+        d.run({"pick " + std::to_string(accept.centre().x) + " " + std::to_string(accept.y0 + 3)});
+        REQUIRE(d.session.reference());
+        const glm::dvec2 east = d.session.layout().padButton(6).centre();
+        d.run({"pick " + std::to_string(east.x) + " " + std::to_string(east.y),
+               session_test::markerValuator(d.session, 2, 0.3), "choice DONE device 2", "choice MAP_CURVE",
+               "snapshot sized"});
+        REQUIRE(d.session.mappings().size() == 1);
+        CHECK_FALSE(d.logHasError());
+        recording = d.session.recording();
+        summary = d.session.summary();
+    }
+    INFO(recording);
+    // Picks on surfaces by component, patch and (u, w), with a comment; menu rows and pad
+    // buttons by name; the snapshot as it came.
+    CHECK(recording.find("\npick_surface right_wing ") != std::string::npos);
+    CHECK(recording.find("# picked right_wing patch ") != std::string::npos);
+    CHECK(recording.find("\nchoice ACCEPT\n") != std::string::npos);
+    CHECK(recording.find("\nchoice EAST device 2\n") != std::string::npos);
+    CHECK(recording.find("\nsnapshot sized\n") != std::string::npos);
+    CHECK(recording.find("\npick ") == std::string::npos);
+
+    for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1024, 768}}) {
+        INFO(w << " x " << h);
+        acsynt::SessionSettings settings = Driver::settings("record_sized");  // same picture paths
+        settings.width = w;
+        settings.height = h;
+        phigs::ScriptInputSource script(recording, "recorded", acsynt::Session::directives());
+        acsynt::Session replay(settings, script);
+        replay.setSnapshot([](const std::filesystem::path&) {});
+        replay.run();
+        CHECK(replay.failedLines() == 0);
+        CHECK(replay.summary() == summary);
+    }
+}
+
+TEST_CASE("a recorded surface pick that no longer shows there is refused by name, not taken elsewhere") {
+    Driver d("record_hidden");
+    d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN"});
+    const auto& wing = d.session.models().current().components[1];
+    REQUIRE(wing.name == "right_wing");
+    const auto line = [&](double u, double w) {
+        const acsynt::Patch* p = wing.patches.find(u, w);
+        REQUIRE(p);
+        char text[160];
+        std::snprintf(text, sizeof text, "pick_surface right_wing %d %.17g %.17g 1", p->number, u, w);
+        return std::string(text);
+    };
+    // The upper surface (w < 0.5) in the plan view from above: picked, with the recorded (u, w).
+    d.run({line(0.4, 0.25)});
+    REQUIRE(d.session.lastPick());
+    CHECK(d.session.lastPick()->patch == wing.patches.find(0.4, 0.25)->number);
+    CHECK(d.session.lastPickDetail()->uv == glm::dvec2(0.4, 0.25));
+    // The lower surface there is hidden by the upper one: refused, not taken as the upper patch.
+    const std::size_t failed = d.session.failedLines();
+    d.run({line(0.4, 0.75)});
+    CHECK(d.session.message().rfind("RECORDED PICK OF right_wing PATCH ", 0) == 0);
+    CHECK(d.session.message().find("IS NOT WHAT SHOWS AT PIXEL") != std::string::npos);
+    CHECK(d.session.lastPickDetail()->uv == glm::dvec2(0.4, 0.25));
+    d.run({"choice VIEW", "choice ONE_VIEW", "choice RETURN", "pick_surface right_wing 1 0.5 0.5 4"});
+    CHECK(d.session.message() ==
+          "BAD RECORDED PICK 'pick_surface right_wing 1 0.5 0.5 4': expected COMPONENT PATCH U W VIEW, VIEW "
+          "1..1");
+    d.run({"pick_surface no_such_part 1 0.5 0.5 1"});
+    CHECK(d.session.message() == "RECORDED PICK: MODEL fighter HAS NO COMPONENT no_such_part");
+    CHECK(d.session.failedLines() == failed + 3);
 }

@@ -81,6 +81,8 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                 stroking_ = false;
                 if (stroke_.back() != e.position) stroke_.push_back(e.position);
                 return make(action::Stroke{std::move(stroke_), 1}, "stroke drag");
+            } else if constexpr (std::is_same_v<T, Scroll>) {
+                return std::nullopt;
             } else if constexpr (std::is_same_v<T, Character>) {
                 std::string text = echo_.text;
                 appendUtf8(text, e.codepoint);
@@ -104,6 +106,8 @@ std::optional<InputAction> WindowEventMapper::handle(const WindowEvent& event) {
                         stroking_ = false;
                         dragging_ = nullptr;
                         return make(action::Break{}, "escape");
+                    case Key::Letter:
+                        return std::nullopt;
                     case Key::Function:
                         if (e.function < 1) return std::nullopt;
                         return make(action::Choice{e.function, 1, {}}, "F" + std::to_string(e.function));

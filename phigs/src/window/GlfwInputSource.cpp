@@ -56,15 +56,21 @@ void onCursor(GLFWwindow* window, double x, double y) {
         source->post(window_event::CursorMove{pixels(window, x, y)});
 }
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     GlfwInputSource* source = sourceOf(window);
     if (!source || action == GLFW_RELEASE) return;
     using window_event::Key;
+    if ((mods & GLFW_MOD_CONTROL) && key >= GLFW_KEY_A && key <= GLFW_KEY_Z && action == GLFW_PRESS)
+        source->post(window_event::KeyPress{Key::Letter, 0, char('A' + (key - GLFW_KEY_A)), true});
     if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) source->post(window_event::KeyPress{Key::Enter});
     if (key == GLFW_KEY_BACKSPACE) source->post(window_event::KeyPress{Key::Backspace});
     if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) source->post(window_event::KeyPress{Key::Escape});
     if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12 && action == GLFW_PRESS)
         source->post(window_event::KeyPress{Key::Function, key - GLFW_KEY_F1 + 1});
+}
+
+void onScroll(GLFWwindow* window, double, double y) {
+    if (GlfwInputSource* source = sourceOf(window)) source->post(window_event::Scroll{cursor(window), y});
 }
 
 void onCharacter(GLFWwindow* window, unsigned int codepoint) {
@@ -84,6 +90,7 @@ GlfwInputSource::GlfwInputSource(GLFWwindow* window) : window_(window) {
     glfwSetCursorPosCallback(window_, onCursor);
     glfwSetKeyCallback(window_, onKey);
     glfwSetCharCallback(window_, onCharacter);
+    glfwSetScrollCallback(window_, onScroll);
 }
 
 GlfwInputSource::GlfwInputSource(GlfwWindow& window) : GlfwInputSource(window.handle()) {
@@ -96,11 +103,17 @@ GlfwInputSource::~GlfwInputSource() {
     glfwSetCursorPosCallback(window_, nullptr);
     glfwSetKeyCallback(window_, nullptr);
     glfwSetCharCallback(window_, nullptr);
+    glfwSetScrollCallback(window_, nullptr);
     std::lock_guard lock(registryMutex);
     registry().erase(window_);
 }
 
 void GlfwInputSource::post(const WindowEvent& event) {
+    if (filter_ && filter_(event)) return;
+    deliver(event);
+}
+
+void GlfwInputSource::deliver(const WindowEvent& event) {
     if (auto a = mapper_.handle(event)) pending_.push_back(std::move(*a));
 }
 

@@ -6,6 +6,7 @@
 #include "../../render/RenderTestSupport.h"
 #include "../../render/VirtualDisplay.h"
 #include "acsynt/session/Session.h"
+#include "acsynt/session/ViewNavigation.h"
 #include "acsynt/session/WindowPresentation.h"
 #include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/window/GlfwInputSource.h"
@@ -58,11 +59,17 @@ public:
           session(windowSettings(width, height), source),
           display(session.workstation(), render_test::lavapipeWithValidation(), onWindow(window)),
           presentation(session, window, display),
+          navigation(session, [this](const phigs::WindowEvent& e) { source.deliver(e); }),
           x_(XOpenDisplay(nullptr)) {
         REQUIRE(x_);
+        // The program's wiring: the window's events go to the views' navigation first.
+        source.setEventFilter([this](const phigs::WindowEvent& e) { return navigation.handle(e); });
         settle(300ms);  // let the server map the window before pointing at it
     }
-    ~WindowSession() { XCloseDisplay(x_); }
+    ~WindowSession() {
+        source.setEventFilter({});
+        XCloseDisplay(x_);
+    }
     WindowSession(const WindowSession&) = delete;
     WindowSession& operator=(const WindowSession&) = delete;
 
@@ -88,8 +95,23 @@ public:
         XTestFakeMotionEvent(x_, -1, x + int(std::lround(p.x)), y + int(std::lround(p.y)), 0);
         XFlush(x_);
     }
-    void button(bool down) {
-        XTestFakeButtonEvent(x_, 1, down ? 1 : 0, 0);
+    /// X button 1 left, 2 middle, 4 and 5 the wheel away and towards the user.
+    void button(bool down, unsigned int which = 1) {
+        XTestFakeButtonEvent(x_, which, down ? 1 : 0, 0);
+        XFlush(x_);
+    }
+    /// One wheel notch away from the user (true) or towards.
+    void wheel(bool away) {
+        button(true, away ? 4 : 5);
+        button(false, away ? 4 : 5);
+    }
+    /// A key with Control held.
+    void controlKey(KeySym symbol) {
+        const KeyCode control = XKeysymToKeycode(x_, XK_Control_L);
+        REQUIRE(control != 0);
+        XTestFakeKeyEvent(x_, control, 1, 0);
+        key(symbol);
+        XTestFakeKeyEvent(x_, control, 0, 3);
         XFlush(x_);
     }
     /// A left click at `p`, handled once the session's log grows.
@@ -136,6 +158,7 @@ public:
     acsynt::Session session;
     phigs::vk::WorkstationDisplay display;
     acsynt::WindowPresentation presentation;
+    acsynt::ViewNavigation navigation;
 
 private:
     Display* x_;

@@ -195,3 +195,79 @@ TEST_CASE("window session: an idle window blocks on events and draws nothing") {
     CHECK(share < 0.02);
     CHECK(w.presentation.frames() == frames);  // nothing changed: nothing drawn
 }
+
+TEST_CASE("window session: a drag rotates the 3D view, the wheel zooms, F1 shows help, Ctrl+Z undoes") {
+    WindowSession w(1024, 768);
+    chooseMenu(w, "FILE");
+    chooseMenu(w, "READ_MODEL");
+    w.moveTo({300, 300});
+    w.type("transport.acm");
+    w.key(XK_Return);
+    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+    chooseMenu(w, "RETURN");
+    w.settle(100ms);
+    const phigs::Image before = w.display.capture();
+
+    // A left drag in the view: 0.4 degree a pixel across (azimuth) and up and down (elevation).
+    const glm::dvec2 start = glm::round(w.session.layout().geometry.centre());
+    const double az0 = w.session.azimuth(), el0 = w.session.elevation();
+    w.moveTo(start);
+    w.button(true);
+    w.settle(30ms);
+    for (int i = 1; i <= 5; ++i) {
+        w.moveTo(start + glm::dvec2(12 * i, -4 * i));
+        w.settle(15ms);
+    }
+    w.button(false);
+    REQUIRE(w.stepUntil([&] { return w.session.azimuth() == Approx(az0 - 0.4 * 60); }));
+    CHECK(w.session.elevation() == Approx(el0 - 0.4 * 20));
+    CHECK_FALSE(w.session.lastPick());  // a drag is no pick
+    w.settle(100ms);
+    const phigs::Image rotated = w.display.capture();
+    CHECK(render_test::differingPixels(before, rotated, 24) > 1000);
+
+    // The wheel zooms by 1.15 a notch, in and out.
+    const double zoom0 = w.session.zoom();
+    w.moveTo(start);
+    w.wheel(true);
+    REQUIRE(w.stepUntil([&] { return w.session.zoom() == Approx(zoom0 * 1.15); }));
+    w.wheel(false);
+    w.wheel(false);
+    REQUIRE(w.stepUntil([&] { return w.session.zoom() == Approx(zoom0 / 1.15); }));
+
+    // A middle drag pans: a model point follows the pointer.
+    const glm::dvec3 nose = w.session.models().current().components[0].surface.point(1, 0);
+    const glm::dvec2 seen = w.session.pixelOf(nose, 1);
+    w.moveTo(start);
+    w.button(true, 2);
+    w.settle(30ms);
+    w.moveTo(start + glm::dvec2(-40, 25));
+    w.settle(30ms);
+    w.button(false, 2);
+    REQUIRE(w.stepUntil(
+        [&] { return glm::length(w.session.pixelOf(nose, 1) - seen - glm::dvec2(-40, 25)) < 1; }));
+
+    // F1 shows the help over the views, H hides it.
+    w.key(XK_F1);
+    REQUIRE(w.stepUntil([&] { return w.session.helpShown(); }));
+    w.settle(100ms);
+    const phigs::Image help = w.display.capture();
+    // The overlay's box near its top right corner, clear of its text.
+    const acsynt::PixelBox& g = w.session.layout().geometry;
+    CHECK(render_test::shows(help, {g.x1 - 0.06 * (g.x1 - g.x0), g.y0 + 0.07 * (g.y1 - g.y0)},
+                             glm::dvec3(0.08, 0.1, 0.2)));
+    CHECK(w.session.menuTitle() == "MAIN");  // F1 is not menu item 1 here
+    w.type("h");
+    REQUIRE(w.stepUntil([&] { return !w.session.helpShown(); }));
+
+    // Ctrl+Z undoes the model read, Ctrl+Y brings it back.
+    w.controlKey(XK_z);
+    REQUIRE(w.stepUntil([&] { return w.session.models().empty(); }));
+    w.controlKey(XK_y);
+    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+    for (const auto& line : w.session.log()) {
+        INFO(line);
+        CHECK(line.rfind("ERROR: ", 0) != 0);
+    }
+    render_test::requireNoValidationMessages(w.display.context());
+}

@@ -4,6 +4,7 @@
 #include "SessionShared.h"
 
 #include "acsynt/ModelFile.h"
+#include "acsynt/session/ModelPicture.h"
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -39,7 +40,7 @@ Session::Session(SessionSettings settings, InputSource& source)
 Session::~Session() = default;
 
 std::set<std::string> Session::directives() {
-    return {"snapshot", "summary", "hardcopy"};
+    return {"snapshot", "summary", "hardcopy", "pick_surface", "view", "undo", "redo"};
 }
 
 void Session::setupWorkstation() {
@@ -65,11 +66,15 @@ void Session::setupWorkstation() {
     rewriteStructure(store, structures::mapped, {});
     rewriteStructure(store, structures::overlay, {});
     rewriteStructure(store, structures::errorMap, {});
+    rewriteStructure(store, structures::legend, {});
+    rewriteStructure(store, structures::help, {});
     ws.postStructure(structures::geometry, 0.5);
     ws.postStructure(structures::menu, 0.8);
     ws.postStructure(structures::pad, 0.8);
     for (int d = 1; d <= 4; ++d) ws.postStructure(structures::sliders + d - 1, 0.8);
     ws.postStructure(structures::message, 0.9);
+    ws.postStructure(structures::legend, 0.85);
+    ws.postStructure(structures::help, 0.95);
     updateViews();
 }
 
@@ -109,6 +114,8 @@ void Session::resize(int width, int height) {
     interaction_->setSurfaceSize(std::uint32_t(width), std::uint32_t(height));
     initialiseSliders();
     setMenu(menuTitle_, menuItems_);  // the panel's rows move with the layout; redraws the screen
+    drawLegend();
+    drawHelp();
     updateViews();
 }
 
@@ -139,23 +146,34 @@ void Session::setupDevices() {
     input_->setMode(InputClass::String, 1, OperatingMode::Event);
 }
 
+glm::dvec2 Session::sliderRange(int d) const {
+    if ((d == 1 || d == 2) && reference_ && !models_.empty()) {
+        const Patch& p = models_.current()
+                             .components[std::size_t(reference_->component)]
+                             .patches.patches[std::size_t(reference_->patch - 1)];
+        return d == 1 ? glm::dvec2(p.u0, p.u1) : glm::dvec2(p.w0, p.w1);
+    }
+    return {sliderLow[d - 1], sliderHigh[d - 1]};
+}
+
 void Session::initialiseSliders() {
     for (int d = 1; d <= 4; ++d) {
-        // INITIALIZE VALUATOR needs REQUEST mode; the value now stays the initial one.
-        const InputDevice& now = input_->device(InputClass::Valuator, d);
-        const auto* value = std::get_if<ValuatorMeasure>(&now.current);
+        const glm::dvec2 range = sliderRange(d);
+        double value = d == 1   ? (reference_ ? reference_->u : range.x)
+                       : d == 2 ? (reference_ ? reference_->w : range.x)
+                       : d == 3 ? azimuth_
+                                : zoom_;
         DeviceInitialisation v;
-        v.initial = value && now.setup.promptEchoType == 2 ? *value
-                                                           : ValuatorMeasure{d == 4   ? 1.0
-                                                                             : d == 3 ? -135.0
-                                                                                      : 0.0};
+        v.initial = ValuatorMeasure{std::clamp(value, range.x, range.y)};
         v.promptEchoType = 2;
         v.echoVolume = layout_.slider(d).echoVolume();
-        v.valuatorLow = sliderLow[d - 1];
-        v.valuatorHigh = sliderHigh[d - 1];
+        v.valuatorLow = range.x;
+        v.valuatorHigh = range.y;
+        // INITIALIZE VALUATOR needs REQUEST mode.
         input_->setMode(InputClass::Valuator, d, OperatingMode::Request);
         input_->initialise(InputClass::Valuator, d, v);
         input_->setMode(InputClass::Valuator, d, OperatingMode::Event);
+        sliderRanges_[d - 1] = range;
     }
 }
 
@@ -272,6 +290,29 @@ void Session::handle(const EventReport& report) {
 
 void Session::directive(const action::Directive& d, const InputAction& a) {
     const std::string where = source_.position();
+    if (d.name == "pick_surface") {
+        if (d.arguments.size() != 5) {
+            fail(where + ": '" + a.text + "': expected pick_surface COMPONENT PATCH U W VIEW");
+            return;
+        }
+        pickSurface(d.arguments);
+        return;
+    }
+    if (d.name == "view") {
+        setView(d.arguments);
+        return;
+    }
+    if (d.name == "undo" || d.name == "redo") {
+        if (!d.arguments.empty()) {
+            fail(where + ": '" + a.text + "': expected " + d.name + " alone");
+            return;
+        }
+        if (d.name == "undo")
+            undo();
+        else
+            redo();
+        return;
+    }
     if (d.arguments.size() != 1) {
         fail(where + ": '" + a.text + "': expected " + d.name + " NAME");
         return;
@@ -365,10 +406,67 @@ std::string Session::summary() const {
     return out.str();
 }
 
+void Session::recordAs(std::string line, std::string comment) {
+    if (!input_ || input_->history().empty()) return;
+    recordedAs_[input_->history().size() - 1] = {std::move(line), std::move(comment)};
+}
+
 std::string Session::recording() const {
-    std::string out = "# acsynt session recorded\n";
-    for (const InputAction& a : input_->history()) out += ScriptInputSource::format(a) + "\n";
+    std::string out = "# acsynt session recorded on a " + std::to_string(layout_.width) + " x " +
+                      std::to_string(layout_.height) +
+                      " screen: menu rows and pad buttons by name, picks on surfaces by component,\n"
+                      "# patch and (u, w), replayed where that point shows then\n";
+    const auto& history = input_->history();
+    auto extra = extraLines_.begin();
+    for (std::size_t i = 0; i <= history.size(); ++i) {
+        for (; extra != extraLines_.end() && extra->first <= i; ++extra) out += extra->second + "\n";
+        if (i == history.size()) break;
+        const auto it = recordedAs_.find(i);
+        if (it == recordedAs_.end()) {
+            out += ScriptInputSource::format(history[i]) + "\n";
+            continue;
+        }
+        if (!it->second.second.empty()) out += "# " + it->second.second + "\n";
+        out += it->second.first + "\n";
+    }
     return out;
+}
+
+void Session::pickSurface(const std::vector<std::string>& a) {
+    const std::string line = "pick_surface " + a[0] + " " + a[1] + " " + a[2] + " " + a[3] + " " + a[4];
+    const auto patch = parseNumber(a[1]), u = parseNumber(a[2]), w = parseNumber(a[3]),
+               view = parseNumber(a[4]);
+    const int views = fourViews_ ? 4 : 1;
+    if (!patch || !u || !w || !view || *patch != std::floor(*patch) || *view != std::floor(*view) ||
+        *view < 1 || *view > views) {
+        fail("BAD RECORDED PICK '" + line + "': expected COMPONENT PATCH U W VIEW, VIEW 1.." +
+             std::to_string(views));
+        return;
+    }
+    if (!requireModel()) return;
+    const Model& model = models_.current();
+    const auto comp = std::find_if(model.components.begin(), model.components.end(),
+                                   [&](const Component& c) { return c.name == a[0]; });
+    if (comp == model.components.end()) {
+        fail("RECORDED PICK: MODEL " + model.name + " HAS NO COMPONENT " + a[0]);
+        return;
+    }
+    const glm::dvec2 pixel = pixelOf(geom::evaluate(comp->surface, *u, *w), int(*view));
+    picture();
+    PickMeasure measure = interaction_->measurer().pick(pixel, input_->device(InputClass::Pick, 1));
+    const auto picked = ModelPicture::fromPath(measure.path);
+    const int index = int(comp - model.components.begin());
+    if (measure.status != InputStatus::Ok || !picked || picked->component != index ||
+        picked->patch != int(*patch) || !measure.surface) {
+        fail("RECORDED PICK OF " + a[0] + " PATCH " + a[1] + " AT U = " + a[2] + " W = " + a[3] +
+             " IS NOT WHAT SHOWS AT PIXEL " + number(pixel.x, 5) + " " + number(pixel.y, 5) + " OF VIEW " +
+             a[4] + " NOW");
+        return;
+    }
+    measure.surface->uv = {*u, *w};  // the recorded parameters, exactly
+    pickView_ = int(*view);
+    handle(EventReport{workstation_->id(), InputClass::Pick, 1, measure, false});
+    pickView_ = 0;
 }
 
 }  // namespace acsynt

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -35,6 +36,7 @@ void Session::mainMenu() {
 
 void Session::choose(std::string item) {
     log_.push_back("choice " + item);
+    recordAs("choice " + item);
     if (phase_ == Phase::AcceptReject) {
         if (item == "ACCEPT") {
             const Component& comp = models_.current().components[std::size_t(pickedComponent_)];
@@ -135,6 +137,7 @@ void Session::viewMenu(const std::string& item) {
     if (item == "HULL_OFF") style_.hull = false;
     if (item == "RESET_VIEW") {
         azimuth_ = -135;
+        elevation_ = 25;
         zoom_ = 1;
         viewCentre_.reset();
     }
@@ -206,10 +209,39 @@ void Session::reductionMenu(const std::string& item) {
         style_.errorMapComponent = style_.errorMapComponent < 0 ? reductions_.back().componentIndex : -1;
         drawErrorMap();
         modelPicture_.restyle(models_.current(), style_);
-        say(style_.errorMapComponent >= 0
-                ? "ERROR MAP: BLUE 0 TO RED " + number(reductions_.back().maxError, 3)
-                : "ERROR MAP OFF");
+        say(style_.errorMapComponent >= 0 ? errorMapLine() : "ERROR MAP OFF");
+    } else if (item == "ERROR_SCALE") {
+        prompt("ENTER ERROR MAP SCALE: A LENGTH (RED AT IT, FIXED) OR RELATIVE", Awaiting::ErrorScale);
     }
+}
+
+std::string Session::errorMapLine() const {
+    const ReductionRecord& r = reductions_.back();
+    return "ERROR MAP: BLUE 0 TO RED " + lengthText(errorMapTop()) +
+           (errorScale_ > 0 ? " (FIXED SCALE)" : " (RELATIVE SCALE)") + ", MAX ERROR " +
+           lengthText(r.maxError);
+}
+
+void Session::setErrorScale(const std::string& input) {
+    std::string word = input;
+    std::erase(word, ' ');
+    std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::toupper(c); });
+    if (word == "RELATIVE") {
+        errorScale_ = 0;
+    } else {
+        const auto value = parseNumber(input);
+        if (!value || !(*value > 0)) {
+            fail("BAD INPUT IN ERROR SCALE: '" + input + "': expected a positive length or RELATIVE");
+            return;
+        }
+        errorScale_ = *value;
+    }
+    drawErrorMap();
+    if (style_.errorMapComponent >= 0)
+        say(errorMapLine());
+    else
+        say(errorScale_ > 0 ? "ERROR MAP SCALE FIXED: RED AT " + lengthText(errorScale_)
+                            : "ERROR MAP SCALE RELATIVE: RED AT THE LARGEST ERROR");
 }
 
 void Session::modelsMenu(const std::string& item) {
@@ -297,19 +329,21 @@ void Session::text(const std::string& input) {
             say(outcome.message);
             break;
         }
+        case Awaiting::ErrorScale:
+            setErrorScale(input);
+            break;
         case Awaiting::Tolerance:
         case Awaiting::Count: {
-            std::istringstream in(input);
-            double value = 0;
-            if (!(in >> value) || !(value > 0) || !std::isfinite(value) ||
-                (what == Awaiting::Count && value != std::floor(value))) {
-                fail("BAD INPUT IN SRF_REDUCTION: '" + input + "'");
+            const auto value = parseNumber(input);
+            if (!value || !(*value > 0) || (what == Awaiting::Count && *value != std::floor(*value))) {
+                fail("BAD INPUT IN SRF_REDUCTION: '" + input + "': expected " +
+                     (what == Awaiting::Count ? "a whole number of knots, 1 or more" : "a positive length"));
                 break;
             }
             if (what == Awaiting::Tolerance)
-                reduce(reductionComponent_, value, 0);
+                reduce(reductionComponent_, *value, 0);
             else
-                reduce(reductionComponent_, 0, std::size_t(value));
+                reduce(reductionComponent_, 0, std::size_t(std::min(*value, 1e9)));
             break;
         }
     }
@@ -337,6 +371,7 @@ void Session::pick(const PickMeasure& measure) {
     if (measure.surface)
         where += " AT U = " + number(measure.surface->uv.x) + " W = " + number(measure.surface->uv.y);
     log_.push_back("picked " + where);
+    recordPick(*picked, measure);
     switch (phase_) {
         case Phase::SelectComponent:
             pickedComponent_ = picked->component;
@@ -375,6 +410,7 @@ void Session::pick(const PickMeasure& measure) {
 }
 
 void Session::padButton(int button) {
+    recordAs("choice " + padItems[std::size_t(button - 1)] + " device 2");
     if (reference_ && phase_ == Phase::Placed) {
         fail("THE POINTER PAD IS OFF AFTER DONE: USE DEFINE POINT TO MOVE THE MARKER");
         return;
@@ -416,12 +452,11 @@ void Session::valuator(int device, double value) {
             fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
             return;
         }
-        const Component& comp = models_.current().components[std::size_t(reference_->component)];
-        const Patch& p = comp.patches.patches[std::size_t(reference_->patch - 1)];
+        // The component's own u or w; moveMarker keeps it inside the reference patch.
         if (device == 1)
-            moveMarker(p.u0 + value * (p.u1 - p.u0), reference_->w);
+            moveMarker(value, reference_->w);
         else
-            moveMarker(reference_->u, p.w0 + value * (p.w1 - p.w0));
+            moveMarker(reference_->u, value);
     } else if (device == 3) {
         azimuth_ = value;
         updateViews();
@@ -440,6 +475,31 @@ void Session::moveMarker(double u, double w) {
     drawOverlay();
     message_ = "MARKER AT U = " + number(reference_->u) + " W = " + number(reference_->w);
     drawScreen();
+}
+
+void Session::recordPick(const PickedPatch& picked, const PickMeasure& measure) {
+    if (!measure.surface || picked.patch < 1) return;  // recorded as it came
+    // The view: the one the click was in, or the replayed pick's.
+    int view = pickView_;
+    const auto& history = input_->history();
+    if (!history.empty())
+        if (const auto* click = std::get_if<action::Pick>(&history.back().what))
+            for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v)
+                if (layout_.viewBox(v, fourViews_).contains(click->position)) view = v;
+    if (view < 1) return;
+    const Component& comp = models_.current().components.at(std::size_t(picked.component));
+    char uw[80];
+    std::snprintf(uw, sizeof uw, "%.17g %.17g", measure.surface->uv.x, measure.surface->uv.y);
+    std::string comment = "picked " + comp.name + " patch " + std::to_string(picked.patch) + " at u " +
+                          number(measure.surface->uv.x) + " w " + number(measure.surface->uv.y) +
+                          " in view " + std::to_string(view);
+    if (!history.empty())
+        if (const auto* click = std::get_if<action::Pick>(&history.back().what))
+            comment += " (pixel " + number(click->position.x, 5) + " " + number(click->position.y, 5) +
+                       " of " + std::to_string(layout_.width) + " x " + std::to_string(layout_.height) + ")";
+    recordAs("pick_surface " + comp.name + " " + std::to_string(picked.patch) + " " + uw + " " +
+                 std::to_string(view),
+             comment);
 }
 
 // ---- files

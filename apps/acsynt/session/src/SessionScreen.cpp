@@ -45,24 +45,13 @@ void Session::showModel() {
 }
 
 void Session::updateViews() {
-    glm::dvec3 lo(-1), hi(1);
-    if (!models_.empty()) {
-        lo = glm::dvec3(1e300);
-        hi = glm::dvec3(-1e300);
-        for (const Component& c : models_.current().components)
-            for (const glm::dvec3& p : c.surface.points) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-    }
+    const auto [lo, hi] = modelBounds();
     const glm::dvec3 centre = viewCentre_.value_or((lo + hi) / 2.0);
     const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
-    const double az = glm::radians(azimuth_), el = glm::radians(25.0);
     struct Direction {
         glm::dvec3 normal, up;
     };
-    const Direction oblique{{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)},
-                            {0, 0, 1}};
+    const Direction oblique{obliqueDirection(), {0, 0, 1}};
     const Direction directions[] = {
         {{0, 0, 1}, {-1, 0, 0}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, -1, 0}, {0, 0, 1}}, oblique};
     std::vector<Element> geometry;
@@ -121,19 +110,16 @@ void Session::drawScreen() {
     for (const auto& item : menuItems_) labels.push_back(shown(item));
     buildChoicePanel(store, structures::menu,
                      ChoicePanel{1, l.menuFor(menuItems_.size()).echoVolume(), labels}, 0, *mapping_);
-    double values[4] = {0, 0, azimuth_, zoom_};
-    if (reference_) {
-        const Patch& p = models_.current()
-                             .components[std::size_t(reference_->component)]
-                             .patches.patches[std::size_t(reference_->patch - 1)];
-        values[0] = (reference_->u - p.u0) / (p.u1 - p.u0);
-        values[1] = (reference_->w - p.w0) / (p.w1 - p.w0);
-    }
+    // U and W are the component's own parameters, as picks and the message line give them;
+    // their sliders span the reference patch (initialised again when it changes).
+    if (sliderRange(1) != sliderRanges_[0] || sliderRange(2) != sliderRanges_[1]) initialiseSliders();
+    const double values[4] = {reference_ ? reference_->u : 0, reference_ ? reference_->w : 0, azimuth_,
+                              zoom_};
     for (int d = 1; d <= 4; ++d) {
-        const ValuatorSlider slider{d, l.slider(d).echoVolume(), sliderLow[d - 1], sliderHigh[d - 1]};
+        const glm::dvec2 range = sliderRanges_[d - 1];
+        const ValuatorSlider slider{d, l.slider(d).echoVolume(), range.x, range.y};
         buildValuatorSlider(store, structures::sliders + d - 1, slider,
-                            std::clamp(values[d - 1], sliderLow[d - 1], sliderHigh[d - 1]),
-                            sliderNames[d - 1], *mapping_);
+                            std::clamp(values[d - 1], range.x, range.y), sliderNames[d - 1], *mapping_);
     }
 
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
@@ -243,6 +229,11 @@ void Session::drawMapped(bool all) {
     rewriteStructure(phigs_.store(), structures::mapped, e);
 }
 
+double Session::errorMapTop() const {
+    if (errorScale_ > 0) return errorScale_;
+    return reductions_.empty() ? 1e-12 : std::max(reductions_.back().maxError, 1e-12);
+}
+
 void Session::drawErrorMap() {
     std::vector<Element> e;
     if (style_.errorMapComponent >= 0 && !reductions_.empty() && !models_.empty()) {
@@ -252,22 +243,65 @@ void Session::drawErrorMap() {
         QuadrilateralMeshElement mesh;
         mesh.rows = int(d.u.size());
         mesh.columns = int(d.v.size());
-        const double top = std::max(d.maxError, 1e-12);
+        const double top = errorMapTop();
         for (std::size_t i = 0; i < d.u.size(); ++i)
             for (std::size_t j = 0; j < d.v.size(); ++j) {
                 mesh.points.push_back(geom::evaluate(comp.surface, d.u[i], d.v[j]));
-                const double t = std::clamp(d.error[i * d.v.size() + j] / top, 0.0, 1.0);
-                // Blue (no error) through green to red (the largest error).
-                const glm::dvec3 c =
-                    t < 0.5 ? glm::mix(glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(0.1, 0.9, 0.2), t * 2)
-                            : glm::mix(glm::dvec3(0.1, 0.9, 0.2), glm::dvec3(1.0, 0.1, 0.1), t * 2 - 1);
-                mesh.vertexColours.push_back(Colour::fromRgb(c));
+                mesh.vertexColours.push_back(Colour::fromRgb(errorColour(d.error[i * d.v.size() + j] / top)));
             }
         e.push_back(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
         e.push_back(IndexAttribute{ElementType::InteriorShadingMethod, int(ShadingMethod::Colour)});
         e.push_back(std::move(mesh));
     }
     rewriteStructure(phigs_.store(), structures::errorMap, e);
+    drawLegend();
+}
+
+void Session::drawLegend() {
+    std::vector<Element> e;
+    if (style_.errorMapComponent >= 0 && !reductions_.empty()) {
+        // A colour bar in the lower left of the geometry area: 0 to the scale's top in model
+        // units (metres), the scale's kind and the largest error measured above it.
+        const PixelBox& g = layout_.geometry;
+        const double gw = g.x1 - g.x0, gh = g.y1 - g.y0;
+        const double unit = 1.0 / mapping_->pixelsPerNpc;
+        const double textHeight = std::max(6.0, 0.028 * gh);
+        const PixelBox bar{g.x0 + 0.03 * gw, g.y1 - 0.05 * gh - 1.6 * textHeight, g.x0 + 0.45 * gw,
+                           g.y1 - 0.05 * gh - 1.6 * textHeight + std::max(5.0, 0.03 * gh)};
+        const PixelBox back{bar.x0 - 4, bar.y0 - 2.6 * textHeight - 4, bar.x1 + 0.12 * gw,
+                            bar.y1 + 1.6 * textHeight + 2};
+        e = {viewIndex(0), addNamesToSet({structures::lineName}),
+             IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
+             colourAttr(ElementType::InteriorColour, {0.05, 0.06, 0.12})};
+        auto box = [&](const PixelBox& b) {
+            auto corners = outline(b);
+            corners.pop_back();
+            return fillArea3(corners);
+        };
+        e.push_back(box(back));
+        const int steps = 32;
+        for (int k = 0; k < steps; ++k) {
+            const double x0 = bar.x0 + (bar.x1 - bar.x0) * k / steps;
+            const double x1 = bar.x0 + (bar.x1 - bar.x0) * (k + 1) / steps;
+            e.push_back(colourAttr(ElementType::InteriorColour, errorColour((k + 0.5) / steps)));
+            e.push_back(box({x0, bar.y0, x1, bar.y1}));
+        }
+        const double top = errorMapTop(), largest = reductions_.back().maxError;
+        e.push_back(RealAttribute{ElementType::CharacterHeight, 0.7 * textHeight * unit});
+        e.push_back(colourAttr(ElementType::TextColour, {0.9, 0.9, 0.9}));
+        e.push_back(AlignmentAttribute{ElementType::TextAlignment, 1, 3});
+        e.push_back(textAt(npc({bar.x0, bar.y0 - 1.8 * textHeight}),
+                           errorScale_ > 0 ? "ERROR, FIXED SCALE" : "ERROR, RELATIVE SCALE"));
+        e.push_back(textAt(npc({bar.x0, bar.y0 - 0.7 * textHeight}), "MAX " + lengthText(largest)));
+        // Ticks under the bar: 0, half and the top (which any larger error shows as).
+        e.push_back(AlignmentAttribute{ElementType::TextAlignment, 2, 3});
+        const double below = bar.y1 + 0.9 * textHeight;
+        e.push_back(textAt(npc({bar.x0, below}), "0"));
+        e.push_back(textAt(npc({(bar.x0 + bar.x1) / 2, below}), lengthText(top / 2)));
+        e.push_back(
+            textAt(npc({bar.x1, below}), (errorScale_ > 0 && largest > top ? ">" : "") + lengthText(top)));
+    }
+    rewriteStructure(phigs_.store(), structures::legend, e);
 }
 
 }  // namespace acsynt

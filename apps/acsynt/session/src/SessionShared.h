@@ -4,7 +4,12 @@
 
 #include "phigs/store/Element.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,8 +31,8 @@ inline const std::vector<std::string> curveItems{"RETURN",     "LOAD_CURVE",   "
                                                  "FLIP_CURVE", "ROTATE_CURVE", "MAP_PREVIEW",
                                                  "MAP_CURVE",  "DISPLAY_ALL"};
 inline const std::vector<std::string> confirmItems{"ACCEPT", "REJECT"};
-inline const std::vector<std::string> reductionItems{"RETURN",       "REDUCE_U", "REDUCE_W", "REDUCE_U&W",
-                                                     "BY_TOLERANCE", "BY_COUNT", "ERROR_MAP"};
+inline const std::vector<std::string> reductionItems{"RETURN",       "REDUCE_U", "REDUCE_W",  "REDUCE_U&W",
+                                                     "BY_TOLERANCE", "BY_COUNT", "ERROR_MAP", "ERROR_SCALE"};
 inline const std::vector<std::string> modelItems{"RETURN", "NEXT_MODEL", "PREVIOUS_MODEL",
                                                  "LIST",   "NAME_MODEL", "DELETE_MODEL"};
 inline const std::vector<std::string> padItems{"NORTH_WEST", "NORTH", "NORTH_EAST", "WEST", "CENTRE", "EAST",
@@ -49,6 +54,39 @@ inline std::string number(double v, int digits = 6) {
     out.precision(digits);
     out << v;
     return out.str();
+}
+
+/// A whole prompt answer as one finite number (surrounding blanks allowed), else nothing:
+/// "0.01" and " 3 " are numbers; "0.01abc", "1e999", "nan", "" and "3 4" are not.
+inline std::optional<double> parseNumber(const std::string& text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos) return std::nullopt;
+    const auto last = text.find_last_not_of(" \t");
+    const char* begin = text.data() + first;
+    const char* end = text.data() + last + 1;
+    if (*begin == '+') ++begin;  // from_chars takes no plus sign
+    double value = 0;
+    const auto [stop, ec] = std::from_chars(begin, end, value);
+    if (ec != std::errc() || stop != end || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+/// A length in model units read as metres, with an SI prefix and 3 significant digits
+/// ("4.21 mm", "200 nm", "0").
+inline std::string lengthText(double metres) {
+    if (metres == 0) return "0";
+    const double a = std::abs(metres);
+    if (a >= 1) return number(metres, 3) + " m";
+    if (a >= 1e-3) return number(metres * 1e3, 3) + " mm";
+    if (a >= 1e-6) return number(metres * 1e6, 3) + " um";
+    return number(metres * 1e9, 3) + " nm";
+}
+
+/// The error map's colour at fraction t of its scale: blue (0) through green to red (1 and above).
+inline glm::dvec3 errorColour(double t) {
+    t = std::clamp(t, 0.0, 1.0);
+    return t < 0.5 ? glm::mix(glm::dvec3(0.1, 0.2, 1.0), glm::dvec3(0.1, 0.9, 0.2), t * 2)
+                   : glm::mix(glm::dvec3(0.1, 0.9, 0.2), glm::dvec3(1.0, 0.1, 0.1), t * 2 - 1);
 }
 
 inline Element colourAttr(ElementType type, const glm::dvec3& rgb) {

@@ -28,26 +28,35 @@ struct ButtonRelease {
 struct CursorMove {
     glm::dvec2 position{0.0};
 };
-enum class Key { Enter, Backspace, Escape, Function };
+/// The wheel turned at the pointer: `delta` notches, positive away from the user.
+struct Scroll {
+    glm::dvec2 position{0.0};
+    double delta = 0.0;
+};
+enum class Key { Enter, Backspace, Escape, Function, Letter };
 struct KeyPress {
     Key key = Key::Enter;
     int function = 0;  ///< 1 for F1, ... (Key::Function)
+    char letter = 0;   ///< 'A'..'Z' (Key::Letter: reported only with Control held)
+    bool control = false;
 };
 struct Character {
     char32_t codepoint = 0;
 };
 }  // namespace window_event
 
-using WindowEvent = std::variant<window_event::ButtonPress, window_event::ButtonRelease,
-                                 window_event::CursorMove, window_event::KeyPress, window_event::Character>;
+using WindowEvent =
+    std::variant<window_event::ButtonPress, window_event::ButtonRelease, window_event::CursorMove,
+                 window_event::KeyPress, window_event::Character, window_event::Scroll>;
 
 /// Turns window events into operator actions, the same actions a session script holds:
 /// left click: pick (and locator); right click: locator only; pointer motion: move (sample
 /// locators follow it); shift + left drag: stroke;
 /// typed characters then Enter: string (Backspace edits, Escape breaks a request);
-/// F1..F12: choice 1..12. A left press in a valuator slider of the echo layout starts a drag
-/// that sets the value at the press, at every motion that changes it and at the release (a
-/// click in a choice panel is a pick, which WorkstationInput turns into the choice). The text
+/// F1..F12: choice 1..12; the wheel and Control + letter make no action (an application's
+/// event filter may take them, see GlfwInputSource::setEventFilter). A left press in a valuator slider of the
+/// echo layout starts a drag that sets the value at the press, at every motion that changes it and at the
+/// release (a click in a choice panel is a pick, which WorkstationInput turns into the choice). The text
 /// being typed is the string device's echo (stringEcho()).
 class WindowEventMapper {
 public:

@@ -5,6 +5,7 @@
 #include "phigs/window/GlfwWindow.h"
 
 #include <deque>
+#include <functional>
 
 struct GLFWwindow;
 
@@ -30,8 +31,15 @@ public:
     void setEchoLayout(const EchoLayout& layout) override { mapper_.setLayout(layout); }
     StringEcho stringEcho() const override { return mapper_.stringEcho(); }
 
-    /// Delivers an event as the window's callbacks do.
+    /// Delivers an event as the window's callbacks do: to the event filter, then (unless the
+    /// filter took it) to the mapper.
     void post(const WindowEvent& event);
+    /// Gives every window event first to `filter`, which returns true when it took the event
+    /// (an application's own navigation: wheel, drags in its views, shortcut keys); events it
+    /// leaves go to the mapper. An empty filter removes it.
+    void setEventFilter(std::function<bool(const WindowEvent&)> filter) { filter_ = std::move(filter); }
+    /// Delivers an event to the mapper alone (what a filter hands back after holding it).
+    void deliver(const WindowEvent& event);
     const WindowEventMapper& mapper() const { return mapper_; }
 
 private:
@@ -40,6 +48,7 @@ private:
     std::uint64_t damageSeen_ = 0;
     WindowEventMapper mapper_;
     std::deque<InputAction> pending_;
+    std::function<bool(const WindowEvent&)> filter_;
 };
 
 }  // namespace phigs

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -93,7 +94,9 @@ public:
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    /// The directives a session script may use: snapshot NAME, summary NAME, hardcopy NAME.pdf|svg|eps.
+    /// The directives a session script may use: snapshot NAME, summary NAME, hardcopy
+    /// NAME.pdf|svg|eps, and pick_surface COMPONENT PATCH U W VIEW (a recorded pick on a surface,
+    /// replayed at the screen position of that surface point in that view now).
     static std::set<std::string> directives();
 
     /// Handles events until EXIT or until the source is exhausted.
@@ -125,6 +128,8 @@ public:
     /// The workstation transformation on the screen's pixels (render, pick and echo share it).
     const phigs::WorkstationMapping& mapping() const { return *mapping_; }
 
+    /// ERROR_SCALE: the error map's fixed scale (red at this length, model units), 0 when relative.
+    double errorScale() const { return errorScale_; }
     /// The current value of valuator `device` (1..4: marker u, w, rotation, zoom).
     double valuatorValue(int device) const;
     const std::string& message() const { return message_; }
@@ -150,13 +155,34 @@ public:
     /// session's input: false (with the message) when it is refused and nothing changed.
     bool importCadFile(const std::filesystem::path& path);
 
+    // ---- navigation (a window's mouse and keys, see ViewNavigation; scripts: `view`)
+    /// Turns the 3D view by `azimuth` degrees about the vertical and tilts it by `elevation`
+    /// degrees (kept within +-89).
+    void rotateView(double azimuth, double elevation);
+    /// Multiplies the zoom of every view by `factor` (kept within the ZOOM slider's 0.25..8).
+    void zoomView(double factor);
+    /// Moves the views' centre so that the model follows a pointer moved by `pixels` in the 3D view.
+    void panView(glm::dvec2 pixels);
+    double azimuth() const { return azimuth_; }
+    double elevation() const { return elevation_; }
+    double zoom() const { return zoom_; }
+    /// Shows or hides the key and mouse help over the views (structure 29).
+    void toggleHelp();
+    bool helpShown() const { return help_; }
+    /// Ctrl+Z (true) or Ctrl+Y: UNDO or REDO from any menu.
+    void undoRedoKey(bool undo);
+    /// A prompt is open or text is being typed (so H is text, not the help key).
+    bool typing() const;
+
     /// Changes UNDO can take back, and undone changes REDO can make again.
     std::size_t undoCount() const { return history_.undoCount(); }
     std::size_t redoCount() const { return history_.redoCount(); }
 
     /// The text summary (patch picked, marker (u, w), mapped loops, control points before and after).
     std::string summary() const;
-    /// The session so far as a script that replays it.
+    /// The session so far as a script that replays it, whatever the screen's size then: menu
+    /// rows and pad buttons as `choice NAME`, picks on surfaces as `pick_surface COMPONENT PATCH
+    /// U W VIEW`, each with a comment saying what it did; directives (snapshots) as they came.
     std::string recording() const;
 
 private:
@@ -181,13 +207,17 @@ private:
         RetrieveFile,
         Tolerance,
         Count,
-        ModelName
+        ModelName,
+        ErrorScale
     };
 
     void setupWorkstation();
     void fitWorkstation();  ///< the workstation's display, window, viewport and mapping for the layout
     void setupDevices();
     void initialiseSliders();
+    /// Valuator `device`'s range: U and W (1, 2) span the reference patch in the component's
+    /// own parameters ([0, 1] without one), ROTATE and ZOOM (3, 4) are fixed.
+    glm::dvec2 sliderRange(int device) const;
     void followStringEcho();
     void setMenu(const std::string& title, std::vector<std::string> items);
     void say(const std::string& text);
@@ -195,6 +225,13 @@ private:
     void handle(const phigs::EventReport& report);
     void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
     void writeDirective(const phigs::action::Directive& d);
+    /// pick_surface: a pick at the screen position of a component's surface point in a view,
+    /// which must find that component and patch; the pick reports the recorded (u, w).
+    void pickSurface(const std::vector<std::string>& arguments);
+    /// The recording writes the input action being handled as `line` (and `comment`).
+    void recordAs(std::string line, std::string comment = {});
+    /// A pick on a surface recorded as pick_surface (its view: the click's, or pickView_).
+    void recordPick(const PickedPatch& picked, const phigs::PickMeasure& measure);
     void choose(std::string item);
     void padButton(int button);
     void pick(const phigs::PickMeasure& measure);
@@ -235,6 +272,18 @@ private:
     void drawOverlay();
     void drawMapped(bool all);
     void drawErrorMap();
+    void drawLegend();
+    void drawHelp();
+    void navigated();  ///< after a navigation: views, sliders, and the recording's `view` line
+    void setView(const std::vector<std::string>& arguments);  ///< the `view` directive
+    glm::dvec3 obliqueDirection() const;  ///< from the model's centre towards the 3D view's eye
+    std::pair<glm::dvec3, glm::dvec3> modelBounds() const;  ///< the current model's control points' box
+    std::string errorMapLine() const;  ///< ERROR_MAP's message: the scale and the largest error
+    void setErrorScale(
+        const std::string& input);  ///< ERROR_SCALE: a length (fixed) or RELATIVE  ///< the error map's
+                                    ///< colour bar in model units, or nothing when it is off
+    /// The length the error map shows red at: the fixed scale, or the reduction's largest error.
+    double errorMapTop() const;
     void moveMarker(double u, double w);
     bool requireModel();
     std::filesystem::path findInput(const std::string& name) const;
@@ -259,7 +308,8 @@ private:
     ModelList models_;
     DisplayStyle style_;
     bool fourViews_ = false;
-    double azimuth_ = -135, zoom_ = 1;
+    double azimuth_ = -135, elevation_ = 25, zoom_ = 1;
+    bool help_ = false;
     std::optional<glm::dvec3> viewCentre_;  ///< CENTRE ON MARKER; else the model's middle
 
     std::string menuTitle_;
@@ -267,6 +317,7 @@ private:
     std::string message_;
     std::string typed_;  ///< the string echo: text typed, not yet accepted
     std::uint64_t echoEdits_ = 0;
+    glm::dvec2 sliderRanges_[4];  ///< the ranges the valuators were last initialised with
     std::vector<std::string> log_;
     Phase phase_ = Phase::None;
     Awaiting awaiting_ = Awaiting::Nothing;
@@ -294,10 +345,19 @@ private:
     std::string reductionDirection_ = "U";
     bool reductionByCount_ = false;
     int reductionComponent_ = -1;
+    /// ERROR_SCALE: the error map is red at this length (model units) on a fixed scale; 0: at
+    /// the reduction's largest error (relative).
+    double errorScale_ = 0.01;
     std::vector<ReductionRecord> reductions_;
 
     std::vector<std::filesystem::path> pictures_;
     std::vector<std::filesystem::path> hardcopies_;
+    /// By index in the devices' action history: how the recording writes that action.
+    std::map<std::size_t, std::pair<std::string, std::string>> recordedAs_;
+    int pickView_ = 0;  ///< the view of the pick_surface being replayed
+    /// Lines the recording writes that are no device's action (navigation as `view`, Ctrl+Z as
+    /// `undo`), each before the action history entry of its index.
+    std::vector<std::pair<std::size_t, std::string>> extraLines_;
     History<SessionState> history_;
 };
 
