@@ -1,14 +1,20 @@
-// Structure store benchmark: 1,000,000 elements in 10,000 structures (one root executing
-// 9,999 leaves of 100 elements each, one NURBS surface per leaf). Prints inserts per second,
-// traversal ns per element, bytes per element, and what one edit of a posted network costs:
-// how many elements are re-traversed and how many surfaces re-tessellated. Ends with one JSON object.
+// Structure store benchmark: one root executing leaves of 100 elements each (one NURBS surface,
+// attributes, polylines), posted on an offscreen workstation. Per size: inserts per second,
+// full traversal ns per element against a visit of the same elements kept in plain vectors
+// (the baseline, same run), incremental traversal with nothing changed, peak resident bytes per
+// element (the whole process above its start: store, workstation, draw lists, caches), and one
+// edit of a posted leaf up to the next draw list. `bench_store` runs 10k, 100k, 1M and 4M
+// elements, each in its own process, and prints the 1M figures plus `scaling`;
+// `bench_store --elements N` runs one size. Process CPU time. Ends with one JSON object.
 
 #include "phigs/Phigs.h"
 
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace phigs;
 
@@ -21,11 +27,13 @@ double cpuNow() {
     return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
 
-long residentBytes() {
-    std::ifstream statm("/proc/self/statm");
-    long pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return resident * 4096;
+/// A field of /proc/self/status in bytes (VmRSS, VmHWM).
+long statusBytes(const char* field) {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind(field, 0) == 0) return std::atol(line.c_str() + std::strlen(field) + 1) * 1024;
+    return 0;
 }
 
 NurbsSurfaceElement leafSurface(int leaf) {
@@ -50,119 +58,247 @@ Element leafElement(int leaf, int k) {
     }
 }
 
-}  // namespace
+/// The baseline: the same leaves in plain vectors (one type code, one integer and a point range
+/// per element), visited with the same attribute state and one plain record per polyline.
+struct PlainLeaf {
+    std::vector<unsigned char> kinds;  ///< k % 10 of the element, 10: the surface
+    std::vector<int> values;
+    std::vector<std::uint32_t> firstPoint;
+    std::vector<glm::dvec3> points;
+};
+struct PlainItem {
+    const glm::dvec3* points;
+    std::uint32_t count;
+    int colour, linetype, leaf, element, pickId;
+    const glm::dmat4* transform;
+};
 
-int main() {
-    const int leaves = 9999, perLeaf = 100;
+std::vector<PlainLeaf> plainLeaves(int leaves, int perLeaf) {
+    std::vector<PlainLeaf> out(static_cast<std::size_t>(leaves));
+    for (int leaf = 0; leaf < leaves; ++leaf) {
+        PlainLeaf& p = out[static_cast<std::size_t>(leaf)];
+        p.kinds.push_back(10), p.values.push_back(0), p.firstPoint.push_back(0);
+        for (int k = 1; k < perLeaf; ++k) {
+            p.kinds.push_back(static_cast<unsigned char>(k % 10));
+            p.values.push_back(k % 10 == 0 ? 1 + k % 7 : k % 10 == 1 ? 1 + k % 4 : k);
+            p.firstPoint.push_back(static_cast<std::uint32_t>(p.points.size()));
+            if (k % 10 >= 4)
+                for (glm::dvec3 q : {glm::dvec3(leaf, k, 0), {leaf + 1, k, 0}, {leaf + 1, k + 1, 0}})
+                    p.points.push_back(q);
+        }
+        p.firstPoint.push_back(static_cast<std::uint32_t>(p.points.size()));
+    }
+    return out;
+}
+
+std::size_t plainVisit(const std::vector<PlainLeaf>& leaves, std::vector<PlainItem>& out) {
+    out.clear();
+    const glm::dmat4 identity(1.0);
+    std::size_t visited = 0;
+    for (std::size_t leaf = 0; leaf < leaves.size(); ++leaf) {
+        const PlainLeaf& p = leaves[leaf];
+        int colour = 1, linetype = 1, pick = 0;  // pushed per execute, as traversal does
+        for (std::size_t i = 0; i < p.kinds.size(); ++i, ++visited) {
+            switch (p.kinds[i]) {
+                case 0:
+                    colour = p.values[i];
+                    break;
+                case 1:
+                    linetype = p.values[i];
+                    break;
+                case 2:
+                    break;
+                case 3:
+                    pick = p.values[i];
+                    break;
+                case 10:
+                    break;
+                default:
+                    out.push_back({p.points.data() + p.firstPoint[i], p.firstPoint[i + 1] - p.firstPoint[i],
+                                   colour, linetype, static_cast<int>(leaf), static_cast<int>(i), pick,
+                                   &identity});
+            }
+        }
+    }
+    return visited + leaves.size();  // the root's executes
+}
+
+struct Figures {
+    std::size_t elements = 0, structures = 0, items = 0;
+    double insertsPerS = 0, traversalNs = 0, rawVisitNs = 0, unchangedNs = 0, firstTraversalS = 0;
+    double peakRssPerElement = 0, residentAfterInsertPerElement = 0, payloadPerElement = 0;
+    double editPolylineMs = 0, editSurfaceMs = 0;
+    std::uint64_t surfacesFirst = 0, editRetraversed = 0, editRetessellated = 0, reused = 0;
+};
+
+/// Replaces element `at` of `structure` and times the store edit up to the next draw list.
+double editMs(Phigs& phigs, Workstation& ws, int structure, int at, Element element) {
+    double start = cpuNow();
+    StructureStore& store = phigs.store();
+    store.openStructure(structure);
+    store.setEditMode(EditMode::Replace);
+    store.setElementPointer(at);
+    store.insert(std::move(element));
+    store.closeStructure();
+    ws.display();
+    return (cpuNow() - start) * 1e3;
+}
+
+Figures run(int leaves, long rssAtStart) {
+    const int perLeaf = 100;
+    Figures f;
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();
-    long rssBefore = residentBytes();
-
     double start = cpuNow();
-    std::size_t inserted = 0;
     store.openStructure(1);
     for (int leaf = 0; leaf < leaves; ++leaf) store.insert(executeStructure(leaf + 2));
     store.insert(label(0));
     store.closeStructure();
-    inserted += leaves + 1;
     for (int leaf = 0; leaf < leaves; ++leaf) {
         store.openStructure(leaf + 2);
         store.insert(leafSurface(leaf));
         for (int k = 1; k < perLeaf; ++k) store.insert(leafElement(leaf, k));
         store.closeStructure();
-        inserted += perLeaf;
     }
-    double insertSeconds = (cpuNow() - start);
-    long rssAfter = residentBytes();
-    std::size_t payloadBytes = 0;
+    f.elements = static_cast<std::size_t>(leaves) * (perLeaf + 1) + 1;
+    f.insertsPerS = static_cast<double>(f.elements) / (cpuNow() - start);
+    f.residentAfterInsertPerElement =
+        static_cast<double>(statusBytes("VmRSS:") - rssAtStart) / static_cast<double>(f.elements);
+    std::size_t payload = 0;
     for (int id : store.structureIds())
-        for (int n = 1; n <= store.elementCount(id); ++n) payloadBytes += store.elementSizeAt(id, n);
+        for (int n = 1; n <= store.elementCount(id); ++n) payload += store.elementSizeAt(id, n);
+    f.payloadPerElement = static_cast<double>(payload) / static_cast<double>(f.elements);
+    f.structures = store.structureIds().size();
 
     Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
     ws.postStructure(1, 0.5);
     start = cpuNow();
-    std::size_t items = ws.display().items.size();
-    double firstTraversal = (cpuNow() - start);
+    f.items = ws.display().items.size();
+    f.firstTraversalS = cpuNow() - start;
     auto& counters = ws.traverser().cache().counters();
-    std::uint64_t surfacesFirst = counters.surfacesTessellated;
+    f.surfacesFirst = counters.surfacesTessellated;
 
-    // Full traversals (every element walked) and incremental ones (unchanged subtrees reused).
+    // Full traversals (every element walked, every draw item made) and incremental ones.
     const int repeats = 3;
     ws.traverser().setIncremental(false);
     start = cpuNow();
     for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
-    double traversalSeconds = (cpuNow() - start) / repeats;
-    std::uint64_t traversed = ws.traverser().elementsTraversed();
+    f.traversalNs =
+        (cpuNow() - start) * 1e9 / repeats / static_cast<double>(ws.traverser().elementsTraversed());
     ws.traverser().setIncremental(true);
     ws.redrawAllStructures();
     start = cpuNow();
     for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
-    double reuseSeconds = (cpuNow() - start) / repeats;
-    std::uint64_t reusedElements = ws.traverser().elementsReused();
+    f.unchangedNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(f.elements);
+    f.reused = ws.traverser().elementsReused();
 
-    // Edit one polyline of one posted leaf.
-    store.openStructure(5000);
-    store.setEditMode(EditMode::Replace);
-    store.setElementPointer(50);
-    store.insert(polyline3({{0, 0, 0}, {2, 2, 2}}));
-    store.closeStructure();
+    // The baseline in the same run: plain vectors of the same leaves.
+    auto plain = plainLeaves(leaves, perLeaf);
+    std::vector<PlainItem> plainItems;
+    plainVisit(plain, plainItems);
+    start = cpuNow();
+    std::size_t visited = 0;
+    for (int r = 0; r < repeats; ++r) visited = plainVisit(plain, plainItems);
+    f.rawVisitNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(visited);
+    plain = {}, plainItems = {};
+
+    // One edit of one posted leaf: a polyline, then the surface.
+    const int leaf = leaves / 2 + 2;
+    f.editPolylineMs = editMs(phigs, ws, leaf, 50, polyline3({{0, 0, 0}, {2, 2, 2}}));
     std::uint64_t before = counters.surfacesTessellated;
-    start = cpuNow();
-    ws.display();
-    double editPolylineSeconds = (cpuNow() - start);
-    std::uint64_t retraversedPolyline = ws.traverser().elementsTraversed();
-    std::uint64_t surfacesPolylineEdit = counters.surfacesTessellated - before;
+    f.editSurfaceMs = editMs(phigs, ws, leaf + 1, 1, leafSurface(12345));
+    f.editRetessellated = counters.surfacesTessellated - before;
+    f.editRetraversed = ws.traverser().elementsTraversed();
+    f.peakRssPerElement =
+        static_cast<double>(statusBytes("VmHWM:") - rssAtStart) / static_cast<double>(f.elements);
+    return f;
+}
 
-    // Replace the surface of one leaf.
-    store.openStructure(6000);
-    store.setEditMode(EditMode::Replace);
-    store.setElementPointer(1);
-    store.insert(leafSurface(12345));
-    store.closeStructure();
-    before = counters.surfacesTessellated;
-    start = cpuNow();
-    ws.display();
-    double editSurfaceSeconds = (cpuNow() - start);
-    std::uint64_t surfacesSurfaceEdit = counters.surfacesTessellated - before;
-    std::uint64_t retraversedSurface = ws.traverser().elementsTraversed();
+std::string json(const Figures& f, const std::string& prefix) {
+    char buffer[1200];
+    std::snprintf(
+        buffer, sizeof buffer,
+        "\"%selements\": %zu, \"%sstructures\": %zu, \"%sdraw_items\": %zu, \"%sinserts_per_s\": %.0f, "
+        "\"%straversal_ns_per_element\": %.1f, \"%sraw_visit_ns_per_element\": %.1f, "
+        "\"%sincremental_unchanged_ns_per_element\": %.1f, \"%speak_rss_bytes_per_element\": %.1f, "
+        "\"%sresident_after_insert_bytes_per_element\": %.1f, \"%spayload_bytes_per_element\": %.1f, "
+        "\"%sfirst_traversal_cpu_s\": %.3f, \"%ssurfaces_tessellated_first\": %llu, "
+        "\"%sedit_to_drawlist_ms\": %.2f, \"%sedit_polyline_to_drawlist_ms\": %.2f, "
+        "\"%sedit_surface_to_drawlist_ms\": %.2f, \"%sedit_retraversed_elements\": %llu, "
+        "\"%sedit_retessellated_surfaces\": %llu",
+        prefix.c_str(), f.elements, prefix.c_str(), f.structures, prefix.c_str(), f.items, prefix.c_str(),
+        f.insertsPerS, prefix.c_str(), f.traversalNs, prefix.c_str(), f.rawVisitNs, prefix.c_str(),
+        f.unchangedNs, prefix.c_str(), f.peakRssPerElement, prefix.c_str(), f.residentAfterInsertPerElement,
+        prefix.c_str(), f.payloadPerElement, prefix.c_str(), f.firstTraversalS, prefix.c_str(),
+        (unsigned long long)f.surfacesFirst, prefix.c_str(), std::max(f.editPolylineMs, f.editSurfaceMs),
+        prefix.c_str(), f.editPolylineMs, prefix.c_str(), f.editSurfaceMs, prefix.c_str(),
+        (unsigned long long)f.editRetraversed, prefix.c_str(), (unsigned long long)f.editRetessellated);
+    return buffer;
+}
 
-    double insertsPerSecond = inserted / insertSeconds;
-    double nsPerElement = traversalSeconds * 1e9 / static_cast<double>(traversed);
-    double rssPerElement = static_cast<double>(rssAfter - rssBefore) / static_cast<double>(inserted);
-    double payloadPerElement = static_cast<double>(payloadBytes) / static_cast<double>(inserted);
-
-    std::printf("structures %zu, elements %zu, draw items %zu\n", store.structureIds().size(), inserted,
-                items);
-    std::printf("insert: %.3f s, %.0f elements/s\n", insertSeconds, insertsPerSecond);
-    std::printf("memory: %.1f bytes/element resident, %.1f bytes/element payload (elementSize)\n",
-                rssPerElement, payloadPerElement);
-    std::printf("first traversal with %llu surface tessellations: %.3f s\n",
-                (unsigned long long)surfacesFirst, firstTraversal);
-    std::printf("traversal (cache warm): %.3f s, %.1f ns/element over %llu elements\n", traversalSeconds,
-                nsPerElement, (unsigned long long)traversed);
-    std::printf("incremental traversal, nothing changed: %.3f s, %.1f ns/element, %llu elements reused\n",
-                reuseSeconds, reuseSeconds * 1e9 / static_cast<double>(inserted),
-                (unsigned long long)reusedElements);
-    std::printf("edit one polyline: %.3f s, %llu elements re-traversed, %llu surfaces re-tessellated\n",
-                editPolylineSeconds, (unsigned long long)retraversedPolyline,
-                (unsigned long long)surfacesPolylineEdit);
-    std::printf("edit one surface: %.3f s, %llu elements re-traversed, %llu surfaces re-tessellated\n",
-                editSurfaceSeconds, (unsigned long long)retraversedSurface,
-                (unsigned long long)surfacesSurfaceEdit);
+void print(const Figures& f) {
+    std::printf("elements %zu in %zu structures, draw items %zu\n", f.elements, f.structures, f.items);
+    std::printf("insert: %.0f elements/s; resident after insert %.1f B/element, payload %.1f B/element\n",
+                f.insertsPerS, f.residentAfterInsertPerElement, f.payloadPerElement);
+    std::printf("first traversal (%llu surfaces tessellated): %.3f s\n", (unsigned long long)f.surfacesFirst,
+                f.firstTraversalS);
+    std::printf("full traversal %.1f ns/element; plain vectors %.1f ns/element; unchanged %.1f ns/element\n",
+                f.traversalNs, f.rawVisitNs, f.unchangedNs);
     std::printf(
-        "{\"structures\": %zu, \"elements\": %zu, \"inserts_per_s\": %.0f, \"traversal_ns_per_element\": "
-        "%.1f, "
-        "\"incremental_unchanged_ns_per_element\": %.1f, \"resident_bytes_per_element\": %.1f, "
-        "\"payload_bytes_per_element\": %.1f, "
-        "\"first_traversal_cpu_s\": %.3f, \"surfaces_tessellated_first\": %llu, "
-        "\"edit_polyline_retraversed_elements\": %llu, \"edit_polyline_retessellated_surfaces\": %llu, "
-        "\"edit_surface_retraversed_elements\": %llu, \"edit_surface_retessellated_surfaces\": %llu, "
-        "\"edit_polyline_update_cpu_s\": %.3f, \"edit_surface_update_cpu_s\": %.3f}\n",
-        store.structureIds().size(), inserted, insertsPerSecond, nsPerElement,
-        reuseSeconds * 1e9 / static_cast<double>(inserted), rssPerElement, payloadPerElement, firstTraversal,
-        (unsigned long long)surfacesFirst, (unsigned long long)retraversedPolyline,
-        (unsigned long long)surfacesPolylineEdit, (unsigned long long)retraversedSurface,
-        (unsigned long long)surfacesSurfaceEdit, editPolylineSeconds, editSurfaceSeconds);
+        "edit to draw list: polyline %.2f ms, surface %.2f ms (%llu re-traversed, %llu re-tessellated)\n",
+        f.editPolylineMs, f.editSurfaceMs, (unsigned long long)f.editRetraversed,
+        (unsigned long long)f.editRetessellated);
+    std::printf("peak resident %.1f B/element (whole process above its start)\n", f.peakRssPerElement);
+}
+
+/// Runs `--elements n` in a child process (its own peak RSS) and returns its JSON line.
+std::string child(const char* self, std::size_t elements) {
+    std::string command = std::string(self) + " --elements " + std::to_string(elements);
+    std::string last;
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char line[4096];
+        while (std::fgets(line, sizeof line, pipe)) {
+            std::fputs(line, stderr);
+            if (line[0] == '{') last = line;
+        }
+        pclose(pipe);
+    }
+    while (!last.empty() && (last.back() == '\n' || last.back() == '}')) last.pop_back();
+    return last.empty() ? "" : last.substr(1);
+}
+
+std::string renamed(std::string object, const std::string& prefix) {
+    for (std::size_t at = object.find('"'); at != std::string::npos; at = object.find(", \"", at)) {
+        at += at == 0 ? 1 : 3;
+        object.insert(at, prefix);
+    }
+    return object;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const long rssAtStart = statusBytes("VmRSS:");
+    if (argc == 3 && std::strcmp(argv[1], "--elements") == 0) {
+        int leaves = std::max(1, std::atoi(argv[2]) / 101);
+        Figures f = run(leaves, rssAtStart);
+        print(f);
+        std::printf("{%s}\n", json(f, "").c_str());
+        return 0;
+    }
+    const std::pair<const char*, std::size_t> sizes[] = {
+        {"e10k_", 10'000}, {"e100k_", 100'000}, {"e4M_", 4'000'000}};
+    std::string scaling = "\"sizes\": \"10k 100k 1M 4M\"";
+    for (auto [prefix, n] : sizes) {
+        std::string object = child(argv[0], n);
+        if (object.empty()) return std::fprintf(stderr, "bench_store: the %zu-element run failed\n", n), 1;
+        scaling += ", " + renamed(object, prefix);
+    }
+    Figures f = run(9'999, rssAtStart);
+    print(f);
+    std::string main = json(f, "");
+    scaling += ", " + json(f, "e1M_");
+    std::printf("{%s, \"scaling\": {%s}}\n", main.c_str(), scaling.c_str());
     return 0;
 }

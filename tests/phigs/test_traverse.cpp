@@ -374,3 +374,43 @@ TEST_CASE("a network nested deeper than the limit gives an error, not a crash", 
     CHECK(s.store->pathsToAncestors(depth, StructurePathOrder::TopFirst, 0).front().size() ==
           std::size_t(depth));
 }
+
+TEST_CASE("an edit replaces only its structure's segments of the draw list; the others are shared",
+          "[traverse]") {
+    Scene s;
+    for (int leaf = 2; leaf <= 6; ++leaf)
+        s.build(leaf, {polylineColourIndex(leaf), line, line, pickId(leaf), polymarker3({{0, 0, leaf}})});
+    s.build(1, {executeStructure(2), executeStructure(3), line, executeStructure(4), executeStructure(5),
+                executeStructure(6)});
+    s.ws->postStructure(1, 0);
+    DrawList before = s.ws->display();
+    REQUIRE(before.items.size() == 5 * 3 + 1);
+    s.store->openStructure(4);
+    s.store->insert(line);
+    s.store->closeStructure();
+    const DrawList& after = s.ws->display();
+    REQUIRE(after.items.size() == before.items.size() + 1);
+    CHECK(s.ws->traverser().elementsTraversed() == 6 + 6);  // the root and the edited leaf
+    auto owner = [](const DrawItems::SegmentPtr& segment) {
+        return segment->items.front().source.path.back().structureId;
+    };
+    int shared = 0, fresh = 0;
+    for (const auto& segment : after.items.segments()) {
+        bool reused = std::find(before.items.segments().begin(), before.items.segments().end(), segment) !=
+                      before.items.segments().end();
+        if (owner(segment) == 4 || owner(segment) == 1) {
+            CHECK(!reused);
+            ++fresh;
+        } else {
+            CHECK(reused);
+            ++shared;
+        }
+    }
+    CHECK(shared == 4);
+    CHECK(fresh == 2);
+    // the draw list still reads like a vector, and writing copies a shared segment first
+    DrawList copy = after;
+    copy.items[0].highlighted = true;
+    CHECK(!after.items[0].highlighted);
+    CHECK(std::distance(after.items.begin(), after.items.end()) == static_cast<long>(after.items.size()));
+}

@@ -3,6 +3,7 @@
 #include "phigs/store/StructurePaths.h"
 
 #include <algorithm>
+#include <unordered_set>
 
 namespace phigs {
 
@@ -110,6 +111,18 @@ std::map<int, std::set<int>> StructureStore::childrenGraph() const {
     return graph;
 }
 
+const std::vector<int>& StructureStore::executedBy(const Structure& s) const {
+    // Versions are unique in the store's lifetime, so a matching version means the same list.
+    auto& [version, ids] = executed_[s.id];
+    if (version != s.version) {
+        version = s.version;
+        ids.clear();
+        for (const auto& e : s.elements)
+            if (auto x = asExecute(e.value)) ids.push_back(x->structureId);
+    }
+    return ids;
+}
+
 std::set<int> StructureStore::network(int id) const {
     std::set<int> seen;
     std::vector<int> todo{id};
@@ -118,10 +131,27 @@ std::set<int> StructureStore::network(int id) const {
         todo.pop_back();
         if (!seen.insert(next).second) continue;
         if (const Structure* s = find(next))
-            for (const auto& e : s->elements)
-                if (auto x = asExecute(e.value)) todo.push_back(x->structureId);
+            for (int child : executedBy(*s)) todo.push_back(child);
     }
     return seen;
+}
+
+std::uint64_t StructureStore::networkStamp(int id) const {
+    std::uint64_t hash = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
+    std::unordered_set<int> seen;
+    std::vector<int> todo{id};
+    while (!todo.empty()) {
+        int next = todo.back();
+        todo.pop_back();
+        if (!seen.insert(next).second) continue;
+        const Structure* s = find(next);
+        mix(static_cast<std::uint32_t>(next));
+        mix(s ? s->version : 0);
+        if (s)
+            for (int child : executedBy(*s)) todo.push_back(child);
+    }
+    return hash;
 }
 
 bool StructureStore::wouldCycle(int parent, int child) const {
@@ -300,6 +330,7 @@ void StructureStore::deleteStructure(int id) {
         touch(structures_.at(id));
     } else {
         structures_.erase(id);
+        executed_.erase(id);
     }
 }
 
@@ -338,6 +369,7 @@ void StructureStore::deleteAllStructures() {
     std::vector<int> ids = structureIds();
     for (int id : ids) notifyDeleted(id);
     structures_.clear();
+    executed_.clear();
     if (open_) {
         createIfMissing(*open_);
         pointer_ = 0;

@@ -7,7 +7,9 @@
 #include <glm/matrix.hpp>
 
 #include <array>
+#include <climits>
 #include <map>
+#include <unordered_map>
 
 namespace phigs {
 
@@ -71,16 +73,13 @@ struct Traverser::SubtreeCache {
         detail::State entry;
         std::vector<DrawPathLevel> prefix;
         std::uint64_t stamp = 0;
-        std::vector<DrawItem> items;
-        std::vector<int> lightKeys, depthCues;
+        std::vector<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists that hold them
         std::uint64_t elements = 0;
         bool used = true;
     };
-    std::map<int, std::vector<Entry>> entries;
-    std::map<int, std::pair<std::uint64_t, std::vector<int>>>
+    std::unordered_map<int, std::vector<Entry>> entries;
+    std::unordered_map<int, std::pair<std::uint64_t, std::vector<int>>>
         children;  ///< per structure: version, executed ids
-    std::map<std::set<int>, int> lightKeys;
-    std::vector<std::set<int>> lightKeySets;
 
     void prune() {
         for (auto& [id, list] : entries) {
@@ -88,6 +87,37 @@ struct Traverser::SubtreeCache {
             for (auto& e : list) e.used = false;
         }
         std::erase_if(entries, [](const auto& kv) { return kv.second.empty(); });
+    }
+};
+
+/// Light sets and depth cues as draw items index them, kept across traversals so that an item
+/// reused from an earlier traversal keeps valid indices: an index is only ever added, and a
+/// lookup compares the resolved values, so a changed table gets new entries.
+struct Traverser::ItemTables {
+    std::map<std::set<int>, std::vector<int>> lightIndices;
+    std::vector<std::vector<Light>> lightSets;
+    std::map<int, std::vector<int>> cueIndices;
+    std::vector<DepthCue> depthCues;
+
+    /// Past this many entries the tables start again (and so must every cached subtree).
+    static constexpr std::size_t kLimit = 4096;
+    bool full() const { return lightSets.size() + depthCues.size() > kLimit; }
+
+    int lightSet(const std::set<int>& active, std::vector<Light> lights) {
+        auto& candidates = lightIndices[active];
+        for (int i : candidates)
+            if (lightSets[static_cast<std::size_t>(i)] == lights) return i;
+        candidates.push_back(static_cast<int>(lightSets.size()));
+        lightSets.push_back(std::move(lights));
+        return candidates.back();
+    }
+    int depthCue(int index, const DepthCue& cue) {
+        auto& candidates = cueIndices[index];
+        for (int i : candidates)
+            if (depthCues[static_cast<std::size_t>(i)] == cue) return i;
+        candidates.push_back(static_cast<int>(depthCues.size()));
+        depthCues.push_back(cue);
+        return candidates.back();
     }
 };
 
@@ -329,7 +359,8 @@ bool anyIndexed(const std::vector<Colour>& colours) {
 class Walk {
 public:
     Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
-         TessellationCache& cache, Traverser::SubtreeCache* subtrees, DrawList& out)
+         TessellationCache& cache, Traverser::SubtreeCache* subtrees, Traverser::ItemTables& itemTables,
+         DrawList& out)
         : store_(store),
           tables_(tables),
           filters_(filters),
@@ -337,6 +368,7 @@ public:
           out_(out),
           resolve_{tables},
           subtrees_(subtrees),
+          itemTables_(itemTables),
           baseStamp_(baseStamp(tables, filters)) {}
 
     std::uint64_t visited = 0;
@@ -346,6 +378,7 @@ public:
         State state;
         state.names = filters_.initialNames;
         walk(id, state);
+        flush();
     }
 
 private:
@@ -366,6 +399,7 @@ private:
                 path_.pop_back();
                 continue;
             }
+            if (!segment_ && mayDraw(element.value)) segment_ = newSegment(*s, i);
             apply(*s, element, number, state);
         }
     }
@@ -404,8 +438,11 @@ private:
                     if (auto x = std::get_if<ExecuteStructureElement>(&e.value))
                         known.second.push_back(x->structureId);
             }
-            std::vector<int> children = known.second;
-            for (int child : children) h = mix(h, subtreeStamp(child, depth + 1));
+            // subtreeStamp may rehash `children`: walk a copy of the ids only when there are any.
+            if (!known.second.empty()) {
+                std::vector<int> children = known.second;
+                for (int child : children) h = mix(h, subtreeStamp(child, depth + 1));
+            }
         }
         stamps_[id] = h;
         return h;
@@ -419,54 +456,63 @@ private:
     void execute(int id, State& child) {
         if (path_.size() > kMaxNetworkDepth) tooDeep();
         if (!subtrees_) {
+            flush();  // one segment per structure part: small blocks, no giant reallocation
             walk(id, child);
+            flush();
             return;
         }
         const std::uint64_t stamp = subtreeStamp(id);
-        auto& entries = subtrees_->entries[id];
-        for (auto& e : entries)
-            if (e.stamp == stamp && e.prefix == path_ && e.entry == child) {
-                e.used = true;
-                reuse(e);
-                return;
-            }
-        const std::size_t firstItem = out_.items.size();
+        flush();
+        if (auto found = subtrees_->entries.find(id); found != subtrees_->entries.end())
+            for (auto& e : found->second)
+                if (e.stamp == stamp && e.prefix == path_ && e.entry == child) {
+                    // Unchanged: the same segments again, shared, no item copied.
+                    e.used = true;
+                    reused += e.elements;
+                    for (const auto& segment : e.segments) out_.items.appendSegment(segment);
+                    return;
+                }
+        const std::size_t firstSegment = out_.items.segmentCount();
         const std::uint64_t firstElements = visited + reused;
         State entryState = child;
         walk(id, child);
+        flush();
         Traverser::SubtreeCache::Entry e;
         e.entry = std::move(entryState);
         e.prefix = path_;
         e.stamp = stamp;
-        e.items.assign(out_.items.begin() + static_cast<long>(firstItem), out_.items.end());
-        e.lightKeys.assign(lightKeys_.begin() + static_cast<long>(firstItem), lightKeys_.end());
-        e.depthCues.assign(cueIndices_.begin() + static_cast<long>(firstItem), cueIndices_.end());
+        const auto& segments = out_.items.segments();
+        e.segments.assign(segments.begin() + static_cast<long>(firstSegment), segments.end());
         e.elements = visited + reused - firstElements;
-        auto& list = subtrees_->entries[id];  // walk() may have added entries
+        auto& list = subtrees_->entries[id];
         if (list.size() >= 8) list.erase(list.begin());
         list.push_back(std::move(e));
     }
 
-    void reuse(const Traverser::SubtreeCache::Entry& e) {
-        reused += e.elements;
-        for (std::size_t i = 0; i < e.items.size(); ++i) {
-            DrawItem item = e.items[i];
-            item.lightSet = e.lightKeys[i] < 0
-                                ? -1
-                                : lightSet(subtrees_->lightKeySets[static_cast<std::size_t>(e.lightKeys[i])]);
-            item.depthCue = e.depthCues[i] < 0 ? -1 : depthCue(e.depthCues[i]);
-            out_.items.push_back(std::move(item));
-            lightKeys_.push_back(e.lightKeys[i]);
-            cueIndices_.push_back(e.depthCues[i]);
+    /// A segment with room for every primitive up to the next execute (an upper bound on its
+    /// items), so it never grows by copying.
+    static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
+        std::size_t primitives = 0;
+        for (std::size_t i = from; i < s.elements.size(); ++i) {
+            if (std::holds_alternative<ExecuteStructureElement>(s.elements[i].value)) break;
+            primitives += mayDraw(s.elements[i].value);
         }
+        auto segment = std::make_shared<DrawSegment>();
+        segment->items.reserve(primitives);
+        return segment;
     }
+    static bool mayDraw(const Element& e) {
+        return e.index() <= kLastPrimitive || std::holds_alternative<GdpElement>(e);
+    }
+    /// The variant index of the last output primitive family (they come first in Element).
+    static constexpr std::size_t kLastPrimitive = 11;
+    static_assert(
+        std::is_same_v<std::variant_alternative_t<kLastPrimitive, Element>, QuadrilateralMeshElement>);
 
-    int lightKey(const std::set<int>& active) {
-        if (active.empty() || !subtrees_) return -1;
-        auto [it, fresh] =
-            subtrees_->lightKeys.try_emplace(active, static_cast<int>(subtrees_->lightKeySets.size()));
-        if (fresh) subtrees_->lightKeySets.push_back(active);
-        return it->second;
+    /// Ends the segment being built: later items go to a new one.
+    void flush() {
+        if (segment_ && !segment_->items.empty()) out_.items.appendSegment(std::move(segment_));
+        segment_.reset();
     }
 
     DrawItem* emit(const Structure& s, int number, const State& state, DrawPrimitive primitive) {
@@ -483,34 +529,32 @@ private:
         item.source.path.push_back({s.id, number, state.pickId});
         item.source.structureVersion = s.version;
         if (state.modelClip) item.modelClipPlanes = state.clipVolume;
-        out_.items.push_back(std::move(item));
-        lightKeys_.push_back(lightKey(state.lights));
-        cueIndices_.push_back(item.depthCue < 0 ? -1 : cueTableIndex(state.depthCueIndex));
-        return &out_.items.back();
+        segment_->items.push_back(std::move(item));
+        return &segment_->items.back();
     }
 
     int lightSet(const std::set<int>& active) {
         if (active.empty()) return -1;
-        auto [it, fresh] = lightSets_.try_emplace(active, static_cast<int>(out_.lightSets.size()));
+        auto [it, fresh] = lightSets_.try_emplace(active, 0);
         if (fresh) {
             std::vector<Light> lights;
             for (int index : active)
                 if (auto l = tables_.lights.find(index); l != tables_.lights.end())
                     lights.push_back(l->second);
-            out_.lightSets.push_back(std::move(lights));
+            it->second = itemTables_.lightSet(active, std::move(lights));
         }
         return it->second;
     }
 
-    int cueTableIndex(int index) const { return tables_.depthCues.contains(index) ? index : 0; }
-
     int depthCue(int index) {
+        if (index == lastCue_.first) return lastCue_.second;
         auto entry = tables_.depthCues.find(index);
         if (entry == tables_.depthCues.end()) entry = tables_.depthCues.find(0);
-        if (entry == tables_.depthCues.end() || !entry->second.enabled) return -1;
-        auto [it, fresh] = depthCues_.try_emplace(entry->first, static_cast<int>(out_.depthCues.size()));
-        if (fresh) out_.depthCues.push_back(entry->second);
-        return it->second;
+        int result = -1;
+        if (entry != tables_.depthCues.end() && entry->second.enabled)
+            result = itemTables_.depthCue(entry->first, entry->second);
+        lastCue_ = {index, result};
+        return result;
     }
 
     std::vector<glm::vec3> resolveColours(const std::vector<Colour>& colours) const {
@@ -774,17 +818,19 @@ private:
     DrawList& out_;
     Resolver resolve_;
     std::vector<DrawPathLevel> path_;
-    std::map<std::set<int>, int> lightSets_;
-    std::map<int, int> depthCues_;
+    std::map<std::set<int>, int> lightSets_;    ///< this traversal's answers of itemTables_
+    std::pair<int, int> lastCue_{INT_MIN, -1};  ///< depth cue index and its answer, this traversal
     Traverser::SubtreeCache* subtrees_;
+    Traverser::ItemTables& itemTables_;
     std::uint64_t baseStamp_;
-    std::map<int, std::uint64_t> stamps_;
-    std::vector<int> lightKeys_, cueIndices_;  ///< per emitted item, for the subtree cache
+    std::unordered_map<int, std::uint64_t> stamps_;
+    std::shared_ptr<DrawSegment> segment_;  ///< the segment being built
 };
 
 }  // namespace
 
-Traverser::Traverser() : subtrees_(std::make_unique<SubtreeCache>()) {
+Traverser::Traverser()
+    : subtrees_(std::make_unique<SubtreeCache>()), itemTables_(std::make_unique<ItemTables>()) {
 }
 
 Traverser::~Traverser() = default;
@@ -808,8 +854,14 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     out.viewInputPriority = tables.views.inputPriority();
     out.background = glm::vec3(tables.colours.get(0));
     out.hiddenSurfaceRemoval = tables.hlhsrMode != 0;
-    Walk walk(store, tables, filters, cache_, subtrees_.get(), out);
+    if (itemTables_->full()) {
+        *itemTables_ = {};
+        if (subtrees_) subtrees_->entries.clear();
+    }
+    Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, out);
     for (int root : roots) walk.root(root);
+    out.lightSets = itemTables_->lightSets;
+    out.depthCues = itemTables_->depthCues;
     elementsTraversed_ = walk.visited;
     elementsReused_ = walk.reused;
     cache_.prune();

@@ -89,12 +89,7 @@ std::uint64_t Workstation::contentStamp() const {
     std::uint64_t hash = 1469598103934665603ull;
     auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
     mix(tables_.generation);
-    for (const PostedStructure& p : posted_)
-        for (int id : store_.network(p.structureId)) {
-            mix(static_cast<std::uint64_t>(static_cast<std::uint32_t>(id)));
-            const Structure* s = store_.find(id);
-            mix(s ? s->version : 0);
-        }
+    for (const PostedStructure& p : posted_) mix(store_.networkStamp(p.structureId));
     return hash;
 }
 

@@ -97,6 +97,7 @@ struct Light {
     glm::vec2 attenuation{1.0f, 0.0f};  ///< constant, linear (positional and spot)
     float concentration = 1.0f;         ///< spot exponent
     float spreadAngle = 3.14159265f;    ///< spot cone half angle, radians
+    bool operator==(const Light&) const = default;
 };
 
 /// Depth cueing (PHIGS PLUS): colour mixed toward `colour` between the reference planes (NPC z).
@@ -105,6 +106,7 @@ struct DepthCue {
     double frontPlane = 1.0, backPlane = 0.0;
     float frontScale = 1.0f, backScale = 0.0f;
     glm::vec3 colour{0.0f};
+    bool operator==(const DepthCue&) const = default;
 };
 
 }  // namespace phigs

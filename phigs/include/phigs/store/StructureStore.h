@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -135,6 +136,9 @@ public:
     std::vector<StructurePath> pathsToDescendants(int id, StructurePathOrder order, int depth) const;
     /// The structure and every structure it executes, directly or not (sorted).
     std::set<int> network(int id) const;
+    /// A hash of the id and version of every structure in `id`'s network: it changes whenever
+    /// any of them is edited (cheaper than walking network()).
+    std::uint64_t networkStamp(int id) const;
     /// Whether executing `child` from `parent` would close a cycle.
     bool wouldCycle(int parent, int child) const;
 
@@ -157,6 +161,8 @@ private:
     std::map<int, std::set<int>> childrenGraph() const;
     /// Each structure's EXECUTE STRUCTURE elements (see StructurePaths.h).
     std::map<int, std::vector<std::pair<int, int>>> executeReferences() const;
+    /// The structures `s` executes, in element order; cached per structure version.
+    const std::vector<int>& executedBy(const Structure& s) const;
 
     ErrorLog* log_ = nullptr;
     std::map<int, Structure> structures_;
@@ -165,6 +171,7 @@ private:
     EditMode editMode_ = EditMode::Insert;
     std::uint64_t serial_ = 0;
     std::vector<StoreListener*> listeners_;
+    mutable std::unordered_map<int, std::pair<std::uint64_t, std::vector<int>>> executed_;
 };
 
 }  // namespace phigs

@@ -5,6 +5,7 @@
 // produces it; nothing here knows Vulkan, GLFW or the structure store.
 
 #include "phigs/core/Attributes.h"
+#include "phigs/traverse/DrawItems.h"
 
 #include "geom/Curve.h"
 #include "geom/Surface.h"
@@ -22,106 +23,6 @@
 
 namespace phigs {
 
-/// One level of the path from a posted root to the element that produced a draw item.
-struct DrawPathLevel {
-    int structureId = 0;
-    int elementNumber = 0;  ///< 1-based position of the element (the execute structure, or the primitive)
-    int pickId = 0;         ///< current pick id at that element
-    bool operator==(const DrawPathLevel&) const = default;
-};
-
-/// Where a draw item came from: the whole path from the posted root (top first), and the
-/// version of the primitive's own structure (a renderer may cache per element and version).
-struct DrawSource {
-    std::vector<DrawPathLevel> path;  ///< path.back() is the primitive's own element
-    std::uint64_t structureVersion = 0;
-};
-
-/// A polyline: one connected strip of points in modelling coordinates.
-struct DrawPolyline {
-    std::vector<glm::dvec3> points;
-    LineStyle style;
-};
-
-/// A set of markers at points in modelling coordinates.
-struct DrawPolymarker {
-    std::vector<glm::dvec3> points;
-    MarkerStyle style;
-};
-
-/// A planar fill area set: one or more closed contours (the first is the outer boundary, the
-/// others may be holes; the even-odd rule decides inside), optional per-vertex data.
-struct DrawFillArea {
-    std::vector<std::vector<glm::dvec3>> contours;
-    std::vector<std::vector<glm::vec3>> vertexColours;   ///< empty, or one per vertex of each contour
-    std::vector<std::vector<glm::dvec3>> vertexNormals;  ///< empty, or one per vertex of each contour
-    glm::dvec3 facetNormal{0.0};                         ///< (0,0,0): derive from the contour
-    InteriorStyleSet interior;
-    EdgeStyle edges;
-};
-
-/// Text at a point on a plane given by two direction vectors (PHIGS TEXT 3), or annotation
-/// text whose geometry lives in NPC at an offset from a reference point (ANNOTATION TEXT RELATIVE).
-struct DrawText {
-    std::string text;
-    glm::dvec3 position{0.0};        ///< text point (annotation: the reference point, modelling coords)
-    glm::dvec3 direction1{1, 0, 0};  ///< text plane x axis
-    glm::dvec3 direction2{0, 1, 0};  ///< text plane y axis
-    bool annotation = false;
-    glm::dvec3 annotationOffset{0.0};  ///< NPC offset of the text from the reference point
-    TextStyle style;
-};
-
-/// A triangle mesh: what NURBS surfaces, triangle strips, quadrilateral meshes and fill area sets
-/// with data become. Shared and immutable: the same pointer comes back while its element and
-/// structure are unchanged, so a renderer may key its GPU buffers on it.
-struct MeshData {
-    std::vector<glm::vec3> positions;      ///< modelling coordinates
-    std::vector<glm::vec3> normals;        ///< one per position (unit), or empty (facet normals)
-    std::vector<glm::vec3> colours;        ///< one per position, or empty (interior colour)
-    std::vector<glm::vec2> uv;             ///< surface parameters per position, or empty
-    std::vector<std::uint32_t> triangles;  ///< three indices per triangle, counter-clockwise = front
-    std::vector<std::vector<std::uint32_t>>
-        isoLines;  ///< polylines through positions (iso-parametric curves)
-};
-
-/// A mesh with its attributes; `surface` is set for NURBS surfaces so picking can intersect the
-/// exact surface instead of the triangles.
-struct DrawMesh {
-    std::shared_ptr<const MeshData> mesh;
-    std::shared_ptr<const geom::Surface> surface;  ///< the exact surface, or null
-    InteriorStyleSet interior;
-    EdgeStyle edges;
-    LineStyle isoLineStyle;
-};
-
-/// A B-spline curve already tessellated into a polyline; `curve` keeps the exact form and the
-/// range the part drawn (a vector target tessellates it again to its own tolerance).
-struct DrawCurve {
-    std::vector<glm::dvec3> points;
-    std::shared_ptr<const geom::Curve> curve;
-    LineStyle style;
-    double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
-};
-
-/// The closed family of primitives a draw list holds.
-using DrawPrimitive = std::variant<DrawPolyline, DrawPolymarker, DrawFillArea, DrawText, DrawMesh, DrawCurve>;
-
-/// One primitive with everything a consumer needs to draw or pick it.
-struct DrawItem {
-    DrawPrimitive primitive;
-    glm::dmat4 modelTransform{1.0};  ///< composite modelling transform (global * local), to world
-    int viewIndex = 0;               ///< index into DrawList::views
-    bool highlighted = false;
-    bool pickable = true;  ///< false when the pick filter or detectability excludes it
-    int lightSet = -1;     ///< index into DrawList::lightSets, -1: no lights
-    int depthCue = -1;     ///< index into DrawList::depthCues, -1: none
-    DrawSource source;
-    /// Model clipping volume in world coordinates: keep x where dot(plane.xyz, x) + plane.w >= 0
-    /// for every plane; empty when the model clipping indicator is off.
-    std::vector<glm::dvec4> modelClipPlanes;
-};
-
 /// One entry of the workstation's view table, as traversal found it.
 struct DrawView {
     glm::dmat4 orientation{1.0};  ///< world -> view reference coordinates
@@ -133,7 +34,7 @@ struct DrawView {
 
 /// What one traversal of a workstation's posted networks produced, in drawing order.
 struct DrawList {
-    std::vector<DrawItem> items;
+    DrawItems items;  ///< shared segments, read like a vector
     std::vector<DrawView> views;
     std::vector<std::vector<Light>> lightSets;
     std::vector<DepthCue> depthCues;

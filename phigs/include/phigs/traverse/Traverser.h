@@ -44,16 +44,18 @@ public:
     /// Elements visited by the last traversal.
     std::uint64_t elementsTraversed() const { return elementsTraversed_; }
     /// Elements of the last traversal not visited because an executed structure's subtree was
-    /// unchanged (same inherited state, path and versions) and its draw items were reused.
+    /// unchanged (same inherited state, path and versions) and its draw segments were shared.
     std::uint64_t elementsReused() const { return elementsReused_; }
     /// Incremental traversal (the default) reuses unchanged executed subtrees; off: walk everything.
     void setIncremental(bool incremental);
 
     struct SubtreeCache;
+    struct ItemTables;
 
 private:
     TessellationCache cache_;
     std::unique_ptr<SubtreeCache> subtrees_;
+    std::unique_ptr<ItemTables> itemTables_;
     std::uint64_t elementsTraversed_ = 0;
     std::uint64_t elementsReused_ = 0;
 };

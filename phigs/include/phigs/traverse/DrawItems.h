@@ -1,0 +1,111 @@
+#pragma once
+
+// The items of a draw list as a sequence of shared segments: traversal builds one segment per
+// structure execution between EXECUTE STRUCTURE elements, and a later traversal that finds a
+// subtree unchanged appends the same segments again instead of copying their items. Reading
+// looks like a vector (size, [], at, iteration); writing a shared segment copies it first, so
+// a draw list keeps value semantics.
+
+#include "phigs/traverse/DrawItem.h"
+
+#include <cstddef>
+#include <initializer_list>
+#include <iterator>
+#include <memory>
+#include <vector>
+
+namespace phigs {
+
+/// Consecutive draw items produced together (one structure's elements between two executes).
+struct DrawSegment {
+    std::vector<DrawItem> items;
+};
+
+/// A draw list's items: shared segments read as one sequence.
+class DrawItems {
+public:
+    using value_type = DrawItem;
+    using size_type = std::size_t;
+    using SegmentPtr = std::shared_ptr<const DrawSegment>;
+
+    template <bool Const>
+    class Iterator {
+    public:
+        using iterator_category = std::random_access_iterator_tag;
+        using value_type = DrawItem;
+        using difference_type = std::ptrdiff_t;
+        using reference = std::conditional_t<Const, const DrawItem&, DrawItem&>;
+        using pointer = std::conditional_t<Const, const DrawItem*, DrawItem*>;
+        using Owner = std::conditional_t<Const, const DrawItems, DrawItems>;
+
+        Iterator() = default;
+        Iterator(Owner* owner, std::size_t index) : owner_(owner), index_(index) {}
+        operator Iterator<true>() const { return {owner_, index_}; }
+
+        reference operator*() const { return (*owner_)[index_]; }
+        pointer operator->() const { return &(*owner_)[index_]; }
+        reference operator[](difference_type n) const { return (*owner_)[index_ + n]; }
+        Iterator& operator++() { return ++index_, *this; }
+        Iterator operator++(int) { return {owner_, index_++}; }
+        Iterator& operator--() { return --index_, *this; }
+        Iterator operator--(int) { return {owner_, index_--}; }
+        Iterator& operator+=(difference_type n) { return index_ += n, *this; }
+        Iterator& operator-=(difference_type n) { return index_ -= n, *this; }
+        friend Iterator operator+(Iterator i, difference_type n) { return i += n; }
+        friend Iterator operator+(difference_type n, Iterator i) { return i += n; }
+        friend Iterator operator-(Iterator i, difference_type n) { return i -= n; }
+        friend difference_type operator-(const Iterator& a, const Iterator& b) {
+            return static_cast<difference_type>(a.index_) - static_cast<difference_type>(b.index_);
+        }
+        friend bool operator==(const Iterator& a, const Iterator& b) { return a.index_ == b.index_; }
+        friend auto operator<=>(const Iterator& a, const Iterator& b) { return a.index_ <=> b.index_; }
+
+    private:
+        Owner* owner_ = nullptr;
+        std::size_t index_ = 0;
+    };
+    using iterator = Iterator<false>;
+    using const_iterator = Iterator<true>;
+
+    DrawItems() = default;
+    DrawItems(std::initializer_list<DrawItem> items) : DrawItems(std::vector<DrawItem>(items)) {}
+    /// One segment of these items.
+    DrawItems(std::vector<DrawItem> items);  // NOLINT(google-explicit-constructor): reads as a vector
+
+    std::size_t size() const { return starts_.back(); }
+    bool empty() const { return size() == 0; }
+    const DrawItem& operator[](std::size_t i) const;
+    /// Copies the segment holding item i first when another draw list shares it.
+    DrawItem& operator[](std::size_t i);
+    const DrawItem& at(std::size_t i) const;
+    DrawItem& at(std::size_t i);
+    const DrawItem& front() const { return (*this)[0]; }
+    const DrawItem& back() const { return (*this)[size() - 1]; }
+    DrawItem& back() { return (*this)[size() - 1]; }
+    const_iterator begin() const { return {this, 0}; }
+    const_iterator end() const { return {this, size()}; }
+    iterator begin() { return {this, 0}; }
+    iterator end() { return {this, size()}; }
+
+    /// Appends one item (to a segment of this list's own).
+    void push_back(DrawItem item);
+    void clear();
+    void reserve(std::size_t) {}
+    /// Drops items past `count`, or appends default items up to it.
+    void resize(std::size_t count);
+
+    /// Appends a whole segment, shared, not copied (empty segments are skipped).
+    void appendSegment(SegmentPtr segment);
+    const std::vector<SegmentPtr>& segments() const { return segments_; }
+    std::size_t segmentCount() const { return segments_.size(); }
+
+private:
+    std::size_t segmentOf(std::size_t i) const;
+    DrawSegment& own(std::size_t segment);
+
+    std::vector<SegmentPtr> segments_;
+    std::vector<std::size_t> starts_{0};  ///< starts_[k]: index of segment k's first item; back(): size
+    bool lastOwned_ = false;              ///< the last segment was made by push_back and is not shared
+};
+
+}  // namespace phigs
