@@ -1,5 +1,7 @@
 #pragma once
 
+#include "phigs/input/InputDevice.h"
+
 #include <glm/vec2.hpp>
 
 #include <string_view>
@@ -29,6 +31,8 @@ struct WorkstationDescription {
     int depthCueTableSize = 8;
     std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
     int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
+    /// The logical input devices of each class (an OUTIN type; none for an OUTPUT one).
+    DeviceCounts inputDevices{0, 0, 0, 0, 0, 0};
     std::string_view name;
 };
 
