@@ -8,12 +8,12 @@
 #include "phigs/image/Image.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/traverse/DrawList.h"
+#include "phigs/traverse/WorkstationMapping.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/GpuBuffer.h"
 #include "phigs/vk/OffscreenTarget.h"
 #include "phigs/vk/Renderer.h"
 #include "phigs/vk/WorkstationDisplay.h"
-#include "phigs/ws/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
 #include <glm/geometric.hpp>

@@ -6,7 +6,6 @@
 //     input_events [SCRIPT]     the script file to replay (default: the one below)
 #include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
-#include "phigs/pick/WorkstationInteraction.h"
 
 #include <chrono>
 #include <cstdio>
@@ -70,9 +69,8 @@ int main(int argc, char** argv) {
         phigs::ScriptInputSource script = argc > 1 ? phigs::ScriptInputSource::fromFile(argv[1])
                                                    : phigs::ScriptInputSource(kScript, "script");
         phigs::InputQueue queue;
-        phigs::WorkstationInteraction interaction(ws, script, queue);
-        interaction.setSurfaceSize(1024, 768);  // one pixel per device unit, no window needed
-        phigs::WorkstationInput& input = interaction.input();
+        ws.connectInput(script, queue);
+        phigs::WorkstationInput& input = ws.input();
 
         // The choice device names its alternatives; the valuator ranges over [0, 10].
         phigs::DeviceInitialisation choice;

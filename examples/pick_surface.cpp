@@ -6,7 +6,6 @@
 //     pick_surface [U V]      clicks the pixel where the surface point S(U, V) is drawn
 #include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
-#include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/vk/WorkstationDisplay.h"
 
@@ -77,9 +76,8 @@ int main(int argc, char** argv) {
         // REQUEST PICK on pick device 1, fed by the script.
         phigs::ScriptInputSource script(line, "clicks");
         phigs::InputQueue queue;
-        phigs::WorkstationInteraction interaction(ws, script, queue);
-        interaction.setSurfaceSize(display.width(), display.height());
-        auto [status, measure] = interaction.input().request(phigs::InputClass::Pick, 1);
+        ws.connectInput(script, queue);
+        auto [status, measure] = ws.input().request(phigs::InputClass::Pick, 1);
         const auto& pick = std::get<phigs::PickMeasure>(measure);
         if (status != phigs::InputStatus::Ok || pick.status != phigs::InputStatus::Ok) {
             std::printf("nothing picked\n");

@@ -10,7 +10,7 @@
 #include "FuzzSupport.h"
 #include "phigs/Phigs.h"
 #include "phigs/render/ItemGeometry.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <cstdio>
 #include <fstream>

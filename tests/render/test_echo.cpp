@@ -4,7 +4,6 @@
 #include "RenderTestSupport.h"
 #include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
-#include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/ws/EchoStructures.h"
 
@@ -37,9 +36,8 @@ TEST_CASE("echo structures: a menu panel and a slider are drawn by the toolkit a
     // 192 x 192 pixels: echo areas must lie there to be seen.
     ScriptInputSource script("pick 50 45\npick 160 160\nlocator 60 62\n", "echo.txt");
     InputQueue queue;
-    WorkstationInteraction interaction(ws, script, queue);
-    interaction.setSurfaceSize(display.width(), display.height());
-    WorkstationInput& input = interaction.input();
+    ws.connectInput(script, queue);
+    WorkstationInput& input = ws.input();
     input.initialise(InputClass::Choice, 1,
                      choicePanelInitialisation({"Wing", "Tail", "Body"}, {10, 90, 10, 70, 0, 1}));
     input.initialise(InputClass::Valuator, 1,

@@ -4,7 +4,6 @@
 #include "RenderTestSupport.h"
 #include "VirtualDisplay.h"
 #include "phigs/Phigs.h"
-#include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/ws/EchoStructures.h"
 
@@ -63,9 +62,8 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
     {
         GlfwInputSource source(window);
         InputQueue queue;
-        WorkstationInteraction interaction(ws, source, queue);
-        interaction.setSurfaceSize(display.width(), display.height());
-        WorkstationInput& input = interaction.input();
+        ws.connectInput(source, queue);
+        WorkstationInput& input = ws.input();
         // Rows of 20 pixels; the slider inside the workstation window's 192 x 192 pixels.
         input.initialise(InputClass::Choice, 1,
                          choicePanelInitialisation({"Wing", "Tail", "Body"}, {10, 90, 10, 70, 0, 1}));

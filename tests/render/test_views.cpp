@@ -2,9 +2,9 @@
 // window/viewport mapping, and the PNG hardcopy workstation.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
+#include "phigs/traverse/WorkstationMapping.h"
 #include "phigs/vk/HardcopyTarget.h"
 #include "phigs/vk/ImageTarget.h"
-#include "phigs/ws/WorkstationMapping.h"
 
 #include <glm/geometric.hpp>
 

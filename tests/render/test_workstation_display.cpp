@@ -1,11 +1,10 @@
 // The toolkit put together: structures in the store, posted on a model workstation, drawn by
 // the Vulkan backend (vk::WorkstationDisplay) and picked through the logical input devices
-// (WorkstationInteraction with a script source). The pixel found in the rendered image must be
+// (the workstation's input devices on a script source). The pixel found in the rendered image must be
 // the pixel the pick resolves: one WorkstationMapping serves both.
 #include "RenderTestSupport.h"
 #include "phigs/Phigs.h"
 #include "phigs/input/ScriptInputSource.h"
-#include "phigs/pick/WorkstationInteraction.h"
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/vk/WorkstationDisplay.h"
 
@@ -158,16 +157,15 @@ TEST_CASE("workstation display: a posted network rendered offscreen is picked at
     // image and at that surface pixel, name the right paths, pick ids and (u, v).
     ScriptInputSource script(pickLine(red.centroid()) + pickLine(surfacePixel), "e2e.txt");
     InputQueue queue;
-    WorkstationInteraction interaction(*scene.ws, script, queue);
-    interaction.setSurfaceSize(display.width(), display.height());
+    scene.ws->connectInput(script, queue);
 
-    auto [status, measure] = interaction.input().request(InputClass::Pick, 1);
+    auto [status, measure] = scene.ws->input().request(InputClass::Pick, 1);
     REQUIRE(status == InputStatus::Ok);
     CHECK(std::get<PickMeasure>(measure).path == std::vector<PickPathItem>{{1, 6, 5}});
     // The pick echo: the display highlights the picked square (60 % toward yellow) and
     // re-uploads no geometry for it.
-    REQUIRE(interaction.lastEcho().size() == 1);
-    display.setEcho(interaction.lastEcho());
+    REQUIRE(scene.ws->lastPickEcho().size() == 1);
+    display.setEcho(scene.ws->lastPickEcho());
     REQUIRE(display.update());
     CHECK(display.renderer().lastFrame().buffersCreated == 0);
     const glm::dvec2 centre = red.centroid();
@@ -176,7 +174,7 @@ TEST_CASE("workstation display: a posted network rendered offscreen is picked at
     REQUIRE(display.update());
     CHECK(shows(display.image(), centre, {1.0, 0.0, 0.0}));
 
-    auto [status2, measure2] = interaction.input().request(InputClass::Pick, 1);
+    auto [status2, measure2] = scene.ws->input().request(InputClass::Pick, 1);
     REQUIRE(status2 == InputStatus::Ok);
     const PickMeasure& surfacePick = std::get<PickMeasure>(measure2);
     CHECK(surfacePick.path == std::vector<PickPathItem>{{1, 8, 6}, {2, 4, 7}});
@@ -201,13 +199,12 @@ TEST_CASE("workstation display: a pick device with its own filter picks on its o
     const glm::dvec2 pixel = mapping.toPixels(scene.npcOf(onSurface));
     ScriptInputSource script(pickLine(pixel) + pickLine(pixel), "filter.txt");
     InputQueue queue;
-    WorkstationInteraction interaction(*scene.ws, script, queue);
-    interaction.setSurfaceSize(display.width(), display.height());
+    scene.ws->connectInput(script, queue);
     // The patch has names {1, 2}: excluding 2 makes it unpickable for this device only.
-    interaction.input().setPickFilter(1, {1}, {2});
-    CHECK(interaction.input().request(InputClass::Pick, 1).first == InputStatus::None);
-    interaction.input().setPickFilter(1, {1}, {});
-    CHECK(interaction.input().request(InputClass::Pick, 1).first == InputStatus::Ok);
+    scene.ws->input().setPickFilter(1, {1}, {2});
+    CHECK(scene.ws->input().request(InputClass::Pick, 1).first == InputStatus::None);
+    scene.ws->input().setPickFilter(1, {1}, {});
+    CHECK(scene.ws->input().request(InputClass::Pick, 1).first == InputStatus::Ok);
     // The displayed picture was not touched by the pick traversals.
     CHECK(scene.ws->display().items.size() == 2);
     requireNoValidationMessages(display.context());

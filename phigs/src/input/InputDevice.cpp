@@ -94,4 +94,22 @@ int validateInitialisation(InputClass inputClass, const DeviceInitialisation& se
     return 0;
 }
 
+int DeviceCounts::of(InputClass inputClass) const {
+    switch (inputClass) {
+        case InputClass::Locator:
+            return locator;
+        case InputClass::Stroke:
+            return stroke;
+        case InputClass::Valuator:
+            return valuator;
+        case InputClass::Choice:
+            return choice;
+        case InputClass::Pick:
+            return pick;
+        case InputClass::String:
+            return string;
+    }
+    return 0;
+}
+
 }  // namespace phigs

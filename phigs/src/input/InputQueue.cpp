@@ -96,6 +96,10 @@ QueueOverflow InputQueue::inquireOverflow() {
     return o;
 }
 
+InputQueue::~InputQueue() {
+    for (WorkstationInput* input : std::vector<WorkstationInput*>(inputs_)) input->disconnect();
+}
+
 void InputQueue::attach(WorkstationInput& input) {
     if (std::find(inputs_.begin(), inputs_.end(), &input) == inputs_.end()) inputs_.push_back(&input);
 }

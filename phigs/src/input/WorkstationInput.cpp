@@ -36,27 +36,8 @@ std::string deviceName(InputClass inputClass, int device) {
 
 }  // namespace
 
-int DeviceCounts::of(InputClass inputClass) const {
-    switch (inputClass) {
-        case InputClass::Locator:
-            return locator;
-        case InputClass::Stroke:
-            return stroke;
-        case InputClass::Valuator:
-            return valuator;
-        case InputClass::Choice:
-            return choice;
-        case InputClass::Pick:
-            return pick;
-        case InputClass::String:
-            return string;
-    }
-    return 0;
-}
-
-WorkstationInput::WorkstationInput(int workstation, InputSource& source, const InputMeasurer& measurer,
-                                   InputQueue& queue, DeviceCounts counts)
-    : workstation_(workstation), source_(source), measurer_(measurer), queue_(queue), counts_(counts) {
+WorkstationInput::WorkstationInput(int workstation, const InputMeasurer& measurer, DeviceCounts counts)
+    : workstation_(workstation), measurer_(measurer), counts_(counts) {
     for (InputClass c : allClasses) {
         for (int n = 1; n <= counts_.of(c); ++n) {
             InputDevice d;
@@ -67,11 +48,31 @@ WorkstationInput::WorkstationInput(int workstation, InputSource& source, const I
             devices_.emplace(std::make_pair(c, n), std::move(d));
         }
     }
-    queue_.attach(*this);
+}
+
+WorkstationInput::WorkstationInput(int workstation, InputSource& source, const InputMeasurer& measurer,
+                                   InputQueue& queue, DeviceCounts counts)
+    : WorkstationInput(workstation, measurer, counts) {
+    connect(source, queue);
 }
 
 WorkstationInput::~WorkstationInput() {
-    queue_.detach(*this);
+    disconnect();
+}
+
+void WorkstationInput::connect(InputSource& source, InputQueue& queue) {
+    disconnect();
+    source_ = &source;
+    queue_ = &queue;
+    queue_->attach(*this);
+    echoEdits_ = source_->stringEcho().edits;
+    source_->setEchoLayout(echoLayout());
+}
+
+void WorkstationInput::disconnect() {
+    if (queue_) queue_->detach(*this);
+    queue_ = nullptr;
+    source_ = nullptr;
 }
 
 InputDevice& WorkstationInput::lookup(InputClass inputClass, int device, const char* function) {
@@ -99,8 +100,8 @@ void WorkstationInput::initialise(InputClass inputClass, int device, DeviceIniti
         throw Error(number, function, deviceName(inputClass, device) + ": " + reason);
     d.setup = std::move(setup);
     d.current = d.setup.initial;
-    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator)
-        source_.setEchoLayout(echoLayout());
+    if (source_ && (inputClass == InputClass::Choice || inputClass == InputClass::Valuator))
+        source_->setEchoLayout(echoLayout());
 }
 
 EchoLayout WorkstationInput::echoLayout() const {
@@ -169,7 +170,15 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
     if (d.mode != OperatingMode::Request)
         throw Error(errors::NotRequestMode, "REQUEST DEVICE",
                     deviceName(inputClass, device) + " must be in REQUEST mode");
+    if (!source_)
+        throw Error(errors::DeviceNotAvailable, "REQUEST DEVICE",
+                    "workstation " + std::to_string(workstation_) + " has no input source connected");
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
+    requested_ = &d;  // its echo shows while the request waits
+    struct Clear {
+        const InputDevice*& requested;
+        ~Clear() { requested = nullptr; }
+    } clear{requested_};
     for (;;) {
         const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);
         if (p == Pumped::Satisfied || p == Pumped::Broke) return result;
@@ -186,7 +195,7 @@ const Measure& WorkstationInput::sample(InputClass inputClass, int device) const
 
 Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) {
     const auto fail = [&](const std::string& reason) -> void {
-        throw ScriptError(source_.position() + ": '" + a.text + "': " + reason);
+        throw ScriptError(position() + ": '" + a.text + "': " + reason);
     };
     return std::visit(
         [&](const auto& w) -> Measure {
@@ -272,7 +281,16 @@ std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(cons
 
 WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeout, const InputDevice* pending,
                                                 std::pair<InputStatus, Measure>* result) {
-    std::optional<InputAction> a = source_.next(timeout);
+    if (!source_) return Pumped::Nothing;
+    std::optional<InputAction> a = source_->next(timeout);
+    if (echoListener_) {
+        // Typing moves the echo without completing an action: the echo areas show it now.
+        const std::uint64_t edits = source_->stringEcho().edits;
+        if (edits != echoEdits_) {
+            echoEdits_ = edits;
+            echoListener_();
+        }
+    }
     if (!a) return Pumped::Nothing;
     if (const auto* wait = std::get_if<action::Wait>(&a->what)) {
         if (!wait->surfaceChanged) history_.push_back(*a);
@@ -288,7 +306,7 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
             *result = {InputStatus::None, pending->current};
             return Pumped::Broke;
         }
-        ignored_.push_back(source_.position() + ": 'break' with no request pending");
+        ignored_.push_back(position() + ": 'break' with no request pending");
         return Pumped::Nothing;
     }
 
@@ -317,14 +335,14 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
             reached = true;
         }
     }
-    queue_.enqueue(std::move(reports));
+    if (queue_) queue_->enqueue(std::move(reports));
     if (!reached && std::holds_alternative<action::Move>(a->what)) {
         history_.pop_back();  // motion nobody samples is not worth recording
         return Pumped::Nothing;
     }
     if (!reached)
         ignored_.push_back(
-            source_.position() + ": '" + a->text +
+            position() + ": '" + a->text +
             "' reached no device (none of its class waits in a request, sample or event mode)");
     if (satisfied) return Pumped::Satisfied;
     return reached ? Pumped::Delivered : Pumped::Nothing;

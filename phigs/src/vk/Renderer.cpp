@@ -2,7 +2,7 @@
 
 #include "GpuLayout.h"
 #include "ShaderSpecialisation.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
 #include <glm/geometric.hpp>

@@ -86,7 +86,15 @@ void WorkstationDisplay::open(DisplaySettings settings) {
     workstation_.attachOutput(this);
 }
 
-bool WorkstationDisplay::present(const DrawList& picture) {
+const DrawList& WorkstationDisplay::withEcho(const DrawList& picture) {
+    if (echo_.empty()) return picture;
+    echoed_ = picture;
+    appendEchoes(echoed_, echo_, WorkstationMapping(picture, width(), height()));
+    return echoed_;
+}
+
+bool WorkstationDisplay::present(const DrawList& shown) {
+    const DrawList& picture = withEcho(shown);
     if (offscreen_) {
         image_ = offscreen_->draw(picture);
         if (!offscreenFile_.empty()) writePng(image_, offscreenFile_);
@@ -113,7 +121,8 @@ const Image& WorkstationDisplay::capture() {
         update();
         return image_;
     }
-    if (!window_->draw(workstation_.shownPicture(), &image_))
+    showEcho(workstation_.echoState());  // the echoes as they are now
+    if (!window_->draw(withEcho(workstation_.shownPicture()), &image_))
         throw std::runtime_error("WorkstationDisplay: the window has no picture to capture (minimised)");
     return image_;
 }

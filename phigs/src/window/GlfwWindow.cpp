@@ -68,6 +68,7 @@ GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::str
     glfwSetWindowUserPointer(window_, this);
     glfwSetFramebufferSizeCallback(window_, onResize);
     glfwSetWindowRefreshCallback(window_, onDamage);
+    glfwSetWindowIconifyCallback(window_, onIconify);
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -80,6 +81,10 @@ void GlfwWindow::onDamage(GLFWwindow* window) {
 }
 
 void GlfwWindow::onResize(GLFWwindow* window, int, int) {
+    onDamage(window);
+}
+
+void GlfwWindow::onIconify(GLFWwindow* window, int) {
     onDamage(window);
 }
 
@@ -97,7 +102,12 @@ VkSurfaceKHR GlfwWindow::createSurface(VkInstance instance) {
     return surface;
 }
 
+bool GlfwWindow::iconified() const {
+    return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE;
+}
+
 VkExtent2D GlfwWindow::drawableSize() const {
+    if (iconified()) return {0, 0};
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
     return {std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};

@@ -4,17 +4,40 @@
 #include <cmath>
 
 namespace phigs {
+namespace {
+
+/// The smallest string echo area that holds a line of text, in pixels: smaller ones (the
+/// default 1 x 1) echo nothing.
+constexpr double minimumEchoLine = 8.0;
+
+}  // namespace
 
 Workstation::Workstation(int id, WorkstationType type, StructureStore& store, ErrorLog* log)
-    : id_(id), description_(describeWorkstationType(type)), store_(store), log_(log) {
+    : id_(id),
+      description_(describeWorkstationType(type)),
+      store_(store),
+      log_(log),
+      measurer_([this]() -> const DrawList& { return display(); }),
+      input_(std::make_unique<WorkstationInput>(id, measurer_, description_.inputDevices)) {
     tables_.views = ViewTable(description_.viewTableSize);
     tables_.colours = ColourTable(description_.colourTableSize);
     tables_.viewportMax = {description_.displaySize.x, description_.displaySize.y, 1.0};
     tables_.displaySize = description_.displaySize;
+    measurer_.setSurfaceSize([this] {
+        const DrawableSize size = drawableSize();
+        if (size.width > 0 && size.height > 0) return DrawListMeasurer::SurfaceSize{size.width, size.height};
+        const glm::dvec2 display = description_.displaySize;  // minimised: no pixels to map
+        return DrawListMeasurer::SurfaceSize{std::uint32_t(std::lround(display.x)),
+                                             std::uint32_t(std::lround(display.y))};
+    });
+    measurer_.setPickListProvider(
+        [this](const InputDevice& device) -> const DrawList& { return pickList(device); });
+    input_->setEchoListener([this] { echoMoved(); });
     store_.addListener(this);
 }
 
 Workstation::~Workstation() {
+    input_.reset();        // leaves the input queue before anything else goes
     ownedOutput_.reset();  // an output may detach itself from the workstation as it goes
     store_.removeListener(this);
 }
@@ -276,7 +299,47 @@ const DrawList& Workstation::shownPicture() {
 }
 
 bool Workstation::present() {
-    return output_ && output_->present(shownPicture());
+    if (!output_) return false;
+    shownEcho_ = echoState();
+    output_->showEcho(shownEcho_);
+    return output_->present(shownPicture());
+}
+
+void Workstation::echoMoved() {
+    if (output_ && echoState() != shownEcho_) present();
+}
+
+const DrawList& Workstation::pickList(const InputDevice& device) {
+    TraversalFilters filters = filters_;
+    if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
+    DrawList& list = pickLists_[device.number];
+    lastPickList_ = &list;
+    list = traverse(filters);
+    // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
+    list.generation = ++pickTraversals_;
+    return list;
+}
+
+std::vector<std::vector<DrawPathLevel>> Workstation::lastPickEcho() const {
+    std::vector<std::vector<DrawPathLevel>> paths;
+    if (!lastPickList_) return paths;
+    for (std::size_t i : measurer_.lastEcho()) paths.push_back(lastPickList_->items.at(i).source.path);
+    return paths;
+}
+
+EchoState Workstation::echoState() const {
+    EchoState state;
+    const StringEcho typed = input_->stringEcho();
+    if (typed.text.empty() && !typed.cancelled) return state;
+    // A window types into string device 1 (WindowEventMapper), the one that can echo it.
+    if (input_->counts().string < 1) return state;
+    const InputDevice& d = input_->device(InputClass::String, 1);
+    const EchoVolume& a = d.setup.echoVolume;
+    const bool active = d.mode != OperatingMode::Request || input_->requested() == &d;
+    if (d.echo != EchoSwitch::Echo || d.setup.promptEchoType != 1 || !active) return state;
+    if (!(a.ymax - a.ymin >= minimumEchoLine && a.xmax - a.xmin >= a.ymax - a.ymin)) return state;
+    state.strings.push_back({1, a, typed.text, typed.cancelled});
+    return state;
 }
 
 DrawableSize Workstation::drawableSize() const {

@@ -18,10 +18,12 @@ WorkstationDescription describeWorkstationType(WorkstationType type) {
         case WorkstationType::OffscreenImage:
             d.name = "offscreen image";
             d.category = WorkstationCategory::OutIn;  // its input comes from a script source
+            d.inputDevices = DeviceCounts{};
             break;
         case WorkstationType::Window:
             d.name = "window";
             d.category = WorkstationCategory::OutIn;
+            d.inputDevices = DeviceCounts{};
             break;
         case WorkstationType::Hardcopy:
             d.name = "hardcopy";

@@ -111,8 +111,9 @@ void Session::resize(int width, int height) {
     }
     settings_.width = width;
     settings_.height = height;
-    interaction_->setSurfaceSize(std::uint32_t(width), std::uint32_t(height));
+    workstation_->measurer().setSurfaceSize(std::uint32_t(width), std::uint32_t(height));
     initialiseSliders();
+    initialiseString();
     setMenu(menuTitle_, menuItems_);  // the panel's rows move with the layout; redraws the screen
     drawLegend();
     drawHelp();
@@ -120,9 +121,10 @@ void Session::resize(int width, int height) {
 }
 
 void Session::setupDevices() {
-    interaction_ = std::make_unique<WorkstationInteraction>(*workstation_, source_, queue_);
-    interaction_->setSurfaceSize(std::uint32_t(layout_.width), std::uint32_t(layout_.height));
-    input_ = &interaction_->input();
+    // The workstation owns the devices; script lines are pixels of the session's screen.
+    workstation_->connectInput(source_, queue_);
+    workstation_->measurer().setSurfaceSize(std::uint32_t(layout_.width), std::uint32_t(layout_.height));
+    input_ = &workstation_->input();
     input_->setDirectiveHandler(
         [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
 
@@ -139,9 +141,18 @@ void Session::setupDevices() {
     input_->setMode(InputClass::Choice, 2, OperatingMode::Event);
 
     initialiseSliders();
+    initialiseString();
+}
 
+void Session::initialiseString() {
+    // The echo area: the right half of the message line's second row (the toolkit draws the
+    // text typed there once the row can hold it).
+    const PixelBox& m = layout_.message;
     DeviceInitialisation s;
     s.initial = StringMeasure{};
+    s.echoVolume =
+        PixelBox{(m.x0 + m.x1) / 2, (m.y0 + m.y1) / 2, m.x1, std::max(m.y1, m.y0 + 2)}.echoVolume();
+    input_->setMode(InputClass::String, 1, OperatingMode::Request);
     input_->initialise(InputClass::String, 1, s);
     input_->setMode(InputClass::String, 1, OperatingMode::Event);
 }
@@ -241,13 +252,10 @@ void Session::followStringEcho() {
     const StringEcho echo = source_.stringEcho();
     if (echo.edits == echoEdits_) return;
     echoEdits_ = echo.edits;
-    typed_ = echo.text;
     if (echo.cancelled) {
         awaiting_ = Awaiting::Nothing;  // Escape: the prompt is withdrawn, and the line says so
         say("CANCELLED");
-        return;
     }
-    drawScreen();
 }
 
 double Session::valuatorValue(int device) const {
@@ -255,7 +263,7 @@ double Session::valuatorValue(int device) const {
 }
 
 std::string Session::messageLine() const {
-    return typed_.empty() ? message_ : message_ + "  > " + typed_ + "_";
+    return message_;
 }
 
 void Session::handle(const EventReport& report) {

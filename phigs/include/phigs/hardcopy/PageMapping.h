@@ -2,7 +2,7 @@
 
 #include "phigs/hardcopy/PageSetup.h"
 #include "phigs/traverse/DrawList.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

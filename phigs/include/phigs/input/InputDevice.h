@@ -37,6 +37,12 @@ struct InputDevice {
     int pickPathDepth = 0;        ///< 0: the whole path
 };
 
+/// How many devices of each class a workstation has (numbered from 1).
+struct DeviceCounts {
+    int locator = 1, stroke = 1, valuator = 12, choice = 4, pick = 1, string = 1;
+    int of(InputClass inputClass) const;
+};
+
 /// Checks an initialisation against the rules of the device's class and returns the PHIGS error
 /// number it breaks (254 echo type, 255 echo volume, 260 data record, 261 initial value,
 /// 262 stroke buffer, 263 string buffer), or 0 when it is valid.

@@ -28,6 +28,10 @@ struct QueueOverflow {
 class InputQueue {
 public:
     explicit InputQueue(std::size_t capacity = 64);
+    /// The workstations' inputs attached to it lose their connection (they keep their devices).
+    ~InputQueue();
+    InputQueue(const InputQueue&) = delete;
+    InputQueue& operator=(const InputQueue&) = delete;
 
     /// Reports warning 256 (queue overflow) to `sink` when it happens (e.g. into the error log).
     void setWarningSink(std::function<void(const Error&)> sink) { warningSink_ = std::move(sink); }

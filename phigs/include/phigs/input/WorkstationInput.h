@@ -6,6 +6,7 @@
 #include "phigs/input/InputSource.h"
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <set>
@@ -15,16 +16,15 @@
 
 namespace phigs {
 
-/// How many devices of each class a workstation has (numbered from 1).
-struct DeviceCounts {
-    int locator = 1, stroke = 1, valuator = 12, choice = 4, pick = 1, string = 1;
-    int of(InputClass inputClass) const;
-};
-
 /// The logical input devices of one workstation, fed by one input source: INITIALIZE, SET MODE,
 /// REQUEST, SAMPLE, pick filters, device-state inquiries; event-mode reports go to the queue.
+/// The devices exist from the start; the operator's actions reach them once a source and a
+/// queue are connected.
 class WorkstationInput {
 public:
+    /// The devices, not yet connected to a source (a Workstation owns one such).
+    WorkstationInput(int workstation, const InputMeasurer& measurer, DeviceCounts counts = {});
+    /// The devices, connected to `source` and `queue` at once.
     WorkstationInput(int workstation, InputSource& source, const InputMeasurer& measurer, InputQueue& queue,
                      DeviceCounts counts = {});
     ~WorkstationInput();
@@ -32,6 +32,20 @@ public:
     WorkstationInput& operator=(const WorkstationInput&) = delete;
 
     int workstation() const { return workstation_; }
+    const DeviceCounts& counts() const { return counts_; }
+
+    /// Actions now come from `source` (it gets the echo layout) and event reports go to `queue`;
+    /// both outlive the connection (a queue that goes first disconnects it).
+    void connect(InputSource& source, InputQueue& queue);
+    /// Drops the connection; the devices keep their modes and measures.
+    void disconnect();
+    /// The connected source, or null.
+    InputSource* source() const { return source_; }
+    /// Called after each action taken from the source whose string echo moved (typing in a
+    /// window): the workstation shows its echo areas again, even inside a REQUEST.
+    void setEchoListener(std::function<void()> listener) { echoListener_ = std::move(listener); }
+    /// The source's string echo (nothing typed when none is connected).
+    StringEcho stringEcho() const { return source_ ? source_->stringEcho() : StringEcho{}; }
 
     /// `INITIALIZE <class>`: the device must be in REQUEST mode (251) and the setup valid.
     void initialise(InputClass inputClass, int device, DeviceInitialisation setup);
@@ -49,7 +63,10 @@ public:
     const InputDevice& device(InputClass inputClass, int device) const;
 
     /// `REQUEST <class>`: waits for the operator to trigger this device; status NONE on a break.
+    /// Error 250 (device not available) with no source connected.
     std::pair<InputStatus, Measure> request(InputClass inputClass, int device);
+    /// The device a REQUEST waits on now (null when none does).
+    const InputDevice* requested() const { return requested_; }
     /// `SAMPLE <class>`: the device's current measure (device in SAMPLE mode, else 252).
     const Measure& sample(InputClass inputClass, int device) const;
 
@@ -78,11 +95,16 @@ private:
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
 
+    std::string position() const { return source_ ? source_->position() : "no source"; }
+
     int workstation_;
-    InputSource& source_;
+    InputSource* source_ = nullptr;
     const InputMeasurer& measurer_;
-    InputQueue& queue_;
+    InputQueue* queue_ = nullptr;
     DeviceCounts counts_;
+    std::function<void()> echoListener_;
+    std::uint64_t echoEdits_ = 0;  ///< the source's string echo edits last seen
+    const InputDevice* requested_ = nullptr;
     std::map<std::pair<InputClass, int>, InputDevice> devices_;
     std::function<void(const action::Directive&, const InputAction&)> directiveHandler_;
     std::vector<std::string> ignored_;

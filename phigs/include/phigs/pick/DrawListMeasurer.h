@@ -3,7 +3,7 @@
 #include "phigs/input/InputMeasurer.h"
 #include "phigs/pick/Picker.h"
 #include "phigs/traverse/DrawList.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <cstdint>
 #include <functional>

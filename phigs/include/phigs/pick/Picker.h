@@ -2,7 +2,7 @@
 
 #include "phigs/input/InputTypes.h"
 #include "phigs/traverse/DrawList.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <glm/vec2.hpp>
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "phigs/image/Image.h"
+#include "phigs/traverse/WorkstationMapping.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/HardcopyTarget.h"
 #include "phigs/vk/ImageTarget.h"
@@ -8,7 +9,6 @@
 #include "phigs/vk/WindowSurface.h"
 #include "phigs/vk/WindowTarget.h"
 #include "phigs/ws/Workstation.h"
-#include "phigs/ws/WorkstationMapping.h"
 #include "phigs/ws/WorkstationOutput.h"
 
 #include <cstdint>
@@ -53,14 +53,19 @@ public:
     /// Draws what the workstation shows now (Workstation::present). False when a window had
     /// nothing to show it on (minimised).
     bool update() { return workstation_.present(); }
+    /// Draws `picture` with the echoes last handed over (showEcho) on top.
     bool present(const DrawList& picture) override;
     DrawableSize drawableSize() const override { return {width(), height()}; }
+    /// Keeps the echo state the next present draws (the string echo areas, appendEchoes).
+    void showEcho(const EchoState& echo) override { echo_ = echo; }
+    /// The echo state it draws now (a test reads what the picture shows from it).
+    const EchoState& echo() const { return echo_; }
     /// CLOSE WORKSTATION: the files (an offscreen PNG, the hardcopy) get `picture`.
     void close(const DrawList& picture) override;
     /// Draws what the workstation shows now and returns the picture (a window reads the
     /// presented image back), for snapshots.
     const Image& capture();
-    /// Pick echo: the items with these paths (WorkstationInteraction::lastEcho) are drawn
+    /// Pick echo: the items with these paths (Workstation::lastPickEcho) are drawn
     /// highlighted until the echo is set again (empty: none).
     void setEcho(std::vector<std::vector<DrawPathLevel>> paths) { workstation_.setEcho(std::move(paths)); }
     /// The last picture (offscreen and hardcopy; a window only with `readBack`).
@@ -82,6 +87,8 @@ public:
 
 private:
     void open(DisplaySettings settings);
+    /// `picture` with the echoes drawn over it (the picture itself when there are none).
+    const DrawList& withEcho(const DrawList& picture);
 
     Workstation& workstation_;
     std::unique_ptr<Context> ownContext_;
@@ -93,6 +100,8 @@ private:
     bool readBack_ = false;
     std::filesystem::path offscreenFile_;
     Image image_;
+    EchoState echo_;
+    DrawList echoed_;  ///< the last picture with echoes
 };
 
 }  // namespace phigs::vk

@@ -26,7 +26,11 @@ public:
 
     std::vector<const char*> instanceExtensions() const override;
     VkSurfaceKHR createSurface(VkInstance instance) override;
+    /// The framebuffer in pixels; 0 x 0 while the window is minimised (iconified), on every
+    /// window system (X keeps an iconified window's size).
     VkExtent2D drawableSize() const override;
+    /// True while the window is minimised.
+    bool iconified() const;
 
     /// True once the user (or requestClose) asked to close. Does not process events: the input
     /// source's wait does.
@@ -36,7 +40,7 @@ public:
     void resize(std::uint32_t width, std::uint32_t height);
     /// Processes pending events without waiting.
     void pollEvents();
-    /// Counts the times the picture was lost: resized, restored, exposed. A presenter draws
+    /// Counts the times the picture was lost: resized, minimised, restored, exposed. A presenter draws
     /// again when it moves.
     std::uint64_t damage() const { return damage_; }
     GLFWwindow* handle() const { return window_; }
@@ -44,6 +48,7 @@ public:
 private:
     static void onDamage(GLFWwindow* window);
     static void onResize(GLFWwindow* window, int, int);
+    static void onIconify(GLFWwindow* window, int);
 
     GLFWwindow* window_ = nullptr;
     std::uint64_t damage_ = 0;

@@ -2,7 +2,7 @@
 
 #include "phigs/input/EchoLayout.h"
 #include "phigs/store/StructureStore.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <glm/vec3.hpp>
 

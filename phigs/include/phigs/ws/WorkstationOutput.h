@@ -1,6 +1,7 @@
 #pragma once
 
 #include "phigs/traverse/DrawList.h"
+#include "phigs/ws/EchoState.h"
 
 #include <cstdint>
 
@@ -13,9 +14,10 @@ struct DrawableSize {
 };
 
 /// The one seam between a workstation and what shows it: present a picture, report the
-/// drawable's size. The workstation keeps everything else (its state, the pick echo applied to
-/// the picture it hands over). phigs/vk implements it for the image, hardcopy and window
-/// targets (vk::WorkstationDisplay); a test may implement it in memory.
+/// drawable's size, show the echoes. The workstation keeps everything else (its state, its
+/// input devices, the pick echo applied to the picture it hands over). phigs/vk implements it
+/// for the image, hardcopy and window targets (vk::WorkstationDisplay); a test may implement
+/// it in memory.
 class WorkstationOutput {
 public:
     virtual ~WorkstationOutput() = default;
@@ -23,6 +25,9 @@ public:
     virtual bool present(const DrawList& picture) = 0;
     /// The drawable now, in pixels.
     virtual DrawableSize drawableSize() const = 0;
+    /// What the echo areas show (handed before each present): an output with an operator draws
+    /// it over the picture (appendEchoes); a file has none and ignores it.
+    virtual void showEcho(const EchoState& echo) { (void)echo; }
     /// The workstation closes; `picture` is what it shows now. A file output writes it (when
     /// it has written nothing yet, or keeps every picture) and completes its file.
     virtual void close(const DrawList& picture) { (void)picture; }

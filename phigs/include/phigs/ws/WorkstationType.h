@@ -1,5 +1,7 @@
 #pragma once
 
+#include "phigs/input/InputDevice.h"
+
 #include <glm/vec2.hpp>
 
 #include <string_view>
@@ -32,6 +34,8 @@ struct WorkstationDescription {
     std::vector<int> gdps3;  ///< GDP 3 identifiers drawn (each with the polyline attributes)
     std::vector<int> gdps;   ///< GDP identifiers drawn (each with the polyline attributes)
     std::vector<int> gses;   ///< GSE identifiers acted on
+    /// The logical input devices of each class (an OUTIN type; none for an OUTPUT one).
+    DeviceCounts inputDevices{0, 0, 0, 0, 0, 0};
     std::string_view name;
 };
 

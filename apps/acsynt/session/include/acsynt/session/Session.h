@@ -12,8 +12,7 @@
 #include "phigs/input/InputQueue.h"
 #include "phigs/input/InputSource.h"
 #include "phigs/input/WorkstationInput.h"
-#include "phigs/pick/WorkstationInteraction.h"
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -133,8 +132,8 @@ public:
     /// The current value of valuator `device` (1..4: marker u, w, rotation, zoom).
     double valuatorValue(int device) const;
     const std::string& message() const { return message_; }
-    /// The message line as drawn: the message and, while the operator types, the string echo
-    /// (the text so far and a cursor).
+    /// The message line as the session draws it. The text being typed shows in the string
+    /// device's echo area on its right, which the toolkit draws (Workstation::echoState).
     std::string messageLine() const;
     const std::vector<std::string>& log() const { return log_; }
     const std::string& menuTitle() const { return menuTitle_; }
@@ -218,6 +217,7 @@ private:
     /// Valuator `device`'s range: U and W (1, 2) span the reference patch in the component's
     /// own parameters ([0, 1] without one), ROTATE and ZOOM (3, 4) are fixed.
     glm::dvec2 sliderRange(int device) const;
+    void initialiseString();  ///< string 1, echoed on the right of the message line
     void followStringEcho();
     void setMenu(const std::string& title, std::vector<std::string> items);
     void say(const std::string& text);
@@ -301,7 +301,6 @@ private:
     phigs::Workstation* workstation_ = nullptr;
     std::optional<phigs::WorkstationMapping> mapping_;
     phigs::InputQueue queue_;
-    std::unique_ptr<phigs::WorkstationInteraction> interaction_;
     phigs::WorkstationInput* input_ = nullptr;
     ModelPicture modelPicture_;
 
@@ -315,7 +314,6 @@ private:
     std::string menuTitle_;
     std::vector<std::string> menuItems_;
     std::string message_;
-    std::string typed_;  ///< the string echo: text typed, not yet accepted
     std::uint64_t echoEdits_ = 0;
     glm::dvec2 sliderRanges_[4];  ///< the ranges the valuators were last initialised with
     std::vector<std::string> log_;

@@ -1,4 +1,4 @@
-#include "phigs/ws/WorkstationMapping.h"
+#include "phigs/traverse/WorkstationMapping.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,59 @@
+#include "phigs/ws/EchoState.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phigs {
+namespace {
+
+DrawItem echoItem(DrawPrimitive primitive) {
+    DrawItem item;
+    item.primitive = std::move(primitive);
+    item.viewIndex = 0;  // world = NPC: the items are placed in NPC already
+    item.pickable = false;
+    return item;
+}
+
+void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const WorkstationMapping& mapping,
+                      const EchoStyle& style) {
+    const EchoVolume& a = echo.area;
+    const double z = style.npcZ;
+    const glm::dvec3 lo = mapping.pixelsToNpc({a.xmin, a.ymax}, z);  // bottom left
+    const glm::dvec3 hi = mapping.pixelsToNpc({a.xmax, a.ymin}, z);  // top right
+    const std::vector<glm::dvec3> corners = {
+        {lo.x, lo.y, z}, {hi.x, lo.y, z}, {hi.x, hi.y, z}, {lo.x, hi.y, z}};
+
+    DrawFillArea box;
+    box.contours = {corners};
+    box.interior.style = InteriorStyle::Solid;
+    box.interior.colour = glm::vec3(style.box);
+    picture.items.push_back(echoItem(std::move(box)));
+
+    DrawPolyline outline;
+    outline.points = corners;
+    outline.points.push_back(corners.front());
+    outline.style.colour = glm::vec3(style.outline);
+    picture.items.push_back(echoItem(std::move(outline)));
+
+    // Cap height 45 % of the area, from a quarter of that height in from the left edge.
+    const double height = std::abs(hi.y - lo.y) * 0.45;
+    DrawText text;
+    text.text = echo.shown();
+    text.position = {lo.x + height * 0.25 + mapping.npcLength(2.0), (lo.y + hi.y) * 0.5, z};
+    text.style.colour = glm::vec3(echo.cancelled ? style.current : style.text);
+    text.style.height = height;
+    text.style.horizontal = HorizontalAlignment::Left;
+    text.style.vertical = VerticalAlignment::Half;
+    picture.items.push_back(echoItem(std::move(text)));
+}
+
+}  // namespace
+
+void appendEchoes(DrawList& picture, const EchoState& echo, const WorkstationMapping& mapping,
+                  const EchoStyle& style) {
+    if (echo.empty()) return;
+    for (const StringEchoArea& s : echo.strings) appendStringEcho(picture, s, mapping, style);
+    ++picture.generation;  // the list differs from the picture it was copied from
+}
+
+}  // namespace phigs

@@ -1,0 +1,352 @@
+// The logical input devices a workstation owns, measured on its picture (no GPU: the pixels
+// are the workstation's device coordinates unless its output or the test says otherwise), and
+// the string echo it hands its output.
+#include "phigs/Phigs.h"
+#include "phigs/input/ScriptInputSource.h"
+#include "phigs/input/WindowEventMapper.h"
+
+#include "InputFakes.h"
+
+#include <catch2/catch.hpp>
+#include <deque>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+using namespace phigs;
+
+namespace {
+
+/// Workstation 1 (display 1024 x 768, viewport the whole display, window the unit square: 768
+/// pixels per NPC unit) with view 1 on the left half of NPC showing world scaled by 1/2, and
+/// structure 1 holding a square in view 1 (pick id 3) and one in view 0 (pick id 4).
+struct Rig {
+    Phigs phigs;
+    Workstation* ws = nullptr;
+    Rig() {
+        phigs.open();
+        auto& store = phigs.store();
+        store.openStructure(1);
+        store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
+        store.insert(viewIndex(1));
+        store.insert(pickId(3));
+        store.insert(fillArea3({{0.1, 0.1, 0}, {0.5, 0.1, 0}, {0.5, 0.5, 0}, {0.1, 0.5, 0}}));
+        store.insert(viewIndex(0));
+        store.insert(pickId(4));
+        store.insert(fillArea3({{0.7, 0.1, 0}, {0.9, 0.1, 0}, {0.9, 0.3, 0}, {0.7, 0.3, 0}}));
+        store.closeStructure();
+        ws = &phigs.openWorkstation(1, WorkstationType::Window);
+        ViewRepresentation left;
+        left.mapping = glm::scale(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 1.0));
+        left.clipMax = {0.5, 1.0, 1.0};
+        ws->setViewRepresentation(1, left);
+        ws->postStructure(1, 0.5);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("workstation input: the locator honours the view table's input priority", "[input][wiring]") {
+    Rig rig;
+    // NPC (0.2, 0.25) is pixel (153.6, 768 - 192) = (153.6, 576) from the top left.
+    ScriptInputSource script("locator 153.6 576\nlocator 153.6 576\nlocator 691.2 576\n", "loc.txt");
+    InputQueue queue;
+    rig.ws->connectInput(script, queue);
+    auto locate = [&] {
+        auto [status, measure] = rig.ws->input().request(InputClass::Locator, 1);
+        REQUIRE(status == InputStatus::Ok);
+        return std::get<LocatorMeasure>(measure);
+    };
+    // View 0 comes first initially and holds every point.
+    LocatorMeasure a = locate();
+    CHECK(a.viewIndex == 0);
+    CHECK(a.position.x == Approx(0.2));
+    CHECK(a.position.y == Approx(0.25));
+    // SET VIEW TRANSFORMATION INPUT PRIORITY on the workstation reaches the measurer.
+    rig.ws->setViewTransformationInputPriority(1, 0, true);
+    a = locate();
+    CHECK(a.viewIndex == 1);
+    CHECK(a.position.x == Approx(0.4));
+    CHECK(a.position.y == Approx(0.5));
+    a = locate();  // NPC x 0.9 is outside view 1's clip limits
+    CHECK(a.viewIndex == 0);
+    CHECK(a.position.x == Approx(0.9));
+}
+
+TEST_CASE("workstation input: picks see the current structures and the surface size", "[input][wiring]") {
+    Rig rig;
+    // Square 1 is drawn at NPC (0.05 .. 0.25); square 2 at NPC (0.7 .. 0.9) x (0.1 .. 0.3).
+    ScriptInputSource script("pick 115.2 652.8\npick 614.4 614.4\npick 115.2 652.8\npick 300 400\n",
+                             "pick.txt");
+    InputQueue queue;
+    rig.ws->connectInput(script, queue);
+    auto pick = [&] {
+        auto [status, measure] = rig.ws->input().request(InputClass::Pick, 1);
+        return status == InputStatus::Ok ? std::get<PickMeasure>(measure).path : std::vector<PickPathItem>{};
+    };
+    CHECK(pick() == std::vector<PickPathItem>{{1, 4, 3}});
+    CHECK(pick() == std::vector<PickPathItem>{{1, 7, 4}});
+    // Delete the first square: the next pick at its place finds nothing.
+    auto& store = rig.phigs.store();
+    store.openStructure(1);
+    store.setElementPointer(4);
+    store.deleteElement();
+    store.closeStructure();
+    CHECK(pick().empty());
+    // On a surface of half the size (512 x 384 pixels, half a pixel per device unit), pixel
+    // (300, 400) lies below the bottom edge; pixel (200, 300) is device (400, 168).
+    rig.ws->measurer().setSurfaceSize(512, 384);
+    CHECK(pick().empty());
+    CHECK(rig.ws->measurer().toNpc({200, 300}).x == Approx(400.0 / 768.0));
+    CHECK(rig.ws->measurer().toNpc({200, 300}).y == Approx(168.0 / 768.0));
+    // A surface that changes (a resized window) is asked at each measure.
+    std::uint32_t width = 1024, height = 768;
+    rig.ws->measurer().setSurfaceSize([&] { return std::pair{width, height}; });
+    CHECK(rig.ws->measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
+    width = 2048, height = 1536;
+    CHECK(rig.ws->measurer().toNpc({400, 368}).y == Approx((1536.0 - 368.0) / 2.0 / 768.0));
+}
+
+TEST_CASE("workstation output seam: the picture with the echo, input through the drawable's size",
+          "[ws][wiring]") {
+    /// An output in memory: keeps the last picture, reports the drawable it is told.
+    struct MemoryOutput : WorkstationOutput {
+        DrawList last;
+        int presents = 0;
+        DrawableSize size{512, 384};
+        bool present(const DrawList& picture) override {
+            last = picture;
+            ++presents;
+            return true;
+        }
+        DrawableSize drawableSize() const override { return size; }
+    };
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    CHECK_FALSE(ws.present());  // nothing attached
+    CHECK(ws.drawableSize() == DrawableSize{1024, 768});
+    MemoryOutput out;
+    ws.attachOutput(&out);
+    REQUIRE(ws.present());
+    REQUIRE(out.last.items.size() == 2);
+    CHECK_FALSE(out.last.items[1].highlighted);
+    ws.setEcho({out.last.items[1].source.path});
+    REQUIRE(ws.present());
+    CHECK(out.presents == 2);
+    CHECK_FALSE(out.last.items[0].highlighted);
+    CHECK(out.last.items[1].highlighted);
+    CHECK_FALSE(ws.display().items[1].highlighted);  // the workstation's own picture is untouched
+    // Input maps through the output's drawable: 512 x 384 pixels, half a pixel per device unit.
+    test::IdleSource source;
+    InputQueue queue;
+    ws.connectInput(source, queue);
+    CHECK(ws.measurer().toNpc({200, 300}).x == Approx(400.0 / 768.0));
+    out.size = {2048, 1536};  // resized: asked at each measure
+    CHECK(ws.measurer().toNpc({400, 368}).y == Approx((1536.0 - 368.0) / 2.0 / 768.0));
+    out.size = {0, 0};  // minimised: one pixel per device unit meanwhile
+    CHECK(ws.measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
+    ws.attachOutput(nullptr);
+    CHECK_FALSE(ws.present());
+}
+
+namespace {
+
+/// A window's keyboard without a window: events through the WindowEventMapper a GLFW source uses.
+class TypingSource : public InputSource {
+public:
+    void post(const WindowEvent& event) {
+        if (auto a = mapper.handle(event)) actions.push_back(*a);
+    }
+    void type(const std::string& text) {
+        for (char c : text) post(window_event::Character{char32_t(c)});
+    }
+    void key(window_event::Key k) { post(window_event::KeyPress{k, 0}); }
+    std::optional<InputAction> next(std::chrono::milliseconds) override {
+        if (actions.empty()) return std::nullopt;
+        InputAction a = actions.front();
+        actions.pop_front();
+        return a;
+    }
+    bool exhausted() const override { return false; }
+    std::string position() const override { return "keyboard"; }
+    StringEcho stringEcho() const override { return mapper.stringEcho(); }
+
+    WindowEventMapper mapper;
+    std::deque<InputAction> actions;
+};
+
+/// An output in memory that keeps the echo it was handed with each picture.
+struct EchoOutput : WorkstationOutput {
+    std::vector<EchoState> shown;  ///< the echo at each present
+    EchoState echo;
+    bool present(const DrawList&) override {
+        shown.push_back(echo);
+        return true;
+    }
+    DrawableSize drawableSize() const override { return {1024, 768}; }
+    void showEcho(const EchoState& e) override { echo = e; }
+};
+
+DeviceInitialisation stringWithArea(EchoVolume area) {
+    DeviceInitialisation s;
+    s.initial = StringMeasure{};
+    s.echoVolume = area;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("workstation input: OPEN WORKSTATION makes the devices, connecting gives them a source",
+          "[input][wiring]") {
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    CHECK(ws.input().counts().valuator == ws.description().inputDevices.valuator);
+    // No source yet: the devices take INITIALIZE and SET MODE; REQUEST is refused (250).
+    ws.input().initialise(InputClass::Valuator, 2,
+                          valuatorSliderInitialisation(0, 4, 3, {0, 10, 0, 10, 0, 1}));
+    ws.input().setMode(InputClass::Valuator, 2, OperatingMode::Sample);
+    CHECK(std::get<ValuatorMeasure>(ws.input().sample(InputClass::Valuator, 2)).value == 3.0);
+    try {
+        ws.input().request(InputClass::Locator, 1);
+        FAIL("REQUEST without a source");
+    } catch (const Error& e) {
+        CHECK(e.number() == errors::DeviceNotAvailable);
+    }
+    {
+        ScriptInputSource script("valuator 2 1.5\n", "v.txt");
+        InputQueue queue;
+        ws.connectInput(script, queue);
+        CHECK(queue.awaitEvent(std::chrono::milliseconds(0)) == std::nullopt);  // sample mode: no report
+        CHECK(std::get<ValuatorMeasure>(ws.input().sample(InputClass::Valuator, 2)).value == 1.5);
+    }  // the queue goes first: the workstation keeps its devices, unconnected
+    CHECK(ws.input().source() == nullptr);
+    CHECK(std::get<ValuatorMeasure>(ws.input().sample(InputClass::Valuator, 2)).value == 1.5);
+
+    // An OUTPUT workstation has no logical input devices.
+    Workstation& pdf = rig.phigs.openWorkstation(2, WorkstationType::PdfFile);
+    CHECK(pdf.description().category == WorkstationCategory::Output);
+    try {
+        pdf.input().device(InputClass::Locator, 1);
+        FAIL("a locator on an OUTPUT workstation");
+    } catch (const Error& e) {
+        CHECK(e.number() == errors::DeviceNotAvailable);
+    }
+}
+
+TEST_CASE("workstation echo: typed text reaches the string device's echo area through the output",
+          "[input][echo]") {
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    EchoOutput out;
+    ws.attachOutput(&out);
+    TypingSource keys;
+    InputQueue queue;
+    ws.connectInput(keys, queue);
+    const EchoVolume area{500, 1000, 700, 740, 0, 1};
+    ws.input().initialise(InputClass::String, 1, stringWithArea(area));
+    using window_event::Key;
+
+    // REQUEST mode and no request: the device is not active, nothing echoes.
+    keys.type("ab");
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
+    CHECK(ws.echoState().empty());
+    keys.key(Key::Escape);
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
+
+    // EVENT mode: each edit is presented with the echo, without the application presenting.
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    std::string model;
+    std::mt19937 random(7);
+    const std::string alphabet = "abcdefghijklmnopqrstuvwxyz0123456789._-";
+    for (int step = 0; step < 400; ++step) {
+        const int what = int(random() % 10);
+        out.shown.clear();
+        if (what < 6) {
+            const char c = alphabet[random() % alphabet.size()];
+            keys.type(std::string(1, c));
+            model += c;
+        } else if (what < 8) {
+            keys.key(Key::Backspace);
+            if (!model.empty()) model.pop_back();
+        } else if (what < 9) {
+            keys.key(Key::Enter);
+            const auto report = queue.awaitEvent(std::chrono::milliseconds(0));
+            REQUIRE(report);
+            CHECK(std::get<StringMeasure>(report->measure).text == model);
+            model.clear();
+            CHECK(ws.echoState().empty());  // accepted: the area is empty again
+            continue;
+        } else {
+            keys.key(Key::Escape);
+            CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));  // a break nobody requested
+            model.clear();
+            REQUIRE(ws.echoState().strings.size() == 1);
+            CHECK(ws.echoState().strings[0].shown() == "cancelled");
+            continue;
+        }
+        CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
+        const EchoState now = ws.echoState();
+        if (model.empty()) {
+            CHECK(now.empty());
+            continue;
+        }
+        REQUIRE(now.strings.size() == 1);
+        CHECK(now.strings[0].shown() == model + "_");
+        CHECK(now.strings[0].area.xmin == area.xmin);
+        REQUIRE(out.shown.size() == 1);  // presented once, with the echo it draws
+        CHECK(out.shown.back() == now);
+    }
+
+    // Echo off, another prompt/echo type or no echo area: nothing shows.
+    keys.type("x");
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
+    CHECK_FALSE(ws.echoState().empty());
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event, EchoSwitch::NoEcho);
+    CHECK(ws.echoState().empty());
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    keys.type("x");
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
+    // An area too small for a line of text (the default one of 1 x 1 pixels) shows nothing.
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Request);
+    ws.input().initialise(InputClass::String, 1, stringWithArea({500, 1000, 700, 705, 0, 1}));
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    CHECK(ws.echoState().empty());
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Request);
+    ws.input().initialise(InputClass::String, 1, stringWithArea({500, 1000, 700, 740, 0, 1}));
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    CHECK_FALSE(ws.echoState().empty());
+}
+
+TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the picture", "[input][echo]") {
+    Rig rig;
+    const DrawList& picture = rig.ws->display();
+    std::mt19937 random(11);
+    for (int i = 0; i < 50; ++i) {
+        const std::uint32_t width = 200 + random() % 2000, height = 150 + random() % 1500;
+        const WorkstationMapping mapping(picture, width, height);
+        const double x0 = random() % (width / 2), y0 = random() % (height / 2);
+        const double lineHeight = 8 + random() % 60;
+        const EchoVolume area{x0, x0 + 4 * lineHeight + random() % (width / 2), y0, y0 + lineHeight, 0, 1};
+        EchoState echo;
+        echo.strings.push_back({1, area, "name.acm", i % 2 == 0});
+        DrawList shown = picture;
+        appendEchoes(shown, echo, mapping);
+        REQUIRE(shown.items.size() == picture.items.size() + 3);
+        const auto* box = std::get_if<DrawFillArea>(&shown.items[picture.items.size()].primitive);
+        const auto* text = std::get_if<DrawText>(&shown.items.back().primitive);
+        REQUIRE(box);
+        REQUIRE(text);
+        CHECK(text->text == (i % 2 == 0 ? "cancelled" : "name.acm_"));
+        for (const glm::dvec3& corner : box->contours.at(0)) {
+            const glm::dvec2 p = mapping.toPixels(corner);
+            CHECK(std::min(std::abs(p.x - area.xmin), std::abs(p.x - area.xmax)) < 1e-6);
+            CHECK(std::min(std::abs(p.y - area.ymin), std::abs(p.y - area.ymax)) < 1e-6);
+        }
+        const glm::dvec2 at = mapping.toPixels(text->position);
+        CHECK(at.x > area.xmin);
+        CHECK(at.x < area.xmin + 0.2 * (area.ymax - area.ymin) + 3);
+        CHECK(at.y == Approx((area.ymin + area.ymax) / 2));
+        CHECK(mapping.pixelsPerNpc * text->style.height == Approx(0.45 * (area.ymax - area.ymin)));
+        for (std::size_t k = picture.items.size(); k < shown.items.size(); ++k)
+            CHECK_FALSE(shown.items[k].pickable);
+    }
+}
