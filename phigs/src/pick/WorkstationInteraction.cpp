@@ -17,15 +17,35 @@ WorkstationInteraction::WorkstationInteraction(Workstation& workstation, InputSo
         [this](const InputDevice& device) -> const DrawList& { return pickList(device); });
 }
 
+namespace {
+
+bool sameFilter(const std::optional<NameSetFilter>& a, const std::optional<NameSetFilter>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->inclusion == b->inclusion && a->exclusion == b->exclusion);
+}
+
+bool sameFilters(const TraversalFilters& a, const TraversalFilters& b) {
+    return sameFilter(a.pick, b.pick) && sameFilter(a.highlight, b.highlight) &&
+           sameFilter(a.invisibility, b.invisibility) && a.initialNames == b.initialNames;
+}
+
+}  // namespace
+
 const DrawList& WorkstationInteraction::pickList(const InputDevice& device) {
     TraversalFilters filters = workstation_.filters();
     if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
-    DrawList& list = pickLists_[device.number];
-    lastPickList_ = &list;
-    list = workstation_.traverse(filters);
+    PickList& cached = pickLists_[device.number];
+    lastPickList_ = &cached.list;
+    const std::uint64_t stamp = workstation_.contentStamp();
+    // Nothing the traversal reads changed: the list, its generation and the Picker's tree stay.
+    if (cached.made && cached.stamp == stamp && sameFilters(cached.filters, filters)) return cached.list;
+    cached.list = workstation_.traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
-    list.generation = ++traversals_;
-    return list;
+    cached.list.generation = ++traversals_;
+    cached.filters = std::move(filters);
+    cached.stamp = stamp;
+    cached.made = true;
+    return cached.list;
 }
 
 std::vector<std::vector<DrawPathLevel>> WorkstationInteraction::lastEcho() const {

@@ -86,6 +86,10 @@ bool Workstation::showsChangesAtOnce() const {
 }
 
 std::uint64_t Workstation::contentStamp() const {
+    // Every edit of the store counts an operation and every table or posting change a table
+    // generation: with neither, the networks and their versions are those of the last stamp.
+    if (stamped_ && stampOperations_ == store_.operationCount() && stampTables_ == tables_.generation)
+        return stamp_;
     std::uint64_t hash = 1469598103934665603ull;
     auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
     mix(tables_.generation);
@@ -95,6 +99,10 @@ std::uint64_t Workstation::contentStamp() const {
             const Structure* s = store_.find(id);
             mix(s ? s->version : 0);
         }
+    stamp_ = hash;
+    stampOperations_ = store_.operationCount();
+    stampTables_ = tables_.generation;
+    stamped_ = true;
     return hash;
 }
 

@@ -18,7 +18,7 @@ namespace phigs {
 /// measured on its picture. The locator and stroke map through the displayed draw list (view
 /// input priority from the workstation's view table); each pick device picks on a traversal
 /// of the workstation's networks with that device's pick filter (the workstation's own filters
-/// otherwise).
+/// otherwise), kept while the workstation's content stamp and the filters stay the same.
 class WorkstationInteraction {
 public:
     WorkstationInteraction(Workstation& workstation, InputSource& source, InputQueue& queue,
@@ -44,13 +44,22 @@ public:
     /// The paths of the items the last pick's echo highlights (empty when it hit nothing or the
     /// device's echo is off): hand them to the display (vk::WorkstationDisplay::setEcho).
     std::vector<std::vector<DrawPathLevel>> lastEcho() const;
+    /// Pick traversals made so far (a pick on an unchanged picture makes none).
+    std::uint64_t pickTraversals() const { return traversals_; }
 
 private:
     const DrawList& pickList(const InputDevice& device);
 
     Workstation& workstation_;
     DrawListMeasurer measurer_;
-    std::map<int, DrawList> pickLists_;  ///< by pick device number, the last traversal for it
+    /// One pick device's last traversal and what it was made from.
+    struct PickList {
+        DrawList list;
+        TraversalFilters filters;
+        std::uint64_t stamp = 0;  ///< Workstation::contentStamp() when traversed
+        bool made = false;
+    };
+    std::map<int, PickList> pickLists_;  ///< by pick device number
     std::uint64_t traversals_ = 0;
     const DrawList* lastPickList_ = nullptr;  ///< the list the last pick was measured on
     std::unique_ptr<WorkstationInput> input_;

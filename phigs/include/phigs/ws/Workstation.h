@@ -72,6 +72,9 @@ public:
     DrawList traverse(const TraversalFilters& filters);
     std::uint64_t regenerations() const { return regenerations_; }
     Traverser& traverser() { return traverser_; }
+    /// A stamp of what traversal reads: the tables, the posted roots and the version of every
+    /// structure in their networks. Equal stamps, equal pictures (for the same filters).
+    std::uint64_t contentStamp() const;
 
     // ---- tables (each change counts as a change of the picture)
     void setColourRepresentation(int index, const glm::dvec3& rgb);
@@ -134,7 +137,6 @@ public:
 
 private:
     void changed() { ++tables_.generation; }
-    std::uint64_t contentStamp() const;
     void regenerate(VisualState after);
     bool showsChangesAtOnce() const;
 
@@ -153,6 +155,9 @@ private:
     bool pictured_ = false;
     VisualState pictureState_ = VisualState::Correct;
     std::uint64_t regenerations_ = 0;
+    /// contentStamp() memo: the stamp while neither the store nor the tables changed.
+    mutable std::uint64_t stamp_ = 0, stampOperations_ = 0, stampTables_ = 0;
+    mutable bool stamped_ = false;
     WorkstationOutput* output_ = nullptr;
     std::unique_ptr<WorkstationOutput> ownedOutput_;
     std::string connection_;
