@@ -5,7 +5,7 @@
 #
 #   scripts/bench.sh [--build DIR] [--from DIR] [--tables-only] [NAME...]
 #
-# NAME: geom_kernel knot_removal curvemap render store pick acsynt_loft demo (default: all).
+# NAME: geom_kernel knot_removal curvemap render store pick blade acsynt_loft demo (default: all).
 # --build DIR    where the bench_* programs are (default build/bench; build them first with
 #                cmake --build build --target bench_NAME).
 # --from DIR     do not run: take DIR/NAME.json, or the last line of DIR/NAME.log or
@@ -16,7 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all=(geom_kernel knot_removal curvemap render store pick acsynt_loft demo)
+all=(geom_kernel knot_removal curvemap render store pick blade acsynt_loft demo)
 build=build/bench from="" tables_only=0 names=()
 while (($#)); do
   case $1 in
@@ -100,8 +100,9 @@ layout() {
     curvemap) echo "wave wing|tolerance_model_units=tolerance adaptive_ms adaptive_projections adaptive_max_deviation seed10_ms=10_per_segment_ms seed10_max_deviation=10_per_segment_deviation fixed_equal_per_segment=equal_deviation_per_segment fixed_equal_ms=equal_deviation_ms fixed_equal_projections=equal_deviation_projections|" ;;
     render) echo "-|triangles iso_line_segments store_frame_cpu_ms raw_frame_cpu_ms store_frame_over_raw_cpu=ratio_CPU store_frame_over_raw=ratio_wall unchanged_frame_uploaded_bytes=unchanged_bytes edit_uploaded_bytes edit_structure_buffer_bytes=structure_bytes edit_uploads_only_that_structure=only_that_structure|width_px height_px" ;;
     store) echo "e10k e100k e1M e4M|elements inserts_per_s traversal_ns_per_element=traversal_ns raw_visit_ns_per_element=plain_vectors_ns incremental_unchanged_ns_per_element=unchanged_ns peak_rss_bytes_per_element=peak_RSS_B resident_after_insert_bytes_per_element=store_RSS_B edit_to_drawlist_ms=edit_to_draw_list_ms edit_retraversed_elements=edit_retraversed edit_retessellated_surfaces=edit_retessellated first_traversal_cpu_s=first_traversal_s|" ;;
-    pick) echo "-|patches picks agree_with_brute_force=same_hit pick_median_us pick_p99_us brute_median_us brute_p99_us pick_with_mesh_median_us pick_with_mesh_p99_us|" ;;
     demo) echo "-|demo_cpu_s demo_peak_rss_mb demo_wall_s startup_cpu_s startup_peak_rss_mb demo_without_pdf_cpu_s=without_PDF_cpu_s demo_without_pdf_peak_rss_mb=without_PDF_rss_mb|runs" ;;
+    pick) echo "aircraft_1k aircraft_10k tubes|patches picks hits same_hit median_us=median_µs_CPU p99_us=p99_µs_CPU hit_median_us=hits_median_µs wall_median_us=median_µs_wall brute_median_us=every_item_median_µs brute_p99_us=every_item_p99_µs tree_build_ms|same_hit_as_brute_force session_pick_ms session_traversal_ms session_10k_pick_ms session_10k_traversal_ms cpu_seconds wall_seconds" ;;
+    blade) echo "-|blade_points blade_ms recursion_ms thesis_program_ms thesis_seconds largest_difference|cpu_seconds wall_seconds" ;;
     acsynt_loft) echo "transport fighter|load_loft_ms=load_and_loft_ms patches|" ;;
     *) echo "bench.sh: no table layout for $1" >&2; return 1 ;;
   esac

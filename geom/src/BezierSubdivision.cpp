@@ -50,12 +50,58 @@ bool locallyFlat(const std::vector<glm::dvec3>& net, std::size_t nu, std::size_t
     return true;
 }
 
+static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "rows of points are read as rows of doubles");
+
+/// Midpoint split along u of a net of nu rows of nv points (u slow): de Casteljau on whole rows,
+/// so each step is one pass over 3 nv contiguous doubles. `low` gets [0, 1/2], `high` [1/2, 1].
+void halveU(const std::vector<glm::dvec3>& net, std::size_t nu, std::size_t nv, std::vector<glm::dvec3>& low,
+            std::vector<glm::dvec3>& high, std::vector<glm::dvec3>& work) {
+    work = net;
+    low.resize(net.size());
+    high.resize(net.size());
+    const std::size_t width = 3 * nv, m = nu - 1;
+    double* w = &work[0].x;
+    std::copy_n(net.begin(), nv, low.begin());
+    std::copy_n(net.begin() + static_cast<std::ptrdiff_t>(m * nv), nv,
+                high.begin() + static_cast<std::ptrdiff_t>(m * nv));
+    for (std::size_t k = 1; k <= m; ++k) {
+        for (std::size_t i = 0; i + k <= m; ++i) {
+            double* a = w + i * width;
+            const double* b = a + width;
+            for (std::size_t j = 0; j < width; ++j) a[j] = 0.5 * (a[j] + b[j]);
+        }
+        std::copy_n(work.begin(), nv, low.begin() + static_cast<std::ptrdiff_t>(k * nv));
+        std::copy_n(work.begin() + static_cast<std::ptrdiff_t>((m - k) * nv), nv,
+                    high.begin() + static_cast<std::ptrdiff_t>((m - k) * nv));
+    }
+}
+
+/// Midpoint split along v: each row's nv points by de Casteljau.
+void halveV(const std::vector<glm::dvec3>& net, std::size_t nu, std::size_t nv, std::vector<glm::dvec3>& low,
+            std::vector<glm::dvec3>& high) {
+    low = net;
+    high.resize(net.size());
+    const std::size_t n = nv - 1;
+    for (std::size_t i = 0; i < nu; ++i) {
+        glm::dvec3* row = &low[i * nv];
+        glm::dvec3* right = &high[i * nv];
+        right[n] = row[n];
+        // In place: after step k, row[k..n] hold the k-th differences; row[k] is the low half's
+        // k-th point once shifted, so keep the low half's points in front as they are made.
+        for (std::size_t k = 1; k <= n; ++k) {
+            for (std::size_t j = n; j >= k; --j) row[j] = 0.5 * (row[j - 1] + row[j]);
+            right[n - k] = row[n];
+        }
+    }
+}
+
 struct Generator {
     std::size_t nu, nv;
     SubdivisionOptions options;
     int globalDepth = 0;
     SubdivisionStats stats;
     std::vector<SubdivisionLeaf> leaves;
+    std::vector<glm::dvec3> work;
 
     bool stop(const SubdivisionLeaf& node) const {
         switch (options.rule) {
@@ -81,9 +127,9 @@ struct Generator {
             return;
         }
         std::vector<glm::dvec3> low, high, q[4];
-        subdivideBezierNet<glm::dvec3>(node.net, nu, nv, 0.5, false, low, high);
-        subdivideBezierNet<glm::dvec3>(low, nu, nv, 0.5, true, q[0], q[2]);
-        subdivideBezierNet<glm::dvec3>(high, nu, nv, 0.5, true, q[1], q[3]);
+        halveU(node.net, nu, nv, low, high, work);
+        halveV(low, nu, nv, q[0], q[2]);
+        halveV(high, nu, nv, q[1], q[3]);
         stats.splits += 3;
         const double um = 0.5 * (node.u0 + node.u1), vm = 0.5 * (node.v0 + node.v1);
         const int d = node.depth + 1;
@@ -93,6 +139,48 @@ struct Generator {
         generate({std::move(q[3]), um, node.u1, vm, node.v1, d});
     }
 };
+
+/// Every leaf at one depth: the quadtree's leaves without its inner nodes. The u and v halvings
+/// commute (tensor product), so each u interval is halved once (2^depth - 1 u splits, not one
+/// per quadtree node), then each u strip along v. Leaves come in the quadtree's depth-first order.
+std::vector<SubdivisionLeaf> uniformLeaves(const std::vector<glm::dvec3>& net, std::size_t nu, std::size_t nv,
+                                           int depth) {
+    std::vector<std::vector<glm::dvec3>> strips{net}, next;
+    std::vector<glm::dvec3> work;
+    for (int d = 0; d < depth; ++d) {
+        next.assign(2 * strips.size(), {});
+        for (std::size_t s = 0; s < strips.size(); ++s)
+            halveU(strips[s], nu, nv, next[2 * s], next[2 * s + 1], work);
+        strips.swap(next);
+    }
+    const std::size_t side = std::size_t{1} << depth;
+    std::vector<SubdivisionLeaf> leaves(side * side);
+    const double step = 1.0 / static_cast<double>(side);
+    std::vector<std::vector<glm::dvec3>> pieces, halves;
+    for (std::size_t iu = 0; iu < side; ++iu) {
+        pieces.assign(1, std::move(strips[iu]));
+        for (int d = 0; d < depth; ++d) {
+            halves.assign(2 * pieces.size(), {});
+            for (std::size_t s = 0; s < pieces.size(); ++s)
+                halveV(pieces[s], nu, nv, halves[2 * s], halves[2 * s + 1]);
+            pieces.swap(halves);
+        }
+        for (std::size_t iv = 0; iv < side; ++iv) {
+            // Depth-first position: one quadrant digit (u bit + 2 v bit) per level, top first.
+            std::size_t at = 0;
+            for (int level = depth - 1; level >= 0; --level)
+                at = 4 * at + ((iu >> level) & 1) + 2 * ((iv >> level) & 1);
+            SubdivisionLeaf& leaf = leaves[at];
+            leaf.net = std::move(pieces[iv]);
+            leaf.u0 = static_cast<double>(iu) * step;
+            leaf.u1 = static_cast<double>(iu + 1) * step;
+            leaf.v0 = static_cast<double>(iv) * step;
+            leaf.v1 = static_cast<double>(iv + 1) * step;
+            leaf.depth = depth;
+        }
+    }
+    return leaves;
+}
 
 }  // namespace
 
@@ -121,7 +209,18 @@ std::vector<SubdivisionLeaf> subdivideAdaptive(std::span<const glm::dvec3> net, 
                 ? std::min(options.depth, static_cast<int>(std::ceil(std::log2(m / options.tolerance))))
                 : 0;
     }
-    g.generate(std::move(root));
+    const int uniform = options.rule == StoppingRule::FixedDepth    ? options.depth
+                        : options.rule == StoppingRule::GlobalError ? g.globalDepth
+                                                                    : -1;
+    if (uniform >= 0) {
+        g.leaves = uniformLeaves(root.net, countU, countV, uniform);
+        // The quadtree the recursion walks: (4^d - 1) / 3 inner nodes.
+        const std::size_t inner = (g.leaves.size() - 1) / 3;
+        g.stats.splits = 3 * inner;
+        g.stats.gens = 1 + 4 * inner;
+    } else {
+        g.generate(std::move(root));
+    }
     g.stats.leaves = g.leaves.size();
     g.stats.points = g.leaves.size() * countU * countV;
     g.stats.minDepth = g.leaves.front().depth;

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 using namespace geom;
 
@@ -101,4 +102,24 @@ TEST_CASE("adaptive subdivision keeps the invariants and the surface", "[geom][m
     }
     REQUIRE_THROWS_WITH(subdivideAdaptive(net, 5, 5, {}), Catch::Contains("points"));
     REQUIRE_THROWS_AS(subdivideAdaptive(net, nu, nv, {StoppingRule::LocalFlatness, -1.0, 4}), GeometryError);
+}
+
+TEST_CASE("fixed-depth subdivision gives the quadtree's leaves in its order", "[geom][molt]") {
+    // The uniform path (u halvings shared by each u interval) against the recursion, which a
+    // tolerance no net meets runs down to the same depth cap.
+    std::mt19937 rng(4);
+    for (const auto& [nu, nv, depth] :
+         {std::tuple<std::size_t, std::size_t, int>{4, 4, 2}, {9, 5, 3}, {30, 11, 3}, {7, 2, 4}}) {
+        const auto net = bladeNet(rng, nu, nv);
+        const auto uniform = subdivideAdaptive(net, nu, nv, {StoppingRule::FixedDepth, 0.0, depth});
+        const auto recursive = subdivideAdaptive(net, nu, nv, {StoppingRule::LocalFlatness, 1e-300, depth});
+        REQUIRE(uniform.size() == recursive.size());
+        for (std::size_t i = 0; i < uniform.size(); ++i) {
+            REQUIRE(uniform[i].u0 == recursive[i].u0);
+            REQUIRE(uniform[i].v1 == recursive[i].v1);
+            REQUIRE(uniform[i].depth == depth);
+            for (std::size_t k = 0; k < net.size(); ++k)
+                REQUIRE(glm::length(uniform[i].net[k] - recursive[i].net[k]) < 1e-13);
+        }
+    }
 }

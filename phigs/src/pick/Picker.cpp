@@ -39,6 +39,46 @@ glm::dvec3 toWorld(const DrawItem& item, const glm::dvec3& modelling) {
     return glm::dvec3(h) / h.w;
 }
 
+/// Whether the infinite line origin + t direction meets the box [lo, hi] (slabs).
+bool lineMeetsBox(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& lo,
+                  const glm::dvec3& hi) {
+    double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (direction[a] == 0.0) {
+            if (origin[a] < lo[a] || origin[a] > hi[a]) return false;
+            continue;
+        }
+        double ta = (lo[a] - origin[a]) / direction[a], tb = (hi[a] - origin[a]) / direction[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    return !std::isnan(t0) && !std::isnan(t1);
+}
+
+/// Whether every control point lies strictly on one side of a plane through the line: then the
+/// line misses the net's convex hull and the surface in it (weights are positive).
+bool lineMissesHull(const std::vector<glm::dvec3>& points, const glm::dvec3& origin,
+                    const glm::dvec3& direction) {
+    const glm::dvec3 d = glm::normalize(direction);
+    const glm::dvec3 axis = std::abs(d.x) < 0.5 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 n1 = glm::normalize(glm::cross(d, axis)), n2 = glm::cross(d, n1);
+    double lo1 = std::numeric_limits<double>::infinity(), hi1 = -lo1, lo2 = lo1, hi2 = -lo1, reach = 0.0;
+    for (const glm::dvec3& p : points) {
+        const glm::dvec3 e = p - origin;
+        const double a = glm::dot(n1, e), b = glm::dot(n2, e);
+        lo1 = std::min(lo1, a);
+        hi1 = std::max(hi1, a);
+        lo2 = std::min(lo2, b);
+        hi2 = std::max(hi2, b);
+        reach = std::max(reach, std::abs(e.x) + std::abs(e.y) + std::abs(e.z));
+    }
+    // Rounding: a hit point a few ulps outside the hull must not be lost.
+    const double tolerance = 1e-9 * reach;
+    return lo1 > tolerance || hi1 < -tolerance || lo2 > tolerance || hi2 < -tolerance;
+}
+
 /// The aperture: a square of half-size `half` around `centre` in NPC x, y.
 struct Aperture {
     glm::dvec2 centre{0.0};
@@ -228,6 +268,7 @@ Picker::~Picker() = default;
 void Picker::clearCache() const {
     intersectors_.clear();
     bounds_.clear();
+    tree_.clear();
 }
 
 void Picker::prune(const DrawList& list) const {
@@ -251,20 +292,25 @@ const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshDat
 
 std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView& view,
                                            const std::shared_ptr<const geom::Surface>& surface,
-                                           glm::dvec2 npc) const {
+                                           glm::dvec2 npc, const glm::dmat4& m, const glm::dmat4& inverse,
+                                           const PickItemBounds* bounds) const {
+    const glm::dvec4 front = inverse * glm::dvec4(npc, 1.0, 1.0);
+    const glm::dvec4 back = inverse * glm::dvec4(npc, 0.0, 1.0);
+    if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
+    const glm::dvec3 origin = glm::dvec3(front) / front.w;
+    const glm::dvec3 direction = glm::dvec3(back) / back.w - origin;
+    // The surface lies in its control net's box: a line that misses the box misses the surface.
+    if (bounds && bounds->surfaceLo.x <= bounds->surfaceHi.x &&
+        !lineMeetsBox(origin, direction, bounds->surfaceLo, bounds->surfaceHi))
+        return std::nullopt;
+    if (bounds && glm::dot(direction, direction) > 0.0 && lineMissesHull(surface->points, origin, direction))
+        return std::nullopt;
     auto it = intersectors_.find(surface.get());
     if (it == intersectors_.end())
         it = intersectors_
                  .emplace(surface.get(),
                           CachedSurface{surface, std::make_unique<geom::SurfaceIntersector>(*surface)})
                  .first;
-    const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform;
-    const glm::dmat4 inverse = glm::inverse(m);
-    const glm::dvec4 front = inverse * glm::dvec4(npc, 1.0, 1.0);
-    const glm::dvec4 back = inverse * glm::dvec4(npc, 0.0, 1.0);
-    if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
-    const glm::dvec3 origin = glm::dvec3(front) / front.w;
-    const glm::dvec3 direction = glm::dvec3(back) / back.w - origin;
     for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
         const Projected p = project(m, h.point);
         if (!p.valid || !insideClip(view, p.npc) || !insideModelClip(item, toWorld(item, h.point))) continue;
@@ -275,7 +321,8 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
 }
 
 std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
-                                    const WorkstationMapping& mapping, SurfaceTest surfaceTest) const {
+                                    const WorkstationMapping& mapping, SurfaceTest surfaceTest,
+                                    const PickItemBounds* bounds) const {
     const DrawItem& item = list.items[index];
     if (!item.pickable) return std::nullopt;
     const auto* drawMesh = std::get_if<DrawMesh>(&item.primitive);
@@ -287,7 +334,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
     if (view.clipXY && (npc.x < view.clipMin.x || npc.x > view.clipMax.x || npc.y < view.clipMin.y ||
                         npc.y > view.clipMax.y))
         return std::nullopt;
-    const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform;
+    const glm::dmat4 m = bounds ? bounds->toNpc : view.mapping * view.orientation * item.modelTransform;
     const Aperture ap{npc, aperture};
 
     std::optional<PickHit> hit;
@@ -335,7 +382,8 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 z = regionHit(ap, box, true, true);
             } else if constexpr (std::is_same_v<T, DrawMesh>) {
                 if (p.surface && surfaceTest == SurfaceTest::Exact) {
-                    hit = testSurface(item, view, p.surface, npc);
+                    hit = testSurface(item, view, p.surface, npc, m,
+                                      bounds ? bounds->fromNpc : glm::inverse(m), bounds);
                     return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {
@@ -394,13 +442,27 @@ std::vector<PickHit> Picker::hits(const DrawList& list, const WorkstationMapping
     if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
         npc.y > list.windowMax.y)
         return out;
+    if (accelerated_) tree_.update(list);  // first: it lets go of surfaces the list dropped
     prune(list);
-    for (std::size_t i = 0; i < list.items.size(); ++i)
-        if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact)) out.push_back(std::move(*h));
-    if (out.empty())
-        for (std::size_t i = 0; i < list.items.size(); ++i)
-            if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Tessellation))
+    if (accelerated_) {
+        candidates_.clear();
+        tree_.query(npc, aperture, candidates_);
+        for (std::size_t i : candidates_)
+            if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact, &tree_.item(i)))
                 out.push_back(std::move(*h));
+        if (out.empty())
+            for (std::size_t i : candidates_)
+                if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Tessellation, &tree_.item(i)))
+                    out.push_back(std::move(*h));
+    } else {
+        for (std::size_t i = 0; i < list.items.size(); ++i)
+            if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Exact))
+                out.push_back(std::move(*h));
+        if (out.empty())
+            for (std::size_t i = 0; i < list.items.size(); ++i)
+                if (auto h = test(list, i, npc, aperture, mapping, SurfaceTest::Tessellation))
+                    out.push_back(std::move(*h));
+    }
     std::stable_sort(out.begin(), out.end(), [](const PickHit& a, const PickHit& b) {
         if (a.depth != b.depth) return a.depth > b.depth;
         return a.item > b.item;
@@ -414,9 +476,41 @@ std::optional<PickHit> Picker::nearest(const DrawList& list, glm::dvec2 npc, dou
 
 std::optional<PickHit> Picker::nearest(const DrawList& list, const WorkstationMapping& mapping,
                                        glm::dvec2 npc, double aperture) const {
+    if (accelerated_) return nearestAccelerated(list, mapping, npc, aperture);
     auto all = hits(list, mapping, npc, aperture);
     if (all.empty()) return std::nullopt;
     return all.front();
+}
+
+std::optional<PickHit> Picker::nearestAccelerated(const DrawList& list, const WorkstationMapping& mapping,
+                                                  glm::dvec2 npc, double aperture) const {
+    if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
+        npc.y > list.windowMax.y)
+        return std::nullopt;
+    tree_.update(list);  // first: it lets go of surfaces the list dropped
+    prune(list);
+    candidates_.clear();
+    tree_.query(npc, aperture, candidates_);
+    // Nearest box first (NPC z grows toward the eye); a hit lies in its item's box, so once the
+    // best hit is nearer than a box's front no later candidate can win. Ties go to the item
+    // drawn later, as in hits().
+    std::sort(candidates_.begin(), candidates_.end(), [&](std::size_t a, std::size_t b) {
+        const double za = tree_.item(a).hi.z, zb = tree_.item(b).hi.z;
+        return za != zb ? za > zb : a > b;
+    });
+    std::optional<PickHit> best;
+    for (SurfaceTest pass : {SurfaceTest::Exact, SurfaceTest::Tessellation}) {
+        for (std::size_t i : candidates_) {
+            const PickItemBounds& bounds = tree_.item(i);
+            if (best && bounds.hi.z < best->depth) break;
+            auto h = test(list, i, npc, aperture, mapping, pass, &bounds);
+            if (h && (!best || h->depth > best->depth || (h->depth == best->depth && h->item > best->item)))
+                best = std::move(h);
+        }
+        // Tessellations count only when nothing at all was hit exactly.
+        if (best) break;
+    }
+    return best;
 }
 
 PickMeasure Picker::pick(const DrawList& list, glm::dvec2 npc, const PickOptions& options) const {

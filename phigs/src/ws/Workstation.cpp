@@ -109,10 +109,18 @@ bool Workstation::showsChangesAtOnce() const {
 }
 
 std::uint64_t Workstation::contentStamp() const {
+    // Every edit of the store counts an operation and every table or posting change a table
+    // generation: with neither, the networks and their versions are those of the last stamp.
+    if (stamped_ && stampOperations_ == store_.operationCount() && stampTables_ == tables_.generation)
+        return stamp_;
     std::uint64_t hash = 1469598103934665603ull;
     auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
     mix(tables_.generation);
     for (const PostedStructure& p : posted_) mix(store_.networkStamp(p.structureId));
+    stamp_ = hash;
+    stampOperations_ = store_.operationCount();
+    stampTables_ = tables_.generation;
+    stamped_ = true;
     return hash;
 }
 
@@ -309,15 +317,35 @@ void Workstation::echoMoved() {
     if (output_ && echoState() != shownEcho_) present();
 }
 
+namespace {
+
+bool sameFilter(const std::optional<NameSetFilter>& a, const std::optional<NameSetFilter>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->inclusion == b->inclusion && a->exclusion == b->exclusion);
+}
+
+bool sameFilters(const TraversalFilters& a, const TraversalFilters& b) {
+    return sameFilter(a.pick, b.pick) && sameFilter(a.highlight, b.highlight) &&
+           sameFilter(a.invisibility, b.invisibility) && a.initialNames == b.initialNames;
+}
+
+}  // namespace
+
 const DrawList& Workstation::pickList(const InputDevice& device) {
     TraversalFilters filters = filters_;
     if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
-    DrawList& list = pickLists_[device.number];
-    lastPickList_ = &list;
-    list = traverse(filters);
+    PickList& cached = pickLists_[device.number];
+    lastPickList_ = &cached.list;
+    const std::uint64_t stamp = contentStamp();
+    // Nothing the traversal reads changed: the list, its generation and the Picker's tree stay.
+    if (cached.made && cached.stamp == stamp && sameFilters(cached.filters, filters)) return cached.list;
+    cached.list = traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
-    list.generation = ++pickTraversals_;
-    return list;
+    cached.list.generation = ++pickTraversals_;
+    cached.filters = std::move(filters);
+    cached.stamp = stamp;
+    cached.made = true;
+    return cached.list;
 }
 
 std::vector<std::vector<DrawPathLevel>> Workstation::lastPickEcho() const {

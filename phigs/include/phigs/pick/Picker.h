@@ -1,6 +1,7 @@
 #pragma once
 
 #include "phigs/input/InputTypes.h"
+#include "phigs/pick/PickBoundsTree.h"
 #include "phigs/traverse/DrawList.h"
 #include "phigs/traverse/WorkstationMapping.h"
 
@@ -8,9 +9,9 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 namespace geom {
@@ -33,9 +34,11 @@ struct PickHit {
     std::optional<SurfacePickDetail> surface;  ///< exact hit on a NURBS surface (modelling coords)
 };
 
-/// The pick traversal over a draw list: tests every pickable item against the aperture in
-/// NPC, intersects NURBS surfaces exactly, orders the hits nearest first and builds the pick
-/// path. Keeps one intersector per surface, so repeated picks on the same list are cheap.
+/// The pick traversal over a draw list: tests the pickable items against the aperture in NPC,
+/// intersects NURBS surfaces exactly, orders the hits nearest first and builds the pick path.
+/// Only items whose NPC box (PickBoundsTree, kept per draw list generation) meets the aperture
+/// are tested, nearest boxes first; the answers are those of testing every item. Keeps one
+/// intersector per surface, so repeated picks on the same list are cheap.
 class Picker {
 public:
     Picker();
@@ -62,32 +65,48 @@ public:
     /// only the cache still holds are dropped anyway when a list of a new generation is picked.
     void clearCache() const;
     std::size_t cachedSurfaces() const { return intersectors_.size(); }
+    /// Off: every item is tested at every pick, no tree (the reference the tree must agree with).
+    void setAccelerated(bool accelerated) { accelerated_ = accelerated; }
+    bool accelerated() const { return accelerated_; }
+    /// The boxes and tree of the last list picked on.
+    const PickBoundsTree& boundsTree() const { return tree_; }
 
 private:
     /// How an item with an exact surface is tested: by the line through the aperture centre, or
     /// (only when nothing at all was hit that way) by its tessellation under the aperture.
     enum class SurfaceTest { Exact, Tessellation };
     std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
-                                const WorkstationMapping& mapping, SurfaceTest surfaceTest) const;
+                                const WorkstationMapping& mapping, SurfaceTest surfaceTest,
+                                const PickItemBounds* bounds = nullptr) const;
+    /// The exact line through `npc` against the surface; `toNpc`, `fromNpc`: the item's
+    /// transform to NPC and its inverse.
     std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
-                                       const std::shared_ptr<const geom::Surface>& surface,
-                                       glm::dvec2 npc) const;
+                                       const std::shared_ptr<const geom::Surface>& surface, glm::dvec2 npc,
+                                       const glm::dmat4& toNpc, const glm::dmat4& fromNpc,
+                                       const PickItemBounds* bounds) const;
+    /// nearest() on the tree: candidates by their boxes' nearest depth, stopping once no box can
+    /// hold a nearer hit.
+    std::optional<PickHit> nearestAccelerated(const DrawList& list, const WorkstationMapping& mapping,
+                                              glm::dvec2 npc, double aperture) const;
 
     struct CachedSurface {
         std::shared_ptr<const geom::Surface> surface;  ///< keeps the key alive
         std::unique_ptr<geom::SurfaceIntersector> intersector;
     };
-    mutable std::map<const geom::Surface*, CachedSurface> intersectors_;
+    mutable std::unordered_map<const geom::Surface*, CachedSurface> intersectors_;
     struct CachedBounds {
         std::shared_ptr<const MeshData> mesh;  ///< keeps the key alive
         glm::dvec3 min{0.0}, max{0.0};
     };
     /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
     const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
-    mutable std::map<const MeshData*, CachedBounds> bounds_;
+    mutable std::unordered_map<const MeshData*, CachedBounds> bounds_;
     /// Drops cached entries nobody else holds any more, once per new draw list generation.
     void prune(const DrawList& list) const;
     mutable std::uint64_t generation_ = ~std::uint64_t{0};
+    bool accelerated_ = true;
+    mutable PickBoundsTree tree_;
+    mutable std::vector<std::size_t> candidates_;
 };
 
 /// The PHIGS pick path of a draw item's source: top first or bottom first, cut to `depth`

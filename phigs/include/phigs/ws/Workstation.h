@@ -79,6 +79,9 @@ public:
     DrawList traverse(const TraversalFilters& filters);
     std::uint64_t regenerations() const { return regenerations_; }
     Traverser& traverser() { return traverser_; }
+    /// A stamp of what traversal reads: the tables, the posted roots and the version of every
+    /// structure in their networks. Equal stamps, equal pictures (for the same filters).
+    std::uint64_t contentStamp() const;
 
     // ---- tables (each change counts as a change of the picture)
     void setColourRepresentation(int index, const glm::dvec3& rgb);
@@ -154,6 +157,9 @@ public:
     /// The paths of the items the last pick's echo highlights (empty when it hit nothing or the
     /// device's echo is off): hand them to setEcho().
     std::vector<std::vector<DrawPathLevel>> lastPickEcho() const;
+    /// Pick traversals made so far: a pick on an unchanged picture with the same filters reuses
+    /// the device's last traversal (and the Picker's bounds tree over it).
+    std::uint64_t pickTraversals() const { return pickTraversals_; }
     /// What the echo areas show now: each active string device (echo on, prompt/echo type 1,
     /// an echo area at least 8 pixels high and as wide; in SAMPLE or EVENT mode or requested
     /// now) that the operator is typing into or has just cancelled. The output draws it over
@@ -167,7 +173,6 @@ public:
 
 private:
     void changed() { ++tables_.generation; }
-    std::uint64_t contentStamp() const;
     void regenerate(VisualState after);
     bool showsChangesAtOnce() const;
 
@@ -186,6 +191,9 @@ private:
     bool pictured_ = false;
     VisualState pictureState_ = VisualState::Correct;
     std::uint64_t regenerations_ = 0;
+    /// contentStamp() memo: the stamp while neither the store nor the tables changed.
+    mutable std::uint64_t stamp_ = 0, stampOperations_ = 0, stampTables_ = 0;
+    mutable bool stamped_ = false;
     WorkstationOutput* output_ = nullptr;
     std::unique_ptr<WorkstationOutput> ownedOutput_;
     std::string connection_;
@@ -197,7 +205,14 @@ private:
     void echoMoved();
 
     DrawListMeasurer measurer_;
-    std::map<int, DrawList> pickLists_;  ///< by pick device number, the last traversal for it
+    /// One pick device's last traversal and what it was made from.
+    struct PickList {
+        DrawList list;
+        TraversalFilters filters;
+        std::uint64_t stamp = 0;  ///< contentStamp() when traversed
+        bool made = false;
+    };
+    std::map<int, PickList> pickLists_;  ///< by pick device number
     std::uint64_t pickTraversals_ = 0;
     const DrawList* lastPickList_ = nullptr;   ///< the list the last pick was measured on
     std::unique_ptr<WorkstationInput> input_;  ///< after the measurer it measures with
