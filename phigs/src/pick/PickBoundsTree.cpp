@@ -48,7 +48,7 @@ void PickBoundsTree::clear() {
 }
 
 bool PickBoundsTree::unchanged(const DrawList& list) const {
-    return list.generation != 0 && &list == list_ && list.items.data() == data_ &&
+    return list.generation != 0 && &list == list_ && list.items.segments().data() == data_ &&
            list.generation == generation_ && list.items.size() == items_.size();
 }
 
@@ -205,7 +205,7 @@ void PickBoundsTree::update(const DrawList& list) {
     // Boxes of geometry this list no longer holds go (and with them the last hold on it).
     std::erase_if(boxes_, [&](const auto& e) { return e.second.pass != pass_; });
     list_ = &list;
-    data_ = list.items.data();
+    data_ = list.items.segments().data();
     generation_ = list.generation;
 }
 

@@ -461,7 +461,7 @@ void Session::pickSurface(const std::vector<std::string>& a) {
     }
     const glm::dvec2 pixel = pixelOf(geom::evaluate(comp->surface, *u, *w), int(*view));
     picture();
-    PickMeasure measure = interaction_->measurer().pick(pixel, input_->device(InputClass::Pick, 1));
+    PickMeasure measure = workstation_->measurer().pick(pixel, input_->device(InputClass::Pick, 1));
     const auto picked = ModelPicture::fromPath(measure.path);
     const int index = int(comp - model.components.begin());
     if (measure.status != InputStatus::Ok || !picked || picked->component != index ||

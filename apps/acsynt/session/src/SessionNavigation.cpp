@@ -119,7 +119,7 @@ void Session::undoRedoKey(bool back) {
 }
 
 bool Session::typing() const {
-    return awaiting_ != Awaiting::Nothing || !typed_.empty();
+    return awaiting_ != Awaiting::Nothing || !source_.stringEcho().text.empty();
 }
 
 void Session::toggleHelp() {

@@ -99,7 +99,7 @@ private:
     std::vector<std::size_t> unbounded_;
     std::unordered_map<const void*, CachedBox> boxes_;
     const DrawList* list_ = nullptr;
-    const DrawItem* data_ = nullptr;
+    const void* data_ = nullptr;  ///< the list's segment table when the tree was made
     std::uint64_t generation_ = 0;
     std::uint64_t pass_ = 0;  ///< update() calls that looked at the items
     Stats stats_;
