@@ -29,6 +29,16 @@ void chooseMenu(WindowSession& w, const std::string& item) {
     w.click((a + b) / 2.0);
 }
 
+/// FILE > READ_MODEL with the transport's file name typed into the window.
+void readTransport(WindowSession& w) {
+    chooseMenu(w, "FILE");
+    chooseMenu(w, "READ_MODEL");
+    w.moveTo({300, 300});  // the keyboard goes to the window under the pointer
+    w.type("transport.acm");
+    w.key(XK_Return);
+    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+}
+
 /// Surface parameters near (u, w) whose point lies exactly on pixel `pixel` of view 1 (Newton
 /// on the pixel map), so a click there, which X makes at whole pixels, has a known answer.
 glm::dvec2 parametersAtPixel(acsynt::Session& session, const geom::Surface& surface, glm::dvec2 uw,
@@ -109,12 +119,7 @@ TEST_CASE("window session: typed text echoes on the message line, Backspace edit
 
 TEST_CASE("window session: after resizes, menu rows, surface picks and slider drags follow the window") {
     WindowSession w(1024, 768);
-    chooseMenu(w, "FILE");
-    chooseMenu(w, "READ_MODEL");
-    w.moveTo({300, 300});
-    w.type("transport.acm");
-    w.key(XK_Return);
-    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+    readTransport(w);
     chooseMenu(w, "RETURN");
     REQUIRE(w.session.menuTitle() == "MAIN");
 
@@ -185,12 +190,7 @@ TEST_CASE("window session: after resizes, menu rows, surface picks and slider dr
 
 TEST_CASE("window session: an idle window blocks on events and draws nothing") {
     WindowSession w(1024, 768);
-    chooseMenu(w, "FILE");
-    chooseMenu(w, "READ_MODEL");
-    w.moveTo({300, 300});
-    w.type("transport.acm");
-    w.key(XK_Return);
-    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+    readTransport(w);
     w.settle(500ms);
     const std::uint64_t frames = w.presentation.frames();
     const double cpu0 = processSeconds();
@@ -205,12 +205,7 @@ TEST_CASE("window session: an idle window blocks on events and draws nothing") {
 
 TEST_CASE("window session: a drag rotates the 3D view, the wheel zooms, F1 shows help, Ctrl+Z undoes") {
     WindowSession w(1024, 768);
-    chooseMenu(w, "FILE");
-    chooseMenu(w, "READ_MODEL");
-    w.moveTo({300, 300});
-    w.type("transport.acm");
-    w.key(XK_Return);
-    REQUIRE(w.stepUntil([&] { return w.session.models().size() == 1; }));
+    readTransport(w);
     chooseMenu(w, "RETURN");
     w.settle(100ms);
     const phigs::Image before = w.display.capture();
