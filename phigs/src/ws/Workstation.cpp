@@ -317,20 +317,6 @@ void Workstation::echoMoved() {
     if (output_ && echoState() != shownEcho_) present();
 }
 
-namespace {
-
-bool sameFilter(const std::optional<NameSetFilter>& a, const std::optional<NameSetFilter>& b) {
-    if (a.has_value() != b.has_value()) return false;
-    return !a || (a->inclusion == b->inclusion && a->exclusion == b->exclusion);
-}
-
-bool sameFilters(const TraversalFilters& a, const TraversalFilters& b) {
-    return sameFilter(a.pick, b.pick) && sameFilter(a.highlight, b.highlight) &&
-           sameFilter(a.invisibility, b.invisibility) && a.initialNames == b.initialNames;
-}
-
-}  // namespace
-
 const DrawList& Workstation::pickList(const InputDevice& device) {
     TraversalFilters filters = filters_;
     if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
@@ -338,7 +324,7 @@ const DrawList& Workstation::pickList(const InputDevice& device) {
     lastPickList_ = &cached.list;
     const std::uint64_t stamp = contentStamp();
     // Nothing the traversal reads changed: the list, its generation and the Picker's tree stay.
-    if (cached.made && cached.stamp == stamp && sameFilters(cached.filters, filters)) return cached.list;
+    if (cached.made && cached.stamp == stamp && cached.filters == filters) return cached.list;
     cached.list = traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
     cached.list.generation = ++pickTraversals_;

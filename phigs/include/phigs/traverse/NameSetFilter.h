@@ -17,6 +17,7 @@ struct NameSetFilter {
         };
         return meets(inclusion) && !meets(exclusion);
     }
+    bool operator==(const NameSetFilter&) const = default;
 };
 
 }  // namespace phigs

@@ -21,6 +21,7 @@ struct TraversalFilters {
     std::optional<NameSetFilter> highlight;
     std::optional<NameSetFilter> invisibility;
     std::set<int> initialNames;  ///< the name set at the start of every posted root
+    bool operator==(const TraversalFilters&) const = default;
 };
 
 /// Walks posted structure networks depth first and produces the draw list: attributes pushed
