@@ -181,6 +181,7 @@ struct Scene {
                          {phigs::viewIndex(1), phigs::executeStructure(structures::modelRoot)});
         ws = &phigs.openWorkstation(1, phigs::WorkstationType::Window);
         ws->setPickFilter(phigs::NameSetFilter{{structures::pickableName, structures::buttonName}, {}});
+        ws->input().setPickFilter(1, {structures::pickableName, structures::buttonName}, {});
         const phigs::ViewRepresentation view = sessionView(model);
         ws->setViewRepresentation(1, view);
         ws->postStructure(structures::geometry, 0.5);

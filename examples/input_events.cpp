@@ -56,11 +56,12 @@ int main(int argc, char** argv) {
     try {
         phigs::Phigs phigs;
         phigs.open();
-        // Something to pick: a square with pick id 3 in the middle of the picture.
+        // Something to pick: a square with pick id 3 and name 1 in the middle of the picture.
         phigs::StructureStore& store = phigs.store();
         store.openStructure(1);
         store.insert(phigs::IndexAttribute{phigs::ElementType::InteriorStyle, 1});
         store.insert(phigs::pickId(3));
+        store.insert(phigs::addNamesToSet({1}));
         store.insert(phigs::fillArea3({{0.4, 0.4, 0}, {0.6, 0.4, 0}, {0.6, 0.6, 0}, {0.4, 0.6, 0}}));
         store.closeStructure();
         phigs::Workstation& ws = phigs.openWorkstation(1, phigs::WorkstationType::OffscreenImage);
@@ -71,6 +72,8 @@ int main(int argc, char** argv) {
         phigs::InputQueue queue;
         ws.connectInput(script, queue);
         phigs::WorkstationInput& input = ws.input();
+        // A pick filter starts empty (ISO 9592), so nothing is pickable until it includes a name.
+        input.setPickFilter(1, {1}, {});
 
         // The choice device names its alternatives; the valuator ranges over [0, 10].
         phigs::DeviceInitialisation choice;

@@ -30,11 +30,14 @@ int main(int argc, char** argv) {
         const geom::Surface patch(3, 3, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, 4, 4, points);
 
         // Structure 1 executes structure 2 (pick id 6); structure 2 holds the patch (pick id 7).
+        // The patch inherits name 1, which pick device 1's filter includes below: a pick filter
+        // starts empty (ISO 9592), and then nothing is pickable.
         phigs::StructureStore& store = phigs.store();
         store.openStructure(1);
         store.insert(phigs::viewIndex(1));         // element 1
         store.insert(phigs::pickId(6));            // element 2
-        store.insert(phigs::executeStructure(2));  // element 3
+        store.insert(phigs::addNamesToSet({1}));   // element 3
+        store.insert(phigs::executeStructure(2));  // element 4
         store.closeStructure();
         store.openStructure(2);
         store.insert(phigs::IndexAttribute{phigs::ElementType::InteriorStyle, 1});  // 1: solid
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
         phigs::ScriptInputSource script(line, "clicks");
         phigs::InputQueue queue;
         ws.connectInput(script, queue);
+        ws.input().setPickFilter(1, {1}, {});
         auto [status, measure] = ws.input().request(phigs::InputClass::Pick, 1);
         const auto& pick = std::get<phigs::PickMeasure>(measure);
         if (status != phigs::InputStatus::Ok || pick.status != phigs::InputStatus::Ok) {

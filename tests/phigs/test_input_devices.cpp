@@ -132,7 +132,9 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     p.pathOrder = PathOrder::BottomFirst;
     p.pickAperture = 0.05;
     r.input.initialise(InputClass::Pick, 1, p);
-    CHECK_FALSE(r.input.device(InputClass::Pick, 1).pickFilterSet);
+    // ISO 9592: a pick filter starts with empty inclusion and exclusion sets.
+    CHECK(r.input.device(InputClass::Pick, 1).pickInclusion.empty());
+    CHECK(r.input.device(InputClass::Pick, 1).pickExclusion.empty());
     r.input.setPickFilter(1, {1, 2}, {3});
     r.input.setPickPathDepth(1, 2);
     r.input.setMode(InputClass::Pick, 1, OperatingMode::Sample, EchoSwitch::NoEcho);
@@ -143,7 +145,6 @@ TEST_CASE("input devices: the device state inquiry reports mode, echo, setup and
     CHECK(d.setup.pickAperture == 0.05);
     CHECK(d.pickInclusion == std::set<int>{1, 2});
     CHECK(d.pickExclusion == std::set<int>{3});
-    CHECK(d.pickFilterSet);
     CHECK(d.pickPathDepth == 2);
     CHECK(errorOf([&] { r.input.setPickPathDepth(1, -1); }) == 207);
 }

@@ -213,11 +213,13 @@ TEST_CASE("pick tree: a workstation's pick device traverses again only when some
     auto& store = phigs.store();
     store.openStructure(1);
     store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
+    store.insert(addNamesToSet({1}));
     store.insert(pickId(3));
     store.insert(fillArea3({{0.1, 0.1, 0}, {0.5, 0.1, 0}, {0.5, 0.5, 0}, {0.1, 0.5, 0}}));
     store.closeStructure();
     Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
     ws.postStructure(1, 0.5);
+    ws.input().setPickFilter(1, {1}, {});
     // NPC (0.25, 0.25) and (0.75, 0.75) on the 1024 x 768 display (768 pixels per NPC unit).
     ScriptInputSource script("pick 192 576\npick 192 576\npick 576 192\npick 576 192\n", "picks");
     InputQueue queue;

@@ -26,6 +26,7 @@ struct Rig {
         phigs.open();
         auto& store = phigs.store();
         store.openStructure(1);
+        store.insert(addNamesToSet({1}));
         store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
         store.insert(viewIndex(1));
         store.insert(pickId(3));
@@ -40,6 +41,7 @@ struct Rig {
         left.clipMax = {0.5, 1.0, 1.0};
         ws->setViewRepresentation(1, left);
         ws->postStructure(1, 0.5);
+        ws->input().setPickFilter(1, {1}, {});
     }
 };
 
@@ -72,6 +74,34 @@ TEST_CASE("workstation input: the locator honours the view table's input priorit
     CHECK(a.position.x == Approx(0.9));
 }
 
+TEST_CASE("workstation input: a pick filter starts empty, so nothing is pickable (ISO 9592)",
+          "[input][wiring]") {
+    Phigs phigs;
+    phigs.open();
+    auto& store = phigs.store();
+    store.openStructure(1);
+    store.insert(IndexAttribute{ElementType::InteriorStyle, 1});  // solid: picked inside
+    store.insert(addNamesToSet({1, 2}));
+    store.insert(pickId(3));
+    store.insert(fillArea3({{0.1, 0.1, 0}, {0.5, 0.1, 0}, {0.5, 0.5, 0}, {0.1, 0.5, 0}}));
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    ws.postStructure(1, 0.5);
+    // NPC (0.25, 0.25) on the 1024 x 768 display, four times.
+    ScriptInputSource script("pick 192 576\npick 192 576\npick 192 576\npick 192 576\n", "picks");
+    InputQueue queue;
+    ws.connectInput(script, queue);
+    auto picked = [&] { return ws.input().request(InputClass::Pick, 1).first == InputStatus::Ok; };
+    CHECK(ws.input().device(InputClass::Pick, 1).pickInclusion.empty());
+    CHECK_FALSE(picked());  // named, under the cursor, but the inclusion set is empty
+    ws.input().setPickFilter(1, {2}, {});
+    CHECK(picked());
+    ws.input().setPickFilter(1, {2}, {1});  // the exclusion set wins
+    CHECK_FALSE(picked());
+    ws.input().setPickFilter(1, {}, {});
+    CHECK_FALSE(picked());
+}
+
 TEST_CASE("workstation input: picks see the current structures and the surface size", "[input][wiring]") {
     Rig rig;
     // Square 1 is drawn at NPC (0.05 .. 0.25); square 2 at NPC (0.7 .. 0.9) x (0.1 .. 0.3).
@@ -83,12 +113,12 @@ TEST_CASE("workstation input: picks see the current structures and the surface s
         auto [status, measure] = rig.ws->input().request(InputClass::Pick, 1);
         return status == InputStatus::Ok ? std::get<PickMeasure>(measure).path : std::vector<PickPathItem>{};
     };
-    CHECK(pick() == std::vector<PickPathItem>{{1, 4, 3}});
-    CHECK(pick() == std::vector<PickPathItem>{{1, 7, 4}});
+    CHECK(pick() == std::vector<PickPathItem>{{1, 5, 3}});
+    CHECK(pick() == std::vector<PickPathItem>{{1, 8, 4}});
     // Delete the first square: the next pick at its place finds nothing.
     auto& store = rig.phigs.store();
     store.openStructure(1);
-    store.setElementPointer(4);
+    store.setElementPointer(5);
     store.deleteElement();
     store.closeStructure();
     CHECK(pick().empty());

@@ -98,6 +98,7 @@ struct Scene {
         ws->setViewRepresentation(1, {evaluateViewOrientationMatrix({0, 0, 0}, {0, 0, 1}, {0, 1, 0}),
                                       evaluateViewMappingMatrix(mapping)});
         ws->postStructure(1, 0.5);
+        ws->input().setPickFilter(1, {1}, {});  // starts empty (ISO 9592): nothing pickable
     }
 
     /// NPC of a world point through view 1.

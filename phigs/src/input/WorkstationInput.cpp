@@ -152,7 +152,6 @@ void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::s
     InputDevice& d = lookup(InputClass::Pick, device, "SET PICK FILTER");
     d.pickInclusion = std::move(inclusion);
     d.pickExclusion = std::move(exclusion);
-    d.pickFilterSet = true;
 }
 
 void WorkstationInput::setPickPathDepth(int device, int depth) {

@@ -319,7 +319,7 @@ void Workstation::echoMoved() {
 
 const DrawList& Workstation::pickList(const InputDevice& device) {
     TraversalFilters filters = filters_;
-    if (device.pickFilterSet) filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
+    filters.pick = NameSetFilter{device.pickInclusion, device.pickExclusion};
     PickList& cached = pickLists_[device.number];
     lastPickList_ = &cached.list;
     const std::uint64_t stamp = contentStamp();

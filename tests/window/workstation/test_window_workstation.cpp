@@ -122,11 +122,13 @@ struct WindowRig {
         store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
         store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb(red)});
         store.insert(pickId(5));
+        store.insert(addNamesToSet({1}));
         store.insert(fillArea3({{0.1, 0.1, 0}, {0.4, 0.1, 0}, {0.4, 0.4, 0}, {0.1, 0.4, 0}}));
         store.closeStructure();
         ws = &phigs.openWorkstation(1, WorkstationType::Window);
         fit();
         ws->postStructure(1, 0.5);
+        ws->input().setPickFilter(1, {1}, {});  // starts empty (ISO 9592): nothing pickable
         vk::DisplaySettings settings;
         settings.window = &window;
         settings.readBack = true;

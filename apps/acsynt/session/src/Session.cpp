@@ -51,6 +51,7 @@ void Session::setupWorkstation() {
     fitWorkstation();
     ws.setHlhsrMode(1);
     ws.setPickFilter(NameSetFilter{{structures::pickableName, structures::buttonName}, {}});
+    ws.input().setPickFilter(1, {structures::pickableName, structures::buttonName}, {});
     Light sun;
     sun.type = LightType::Directional;
     sun.colour = glm::vec3(0.85f);

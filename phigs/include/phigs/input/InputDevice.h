@@ -31,10 +31,11 @@ struct InputDevice {
     EchoSwitch echo = EchoSwitch::Echo;
     DeviceInitialisation setup;
     Measure current;
-    std::set<int> pickInclusion;  ///< pick filter: a primitive is pickable when its name set
-    std::set<int> pickExclusion;  ///< meets the inclusion set and misses the exclusion set
-    bool pickFilterSet = false;   ///< SET PICK FILTER was called (else traversal may use none)
-    int pickPathDepth = 0;        ///< 0: the whole path
+    /// Pick filter: a primitive is pickable when its name set meets the inclusion set and misses
+    /// the exclusion set. Both start empty (ISO 9592), so nothing is pickable until SET PICK FILTER.
+    std::set<int> pickInclusion;
+    std::set<int> pickExclusion;
+    int pickPathDepth = 0;  ///< 0: the whole path
 };
 
 /// How many devices of each class a workstation has (numbered from 1).
