@@ -70,7 +70,7 @@ void frame(Workstation& ws, glm::dvec3 lo, glm::dvec3 hi) {
 }  // namespace
 
 void Session::writeHardcopy(const std::string& name) {
-    if (!settings_.vectorHardcopies) {
+    if (!core_.settings.vectorHardcopies) {
         fail("HARDCOPIES ARE OFF IN THIS SESSION");
         return;
     }
@@ -86,21 +86,21 @@ void Session::writeHardcopy(const std::string& name) {
     const glm::dvec2 pageSize = vector.page.pageSize();
     vector.page.nominalPixel = std::min(pageSize.x / (area.x1 - area.x0), pageSize.y / (area.y1 - area.y0));
     vector.options.surfaces =
-        style_.shaded ? hardcopy::SurfaceDrawing::Shaded : hardcopy::SurfaceDrawing::HiddenLine;
+        core_.style.shaded ? hardcopy::SurfaceDrawing::Shaded : hardcopy::SurfaceDrawing::HiddenLine;
     OutputConnection connection;
     connection.identifier = path.string();
     connection.settings = vector;
     OpenWorkstation paper(phigs_, kHardcopyWorkstation, hardcopy::workstationTypeOf(format), connection);
     picture();  // the screen's views and model structures up to date
-    copyTables(workstation_->tables(), *paper);
+    copyTables(core_.workstation->tables(), *paper);
     frame(*paper, npc({area.x0, area.y1}, 0), npc({area.x1, area.y0}, 1));
     (*paper).postStructure(structures::geometry, 0.5);
     (*paper).present();  // std::runtime_error naming the file when it cannot be written
     paper.close();
     hardcopies_.push_back(path);
-    log_.push_back("hardcopy " + path.string());
+    core_.log.push_back("hardcopy " + path.string());
     say(std::string(hardcopy::vectorFormatName(format)) + " HARDCOPY OF " +
-        (fourViews_ ? "FOUR VIEWS" : "THE VIEW") + " WRITTEN TO " + path.string());
+        (core_.fourViews ? "FOUR VIEWS" : "THE VIEW") + " WRITTEN TO " + path.string());
 }
 
 }  // namespace acsynt

@@ -23,14 +23,14 @@ double wrapDegrees(double a) {
 }  // namespace
 
 void Session::rotateView(double azimuth, double elevation) {
-    azimuth_ = wrapDegrees(azimuth_ + azimuth);
-    elevation_ = std::clamp(elevation_ + elevation, -89.0, 89.0);
+    core_.azimuth = wrapDegrees(core_.azimuth + azimuth);
+    core_.elevation = std::clamp(core_.elevation + elevation, -89.0, 89.0);
     navigated();
 }
 
 void Session::zoomView(double factor) {
     if (!(factor > 0) || !std::isfinite(factor)) return;
-    zoom_ = std::clamp(zoom_ * factor, sliderLow[3], sliderHigh[3]);
+    core_.zoom = std::clamp(core_.zoom * factor, sliderLow[3], sliderHigh[3]);
     navigated();
 }
 
@@ -39,29 +39,29 @@ void Session::panView(glm::dvec2 pixels) {
     // window over its pixel height.
     const auto [lo, hi] = modelBounds();
     const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
-    const PixelBox b = layout_.viewBox(fourViews_ ? 4 : 1, fourViews_);
+    const PixelBox b = layout_.viewBox(core_.fourViews ? 4 : 1, core_.fourViews);
     const double aspect = (b.x1 - b.x0) / std::max(b.y1 - b.y0, 1.0);
-    const double half = radius * 0.75 / zoom_;
+    const double half = radius * 0.75 / core_.zoom;
     const double perPixel = 2 * (aspect >= 1 ? half : half / aspect) / std::max(b.y1 - b.y0, 1.0);
     const glm::dvec3 n = obliqueDirection();
     const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), n));
     const glm::dvec3 up = glm::cross(n, right);
-    viewCentre_ =
-        viewCentre_.value_or((lo + hi) / 2.0) - pixels.x * perPixel * right + pixels.y * perPixel * up;
+    core_.viewCentre =
+        core_.viewCentre.value_or((lo + hi) / 2.0) - pixels.x * perPixel * right + pixels.y * perPixel * up;
     navigated();
 }
 
 glm::dvec3 Session::obliqueDirection() const {
-    const double az = glm::radians(azimuth_), el = glm::radians(elevation_);
+    const double az = glm::radians(core_.azimuth), el = glm::radians(core_.elevation);
     return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
 }
 
 std::pair<glm::dvec3, glm::dvec3> Session::modelBounds() const {
     glm::dvec3 lo(-1), hi(1);
-    if (!models_.empty()) {
+    if (!core_.models.empty()) {
         lo = glm::dvec3(1e300);
         hi = glm::dvec3(-1e300);
-        for (const Component& c : models_.current().components)
+        for (const Component& c : core_.models.current().components)
             for (const glm::dvec3& p : c.surface.points) {
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
@@ -75,13 +75,14 @@ void Session::navigated() {
     drawScreen();  // the ROTATE and ZOOM sliders follow
     // One `view` line per run of navigation: the recording replays where it ended.
     char line[200];
-    const glm::dvec3 c = viewCentre_.value_or(glm::dvec3(0));
-    if (viewCentre_)
-        std::snprintf(line, sizeof line, "view %.17g %.17g %.17g %.17g %.17g %.17g", azimuth_, elevation_,
-                      zoom_, c.x, c.y, c.z);
+    const glm::dvec3 c = core_.viewCentre.value_or(glm::dvec3(0));
+    if (core_.viewCentre)
+        std::snprintf(line, sizeof line, "view %.17g %.17g %.17g %.17g %.17g %.17g", core_.azimuth,
+                      core_.elevation, core_.zoom, c.x, c.y, c.z);
     else
-        std::snprintf(line, sizeof line, "view %.17g %.17g %.17g", azimuth_, elevation_, zoom_);
-    const std::size_t at = input_->history().size();
+        std::snprintf(line, sizeof line, "view %.17g %.17g %.17g", core_.azimuth, core_.elevation,
+                      core_.zoom);
+    const std::size_t at = core_.input->history().size();
     if (!extraLines_.empty() && extraLines_.back().first == at &&
         extraLines_.back().second.rfind("view ", 0) == 0)
         extraLines_.back().second = line;
@@ -99,19 +100,19 @@ void Session::setView(const std::vector<std::string>& a) {
              ".." + number(sliderHigh[3]));
         return;
     }
-    azimuth_ = wrapDegrees(v[0]);
-    elevation_ = std::clamp(v[1], -89.0, 89.0);
-    zoom_ = v[2];
+    core_.azimuth = wrapDegrees(v[0]);
+    core_.elevation = std::clamp(v[1], -89.0, 89.0);
+    core_.zoom = v[2];
     if (v.size() == 6)
-        viewCentre_ = glm::dvec3(v[3], v[4], v[5]);
+        core_.viewCentre = glm::dvec3(v[3], v[4], v[5]);
     else
-        viewCentre_.reset();
+        core_.viewCentre.reset();
     updateViews();
     drawScreen();
 }
 
 void Session::undoRedoKey(bool back) {
-    extraLines_.emplace_back(input_->history().size(), back ? "undo" : "redo");
+    extraLines_.emplace_back(core_.input->history().size(), back ? "undo" : "redo");
     if (back)
         undo();
     else
@@ -119,7 +120,7 @@ void Session::undoRedoKey(bool back) {
 }
 
 bool Session::typing() const {
-    return awaiting_ != Awaiting::Nothing || !source_.stringEcho().text.empty();
+    return core_.awaiting != Awaiting::Nothing || !source_.stringEcho().text.empty();
 }
 
 void Session::toggleHelp() {

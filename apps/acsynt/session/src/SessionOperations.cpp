@@ -24,39 +24,39 @@ using namespace phigs;
 using namespace session_detail;
 
 void Session::mapCurve(bool previewOnly) {
-    if (curves_.empty()) {
+    if (core_.curves.empty()) {
         fail("NO CURVE LOADED: USE LOAD CURVE FIRST");
         return;
     }
-    if (!reference_ || phase_ != Phase::Placed) {
+    if (!core_.reference || core_.phase != Phase::Placed) {
         fail("NO REFERENCE POINT: USE DEFINE POINT AND DONE FIRST");
         return;
     }
-    const Model& model = models_.current();
-    const Component& comp = model.components[std::size_t(reference_->component)];
+    const Model& model = core_.models.current();
+    const Component& comp = model.components[std::size_t(core_.reference->component)];
     if (!previewOnly) say("CALCULATING INTERSECTIONS, PLEASE WAIT...");
     if (!previewOnly && showNow_) showNow_();
-    geom::curvemap::Placement placement = placement_;
-    placement.reference = {reference_->u, reference_->w};
+    geom::curvemap::Placement placement = core_.placement;
+    placement.reference = {core_.reference->u, core_.reference->w};
     placement.offset = 0.5;
     geom::curvemap::MapOptions options;
     options.tolerance = 2e-3;
     std::vector<std::string> names;
-    if (curveModel_)
-        for (const auto& part : curveModel_->parts) names.push_back(part.name);
-    const ComponentMapping mapped = mapOnComponent(comp, curves_, names, placement, options);
+    if (core_.curveModel)
+        for (const auto& part : core_.curveModel->parts) names.push_back(part.name);
+    const ComponentMapping mapped = mapOnComponent(comp, core_.curves, names, placement, options);
     const geom::curvemap::MapResult& result = mapped.result;
     if (previewOnly) {
         previewMapping(mapped);
         return;
     }
     say("DRAWING MAPPED CURVE...");
-    SessionState before = state();
+    SessionState before = core_.state();
     MappingRecord record;
     record.model = model.name;
     record.component = comp.name;
-    record.curveFile = curveFile_;
-    record.reference = *reference_;
+    record.curveFile = core_.curveFile;
+    record.reference = *core_.reference;
     record.parts = result.parts.size();
     record.partReports = mapped.parts;
     for (std::size_t i = 0; i < result.parts.size(); ++i) {
@@ -69,19 +69,19 @@ void Session::mapCurve(bool previewOnly) {
             record.uvPolylines.push_back(loop.uv);
         }
         for (const auto& issue : part.issues)
-            log_.push_back("mapping " + mapped.parts[i].name + ": " + issue);
+            core_.log.push_back("mapping " + mapped.parts[i].name + ": " + issue);
     }
-    mappings_.push_back(std::move(record));
-    remember(std::move(before), "MAP CURVE " + curveFile_ + " ON " + comp.name);
-    previewLines_.clear();
-    previewClipped_.clear();
-    previewLost_.clear();
-    mappedSincePlaced_ = true;  // the mapped figure is shown with the model, without the placed curve
-    style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
-    modelPicture_.restyle(model, style_);
+    core_.mappings.push_back(std::move(record));
+    core_.remember(std::move(before), "MAP CURVE " + core_.curveFile + " ON " + comp.name);
+    core_.previewLines.clear();
+    core_.previewClipped.clear();
+    core_.previewLost.clear();
+    core_.mappedSincePlaced = true;  // the mapped figure is shown with the model, without the placed curve
+    core_.style.onlyComponent = core_.style.colourfulComponent = core_.style.highlightComponent = -1;
+    modelPicture_.restyle(model, core_.style);
     drawOverlay();
     drawMapped(false);
-    const auto& r = mappings_.back();
+    const auto& r = core_.mappings.back();
     say("MAPPED " + r.curveFile + " ON " + r.component + ": " + std::to_string(r.loops) + " LOOPS IN " +
         std::to_string(r.parts) + " PARTS" + partsNotice(r.partReports));
 }
@@ -89,23 +89,23 @@ void Session::mapCurve(bool previewOnly) {
 void Session::previewMapping(const ComponentMapping& mapped) {
     // Projection lines of the parts that map (yellow) or are clipped (orange); the placed outline
     // of a part that maps nothing (red), so that every part shows.
-    previewLines_.clear();
-    previewClipped_.clear();
-    previewLost_.clear();
+    core_.previewLines.clear();
+    core_.previewClipped.clear();
+    core_.previewLost.clear();
     std::size_t lines = 0;
     for (std::size_t i = 0; i < mapped.result.parts.size(); ++i) {
         const auto& part = mapped.result.parts[i];
         const PartOutcome outcome = mapped.parts[i].outcome;
         if (outcome == PartOutcome::Lost) {
             std::vector<glm::dvec3> outline;
-            const geom::Curve& c = curves_[i];
+            const geom::Curve& c = core_.curves[i];
             for (int k = 0; k <= 200; ++k)
                 outline.push_back(mapped.result.frame.toModel(
                     geom::evaluate(c, c.domainStart() + (c.domainEnd() - c.domainStart()) * k / 200)));
-            previewLost_.push_back(std::move(outline));
+            core_.previewLost.push_back(std::move(outline));
             continue;
         }
-        auto& into = outcome == PartOutcome::Clipped ? previewClipped_ : previewLines_;
+        auto& into = outcome == PartOutcome::Clipped ? core_.previewClipped : core_.previewLines;
         for (const auto& loop : part.loops)
             for (std::size_t k = 0; k < loop.points.size();
                  k += std::max<std::size_t>(1, loop.points.size() / 24))
@@ -138,20 +138,49 @@ std::string fewerThanAsked(const ReductionRecord& r) {
     return out;
 }
 
+/// The curves mapped on the original go with the reduced model: those on other components as
+/// they are, those on the reduced one through their (u, w) onto its new surface (knot removal
+/// keeps the parameters). Returns how many were moved onto the reduced surface.
+std::size_t carryMappings(SessionCore& core, const ReductionRecord& record, const Component& target) {
+    std::size_t carried = 0, moved = 0;
+    const std::size_t mappingCount = core.mappings.size();
+    for (std::size_t i = 0; i < mappingCount; ++i) {
+        if (core.mappings[i].model != record.model) continue;
+        MappingRecord m = core.mappings[i];
+        m.model = record.reducedModel;
+        if (m.component == record.component) {
+            const auto domain = geom::curvemap::surfaceDomain(target.surface, target.closedU, target.closedW);
+            for (std::size_t l = 0; l < m.uvPolylines.size(); ++l)
+                for (std::size_t k = 0; k < m.uvPolylines[l].size(); ++k) {
+                    const glm::dvec2 uv = domain.wrap(m.uvPolylines[l][k]);
+                    m.polylines[l][k] = geom::evaluate(target.surface, uv.x, uv.y);
+                }
+            ++moved;
+        }
+        core.mappings.push_back(std::move(m));
+        ++carried;
+    }
+    if (carried > 0)
+        core.log.push_back("reduction: " + std::to_string(carried) + " mapped curves carried to " +
+                           record.reducedModel);
+    return moved;
+}
+
 }  // namespace
 
 void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
-    SessionState before = state();
-    const Model& original = models_.current();
+    SessionState before = core_.state();
+    const Model& original = core_.models.current();
     const Component& comp = original.components.at(std::size_t(componentIndex));
     geom::ReductionOptions options;
     if (count > 0)
         options.maxRemovals = count;
     else
         options.tolerance = tolerance;
-    const geom::ReductionDirection direction = reductionDirection_ == "U"   ? geom::ReductionDirection::U
-                                               : reductionDirection_ == "W" ? geom::ReductionDirection::V
-                                                                            : geom::ReductionDirection::Both;
+    const geom::ReductionDirection direction = core_.reductionDirection == "U" ? geom::ReductionDirection::U
+                                               : core_.reductionDirection == "W"
+                                                   ? geom::ReductionDirection::V
+                                                   : geom::ReductionDirection::Both;
     if (count > 0) say("REMOVE " + std::to_string(count) + " KNOTS FROM EACH CROSS SECTION");
     if (showNow_) showNow_();
     geom::SurfaceReduction reduced = geom::reduceSurface(comp.surface, direction, options);
@@ -161,7 +190,7 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
     record.model = original.name;
     record.component = comp.name;
     record.componentIndex = componentIndex;
-    record.direction = reductionDirection_;
+    record.direction = core_.reductionDirection;
     record.mode = count > 0 ? "count" : "tolerance";
     record.tolerance = tolerance;
     record.count = count;
@@ -175,47 +204,25 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
     record.deviation = reduced.deviation;
 
     // The reduced version is a new model; the original stays in the list (MODELS).
-    std::string name = original.name + "_R" + std::to_string(reductions_.size() + 1);
-    if (name.size() > 20) name = "REDUCED_" + std::to_string(reductions_.size() + 1);
-    const auto copied = models_.copyCurrent(name);
+    std::string name = original.name + "_R" + std::to_string(core_.reductions.size() + 1);
+    if (name.size() > 20) name = "REDUCED_" + std::to_string(core_.reductions.size() + 1);
+    const auto copied = core_.models.copyCurrent(name);
     if (!copied.done) {
         fail(copied.message);
         return;
     }
-    Component& target = models_.current().components[std::size_t(componentIndex)];
+    Component& target = core_.models.current().components[std::size_t(componentIndex)];
     target.surface = std::move(reduced.surface);
     target.patches = std::move(patches);
-    record.reducedModel = models_.current().name;
-    reductions_.push_back(record);
-    // The curves mapped on the original go with the reduced model: those on other components as
-    // they are, those on the reduced one through their (u, w) onto its new surface (knot
-    // removal keeps the parameters).
-    std::size_t carried = 0, moved = 0;
-    const std::size_t mappingCount = mappings_.size();
-    for (std::size_t i = 0; i < mappingCount; ++i) {
-        if (mappings_[i].model != record.model) continue;
-        MappingRecord m = mappings_[i];
-        m.model = record.reducedModel;
-        if (m.component == record.component) {
-            const auto domain = geom::curvemap::surfaceDomain(target.surface, target.closedU, target.closedW);
-            for (std::size_t l = 0; l < m.uvPolylines.size(); ++l)
-                for (std::size_t k = 0; k < m.uvPolylines[l].size(); ++k) {
-                    const glm::dvec2 uv = domain.wrap(m.uvPolylines[l][k]);
-                    m.polylines[l][k] = geom::evaluate(target.surface, uv.x, uv.y);
-                }
-            ++moved;
-        }
-        mappings_.push_back(std::move(m));
-        ++carried;
-    }
-    if (carried > 0)
-        log_.push_back("reduction: " + std::to_string(carried) + " mapped curves carried to " +
-                       record.reducedModel);
-    remember(std::move(before), "REDUCTION OF " + record.component);
+    record.reducedModel = core_.models.current().name;
+    core_.reductions.push_back(record);
+    const std::size_t moved = carryMappings(core_, record, target);
+    core_.remember(std::move(before), "REDUCTION OF " + record.component);
     showModel();
-    const std::string done = reductionDirection_ == "U"   ? "DATA REDUCTION IN U DIRECTION COMPLETE"
-                             : reductionDirection_ == "W" ? "DATA REDUCTION IN W DIRECTION COMPLETE"
-                                                          : "DATA REDUCTION IN U AND W DIRECTIONS COMPLETE";
+    const std::string done = core_.reductionDirection == "U" ? "DATA REDUCTION IN U DIRECTION COMPLETE"
+                             : core_.reductionDirection == "W"
+                                 ? "DATA REDUCTION IN W DIRECTION COMPLETE"
+                                 : "DATA REDUCTION IN U AND W DIRECTIONS COMPLETE";
     say(done + ": " + std::to_string(record.countUBefore * record.countWBefore) + " -> " +
         std::to_string(record.countUAfter * record.countWAfter) + " CONTROL POINTS, MAX ERROR " +
         number(record.maxError, 3) +

@@ -25,18 +25,18 @@ using namespace session_detail;
 // ---- the model on the screen
 
 void Session::showModel() {
-    style_.onlyComponent = style_.colourfulComponent = style_.highlightComponent = -1;
-    style_.errorMapComponent = -1;
-    reference_.reset();
-    previewLines_.clear();
-    previewClipped_.clear();
-    previewLost_.clear();
-    phase_ = Phase::None;
-    if (models_.empty()) {
+    core_.style.onlyComponent = core_.style.colourfulComponent = core_.style.highlightComponent = -1;
+    core_.style.errorMapComponent = -1;
+    core_.reference.reset();
+    core_.previewLines.clear();
+    core_.previewClipped.clear();
+    core_.previewLost.clear();
+    core_.phase = Phase::None;
+    if (core_.models.empty()) {
         modelPicture_.clear();
         rewriteStructure(phigs_.store(), structures::modelRoot, {});
     } else {
-        modelPicture_.build(models_.current(), style_);
+        modelPicture_.build(core_.models.current(), core_.style);
     }
     drawMapped(false);
     drawErrorMap();
@@ -44,9 +44,13 @@ void Session::showModel() {
     updateViews();
 }
 
+void Session::restyle() {
+    modelPicture_.restyle(core_.models.current(), core_.style);
+}
+
 void Session::updateViews() {
     const auto [lo, hi] = modelBounds();
-    const glm::dvec3 centre = viewCentre_.value_or((lo + hi) / 2.0);
+    const glm::dvec3 centre = core_.viewCentre.value_or((lo + hi) / 2.0);
     const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
     struct Direction {
         glm::dvec3 normal, up;
@@ -55,13 +59,13 @@ void Session::updateViews() {
     const Direction directions[] = {
         {{0, 0, 1}, {-1, 0, 0}}, {{-1, 0, 0}, {0, 0, 1}}, {{0, -1, 0}, {0, 0, 1}}, oblique};
     std::vector<Element> geometry;
-    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v) {
-        const Direction& d = fourViews_ ? directions[v - 1] : oblique;
-        const PixelBox b = layout_.viewBox(v, fourViews_);
+    for (int v = 1; v <= (core_.fourViews ? 4 : 1); ++v) {
+        const Direction& d = core_.fourViews ? directions[v - 1] : oblique;
+        const PixelBox b = layout_.viewBox(v, core_.fourViews);
         const glm::dvec3 npcMin = npc({b.x0, b.y1}, 0), npcMax = npc({b.x1, b.y0}, 1);
         ViewMapping mapping;
         const double aspect = (npcMax.x - npcMin.x) / (npcMax.y - npcMin.y);
-        const double half = radius * (fourViews_ && v < 4 ? 0.9 : 0.75) / zoom_;
+        const double half = radius * (core_.fourViews && v < 4 ? 0.9 : 0.75) / core_.zoom;
         const glm::dvec2 halfSize =
             aspect >= 1 ? glm::dvec2(half * aspect, half) : glm::dvec2(half, half / aspect);
         mapping.windowMin = -halfSize;
@@ -76,7 +80,7 @@ void Session::updateViews() {
         view.mapping = evaluateViewMappingMatrix(mapping);
         view.clipMin = npcMin;
         view.clipMax = npcMax;
-        workstation_->setViewRepresentation(v, view);
+        core_.workstation->setViewRepresentation(v, view);
         geometry.push_back(viewIndex(v));
         geometry.push_back(executeStructure(structures::modelRoot));
     }
@@ -84,13 +88,13 @@ void Session::updateViews() {
     geometry.push_back(viewIndex(0));
     geometry.push_back(addNamesToSet({structures::lineName}));
     geometry.push_back(colourAttr(ElementType::PolylineColour, {0.35, 0.4, 0.55}));
-    for (int v = 1; v <= (fourViews_ ? 4 : 1); ++v)
-        geometry.push_back(polyline3(outline(layout_.viewBox(v, fourViews_))));
+    for (int v = 1; v <= (core_.fourViews ? 4 : 1); ++v)
+        geometry.push_back(polyline3(outline(layout_.viewBox(v, core_.fourViews))));
     rewriteStructure(phigs_.store(), structures::geometry, geometry);
 }
 
 glm::dvec2 Session::pixelOf(const glm::dvec3& world, int view) {
-    const ViewRepresentation& v = workstation_->tables().views.get(view);
+    const ViewRepresentation& v = core_.workstation->tables().views.get(view);
     glm::dvec4 p = v.mapping * v.orientation * glm::dvec4(world, 1.0);
     p /= p.w;
     return mapping_->toPixels(glm::dvec3(p));
@@ -103,7 +107,6 @@ std::vector<glm::dvec3> Session::outline(const PixelBox& b) const {
 void Session::drawScreen() {
     auto& store = phigs_.store();
     const ScreenLayout& l = layout_;
-    const double unit = 1.0 / mapping_->pixelsPerNpc;  // one pixel in NPC
 
     // The menu panel of choice device 1 and the sliders of valuators 1-4: phigs echo structures.
     std::vector<std::string> labels;
@@ -113,8 +116,8 @@ void Session::drawScreen() {
     // U and W are the component's own parameters, as picks and the message line give them;
     // their sliders span the reference patch (initialised again when it changes).
     if (sliderRange(1) != sliderRanges_[0] || sliderRange(2) != sliderRanges_[1]) initialiseSliders();
-    const double values[4] = {reference_ ? reference_->u : 0, reference_ ? reference_->w : 0, azimuth_,
-                              zoom_};
+    const double values[4] = {core_.reference ? core_.reference->u : 0,
+                              core_.reference ? core_.reference->w : 0, core_.azimuth, core_.zoom};
     for (int d = 1; d <= 4; ++d) {
         const glm::dvec2 range = sliderRanges_[d - 1];
         const ValuatorSlider slider{d, l.slider(d).echoVolume(), range.x, range.y};
@@ -122,8 +125,15 @@ void Session::drawScreen() {
                             std::clamp(values[d - 1], range.x, range.y), sliderNames[d - 1], *mapping_);
     }
 
+    drawPad();
+    drawMessage();
+}
+
+void Session::drawPad() {
+    const ScreenLayout& l = layout_;
+    const double unit = 1.0 / mapping_->pixelsPerNpc;  // one pixel in NPC
     // The pointer-valuator pad: pickable buttons (pick id = button), live while the marker moves.
-    const bool padLive = phase_ == Phase::MoveMarker;  // DEFINE POINT's marker moves; off after DONE
+    const bool padLive = core_.phase == Phase::MoveMarker;  // DEFINE POINT's marker moves; off after DONE
     std::vector<Element> pad{
         viewIndex(0), IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)},
         RealAttribute{ElementType::CharacterHeight, 0.25 * (l.pad.y1 - l.pad.y0) / 4 * unit},
@@ -141,13 +151,17 @@ void Session::drawScreen() {
             colourAttr(ElementType::TextColour, padLive ? glm::dvec3(0.7, 1, 0.7) : glm::dvec3(0.4)));
         pad.push_back(textAt(npc(b.centre()), arrows[button - 1]));
     }
-    rewriteStructure(store, structures::pad, pad);
+    rewriteStructure(phigs_.store(), structures::pad, pad);
+}
 
+void Session::drawMessage() {
+    const ScreenLayout& l = layout_;
+    const double unit = 1.0 / mapping_->pixelsPerNpc;  // one pixel in NPC
     // Title, menu name, current model and the message line.
     const PixelBox& m = l.message;
     const double rowHeight = (m.y1 - m.y0) / 2;
-    std::string heading = std::string(title) + "   MENU: " + shown(menuTitle_);
-    if (!models_.empty()) heading += "   MODEL: " + models_.current().name;
+    std::string heading = std::string(title) + "   MENU: " + shown(menu_->title);
+    if (!core_.models.empty()) heading += "   MODEL: " + core_.models.current().name;
     std::vector<Element> msg{viewIndex(0),
                              addNamesToSet({structures::lineName}),
                              RealAttribute{ElementType::CharacterHeight, 0.45 * rowHeight * unit},
@@ -158,21 +172,21 @@ void Session::drawScreen() {
                              textAt(npc({m.x0 + 6, m.y0 + rowHeight * 0.5}), heading),
                              colourAttr(ElementType::TextColour, {1.0, 1.0, 0.55}),
                              textAt(npc({m.x0 + 6, m.y0 + rowHeight * 1.5}), messageLine())};
-    rewriteStructure(store, structures::message, msg);
+    rewriteStructure(phigs_.store(), structures::message, msg);
 }
 
 void Session::drawOverlay() {
     std::vector<Element> e{addNamesToSet({structures::lineName})};
-    if (reference_ && !models_.empty()) {
-        const Component& comp = models_.current().components[std::size_t(reference_->component)];
-        const glm::dvec3 at = geom::evaluate(comp.surface, reference_->u, reference_->w);
+    if (core_.reference && !core_.models.empty()) {
+        const Component& comp = core_.models.current().components[std::size_t(core_.reference->component)];
+        const glm::dvec3 at = geom::evaluate(comp.surface, core_.reference->u, core_.reference->w);
         e.push_back(IndexAttribute{ElementType::MarkerType, int(MarkerType::Circle)});
         e.push_back(RealAttribute{ElementType::MarkerSizeScaleFactor, 2.0});
         e.push_back(colourAttr(ElementType::PolymarkerColour, {1, 0.2, 0.2}));
         e.push_back(polymarker3({at}));
-        if (phase_ == Phase::Placed && !mappedSincePlaced_) {
-            geom::curvemap::Placement placement = placement_;
-            placement.reference = {reference_->u, reference_->w};
+        if (core_.phase == Phase::Placed && !core_.mappedSincePlaced) {
+            geom::curvemap::Placement placement = core_.placement;
+            placement.reference = {core_.reference->u, core_.reference->w};
             placement.offset = 0.5;
             const auto frame = geom::curvemap::placementFrame(comp.surface, placement);
             const double length = 1.5;
@@ -193,7 +207,7 @@ void Session::drawOverlay() {
             e.push_back(RealAttribute{ElementType::LinewidthScaleFactor, 1.0});
             // The placed curve above the patch.
             e.push_back(colourAttr(ElementType::PolylineColour, {0.3, 0.9, 1.0}));
-            for (const geom::Curve& c : curves_) {
+            for (const geom::Curve& c : core_.curves) {
                 std::vector<glm::dvec3> points;
                 const int n = 200;
                 for (int k = 0; k <= n; ++k) {
@@ -205,22 +219,22 @@ void Session::drawOverlay() {
         }
     }
     e.push_back(colourAttr(ElementType::PolylineColour, {0.9, 0.9, 0.4}));
-    for (const auto& line : previewLines_) e.push_back(polyline3(line));
+    for (const auto& line : core_.previewLines) e.push_back(polyline3(line));
     e.push_back(colourAttr(ElementType::PolylineColour, {1.0, 0.55, 0.1}));
-    for (const auto& line : previewClipped_) e.push_back(polyline3(line));
+    for (const auto& line : core_.previewClipped) e.push_back(polyline3(line));
     e.push_back(colourAttr(ElementType::PolylineColour, {1.0, 0.15, 0.15}));
-    for (const auto& line : previewLost_) e.push_back(polyline3(line));
+    for (const auto& line : core_.previewLost) e.push_back(polyline3(line));
     rewriteStructure(phigs_.store(), structures::overlay, e);
 }
 
 void Session::drawMapped(bool all) {
     std::vector<Element> e{addNamesToSet({structures::lineName}),
                            RealAttribute{ElementType::LinewidthScaleFactor, 2.0}};
-    if (!models_.empty()) {
-        const std::string& name = models_.current().name;
-        for (std::size_t i = 0; i < mappings_.size(); ++i) {
-            const MappingRecord& m = mappings_[i];
-            if (m.model != name || (!all && i + 1 != mappings_.size())) continue;
+    if (!core_.models.empty()) {
+        const std::string& name = core_.models.current().name;
+        for (std::size_t i = 0; i < core_.mappings.size(); ++i) {
+            const MappingRecord& m = core_.mappings[i];
+            if (m.model != name || (!all && i + 1 != core_.mappings.size())) continue;
             e.push_back(colourAttr(ElementType::PolylineColour,
                                    i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
             for (const auto& line : m.polylines) e.push_back(polyline3(line));
@@ -229,21 +243,16 @@ void Session::drawMapped(bool all) {
     rewriteStructure(phigs_.store(), structures::mapped, e);
 }
 
-double Session::errorMapTop() const {
-    if (errorScale_ > 0) return errorScale_;
-    return reductions_.empty() ? 1e-12 : std::max(reductions_.back().maxError, 1e-12);
-}
-
 void Session::drawErrorMap() {
     std::vector<Element> e;
-    if (style_.errorMapComponent >= 0 && !reductions_.empty() && !models_.empty()) {
-        const ReductionRecord& r = reductions_.back();
-        const Component& comp = models_.current().components[std::size_t(r.componentIndex)];
+    if (core_.style.errorMapComponent >= 0 && !core_.reductions.empty() && !core_.models.empty()) {
+        const ReductionRecord& r = core_.reductions.back();
+        const Component& comp = core_.models.current().components[std::size_t(r.componentIndex)];
         const auto& d = r.deviation;
         QuadrilateralMeshElement mesh;
         mesh.rows = int(d.u.size());
         mesh.columns = int(d.v.size());
-        const double top = errorMapTop();
+        const double top = core_.errorMapTop();
         for (std::size_t i = 0; i < d.u.size(); ++i)
             for (std::size_t j = 0; j < d.v.size(); ++j) {
                 mesh.points.push_back(geom::evaluate(comp.surface, d.u[i], d.v[j]));
@@ -259,7 +268,7 @@ void Session::drawErrorMap() {
 
 void Session::drawLegend() {
     std::vector<Element> e;
-    if (style_.errorMapComponent >= 0 && !reductions_.empty()) {
+    if (core_.style.errorMapComponent >= 0 && !core_.reductions.empty()) {
         // A colour bar in the lower left of the geometry area: 0 to the scale's top in model
         // units (metres), the scale's kind and the largest error measured above it.
         const PixelBox& g = layout_.geometry;
@@ -286,20 +295,20 @@ void Session::drawLegend() {
             e.push_back(colourAttr(ElementType::InteriorColour, errorColour((k + 0.5) / steps)));
             e.push_back(box({x0, bar.y0, x1, bar.y1}));
         }
-        const double top = errorMapTop(), largest = reductions_.back().maxError;
+        const double top = core_.errorMapTop(), largest = core_.reductions.back().maxError;
         e.push_back(RealAttribute{ElementType::CharacterHeight, 0.7 * textHeight * unit});
         e.push_back(colourAttr(ElementType::TextColour, {0.9, 0.9, 0.9}));
         e.push_back(AlignmentAttribute{ElementType::TextAlignment, 1, 3});
         e.push_back(textAt(npc({bar.x0, bar.y0 - 1.8 * textHeight}),
-                           errorScale_ > 0 ? "ERROR, FIXED SCALE" : "ERROR, RELATIVE SCALE"));
+                           core_.errorScale > 0 ? "ERROR, FIXED SCALE" : "ERROR, RELATIVE SCALE"));
         e.push_back(textAt(npc({bar.x0, bar.y0 - 0.7 * textHeight}), "MAX " + lengthText(largest)));
         // Ticks under the bar: 0, half and the top (which any larger error shows as).
         e.push_back(AlignmentAttribute{ElementType::TextAlignment, 2, 3});
         const double below = bar.y1 + 0.9 * textHeight;
         e.push_back(textAt(npc({bar.x0, below}), "0"));
         e.push_back(textAt(npc({(bar.x0 + bar.x1) / 2, below}), lengthText(top / 2)));
-        e.push_back(
-            textAt(npc({bar.x1, below}), (errorScale_ > 0 && largest > top ? ">" : "") + lengthText(top)));
+        e.push_back(textAt(npc({bar.x1, below}),
+                           (core_.errorScale > 0 && largest > top ? ">" : "") + lengthText(top)));
     }
     rewriteStructure(phigs_.store(), structures::legend, e);
 }

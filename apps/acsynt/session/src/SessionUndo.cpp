@@ -8,40 +8,25 @@ namespace acsynt {
 
 using namespace session_detail;
 
-SessionState Session::state() const {
-    SessionState s;
-    s.models = models_;
-    s.mappings = mappings_;
-    s.reductions = reductions_;
-    s.reference = reference_;
-    s.placement = placement_;
-    s.placed = phase_ == Phase::Placed;
-    return s;
-}
-
 void Session::restore(SessionState s) {
-    models_ = std::move(s.models);
-    mappings_ = std::move(s.mappings);
-    reductions_ = std::move(s.reductions);
-    placement_ = s.placement;
-    viewCentre_.reset();
+    core_.models = std::move(s.models);
+    core_.mappings = std::move(s.mappings);
+    core_.reductions = std::move(s.reductions);
+    core_.placement = s.placement;
+    core_.viewCentre.reset();
     showModel();  // clears the reference point and the phase
-    if (s.reference && !models_.empty() &&
-        std::size_t(s.reference->component) < models_.current().components.size()) {
-        reference_ = s.reference;
-        phase_ = s.placed ? Phase::Placed : Phase::None;
-        mappedSincePlaced_ = false;
+    if (s.reference && !core_.models.empty() &&
+        std::size_t(s.reference->component) < core_.models.current().components.size()) {
+        core_.reference = s.reference;
+        core_.phase = s.placed ? Phase::Placed : Phase::None;
+        core_.mappedSincePlaced = false;
     }
     drawOverlay();
     drawMapped(true);
 }
 
-void Session::remember(SessionState before, const std::string& what) {
-    history_.record(std::move(before), what);
-}
-
 void Session::undo() {
-    auto back = history_.undo(state());
+    auto back = core_.history.undo(core_.state());
     if (!back) {
         say("NOTHING TO UNDO");
         return;
@@ -51,7 +36,7 @@ void Session::undo() {
 }
 
 void Session::redo() {
-    auto again = history_.redo(state());
+    auto again = core_.history.redo(core_.state());
     if (!again) {
         say("NOTHING TO REDO");
         return;

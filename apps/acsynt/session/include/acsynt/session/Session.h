@@ -1,13 +1,10 @@
 #pragma once
 
-#include "acsynt/ModelList.h"
-#include "acsynt/session/History.h"
-#include "acsynt/session/MappingRecord.h"
+#include "acsynt/session/MenuContext.h"
+#include "acsynt/session/MenuTable.h"
 #include "acsynt/session/ModelPicture.h"
 #include "acsynt/session/ScreenLayout.h"
-#include "geom/CurveFile.h"
-#include "geom/Deviation.h"
-#include "geom/curvemap/CurveMapper.h"
+#include "acsynt/session/SessionCore.h"
 #include "phigs/Phigs.h"
 #include "phigs/input/InputQueue.h"
 #include "phigs/input/InputSource.h"
@@ -29,59 +26,11 @@
 
 namespace acsynt {
 
-/// What a session starts from.
-struct SessionSettings {
-    int width = 1024, height = 768;               ///< screen size in pixels (resize() changes it)
-    std::filesystem::path outputDirectory = ".";  ///< snapshots, summary, saved files
-    /// Where relative names of files to read are looked up after the working directory.
-    std::vector<std::filesystem::path> searchPath{ACSYNT_DATA_DIR};
-    /// The workstation type. A window's display surface is its drawable (any shape, one device
-    /// unit per pixel); the others' (1024 x 768 device units) is shown on the width x height
-    /// pixels, which must then have its 4:3 shape.
-    phigs::WorkstationType workstationType = phigs::WorkstationType::OffscreenImage;
-    /// End the session after the first input line that fails (a script run's default in the
-    /// program; its --keep-going carries on).
-    bool stopAtFirstError = false;
-    /// FILE > HARDCOPY and `hardcopy` write vector files; false refuses them (the session fuzz
-    /// target, where a shaded PDF of a whole model takes too long under the sanitizers).
-    bool vectorHardcopies = true;
-    /// Adds the outputs of the libraries the program links (vk::registerOutputs) before the
-    /// workstation opens, so that OPEN WORKSTATION makes its output; none: the workstation opens
-    /// without one (tests attach a vk::WorkstationDisplay; the fuzz targets draw nothing). The
-    /// session adds the vector hardcopy outputs itself.
-    std::function<void(phigs::OutputRegistry&)> registerOutputs;
-    /// The connection the workstation opens on (a window: the vk::WindowSurface* in settings).
-    phigs::OutputConnection connection;
-};
-
-/// One data reduction of a component (SURF_REDN).
-struct ReductionRecord {
-    std::string model, reducedModel, component, direction, mode;
-    double tolerance = 0;
-    std::size_t count = 0;
-    std::size_t countUBefore = 0, countWBefore = 0, countUAfter = 0, countWAfter = 0;
-    std::size_t removedU = 0, removedW = 0;
-    double maxError = 0;
-    geom::SurfaceDeviation deviation;
-    int componentIndex = -1;
-};
-
-/// What UNDO and REDO bring back: the models, the mappings and reductions made on them, the
-/// reference point and the curve's placement.
-struct SessionState {
-    ModelList models;
-    std::vector<MappingRecord> mappings;
-    std::vector<ReductionRecord> reductions;
-    std::optional<ReferencePoint> reference;
-    geom::curvemap::Placement placement;
-    bool placed = false;  ///< DEFINE POINT finished (DONE)
-};
-
 /// The menu-driven ACSYNT design session: a PHIGS workstation showing the model (one or four
 /// views), the menu panel, the pointer-valuator pad, sliders and the message line, all as
 /// structures; its devices (choice 1 the menu, choice 2 the pad, pick 1, valuators 1-4, string 1)
 /// are fed by any input source (a script or a window), and every action is recorded.
-class Session {
+class Session : private MenuContext {
 public:
     /// `snapshot(file)` writes what the workstation shows to a PNG, for `snapshot NAME`.
     using PictureSink = std::function<void(const std::filesystem::path&)>;
@@ -112,13 +61,13 @@ public:
     /// How to show the picture now, before a long computation (MAP CURVE's "PLEASE WAIT"): the
     /// program's one present function. Otherwise the program presents after each step().
     void setShowNow(std::function<void()> show) { showNow_ = std::move(show); }
-    bool finished() const { return finished_; }
+    bool finished() const { return core_.finished; }
     /// Input lines (script lines, window actions) that failed: each gave one or more `ERROR:`s.
-    std::size_t failedLines() const { return failedLines_; }
+    std::size_t failedLines() const { return core_.failedLines; }
 
     /// The current picture (regenerated when the structures changed).
     const phigs::DrawList& picture();
-    phigs::Workstation& workstation() { return *workstation_; }
+    phigs::Workstation& workstation() { return *core_.workstation; }
     /// The session's PHIGS: its structure store holds the model structures (tests inspect them).
     phigs::Phigs& phigs() { return phigs_; }
     const ScreenLayout& layout() const { return layout_; }
@@ -128,27 +77,27 @@ public:
     const phigs::WorkstationMapping& mapping() const { return *mapping_; }
 
     /// ERROR_SCALE: the error map's fixed scale (red at this length, model units), 0 when relative.
-    double errorScale() const { return errorScale_; }
+    double errorScale() const { return core_.errorScale; }
     /// The current value of valuator `device` (1..4: marker u, w, rotation, zoom).
     double valuatorValue(int device) const;
-    const std::string& message() const { return message_; }
+    const std::string& message() const { return core_.message; }
     /// The message line as the session draws it. The text being typed shows in the string
     /// device's echo area on its right, which the toolkit draws (Workstation::echoState).
     std::string messageLine() const;
-    const std::vector<std::string>& log() const { return log_; }
-    const std::string& menuTitle() const { return menuTitle_; }
+    const std::vector<std::string>& log() const { return core_.log; }
+    const std::string& menuTitle() const { return menu_->title; }
     const std::vector<std::string>& menuItems() const { return menuItems_; }
-    const ModelList& models() const { return models_; }
-    const std::optional<ReferencePoint>& reference() const { return reference_; }
-    const std::optional<PickedPatch>& lastPick() const { return lastPick_; }
-    const std::optional<phigs::SurfacePickDetail>& lastPickDetail() const { return lastPickDetail_; }
-    const std::vector<MappingRecord>& mappings() const { return mappings_; }
-    const std::vector<ReductionRecord>& reductions() const { return reductions_; }
+    const ModelList& models() const { return core_.models; }
+    const std::optional<ReferencePoint>& reference() const { return core_.reference; }
+    const std::optional<PickedPatch>& lastPick() const { return core_.lastPick; }
+    const std::optional<phigs::SurfacePickDetail>& lastPickDetail() const { return core_.lastPickDetail; }
+    const std::vector<MappingRecord>& mappings() const { return core_.mappings; }
+    const std::vector<ReductionRecord>& reductions() const { return core_.reductions; }
     const std::vector<std::filesystem::path>& pictures() const { return pictures_; }
     /// The vector hardcopies written (FILE > HARDCOPY, `hardcopy NAME`).
     const std::vector<std::filesystem::path>& hardcopies() const { return hardcopies_; }
-    bool fourViews() const { return fourViews_; }
-    const DisplayStyle& style() const { return style_; }
+    bool fourViews() const { return core_.fourViews; }
+    const DisplayStyle& style() const { return core_.style; }
 
     /// FILE > IMPORT of an IGES or STEP file, as the command line's --import does it before a
     /// session's input: false (with the message) when it is refused and nothing changed.
@@ -162,9 +111,9 @@ public:
     void zoomView(double factor);
     /// Moves the views' centre so that the model follows a pointer moved by `pixels` in the 3D view.
     void panView(glm::dvec2 pixels);
-    double azimuth() const { return azimuth_; }
-    double elevation() const { return elevation_; }
-    double zoom() const { return zoom_; }
+    double azimuth() const { return core_.azimuth; }
+    double elevation() const { return core_.elevation; }
+    double zoom() const { return core_.zoom; }
     /// Shows or hides the key and mouse help over the views (structure 29).
     void toggleHelp();
     bool helpShown() const { return help_; }
@@ -174,8 +123,8 @@ public:
     bool typing() const;
 
     /// Changes UNDO can take back, and undone changes REDO can make again.
-    std::size_t undoCount() const { return history_.undoCount(); }
-    std::size_t redoCount() const { return history_.redoCount(); }
+    std::size_t undoCount() const { return core_.history.undoCount(); }
+    std::size_t redoCount() const { return core_.history.redoCount(); }
 
     /// The text summary (patch picked, marker (u, w), mapped loops, control points before and after).
     std::string summary() const;
@@ -185,30 +134,8 @@ public:
     std::string recording() const;
 
 private:
-    enum class Phase {
-        None,
-        SelectComponent,
-        SelectPatch,
-        AcceptReject,
-        MoveMarker,
-        Placed,
-        SelectReduction
-    };
-    enum class Awaiting {
-        Nothing,
-        ModelFile,
-        CurveFile,
-        SaveFile,
-        ExportFile,
-        ImportFile,
-        HardcopyFile,
-        ArchiveFile,
-        RetrieveFile,
-        Tolerance,
-        Count,
-        ModelName,
-        ErrorScale
-    };
+    using Phase = SessionCore::Phase;
+    using Awaiting = SessionCore::Awaiting;
 
     void setupWorkstation();
     void fitWorkstation();  ///< the workstation's display, window, viewport and mapping for the layout
@@ -219,9 +146,6 @@ private:
     glm::dvec2 sliderRange(int device) const;
     void initialiseString();  ///< string 1, echoed on the right of the message line
     void followStringEcho();
-    void setMenu(const std::string& title, std::vector<std::string> items);
-    void say(const std::string& text);
-    void fail(const std::string& text);
     void handle(const phigs::EventReport& report);
     void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
     void writeDirective(const phigs::action::Directive& d);
@@ -232,26 +156,31 @@ private:
     void recordAs(std::string line, std::string comment = {});
     /// A pick on a surface recorded as pick_surface (its view: the click's, or pickView_).
     void recordPick(const PickedPatch& picked, const phigs::PickMeasure& measure);
-    void choose(std::string item);
+    /// A menu row chosen (CHOICE 1): the current menu's table runs it.
+    void choose(const std::string& item);
     void padButton(int button);
     void pick(const phigs::PickMeasure& measure);
     void valuator(int device, double value);
     void text(const std::string& input);
-    void prompt(const std::string& text, Awaiting what);
 
-    void mainMenu();
-    // UNDO / REDO (SessionUndo.cpp)
-    SessionState state() const;
-    void restore(SessionState state);
-    void remember(SessionState before, const std::string& what);  ///< a change was made from `before`
-    void undo();
-    void redo();
-    void fileMenu(const std::string& item);
-    void viewMenu(const std::string& item);
-    void curveMenu(const std::string& item);
-    void reductionMenu(const std::string& item);
-    void modelsMenu(const std::string& item);
+    // MenuContext: what the menus' commands act on (the menus are MainMenu.cpp, FileMenu.cpp, ...).
+    SessionCore& core() override { return core_; }
+    void say(const std::string& text) override;
+    void fail(const std::string& text) override;
+    void prompt(const std::string& text, Awaiting what) override;
+    bool requireModel() override;
+    void openMenu(const MenuTable& menu) override;
+    void restyle() override;
+    void showModel() override;
+    void updateViews() override;
+    void drawOverlay() override;
+    void drawMapped(bool all) override;
+    void drawErrorMap() override;
+    void mapCurve(bool previewOnly) override;
+    void undo() override;  ///< SessionUndo.cpp
+    void redo() override;
 
+    void restore(SessionState state);  ///< UNDO and REDO: the state and the screen showing it
     void readModel(const std::string& name);
     void readCurve(const std::string& input);
     void saveModel(const std::string& name);
@@ -260,93 +189,46 @@ private:
     /// FILE > HARDCOPY and `hardcopy NAME`: the views as PDF, SVG or EPS by the name's extension.
     void writeHardcopy(const std::string& name);
     void archive(const std::string& name, bool retrieve);
+    void renameModel(const std::string& name);  ///< NAME_MODEL's answer
+    /// The tolerance or knot count a reduction was asked for (`count`: BY COUNT's prompt).
+    void reductionAnswer(const std::string& input, bool count);
     void reduce(int component, double tolerance, std::size_t count);
-    void mapCurve(bool previewOnly);
     /// MAP PREVIEW: every part's projection lines, or its placed outline when it maps nothing.
     void previewMapping(const ComponentMapping& mapped);
-    void showModel();  ///< rebuilds the model structures after the current model changed
-    void updateViews();
-    void drawScreen();  ///< menu, pad, sliders, message
+    void drawScreen();   ///< menu, pad, sliders, message
+    void drawPad();      ///< the pointer-valuator pad, live while the marker moves
+    void drawMessage();  ///< title, menu name, current model and the message line
     glm::dvec3 npc(glm::dvec2 pixel, double z = 0.5) const { return mapping_->pixelsToNpc(pixel, z); }
     std::vector<glm::dvec3> outline(const PixelBox& box) const;
-    void drawOverlay();
-    void drawMapped(bool all);
-    void drawErrorMap();
-    void drawLegend();
+    void drawLegend();  ///< the error map's colour bar in model units, or nothing when it is off
     void drawHelp();
     void navigated();  ///< after a navigation: views, sliders, and the recording's `view` line
     void setView(const std::vector<std::string>& arguments);  ///< the `view` directive
     glm::dvec3 obliqueDirection() const;  ///< from the model's centre towards the 3D view's eye
     std::pair<glm::dvec3, glm::dvec3> modelBounds() const;  ///< the current model's control points' box
-    std::string errorMapLine() const;  ///< ERROR_MAP's message: the scale and the largest error
-    void setErrorScale(
-        const std::string& input);  ///< ERROR_SCALE: a length (fixed) or RELATIVE  ///< the error map's
-                                    ///< colour bar in model units, or nothing when it is off
-    /// The length the error map shows red at: the fixed scale, or the reduction's largest error.
-    double errorMapTop() const;
+    void setErrorScale(const std::string& input);           ///< ERROR_SCALE: a length (fixed) or RELATIVE
     void moveMarker(double u, double w);
-    bool requireModel();
     std::filesystem::path findInput(const std::string& name) const;
     /// `name` inside the output directory; std::invalid_argument for an absolute name, one with
     /// "..", or a directory.
     std::filesystem::path outputPath(const std::string& name) const;
 
-    SessionSettings settings_;
+    SessionCore core_;
     ScreenLayout layout_;
     phigs::InputSource& source_;
     PictureSink snapshot_;
     std::function<void()> showNow_;
 
     phigs::Phigs phigs_;
-    phigs::Workstation* workstation_ = nullptr;
     std::optional<phigs::WorkstationMapping> mapping_;
     phigs::InputQueue queue_;
-    phigs::WorkstationInput* input_ = nullptr;
     ModelPicture modelPicture_;
 
-    ModelList models_;
-    DisplayStyle style_;
-    bool fourViews_ = false;
-    double azimuth_ = -135, elevation_ = 25, zoom_ = 1;
     bool help_ = false;
-    std::optional<glm::dvec3> viewCentre_;  ///< CENTRE ON MARKER; else the model's middle
-
-    std::string menuTitle_;
-    std::vector<std::string> menuItems_;
-    std::string message_;
+    const MenuTable* menu_ = nullptr;     ///< the menu on the panel (CHOICE 1)
+    std::vector<std::string> menuItems_;  ///< its commands' names
     std::uint64_t echoEdits_ = 0;
     glm::dvec2 sliderRanges_[4];  ///< the ranges the valuators were last initialised with
-    std::vector<std::string> log_;
-    Phase phase_ = Phase::None;
-    Awaiting awaiting_ = Awaiting::Nothing;
-    bool finished_ = false;
-    std::size_t failedLines_ = 0;
-    std::size_t lastFailedAction_ = 0;
-
-    // CURVE MAP
-    std::optional<geom::CurveModel> curveModel_;
-    std::vector<geom::Curve> curves_;  ///< interpolated parts, scaled
-    std::string curveFile_;
-    double curveScale_ = 1.0;
-    geom::curvemap::Placement placement_;
-    int pickedComponent_ = -1;
-    std::optional<ReferencePoint> reference_;
-    std::optional<PickedPatch> lastPick_;
-    std::optional<phigs::SurfacePickDetail> lastPickDetail_;
-    std::vector<MappingRecord> mappings_;
-    bool mappedSincePlaced_ = false;
-    std::vector<std::vector<glm::dvec3>> previewLines_;    ///< MAP PREVIEW: parts that map
-    std::vector<std::vector<glm::dvec3>> previewClipped_;  ///< parts clipped at an edge
-    std::vector<std::vector<glm::dvec3>> previewLost_;     ///< placed outlines of parts that map nothing
-
-    // SURF_REDN
-    std::string reductionDirection_ = "U";
-    bool reductionByCount_ = false;
-    int reductionComponent_ = -1;
-    /// ERROR_SCALE: the error map is red at this length (model units) on a fixed scale; 0: at
-    /// the reduction's largest error (relative).
-    double errorScale_ = 0.01;
-    std::vector<ReductionRecord> reductions_;
 
     std::vector<std::filesystem::path> pictures_;
     std::vector<std::filesystem::path> hardcopies_;
@@ -356,7 +238,6 @@ private:
     /// Lines the recording writes that are no device's action (navigation as `view`, Ctrl+Z as
     /// `undo`), each before the action history entry of its index.
     std::vector<std::pair<std::size_t, std::string>> extraLines_;
-    History<SessionState> history_;
 };
 
 }  // namespace acsynt

@@ -1,0 +1,50 @@
+// The session's state: the undo snapshot, the message line and log, the error map's scale.
+#include "acsynt/session/SessionCore.h"
+
+#include "SessionShared.h"
+
+#include "phigs/input/WorkstationInput.h"
+
+namespace acsynt {
+
+using namespace session_detail;
+
+SessionState SessionCore::state() const {
+    SessionState s;
+    s.models = models;
+    s.mappings = mappings;
+    s.reductions = reductions;
+    s.reference = reference;
+    s.placement = placement;
+    s.placed = phase == Phase::Placed;
+    return s;
+}
+
+void SessionCore::say(const std::string& text) {
+    message = text;
+    log.push_back(text);
+}
+
+void SessionCore::fail(const std::string& text) {
+    // One count per input action (a script line), however many errors it causes: actions are
+    // told apart by how many the devices had consumed when the error came.
+    const std::size_t action = input ? input->history().size() : 0;
+    if (failedLines == 0 || action != lastFailedAction) ++failedLines;
+    lastFailedAction = action;
+    message = text;
+    log.push_back("ERROR: " + text);
+}
+
+double SessionCore::errorMapTop() const {
+    if (errorScale > 0) return errorScale;
+    return reductions.empty() ? 1e-12 : std::max(reductions.back().maxError, 1e-12);
+}
+
+std::string SessionCore::errorMapLine() const {
+    const ReductionRecord& r = reductions.back();
+    return "ERROR MAP: BLUE 0 TO RED " + lengthText(errorMapTop()) +
+           (errorScale > 0 ? " (FIXED SCALE)" : " (RELATIVE SCALE)") + ", MAX ERROR " +
+           lengthText(r.maxError);
+}
+
+}  // namespace acsynt

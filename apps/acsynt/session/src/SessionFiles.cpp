@@ -1,0 +1,223 @@
+// The files the session reads and writes: models, curves, saved models, IGES and STEP, archives.
+#include "acsynt/session/Session.h"
+
+#include "acsynt/session/ModelStateFile.h"
+
+#include "SessionShared.h"
+
+#include "acsynt/ModelFile.h"
+#include "acsynt/session/ModelExchange.h"
+#include "geom/DataReduction.h"
+#include "geom/Evaluate.h"
+#include "geom/GeometryError.h"
+#include "geom/exchange/CadFile.h"
+#include "phigs/core/Error.h"
+#include "phigs/input/ScriptInputSource.h"
+#include "phigs/view/ViewMatrices.h"
+#include "phigs/ws/EchoStructures.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace acsynt {
+
+using namespace phigs;
+using namespace session_detail;
+
+std::filesystem::path Session::findInput(const std::string& name) const {
+    const std::filesystem::path path(name);
+    if (path.is_absolute() || std::filesystem::exists(path)) return path;
+    for (const auto& dir : core_.settings.searchPath)
+        if (std::filesystem::exists(dir / path)) return dir / path;
+    return path;
+}
+
+std::filesystem::path Session::outputPath(const std::string& name) const {
+    // Files a session writes stay inside the output directory: a script cannot reach further.
+    const std::filesystem::path path(name);
+    const bool climbs = std::any_of(path.begin(), path.end(), [](const auto& part) { return part == ".."; });
+    if (name.empty() || path.is_absolute() || climbs || !path.has_filename())
+        throw std::invalid_argument(
+            "OUTPUT FILE '" + name +
+            "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
+    const std::filesystem::path full = core_.settings.outputDirectory / path;
+    std::filesystem::create_directories(full.parent_path());
+    if (std::filesystem::is_directory(full))
+        throw std::invalid_argument("OUTPUT FILE " + full.string() + " IS A DIRECTORY");
+    return full;
+}
+
+void Session::readModel(const std::string& name) {
+    // All or nothing: both readers throw before anything changes.
+    const std::filesystem::path path = findInput(name);
+    SessionState before = core_.state();
+    ModelState state;
+    if (isModelStateFile(path))
+        state = readModelState(path);
+    else
+        state.model = loadModel(path);
+    core_.viewCentre.reset();
+    // A name already loaded: the model read is renamed NAME_2, NAME_3, ... and the line says so.
+    const std::string fileName = state.model.name;
+    std::string modelName = fileName;
+    const auto loaded = [this](const std::string& n) {
+        for (std::size_t i = 0; i < core_.models.size(); ++i)
+            if (core_.models.at(i).name == n) return true;
+        return false;
+    };
+    for (int k = 2; loaded(modelName) && k < 1000; ++k) {
+        const std::string suffix = "_" + std::to_string(k);
+        modelName = fileName.substr(0, std::min(fileName.size(), std::size_t(20) - suffix.size())) + suffix;
+    }
+    if (loaded(modelName)) {
+        fail("A MODEL NAMED " + fileName + " IS ALREADY LOADED");
+        return;
+    }
+    state.model.name = modelName;
+    for (MappingRecord& m : state.mappings) m.model = modelName;
+    const std::size_t patches = state.model.patchCount(), components = state.model.components.size();
+    const std::size_t mapped = state.mappings.size();
+    core_.models.add(std::move(state.model));
+    for (MappingRecord& m : state.mappings) core_.mappings.push_back(std::move(m));
+    core_.remember(std::move(before), "READ MODEL " + modelName);
+    showModel();
+    if (mapped > 0) drawMapped(true);
+    std::string line = "MODEL " + fileName + " READ";
+    if (modelName != fileName) line += " AS " + modelName + " (" + fileName + " IS LOADED)";
+    line += ": " + std::to_string(components) + " COMPONENTS, " + std::to_string(patches) + " PATCHES";
+    if (mapped > 0) line += ", " + std::to_string(mapped) + " MAPPED CURVES";
+    say(line);
+}
+
+void Session::readCurve(const std::string& input) {
+    // FILE [SCALE]: the scale, when given, must be a whole positive number and the last word.
+    std::istringstream in(input);
+    std::string name, scaleText, extra;
+    in >> name >> scaleText >> extra;
+    double scale = 1.0;
+    if (!scaleText.empty()) {
+        const auto [end, ec] = std::from_chars(scaleText.data(), scaleText.data() + scaleText.size(), scale);
+        if (ec != std::errc() || end != scaleText.data() + scaleText.size()) scale = -1.0;
+    }
+    if (name.empty() || !extra.empty() || !(scale > 0) || !std::isfinite(scale)) {
+        fail("BAD INPUT IN CURVE MAP: '" + input + "': expected FILE [SCALE], SCALE a positive number");
+        return;
+    }
+    geom::CurveModel model = geom::readCurveFile(findInput(name));
+    std::vector<geom::Curve> curves = geom::interpolateModel(model);
+    for (auto& c : curves)
+        for (auto& p : c.points) {
+            p *= scale;
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                fail("CURVE SCALE " + scaleText + " IS TOO LARGE: THE CURVE IS NOT FINITE");
+                return;
+            }
+        }
+    core_.curveModel = std::move(model);
+    core_.curves = std::move(curves);
+    core_.curveFile = std::filesystem::path(name).filename().string();
+    core_.curveScale = scale;
+    drawOverlay();
+    say("CURVE MODEL " + core_.curveFile + " LOADED: " + std::to_string(core_.curves.size()) + " PARTS");
+}
+
+void Session::saveModel(const std::string& name) {
+    // The current model as it is (reduced surfaces, imported or not) and its mapped curves.
+    const auto path = outputPath(name);
+    const Model& model = core_.models.current();
+    std::ostringstream text;
+    writeModelState(text, model, core_.mappings);
+    std::ofstream out(path);
+    if (!(out << text.str()) || !out.flush()) {
+        fail("CANNOT WRITE " + path.string());
+        return;
+    }
+    std::size_t mapped = 0;
+    for (const MappingRecord& m : core_.mappings) mapped += m.model == model.name;
+    say("MODEL " + model.name + " SAVED TO " + path.string() + ": " +
+        std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(mapped) +
+        " MAPPED CURVES");
+}
+
+void Session::exportModel(const std::string& name) {
+    const auto path = outputPath(name);
+    const Model& model = core_.models.current();
+    const geom::exchange::CadModel cad = cadModelOf(model, core_.mappings);
+    geom::exchange::writeCadFile(cad, path);  // ExchangeError (a runtime_error) names the file and cause
+    std::size_t curves = 0;
+    for (const auto& s : cad.surfaces) curves += s.curves.size();
+    say("MODEL " + model.name + " EXPORTED TO " + path.string() + ": " +
+        std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(model.patchCount()) +
+        " PATCHES, " + std::to_string(curves) + " MAPPED CURVES");
+}
+
+void Session::importModel(const std::string& name) {
+    ImportedModel imported =
+        importCadModel(findInput(name));  // all or nothing: throws before anything changes
+    for (std::size_t i = 0; i < core_.models.size(); ++i)
+        if (core_.models.at(i).name == imported.model.name) {
+            fail("A MODEL NAMED " + imported.model.name + " IS ALREADY LOADED");
+            return;
+        }
+    core_.viewCentre.reset();
+    for (const auto& w : imported.warnings) core_.log.push_back("import: " + w);
+    const std::string modelName = imported.model.name;
+    const std::size_t patches = imported.model.patchCount(), components = imported.model.components.size();
+    const std::size_t curves = imported.mappings.size();
+    core_.models.add(std::move(imported.model));
+    for (auto& m : imported.mappings) core_.mappings.push_back(std::move(m));
+    showModel();
+    say("MODEL " + modelName + " IMPORTED: " + std::to_string(components) + " COMPONENTS, " +
+        std::to_string(patches) + " PATCHES, " + std::to_string(curves) + " MAPPED CURVES" +
+        (imported.warnings.empty()
+             ? ""
+             : ", " + std::to_string(imported.warnings.size()) + " WARNINGS IN THE LOG"));
+}
+
+bool Session::importCadFile(const std::filesystem::path& path) {
+    const std::size_t before = core_.failedLines;
+    try {
+        importModel(path.string());
+    } catch (const std::runtime_error& e) {
+        fail(e.what());
+    } catch (const std::invalid_argument& e) {
+        fail(e.what());
+    }
+    return core_.failedLines == before;
+}
+
+void Session::archive(const std::string& name, bool retrieve) {
+    const auto path = retrieve ? findInput(name) : outputPath(name);
+    if (retrieve && !std::filesystem::exists(path)) {
+        fail("ARCHIVE FILE " + path.string() + " NOT FOUND");
+        return;
+    }
+    if (retrieve && std::filesystem::is_directory(path)) {
+        fail("ARCHIVE FILE " + path.string() + " IS A DIRECTORY");
+        return;
+    }
+    phigs_.openArchiveFile(1, path);
+    try {
+        if (retrieve) {
+            phigs_.setConflictResolution(ConflictResolution::Update, ConflictResolution::Update);
+            const auto ids = phigs_.archiveContents(1);
+            phigs_.retrieveAllStructures(1);
+            phigs_.closeArchiveFile(1);
+            say("RETRIEVED " + std::to_string(ids.size()) + " STRUCTURES FROM " + path.string());
+        } else {
+            phigs_.archiveStructureNetworks(1, {structures::modelRoot});
+            const auto ids = phigs_.archiveContents(1);
+            phigs_.closeArchiveFile(1);
+            say("ARCHIVED " + std::to_string(ids.size()) + " STRUCTURES TO " + path.string());
+        }
+    } catch (...) {
+        phigs_.closeArchiveFile(1);
+        throw;
+    }
+}
+
+}  // namespace acsynt

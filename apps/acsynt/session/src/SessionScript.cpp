@@ -1,0 +1,204 @@
+// What a session script adds to the devices' input (the directives: snapshot, summary,
+// hardcopy, pick_surface, view, undo, redo), the text summary and the recording.
+#include "acsynt/session/Session.h"
+
+#include "SessionShared.h"
+
+#include "geom/Evaluate.h"
+#include "phigs/input/ScriptInputSource.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace acsynt {
+
+using namespace phigs;
+using namespace session_detail;
+
+void Session::directive(const action::Directive& d, const InputAction& a) {
+    const std::string where = source_.position();
+    if (d.name == "pick_surface") {
+        if (d.arguments.size() != 5) {
+            fail(where + ": '" + a.text + "': expected pick_surface COMPONENT PATCH U W VIEW");
+            return;
+        }
+        pickSurface(d.arguments);
+        return;
+    }
+    if (d.name == "view") {
+        setView(d.arguments);
+        return;
+    }
+    if (d.name == "undo" || d.name == "redo") {
+        if (!d.arguments.empty()) {
+            fail(where + ": '" + a.text + "': expected " + d.name + " alone");
+            return;
+        }
+        if (d.name == "undo")
+            undo();
+        else
+            redo();
+        return;
+    }
+    if (d.arguments.size() != 1) {
+        fail(where + ": '" + a.text + "': expected " + d.name + " NAME");
+        return;
+    }
+    try {
+        writeDirective(d);
+    } catch (const std::runtime_error& e) {
+        fail(where + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        // A directive's file is refused (outside the output directory, unwritable): reported
+        // like any bad line, and the session goes on.
+        fail(where + ": " + e.what());
+    }
+}
+
+void Session::writeDirective(const action::Directive& d) {
+    if (d.name == "snapshot") {
+        const auto file = outputPath(d.arguments[0] + ".png");
+        if (!snapshot_) {
+            fail("NO PICTURE OUTPUT FOR SNAPSHOT " + d.arguments[0]);
+            return;
+        }
+        picture();
+        snapshot_(file);
+        pictures_.push_back(file);
+        core_.log.push_back("snapshot " + file.string());
+    } else if (d.name == "hardcopy") {
+        writeHardcopy(d.arguments[0]);
+    } else if (d.name == "summary") {
+        const auto file = outputPath(d.arguments[0] + ".txt");
+        std::ofstream out(file);
+        if (!(out << summary()) || !out.flush()) throw std::runtime_error("CANNOT WRITE " + file.string());
+        core_.log.push_back("summary " + file.string());
+    }
+}
+
+// ---- reports
+
+std::string Session::summary() const {
+    std::ostringstream out;
+    out.precision(10);
+    out << "ACSYNT session summary\n";
+    for (std::size_t i = 0; i < core_.models.size(); ++i) {
+        const Model& m = core_.models.at(i);
+        out << "model " << m.name << (i == core_.models.currentIndex() ? " (current)" : "") << ": "
+            << m.components.size() << " components, " << m.patchCount() << " patches\n";
+    }
+    static const std::vector<Component> none;
+    const std::vector<Component>& components =
+        core_.models.empty() ? none : core_.models.current().components;
+    if (core_.lastPick && std::size_t(core_.lastPick->component) < components.size()) {
+        out << "last pick: " << components[std::size_t(core_.lastPick->component)].name << " patch "
+            << core_.lastPick->patch;
+        if (core_.lastPickDetail)
+            out << " at u " << core_.lastPickDetail->uv.x << " w " << core_.lastPickDetail->uv.y;
+        out << "\n";
+    }
+    if (core_.reference && std::size_t(core_.reference->component) < components.size()) {
+        const Component& c = components[std::size_t(core_.reference->component)];
+        out << "reference point: " << c.name << " patch " << core_.reference->patch << " u "
+            << core_.reference->u << " w " << core_.reference->w << "\n";
+    }
+    for (std::size_t i = 0; i < core_.mappings.size(); ++i) {
+        const MappingRecord& m = core_.mappings[i];
+        out << "mapping " << i + 1 << ": " << m.curveFile << " on " << m.model << "/" << m.component
+            << " patch " << m.reference.patch << " marker u " << m.reference.u << " w " << m.reference.w
+            << ": " << m.parts << " parts, " << m.loops << " loops (per part";
+        for (auto n : m.loopsPerPart) out << " " << n;
+        out << "), boundary walks " << m.boundaryWalks << "\n";
+        for (const PartReport& p : m.partReports) {
+            if (p.outcome == PartOutcome::Mapped) continue;
+            out << "  part " << p.name << ": " << (p.outcome == PartOutcome::Clipped ? "clipped" : "lost");
+            if (p.outcome == PartOutcome::Clipped)
+                out << ", " << p.loops << " loops, boundary walks " << p.boundaryWalks;
+            out << ": " << p.reason << "\n";
+        }
+    }
+    for (std::size_t i = 0; i < core_.reductions.size(); ++i) {
+        const ReductionRecord& r = core_.reductions[i];
+        out << "reduction " << i + 1 << ": " << r.model << "/" << r.component << " -> " << r.reducedModel
+            << ", " << r.direction << " by " << r.mode;
+        if (r.mode == "tolerance")
+            out << " " << r.tolerance;
+        else
+            out << " " << r.count;
+        out << ": control points " << r.countUBefore << " x " << r.countWBefore << " = "
+            << r.countUBefore * r.countWBefore << " -> " << r.countUAfter << " x " << r.countWAfter << " = "
+            << r.countUAfter * r.countWAfter << ", knots removed u " << r.removedU << " w " << r.removedW
+            << ", max error " << r.maxError << "\n";
+    }
+    for (const auto& p : pictures_) out << "picture " << p.string() << "\n";
+    out << "message: " << core_.message << "\n";
+    return out.str();
+}
+
+void Session::recordAs(std::string line, std::string comment) {
+    if (!core_.input || core_.input->history().empty()) return;
+    recordedAs_[core_.input->history().size() - 1] = {std::move(line), std::move(comment)};
+}
+
+std::string Session::recording() const {
+    std::string out = "# acsynt session recorded on a " + std::to_string(layout_.width) + " x " +
+                      std::to_string(layout_.height) +
+                      " screen: menu rows and pad buttons by name, picks on surfaces by component,\n"
+                      "# patch and (u, w), replayed where that point shows then\n";
+    const auto& history = core_.input->history();
+    auto extra = extraLines_.begin();
+    for (std::size_t i = 0; i <= history.size(); ++i) {
+        for (; extra != extraLines_.end() && extra->first <= i; ++extra) out += extra->second + "\n";
+        if (i == history.size()) break;
+        const auto it = recordedAs_.find(i);
+        if (it == recordedAs_.end()) {
+            out += ScriptInputSource::format(history[i]) + "\n";
+            continue;
+        }
+        if (!it->second.second.empty()) out += "# " + it->second.second + "\n";
+        out += it->second.first + "\n";
+    }
+    return out;
+}
+
+void Session::pickSurface(const std::vector<std::string>& a) {
+    const std::string line = "pick_surface " + a[0] + " " + a[1] + " " + a[2] + " " + a[3] + " " + a[4];
+    const auto patch = parseNumber(a[1]), u = parseNumber(a[2]), w = parseNumber(a[3]),
+               view = parseNumber(a[4]);
+    const int views = core_.fourViews ? 4 : 1;
+    if (!patch || !u || !w || !view || *patch != std::floor(*patch) || *view != std::floor(*view) ||
+        *view < 1 || *view > views) {
+        fail("BAD RECORDED PICK '" + line + "': expected COMPONENT PATCH U W VIEW, VIEW 1.." +
+             std::to_string(views));
+        return;
+    }
+    if (!requireModel()) return;
+    const Model& model = core_.models.current();
+    const auto comp = std::find_if(model.components.begin(), model.components.end(),
+                                   [&](const Component& c) { return c.name == a[0]; });
+    if (comp == model.components.end()) {
+        fail("RECORDED PICK: MODEL " + model.name + " HAS NO COMPONENT " + a[0]);
+        return;
+    }
+    const glm::dvec2 pixel = pixelOf(geom::evaluate(comp->surface, *u, *w), int(*view));
+    picture();
+    PickMeasure measure = core_.workstation->measurer().pick(pixel, core_.input->device(InputClass::Pick, 1));
+    const auto picked = ModelPicture::fromPath(measure.path);
+    const int index = int(comp - model.components.begin());
+    if (measure.status != InputStatus::Ok || !picked || picked->component != index ||
+        picked->patch != int(*patch) || !measure.surface) {
+        fail("RECORDED PICK OF " + a[0] + " PATCH " + a[1] + " AT U = " + a[2] + " W = " + a[3] +
+             " IS NOT WHAT SHOWS AT PIXEL " + number(pixel.x, 5) + " " + number(pixel.y, 5) + " OF VIEW " +
+             a[4] + " NOW");
+        return;
+    }
+    measure.surface->uv = {*u, *w};  // the recorded parameters, exactly
+    pickView_ = int(*view);
+    handle(EventReport{core_.workstation->id(), InputClass::Pick, 1, measure, false});
+    pickView_ = 0;
+}
+
+}  // namespace acsynt
