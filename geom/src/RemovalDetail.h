@@ -101,6 +101,8 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
 // (t contains tau): the weights of coarse coefficients mu-p .. mu in fine coefficient j, by the
 // Oslo algorithm (the coarse B-splines' blossoms at t[j+1..j+p], a Cox-de Boor triangle whose
 // levels take successive fine knots). Writes p+1 weights to out and returns mu.
+inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const std::vector<double>& t,
+                             std::size_t j, std::size_t mu, double* out);
 inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size_t nTau,
                            const std::vector<double>& t, std::size_t j, double* out) {
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -109,6 +111,13 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
     mu = mu == 0 ? 0 : mu - 1;
     mu = std::clamp(mu, p, nTau - 1);
     while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
+    return osloRowAt(degree, tau, t, j, mu, out);
+}
+
+// osloRow with the span mu already found (a caller walking ascending t finds it cheaper).
+inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const std::vector<double>& t,
+                             std::size_t j, std::size_t mu, double* out) {
+    const std::size_t p = static_cast<std::size_t>(degree);
     out[0] = 1.0;
     for (std::size_t level = 1; level <= p; ++level) {
         const double x = t[j + level];
