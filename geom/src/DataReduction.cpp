@@ -1395,8 +1395,16 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             before + reduceLoop(s, options, out.fits, accept, presentError, &history, &originalSpline);
     }
     out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
-    if (measuring || options.report)
+    if ((measuring || options.report) && params.size() >= 2) {
+        // The loop's witnesses map the original's parameters to their nearest points on the
+        // result: as bounds and seeds they spare most inversions (the maxima stay those of
+        // inverting every sample); kept ascending, as the map must be.
+        ParameterMap map{params, witness};
+        for (std::size_t i = 1; i < map.to.size(); ++i) map.to[i] = std::max(map.to[i], map.to[i - 1]);
+        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan, map);
+    } else if (measuring || options.report) {
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+    }
     // The guarantee: if the denser final measurement finds the tolerance broken, step back
     // through the accepted states until it holds (the original always does).
     while (measuring && out.deviation.maxError > options.tolerance) {

@@ -355,7 +355,8 @@ TEST_CASE("the final measurement steps back when coarse loop samples let the tol
         steppedBack += r.steppedBack;
         REQUIRE(r.deviation.maxError <= o.tolerance);
         REQUIRE(r.removed == c.points.size() - r.curve.points.size());
-        REQUIRE(measureDeviation(c, r.curve, 2).maxError == r.deviation.maxError);
+        // The report inverts from the loop's witnesses: the same maxima up to rounding.
+        REQUIRE(measureDeviation(c, r.curve, 2).maxError == Approx(r.deviation.maxError).epsilon(1e-9));
     }
     REQUIRE(steppedBack > 0);
 }
