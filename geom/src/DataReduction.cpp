@@ -1292,12 +1292,21 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         if ((fitted->removed > 0 && !refined) || n <= p + 1 || settled) return *fitted;
     }
     Spline s = runLinear();
+    // Where every knot the linear stage left weighs more than the cutoff, the loop would try
+    // none: its state stands (within the tolerance by the coefficient bound), nothing is sampled.
+    bool loopTriesNone = false;
+    if (measuring && !batch && options.weightCutoff > 0.0 && s.points.size() < n) {
+        loopTriesNone = true;
+        for (const KnotSignificance& k : rankKnots(s.degree, s.knots, s.points, 1))
+            loopTriesNone = loopTriesNone && k.weight > options.weightCutoff * options.tolerance;
+    }
 
     // Dense samples of the original; witness[i] is the parameter of the point of the current
     // reduced curve nearest to sample i (it drifts from params[i] as knots go).
     const std::vector<double> params =
-        batch ? std::vector<double>{}
-              : spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
+        batch || loopTriesNone
+            ? std::vector<double>{}
+            : spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
     const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
@@ -1391,8 +1400,9 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         out.removed = reducer.run(s.knots, s.points, out.fits, history);
     } else {
         const std::size_t before = n - s.points.size();
-        out.removed =
-            before + reduceLoop(s, options, out.fits, accept, presentError, &history, &originalSpline);
+        out.removed = before + (loopTriesNone ? 0
+                                              : reduceLoop(s, options, out.fits, accept, presentError,
+                                                           &history, &originalSpline));
     }
     out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
     if ((measuring || options.report) && params.size() >= 2) {
