@@ -136,11 +136,13 @@ inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const s
 // The largest degree the span power forms below take; higher degrees use Basis.h.
 constexpr std::size_t smallDegree = 7;
 
-// Calls f(std::integral_constant<std::size_t, P>{}) with P = degree for the common degrees
-// (2-5), whose loops the callers' templates unroll, and P = 0 (any degree) for the others.
+// Calls f(std::integral_constant<std::size_t, P>{}) with P = degree for degrees 1 to
+// smallDegree, whose loops the callers' templates unroll, and P = 0 (any degree) for the others.
 template <class F>
 inline void withFixedDegree(std::size_t degree, F&& f) {
     switch (degree) {
+        case 1:
+            return f(std::integral_constant<std::size_t, 1>{});
         case 2:
             return f(std::integral_constant<std::size_t, 2>{});
         case 3:
@@ -149,6 +151,10 @@ inline void withFixedDegree(std::size_t degree, F&& f) {
             return f(std::integral_constant<std::size_t, 4>{});
         case 5:
             return f(std::integral_constant<std::size_t, 5>{});
+        case 6:
+            return f(std::integral_constant<std::size_t, 6>{});
+        case 7:
+            return f(std::integral_constant<std::size_t, 7>{});
         default:
             return f(std::integral_constant<std::size_t, 0>{});
     }
