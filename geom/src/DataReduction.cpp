@@ -232,7 +232,8 @@ private:
 // curve's knots among them leaves a state the removal loop cannot improve (on the generated classes
 // separations 1, 2, 3 kept 9-16 / 9-17 / 9-16 points on degrees 1-7, and 127 / 117 / 115 on the long curve).
 constexpr std::size_t kLinearSeparation = 3;
-Spline linearRemoval(const Curve& curve, double tolerance, int passes) {
+Spline linearRemoval(const Curve& curve, double tolerance, int passes,
+                     const std::vector<KnotSignificance>& firstRanking) {
     const std::size_t p = static_cast<std::size_t>(curve.degree);
     Spline s{curve.degree, curve.knots, curve.points, 1};
     LinearFit fit(curve);
@@ -256,7 +257,8 @@ Spline linearRemoval(const Curve& curve, double tolerance, int passes) {
     };
     Spline trial, best;
     for (int pass = 0; pass < passes; ++pass) {
-        std::vector<KnotSignificance> all = rankKnots(s.degree, s.knots, s.points, 1);
+        std::vector<KnotSignificance> all =
+            pass == 0 && !firstRanking.empty() ? firstRanking : rankKnots(s.degree, s.knots, s.points, 1);
         // Positions among the distinct interior values; the ranking stays in order.
         std::vector<double> values;
         for (const KnotSignificance& k : all) values.push_back(k.value);
@@ -913,7 +915,8 @@ Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, doub
 // count that passed and the largest that failed.
 template <class LinearCount>
 CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o,
-                                      LinearCount&& linearCount, bool& refined, bool& settled) {
+                                      LinearCount&& linearCount, bool& refined, bool& settled,
+                                      std::vector<KnotSignificance>& originalRanking) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
     const int measureDensity = 2 * o.samplesPerSpan;
@@ -923,6 +926,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     std::vector<KnotSignificance> ranked;  // the original's knots by weight
     out.curve = removeKnotsInRankOrder(curve, o.ends, std::max(1e-6 * o.tolerance, 1e-13 * size),
                                        o.maxRemovals, std::numeric_limits<int>::max(), &ranked);
+    originalRanking = ranked;  // for the linear stage's first pass
     if (out.curve.points.size() < n0) {
         out.deviation = measureDeviation(curve, out.curve, measureDensity);
         if (out.deviation.maxError > o.tolerance) out.curve = curve;
@@ -933,7 +937,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // points keeps it either, and the search would only confirm that, probe by probe.
     if (o.weightCutoff > 0.0) {
         double smallest = std::numeric_limits<double>::infinity();
-        for (const KnotSignificance& s : rankKnots(out.curve)) smallest = std::min(smallest, s.weight);
+        std::vector<KnotSignificance> reranked;
+        const std::vector<KnotSignificance>& left =
+            out.curve.points.size() == n0 ? ranked : (reranked = rankKnots(out.curve));
+        for (const KnotSignificance& s : left) smallest = std::min(smallest, s.weight);
         if (smallest > o.weightCutoff * o.tolerance) {
             out.removed = n0 - out.curve.points.size();
             settled = true;
@@ -1277,15 +1284,17 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                         options.ends.fixedDerivatives == 0 && n > p + 1 && options.maxRemovals >= n;
     const Spline originalSpline{curve.degree, curve.knots, curve.points, 1};
     std::optional<Spline> linearState;
+    std::vector<KnotSignificance> originalRanking;  // rankKnots(curve), once the search has made it
     auto runLinear = [&]() -> const Spline& {
-        if (!linearState) linearState = linear ? linearRemoval(curve, tol, 30) : originalSpline;
+        if (!linearState)
+            linearState = linear ? linearRemoval(curve, tol, 30, originalRanking) : originalSpline;
         return *linearState;
     };
     std::optional<CurveReduction> fitted;
     if (measuring && options.freeKnots && clamped) {
         bool refined = false, settled = false;
         fitted = reduceCurveByFreeKnots(
-            curve, options, [&] { return runLinear().points.size(); }, refined, settled);
+            curve, options, [&] { return runLinear().points.size(); }, refined, settled, originalRanking);
         // The removal loop runs too where nothing fitted below the original or the original
         // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win. Where
         // every knot's weight is past the cutoff (settled), the loop would try none.
