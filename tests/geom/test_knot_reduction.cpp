@@ -119,13 +119,15 @@ TEST_CASE("a densely refined, jittered curve of degree 1 to 7 reduces to about i
     REQUIRE(byLoop >= 15);  // of 21: the linear stage and the loop ran on most
 }
 
-TEST_CASE("a refined curve jittered by 1e-5 of degree 4 to 6 reduces to about its simpler curve",
+TEST_CASE("a refined curve jittered by 1e-5 of degree 4 to 7 reduces to about its simpler curve",
           "[geom][knots][reduction]") {
     // Jitter near a hundredth of the tolerance hides the simpler curve's knots from the ranking
     // by weight, and the first moved-knot fit overshoots far below the tolerance: the removal
-    // loop must still run and find the simpler curve, whichever way the result is made.
+    // loop must still run and find the simpler curve, whichever way the result is made. At degree
+    // 7 the first count can be the original's less one, too many knots for the significant-knot
+    // fit's samples: a check that cannot be made must not leave the search alone.
     std::mt19937 rng(43);
-    for (int p = 4; p <= 6; ++p)
+    for (int p = 4; p <= 7; ++p)
         for (int trial = 0; trial < 3; ++trial) {
             const std::size_t baseCount = static_cast<std::size_t>(p + 8);
             const Curve simple = geomtest::randomCurve(rng, p, baseCount, false, true);
@@ -141,7 +143,7 @@ TEST_CASE("a refined curve jittered by 1e-5 of degree 4 to 6 reduces to about it
                            << " points (free-knot fit: " << r.freeKnotFit << "), the simpler curve has "
                            << baseCount);
             REQUIRE(measureDeviation(refined, r.curve, 64).maxError <= o.tolerance);
-            REQUIRE(r.curve.points.size() <= baseCount + 2);
+            REQUIRE(r.curve.points.size() <= baseCount + 3);
         }
 }
 
