@@ -1137,9 +1137,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     }
     ++out.fits;
     FreeKnotFit moved = fitter.fit(first, {}, true, 0, FreeKnotStops{giveUp, stopBelow(first, lowest - 1)});
-    // A significant-knot fit that could not be made (its samples too few for that many knots)
-    // tells nothing: both run.
-    refined = !std::isfinite(significantError) ||
+    // Where the model's first count is the original's less one (it knows nothing of the curve)
+    // and the significant-knot fit could not be made there (too few samples for its knots), the
+    // check tells nothing: both run.
+    refined = (!std::isfinite(significantError) && first + 1 >= ceiling) ||
               significantError <= 45.0 * std::max(moved.sampleError, o.tolerance);
     // On a refined curve the removal loop runs too, from the linear stage's state: the search
     // need not look at its count or above (on refined curves it probed there at length).
