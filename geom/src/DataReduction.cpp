@@ -1135,17 +1135,24 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         out.removed = n0 - out.curve.points.size();
         return out;
     }
-    ++out.fits;
-    FreeKnotFit moved = fitter.fit(first, {}, true, 0, FreeKnotStops{giveUp, stopBelow(first, lowest - 1)});
     // Where the model's first count is the original's less one (it knows nothing of the curve)
     // and the significant-knot fit could not be made there (too few samples for its knots), the
-    // check tells nothing: both run.
-    refined = (!std::isfinite(significantError) && first + 1 >= ceiling) ||
-              significantError <= 45.0 * std::max(moved.sampleError, o.tolerance);
+    // check tells nothing: both run. Where the significant knots come within 45 times the
+    // tolerance, the loop runs whatever the moved-knot fit gives (see below).
+    refined =
+        (!std::isfinite(significantError) && first + 1 >= ceiling) || significantError <= 45.0 * o.tolerance;
     // On a refined curve the removal loop runs too, from the linear stage's state: the search
     // need not look at its count or above (on refined curves it probed there at length).
     if (refined) ceiling = std::min(ceiling, linearCount());
-    // (A first fit at or above the ceiling is never probed: the search starts from the model.)
+    // A first fit at or above the ceiling is never probed (the search starts from the model):
+    // it is made only below it.
+    FreeKnotFit moved;
+    if (first < ceiling) {
+        ++out.fits;
+        moved = fitter.fit(first, {}, true, 0, FreeKnotStops{giveUp, stopBelow(first, lowest - 1)});
+        refined = refined || significantError <= 45.0 * moved.sampleError;
+        if (refined) ceiling = std::min(ceiling, linearCount());
+    }
     if (ceiling > lowest) search(first, std::move(moved));
     out.removed = n0 - out.curve.points.size();
     return out;
