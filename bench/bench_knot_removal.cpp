@@ -159,7 +159,7 @@ void figure(const std::string& name, double value) {
 /// Reduces every generated class (or the one named `only`) with geom and SISL by turns; prints
 /// the table and adds the worst geom/SISL time and control point ratios to the JSON.
 void runClasses(const std::string& only = {}) {
-    std::printf("\nGenerated classes: control points left, measured error / tolerance, best of 3 runs\n");
+    std::printf("\nGenerated classes: control points left, measured error / tolerance, best of 9 runs\n");
     std::printf("%-16s %6s %8s | %6s %7s %9s | %6s %7s %9s | %6s %6s\n", "class", "poles", "tol", "geom",
                 "err/tol", "ms", "sisl", "err/tol", "ms", "time", "cps");
     double worstTime = 0, worstCps = 0, worstError = 0;
@@ -171,7 +171,7 @@ void runClasses(const std::string& only = {}) {
         int status = 0;
         geom::Curve s;
         const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
-                                          [&] { s = sislReduce(c.curve, c.tolerance, status); }, 3);
+                                          [&] { s = sislReduce(c.curve, c.tolerance, status); });
         const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
         const double serr =
             s.points.empty() ? -1.0 : geom::measureDeviation(c.curve, s).maxError / c.tolerance;

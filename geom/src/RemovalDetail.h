@@ -101,6 +101,8 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
 // (t contains tau): the weights of coarse coefficients mu-p .. mu in fine coefficient j, by the
 // Oslo algorithm (the coarse B-splines' blossoms at t[j+1..j+p], a Cox-de Boor triangle whose
 // levels take successive fine knots). Writes p+1 weights to out and returns mu.
+inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const std::vector<double>& t,
+                             std::size_t j, std::size_t mu, double* out);
 inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size_t nTau,
                            const std::vector<double>& t, std::size_t j, double* out) {
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -109,6 +111,13 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
     mu = mu == 0 ? 0 : mu - 1;
     mu = std::clamp(mu, p, nTau - 1);
     while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
+    return osloRowAt(degree, tau, t, j, mu, out);
+}
+
+// osloRow with the span mu already found (a caller walking ascending t finds it cheaper).
+inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const std::vector<double>& t,
+                             std::size_t j, std::size_t mu, double* out) {
+    const std::size_t p = static_cast<std::size_t>(degree);
     out[0] = 1.0;
     for (std::size_t level = 1; level <= p; ++level) {
         const double x = t[j + level];
@@ -127,11 +136,13 @@ inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size
 // The largest degree the span power forms below take; higher degrees use Basis.h.
 constexpr std::size_t smallDegree = 7;
 
-// Calls f(std::integral_constant<std::size_t, P>{}) with P = degree for the common degrees
-// (2-5), whose loops the callers' templates unroll, and P = 0 (any degree) for the others.
+// Calls f(std::integral_constant<std::size_t, P>{}) with P = degree for degrees 1 to
+// smallDegree, whose loops the callers' templates unroll, and P = 0 (any degree) for the others.
 template <class F>
 inline void withFixedDegree(std::size_t degree, F&& f) {
     switch (degree) {
+        case 1:
+            return f(std::integral_constant<std::size_t, 1>{});
         case 2:
             return f(std::integral_constant<std::size_t, 2>{});
         case 3:
@@ -140,6 +151,10 @@ inline void withFixedDegree(std::size_t degree, F&& f) {
             return f(std::integral_constant<std::size_t, 4>{});
         case 5:
             return f(std::integral_constant<std::size_t, 5>{});
+        case 6:
+            return f(std::integral_constant<std::size_t, 6>{});
+        case 7:
+            return f(std::integral_constant<std::size_t, 7>{});
         default:
             return f(std::integral_constant<std::size_t, 0>{});
     }

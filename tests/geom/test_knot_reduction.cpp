@@ -119,6 +119,68 @@ TEST_CASE("a densely refined, jittered curve of degree 1 to 7 reduces to about i
     REQUIRE(byLoop >= 15);  // of 21: the linear stage and the loop ran on most
 }
 
+TEST_CASE("a refined curve jittered by 1e-5 of degree 4 to 7 reduces to about its simpler curve",
+          "[geom][knots][reduction]") {
+    // Jitter near a hundredth of the tolerance hides the simpler curve's knots from the ranking
+    // by weight, and the first moved-knot fit overshoots far below the tolerance: the removal
+    // loop must still run and find the simpler curve, whichever way the result is made. At degree
+    // 7 the first count can be the original's less one, too many knots for the significant-knot
+    // fit's samples: a check that cannot be made must not leave the search alone.
+    std::mt19937 rng(43);
+    for (int p = 4; p <= 7; ++p)
+        for (int trial = 0; trial < 3; ++trial) {
+            const std::size_t baseCount = static_cast<std::size_t>(p + 8);
+            const Curve simple = geomtest::randomCurve(rng, p, baseCount, false, true);
+            std::uniform_real_distribution<double> unit(0.01, 0.99), jitter(-1e-5, 1e-5);
+            std::vector<double> inserted;
+            for (int i = 0; i < 80; ++i) inserted.push_back(unit(rng));
+            Curve refined = refineKnots(simple, inserted);
+            for (glm::dvec3& q : refined.points) q += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            const CurveReduction r = reduceCurve(refined, o);
+            INFO("degree " << p << ", trial " << trial << ": " << r.curve.points.size()
+                           << " points (free-knot fit: " << r.freeKnotFit << "), the simpler curve has "
+                           << baseCount);
+            REQUIRE(measureDeviation(refined, r.curve, 64).maxError <= o.tolerance);
+            REQUIRE(r.curve.points.size() <= baseCount + 3);
+        }
+}
+
+TEST_CASE("a refined, jittered curve with C0 corners reduces to about its simpler curve, corners kept",
+          "[geom][knots][reduction]") {
+    // Interior knots of multiplicity p (corners) among 50 inserted ones: the original's own
+    // significant knots fit, so the removal loop decides; it must keep every corner and the error.
+    std::mt19937 rng(41);
+    for (int p = 2; p <= 4; ++p)
+        for (int trial = 0; trial < 3; ++trial) {
+            const std::vector<double> corners{0.3, 0.65};
+            std::vector<double> knots(static_cast<std::size_t>(p) + 1, 0.0);
+            for (double c : corners) knots.insert(knots.end(), static_cast<std::size_t>(p), c);
+            knots.insert(knots.end(), static_cast<std::size_t>(p) + 1, 1.0);
+            std::vector<glm::dvec3> points;
+            for (std::size_t i = 0; i + static_cast<std::size_t>(p) + 1 < knots.size(); ++i)
+                points.push_back(geomtest::randomPoint(rng));
+            const Curve simple(p, knots, points);
+            std::uniform_real_distribution<double> unit(0.02, 0.98), jitter(-1e-6, 1e-6);
+            std::vector<double> inserted;
+            for (int i = 0; i < 50; ++i) inserted.push_back(unit(rng));
+            Curve refined = refineKnots(simple, inserted);
+            for (glm::dvec3& q : refined.points) q += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            const CurveReduction r = reduceCurve(refined, o);
+            INFO("degree " << p << ", trial " << trial << ": " << r.curve.points.size()
+                           << " points, the simpler "
+                           << "curve has " << simple.points.size());
+            REQUIRE(measureDeviation(refined, r.curve, 64).maxError <= o.tolerance);
+            REQUIRE(r.deviation.maxError <= o.tolerance);
+            REQUIRE(r.removed == refined.points.size() - r.curve.points.size());
+            REQUIRE(r.curve.points.size() <= simple.points.size() + 2);
+            for (double c : corners) REQUIRE(std::count(r.curve.knots.begin(), r.curve.knots.end(), c) >= p);
+        }
+}
+
 TEST_CASE("count-driven reduction removes exactly the number asked for and reports its error",
           "[geom][knots][reduction]") {
     std::mt19937 rng(33);
@@ -321,7 +383,8 @@ TEST_CASE("the final measurement steps back when coarse loop samples let the tol
         steppedBack += r.steppedBack;
         REQUIRE(r.deviation.maxError <= o.tolerance);
         REQUIRE(r.removed == c.points.size() - r.curve.points.size());
-        REQUIRE(measureDeviation(c, r.curve, 2).maxError == r.deviation.maxError);
+        // The report inverts from the loop's witnesses: the same maxima up to rounding.
+        REQUIRE(measureDeviation(c, r.curve, 2).maxError == Approx(r.deviation.maxError).epsilon(1e-9));
     }
     REQUIRE(steppedBack > 0);
 }

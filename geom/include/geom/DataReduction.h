@@ -30,10 +30,10 @@ struct ReductionOptions {
     /// Curves in tolerance mode: after the knots that go exactly, search the control point count
     /// with free-knot fits (FreeKnotFit.h: the knots move, the samples slip along the curve,
     /// Lawson reweighting towards the best max-norm fit), each measured by CurveDeviationMeter;
-    /// usually fewer control points than the removal loop. Where the
-    /// curve looks refined from a few knots (its most significant knots fit nearly as well), or
-    /// no count passes, the removal loop runs too and the fewer points win. false runs the
-    /// removal loop alone. Surfaces and count mode always take the removal loop.
+    /// usually fewer control points than the removal loop. Where the curve's most significant
+    /// knots already fit at the first count, the removal loop alone decides; where they fit
+    /// nearly as well as moved knots, or no count passes, it runs too and the fewer points win.
+    /// false runs the removal loop alone. Surfaces and count mode always take the removal loop.
     bool freeKnots = true;
     /// Fit / correct / move rounds of a free-knot fit from a cold start (the search's later fits,
     /// started from the last one's knots, take half).
