@@ -477,7 +477,7 @@ private:
         flush();
         if (auto* found = subtrees_->entries.find(id))
             for (auto& e : *found)
-                if (e.stamp == stamp && e.prefix == path_ && (e.entry == child || *e.entry == *child)) {
+                if (e.stamp == stamp && (e.entry == child || *e.entry == *child) && e.prefix == path_) {
                     // Unchanged: the same segments again, shared, no item copied.
                     e.used = true;
                     reused += e.elements;
@@ -528,11 +528,12 @@ private:
         segment_.reset();
     }
 
-    DrawItem* emit(const Structure& s, int number, const State& state, DrawPrimitive primitive) {
+    template <class Primitive>
+    DrawItem* emit(const Structure& s, int number, const State& state, Primitive&& primitive) {
         if (filters_.invisibility && filters_.invisibility->accepts(state.names)) return nullptr;
         // Built in place: a draw item is large, and moving it costs as much as filling it.
         DrawItem& item = segment_->items.emplace_back();
-        item.primitive = std::move(primitive);
+        item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
         item.modelTransform = state.composite;
         item.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
         item.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
