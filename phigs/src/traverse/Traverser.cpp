@@ -11,6 +11,7 @@
 #include <climits>
 #include <map>
 #include <unordered_map>
+#include <utility>
 
 namespace phigs {
 
@@ -68,18 +69,93 @@ struct State {
 
 }  // namespace detail
 
+namespace detail {
+
+/// A list that keeps its first value in place and the others in a vector: most lists here hold
+/// one value, and reading it then touches no second block of memory.
+template <class T>
+class OneInline {
+public:
+    bool empty() const { return !hasFirst_; }
+    std::size_t size() const { return hasFirst_ ? 1 + rest_.size() : 0; }
+    void push_back(T value) {
+        if (hasFirst_) {
+            rest_.push_back(std::move(value));
+        } else {
+            first_ = std::move(value);
+            hasFirst_ = true;
+        }
+    }
+    template <class F>
+    void forEach(F f) {
+        if (!hasFirst_) return;
+        f(first_);
+        for (T& v : rest_) f(v);
+    }
+    template <class P>
+    T* findIf(P p) {
+        if (!hasFirst_) return nullptr;
+        if (p(first_)) return &first_;
+        for (T& v : rest_)
+            if (p(v)) return &v;
+        return nullptr;
+    }
+    /// Keeps the values `keep` accepts, in order.
+    template <class P>
+    void keepIf(P keep) {
+        std::vector<T> kept;
+        forEach([&](T& v) {
+            if (keep(v)) kept.push_back(std::move(v));
+        });
+        *this = {};
+        for (T& v : kept) push_back(std::move(v));
+    }
+    void popFront() {
+        bool dropped = false;
+        keepIf([&](const T&) { return std::exchange(dropped, true); });
+    }
+
+private:
+    T first_{};
+    bool hasFirst_ = false;
+    std::vector<T> rest_;
+};
+
+/// A path prefix, in place when short (most networks are shallow).
+struct PathPrefix {
+    static constexpr std::size_t kInline = 3;
+    std::array<DrawPathLevel, kInline> near{};
+    std::size_t depth = 0;
+    std::vector<DrawPathLevel> far;  ///< the whole prefix when deeper than kInline
+
+    PathPrefix() = default;
+    explicit PathPrefix(const std::vector<DrawPathLevel>& path) : depth(path.size()) {
+        if (depth <= kInline)
+            std::copy(path.begin(), path.end(), near.begin());
+        else
+            far = path;
+    }
+    bool operator==(const std::vector<DrawPathLevel>& path) const {
+        if (path.size() != depth) return false;
+        return depth <= kInline ? std::equal(path.begin(), path.end(), near.begin()) : far == path;
+    }
+};
+
+}  // namespace detail
+
 /// What one execution of a structure (with its descendants) produced, for a given inherited
-/// state and path: reused as long as no structure of that subtree changed.
+/// state and path: reused as long as no structure of that subtree changed. The fields a reuse
+/// reads lie together in place, so checking an unchanged subtree costs about one cache miss.
 struct Traverser::SubtreeCache {
     struct Entry {
-        std::shared_ptr<const detail::State> entry;  ///< shared by the entries made from one state
-        std::vector<DrawPathLevel> prefix;
         std::uint64_t stamp = 0;
-        std::vector<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists that hold them
+        std::shared_ptr<const detail::State> entry;  ///< shared by the entries made from one state
+        detail::PathPrefix prefix;
         std::uint64_t elements = 0;
         bool used = true;
+        detail::OneInline<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists holding them
     };
-    IdTable<std::vector<Entry>> entries;
+    IdTable<detail::OneInline<Entry>> entries;
     std::shared_ptr<const detail::State> lastInherited;  ///< the last state handed to an execute
     std::size_t made = 0;                                ///< entries made since the last sweep
     std::size_t kept = 0;                                ///< entries the last sweep kept
@@ -91,9 +167,9 @@ struct Traverser::SubtreeCache {
     void prune() {
         if (++sinceSweep < kSweepEvery && made * 8 <= kept + 64) return;
         kept = 0;
-        entries.forEach([&](int, std::vector<Entry>& list) {
-            std::erase_if(list, [](const Entry& e) { return !e.used; });
-            for (auto& e : list) e.used = false;
+        entries.forEach([&](int, detail::OneInline<Entry>& list) {
+            list.keepIf([](const Entry& e) { return e.used; });
+            list.forEach([](Entry& e) { e.used = false; });
             kept += list.size();
         });
         made = sinceSweep = 0;
@@ -475,15 +551,18 @@ private:
         }
         const std::uint64_t stamp = subtreeStamp(id);
         flush();
+        auto matches = [&](const Traverser::SubtreeCache::Entry& e) {
+            return e.stamp == stamp && (e.entry == child || *e.entry == *child) && e.prefix == path_;
+        };
         if (auto* found = subtrees_->entries.find(id))
-            for (auto& e : *found)
-                if (e.stamp == stamp && (e.entry == child || *e.entry == *child) && e.prefix == path_) {
-                    // Unchanged: the same segments again, shared, no item copied.
-                    e.used = true;
-                    reused += e.elements;
-                    for (const auto& segment : e.segments) out_.items.appendSegment(segment);
-                    return;
-                }
+            if (auto* e = found->findIf(matches)) {
+                // Unchanged: the same segments again, shared, no item copied.
+                e->used = true;
+                reused += e->elements;
+                e->segments.forEach(
+                    [&](const DrawItems::SegmentPtr& segment) { out_.items.appendSegment(segment); });
+                return;
+            }
         const std::size_t firstSegment = out_.items.segmentCount();
         const std::uint64_t firstElements = visited + reused;
         State state = *child;
@@ -491,13 +570,13 @@ private:
         flush();
         Traverser::SubtreeCache::Entry e;
         e.entry = child;
-        e.prefix = path_;
+        e.prefix = detail::PathPrefix(path_);
         e.stamp = stamp;
         const auto& segments = out_.items.segments();
-        e.segments.assign(segments.begin() + static_cast<long>(firstSegment), segments.end());
+        for (std::size_t k = firstSegment; k < segments.size(); ++k) e.segments.push_back(segments[k]);
         e.elements = visited + reused - firstElements;
         auto& list = subtrees_->entries[id];
-        if (list.size() >= 8) list.erase(list.begin());
+        if (list.size() >= 8) list.popFront();
         list.push_back(std::move(e));
         ++subtrees_->made;
     }
