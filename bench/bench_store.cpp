@@ -1,11 +1,12 @@
 // Structure store benchmark: one root executing leaves of 100 elements each (one NURBS surface,
 // attributes, polylines), posted on an offscreen workstation. Per size: inserts per second,
 // full traversal ns per element against a visit of the same elements kept in plain vectors
-// (the baseline, same run), incremental traversal with nothing changed, peak resident bytes per
-// element (the whole process above its start: store, workstation, draw lists, caches), and one
-// edit of a posted leaf up to the next draw list. `bench_store` runs 10k, 100k, 1M and 4M
-// elements, each in its own process, and prints the 1M figures plus `scaling`;
-// `bench_store --elements N` runs one size. Process CPU time. Ends with one JSON object.
+// (the baseline, same run, made and freed before the store), incremental traversal with nothing
+// changed, peak resident bytes per element (the whole process above its start: store,
+// workstation, draw lists, caches), and one edit of a posted leaf up to the next draw list.
+// `bench_store` runs 10k, 100k, 1M and 4M elements, each in its own process, and prints the 1M
+// figures plus `scaling`; `bench_store --elements N` runs one size. Process CPU time. Ends with
+// one JSON object.
 
 #include "phigs/Phigs.h"
 
@@ -146,7 +147,19 @@ double editMs(Phigs& phigs, Workstation& ws, int structure, int at, Element elem
 
 Figures run(int leaves, long rssAtStart) {
     const int perLeaf = 100;
+    const int repeats = 3;
     Figures f;
+    {
+        // The baseline in the same run: plain vectors of the same leaves, made and freed before
+        // the store, so that the peak below is the store's and not the baseline's.
+        auto plain = plainLeaves(leaves, perLeaf);
+        std::vector<PlainItem> plainItems;
+        plainVisit(plain, plainItems);
+        double start = cpuNow();
+        std::size_t visited = 0;
+        for (int r = 0; r < repeats; ++r) visited = plainVisit(plain, plainItems);
+        f.rawVisitNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(visited);
+    }
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();
@@ -180,7 +193,6 @@ Figures run(int leaves, long rssAtStart) {
     f.surfacesFirst = counters.surfacesTessellated;
 
     // Full traversals (every element walked, every draw item made) and incremental ones.
-    const int repeats = 3;
     ws.traverser().setIncremental(false);
     start = cpuNow();
     for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
@@ -192,16 +204,6 @@ Figures run(int leaves, long rssAtStart) {
     for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
     f.unchangedNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(f.elements);
     f.reused = ws.traverser().elementsReused();
-
-    // The baseline in the same run: plain vectors of the same leaves.
-    auto plain = plainLeaves(leaves, perLeaf);
-    std::vector<PlainItem> plainItems;
-    plainVisit(plain, plainItems);
-    start = cpuNow();
-    std::size_t visited = 0;
-    for (int r = 0; r < repeats; ++r) visited = plainVisit(plain, plainItems);
-    f.rawVisitNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(visited);
-    plain = {}, plainItems = {};
 
     // One edit of one posted leaf: a polyline, then the surface.
     const int leaf = leaves / 2 + 2;

@@ -41,6 +41,13 @@ const ExecuteStructureElement* asExecute(const Element& e) {
     return std::get_if<ExecuteStructureElement>(&e);
 }
 
+/// Whether elements [first, last) of `s` hold an EXECUTE STRUCTURE.
+bool anyExecute(const Structure& s, std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last && i < s.elements.size(); ++i)
+        if (asExecute(s.elements[i].value)) return true;
+    return false;
+}
+
 }  // namespace
 
 void StructureStore::addListener(StoreListener* listener) {
@@ -49,6 +56,56 @@ void StructureStore::addListener(StoreListener* listener) {
 
 void StructureStore::removeListener(StoreListener* listener) {
     std::erase(listeners_, listener);
+}
+
+void StructureStore::touch(Structure& s) {
+    s.version = ++serial_;
+    if (!touched_.empty() && touched_.back() == s.id) return;
+    // Past a bound, one renewal of every version is cheaper than carrying each edit.
+    if (touched_.size() > 2 * structures_.size() + 64) {
+        touchedOverflow_ = true;
+        touched_.clear();
+    }
+    if (!touchedOverflow_) touched_.push_back(s.id);
+}
+
+void StructureStore::settleVersions() const {
+    if (touchedOverflow_) {
+        for (const auto& [id, s] : structures_) subtreeVersions_[id] = serial_;
+        touchedOverflow_ = false;
+        touched_.clear();
+        return;
+    }
+    if (touched_.empty()) return;
+    if (parentsStale_) {
+        parents_.clear();
+        for (const auto& [id, s] : structures_)
+            for (int child : executedBy(s)) parents_[child].push_back(id);
+        parentsStale_ = false;
+    }
+    // Every edit takes the newest serial up through the executing structures; a structure that
+    // already has it was reached before (networks are acyclic, but they share structures).
+    std::vector<int> todo;
+    for (int edited : touched_) {
+        if (!exists(edited)) continue;
+        todo.push_back(edited);
+        while (!todo.empty()) {
+            int id = todo.back();
+            todo.pop_back();
+            std::uint64_t& version = subtreeVersions_[id];
+            if (version == serial_) continue;
+            version = serial_;
+            if (const std::vector<int>* parents = parents_.find(id))
+                todo.insert(todo.end(), parents->begin(), parents->end());
+        }
+    }
+    touched_.clear();
+}
+
+std::uint64_t StructureStore::subtreeVersion(int id) const {
+    settleVersions();
+    const std::uint64_t* version = subtreeVersions_.find(id);
+    return version ? *version : 0;
 }
 
 void StructureStore::requireOpen(const char* function) const {
@@ -82,12 +139,14 @@ void StructureStore::openStructure(int id) {
               "structure " + std::to_string(*open_) + " is open");
     Structure& s = createIfMissing(id);
     open_ = id;
+    openStructure_ = &s;
     pointer_ = static_cast<int>(s.elements.size());
 }
 
 void StructureStore::closeStructure() {
     requireOpen("CLOSE STRUCTURE");
     open_.reset();
+    openStructure_ = nullptr;
     pointer_ = 0;
 }
 
@@ -139,18 +198,8 @@ std::set<int> StructureStore::network(int id) const {
 std::uint64_t StructureStore::networkStamp(int id) const {
     std::uint64_t hash = 1469598103934665603ull;
     auto mix = [&](std::uint64_t v) { hash = (hash ^ v) * 1099511628211ull; };
-    std::unordered_set<int> seen;
-    std::vector<int> todo{id};
-    while (!todo.empty()) {
-        int next = todo.back();
-        todo.pop_back();
-        if (!seen.insert(next).second) continue;
-        const Structure* s = find(next);
-        mix(static_cast<std::uint32_t>(next));
-        mix(s ? s->version : 0);
-        if (s)
-            for (int child : executedBy(*s)) todo.push_back(child);
-    }
+    mix(static_cast<std::uint32_t>(id));
+    mix(subtreeVersion(id));
     return hash;
 }
 
@@ -173,8 +222,11 @@ void StructureStore::insert(Element element) {
     requireOpen(function);
     checkElement(element, *open_, function);
     if (auto x = asExecute(element)) createIfMissing(x->structureId);
-    Structure& s = structures_.at(*open_);
-    if (editMode_ == EditMode::Replace && pointer_ > 0) {
+    Structure& s = *openStructure_;
+    const bool replacing = editMode_ == EditMode::Replace && pointer_ > 0;
+    if (replacing && asExecute(s.elements[static_cast<std::size_t>(pointer_ - 1)].value)) executesChanged();
+    if (auto x = asExecute(element); x && !parentsStale_) parents_[x->structureId].push_back(s.id);
+    if (replacing) {
         s.elements[static_cast<std::size_t>(pointer_ - 1)] = stored(std::move(element));
     } else {
         s.elements.insert(s.elements.begin() + pointer_, stored(std::move(element)));
@@ -185,13 +237,13 @@ void StructureStore::insert(Element element) {
 
 void StructureStore::setElementPointer(int position) {
     requireOpen("SET ELEMENT POINTER");
-    int count = static_cast<int>(structures_.at(*open_).elements.size());
+    int count = static_cast<int>(openStructure_->elements.size());
     pointer_ = std::clamp(position, 0, count);
 }
 
 void StructureStore::offsetElementPointer(int offset) {
     requireOpen("OFFSET ELEMENT POINTER");
-    int count = static_cast<int>(structures_.at(*open_).elements.size());
+    int count = static_cast<int>(openStructure_->elements.size());
     long long target = static_cast<long long>(pointer_) + offset;
     pointer_ = static_cast<int>(std::clamp<long long>(target, 0, count));
 }
@@ -199,7 +251,7 @@ void StructureStore::offsetElementPointer(int offset) {
 void StructureStore::setElementPointerAtLabel(int labelValue) {
     const char* function = "SET ELEMENT POINTER AT LABEL";
     requireOpen(function);
-    const auto& elements = structures_.at(*open_).elements;
+    const auto& elements = openStructure_->elements;
     for (std::size_t i = static_cast<std::size_t>(pointer_); i < elements.size(); ++i) {
         auto l = std::get_if<LabelElement>(&elements[i].value);
         if (l && l->label == labelValue) {
@@ -213,7 +265,9 @@ void StructureStore::setElementPointerAtLabel(int labelValue) {
 void StructureStore::deleteElement() {
     requireOpen("DELETE ELEMENT");
     if (pointer_ == 0) return;
-    Structure& s = structures_.at(*open_);
+    Structure& s = *openStructure_;
+    const auto at = static_cast<std::size_t>(pointer_ - 1);
+    if (anyExecute(s, at, at + 1)) executesChanged();
     s.elements.erase(s.elements.begin() + (pointer_ - 1));
     --pointer_;
     touch(s);
@@ -221,7 +275,7 @@ void StructureStore::deleteElement() {
 
 void StructureStore::deleteElementRange(int first, int second) {
     requireOpen("DELETE ELEMENT RANGE");
-    Structure& s = structures_.at(*open_);
+    Structure& s = *openStructure_;
     int count = static_cast<int>(s.elements.size());
     int low = std::clamp(std::min(first, second), 0, count);
     int high = std::clamp(std::max(first, second), 0, count);
@@ -229,6 +283,7 @@ void StructureStore::deleteElementRange(int first, int second) {
     // ISO 9592: the pointer goes to the element before the deleted ones; a range that deletes
     // nothing (0..0, or an empty structure) leaves it where it was.
     if (high < low) return;
+    if (anyExecute(s, static_cast<std::size_t>(low - 1), static_cast<std::size_t>(high))) executesChanged();
     s.elements.erase(s.elements.begin() + (low - 1), s.elements.begin() + high);
     touch(s);
     pointer_ = low - 1;
@@ -237,7 +292,7 @@ void StructureStore::deleteElementRange(int first, int second) {
 void StructureStore::deleteElementsBetweenLabels(int first, int second) {
     const char* function = "DELETE ELEMENTS BETWEEN LABELS";
     requireOpen(function);
-    Structure& s = structures_.at(*open_);
+    Structure& s = *openStructure_;
     auto findLabel = [&](std::size_t from, int value) -> std::optional<std::size_t> {
         for (std::size_t i = from; i < s.elements.size(); ++i) {
             auto l = std::get_if<LabelElement>(&s.elements[i].value);
@@ -251,6 +306,7 @@ void StructureStore::deleteElementsBetweenLabels(int first, int second) {
         raise(log_, errors::LabelsNotFound, function,
               "labels " + std::to_string(first) + ", " + std::to_string(second));
     if (*b > *a + 1) {
+        if (anyExecute(s, *a + 1, *b)) executesChanged();
         s.elements.erase(s.elements.begin() + static_cast<long>(*a + 1),
                          s.elements.begin() + static_cast<long>(*b));
         touch(s);
@@ -269,7 +325,8 @@ void StructureStore::copyAllElementsFromStructure(int id) {
         checkElement(e.value, *open_, function);
         copies.push_back(e.value);
     }
-    Structure& s = structures_.at(*open_);
+    Structure& s = *openStructure_;
+    if (anyExecute(*source, 0, source->elements.size())) executesChanged();
     std::vector<StoredElement> fresh;
     for (auto& e : copies) fresh.push_back(stored(std::move(e)));
     s.elements.insert(s.elements.begin() + pointer_, std::make_move_iterator(fresh.begin()),
@@ -284,6 +341,7 @@ void StructureStore::emptyStructure(int id) {
         it->second.id = id;
         touch(it->second);
     } else if (!it->second.elements.empty()) {
+        executesChanged();
         it->second.elements.clear();
         touch(it->second);
     }
@@ -291,6 +349,7 @@ void StructureStore::emptyStructure(int id) {
 }
 
 void StructureStore::removeReferencesTo(int id) {
+    executesChanged();
     for (auto& [sid, s] : structures_) {
         bool changed = false;
         for (std::size_t i = s.elements.size(); i-- > 0;) {
@@ -331,6 +390,7 @@ void StructureStore::deleteStructure(int id) {
     } else {
         structures_.erase(id);
         executed_.erase(id);
+        forgetVersions(id);
     }
 }
 
@@ -370,8 +430,12 @@ void StructureStore::deleteAllStructures() {
     for (int id : ids) notifyDeleted(id);
     structures_.clear();
     executed_.clear();
+    executesChanged();
+    subtreeVersions_.clear();
+    touched_.clear();
+    touchedOverflow_ = false;
     if (open_) {
-        createIfMissing(*open_);
+        openStructure_ = &createIfMissing(*open_);
         pointer_ = 0;
     }
 }
@@ -392,6 +456,7 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
         raise(log_, errors::StructureCycle, function,
               "structure " + std::to_string(result) + " would execute itself through " +
                   std::to_string(original));
+    executesChanged();
     std::vector<StoredElement> moved;
     if (auto from = structures_.find(original); from != structures_.end()) {
         moved = std::move(from->second.elements);
@@ -405,8 +470,10 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
     touch(to);
     if (open_ == result) pointer_ = static_cast<int>(to.elements.size());
     if (open_ == original) pointer_ = 0;
-    if (exists(original) && open_ != original && !referenced(original) && !postedAnywhere(original))
+    if (exists(original) && open_ != original && !referenced(original) && !postedAnywhere(original)) {
         structures_.erase(original);
+        forgetVersions(original);
+    }
 }
 
 // CHANGE STRUCTURE REFERENCES: the result is created only when something (an execute or a
@@ -422,6 +489,7 @@ void StructureStore::changeStructureReferences(int original, int result) {
         raise(log_, errors::StructureCycle, function,
               "references to " + std::to_string(original) + " redirected to " + std::to_string(result));
     if (!referenced(original) && !postedAnywhere(original)) return;
+    executesChanged();
     createIfMissing(result);
     for (auto& [id, s] : structures_) {
         bool changed = false;
@@ -453,7 +521,10 @@ void StructureStore::changeStructureIdentifierAndReferences(int original, int re
               "structure " + std::to_string(original) + " renamed " + std::to_string(result));
     changeStructureIdentifier(original, result);
     changeStructureReferences(original, result);
-    if (open_ != original) structures_.erase(original);
+    if (open_ != original) {
+        structures_.erase(original);
+        forgetVersions(original);
+    }
 }
 
 StructureStatus StructureStore::structureStatus(int id) const {
@@ -499,7 +570,7 @@ const Element& StructureStore::currentElement() const {
     if (pointer_ == 0)
         raise(nullptr, errors::ElementDoesNotExist, "INQUIRE CURRENT ELEMENT CONTENT",
               "element pointer is 0");
-    return structures_.at(*open_).elements[static_cast<std::size_t>(pointer_ - 1)].value;
+    return openStructure_->elements[static_cast<std::size_t>(pointer_ - 1)].value;
 }
 
 SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
@@ -569,6 +640,7 @@ void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>
     }
     if (hasCycle(graph))
         raise(log_, errors::StructureCycle, function, "the retrieved network would be cyclic");
+    executesChanged();
     for (const auto& [id, elements] : contents) {
         Structure& s = createIfMissing(id);
         s.elements.clear();

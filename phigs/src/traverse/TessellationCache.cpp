@@ -11,6 +11,7 @@ const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind
         return it->second.entry;
     }
     Entry entry = build();
+    ++builtSinceSweep_;
     switch (kind) {
         case Kind::Surface:
             ++counters_.surfacesTessellated;
@@ -26,6 +27,8 @@ const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind
 }
 
 void TessellationCache::prune() {
+    if (++prunesSinceSweep_ < kSweepEvery && builtSinceSweep_ * 8 <= keptBySweep_ + 64) return;
+    builtSinceSweep_ = prunesSinceSweep_ = 0;
     for (auto it = entries_.begin(); it != entries_.end();) {
         const Entry& e = it->second.entry;
         // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid keys.
@@ -37,6 +40,7 @@ void TessellationCache::prune() {
             ++it;
         }
     }
+    keptBySweep_ = entries_.size();
 }
 
 }  // namespace phigs

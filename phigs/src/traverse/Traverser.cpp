@@ -2,6 +2,7 @@
 
 #include "Tessellation.h"
 #include "phigs/store/Gdp.h"
+#include "phigs/store/IdTable.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -10,6 +11,7 @@
 #include <climits>
 #include <map>
 #include <unordered_map>
+#include <utility>
 
 namespace phigs {
 
@@ -56,6 +58,7 @@ struct State {
     int viewIndex = 0, pickId = 0, hlhsrId = 0;
     std::set<int> names;
     glm::dmat4 local{1.0}, global{1.0};
+    glm::dmat4 composite{1.0};  ///< global * local, kept current so each item need not multiply
     bool modelClip = false;
     std::vector<glm::dvec4> clipVolume, inheritedClipVolume;  ///< world coordinates
 
@@ -66,28 +69,116 @@ struct State {
 
 }  // namespace detail
 
+namespace detail {
+
+/// A list that keeps its first value in place and the others in a vector: most lists here hold
+/// one value, and reading it then touches no second block of memory.
+template <class T>
+class OneInline {
+public:
+    bool empty() const { return !hasFirst_; }
+    std::size_t size() const { return hasFirst_ ? 1 + rest_.size() : 0; }
+    void push_back(T value) {
+        if (hasFirst_) {
+            rest_.push_back(std::move(value));
+        } else {
+            first_ = std::move(value);
+            hasFirst_ = true;
+        }
+    }
+    template <class F>
+    void forEach(F f) {
+        if (!hasFirst_) return;
+        f(first_);
+        for (T& v : rest_) f(v);
+    }
+    template <class P>
+    T* findIf(P p) {
+        if (!hasFirst_) return nullptr;
+        if (p(first_)) return &first_;
+        for (T& v : rest_)
+            if (p(v)) return &v;
+        return nullptr;
+    }
+    /// Keeps the values `keep` accepts, in order.
+    template <class P>
+    void keepIf(P keep) {
+        std::vector<T> kept;
+        forEach([&](T& v) {
+            if (keep(v)) kept.push_back(std::move(v));
+        });
+        *this = {};
+        for (T& v : kept) push_back(std::move(v));
+    }
+    void popFront() {
+        bool dropped = false;
+        keepIf([&](const T&) { return std::exchange(dropped, true); });
+    }
+
+private:
+    T first_{};
+    bool hasFirst_ = false;
+    std::vector<T> rest_;
+};
+
+/// A path prefix, in place when short (most networks are shallow).
+struct PathPrefix {
+    static constexpr std::size_t kInline = 3;
+    std::array<DrawPathLevel, kInline> near{};
+    std::size_t depth = 0;
+    std::vector<DrawPathLevel> far;  ///< the whole prefix when deeper than kInline
+
+    PathPrefix() = default;
+    explicit PathPrefix(const std::vector<DrawPathLevel>& path) : depth(path.size()) {
+        if (depth <= kInline)
+            std::copy(path.begin(), path.end(), near.begin());
+        else
+            far = path;
+    }
+    bool operator==(const std::vector<DrawPathLevel>& path) const {
+        if (path.size() != depth) return false;
+        return depth <= kInline ? std::equal(path.begin(), path.end(), near.begin()) : far == path;
+    }
+};
+
+}  // namespace detail
+
 /// What one execution of a structure (with its descendants) produced, for a given inherited
-/// state and path: reused as long as no structure of that subtree changed.
+/// state and path: reused as long as no structure of that subtree changed. The fields a reuse
+/// reads lie together in place, so checking an unchanged subtree costs about one cache miss.
 struct Traverser::SubtreeCache {
     struct Entry {
-        detail::State entry;
-        std::vector<DrawPathLevel> prefix;
         std::uint64_t stamp = 0;
-        std::vector<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists that hold them
+        std::shared_ptr<const detail::State> entry;  ///< shared by the entries made from one state
+        detail::PathPrefix prefix;
         std::uint64_t elements = 0;
         bool used = true;
+        detail::OneInline<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists holding them
     };
-    std::unordered_map<int, std::vector<Entry>> entries;
-    std::unordered_map<int, std::pair<std::uint64_t, std::vector<int>>>
-        children;  ///< per structure: version, executed ids
+    IdTable<detail::OneInline<Entry>> entries;
+    std::shared_ptr<const detail::State> lastInherited;  ///< the last state handed to an execute
+    std::size_t made = 0;                                ///< entries made since the last sweep
+    std::size_t kept = 0;                                ///< entries the last sweep kept
+    std::size_t sinceSweep = 0;                          ///< traversals since the last sweep
 
+    /// Drops the entries no traversal used since the last sweep. A sweep visits every entry, so
+    /// it runs only once enough entries were made or traversals passed for its cost to be
+    /// shared among them; until then an unused entry only holds its segments a little longer.
     void prune() {
-        for (auto& [id, list] : entries) {
-            std::erase_if(list, [](const Entry& e) { return !e.used; });
-            for (auto& e : list) e.used = false;
-        }
-        std::erase_if(entries, [](const auto& kv) { return kv.second.empty(); });
+        if (++sinceSweep < kSweepEvery && made * 8 <= kept + 64) return;
+        kept = 0;
+        entries.forEach([&](int, detail::OneInline<Entry>& list) {
+            list.keepIf([](const Entry& e) { return e.used; });
+            list.forEach([](Entry& e) { e.used = false; });
+            kept += list.size();
+        });
+        made = sinceSweep = 0;
     }
+    void clear() {
+        entries.clear();
+        made = kept = sinceSweep = 0;
+    }
+    static constexpr std::size_t kSweepEvery = 16;
 };
 
 /// Light sets and depth cues as draw items index them, kept across traversals so that an item
@@ -385,23 +476,38 @@ private:
     void walk(int id, State& state) {
         const Structure* s = store_.find(id);
         if (!s) return;
+        // What the executes here hand down, made once until an element may change the state.
+        std::shared_ptr<const State> child;
         for (std::size_t i = 0; i < s->elements.size(); ++i) {
             ++visited;
             const int number = static_cast<int>(i) + 1;
             const StoredElement& element = s->elements[i];
             if (auto x = std::get_if<ExecuteStructureElement>(&element.value)) {
-                State child = state;  // push: the child inherits, and nothing it sets comes back
-                child.global = state.global * state.local;
-                child.local = glm::dmat4(1.0);
-                child.inheritedClipVolume = child.clipVolume;
+                if (!child) child = inherited(state);
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
                 path_.pop_back();
                 continue;
             }
+            child.reset();
             if (!segment_ && mayDraw(element.value)) segment_ = newSegment(*s, i);
             apply(*s, element, number, state);
         }
+    }
+
+    /// The state a structure executed from `state` starts with (a push: the child inherits,
+    /// and nothing it sets comes back). Equal to the last one handed down, it is that one, so
+    /// a cached subtree's state compares by pointer.
+    std::shared_ptr<const State> inherited(const State& state) {
+        auto child = std::make_shared<State>(state);
+        child->global = state.composite;
+        child->local = glm::dmat4(1.0);
+        child->inheritedClipVolume = child->clipVolume;
+        if (!subtrees_) return child;
+        std::shared_ptr<const State>& last = subtrees_->lastInherited;
+        if (last && *last == *child) return last;
+        last = child;
+        return last;
     }
 
     static std::uint64_t mix(std::uint64_t hash, std::uint64_t value) {
@@ -423,29 +529,10 @@ private:
         return h;
     }
 
-    /// A hash of the versions of every structure a subtree executes, memoized per traversal.
-    std::uint64_t subtreeStamp(int id, std::size_t depth = 0) {
-        if (path_.size() + depth > kMaxNetworkDepth) tooDeep();
-        if (auto it = stamps_.find(id); it != stamps_.end()) return it->second;
-        const Structure* s = store_.find(id);
-        std::uint64_t h = mix(mix(baseStamp_, static_cast<std::uint32_t>(id)), s ? s->version : 0);
-        if (s) {
-            auto& known = subtrees_->children[id];
-            if (known.first != s->version) {
-                known.first = s->version;
-                known.second.clear();
-                for (const auto& e : s->elements)
-                    if (auto x = std::get_if<ExecuteStructureElement>(&e.value))
-                        known.second.push_back(x->structureId);
-            }
-            // subtreeStamp may rehash `children`: walk a copy of the ids only when there are any.
-            if (!known.second.empty()) {
-                std::vector<int> children = known.second;
-                for (int child : children) h = mix(h, subtreeStamp(child, depth + 1));
-            }
-        }
-        stamps_[id] = h;
-        return h;
+    /// What a subtree's reuse depends on: the tables, the filters and the store's version of
+    /// every structure the subtree executes (kept by the store, so no walk of the subtree).
+    std::uint64_t subtreeStamp(int id) const {
+        return mix(mix(baseStamp_, static_cast<std::uint32_t>(id)), store_.subtreeVersion(id));
     }
 
     [[noreturn]] static void tooDeep() {
@@ -453,40 +540,45 @@ private:
                     "more than " + std::to_string(kMaxNetworkDepth) + " nested EXECUTE STRUCTURE levels");
     }
 
-    void execute(int id, State& child) {
+    void execute(int id, const std::shared_ptr<const State>& child) {
         if (path_.size() > kMaxNetworkDepth) tooDeep();
         if (!subtrees_) {
+            State state = *child;
             flush();  // one segment per structure part: small blocks, no giant reallocation
-            walk(id, child);
+            walk(id, state);
             flush();
             return;
         }
         const std::uint64_t stamp = subtreeStamp(id);
         flush();
-        if (auto found = subtrees_->entries.find(id); found != subtrees_->entries.end())
-            for (auto& e : found->second)
-                if (e.stamp == stamp && e.prefix == path_ && e.entry == child) {
-                    // Unchanged: the same segments again, shared, no item copied.
-                    e.used = true;
-                    reused += e.elements;
-                    for (const auto& segment : e.segments) out_.items.appendSegment(segment);
-                    return;
-                }
+        auto matches = [&](const Traverser::SubtreeCache::Entry& e) {
+            return e.stamp == stamp && (e.entry == child || *e.entry == *child) && e.prefix == path_;
+        };
+        if (auto* found = subtrees_->entries.find(id))
+            if (auto* e = found->findIf(matches)) {
+                // Unchanged: the same segments again, shared, no item copied.
+                e->used = true;
+                reused += e->elements;
+                e->segments.forEach(
+                    [&](const DrawItems::SegmentPtr& segment) { out_.items.appendSegment(segment); });
+                return;
+            }
         const std::size_t firstSegment = out_.items.segmentCount();
         const std::uint64_t firstElements = visited + reused;
-        State entryState = child;
-        walk(id, child);
+        State state = *child;
+        walk(id, state);
         flush();
         Traverser::SubtreeCache::Entry e;
-        e.entry = std::move(entryState);
-        e.prefix = path_;
+        e.entry = child;
+        e.prefix = detail::PathPrefix(path_);
         e.stamp = stamp;
         const auto& segments = out_.items.segments();
-        e.segments.assign(segments.begin() + static_cast<long>(firstSegment), segments.end());
+        for (std::size_t k = firstSegment; k < segments.size(); ++k) e.segments.push_back(segments[k]);
         e.elements = visited + reused - firstElements;
         auto& list = subtrees_->entries[id];
-        if (list.size() >= 8) list.erase(list.begin());
+        if (list.size() >= 8) list.popFront();
         list.push_back(std::move(e));
+        ++subtrees_->made;
     }
 
     /// A segment with room for every primitive up to the next execute (an upper bound on its
@@ -515,22 +607,24 @@ private:
         segment_.reset();
     }
 
-    DrawItem* emit(const Structure& s, int number, const State& state, DrawPrimitive primitive) {
+    template <class Primitive>
+    DrawItem* emit(const Structure& s, int number, const State& state, Primitive&& primitive) {
         if (filters_.invisibility && filters_.invisibility->accepts(state.names)) return nullptr;
-        DrawItem item;
-        item.primitive = std::move(primitive);
-        item.modelTransform = state.global * state.local;
+        // Built in place: a draw item is large, and moving it costs as much as filling it.
+        DrawItem& item = segment_->items.emplace_back();
+        item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
+        item.modelTransform = state.composite;
         item.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
         item.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
         item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
         item.lightSet = lightSet(state.lights);
         item.depthCue = depthCue(state.depthCueIndex);
-        item.source.path = path_;
+        item.source.path.reserve(path_.size() + 1);
+        item.source.path.assign(path_.begin(), path_.end());
         item.source.path.push_back({s.id, number, state.pickId});
         item.source.structureVersion = s.version;
         if (state.modelClip) item.modelClipPlanes = state.clipVolume;
-        segment_->items.push_back(std::move(item));
-        return &segment_->items.back();
+        return &item;
     }
 
     int lightSet(const std::set<int>& active) {
@@ -702,10 +796,11 @@ private:
                         state.local = compose(state.local, e);
                     else
                         state.global = e.matrix;
+                    state.composite = state.global * state.local;
                 } else if constexpr (std::is_same_v<E, ModelClipElement>) {
                     // Half spaces are given in modelling coordinates and fixed in the world by the
                     // composite transform current when the element is traversed.
-                    glm::dmat4 m = state.global * state.local;
+                    const glm::dmat4& m = state.composite;
                     glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
                     if (e.op == 1) state.clipVolume.clear();
                     for (const auto& [point, normal] : e.halfSpaces) {
@@ -823,7 +918,6 @@ private:
     Traverser::SubtreeCache* subtrees_;
     Traverser::ItemTables& itemTables_;
     std::uint64_t baseStamp_;
-    std::unordered_map<int, std::uint64_t> stamps_;
     std::shared_ptr<DrawSegment> segment_;  ///< the segment being built
 };
 
@@ -856,7 +950,7 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     out.hiddenSurfaceRemoval = tables.hlhsrMode != 0;
     if (itemTables_->full()) {
         *itemTables_ = {};
-        if (subtrees_) subtrees_->entries.clear();
+        if (subtrees_) subtrees_->clear();
     }
     Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, out);
     for (int root : roots) walk.root(root);

@@ -138,6 +138,11 @@ void Workstation::regenerate(VisualState after) {
     for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
     std::uint64_t generation = picture_.generation;
     bool same = pictured_ && stamp == pictureStamp_;
+    // The old items go first, so a regeneration never holds two pictures (the traverser keeps
+    // what it reuses); a traversal that throws leaves no picture and a new generation.
+    picture_.items.clear();
+    picture_.generation = generation + 1;
+    pictured_ = false;
     picture_ = traverser_.traverse(store_, roots, tables_, filters_);
     picture_.generation = same ? generation : generation + 1;
     pictureStamp_ = stamp;

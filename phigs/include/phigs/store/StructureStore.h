@@ -1,6 +1,7 @@
 #pragma once
 
 #include "phigs/core/ErrorLog.h"
+#include "phigs/store/IdTable.h"
 #include "phigs/store/Structure.h"
 
 #include <cstdint>
@@ -55,6 +56,9 @@ public:
 class StructureStore {
 public:
     explicit StructureStore(ErrorLog* log = nullptr) : log_(log) {}
+    // Listeners and workstations refer to the store, and it to its open structure: it stays put.
+    StructureStore(const StructureStore&) = delete;
+    StructureStore& operator=(const StructureStore&) = delete;
 
     void setErrorLog(ErrorLog* log) { log_ = log; }
     void addListener(StoreListener* listener);
@@ -136,9 +140,12 @@ public:
     std::vector<StructurePath> pathsToDescendants(int id, StructurePathOrder order, int depth) const;
     /// The structure and every structure it executes, directly or not (sorted).
     std::set<int> network(int id) const;
-    /// A hash of the id and version of every structure in `id`'s network: it changes whenever
-    /// any of them is edited (cheaper than walking network()).
+    /// A hash of `id` and its subtree version: it changes whenever any structure of `id`'s
+    /// network is edited, without walking the network.
     std::uint64_t networkStamp(int id) const;
+    /// A serial that changes whenever any structure in `id`'s network is edited (0 for a
+    /// structure that does not exist); kept up to date through the executing structures.
+    std::uint64_t subtreeVersion(int id) const;
     /// Whether executing `child` from `parent` would close a cycle.
     bool wouldCycle(int parent, int child) const;
 
@@ -150,7 +157,12 @@ public:
 
 private:
     Structure& createIfMissing(int id);
-    void touch(Structure& s) { s.version = ++serial_; }
+    void touch(Structure& s);
+    /// An execute may have been removed or moved: the executing-structure index is rebuilt.
+    void executesChanged() { parentsStale_ = true; }
+    /// Carries every edit since the last call up to the subtree versions of its ancestors.
+    void settleVersions() const;
+    void forgetVersions(int id) { subtreeVersions_.erase(id); }
     StoredElement stored(Element e) { return {std::move(e), ++serial_}; }
     void requireOpen(const char* function) const;
     void checkElement(const Element& e, int into, const char* function) const;
@@ -167,11 +179,18 @@ private:
     ErrorLog* log_ = nullptr;
     std::map<int, Structure> structures_;
     std::optional<int> open_;
+    Structure* openStructure_ = nullptr;  ///< open_'s node (map nodes stay put), for each insert
     int pointer_ = 0;
     EditMode editMode_ = EditMode::Insert;
     std::uint64_t serial_ = 0;
     std::vector<StoreListener*> listeners_;
     mutable std::unordered_map<int, std::pair<std::uint64_t, std::vector<int>>> executed_;
+    // Subtree versions are settled lazily, so bulk editing pays one push per structure edited.
+    mutable std::vector<int> touched_;           ///< structures edited since the last settleVersions()
+    mutable bool touchedOverflow_ = false;       ///< too many to carry one by one: every version renews
+    mutable IdTable<std::vector<int>> parents_;  ///< who executes each (per element)
+    mutable bool parentsStale_ = false;
+    mutable IdTable<std::uint64_t> subtreeVersions_;
 };
 
 }  // namespace phigs

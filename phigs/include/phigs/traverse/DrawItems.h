@@ -42,8 +42,16 @@ public:
         Iterator(Owner* owner, std::size_t index) : owner_(owner), index_(index) {}
         operator Iterator<true>() const { return {owner_, index_}; }
 
-        reference operator*() const { return (*owner_)[index_]; }
-        pointer operator->() const { return &(*owner_)[index_]; }
+        /// The item, found through the segment of the last one read: stepping costs no search.
+        reference operator*() const {
+            if (index_ < first_ || index_ >= last_) {
+                segment_ = owner_->segmentOf(index_);
+                first_ = owner_->starts_[segment_];
+                last_ = owner_->starts_[segment_ + 1];
+            }
+            return owner_->itemIn(segment_, index_ - first_);
+        }
+        pointer operator->() const { return &**this; }
         reference operator[](difference_type n) const { return (*owner_)[index_ + n]; }
         Iterator& operator++() { return ++index_, *this; }
         Iterator operator++(int) { return {owner_, index_++}; }
@@ -63,6 +71,7 @@ public:
     private:
         Owner* owner_ = nullptr;
         std::size_t index_ = 0;
+        mutable std::size_t segment_ = 0, first_ = 0, last_ = 0;  ///< where item index_ was last found
     };
     using iterator = Iterator<false>;
     using const_iterator = Iterator<true>;
@@ -102,6 +111,10 @@ public:
 private:
     std::size_t segmentOf(std::size_t i) const;
     DrawSegment& own(std::size_t segment);
+    const DrawItem& itemIn(std::size_t segment, std::size_t offset) const {
+        return segments_[segment]->items[offset];
+    }
+    DrawItem& itemIn(std::size_t segment, std::size_t offset) { return own(segment).items[offset]; }
 
     std::vector<SegmentPtr> segments_;
     std::vector<std::size_t> starts_{0};  ///< starts_[k]: index of segment k's first item; back(): size

@@ -40,9 +40,14 @@ public:
     /// The cached entry for `key`, built with `build` (and counted under `kind`) when missing.
     enum class Kind { Surface, Curve, Mesh };
     const Entry& get(const Key& key, Kind kind, const std::function<Entry()>& build);
-    /// Forgets every entry not asked for since the previous call (after each traversal).
+    /// Forgets every entry not asked for since the previous sweep and held by no draw list
+    /// (after each traversal). A sweep visits every entry, so it runs once enough entries were
+    /// built or traversals passed to share its cost; until then an unused entry lingers.
     void prune();
-    void clear() { entries_.clear(); }
+    void clear() {
+        entries_.clear();
+        builtSinceSweep_ = keptBySweep_ = prunesSinceSweep_ = 0;
+    }
 
     const Counters& counters() const { return counters_; }
     void resetCounters() { counters_ = {}; }
@@ -55,6 +60,8 @@ private:
     };
     std::map<Key, Slot> entries_;
     Counters counters_;
+    std::size_t builtSinceSweep_ = 0, keptBySweep_ = 0, prunesSinceSweep_ = 0;
+    static constexpr std::size_t kSweepEvery = 16;
 };
 
 }  // namespace phigs
