@@ -111,6 +111,11 @@ TEST_CASE("WAIT with NIVE or UWOR defers a change; UQUM simulates it; UPDATE per
         CHECK(ws.current().views.get(1).mapping[0][0] == 0.5);
         CHECK(ws.visualState() == VisualState::Correct);
         CHECK_FALSE(ws.newFrameNecessary());
+        // Unposting empties the surface at once only where the change shows at once.
+        ws.unpostAllStructures();
+        CHECK(ws.surfaceEmpty() == simulated);
+        ws.update(Regeneration::Perform);
+        CHECK(ws.surfaceEmpty());
     }
 }
 

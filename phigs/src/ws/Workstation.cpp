@@ -166,7 +166,7 @@ bool Workstation::hlhsrUpdatePending() const {
 }
 
 bool Workstation::surfaceEmpty() const {
-    return showsChangesAtOnce() || !pictured_ ? posted_.empty() : picturedEmpty_;
+    return changesTakeEffectAtOnce() || !pictured_ ? posted_.empty() : picturedEmpty_;
 }
 
 bool Workstation::showsChangesAtOnce() const {
