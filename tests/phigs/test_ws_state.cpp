@@ -199,3 +199,28 @@ TEST_CASE("realized representations: widths and sizes within the facilities, str
     }
     CHECK(realized(PatternRepresentation{2, 1, {3, 99}}, colours).colourIndices == std::vector<int>{3, 1});
 }
+
+TEST_CASE("a pick traversal in a deferred state reads the views of the picture shown", "[ws][state]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    store.insert(IndexAttribute{ElementType::ViewIndex, 1});
+    store.insert(polyline3({{0, 0, 0}, {1, 1, 0}}));
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Hardcopy);
+    ws.postStructure(1, 0.5);
+    ViewRepresentation first;
+    ws.setViewRepresentation(1, first);
+    ws.display();
+    ws.setDeferralState(DeferralMode::Wait, ModificationMode::Nive);
+    ViewRepresentation second;
+    second.mapping[0][0] = 0.5;
+    ws.setViewRepresentation(1, second);
+    const auto viewOf = [](const DrawList& list) { return list.views.at(1).mapping[0][0]; };
+    CHECK(viewOf(ws.display()) == 1.0);
+    CHECK(viewOf(ws.traverse({})) == 1.0);  // what is shown, not what is requested
+    ws.update(Regeneration::Perform);
+    CHECK(viewOf(ws.display()) == 0.5);
+    CHECK(viewOf(ws.traverse({})) == 0.5);
+}

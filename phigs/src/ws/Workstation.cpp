@@ -209,6 +209,7 @@ void Workstation::regenerate(VisualState after) {
     pictureStamp_ = stamp;
     pictured_ = true;
     picturedEmpty_ = roots.empty();
+    pictureTables_ = tables_;
     commitCurrent();
     pictureState_ = after;
     ++regenerations_;
@@ -241,7 +242,9 @@ const DrawList& Workstation::display() {
 DrawList Workstation::traverse(const TraversalFilters& filters) {
     std::vector<int> roots;
     for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
-    return traverser_.traverse(store_, roots, tables_, filters);
+    // A deferred change is not on the display yet: pick what is shown.
+    const bool shown = changesTakeEffectAtOnce() || !pictured_;
+    return traverser_.traverse(store_, roots, shown ? tables_ : pictureTables_, filters);
 }
 
 void Workstation::setColourRepresentation(int index, const glm::dvec3& rgb) {

@@ -96,7 +96,8 @@ public:
     /// The picture the workstation shows now (regenerated first where the deferral mode says
     /// changes appear at once).
     const DrawList& display();
-    /// A fresh traversal with extra filters (the pick traversal), leaving the display alone.
+    /// A fresh traversal with extra filters (the pick traversal), leaving the display alone; in a
+    /// deferred state it reads the tables of the picture shown, not the requested ones.
     DrawList traverse(const TraversalFilters& filters);
     std::uint64_t regenerations() const { return regenerations_; }
     Traverser& traverser() { return traverser_; }
@@ -217,6 +218,7 @@ private:
     ModificationMode modification_ = ModificationMode::Nive;
     WorkstationTables tables_;
     CurrentValues current_;
+    WorkstationTables pictureTables_;  ///< the tables the picture was made from
     PatternTable patterns_;
     int colourModel_ = 1;
     bool picturedEmpty_ = true;  ///< nothing was posted when the picture was made
