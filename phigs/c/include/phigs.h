@@ -902,6 +902,273 @@ void pinq_list_avail_gse(Pint ws_type, Pint length, Pint start, Pint* err_ind, P
 void pinq_gse_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pgse_id_dep_list* gses,
                    Pint* total_length);
 
+/* ==== workstation state, representations and description tables ====
+ * Deferral and modification modes with requested and current values, the bundle, pattern and
+ * colour tables (SET and REALIZED values), the highlighting and invisibility filters, and the
+ * workstation description table of each type. Inquiries answer 3 (no workstation open), 54
+ * (this one not open) or 52 (no such workstation type) first. */
+typedef enum { PDEFER_ASAP, PDEFER_BNIG, PDEFER_BNIL, PDEFER_ASTI, PDEFER_WAIT } Pdefer_mode;
+typedef enum { PMODE_NIVE, PMODE_UWOR, PMODE_UQUM } Pmod_mode;
+typedef enum { PSURF_NOT_EMPTY, PSURF_EMPTY } Pdisp_surf_empty;
+typedef enum { PVISUAL_ST_CORRECT, PVISUAL_ST_DEFER, PVISUAL_ST_SIMULATED } Pvisual_st;
+typedef enum { PUPD_NOT_PEND, PUPD_PEND } Pupd_st;
+typedef enum { PINQ_SET, PINQ_REALIZED } Pinq_type;
+typedef enum { PPRI_HIGHER, PPRI_LOWER } Prel_pri;
+typedef enum { PCLASS_VEC, PCLASS_RASTER, PCLASS_OTHER } Pws_class;
+typedef enum { PDC_METRES, PDC_OTHER } Pdc_units;
+typedef enum { PAVAIL_MONOCHR, PAVAIL_COLR } Pcolr_avail;
+typedef enum { PDYN_IRG, PDYN_IMM, PDYN_CBS } Pdyn_mod;
+/* Colour models (pset_colr_model): this implementation has RGB only. */
+#define PMODEL_CIELUV 2
+#define PMODEL_HSV 3
+#define PMODEL_HLS 4
+typedef struct {
+    Pint_list incl_set;
+    Pint_list excl_set;
+} Pfilter;
+typedef struct {
+    Pint type;
+    Pfloat width; /* linewidth scale factor */
+    Pint colr_ind;
+} Pline_bundle;
+typedef struct {
+    Pint type;
+    Pfloat size; /* marker size scale factor */
+    Pint colr_ind;
+} Pmarker_bundle;
+typedef struct {
+    Pint font;
+    Ptext_prec prec;
+    Pfloat char_expan;
+    Pfloat char_space;
+    Pint colr_ind;
+} Ptext_bundle;
+typedef struct {
+    Pint_style style;
+    Pint style_ind;
+    Pint colr_ind;
+} Pint_bundle;
+typedef struct {
+    Pedge_flag flag;
+    Pint type;
+    Pfloat width; /* edgewidth scale factor */
+    Pint colr_ind;
+} Pedge_bundle;
+typedef struct {
+    Pfloat red, green, blue;
+} Prgb;
+typedef struct {
+    Pfloat cieluv_x, cieluv_y, cieluv_y_lum;
+} Pcieluv;
+typedef struct {
+    Pfloat hue, lightness, satur;
+} Phls;
+typedef struct {
+    Pfloat hue, satur, value;
+} Phsv;
+typedef union {
+    Prgb rgb;
+    Pcieluv cieluv;
+    Phls hls;
+    Phsv hsv;
+    Pdata unsupp;
+} Pcolr_rep;
+typedef struct {
+    Pint_list types;
+    Pint num_widths; /* 0: continuous */
+    Pfloat nom_width, min_width, max_width;
+    Pint num_pred_inds;
+} Pline_facs;
+typedef struct {
+    Pint_list types;
+    Pint num_sizes; /* 0: continuous */
+    Pfloat nom_size, min_size, max_size;
+    Pint num_pred_inds;
+} Pmarker_facs;
+typedef struct {
+    Pint font;
+    Ptext_prec prec;
+} Ptext_font_prec;
+typedef struct {
+    Pint num_font_precs;
+    Ptext_font_prec* font_precs;
+    Pint num_char_hts; /* 0: continuous */
+    Pfloat min_char_ht, max_char_ht;
+    Pint num_char_expans; /* 0: continuous */
+    Pfloat min_char_expan, max_char_expan;
+    Pint num_pred_inds;
+} Ptext_facs;
+typedef struct {
+    Pint num_int_styles;
+    Pint_style int_styles[5];
+    Pint_list hatch_styles;
+    Pint num_pred_inds;
+} Pint_facs;
+typedef struct {
+    Pint_list types;
+    Pint num_widths; /* 0: continuous */
+    Pfloat nom_width, min_width, max_width;
+    Pint num_pred_inds;
+} Pedge_facs;
+typedef struct {
+    Pint num_colrs; /* 0: continuous */
+    Pcolr_avail colr_avail;
+    Pint num_pred_inds;
+} Pcolr_facs;
+typedef struct {
+    Pfloat size_x, size_y, size_z;
+} Pfloat_size3;
+typedef struct {
+    Pint size_x, size_y, size_z;
+} Pint_size3;
+typedef struct {
+    Pdc_units dc_units;
+    Pfloat_size size_dc;
+    Pint_size size_raster;
+} Pdisp_space_size;
+typedef struct {
+    Pdc_units dc_units;
+    Pfloat_size3 size_dc;
+    Pint_size3 size_raster;
+} Pdisp_space_size3;
+typedef struct {
+    Pint line_bundles, mark_bundles, text_bundles, int_bundles, edge_bundles, pat_reps, colr_reps, view_reps;
+} Pws_tables;
+typedef struct {
+    Pdyn_mod line_bundle, marker_bundle, text_bundle, int_bundle, edge_bundle, pat_rep, colr_rep, view_rep,
+        ws_tran, highl_filter, invis_filter, hlhsr_mode;
+} Pdyns_ws_attrs;
+typedef struct {
+    Pdyn_mod content, post, unpost, del, ref;
+} Pdyns_structs;
+/* Function identifiers of this group. */
+enum {
+    Pfn_set_disp_upd_st = 6,
+    Pfn_set_line_rep = 62,
+    Pfn_set_marker_rep = 63,
+    Pfn_set_text_rep = 64,
+    Pfn_set_int_rep = 65,
+    Pfn_set_edge_rep = 66,
+    Pfn_set_pat_rep = 67,
+    Pfn_set_colr_rep = 68,
+    Pfn_set_highl_filter = 69,
+    Pfn_set_invis_filter = 70,
+    Pfn_set_colr_model = 71,
+    Pfn_set_hlhsr_mode = 73,
+    Pfn_set_view_tran_in_pri = 85
+};
+
+/* Deferral and modification modes. Every change needs a regeneration here (the dynamics are
+ * IRG): ASAP, BNIG and BNIL show it at once; ASTI and WAIT defer it under NIVE and UWOR (visual
+ * state DEFER) and simulate it under UQUM (SIMULATED) until pupd_ws(PERFORM) or
+ * predraw_all_structs. View representations, the workstation window and viewport and the HLHSR
+ * mode have requested values and current ones (those of the picture), PUPD_PEND between. */
+void pset_disp_upd_st(Pint ws_id, Pdefer_mode def_mode, Pmod_mode mod_mode);
+void pinq_disp_upd_st(Pint ws_id, Pint* err_ind, Pdefer_mode* def_mode, Pmod_mode* mod_mode,
+                      Pdisp_surf_empty* disp_empty, Pvisual_st* state);
+void pinq_def_disp_upd_st(Pint ws_type, Pint* err_ind, Pdefer_mode* def_mode, Pmod_mode* mod_mode);
+/* View 0 is the identity and cannot be set (115); errors 114, 101 for an index outside the table. */
+void pinq_view_rep(Pint ws_id, Pint view_ind, Pint* err_ind, Pupd_st* upd_st, Pview_rep3* cur_rep,
+                   Pview_rep3* req_rep);
+void pinq_ws_tran3(Pint ws_id, Pint* err_ind, Pupd_st* upd_st, Plimit3* req_win_lim, Plimit3* cur_win_lim,
+                   Plimit3* req_vp_lim, Plimit3* cur_vp_lim);
+void pinq_ws_tran(Pint ws_id, Pint* err_ind, Pupd_st* upd_st, Plimit* req_win_lim, Plimit* cur_win_lim,
+                  Plimit* req_vp_lim, Plimit* cur_vp_lim);
+/* HLHSR modes: 0 none, 1 z-buffer (111 for others). */
+void pset_hlhsr_mode(Pint ws_id, Pint hlhsr_mode);
+void pinq_hlhsr_mode(Pint ws_id, Pint* err_ind, Pupd_st* upd_st, Pint* cur_mode, Pint* req_mode);
+void pset_view_tran_in_pri(Pint ws_id, Pint view_ind, Pint ref_view_ind, Prel_pri priority);
+/* Defined view indices in order of view transformation input priority, highest first. */
+void pinq_list_view_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* view_inds,
+                         Pint* total_length);
+/* Filters: name sets as Pint_list; the inquiry's lists point into the store. */
+void pset_highl_filter(Pint ws_id, const Pfilter* filter);
+void pset_invis_filter(Pint ws_id, const Pfilter* filter);
+void pinq_highl_filter(Pint ws_id, Pstore store, Pint* err_ind, Pfilter** filter);
+void pinq_invis_filter(Pint ws_id, Pstore store, Pint* err_ind, Pfilter** filter);
+void pinq_wss_posted(Pint struct_id, Pint length, Pint start, Pint* err_ind, Pint_list* ws_ids,
+                     Pint* total_length);
+
+/* Representations. Errors: 100 (bundle index < 1), 103 (a new entry beyond the table), 113
+ * (colour index < 0), 104 linetype, 105 marker type, 106 font and precision, 107 edgetype, 108
+ * interior style, 112 pattern index < 1, 116 pattern dimensions, 118 colour component. The
+ * inquiries answer 101 for an undefined index with PINQ_SET and index 1's representation with
+ * PINQ_REALIZED (widths and sizes within the facilities, text in STROKE precision, undefined
+ * colour indices as 1). Patterns are stored; style PSTYLE_PAT draws solid. */
+void pset_line_rep(Pint ws_id, Pint line_ind, const Pline_bundle* line_bundle);
+void pset_marker_rep(Pint ws_id, Pint marker_ind, const Pmarker_bundle* marker_bundle);
+void pset_text_rep(Pint ws_id, Pint text_ind, const Ptext_bundle* text_bundle);
+void pset_int_rep(Pint ws_id, Pint int_ind, const Pint_bundle* int_bundle);
+void pset_edge_rep(Pint ws_id, Pint edge_ind, const Pedge_bundle* edge_bundle);
+void pset_pat_rep(Pint ws_id, Pint pat_ind, const Ppat_rep* pat_rep);
+void pset_colr_rep(Pint ws_id, Pint colr_ind, const Pcolr_rep* colr_rep);
+void pset_colr_model(Pint ws_id, Pint colr_model);
+void pinq_line_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Pline_bundle* rep);
+void pinq_marker_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Pmarker_bundle* rep);
+void pinq_text_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Ptext_bundle* rep);
+void pinq_int_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Pint_bundle* rep);
+void pinq_edge_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Pedge_bundle* rep);
+void pinq_pat_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err_ind, Ppat_rep** rep);
+void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err_ind, Pcolr_rep* rep);
+void pinq_colr_model(Pint ws_id, Pint* err_ind, Pint* colr_model);
+void pinq_list_line_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                         Pint* total_length);
+void pinq_list_marker_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                           Pint* total_length);
+void pinq_list_text_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                         Pint* total_length);
+void pinq_list_int_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                        Pint* total_length);
+void pinq_list_edge_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                         Pint* total_length);
+void pinq_list_pat_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                        Pint* total_length);
+void pinq_list_colr_inds(Pint ws_id, Pint length, Pint start, Pint* err_ind, Pint_list* inds,
+                         Pint* total_length);
+
+/* The workstation description tables (by workstation type; 52 for another number). Predefined
+ * representations: errors 100 (or 112 for patterns, 113 for colours, 114 for views) below the
+ * first index and 102 past the last. */
+void pinq_ws_class(Pint ws_type, Pint* err_ind, Pws_class* ws_class);
+void pinq_disp_space_size3(Pint ws_type, Pint* err_ind, Pdisp_space_size3* size);
+void pinq_disp_space_size(Pint ws_type, Pint* err_ind, Pdisp_space_size* size);
+void pinq_ws_st_table(Pint ws_type, Pint* err_ind, Pws_tables* lengths);
+void pinq_num_disp_pris(Pint ws_type, Pint* err_ind, Pint* num_pris);
+void pinq_dyns_ws_attrs(Pint ws_type, Pint* err_ind, Pdyns_ws_attrs* attrs);
+void pinq_dyns_structs(Pint ws_type, Pint* err_ind, Pdyns_structs* dyns);
+void pinq_line_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pline_facs* facs,
+                    Pint* total_length);
+void pinq_marker_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pmarker_facs* facs,
+                      Pint* total_length);
+void pinq_text_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Ptext_facs* facs,
+                    Pint* total_length);
+void pinq_int_facs(Pint ws_type, Pint hatch_length, Pint hatch_start, Pint* err_ind, Pint_facs* facs,
+                   Pint* total_hatch_length);
+void pinq_edge_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pedge_facs* facs,
+                    Pint* total_length);
+void pinq_pat_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_inds);
+void pinq_colr_facs(Pint ws_type, Pint* err_ind, Pcolr_facs* facs);
+void pinq_colr_model_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* models,
+                          Pint* total_length, Pint* def_model);
+void pinq_view_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_views);
+void pinq_hlhsr_id_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* ids,
+                        Pint* total_length);
+void pinq_hlhsr_mode_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* modes,
+                          Pint* total_length);
+void pinq_anno_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pint_list* styles,
+                    Pint* total_length, Pint* num_char_hts, Pfloat* min_char_ht, Pfloat* max_char_ht);
+/* The PHIGS description table's modelling clipping: distinct planes and operators. */
+void pinq_model_clip_facs(Pint length, Pint start, Pint* err_ind, Pint* num_planes, Pint_list* ops,
+                          Pint* total_length);
+void pinq_pred_line_rep(Pint ws_type, Pint index, Pint* err_ind, Pline_bundle* rep);
+void pinq_pred_marker_rep(Pint ws_type, Pint index, Pint* err_ind, Pmarker_bundle* rep);
+void pinq_pred_text_rep(Pint ws_type, Pint index, Pint* err_ind, Ptext_bundle* rep);
+void pinq_pred_int_rep(Pint ws_type, Pint index, Pint* err_ind, Pint_bundle* rep);
+void pinq_pred_edge_rep(Pint ws_type, Pint index, Pint* err_ind, Pedge_bundle* rep);
+void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err_ind, Ppat_rep** rep);
+void pinq_pred_colr_rep(Pint ws_type, Pint index, Pint* err_ind, Pcolr_rep* rep);
+void pinq_pred_view_rep(Pint ws_type, Pint index, Pint* err_ind, Pview_rep3* rep);
+
 #ifdef __cplusplus
 }
 #endif

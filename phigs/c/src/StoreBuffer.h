@@ -25,6 +25,9 @@ struct Phigs_store {
     std::vector<std::string> names;
     std::vector<Par_file> files;
     Par_file_list fileList{};
+    // Workstation answers: a filter's two name sets and a pattern, their ints in `ints`.
+    Pfilter filter{};
+    Ppat_rep pattern{};
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -33,5 +36,6 @@ struct Phigs_store {
         halfSpaces3.clear(), halfSpaces.clear(), text.clear();
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
+        filter = {}, pattern = {};
     }
 };

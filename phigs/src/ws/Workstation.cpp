@@ -1,5 +1,8 @@
 #include "phigs/ws/Workstation.h"
 
+#include "phigs/ws/PredefinedRepresentations.h"
+#include "phigs/ws/WorkstationErrors.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,6 +12,27 @@ namespace {
 /// The smallest string echo area that holds a line of text, in pixels: smaller ones (the
 /// default 1 x 1) echo nothing.
 constexpr double minimumEchoLine = 8.0;
+
+bool sameView(const ViewRepresentation& a, const ViewRepresentation& b) {
+    return a.orientation == b.orientation && a.mapping == b.mapping && a.clipMin == b.clipMin &&
+           a.clipMax == b.clipMax && a.clipXY == b.clipXY && a.clipBack == b.clipBack &&
+           a.clipFront == b.clipFront;
+}
+
+/// The description's predefined representations, loaded into a new workstation's tables.
+void loadPredefined(WorkstationTables& t, PatternTable& patterns, WorkstationType type) {
+    const PredefinedRepresentations& p = predefinedRepresentations(type);
+    const char* function = "OPEN WORKSTATION";
+    for (std::size_t i = 0; i < p.polylines.size(); ++i)
+        t.polylines.set(int(i) + 1, p.polylines[i], nullptr, function);
+    for (std::size_t i = 0; i < p.polymarkers.size(); ++i)
+        t.polymarkers.set(int(i) + 1, p.polymarkers[i], nullptr, function);
+    for (std::size_t i = 0; i < p.texts.size(); ++i) t.texts.set(int(i) + 1, p.texts[i], nullptr, function);
+    for (std::size_t i = 0; i < p.interiors.size(); ++i)
+        t.interiors.set(int(i) + 1, p.interiors[i], nullptr, function);
+    for (std::size_t i = 0; i < p.edges.size(); ++i) t.edges.set(int(i) + 1, p.edges[i], nullptr, function);
+    for (std::size_t i = 0; i < p.patterns.size(); ++i) patterns.set(int(i) + 1, p.patterns[i], nullptr);
+}
 
 }  // namespace
 
@@ -23,6 +47,11 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
     tables_.colours = ColourTable(description_.colourTableSize);
     tables_.viewportMax = {description_.displaySize.x, description_.displaySize.y, 1.0};
     tables_.displaySize = description_.displaySize;
+    patterns_ = PatternTable(description_.patternTableSize);
+    loadPredefined(tables_, patterns_, description_.type);
+    deferral_ = description_.defaultDeferral;
+    modification_ = description_.defaultModification;
+    commitCurrent();
     measurer_.setSurfaceSize([this] {
         const DrawableSize size = drawableSize();
         if (size.width > 0 && size.height > 0) return DrawListMeasurer::SurfaceSize{size.width, size.height};
@@ -34,6 +63,7 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
         [this](const InputDevice& device) -> const DrawList& { return pickList(device); });
     input_->setEchoListener([this] { echoMoved(); });
     store_.addListener(this);
+    pictureStamp_ = contentStamp();  // the empty display surface of a new workstation is correct
 }
 
 Workstation::~Workstation() {
@@ -100,6 +130,43 @@ void Workstation::referencesChanged(int from, int to) {
 void Workstation::setDeferralState(DeferralMode deferral, ModificationMode modification) {
     deferral_ = deferral;
     modification_ = modification;
+    if (changesTakeEffectAtOnce()) commitCurrent();  // the deferred actions are performed now
+}
+
+void Workstation::changed() {
+    ++tables_.generation;
+    if (changesTakeEffectAtOnce()) commitCurrent();
+}
+
+bool Workstation::changesTakeEffectAtOnce() const {
+    return showsChangesAtOnce() || modification_ == ModificationMode::Uqum;  // UQUM: simulated at once
+}
+
+void Workstation::commitCurrent() {
+    current_.views = tables_.views;
+    current_.windowMin = tables_.windowMin;
+    current_.windowMax = tables_.windowMax;
+    current_.viewportMin = tables_.viewportMin;
+    current_.viewportMax = tables_.viewportMax;
+    current_.hlhsrMode = tables_.hlhsrMode;
+}
+
+bool Workstation::viewUpdatePending(int index) const {
+    return current_.views.defined(index) != tables_.views.defined(index) ||
+           !sameView(current_.views.get(index), tables_.views.get(index));
+}
+
+bool Workstation::transformationUpdatePending() const {
+    return current_.windowMin != tables_.windowMin || current_.windowMax != tables_.windowMax ||
+           current_.viewportMin != tables_.viewportMin || current_.viewportMax != tables_.viewportMax;
+}
+
+bool Workstation::hlhsrUpdatePending() const {
+    return current_.hlhsrMode != tables_.hlhsrMode;
+}
+
+bool Workstation::surfaceEmpty() const {
+    return changesTakeEffectAtOnce() || !pictured_ ? posted_.empty() : picturedEmpty_;
 }
 
 bool Workstation::showsChangesAtOnce() const {
@@ -125,10 +192,9 @@ std::uint64_t Workstation::contentStamp() const {
 }
 
 VisualState Workstation::visualState() const {
-    if (!pictured_ || contentStamp() != pictureStamp_)
-        return showsChangesAtOnce() ? VisualState::Correct
-                                    : (modification_ == ModificationMode::Nive ? VisualState::Deferred
-                                                                               : VisualState::Simulated);
+    if (showsChangesAtOnce()) return VisualState::Correct;  // display() regenerates first
+    if (contentStamp() != pictureStamp_)
+        return modification_ == ModificationMode::Uqum ? VisualState::Simulated : VisualState::Deferred;
     return pictureState_;
 }
 
@@ -147,6 +213,9 @@ void Workstation::regenerate(VisualState after) {
     picture_.generation = same ? generation : generation + 1;
     pictureStamp_ = stamp;
     pictured_ = true;
+    picturedEmpty_ = roots.empty();
+    pictureTables_ = tables_;
+    commitCurrent();
     pictureState_ = after;
     ++regenerations_;
 }
@@ -162,13 +231,13 @@ void Workstation::redrawAllStructures() {
 }
 
 const DrawList& Workstation::display() {
-    if (!pictured_ || contentStamp() != pictureStamp_) {
-        if (showsChangesAtOnce())
-            regenerate(VisualState::Correct);
-        else if (modification_ != ModificationMode::Nive)
-            regenerate(VisualState::Simulated);
-        else if (!pictured_)
-            regenerate(VisualState::Correct);
+    const bool stale = contentStamp() != pictureStamp_;
+    if (showsChangesAtOnce()) {
+        if (!pictured_ || stale || pictureState_ != VisualState::Correct) regenerate(VisualState::Correct);
+    } else if (stale && modification_ == ModificationMode::Uqum) {
+        regenerate(VisualState::Simulated);
+    } else if (!pictured_) {
+        regenerate(VisualState::Correct);  // the first picture is always made
     }
     // Input priority is no part of the picture: it changes nothing drawn and needs no traversal.
     picture_.viewInputPriority = tables_.views.inputPriority();
@@ -178,7 +247,9 @@ const DrawList& Workstation::display() {
 DrawList Workstation::traverse(const TraversalFilters& filters) {
     std::vector<int> roots;
     for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
-    return traverser_.traverse(store_, roots, tables_, filters);
+    // A deferred change is not on the display yet: pick what is shown.
+    const bool shown = changesTakeEffectAtOnce() || !pictured_;
+    return traverser_.traverse(store_, roots, shown ? tables_ : pictureTables_, filters);
 }
 
 void Workstation::setColourRepresentation(int index, const glm::dvec3& rgb) {
@@ -188,14 +259,30 @@ void Workstation::setColourRepresentation(int index, const glm::dvec3& rgb) {
 
 namespace {
 
-void checkLineType(LineType t, ErrorLog* log, const char* function) {
-    if (static_cast<int>(t) < 1 || static_cast<int>(t) > 4) raise(log, errors::BadLineType, function);
+void checkLineType(LineType t, ErrorLog* log, const char* function, int error = errors::BadLineType) {
+    if (static_cast<int>(t) < 1 || static_cast<int>(t) > 4)
+        raise(log, error, function, "type " + std::to_string(static_cast<int>(t)));
 }
 
 }  // namespace
 
+/// The checks every SET ... REPRESENTATION of a bundle makes first, in the standard's order:
+/// 100 (index < 1), 103 (a new entry beyond the table), 113 (a colour index < 0).
+template <class Table>
+void Workstation::checkBundle(const Table& table, int index, const Colour& colour,
+                              const char* function) const {
+    const std::string where = "index " + std::to_string(index);
+    if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, where);
+    if (!table.defined(index) &&
+        static_cast<int>(table.definedIndices().size()) >= description_.bundleTableSize)
+        raise(log_, errors::BundleTableFull, function, where);
+    if (!colour.direct && colour.index < 0)
+        raise(log_, errors::ColourIndexBelowZero, function, "colour index " + std::to_string(colour.index));
+}
+
 void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bundle) {
     const char* function = "SET POLYLINE REPRESENTATION";
+    checkBundle(tables_.polylines, index, bundle.colour, function);
     checkLineType(bundle.type, log_, function);
     tables_.polylines.set(index, bundle, log_, function);
     changed();
@@ -203,30 +290,56 @@ void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bun
 
 void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle) {
     const char* function = "SET POLYMARKER REPRESENTATION";
-    if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > 5)
-        raise(log_, errors::BadMarkerType, function);
+    checkBundle(tables_.polymarkers, index, bundle.colour, function);
+    if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > description_.markerTypes)
+        raise(log_, errors::BadMarkerType, function, "type " + std::to_string(static_cast<int>(bundle.type)));
     tables_.polymarkers.set(index, bundle, log_, function);
     changed();
 }
 
 void Workstation::setTextRepresentation(int index, const TextBundle& bundle) {
-    tables_.texts.set(index, bundle, log_, "SET TEXT REPRESENTATION");
+    const char* function = "SET TEXT REPRESENTATION";
+    checkBundle(tables_.texts, index, bundle.colour, function);
+    if (bundle.font < 1 || bundle.font > description_.textFonts || bundle.precision < 0 ||
+        bundle.precision > 2)
+        raise(log_, errors::TextFontNotAvailable, function,
+              "font " + std::to_string(bundle.font) + " precision " + std::to_string(bundle.precision));
+    tables_.texts.set(index, bundle, log_, function);
     changed();
 }
 
 void Workstation::setInteriorRepresentation(int index, const InteriorBundle& bundle) {
     const char* function = "SET INTERIOR REPRESENTATION";
-    if (static_cast<int>(bundle.style) < 0 || static_cast<int>(bundle.style) > 4)
-        raise(log_, errors::BadInteriorStyle, function);
+    checkBundle(tables_.interiors, index, bundle.colour, function);
+    for (InteriorStyle style : {bundle.style, bundle.backStyle})
+        if (static_cast<int>(style) < 0 || static_cast<int>(style) >= description_.interiorStyles)
+            raise(log_, errors::BadInteriorStyle, function,
+                  "style " + std::to_string(static_cast<int>(style)));
+    if ((bundle.style == InteriorStyle::Pattern && bundle.styleIndex < 1) ||
+        (bundle.backStyle == InteriorStyle::Pattern && bundle.backStyleIndex < 1))
+        raise(log_, errors::PatternIndexBelowOne, function);
     tables_.interiors.set(index, bundle, log_, function);
     changed();
 }
 
 void Workstation::setEdgeRepresentation(int index, const EdgeBundle& bundle) {
     const char* function = "SET EDGE REPRESENTATION";
-    checkLineType(bundle.type, log_, function);
+    checkBundle(tables_.edges, index, bundle.colour, function);
+    checkLineType(bundle.type, log_, function, errors::EdgeTypeNotAvailable);
     tables_.edges.set(index, bundle, log_, function);
     changed();
+}
+
+void Workstation::setPatternRepresentation(int index, const PatternRepresentation& pattern) {
+    patterns_.set(index, pattern, log_);
+    changed();
+}
+
+void Workstation::setColourModel(int model) {
+    const auto& models = description_.colourModels;
+    if (std::find(models.begin(), models.end(), model) == models.end())
+        raise(log_, errors::ColourModelNotAvailable, "SET COLOUR MODEL", "model " + std::to_string(model));
+    colourModel_ = model;  // colours are stored and drawn as RGB: nothing to redraw
 }
 
 void Workstation::setViewRepresentation(int index, const ViewRepresentation& view) {

@@ -8,6 +8,7 @@
 #include "phigs/traverse/Traverser.h"
 #include "phigs/view/WorkstationTables.h"
 #include "phigs/ws/EchoState.h"
+#include "phigs/ws/PatternTable.h"
 #include "phigs/ws/WorkstationOutput.h"
 #include "phigs/ws/WorkstationType.h"
 
@@ -20,12 +21,6 @@
 
 namespace phigs {
 
-/// PHIGS deferral modes: as soon as possible, before next interaction globally / locally, at
-/// some time, when the application asks (UPDATE WORKSTATION).
-enum class DeferralMode { Asap, Bnig, Bnil, Asti, Wait };
-/// PHIGS modification modes: no immediate visual effect, update without regeneration, use quick update
-/// methods.
-enum class ModificationMode { Nive, Uwor, Uqum };
 /// State of visual representation.
 enum class VisualState { Correct, Deferred, Simulated };
 enum class Regeneration { Postpone, Perform };
@@ -35,6 +30,16 @@ struct PostedStructure {
     int structureId = 0;
     double priority = 0.0;
     bool operator==(const PostedStructure&) const = default;
+};
+
+/// The values of a workstation that take effect when its picture is regenerated (ISO's current
+/// values, against the requested ones of the tables): views, workstation window and viewport,
+/// HLHSR mode.
+struct CurrentValues {
+    ViewTable views;
+    glm::dvec3 windowMin{0.0}, windowMax{1.0};
+    glm::dvec3 viewportMin{0.0}, viewportMax{1.0};
+    int hlhsrMode = 0;
 };
 
 /// The PHIGS workstation: posted roots with display priorities, deferral and modification
@@ -64,10 +69,26 @@ public:
     std::vector<PostedStructure> postedStructures() const;
 
     // ---- deferral and update
+    /// SET DISPLAY UPDATE STATE. Every change here needs a regeneration (the description's
+    /// dynamics are IRG): ASAP, BNIG and BNIL show it at once (no interaction is ever underway
+    /// between calls); ASTI and WAIT defer it under NIVE and UWOR (state DEFERRED) and show it by
+    /// a quick update under UQUM (state SIMULATED). A mode that shows changes at once performs
+    /// what was deferred.
     void setDeferralState(DeferralMode deferral, ModificationMode modification);
     DeferralMode deferralMode() const { return deferral_; }
     ModificationMode modificationMode() const { return modification_; }
     VisualState visualState() const;
+    /// The current values: the requested ones as of the last regeneration (at once in a mode
+    /// that shows changes at once or simulates them).
+    const CurrentValues& current() const { return current_; }
+    /// Update states: PENDING while a requested value has not become current.
+    bool viewUpdatePending(int index) const;
+    bool transformationUpdatePending() const;
+    bool hlhsrUpdatePending() const;
+    /// New frame action necessary at update: UPDATE WORKSTATION (PERFORM) would regenerate.
+    bool newFrameNecessary() const { return visualState() != VisualState::Correct; }
+    /// Display surface empty: nothing was posted when the picture shown was made.
+    bool surfaceEmpty() const;
     /// UPDATE WORKSTATION: Perform regenerates when anything changed since the last picture.
     void update(Regeneration regeneration);
     /// REDRAW ALL STRUCTURES: regenerates unconditionally.
@@ -75,7 +96,8 @@ public:
     /// The picture the workstation shows now (regenerated first where the deferral mode says
     /// changes appear at once).
     const DrawList& display();
-    /// A fresh traversal with extra filters (the pick traversal), leaving the display alone.
+    /// A fresh traversal with extra filters (the pick traversal), leaving the display alone; in a
+    /// deferred state it reads the tables of the picture shown, not the requested ones.
     DrawList traverse(const TraversalFilters& filters);
     std::uint64_t regenerations() const { return regenerations_; }
     Traverser& traverser() { return traverser_; }
@@ -91,6 +113,13 @@ public:
     void setInteriorRepresentation(int index, const InteriorBundle& bundle);
     void setEdgeRepresentation(int index, const EdgeBundle& bundle);
     void setViewRepresentation(int index, const ViewRepresentation& view);
+    /// SET PATTERN REPRESENTATION (errors of PatternTable::set); patterns are stored and
+    /// inquired, interiors of style PATTERN draw solid.
+    void setPatternRepresentation(int index, const PatternRepresentation& pattern);
+    const PatternTable& patterns() const { return patterns_; }
+    /// SET COLOUR MODEL: one of the description's colour models (error 110).
+    void setColourModel(int model);
+    int colourModel() const { return colourModel_; }
     void setViewTransformationInputPriority(int index, int reference, bool higher);
     void setLightSourceRepresentation(int index, const Light& light);
     void setDepthCueRepresentation(int index, const DepthCue& cue);
@@ -172,9 +201,13 @@ public:
     bool isPosted(int structureId) const override;
 
 private:
-    void changed() { ++tables_.generation; }
+    void changed();
+    void commitCurrent();
+    template <class Table>
+    void checkBundle(const Table& table, int index, const Colour& colour, const char* function) const;
     void regenerate(VisualState after);
     bool showsChangesAtOnce() const;
+    bool changesTakeEffectAtOnce() const;
 
     int id_;
     WorkstationDescription description_;
@@ -184,6 +217,11 @@ private:
     DeferralMode deferral_ = DeferralMode::Asap;
     ModificationMode modification_ = ModificationMode::Nive;
     WorkstationTables tables_;
+    CurrentValues current_;
+    WorkstationTables pictureTables_;  ///< the tables the picture was made from
+    PatternTable patterns_;
+    int colourModel_ = 1;
+    bool picturedEmpty_ = true;  ///< nothing was posted when the picture was made
     TraversalFilters filters_;
     Traverser traverser_;
     DrawList picture_;

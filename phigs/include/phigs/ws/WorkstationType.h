@@ -18,6 +18,17 @@ bool isWorkstationType(WorkstationType type);
 
 /// PHIGS workstation categories.
 enum class WorkstationCategory { Output, OutIn };
+/// PHIGS workstation classes: what the display surface is made of.
+enum class WorkstationClass { Vector, Raster, Other };
+/// PHIGS deferral modes: as soon as possible, before next interaction globally / locally, at
+/// some time, when the application asks (UPDATE WORKSTATION).
+enum class DeferralMode { Asap, Bnig, Bnil, Asti, Wait };
+/// PHIGS modification modes: no immediate visual effect, update without regeneration, use quick
+/// update methods.
+enum class ModificationMode { Nive, Uwor, Uqum };
+/// Dynamic modification accepted: a change needs an implicit regeneration, shows immediately,
+/// or can be simulated.
+enum class Dynamics { Irg, Imm, Cbs };
 
 /// The workstation description table: what a type can do (INQUIRE ... FACILITIES).
 struct WorkstationDescription {
@@ -31,6 +42,22 @@ struct WorkstationDescription {
     int depthCueTableSize = 8;
     std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
     int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
+    WorkstationClass workstationClass = WorkstationClass::Raster;
+    int patternTableSize = 32;
+    /// Line and edge widths and marker sizes in device coordinates (0 widths: continuous).
+    double nominalLineWidth = 1.0, minLineWidth = 1.0, maxLineWidth = 16.0;
+    double nominalMarkerSize = 8.0, minMarkerSize = 1.0, maxMarkerSize = 64.0;
+    /// Character heights and expansion factors (0: continuous range).
+    double minCharHeight = 1.0e-6, maxCharHeight = 1.0e6;
+    double minCharExpansion = 0.01, maxCharExpansion = 100.0;
+    int textFonts = 4;                 ///< fonts 1..textFonts, each in every precision (stroked)
+    std::vector<int> hatchStyles;      ///< the hatch style indices drawn as hatching
+    std::vector<int> colourModels{1};  ///< RGB only
+    int displayPriorities = 0;         ///< 0: continuous
+    DeferralMode defaultDeferral = DeferralMode::Asap;
+    ModificationMode defaultModification = ModificationMode::Nive;
+    /// Every change of a workstation attribute or of the posted networks re-traverses.
+    Dynamics attributeDynamics = Dynamics::Irg, structureDynamics = Dynamics::Irg;
     std::vector<int> gdps3;  ///< GDP 3 identifiers drawn (each with the polyline attributes)
     std::vector<int> gdps;   ///< GDP identifiers drawn (each with the polyline attributes)
     std::vector<int> gses;   ///< GSE identifiers acted on

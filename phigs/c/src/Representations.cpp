@@ -1,0 +1,218 @@
+// Representations: the polyline, polymarker, text, interior, edge, pattern and colour tables
+// of a workstation, its colour model, and their inquiries (SET and REALIZED values).
+
+#include "Inquiry.h"
+#include "StoreBuffer.h"
+#include "WorkstationAccess.h"
+#include "phigs.h"
+#include "phigs/ws/Realization.h"
+#include "phigs/ws/WorkstationErrors.h"
+
+using namespace phigs;
+using phigs::c::inquire;
+
+namespace {
+
+/// PINQ_SET or PINQ_REALIZED (2202 otherwise).
+bool realizedWanted(const Pinq_type& type) {
+    const int t = c::raw(type);
+    if (t != PINQ_SET && t != PINQ_REALIZED)
+        throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "type of returned value");
+    return t == PINQ_REALIZED;
+}
+
+/// The bundle an INQUIRE ... REPRESENTATION answers: the entry as set (101 when not defined),
+/// or as realized (index 1's for an undefined index).
+template <class Table, class Out>
+void answerBundle(Phigs& p, Pint ws_id, Pint index, const Pinq_type& type, Out* rep,
+                  const Table& (*table)(const WorkstationTables&)) {
+    const Workstation& ws = c::inquiredWorkstation(p, ws_id);
+    if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry", "index " + std::to_string(index));
+    const bool realize = realizedWanted(type);
+    const Table& t = table(ws.tables());
+    if (!t.defined(index) && !realize)
+        throw Error(errors::RepresentationNotDefined, "inquiry", "index " + std::to_string(index));
+    const auto& bundle = t.get(index);
+    const auto answer =
+        c::cBundle(realize ? realized(bundle, ws.description(), ws.tables().colours) : bundle);
+    if (rep) *rep = answer;
+}
+
+const BundleTable<PolylineBundle>& lines(const WorkstationTables& t) {
+    return t.polylines;
+}
+const BundleTable<PolymarkerBundle>& markers(const WorkstationTables& t) {
+    return t.polymarkers;
+}
+const BundleTable<TextBundle>& texts(const WorkstationTables& t) {
+    return t.texts;
+}
+const BundleTable<InteriorBundle>& interiors(const WorkstationTables& t) {
+    return t.interiors;
+}
+const BundleTable<EdgeBundle>& edges(const WorkstationTables& t) {
+    return t.edges;
+}
+
+/// INQUIRE LIST OF ... INDICES: the defined indices of one table, ascending.
+template <class Indices>
+void answerIndices(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total,
+                   Indices&& of) {
+    inquire(err, [&](Phigs& p) {
+        c::answerList(of(c::inquiredWorkstation(p, ws_id)), length, start, inds, total);
+    });
+}
+
+}  // namespace
+
+extern "C" {
+
+void pset_line_rep(Pint ws_id, Pint index, const Pline_bundle* b) {
+    c::onOpenWorkstation(Pfn_set_line_rep, ws_id, [&](Workstation& ws) {
+        c::require(b, "SET POLYLINE REPRESENTATION");
+        ws.setPolylineRepresentation(index, c::coreBundle(*b));
+    });
+}
+
+void pset_marker_rep(Pint ws_id, Pint index, const Pmarker_bundle* b) {
+    c::onOpenWorkstation(Pfn_set_marker_rep, ws_id, [&](Workstation& ws) {
+        c::require(b, "SET POLYMARKER REPRESENTATION");
+        ws.setPolymarkerRepresentation(index, c::coreBundle(*b));
+    });
+}
+
+void pset_text_rep(Pint ws_id, Pint index, const Ptext_bundle* b) {
+    c::onOpenWorkstation(Pfn_set_text_rep, ws_id, [&](Workstation& ws) {
+        const char* function = "SET TEXT REPRESENTATION";
+        c::require(b, function);
+        ws.setTextRepresentation(index, c::coreBundle(*b, function));
+    });
+}
+
+void pset_int_rep(Pint ws_id, Pint index, const Pint_bundle* b) {
+    c::onOpenWorkstation(Pfn_set_int_rep, ws_id, [&](Workstation& ws) {
+        const char* function = "SET INTERIOR REPRESENTATION";
+        c::require(b, function);
+        ws.setInteriorRepresentation(index, c::coreBundle(*b, function));
+    });
+}
+
+void pset_edge_rep(Pint ws_id, Pint index, const Pedge_bundle* b) {
+    c::onOpenWorkstation(Pfn_set_edge_rep, ws_id, [&](Workstation& ws) {
+        const char* function = "SET EDGE REPRESENTATION";
+        c::require(b, function);
+        ws.setEdgeRepresentation(index, c::coreBundle(*b, function));
+    });
+}
+
+void pset_pat_rep(Pint ws_id, Pint index, const Ppat_rep* rep) {
+    c::onOpenWorkstation(Pfn_set_pat_rep, ws_id, [&](Workstation& ws) {
+        const char* function = "SET PATTERN REPRESENTATION";
+        c::require(rep, function);
+        if (index < 1) throw Error(errors::PatternIndexBelowOne, function, "index " + std::to_string(index));
+        ws.setPatternRepresentation(index, c::corePattern(*rep, function));
+    });
+}
+
+void pset_colr_rep(Pint ws_id, Pint index, const Pcolr_rep* rep) {
+    c::onOpenWorkstation(Pfn_set_colr_rep, ws_id, [&](Workstation& ws) {
+        c::require(rep, "SET COLOUR REPRESENTATION");
+        ws.setColourRepresentation(index,
+                                   {rep->rgb.red, rep->rgb.green, rep->rgb.blue});  // RGB: the only model
+    });
+}
+
+void pset_colr_model(Pint ws_id, Pint model) {
+    c::onOpenWorkstation(Pfn_set_colr_model, ws_id, [&](Workstation& ws) { ws.setColourModel(model); });
+}
+
+void pinq_line_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pline_bundle* rep) {
+    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, lines); });
+}
+
+void pinq_marker_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pmarker_bundle* rep) {
+    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, markers); });
+}
+
+void pinq_text_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Ptext_bundle* rep) {
+    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, texts); });
+}
+
+void pinq_int_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pint_bundle* rep) {
+    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, interiors); });
+}
+
+void pinq_edge_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pedge_bundle* rep) {
+    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, edges); });
+}
+
+void pinq_pat_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err, Ppat_rep** rep) {
+    inquire(err, [&](Phigs& p) {
+        const Workstation& ws = c::inquiredWorkstation(p, ws_id);
+        if (index < 1) throw Error(errors::PatternIndexBelowOne, "inquiry", "index " + std::to_string(index));
+        const bool realize = realizedWanted(type);
+        const PatternRepresentation* pattern = ws.patterns().find(index);
+        if (!pattern && realize) pattern = ws.patterns().find(1);
+        if (!pattern)
+            throw Error(errors::RepresentationNotDefined, "inquiry", "pattern " + std::to_string(index));
+        Phigs_store& s = c::storeOf(store);
+        c::require(rep, "INQUIRE PATTERN REPRESENTATION");
+        *rep = c::answerPattern(realize ? realized(*pattern, ws.tables().colours) : *pattern, s);
+    });
+}
+
+void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pcolr_rep* rep) {
+    inquire(err, [&](Phigs& p) {
+        const Workstation& ws = c::inquiredWorkstation(p, ws_id);
+        if (index < 0) throw Error(errors::ColourIndexBelowZero, "inquiry", "index " + std::to_string(index));
+        const bool realize = realizedWanted(type);
+        const ColourTable& colours = ws.tables().colours;
+        if (!colours.defined(index) && !realize)
+            throw Error(errors::RepresentationNotDefined, "inquiry", "colour " + std::to_string(index));
+        if (rep) *rep = c::cColour(colours.get(index));  // realized: drawn as given, undefined as 1
+    });
+}
+
+void pinq_colr_model(Pint ws_id, Pint* err, Pint* model) {
+    inquire(err, [&](Phigs& p) {
+        const Workstation& ws = c::inquiredWorkstation(p, ws_id);
+        if (model) *model = ws.colourModel();
+    });
+}
+
+void pinq_list_line_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().polylines.definedIndices(); });
+}
+
+void pinq_list_marker_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().polymarkers.definedIndices(); });
+}
+
+void pinq_list_text_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().texts.definedIndices(); });
+}
+
+void pinq_list_int_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().interiors.definedIndices(); });
+}
+
+void pinq_list_edge_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().edges.definedIndices(); });
+}
+
+void pinq_list_pat_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.patterns().definedIndices(); });
+}
+
+void pinq_list_colr_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    answerIndices(ws_id, length, start, err, inds, total,
+                  [](const Workstation& ws) { return ws.tables().colours.definedIndices(); });
+}
+
+}  // extern "C"

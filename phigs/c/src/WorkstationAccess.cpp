@@ -1,0 +1,122 @@
+#include "WorkstationAccess.h"
+
+#include <string>
+
+namespace phigs::c {
+
+WorkstationType workstationTypeOf(Pint type, const char* function) {
+    const WorkstationType core = static_cast<WorkstationType>(type - PWST_OFFSCREEN);
+    if (type < PWST_OFFSCREEN || !isWorkstationType(core))
+        throw Error(errors::BadWorkstationType, function, "workstation type " + std::to_string(type));
+    return core;
+}
+
+Workstation& inquiredWorkstation(Phigs& p, Pint id) {
+    if (!p.anyWorkstationOpen()) throw Error(errors::NoWorkstationOpen, "inquiry");
+    Workstation* ws = p.findWorkstation(id);
+    if (!ws) throw Error(errors::WorkstationNotOpen, "inquiry", "workstation " + std::to_string(id));
+    return *ws;
+}
+
+Plimit3 limit3(const glm::dvec3& min, const glm::dvec3& max) {
+    return {static_cast<Pfloat>(min.x), static_cast<Pfloat>(max.x), static_cast<Pfloat>(min.y),
+            static_cast<Pfloat>(max.y), static_cast<Pfloat>(min.z), static_cast<Pfloat>(max.z)};
+}
+
+Plimit limit2(const glm::dvec3& min, const glm::dvec3& max) {
+    return {static_cast<Pfloat>(min.x), static_cast<Pfloat>(max.x), static_cast<Pfloat>(min.y),
+            static_cast<Pfloat>(max.y)};
+}
+
+Pview_rep3 viewRep3(const ViewRepresentation& v) {
+    Pview_rep3 r{};
+    fromGlm(v.orientation, r.ori_matrix);
+    fromGlm(v.mapping, r.map_matrix);
+    r.clip_limit = limit3(v.clipMin, v.clipMax);
+    r.xy_clip = v.clipXY ? PIND_CLIP : PIND_NO_CLIP;
+    r.back_clip = v.clipBack ? PIND_CLIP : PIND_NO_CLIP;
+    r.front_clip = v.clipFront ? PIND_CLIP : PIND_NO_CLIP;
+    return r;
+}
+
+Pint colourIndexOf(const Colour& colour) {
+    // A direct colour has no index: error 134 (the core's bundles may hold PHIGS PLUS colours).
+    if (colour.direct) throw Error(134, "inquiry", "the representation's colour is direct");
+    return colour.index;
+}
+
+PolylineBundle coreBundle(const Pline_bundle& b) {
+    return {static_cast<LineType>(b.type), b.width, Colour::indexed(b.colr_ind)};
+}
+
+PolymarkerBundle coreBundle(const Pmarker_bundle& b) {
+    return {static_cast<MarkerType>(b.type), b.size, Colour::indexed(b.colr_ind)};
+}
+
+TextBundle coreBundle(const Ptext_bundle& b, const char* function) {
+    const int precision = raw(b.prec);
+    if (precision < PPREC_STRING || precision > PPREC_STROKE) throw Error(PE_ENUM_TYPE_INVAL, function);
+    return {b.font, precision, b.char_expan, b.char_space, Colour::indexed(b.colr_ind)};
+}
+
+InteriorBundle coreBundle(const Pint_bundle& b, const char* function) {
+    const int style = raw(b.style);
+    if (style < PSTYLE_HOLLOW || style > PSTYLE_EMPTY) throw Error(PE_ENUM_TYPE_INVAL, function);
+    InteriorBundle r;
+    r.style = r.backStyle = static_cast<InteriorStyle>(style);
+    r.styleIndex = r.backStyleIndex = b.style_ind;
+    r.colour = r.backColour = Colour::indexed(b.colr_ind);
+    return r;
+}
+
+EdgeBundle coreBundle(const Pedge_bundle& b, const char* function) {
+    const int flag = raw(b.flag);
+    if (flag != PEDGE_OFF && flag != PEDGE_ON) throw Error(PE_ENUM_TYPE_INVAL, function);
+    return {flag == PEDGE_ON, static_cast<LineType>(b.type), b.width, Colour::indexed(b.colr_ind)};
+}
+
+PatternRepresentation corePattern(const Ppat_rep& p, const char* function) {
+    PatternRepresentation r{p.dims.size_x, p.dims.size_y, {}};
+    if (p.dims.size_x < 1 || p.dims.size_y < 1) return r;  // error 116 in the table, after 112
+    const std::size_t n = static_cast<std::size_t>(p.dims.size_x) * static_cast<std::size_t>(p.dims.size_y);
+    require(p.colr_array, function);
+    r.colourIndices.assign(p.colr_array, p.colr_array + n);
+    return r;
+}
+
+Pline_bundle cBundle(const PolylineBundle& b) {
+    return {static_cast<Pint>(b.type), static_cast<Pfloat>(b.width), colourIndexOf(b.colour)};
+}
+
+Pmarker_bundle cBundle(const PolymarkerBundle& b) {
+    return {static_cast<Pint>(b.type), static_cast<Pfloat>(b.scale), colourIndexOf(b.colour)};
+}
+
+Ptext_bundle cBundle(const TextBundle& b) {
+    return {b.font, static_cast<Ptext_prec>(b.precision), static_cast<Pfloat>(b.expansion),
+            static_cast<Pfloat>(b.spacing), colourIndexOf(b.colour)};
+}
+
+Pint_bundle cBundle(const InteriorBundle& b) {
+    return {static_cast<Pint_style>(b.style), b.styleIndex, colourIndexOf(b.colour)};
+}
+
+Pedge_bundle cBundle(const EdgeBundle& b) {
+    return {b.visible ? PEDGE_ON : PEDGE_OFF, static_cast<Pint>(b.type), static_cast<Pfloat>(b.width),
+            colourIndexOf(b.colour)};
+}
+
+Ppat_rep* answerPattern(const PatternRepresentation& p, Phigs_store& s) {
+    s.clear();
+    s.ints.assign(p.colourIndices.begin(), p.colourIndices.end());
+    s.pattern = {{p.columns, p.rows}, s.ints.data()};
+    return &s.pattern;
+}
+
+Pcolr_rep cColour(const glm::dvec3& rgb) {
+    Pcolr_rep r{};
+    r.rgb = {static_cast<Pfloat>(rgb.x), static_cast<Pfloat>(rgb.y), static_cast<Pfloat>(rgb.z)};
+    return r;
+}
+
+}  // namespace phigs::c

@@ -1,0 +1,15 @@
+#pragma once
+
+// The error numbers (ISO 9592) of the workstation's representations and description table,
+// beyond the common ones of phigs/core/Error.h.
+
+namespace phigs::errors {
+
+inline constexpr int RepresentationNotPredefined = 102;  ///< no such predefined representation
+inline constexpr int TextFontNotAvailable = 106;         ///< font and precision pair not available
+inline constexpr int EdgeTypeNotAvailable = 107;
+inline constexpr int ColourModelNotAvailable = 110;
+inline constexpr int PatternIndexBelowOne = 112;
+inline constexpr int BadPatternDimensions = 116;  ///< a dimension of the colour index array below one
+
+}  // namespace phigs::errors

@@ -1,0 +1,63 @@
+#include "phigs/ws/Realization.h"
+
+#include <algorithm>
+
+namespace phigs {
+namespace {
+
+Colour realizedColour(const Colour& colour, const ColourTable& table) {
+    if (colour.direct || table.defined(colour.index)) return colour;
+    return Colour::indexed(1);
+}
+
+/// A scale factor of a nominal size as drawn: the size clamped to [min, max].
+double realizedScale(double scale, double nominal, double min, double max) {
+    return std::clamp(scale * nominal, min, max) / nominal;
+}
+
+}  // namespace
+
+PolylineBundle realized(const PolylineBundle& b, const WorkstationDescription& d, const ColourTable& c) {
+    PolylineBundle r = b;
+    r.width = realizedScale(b.width, d.nominalLineWidth, d.minLineWidth, d.maxLineWidth);
+    r.colour = realizedColour(b.colour, c);
+    return r;
+}
+
+PolymarkerBundle realized(const PolymarkerBundle& b, const WorkstationDescription& d, const ColourTable& c) {
+    PolymarkerBundle r = b;
+    r.scale = realizedScale(b.scale, d.nominalMarkerSize, d.minMarkerSize, d.maxMarkerSize);
+    r.colour = realizedColour(b.colour, c);
+    return r;
+}
+
+TextBundle realized(const TextBundle& b, const WorkstationDescription& d, const ColourTable& c) {
+    TextBundle r = b;
+    r.precision = 2;  // STROKE: every font is a stroke font here
+    r.expansion = std::clamp(b.expansion, d.minCharExpansion, d.maxCharExpansion);
+    r.colour = realizedColour(b.colour, c);
+    return r;
+}
+
+InteriorBundle realized(const InteriorBundle& b, const WorkstationDescription&, const ColourTable& c) {
+    InteriorBundle r = b;
+    r.colour = realizedColour(b.colour, c);
+    r.backColour = realizedColour(b.backColour, c);
+    return r;
+}
+
+EdgeBundle realized(const EdgeBundle& b, const WorkstationDescription& d, const ColourTable& c) {
+    EdgeBundle r = b;
+    r.width = realizedScale(b.width, d.nominalLineWidth, d.minLineWidth, d.maxLineWidth);
+    r.colour = realizedColour(b.colour, c);
+    return r;
+}
+
+PatternRepresentation realized(const PatternRepresentation& p, const ColourTable& c) {
+    PatternRepresentation r = p;
+    for (int& index : r.colourIndices)
+        if (!c.defined(index)) index = 1;
+    return r;
+}
+
+}  // namespace phigs
