@@ -3,6 +3,7 @@
 // Pstore (ISO 9593-4): the memory of one variable-size inquiry answer. Each inquiry that is
 // given the store replaces what it held, so answers stay valid until the store's next use.
 
+#include "InputAnswer.h"
 #include "phigs.h"
 
 #include <string>
@@ -25,6 +26,7 @@ struct Phigs_store {
     std::vector<std::string> names;
     std::vector<Par_file> files;
     Par_file_list fileList{};
+    phigs::c::InputAnswer input;  ///< the input inquiries' answers
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -33,5 +35,6 @@ struct Phigs_store {
         halfSpaces3.clear(), halfSpaces.clear(), text.clear();
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
+        input = {};
     }
 };
