@@ -75,9 +75,9 @@ int main(int argc, char** argv) {
     pupd_ws(1, PFLAG_PERFORM); /* draws the picture (and writes FILE.png when given) */
     pset_pick_filter(1, 1, &filter);
 
-    script.escape_in_u1.ws_id = 1;
-    script.escape_in_u1.script = argc > 1 ? NULL : default_script;
-    script.escape_in_u1.file = argc > 1 ? argv[1] : NULL;
+    script.escape_in_u11.ws_id = 1;
+    script.escape_in_u11.script = argc > 1 ? NULL : default_script;
+    script.escape_in_u11.file = argc > 1 ? argv[1] : NULL;
     pescape(PUESC_INPUT_SCRIPT, &script, NULL, &out);
 
     /* One request per press, until the operator (the script's "break") breaks one. */

@@ -12,9 +12,9 @@
 static void attach(const char* script) {
     Pescape_in_data in;
     Pescape_out_data* out = NULL;
-    in.escape_in_u1.ws_id = WS;
-    in.escape_in_u1.script = script;
-    in.escape_in_u1.file = NULL;
+    in.escape_in_u11.ws_id = WS;
+    in.escape_in_u11.script = script;
+    in.escape_in_u11.file = NULL;
     EXPECT_NO_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out));
     CHECK(out == NULL);
 }

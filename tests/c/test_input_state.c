@@ -231,17 +231,17 @@ static void errors(void) {
     EXPECT_ERROR(pflush_events(WS, PIN_NONE, 1), PE_ENUM_TYPE_INVAL, Pfn_flush_events);
     Pescape_in_data in;
     Pescape_out_data* out = NULL;
-    in.escape_in_u1.ws_id = WS;
-    in.escape_in_u1.script = "frobnicate 1 2\n";
-    in.escape_in_u1.file = NULL;
+    in.escape_in_u11.ws_id = WS;
+    in.escape_in_u11.script = "frobnicate 1 2\n";
+    in.escape_in_u11.file = NULL;
     EXPECT_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out), 351, Pfn_escape);
-    in.escape_in_u1.script = NULL;
-    in.escape_in_u1.file = "/nonexistent/script.txt";
+    in.escape_in_u11.script = NULL;
+    in.escape_in_u11.file = "/nonexistent/script.txt";
     EXPECT_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out), 351, Pfn_escape);
-    in.escape_in_u1.ws_id = PDF;
-    in.escape_in_u1.script = "break\n";
+    in.escape_in_u11.ws_id = PDF;
+    in.escape_in_u11.script = "break\n";
     EXPECT_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out), 61, Pfn_escape);
-    in.escape_in_u1.ws_id = 9;
+    in.escape_in_u11.ws_id = 9;
     EXPECT_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out), 54, Pfn_escape);
 
     /* Inquiries answer errors in err_ind only. */

@@ -105,15 +105,18 @@ typedef struct {
     Pint size;
     void* data;
 } Pdata;
-/* ESCAPE data records. This implementation registers one escape, PUESC_INPUT_SCRIPT (see the
- * input section below); any other identifier is answered with warning 350. The output record
- * is always NULL. */
+/* ESCAPE data records. This implementation registers one escape, PUESC_INPUT_SCRIPT (-11, its
+ * record escape_in_u11; see the input section below); any other identifier is answered with
+ * warning 350. The output record is always NULL. */
 typedef union {
+    struct {
+        Pint unused;
+    } escape_in_u1;
     struct {
         Pint ws_id;
         const char* script; /* the script's text, or NULL to read it from `file` */
         const char* file;
-    } escape_in_u1;
+    } escape_in_u11;
     Pdata unsupp;
 } Pescape_in_data;
 typedef union {
@@ -917,7 +920,7 @@ void pinq_gse_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pgse_id
  * A refused call changes nothing.
  *
  * Operator actions come from an input script attached by ESCAPE PUESC_INPUT_SCRIPT (the
- * in-record's escape_in_u1: ws_id, and the script's text, or NULL and a file name). One action
+ * in-record's escape_in_u11: ws_id, and the script's text, or NULL and a file name). One action
  * a line, positions in device coordinates of the display space measured from its top left
  * (y down, pixels of the PWST_OFFSCREEN image):
  *     pick X Y          locator X Y        stroke X1 Y1 X2 Y2 ...    move X Y
@@ -929,7 +932,7 @@ void pinq_gse_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pgse_id
  * attached is error 250, one whose script has ended PE_INPUT_SCRIPT_ENDED, and an action that
  * does not fit its device (a value outside the valuator's range) 351. Errors of the escape: 54,
  * 61, 351 (no script given, or it cannot be read or parsed). */
-#define PUESC_INPUT_SCRIPT (-1)
+#define PUESC_INPUT_SCRIPT (-11)
 #define PE_INPUT_SCRIPT_ENDED (-206) /* error: the script ended while a REQUEST waits */
 
 typedef enum { POP_REQ, POP_SAMPLE, POP_EVENT } Pop_mode;

@@ -46,6 +46,8 @@ public:
     InputQueue& queue() { return *queue_; }
     /// Connects `ws`'s devices to `script` (dropping the script it had) and to the queue.
     void attachScript(Workstation& ws, std::unique_ptr<ScriptInputSource> script);
+    /// Connects the devices of a window workstation with no source yet to its window.
+    void connectWindow(Workstation& ws);
     /// CLOSE WORKSTATION: its script and records go.
     void forget(int ws);
     /// The record INITIALIZE left for a device, or null (never initialised).
@@ -59,13 +61,16 @@ private:
     std::map<std::tuple<int, InputClass, int>, DeviceRecord> records_;
 };
 
+/// The mouse and keys of a PWST_WINDOW workstation's own window (Outputs.cpp), or null.
+InputSource* windowInputSource(Workstation& ws);
 /// CLOSE WORKSTATION's part: the workstation's script and records go.
 void forgetInput(int ws);
 /// ESCAPE PUESC_INPUT_SCRIPT (errors 54, 61, 351).
 void attachInputScript(Phigs& p, const Pescape_in_data* in);
 
 /// The workstation of an input function: 3, 54, then 61 (60 for pick) unless it is OUTIN.
-/// `inquiry`: raised without logging (the inquiries' error indicator).
+/// `inquiry`: raised without logging (the inquiries' error indicator); otherwise a window
+/// workstation's devices are connected to its window when they have no source yet.
 Workstation& inputWorkstation(Phigs& p, Pint id, InputClass inputClass, bool inquiry = false);
 /// The device `number` of `ws`: 250 when it has none.
 const InputDevice& inputDevice(const Workstation& ws, InputClass inputClass, Pint number,

@@ -104,6 +104,11 @@ void InputSession::attachScript(Workstation& ws, std::unique_ptr<ScriptInputSour
     scripts_[ws.id()] = std::move(script);
 }
 
+void InputSession::connectWindow(Workstation& ws) {
+    if (ws.input().source()) return;
+    if (InputSource* window = windowInputSource(ws)) ws.connectInput(*window, *queue_);
+}
+
 void InputSession::forget(int ws) {
     scripts_.erase(ws);
     std::erase_if(records_, [ws](const auto& entry) { return std::get<0>(entry.first) == ws; });
@@ -125,14 +130,14 @@ void forgetInput(int ws) {
 void attachInputScript(Phigs& p, const Pescape_in_data* in) {
     const char* function = "ESCAPE";
     require(in, function);
-    Workstation& ws = inputWorkstation(p, in->escape_in_u1.ws_id, InputClass::Locator);
+    Workstation& ws = inputWorkstation(p, in->escape_in_u11.ws_id, InputClass::Locator);
     std::unique_ptr<ScriptInputSource> script;
     try {
-        if (in->escape_in_u1.script)
+        if (in->escape_in_u11.script)
             script = std::make_unique<ScriptInputSource>(
-                in->escape_in_u1.script, "input script of workstation " + std::to_string(ws.id()));
-        else if (in->escape_in_u1.file)
-            script = std::make_unique<ScriptInputSource>(ScriptInputSource::fromFile(in->escape_in_u1.file));
+                in->escape_in_u11.script, "input script of workstation " + std::to_string(ws.id()));
+        else if (in->escape_in_u11.file)
+            script = std::make_unique<ScriptInputSource>(ScriptInputSource::fromFile(in->escape_in_u11.file));
         else
             throw Error(kEscapeRecord, function, "neither a script nor a file name");
     } catch (const ScriptError& e) {
@@ -153,6 +158,7 @@ Workstation& inputWorkstation(Phigs& p, Pint id, InputClass inputClass, bool inq
     if (ws->description().category != WorkstationCategory::OutIn)
         throw Error(inputClass == InputClass::Pick ? kNotOutIn : kNotInput, "input",
                     "workstation " + std::to_string(id) + " is of category OUTPUT");
+    if (!inquiry) InputSession::of().connectWindow(*ws);
     return *ws;
 }
 
@@ -262,9 +268,9 @@ std::pair<Pin_status, Measure> requestMeasure(Workstation& ws, InputClass inputC
         throw Error(errors::DeviceNotAvailable, function,
                     "no input script is attached to workstation " + std::to_string(ws.id()));
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
-    for (;;) {
+    for (;;) {  // a script answers at once; a window waits for the operator in slices
         const auto pumped =
-            scripted(function, [&] { return input.pump(std::chrono::milliseconds(0), &d, &result); });
+            scripted(function, [&] { return input.pump(std::chrono::milliseconds(100), &d, &result); });
         if (pumped == WorkstationInput::Pumped::Broke) return {PIN_STATUS_NONE, d.current};
         if (pumped == WorkstationInput::Pumped::Satisfied) return {statusOf(result.second), result.second};
     }
