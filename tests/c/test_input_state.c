@@ -270,6 +270,24 @@ static void errors(void) {
     CHECK(error_count == 0);
 }
 
+/* CLOSE WORKSTATION drops its script and device records: reopened, it starts afresh. */
+static void reopen(void) {
+    Pescape_in_data in;
+    Pescape_out_data* out = NULL;
+    in.escape_in_u11.ws_id = WS;
+    in.escape_in_u11.script = "valuator 7 0.5\n";
+    in.escape_in_u11.file = NULL;
+    EXPECT_NO_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out));
+    EXPECT_NO_ERROR(pclose_ws(WS));
+    EXPECT_NO_ERROR(popen_ws(WS, NULL, PWST_OFFSCREEN));
+    Pin_status status;
+    Pfloat value;
+    EXPECT_ERROR(preq_val(WS, 7, &status, &value), 250, Pfn_req_val);
+    const ValState fresh = val_state(7);
+    const Plimit3 whole = {0, 1024, 0, 768, 0, 1};
+    CHECK(fresh.err == 0 && fresh.pet == 1 && fresh.value == 0 && same_limit(fresh.volume, whole));
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors_file[512], pdf[512];
@@ -286,6 +304,7 @@ int main(int argc, char** argv) {
     default_data();
     initialise_and_inquire();
     errors();
+    reopen();
     EXPECT_NO_ERROR(pclose_ws(PDF));
     EXPECT_NO_ERROR(pclose_ws(WS));
     pdel_store(store);
