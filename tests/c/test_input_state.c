@@ -223,6 +223,23 @@ static void errors(void) {
                  Pfn_init_pick3);
     Pfilter filter = {{0, NULL}, {0, NULL}};
     EXPECT_ERROR(pset_pick_filter(WS, 2, &filter), 250, Pfn_set_pick_filter);
+    /* The refused stroke, string and choice initialisations left those devices as they were. */
+    Pint err = -1, view = -1, pet = -1, choice = -1;
+    Pop_mode mode;
+    Pecho_switch echo;
+    Plimit3 volume;
+    Ppoint_list3* stroke = NULL;
+    Pstroke_data3* stroke_data = NULL;
+    pinq_stroke_st3(WS, 1, PINQ_SET, store, &err, &mode, &echo, &view, &stroke, &pet, &volume, &stroke_data);
+    CHECK(err == 0 && stroke->num_points == 2 && stroke_data->buffer_size == 8 && stroke_data->init_pos == 3);
+    char* text = NULL;
+    Pstring_data3* string_data = NULL;
+    pinq_string_st3(WS, 1, store, &err, &mode, &echo, &text, &pet, &volume, &string_data);
+    CHECK(err == 0 && strcmp(text, "abc") == 0 && string_data->buffer_size == 16);
+    Pin_status init_status = PIN_STATUS_NONE;
+    Pchoice_data3* choice_data = NULL;
+    pinq_choice_st3(WS, 1, store, &err, &mode, &echo, &init_status, &choice, &pet, &volume, &choice_data);
+    CHECK(err == 0 && pet == 1 && init_status == PIN_STATUS_OK && choice == 1);
 
     /* REQUEST without a script, GET without an event, the escape's errors. */
     Pin_status status;
@@ -245,20 +262,14 @@ static void errors(void) {
     EXPECT_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out), 54, Pfn_escape);
 
     /* Inquiries answer errors in err_ind only. */
-    Pint err = -1;
     Pin_class in_class;
     Pint ws, dev;
     error_count = 0;
     pinq_in_overf(&err, &ws, &in_class, &dev);
     CHECK(err == 257);
     CHECK(val_state(13).err == 250);
-    Pop_mode mode;
-    Pecho_switch echo;
     Pfilter* filter_back;
-    Pin_status init_status;
     Ppick_path* path;
-    Pint pet;
-    Plimit3 volume;
     Ppick_data3* data;
     Ppath_order order;
     pinq_pick_st3(PDF, 1, PINQ_SET, store, &err, &mode, &echo, &filter_back, &init_status, &path, &pet,
