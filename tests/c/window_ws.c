@@ -1,6 +1,7 @@
 /* The window workstation type from C, under an Xvfb of its own (label window): opened on
  * $DISPLAY (NULL) and by display name, drawn at update, its connection identifier inquired; a
- * second display while a window is open is error 50, a display with no server 55.
+ * second display while a window is open is error 50, a display with no server 55. Its devices
+ * read the window (AWAIT EVENT times out with no operator) or, once given, an input script.
  * argv[1]: a directory for the error file. */
 #include "check.h"
 
@@ -31,6 +32,21 @@ int main(int argc, char** argv) {
     pinq_ws_conn_type(1, store, &err, &conn, &type);
     CHECK(err == 0 && type == PWST_WINDOW && conn == NULL);
     EXPECT_NO_ERROR(predraw_all_structs(2, PFLAG_ALWAYS));
+    Pint ws = -1, number = -1;
+    Pin_class in_class = PIN_LOC;
+    EXPECT_NO_ERROR(pset_choice_mode(1, 1, POP_EVENT, PSWITCH_ECHO));
+    EXPECT_NO_ERROR(pawait_event(0.05f, &ws, &in_class, &number));
+    CHECK(in_class == PIN_NONE);
+    Pescape_in_data in;
+    Pescape_out_data* out = NULL;
+    in.escape_in_u11.ws_id = 2;
+    in.escape_in_u11.script = "valuator 1 0.5\n";
+    in.escape_in_u11.file = NULL;
+    EXPECT_NO_ERROR(pescape(PUESC_INPUT_SCRIPT, &in, NULL, &out));
+    Pin_status status = PIN_STATUS_NONE;
+    Pfloat value = 0;
+    EXPECT_NO_ERROR(preq_val(2, 1, &status, &value));
+    CHECK(status == PIN_STATUS_OK && value == 0.5f);
     EXPECT_ERROR(popen_ws(3, ":4711", PWST_WINDOW), 50, Pfn_open_ws); /* one display per process */
     EXPECT_NO_ERROR(pclose_ws(1));
     EXPECT_NO_ERROR(pclose_ws(2));

@@ -107,10 +107,10 @@ TEST_CASE("input devices: initialisation is checked against its class's rules", 
     DeviceInitialisation e;
     e.initial = LocatorMeasure{};
     e.promptEchoType = 9;
-    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 254);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 253);
     e.promptEchoType = 1;
     e.echoVolume = {10, 5, 0, 1, 0, 1};
-    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 255);
+    CHECK(errorOf([&] { r.input.initialise(InputClass::Locator, 1, e); }) == 254);
     DeviceInitialisation p;
     p.initial = PickMeasure{};
     p.pickAperture = 0.0;

@@ -105,12 +105,18 @@ typedef struct {
     Pint size;
     void* data;
 } Pdata;
-/* ESCAPE data records. This implementation registers no escape: every identifier is answered
- * with warning 350 and a NULL output record. */
+/* ESCAPE data records. This implementation registers one escape, PUESC_INPUT_SCRIPT (-11, its
+ * record escape_in_u11; see the input section below); any other identifier is answered with
+ * warning 350. The output record is always NULL. */
 typedef union {
     struct {
         Pint unused;
     } escape_in_u1;
+    struct {
+        Pint ws_id;
+        const char* script; /* the script's text, or NULL to read it from `file` */
+        const char* file;
+    } escape_in_u11;
     Pdata unsupp;
 } Pescape_in_data;
 typedef union {
@@ -1168,6 +1174,340 @@ void pinq_pred_edge_rep(Pint ws_type, Pint index, Pint* err_ind, Pedge_bundle* r
 void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err_ind, Ppat_rep** rep);
 void pinq_pred_colr_rep(Pint ws_type, Pint index, Pint* err_ind, Pcolr_rep* rep);
 void pinq_pred_view_rep(Pint ws_type, Pint index, Pint* err_ind, Pview_rep3* rep);
+
+/* ==== input: logical input devices (INITIALIZE, modes, REQUEST, SAMPLE, events, inquiries) ====
+ * Every OUTIN type (PWST_OFFSCREEN, PWST_WINDOW) has 1 locator, 1 stroke, 12 valuators,
+ * 4 choices, 1 pick and 1 string device (pinq_num_avail_in). Errors: 3 and 54 (workstation),
+ * 61 (not of category INPUT or OUTIN; 60 for pick: not OUTIN), 250 (no such device), 251 (not in
+ * REQUEST mode), 252 (not in SAMPLE mode), 253 (warning: prompt/echo type not available, type 1
+ * with the default data record used instead), 254 (echo area/volume with min >= max),
+ * 255 (echo area/volume outside the display space), 260 (data record), 261 (initial value),
+ * 262/263 (initial stroke/string longer than the buffer), 114 (view index not in the view
+ * table), 259 (GET of another class than the current event's), 256 (warning: queue overflow).
+ * A refused call changes nothing.
+ *
+ * Operator actions come from an input script attached by ESCAPE PUESC_INPUT_SCRIPT (the
+ * in-record's escape_in_u11: ws_id, and the script's text, or NULL and a file name). One action
+ * a line, positions in device coordinates of the display space measured from its top left
+ * (y down, pixels of the PWST_OFFSCREEN image):
+ *     pick X Y          locator X Y        stroke X1 Y1 X2 Y2 ...    move X Y
+ *     valuator D V      choice N|NAME      string TEXT               break      wait
+ * ("device D" after pick, locator, stroke, choice or move addresses device D; # comments).
+ * A REQUEST takes lines until one satisfies it ("break": status NONE); each SAMPLE first
+ * delivers the script's next line, if any; AWAIT EVENT takes lines until an event is queued
+ * ("wait" ends it with class NONE, as does the end of the script). A REQUEST with no script
+ * attached is error 250, one whose script has ended PE_INPUT_SCRIPT_ENDED, and an action that
+ * does not fit its device (a value outside the valuator's range) 351. Errors of the escape: 54,
+ * 61, 351 (no script given, or it cannot be read or parsed). */
+#define PUESC_INPUT_SCRIPT (-11)
+#define PE_INPUT_SCRIPT_ENDED (-206) /* error: the script ended while a REQUEST waits */
+
+typedef enum { POP_REQ, POP_SAMPLE, POP_EVENT } Pop_mode;
+typedef enum { PSWITCH_NO_ECHO, PSWITCH_ECHO } Pecho_switch;
+typedef enum { PIN_STATUS_NONE, PIN_STATUS_OK, PIN_STATUS_NO_IN } Pin_status;
+typedef enum { PIN_NONE, PIN_LOC, PIN_STROKE, PIN_VAL, PIN_CHOICE, PIN_PICK, PIN_STRING } Pin_class;
+typedef enum { PSIMULT_NO_MORE, PSIMULT_MORE } Pmore_simult_events;
+typedef enum { PPR_OFF, PPR_ON } Ppr_switch;
+/* Pinq_type and Pfilter: see the workstation state section above. */
+typedef struct {
+    Pint struct_id;
+    Pint pick_id;
+    Pint elem_pos;
+} Ppick_path_elem;
+typedef struct {
+    Pint depth;
+    Ppick_path_elem* path_list;
+} Ppick_path;
+typedef struct {
+    Pint loc, stroke, val, choice, pick, string;
+} Pnum_in;
+
+/* Prompt/echo types each class offers (the data record's member pet_rN belongs to type N). */
+#define PLOC_DEF 1
+#define PLOC_CROSS_HAIR 2
+#define PLOC_TRACK_CROSS 3
+#define PSTROKE_DEF 1
+#define PSTROKE_DIGIT 2
+#define PVAL_DEF 1
+#define PVAL_GRAPH 2
+#define PCHOICE_DEF 1
+#define PCHOICE_PR_ECHO 2
+#define PCHOICE_STRING_PR 3
+#define PPICK_DEF 1
+#define PPICK_GROUP_HIGHL 2
+#define PSTRING_DEF 1
+
+/* Data records. Stroke and string: buffer_size in [1, 4096] (points, characters), init_pos in
+ * [1, initial length + 1], intervals >= 0. Valuator: finite low < high. Choice: type 2 gives one
+ * prompt switch and type 3 one string per alternative (1 to 64 alternatives; a script may
+ * choose a type 3 alternative by its string). */
+typedef struct {
+    union {
+        struct {
+            Pint unused;
+        } pet_r1, pet_r2, pet_r3;
+    } pets;
+} Ploc_data;
+typedef Ploc_data Ploc_data3;
+typedef struct {
+    Pint buffer_size;
+    Pint init_pos;
+    Pfloat x_interval, y_interval, time_interval;
+    union {
+        struct {
+            Pint unused;
+        } pet_r1, pet_r2;
+    } pets;
+} Pstroke_data;
+typedef struct {
+    Pint buffer_size;
+    Pint init_pos;
+    Pfloat x_interval, y_interval, z_interval, time_interval;
+    union {
+        struct {
+            Pint unused;
+        } pet_r1, pet_r2;
+    } pets;
+} Pstroke_data3;
+typedef struct {
+    Pfloat low, high;
+    union {
+        struct {
+            Pint unused;
+        } pet_r1, pet_r2;
+    } pets;
+} Pval_data;
+typedef Pval_data Pval_data3;
+typedef struct {
+    union {
+        struct {
+            Pint unused;
+        } pet_r1;
+        struct {
+            Pint num_prompts;
+            Ppr_switch* prompts;
+        } pet_r2;
+        struct {
+            Pint num_strings;
+            char** strings;
+        } pet_r3;
+    } pets;
+} Pchoice_data;
+typedef Pchoice_data Pchoice_data3;
+typedef struct {
+    union {
+        struct {
+            Pint unused;
+        } pet_r1, pet_r2;
+    } pets;
+} Ppick_data;
+typedef Ppick_data Ppick_data3;
+typedef struct {
+    Pint buffer_size;
+    Pint init_pos;
+    union {
+        struct {
+            Pint unused;
+        } pet_r1;
+    } pets;
+} Pstring_data;
+typedef Pstring_data Pstring_data3;
+
+/* ISO function identifiers of the input functions. */
+enum {
+    Pfn_set_pick_filter = 130,
+    Pfn_init_loc3 = 131,
+    Pfn_init_loc = 132,
+    Pfn_init_stroke3 = 133,
+    Pfn_init_stroke = 134,
+    Pfn_init_val3 = 135,
+    Pfn_init_val = 136,
+    Pfn_init_choice3 = 137,
+    Pfn_init_choice = 138,
+    Pfn_init_pick3 = 139,
+    Pfn_init_pick = 140,
+    Pfn_init_string3 = 141,
+    Pfn_init_string = 142,
+    Pfn_set_loc_mode = 143,
+    Pfn_set_stroke_mode = 144,
+    Pfn_set_val_mode = 145,
+    Pfn_set_choice_mode = 146,
+    Pfn_set_pick_mode = 147,
+    Pfn_set_string_mode = 148,
+    Pfn_req_loc3 = 149,
+    Pfn_req_loc = 150,
+    Pfn_req_stroke3 = 151,
+    Pfn_req_stroke = 152,
+    Pfn_req_val = 153,
+    Pfn_req_choice = 154,
+    Pfn_req_pick = 155,
+    Pfn_req_string = 156,
+    Pfn_sample_loc3 = 157,
+    Pfn_sample_loc = 158,
+    Pfn_sample_stroke3 = 159,
+    Pfn_sample_stroke = 160,
+    Pfn_sample_val = 161,
+    Pfn_sample_choice = 162,
+    Pfn_sample_pick = 163,
+    Pfn_sample_string = 164,
+    Pfn_await_event = 165,
+    Pfn_flush_events = 166,
+    Pfn_get_loc3 = 167,
+    Pfn_get_loc = 168,
+    Pfn_get_stroke3 = 169,
+    Pfn_get_stroke = 170,
+    Pfn_get_val = 171,
+    Pfn_get_choice = 172,
+    Pfn_get_pick = 173,
+    Pfn_get_string = 174
+};
+
+/* INITIALIZE: the device must be in REQUEST mode. Echo areas and volumes are in device
+ * coordinates of the display space (y up, z in [0, 1]); the 2D forms keep z in [0, 1]. */
+void pinit_loc3(Pint ws_id, Pint loc_num, Pint init_view_ind, const Ppoint3* init_loc_pos, Pint pet,
+                const Plimit3* echo_vol, const Ploc_data3* loc_data);
+void pinit_loc(Pint ws_id, Pint loc_num, Pint init_view_ind, const Ppoint* init_loc_pos, Pint pet,
+               const Plimit* echo_area, const Ploc_data* loc_data);
+void pinit_stroke3(Pint ws_id, Pint stroke_num, Pint init_view_ind, const Ppoint_list3* init_stroke, Pint pet,
+                   const Plimit3* echo_vol, const Pstroke_data3* stroke_data);
+void pinit_stroke(Pint ws_id, Pint stroke_num, Pint init_view_ind, const Ppoint_list* init_stroke, Pint pet,
+                  const Plimit* echo_area, const Pstroke_data* stroke_data);
+void pinit_val3(Pint ws_id, Pint val_num, Pfloat init_value, Pint pet, const Plimit3* echo_vol,
+                const Pval_data3* val_data);
+void pinit_val(Pint ws_id, Pint val_num, Pfloat init_value, Pint pet, const Plimit* echo_area,
+               const Pval_data* val_data);
+void pinit_choice3(Pint ws_id, Pint choice_num, Pin_status init_status, Pint init_choice, Pint pet,
+                   const Plimit3* echo_vol, const Pchoice_data3* choice_data);
+void pinit_choice(Pint ws_id, Pint choice_num, Pin_status init_status, Pint init_choice, Pint pet,
+                  const Plimit* echo_area, const Pchoice_data* choice_data);
+void pinit_pick3(Pint ws_id, Pint pick_num, Pin_status init_status, const Ppick_path* init_pick, Pint pet,
+                 const Plimit3* echo_vol, const Ppick_data3* pick_data, Ppath_order order);
+void pinit_pick(Pint ws_id, Pint pick_num, Pin_status init_status, const Ppick_path* init_pick, Pint pet,
+                const Plimit* echo_area, const Ppick_data* pick_data, Ppath_order order);
+void pinit_string3(Pint ws_id, Pint string_num, const char* init_string, Pint pet, const Plimit3* echo_vol,
+                   const Pstring_data3* string_data);
+void pinit_string(Pint ws_id, Pint string_num, const char* init_string, Pint pet, const Plimit* echo_area,
+                  const Pstring_data* string_data);
+
+/* SET <class> MODE: a device entering SAMPLE or EVENT mode starts from its initial measure. */
+void pset_loc_mode(Pint ws_id, Pint loc_num, Pop_mode op_mode, Pecho_switch echo_switch);
+void pset_stroke_mode(Pint ws_id, Pint stroke_num, Pop_mode op_mode, Pecho_switch echo_switch);
+void pset_val_mode(Pint ws_id, Pint val_num, Pop_mode op_mode, Pecho_switch echo_switch);
+void pset_choice_mode(Pint ws_id, Pint choice_num, Pop_mode op_mode, Pecho_switch echo_switch);
+void pset_pick_mode(Pint ws_id, Pint pick_num, Pop_mode op_mode, Pecho_switch echo_switch);
+void pset_string_mode(Pint ws_id, Pint string_num, Pop_mode op_mode, Pecho_switch echo_switch);
+/* SET PICK FILTER: a primitive is pickable when its name set meets the inclusion set and misses
+ * the exclusion set (both start empty: nothing is pickable until this is called). */
+void pset_pick_filter(Pint ws_id, Pint pick_num, const Pfilter* filter);
+
+/* REQUEST: stroke->points must hold the device's buffer size, string the buffer size + 1 chars;
+ * a pick path is cut to `depth` items (pick->path_list holds them). A pick that hits nothing
+ * is PIN_STATUS_NO_IN, a break PIN_STATUS_NONE. */
+void preq_loc3(Pint ws_id, Pint loc_num, Pin_status* in_status, Pint* view_ind, Ppoint3* loc_pos);
+void preq_loc(Pint ws_id, Pint loc_num, Pin_status* in_status, Pint* view_ind, Ppoint* loc_pos);
+void preq_stroke3(Pint ws_id, Pint stroke_num, Pin_status* in_status, Pint* view_ind, Ppoint_list3* stroke);
+void preq_stroke(Pint ws_id, Pint stroke_num, Pin_status* in_status, Pint* view_ind, Ppoint_list* stroke);
+void preq_val(Pint ws_id, Pint val_num, Pin_status* in_status, Pfloat* val);
+void preq_choice(Pint ws_id, Pint choice_num, Pin_status* in_status, Pint* choice);
+void preq_pick(Pint ws_id, Pint pick_num, Pint depth, Pin_status* in_status, Ppick_path* pick);
+void preq_string(Pint ws_id, Pint string_num, Pin_status* in_status, char* string);
+
+void psample_loc3(Pint ws_id, Pint loc_num, Pint* view_ind, Ppoint3* loc_pos);
+void psample_loc(Pint ws_id, Pint loc_num, Pint* view_ind, Ppoint* loc_pos);
+void psample_stroke3(Pint ws_id, Pint stroke_num, Pint* view_ind, Ppoint_list3* stroke);
+void psample_stroke(Pint ws_id, Pint stroke_num, Pint* view_ind, Ppoint_list* stroke);
+void psample_val(Pint ws_id, Pint val_num, Pfloat* val);
+void psample_choice(Pint ws_id, Pint choice_num, Pin_status* choice_in_status, Pint* choice);
+void psample_pick(Pint ws_id, Pint pick_num, Pint depth, Pin_status* pick_in_status, Ppick_path* pick);
+void psample_string(Pint ws_id, Pint string_num, char* string);
+
+/* AWAIT EVENT (timeout in seconds) moves the oldest event to the current event report, which
+ * GET <class> reads (259 when it is of another class); FLUSH DEVICE EVENTS drops one device's. */
+void pawait_event(Pfloat timeout, Pint* ws_id, Pin_class* dev_class, Pint* in_num);
+void pflush_events(Pint ws_id, Pin_class dev_class, Pint dev_num);
+void pget_loc3(Pint* view_ind, Ppoint3* loc_pos);
+void pget_loc(Pint* view_ind, Ppoint* loc_pos);
+void pget_stroke3(Pint* view_ind, Ppoint_list3* stroke);
+void pget_stroke(Pint* view_ind, Ppoint_list* stroke);
+void pget_val(Pfloat* val);
+void pget_choice(Pin_status* in_status, Pint* choice);
+void pget_pick(Pint depth, Pin_status* in_status, Ppick_path* pick);
+void pget_string(char* string);
+
+/* Device states: what INITIALIZE and SET MODE set (SET and REALIZED answer alike); variable
+ * parts (strokes, paths, filters, strings, data records) live in the store. */
+void pinq_loc_st3(Pint ws_id, Pint loc_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                  Pecho_switch* echo_switch, Pint* init_view_ind, Ppoint3* init_loc_pos, Pint* prompt_echo,
+                  Plimit3* echo_vol, Ploc_data3** loc_data);
+void pinq_loc_st(Pint ws_id, Pint loc_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                 Pecho_switch* echo_switch, Pint* init_view_ind, Ppoint* init_loc_pos, Pint* prompt_echo,
+                 Plimit* echo_area, Ploc_data** loc_data);
+void pinq_stroke_st3(Pint ws_id, Pint stroke_num, Pinq_type type, Pstore store, Pint* err_ind,
+                     Pop_mode* op_mode, Pecho_switch* echo_switch, Pint* init_view_ind,
+                     Ppoint_list3** init_stroke, Pint* prompt_echo, Plimit3* echo_vol,
+                     Pstroke_data3** stroke_data);
+void pinq_stroke_st(Pint ws_id, Pint stroke_num, Pinq_type type, Pstore store, Pint* err_ind,
+                    Pop_mode* op_mode, Pecho_switch* echo_switch, Pint* init_view_ind,
+                    Ppoint_list** init_stroke, Pint* prompt_echo, Plimit* echo_area,
+                    Pstroke_data** stroke_data);
+void pinq_val_st3(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                  Pecho_switch* echo_switch, Pfloat* init_value, Pint* prompt_echo, Plimit3* echo_vol,
+                  Pval_data3** val_data);
+void pinq_val_st(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                 Pecho_switch* echo_switch, Pfloat* init_value, Pint* prompt_echo, Plimit* echo_area,
+                 Pval_data** val_data);
+void pinq_choice_st3(Pint ws_id, Pint choice_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                     Pecho_switch* echo_switch, Pin_status* init_status, Pint* init_choice, Pint* prompt_echo,
+                     Plimit3* echo_vol, Pchoice_data3** choice_data);
+void pinq_choice_st(Pint ws_id, Pint choice_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                    Pecho_switch* echo_switch, Pin_status* init_status, Pint* init_choice, Pint* prompt_echo,
+                    Plimit* echo_area, Pchoice_data** choice_data);
+void pinq_pick_st3(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                   Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
+                   Ppick_path** init_pick, Pint* prompt_echo, Plimit3* echo_vol, Ppick_data3** pick_data,
+                   Ppath_order* order);
+void pinq_pick_st(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                  Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
+                  Ppick_path** init_pick, Pint* prompt_echo, Plimit* echo_area, Ppick_data** pick_data,
+                  Ppath_order* order);
+void pinq_string_st3(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                     Pecho_switch* echo_switch, char** init_string, Pint* prompt_echo, Plimit3* echo_vol,
+                     Pstring_data3** string_data);
+void pinq_string_st(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
+                    Pecho_switch* echo_switch, char** init_string, Pint* prompt_echo, Plimit* echo_area,
+                    Pstring_data** string_data);
+
+/* Default device data of a workstation type (52: no such type, 61: not INPUT or OUTIN, 250):
+ * the prompt/echo types, the whole display space as echo volume, the default data record. */
+void pinq_def_loc_data3(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind, Ppoint3* loc_pos,
+                        Pint_list** pet_list, Plimit3* echo_vol, Ploc_data3** loc_data);
+void pinq_def_loc_data(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind, Ppoint* loc_pos,
+                       Pint_list** pet_list, Plimit* echo_area, Ploc_data** loc_data);
+void pinq_def_stroke_data3(Pint ws_type, Pint stroke_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
+                           Pint_list** pet_list, Plimit3* echo_vol, Pstroke_data3** stroke_data);
+void pinq_def_stroke_data(Pint ws_type, Pint stroke_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
+                          Pint_list** pet_list, Plimit* echo_area, Pstroke_data** stroke_data);
+void pinq_def_val_data3(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind, Pfloat* def_value,
+                        Pint_list** pet_list, Plimit3* echo_vol, Pval_data3** val_data);
+void pinq_def_val_data(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind, Pfloat* def_value,
+                       Pint_list** pet_list, Plimit* echo_area, Pval_data** val_data);
+void pinq_def_choice_data3(Pint ws_type, Pint choice_num, Pstore store, Pint* err_ind, Pint* max_choices,
+                           Pint_list** pet_list, Plimit3* echo_vol, Pchoice_data3** choice_data);
+void pinq_def_choice_data(Pint ws_type, Pint choice_num, Pstore store, Pint* err_ind, Pint* max_choices,
+                          Pint_list** pet_list, Plimit* echo_area, Pchoice_data** choice_data);
+void pinq_def_pick_data3(Pint ws_type, Pint pick_num, Pstore store, Pint* err_ind, Pint_list** pet_list,
+                         Plimit3* echo_vol, Ppick_data3** pick_data);
+void pinq_def_pick_data(Pint ws_type, Pint pick_num, Pstore store, Pint* err_ind, Pint_list** pet_list,
+                        Plimit* echo_area, Ppick_data** pick_data);
+void pinq_def_string_data3(Pint ws_type, Pint string_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
+                           Pint_list** pet_list, Plimit3* echo_vol, Pstring_data3** string_data);
+void pinq_def_string_data(Pint ws_type, Pint string_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
+                          Pint_list** pet_list, Plimit* echo_area, Pstring_data** string_data);
+void pinq_num_avail_in(Pint ws_type, Pint* err_ind, Pnum_in* num_in);
+/* INQUIRE INPUT QUEUE OVERFLOW (3: no workstation open, 257: no overflow since the last ask)
+ * and INQUIRE MORE SIMULTANEOUS EVENTS (of the current event report). */
+void pinq_in_overf(Pint* err_ind, Pint* ws_id, Pin_class* in_class, Pint* in_num);
+void pinq_more_simult_events(Pint* err_ind, Pmore_simult_events* simult_events);
 
 #ifdef __cplusplus
 }

@@ -153,6 +153,9 @@ const std::map<int, const char*>& names() {
 
 std::string functionName(int function) {
     auto it = names().find(function);
+    if (it == names().end()) {
+        if (const char* input = inputFunctionName(function)) return input;
+    }
     return it != names().end() ? it->second : "function " + std::to_string(function);
 }
 
@@ -171,6 +174,7 @@ void Binding::open(const char* errorFile) {
     stream_ = errorFile ? std::fopen(errorFile, "w") : nullptr;
     mode_ = PERR_ON;  // each OPEN PHIGS starts with the error handling mode ON; the handler stays
     phigs_ = std::make_unique<Phigs>();
+    ++openings_;
     registerOutputs(phigs_->outputs());
     phigs_->open();  // an error file that cannot be written leaves the lines on stderr
 }

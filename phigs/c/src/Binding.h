@@ -8,6 +8,7 @@
 #include "phigs/core/Error.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <new>
@@ -26,6 +27,8 @@ void registerOutputs(OutputRegistry& registry);
 
 /// The ISO name of a function identifier ("OPEN STRUCTURE"), or "function <n>".
 std::string functionName(int function);
+/// The ISO name of an input function's identifier (Input.cpp), or nullptr.
+const char* inputFunctionName(int function);
 
 /// The one PHIGS system of the C binding and its error handling.
 class Binding {
@@ -36,6 +39,9 @@ public:
 
     /// The open system, or nullptr while PHIGS is closed.
     Phigs* system() { return phigs_.get(); }
+    /// How many times PHIGS was opened: state kept beside the system (the input session) is
+    /// made anew when this moves.
+    std::uint64_t openings() const { return openings_; }
     void open(const char* errorFile);
     /// CLOSE PHIGS: the core checks that everything is closed (error 4) before anything goes.
     void close();
@@ -78,6 +84,7 @@ private:
     void reportSince(int function, std::size_t before, int thrown);
 
     std::unique_ptr<Phigs> phigs_;
+    std::uint64_t openings_ = 0;
     std::string errorFile_;
     std::FILE* stream_ = nullptr;
     Handler handler_ = perr_hand;

@@ -2,6 +2,7 @@
 
 #include "Binding.h"
 #include "Conversions.h"
+#include "Input.h"
 #include "Inquiry.h"
 #include "StoreBuffer.h"
 #include "phigs.h"
@@ -39,10 +40,10 @@ void pmessage(Pint ws_id, const char* message) {
     });
 }
 
-void pescape(Pint func_id, const Pescape_in_data* /*in_data*/, Pstore /*store*/,
-             Pescape_out_data** out_data) {
+void pescape(Pint func_id, const Pescape_in_data* in_data, Pstore /*store*/, Pescape_out_data** out_data) {
     if (out_data) *out_data = nullptr;
-    Binding::instance().call(Pfn_escape, [&](phigs::Phigs&) {
+    Binding::instance().call(Pfn_escape, [&](phigs::Phigs& p) {
+        if (func_id == PUESC_INPUT_SCRIPT) return phigs::c::attachInputScript(p, in_data);
         throw phigs::Error(phigs::errors::EscapeNotAvailable, "ESCAPE",
                            "escape " + std::to_string(func_id) + " is not registered");
     });

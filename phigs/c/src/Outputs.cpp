@@ -1,6 +1,7 @@
 // The drawing libraries libphigs links, registered for OPEN WORKSTATION.
 
 #include "Binding.h"
+#include "Input.h"
 
 #include "phigs/hardcopy/VectorOutput.h"
 #include "phigs/vk/Context.h"
@@ -29,6 +30,15 @@ void registerOutputs(OutputRegistry& registry) {
     registerWindowOutputs(registry, context);
 #endif
     hardcopy::registerOutputs(registry);
+}
+
+InputSource* windowInputSource(Workstation& ws) {
+#ifdef PHIGS_C_HAVE_WINDOW
+    return ownWindowInputSource(ws.output());
+#else
+    (void)ws;
+    return nullptr;
+#endif
 }
 
 }  // namespace phigs::c

@@ -3,6 +3,7 @@
 // Pstore (ISO 9593-4): the memory of one variable-size inquiry answer. Each inquiry that is
 // given the store replaces what it held, so answers stay valid until the store's next use.
 
+#include "InputAnswer.h"
 #include "phigs.h"
 
 #include <string>
@@ -28,6 +29,7 @@ struct Phigs_store {
     // Workstation answers: a filter's two name sets and a pattern, their ints in `ints`.
     Pfilter filter{};
     Ppat_rep pattern{};
+    phigs::c::InputAnswer input;  ///< the input inquiries' answers
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -37,5 +39,6 @@ struct Phigs_store {
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
         filter = {}, pattern = {};
+        input = {};
     }
 };

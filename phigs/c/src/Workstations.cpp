@@ -3,6 +3,7 @@
 
 #include "Binding.h"
 #include "Conversions.h"
+#include "Input.h"
 #include "Inquiry.h"
 #include "StoreBuffer.h"
 #include "phigs.h"
@@ -98,6 +99,8 @@ void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type) {
 
 void pclose_ws(Pint ws_id) {
     Binding::instance().call(Pfn_close_ws, [&](Phigs& p) { p.closeWorkstation(ws_id); });
+    // Its input script and device records go with it (also when its last picture failed).
+    if (Phigs* p = Binding::instance().system(); p && !p->findWorkstation(ws_id)) c::forgetInput(ws_id);
 }
 
 void ppost_struct(Pint ws_id, Pint struct_id, Pfloat priority) {

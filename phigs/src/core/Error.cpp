@@ -23,6 +23,8 @@ const std::map<int, const char*>& messages() {
         {54, "Ignoring function, the specified workstation is not open"},
         {55, "Ignoring function, workstation cannot be opened for an implementation dependent reason"},
         {59, "Ignoring function, the specified workstation does not have output capability"},
+        {60, "Ignoring function, specified workstation is not of category OUTIN"},
+        {61, "Ignoring function, specified workstation is neither of category INPUT nor of category OUTIN"},
         {64,
          "Ignoring function, the specified workstation type is not able to generate the specified "
          "generalized drawing primitive"},
@@ -84,9 +86,13 @@ const std::map<int, const char*>& messages() {
         {250, "Ignoring function, the specified device is not available on the specified workstation"},
         {251, "Ignoring function, the function requires the input device to be in REQUEST mode"},
         {252, "Ignoring function, the function requires the input device to be in SAMPLE mode"},
-        {254,
-         "Ignoring function, the specified prompt/echo type is not available on the specified workstation"},
-        {255, "Ignoring function, invalid echo area/volume; XMIN >= XMAX, YMIN >= YMAX, or ZMIN > ZMAX"},
+        {253,
+         "Warning, the specified prompt/echo type is not available on the specified workstation. "
+         "Prompt/echo type one will be used in its place"},
+        {254, "Ignoring function, invalid echo area/volume; XMIN >= XMAX, YMIN >= YMAX, or ZMIN > ZMAX"},
+        {255,
+         "Ignoring function, one of the echo area/volume boundary points is outside the range of the "
+         "device"},
         {256, "Warning, the input queue has overflowed"},
         {257,
          "Ignoring function, input queue has not overflowed since PHIGS was opened or the last invocation "
@@ -109,6 +115,7 @@ const std::map<int, const char*>& messages() {
          "empty structures in their places"},
         {350,
          "Warning, the specified escape is not available on one or more workstations in this implementation"},
+        {351, "Ignoring function, one of the fields within the escape data record is in error"},
         {900, "Storage overflow has occurred in PHIGS"},
         {903, "Input/Output error has occurred while writing"},
         {908, "Arithmetic error has occurred"},
@@ -122,6 +129,7 @@ const std::map<int, const char*>& messages() {
         {-203, "Ignoring function, the structure network is nested too deeply"},
         {-204, "Ignoring function, a required argument is a null pointer or a negative count"},
         {-205, "The element's content has no C binding form in this implementation"},
+        {-206, "Ignoring function, the input script ended while a REQUEST waits for input"},
     };
     return table;
 }

@@ -26,12 +26,12 @@ int validateInitialisation(InputClass inputClass, const DeviceInitialisation& se
     if (setup.promptEchoType < 1 || setup.promptEchoType > promptEchoTypeCount(inputClass)) {
         reason = "prompt/echo type " + std::to_string(setup.promptEchoType) + " is not supported (1.." +
                  std::to_string(promptEchoTypeCount(inputClass)) + ")";
-        return 254;
+        return 253;
     }
     const EchoVolume& e = setup.echoVolume;
     if (!(e.xmin < e.xmax && e.ymin < e.ymax && e.zmin <= e.zmax)) {
         reason = "echo volume is empty (need xmin < xmax, ymin < ymax, zmin <= zmax)";
-        return 255;
+        return 254;
     }
     if (classOf(setup.initial) != inputClass) {
         reason = std::string("initial measure is not a ") + nameOf(inputClass) + " measure";

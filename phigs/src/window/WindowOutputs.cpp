@@ -1,6 +1,7 @@
 #include "phigs/window/WindowOutputs.h"
 
 #include "phigs/vk/WorkstationDisplay.h"
+#include "phigs/window/GlfwInputSource.h"
 #include "phigs/window/GlfwWindow.h"
 
 #include <cmath>
@@ -11,7 +12,7 @@ namespace phigs {
 
 namespace {
 
-/// A window the output opened itself and the display drawing in it.
+/// A window the output opened itself, the display drawing in it and the window's input source.
 class OwnWindowOutput : public WorkstationOutput {
 public:
     OwnWindowOutput(Workstation& ws, const OutputConnection& connection, const vk::ContextSettings& context) {
@@ -26,6 +27,7 @@ public:
         display_ = std::make_unique<vk::WorkstationDisplay>(ws, context, settings);
     }
     ~OwnWindowOutput() override {
+        input_.reset();    // its callbacks leave the window first
         display_.reset();  // the display (its surface) before the window
         window_.reset();
     }
@@ -34,13 +36,24 @@ public:
         return display_->present(picture);
     }
     DrawableSize drawableSize() const override { return display_->drawableSize(); }
+    /// Made when first asked for: a program that reads no input keeps no queue of actions.
+    GlfwInputSource& input() {
+        if (!input_) input_ = std::make_unique<GlfwInputSource>(*window_);
+        return *input_;
+    }
 
 private:
     std::unique_ptr<GlfwWindow> window_;
     std::unique_ptr<vk::WorkstationDisplay> display_;
+    std::unique_ptr<GlfwInputSource> input_;
 };
 
 }  // namespace
+
+InputSource* ownWindowInputSource(WorkstationOutput* output) {
+    auto* own = dynamic_cast<OwnWindowOutput*>(output);
+    return own ? &own->input() : nullptr;
+}
 
 void registerWindowOutputs(OutputRegistry& registry, const vk::ContextSettings& context) {
     const OutputFactory* given = registry.find(WorkstationType::Window);

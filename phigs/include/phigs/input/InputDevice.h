@@ -45,7 +45,7 @@ struct DeviceCounts {
 };
 
 /// Checks an initialisation against the rules of the device's class and returns the PHIGS error
-/// number it breaks (254 echo type, 255 echo volume, 260 data record, 261 initial value,
+/// number it breaks (253 echo type, 254 echo volume, 260 data record, 261 initial value,
 /// 262 stroke buffer, 263 string buffer), or 0 when it is valid.
 int validateInitialisation(InputClass inputClass, const DeviceInitialisation& setup, std::string& reason);
 
