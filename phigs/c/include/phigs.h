@@ -368,6 +368,93 @@ typedef struct {
 #define PINDIRECT 0
 #define PMODEL_RGB 1
 
+/* ---- PHIGS PLUS element data (attributes and NURBS primitives; see the PHIGS PLUS part below) */
+typedef enum { PDISTING_NO, PDISTING_YES } Pdisting_mode;
+typedef enum { PCULL_NONE, PCULL_BACKFACE, PCULL_FRONTFACE } Pcull_mode;
+/* Curve and surface approximation criteria this implementation draws. */
+#define PCURV_WS_DEP 1
+#define PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS 2
+#define PCURV_CHORDAL_DEVIATION_WC 6
+#define PSURF_WS_DEP 1
+#define PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS 2
+#define PSURF_CHORDAL_DEVIATION_WC 6
+/* Parametric surface characteristics: none, workstation dependent, iso-parametric curves (level
+ * curves, types 4 and 5, are refused with -202). */
+#define PSC_NONE 1
+#define PSC_WS_DEP 2
+#define PSC_ISOPARAMETRIC_CURVES 3
+typedef enum { PCP_UNIFORM, PCP_NON_UNIFORM } Pcurve_placement;
+typedef union {
+    struct {
+        Pint unused;
+    } psc_1;
+    struct {
+        Pint unused;
+    } psc_2;
+    struct {
+        Pcurve_placement placement; /* PCP_NON_UNIFORM: at the knots */
+        Pint u_count;
+        Pint v_count;
+    } psc_3;
+} Ppara_surf_characs;
+typedef struct {
+    Pfloat ambient_coef;
+    Pfloat diffuse_coef;
+    Pfloat specular_coef;
+    Pgcolr specular_colr;
+    Pfloat specular_exp;
+    Pfloat transpar_coef;
+} Prefl_props;
+typedef struct {
+    Pint type;
+    Pfloat value;
+} Pcurv_approx;
+typedef struct {
+    Pint type;
+    Pfloat u_val, v_val;
+} Psurf_approx;
+
+typedef enum { PRATIONAL, PNON_RATIONAL } Prational;
+typedef struct {
+    Pfloat x, y, z, w;
+} Ppoint4;
+typedef struct {
+    Pint num_points;
+    Ppoint4* points;
+} Ppoint_list4;
+typedef struct {
+    Pint num_floats;
+    Pfloat* floats;
+} Pfloat_list;
+typedef union {
+    Ppoint_list3 point3d; /* PNON_RATIONAL */
+    Ppoint_list4 point4d; /* PRATIONAL */
+} Ppoint_list34;
+typedef union {
+    Ppoint_list point2d;  /* PNON_RATIONAL */
+    Ppoint_list3 point3d; /* PRATIONAL */
+} Ppoint_list23;
+typedef struct {
+    Pint_size num_points;
+    union {
+        Ppoint3* point3d;
+        Ppoint4* point4d;
+    } points;
+} Ppoint_grid34;
+typedef struct {
+    Pedge_flag visible;
+    Prational rationality;
+    Pint order;
+    Pint approx_type;
+    Pfloat approx_val;
+    Pfloat_list knots;
+    Pfloat tmin, tmax;
+    Ppoint_list23 cpts;
+} Ptrimcurve;
+typedef struct {
+    Pint num_curves;
+    Ptrimcurve* curves;
+} Ptrimcurve_list;
 /* The contents of an element (INQUIRE (CURRENT) ELEMENT CONTENT). Every pointer in it points
  * into the Pstore the inquiry was given, valid until that store's next use or deletion. */
 typedef union {
@@ -456,6 +543,36 @@ typedef union {
         Pint id;
         Pgse_data data;
     } gse;
+    /* PHIGS PLUS: shading methods, reflectance equations, depth cue and colour mapping indices
+     * answer int_data, back interior style int_style, back interior colour colr / int_data. */
+    Prefl_props props;
+    Pcurv_approx curv_approx;
+    Psurf_approx surf_approx;
+    struct {
+        Pint type;
+        Ppara_surf_characs data;
+    } para_surf_characs;
+    struct {
+        Pint_list activation;
+        Pint_list deactivation;
+    } lss;
+    Pdisting_mode disting_mode;
+    Pcull_mode cull_mode;
+    struct {
+        Pint order;
+        Pfloat_list knots;
+        Prational rationality;
+        Ppoint_list34 cpts;
+        Pfloat min, max;
+    } nuni_bsp_curv;
+    struct {
+        Pint u_order, v_order;
+        Pfloat_list uknots, vknots;
+        Prational rationality;
+        Ppoint_grid34 grid;
+        Pint num_trim_loops;
+        Ptrimcurve_list* trim_loops;
+    } nuni_bsp_surf;
 } Pelem_data;
 
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
@@ -901,6 +1018,190 @@ void pinq_list_avail_gse(Pint ws_type, Pint length, Pint start, Pint* err_ind, P
                          Pint* total_length);
 void pinq_gse_facs(Pint ws_type, Pint length, Pint start, Pint* err_ind, Pgse_id_dep_list* gses,
                    Pint* total_length);
+
+/* ==== incremental spatial search, metafiles, text extent and PHIGS PLUS ====
+ * (the names of this group are listed in COVERAGE.md; see README.md for the semantics) */
+
+/* Name set filters (also the pick, highlighting and invisibility filters' type) and the
+ * set-or-realized choice of the representation inquiries. */
+typedef struct {
+    Pint_list incl_set;
+    Pint_list excl_set;
+} Pfilter;
+typedef struct {
+    Pint num_filters;
+    Pfilter* filters;
+} Pfilter_list;
+typedef enum { PINQ_SET, PINQ_REALIZED } Pinq_type;
+
+/* Function identifiers of this group: metafiles (ISO 9593-4) and PHIGS PLUS (ISO 9592-4). */
+enum {
+    Pfn_write_item = 175,
+    Pfn_get_item_type = 176,
+    Pfn_read_item = 177,
+    Pfn_interpret_item = 178,
+    Pfn_nuni_bsp_curv = 307,
+    Pfn_nuni_bsp_surf = 308,
+    Pfn_set_line_shad_meth = 311,
+    Pfn_set_face_disting_mode = 314,
+    Pfn_set_face_cull_mode = 315,
+    Pfn_set_int_shad_meth = 317,
+    Pfn_set_refl_props = 318,
+    Pfn_set_refl_eqn = 319,
+    Pfn_set_back_int_style = 320,
+    Pfn_set_back_int_style_ind = 321,
+    Pfn_set_back_int_colr = 322,
+    Pfn_set_back_int_shad_meth = 323,
+    Pfn_set_back_refl_props = 324,
+    Pfn_set_back_refl_eqn = 325,
+    Pfn_set_light_src_state = 326,
+    Pfn_set_curve_approx = 328,
+    Pfn_set_surf_approx = 329,
+    Pfn_set_para_surf_characs = 330,
+    Pfn_set_dcue_ind = 332,
+    Pfn_set_colr_map_ind = 333,
+    Pfn_set_light_src_rep = 340,
+    Pfn_set_dcue_rep = 341
+};
+
+/* INCREMENTAL SPATIAL SEARCH (3): the next output primitive after the start path's element
+ * whose locus lies within `dist` of the search reference point (world coordinates; dist <= 0:
+ * the locus must contain the point) and whose name set every normal filter accepts and every
+ * inverted filter rejects, searching to the end of the structure at position `ceiling` (1-based)
+ * of the start path. The 2D form takes z = 0. Model clipping cuts the loci when mclip_flag is
+ * PIND_CLIP. The found path (empty when nothing qualifies) is a simple list. Errors (in
+ * *err_ind): 203 start path not in the CSS, 204 ceiling outside 1 .. path length. */
+void pincr_spa_search3(const Ppoint3* ref, Pfloat dist, const Pelem_ref_list* start_path,
+                       Pclip_ind mclip_flag, Pint ceiling, const Pfilter_list* norm_filter,
+                       const Pfilter_list* inv_filter, Pint num_elems_appl_list, Pint start_ind,
+                       Pint* err_ind, Pelem_ref_list* found_path, Pint* num_elems_impl_list);
+void pincr_spa_search(const Ppoint* ref, Pfloat dist, const Pelem_ref_list* start_path, Pclip_ind mclip_flag,
+                      Pint ceiling, const Pfilter_list* norm_filter, const Pfilter_list* inv_filter,
+                      Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pelem_ref_list* found_path,
+                      Pint* num_elems_impl_list);
+
+/* Metafiles. This implementation has no metafile workstation type: pwrite_item answers error 56
+ * (not of category MO), pget_item_type and pread_item 58 (not of category MI) on any open
+ * workstation (3, 54 first); pinterpret_item knows no item type (304; 301 for a negative
+ * length). */
+typedef union {
+    struct {
+        Pint unused;
+    } item_u1;
+    Pdata unsupp;
+} Pitem_data;
+void pwrite_item(Pint ws_id, Pint item_type, Pint item_data_length, const Pitem_data* item_data);
+void pget_item_type(Pint ws_id, Pint* item_type, Pint* item_data_length);
+void pread_item(Pint ws_id, Pint max_item_data_length, Pitem_data* item_data);
+void pinterpret_item(Pint type, Pint item_data_length, const Pitem_data* item_data);
+
+/* INQUIRE TEXT EXTENT: the rectangle of the character bodies and the concatenation point in
+ * text local coordinates (units of char_ht, alignment applied) of the Hershey stroke fonts the
+ * workstations draw: fonts 1 (Roman simplex), 2 (duplex), 3 (triplex), 4 (script); 106 for any
+ * other font, 52 for an unknown workstation type. */
+void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_space, Pfloat char_ht,
+                      Ptext_path text_path, Phor_text_align hor_align, Pvert_text_align vert_align,
+                      const char* str, Pint* err_ind, Prect* rect, Ppoint* offset);
+
+/* ---- PHIGS PLUS attributes */
+#define PSD_NONE 1
+#define PSD_COLOUR 2
+#define PSD_DOT_PRODUCT 3
+#define PSD_NORMAL 4
+#define PREFL_NONE 1
+#define PREFL_AMBIENT 2
+#define PREFL_AMB_DIFF 3
+#define PREFL_AMB_DIFF_SPEC 4
+void pset_line_shad_meth(Pint shad_meth);
+void pset_int_shad_meth(Pint shad_meth);
+void pset_back_int_shad_meth(Pint shad_meth);
+void pset_refl_eqn(Pint refl_eqn);
+void pset_back_refl_eqn(Pint refl_eqn);
+void pset_refl_props(const Prefl_props* refl_props);
+void pset_back_refl_props(const Prefl_props* refl_props);
+void pset_back_int_style(Pint_style style);
+void pset_back_int_style_ind(Pint style_ind);
+void pset_back_int_colr(const Pgcolr* colr);
+void pset_face_disting_mode(Pdisting_mode mode);
+void pset_face_cull_mode(Pcull_mode mode);
+/* SET LIGHT SOURCE STATE: the indices to activate and to deactivate (one list each). */
+void pset_light_src_state(const Pint_list* activation, const Pint_list* deactivation);
+void pset_dcue_ind(Pint dcue_ind);
+void pset_colr_map_ind(Pint colr_map_ind);
+void pset_curve_approx(Pint type, Pfloat value);
+void pset_surf_approx(Pint type, Pfloat u_val, Pfloat v_val);
+void pset_para_surf_characs(Pint psc_type, const Ppara_surf_characs* data);
+
+/* ---- PHIGS PLUS NURBS primitives. A rational control point is homogeneous (w x, w y, w z, w),
+ * w > 0. Knots: order + number of control points, non-decreasing. A surface's grid holds
+ * num_points.size_x (u) x num_points.size_y (v) points, u running fastest. Trimming curves are
+ * closed loops in (u, v) (rational: (w u, w v, w)); their order, knots and points are kept, their
+ * visibility, approximation and range are not (answered PEDGE_OFF, PCURV_WS_DEP, 0 and the
+ * knot domain). Bad data is refused with -202 naming the rule. */
+/* NON-UNIFORM B-SPLINE CURVE drawn over [min, max] (min == max: the whole domain). */
+void pnuni_bsp_curv(Pint order, const Pfloat_list* knots, Prational rationality, const Ppoint_list34* cpts,
+                    Pfloat min, Pfloat max);
+void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const Pfloat_list* vknots,
+                    Prational rationality, const Ppoint_grid34* grid, Pint num_trim_loops,
+                    const Ptrimcurve_list* trim_loops);
+
+/* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct RGB
+ * (PMODEL_RGB) or an index resolved through the workstation's colour table when set. */
+#define PLIGHT_AMBIENT 1
+#define PLIGHT_DIRECTIONAL 2
+#define PLIGHT_POSITIONAL 3
+#define PLIGHT_SPOT 4
+typedef struct {
+    Pgcolr colr;
+} Pamb_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Pvec3 dir;
+} Pdir_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Ppoint3 pos;
+    Pfloat coef[2]; /* attenuation: constant, linear */
+} Ppos_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Ppoint3 pos;
+    Pvec3 dir;
+    Pfloat exp;
+    Pfloat coef[2];
+    Pfloat angle; /* spread angle, radians, in [0, pi] */
+} Pspot_light_src_rec;
+typedef union {
+    Pamb_light_src_rec ambient;
+    Pdir_light_src_rec directional;
+    Ppos_light_src_rec positional;
+    Pspot_light_src_rec spot;
+    Pdata unsupp;
+} Plight_src_rec;
+typedef struct {
+    Pint type;
+    Plight_src_rec rec;
+} Plight_src_bundle;
+typedef enum { PSUPPRESSED, PALLOWED } Pdcue_mode;
+typedef struct {
+    Pdcue_mode mode;
+    Pfloat ref_planes[2]; /* front, back (NPC z) */
+    Pfloat scaling[2];    /* front, back */
+    Pgcolr colr;
+} Pdcue_bundle;
+/* Light sources: index >= 1 (100), table full 103, type outside 1..4 (2202). Depth cue: index
+ * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. The inquiries answer
+ * the set values (PINQ_SET and PINQ_REALIZED alike: representations take effect at once),
+ * 101 for an index not defined. */
+void pset_light_src_rep(Pint ws_id, Pint light_src_ind, const Plight_src_bundle* light_src_rep);
+void pinq_light_src_rep(Pint ws_id, Pint light_src_ind, Pinq_type type, Pint* err_ind,
+                        Plight_src_bundle* light_src_rep);
+void pinq_list_light_src_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                              Pint_list* light_src_inds, Pint* num_elems_impl_list);
+void pset_dcue_rep(Pint ws_id, Pint dcue_ind, const Pdcue_bundle* dcue_rep);
+void pinq_dcue_rep(Pint ws_id, Pint dcue_ind, Pinq_type type, Pint* err_ind, Pdcue_bundle* dcue_rep);
+void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                         Pint_list* dcue_inds, Pint* num_elems_impl_list);
 
 #ifdef __cplusplus
 }

@@ -25,6 +25,10 @@ struct Phigs_store {
     std::vector<std::string> names;
     std::vector<Par_file> files;
     Par_file_list fileList{};
+    std::vector<Pfloat> floats;  // PHIGS PLUS: knots
+    std::vector<Ppoint4> points4;
+    std::vector<Ptrimcurve> trimCurves;
+    std::vector<Ptrimcurve_list> trimLoops;
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -33,5 +37,6 @@ struct Phigs_store {
         halfSpaces3.clear(), halfSpaces.clear(), text.clear();
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
+        floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
     }
 };
