@@ -151,6 +151,60 @@ static void nurbs(void) {
     }
 }
 
+static void with_data(void) {
+    Pptconorm3 square[4] = {{{0, 0, 0}, {.direct = {1, 0, 0}}, {0, 0, 1}},
+                            {{1, 0, 0}, {.direct = {0, 1, 0}}, {0, 0, 1}},
+                            {{1, 1, 0}, {.direct = {0, 0, 1}}, {0, 0, 1}},
+                            {{0, 1, 0}, {.direct = {1, 1, 1}}, {0, 0, 1}}};
+    Pfacet_vdata_list3 area;
+    Pfacet_data3 facet;
+    Pptnorm3 strip[3] = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 1, 0}}};
+    Pfacet_vdata_arr3 strip_data, mesh_data;
+    Ppoint3 mesh[6] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 1}};
+    Pint_size dim = {3, 2};
+    Pvec3 normal = {0, 0, 0};
+    Pint err = -1;
+    Pelem_data* d;
+    area.num_vertices = 4, area.vertex_data.ptconorms = square;
+    facet.conorm.colr.direct.x = 0.5f, facet.conorm.colr.direct.y = 0.25f, facet.conorm.colr.direct.z = 0;
+    facet.conorm.norm.delta_x = 0, facet.conorm.norm.delta_y = 0, facet.conorm.norm.delta_z = 1;
+    strip_data.ptnorms = strip;
+    mesh_data.points = mesh;
+    popen_struct(1);
+    pempty_struct(1);
+    EXPECT_NO_ERROR(pfill_area_set3_data(PFACET_COLOUR_NORMAL, PEDGE_NONE, PVERT_COORD_COLOUR_NORMAL,
+                                         PMODEL_RGB, &facet, 1, NULL, &area));
+    EXPECT_NO_ERROR(ptri_strip3_data(PFACET_NONE, PVERT_COORD_NORMAL, PINDIRECT, 3, NULL, &strip_data));
+    EXPECT_NO_ERROR(pquad_mesh3_data(PFACET_NONE, PVERT_COORD, PINDIRECT, &dim, NULL, &mesh_data));
+    EXPECT_REFUSED(ptri_strip3_data(PFACET_NORMAL, PVERT_COORD_NORMAL, PINDIRECT, 3, NULL, &strip_data), -202,
+                   Pfn_tri_strip3_data);
+    EXPECT_REFUSED(
+        pfill_area_set3_data(PFACET_NONE, PEDGE_VISIBILITY, PVERT_COORD, PINDIRECT, NULL, 0, NULL, NULL),
+        -202, Pfn_fill_area_set3_data);
+    EXPECT_REFUSED(pquad_mesh3_data(PFACET_NONE, 7, PINDIRECT, &dim, NULL, &mesh_data), PE_ENUM_TYPE_INVAL,
+                   Pfn_quad_mesh3_data);
+    pclose_struct();
+    if ((d = content(1, PELEM_FILL_AREA_SET3_DATA))) {
+        CHECK(d->fas3_data.fflag == PFACET_COLOUR_NORMAL && d->fas3_data.vflag == PVERT_COORD_COLOUR_NORMAL);
+        CHECK(d->fas3_data.colr_type == PMODEL_RGB && d->fas3_data.fdata.conorm.colr.direct.y == 0.25f);
+        CHECK(d->fas3_data.nfa == 1 && d->fas3_data.vdata[0].num_vertices == 4);
+        CHECK(d->fas3_data.vdata[0].vertex_data.ptconorms[2].colr.direct.z == 1 &&
+              d->fas3_data.vdata[0].vertex_data.ptconorms[2].point.y == 1);
+    }
+    if ((d = content(2, PELEM_TRI_STRIP3_DATA)))
+        CHECK(d->tri_strip3.nv == 3 && d->tri_strip3.vflag == PVERT_COORD_NORMAL &&
+              d->tri_strip3.vdata.ptnorms[2].norm.delta_y == 1);
+    if ((d = content(3, PELEM_QUAD_MESH3_DATA)))
+        CHECK(d->quad_mesh3.dim.size_x == 3 && d->quad_mesh3.dim.size_y == 2 &&
+              d->quad_mesh3.vflag == PVERT_COORD && d->quad_mesh3.vdata.points[5].z == 1);
+    /* The geometric normal of the square (counter-clockwise seen from +z). */
+    pcomp_fill_area_set_gnorm(PVERT_COORD_COLOUR_NORMAL, 1, &area, &err, &normal);
+    CHECK(err == 0 && near(normal.delta_z, 1) && near(normal.delta_x, 0));
+    area.num_vertices = 2;
+    pcomp_fill_area_set_gnorm(PVERT_COORD_COLOUR_NORMAL, 1, &area, &err, &normal);
+    CHECK(err == -202);
+}
+
 static void representations(const char* pdf) {
     Plight_src_bundle spot, got;
     Pdcue_bundle cue = {PALLOWED, {0.9f, 0.1f}, {1, 0.25f}, {PMODEL_RGB, {.direct = {0.5f, 0.5f, 0.5f}}}},
@@ -191,6 +245,21 @@ static void representations(const char* pdf) {
     pinq_dcue_rep(2, 0, PINQ_SET, &err, &cue_got);
     CHECK(err == 54);
     pclose_ws(1);
+    pinq_pred_light_src_rep(PWST_PDF, 1, &err, &got);
+    CHECK(err == 0 && got.type == PLIGHT_AMBIENT && got.rec.ambient.colr.val.direct.y == 1);
+    pinq_pred_light_src_rep(PWST_PDF, 2, &err, &got);
+    CHECK(err == 102);
+    pinq_pred_light_src_rep(99, 1, &err, &got);
+    CHECK(err == 52);
+    pinq_pred_dcue_rep(PWST_OFFSCREEN, 0, &err, &cue_got);
+    CHECK(err == 0 && cue_got.mode == PSUPPRESSED);
+    {
+        Plight_src_facs facs;
+        facs.types.ints = buffer;
+        pinq_light_src_facs(PWST_PDF, 8, 0, &err, &facs, &total);
+        CHECK(err == 0 && total == 4 && facs.types.num_ints == 4 && buffer[3] == PLIGHT_SPOT &&
+              facs.max > 1 && facs.num_pred_inds == 1);
+    }
 }
 
 int main(int argc, char** argv) {
@@ -203,6 +272,7 @@ int main(int argc, char** argv) {
     pcreate_store(&err, &store);
     attributes();
     nurbs();
+    with_data();
     representations(pdf);
     pdel_store(store);
     pclose_phigs();

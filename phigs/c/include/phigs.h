@@ -455,6 +455,66 @@ typedef struct {
     Pint num_curves;
     Ptrimcurve* curves;
 } Ptrimcurve_list;
+/* Primitives with data (PHIGS PLUS): which data the facets, edges and vertices carry. A colour
+ * value is an index (colr_type PINDIRECT) or direct RGB (PMODEL_RGB), the same for every vertex
+ * and facet of one primitive. */
+#define PFACET_NONE 0
+#define PFACET_COLOUR 1
+#define PFACET_NORMAL 2
+#define PFACET_COLOUR_NORMAL 3
+#define PEDGE_NONE 0
+#define PEDGE_VISIBILITY 1
+#define PVERT_COORD 0
+#define PVERT_COORD_COLOUR 1
+#define PVERT_COORD_NORMAL 2
+#define PVERT_COORD_COLOUR_NORMAL 3
+typedef union {
+    Pint ind;
+    struct {
+        Pfloat x, y, z;
+    } direct;
+} Pcoval;
+typedef struct {
+    Pcoval colr;
+    Pvec3 norm;
+} Pconorm3;
+typedef union {
+    Pcoval colr;
+    Pvec3 norm;
+    Pconorm3 conorm;
+} Pfacet_data3;
+typedef union {
+    Pcoval* colrs;
+    Pvec3* norms;
+    Pconorm3* conorms;
+} Pfacet_data_arr3;
+typedef struct {
+    Ppoint3 point;
+    Pcoval colr;
+} Pptco3;
+typedef struct {
+    Ppoint3 point;
+    Pvec3 norm;
+} Pptnorm3;
+typedef struct {
+    Ppoint3 point;
+    Pcoval colr;
+    Pvec3 norm;
+} Pptconorm3;
+typedef union {
+    Ppoint3* points;
+    Pptco3* ptcolrs;
+    Pptnorm3* ptnorms;
+    Pptconorm3* ptconorms;
+} Pfacet_vdata_arr3;
+typedef struct {
+    Pint num_vertices;
+    Pfacet_vdata_arr3 vertex_data;
+} Pfacet_vdata_list3;
+typedef struct {
+    Pint num_edges;
+    Pedge_flag* edgedata;
+} Pedge_data_list;
 /* The contents of an element (INQUIRE (CURRENT) ELEMENT CONTENT). Every pointer in it points
  * into the Pstore the inquiry was given, valid until that store's next use or deletion. */
 typedef union {
@@ -573,6 +633,24 @@ typedef union {
         Pint num_trim_loops;
         Ptrimcurve_list* trim_loops;
     } nuni_bsp_surf;
+    struct {
+        Pint fflag, eflag, vflag, colr_type;
+        Pfacet_data3 fdata;
+        Pint nfa;
+        Pedge_data_list* edata; /* NULL: edge data are not stored */
+        Pfacet_vdata_list3* vdata;
+    } fas3_data;
+    struct {
+        Pint fflag, vflag, colr_type, nv;
+        Pfacet_data_arr3 fdata;
+        Pfacet_vdata_arr3 vdata;
+    } tri_strip3;
+    struct {
+        Pint fflag, vflag, colr_type;
+        Pint_size dim;
+        Pfacet_data_arr3 fdata;
+        Pfacet_vdata_arr3 vdata;
+    } quad_mesh3;
 } Pelem_data;
 
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
@@ -1042,6 +1120,9 @@ enum {
     Pfn_interpret_item = 178,
     Pfn_nuni_bsp_curv = 307,
     Pfn_nuni_bsp_surf = 308,
+    Pfn_fill_area_set3_data = 302,
+    Pfn_tri_strip3_data = 305,
+    Pfn_quad_mesh3_data = 306,
     Pfn_set_line_shad_meth = 311,
     Pfn_set_face_disting_mode = 314,
     Pfn_set_face_cull_mode = 315,
@@ -1145,6 +1226,21 @@ void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const P
                     Prational rationality, const Ppoint_grid34* grid, Pint num_trim_loops,
                     const Ptrimcurve_list* trim_loops);
 
+/* ---- PHIGS PLUS primitives with data. FILL AREA SET 3 WITH DATA keeps a facet colour and
+ * normal and per-vertex colours and normals; triangle strips and quadrilateral meshes keep the
+ * per-vertex data (facet data, and per-edge visibility, are refused with -202). A quadrilateral
+ * mesh of dim.size_x x dim.size_y points runs x fastest. */
+void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
+                          Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata);
+void ptri_strip3_data(Pint fflag, Pint vflag, Pint colr_type, Pint nv, const Pfacet_data_arr3* fdata,
+                      const Pfacet_vdata_arr3* vdata);
+void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* dim,
+                      const Pfacet_data_arr3* fdata, const Pfacet_vdata_arr3* vdata);
+/* COMPUTE FILL AREA SET GEOMETRIC NORMAL: the unit normal (P2 - P1) x (P3 - P1) of the first three
+ * vertices that are not collinear (-202 when there are none). An inquiry-style utility. */
+void pcomp_fill_area_set_gnorm(Pint vflag, Pint nfa, const Pfacet_vdata_list3* vdata, Pint* err_ind,
+                               Pvec3* norm);
+
 /* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct RGB
  * (PMODEL_RGB) or an index resolved through the workstation's colour table when set. */
 #define PLIGHT_AMBIENT 1
@@ -1198,6 +1294,19 @@ void pinq_light_src_rep(Pint ws_id, Pint light_src_ind, Pinq_type type, Pint* er
                         Plight_src_bundle* light_src_rep);
 void pinq_list_light_src_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                               Pint_list* light_src_inds, Pint* num_elems_impl_list);
+/* Predefined representations (every type: light 1 white ambient, depth cue 0 suppressed; 102 for
+ * any other index) and the light source facilities (the four types, the table size, the
+ * number of predefined entries). */
+typedef struct {
+    Pint_list types;
+    Pint max;
+    Pint num_pred_inds;
+} Plight_src_facs;
+void pinq_pred_light_src_rep(Pint ws_type, Pint light_src_ind, Pint* err_ind,
+                             Plight_src_bundle* light_src_rep);
+void pinq_pred_dcue_rep(Pint ws_type, Pint dcue_ind, Pint* err_ind, Pdcue_bundle* dcue_rep);
+void pinq_light_src_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                         Plight_src_facs* facs, Pint* num_elems_impl_list);
 void pset_dcue_rep(Pint ws_id, Pint dcue_ind, const Pdcue_bundle* dcue_rep);
 void pinq_dcue_rep(Pint ws_id, Pint dcue_ind, Pinq_type type, Pint* err_ind, Pdcue_bundle* dcue_rep);
 void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,

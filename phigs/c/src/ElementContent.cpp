@@ -277,6 +277,100 @@ void surfaceContent(const NurbsSurfaceElement& e, Phigs_store& s) {
     d.trim_loops = s.trimLoops.empty() ? nullptr : s.trimLoops.data();
 }
 
+Pcoval coval(const Colour& c) {
+    Pcoval v{};
+    if (c.direct)
+        v.direct = {static_cast<Pfloat>(c.rgb.x), static_cast<Pfloat>(c.rgb.y), static_cast<Pfloat>(c.rgb.z)};
+    else
+        v.ind = c.index;
+    return v;
+}
+
+Pint vertexFlag(bool colours, bool normals) {
+    return colours ? (normals ? PVERT_COORD_COLOUR_NORMAL : PVERT_COORD_COLOUR)
+                   : (normals ? PVERT_COORD_NORMAL : PVERT_COORD);
+}
+
+// Vertices with their data appended to the store's array for `flag` (reserved by the caller, so
+// the answer stays valid while more are appended); the union points at the first one.
+Pfacet_vdata_arr3 vertexData(Pint flag, const std::vector<glm::dvec3>& points,
+                             const std::vector<Colour>* colours, const std::vector<glm::dvec3>* normals,
+                             Phigs_store& s) {
+    Pfacet_vdata_arr3 out{};
+    for (std::size_t i = 0; i < points.size(); ++i) switch (flag) {
+            case PVERT_COORD:
+                s.points3.push_back(p3(points[i]));
+                break;
+            case PVERT_COORD_COLOUR:
+                s.ptcolrs.push_back({p3(points[i]), coval((*colours)[i])});
+                break;
+            case PVERT_COORD_NORMAL:
+                s.ptnorms.push_back({p3(points[i]), v3((*normals)[i])});
+                break;
+            default:
+                s.ptconorms.push_back({p3(points[i]), coval((*colours)[i]), v3((*normals)[i])});
+                break;
+        }
+    const std::size_t n = points.size();
+    switch (flag) {
+        case PVERT_COORD:
+            out.points = s.points3.data() + s.points3.size() - n;
+            break;
+        case PVERT_COORD_COLOUR:
+            out.ptcolrs = s.ptcolrs.data() + s.ptcolrs.size() - n;
+            break;
+        case PVERT_COORD_NORMAL:
+            out.ptnorms = s.ptnorms.data() + s.ptnorms.size() - n;
+            break;
+        default:
+            out.ptconorms = s.ptconorms.data() + s.ptconorms.size() - n;
+            break;
+    }
+    return out;
+}
+
+void reserveVertices(Phigs_store& s, std::size_t n) {
+    s.points3.reserve(n), s.ptcolrs.reserve(n), s.ptnorms.reserve(n), s.ptconorms.reserve(n);
+}
+
+Pint colourType(const std::vector<Colour>& colours, bool facet, const Colour& facetColour) {
+    const bool direct = (!colours.empty() && colours.front().direct) || (facet && facetColour.direct);
+    return direct ? PMODEL_RGB : PINDIRECT;
+}
+
+void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
+    auto& d = s.data.fas3_data;
+    const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
+    d.fflag = e.hasFacetColour ? (e.hasFacetNormal ? PFACET_COLOUR_NORMAL : PFACET_COLOUR)
+                               : (e.hasFacetNormal ? PFACET_NORMAL : PFACET_NONE);
+    d.eflag = PEDGE_NONE;
+    d.vflag = vertexFlag(colours, normals);
+    d.colr_type = colourType(colours ? e.vertexColours.front() : std::vector<Colour>{}, e.hasFacetColour,
+                             e.facetColour);
+    if (d.fflag == PFACET_COLOUR) d.fdata.colr = coval(e.facetColour);
+    if (d.fflag == PFACET_NORMAL) d.fdata.norm = v3(e.facetNormal);
+    if (d.fflag == PFACET_COLOUR_NORMAL) d.fdata.conorm = {coval(e.facetColour), v3(e.facetNormal)};
+    std::size_t total = 0;
+    for (const auto& c : e.contours) total += c.size();
+    reserveVertices(s, total);
+    for (std::size_t i = 0; i < e.contours.size(); ++i)
+        s.vertexLists.push_back({static_cast<Pint>(e.contours[i].size()),
+                                 vertexData(d.vflag, e.contours[i], colours ? &e.vertexColours[i] : nullptr,
+                                            normals ? &e.vertexNormals[i] : nullptr, s)});
+    d.nfa = static_cast<Pint>(e.contours.size());
+    d.edata = nullptr;
+    d.vdata = s.vertexLists.data();
+}
+
+template <class Mesh>
+Pfacet_vdata_arr3 meshData(const Mesh& e, Pint& vflag, Pint& colrType, Phigs_store& s) {
+    const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
+    vflag = vertexFlag(colours, normals);
+    colrType = colourType(e.vertexColours, false, Colour{});
+    reserveVertices(s, e.points.size());
+    return vertexData(vflag, e.points, &e.vertexColours, &e.vertexNormals, s);
+}
+
 }  // namespace
 
 int fillContent(const Element& element, Phigs_store& s) {
@@ -340,7 +434,17 @@ int fillContent(const Element& element, Phigs_store& s) {
                 curveContent(e, s);
             else if constexpr (std::is_same_v<E, NurbsSurfaceElement>)
                 surfaceContent(e, s);
-            else if constexpr (std::is_same_v<E, GseElement>) {
+            else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>)
+                fasDataContent(e, s);
+            else if constexpr (std::is_same_v<E, TriangleStripElement>) {
+                auto& d = s.data.tri_strip3;
+                d.fflag = PFACET_NONE, d.nv = static_cast<Pint>(e.points.size());
+                d.vdata = meshData(e, d.vflag, d.colr_type, s);
+            } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
+                auto& d = s.data.quad_mesh3;
+                d.fflag = PFACET_NONE, d.dim = {e.columns, e.rows};
+                d.vdata = meshData(e, d.vflag, d.colr_type, s);
+            } else if constexpr (std::is_same_v<E, GseElement>) {
                 s.text = e.data;
                 s.data.gse.id = e.identifier;
                 s.data.gse.data.unsupp = {static_cast<Pint>(s.text.size()), s.text.data()};

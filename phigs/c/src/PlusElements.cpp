@@ -3,22 +3,13 @@
 
 #include "Binding.h"
 #include "Conversions.h"
+#include "Insert.h"
 #include "phigs.h"
 
 using namespace phigs;
-using phigs::c::Binding;
+using phigs::c::insertElement;
 
 namespace {
-
-template <class Make>
-void insertElement(int fn, Make&& make) {
-    Binding::instance().call(fn, [&](Phigs& p) {
-        const std::string name = c::functionName(fn);
-        StructureStore& store = p.store();
-        if (!store.isStructureOpen()) raise(&p.errorLog(), errors::NotStructureOpen, name.c_str());
-        store.insert(make(name.c_str()));
-    });
-}
 
 /// An integer attribute whose defined values are lo..hi (2202 outside).
 void insertRanged(int fn, ElementType type, int v, int lo, int hi) {
@@ -220,7 +211,7 @@ void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const P
         const bool rat = rational(rationality, n);
         const std::size_t nu = c::count(grid->num_points.size_x, n),
                           nv = c::count(grid->num_points.size_y, n);
-        if (nu * nv)
+        if (nu * nv > 0)
             c::require(rat ? static_cast<const void*>(grid->points.point4d) : grid->points.point3d, n);
         // The kernel keeps u as the slow index; the grid runs u fastest.
         std::vector<glm::dvec3> points;

@@ -99,6 +99,16 @@ void checkInquiryType(int type) {
     if (type != PINQ_SET && type != PINQ_REALIZED) throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "inquiry type");
 }
 
+/// The description of a PWST_* type (52 for any other).
+WorkstationDescription description(Pint type) {
+    if (type < PWST_OFFSCREEN || type > PWST_EPS ||
+        !isWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN)))
+        throw Error(errors::BadWorkstationType, "inquiry", "workstation type " + std::to_string(type));
+    return describeWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN));
+}
+
+constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation
+
 template <class Map>
 std::vector<int> keys(const Map& map) {
     std::vector<int> out;
@@ -174,6 +184,48 @@ void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bund
 void pinq_list_dcue_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
     c::inquire(err, [&](Phigs& p) {
         c::answerList(keys(inquired(p, ws_id).tables().depthCues), appl, start, inds, total);
+    });
+}
+
+// Every type starts with the same predefined tables: light 1 (white ambient), depth cue 0
+// (suppressed).
+void pinq_pred_light_src_rep(Pint ws_type, Pint index, Pint* err, Plight_src_bundle* rep) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const WorkstationTables initial;
+        const auto found = initial.lights.find(index);
+        if (found == initial.lights.end()) throw Error(kNotPredefined, "inquiry");
+        c::require(rep, "inquiry");
+        *rep = bundle(found->second);
+    });
+}
+
+void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        if (index < 0) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const WorkstationTables initial;
+        const auto found = initial.depthCues.find(index);
+        if (found == initial.depthCues.end()) throw Error(kNotPredefined, "inquiry");
+        c::require(rep, "inquiry");
+        const DepthCue& d = found->second;
+        rep->mode = d.enabled ? PALLOWED : PSUPPRESSED;
+        rep->ref_planes[0] = static_cast<Pfloat>(d.frontPlane),
+        rep->ref_planes[1] = static_cast<Pfloat>(d.backPlane);
+        rep->scaling[0] = d.frontScale, rep->scaling[1] = d.backScale;
+        rep->colr = gcolr(d.colour);
+    });
+}
+
+void pinq_light_src_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Plight_src_facs* facs, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const WorkstationDescription d = description(ws_type);
+        c::require(facs, "inquiry");
+        c::answerList({PLIGHT_AMBIENT, PLIGHT_DIRECTIONAL, PLIGHT_POSITIONAL, PLIGHT_SPOT}, appl, start,
+                      &facs->types, total);
+        facs->max = d.lightTableSize;
+        facs->num_pred_inds = static_cast<Pint>(WorkstationTables{}.lights.size());
     });
 }
 

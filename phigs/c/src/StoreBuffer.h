@@ -29,6 +29,10 @@ struct Phigs_store {
     std::vector<Ppoint4> points4;
     std::vector<Ptrimcurve> trimCurves;
     std::vector<Ptrimcurve_list> trimLoops;
+    std::vector<Pptco3> ptcolrs;
+    std::vector<Pptnorm3> ptnorms;
+    std::vector<Pptconorm3> ptconorms;
+    std::vector<Pfacet_vdata_list3> vertexLists;
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -38,5 +42,6 @@ struct Phigs_store {
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
         floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
+        ptcolrs.clear(), ptnorms.clear(), ptconorms.clear(), vertexLists.clear();
     }
 };
