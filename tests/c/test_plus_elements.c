@@ -234,6 +234,9 @@ static void representations(const char* pdf) {
     CHECK(err == 101);
     pinq_list_light_src_inds(1, 8, 0, &err, &inds, &total);
     CHECK(err == 0 && total == 2 && buffer[0] == 1 && buffer[1] == 2);
+    cue.colr.type = PINDIRECT, cue.colr.val.ind = -1;
+    EXPECT_ERROR(pset_dcue_rep(1, 1, &cue), 113, Pfn_set_dcue_rep);
+    cue.colr.type = PMODEL_RGB, cue.colr.val.direct.x = cue.colr.val.direct.y = cue.colr.val.direct.z = 0.5f;
     EXPECT_NO_ERROR(pset_dcue_rep(1, 1, &cue));
     pinq_dcue_rep(1, 1, PINQ_SET, &err, &cue_got);
     CHECK(err == 0 && cue_got.mode == PALLOWED && cue_got.ref_planes[0] == 0.9f &&

@@ -1242,7 +1242,8 @@ void pcomp_fill_area_set_gnorm(Pint vflag, Pint nfa, const Pfacet_vdata_list3* v
                                Pvec3* norm);
 
 /* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct RGB
- * (PMODEL_RGB) or an index resolved through the workstation's colour table when set. */
+ * (PMODEL_RGB) or an index resolved through the workstation's colour table when set (113 for a
+ * negative index). */
 #define PLIGHT_AMBIENT 1
 #define PLIGHT_DIRECTIONAL 2
 #define PLIGHT_POSITIONAL 3
@@ -1295,8 +1296,8 @@ void pinq_light_src_rep(Pint ws_id, Pint light_src_ind, Pinq_type type, Pint* er
 void pinq_list_light_src_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                               Pint_list* light_src_inds, Pint* num_elems_impl_list);
 /* Predefined representations (every type: light 1 white ambient, depth cue 0 suppressed; 102 for
- * any other index) and the light source facilities (the four types, the table size, the
- * number of predefined entries). */
+ * any other index) and the light source facilities (the four types; max: how many may be
+ * active at once, the light table's size; the number of predefined entries). */
 typedef struct {
     Pint_list types;
     Pint max;

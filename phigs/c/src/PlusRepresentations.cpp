@@ -13,7 +13,11 @@ namespace {
 using namespace phigs;
 
 glm::vec3 rgb(const Workstation& ws, const Pgcolr& c, const char* name) {
-    if (c.type == PINDIRECT) return glm::vec3(ws.tables().colours.get(c.val.ind));
+    if (c.type == PINDIRECT) {
+        if (c.val.ind < 0)
+            throw Error(errors::ColourIndexBelowZero, name, "colour index " + std::to_string(c.val.ind));
+        return glm::vec3(ws.tables().colours.get(c.val.ind));
+    }
     if (c.type != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
     return {c.val.direct.x, c.val.direct.y, c.val.direct.z};
 }
