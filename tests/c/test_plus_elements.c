@@ -263,6 +263,25 @@ static void representations(const char* pdf) {
         CHECK(err == 0 && total == 4 && facs.types.num_ints == 4 && buffer[3] == PLIGHT_SPOT &&
               facs.max > 1 && facs.num_pred_inds == 1);
     }
+    pinq_dcue_facs(PWST_SVG, &err, &total);
+    CHECK(err == 0 && total == 1);
+    inds.ints = buffer;
+    pinq_rendering_colr_model_facs(PWST_PNG, 8, 0, &err, &inds, &total);
+    CHECK(err == 0 && total == 1 && buffer[0] == PMODEL_RGB);
+    {
+        Pint a[4], b[4], c[4], e[4], totals[4] = {0, 0, 0, 0};
+        Pcurvsurf_facs facs;
+        facs.cat_types.ints = a, facs.sat_types.ints = b, facs.tcat_types.ints = c, facs.psc_types.ints = e;
+        pinq_curv_surf_facs(PWST_OFFSCREEN, 4, 0, 4, 1, 4, 0, 4, 0, &err, &facs, &totals[0], &totals[1],
+                            &totals[2], &totals[3]);
+        CHECK(err == 0 && totals[0] == 3 && totals[1] == 3 && totals[2] == 1 && totals[3] == 3);
+        CHECK(facs.sat_types.num_ints == 2 && b[1] == PSURF_CHORDAL_DEVIATION_WC &&
+              e[2] == PSC_ISOPARAMETRIC_CURVES);
+        CHECK(facs.max_bsp_order >= 4);
+        pinq_curv_surf_facs(PWST_OFFSCREEN, 4, 5, 4, 0, 4, 0, 4, 0, &err, &facs, &totals[0], &totals[1],
+                            &totals[2], &totals[3]);
+        CHECK(err == PE_START_IND_INVAL);
+    }
 }
 
 int main(int argc, char** argv) {

@@ -1308,6 +1308,25 @@ void pinq_pred_light_src_rep(Pint ws_type, Pint light_src_ind, Pint* err_ind,
 void pinq_pred_dcue_rep(Pint ws_type, Pint dcue_ind, Pint* err_ind, Pdcue_bundle* dcue_rep);
 void pinq_light_src_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                          Plight_src_facs* facs, Pint* num_elems_impl_list);
+/* More facilities of every type: the predefined depth cue entries (1), the rendering colour
+ * models (PMODEL_RGB), and the curve and surface facilities: the approximation criteria drawn
+ * (workstation dependent, constant subdivision between knots, chordal deviation), trimming curves
+ * workstation dependent, surface characteristics PSC_NONE .. PSC_ISOPARAMETRIC_CURVES, and no
+ * limit on B-spline orders (INT_MAX). */
+typedef struct {
+    Pint max_bsp_order;
+    Pint max_tc_order;
+    Pint_list cat_types;
+    Pint_list sat_types;
+    Pint_list tcat_types;
+    Pint_list psc_types;
+} Pcurvsurf_facs;
+void pinq_dcue_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_inds);
+void pinq_rendering_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                                    Pint_list* models, Pint* num_elems_impl_list);
+void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
+                         Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err_ind, Pcurvsurf_facs* facs,
+                         Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len);
 void pset_dcue_rep(Pint ws_id, Pint dcue_ind, const Pdcue_bundle* dcue_rep);
 void pinq_dcue_rep(Pint ws_id, Pint dcue_ind, Pinq_type type, Pint* err_ind, Pdcue_bundle* dcue_rep);
 void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,

@@ -1,10 +1,13 @@
 // PHIGS PLUS representations: light sources and depth cueing on a workstation, and their
-// inquiries (which answer the set values: representations take effect at once).
+// inquiries (which answer the set values: representations take effect at once); the predefined
+// representations and the PHIGS PLUS facilities of the workstation types.
 
 #include "Binding.h"
 #include "Conversions.h"
 #include "Inquiry.h"
 #include "phigs.h"
+
+#include <climits>
 
 using phigs::c::Binding;
 
@@ -230,6 +233,40 @@ void pinq_light_src_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Plight_
                       &facs->types, total);
         facs->max = d.lightTableSize;
         facs->num_pred_inds = static_cast<Pint>(WorkstationTables{}.lights.size());
+    });
+}
+
+void pinq_dcue_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::require(num_pred_inds, "inquiry");
+        *num_pred_inds = static_cast<Pint>(WorkstationTables{}.depthCues.size());
+    });
+}
+
+void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* models,
+                                    Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::answerList({PMODEL_RGB}, appl, start, models, total);
+    });
+}
+
+void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
+                         Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err, Pcurvsurf_facs* facs,
+                         Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::require(facs, "inquiry");
+        c::answerList({PCURV_WS_DEP, PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, PCURV_CHORDAL_DEVIATION_WC},
+                      cat_len, cat_st, &facs->cat_types, tot_cat_len);
+        c::answerList({PSURF_WS_DEP, PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, PSURF_CHORDAL_DEVIATION_WC},
+                      sat_len, sat_st, &facs->sat_types, tot_sat_len);
+        c::answerList({PCURV_WS_DEP}, tcat_len, tcat_st, &facs->tcat_types, tot_tcat_len);
+        c::answerList({PSC_NONE, PSC_WS_DEP, PSC_ISOPARAMETRIC_CURVES}, psc_len, psc_st, &facs->psc_types,
+                      tot_psc_len);
+        facs->max_bsp_order = INT_MAX;  // the geometry kernel sets no limit
+        facs->max_tc_order = INT_MAX;
     });
 }
 
