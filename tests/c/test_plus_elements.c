@@ -268,6 +268,9 @@ static void representations(const char* pdf) {
     inds.ints = buffer;
     pinq_rendering_colr_model_facs(PWST_PNG, 8, 0, &err, &inds, &total);
     CHECK(err == 0 && total == 1 && buffer[0] == PMODEL_RGB);
+    buffer[0] = 0;
+    pinq_direct_colr_model_facs(PWST_PNG, 8, 0, &err, &total, &inds);
+    CHECK(err == 0 && total == 1 && inds.num_ints == 1 && buffer[0] == PMODEL_RGB);
     {
         Pint a[4], b[4], c[4], e[4], totals[4] = {0, 0, 0, 0};
         Pcurvsurf_facs facs;

@@ -1322,6 +1322,9 @@ typedef struct {
     Pint_list psc_types;
 } Pcurvsurf_facs;
 void pinq_dcue_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_inds);
+/* The direct colour models (PMODEL_RGB); the total comes before the list, as in the PHIGS PLUS binding. */
+void pinq_direct_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                                 Pint* num_elems_impl_list, Pint_list* models);
 void pinq_rendering_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                                     Pint_list* models, Pint* num_elems_impl_list);
 void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,

@@ -252,6 +252,15 @@ void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* e
     });
 }
 
+// The PHIGS PLUS binding puts the total before the list here.
+void pinq_direct_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint* total,
+                                 Pint_list* models) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::answerList({PMODEL_RGB}, appl, start, models, total);
+    });
+}
+
 void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
                          Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err, Pcurvsurf_facs* facs,
                          Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len) {
