@@ -374,6 +374,153 @@ typedef struct {
 #define PINDIRECT 0
 #define PMODEL_RGB 1
 
+/* ---- PHIGS PLUS element data (attributes and NURBS primitives; see the PHIGS PLUS part below) */
+typedef enum { PDISTING_NO, PDISTING_YES } Pdisting_mode;
+typedef enum { PCULL_NONE, PCULL_BACKFACE, PCULL_FRONTFACE } Pcull_mode;
+/* Curve and surface approximation criteria this implementation draws. */
+#define PCURV_WS_DEP 1
+#define PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS 2
+#define PCURV_CHORDAL_DEVIATION_WC 6
+#define PSURF_WS_DEP 1
+#define PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS 2
+#define PSURF_CHORDAL_DEVIATION_WC 6
+/* Parametric surface characteristics: none, workstation dependent, iso-parametric curves (level
+ * curves, types 4 and 5, are refused with -202). */
+#define PSC_NONE 1
+#define PSC_WS_DEP 2
+#define PSC_ISOPARAMETRIC_CURVES 3
+typedef enum { PCP_UNIFORM, PCP_NON_UNIFORM } Pcurve_placement;
+typedef union {
+    struct {
+        Pint unused;
+    } psc_1;
+    struct {
+        Pint unused;
+    } psc_2;
+    struct {
+        Pcurve_placement placement; /* PCP_NON_UNIFORM: at the knots */
+        Pint u_count;
+        Pint v_count;
+    } psc_3;
+} Ppara_surf_characs;
+typedef struct {
+    Pfloat ambient_coef;
+    Pfloat diffuse_coef;
+    Pfloat specular_coef;
+    Pgcolr specular_colr;
+    Pfloat specular_exp;
+    Pfloat transpar_coef;
+} Prefl_props;
+typedef struct {
+    Pint type;
+    Pfloat value;
+} Pcurv_approx;
+typedef struct {
+    Pint type;
+    Pfloat u_val, v_val;
+} Psurf_approx;
+
+typedef enum { PRATIONAL, PNON_RATIONAL } Prational;
+typedef struct {
+    Pfloat x, y, z, w;
+} Ppoint4;
+typedef struct {
+    Pint num_points;
+    Ppoint4* points;
+} Ppoint_list4;
+typedef struct {
+    Pint num_floats;
+    Pfloat* floats;
+} Pfloat_list;
+typedef union {
+    Ppoint_list3 point3d; /* PNON_RATIONAL */
+    Ppoint_list4 point4d; /* PRATIONAL */
+} Ppoint_list34;
+typedef union {
+    Ppoint_list point2d;  /* PNON_RATIONAL */
+    Ppoint_list3 point3d; /* PRATIONAL */
+} Ppoint_list23;
+typedef struct {
+    Pint_size num_points;
+    union {
+        Ppoint3* point3d;
+        Ppoint4* point4d;
+    } points;
+} Ppoint_grid34;
+typedef struct {
+    Pedge_flag visible;
+    Prational rationality;
+    Pint order;
+    Pint approx_type;
+    Pfloat approx_val;
+    Pfloat_list knots;
+    Pfloat tmin, tmax;
+    Ppoint_list23 cpts;
+} Ptrimcurve;
+typedef struct {
+    Pint num_curves;
+    Ptrimcurve* curves;
+} Ptrimcurve_list;
+/* Primitives with data (PHIGS PLUS): which data the facets, edges and vertices carry. A colour
+ * value is an index (colr_type PINDIRECT) or direct RGB (PMODEL_RGB), the same for every vertex
+ * and facet of one primitive. */
+#define PFACET_NONE 0
+#define PFACET_COLOUR 1
+#define PFACET_NORMAL 2
+#define PFACET_COLOUR_NORMAL 3
+#define PEDGE_NONE 0
+#define PEDGE_VISIBILITY 1
+#define PVERT_COORD 0
+#define PVERT_COORD_COLOUR 1
+#define PVERT_COORD_NORMAL 2
+#define PVERT_COORD_COLOUR_NORMAL 3
+typedef union {
+    Pint ind;
+    struct {
+        Pfloat x, y, z;
+    } direct;
+} Pcoval;
+typedef struct {
+    Pcoval colr;
+    Pvec3 norm;
+} Pconorm3;
+typedef union {
+    Pcoval colr;
+    Pvec3 norm;
+    Pconorm3 conorm;
+} Pfacet_data3;
+typedef union {
+    Pcoval* colrs;
+    Pvec3* norms;
+    Pconorm3* conorms;
+} Pfacet_data_arr3;
+typedef struct {
+    Ppoint3 point;
+    Pcoval colr;
+} Pptco3;
+typedef struct {
+    Ppoint3 point;
+    Pvec3 norm;
+} Pptnorm3;
+typedef struct {
+    Ppoint3 point;
+    Pcoval colr;
+    Pvec3 norm;
+} Pptconorm3;
+typedef union {
+    Ppoint3* points;
+    Pptco3* ptcolrs;
+    Pptnorm3* ptnorms;
+    Pptconorm3* ptconorms;
+} Pfacet_vdata_arr3;
+typedef struct {
+    Pint num_vertices;
+    Pfacet_vdata_arr3 vertex_data;
+} Pfacet_vdata_list3;
+typedef struct {
+    Pint num_edges;
+    Pedge_flag* edgedata;
+} Pedge_data_list;
 /* The contents of an element (INQUIRE (CURRENT) ELEMENT CONTENT). Every pointer in it points
  * into the Pstore the inquiry was given, valid until that store's next use or deletion. */
 typedef union {
@@ -462,6 +609,54 @@ typedef union {
         Pint id;
         Pgse_data data;
     } gse;
+    /* PHIGS PLUS: shading methods, reflectance equations, depth cue and colour mapping indices
+     * answer int_data, back interior style int_style, back interior colour colr / int_data. */
+    Prefl_props props;
+    Pcurv_approx curv_approx;
+    Psurf_approx surf_approx;
+    struct {
+        Pint type;
+        Ppara_surf_characs data;
+    } para_surf_characs;
+    struct {
+        Pint_list activation;
+        Pint_list deactivation;
+    } lss;
+    Pdisting_mode disting_mode;
+    Pcull_mode cull_mode;
+    struct {
+        Pint order;
+        Pfloat_list knots;
+        Prational rationality;
+        Ppoint_list34 cpts;
+        Pfloat min, max;
+    } nuni_bsp_curv;
+    struct {
+        Pint u_order, v_order;
+        Pfloat_list uknots, vknots;
+        Prational rationality;
+        Ppoint_grid34 grid;
+        Pint num_trim_loops;
+        Ptrimcurve_list* trim_loops;
+    } nuni_bsp_surf;
+    struct {
+        Pint fflag, eflag, vflag, colr_type;
+        Pfacet_data3 fdata;
+        Pint nfa;
+        Pedge_data_list* edata; /* NULL: edge data are not stored */
+        Pfacet_vdata_list3* vdata;
+    } fas3_data;
+    struct {
+        Pint fflag, vflag, colr_type, nv;
+        Pfacet_data_arr3 fdata;
+        Pfacet_vdata_arr3 vdata;
+    } tri_strip3;
+    struct {
+        Pint fflag, vflag, colr_type;
+        Pint_size dim;
+        Pfacet_data_arr3 fdata;
+        Pfacet_vdata_arr3 vdata;
+    } quad_mesh3;
 } Pelem_data;
 
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
@@ -1508,6 +1703,238 @@ void pinq_num_avail_in(Pint ws_type, Pint* err_ind, Pnum_in* num_in);
  * and INQUIRE MORE SIMULTANEOUS EVENTS (of the current event report). */
 void pinq_in_overf(Pint* err_ind, Pint* ws_id, Pin_class* in_class, Pint* in_num);
 void pinq_more_simult_events(Pint* err_ind, Pmore_simult_events* simult_events);
+
+/* ==== incremental spatial search, metafiles, text extent and PHIGS PLUS ====
+ * (the names of this group are listed in COVERAGE.md; see README.md for the semantics) */
+
+/* Lists of name set filters (Pfilter and Pinq_type: see the workstation state section). */
+typedef struct {
+    Pint num_filters;
+    Pfilter* filters;
+} Pfilter_list;
+
+/* Function identifiers of this group: metafiles (ISO 9593-4) and PHIGS PLUS (ISO 9592-4). */
+enum {
+    Pfn_write_item = 175,
+    Pfn_get_item_type = 176,
+    Pfn_read_item = 177,
+    Pfn_interpret_item = 178,
+    Pfn_nuni_bsp_curv = 307,
+    Pfn_nuni_bsp_surf = 308,
+    Pfn_fill_area_set3_data = 302,
+    Pfn_tri_strip3_data = 305,
+    Pfn_quad_mesh3_data = 306,
+    Pfn_set_line_shad_meth = 311,
+    Pfn_set_face_disting_mode = 314,
+    Pfn_set_face_cull_mode = 315,
+    Pfn_set_int_shad_meth = 317,
+    Pfn_set_refl_props = 318,
+    Pfn_set_refl_eqn = 319,
+    Pfn_set_back_int_style = 320,
+    Pfn_set_back_int_style_ind = 321,
+    Pfn_set_back_int_colr = 322,
+    Pfn_set_back_int_shad_meth = 323,
+    Pfn_set_back_refl_props = 324,
+    Pfn_set_back_refl_eqn = 325,
+    Pfn_set_light_src_state = 326,
+    Pfn_set_curve_approx = 328,
+    Pfn_set_surf_approx = 329,
+    Pfn_set_para_surf_characs = 330,
+    Pfn_set_dcue_ind = 332,
+    Pfn_set_colr_map_ind = 333,
+    Pfn_set_light_src_rep = 340,
+    Pfn_set_dcue_rep = 341
+};
+
+/* INCREMENTAL SPATIAL SEARCH (3): the next output primitive after the start path's element
+ * whose locus lies within `dist` of the search reference point (world coordinates; dist <= 0:
+ * the locus must contain the point) and whose name set every normal filter accepts and every
+ * inverted filter rejects, searching to the end of the structure at position `ceiling` (1-based)
+ * of the start path. The 2D form takes z = 0. Model clipping cuts the loci when mclip_flag is
+ * PIND_CLIP. The found path (empty when nothing qualifies) is a simple list. Errors (in
+ * *err_ind): 203 start path not in the CSS, 204 ceiling outside 1 .. path length. */
+void pincr_spa_search3(const Ppoint3* ref, Pfloat dist, const Pelem_ref_list* start_path,
+                       Pclip_ind mclip_flag, Pint ceiling, const Pfilter_list* norm_filter,
+                       const Pfilter_list* inv_filter, Pint num_elems_appl_list, Pint start_ind,
+                       Pint* err_ind, Pelem_ref_list* found_path, Pint* num_elems_impl_list);
+void pincr_spa_search(const Ppoint* ref, Pfloat dist, const Pelem_ref_list* start_path, Pclip_ind mclip_flag,
+                      Pint ceiling, const Pfilter_list* norm_filter, const Pfilter_list* inv_filter,
+                      Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pelem_ref_list* found_path,
+                      Pint* num_elems_impl_list);
+
+/* Metafiles. This implementation has no metafile workstation type: pwrite_item answers error 56
+ * (not of category MO), pget_item_type and pread_item 58 (not of category MI) on any open
+ * workstation (3, 54 first); pinterpret_item knows no item type (304; 301 for a negative
+ * length). */
+typedef union {
+    struct {
+        Pint unused;
+    } item_u1;
+    Pdata unsupp;
+} Pitem_data;
+void pwrite_item(Pint ws_id, Pint item_type, Pint item_data_length, const Pitem_data* item_data);
+void pget_item_type(Pint ws_id, Pint* item_type, Pint* item_data_length);
+void pread_item(Pint ws_id, Pint max_item_data_length, Pitem_data* item_data);
+void pinterpret_item(Pint type, Pint item_data_length, const Pitem_data* item_data);
+
+/* INQUIRE TEXT EXTENT: the rectangle of the character bodies and the concatenation point in
+ * text local coordinates (units of char_ht, alignment applied) of the Hershey stroke fonts the
+ * workstations draw: fonts 1 (Roman simplex), 2 (duplex), 3 (triplex), 4 (script); 106 for any
+ * other font, 52 for an unknown workstation type. */
+void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_space, Pfloat char_ht,
+                      Ptext_path text_path, Phor_text_align hor_align, Pvert_text_align vert_align,
+                      const char* str, Pint* err_ind, Prect* rect, Ppoint* offset);
+
+/* ---- PHIGS PLUS attributes */
+#define PSD_NONE 1
+#define PSD_COLOUR 2
+#define PSD_DOT_PRODUCT 3
+#define PSD_NORMAL 4
+#define PREFL_NONE 1
+#define PREFL_AMBIENT 2
+#define PREFL_AMB_DIFF 3
+#define PREFL_AMB_DIFF_SPEC 4
+void pset_line_shad_meth(Pint shad_meth);
+void pset_int_shad_meth(Pint shad_meth);
+void pset_back_int_shad_meth(Pint shad_meth);
+void pset_refl_eqn(Pint refl_eqn);
+void pset_back_refl_eqn(Pint refl_eqn);
+void pset_refl_props(const Prefl_props* refl_props);
+void pset_back_refl_props(const Prefl_props* refl_props);
+void pset_back_int_style(Pint_style style);
+void pset_back_int_style_ind(Pint style_ind);
+void pset_back_int_colr(const Pgcolr* colr);
+void pset_face_disting_mode(Pdisting_mode mode);
+void pset_face_cull_mode(Pcull_mode mode);
+/* SET LIGHT SOURCE STATE: the indices to activate and to deactivate (one list each). */
+void pset_light_src_state(const Pint_list* activation, const Pint_list* deactivation);
+void pset_dcue_ind(Pint dcue_ind);
+void pset_colr_map_ind(Pint colr_map_ind);
+void pset_curve_approx(Pint type, Pfloat value);
+void pset_surf_approx(Pint type, Pfloat u_val, Pfloat v_val);
+void pset_para_surf_characs(Pint psc_type, const Ppara_surf_characs* data);
+
+/* ---- PHIGS PLUS NURBS primitives. A rational control point is homogeneous (w x, w y, w z, w),
+ * w > 0. Knots: order + number of control points, non-decreasing. A surface's grid holds
+ * num_points.size_x (u) x num_points.size_y (v) points, u running fastest. Trimming curves are
+ * closed loops in (u, v) (rational: (w u, w v, w)); their order, knots and points are kept, their
+ * visibility, approximation and range are not (answered PEDGE_OFF, PCURV_WS_DEP, 0 and the
+ * knot domain). Bad data is refused with -202 naming the rule. */
+/* NON-UNIFORM B-SPLINE CURVE drawn over [min, max] (min == max: the whole domain). */
+void pnuni_bsp_curv(Pint order, const Pfloat_list* knots, Prational rationality, const Ppoint_list34* cpts,
+                    Pfloat min, Pfloat max);
+void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const Pfloat_list* vknots,
+                    Prational rationality, const Ppoint_grid34* grid, Pint num_trim_loops,
+                    const Ptrimcurve_list* trim_loops);
+
+/* ---- PHIGS PLUS primitives with data. FILL AREA SET 3 WITH DATA keeps a facet colour and
+ * normal and per-vertex colours and normals; triangle strips and quadrilateral meshes keep the
+ * per-vertex data (facet data, and per-edge visibility, are refused with -202). A quadrilateral
+ * mesh of dim.size_x x dim.size_y points runs x fastest. */
+void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
+                          Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata);
+void ptri_strip3_data(Pint fflag, Pint vflag, Pint colr_type, Pint nv, const Pfacet_data_arr3* fdata,
+                      const Pfacet_vdata_arr3* vdata);
+void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* dim,
+                      const Pfacet_data_arr3* fdata, const Pfacet_vdata_arr3* vdata);
+/* COMPUTE FILL AREA SET GEOMETRIC NORMAL: the unit normal (P2 - P1) x (P3 - P1) of the first three
+ * vertices that are not collinear (-202 when there are none). An inquiry-style utility. */
+void pcomp_fill_area_set_gnorm(Pint vflag, Pint nfa, const Pfacet_vdata_list3* vdata, Pint* err_ind,
+                               Pvec3* norm);
+
+/* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct RGB
+ * (PMODEL_RGB) or an index resolved through the workstation's colour table when set (113 for a
+ * negative index). */
+#define PLIGHT_AMBIENT 1
+#define PLIGHT_DIRECTIONAL 2
+#define PLIGHT_POSITIONAL 3
+#define PLIGHT_SPOT 4
+typedef struct {
+    Pgcolr colr;
+} Pamb_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Pvec3 dir;
+} Pdir_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Ppoint3 pos;
+    Pfloat coef[2]; /* attenuation: constant, linear */
+} Ppos_light_src_rec;
+typedef struct {
+    Pgcolr colr;
+    Ppoint3 pos;
+    Pvec3 dir;
+    Pfloat exp;
+    Pfloat coef[2];
+    Pfloat angle; /* spread angle, radians, in [0, pi] */
+} Pspot_light_src_rec;
+typedef union {
+    Pamb_light_src_rec ambient;
+    Pdir_light_src_rec directional;
+    Ppos_light_src_rec positional;
+    Pspot_light_src_rec spot;
+    Pdata unsupp;
+} Plight_src_rec;
+typedef struct {
+    Pint type;
+    Plight_src_rec rec;
+} Plight_src_bundle;
+typedef enum { PSUPPRESSED, PALLOWED } Pdcue_mode;
+typedef struct {
+    Pdcue_mode mode;
+    Pfloat ref_planes[2]; /* front, back (NPC z) */
+    Pfloat scaling[2];    /* front, back */
+    Pgcolr colr;
+} Pdcue_bundle;
+/* Light sources: index >= 1 (100), table full 103, type outside 1..4 (2202). Depth cue: index
+ * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. The inquiries answer
+ * the set values (PINQ_SET and PINQ_REALIZED alike: representations take effect at once),
+ * 101 for an index not defined. */
+void pset_light_src_rep(Pint ws_id, Pint light_src_ind, const Plight_src_bundle* light_src_rep);
+void pinq_light_src_rep(Pint ws_id, Pint light_src_ind, Pinq_type type, Pint* err_ind,
+                        Plight_src_bundle* light_src_rep);
+void pinq_list_light_src_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                              Pint_list* light_src_inds, Pint* num_elems_impl_list);
+/* Predefined representations (every type: light 1 white ambient, depth cue 0 suppressed; 102 for
+ * any other index) and the light source facilities (the four types; max: how many may be
+ * active at once, the light table's size; the number of predefined entries). */
+typedef struct {
+    Pint_list types;
+    Pint max;
+    Pint num_pred_inds;
+} Plight_src_facs;
+void pinq_pred_light_src_rep(Pint ws_type, Pint light_src_ind, Pint* err_ind,
+                             Plight_src_bundle* light_src_rep);
+void pinq_pred_dcue_rep(Pint ws_type, Pint dcue_ind, Pint* err_ind, Pdcue_bundle* dcue_rep);
+void pinq_light_src_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                         Plight_src_facs* facs, Pint* num_elems_impl_list);
+/* More facilities of every type: the predefined depth cue entries (1), the rendering colour
+ * models (PMODEL_RGB), and the curve and surface facilities: the approximation criteria drawn
+ * (workstation dependent, constant subdivision between knots, chordal deviation), trimming curves
+ * workstation dependent, surface characteristics PSC_NONE .. PSC_ISOPARAMETRIC_CURVES, and no
+ * limit on B-spline orders (INT_MAX). */
+typedef struct {
+    Pint max_bsp_order;
+    Pint max_tc_order;
+    Pint_list cat_types;
+    Pint_list sat_types;
+    Pint_list tcat_types;
+    Pint_list psc_types;
+} Pcurvsurf_facs;
+void pinq_dcue_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_inds);
+/* The direct colour models (PMODEL_RGB); the total comes before the list, as in the PHIGS PLUS binding. */
+void pinq_direct_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                                 Pint* num_elems_impl_list, Pint_list* models);
+void pinq_rendering_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                                    Pint_list* models, Pint* num_elems_impl_list);
+void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
+                         Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err_ind, Pcurvsurf_facs* facs,
+                         Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len);
+void pset_dcue_rep(Pint ws_id, Pint dcue_ind, const Pdcue_bundle* dcue_rep);
+void pinq_dcue_rep(Pint ws_id, Pint dcue_ind, Pinq_type type, Pint* err_ind, Pdcue_bundle* dcue_rep);
+void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                         Pint_list* dcue_inds, Pint* num_elems_impl_list);
 
 #ifdef __cplusplus
 }

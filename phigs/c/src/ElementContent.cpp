@@ -144,6 +144,233 @@ void patternContent(const PatternAttribute& e, Phigs_store& s) {
         s.data.pat_ref_point_vecs = {p3(e.referencePoint), {v3(e.vectorX), v3(e.vectorY)}};
 }
 
+void propertiesContent(const AreaPropertiesAttribute& e, Phigs_store& s) {
+    Prefl_props& p = s.data.props;
+    p.ambient_coef = static_cast<Pfloat>(e.ambient), p.diffuse_coef = static_cast<Pfloat>(e.diffuse);
+    p.specular_coef = static_cast<Pfloat>(e.specular);
+    p.specular_exp = static_cast<Pfloat>(e.specularExponent),
+    p.transpar_coef = static_cast<Pfloat>(e.transparency);
+    if (e.specularColour.direct) {
+        p.specular_colr.type = PMODEL_RGB;
+        p.specular_colr.val.direct = {static_cast<Pfloat>(e.specularColour.rgb.x),
+                                      static_cast<Pfloat>(e.specularColour.rgb.y),
+                                      static_cast<Pfloat>(e.specularColour.rgb.z)};
+    } else {
+        p.specular_colr.type = PINDIRECT;
+        p.specular_colr.val.ind = e.specularColour.index;
+    }
+}
+
+void approximationContent(const ApproximationAttribute& e, Phigs_store& s) {
+    if (e.type == ElementType::CurveApproximationCriteria)
+        s.data.curv_approx = {e.criteria, static_cast<Pfloat>(e.valueU)};
+    else
+        s.data.surf_approx = {e.criteria, static_cast<Pfloat>(e.valueU), static_cast<Pfloat>(e.valueV)};
+}
+
+void characteristicsContent(const SurfaceCharacteristicsAttribute& e, Phigs_store& s) {
+    s.data.para_surf_characs.type = e.style;
+    if (e.style == PSC_ISOPARAMETRIC_CURVES)
+        s.data.para_surf_characs.data.psc_3 = {static_cast<Pcurve_placement>(e.placement), e.curvesU,
+                                               e.curvesV};
+}
+
+void lightStateContent(const LightSourceStateAttribute& e, Phigs_store& s) {
+    s.ints.assign(e.activate.begin(), e.activate.end());
+    s.ints.insert(s.ints.end(), e.deactivate.begin(), e.deactivate.end());
+    const Pint on = static_cast<Pint>(e.activate.size()), off = static_cast<Pint>(e.deactivate.size());
+    s.data.lss.activation = {on, s.ints.data()};
+    s.data.lss.deactivation = {off, s.ints.data() + on};
+}
+
+// Knots into s.floats at `at`; returns their list once every float is in (the vector is
+// reserved first, so earlier lists stay valid).
+Pfloat_list knotList(const std::vector<double>& knots, Phigs_store& s) {
+    const std::size_t at = s.floats.size();
+    for (double k : knots) s.floats.push_back(static_cast<Pfloat>(k));
+    return {static_cast<Pint>(knots.size()), s.floats.data() + at};
+}
+
+Ppoint4 homogeneous(const glm::dvec3& p, double w) {
+    return {static_cast<Pfloat>(p.x * w), static_cast<Pfloat>(p.y * w), static_cast<Pfloat>(p.z * w),
+            static_cast<Pfloat>(w)};
+}
+
+void curveContent(const NurbsCurveElement& e, Phigs_store& s) {
+    const geom::Curve& c = e.curve;
+    s.floats.reserve(c.knots.size());
+    auto& d = s.data.nuni_bsp_curv;
+    d.order = c.degree + 1;
+    d.knots = knotList(c.knots, s);
+    d.rationality = c.rational() ? PRATIONAL : PNON_RATIONAL;
+    for (std::size_t i = 0; i < c.points.size(); ++i)
+        c.rational() ? s.points4.push_back(homogeneous(c.points[i], c.weights[i]))
+                     : s.points3.push_back(p3(c.points[i]));
+    if (c.rational())
+        d.cpts.point4d = {static_cast<Pint>(s.points4.size()), s.points4.data()};
+    else
+        d.cpts.point3d = {static_cast<Pint>(s.points3.size()), s.points3.data()};
+    d.min = static_cast<Pfloat>(e.rangeStart), d.max = static_cast<Pfloat>(e.rangeEnd);
+}
+
+void trimContent(const std::vector<TrimLoop>& loops, Phigs_store& s) {
+    std::size_t points = 0, curves = 0;
+    for (const auto& loop : loops)
+        for (const auto& c : loop) points += c.points.size(), curves += 1;
+    // Reserved first: the curves point into these vectors as they fill.
+    s.points.reserve(s.points.size() + points), s.points3.reserve(s.points3.size() + points);
+    s.trimCurves.reserve(curves);
+    for (const auto& loop : loops)
+        for (const auto& c : loop) {
+            Ptrimcurve t{};
+            t.visible = PEDGE_OFF;
+            t.rationality = c.rational() ? PRATIONAL : PNON_RATIONAL;
+            t.order = c.degree + 1;
+            t.approx_type = PCURV_WS_DEP;
+            t.knots = knotList(c.knots, s);
+            t.tmin = static_cast<Pfloat>(c.domainStart()), t.tmax = static_cast<Pfloat>(c.domainEnd());
+            for (std::size_t i = 0; i < c.points.size(); ++i) {
+                const double w = c.weight(i);
+                if (c.rational())
+                    s.points3.push_back({static_cast<Pfloat>(c.points[i].x * w),
+                                         static_cast<Pfloat>(c.points[i].y * w), static_cast<Pfloat>(w)});
+                else
+                    s.points.push_back(p2(c.points[i]));
+            }
+            const Pint n = static_cast<Pint>(c.points.size());
+            if (c.rational())
+                t.cpts.point3d = {n, s.points3.data() + s.points3.size() - c.points.size()};
+            else
+                t.cpts.point2d = {n, s.points.data() + s.points.size() - c.points.size()};
+            s.trimCurves.push_back(t);
+        }
+    std::size_t at = 0;
+    for (const auto& loop : loops) {
+        s.trimLoops.push_back({static_cast<Pint>(loop.size()), s.trimCurves.data() + at});
+        at += loop.size();
+    }
+}
+
+void surfaceContent(const NurbsSurfaceElement& e, Phigs_store& s) {
+    const geom::Surface& f = e.surface;
+    std::size_t knots = f.knotsU.size() + f.knotsV.size();
+    for (const auto& loop : e.trimLoops)
+        for (const auto& c : loop) knots += c.knots.size();
+    s.floats.reserve(knots);
+    auto& d = s.data.nuni_bsp_surf;
+    d.u_order = f.degreeU + 1, d.v_order = f.degreeV + 1;
+    d.uknots = knotList(f.knotsU, s);
+    d.vknots = knotList(f.knotsV, s);
+    d.rationality = f.rational() ? PRATIONAL : PNON_RATIONAL;
+    d.grid.num_points = {static_cast<Pint>(f.countU), static_cast<Pint>(f.countV)};
+    for (std::size_t j = 0; j < f.countV; ++j)  // u runs fastest in the grid
+        for (std::size_t i = 0; i < f.countU; ++i)
+            f.rational() ? s.points4.push_back(homogeneous(f.point(i, j), f.weight(i, j)))
+                         : s.points3.push_back(p3(f.point(i, j)));
+    if (f.rational())
+        d.grid.points.point4d = s.points4.data();
+    else
+        d.grid.points.point3d = s.points3.data();
+    trimContent(e.trimLoops, s);
+    if (!f.rational()) d.grid.points.point3d = s.points3.data();  // trimContent may have grown it
+    d.num_trim_loops = static_cast<Pint>(s.trimLoops.size());
+    d.trim_loops = s.trimLoops.empty() ? nullptr : s.trimLoops.data();
+}
+
+Pcoval coval(const Colour& c) {
+    Pcoval v{};
+    if (c.direct)
+        v.direct = {static_cast<Pfloat>(c.rgb.x), static_cast<Pfloat>(c.rgb.y), static_cast<Pfloat>(c.rgb.z)};
+    else
+        v.ind = c.index;
+    return v;
+}
+
+Pint vertexFlag(bool colours, bool normals) {
+    return colours ? (normals ? PVERT_COORD_COLOUR_NORMAL : PVERT_COORD_COLOUR)
+                   : (normals ? PVERT_COORD_NORMAL : PVERT_COORD);
+}
+
+// Vertices with their data appended to the store's array for `flag` (reserved by the caller, so
+// the answer stays valid while more are appended); the union points at the first one.
+Pfacet_vdata_arr3 vertexData(Pint flag, const std::vector<glm::dvec3>& points,
+                             const std::vector<Colour>* colours, const std::vector<glm::dvec3>* normals,
+                             Phigs_store& s) {
+    Pfacet_vdata_arr3 out{};
+    for (std::size_t i = 0; i < points.size(); ++i) switch (flag) {
+            case PVERT_COORD:
+                s.points3.push_back(p3(points[i]));
+                break;
+            case PVERT_COORD_COLOUR:
+                s.ptcolrs.push_back({p3(points[i]), coval((*colours)[i])});
+                break;
+            case PVERT_COORD_NORMAL:
+                s.ptnorms.push_back({p3(points[i]), v3((*normals)[i])});
+                break;
+            default:
+                s.ptconorms.push_back({p3(points[i]), coval((*colours)[i]), v3((*normals)[i])});
+                break;
+        }
+    const std::size_t n = points.size();
+    switch (flag) {
+        case PVERT_COORD:
+            out.points = s.points3.data() + s.points3.size() - n;
+            break;
+        case PVERT_COORD_COLOUR:
+            out.ptcolrs = s.ptcolrs.data() + s.ptcolrs.size() - n;
+            break;
+        case PVERT_COORD_NORMAL:
+            out.ptnorms = s.ptnorms.data() + s.ptnorms.size() - n;
+            break;
+        default:
+            out.ptconorms = s.ptconorms.data() + s.ptconorms.size() - n;
+            break;
+    }
+    return out;
+}
+
+void reserveVertices(Phigs_store& s, std::size_t n) {
+    s.points3.reserve(n), s.ptcolrs.reserve(n), s.ptnorms.reserve(n), s.ptconorms.reserve(n);
+}
+
+Pint colourType(const std::vector<Colour>& colours, bool facet, const Colour& facetColour) {
+    const bool direct = (!colours.empty() && colours.front().direct) || (facet && facetColour.direct);
+    return direct ? PMODEL_RGB : PINDIRECT;
+}
+
+void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
+    auto& d = s.data.fas3_data;
+    const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
+    d.fflag = e.hasFacetColour ? (e.hasFacetNormal ? PFACET_COLOUR_NORMAL : PFACET_COLOUR)
+                               : (e.hasFacetNormal ? PFACET_NORMAL : PFACET_NONE);
+    d.eflag = PEDGE_NONE;
+    d.vflag = vertexFlag(colours, normals);
+    d.colr_type = colourType(colours ? e.vertexColours.front() : std::vector<Colour>{}, e.hasFacetColour,
+                             e.facetColour);
+    if (d.fflag == PFACET_COLOUR) d.fdata.colr = coval(e.facetColour);
+    if (d.fflag == PFACET_NORMAL) d.fdata.norm = v3(e.facetNormal);
+    if (d.fflag == PFACET_COLOUR_NORMAL) d.fdata.conorm = {coval(e.facetColour), v3(e.facetNormal)};
+    std::size_t total = 0;
+    for (const auto& c : e.contours) total += c.size();
+    reserveVertices(s, total);
+    for (std::size_t i = 0; i < e.contours.size(); ++i)
+        s.vertexLists.push_back({static_cast<Pint>(e.contours[i].size()),
+                                 vertexData(d.vflag, e.contours[i], colours ? &e.vertexColours[i] : nullptr,
+                                            normals ? &e.vertexNormals[i] : nullptr, s)});
+    d.nfa = static_cast<Pint>(e.contours.size());
+    d.edata = nullptr;
+    d.vdata = s.vertexLists.data();
+}
+
+template <class Mesh>
+Pfacet_vdata_arr3 meshData(const Mesh& e, Pint& vflag, Pint& colrType, Phigs_store& s) {
+    const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
+    vflag = vertexFlag(colours, normals);
+    colrType = colourType(e.vertexColours, false, Colour{});
+    reserveVertices(s, e.points.size());
+    return vertexData(vflag, e.points, &e.vertexColours, &e.vertexNormals, s);
+}
+
 }  // namespace
 
 int fillContent(const Element& element, Phigs_store& s) {
@@ -195,7 +422,29 @@ int fillContent(const Element& element, Phigs_store& s) {
                 s.data.appl_data = {static_cast<Pint>(s.text.size()), s.text.data()};
             } else if constexpr (std::is_same_v<E, GdpElement>)
                 gdpContent(e, s);
-            else if constexpr (std::is_same_v<E, GseElement>) {
+            else if constexpr (std::is_same_v<E, AreaPropertiesAttribute>)
+                propertiesContent(e, s);
+            else if constexpr (std::is_same_v<E, ApproximationAttribute>)
+                approximationContent(e, s);
+            else if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>)
+                characteristicsContent(e, s);
+            else if constexpr (std::is_same_v<E, LightSourceStateAttribute>)
+                lightStateContent(e, s);
+            else if constexpr (std::is_same_v<E, NurbsCurveElement>)
+                curveContent(e, s);
+            else if constexpr (std::is_same_v<E, NurbsSurfaceElement>)
+                surfaceContent(e, s);
+            else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>)
+                fasDataContent(e, s);
+            else if constexpr (std::is_same_v<E, TriangleStripElement>) {
+                auto& d = s.data.tri_strip3;
+                d.fflag = PFACET_NONE, d.nv = static_cast<Pint>(e.points.size());
+                d.vdata = meshData(e, d.vflag, d.colr_type, s);
+            } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
+                auto& d = s.data.quad_mesh3;
+                d.fflag = PFACET_NONE, d.dim = {e.columns, e.rows};
+                d.vdata = meshData(e, d.vflag, d.colr_type, s);
+            } else if constexpr (std::is_same_v<E, GseElement>) {
                 s.text = e.data;
                 s.data.gse.id = e.identifier;
                 s.data.gse.data.unsupp = {static_cast<Pint>(s.text.size()), s.text.data()};

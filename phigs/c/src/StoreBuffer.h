@@ -30,6 +30,14 @@ struct Phigs_store {
     Pfilter filter{};
     Ppat_rep pattern{};
     phigs::c::InputAnswer input;  ///< the input inquiries' answers
+    std::vector<Pfloat> floats;  // PHIGS PLUS: knots
+    std::vector<Ppoint4> points4;
+    std::vector<Ptrimcurve> trimCurves;
+    std::vector<Ptrimcurve_list> trimLoops;
+    std::vector<Pptco3> ptcolrs;
+    std::vector<Pptnorm3> ptnorms;
+    std::vector<Pptconorm3> ptconorms;
+    std::vector<Pfacet_vdata_list3> vertexLists;
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -40,5 +48,7 @@ struct Phigs_store {
         names.clear(), files.clear(), fileList = {};
         filter = {}, pattern = {};
         input = {};
+        floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
+        ptcolrs.clear(), ptnorms.clear(), ptconorms.clear(), vertexLists.clear();
     }
 };

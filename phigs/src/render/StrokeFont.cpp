@@ -1,5 +1,6 @@
 #include "phigs/render/StrokeFont.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -95,33 +96,43 @@ const StrokeGlyph& StrokeFont::glyph(char c) const {
     return glyphs_[(i >= 0 && i < 95) ? i : '?' - 32];
 }
 
-std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const std::string& text,
-                                                const TextStyle& style) {
-    const double scale = style.height / StrokeFont::kCapHeight;
-    const double xScale = scale * style.expansion;
+namespace {
+
+struct Placed {
+    const StrokeGlyph* glyph;
+    glm::dvec2 origin;
+};
+
+/// Glyph origins along the path in text-local units (before the up-vector rotation), the body
+/// box, the alignment shift and where the next character would go.
+struct Layout {
+    std::vector<Placed> placed;
+    double scale = 1.0, xScale = 1.0;
+    double minX = 0.0, maxX = 0.0, bottomY = 0.0, topY = 0.0;
+    glm::dvec2 shift{0.0};
+    glm::dvec2 next{0.0};
+};
+
+Layout layout(const StrokeFont& font, const std::string& text, const TextStyle& style) {
+    Layout l;
+    l.scale = style.height / StrokeFont::kCapHeight;
+    l.xScale = l.scale * style.expansion;
     const double gap = style.spacing * style.height;
     const bool vertical = style.path == TextPath::Up || style.path == TextPath::Down;
-
-    // Place each glyph's origin along the path in text-local units (before the up-vector rotation).
-    struct Placed {
-        const StrokeGlyph* glyph;
-        glm::dvec2 origin;
-    };
-    const double unit = scale;
+    const double unit = l.scale;
     const double cell = (StrokeFont::kTop - StrokeFont::kBottom) * unit;
-    std::vector<Placed> placed;
     double pen = 0.0, widest = 0.0;
     for (char c : text) {
         const StrokeGlyph& g = font.glyph(c);
-        const double width = (g.right - g.left) * xScale;
+        const double width = (g.right - g.left) * l.xScale;
         widest = std::max(widest, width);
         if (vertical) {
             const double y = style.path == TextPath::Up ? pen : -pen;
-            placed.push_back({&g, {-0.5 * width - g.left * xScale, y}});
+            l.placed.push_back({&g, {-0.5 * width - g.left * l.xScale, y}});
             pen += cell + gap;
         } else {
             const double x = style.path == TextPath::Right ? pen : -pen - width;
-            placed.push_back({&g, {x - g.left * xScale, 0.0}});
+            l.placed.push_back({&g, {x - g.left * l.xScale, 0.0}});
             pen += width + gap;
         }
     }
@@ -137,34 +148,46 @@ std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const st
                 : (style.path == TextPath::Left ? HorizontalAlignment::Right : HorizontalAlignment::Left);
     if (v == VerticalAlignment::Normal)
         v = style.path == TextPath::Down ? VerticalAlignment::Top : VerticalAlignment::Base;
-    double minX, maxX, topY, capY, baseY, bottomY;
+    double capY, baseY;
     if (vertical) {
-        minX = -0.5 * widest;
-        maxX = 0.5 * widest;
+        l.minX = -0.5 * widest;
+        l.maxX = 0.5 * widest;
         const double highest = style.path == TextPath::Up ? lastBase : 0.0;
         const double lowest = style.path == TextPath::Up ? 0.0 : lastBase;
-        topY = highest + StrokeFont::kTop * unit;
+        l.topY = highest + StrokeFont::kTop * unit;
         capY = highest + style.height;
         baseY = lowest;
-        bottomY = lowest + StrokeFont::kBottom * unit;
+        l.bottomY = lowest + StrokeFont::kBottom * unit;
     } else {
-        minX = style.path == TextPath::Right ? 0.0 : -extent;
-        maxX = style.path == TextPath::Right ? extent : 0.0;
-        topY = StrokeFont::kTop * unit;
+        l.minX = style.path == TextPath::Right ? 0.0 : -extent;
+        l.maxX = style.path == TextPath::Right ? extent : 0.0;
+        l.topY = StrokeFont::kTop * unit;
         capY = style.height;
         baseY = 0.0;
-        bottomY = StrokeFont::kBottom * unit;
+        l.bottomY = StrokeFont::kBottom * unit;
     }
     const double halfY = 0.5 * (capY + baseY);
-    const double dx = h == HorizontalAlignment::Left    ? -minX
-                      : h == HorizontalAlignment::Right ? -maxX
-                                                        : -0.5 * (minX + maxX);
-    const double dy = v == VerticalAlignment::Top    ? -topY
-                      : v == VerticalAlignment::Cap  ? -capY
-                      : v == VerticalAlignment::Half ? -halfY
-                      : v == VerticalAlignment::Base ? -baseY
-                                                     : -bottomY;
+    l.shift.x = h == HorizontalAlignment::Left    ? -l.minX
+                : h == HorizontalAlignment::Right ? -l.maxX
+                                                  : -0.5 * (l.minX + l.maxX);
+    l.shift.y = v == VerticalAlignment::Top    ? -l.topY
+                : v == VerticalAlignment::Cap  ? -capY
+                : v == VerticalAlignment::Half ? -halfY
+                : v == VerticalAlignment::Base ? -baseY
+                                               : -l.bottomY;
+    const double along = text.empty() ? 0.0 : pen;
+    l.next = style.path == TextPath::Right  ? glm::dvec2(along, 0.0)
+             : style.path == TextPath::Left ? glm::dvec2(-along, 0.0)
+             : style.path == TextPath::Up   ? glm::dvec2(0.0, along)
+                                            : glm::dvec2(0.0, -along);
+    return l;
+}
 
+}  // namespace
+
+std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const std::string& text,
+                                                const TextStyle& style) {
+    const Layout l = layout(font, text, style);
     // Rotate so that local +y follows the up vector; the baseline is the up vector turned clockwise.
     glm::dvec2 up = style.upVector;
     const double length = std::hypot(up.x, up.y);
@@ -172,17 +195,24 @@ std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const st
     const glm::dvec2 baseline(up.y, -up.x);
 
     std::vector<std::vector<glm::dvec2>> strips;
-    for (const Placed& p : placed)
+    for (const Placed& p : l.placed)
         for (const auto& stroke : p.glyph->strokes) {
             std::vector<glm::dvec2> strip;
             strip.reserve(stroke.size());
             for (const glm::dvec2& q : stroke) {
-                const glm::dvec2 local(p.origin.x + q.x * xScale + dx, p.origin.y + q.y * scale + dy);
+                const glm::dvec2 local(p.origin.x + q.x * l.xScale + l.shift.x,
+                                       p.origin.y + q.y * l.scale + l.shift.y);
                 strip.push_back(baseline * local.x + up * local.y);
             }
             strips.push_back(std::move(strip));
         }
     return strips;
+}
+
+TextExtent textExtent(const StrokeFont& font, const std::string& text, const TextStyle& style) {
+    const Layout l = layout(font, text, style);
+    if (text.empty()) return {l.shift, l.shift, l.shift};
+    return {glm::dvec2(l.minX, l.bottomY) + l.shift, glm::dvec2(l.maxX, l.topY) + l.shift, l.next + l.shift};
 }
 
 }  // namespace phigs::render

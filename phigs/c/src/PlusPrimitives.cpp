@@ -1,0 +1,168 @@
+// PHIGS PLUS primitives with data: FILL AREA SET 3 WITH DATA, TRIANGLE STRIP 3 WITH DATA,
+// QUADRILATERAL MESH 3 WITH DATA, and COMPUTE FILL AREA SET GEOMETRIC NORMAL.
+
+#include "Conversions.h"
+#include "Inquiry.h"
+#include "Insert.h"
+#include "phigs.h"
+
+#include <glm/geometric.hpp>
+
+using namespace phigs;
+using phigs::c::insertElement;
+
+namespace {
+
+struct VertexData {
+    std::vector<glm::dvec3> points;
+    std::vector<Colour> colours;
+    std::vector<glm::dvec3> normals;
+};
+
+glm::dvec3 point(const Ppoint3& p) {
+    return {p.x, p.y, p.z};
+}
+glm::dvec3 vec(const Pvec3& v) {
+    return {v.delta_x, v.delta_y, v.delta_z};
+}
+
+void checkFlags(int vflag, int colrType, const char* name) {
+    if (vflag < PVERT_COORD || vflag > PVERT_COORD_COLOUR_NORMAL)
+        throw Error(PE_ENUM_TYPE_INVAL, name, "vertex flag");
+    if (colrType != PINDIRECT && colrType != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+}
+
+Colour colour(const Pcoval& c, int colrType) {
+    if (colrType == PINDIRECT) return Colour::indexed(c.ind);
+    return Colour::fromRgb({c.direct.x, c.direct.y, c.direct.z});
+}
+
+/// `n` vertices of the form `vflag` says.
+VertexData vertices(int vflag, int colrType, std::size_t n, const Pfacet_vdata_arr3& data, const char* name) {
+    VertexData v;
+    if (n) c::require(data.points, name);  // every member of the union is a pointer to the array
+    for (std::size_t i = 0; i < n; ++i) switch (vflag) {
+            case PVERT_COORD:
+                v.points.push_back(point(data.points[i]));
+                break;
+            case PVERT_COORD_COLOUR:
+                v.points.push_back(point(data.ptcolrs[i].point));
+                v.colours.push_back(colour(data.ptcolrs[i].colr, colrType));
+                break;
+            case PVERT_COORD_NORMAL:
+                v.points.push_back(point(data.ptnorms[i].point));
+                v.normals.push_back(vec(data.ptnorms[i].norm));
+                break;
+            default:
+                v.points.push_back(point(data.ptconorms[i].point));
+                v.colours.push_back(colour(data.ptconorms[i].colr, colrType));
+                v.normals.push_back(vec(data.ptconorms[i].norm));
+                break;
+        }
+    return v;
+}
+
+void noFacetData(Pint fflag, const char* name) {
+    if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
+        throw Error(PE_ENUM_TYPE_INVAL, name, "facet flag");
+    if (fflag != PFACET_NONE)
+        throw Error(errors::InvalidElementData, name, "facet data are not stored for this primitive");
+}
+
+}  // namespace
+
+extern "C" {
+
+void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
+                          Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata) {
+    (void)edata;
+    insertElement(Pfn_fill_area_set3_data, [&](const char* n) -> Element {
+        checkFlags(vflag, colr_type, n);
+        if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
+            throw Error(PE_ENUM_TYPE_INVAL, n, "facet flag");
+        if (eflag != PEDGE_NONE && eflag != PEDGE_VISIBILITY) throw Error(PE_ENUM_TYPE_INVAL, n, "edge flag");
+        if (eflag == PEDGE_VISIBILITY)
+            throw Error(errors::InvalidElementData, n, "per-edge visibility is not stored");
+        FillAreaSetWithDataElement e;
+        if (fflag != PFACET_NONE) {
+            c::require(fdata, n);
+            e.hasFacetColour = fflag == PFACET_COLOUR || fflag == PFACET_COLOUR_NORMAL;
+            e.hasFacetNormal = fflag == PFACET_NORMAL || fflag == PFACET_COLOUR_NORMAL;
+            if (fflag == PFACET_COLOUR) e.facetColour = colour(fdata->colr, colr_type);
+            if (fflag == PFACET_NORMAL) e.facetNormal = vec(fdata->norm);
+            if (fflag == PFACET_COLOUR_NORMAL)
+                e.facetColour = colour(fdata->conorm.colr, colr_type),
+                e.facetNormal = vec(fdata->conorm.norm);
+        }
+        const std::size_t areas = c::count(nfa, n);
+        if (areas) c::require(vdata, n);
+        for (std::size_t a = 0; a < areas; ++a) {
+            VertexData v =
+                vertices(vflag, colr_type, c::count(vdata[a].num_vertices, n), vdata[a].vertex_data, n);
+            e.contours.push_back(std::move(v.points));
+            if (vflag == PVERT_COORD_COLOUR || vflag == PVERT_COORD_COLOUR_NORMAL)
+                e.vertexColours.push_back(std::move(v.colours));
+            if (vflag == PVERT_COORD_NORMAL || vflag == PVERT_COORD_COLOUR_NORMAL)
+                e.vertexNormals.push_back(std::move(v.normals));
+        }
+        return e;
+    });
+}
+
+void ptri_strip3_data(Pint fflag, Pint vflag, Pint colr_type, Pint nv, const Pfacet_data_arr3* fdata,
+                      const Pfacet_vdata_arr3* vdata) {
+    (void)fdata;
+    insertElement(Pfn_tri_strip3_data, [&](const char* n) -> Element {
+        checkFlags(vflag, colr_type, n);
+        noFacetData(fflag, n);
+        c::require(vdata, n);
+        VertexData v = vertices(vflag, colr_type, c::count(nv, n), *vdata, n);
+        return TriangleStripElement{std::move(v.points), std::move(v.colours), std::move(v.normals)};
+    });
+}
+
+void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* dim,
+                      const Pfacet_data_arr3* fdata, const Pfacet_vdata_arr3* vdata) {
+    (void)fdata;
+    insertElement(Pfn_quad_mesh3_data, [&](const char* n) -> Element {
+        checkFlags(vflag, colr_type, n);
+        noFacetData(fflag, n);
+        c::require(dim, n);
+        c::require(vdata, n);
+        const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
+        VertexData v = vertices(vflag, colr_type, columns * rows, *vdata, n);
+        return QuadrilateralMeshElement{static_cast<int>(rows), static_cast<int>(columns),
+                                        std::move(v.points), std::move(v.colours), std::move(v.normals)};
+    });
+}
+
+void pcomp_fill_area_set_gnorm(Pint vflag, Pint nfa, const Pfacet_vdata_list3* vdata, Pint* err_ind,
+                               Pvec3* norm) {
+    c::inquire(err_ind, [&](Phigs&) {
+        const char* n = "COMPUTE FILL AREA SET GEOMETRIC NORMAL";
+        checkFlags(vflag, PINDIRECT, n);
+        c::require(norm, n);
+        std::vector<glm::dvec3> all;
+        const std::size_t areas = c::count(nfa, n);
+        if (areas) c::require(vdata, n);
+        for (std::size_t a = 0; a < areas; ++a) {
+            const VertexData v =
+                vertices(vflag, PINDIRECT, c::count(vdata[a].num_vertices, n), vdata[a].vertex_data, n);
+            all.insert(all.end(), v.points.begin(), v.points.end());
+        }
+        for (std::size_t j = 1; j < all.size(); ++j) {
+            if (all[j] == all[0]) continue;
+            for (std::size_t k = j + 1; k < all.size(); ++k) {
+                const glm::dvec3 c = glm::cross(all[j] - all[0], all[k] - all[0]);
+                if (glm::length(c) == 0.0) continue;
+                const glm::dvec3 u = glm::normalize(c);
+                *norm = {static_cast<Pfloat>(u.x), static_cast<Pfloat>(u.y), static_cast<Pfloat>(u.z)};
+                return;
+            }
+            break;
+        }
+        throw Error(errors::InvalidElementData, n, "no three vertices that are not collinear");
+    });
+}
+
+}  // extern "C"

@@ -1,0 +1,282 @@
+// PHIGS PLUS representations: light sources and depth cueing on a workstation, and their
+// inquiries (which answer the set values: representations take effect at once); the predefined
+// representations and the PHIGS PLUS facilities of the workstation types.
+
+#include "Binding.h"
+#include "Conversions.h"
+#include "Inquiry.h"
+#include "phigs.h"
+
+#include <climits>
+
+using phigs::c::Binding;
+
+namespace {
+
+using namespace phigs;
+
+glm::vec3 rgb(const Workstation& ws, const Pgcolr& c, const char* name) {
+    if (c.type == PINDIRECT) {
+        if (c.val.ind < 0)
+            throw Error(errors::ColourIndexBelowZero, name, "colour index " + std::to_string(c.val.ind));
+        return glm::vec3(ws.tables().colours.get(c.val.ind));
+    }
+    if (c.type != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+    return {c.val.direct.x, c.val.direct.y, c.val.direct.z};
+}
+
+Pgcolr gcolr(const glm::vec3& c) {
+    Pgcolr g{};
+    g.type = PMODEL_RGB;
+    g.val.direct = {c.x, c.y, c.z};
+    return g;
+}
+
+Light light(const Workstation& ws, const Plight_src_bundle& b, const char* name) {
+    Light l;
+    if (b.type < PLIGHT_AMBIENT || b.type > PLIGHT_SPOT)
+        throw Error(PE_ENUM_TYPE_INVAL, name, "light source type");
+    l.type = static_cast<LightType>(b.type);
+    auto vec = [](const Pvec3& v) { return glm::dvec3(v.delta_x, v.delta_y, v.delta_z); };
+    auto point = [](const Ppoint3& p) { return glm::dvec3(p.x, p.y, p.z); };
+    switch (b.type) {
+        case PLIGHT_AMBIENT:
+            l.colour = rgb(ws, b.rec.ambient.colr, name);
+            break;
+        case PLIGHT_DIRECTIONAL:
+            l.colour = rgb(ws, b.rec.directional.colr, name);
+            l.direction = vec(b.rec.directional.dir);
+            break;
+        case PLIGHT_POSITIONAL:
+            l.colour = rgb(ws, b.rec.positional.colr, name);
+            l.position = point(b.rec.positional.pos);
+            l.attenuation = {b.rec.positional.coef[0], b.rec.positional.coef[1]};
+            break;
+        default:
+            l.colour = rgb(ws, b.rec.spot.colr, name);
+            l.position = point(b.rec.spot.pos);
+            l.direction = vec(b.rec.spot.dir);
+            l.concentration = b.rec.spot.exp;
+            l.attenuation = {b.rec.spot.coef[0], b.rec.spot.coef[1]};
+            l.spreadAngle = b.rec.spot.angle;
+            break;
+    }
+    return l;
+}
+
+Plight_src_bundle bundle(const Light& l) {
+    Plight_src_bundle b{};
+    b.type = static_cast<Pint>(l.type);
+    auto vec = [](const glm::dvec3& v) {
+        return Pvec3{static_cast<Pfloat>(v.x), static_cast<Pfloat>(v.y), static_cast<Pfloat>(v.z)};
+    };
+    auto point = [](const glm::dvec3& p) {
+        return Ppoint3{static_cast<Pfloat>(p.x), static_cast<Pfloat>(p.y), static_cast<Pfloat>(p.z)};
+    };
+    switch (l.type) {
+        case LightType::Ambient:
+            b.rec.ambient.colr = gcolr(l.colour);
+            break;
+        case LightType::Directional:
+            b.rec.directional = {gcolr(l.colour), vec(l.direction)};
+            break;
+        case LightType::Positional:
+            b.rec.positional = {gcolr(l.colour), point(l.position), {l.attenuation.x, l.attenuation.y}};
+            break;
+        case LightType::Spot:
+            b.rec.spot = {gcolr(l.colour),
+                          point(l.position),
+                          vec(l.direction),
+                          l.concentration,
+                          {l.attenuation.x, l.attenuation.y},
+                          l.spreadAngle};
+            break;
+    }
+    return b;
+}
+
+Workstation& inquired(Phigs& p, Pint id) {
+    if (!p.anyWorkstationOpen()) throw Error(errors::NoWorkstationOpen, "inquiry");
+    Workstation* ws = p.findWorkstation(id);
+    if (!ws) throw Error(errors::WorkstationNotOpen, "inquiry", "workstation " + std::to_string(id));
+    return *ws;
+}
+
+void checkInquiryType(int type) {
+    if (type != PINQ_SET && type != PINQ_REALIZED) throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "inquiry type");
+}
+
+/// The description of a PWST_* type (52 for any other).
+WorkstationDescription description(Pint type) {
+    if (type < PWST_OFFSCREEN || type > PWST_EPS ||
+        !isWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN)))
+        throw Error(errors::BadWorkstationType, "inquiry", "workstation type " + std::to_string(type));
+    return describeWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN));
+}
+
+constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation
+
+template <class Map>
+std::vector<int> keys(const Map& map) {
+    std::vector<int> out;
+    for (const auto& [index, value] : map) out.push_back(index);
+    return out;
+}
+
+}  // namespace
+
+extern "C" {
+
+void pset_light_src_rep(Pint ws_id, Pint index, const Plight_src_bundle* rep) {
+    Binding::instance().call(Pfn_set_light_src_rep, [&](Phigs& p) {
+        Workstation& ws = p.workstation(ws_id);
+        c::require(rep, "SET LIGHT SOURCE REPRESENTATION");
+        ws.setLightSourceRepresentation(index, light(ws, *rep, "SET LIGHT SOURCE REPRESENTATION"));
+    });
+}
+
+void pinq_light_src_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Plight_src_bundle* rep) {
+    const int t = c::raw(type);
+    c::inquire(err, [&](Phigs& p) {
+        const Workstation& ws = inquired(p, ws_id);
+        checkInquiryType(t);
+        if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const auto found = ws.tables().lights.find(index);
+        if (found == ws.tables().lights.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
+        c::require(rep, "inquiry");
+        *rep = bundle(found->second);
+    });
+}
+
+void pinq_list_light_src_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    c::inquire(err, [&](Phigs& p) {
+        c::answerList(keys(inquired(p, ws_id).tables().lights), appl, start, inds, total);
+    });
+}
+
+void pset_dcue_rep(Pint ws_id, Pint index, const Pdcue_bundle* rep) {
+    Binding::instance().call(Pfn_set_dcue_rep, [&](Phigs& p) {
+        Workstation& ws = p.workstation(ws_id);
+        const char* name = "SET DEPTH CUE REPRESENTATION";
+        c::require(rep, name);
+        const int mode = c::raw(rep->mode);
+        if (mode != PSUPPRESSED && mode != PALLOWED) throw Error(PE_ENUM_TYPE_INVAL, name, "depth cue mode");
+        DepthCue cue;
+        cue.enabled = mode == PALLOWED;
+        cue.frontPlane = rep->ref_planes[0], cue.backPlane = rep->ref_planes[1];
+        cue.frontScale = rep->scaling[0], cue.backScale = rep->scaling[1];
+        cue.colour = rgb(ws, rep->colr, name);
+        ws.setDepthCueRepresentation(index, cue);
+    });
+}
+
+void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bundle* rep) {
+    const int t = c::raw(type);
+    c::inquire(err, [&](Phigs& p) {
+        const Workstation& ws = inquired(p, ws_id);
+        checkInquiryType(t);
+        if (index < 0) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const auto found = ws.tables().depthCues.find(index);
+        if (found == ws.tables().depthCues.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
+        c::require(rep, "inquiry");
+        const DepthCue& d = found->second;
+        rep->mode = d.enabled ? PALLOWED : PSUPPRESSED;
+        rep->ref_planes[0] = static_cast<Pfloat>(d.frontPlane),
+        rep->ref_planes[1] = static_cast<Pfloat>(d.backPlane);
+        rep->scaling[0] = d.frontScale, rep->scaling[1] = d.backScale;
+        rep->colr = gcolr(d.colour);
+    });
+}
+
+void pinq_list_dcue_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    c::inquire(err, [&](Phigs& p) {
+        c::answerList(keys(inquired(p, ws_id).tables().depthCues), appl, start, inds, total);
+    });
+}
+
+// Every type starts with the same predefined tables: light 1 (white ambient), depth cue 0
+// (suppressed).
+void pinq_pred_light_src_rep(Pint ws_type, Pint index, Pint* err, Plight_src_bundle* rep) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const WorkstationTables initial;
+        const auto found = initial.lights.find(index);
+        if (found == initial.lights.end()) throw Error(kNotPredefined, "inquiry");
+        c::require(rep, "inquiry");
+        *rep = bundle(found->second);
+    });
+}
+
+void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        if (index < 0) throw Error(errors::BundleIndexBelowOne, "inquiry");
+        const WorkstationTables initial;
+        const auto found = initial.depthCues.find(index);
+        if (found == initial.depthCues.end()) throw Error(kNotPredefined, "inquiry");
+        c::require(rep, "inquiry");
+        const DepthCue& d = found->second;
+        rep->mode = d.enabled ? PALLOWED : PSUPPRESSED;
+        rep->ref_planes[0] = static_cast<Pfloat>(d.frontPlane),
+        rep->ref_planes[1] = static_cast<Pfloat>(d.backPlane);
+        rep->scaling[0] = d.frontScale, rep->scaling[1] = d.backScale;
+        rep->colr = gcolr(d.colour);
+    });
+}
+
+void pinq_light_src_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Plight_src_facs* facs, Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        const WorkstationDescription d = description(ws_type);
+        c::require(facs, "inquiry");
+        c::answerList({PLIGHT_AMBIENT, PLIGHT_DIRECTIONAL, PLIGHT_POSITIONAL, PLIGHT_SPOT}, appl, start,
+                      &facs->types, total);
+        facs->max = d.lightTableSize;
+        facs->num_pred_inds = static_cast<Pint>(WorkstationTables{}.lights.size());
+    });
+}
+
+void pinq_dcue_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::require(num_pred_inds, "inquiry");
+        *num_pred_inds = static_cast<Pint>(WorkstationTables{}.depthCues.size());
+    });
+}
+
+void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* models,
+                                    Pint* total) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::answerList({PMODEL_RGB}, appl, start, models, total);
+    });
+}
+
+// The PHIGS PLUS binding puts the total before the list here.
+void pinq_direct_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint* total,
+                                 Pint_list* models) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::answerList({PMODEL_RGB}, appl, start, models, total);
+    });
+}
+
+void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
+                         Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err, Pcurvsurf_facs* facs,
+                         Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len) {
+    c::inquire(err, [&](Phigs&) {
+        description(ws_type);
+        c::require(facs, "inquiry");
+        c::answerList({PCURV_WS_DEP, PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, PCURV_CHORDAL_DEVIATION_WC},
+                      cat_len, cat_st, &facs->cat_types, tot_cat_len);
+        c::answerList({PSURF_WS_DEP, PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, PSURF_CHORDAL_DEVIATION_WC},
+                      sat_len, sat_st, &facs->sat_types, tot_sat_len);
+        c::answerList({PCURV_WS_DEP}, tcat_len, tcat_st, &facs->tcat_types, tot_tcat_len);
+        c::answerList({PSC_NONE, PSC_WS_DEP, PSC_ISOPARAMETRIC_CURVES}, psc_len, psc_st, &facs->psc_types,
+                      tot_psc_len);
+        facs->max_bsp_order = INT_MAX;  // the geometry kernel sets no limit
+        facs->max_tc_order = INT_MAX;
+    });
+}
+
+}  // extern "C"
