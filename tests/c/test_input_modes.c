@@ -32,8 +32,41 @@ static void build_picture(void) {
     pclose_struct();
     EXPECT_NO_ERROR(popen_ws(WS, NULL, PWST_OFFSCREEN));
     EXPECT_NO_ERROR(ppost_struct(WS, 1, 0.5f));
+}
+
+/* ISO 9592: a pick device's filter starts with empty inclusion and exclusion sets, so nothing is
+ * pickable until SET PICK FILTER includes a name; the exclusion set wins over the inclusion set. */
+static void pick_filter_starts_empty(void) {
+    Pint one = 1, err = -1;
+    Pop_mode mode;
+    Pecho_switch echo;
+    Pfilter* filter_back = NULL;
+    Pin_status status = PIN_STATUS_NONE;
+    Ppick_path* init_path = NULL;
+    Pint pet = 0;
+    Plimit area;
+    Ppick_data* data = NULL;
+    Ppath_order order;
+    Pstore store = NULL;
+    EXPECT_NO_ERROR(pcreate_store(&err, &store));
+    pinq_pick_st(WS, 1, PINQ_SET, store, &err, &mode, &echo, &filter_back, &status, &init_path, &pet, &area,
+                 &data, &order);
+    CHECK(err == 0 && filter_back->incl_set.num_ints == 0 && filter_back->excl_set.num_ints == 0);
+    pdel_store(store);
+
+    attach("pick 384 384\npick 384 384\npick 384 384\n");
+    Ppick_path_elem items[2];
+    Ppick_path path = {0, items};
+    EXPECT_NO_ERROR(preq_pick(WS, 1, 2, &status, &path));
+    CHECK(status == PIN_STATUS_NO_IN && path.depth == 0); /* named, under the cursor, filtered out */
+    Pfilter both = {{1, &one}, {1, &one}};
+    EXPECT_NO_ERROR(pset_pick_filter(WS, 1, &both));
+    EXPECT_NO_ERROR(preq_pick(WS, 1, 2, &status, &path));
+    CHECK(status == PIN_STATUS_NO_IN && path.depth == 0);
     Pfilter filter = {{1, &one}, {0, NULL}};
     EXPECT_NO_ERROR(pset_pick_filter(WS, 1, &filter));
+    EXPECT_NO_ERROR(preq_pick(WS, 1, 2, &status, &path));
+    CHECK(status == PIN_STATUS_OK && path.depth == 1 && items[0].pick_id == 7);
 }
 
 static void request_each_class(void) {
@@ -225,6 +258,7 @@ int main(int argc, char** argv) {
     snprintf(errors, sizeof errors, "%s/input_modes_errors.txt", dir);
     open_with_handler(errors);
     build_picture();
+    pick_filter_starts_empty();
     request_each_class();
     sample_each_class();
     events();

@@ -36,6 +36,17 @@ const T& predefined(const std::vector<T>& entries, Pint index, int first, int be
     return entries[static_cast<std::size_t>(index - first)];
 }
 
+/// Answers the predefined bundle `index` (from 1) of `ws_type`'s table `table` into `rep`.
+template <class T, class Bundle>
+void answerPredefinedBundle(Pint ws_type, std::vector<T> PredefinedRepresentations::*table, Pint index,
+                            Pint* err, Bundle* rep) {
+    inquire(err, [&](Phigs&) {
+        const T& b = predefined(predefinedRepresentations(described(ws_type).type).*table, index, 1,
+                                errors::BundleIndexBelowOne);
+        if (rep) *rep = c::cBundle(b);
+    });
+}
+
 Pint count(std::size_t n) {
     return static_cast<Pint>(n);
 }
@@ -240,43 +251,23 @@ void pinq_model_clip_facs(Pint length, Pint start, Pint* err, Pint* num_planes, 
 }
 
 void pinq_pred_line_rep(Pint ws_type, Pint index, Pint* err, Pline_bundle* rep) {
-    inquire(err, [&](Phigs&) {
-        const auto& b = predefined(predefinedRepresentations(described(ws_type).type).polylines, index, 1,
-                                   errors::BundleIndexBelowOne);
-        if (rep) *rep = c::cBundle(b);
-    });
+    answerPredefinedBundle(ws_type, &PredefinedRepresentations::polylines, index, err, rep);
 }
 
 void pinq_pred_marker_rep(Pint ws_type, Pint index, Pint* err, Pmarker_bundle* rep) {
-    inquire(err, [&](Phigs&) {
-        const auto& b = predefined(predefinedRepresentations(described(ws_type).type).polymarkers, index, 1,
-                                   errors::BundleIndexBelowOne);
-        if (rep) *rep = c::cBundle(b);
-    });
+    answerPredefinedBundle(ws_type, &PredefinedRepresentations::polymarkers, index, err, rep);
 }
 
 void pinq_pred_text_rep(Pint ws_type, Pint index, Pint* err, Ptext_bundle* rep) {
-    inquire(err, [&](Phigs&) {
-        const auto& b = predefined(predefinedRepresentations(described(ws_type).type).texts, index, 1,
-                                   errors::BundleIndexBelowOne);
-        if (rep) *rep = c::cBundle(b);
-    });
+    answerPredefinedBundle(ws_type, &PredefinedRepresentations::texts, index, err, rep);
 }
 
 void pinq_pred_int_rep(Pint ws_type, Pint index, Pint* err, Pint_bundle* rep) {
-    inquire(err, [&](Phigs&) {
-        const auto& b = predefined(predefinedRepresentations(described(ws_type).type).interiors, index, 1,
-                                   errors::BundleIndexBelowOne);
-        if (rep) *rep = c::cBundle(b);
-    });
+    answerPredefinedBundle(ws_type, &PredefinedRepresentations::interiors, index, err, rep);
 }
 
 void pinq_pred_edge_rep(Pint ws_type, Pint index, Pint* err, Pedge_bundle* rep) {
-    inquire(err, [&](Phigs&) {
-        const auto& b = predefined(predefinedRepresentations(described(ws_type).type).edges, index, 1,
-                                   errors::BundleIndexBelowOne);
-        if (rep) *rep = c::cBundle(b);
-    });
+    answerPredefinedBundle(ws_type, &PredefinedRepresentations::edges, index, err, rep);
 }
 
 void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_rep** rep) {

@@ -30,7 +30,7 @@ struct Phigs_store {
     Pfilter filter{};
     Ppat_rep pattern{};
     phigs::c::InputAnswer input;  ///< the input inquiries' answers
-    std::vector<Pfloat> floats;  // PHIGS PLUS: knots
+    std::vector<Pfloat> floats;   // PHIGS PLUS: knots
     std::vector<Ppoint4> points4;
     std::vector<Ptrimcurve> trimCurves;
     std::vector<Ptrimcurve_list> trimLoops;
