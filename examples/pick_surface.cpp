@@ -15,6 +15,29 @@
 #include <cstdlib>
 #include <exception>
 
+namespace {
+
+/// Structure 1 executes structure 2 (pick id 6); structure 2 holds the patch (pick id 7).
+void buildStructures(phigs::StructureStore& store, const geom::Surface& patch) {
+    // The patch inherits name 1, which main() puts in pick device 1's filter: a pick filter
+    // starts empty (ISO 9592), and then nothing is pickable.
+    store.openStructure(1);
+    store.insert(phigs::viewIndex(1));         // element 1
+    store.insert(phigs::pickId(6));            // element 2
+    store.insert(phigs::addNamesToSet({1}));   // element 3
+    store.insert(phigs::executeStructure(2));  // element 4
+    store.closeStructure();
+    store.openStructure(2);
+    store.insert(phigs::IndexAttribute{phigs::ElementType::InteriorStyle, 1});  // 1: solid
+    store.insert(
+        phigs::ColourAttribute{phigs::ElementType::InteriorColour, phigs::Colour::fromRgb({0, 1, 0})});
+    store.insert(phigs::pickId(7));                       // 3
+    store.insert(phigs::NurbsSurfaceElement{patch, {}});  // 4
+    store.closeStructure();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     const glm::dvec2 target(argc > 2 ? std::atof(argv[1]) : 0.3, argc > 2 ? std::atof(argv[2]) : 0.65);
     try {
@@ -29,23 +52,7 @@ int main(int argc, char** argv) {
             for (int j = 0; j < 4; ++j) points.push_back({0.8 * i / 3.0, 0.6 * j / 3.0, bumps[i][j]});
         const geom::Surface patch(3, 3, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, 4, 4, points);
 
-        // Structure 1 executes structure 2 (pick id 6); structure 2 holds the patch (pick id 7).
-        // The patch inherits name 1, which pick device 1's filter includes below: a pick filter
-        // starts empty (ISO 9592), and then nothing is pickable.
-        phigs::StructureStore& store = phigs.store();
-        store.openStructure(1);
-        store.insert(phigs::viewIndex(1));         // element 1
-        store.insert(phigs::pickId(6));            // element 2
-        store.insert(phigs::addNamesToSet({1}));   // element 3
-        store.insert(phigs::executeStructure(2));  // element 4
-        store.closeStructure();
-        store.openStructure(2);
-        store.insert(phigs::IndexAttribute{phigs::ElementType::InteriorStyle, 1});  // 1: solid
-        store.insert(
-            phigs::ColourAttribute{phigs::ElementType::InteriorColour, phigs::Colour::fromRgb({0, 1, 0})});
-        store.insert(phigs::pickId(7));                       // 3
-        store.insert(phigs::NurbsSurfaceElement{patch, {}});  // 4
-        store.closeStructure();
+        buildStructures(phigs.store(), patch);
 
         // View 1 maps world [-1, 1]^2 onto NPC [0.1, 0.9]^2, looking down -z.
         phigs::Workstation& ws = phigs.openWorkstation(1, phigs::WorkstationType::OffscreenImage);
