@@ -79,11 +79,11 @@ const InputDevice& inputDevice(const Workstation& ws, InputClass inputClass, Pin
 WorkstationDescription inputType(Pint type, InputClass inputClass, Pint number);
 
 /// Pin_class and InputClass (PIN_NONE has none: 2202).
-InputClass coreClass(Pin_class inputClass, const char* function);
+InputClass coreClass(const Pin_class& inputClass, const char* function);
 Pin_class cClass(InputClass inputClass);
-OperatingMode coreMode(Pop_mode mode, const char* function);
+OperatingMode coreMode(const Pop_mode& mode, const char* function);
 Pop_mode cMode(OperatingMode mode);
-EchoSwitch coreEcho(Pecho_switch echo, const char* function);
+EchoSwitch coreEcho(const Pecho_switch& echo, const char* function);
 
 /// An echo volume in device coordinates (y up) as the core's (pixels from the top left),
 /// checked: 254 when min >= max, 255 outside the display space.

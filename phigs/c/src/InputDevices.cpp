@@ -113,7 +113,7 @@ void initValuator(int function, Pint ws, Pint n, Pfloat value, Pint pet, const P
                });
 }
 
-InputStatus initialStatus(Pin_status status, int function) {
+InputStatus initialStatus(const Pin_status& status, int function) {
     const int v = c::raw(status);
     if (v < PIN_STATUS_NONE || v > PIN_STATUS_NO_IN)
         throw Error(PE_ENUM_TYPE_INVAL, c::inputFunctionName(function), "input status");
@@ -142,7 +142,7 @@ void choiceAlternatives(int function, int pet, const Pchoice_data3& data, Device
     }
 }
 
-void initChoice(int function, Pint ws, Pint n, Pin_status status, Pint choice, Pint pet,
+void initChoice(int function, Pint ws, Pint n, const Pin_status& status, Pint choice, Pint pet,
                 const Plimit3* volume, const Pchoice_data3* data) {
     initialise(function, ws, InputClass::Choice, n, volume, pet, nullptr,
                [&](int type, bool defaults, DeviceInitialisation& s, c::DeviceRecord& r) {
@@ -154,8 +154,8 @@ void initChoice(int function, Pint ws, Pint n, Pin_status status, Pint choice, P
                });
 }
 
-void initPick(int function, Pint ws, Pint n, Pin_status status, const Ppick_path* path, Pint pet,
-              const Plimit3* volume, Ppath_order order) {
+void initPick(int function, Pint ws, Pint n, const Pin_status& status, const Ppick_path* path, Pint pet,
+              const Plimit3* volume, const Ppath_order& order) {
     initialise(function, ws, InputClass::Pick, n, volume, pet, nullptr,
                [&](int, bool, DeviceInitialisation& s, c::DeviceRecord&) {
                    const char* name = c::inputFunctionName(function);
@@ -194,7 +194,8 @@ void initString(int function, Pint ws, Pint n, const char* text, Pint pet, const
                });
 }
 
-void setMode(int function, Pint wsId, InputClass inputClass, Pint number, Pop_mode mode, Pecho_switch echo) {
+void setMode(int function, Pint wsId, InputClass inputClass, Pint number, const Pop_mode& mode,
+             const Pecho_switch& echo) {
     Binding::instance().call(function, [&](Phigs& p) {
         const char* name = c::inputFunctionName(function);
         Workstation& ws = c::inputWorkstation(p, wsId, inputClass);

@@ -120,6 +120,22 @@ void defaultData(Pint* err, Pint type, InputClass inputClass, Pint number, Pstor
     });
 }
 
+/// INQUIRE PICK DEVICE STATE 3 with the inquiry type by address: pinq_pick_st forwards it
+/// without an enum-typed load of a value the application may have passed out of range.
+void pickState(Pint ws_id, Pint pick_num, const Pinq_type* type, Pstore store, Pint* err_ind,
+               Pop_mode* op_mode, Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
+               Ppick_path** init_pick, Pint* prompt_echo, Plimit3* echo_vol, Ppick_data3** pick_data,
+               Ppath_order* order) {
+    deviceState(err_ind, ws_id, InputClass::Pick, pick_num, type, store, op_mode, echo_switch, prompt_echo,
+                [&](const DeviceState& s) {
+                    pickAnswer(s, pick_filter, init_status, init_pick);
+                    put(echo_vol, echoVolume(s));
+                    put(pick_data, &s.answer.pick);
+                    put(order, s.device.setup.pathOrder == PathOrder::TopFirst ? PORDER_TOP_FIRST
+                                                                               : PORDER_BOTTOM_FIRST);
+                });
+}
+
 }  // namespace
 
 extern "C" {
@@ -233,14 +249,8 @@ void pinq_pick_st3(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint
                    Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
                    Ppick_path** init_pick, Pint* prompt_echo, Plimit3* echo_vol, Ppick_data3** pick_data,
                    Ppath_order* order) {
-    deviceState(err_ind, ws_id, InputClass::Pick, pick_num, &type, store, op_mode, echo_switch, prompt_echo,
-                [&](const DeviceState& s) {
-                    pickAnswer(s, pick_filter, init_status, init_pick);
-                    put(echo_vol, echoVolume(s));
-                    put(pick_data, &s.answer.pick);
-                    put(order, s.device.setup.pathOrder == PathOrder::TopFirst ? PORDER_TOP_FIRST
-                                                                               : PORDER_BOTTOM_FIRST);
-                });
+    pickState(ws_id, pick_num, &type, store, err_ind, op_mode, echo_switch, pick_filter, init_status,
+              init_pick, prompt_echo, echo_vol, pick_data, order);
 }
 
 void pinq_pick_st(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
@@ -248,8 +258,8 @@ void pinq_pick_st(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint*
                   Ppick_path** init_pick, Pint* prompt_echo, Plimit* echo_area, Ppick_data** pick_data,
                   Ppath_order* order) {
     Plimit3 volume{};
-    pinq_pick_st3(ws_id, pick_num, type, store, err_ind, op_mode, echo_switch, pick_filter, init_status,
-                  init_pick, prompt_echo, &volume, pick_data, order);
+    pickState(ws_id, pick_num, &type, store, err_ind, op_mode, echo_switch, pick_filter, init_status,
+              init_pick, prompt_echo, &volume, pick_data, order);
     if (err_ind && *err_ind == 0) put(echo_area, c::lower(volume));
 }
 

@@ -183,7 +183,7 @@ WorkstationDescription inputType(Pint type, InputClass inputClass, Pint number) 
     return d;
 }
 
-InputClass coreClass(Pin_class inputClass, const char* function) {
+InputClass coreClass(const Pin_class& inputClass, const char* function) {
     const int v = raw(inputClass);
     if (v < PIN_LOC || v > PIN_STRING) throw Error(PE_ENUM_TYPE_INVAL, function, "input class");
     return static_cast<InputClass>(v - PIN_LOC);
@@ -193,7 +193,7 @@ Pin_class cClass(InputClass inputClass) {
     return static_cast<Pin_class>(static_cast<int>(inputClass) + PIN_LOC);
 }
 
-OperatingMode coreMode(Pop_mode mode, const char* function) {
+OperatingMode coreMode(const Pop_mode& mode, const char* function) {
     const int v = raw(mode);
     if (v < POP_REQ || v > POP_EVENT) throw Error(PE_ENUM_TYPE_INVAL, function, "operating mode");
     return static_cast<OperatingMode>(v - POP_REQ);
@@ -203,7 +203,7 @@ Pop_mode cMode(OperatingMode mode) {
     return static_cast<Pop_mode>(static_cast<int>(mode) + POP_REQ);
 }
 
-EchoSwitch coreEcho(Pecho_switch echo, const char* function) {
+EchoSwitch coreEcho(const Pecho_switch& echo, const char* function) {
     const int v = raw(echo);
     if (v != PSWITCH_NO_ECHO && v != PSWITCH_ECHO) throw Error(PE_ENUM_TYPE_INVAL, function, "echo switch");
     return v == PSWITCH_ECHO ? EchoSwitch::Echo : EchoSwitch::NoEcho;

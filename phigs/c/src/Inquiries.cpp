@@ -29,7 +29,7 @@ std::vector<Pelem_type> typeList(const Pelem_type_list* list) {
     return out;
 }
 
-bool contains(const std::vector<Pelem_type>& set, Pelem_type t) {
+bool contains(const std::vector<Pelem_type>& set, const Pelem_type& t) {
     for (Pelem_type s : set)
         if (s == PELEM_ALL || s == t) return true;
     return false;

@@ -42,7 +42,7 @@ std::vector<double> floats(const Pfloat_list* list, const char* name) {
     return out;
 }
 
-bool rational(Prational r, const char* name) {
+bool rational(const Prational& r, const char* name) {
     const int v = c::raw(r);
     if (v != PRATIONAL && v != PNON_RATIONAL) throw Error(PE_ENUM_TYPE_INVAL, name, "rationality");
     return v == PRATIONAL;

@@ -53,8 +53,8 @@ void answerPath(const StructurePath& path, Pint appl, Pint start, Pelem_ref_list
     out->num_elem_refs = n;
 }
 
-void search(const glm::dvec3& point, Pfloat dist, const Pelem_ref_list* sp, Pclip_ind mclip, Pint ceiling,
-            const Pfilter_list* norm, const Pfilter_list* inv, Pint appl, Pint start, Pint* err,
+void search(const glm::dvec3& point, Pfloat dist, const Pelem_ref_list* sp, const Pclip_ind& mclip,
+            Pint ceiling, const Pfilter_list* norm, const Pfilter_list* inv, Pint appl, Pint start, Pint* err,
             Pelem_ref_list* found, Pint* total) {
     const int clip = c::raw(mclip);
     c::inquire(err, [&](Phigs& p) {
