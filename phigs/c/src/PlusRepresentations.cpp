@@ -95,6 +95,15 @@ Plight_src_bundle bundle(const Light& l) {
     return b;
 }
 
+Pdcue_bundle bundle(const DepthCue& d) {
+    Pdcue_bundle b{};
+    b.mode = d.enabled ? PALLOWED : PSUPPRESSED;
+    b.ref_planes[0] = static_cast<Pfloat>(d.frontPlane), b.ref_planes[1] = static_cast<Pfloat>(d.backPlane);
+    b.scaling[0] = d.frontScale, b.scaling[1] = d.backScale;
+    b.colr = gcolr(d.colour);
+    return b;
+}
+
 Workstation& inquired(Phigs& p, Pint id) {
     if (!p.anyWorkstationOpen()) throw Error(errors::NoWorkstationOpen, "inquiry");
     Workstation* ws = p.findWorkstation(id);
@@ -179,12 +188,7 @@ void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bund
         const auto found = ws.tables().depthCues.find(index);
         if (found == ws.tables().depthCues.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
         c::require(rep, "inquiry");
-        const DepthCue& d = found->second;
-        rep->mode = d.enabled ? PALLOWED : PSUPPRESSED;
-        rep->ref_planes[0] = static_cast<Pfloat>(d.frontPlane),
-        rep->ref_planes[1] = static_cast<Pfloat>(d.backPlane);
-        rep->scaling[0] = d.frontScale, rep->scaling[1] = d.backScale;
-        rep->colr = gcolr(d.colour);
+        *rep = bundle(found->second);
     });
 }
 
@@ -216,12 +220,7 @@ void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) 
         const auto found = initial.depthCues.find(index);
         if (found == initial.depthCues.end()) throw Error(kNotPredefined, "inquiry");
         c::require(rep, "inquiry");
-        const DepthCue& d = found->second;
-        rep->mode = d.enabled ? PALLOWED : PSUPPRESSED;
-        rep->ref_planes[0] = static_cast<Pfloat>(d.frontPlane),
-        rep->ref_planes[1] = static_cast<Pfloat>(d.backPlane);
-        rep->scaling[0] = d.frontScale, rep->scaling[1] = d.backScale;
-        rep->colr = gcolr(d.colour);
+        *rep = bundle(found->second);
     });
 }
 
