@@ -1,7 +1,8 @@
 /* The workstation description tables of every workstation type, found by inquiry without
  * opening one: class, display space, table lengths, dynamics, the facilities of each
  * representation, predefined representations, and their errors (2, 52, 100, 102, 112, 113,
- * 114, 2200); a workstation opened starts with the predefined representations. Opens only the
+ * 114, 2200); a workstation opened starts with the predefined representations; the specific
+ * type of an open workstation. Opens only the
  * SVG hardcopy type (no GPU). argv[1]: a directory for the files. */
 #include "check.h"
 
@@ -160,6 +161,59 @@ static void unknown_type(void) {
     CHECK(err == 52);
 }
 
+/* The specific type of an open workstation: its own number, answered by pinq_ws_conn_type,
+ * describes it as its generic type does here (hardcopy keeps its size), opens its generic type,
+ * and names nothing once the workstation is closed; a closed one reopened gets a new one. */
+static void specific_types(void) {
+    Pint err = -1, s1 = 0, s2 = 0, s3 = 0, again = 0, n = -1;
+    Pws_class cls;
+    Pws_cat cat;
+    Pdisp_space_size3 generic, specific;
+    Pline_bundle pred, pred_specific;
+    const char* conn = NULL;
+    Pstore store = NULL;
+    char second[600];
+    snprintf(second, sizeof second, "%s.second.svg", svg_file);
+    pcreate_store(&err, &store);
+    EXPECT_NO_ERROR(popen_ws(1, svg_file, PWST_SVG));
+    EXPECT_NO_ERROR(popen_ws(2, second, PWST_SVG));
+    pinq_ws_conn_type(1, store, &err, &conn, &s1);
+    CHECK(err == 0 && s1 >= PWST_SPECIFIC_BASE);
+    pinq_ws_conn_type(2, store, &err, &conn, &s2);
+    CHECK(err == 0 && s2 >= PWST_SPECIFIC_BASE && s2 != s1);
+    pinq_ws_conn_type(1, store, &err, &conn, &again);
+    CHECK(err == 0 && again == s1);
+    pinq_ws_class(s1, &err, &cls);
+    CHECK(err == 0 && cls == PCLASS_VEC);
+    pinq_ws_cat(s2, &err, &cat);
+    CHECK(err == 0 && cat == PCAT_OUT);
+    pinq_disp_space_size3(PWST_SVG, &err, &generic);
+    pinq_disp_space_size3(s1, &err, &specific);
+    CHECK(err == 0 && near(specific.size_dc.size_x, generic.size_dc.size_x) &&
+          near(specific.size_dc.size_y, generic.size_dc.size_y));
+    pinq_pred_line_rep(s1, 2, &err, &pred_specific);
+    pinq_pred_line_rep(PWST_SVG, 2, &err, &pred);
+    CHECK(err == 0 && pred.type == pred_specific.type && pred.colr_ind == pred_specific.colr_ind);
+    EXPECT_NO_ERROR(popen_ws(3, second, s2)); /* the generic type of s2 */
+    pinq_ws_conn_type(3, store, &err, &conn, &s3);
+    CHECK(err == 0 && s3 != s1 && s3 != s2);
+    EXPECT_NO_ERROR(pclose_ws(3));
+    EXPECT_NO_ERROR(pclose_ws(1));
+    pinq_disp_space_size3(s1, &err, &specific);
+    CHECK(err == 52);
+    pinq_num_disp_pris(s3, &err, &n);
+    CHECK(err == 52);
+    EXPECT_ERROR(popen_ws(4, second, s1), 52, Pfn_open_ws);
+    EXPECT_NO_ERROR(popen_ws(1, svg_file, PWST_SVG));
+    pinq_ws_conn_type(1, store, &err, &conn, &again);
+    CHECK(err == 0 && again != s1 && again != s2 && again != s3);
+    pinq_ws_class(PWST_SPECIFIC_BASE + 100000, &err, &cls);
+    CHECK(err == 52);
+    EXPECT_NO_ERROR(pclose_ws(1));
+    EXPECT_NO_ERROR(pclose_ws(2));
+    pdel_store(store);
+}
+
 /* A workstation starts with its type's predefined representations. */
 static void opened_starts_predefined(void) {
     Pint err = -1, total = 0, ints[8], planes = 0;
@@ -198,6 +252,7 @@ int main(int argc, char** argv) {
     unknown_type();
     CHECK(file_line_count(error_file) == lines); /* inquiries answer, never log */
     opened_starts_predefined();
+    specific_types();
     pclose_phigs();
     return finish("test_ws_description");
 }

@@ -28,9 +28,20 @@ int main(int argc, char** argv) {
     EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
     EXPECT_NO_ERROR(popen_ws(2, display, PWST_WINDOW)); /* the same display by name */
     pinq_ws_conn_type(2, store, &err, &conn, &type);
-    CHECK(err == 0 && type == PWST_WINDOW && conn && strcmp(conn, display) == 0);
+    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn && strcmp(conn, display) == 0);
     pinq_ws_conn_type(1, store, &err, &conn, &type);
-    CHECK(err == 0 && type == PWST_WINDOW && conn == NULL);
+    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn == NULL);
+    {
+        /* The window's own size: the type's display size, as it was opened with no other. */
+        Pdisp_space_size3 generic, specific;
+        Pws_cat cat;
+        pinq_disp_space_size3(PWST_WINDOW, &err, &generic);
+        pinq_disp_space_size3(type, &err, &specific);
+        CHECK(err == 0 && specific.size_raster.size_x == generic.size_raster.size_x &&
+              specific.size_raster.size_y == generic.size_raster.size_y);
+        pinq_ws_cat(type, &err, &cat);
+        CHECK(err == 0 && cat == PCAT_OUTIN);
+    }
     EXPECT_NO_ERROR(predraw_all_structs(2, PFLAG_ALWAYS));
     Pint ws = -1, number = -1;
     Pin_class in_class = PIN_LOC;

@@ -718,6 +718,12 @@ typedef struct {
 #define PWST_PDF 4
 #define PWST_SVG 5
 #define PWST_EPS 6
+/* The specific workstation types (the standard's generic and specific pair): every open
+ * workstation has one of its own, PWST_SPECIFIC_BASE or above, answered by pinq_ws_conn_type and
+ * never reused. Every function that takes a workstation type takes it while the workstation is
+ * open and answers from that workstation's description table as it is now (a resized window's
+ * pinq_disp_space_size3); popen_ws opens its generic type. Closed, it is error 52. */
+#define PWST_SPECIFIC_BASE 4096
 
 /* ISO function identifiers (the error handler's func_num). */
 enum {

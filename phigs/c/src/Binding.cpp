@@ -209,6 +209,7 @@ void Binding::close() {
     call(Pfn_close_phigs, [](Phigs& p) { p.close(); });
     if (phigs_ && phigs_->isOpen()) return;
     phigs_.reset();
+    specificTypes_.clear();
     if (stream_) std::fclose(stream_);
     stream_ = nullptr;
 }
@@ -216,8 +217,21 @@ void Binding::close() {
 void Binding::emergencyClose() {
     // EMERGENCY CLOSE PHIGS: whatever is open is closed; archives are always complete on disk.
     phigs_.reset();
+    specificTypes_.clear();
     if (stream_) std::fclose(stream_);
     stream_ = nullptr;
+}
+
+Pint Binding::specificType(Pint id) {
+    auto [entry, added] = specificTypes_.try_emplace(id, nextSpecificType_);
+    if (added) ++nextSpecificType_;
+    return entry->second;
+}
+
+Workstation* Binding::workstationOfSpecificType(Pint type) {
+    for (const auto& [id, specific] : specificTypes_)
+        if (specific == type) return phigs_ ? phigs_->findWorkstation(id) : nullptr;
+    return nullptr;
 }
 
 void Binding::report(int number, int function) {

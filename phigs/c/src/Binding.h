@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <new>
 #include <string>
@@ -58,6 +59,14 @@ public:
     Perr_mode mode() const { return mode_; }
     const char* errorFileName() const { return errorFile_.empty() ? nullptr : errorFile_.c_str(); }
 
+    /// The specific workstation type of open workstation `id`: PWST_SPECIFIC_BASE and up, given
+    /// at OPEN WORKSTATION and never reused while the library is loaded.
+    Pint specificType(Pint id);
+    /// The open workstation a specific type names, or nullptr (closed since, or never given).
+    Workstation* workstationOfSpecificType(Pint type);
+    /// CLOSE WORKSTATION: its specific type names nothing from now on.
+    void forgetSpecificType(Pint id) { specificTypes_.erase(id); }
+
     /// Runs `body` on the open system as function `function`: error 2 while PHIGS is closed; every
     /// error and warning the core raised or logged goes to the handler, in order.
     template <class Body>
@@ -89,6 +98,8 @@ private:
     std::FILE* stream_ = nullptr;
     Handler handler_ = perr_hand;
     Perr_mode mode_ = PERR_ON;
+    std::map<Pint, Pint> specificTypes_;  // workstation identifier -> its specific type
+    Pint nextSpecificType_ = PWST_SPECIFIC_BASE;
 };
 
 /// Throws the binding's bad-argument error when `pointer` is NULL (checked after the state).

@@ -18,7 +18,7 @@ using phigs::c::inquire;
 namespace {
 
 WorkstationDescription described(Pint ws_type) {
-    return describeWorkstationType(c::workstationTypeOf(ws_type, "inquiry"));
+    return c::describedType(ws_type, "inquiry");
 }
 
 std::vector<int> oneTo(int n) {

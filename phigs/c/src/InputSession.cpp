@@ -3,6 +3,7 @@
 
 #include "Conversions.h"
 #include "Input.h"
+#include "WorkstationAccess.h"
 
 #include <algorithm>
 #include <chrono>
@@ -173,10 +174,7 @@ const InputDevice& inputDevice(const Workstation& ws, InputClass inputClass, Pin
 
 WorkstationDescription inputType(Pint type, InputClass inputClass, Pint number) {
     const char* function = "inquiry";
-    if (type < PWST_OFFSCREEN || type > PWST_EPS ||
-        !isWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN)))
-        throw Error(errors::BadWorkstationType, function, "workstation type " + std::to_string(type));
-    WorkstationDescription d = describeWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN));
+    WorkstationDescription d = describedType(type, function);
     if (d.category != WorkstationCategory::OutIn) throw Error(kNotInput, function);
     if (number < 1 || number > d.inputDevices.of(inputClass))
         throw Error(errors::DeviceNotAvailable, function);

@@ -6,6 +6,7 @@
 #include "Binding.h"
 #include "Conversions.h"
 #include "Inquiry.h"
+#include "WorkstationAccess.h"
 #include "phigs.h"
 #include "phigs/render/StrokeFont.h"
 
@@ -67,9 +68,7 @@ void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_sp
     const int path = c::raw(text_path), hor = c::raw(hor_align), vert = c::raw(vert_align);
     c::inquire(err_ind, [&](Phigs&) {
         constexpr const char* kName = "INQUIRE TEXT EXTENT";
-        if (ws_type < PWST_OFFSCREEN || ws_type > PWST_EPS ||
-            !isWorkstationType(static_cast<WorkstationType>(ws_type - PWST_OFFSCREEN)))
-            throw Error(errors::BadWorkstationType, kName, "workstation type " + std::to_string(ws_type));
+        c::workstationTypeOf(ws_type, kName);
         if (path < PPATH_RIGHT || path > PPATH_DOWN || hor < PHOR_NORM || hor > PHOR_RIGHT ||
             vert < PVERT_NORM || vert > PVERT_BOTTOM)
             throw Error(PE_ENUM_TYPE_INVAL, kName, "text path or alignment");

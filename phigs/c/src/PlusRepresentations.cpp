@@ -5,6 +5,7 @@
 #include "Binding.h"
 #include "Conversions.h"
 #include "Inquiry.h"
+#include "WorkstationAccess.h"
 #include "phigs.h"
 
 #include <climits>
@@ -115,12 +116,9 @@ void checkInquiryType(int type) {
     if (type != PINQ_SET && type != PINQ_REALIZED) throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "inquiry type");
 }
 
-/// The description of a PWST_* type (52 for any other).
+/// The description of a generic or specific type (52 for any other).
 WorkstationDescription description(Pint type) {
-    if (type < PWST_OFFSCREEN || type > PWST_EPS ||
-        !isWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN)))
-        throw Error(errors::BadWorkstationType, "inquiry", "workstation type " + std::to_string(type));
-    return describeWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN));
+    return c::describedType(type, "inquiry");
 }
 
 constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation

@@ -4,11 +4,28 @@
 
 namespace phigs::c {
 
+namespace {
+
+Workstation* specificWorkstation(Pint type) {
+    return type >= PWST_SPECIFIC_BASE ? Binding::instance().workstationOfSpecificType(type) : nullptr;
+}
+
+}  // namespace
+
 WorkstationType workstationTypeOf(Pint type, const char* function) {
+    if (Workstation* ws = specificWorkstation(type)) return ws->description().type;
     const WorkstationType core = static_cast<WorkstationType>(type - PWST_OFFSCREEN);
-    if (type < PWST_OFFSCREEN || !isWorkstationType(core))
+    if (type < PWST_OFFSCREEN || type >= PWST_SPECIFIC_BASE || !isWorkstationType(core))
         throw Error(errors::BadWorkstationType, function, "workstation type " + std::to_string(type));
     return core;
+}
+
+WorkstationDescription describedType(Pint type, const char* function) {
+    if (Workstation* ws = specificWorkstation(type)) {
+        ws->followDrawable();
+        return ws->description();
+    }
+    return describeWorkstationType(workstationTypeOf(type, function));
 }
 
 Workstation& inquiredWorkstation(Phigs& p, Pint id) {

@@ -13,8 +13,13 @@
 
 namespace phigs::c {
 
-/// The core type of a PWST_* number: error 52 for another number.
+/// The core type of a generic PWST_* number or of an open workstation's specific type: error 52
+/// for another number.
 WorkstationType workstationTypeOf(Pint type, const char* function);
+
+/// The description table of `type`: a generic type's as built, a specific type's as its open
+/// workstation has it now (a resized window's display size); error 52 for another number.
+WorkstationDescription describedType(Pint type, const char* function);
 
 /// The open workstation an inquiry asks about: errors 3 (none open), 54 (this one not open).
 Workstation& inquiredWorkstation(Phigs& p, Pint id);

@@ -62,8 +62,7 @@ void pinq_disp_upd_st(Pint ws_id, Pint* err, Pdefer_mode* def_mode, Pmod_mode* m
 
 void pinq_def_disp_upd_st(Pint ws_type, Pint* err, Pdefer_mode* def_mode, Pmod_mode* mod_mode) {
     inquire(err, [&](Phigs&) {
-        const WorkstationDescription d =
-            describeWorkstationType(c::workstationTypeOf(ws_type, "INQUIRE DEFAULT DISPLAY UPDATE STATE"));
+        const WorkstationDescription d = c::describedType(ws_type, "INQUIRE DEFAULT DISPLAY UPDATE STATE");
         if (def_mode) *def_mode = static_cast<Pdefer_mode>(d.defaultDeferral);
         if (mod_mode) *mod_mode = static_cast<Pmod_mode>(d.defaultModification);
     });

@@ -6,6 +6,7 @@
 #include "Input.h"
 #include "Inquiry.h"
 #include "StoreBuffer.h"
+#include "WorkstationAccess.h"
 #include "phigs.h"
 
 #include <algorithm>
@@ -17,16 +18,14 @@ namespace {
 
 using namespace phigs;
 
-/// PWST_* are the core's types counted from 1.
-bool isCType(Pint type) {
-    return type >= PWST_OFFSCREEN && type <= PWST_EPS &&
-           isWorkstationType(static_cast<WorkstationType>(type - PWST_OFFSCREEN));
-}
-
-WorkstationType coreType(Pint type, const char* function) {
-    if (!isCType(type))
-        throw Error(errors::BadWorkstationType, function, "workstation type " + std::to_string(type));
-    return static_cast<WorkstationType>(type - PWST_OFFSCREEN);
+/// The type OPEN WORKSTATION opens: a specific type's generic type; a number that is no type
+/// reaches the core as no WorkstationType, which raises and logs error 52.
+WorkstationType openedType(Pint type) {
+    try {
+        return c::workstationTypeOf(type, "OPEN WORKSTATION");
+    } catch (const Error&) {
+        return static_cast<WorkstationType>(-1);
+    }
 }
 
 Pint cType(WorkstationType type) {
@@ -39,20 +38,6 @@ void answerGdpAttributes(const std::vector<int>& available, Pint gdp, Pint* coun
         throw Error(errors::GdpNotAvailable, "inquiry", "GDP " + std::to_string(gdp));
     if (count) *count = 1;
     if (attrs) attrs[0] = PATTR_LINE;
-}
-
-/// The open workstation for an inquiry: errors 3 and 54 raised without logging.
-Workstation& inquired(Phigs& p, Pint id) {
-    if (!p.anyWorkstationOpen()) throw Error(errors::NoWorkstationOpen, "inquiry");
-    Workstation* ws = p.findWorkstation(id);
-    if (!ws) throw Error(errors::WorkstationNotOpen, "inquiry", "workstation " + std::to_string(id));
-    return *ws;
-}
-
-/// Runs a workstation function on workstation `id` (errors 3, 54 first).
-template <class Body>
-void onWorkstation(int function, Pint id, Body&& body) {
-    Binding::instance().call(function, [&](Phigs& p) { body(p.workstation(id)); });
 }
 
 /// Shows the workstation's picture on its target; a target that fails (a file that cannot be
@@ -90,33 +75,35 @@ void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type) {
     Binding::instance().call(Pfn_open_ws, [&](Phigs& p) {
         OutputConnection connection;
         if (conn_id) connection.identifier = conn_id;
-        // A number that is no PWST_* reaches the core as no WorkstationType: error 52 there.
-        const WorkstationType type = isCType(ws_type) ? static_cast<WorkstationType>(ws_type - PWST_OFFSCREEN)
-                                                      : static_cast<WorkstationType>(-1);
-        p.openWorkstation(ws_id, type, connection);
+        p.openWorkstation(ws_id, openedType(ws_type), connection);
+        Binding::instance().specificType(ws_id);
     });
 }
 
 void pclose_ws(Pint ws_id) {
     Binding::instance().call(Pfn_close_ws, [&](Phigs& p) { p.closeWorkstation(ws_id); });
     // Its input script and device records go with it (also when its last picture failed).
-    if (Phigs* p = Binding::instance().system(); p && !p->findWorkstation(ws_id)) c::forgetInput(ws_id);
+    if (Phigs* p = Binding::instance().system(); p && !p->findWorkstation(ws_id)) {
+        c::forgetInput(ws_id);
+        Binding::instance().forgetSpecificType(ws_id);
+    }
 }
 
 void ppost_struct(Pint ws_id, Pint struct_id, Pfloat priority) {
-    onWorkstation(Pfn_post_struct, ws_id, [&](Workstation& ws) { ws.postStructure(struct_id, priority); });
+    c::onOpenWorkstation(Pfn_post_struct, ws_id,
+                         [&](Workstation& ws) { ws.postStructure(struct_id, priority); });
 }
 
 void punpost_struct(Pint ws_id, Pint struct_id) {
-    onWorkstation(Pfn_unpost_struct, ws_id, [&](Workstation& ws) { ws.unpostStructure(struct_id); });
+    c::onOpenWorkstation(Pfn_unpost_struct, ws_id, [&](Workstation& ws) { ws.unpostStructure(struct_id); });
 }
 
 void punpost_all_structs(Pint ws_id) {
-    onWorkstation(Pfn_unpost_all_structs, ws_id, [&](Workstation& ws) { ws.unpostAllStructures(); });
+    c::onOpenWorkstation(Pfn_unpost_all_structs, ws_id, [&](Workstation& ws) { ws.unpostAllStructures(); });
 }
 
 void predraw_all_structs(Pint ws_id, Pctrl_flag ctrl_flag) {
-    onWorkstation(Pfn_redraw_all_structs, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_redraw_all_structs, ws_id, [&](Workstation& ws) {
         const int flag = c::raw(ctrl_flag);
         if (flag != PFLAG_COND && flag != PFLAG_ALWAYS)
             throw Error(PE_ENUM_TYPE_INVAL, "REDRAW ALL STRUCTURES");
@@ -126,7 +113,7 @@ void predraw_all_structs(Pint ws_id, Pctrl_flag ctrl_flag) {
 }
 
 void pupd_ws(Pint ws_id, Pregen_flag regen_flag) {
-    onWorkstation(Pfn_upd_ws, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_upd_ws, ws_id, [&](Workstation& ws) {
         const int flag = c::raw(regen_flag);
         if (flag != PFLAG_POSTPONE && flag != PFLAG_PERFORM)
             throw Error(PE_ENUM_TYPE_INVAL, "UPDATE WORKSTATION");
@@ -137,14 +124,14 @@ void pupd_ws(Pint ws_id, Pregen_flag regen_flag) {
 }
 
 void pset_ws_win3(Pint ws_id, const Plimit3* lim) {
-    onWorkstation(Pfn_set_ws_win3, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_ws_win3, ws_id, [&](Workstation& ws) {
         c::require(lim, "SET WORKSTATION WINDOW 3");
         ws.setWorkstationWindow(low(*lim), high(*lim));
     });
 }
 
 void pset_ws_win(Pint ws_id, const Plimit* lim) {
-    onWorkstation(Pfn_set_ws_win, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_ws_win, ws_id, [&](Workstation& ws) {
         c::require(lim, "SET WORKSTATION WINDOW");
         const WorkstationTables& t = ws.tables();
         ws.setWorkstationWindow({lim->x_min, lim->y_min, t.windowMin.z},
@@ -153,14 +140,14 @@ void pset_ws_win(Pint ws_id, const Plimit* lim) {
 }
 
 void pset_ws_vp3(Pint ws_id, const Plimit3* lim) {
-    onWorkstation(Pfn_set_ws_vp3, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_ws_vp3, ws_id, [&](Workstation& ws) {
         c::require(lim, "SET WORKSTATION VIEWPORT 3");
         ws.setWorkstationViewport(low(*lim), high(*lim));
     });
 }
 
 void pset_ws_vp(Pint ws_id, const Plimit* lim) {
-    onWorkstation(Pfn_set_ws_vp, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_ws_vp, ws_id, [&](Workstation& ws) {
         c::require(lim, "SET WORKSTATION VIEWPORT");
         const WorkstationTables& t = ws.tables();
         ws.setWorkstationViewport({lim->x_min, lim->y_min, t.viewportMin.z},
@@ -169,7 +156,7 @@ void pset_ws_vp(Pint ws_id, const Plimit* lim) {
 }
 
 void pset_view_rep3(Pint ws_id, Pint view_ind, const Pview_rep3* rep) {
-    onWorkstation(Pfn_set_view_rep3, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_view_rep3, ws_id, [&](Workstation& ws) {
         const char* function = "SET VIEW REPRESENTATION 3";
         c::require(rep, function);
         ViewRepresentation view;
@@ -186,7 +173,7 @@ void pset_view_rep3(Pint ws_id, Pint view_ind, const Pview_rep3* rep) {
 }
 
 void pset_view_rep(Pint ws_id, Pint view_ind, const Pview_rep* rep) {
-    onWorkstation(Pfn_set_view_rep, ws_id, [&](Workstation& ws) {
+    c::onOpenWorkstation(Pfn_set_view_rep, ws_id, [&](Workstation& ws) {
         const char* function = "SET VIEW REPRESENTATION";
         c::require(rep, function);
         ViewRepresentation view;
@@ -213,19 +200,20 @@ void pinq_open_wss(Pint appl, Pint start, Pint* err, Pint_list* ids, Pint* total
 
 void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err, const char** conn_id, Pint* ws_type) {
     c::inquire(err, [&](Phigs& p) {
-        Workstation& ws = inquired(p, ws_id);
+        Workstation& ws = c::inquiredWorkstation(p, ws_id);
         Phigs_store& s = c::storeOf(store);
         s.clear();
         s.text = ws.connectionIdentifier();
         if (conn_id) *conn_id = s.text.empty() ? nullptr : s.text.c_str();
-        if (ws_type) *ws_type = cType(ws.type());
+        // The specific type: its description is this workstation's as it is now.
+        if (ws_type) *ws_type = Binding::instance().specificType(ws_id);
     });
 }
 
 void pinq_posted_structs(Pint ws_id, Pint appl, Pint start, Pint* err, Pposted_struct_list* out,
                          Pint* total) {
     c::inquire(err, [&](Phigs& p) {
-        const std::vector<PostedStructure> posted = inquired(p, ws_id).postedStructures();
+        const std::vector<PostedStructure> posted = c::inquiredWorkstation(p, ws_id).postedStructures();
         std::vector<int> order(posted.size());
         for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
         // The simple list rules (2201, 2200, lengths) on the positions, then the postings copied.
@@ -253,42 +241,40 @@ void pinq_list_avail_ws_types(Pint appl, Pint start, Pint* err, Pint_list* types
 
 void pinq_list_avail_gdp3(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
     c::inquire(err, [&](Phigs&) {
-        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GDP 3"));
+        const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GDP 3");
         c::answerList(d.gdps3, appl, start, gdps, total);
     });
 }
 
 void pinq_list_avail_gdp(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
     c::inquire(err, [&](Phigs&) {
-        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GDP"));
+        const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GDP");
         c::answerList(d.gdps, appl, start, gdps, total);
     });
 }
 
 void pinq_gdp3(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
     c::inquire(err, [&](Phigs&) {
-        answerGdpAttributes(describeWorkstationType(coreType(ws_type, "INQUIRE GDP 3")).gdps3, gdp, num_attrs,
-                            attrs);
+        answerGdpAttributes(c::describedType(ws_type, "INQUIRE GDP 3").gdps3, gdp, num_attrs, attrs);
     });
 }
 
 void pinq_gdp(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
     c::inquire(err, [&](Phigs&) {
-        answerGdpAttributes(describeWorkstationType(coreType(ws_type, "INQUIRE GDP")).gdps, gdp, num_attrs,
-                            attrs);
+        answerGdpAttributes(c::describedType(ws_type, "INQUIRE GDP").gdps, gdp, num_attrs, attrs);
     });
 }
 
 void pinq_list_avail_gse(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gses, Pint* total) {
     c::inquire(err, [&](Phigs&) {
-        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE LIST OF AVAILABLE GSE"));
+        const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GSE");
         c::answerList(d.gses, appl, start, gses, total);
     });
 }
 
 void pinq_gse_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pgse_id_dep_list* gses, Pint* total) {
     c::inquire(err, [&](Phigs&) {
-        const auto d = describeWorkstationType(coreType(ws_type, "INQUIRE GSE FACILITIES"));
+        const auto d = c::describedType(ws_type, "INQUIRE GSE FACILITIES");
         std::vector<Pint> buffer(std::min(d.gses.size(), static_cast<std::size_t>(std::max<Pint>(appl, 0))));
         Pint_list ids{0, buffer.data()};
         c::answerList(d.gses, appl, start, gses ? &ids : nullptr, total);
@@ -301,8 +287,7 @@ void pinq_gse_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pgse_id_dep_l
 
 void pinq_ws_cat(Pint ws_type, Pint* err, Pws_cat* ws_cat) {
     c::inquire(err, [&](Phigs&) {
-        const WorkstationDescription d =
-            describeWorkstationType(coreType(ws_type, "INQUIRE WORKSTATION CATEGORY"));
+        const WorkstationDescription d = c::describedType(ws_type, "INQUIRE WORKSTATION CATEGORY");
         if (ws_cat) *ws_cat = d.category == WorkstationCategory::OutIn ? PCAT_OUTIN : PCAT_OUT;
     });
 }

@@ -36,6 +36,7 @@ public:
         return display_->present(picture);
     }
     DrawableSize drawableSize() const override { return display_->drawableSize(); }
+    bool followsDrawable() const override { return true; }
     /// Made when first asked for: a program that reads no input keeps no queue of actions.
     GlfwInputSource& input() {
         if (!input_) input_ = std::make_unique<GlfwInputSource>(*window_);

@@ -426,6 +426,7 @@ const DrawList& Workstation::shownPicture() {
 
 bool Workstation::present() {
     if (!output_) return false;
+    followDrawable();
     shownEcho_ = echoState();
     output_->showEcho(shownEcho_);
     return output_->present(shownPicture());
@@ -472,6 +473,12 @@ EchoState Workstation::echoState() const {
     if (!(a.ymax - a.ymin >= minimumEchoLine && a.xmax - a.xmin >= a.ymax - a.ymin)) return state;
     state.strings.push_back({1, a, typed.text, typed.cancelled});
     return state;
+}
+
+void Workstation::followDrawable() {
+    if (!output_ || !output_->followsDrawable()) return;
+    const DrawableSize size = output_->drawableSize();
+    if (size.width > 0 && size.height > 0) setDisplaySize({double(size.width), double(size.height)});
 }
 
 DrawableSize Workstation::drawableSize() const {

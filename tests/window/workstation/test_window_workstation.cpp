@@ -8,6 +8,7 @@
 #include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/window/GlfwInputSource.h"
 #include "phigs/window/GlfwWindow.h"
+#include "phigs/window/WindowOutputs.h"
 
 #include <GLFW/glfw3.h>
 
@@ -15,6 +16,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,24 @@ namespace {
 
 constexpr const char* title = "phigs workstation window test";
 const glm::dvec3 red{1.0, 0.0, 0.0};
+
+/// The top-level window named `name` (no window manager reparents it under Xvfb).
+Window namedWindow(Display* display, const char* name) {
+    Window root = 0, parent = 0, *children = nullptr;
+    unsigned count = 0;
+    XQueryTree(display, DefaultRootWindow(display), &root, &parent, &children, &count);
+    Window found = 0;
+    for (unsigned i = 0; i < count && !found; ++i) {
+        char* title = nullptr;
+        if (XFetchName(display, children[i], &title) && title) {
+            if (std::strcmp(title, name) == 0) found = children[i];
+            XFree(title);
+        }
+    }
+    if (children) XFree(children);
+    REQUIRE(found != 0);
+    return found;
+}
 
 /// The X server as the operator and, for minimising, as the window manager (Xvfb runs none):
 /// pointer, buttons and keys through XTest; iconify and restore as ICCCM window managers do
@@ -75,22 +95,7 @@ public:
 
 private:
     /// The test window, a child of the root (no window manager reparents it).
-    Window window() {
-        Window root = 0, parent = 0, *children = nullptr;
-        unsigned count = 0;
-        XQueryTree(display_, DefaultRootWindow(display_), &root, &parent, &children, &count);
-        Window found = 0;
-        for (unsigned i = 0; i < count && !found; ++i) {
-            char* name = nullptr;
-            if (XFetchName(display_, children[i], &name) && name) {
-                if (std::strcmp(name, title) == 0) found = children[i];
-                XFree(name);
-            }
-        }
-        if (children) XFree(children);
-        REQUIRE(found != 0);
-        return found;
-    }
+    Window window() { return namedWindow(display_, title); }
     void setState(long state) {
         const Atom wmState = XInternAtom(display_, "WM_STATE", False);
         const long data[2] = {state, 0};
@@ -302,4 +307,49 @@ TEST_CASE("window workstation: minimised and restored, it keeps its devices and 
         }
     CHECK(std::get<ValuatorMeasure>(rig.ws->input().sample(InputClass::Valuator, 1)).value == 3.0);
     render_test::requireNoValidationMessages(rig.display->context());
+}
+
+TEST_CASE("window workstation: a window it opened itself gives each new size to the display surface",
+          "[window][resize]") {
+    render_test::VirtualDisplay server;
+    Phigs phigs;
+    phigs.open();
+    registerWindowOutputs(phigs.outputs(), render_test::lavapipeWithValidation());
+    OutputConnection connection;
+    connection.width = 400;
+    connection.height = 300;
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window, connection);
+    ws.followDrawable();
+    REQUIRE(ws.displaySize() == glm::dvec2(400, 300));
+    REQUIRE(ws.tables().viewportMax == glm::dvec3(400, 300, 1));  // covers the whole surface
+
+    Display* x = XOpenDisplay(nullptr);
+    REQUIRE(x);
+    const Window window = namedWindow(x, "PHIGS workstation 1");
+    std::mt19937 random(20261203);
+    for (int i = 0; i < 4; ++i) {
+        const int width = std::uniform_int_distribution<int>(120, 630)(random);
+        const int height = std::uniform_int_distribution<int>(90, 470)(random);
+        XResizeWindow(x, window, unsigned(width), unsigned(height));
+        XSync(x, False);
+        const DrawableSize wanted{std::uint32_t(width), std::uint32_t(height)};
+        const auto until = std::chrono::steady_clock::now() + 10s;
+        while (ws.drawableSize() != wanted && std::chrono::steady_clock::now() < until) glfwPollEvents();
+        REQUIRE(ws.drawableSize() == wanted);
+        CHECK(ws.present());  // the picture is made at the new size
+        CHECK(ws.displaySize() == glm::dvec2(width, height));
+        CHECK(ws.tables().viewportMax == glm::dvec3(width, height, 1));
+    }
+    // A viewport that covers part of the surface stays where it is through a resize.
+    ws.setWorkstationViewport({10, 10, 0}, {100, 80, 1});
+    XResizeWindow(x, window, 500, 400);
+    XSync(x, False);
+    const auto until = std::chrono::steady_clock::now() + 10s;
+    while (ws.drawableSize() != DrawableSize{500, 400} && std::chrono::steady_clock::now() < until)
+        glfwPollEvents();
+    CHECK(ws.present());
+    CHECK(ws.displaySize() == glm::dvec2(500, 400));
+    CHECK(ws.tables().viewportMax == glm::dvec3(100, 80, 1));
+    XCloseDisplay(x);
+    phigs.closeWorkstation(1);
 }

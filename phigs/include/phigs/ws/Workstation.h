@@ -165,6 +165,10 @@ public:
     bool present();
     /// The output's drawable in pixels; with none attached, the display surface in device units.
     DrawableSize drawableSize() const;
+    /// With an output that followsDrawable(), a drawable of another (non-zero) size becomes the
+    /// display size (setDisplaySize). Runs before each present and before a description is
+    /// inquired, so a resized window is drawn, picked and described at its new size.
+    void followDrawable();
 
     // ---- input: the workstation's logical input devices and their echoes
     /// The devices (counts from the description; none for an OUTPUT type): INITIALIZE, SET

@@ -25,6 +25,10 @@ public:
     virtual bool present(const DrawList& picture) = 0;
     /// The drawable now, in pixels.
     virtual DrawableSize drawableSize() const = 0;
+    /// True when the drawable is the display surface itself (a window the output opened for the
+    /// workstation): the workstation's display size then follows it (Workstation::followDrawable).
+    /// A program that lays out its own window sets the display size itself.
+    virtual bool followsDrawable() const { return false; }
     /// What the echo areas show (handed before each present): an output with an operator draws
     /// it over the picture (appendEchoes); a file has none and ignores it.
     virtual void showEcho(const EchoState& echo) { (void)echo; }
