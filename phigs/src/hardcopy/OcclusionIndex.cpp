@@ -119,8 +119,9 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     return true;
 }
 
-std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
-    std::vector<glm::dvec2> hidden;
+void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b,
+                                     std::vector<glm::dvec2>& hidden) const {
+    hidden.clear();
     if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
     const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
     forCells(lo, hi, [&](std::size_t cell) {
@@ -132,6 +133,11 @@ std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const P
         }
     });
     std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+}
+
+std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
+    std::vector<glm::dvec2> hidden;
+    hiddenIntervals(a, b, hidden);
     std::vector<glm::dvec2> visible;
     double from = 0.0;
     for (const glm::dvec2& h : hidden) {
@@ -140,6 +146,17 @@ std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const P
     }
     if (from < 1.0 - 1e-9) visible.push_back({from, 1.0});
     return visible;
+}
+
+bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
+    // visibleParts(a, b).empty() without building the parts.
+    hiddenIntervals(a, b, scratch_);
+    double from = 0.0;
+    for (const glm::dvec2& h : scratch_) {
+        if (h.x > from + 1e-9) return false;
+        from = std::max(from, h.y);
+    }
+    return from >= 1.0 - 1e-9;
 }
 
 bool OcclusionIndex::visible(const PagePoint& p) const {
@@ -167,7 +184,7 @@ bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
     };
     for (const auto& c : facet.contours)
         for (std::size_t i = 0; i < c.size(); ++i)
-            if (!visibleParts(inside(c[i]), inside(c[(i + 1) % c.size()])).empty()) return false;
+            if (!hiddenWhole(inside(c[i]), inside(c[(i + 1) % c.size()]))) return false;
     return true;
 }
 
