@@ -107,14 +107,17 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     if (area == 0.0) return false;
     const double sign = area > 0.0 ? 1.0 : -1.0;
     double lo = 0.0, hi = 1.0;
+    // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
+    // Tested first, as it is the cheaper test and rejects the segment's own surface; the interval
+    // is the intersection of all four, in any order.
+    const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
+    const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
+    if (!atLeast(ga, gb, t.tolerance, lo, hi)) return false;
     for (int i = 0; i < 3; ++i) {
         const glm::dvec2 p = t.p[i], edge = t.p[(i + 1) % 3] - p;
         if (!atLeast(sign * cross(edge, pa - p), sign * cross(edge, pb - p), 0.0, lo, hi)) return false;
     }
-    // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
-    const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
-    const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
-    if (!atLeast(ga, gb, t.tolerance, lo, hi) || hi - lo <= 1e-12) return false;
+    if (hi - lo <= 1e-12) return false;
     interval = {lo, hi};
     return true;
 }
