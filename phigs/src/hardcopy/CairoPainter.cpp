@@ -7,6 +7,40 @@
 #include <variant>
 
 namespace phigs::hardcopy {
+namespace {
+
+/// Twice the signed area of a contour.
+double signedArea(const std::vector<glm::dvec2>& c) {
+    double a = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const glm::dvec2 &p = c[i], &q = c[(i + 1) % c.size()];
+        a += p.x * q.y - q.x * p.y;
+    }
+    return a;
+}
+
+/// A fill of one convex contour, opaque: inside it the winding number is 1 or -1, so several of
+/// them filled as one path by the non-zero rule cover their union, as painting each in turn does.
+bool convexOpaque(const VectorFill& fill, bool opaque) {
+    if (fill.contours.size() != 1 || !(opaque || fill.opacity >= 1.0f)) return false;
+    const auto& c = fill.contours[0];
+    if (c.size() < 3) return false;
+    int sign = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const glm::dvec2 a = c[(i + 1) % c.size()] - c[i], b = c[(i + 2) % c.size()] - c[(i + 1) % c.size()];
+        const double turn = a.x * b.y - a.y * b.x;
+        const int s = turn > 0.0 ? 1 : turn < 0.0 ? -1 : 0;
+        if (s != 0 && sign != 0 && s != sign) return false;
+        if (s != 0) sign = s;
+    }
+    return sign != 0;
+}
+
+bool sameFillStyle(const VectorFill& a, const VectorFill& b) {
+    return a.colour == b.colour && a.seamWidth == b.seamWidth && a.clip == b.clip;
+}
+
+}  // namespace
 
 void CairoPainter::paint(const VectorPicture& picture) {
     picture_ = &picture;
@@ -20,7 +54,24 @@ void CairoPainter::paint(const VectorPicture& picture) {
         cairo_rectangle(cr_, r.min.x, r.min.y, r.max.x - r.min.x, r.max.y - r.min.y);
         cairo_fill(cr_);
     }
-    for (const VectorOp& op : picture.ops) std::visit(*this, op);
+    const auto& ops = picture.ops;
+    for (std::size_t i = 0; i < ops.size();) {
+        // A run of opaque convex fills of one style is one path: the same area in one colour, and
+        // a fraction of the operations for cairo to record, analyse and write.
+        std::size_t end = i;
+        const auto* first = std::get_if<VectorFill>(&ops[i]);
+        while (first && end < ops.size()) {
+            const auto* next = std::get_if<VectorFill>(&ops[end]);
+            if (!next || !sameFillStyle(*first, *next) || !convexOpaque(*next, opaque_)) break;
+            ++end;
+        }
+        if (end > i + 1) {
+            fillRun(ops, i, end);
+            i = end;
+        } else {
+            std::visit(*this, ops[i++]);
+        }
+    }
     cairo_reset_clip(cr_);
     picture_ = nullptr;
 }
@@ -43,6 +94,35 @@ void CairoPainter::contours(const std::vector<std::vector<glm::dvec2>>& contours
         cairo_move_to(cr_, c[0].x, c[0].y);
         for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr_, c[i].x, c[i].y);
         cairo_close_path(cr_);
+    }
+}
+
+void CairoPainter::fillRun(const std::vector<VectorOp>& ops, std::size_t begin, std::size_t end) {
+    const VectorFill& style = std::get<VectorFill>(ops[begin]);
+    useClip(style.clip);
+    cairo_new_path(cr_);
+    for (std::size_t i = begin; i < end; ++i) {
+        const auto& c = std::get<VectorFill>(ops[i]).contours[0];
+        // All counter-clockwise (in page coordinates), so that overlaps add up rather than cancel.
+        const bool reverse = signedArea(c) < 0.0;
+        for (std::size_t k = 0; k < c.size(); ++k) {
+            const glm::dvec2& p = c[reverse ? c.size() - 1 - k : k];
+            if (k == 0)
+                cairo_move_to(cr_, p.x, p.y);
+            else
+                cairo_line_to(cr_, p.x, p.y);
+        }
+        cairo_close_path(cr_);
+    }
+    colour(style.colour);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    if (style.seamWidth > 0.0) {
+        cairo_fill_preserve(cr_);
+        cairo_set_line_width(cr_, style.seamWidth);
+        cairo_set_dash(cr_, nullptr, 0, 0.0);
+        cairo_stroke(cr_);
+    } else {
+        cairo_fill(cr_);
     }
 }
 

@@ -107,20 +107,24 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     if (area == 0.0) return false;
     const double sign = area > 0.0 ? 1.0 : -1.0;
     double lo = 0.0, hi = 1.0;
+    // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
+    // Tested first, as it is the cheaper test and rejects the segment's own surface; the interval
+    // is the intersection of all four, in any order.
+    const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
+    const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
+    if (!atLeast(ga, gb, t.tolerance, lo, hi)) return false;
     for (int i = 0; i < 3; ++i) {
         const glm::dvec2 p = t.p[i], edge = t.p[(i + 1) % 3] - p;
         if (!atLeast(sign * cross(edge, pa - p), sign * cross(edge, pb - p), 0.0, lo, hi)) return false;
     }
-    // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
-    const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
-    const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
-    if (!atLeast(ga, gb, t.tolerance, lo, hi) || hi - lo <= 1e-12) return false;
+    if (hi - lo <= 1e-12) return false;
     interval = {lo, hi};
     return true;
 }
 
-std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
-    std::vector<glm::dvec2> hidden;
+void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b,
+                                     std::vector<glm::dvec2>& hidden) const {
+    hidden.clear();
     if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
     const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
     forCells(lo, hi, [&](std::size_t cell) {
@@ -132,6 +136,11 @@ std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const P
         }
     });
     std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+}
+
+std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
+    std::vector<glm::dvec2> hidden;
+    hiddenIntervals(a, b, hidden);
     std::vector<glm::dvec2> visible;
     double from = 0.0;
     for (const glm::dvec2& h : hidden) {
@@ -140,6 +149,17 @@ std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const P
     }
     if (from < 1.0 - 1e-9) visible.push_back({from, 1.0});
     return visible;
+}
+
+bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
+    // visibleParts(a, b).empty() without building the parts.
+    hiddenIntervals(a, b, scratch_);
+    double from = 0.0;
+    for (const glm::dvec2& h : scratch_) {
+        if (h.x > from + 1e-9) return false;
+        from = std::max(from, h.y);
+    }
+    return from >= 1.0 - 1e-9;
 }
 
 bool OcclusionIndex::visible(const PagePoint& p) const {
@@ -167,7 +187,7 @@ bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
     };
     for (const auto& c : facet.contours)
         for (std::size_t i = 0; i < c.size(); ++i)
-            if (!visibleParts(inside(c[i]), inside(c[(i + 1) % c.size()])).empty()) return false;
+            if (!hiddenWhole(inside(c[i]), inside(c[(i + 1) % c.size()]))) return false;
     return true;
 }
 

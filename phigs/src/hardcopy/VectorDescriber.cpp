@@ -28,11 +28,13 @@ bool coversArea(const ProjectedFacet& f) {
     return area > 1e-12;
 }
 
-void describeHidden(const ProjectedScene& scene, const PageMapping& mapping, PaintBuilder& paint,
+void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuilder& paint,
                     DescribeStats& stats) {
+    // The facets move out of the scene: only its lines and markers are read after this.
     std::vector<ProjectedFacet> facets;
-    for (const ProjectedPart& part : scene.parts)
-        if (const auto* f = std::get_if<ProjectedFacet>(&part); f && coversArea(*f)) facets.push_back(*f);
+    for (ProjectedPart& part : scene.parts)
+        if (auto* f = std::get_if<ProjectedFacet>(&part); f && coversArea(*f))
+            facets.push_back(std::move(*f));
     const OcclusionIndex occlusion(facets, mapping.nominalPixel);
     stats.occluders = occlusion.triangleCount();
     // Hidden-line surfaces need painting only where other facets could show through them; facets
@@ -61,7 +63,7 @@ void describeHidden(const ProjectedScene& scene, const PageMapping& mapping, Pai
 VectorPicture describePicture(const DrawList& list, const PageSetup& page, const VectorOptions& options,
                               DescribeStats* stats) {
     const PageMapping mapping(list, page);
-    const ProjectedScene scene = projectScene(list, mapping, options);
+    ProjectedScene scene = projectScene(list, mapping, options);
     VectorPicture picture;
     picture.pageSize = mapping.pageSize;
     picture.paintBackground = page.background;

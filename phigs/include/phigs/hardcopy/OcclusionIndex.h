@@ -46,6 +46,10 @@ private:
     void forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const;
     /// The interval of t in [0, 1] where the segment is inside the triangle and behind it.
     bool hides(const Triangle& t, const PagePoint& a, const PagePoint& b, glm::dvec2& interval) const;
+    /// The intervals of the segment that triangles hide, in order of their start.
+    void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden) const;
+    /// Whether no part of the segment is visible.
+    bool hiddenWhole(const PagePoint& a, const PagePoint& b) const;
 
     std::vector<Triangle> triangles_;
     glm::dvec2 lo_{0.0}, cell_{1.0};
@@ -53,6 +57,7 @@ private:
     std::vector<std::vector<std::uint32_t>> cells_;
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t query_ = 0;
+    mutable std::vector<glm::dvec2> scratch_;  ///< hiddenWhole's intervals, kept between calls
 };
 
 }  // namespace phigs::hardcopy

@@ -1,0 +1,99 @@
+// Consecutive opaque fills of one colour are written as one path (CairoPainter): the page must
+// show what painting them one by one shows, whatever their orientation and overlaps.
+#include "VectorRaster.h"
+#include "phigs/hardcopy/VectorWorkstation.h"
+
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <random>
+
+using namespace phigs;
+using namespace phigs::hardcopy;
+
+namespace {
+
+using Triangle = std::array<glm::dvec2, 3>;
+
+/// Signed distance from p to a triangle in NPC: negative inside.
+double signedDistance(const Triangle& t, glm::dvec2 p) {
+    const double area = (t[1].x - t[0].x) * (t[2].y - t[0].y) - (t[1].y - t[0].y) * (t[2].x - t[0].x);
+    double inside = -1e300, outside = 1e300;
+    bool in = true;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec2 a = t[i], b = t[(i + 1) % 3], e = b - a;
+        const double side =
+            (area > 0 ? 1.0 : -1.0) * (e.x * (p.y - a.y) - e.y * (p.x - a.x)) / glm::length(e);
+        in = in && side >= 0.0;
+        inside = std::max(inside, -side);
+        const double s = std::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0, 1.0);
+        outside = std::min(outside, glm::length(p - (a + s * e)));
+    }
+    return in ? inside : outside;
+}
+
+}  // namespace
+
+TEST_CASE("vector hardcopy: runs of one colour show the union of their fills, in painting order",
+          "[hardcopy]") {
+    const auto dir = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy";
+    std::filesystem::create_directories(dir);
+    constexpr std::uint32_t kSize = 200;
+    const glm::vec3 first(0.9f, 0.2f, 0.1f), second(0.1f, 0.3f, 0.9f), background(0.0f);
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> at(0.1, 0.9);
+        // Two runs of overlapping triangles, either way round; the second paints over the first.
+        std::vector<std::pair<Triangle, glm::vec3>> triangles;
+        DrawList list;
+        list.views.push_back(DrawView{});
+        list.background = background;
+        for (int i = 0; i < 16; ++i) {
+            Triangle t{glm::dvec2(at(random), at(random)), glm::dvec2(at(random), at(random)),
+                       glm::dvec2(at(random), at(random))};
+            const glm::vec3 colour = i < 10 ? first : second;
+            triangles.emplace_back(t, colour);
+            DrawFillArea fill;
+            fill.contours = {{{t[0], 0.5}, {t[1], 0.5}, {t[2], 0.5}}};
+            fill.interior.style = InteriorStyle::Solid;
+            fill.interior.colour = colour;
+            DrawItem item;
+            item.primitive = std::move(fill);
+            list.items.push_back(std::move(item));
+        }
+        const auto file = dir / ("fill_runs_" + std::to_string(seed) + ".pdf");
+        {
+            PageSetup page;
+            page.paper = {double(kSize), double(kSize)};
+            page.nominalPixel = 1.0;
+            VectorWorkstation ws(file, VectorFormat::Pdf, page);
+            ws.update(list);
+        }
+        const Image image = vector_test::rasterisePdf(file, kSize, kSize);
+        // Pixels two pixels or more from every edge: the colour of the last triangle over them.
+        const double margin = 2.0 / kSize;
+        int checked = 0, overlapped = 0;
+        for (std::uint32_t y = 0; y < kSize; ++y)
+            for (std::uint32_t x = 0; x < kSize; ++x) {
+                const glm::dvec2 p((x + 0.5) / kSize, 1.0 - (y + 0.5) / kSize);
+                glm::vec3 expected = background;
+                bool clear = true;
+                int over = 0;
+                for (const auto& [t, colour] : triangles) {
+                    const double d = signedDistance(t, p);
+                    clear = clear && std::abs(d) >= margin;
+                    if (d < 0) expected = colour, ++over;
+                }
+                if (!clear) continue;
+                ++checked;
+                overlapped += over > 1;
+                const std::uint8_t* pixel = image.pixel(x, y);
+                INFO("seed " << seed << " pixel " << x << ", " << y);
+                for (int c = 0; c < 3; ++c)
+                    CHECK(std::abs(int(pixel[c]) - int(expected[c] * 255.0f + 0.5f)) <= 3);
+            }
+        CHECK(checked > int(kSize * kSize / 2));
+        CHECK(overlapped > 100);
+    }
+}
