@@ -912,10 +912,11 @@ Curve removeKnotsInRankOrder(const Curve& curve, const EndConditions& ends, doub
 // point count n. Each probe is a free-knot fit; the smallest count whose fit passes on samples
 // must also pass measureDeviation (the final check itself). The next n comes from the error
 // model c (I / (n - p))^(p+1) calibrated on the last fit, inside the bracket of the smallest
-// count that passed and the largest that failed.
-template <class LinearCount>
-CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o,
-                                      LinearCount&& linearCount, bool& refined, bool& settled,
+// count that passed and the largest that failed. loopCount() runs the removal loop (once) and
+// gives its count: on a refined curve the search looks only below it.
+template <class LoopCount>
+CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, LoopCount&& loopCount,
+                                      bool& refined, bool& settled,
                                       std::vector<KnotSignificance>& originalRanking) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
@@ -1120,6 +1121,17 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return static_cast<std::size_t>(std::clamp(n, double(lowest), double(ceiling - 1)));
     };
     const std::size_t first = guess();
+    // The significant knots' best fit under the coefficient bound (LinearFit: one banded solve, a
+    // bound on the whole curve) first: where it keeps the pass, they fit for certain and the
+    // sampled fit below (a free-knot fit's rounds) is not needed.
+    if (k == 0) {
+        std::vector<glm::dvec3> coefficients;
+        if (LinearFit(curve).run(significant(first), coefficients, 0.99 * o.tolerance)) {
+            refined = true;
+            out.removed = n0 - out.curve.points.size();
+            return out;
+        }
+    }
     ++out.fits;
     // Half the samples do for the check (the same counts on the reference and test curves; a
     // third of them misjudge one of 72 refined curves).
@@ -1141,9 +1153,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // tolerance, the loop runs whatever the moved-knot fit gives (see below).
     refined =
         (!std::isfinite(significantError) && first + 1 >= ceiling) || significantError <= 45.0 * o.tolerance;
-    // On a refined curve the removal loop runs too, from the linear stage's state: the search
-    // need not look at its count or above (on refined curves it probed there at length).
-    if (refined) ceiling = std::min(ceiling, linearCount());
+    // On a refined curve the removal loop runs too (from the linear stage's state) and runs
+    // first: the search looks only below the count it reached, where on refined curves it
+    // rarely has anything to find (probes above it were fits and measurements for nothing).
+    if (refined) ceiling = std::min(ceiling, loopCount());
     // A first fit at or above the ceiling is never probed (the search starts from the model):
     // it is made only below it.
     FreeKnotFit moved;
@@ -1151,7 +1164,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         ++out.fits;
         moved = fitter.fit(first, {}, true, 0, FreeKnotStops{giveUp, stopBelow(first, lowest - 1)});
         refined = refined || significantError <= 45.0 * moved.sampleError;
-        if (refined) ceiling = std::min(ceiling, linearCount());
+        if (refined) ceiling = std::min(ceiling, loopCount());
     }
     if (ceiling > lowest) search(first, std::move(moved));
     out.removed = n0 - out.curve.points.size();
@@ -1270,51 +1283,13 @@ CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& o
     return out;
 }
 
-}  // namespace
-
-CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
-    checkOptions(options, "reduceCurve");
-    validate(curve, "reduceCurve");
-    if (curve.rational()) return reduceRationalCurve(curve, options);
+// The removal loop from state s (the original, or the linear stage's), with its final measurement
+// and step back: the result keeps the tolerance as measured by measureDeviation.
+CurveReduction reduceByLoop(const Curve& curve, const ReductionOptions& options, Spline s, double tol,
+                            const Spline& originalSpline) {
     const bool measuring = std::isfinite(options.tolerance);
-    const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
-    const bool clamped =
-        std::equal(curve.knots.begin(), curve.knots.begin() + static_cast<std::ptrdiff_t>(p),
-                   curve.knots.begin() + 1) &&
-        std::equal(curve.knots.begin() + static_cast<std::ptrdiff_t>(n), curve.knots.end() - 1,
-                   curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
-    // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
-    // final measurement below has the last word.
-    const double tol = options.tolerance * 0.99;
     const bool batch = measuring && options.batch;
-    // The removal loop starts from the linear stage's state where the ends allow it (one banded
-    // solve per bisection step removes most of a refined or oversampled curve's knots at once).
-    // Run when first needed: by the free-knot search on a refined curve (its count bounds the
-    // search), else before the loop; not where the search's result stands alone (the reference
-    // curves: it would cost them a third more time for nothing). With freeKnots off the loop runs
-    // from the original as before (on the reference curves the linear stage's state costs it
-    // 0-9 points: I-beam 27 / 50 / 48 / 92 against 25 / 43 / 44 / 83).
-    const bool linear = measuring && options.freeKnots && !batch && clamped &&
-                        options.ends.fixedDerivatives == 0 && n > p + 1 && options.maxRemovals >= n;
-    const Spline originalSpline{curve.degree, curve.knots, curve.points, 1};
-    std::optional<Spline> linearState;
-    std::vector<KnotSignificance> originalRanking;  // rankKnots(curve), once the search has made it
-    auto runLinear = [&]() -> const Spline& {
-        if (!linearState)
-            linearState = linear ? linearRemoval(curve, tol, 30, originalRanking) : originalSpline;
-        return *linearState;
-    };
-    std::optional<CurveReduction> fitted;
-    if (measuring && options.freeKnots && clamped) {
-        bool refined = false, settled = false;
-        fitted = reduceCurveByFreeKnots(
-            curve, options, [&] { return runLinear().points.size(); }, refined, settled, originalRanking);
-        // The removal loop runs too where nothing fitted below the original or the original
-        // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win. Where
-        // every knot's weight is past the cutoff (settled), the loop would try none.
-        if ((fitted->removed > 0 && !refined) || n <= p + 1 || settled) return *fitted;
-    }
-    Spline s = runLinear();
+    const std::size_t n = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     // Where every knot the linear stage left weighs more than the cutoff, the loop would try
     // none: its state stands (within the tolerance by the coefficient bound), nothing is sampled.
     bool loopTriesNone = false;
@@ -1330,7 +1305,9 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         batch || loopTriesNone
             ? std::vector<double>{}
             : spanSamples(curve.knots, curve.degree, curve.points.size(), options.samplesPerSpan);
-    const std::vector<glm::dvec3> samples = evaluateMany(curve, params);
+    std::vector<glm::dvec3> samples(params.size());
+    detail::evaluateAscending(curve.degree, curve.knots, curve.points.data(), curve.points.size(), params,
+                              samples.data());
     std::vector<double> witness = params, trial(params.size());
     std::vector<double> error(params.size(), 0.0), trialError(params.size());
     // The largest error of each block of errorBlock samples, for the ranking's many range maxima.
@@ -1354,7 +1331,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         const std::size_t last = std::min(params.size(), hi + pad);
         detail::SplineSampler candidate(g.degree, g.knots, g.points.data(), g.points.size());
         std::vector<glm::dvec3> onCandidate(last - first);
-        for (std::size_t i = first; i < last; ++i) onCandidate[i - first] = candidate.value(params[i]);
+        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(),
+                                  std::span(params).subspan(first, last - first), onCandidate.data());
         // Newton from a known point (the witness, then the sample's own parameter): a distance
         // to a real point of the candidate, so an upper bound of the closest one. The loop needs
         // to know only that a sample is within the tolerance, so Newton stops there.
@@ -1436,7 +1414,12 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         for (std::size_t i = 1; i < map.to.size(); ++i) map.to[i] = std::max(map.to[i], map.to[i - 1]);
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan, map);
     } else if (measuring || options.report) {
-        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        // No loop samples (the linear stage's state stands, or batch mode): the map is the
+        // identity, whose bounds are the plain measurement's; the meter's global step (span
+        // boxes) needs no projector built on the original.
+        const double a = curve.knots[p], b = curve.knots[n];
+        out.deviation =
+            measureDeviation(curve, out.curve, 2 * options.samplesPerSpan, ParameterMap{{a, b}, {a, b}});
     }
     // The guarantee: if the denser final measurement finds the tolerance broken, step back
     // through the accepted states until it holds (the original always does).
@@ -1448,6 +1431,60 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
         if (!previous) break;
     }
+    return out;
+}
+
+}  // namespace
+
+CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
+    checkOptions(options, "reduceCurve");
+    validate(curve, "reduceCurve");
+    if (curve.rational()) return reduceRationalCurve(curve, options);
+    const bool measuring = std::isfinite(options.tolerance);
+    const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
+    const bool clamped =
+        std::equal(curve.knots.begin(), curve.knots.begin() + static_cast<std::ptrdiff_t>(p),
+                   curve.knots.begin() + 1) &&
+        std::equal(curve.knots.begin() + static_cast<std::ptrdiff_t>(n), curve.knots.end() - 1,
+                   curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+    // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
+    // final measurement below has the last word.
+    const double tol = options.tolerance * 0.99;
+    const bool batch = measuring && options.batch;
+    // The removal loop starts from the linear stage's state where the ends allow it (one banded
+    // solve per bisection step removes most of a refined or oversampled curve's knots at once).
+    // Run when first needed: by the free-knot search on a refined curve (the loop's count bounds
+    // the search), else before the loop; not where the search's result stands alone (the reference
+    // curves: it would cost them a third more time for nothing). With freeKnots off the loop runs
+    // from the original as before (on the reference curves the linear stage's state costs it
+    // 0-9 points: I-beam 27 / 50 / 48 / 92 against 25 / 43 / 44 / 83).
+    const bool linear = measuring && options.freeKnots && !batch && clamped &&
+                        options.ends.fixedDerivatives == 0 && n > p + 1 && options.maxRemovals >= n;
+    const Spline originalSpline{curve.degree, curve.knots, curve.points, 1};
+    std::optional<Spline> linearState;
+    std::vector<KnotSignificance> originalRanking;  // rankKnots(curve), once the search has made it
+    auto runLinear = [&]() -> const Spline& {
+        if (!linearState)
+            linearState = linear ? linearRemoval(curve, tol, 30, originalRanking) : originalSpline;
+        return *linearState;
+    };
+    std::optional<CurveReduction> loop;
+    auto runLoop = [&]() -> const CurveReduction& {
+        if (!loop) loop = reduceByLoop(curve, options, runLinear(), tol, originalSpline);
+        return *loop;
+    };
+    std::optional<CurveReduction> fitted;
+    if (measuring && options.freeKnots && clamped) {
+        bool refined = false, settled = false;
+        fitted = reduceCurveByFreeKnots(
+            curve, options, [&] { return runLoop().curve.points.size(); }, refined, settled, originalRanking);
+        // The removal loop runs too where nothing fitted below the original or the original
+        // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win. Where
+        // every knot's weight is past the cutoff (settled), the loop would try none.
+        if ((fitted->removed > 0 && !refined) || n <= p + 1 || settled) return *fitted;
+    }
+    runLoop();
+    CurveReduction out = std::move(*loop);
     if (fitted && fitted->curve.points.size() <= out.curve.points.size()) {
         fitted->fits += out.fits;
         return *fitted;

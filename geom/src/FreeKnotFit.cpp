@@ -512,7 +512,9 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     std::size_t cornerKnots = 0;
     for (double v : corners_)
         if (interior(v))
-            corners.push_back(v), cornerKnots += static_cast<std::size_t>(std::count(t.begin(), t.end(), v));
+            corners.push_back(v),
+                cornerKnots += static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), v) -
+                                                        std::lower_bound(t.begin(), t.end(), v));
     if (cornerKnots > free) corners.clear();
     std::vector<char> hot(n0, 0);
     std::vector<double> pins;
