@@ -1367,7 +1367,9 @@ CurveReduction reduceByLoop(const Curve& curve, const ReductionOptions& options,
                                                 std::numeric_limits<double>::infinity(), &c.u, enough);
             return c;
         };
-        for (std::size_t i = first; i < last; ++i) {
+        // One sample: true where it keeps the tolerance both ways (its witness and error go to
+        // trial and trialError).
+        auto sampleKeeps = [&](std::size_t i) {
             // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
             // projection is needed.
             const glm::dvec3& q = onCandidate[i - first];
@@ -1375,7 +1377,7 @@ CurveReduction reduceByLoop(const Curve& curve, const ReductionOptions& options,
             if (parametric <= tol) {
                 trial[i] = witness[i];
                 trialError[i] = parametric;
-                continue;
+                return true;
             }
             // Original to reduced, by Newton from the witness (geom's projector, local mode).
             CurvePoint pr = newton(samples[i], witness[i]);
@@ -1398,7 +1400,20 @@ CurveReduction reduceByLoop(const Curve& curve, const ReductionOptions& options,
             }
             if (d > tol) return false;
             trialError[i] = std::max(d, pr.distance);
+            return true;
+        };
+        // The sample farthest from the candidate in parameter first: most candidates that fail,
+        // fail there, before any other sample is inverted.
+        std::size_t farthest = first;
+        double farthestDistance = -1.0;
+        for (std::size_t i = first; i < last; ++i) {
+            const double e =
+                glm::dot(onCandidate[i - first] - samples[i], onCandidate[i - first] - samples[i]);
+            if (e > farthestDistance) farthestDistance = e, farthest = i;
         }
+        if (first < last && !sampleKeeps(farthest)) return false;
+        for (std::size_t i = first; i < last; ++i)
+            if (i != farthest && !sampleKeeps(i)) return false;
         for (std::size_t i = first; i < last; ++i) witness[i] = trial[i], error[i] = trialError[i];
         for (std::size_t k = first / errorBlock; k * errorBlock < last; ++k) {
             blockError[k] = 0.0;
