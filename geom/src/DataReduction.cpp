@@ -160,17 +160,31 @@ public:
     }
 
 private:
+    // A row reads tau[m + 1 - p .. m + p] around its span m (and the original's knots): where
+    // those are the knots the last call read for the same row, the row is the one it made (the
+    // stage's fits differ from one another by a few knots, so most rows are).
     void makeRows(const std::vector<double>& tau, std::size_t nt) {
         const std::size_t n0 = o_.points.size(), p = p_;
         rows_.resize(n0 * (p + 1));
         first_.resize(n0);
+        const bool before = spans_.size() == n0;
+        spans_.resize(n0);
         std::size_t mu = p;
         for (std::size_t j = 0; j < n0; ++j) {
             while (mu + 1 < nt && !(o_.knots[j] < tau[mu + 1])) ++mu;
             std::size_t m = mu;
             while (m > p && !(tau[m] < tau[m + 1])) --m;
-            first_[j] = detail::osloRowAt(o_.degree, tau, o_.knots, j, m, &rows_[j * (p + 1)]) - p;
+            first_[j] = m - p;
+            if (before && std::equal(tau.begin() + static_cast<std::ptrdiff_t>(m + 1 - p),
+                                     tau.begin() + static_cast<std::ptrdiff_t>(m + p + 1),
+                                     readTau_.begin() + static_cast<std::ptrdiff_t>(spans_[j] + 1 - p))) {
+                spans_[j] = m;
+                continue;
+            }
+            spans_[j] = m;
+            detail::osloRowAt(o_.degree, tau, o_.knots, j, m, &rows_[j * (p + 1)]);
         }
+        readTau_ = tau;
     }
 
     bool fit(std::size_t nt, std::vector<glm::dvec3>& c) {
@@ -223,8 +237,8 @@ private:
 
     const Curve& o_;
     std::size_t p_;
-    std::vector<double> rows_, band_;
-    std::vector<std::size_t> first_;
+    std::vector<double> rows_, band_, readTau_;  // readTau_: the knots the rows were made on
+    std::vector<std::size_t> first_, spans_;
     std::vector<glm::dvec3> rhs_;
 };
 
