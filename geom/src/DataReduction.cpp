@@ -152,6 +152,17 @@ public:
         return (nt < 3 || fit(nt, c)) && within(c, tolerance);
     }
 
+    /// The fit alone (false where it is rank deficient), for a caller that judges it otherwise.
+    bool fitOnly(const std::vector<double>& tau, std::vector<glm::dvec3>& c) {
+        const std::size_t nt = tau.size() - p_ - 1;
+        c.assign(nt, glm::dvec3(0.0));
+        c.front() = o_.points.front();
+        c.back() = o_.points.back();
+        makeRows(tau, nt);
+        return nt < 3 || fit(nt, c);
+    }
+    bool bounded(const std::vector<glm::dvec3>& c, double tolerance) const { return within(c, tolerance); }
+
     /// True when the spline (tau, c), whose knots are among the original's, is within the
     /// tolerance of the original by the coefficient bound.
     bool bounds(const std::vector<double>& tau, const std::vector<glm::dvec3>& c, double tolerance) {
@@ -1149,12 +1160,30 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return static_cast<std::size_t>(std::clamp(n, double(lowest), double(ceiling - 1)));
     };
     const std::size_t first = guess();
-    // The significant knots' best fit under the coefficient bound (LinearFit: one banded solve, a
-    // bound on the whole curve) first: where it keeps the pass, they fit for certain and the
-    // sampled fit below (a free-knot fit's rounds) is not needed.
+    // The significant knots' least-squares fit to the coefficients (LinearFit: one banded solve)
+    // first: where the coefficient bound keeps the pass (a bound on the whole curve), or else
+    // its distance from the original at every loop sample does, they fit, and the sampled fit
+    // below (a free-knot fit's rounds, whose pass is judged on samples too) is not needed.
     if (k == 0) {
         std::vector<glm::dvec3> coefficients;
-        if (LinearFit(curve).run(significant(first), coefficients, 0.99 * o.tolerance)) {
+        LinearFit linearFit(curve);
+        const std::vector<double> knots = significant(first);
+        bool fits = false;
+        if (linearFit.fitOnly(knots, coefficients)) {
+            fits = linearFit.bounded(coefficients, 0.99 * o.tolerance);
+            if (!fits) {
+                const std::vector<double> at = spanSamples(curve.knots, curve.degree, n0, o.samplesPerSpan);
+                std::vector<glm::dvec3> a(at.size()), b(at.size());
+                detail::evaluateAscending(curve.degree, curve.knots, curve.points.data(), n0, at, a.data());
+                detail::evaluateAscending(curve.degree, knots, coefficients.data(), coefficients.size(), at,
+                                          b.data());
+                const double pass2 = 0.99 * 0.99 * o.tolerance * o.tolerance;
+                fits = true;
+                for (std::size_t i = 0; i < at.size() && fits; ++i)
+                    fits = glm::dot(a[i] - b[i], a[i] - b[i]) <= pass2;
+            }
+        }
+        if (fits) {
             refined = true;
             out.removed = n0 - out.curve.points.size();
             return out;
