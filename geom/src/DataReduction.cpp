@@ -328,193 +328,254 @@ Spline linearRemoval(const Curve& curve, double tolerance, int passes,
     return s;
 }
 
-// The rank / remove / approximate loop. accept(fit) measures a candidate and, when it keeps the
-// tolerance, updates the caller's measurement state and returns true.
+/// The rank / remove / approximate loop on s. accept(fit) measures a candidate and, when it keeps
+/// the tolerance, updates the caller's measurement state and returns true.
 template <class Accept, class Present>
-std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
-                       Present&& presentError, AcceptedStates* history = nullptr,
-                       const Spline* originalSpline = nullptr) {
-    // The spline the fits approximate: s itself, or the original s was reduced from.
-    const Spline original = originalSpline ? *originalSpline : s;
-    const bool measuring = std::isfinite(o.tolerance);
-    std::unordered_set<double> blocked;  // by value; a long curve blocks thousands
-    std::size_t removed = 0;
-    auto isBlocked = [&](double v) { return blocked.contains(v); };
-    // rankKnots, with the weights of knots whose local data no accepted fit touched kept from
-    // before (the same numbers, computed once): a knot's weight depends only on the knots and
-    // coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
-    // A knot's score is its weight plus, when measuring, the error already spent near it (vs
-    // the original): removing a knot moves the curve by about its weight on top of what is
-    // there, so this spreads the tolerance over the curve instead of exhausting it in one place.
+class RemovalLoop {
+public:
+    RemovalLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept& accept,
+                Present& presentError, AcceptedStates* history, const Spline* originalSpline)
+        : s_(s),
+          o_(o),
+          fits_(fits),
+          accept_(accept),
+          presentError_(presentError),
+          history_(history),
+          original_(originalSpline ? *originalSpline : s),
+          measuring_(std::isfinite(o.tolerance)) {}
+
+    /// Runs the loop's rounds; returns the number of knots removed.
+    std::size_t run() {
+        for (int round = 0;; ++round) {
+            const std::size_t removedBefore = removed_;
+            blocked_.clear();
+            while (removed_ < o_.maxRemovals) {
+                const std::vector<KnotSignificance> partition = nextPartition();
+                if (partition.empty()) break;
+                const std::size_t removedBeforePartition = removed_;
+                removePartition(partition);
+                // After a global refit every knot tried has failed once: where the best ranked of
+                // them fail again, the others (ranked worse) do too (on noisy digitised curves a
+                // second round removed none of 155 such knots), so the round ends there.
+                if (round > 0 && removed_ == removedBeforePartition) break;
+            }
+            // Every knot left failed against the accumulated local fits. A global best fit to the
+            // original on the knots now left usually lowers the error everywhere; if it keeps the
+            // tolerance, the knots that failed get another chance.
+            if (!measuring_ || removed_ == removedBefore || removed_ >= o_.maxRemovals || round >= 4) break;
+            if (!refitGlobally()) break;
+        }
+        return removed_;
+    }
+
+private:
+    /// A knot's cached score, by value.
     struct Cached {
         double value, score;
     };
-    std::vector<Cached> cache;  // by value
-    auto rank = [&] {
-        const std::size_t p = static_cast<std::size_t>(s.degree), count = s.points.size() / s.sequences;
+
+    /// The best ranked knots not blocked, up to the partition size and below the weight cutoff.
+    std::vector<KnotSignificance> nextPartition() {
+        const std::size_t want =
+            std::min(static_cast<std::size_t>(o_.partitionSize), o_.maxRemovals - removed_);
+        std::vector<KnotSignificance> partition;
+        const std::vector<KnotSignificance> ranked = rank();  // by score
+        for (const KnotSignificance& k : ranked) {
+            if (blocked_.contains(k.value)) continue;
+            if (measuring_ && o_.weightCutoff > 0.0 && k.weight > o_.weightCutoff * o_.tolerance) break;
+            partition.push_back(k);
+            if (partition.size() == want) break;
+        }
+        return partition;
+    }
+
+    /// rankKnots, with the weights of knots whose local data no accepted fit touched kept from
+    /// before (the same numbers, computed once): a knot's weight depends only on the knots and
+    /// coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
+    /// A knot's score is its weight plus, when measuring, the error already spent near it (vs
+    /// the original): removing a knot moves the curve by about its weight on top of what is
+    /// there, so this spreads the tolerance over the curve instead of exhausting it in one place.
+    std::vector<KnotSignificance> rank() {
+        const std::size_t p = static_cast<std::size_t>(s_.degree), count = s_.points.size() / s_.sequences;
         std::vector<KnotSignificance> out;
         std::vector<Cached> next;
         for (std::size_t i = p + 1; i < count; ++i) {
-            if (s.knots[i] == s.knots[i + 1] || !(s.knots[i] > s.knots[p]) || !(s.knots[i] < s.knots[count]))
+            if (s_.knots[i] == s_.knots[i + 1] || !(s_.knots[i] > s_.knots[p]) ||
+                !(s_.knots[i] < s_.knots[count]))
                 continue;
-            const auto it = std::lower_bound(cache.begin(), cache.end(), s.knots[i],
-                                             [](const Cached& c, double v) { return c.value < v; });
-            double score = 0.0;
-            if (it != cache.end() && it->value == s.knots[i]) {
-                score = it->score;
-            } else {
-                score = knotRemovalWeight(s.degree, s.knots, s.points, s.sequences, i);
-                if (measuring)
-                    score += presentError(s.knots[i > p + 1 ? i - p - 1 : 0],
-                                          s.knots[std::min(s.knots.size() - 1, i + p + 1)]);
-            }
+            const double score = scoreOf(i);
             std::size_t first = i;
-            while (first > 0 && s.knots[first - 1] == s.knots[i]) --first;
-            out.push_back({i, s.knots[i], static_cast<int>(i - first + 1), score});
-            next.push_back({s.knots[i], score});
+            while (first > 0 && s_.knots[first - 1] == s_.knots[i]) --first;
+            out.push_back({i, s_.knots[i], static_cast<int>(i - first + 1), score});
+            next.push_back({s_.knots[i], score});
         }
-        cache = std::move(next);
+        cache_ = std::move(next);
         std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
             return a.weight < b.weight;
         });
         return out;
-    };
-    // Where the spline changed on [from, to], the caller's errors changed up to about an original
-    // span further (its samples there are measured again); two spans of the original are safe.
-    auto widened = [&](double& from, double& to) {
-        const std::size_t p = static_cast<std::size_t>(original.degree);
-        const std::size_t n = original.points.size() / original.sequences;
-        const auto& t = original.knots;
+    }
+
+    /// The score of knot i: cached, or its removal weight plus the error present near it.
+    double scoreOf(std::size_t i) {
+        const std::size_t p = static_cast<std::size_t>(s_.degree);
+        const auto it = std::lower_bound(cache_.begin(), cache_.end(), s_.knots[i],
+                                         [](const Cached& c, double v) { return c.value < v; });
+        if (it != cache_.end() && it->value == s_.knots[i]) return it->score;
+        double score = knotRemovalWeight(s_.degree, s_.knots, s_.points, s_.sequences, i);
+        if (measuring_)
+            score += presentError_(s_.knots[i > p + 1 ? i - p - 1 : 0],
+                                   s_.knots[std::min(s_.knots.size() - 1, i + p + 1)]);
+        return score;
+    }
+
+    /// Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
+    /// takes the later ones whose local windows overlap its own. Knots are named by value, so
+    /// the indices shifted by an earlier group's removal need no bookkeeping.
+    void removePartition(const std::vector<KnotSignificance>& partition) {
+        const std::size_t reach = static_cast<std::size_t>(s_.degree) + 1;
+        std::vector<bool> placed(partition.size(), false);
+        for (std::size_t i = 0; i < partition.size() && removed_ < o_.maxRemovals; ++i) {
+            if (placed[i]) continue;
+            std::vector<KnotSignificance> group{partition[i]};
+            placed[i] = true;
+            for (std::size_t j = i + 1; j < partition.size(); ++j) {
+                const std::size_t a = partition[i].index, b = partition[j].index;
+                if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
+                    group.push_back(partition[j]);
+                    placed[j] = true;
+                }
+            }
+            if (group.size() > o_.maxRemovals - removed_) group.resize(o_.maxRemovals - removed_);
+            removeGroup(group);
+        }
+    }
+
+    /// The group's knots together, or else one by one; a knot that fails alone is blocked.
+    void removeGroup(const std::vector<KnotSignificance>& group) {
+        if (group.size() > 1) {
+            std::vector<double> values;
+            for (const KnotSignificance& k : group) values.push_back(k.value);
+            if (tryRemove(values)) {
+                removed_ += group.size();
+                return;
+            }
+        }
+        for (const KnotSignificance& k : group) {
+            if (removed_ >= o_.maxRemovals) break;
+            if (tryRemove({k.value}))
+                ++removed_;
+            else
+                blocked_.insert(k.value);
+        }
+    }
+
+    /// Removes the knots of these values where the refitted window is accepted.
+    bool tryRemove(std::vector<double> values) {
+        std::sort(values.begin(), values.end());
+        ++fits_;
+        LeastSquaresRemoval fit;
+        try {
+            // The window is refitted to the original; only where the original has too few
+            // coefficients there does the fit to the current approximation stand.
+            fit = detail::removalWindow(s_.degree, s_.knots, s_.points, s_.sequences, values, o_.ends,
+                                        o_.margin);
+            if (!refitToOriginal(s_.degree, fit.knots, fit.points, s_.sequences, fit.firstChanged,
+                                 fit.lastChanged, original_.knots, original_.points))
+                fit = removeKnotsLeastSquares(s_.degree, s_.knots, s_.points, s_.sequences, values, o_.ends,
+                                              o_.margin);
+        } catch (const GeometryError&) {
+            return false;  // the end conditions leave nothing to fit here
+        }
+        if (!accept_(fit)) return false;
+        forget(fit.changedFrom, fit.changedTo);
+        commit(fit);
+        return true;
+    }
+
+    /// A global best fit to the original on the knots now left; true where it was accepted.
+    bool refitGlobally() {
+        const std::size_t nt = s_.points.size() / s_.sequences;
+        const std::size_t fixedEnd = static_cast<std::size_t>(o_.ends.fixedDerivatives) + 1;
+        if (nt < 2 * fixedEnd + 1) return false;
+        LeastSquaresRemoval global;
+        global.knots = s_.knots;
+        global.points = s_.points;
+        global.firstChanged = fixedEnd;
+        global.lastChanged = nt - 1 - fixedEnd;
+        refitToOriginal(s_.degree, global.knots, global.points, s_.sequences, global.firstChanged,
+                        global.lastChanged, original_.knots, original_.points);
+        global.changedFrom = global.knots.front();
+        global.changedTo = global.knots.back();
+        ++fits_;
+        if (!accept_(global)) return false;
+        cache_.clear();
+        commit(global);
+        return true;
+    }
+
+    /// The accepted fit becomes the current state (recorded in the history where there is one).
+    void commit(LeastSquaresRemoval& fit) {
+        Spline next{s_.degree, std::move(fit.knots), std::move(fit.points), s_.sequences};
+        if (history_)
+            history_->accept(s_, std::move(next));
+        else
+            s_ = std::move(next);
+    }
+
+    /// Where the spline changed on [from, to], the caller's errors changed up to about an original
+    /// span further (its samples there are measured again); two spans of the original are safe.
+    void widened(double& from, double& to) const {
+        const std::size_t p = static_cast<std::size_t>(original_.degree);
+        const std::size_t n = original_.points.size() / original_.sequences;
+        const auto& t = original_.knots;
         std::size_t a = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), from) - t.begin());
         std::size_t b = static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), to) - t.begin());
         a = a > p + 3 ? a - 3 : p;
         b = std::min(n, b + 2);
         from = std::min(from, t[a]);
         to = std::max(to, t[b]);
-    };
-    auto forget = [&](double from, double to) {
-        if (measuring) widened(from, to);
+    }
+
+    /// Drops the cached scores of the knots whose local data the change on [from, to] touched.
+    void forget(double from, double to) {
+        if (measuring_) widened(from, to);
         // The knots r whose [knots[r-p-1], knots[r+p+1]] meets [from, to] lie within p + 1 places
         // of the knots in [from, to]; the cache is sorted by value, so they go as one range.
-        const std::size_t p = static_cast<std::size_t>(s.degree), last = s.knots.size() - 1;
+        const std::size_t p = static_cast<std::size_t>(s_.degree), last = s_.knots.size() - 1;
         const std::size_t a = static_cast<std::size_t>(
-            std::lower_bound(s.knots.begin(), s.knots.end(), from) - s.knots.begin());
-        const std::size_t b =
-            static_cast<std::size_t>(std::upper_bound(s.knots.begin(), s.knots.end(), to) - s.knots.begin());
-        const double lo = s.knots[a > p + 1 ? a - p - 1 : 0];
-        const double hi = s.knots[std::min(last, b + p)];
-        cache.erase(std::lower_bound(cache.begin(), cache.end(), lo,
-                                     [](const Cached& c, double v) { return c.value < v; }),
-                    std::upper_bound(cache.begin(), cache.end(), hi,
-                                     [](double v, const Cached& c) { return v < c.value; }));
-    };
-    auto tryRemove = [&](std::vector<double> values) {
-        std::sort(values.begin(), values.end());
-        ++fits;
-        LeastSquaresRemoval fit;
-        try {
-            // The window is refitted to the original; only where the original has too few
-            // coefficients there does the fit to the current approximation stand.
-            fit = detail::removalWindow(s.degree, s.knots, s.points, s.sequences, values, o.ends, o.margin);
-            if (!refitToOriginal(s.degree, fit.knots, fit.points, s.sequences, fit.firstChanged,
-                                 fit.lastChanged, original.knots, original.points))
-                fit = removeKnotsLeastSquares(s.degree, s.knots, s.points, s.sequences, values, o.ends,
-                                              o.margin);
-        } catch (const GeometryError&) {
-            return false;  // the end conditions leave nothing to fit here
-        }
-        if (!accept(fit)) return false;
-        forget(fit.changedFrom, fit.changedTo);
-        Spline next{s.degree, std::move(fit.knots), std::move(fit.points), s.sequences};
-        if (history)
-            history->accept(s, std::move(next));
-        else
-            s = std::move(next);
-        return true;
-    };
-
-    for (int round = 0;; ++round) {
-        const std::size_t removedBefore = removed;
-        blocked.clear();
-        while (removed < o.maxRemovals) {
-            const std::size_t want =
-                std::min(static_cast<std::size_t>(o.partitionSize), o.maxRemovals - removed);
-            std::vector<KnotSignificance> partition;
-            const std::vector<KnotSignificance> ranked = rank();  // by score
-            for (const KnotSignificance& k : ranked) {
-                if (isBlocked(k.value)) continue;
-                if (measuring && o.weightCutoff > 0.0 && k.weight > o.weightCutoff * o.tolerance) break;
-                partition.push_back(k);
-                if (partition.size() == want) break;
-            }
-            if (partition.empty()) break;
-            const std::size_t removedBeforePartition = removed;
-
-            // Sub-partitions by locality: each knot not yet placed, in rank order, starts a group and
-            // takes the later ones whose local windows overlap its own. Knots are named by value, so
-            // the indices shifted by an earlier group's removal need no bookkeeping.
-            const std::size_t reach = static_cast<std::size_t>(s.degree) + 1;
-            std::vector<bool> placed(partition.size(), false);
-            for (std::size_t i = 0; i < partition.size() && removed < o.maxRemovals; ++i) {
-                if (placed[i]) continue;
-                std::vector<KnotSignificance> group{partition[i]};
-                placed[i] = true;
-                for (std::size_t j = i + 1; j < partition.size(); ++j) {
-                    const std::size_t a = partition[i].index, b = partition[j].index;
-                    if (!placed[j] && (a > b ? a - b : b - a) <= reach) {
-                        group.push_back(partition[j]);
-                        placed[j] = true;
-                    }
-                }
-                if (group.size() > o.maxRemovals - removed) group.resize(o.maxRemovals - removed);
-                if (group.size() > 1) {
-                    std::vector<double> values;
-                    for (const KnotSignificance& k : group) values.push_back(k.value);
-                    if (tryRemove(values)) {
-                        removed += group.size();
-                        continue;
-                    }
-                }
-                for (const KnotSignificance& k : group) {
-                    if (removed >= o.maxRemovals) break;
-                    const bool okk = tryRemove({k.value});
-                    if (okk)
-                        ++removed;
-                    else
-                        blocked.insert(k.value);
-                }
-            }
-            // After a global refit every knot tried has failed once: where the best ranked of them
-            // fail again, the others (ranked worse) do too (on noisy digitised curves a second round
-            // removed none of 155 such knots), so the round ends there.
-            if (round > 0 && removed == removedBeforePartition) break;
-        }
-        // Every knot left failed against the accumulated local fits. A global best fit to the
-        // original on the knots now left usually lowers the error everywhere; if it keeps the
-        // tolerance, the knots that failed get another chance.
-        if (!measuring || removed == removedBefore || removed >= o.maxRemovals || round >= 4) break;
-        const std::size_t nt = s.points.size() / s.sequences;
-        const std::size_t fixedEnd = static_cast<std::size_t>(o.ends.fixedDerivatives) + 1;
-        if (nt < 2 * fixedEnd + 1) break;
-        LeastSquaresRemoval global;
-        global.knots = s.knots;
-        global.points = s.points;
-        global.firstChanged = fixedEnd;
-        global.lastChanged = nt - 1 - fixedEnd;
-        refitToOriginal(s.degree, global.knots, global.points, s.sequences, global.firstChanged,
-                        global.lastChanged, original.knots, original.points);
-        global.changedFrom = global.knots.front();
-        global.changedTo = global.knots.back();
-        ++fits;
-        if (!accept(global)) break;
-        cache.clear();
-        Spline next{s.degree, std::move(global.knots), std::move(global.points), s.sequences};
-        if (history)
-            history->accept(s, std::move(next));
-        else
-            s = std::move(next);
+            std::lower_bound(s_.knots.begin(), s_.knots.end(), from) - s_.knots.begin());
+        const std::size_t b = static_cast<std::size_t>(
+            std::upper_bound(s_.knots.begin(), s_.knots.end(), to) - s_.knots.begin());
+        const double lo = s_.knots[a > p + 1 ? a - p - 1 : 0];
+        const double hi = s_.knots[std::min(last, b + p)];
+        cache_.erase(std::lower_bound(cache_.begin(), cache_.end(), lo,
+                                      [](const Cached& c, double v) { return c.value < v; }),
+                     std::upper_bound(cache_.begin(), cache_.end(), hi,
+                                      [](double v, const Cached& c) { return v < c.value; }));
     }
-    return removed;
+
+    Spline& s_;
+    const ReductionOptions& o_;
+    std::size_t& fits_;
+    Accept& accept_;
+    Present& presentError_;
+    AcceptedStates* history_;
+    const Spline original_;  // the spline the fits approximate: s itself, or the original s was reduced from
+    const bool measuring_;
+    std::unordered_set<double> blocked_;  // by value; a long curve blocks thousands
+    std::vector<Cached> cache_;           // by value
+    std::size_t removed_ = 0;
+};
+
+/// Runs the RemovalLoop on s; returns the number of knots removed.
+template <class Accept, class Present>
+std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
+                       Present&& presentError, AcceptedStates* history = nullptr,
+                       const Spline* originalSpline = nullptr) {
+    using A = std::remove_reference_t<Accept>;
+    using P = std::remove_reference_t<Present>;
+    return RemovalLoop<A, P>(s, o, fits, accept, presentError, history, originalSpline).run();
 }
 
 Curve unchecked(int degree, std::vector<double> knots, std::vector<glm::dvec3> points) {
