@@ -17,12 +17,13 @@ double distance4(const glm::dvec4& a, const glm::dvec4& b) {
     return glm::length(a - b);
 }
 
-}  // namespace
+/// The index r of the last occurrence of knot u in the curve and its multiplicity s.
+struct KnotPlace {
+    int r, s;
+};
 
-ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
-    validate(curve, "removeKnot");
-    if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
-    if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
+/// Where knot u sits in the curve; throws where u is not an interior knot.
+KnotPlace locateKnot(const Curve& curve, double u) {
     const int p = curve.degree;
     const int n = static_cast<int>(curve.points.size()) - 1;
     if (!(u > curve.domainStart() && u < curve.domainEnd()))
@@ -33,8 +34,12 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     if (r < 0) throw GeometryError("removeKnot: " + std::to_string(u) + " is not a knot of the curve");
     int s = 0;
     for (int i = r; i >= 0 && curve.knots[static_cast<std::size_t>(i)] == u; --i) ++s;
-    times = std::min(times, s);
+    return {r, s};
+}
 
+/// The curve's homogeneous points, and in tol the bound on them that keeps the curve within
+/// tolerance (The NURBS Book eq. 5.30).
+std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, double tolerance, double& tol) {
     std::vector<glm::dvec4> pw(curve.points.size());
     double wmin = 1.0, pmax = 0.0;
     for (std::size_t i = 0; i < pw.size(); ++i) {
@@ -42,15 +47,18 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         wmin = std::min(wmin, curve.weight(i));
         pmax = std::max(pmax, glm::length(curve.points[i]));
     }
-    // The NURBS Book eq. 5.30: a bound on the homogeneous points that keeps the curve within d.
-    const double tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
-    const std::vector<double>& U = curve.knots;
+    tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
+    return pw;
+}
+
+/// The NURBS Book A5.8's removal loop, with its index names: removes knot u (at `at`) up to
+/// `times` times while the homogeneous points move within tol, updating pw in place; returns the
+/// number of times it was removed.
+int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
+                int times, double tol) {
     auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };
     auto P = [&](int i) -> glm::dvec4& { return pw[static_cast<std::size_t>(i)]; };
-
-    // The NURBS Book A5.8, with its index names.
-    const int ord = p + 1;
-    const int fout = (2 * r - s - p) / 2;
+    const int r = at.r, s = at.s, ord = p + 1;
     int first = r - p;
     int last = r - s;
     std::vector<glm::dvec4> temp(static_cast<std::size_t>(2 * p + 1));
@@ -86,14 +94,21 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         --first;
         ++last;
     }
-    ExactKnotRemoval out{curve, t};
-    if (t == 0) return out;
+    return t;
+}
 
-    std::vector<double> knots = U;
+/// The curve left after removing knot u (at `at`) t times: A5.8's closing shifts of the knots and
+/// of the homogeneous points pw, projected back.
+Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, KnotPlace at, int t) {
+    const int p = curve.degree;
+    const int n = static_cast<int>(curve.points.size()) - 1;
+    const int r = at.r, s = at.s;
+    std::vector<double> knots = curve.knots;
     const int m = n + p + 1;
     for (int k = r + 1; k <= m; ++k)
         knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
     knots.resize(knots.size() - static_cast<std::size_t>(t));
+    const int fout = (2 * r - s - p) / 2;
     int j = fout, i = fout;
     for (int k = 1; k < t; ++k) {
         if (k % 2 == 1)
@@ -101,7 +116,7 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         else
             --j;
     }
-    for (int k = i + 1; k <= n; ++k) P(j++) = P(k);
+    for (int k = i + 1; k <= n; ++k) pw[static_cast<std::size_t>(j++)] = pw[static_cast<std::size_t>(k)];
     pw.resize(pw.size() - static_cast<std::size_t>(t));
 
     std::vector<glm::dvec3> points(pw.size());
@@ -110,7 +125,23 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         points[k] = glm::dvec3(pw[k]) / pw[k].w;
         if (curve.rational()) weights.push_back(pw[k].w);
     }
-    out.curve = Curve(p, std::move(knots), std::move(points), std::move(weights));
+    return Curve(p, std::move(knots), std::move(points), std::move(weights));
+}
+
+}  // namespace
+
+ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
+    validate(curve, "removeKnot");
+    if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
+    if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
+    const KnotPlace at = locateKnot(curve, u);
+    times = std::min(times, at.s);
+    double tol = 0.0;
+    std::vector<glm::dvec4> pw = homogeneousPoints(curve, tolerance, tol);
+    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, tol);
+    ExactKnotRemoval out{curve, t};
+    if (t == 0) return out;
+    out.curve = compacted(curve, pw, at, t);
     return out;
 }
 
