@@ -344,6 +344,72 @@ struct FitRounds {
     }
 };
 
+/// The original's corners inside (lo, hi), or none where their knots are more than free.
+std::vector<double> cornersThatFit(const std::vector<double>& allCorners, const std::vector<double>& t,
+                                   double lo, double hi, std::size_t free) {
+    std::vector<double> corners;
+    std::size_t cornerKnots = 0;
+    for (double v : allCorners)
+        if (v > lo && v < hi)
+            corners.push_back(v),
+                cornerKnots += static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), v) -
+                                                        std::lower_bound(t.begin(), t.end(), v));
+    if (cornerKnots > free) corners.clear();
+    return corners;
+}
+
+/// Whether anchors a, a + 1 bound a pinned (hot) span of the original, whose knots are t.
+bool boundsPinnedSpan(const std::vector<double>& t, const std::vector<char>& hot,
+                      const std::vector<double>& anchors, std::size_t a) {
+    const std::size_t n0 = hot.size();
+    const std::size_t j =
+        static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), anchors[a]) - t.begin()) - 1;
+    return j < n0 && hot[j] && t[j + 1] == anchors[a + 1];
+}
+
+/// An interval between pinned knots that gets free knots by its share of the density's integral.
+struct Interval {
+    double from, to, weight;
+    std::size_t knots = 0;
+    double remainder = 0.0;
+};
+
+/// Shares movable knots among the intervals by weight (largest remainders).
+void shareKnots(std::vector<Interval>& intervals, std::size_t movable) {
+    double weights = 0.0;
+    for (const Interval& in : intervals) weights += in.weight;
+    std::size_t given = 0;
+    for (Interval& in : intervals) {
+        const double exact = weights > 0.0 ? double(movable) * in.weight / weights : 0.0;
+        in.knots = static_cast<std::size_t>(exact);
+        in.remainder = exact - double(in.knots);
+        given += in.knots;
+    }
+    // (With every span pinned no interval is left, but then no knot is movable either: the fit
+    // has the original's count.)
+    for (; given < movable && !intervals.empty(); ++given) {
+        Interval& most =
+            *std::max_element(intervals.begin(), intervals.end(),
+                              [](const Interval& x, const Interval& y) { return x.remainder < y.remainder; });
+        ++most.knots, most.remainder = -1.0;
+    }
+}
+
+/// Whether start knots have every pin and no knot inside a pinned span.
+template <class PinnedSpan>
+bool startFitsPins(std::span<const double> startKnots, const std::vector<double>& pins,
+                   const std::vector<double>& anchors, PinnedSpan&& pinnedSpan) {
+    bool compatible = true;
+    for (double v : pins)
+        compatible = compatible && std::binary_search(startKnots.begin(), startKnots.end(), v);
+    for (std::size_t a = 0; compatible && a + 1 < anchors.size(); ++a)
+        if (pinnedSpan(a)) {
+            const auto inside = std::upper_bound(startKnots.begin(), startKnots.end(), anchors[a]);
+            compatible = inside == startKnots.end() || !(*inside < anchors[a + 1]);
+        }
+    return compatible;
+}
+
 }  // namespace
 
 FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& options)
@@ -508,12 +574,7 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     // of its spans that the density gives at least pinShare of a knot each (raised where their
     // knots would be more than the fit has) stay, with their multiplicity.
     auto interior = [&](double v) { return v > lo && v < hi; };
-    std::vector<double> corners;
-    std::size_t cornerKnots = 0;
-    for (double v : corners_)
-        if (interior(v))
-            corners.push_back(v), cornerKnots += static_cast<std::size_t>(std::count(t.begin(), t.end(), v));
-    if (cornerKnots > free) corners.clear();
+    const std::vector<double> corners = cornersThatFit(corners_, t, lo, hi, free);
     std::vector<char> hot(n0, 0);
     std::vector<double> pins;
     for (double share = options_.pinShare; pin && share > 0.0 && total > 0.0; share *= 1.25) {
@@ -538,52 +599,18 @@ FreeKnotFitter::KnotLayout FreeKnotFitter::initialKnots(std::size_t count, std::
     for (double v : pins)
         if (v != anchors.back()) anchors.push_back(v);
     if (anchors.back() != hi) anchors.push_back(hi);
-    auto pinnedSpan = [&](std::size_t a) {  // anchors a, a + 1 bound a pinned span of the original
-        const std::size_t j =
-            static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), anchors[a]) - t.begin()) - 1;
-        return j < n0 && hot[j] && t[j + 1] == anchors[a + 1];
-    };
-    struct Interval {
-        double from, to, weight;
-        std::size_t knots = 0;
-        double remainder = 0.0;
-    };
+    auto pinnedSpan = [&](std::size_t a) { return boundsPinnedSpan(t, hot, anchors, a); };
     std::vector<Interval> intervals;
     for (std::size_t a = 0; a + 1 < anchors.size(); ++a)
         if (!pinnedSpan(a))
             intervals.push_back({anchors[a], anchors[a + 1], densityIntegral(anchors[a], anchors[a + 1])});
-    const std::size_t movable = free - pins.size();
-    double weights = 0.0;
-    for (const Interval& in : intervals) weights += in.weight;
-    std::size_t given = 0;
-    for (Interval& in : intervals) {
-        const double exact = weights > 0.0 ? double(movable) * in.weight / weights : 0.0;
-        in.knots = static_cast<std::size_t>(exact);
-        in.remainder = exact - double(in.knots);
-        given += in.knots;
-    }
-    // (With every span pinned no interval is left, but then no knot is movable either: the fit
-    // has the original's count.)
-    for (; given < movable && !intervals.empty(); ++given) {
-        Interval& most =
-            *std::max_element(intervals.begin(), intervals.end(),
-                              [](const Interval& x, const Interval& y) { return x.remainder < y.remainder; });
-        ++most.knots, most.remainder = -1.0;
-    }
+    shareKnots(intervals, free - pins.size());
 
     // Start knots from a count whose pins differ (they change with the count) would spread wrongly
     // around these (the bump curve from 31 points' knots fit 42 points to 2.0e-4, from the
     // density's to 4.8e-5): with pins, the start is kept only where it has every pin and no knot
     // inside a pinned span.
-    bool compatible = true;
-    for (double v : pins)
-        compatible = compatible && std::binary_search(startKnots.begin(), startKnots.end(), v);
-    for (std::size_t a = 0; compatible && a + 1 < anchors.size(); ++a)
-        if (pinnedSpan(a)) {
-            const auto inside = std::upper_bound(startKnots.begin(), startKnots.end(), anchors[a]);
-            compatible = inside == startKnots.end() || !(*inside < anchors[a + 1]);
-        }
-    if (!pins.empty() && !compatible) startKnots = {};
+    if (!pins.empty() && !startFitsPins(startKnots, pins, anchors, pinnedSpan)) startKnots = {};
     std::vector<double> placed;
     std::size_t nextPin = 0;
     for (const Interval& in : intervals) {

@@ -17,12 +17,13 @@ double distance4(const glm::dvec4& a, const glm::dvec4& b) {
     return glm::length(a - b);
 }
 
-}  // namespace
+/// The index r of the last occurrence of knot u in the curve and its multiplicity s.
+struct KnotPlace {
+    int r, s;
+};
 
-ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
-    validate(curve, "removeKnot");
-    if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
-    if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
+/// Where knot u sits in the curve; throws where u is not an interior knot.
+KnotPlace locateKnot(const Curve& curve, double u) {
     const int p = curve.degree;
     const int n = static_cast<int>(curve.points.size()) - 1;
     if (!(u > curve.domainStart() && u < curve.domainEnd()))
@@ -33,8 +34,12 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     if (r < 0) throw GeometryError("removeKnot: " + std::to_string(u) + " is not a knot of the curve");
     int s = 0;
     for (int i = r; i >= 0 && curve.knots[static_cast<std::size_t>(i)] == u; --i) ++s;
-    times = std::min(times, s);
+    return {r, s};
+}
 
+/// The curve's homogeneous points, and in tol the bound on them that keeps the curve within
+/// tolerance (The NURBS Book eq. 5.30).
+std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, double tolerance, double& tol) {
     std::vector<glm::dvec4> pw(curve.points.size());
     double wmin = 1.0, pmax = 0.0;
     for (std::size_t i = 0; i < pw.size(); ++i) {
@@ -42,15 +47,18 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         wmin = std::min(wmin, curve.weight(i));
         pmax = std::max(pmax, glm::length(curve.points[i]));
     }
-    // The NURBS Book eq. 5.30: a bound on the homogeneous points that keeps the curve within d.
-    const double tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
-    const std::vector<double>& U = curve.knots;
+    tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
+    return pw;
+}
+
+/// The NURBS Book A5.8's removal loop, with its index names: removes knot u (at `at`) up to
+/// `times` times while the homogeneous points move within tol, updating pw in place; returns the
+/// number of times it was removed.
+int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
+                int times, double tol) {
     auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };
     auto P = [&](int i) -> glm::dvec4& { return pw[static_cast<std::size_t>(i)]; };
-
-    // The NURBS Book A5.8, with its index names.
-    const int ord = p + 1;
-    const int fout = (2 * r - s - p) / 2;
+    const int r = at.r, s = at.s, ord = p + 1;
     int first = r - p;
     int last = r - s;
     std::vector<glm::dvec4> temp(static_cast<std::size_t>(2 * p + 1));
@@ -86,14 +94,21 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         --first;
         ++last;
     }
-    ExactKnotRemoval out{curve, t};
-    if (t == 0) return out;
+    return t;
+}
 
-    std::vector<double> knots = U;
+/// The curve left after removing knot u (at `at`) t times: A5.8's closing shifts of the knots and
+/// of the homogeneous points pw, projected back.
+Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, KnotPlace at, int t) {
+    const int p = curve.degree;
+    const int n = static_cast<int>(curve.points.size()) - 1;
+    const int r = at.r, s = at.s;
+    std::vector<double> knots = curve.knots;
     const int m = n + p + 1;
     for (int k = r + 1; k <= m; ++k)
         knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
     knots.resize(knots.size() - static_cast<std::size_t>(t));
+    const int fout = (2 * r - s - p) / 2;
     int j = fout, i = fout;
     for (int k = 1; k < t; ++k) {
         if (k % 2 == 1)
@@ -101,7 +116,7 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         else
             --j;
     }
-    for (int k = i + 1; k <= n; ++k) P(j++) = P(k);
+    for (int k = i + 1; k <= n; ++k) pw[static_cast<std::size_t>(j++)] = pw[static_cast<std::size_t>(k)];
     pw.resize(pw.size() - static_cast<std::size_t>(t));
 
     std::vector<glm::dvec3> points(pw.size());
@@ -110,18 +125,32 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
         points[k] = glm::dvec3(pw[k]) / pw[k].w;
         if (curve.rational()) weights.push_back(pw[k].w);
     }
-    out.curve = Curve(p, std::move(knots), std::move(points), std::move(weights));
+    return Curve(p, std::move(knots), std::move(points), std::move(weights));
+}
+
+}  // namespace
+
+ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tolerance) {
+    validate(curve, "removeKnot");
+    if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
+    if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
+    const KnotPlace at = locateKnot(curve, u);
+    times = std::min(times, at.s);
+    double tol = 0.0;
+    std::vector<glm::dvec4> pw = homogeneousPoints(curve, tolerance, tol);
+    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, tol);
+    ExactKnotRemoval out{curve, t};
+    if (t == 0) return out;
+    out.curve = compacted(curve, pw, at, t);
     return out;
 }
 
 namespace {
 
-// removeKnotsLeastSquares; with fit false the window's coefficients are left as placeholders
-// (the caller refits them) and only the bookkeeping is done.
-LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::span<const glm::dvec3> points,
-                                std::size_t sequences, std::span<const double> values,
-                                const EndConditions& ends, int margin, bool fit) {
-    const char* where = "removeKnotsLeastSquares";
+/// Throws, naming `where`, where the spline or the removal request is malformed.
+void checkRemovalInput(int degree, std::span<const double> knots, std::span<const glm::dvec3> points,
+                       std::size_t sequences, std::span<const double> values, const EndConditions& ends,
+                       int margin, const char* where) {
     if (degree < 1) throw GeometryError(std::string(where) + ": degree must be at least 1");
     if (sequences == 0 || points.size() % sequences != 0)
         throw GeometryError(std::string(where) + ": " + std::to_string(points.size()) +
@@ -134,8 +163,12 @@ LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::
     if (knots.size() != count + p + 1)
         throw GeometryError(std::string(where) + ": " + std::to_string(knots.size()) + " knots for " +
                             std::to_string(count) + " coefficients of degree " + std::to_string(degree));
+}
 
-    // The last occurrence of each value goes.
+/// The index of the last occurrence of each value (the one that goes), ascending; throws where a
+/// value is no interior knot or is listed twice.
+std::vector<std::size_t> lastOccurrences(std::span<const double> knots, std::size_t p, std::size_t count,
+                                         std::span<const double> values, const char* where) {
     std::vector<std::size_t> removed;
     for (double v : values) {
         if (!(v > knots[p] && v < knots[count]))
@@ -149,6 +182,98 @@ LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::
         removed.push_back(r - 1);
     }
     std::sort(removed.begin(), removed.end());
+    return removed;
+}
+
+/// knots without the entries at the ascending indices `removed`.
+std::vector<double> withoutIndices(std::span<const double> knots, const std::vector<std::size_t>& removed) {
+    std::vector<double> tau;
+    tau.reserve(knots.size() - removed.size());
+    for (std::size_t i = 0, k = 0; i < knots.size(); ++i) {
+        if (k < removed.size() && removed[k] == i) {
+            ++k;
+            continue;
+        }
+        tau.push_back(knots[i]);
+    }
+    return tau;
+}
+
+/// The coefficients [cL, cH] of the reduced spline that the fit frees; the others keep their values.
+struct FreeWindow {
+    long cL, cH;
+    std::size_t nr;  // knots removed
+
+    /// Whether reduced coefficient c is free.
+    bool frees(std::size_t c) const { return static_cast<long>(c) >= cL && static_cast<long>(c) <= cH; }
+    /// The index before removal of a kept reduced coefficient c.
+    std::size_t oldIndex(std::size_t c) const { return static_cast<long>(c) < cL ? c : c + nr; }
+};
+
+/// The reduced coefficients: the solution x for the free ones (none: the old values everywhere).
+std::vector<glm::dvec3> reducedPoints(const FreeWindow& w, std::span<const glm::dvec3> points, std::size_t nt,
+                                      std::size_t sequences, const std::vector<double>* x) {
+    const std::size_t width = 3 * sequences;
+    std::vector<glm::dvec3> out(nt * sequences);
+    for (std::size_t c = 0; c < nt; ++c)
+        for (std::size_t s = 0; s < sequences; ++s) {
+            if (x && w.frees(c)) {
+                const std::size_t row = (c - static_cast<std::size_t>(w.cL)) * width + 3 * s;
+                out[c * sequences + s] = glm::dvec3((*x)[row], (*x)[row + 1], (*x)[row + 2]);
+            } else {
+                out[c * sequences + s] = points[w.oldIndex(c) * sequences + s];
+            }
+        }
+    return out;
+}
+
+/// The least-squares solution for the free coefficients: each row of the knot insertion matrix
+/// from tau to knots (over tau columns [c0, c1]) that touches them, scaled by the square root of
+/// its B-spline's support length, against the old coefficient less the kept ones' share.
+std::vector<double> solveFreeWindow(int degree, std::span<const double> knots,
+                                    std::span<const glm::dvec3> points, std::size_t sequences,
+                                    const FreeWindow& w, std::size_t c0, std::size_t c1,
+                                    const std::vector<std::vector<double>>& rows, const char* where) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t freeCount = static_cast<std::size_t>(w.cH - w.cL + 1);
+    std::vector<double> mat, rhs;
+    std::size_t fitRows = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        bool touchesFree = false;
+        for (long c = w.cL; c <= w.cH; ++c)
+            if (rows[r][static_cast<std::size_t>(c) - c0] != 0.0) touchesFree = true;
+        if (!touchesFree) continue;
+        const std::size_t j = c0 + r;  // global coefficient index in the current knots
+        const double scale = std::sqrt((knots[j + p + 1] - knots[j]) / static_cast<double>(p + 1));
+        if (scale == 0.0) continue;
+        for (long c = w.cL; c <= w.cH; ++c) mat.push_back(scale * rows[r][static_cast<std::size_t>(c) - c0]);
+        for (std::size_t s = 0; s < sequences; ++s) {
+            glm::dvec3 target = points[j * sequences + s];
+            for (std::size_t c = c0; c <= c1; ++c) {
+                if (w.frees(c)) continue;
+                const double weight = rows[r][c - c0];
+                if (weight != 0.0) target -= weight * points[w.oldIndex(c) * sequences + s];
+            }
+            rhs.push_back(scale * target.x);
+            rhs.push_back(scale * target.y);
+            rhs.push_back(scale * target.z);
+        }
+        ++fitRows;
+    }
+    if (fitRows < freeCount) throw GeometryError(std::string(where) + ": the local fit is under-determined");
+    return detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), 3 * sequences);
+}
+
+// removeKnotsLeastSquares; with fit false the window's coefficients are left as placeholders
+// (the caller refits them) and only the bookkeeping is done.
+LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::span<const glm::dvec3> points,
+                                std::size_t sequences, std::span<const double> values,
+                                const EndConditions& ends, int margin, bool fit) {
+    const char* where = "removeKnotsLeastSquares";
+    checkRemovalInput(degree, knots, points, sequences, values, ends, margin, where);
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t count = points.size() / sequences;
+    const std::vector<std::size_t> removed = lastOccurrences(knots, p, count, values, where);
     const std::size_t nr = removed.size();
     // The derivatives of order k at an end depend on the first p + k knots, so fixing them also
     // keeps the first (and last) fixedDerivatives interior knots.
@@ -159,91 +284,41 @@ LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::
     if (count < nr + p + 1)
         throw GeometryError(std::string(where) + ": removing " + std::to_string(nr) +
                             " knots leaves too few coefficients");
-    std::vector<double> tau;
-    tau.reserve(knots.size() - nr);
-    for (std::size_t i = 0, k = 0; i < knots.size(); ++i) {
-        if (k < nr && removed[k] == i) {
-            ++k;
-            continue;
-        }
-        tau.push_back(knots[i]);
-    }
+    std::vector<double> tau = withoutIndices(knots, removed);
     const std::size_t nt = count - nr;  // coefficients after removal
     const long a = static_cast<long>(removed.front());
     const long b = static_cast<long>(removed.back());
     const long fixedEnd = ends.fixedDerivatives + 1;
-    long cL = std::max(a - static_cast<long>(p) - margin, fixedEnd);
-    long cH = std::min(b - static_cast<long>(nr) + margin, static_cast<long>(nt) - 1 - fixedEnd);
-    if (cL > cH)
+    const FreeWindow w{std::max(a - static_cast<long>(p) - margin, fixedEnd),
+                       std::min(b - static_cast<long>(nr) + margin, static_cast<long>(nt) - 1 - fixedEnd),
+                       nr};
+    if (w.cL > w.cH)
         throw GeometryError(std::string(where) + ": the end conditions leave no coefficient free near " +
                             std::to_string(knots[removed.front()]));
 
-    auto oldIndex = [&](std::size_t c) { return static_cast<long>(c) < cL ? c : c + nr; };
     LeastSquaresRemoval out;
-    out.firstChanged = static_cast<std::size_t>(cL);
-    out.lastChanged = static_cast<std::size_t>(cH);
+    out.firstChanged = static_cast<std::size_t>(w.cL);
+    out.lastChanged = static_cast<std::size_t>(w.cH);
     out.changedFrom = tau[out.firstChanged];
     out.changedTo = tau[out.lastChanged + p + 1];
     if (!fit) {
-        out.points.resize(nt * sequences);
-        for (std::size_t c = 0; c < nt; ++c)
-            for (std::size_t s = 0; s < sequences; ++s)
-                out.points[c * sequences + s] = points[oldIndex(c) * sequences + s];
+        out.points = reducedPoints(w, points, nt, sequences, nullptr);
         out.knots = std::move(tau);
         return out;
     }
 
     // Local knot insertion matrix from tau to knots over tau columns [c0, c1]: insert the removed
     // values into the identity, one Boehm step each.
-    const std::size_t c0 = static_cast<std::size_t>(std::max(0L, cL - static_cast<long>(p) - 1));
-    const std::size_t c1 = std::min(nt - 1, static_cast<std::size_t>(cH) + p + 1);
+    const std::size_t c0 = static_cast<std::size_t>(std::max(0L, w.cL - static_cast<long>(p) - 1));
+    const std::size_t c1 = std::min(nt - 1, static_cast<std::size_t>(w.cH) + p + 1);
     std::vector<double> u(tau.begin() + static_cast<std::ptrdiff_t>(c0),
                           tau.begin() + static_cast<std::ptrdiff_t>(c1 + p + 2));
     std::vector<double> removedValues;
     for (std::size_t idx : removed) removedValues.push_back(knots[idx]);
     const std::vector<std::vector<double>> rows = detail::insertionRows(degree, u, removedValues, where);
-
-    const std::size_t freeCount = static_cast<std::size_t>(cH - cL + 1);
-    const std::size_t width = 3 * sequences;
-    std::vector<double> mat, rhs;
-    std::size_t fitRows = 0;
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        bool touchesFree = false;
-        for (long c = cL; c <= cH; ++c)
-            if (rows[r][static_cast<std::size_t>(c) - c0] != 0.0) touchesFree = true;
-        if (!touchesFree) continue;
-        const std::size_t j = c0 + r;  // global coefficient index in the current knots
-        const double scale = std::sqrt((knots[j + p + 1] - knots[j]) / static_cast<double>(p + 1));
-        if (scale == 0.0) continue;
-        for (long c = cL; c <= cH; ++c) mat.push_back(scale * rows[r][static_cast<std::size_t>(c) - c0]);
-        for (std::size_t s = 0; s < sequences; ++s) {
-            glm::dvec3 target = points[j * sequences + s];
-            for (std::size_t c = c0; c <= c1; ++c) {
-                if (static_cast<long>(c) >= cL && static_cast<long>(c) <= cH) continue;
-                const double w = rows[r][c - c0];
-                if (w != 0.0) target -= w * points[oldIndex(c) * sequences + s];
-            }
-            rhs.push_back(scale * target.x);
-            rhs.push_back(scale * target.y);
-            rhs.push_back(scale * target.z);
-        }
-        ++fitRows;
-    }
-    if (fitRows < freeCount) throw GeometryError(std::string(where) + ": the local fit is under-determined");
-    const std::vector<double> x =
-        detail::solveLeastSquares(std::move(mat), fitRows, freeCount, std::move(rhs), width);
-
+    const std::vector<double> x = solveFreeWindow(degree, knots, points, sequences, w, c0, c1, rows, where);
     out.knots = std::move(tau);
-    out.points.resize(nt * sequences);
-    for (std::size_t c = 0; c < nt; ++c)
-        for (std::size_t s = 0; s < sequences; ++s) {
-            if (static_cast<long>(c) >= cL && static_cast<long>(c) <= cH) {
-                const std::size_t row = (c - static_cast<std::size_t>(cL)) * width + 3 * s;
-                out.points[c * sequences + s] = glm::dvec3(x[row], x[row + 1], x[row + 2]);
-            } else {
-                out.points[c * sequences + s] = points[oldIndex(c) * sequences + s];
-            }
-        }
+    out.points = reducedPoints(w, points, nt, sequences, &x);
     return out;
 }
 

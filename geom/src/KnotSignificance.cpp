@@ -43,8 +43,62 @@ std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> kno
 // the square system [B | (-1)^i] [c; h] = d gives the error |h| directly. The thesis listing
 // computed the residual of this square system instead, which is zero (Marcaly 1991, section 4.3).
 template <class V>
+double removalWeightDense(int degree, std::span<const double> knots, std::span<const V> points,
+                          std::size_t sequences, std::size_t r, int s);
+
+// The same system solved in O(p): c_q = A_q + B_q h by forward substitution through the rows
+// whose alpha is at least one half (dividing by alpha) and backward through the others
+// (dividing by 1 - alpha), as The NURBS Book's A5.8 computes from both ends; the row where the
+// two meet gives h. Every pivot is then at least one half where the alphas descend, as they do
+// for one knot removed; elsewhere (or for a knot of multiplicity p + 1, which has no middle
+// rows) the dense elimination with partial pivoting answers.
+template <class V>
 double removalWeight(int degree, std::span<const double> knots, std::span<const V> points,
                      std::size_t sequences, std::size_t r, int s) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    const std::size_t m = p - static_cast<std::size_t>(s) + 3;
+    constexpr std::size_t kMost = 16;
+    if (m < 3 || m > kMost) return removalWeightDense<V>(degree, knots, points, sequences, r, s);
+    const std::size_t firstRow = r - p - 1;
+    const double z = knots[r];
+    auto reduced = [&](std::size_t i) { return i < r ? knots[i] : knots[i + 1]; };
+    double alpha[kMost];
+    for (std::size_t q = 1; q + 1 < m; ++q) {
+        const std::size_t i = firstRow + q;
+        const double denom = reduced(i + p) - reduced(i);
+        alpha[q] = denom > 0.0 ? (z - reduced(i)) / denom : 0.0;
+    }
+    // Rows 1..last go forward, rows m-2 down to last+2 backward, row last+1 meets.
+    std::size_t last = 0;
+    while (last + 1 <= m - 3 && alpha[last + 1] >= 0.5) ++last;
+    for (std::size_t q = last + 2; q + 1 < m; ++q)
+        if (alpha[q] > 0.5) return removalWeightDense<V>(degree, knots, points, sequences, r, s);
+    auto sign = [](std::size_t q) { return q % 2 == 0 ? 1.0 : -1.0; };
+    double bLeft = -1.0;
+    for (std::size_t q = 1; q <= last; ++q) bLeft = (-(1.0 - alpha[q]) * bLeft - sign(q)) / alpha[q];
+    double bRight = -sign(m - 1);
+    for (std::size_t q = m - 2; q >= last + 2; --q)
+        bRight = (-alpha[q] * bRight - sign(q)) / (1.0 - alpha[q]);
+    const std::size_t meet = last + 1;
+    const double denominator = (1.0 - alpha[meet]) * bLeft + alpha[meet] * bRight + sign(meet);
+    if (!(std::abs(denominator) > 1e-300)) return std::numeric_limits<double>::infinity();
+    double worst = 0.0;
+    for (std::size_t k = 0; k < sequences; ++k) {
+        auto d = [&](std::size_t q) { return points[(firstRow + q) * sequences + k]; };
+        V aLeft = d(0);
+        for (std::size_t q = 1; q <= last; ++q) aLeft = (d(q) - (1.0 - alpha[q]) * aLeft) / alpha[q];
+        V aRight = d(m - 1);
+        for (std::size_t q = m - 2; q >= last + 2; --q)
+            aRight = (d(q) - alpha[q] * aRight) / (1.0 - alpha[q]);
+        const V h = (d(meet) - (1.0 - alpha[meet]) * aLeft - alpha[meet] * aRight) / denominator;
+        worst = std::max(worst, glm::length(h));
+    }
+    return worst;
+}
+
+template <class V>
+double removalWeightDense(int degree, std::span<const double> knots, std::span<const V> points,
+                          std::size_t sequences, std::size_t r, int s) {
     const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t mult = static_cast<std::size_t>(s);
     const std::size_t m = p - mult + 3;  // rows = unknowns (c and h)

@@ -50,8 +50,11 @@ struct ReductionOptions {
     EndConditions ends;
     /// Measurement density: samples per knot span of the original shape (each direction).
     int samplesPerSpan = 8;
-    /// Fill the result's deviation report in count mode too (a global measurement after the
-    /// loop). In tolerance mode the report is always made: it is the final check.
+    /// Fill the result's deviation report (a global measurement after the loop). In tolerance
+    /// mode the measurement is also the final check: with report false it runs only where no
+    /// coefficient bound proves the result (a curve reduction whose coefficients, refined onto
+    /// the original's knots, stay within the tolerance of the original's: the linear stage's
+    /// states), and such a result's deviation is left empty (samples 0).
     bool report = true;
 };
 
@@ -64,7 +67,7 @@ struct CurveReduction {
     /// True when the curve is a free-knot fit (its knots moved; the report samples it at four
     /// times samplesPerSpan per span), false when it keeps a subset of the original's knots.
     bool freeKnotFit = false;
-    CurveDeviation deviation;  ///< measureDeviation(original, curve) when options.report
+    CurveDeviation deviation;  ///< measureDeviation(original, curve) where measured (see report)
 };
 
 /// Data reduction of a polynomial curve. In tolerance mode with options.freeKnots (the default)
