@@ -600,8 +600,8 @@ private:
         ++subtrees_->made;
     }
 
-    /// A segment with room for every primitive up to the next execute (an upper bound on its
-    /// items), so it never grows by copying.
+    /// A segment with room for every primitive up to the next execute (one item each: only a
+    /// polyline set or a set of fill area sets makes more, and the segment grows for those).
     static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {

@@ -58,6 +58,8 @@ void ColourMappingTable::set(int index, const ColourMapping& mapping, ErrorLog* 
     if (kept.method != ColourMappingMethod::Pseudo) kept.weights = glm::dvec3(0.0), kept.colours.clear();
     if (kept.method != ColourMappingMethod::PseudoN) kept.lists.clear();
     entries_[index] = std::move(kept);
+    allTrue_ = std::all_of(entries_.begin(), entries_.end(),
+                           [](const auto& e) { return e.second.method == ColourMappingMethod::True; });
 }
 
 const ColourMapping* ColourMappingTable::find(int index) const {

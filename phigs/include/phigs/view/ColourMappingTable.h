@@ -41,14 +41,15 @@ public:
     /// The entry traversal uses for `index`: entry 0 when it is not defined.
     const ColourMapping& get(int index) const;
     std::vector<int> definedIndices() const;
-    /// Whether entry `index` draws every colour as it is.
-    bool identity(int index) const { return get(index).method == ColourMappingMethod::True; }
+    /// Whether entry `index` draws every colour as it is (at once while every entry is TRUE).
+    bool identity(int index) const { return allTrue_ || get(index).method == ColourMappingMethod::True; }
     /// The colour drawn for `rgb` under entry `index` (PSEUDO_N reads `colours`).
     glm::dvec3 map(int index, const glm::dvec3& rgb, const ColourTable& colours) const;
     bool operator==(const ColourMappingTable&) const = default;
 
 private:
     std::map<int, ColourMapping> entries_;
+    bool allTrue_ = true;
 };
 
 }  // namespace phigs
