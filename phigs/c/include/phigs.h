@@ -319,7 +319,11 @@ typedef enum {
     PELEM_TRI_STRIP3_DATA,
     PELEM_QUAD_MESH3_DATA,
     PELEM_NUNI_BSP_CURVE,
-    PELEM_NUNI_BSP_SURF
+    PELEM_NUNI_BSP_SURF,
+    PELEM_POLYLINE_SET3_DATA,
+    PELEM_CELL_ARRAY3_PLUS,
+    PELEM_SET_OF_FILL_AREA_SET3_DATA,
+    PELEM_RENDERING_COLR_MODEL
 } Pelem_type;
 #define PFIRST_PHIGS_ELEM PELEM_POLYLINE3
 #define PLAST_PHIGS_ELEM PELEM_PICK_ID
@@ -521,6 +525,25 @@ typedef struct {
     Pint num_edges;
     Pedge_flag* edgedata;
 } Pedge_data_list;
+/* ---- PHIGS PLUS polyline sets and sets of fill area sets (the element data of the PHIGS PLUS
+ * primitives section near the end). */
+typedef union {
+    Ppoint3* points; /* PVERT_COORD */
+    Pptco3* ptcolrs; /* PVERT_COORD_COLOUR */
+} Pline_vdata_arr3;
+typedef struct {
+    Pint num_vertices;
+    Pline_vdata_arr3 vertex_data;
+} Pline_vdata_list3;
+typedef struct {
+    Pint num_lists;
+    Pedge_data_list* edgelist;
+} Pedge_data_list_list;
+typedef struct {
+    Pint num_lists;
+    Pint_list* lists;
+} Pint_list_list;
+
 /* The contents of an element (INQUIRE (CURRENT) ELEMENT CONTENT). Every pointer in it points
  * into the Pstore the inquiry was given, valid until that store's next use or deletion. */
 typedef union {
@@ -657,6 +680,25 @@ typedef union {
         Pfacet_data_arr3 fdata;
         Pfacet_vdata_arr3 vdata;
     } quad_mesh3;
+    /* PHIGS PLUS: polyline set, cell array plus, set of fill area sets (rendering colour model:
+     * int_data) */
+    struct {
+        Pint vflag, colr_type, npl;
+        Pline_vdata_list3* vdata;
+    } plsd3;
+    struct {
+        Pparal paral;
+        Pint_size dims;
+        Pint colr_type;
+        Pcoval* colr_array; /* dims.size_x x dims.size_y, row by row */
+    } cell_array_plus;
+    struct {
+        Pint fflag, eflag, vflag, colr_type, num_sets;
+        Pfacet_data_arr3 fdata;      /* one per set */
+        Pedge_data_list_list* edata; /* one per set; NULL without edge data */
+        Pint_list_list* vlist;       /* one per set: its contours' vertex indices */
+        Pfacet_vdata_list3 vdata;    /* the vertices */
+    } sofas3;
 } Pelem_data;
 
 /* A Store: the memory an inquiry with a variable-size answer fills (ISO 9593-4). */
@@ -1941,6 +1983,91 @@ void pset_dcue_rep(Pint ws_id, Pint dcue_ind, const Pdcue_bundle* dcue_rep);
 void pinq_dcue_rep(Pint ws_id, Pint dcue_ind, Pinq_type type, Pint* err_ind, Pdcue_bundle* dcue_rep);
 void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                          Pint_list* dcue_inds, Pint* num_elems_impl_list);
+
+/* ==== PHIGS PLUS primitives with data (polyline set, cell array plus, set of fill area sets),
+ * rendering colour model and colour mapping ==== */
+enum {
+    Pfn_polyline_set3_data = 301,
+    Pfn_cell_array3_plus = 303,
+    Pfn_set_of_fill_area_set3_data = 304,
+    Pfn_set_rendering_colr_model = 331,
+    Pfn_set_colr_map_rep = 342
+};
+/* POLYLINE SET 3 WITH DATA: npl polylines; vflag PVERT_COORD or PVERT_COORD_COLOUR (a colour at
+ * every vertex: a segment is drawn in its first vertex's colour). */
+void ppolyline_set3_data(Pint vflag, Pint colr_type, Pint npl, const Pline_vdata_list3* vdata);
+/* CELL ARRAY 3 PLUS: dim->size_x columns x dim->size_y rows of general colours, row by row. */
+void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type, const Pcoval* colrs);
+/* SET OF FILL AREA SETS 3 WITH DATA: num_sets fill area sets whose contours (vlist[s]) index the
+ * vertices of vdata (from 0); facet data one per set (fdata), edge flags one per contour vertex
+ * (edata[s], edge k from vertex k to k + 1) when eflag is PEDGE_VISIBILITY. An index outside the
+ * vertices or edge data shaped unlike the contours is -202. */
+void pset_of_fill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, Pint num_sets,
+                                 const Pfacet_data_arr3* fdata, const Pedge_data_list_list* edata,
+                                 const Pint_list_list* vlist, const Pfacet_vdata_list3* vdata);
+/* SET RENDERING COLOUR MODEL: stored and inquired; the workstations render in RGB whatever it is. */
+#define PRCM_WS_DEP 0
+#define PRCM_RGB 1
+#define PRCM_CIE 2
+#define PRCM_HSV 3
+#define PRCM_HLS 4
+void pset_rendering_colr_model(Pint model);
+
+/* Colour mapping (PHIGS PLUS). Each workstation has a colour mapping table of 20 entries; entry 0
+ * is predefined TRUE, an undefined index maps as entry 0. TRUE draws colours as they are; PSEUDO
+ * draws colrs[round(v (n - 1))] with v = clamp(weights . rgb, 0, 1); PSEUDO_N maps each RGB
+ * component c through its list (list[round(c (n - 1))]) and draws the colour table entry at the
+ * rounded sum. Colours are mapped where traversal resolves them (after the colour table, before
+ * lighting), so an unlit primitive shows exactly the mapped colour. */
+#define PCOLR_MAP_TRUE 1
+#define PCOLR_MAP_PSEUDO 2
+#define PCOLR_MAP_PSEUDO_N 3
+typedef struct {
+    Pint num_colr_reps;
+    Pcolr_rep* colr_reps;
+} Pcolr_rep_list;
+typedef struct {
+    Pint num_lists;
+    Pfloat_list* lists;
+} Pfloat_list_list;
+typedef union {
+    struct {
+        Pint colr_model;     /* PMODEL_RGB */
+        Pfloat_list weights; /* three */
+        Pcolr_rep_list colrs;
+    } meth_r2;
+    struct {
+        Pint colr_model;             /* PMODEL_RGB */
+        Pfloat_list_list colr_lists; /* three */
+    } meth_r3;
+} Pcolr_map_data;
+typedef struct {
+    Pint_list meths;
+    Pint num_pred_inds;
+} Pcolr_map_facs;
+typedef struct {
+    Pint int_data; /* colours available to the method */
+} Pcolr_map_st;
+/* SET COLOUR MAPPING REPRESENTATION (map_data may be NULL for TRUE): 121 index < 0, 103 table
+ * full, 126 method not available, 110 colour model not RGB, 118 a colour component outside
+ * [0, 1], -207 weights not three, no colours, or PSEUDO_N lists not three non-empty. Like every
+ * representation it shows when the picture is regenerated (the deferral mode says when). */
+void pset_colr_map_rep(Pint ws_id, Pint index, Pint map_method, const Pcolr_map_data* map_data);
+/* The entry as set (PINQ_SET: 101 when undefined) or as used (PINQ_REALIZED: entry 0 for an
+ * undefined index); the data of PSEUDO and PSEUDO_N points into the store. */
+void pinq_colr_map_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err_ind, Pint* map_method,
+                       Pcolr_map_data** map_data);
+void pinq_pred_colr_map_rep(Pint ws_type, Pint index, Pstore store, Pint* err_ind, Pint* map_method,
+                            Pcolr_map_data** map_data);
+void pinq_list_colr_map_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                             Pint_list* inds, Pint* num_elems_impl_list);
+/* The colours a method has on an open workstation (pinq_colr_map_st) or a type
+ * (pinq_colr_map_method_facs): TRUE 2^24, PSEUDO and PSEUDO_N the colour table's size; 126 for
+ * another method. The facilities list the three methods and one predefined entry. */
+void pinq_colr_map_st(Pint ws_id, Pint map_method, Pint* err_ind, Pcolr_map_st* map_st);
+void pinq_colr_map_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
+                        Pcolr_map_facs* facs, Pint* num_elems_impl_list);
+void pinq_colr_map_method_facs(Pint ws_type, Pint map_method, Pint* err_ind, Pcolr_map_st* map_st);
 
 #ifdef __cplusplus
 }

@@ -171,6 +171,11 @@ const std::map<int, const char*>& names() {
         {Pfn_set_colr_map_ind, "SET COLOUR MAPPING INDEX"},
         {Pfn_set_light_src_rep, "SET LIGHT SOURCE REPRESENTATION"},
         {Pfn_set_dcue_rep, "SET DEPTH CUE REPRESENTATION"},
+        {Pfn_polyline_set3_data, "POLYLINE SET 3 WITH DATA"},
+        {Pfn_cell_array3_plus, "CELL ARRAY 3 PLUS"},
+        {Pfn_set_of_fill_area_set3_data, "SET OF FILL AREA SETS 3 WITH DATA"},
+        {Pfn_set_rendering_colr_model, "SET RENDERING COLOUR MODEL"},
+        {Pfn_set_colr_map_rep, "SET COLOUR MAPPING REPRESENTATION"},
     };
     return table;
 }

@@ -362,6 +362,112 @@ void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
     d.vdata = s.vertexLists.data();
 }
 
+/// The colour type of a primitive's colours: that of the first one (the binding gives one type to all).
+template <class Lists>
+Pint firstColourType(const Lists& lists) {
+    for (const auto& list : lists)
+        if (!list.empty()) return list.front().direct ? PMODEL_RGB : PINDIRECT;
+    return PINDIRECT;
+}
+
+void polylineSetContent(const PolylineSetWithDataElement& e, Phigs_store& s) {
+    auto& d = s.data.plsd3;
+    const bool colours = !e.vertexColours.empty();
+    d.vflag = colours ? PVERT_COORD_COLOUR : PVERT_COORD;
+    d.colr_type = firstColourType(e.vertexColours);
+    std::size_t total = 0;
+    for (const auto& line : e.polylines) total += line.size();
+    reserveVertices(s, total);
+    for (std::size_t i = 0; i < e.polylines.size(); ++i) {
+        const Pfacet_vdata_arr3 a =
+            vertexData(d.vflag, e.polylines[i], colours ? &e.vertexColours[i] : nullptr, nullptr, s);
+        Pline_vdata_list3 line{};
+        line.num_vertices = static_cast<Pint>(e.polylines[i].size());
+        if (colours)
+            line.vertex_data.ptcolrs = a.ptcolrs;
+        else
+            line.vertex_data.points = a.points;
+        s.lineLists.push_back(line);
+    }
+    d.npl = static_cast<Pint>(e.polylines.size());
+    d.vdata = s.lineLists.data();
+}
+
+void cellArrayPlusContent(const CellArrayPlusElement& e, Phigs_store& s) {
+    for (const Colour& c : e.colours) s.covals.push_back(coval(c));
+    auto& d = s.data.cell_array_plus;
+    d.paral = {p3(e.p), p3(e.q), p3(e.r)};
+    d.dims = {e.columns, e.rows};
+    d.colr_type = firstColourType(std::vector<std::vector<Colour>>{e.colours});
+    d.colr_array = s.covals.data();
+}
+
+/// The facet data of a set of fill area sets, one per set, in the store's arrays.
+void sofasFacets(const SetOfFillAreaSetsElement& e, Pint fflag, Phigs_store& s) {
+    auto& d = s.data.sofas3;
+    for (std::size_t k = 0; k < e.sets.size(); ++k) switch (fflag) {
+            case PFACET_COLOUR:
+                s.covals.push_back(coval(e.facetColours[k]));
+                break;
+            case PFACET_NORMAL:
+                s.norms.push_back(v3(e.facetNormals[k]));
+                break;
+            case PFACET_COLOUR_NORMAL:
+                s.conorms.push_back({coval(e.facetColours[k]), v3(e.facetNormals[k])});
+                break;
+            default:
+                break;
+        }
+    if (fflag == PFACET_COLOUR) d.fdata.colrs = s.covals.data();
+    if (fflag == PFACET_NORMAL) d.fdata.norms = s.norms.data();
+    if (fflag == PFACET_COLOUR_NORMAL) d.fdata.conorms = s.conorms.data();
+}
+
+/// The contours' vertex indices (and edge flags) of every set: flat arrays first, then the
+/// lists pointing into them, so no pointer moves.
+void sofasContours(const SetOfFillAreaSetsElement& e, Phigs_store& s) {
+    auto& d = s.data.sofas3;
+    const bool edges = !e.edgeFlags.empty();
+    for (std::size_t k = 0; k < e.sets.size(); ++k)
+        for (std::size_t c = 0; c < e.sets[k].size(); ++c) {
+            s.ints.insert(s.ints.end(), e.sets[k][c].begin(), e.sets[k][c].end());
+            if (edges)
+                for (int f : e.edgeFlags[k][c]) s.edgeFlags.push_back(f ? PEDGE_ON : PEDGE_OFF);
+        }
+    std::size_t at = 0;
+    for (const auto& set : e.sets)
+        for (const auto& contour : set) {
+            const auto n = static_cast<Pint>(contour.size());
+            s.intLists.push_back({n, s.ints.data() + at});
+            if (edges) s.edgeLists.push_back({n, s.edgeFlags.data() + at});
+            at += contour.size();
+        }
+    std::size_t list = 0;
+    for (const auto& set : e.sets) {
+        const auto n = static_cast<Pint>(set.size());
+        s.intListLists.push_back({n, s.intLists.data() + list});
+        if (edges) s.edgeListLists.push_back({n, s.edgeLists.data() + list});
+        list += set.size();
+    }
+    d.vlist = s.intListLists.data();
+    d.edata = edges ? s.edgeListLists.data() : nullptr;
+}
+
+void sofasContent(const SetOfFillAreaSetsElement& e, Phigs_store& s) {
+    auto& d = s.data.sofas3;
+    const bool fc = !e.facetColours.empty(), fn = !e.facetNormals.empty();
+    d.fflag = fc ? (fn ? PFACET_COLOUR_NORMAL : PFACET_COLOUR) : (fn ? PFACET_NORMAL : PFACET_NONE);
+    d.eflag = e.edgeFlags.empty() ? PEDGE_NONE : PEDGE_VISIBILITY;
+    d.vflag = vertexFlag(!e.vertexColours.empty(), !e.vertexNormals.empty());
+    d.colr_type = firstColourType(std::vector<std::vector<Colour>>{e.vertexColours, e.facetColours});
+    d.num_sets = static_cast<Pint>(e.sets.size());
+    sofasFacets(e, d.fflag, s);
+    sofasContours(e, s);
+    reserveVertices(s, e.vertices.size());
+    d.vdata.num_vertices = static_cast<Pint>(e.vertices.size());
+    d.vdata.vertex_data = vertexData(d.vflag, e.vertices, &e.vertexColours, &e.vertexNormals, s);
+}
+
 template <class Mesh>
 Pfacet_vdata_arr3 meshData(const Mesh& e, Pint& vflag, Pint& colrType, Phigs_store& s) {
     const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
@@ -444,7 +550,13 @@ int fillContent(const Element& element, Phigs_store& s) {
                 auto& d = s.data.quad_mesh3;
                 d.fflag = PFACET_NONE, d.dim = {e.columns, e.rows};
                 d.vdata = meshData(e, d.vflag, d.colr_type, s);
-            } else if constexpr (std::is_same_v<E, GseElement>) {
+            } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>)
+                polylineSetContent(e, s);
+            else if constexpr (std::is_same_v<E, CellArrayPlusElement>)
+                cellArrayPlusContent(e, s);
+            else if constexpr (std::is_same_v<E, SetOfFillAreaSetsElement>)
+                sofasContent(e, s);
+            else if constexpr (std::is_same_v<E, GseElement>) {
                 s.text = e.data;
                 s.data.gse.id = e.identifier;
                 s.data.gse.data.unsupp = {static_cast<Pint>(s.text.size()), s.text.data()};

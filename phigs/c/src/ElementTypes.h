@@ -11,7 +11,7 @@ Pelem_type cElementType(const Element& element);
 
 /// Whether `type` is one of the Pelem_type values phigs.h names.
 inline bool validElementType(int type) {
-    return type >= PELEM_ALL && type <= PELEM_NUNI_BSP_SURF;
+    return type >= PELEM_ALL && type <= PELEM_RENDERING_COLR_MODEL;
 }
 
 }  // namespace phigs::c

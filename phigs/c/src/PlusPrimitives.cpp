@@ -1,5 +1,6 @@
 // PHIGS PLUS primitives with data: FILL AREA SET 3 WITH DATA, TRIANGLE STRIP 3 WITH DATA,
-// QUADRILATERAL MESH 3 WITH DATA, and COMPUTE FILL AREA SET GEOMETRIC NORMAL.
+// QUADRILATERAL MESH 3 WITH DATA, POLYLINE SET 3 WITH DATA, CELL ARRAY 3 PLUS, SET OF FILL AREA
+// SETS 3 WITH DATA, SET RENDERING COLOUR MODEL, and COMPUTE FILL AREA SET GEOMETRIC NORMAL.
 
 #include "Conversions.h"
 #include "Inquiry.h"
@@ -69,9 +70,120 @@ void noFacetData(Pint fflag, const char* name) {
         throw Error(errors::InvalidElementData, name, "facet data are not stored for this primitive");
 }
 
+/// Facet data of `sets` sets as `fflag` says (nothing for PFACET_NONE).
+void facetData(SetOfFillAreaSetsElement& e, Pint fflag, Pint colrType, std::size_t sets,
+               const Pfacet_data_arr3* fdata, const char* name) {
+    if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
+        throw Error(PE_ENUM_TYPE_INVAL, name, "facet flag");
+    if (fflag == PFACET_NONE || sets == 0) return;
+    c::require(fdata, name);
+    c::require(fdata->colrs, name);  // every member of the union is a pointer to the array
+    for (std::size_t k = 0; k < sets; ++k) switch (fflag) {
+            case PFACET_COLOUR:
+                e.facetColours.push_back(colour(fdata->colrs[k], colrType));
+                break;
+            case PFACET_NORMAL:
+                e.facetNormals.push_back(vec(fdata->norms[k]));
+                break;
+            default:
+                e.facetColours.push_back(colour(fdata->conorms[k].colr, colrType));
+                e.facetNormals.push_back(vec(fdata->conorms[k].norm));
+                break;
+        }
+}
+
+/// The contours of set `k` (vertex indices) and, with edge data, their edge flags.
+void setContours(SetOfFillAreaSetsElement& e, const Pint_list_list& contours,
+                 const Pedge_data_list_list* edges, const char* name) {
+    const std::size_t n = c::count(contours.num_lists, name);
+    if (n) c::require(contours.lists, name);
+    auto& set = e.sets.emplace_back();
+    for (std::size_t c = 0; c < n; ++c) set.push_back(c::ints(&contours.lists[c], name));
+    if (!edges) return;
+    auto& flags = e.edgeFlags.emplace_back();
+    const std::size_t m = c::count(edges->num_lists, name);
+    if (m) c::require(edges->edgelist, name);
+    for (std::size_t c = 0; c < m; ++c) {
+        const Pedge_data_list& list = edges->edgelist[c];
+        const std::size_t k = c::count(list.num_edges, name);
+        if (k) c::require(list.edgedata, name);
+        auto& out = flags.emplace_back();
+        for (std::size_t j = 0; j < k; ++j) {
+            const int f = c::raw(list.edgedata[j]);
+            if (f != PEDGE_OFF && f != PEDGE_ON)
+                throw Error(PE_ENUM_TYPE_INVAL, name, "edge visibility flag");
+            out.push_back(f == PEDGE_ON ? 1 : 0);
+        }
+    }
+}
+
 }  // namespace
 
 extern "C" {
+
+void ppolyline_set3_data(Pint vflag, Pint colr_type, Pint npl, const Pline_vdata_list3* vdata) {
+    insertElement(Pfn_polyline_set3_data, [&](const char* n) -> Element {
+        checkFlags(vflag, colr_type, n);
+        if (vflag != PVERT_COORD && vflag != PVERT_COORD_COLOUR)
+            throw Error(PE_ENUM_TYPE_INVAL, n, "vertex flag (a polyline carries no normals)");
+        PolylineSetWithDataElement e;
+        const std::size_t lines = c::count(npl, n);
+        if (lines) c::require(vdata, n);
+        for (std::size_t l = 0; l < lines; ++l) {
+            Pfacet_vdata_arr3 data{};
+            if (vflag == PVERT_COORD_COLOUR)
+                data.ptcolrs = vdata[l].vertex_data.ptcolrs;
+            else
+                data.points = vdata[l].vertex_data.points;
+            VertexData v = vertices(vflag, colr_type, c::count(vdata[l].num_vertices, n), data, n);
+            e.polylines.push_back(std::move(v.points));
+            if (vflag == PVERT_COORD_COLOUR) e.vertexColours.push_back(std::move(v.colours));
+        }
+        return e;
+    });
+}
+
+void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type, const Pcoval* colrs) {
+    insertElement(Pfn_cell_array3_plus, [&](const char* n) -> Element {
+        c::require(paral, n);
+        c::require(dim, n);
+        if (colr_type != PINDIRECT && colr_type != PMODEL_RGB)
+            throw Error(PE_ENUM_TYPE_INVAL, n, "colour type");
+        const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
+        if (columns * rows) c::require(colrs, n);
+        CellArrayPlusElement e{point(paral->p),           point(paral->q),        point(paral->r),
+                               static_cast<int>(columns), static_cast<int>(rows), {}};
+        for (std::size_t k = 0; k < columns * rows; ++k) e.colours.push_back(colour(colrs[k], colr_type));
+        return e;
+    });
+}
+
+void pset_of_fill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, Pint num_sets,
+                                 const Pfacet_data_arr3* fdata, const Pedge_data_list_list* edata,
+                                 const Pint_list_list* vlist, const Pfacet_vdata_list3* vdata) {
+    insertElement(Pfn_set_of_fill_area_set3_data, [&](const char* n) -> Element {
+        checkFlags(vflag, colr_type, n);
+        if (eflag != PEDGE_NONE && eflag != PEDGE_VISIBILITY) throw Error(PE_ENUM_TYPE_INVAL, n, "edge flag");
+        SetOfFillAreaSetsElement e;
+        const std::size_t sets = c::count(num_sets, n);
+        facetData(e, fflag, colr_type, sets, fdata, n);
+        c::require(vdata, n);
+        VertexData v = vertices(vflag, colr_type, c::count(vdata->num_vertices, n), vdata->vertex_data, n);
+        e.vertices = std::move(v.points), e.vertexColours = std::move(v.colours);
+        e.vertexNormals = std::move(v.normals);
+        if (sets) c::require(vlist, n);
+        if (sets && eflag == PEDGE_VISIBILITY) c::require(edata, n);
+        for (std::size_t k = 0; k < sets; ++k)
+            setContours(e, vlist[k], eflag == PEDGE_VISIBILITY ? &edata[k] : nullptr, n);
+        return e;
+    });
+}
+
+void pset_rendering_colr_model(Pint model) {
+    insertElement(Pfn_set_rendering_colr_model, [&](const char*) -> Element {
+        return IndexAttribute{ElementType::RenderingColourModel, model};
+    });
+}
 
 void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
                           Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata) {

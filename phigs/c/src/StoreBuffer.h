@@ -38,6 +38,19 @@ struct Phigs_store {
     std::vector<Pptnorm3> ptnorms;
     std::vector<Pptconorm3> ptconorms;
     std::vector<Pfacet_vdata_list3> vertexLists;
+    // Polyline sets, cell arrays plus, sets of fill area sets, colour mapping answers.
+    std::vector<Pline_vdata_list3> lineLists;
+    std::vector<Pcoval> covals;
+    std::vector<Pvec3> norms;
+    std::vector<Pconorm3> conorms;
+    std::vector<Pint_list> intLists;
+    std::vector<Pint_list_list> intListLists;
+    std::vector<Pedge_flag> edgeFlags;
+    std::vector<Pedge_data_list> edgeLists;
+    std::vector<Pedge_data_list_list> edgeListLists;
+    Pcolr_map_data colourMap{};
+    std::vector<Pcolr_rep> colourReps;
+    std::vector<Pfloat_list> floatLists;
 
     /// Forgets the previous answer (its memory is reused).
     void clear() {
@@ -50,5 +63,8 @@ struct Phigs_store {
         input = {};
         floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
         ptcolrs.clear(), ptnorms.clear(), ptconorms.clear(), vertexLists.clear();
+        lineLists.clear(), covals.clear(), norms.clear(), conorms.clear();
+        intLists.clear(), intListLists.clear(), edgeFlags.clear(), edgeLists.clear(), edgeListLists.clear();
+        colourMap = {}, colourReps.clear(), floatLists.clear();
     }
 };

@@ -49,6 +49,8 @@ const std::map<int, const char*>& messages() {
         {115, "Ignoring function, the view index value is less than one"},
         {116, "Ignoring function, one of the dimensions of pattern colour index array is less than one"},
         {118, "Ignoring function, one of the components of the colour specification is out of range"},
+        {121, "Ignoring function, the colour mapping index value is less than zero"},
+        {126, "Ignoring function, the specified colour mapping method is not available on the workstation"},
         {150,
          "Ignoring function, setting this view table entry would exceed the maximum number of entries "
          "allowed in the workstation's view table"},
@@ -130,6 +132,7 @@ const std::map<int, const char*>& messages() {
         {-204, "Ignoring function, a required argument is a null pointer or a negative count"},
         {-205, "The element's content has no C binding form in this implementation"},
         {-206, "Ignoring function, the input script ended while a REQUEST waits for input"},
+        {-207, "Ignoring function, the colour mapping data record is invalid for its method"},
     };
     return table;
 }

@@ -33,6 +33,9 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(ElementType::Cou
     "FILL AREA SET 3 WITH DATA",
     "TRIANGLE STRIP 3 WITH DATA",
     "QUADRILATERAL MESH 3 WITH DATA",
+    "POLYLINE SET 3 WITH DATA",
+    "CELL ARRAY 3 PLUS",
+    "SET OF FILL AREA SETS 3 WITH DATA",
     "SET POLYLINE INDEX",
     "SET POLYMARKER INDEX",
     "SET TEXT INDEX",
@@ -84,6 +87,7 @@ constexpr std::array<std::string_view, static_cast<std::size_t>(ElementType::Cou
     "SET LIGHT SOURCE STATE",
     "SET DEPTH CUE INDEX",
     "SET COLOUR MAPPING INDEX",
+    "SET RENDERING COLOUR MODEL",
     "ADD NAMES TO SET",
     "REMOVE NAMES FROM SET",
     "SET LOCAL TRANSFORMATION 3",
@@ -200,6 +204,64 @@ std::string checkPattern(const PatternAttribute& e) {
     return {};
 }
 
+std::string checkCells(int columns, int rows, std::size_t colours) {
+    if (columns < 0 || rows < 0) return "cell array dimensions are negative";
+    if (colours != static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows))
+        return "cell array has " + std::to_string(colours) + " colours for " + std::to_string(columns) +
+               " x " + std::to_string(rows) + " cells";
+    return {};
+}
+
+std::string checkPolylineSet(const PolylineSetWithDataElement& e) {
+    if (!e.vertexColours.empty() && e.vertexColours.size() != e.polylines.size())
+        return "vertex colours are not given for every polyline";
+    for (std::size_t i = 0; i < e.polylines.size(); ++i) {
+        if (auto r = checkPoints(e.polylines[i], 0, "polyline"); !r.empty())
+            return r + " (polyline " + std::to_string(i) + ")";
+        if (!e.vertexColours.empty() && e.vertexColours[i].size() != e.polylines[i].size())
+            return "polyline " + std::to_string(i) + " has " + std::to_string(e.vertexColours[i].size()) +
+                   " vertex colours for " + std::to_string(e.polylines[i].size()) + " vertices";
+    }
+    return {};
+}
+
+/// The contours of a set of fill area sets index the vertex list; facet data is per set, edge
+/// flags (0 or 1) per contour vertex.
+std::string checkSetOfFillAreaSets(const SetOfFillAreaSetsElement& e) {
+    if (auto r = checkPoints(e.vertices, 0, "set of fill area sets"); !r.empty()) return r;
+    if (auto r = checkPerVertex(e.vertexColours, e.vertices.size(), "vertex colours"); !r.empty()) return r;
+    if (auto r = checkPerVertex(e.vertexNormals, e.vertices.size(), "vertex normals"); !r.empty()) return r;
+    auto perSet = [&](std::size_t n, const char* what) -> std::string {
+        if (n == 0 || n == e.sets.size()) return {};
+        return std::to_string(n) + " " + what + " for " + std::to_string(e.sets.size()) + " sets";
+    };
+    if (auto r = perSet(e.facetColours.size(), "facet colours"); !r.empty()) return r;
+    if (auto r = perSet(e.facetNormals.size(), "facet normals"); !r.empty()) return r;
+    if (!e.edgeFlags.empty() && e.edgeFlags.size() != e.sets.size())
+        return "edge flags are not given for every set";
+    for (std::size_t s = 0; s < e.sets.size(); ++s) {
+        const std::string where = "set " + std::to_string(s);
+        if (!e.edgeFlags.empty() && e.edgeFlags[s].size() != e.sets[s].size())
+            return where + ": edge flags are not given for every contour";
+        for (std::size_t c = 0; c < e.sets[s].size(); ++c) {
+            for (int v : e.sets[s][c])
+                if (v < 0 || static_cast<std::size_t>(v) >= e.vertices.size())
+                    return where + " contour " + std::to_string(c) + ": vertex index " + std::to_string(v) +
+                           " outside 0.." + std::to_string(static_cast<long long>(e.vertices.size()) - 1);
+            if (e.edgeFlags.empty()) continue;
+            const auto& flags = e.edgeFlags[s][c];
+            if (flags.size() != e.sets[s][c].size())
+                return where + " contour " + std::to_string(c) + " has " + std::to_string(flags.size()) +
+                       " edge flags for " + std::to_string(e.sets[s][c].size()) + " edges";
+            for (int f : flags)
+                if (f != 0 && f != 1)
+                    return where + " contour " + std::to_string(c) + ": edge flag " + std::to_string(f) +
+                           " is neither 0 nor 1";
+        }
+    }
+    return {};
+}
+
 std::string validatePayload(const Element& element) {
     return std::visit(
         [](const auto& e) -> std::string {
@@ -215,12 +277,7 @@ std::string validatePayload(const Element& element) {
                     if (auto r = checkPoints(c, 0, "fill area set contour"); !r.empty()) return r;
                 return {};
             } else if constexpr (std::is_same_v<E, CellArrayElement>) {
-                if (e.columns < 0 || e.rows < 0) return "cell array dimensions are negative";
-                if (e.colourIndices.size() !=
-                    static_cast<std::size_t>(e.columns) * static_cast<std::size_t>(e.rows))
-                    return "cell array has " + std::to_string(e.colourIndices.size()) + " colours for " +
-                           std::to_string(e.columns) + " x " + std::to_string(e.rows) + " cells";
-                return {};
+                return checkCells(e.columns, e.rows, e.colourIndices.size());
             } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
                 return checkCurve(e.curve);
             } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
@@ -266,6 +323,12 @@ std::string validatePayload(const Element& element) {
                 if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
                 if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
                 return checkPerVertex(e.vertexNormals, n, "vertex normals");
+            } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>) {
+                return checkPolylineSet(e);
+            } else if constexpr (std::is_same_v<E, CellArrayPlusElement>) {
+                return checkCells(e.columns, e.rows, e.colours.size());
+            } else if constexpr (std::is_same_v<E, SetOfFillAreaSetsElement>) {
+                return checkSetOfFillAreaSets(e);
             } else if constexpr (std::is_same_v<E, GdpElement>) {
                 if (auto r = checkPoints(e.points, 0, "generalized drawing primitive"); !r.empty()) return r;
                 return checkGdp(e);
@@ -342,6 +405,12 @@ ElementType elementType(const Element& element) {
                 return T::TriangleStrip;
             else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>)
                 return T::QuadrilateralMesh;
+            else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>)
+                return T::PolylineSetWithData;
+            else if constexpr (std::is_same_v<E, CellArrayPlusElement>)
+                return T::CellArrayPlus;
+            else if constexpr (std::is_same_v<E, SetOfFillAreaSetsElement>)
+                return T::SetOfFillAreaSetsWithData;
             else if constexpr (std::is_same_v<E, AsfAttribute>)
                 return T::IndividualAsf;
             else if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>)
@@ -404,6 +473,12 @@ int payloadIndexOf(ElementType type) {
             return indexOf<TriangleStripElement>();
         case T::QuadrilateralMesh:
             return indexOf<QuadrilateralMeshElement>();
+        case T::PolylineSetWithData:
+            return indexOf<PolylineSetWithDataElement>();
+        case T::CellArrayPlus:
+            return indexOf<CellArrayPlusElement>();
+        case T::SetOfFillAreaSetsWithData:
+            return indexOf<SetOfFillAreaSetsElement>();
         case T::LinewidthScaleFactor:
         case T::MarkerSizeScaleFactor:
         case T::CharacterExpansionFactor:
@@ -502,6 +577,19 @@ std::size_t elementSize(const Element& element) {
                 bytes += e.data.size();
             if constexpr (std::is_same_v<E, NameSetElement>) bytes += e.names.size() * sizeof(int);
             if constexpr (std::is_same_v<E, CellArrayElement>) bytes += e.colourIndices.size() * sizeof(int);
+            if constexpr (std::is_same_v<E, CellArrayPlusElement>) bytes += e.colours.size() * sizeof(Colour);
+            if constexpr (std::is_same_v<E, PolylineSetWithDataElement>)
+                for (std::size_t i = 0; i < e.polylines.size(); ++i)
+                    bytes += e.polylines[i].size() * sizeof(glm::dvec3) +
+                             (e.vertexColours.empty() ? 0 : e.vertexColours[i].size() * sizeof(Colour));
+            if constexpr (std::is_same_v<E, SetOfFillAreaSetsElement>) {
+                bytes += e.vertices.size() * sizeof(glm::dvec3) + e.vertexColours.size() * sizeof(Colour) +
+                         e.vertexNormals.size() * sizeof(glm::dvec3) +
+                         e.facetColours.size() * sizeof(Colour) + e.facetNormals.size() * sizeof(glm::dvec3);
+                for (std::size_t s = 0; s < e.sets.size(); ++s)
+                    for (std::size_t c = 0; c < e.sets[s].size(); ++c)
+                        bytes += e.sets[s][c].size() * sizeof(int) * (e.edgeFlags.empty() ? 1 : 2);
+            }
             if constexpr (std::is_same_v<E, NurbsCurveElement>) bytes += curveBytes(e.curve);
             if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                 bytes += (e.surface.knotsU.size() + e.surface.knotsV.size() + e.surface.weights.size()) *

@@ -59,6 +59,19 @@ void fields(V& v, QuadrilateralMeshElement& e) {
     v(e.rows), v(e.columns), v(e.points), v(e.vertexColours), v(e.vertexNormals);
 }
 template <class V>
+void fields(V& v, PolylineSetWithDataElement& e) {
+    v(e.polylines), v(e.vertexColours);
+}
+template <class V>
+void fields(V& v, CellArrayPlusElement& e) {
+    v(e.p), v(e.q), v(e.r), v(e.columns), v(e.rows), v(e.colours);
+}
+template <class V>
+void fields(V& v, SetOfFillAreaSetsElement& e) {
+    v(e.vertices), v(e.vertexColours), v(e.vertexNormals), v(e.sets), v(e.facetColours), v(e.facetNormals),
+        v(e.edgeFlags);
+}
+template <class V>
 void fields(V& v, IndexAttribute& e) {
     v(e.value);
 }

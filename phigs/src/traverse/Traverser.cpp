@@ -55,6 +55,8 @@ struct State {
     SurfaceCharacteristicsAttribute surfaceCharacteristics;
     std::set<int> lights;
     int depthCueIndex = 0;
+    int colourMapIndex = 0;        ///< the colour mapping table entry colours are drawn through
+    int renderingColourModel = 0;  ///< kept for inquiry: the workstations render in RGB only
     int viewIndex = 0, pickId = 0, hlhsrId = 0;
     std::set<int> names;
     glm::dmat4 local{1.0}, global{1.0};
@@ -304,6 +306,12 @@ void applyIndex(State& s, const IndexAttribute& a) {
         case T::DepthCueIndex:
             s.depthCueIndex = v;
             break;
+        case T::ColourMappingIndex:
+            s.colourMapIndex = v;
+            break;
+        case T::RenderingColourModel:
+            s.renderingColourModel = v;
+            break;
         case T::ViewIndex:
             s.viewIndex = v;
             break;
@@ -317,7 +325,7 @@ void applyIndex(State& s, const IndexAttribute& a) {
             s.modelClip = v != 0;
             break;
         default:
-            break;  // polyline shading, annotation style, colour mapping: no draw-list effect
+            break;  // polyline shading, annotation style: no draw-list effect
     }
 }
 
@@ -379,24 +387,32 @@ void applyColour(State& s, const ColourAttribute& a) {
 /// Resolves the state against the workstation tables.
 struct Resolver {
     const WorkstationTables& t;
-    glm::vec3 rgb(const Colour& c) const { return glm::vec3(t.colours.resolve(c)); }
+    /// A colour as drawn: through the colour table, then colour mapping entry `mapping`.
+    glm::vec3 rgb(const Colour& c, int mapping) const {
+        const glm::dvec3 v = t.colours.resolve(c);
+        return glm::vec3(t.colourMappings.identity(mapping) ? v
+                                                            : t.colourMappings.map(mapping, v, t.colours));
+    }
+    glm::vec3 rgb(const Colour& c, const State& s) const { return rgb(c, s.colourMapIndex); }
+    /// Whether colour mapping entry `mapping` changes colours.
+    bool maps(int mapping) const { return !t.colourMappings.identity(mapping); }
 
     LineStyle line(const State& s) const {
         const PolylineBundle& b = t.polylines.get(s.polylineIndex);
-        return {rgb(s.ind(AspectId::PolylineColour) ? s.lineColour : b.colour),
+        return {rgb(s.ind(AspectId::PolylineColour) ? s.lineColour : b.colour, s),
                 s.ind(AspectId::LineType) ? s.lineType : b.type,
                 static_cast<float>(s.ind(AspectId::LinewidthScale) ? s.lineWidth : b.width)};
     }
     MarkerStyle marker(const State& s) const {
         const PolymarkerBundle& b = t.polymarkers.get(s.polymarkerIndex);
-        return {rgb(s.ind(AspectId::PolymarkerColour) ? s.markerColour : b.colour),
+        return {rgb(s.ind(AspectId::PolymarkerColour) ? s.markerColour : b.colour, s),
                 s.ind(AspectId::MarkerType) ? s.markerType : b.type,
                 static_cast<float>(s.ind(AspectId::MarkerSizeScale) ? s.markerScale : b.scale)};
     }
     TextStyle text(const State& s, bool annotation) const {
         const TextBundle& b = t.texts.get(s.textIndex);
         TextStyle out;
-        out.colour = rgb(s.ind(AspectId::TextColour) ? s.textColour : b.colour);
+        out.colour = rgb(s.ind(AspectId::TextColour) ? s.textColour : b.colour, s);
         out.font = s.ind(AspectId::TextFont) ? s.font : b.font;
         out.expansion = static_cast<float>(s.ind(AspectId::CharacterExpansion) ? s.expansion : b.expansion);
         out.spacing = static_cast<float>(s.ind(AspectId::CharacterSpacing) ? s.spacing : b.spacing);
@@ -408,17 +424,20 @@ struct Resolver {
         return out;
     }
     Reflectance reflectance(const AreaPropertiesAttribute& a) const {
-        return {static_cast<float>(a.ambient),          static_cast<float>(a.diffuse),
-                static_cast<float>(a.specular),         rgb(a.specularColour),
-                static_cast<float>(a.specularExponent), static_cast<float>(a.transparency)};
+        return {static_cast<float>(a.ambient),
+                static_cast<float>(a.diffuse),
+                static_cast<float>(a.specular),
+                glm::vec3(t.colours.resolve(a.specularColour)),  // a reflectance property: not mapped
+                static_cast<float>(a.specularExponent),
+                static_cast<float>(a.transparency)};
     }
     InteriorStyleSet interior(const State& s) const {
         const InteriorBundle& b = t.interiors.get(s.interiorIndex);
         InteriorStyleSet out;
         out.style = s.ind(AspectId::InteriorStyle) ? s.style : b.style;
         out.styleIndex = s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex;
-        out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour);
-        out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour);
+        out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour, s);
+        out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour, s);
         out.shading = s.ind(AspectId::InteriorShading) ? s.shading : b.shading;
         out.reflectance = s.ind(AspectId::InteriorReflectance) ? s.reflectance : b.reflectance;
         out.properties = reflectance(s.ind(AspectId::AreaProperties) ? s.properties : b.properties);
@@ -431,7 +450,7 @@ struct Resolver {
     EdgeStyle edge(const State& s) const {
         const EdgeBundle& b = t.edges.get(s.edgeIndex);
         return {s.ind(AspectId::EdgeFlag) ? s.edgeFlag : b.visible,
-                rgb(s.ind(AspectId::EdgeColour) ? s.edgeColour : b.colour),
+                rgb(s.ind(AspectId::EdgeColour) ? s.edgeColour : b.colour, s),
                 s.ind(AspectId::EdgeType) ? s.edgeType : b.type,
                 static_cast<float>(s.ind(AspectId::EdgewidthScale) ? s.edgeWidth : b.width)};
     }
@@ -581,8 +600,8 @@ private:
         ++subtrees_->made;
     }
 
-    /// A segment with room for every primitive up to the next execute (an upper bound on its
-    /// items), so it never grows by copying.
+    /// A segment with room for every primitive up to the next execute (one item each: only a
+    /// polyline set or a set of fill area sets makes more, and the segment grows for those).
     static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
@@ -597,9 +616,9 @@ private:
         return e.index() <= kLastPrimitive || std::holds_alternative<GdpElement>(e);
     }
     /// The variant index of the last output primitive family (they come first in Element).
-    static constexpr std::size_t kLastPrimitive = 11;
+    static constexpr std::size_t kLastPrimitive = 14;
     static_assert(
-        std::is_same_v<std::variant_alternative_t<kLastPrimitive, Element>, QuadrilateralMeshElement>);
+        std::is_same_v<std::variant_alternative_t<kLastPrimitive, Element>, SetOfFillAreaSetsElement>);
 
     /// Ends the segment being built: later items go to a new one.
     void flush() {
@@ -651,10 +670,10 @@ private:
         return result;
     }
 
-    std::vector<glm::vec3> resolveColours(const std::vector<Colour>& colours) const {
+    std::vector<glm::vec3> resolveColours(const std::vector<Colour>& colours, const State& state) const {
         std::vector<glm::vec3> out;
         out.reserve(colours.size());
-        for (const Colour& c : colours) out.push_back(resolve_.rgb(c));
+        for (const Colour& c : colours) out.push_back(resolve_.rgb(c, state));
         return out;
     }
 
@@ -686,11 +705,11 @@ private:
                 } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
                     DrawFillArea f;
                     f.contours = e.contours;
-                    for (const auto& c : e.vertexColours) f.vertexColours.push_back(resolveColours(c));
+                    for (const auto& c : e.vertexColours) f.vertexColours.push_back(resolveColours(c, state));
                     f.vertexNormals = e.vertexNormals;
                     if (e.hasFacetNormal) f.facetNormal = e.facetNormal;
                     fillStyle(f, state);
-                    if (e.hasFacetColour) f.interior.colour = resolve_.rgb(e.facetColour);
+                    if (e.hasFacetColour) f.interior.colour = resolve_.rgb(e.facetColour, state);
                     emit(s, number, state, std::move(f));
                 } else if constexpr (std::is_same_v<E, TextElement>) {
                     DrawText t;
@@ -709,7 +728,19 @@ private:
                     t.style = resolve_.text(state, true);
                     emit(s, number, state, std::move(t));
                 } else if constexpr (std::is_same_v<E, CellArrayElement>) {
-                    cellArray(s, stored, number, state, e);
+                    // P, Q, R: P and Q opposite corners (2D), or P, Q along the first row, R along
+                    // the first column (3D).
+                    glm::dvec3 du = e.twoD ? glm::dvec3(e.q.x - e.p.x, 0, 0) : e.q - e.p;
+                    glm::dvec3 dv = e.twoD ? glm::dvec3(0, e.q.y - e.p.y, 0) : e.r - e.p;
+                    cellArray(s, stored, number, state, {e.p, du, dv, e.columns, e.rows},
+                              [&](std::size_t k) { return Colour::indexed(e.colourIndices[k]); });
+                } else if constexpr (std::is_same_v<E, CellArrayPlusElement>) {
+                    cellArray(s, stored, number, state, {e.p, e.q - e.p, e.r - e.p, e.columns, e.rows},
+                              [&](std::size_t k) { return e.colours[k]; });
+                } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>) {
+                    polylineSet(s, number, state, e);
+                } else if constexpr (std::is_same_v<E, SetOfFillAreaSetsElement>) {
+                    for (std::size_t k = 0; k < e.sets.size(); ++k) fillAreaSetOfSet(s, number, state, e, k);
                 } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
                     curve(
                         s, stored, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
@@ -735,8 +766,8 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                     if (e.points.size() < 3) return;
-                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
-                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
+                    auto mesh = cachedMesh(stored, state, e.vertexColours, [&] {
+                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
                         for (std::uint32_t k = 0; k + 2 < e.points.size(); ++k)
                             if (k % 2 == 0)
                                 m.triangles.insert(m.triangles.end(), {k, k + 1, k + 2});
@@ -749,8 +780,8 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                     if (e.rows < 2 || e.columns < 2) return;
-                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
-                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
+                    auto mesh = cachedMesh(stored, state, e.vertexColours, [&] {
+                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
                         auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * e.columns + c); };
                         for (int r = 0; r + 1 < e.rows; ++r)
                             for (int c = 0; c + 1 < e.columns; ++c) {
@@ -846,20 +877,35 @@ private:
     }
 
     MeshData meshData(const std::vector<glm::dvec3>& points, const std::vector<Colour>& colours,
-                      const std::vector<glm::dvec3>& normals) const {
+                      const std::vector<glm::dvec3>& normals, const State& state) const {
         MeshData m;
         for (const auto& p : points) m.positions.push_back(glm::vec3(p));
         for (const auto& n : normals)
             m.normals.push_back(glm::vec3(glm::length(n) > 0 ? glm::normalize(n) : n));
-        m.colours = resolveColours(colours);
+        m.colours = resolveColours(colours, state);
         return m;
     }
 
+    /// The cache key of a mesh whose colours are resolved at build: they depend on the tables
+    /// when one is indexed or the colour mapping entry changes colours (its index is part of
+    /// the key then).
+    TessellationCache::Key meshKey(const StoredElement& stored, const State& state, bool indexed,
+                                   bool coloured) const {
+        const bool mapped = coloured && resolve_.maps(state.colourMapIndex);
+        return {stored.serial,
+                0,
+                0,
+                0,
+                0,
+                mapped ? state.colourMapIndex : 0,
+                0,
+                indexed || mapped ? tables_.generation + 1 : 0};
+    }
+
     template <class Build>
-    std::shared_ptr<const MeshData> cachedMesh(const StoredElement& stored,
+    std::shared_ptr<const MeshData> cachedMesh(const StoredElement& stored, const State& state,
                                                const std::vector<Colour>& colours, Build build) {
-        TessellationCache::Key key{
-            stored.serial, 0, 0, 0, 0, 0, 0, anyIndexed(colours) ? tables_.generation + 1 : 0};
+        TessellationCache::Key key = meshKey(stored, state, anyIndexed(colours), !colours.empty());
         return cache_
             .get(key, TessellationCache::Kind::Mesh,
                  [&] {
@@ -870,26 +916,31 @@ private:
             .mesh;
     }
 
+    /// Where the cells of a cell array lie: corner `p`, a row along `du`, a column along `dv`.
+    struct CellGrid {
+        glm::dvec3 p, du, dv;
+        int columns, rows;
+    };
+
+    /// A cell array as a mesh of coloured quadrilaterals; `colourOf(k)` is cell k's colour (row by
+    /// row). The colours depend on the colour table and the mapping entry, so the key does too.
+    template <class ColourOf>
     void cellArray(const Structure& s, const StoredElement& stored, int number, const State& state,
-                   const CellArrayElement& e) {
-        if (e.columns < 1 || e.rows < 1) return;
-        TessellationCache::Key key{stored.serial, 0, 0, 0, 0, 0, 0, tables_.generation + 1};
+                   const CellGrid& g, ColourOf colourOf) {
+        if (g.columns < 1 || g.rows < 1) return;
+        const TessellationCache::Key key = meshKey(stored, state, true, true);
         auto mesh = cache_
                         .get(key, TessellationCache::Kind::Mesh,
                              [&] {
-                                 // P, Q, R: P and Q opposite corners (2D), or P, Q along the first row, R
-                                 // along the first column (3D).
-                                 glm::dvec3 du = e.twoD ? glm::dvec3(e.q.x - e.p.x, 0, 0) : e.q - e.p;
-                                 glm::dvec3 dv = e.twoD ? glm::dvec3(0, e.q.y - e.p.y, 0) : e.r - e.p;
                                  MeshData m;
-                                 for (int r = 0; r < e.rows; ++r)
-                                     for (int c = 0; c < e.columns; ++c) {
-                                         glm::vec3 colour = resolve_.rgb(Colour::indexed(
-                                             e.colourIndices[static_cast<std::size_t>(r * e.columns + c)]));
+                                 for (int r = 0; r < g.rows; ++r)
+                                     for (int c = 0; c < g.columns; ++c) {
+                                         glm::vec3 colour = resolve_.rgb(
+                                             colourOf(static_cast<std::size_t>(r * g.columns + c)), state);
                                          auto base = static_cast<std::uint32_t>(m.positions.size());
                                          for (auto [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-                                             glm::dvec3 p = e.p + du * (double(c + a) / e.columns) +
-                                                            dv * (double(r + b) / e.rows);
+                                             glm::dvec3 p = g.p + g.du * (double(c + a) / g.columns) +
+                                                            g.dv * (double(r + b) / g.rows);
                                              m.positions.push_back(glm::vec3(p));
                                              m.colours.push_back(colour);
                                          }
@@ -904,6 +955,97 @@ private:
         InteriorStyleSet interior = resolve_.interior(state);
         interior.style = InteriorStyle::Solid;
         emit(s, number, state, DrawMesh{mesh, nullptr, interior, EdgeStyle{}, resolve_.line(state)});
+    }
+
+    /// POLYLINE SET 3 WITH DATA: a polyline per member; with vertex colours a segment takes the
+    /// colour of its first vertex (polyline shading NONE, ISO/IEC 9592-4), and each run of
+    /// segments of one colour is one polyline.
+    void polylineSet(const Structure& s, int number, const State& state,
+                     const PolylineSetWithDataElement& e) {
+        const LineStyle style = resolve_.line(state);
+        for (std::size_t i = 0; i < e.polylines.size(); ++i) {
+            const auto& points = e.polylines[i];
+            if (points.size() < 2) continue;
+            if (e.vertexColours.empty()) {
+                emit(s, number, state, DrawPolyline{points, style});
+                continue;
+            }
+            const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
+            for (std::size_t start = 0; start + 1 < points.size();) {
+                std::size_t end = start + 1;
+                while (end + 1 < points.size() && colours[end] == colours[start]) ++end;
+                LineStyle run = style;
+                run.colour = colours[start];
+                emit(s, number, state,
+                     DrawPolyline{
+                         std::vector<glm::dvec3>(points.begin() + static_cast<std::ptrdiff_t>(start),
+                                                 points.begin() + static_cast<std::ptrdiff_t>(end) + 1),
+                         run});
+                start = end;
+            }
+        }
+    }
+
+    /// Set `k` of a SET OF FILL AREA SETS 3 WITH DATA as one fill area set (contours of fewer than
+    /// three vertices dropped). With edge data, the edges whose flag is on are drawn as polylines in
+    /// the edge style (when the edge flag is on) and the fill area draws none itself.
+    void fillAreaSetOfSet(const Structure& s, int number, const State& state,
+                          const SetOfFillAreaSetsElement& e, std::size_t k) {
+        DrawFillArea f;
+        fillStyle(f, state);
+        const bool edgeData = !e.edgeFlags.empty() && f.edges.visible;
+        std::vector<std::vector<glm::dvec3>> edges;
+        for (std::size_t c = 0; c < e.sets[k].size(); ++c) {
+            const std::vector<int>& contour = e.sets[k][c];
+            if (contour.size() < 3) continue;
+            std::vector<glm::dvec3> points;
+            std::vector<Colour> colours;
+            std::vector<glm::dvec3> normals;
+            for (int v : contour) {
+                const auto i = static_cast<std::size_t>(v);
+                points.push_back(e.vertices[i]);
+                if (!e.vertexColours.empty()) colours.push_back(e.vertexColours[i]);
+                if (!e.vertexNormals.empty()) normals.push_back(e.vertexNormals[i]);
+            }
+            if (edgeData) visibleEdges(points, e.edgeFlags[k][c], edges);
+            f.contours.push_back(std::move(points));
+            if (!colours.empty()) f.vertexColours.push_back(resolveColours(colours, state));
+            if (!normals.empty()) f.vertexNormals.push_back(std::move(normals));
+        }
+        if (f.contours.empty()) return;
+        if (!e.facetColours.empty()) f.interior.colour = resolve_.rgb(e.facetColours[k], state);
+        if (!e.facetNormals.empty()) f.facetNormal = e.facetNormals[k];
+        const EdgeStyle edgeStyle = f.edges;
+        if (edgeData) f.edges.visible = false;
+        emit(s, number, state, std::move(f));
+        for (auto& line : edges)
+            emit(s, number, state,
+                 DrawPolyline{std::move(line), {edgeStyle.colour, edgeStyle.type, edgeStyle.width}});
+    }
+
+    /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from
+    /// vertex j to vertex j + 1, the last back to the first).
+    static void visibleEdges(const std::vector<glm::dvec3>& points, const std::vector<int>& flags,
+                             std::vector<std::vector<glm::dvec3>>& out) {
+        const std::size_t n = points.size();
+        std::size_t first = 0;  // start after an off edge, so a run never wraps mid-way
+        while (first < n && flags[first] != 0) ++first;
+        if (first == n) {  // every edge on: one closed polyline
+            out.emplace_back(points).push_back(points[0]);
+            return;
+        }
+        std::vector<glm::dvec3> run;
+        for (std::size_t step = 1; step <= n; ++step) {
+            const std::size_t j = (first + step) % n;
+            if (flags[j] != 0) {
+                if (run.empty()) run.push_back(points[j]);
+                run.push_back(points[(j + 1) % n]);
+            } else if (!run.empty()) {
+                out.push_back(std::move(run));
+                run.clear();
+            }
+        }
+        if (!run.empty()) out.push_back(std::move(run));
     }
 
     const StructureStore& store_;

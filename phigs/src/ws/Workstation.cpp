@@ -371,6 +371,11 @@ void Workstation::setDepthCueRepresentation(int index, const DepthCue& cue) {
     changed();
 }
 
+void Workstation::setColourMappingRepresentation(int index, const ColourMapping& mapping) {
+    tables_.colourMappings.set(index, mapping, log_, "SET COLOUR MAPPING REPRESENTATION");
+    changed();
+}
+
 void Workstation::setHlhsrMode(int mode) {
     const auto& modes = description_.hlhsrModes;
     if (std::find(modes.begin(), modes.end(), mode) == modes.end())

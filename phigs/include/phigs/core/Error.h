@@ -55,6 +55,8 @@ inline constexpr int ColourIndexBelowZero = 113;
 inline constexpr int ViewIndexBelowZero = 114;
 inline constexpr int ViewIndexBelowOne = 115;
 inline constexpr int BadColour = 118;
+inline constexpr int ColourMappingIndexBelowZero = 121;      ///< PHIGS PLUS
+inline constexpr int ColourMappingMethodNotAvailable = 126;  ///< PHIGS PLUS
 inline constexpr int ViewTableFull = 150;
 inline constexpr int InvalidWindow = 151;
 inline constexpr int InvalidViewport = 152;
@@ -101,9 +103,10 @@ inline constexpr int MissingInArchive = 407;              ///< warning
 inline constexpr int MissingInArchiveCreatedEmpty = 408;  ///< warning: RETRIEVE made them empty
 inline constexpr int StorageOverflow = 900;  ///< an answer would exceed the implementation's limits
 inline constexpr int WriteError = 903;
-inline constexpr int StructureCycle = -201;      ///< execute structure would make the network cyclic
-inline constexpr int InvalidElementData = -202;  ///< element contents break the primitive's rules
-inline constexpr int NetworkTooDeep = -203;      ///< more nested executes than kMaxNetworkDepth
+inline constexpr int StructureCycle = -201;        ///< execute structure would make the network cyclic
+inline constexpr int InvalidElementData = -202;    ///< element contents break the primitive's rules
+inline constexpr int NetworkTooDeep = -203;        ///< more nested executes than kMaxNetworkDepth
+inline constexpr int BadColourMappingData = -207;  ///< a colour mapping data record breaks its method's rules
 }  // namespace errors
 
 }  // namespace phigs

@@ -44,6 +44,9 @@ enum class ElementType : int {
     FillAreaSetWithData,
     TriangleStrip,
     QuadrilateralMesh,
+    PolylineSetWithData,
+    CellArrayPlus,
+    SetOfFillAreaSetsWithData,
     PolylineIndex,
     PolymarkerIndex,
     TextIndex,
@@ -95,6 +98,7 @@ enum class ElementType : int {
     LightSourceState,
     DepthCueIndex,
     ColourMappingIndex,
+    RenderingColourModel,
     AddNamesToSet,
     RemoveNamesFromSet,
     LocalModellingTransformation3,
@@ -229,13 +233,39 @@ struct QuadrilateralMeshElement {
     std::vector<glm::dvec3> vertexNormals;
     bool operator==(const QuadrilateralMeshElement&) const = default;
 };
+/// POLYLINE SET 3 WITH DATA (PHIGS PLUS): polylines, optionally a colour at every vertex.
+struct PolylineSetWithDataElement {
+    std::vector<std::vector<glm::dvec3>> polylines;
+    std::vector<std::vector<Colour>> vertexColours;  ///< empty, or one list per polyline, one per vertex
+    bool operator==(const PolylineSetWithDataElement&) const = default;
+};
+/// CELL ARRAY 3 PLUS (PHIGS PLUS): CELL ARRAY 3 with general colours (indexed or direct), row by row.
+struct CellArrayPlusElement {
+    glm::dvec3 p{0.0}, q{1, 0, 0}, r{0, 1, 0};
+    int columns = 0, rows = 0;
+    std::vector<Colour> colours;  ///< columns * rows
+    bool operator==(const CellArrayPlusElement&) const = default;
+};
+/// SET OF FILL AREA SETS 3 WITH DATA (PHIGS PLUS): fill area sets whose contours index one shared
+/// vertex list; optional facet data per set, edge visibility per contour edge, vertex data.
+struct SetOfFillAreaSetsElement {
+    std::vector<glm::dvec3> vertices;
+    std::vector<Colour> vertexColours;                ///< empty, or one per vertex
+    std::vector<glm::dvec3> vertexNormals;            ///< empty, or one per vertex
+    std::vector<std::vector<std::vector<int>>> sets;  ///< set, contour, 0-based vertex index
+    std::vector<Colour> facetColours;                 ///< empty, or one per set
+    std::vector<glm::dvec3> facetNormals;             ///< empty, or one per set
+    /// empty, or shaped as `sets`: flag k (0 off, 1 on) is the edge from vertex k to k + 1 (cyclic)
+    std::vector<std::vector<std::vector<int>>> edgeFlags;
+    bool operator==(const SetOfFillAreaSetsElement&) const = default;
+};
 
 // ---- attributes
 
 /// Every attribute whose value is one integer: bundle indices, linetype, marker type, font,
 /// precision, text path, interior style (index), shading and reflectance methods, edge flag,
 /// edgetype, face modes, depth cue and colour mapping indices, view index, pick id, HLHSR id,
-/// annotation style, model clipping indicator.
+/// annotation style, model clipping indicator, rendering colour model.
 struct IndexAttribute {
     ElementType type = ElementType::PolylineIndex;
     int value = 1;
@@ -410,7 +440,8 @@ struct GseElement {
 using Element =
     std::variant<PolylineElement, PolymarkerElement, FillAreaElement, FillAreaSetElement, TextElement,
                  AnnotationTextElement, CellArrayElement, NurbsCurveElement, NurbsSurfaceElement,
-                 FillAreaSetWithDataElement, TriangleStripElement, QuadrilateralMeshElement, IndexAttribute,
+                 FillAreaSetWithDataElement, TriangleStripElement, QuadrilateralMeshElement,
+                 PolylineSetWithDataElement, CellArrayPlusElement, SetOfFillAreaSetsElement, IndexAttribute,
                  RealAttribute, ColourAttribute, UpVectorAttribute, AlignmentAttribute,
                  AreaPropertiesAttribute, AsfAttribute, ApproximationAttribute,
                  SurfaceCharacteristicsAttribute, LightSourceStateAttribute, TransformElement,

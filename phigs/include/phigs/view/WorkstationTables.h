@@ -3,6 +3,7 @@
 #include "phigs/core/Attributes.h"
 #include "phigs/core/ErrorLog.h"
 #include "phigs/store/Element.h"
+#include "phigs/view/ColourMappingTable.h"
 #include "phigs/view/ViewTable.h"
 
 #include <glm/vec3.hpp>
@@ -104,7 +105,7 @@ private:
 };
 
 /// Everything of a workstation that traversal reads: colour, bundle, view, light and depth cue
-/// tables and the HLHSR mode. `generation` changes whenever any of them changes.
+/// tables, the colour mapping table and the HLHSR mode. `generation` changes whenever any of them changes.
 struct WorkstationTables {
     ColourTable colours;
     BundleTable<PolylineBundle> polylines;
@@ -115,6 +116,7 @@ struct WorkstationTables {
     ViewTable views;
     std::map<int, Light> lights;        ///< light source table (PHIGS PLUS); 1: white ambient
     std::map<int, DepthCue> depthCues;  ///< depth cue table (PHIGS PLUS); 0: suppressed
+    ColourMappingTable colourMappings;  ///< colour mapping table (PHIGS PLUS); 0: TRUE
     int hlhsrMode = 0;                  ///< 0 none, 1 z-buffer
     glm::dvec3 windowMin{0.0}, windowMax{1.0};
     glm::dvec3 viewportMin{0.0}, viewportMax{1.0};

@@ -123,6 +123,9 @@ public:
     void setViewTransformationInputPriority(int index, int reference, bool higher);
     void setLightSourceRepresentation(int index, const Light& light);
     void setDepthCueRepresentation(int index, const DepthCue& cue);
+    /// SET COLOUR MAPPING REPRESENTATION (errors of ColourMappingTable::set); like every table
+    /// change it shows when the picture is regenerated (the deferral mode says when).
+    void setColourMappingRepresentation(int index, const ColourMapping& mapping);
     /// SET HLHSR MODE: 0 none, 1 z-buffer (error 111 for others).
     void setHlhsrMode(int mode);
     /// SET WORKSTATION WINDOW 3 (NPC; errors 151, 156) and VIEWPORT 3 (device coordinates; 152, 157).
