@@ -169,6 +169,12 @@ const std::map<int, const char*>& names() {
         {Pfn_set_para_surf_characs, "SET PARAMETRIC SURFACE CHARACTERISTICS"},
         {Pfn_set_dcue_ind, "SET DEPTH CUE INDEX"},
         {Pfn_set_colr_map_ind, "SET COLOUR MAPPING INDEX"},
+        {Pfn_set_line_rep_plus, "SET POLYLINE REPRESENTATION PLUS"},
+        {Pfn_set_marker_rep_plus, "SET POLYMARKER REPRESENTATION PLUS"},
+        {Pfn_set_text_rep_plus, "SET TEXT REPRESENTATION PLUS"},
+        {Pfn_set_int_rep_plus, "SET INTERIOR REPRESENTATION PLUS"},
+        {Pfn_set_edge_rep_plus, "SET EDGE REPRESENTATION PLUS"},
+        {Pfn_set_pat_rep_plus, "SET PATTERN REPRESENTATION PLUS"},
         {Pfn_set_light_src_rep, "SET LIGHT SOURCE REPRESENTATION"},
         {Pfn_set_dcue_rep, "SET DEPTH CUE REPRESENTATION"},
     };

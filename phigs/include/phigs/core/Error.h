@@ -55,6 +55,7 @@ inline constexpr int ColourIndexBelowZero = 113;
 inline constexpr int ViewIndexBelowZero = 114;
 inline constexpr int ViewIndexBelowOne = 115;
 inline constexpr int BadColour = 118;
+inline constexpr int BadDirectColour = 136;  ///< a direct colour component outside its model's range
 inline constexpr int ViewTableFull = 150;
 inline constexpr int InvalidWindow = 151;
 inline constexpr int InvalidViewport = 152;
