@@ -1,8 +1,14 @@
-// Bundle tables: polymarker, text and interior representations set on the workstation, selected
-// by the bundle index elements and used only for the aspects whose source flag says BUNDLED.
+// Bundle tables: polyline, polymarker, text and interior representations (with the PHIGS PLUS
+// entries: general colours, approximation criteria) set on the workstation, selected by the
+// bundle index elements and used only for the aspects whose source flag says BUNDLED.
+#include "ErrorNumber.h"
 #include "phigs/Phigs.h"
+#include "phigs/ws/Realization.h"
+#include "phigs/ws/WorkstationErrors.h"
 
 #include <catch2/catch.hpp>
+
+#include <random>
 
 using namespace phigs;
 
@@ -165,4 +171,82 @@ TEST_CASE("interior bundle: style, style index, colours, shading and reflectance
     CHECK(interior(2).style == InteriorStyle::Solid);
     CHECK(interior(2).colour == colour6);
     CHECK(interior(2).styleIndex == 4);  // still bundled
+}
+
+TEST_CASE("polyline bundle (PHIGS PLUS): a direct colour and the curve approximation criteria when bundled",
+          "[traverse][bundles]") {
+    std::mt19937 random(19);
+    const Element cubic =
+        NurbsCurveElement{geom::Curve(3, {0, 0, 0, 0, 1, 1, 1, 1},
+                                      {{0.1, 0.1, 0}, {0.3, 0.9, 0}, {0.6, 0.9, 0}, {0.9, 0.1, 0}}),
+                          0, 0};
+    const Element line = polyline3({{0.1, 0.5, 0}, {0.9, 0.5, 0}});
+    for (int round = 0; round < 20; ++round) {
+        Scene s;
+        const int individualSegments = int(random() % 40) + 1, bundledSegments = int(random() % 40) + 1;
+        const glm::dvec3 rgb(double(random() % 101) / 100, double(random() % 101) / 100, 0.5);
+        PolylineBundle b{LineType::Dotted, 2.0, Colour::fromRgb(rgb)};
+        b.shading = ShadingMethod::Colour;
+        b.approximation = {ElementType::CurveApproximationCriteria, 2, double(bundledSegments),
+                           double(bundledSegments)};
+        s.ws->setPolylineRepresentation(3, b);
+        const DrawList& list = s.show({
+            IndexAttribute{ElementType::PolylineIndex, 3},
+            ApproximationAttribute{ElementType::CurveApproximationCriteria, 2, double(individualSegments),
+                                   double(individualSegments)},
+            cubic,  // all individual
+            bundled(AspectId::CurveApproximation),
+            bundled(AspectId::PolylineColour),
+            bundled(AspectId::LineType),
+            cubic,
+            line,
+        });
+        REQUIRE(list.items.size() == 3);
+        const DrawCurve& first = std::get<DrawCurve>(list.items[0].primitive);
+        const DrawCurve& second = std::get<DrawCurve>(list.items[1].primitive);
+        INFO("segments " << individualSegments << " and " << bundledSegments);
+        CHECK(first.points.size() == std::size_t(individualSegments) + 1);  // one span
+        CHECK(first.style.colour == glm::vec3(1.0f));
+        CHECK(second.points.size() == std::size_t(bundledSegments) + 1);
+        CHECK(second.style.colour == glm::vec3(rgb));
+        CHECK(second.style.type == LineType::Dotted);
+        CHECK(std::get<DrawPolyline>(list.items[2].primitive).style.colour == glm::vec3(rgb));
+    }
+}
+
+TEST_CASE("bundle colours are general colours: an index >= 0 or RGB within [0, 1], checked first",
+          "[ws][bundles][errors]") {
+    Scene s;
+    const PolylineBundle before = s.ws->tables().polylines.get(2);
+    using test::errorOf;
+    CHECK(errorOf([&] {
+              s.ws->setPolylineRepresentation(2, {LineType::Solid, 1, Colour::fromRgb({0.5, 1.25, 0})});
+          }) == errors::BadDirectColour);
+    PolylineBundle shaded;
+    shaded.shading = ShadingMethod::DotProduct;  // polylines shade NONE or COLOUR only
+    CHECK(errorOf([&] { s.ws->setPolylineRepresentation(2, shaded); }) ==
+          errors::PolylineShadingNotAvailable);
+    CHECK(s.ws->tables().polylines.get(2) == before);
+    InteriorBundle interior;
+    interior.backProperties.specularColour = Colour::indexed(-3);
+    CHECK(errorOf([&] { s.ws->setInteriorRepresentation(2, interior); }) == errors::ColourIndexBelowZero);
+    interior.backProperties.specularColour = Colour::fromRgb({0, 0, -0.5});
+    CHECK(errorOf([&] { s.ws->setInteriorRepresentation(2, interior); }) == errors::BadDirectColour);
+    interior.backProperties.specularColour = Colour::indexed(9);
+    interior.backShading = ShadingMethod(7);
+    CHECK(errorOf([&] { s.ws->setInteriorRepresentation(2, interior); }) ==
+          errors::InteriorShadingNotAvailable);
+    interior.backShading = ShadingMethod::Colour;
+    interior.reflectance = ReflectanceModel(0);
+    CHECK(errorOf([&] { s.ws->setInteriorRepresentation(2, interior); }) == errors::ReflectanceNotAvailable);
+    interior.reflectance = ReflectanceModel::Diffuse;
+    s.ws->setInteriorRepresentation(2, interior);
+    CHECK(s.ws->tables().interiors.get(2) == interior);
+    PatternRepresentation pattern{1, 2, {Colour::fromRgb({0.2, 0.4, 0.6}), Colour::fromRgb({1.5, 0, 0})}};
+    CHECK(errorOf([&] { s.ws->setPatternRepresentation(3, pattern); }) == errors::BadDirectColour);
+    pattern.colours[1] = Colour::indexed(40);
+    s.ws->setPatternRepresentation(3, pattern);
+    const PatternRepresentation drawn = realized(*s.ws->patterns().find(3), s.ws->tables().colours);
+    CHECK(drawn.colours[0] == pattern.colours[0]);  // direct colours as given
+    CHECK(drawn.colours[1] == Colour::indexed(1));  // an undefined index as 1
 }

@@ -165,9 +165,10 @@ TEST_CASE("representation errors in the standard's order leave the tables unchan
     CHECK(errorOf([&] { ws.setInteriorRepresentation(2, pattern); }) == errors::PatternIndexBelowOne);
     CHECK(errorOf([&] { ws.setPatternRepresentation(0, {}); }) == errors::PatternIndexBelowOne);
     CHECK(errorOf([&] {
-              ws.setPatternRepresentation(3, {2, 2, {1, 1, 1}});
+              ws.setPatternRepresentation(3, PatternRepresentation::indexed(2, 2, {1, 1, 1}));
           }) == errors::BadPatternDimensions);
-    CHECK(errorOf([&] { ws.setPatternRepresentation(3, {1, 1, {-2}}); }) == errors::ColourIndexBelowZero);
+    CHECK(errorOf([&] { ws.setPatternRepresentation(3, PatternRepresentation::indexed(1, 1, {-2})); }) ==
+          errors::ColourIndexBelowZero);
     for (int i = 3; i <= ws.description().patternTableSize; ++i) ws.setPatternRepresentation(i, {});
     CHECK(errorOf([&] { ws.setPatternRepresentation(99, {}); }) == errors::BundleTableFull);
     CHECK(ws.patterns().find(99) == nullptr);
@@ -197,7 +198,8 @@ TEST_CASE("realized representations: widths and sizes within the facilities, str
         CHECK(realized(TextBundle{1, int(random() % 3), 1, 0, Colour::indexed(1)}, d, colours).precision ==
               2);
     }
-    CHECK(realized(PatternRepresentation{2, 1, {3, 99}}, colours).colourIndices == std::vector<int>{3, 1});
+    CHECK(realized(PatternRepresentation::indexed(2, 1, {3, 99}), colours) ==
+          PatternRepresentation::indexed(2, 1, {3, 1}));
 }
 
 TEST_CASE("a pick traversal in a deferred state reads the views of the picture shown", "[ws][state]") {

@@ -2069,6 +2069,134 @@ void pinq_colr_map_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, 
                         Pcolr_map_facs* facs, Pint* num_elems_impl_list);
 void pinq_colr_map_method_facs(Pint ws_type, Pint map_method, Pint* err_ind, Pcolr_map_st* map_st);
 
+/* ---- PHIGS PLUS bundles: the extended polyline, polymarker, text, interior, edge and pattern
+ * representations. One table per kind holds both views: pset_*_rep sets an entry with an
+ * indexed colour (PINDIRECT) and the PHIGS PLUS fields at their defaults (shading PSD_NONE,
+ * reflectance PREFL_NONE, approximation PCURV_WS_DEP / PSURF_WS_DEP with value 1, the back face
+ * as the front); pinq_*_rep of an entry whose colour is direct answers 134. Colours are
+ * PINDIRECT or PMODEL_RGB (any other type: 110); errors 100 (index < 1; 112 for patterns), 103
+ * (table full), 113 (an index < 0), 136 (a direct component outside [0, 1]), 104 .. 108 as the
+ * plain functions, 122 polyline shading method, 123 interior shading method and 124 reflectance
+ * equation not available. PINQ_REALIZED answers as the plain inquiries do (undefined index:
+ * entry 1; undefined colour index: 1); the PHIGS PLUS fields as set. */
+typedef struct {
+    Pint type;
+    Pfloat width;
+    Pgcolr colr;
+    Pint shad_meth;   /* PSD_NONE or PSD_COLOUR */
+    Pint approx_type; /* curve approximation criteria (PCURV_*) and its value */
+    Pfloat approx_val;
+} Pline_bundle_plus;
+typedef struct {
+    Pint type;
+    Pfloat size;
+    Pgcolr colr;
+} Pmarker_bundle_plus;
+typedef struct {
+    Pint font;
+    Ptext_prec prec;
+    Pfloat char_expan;
+    Pfloat char_space;
+    Pgcolr colr;
+} Ptext_bundle_plus;
+typedef struct {
+    Pint_style style;
+    Pint style_ind;
+    Pgcolr colr;
+    Pint refl_eqn;  /* PREFL_* */
+    Pint shad_meth; /* PSD_* */
+    Prefl_props refl_props;
+    Pint_style back_style;
+    Pint back_style_ind;
+    Pgcolr back_colr;
+    Pint back_refl_eqn;
+    Pint back_shad_meth;
+    Prefl_props back_refl_props;
+    Pint approx_type; /* surface approximation criteria (PSURF_*) and its u and v values */
+    Pfloat approx_val[2];
+} Pint_bundle_plus;
+typedef struct {
+    Pedge_flag flag;
+    Pint type;
+    Pfloat width;
+    Pgcolr colr;
+} Pedge_bundle_plus;
+/* A pattern of general colours: dims.size_x x dims.size_y cells, row by row, all of colour type
+ * `type` (PINDIRECT: colr_array[i].ind; PMODEL_RGB: colr_array[i].direct). */
+typedef struct {
+    Pint_size dims;
+    Pint type;
+    Pcoval* colr_array;
+} Ppat_rep_plus;
+/* Facilities: the line types and the polyline shading methods; the interior styles, hatch styles,
+ * reflectance equations and interior shading methods (each a simple list of its own). */
+typedef struct {
+    Pint_list types;
+    Pint num_widths; /* 0: continuous */
+    Pfloat nom_width, min_width, max_width;
+    Pint num_pred_inds;
+    Pint_list shads;
+} Pline_facs_plus;
+typedef struct {
+    Pint num_int_styles;
+    Pint_style* int_styles;
+    Pint_list hatch_styles;
+    Pint num_pred_inds;
+    Pint_list refl_eqns;
+    Pint_list shad_meths;
+} Pint_facs_plus;
+/* Table lengths with the depth cue, light source and colour mapping tables; their dynamics. */
+typedef struct {
+    Pint line_bundles, mark_bundles, text_bundles, int_bundles, edge_bundles, pat_reps, colr_reps, view_reps;
+    Pint dcue_rep, light_src_rep, colr_map_rep;
+} Pws_tables_plus;
+typedef struct {
+    Pdyn_mod light_src_rep, dcue_rep, colr_map_rep;
+} Pdyns_ws_attrs_plus;
+enum {
+    Pfn_set_line_rep_plus = 334,
+    Pfn_set_marker_rep_plus = 335,
+    Pfn_set_text_rep_plus = 336,
+    Pfn_set_int_rep_plus = 337,
+    Pfn_set_edge_rep_plus = 338,
+    Pfn_set_pat_rep_plus = 339
+};
+void pset_line_rep_plus(Pint ws_id, Pint line_ind, const Pline_bundle_plus* line_rep);
+void pset_marker_rep_plus(Pint ws_id, Pint marker_ind, const Pmarker_bundle_plus* marker_rep);
+void pset_text_rep_plus(Pint ws_id, Pint text_ind, const Ptext_bundle_plus* text_rep);
+void pset_int_rep_plus(Pint ws_id, Pint int_ind, const Pint_bundle_plus* int_rep);
+void pset_edge_rep_plus(Pint ws_id, Pint edge_ind, const Pedge_bundle_plus* edge_rep);
+void pset_pat_rep_plus(Pint ws_id, Pint pat_ind, const Ppat_rep_plus* pat_rep);
+void pinq_line_rep_plus(Pint ws_id, Pint line_ind, Pinq_type type, Pint* err_ind,
+                        Pline_bundle_plus* line_rep);
+void pinq_marker_rep_plus(Pint ws_id, Pint marker_ind, Pinq_type type, Pint* err_ind,
+                          Pmarker_bundle_plus* marker_rep);
+void pinq_text_rep_plus(Pint ws_id, Pint text_ind, Pinq_type type, Pint* err_ind,
+                        Ptext_bundle_plus* text_rep);
+void pinq_int_rep_plus(Pint ws_id, Pint int_ind, Pinq_type type, Pint* err_ind, Pint_bundle_plus* int_rep);
+void pinq_edge_rep_plus(Pint ws_id, Pint edge_ind, Pinq_type type, Pint* err_ind,
+                        Pedge_bundle_plus* edge_rep);
+/* The pattern lives in `store` (its colours too) until the store's next use. */
+void pinq_pat_rep_plus(Pint ws_id, Pint pat_ind, Pinq_type type, Pstore store, Pint* err_ind,
+                       Ppat_rep_plus** pat_rep);
+/* Predefined representations of a type (the plain ones' entries with indexed colours): 52 for an
+ * unknown type, 100 (112 for patterns) below 1, 102 past the last. */
+void pinq_pred_line_rep_plus(Pint ws_type, Pint line_ind, Pint* err_ind, Pline_bundle_plus* line_rep);
+void pinq_pred_marker_rep_plus(Pint ws_type, Pint marker_ind, Pint* err_ind, Pmarker_bundle_plus* marker_rep);
+void pinq_pred_text_rep_plus(Pint ws_type, Pint text_ind, Pint* err_ind, Ptext_bundle_plus* text_rep);
+void pinq_pred_int_rep_plus(Pint ws_type, Pint int_ind, Pint* err_ind, Pint_bundle_plus* int_rep);
+void pinq_pred_edge_rep_plus(Pint ws_type, Pint edge_ind, Pint* err_ind, Pedge_bundle_plus* edge_rep);
+void pinq_pred_pat_rep_plus(Pint ws_type, Pint pat_ind, Pstore store, Pint* err_ind, Ppat_rep_plus** pat_rep);
+/* Each list answers as a simple list (2201, 2200); int_styles must have room for is_length. */
+void pinq_line_facs_plus(Pint ws_type, Pint lt_length, Pint lt_start, Pint sm_length, Pint sm_start,
+                         Pint* err_ind, Pint* tot_lt_length, Pint* tot_sm_length, Pline_facs_plus* facs);
+void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_length, Pint hs_start,
+                        Pint re_length, Pint re_start, Pint sh_length, Pint sh_start, Pint* err_ind,
+                        Pint_facs_plus* facs, Pint* tot_is_length, Pint* tot_hs_length, Pint* tot_re_length,
+                        Pint* tot_sh_length);
+void pinq_ws_st_table_plus(Pint ws_type, Pint* err_ind, Pws_tables_plus* lengths);
+void pinq_dyns_ws_attrs_plus(Pint ws_type, Pint* err_ind, Pdyns_ws_attrs_plus* attrs);
+
 #ifdef __cplusplus
 }
 #endif

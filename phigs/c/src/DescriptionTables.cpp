@@ -6,8 +6,6 @@
 #include "StoreBuffer.h"
 #include "WorkstationAccess.h"
 #include "phigs.h"
-#include "phigs/ws/PredefinedRepresentations.h"
-#include "phigs/ws/WorkstationErrors.h"
 
 #include <cmath>
 #include <numeric>
@@ -27,22 +25,13 @@ std::vector<int> oneTo(int n) {
     return v;
 }
 
-/// A predefined entry, index from `first`: `below` under it, 102 past the last.
-template <class T>
-const T& predefined(const std::vector<T>& entries, Pint index, int first, int below) {
-    if (index < first) throw Error(below, "inquiry", "index " + std::to_string(index));
-    if (index - first >= static_cast<Pint>(entries.size()))
-        throw Error(errors::RepresentationNotPredefined, "inquiry", "index " + std::to_string(index));
-    return entries[static_cast<std::size_t>(index - first)];
-}
-
 /// Answers the predefined bundle `index` (from 1) of `ws_type`'s table `table` into `rep`.
 template <class T, class Bundle>
 void answerPredefinedBundle(Pint ws_type, std::vector<T> PredefinedRepresentations::*table, Pint index,
                             Pint* err, Bundle* rep) {
     inquire(err, [&](Phigs&) {
-        const T& b = predefined(predefinedRepresentations(described(ws_type).type).*table, index, 1,
-                                errors::BundleIndexBelowOne);
+        const T& b =
+            c::predefinedEntry(c::predefinedOf(ws_type).*table, index, 1, errors::BundleIndexBelowOne);
         if (rep) *rep = c::cBundle(b);
     });
 }
@@ -272,8 +261,8 @@ void pinq_pred_edge_rep(Pint ws_type, Pint index, Pint* err, Pedge_bundle* rep) 
 
 void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_rep** rep) {
     inquire(err, [&](Phigs&) {
-        const auto& p = predefined(predefinedRepresentations(described(ws_type).type).patterns, index, 1,
-                                   errors::PatternIndexBelowOne);
+        const auto& p =
+            c::predefinedEntry(c::predefinedOf(ws_type).patterns, index, 1, errors::PatternIndexBelowOne);
         Phigs_store& s = c::storeOf(store);
         c::require(rep, "INQUIRE PREDEFINED PATTERN REPRESENTATION");
         *rep = c::answerPattern(p, s);
@@ -282,16 +271,16 @@ void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_r
 
 void pinq_pred_colr_rep(Pint ws_type, Pint index, Pint* err, Pcolr_rep* rep) {
     inquire(err, [&](Phigs&) {
-        const auto& rgb = predefined(predefinedRepresentations(described(ws_type).type).colours, index, 0,
-                                     errors::ColourIndexBelowZero);
+        const auto& rgb =
+            c::predefinedEntry(c::predefinedOf(ws_type).colours, index, 0, errors::ColourIndexBelowZero);
         if (rep) *rep = c::cColour(rgb);
     });
 }
 
 void pinq_pred_view_rep(Pint ws_type, Pint index, Pint* err, Pview_rep3* rep) {
     inquire(err, [&](Phigs&) {
-        const auto& v = predefined(predefinedRepresentations(described(ws_type).type).views, index, 0,
-                                   errors::ViewIndexBelowZero);
+        const auto& v =
+            c::predefinedEntry(c::predefinedOf(ws_type).views, index, 0, errors::ViewIndexBelowZero);
         if (rep) *rep = c::viewRep3(v);
     });
 }

@@ -13,45 +13,14 @@ using phigs::c::inquire;
 
 namespace {
 
-/// PINQ_SET or PINQ_REALIZED (2202 otherwise).
-bool realizedWanted(const Pinq_type& type) {
-    const int t = c::raw(type);
-    if (t != PINQ_SET && t != PINQ_REALIZED)
-        throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "type of returned value");
-    return t == PINQ_REALIZED;
-}
-
-/// The bundle an INQUIRE ... REPRESENTATION answers: the entry as set (101 when not defined),
-/// or as realized (index 1's for an undefined index).
-template <class Table, class Out>
-void answerBundle(Phigs& p, Pint ws_id, Pint index, const Pinq_type& type, Out* rep,
-                  const Table& (*table)(const WorkstationTables&)) {
-    const Workstation& ws = c::inquiredWorkstation(p, ws_id);
-    if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry", "index " + std::to_string(index));
-    const bool realize = realizedWanted(type);
-    const Table& t = table(ws.tables());
-    if (!t.defined(index) && !realize)
-        throw Error(errors::RepresentationNotDefined, "inquiry", "index " + std::to_string(index));
-    const auto& bundle = t.get(index);
-    const auto answer =
-        c::cBundle(realize ? realized(bundle, ws.description(), ws.tables().colours) : bundle);
-    if (rep) *rep = answer;
-}
-
-const BundleTable<PolylineBundle>& lines(const WorkstationTables& t) {
-    return t.polylines;
-}
-const BundleTable<PolymarkerBundle>& markers(const WorkstationTables& t) {
-    return t.polymarkers;
-}
-const BundleTable<TextBundle>& texts(const WorkstationTables& t) {
-    return t.texts;
-}
-const BundleTable<InteriorBundle>& interiors(const WorkstationTables& t) {
-    return t.interiors;
-}
-const BundleTable<EdgeBundle>& edges(const WorkstationTables& t) {
-    return t.edges;
+/// INQUIRE ... REPRESENTATION of table `table` into `rep` (NULL: nothing is written).
+template <class Bundle, class Out>
+void answerBundle(Pint ws_id, Pint index, const Pinq_type& type, Pint* err, Out* rep,
+                  BundleTable<Bundle> WorkstationTables::*table) {
+    inquire(err, [&](Phigs& p) {
+        const Bundle b = c::inquiredBundle(p, ws_id, index, type, table);
+        if (rep) *rep = c::cBundle(b);
+    });
 }
 
 /// INQUIRE LIST OF ... INDICES: the defined indices of one table, ascending.
@@ -127,37 +96,31 @@ void pset_colr_model(Pint ws_id, Pint model) {
 }
 
 void pinq_line_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pline_bundle* rep) {
-    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, lines); });
+    answerBundle(ws_id, index, type, err, rep, &WorkstationTables::polylines);
 }
 
 void pinq_marker_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pmarker_bundle* rep) {
-    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, markers); });
+    answerBundle(ws_id, index, type, err, rep, &WorkstationTables::polymarkers);
 }
 
 void pinq_text_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Ptext_bundle* rep) {
-    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, texts); });
+    answerBundle(ws_id, index, type, err, rep, &WorkstationTables::texts);
 }
 
 void pinq_int_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pint_bundle* rep) {
-    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, interiors); });
+    answerBundle(ws_id, index, type, err, rep, &WorkstationTables::interiors);
 }
 
 void pinq_edge_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pedge_bundle* rep) {
-    inquire(err, [&](Phigs& p) { answerBundle(p, ws_id, index, type, rep, edges); });
+    answerBundle(ws_id, index, type, err, rep, &WorkstationTables::edges);
 }
 
 void pinq_pat_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err, Ppat_rep** rep) {
     inquire(err, [&](Phigs& p) {
-        const Workstation& ws = c::inquiredWorkstation(p, ws_id);
-        if (index < 1) throw Error(errors::PatternIndexBelowOne, "inquiry", "index " + std::to_string(index));
-        const bool realize = realizedWanted(type);
-        const PatternRepresentation* pattern = ws.patterns().find(index);
-        if (!pattern && realize) pattern = ws.patterns().find(1);
-        if (!pattern)
-            throw Error(errors::RepresentationNotDefined, "inquiry", "pattern " + std::to_string(index));
+        const PatternRepresentation pattern = c::inquiredPattern(p, ws_id, index, type);
         Phigs_store& s = c::storeOf(store);
         c::require(rep, "INQUIRE PATTERN REPRESENTATION");
-        *rep = c::answerPattern(realize ? realized(*pattern, ws.tables().colours) : *pattern, s);
+        *rep = c::answerPattern(pattern, s);
     });
 }
 
@@ -165,7 +128,7 @@ void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pcolr_rep*
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         if (index < 0) throw Error(errors::ColourIndexBelowZero, "inquiry", "index " + std::to_string(index));
-        const bool realize = realizedWanted(type);
+        const bool realize = c::realizedWanted(type);
         const ColourTable& colours = ws.tables().colours;
         if (!colours.defined(index) && !realize)
             throw Error(errors::RepresentationNotDefined, "inquiry", "colour " + std::to_string(index));

@@ -29,6 +29,8 @@ struct Phigs_store {
     // Workstation answers: a filter's two name sets and a pattern, their ints in `ints`.
     Pfilter filter{};
     Ppat_rep pattern{};
+    Ppat_rep_plus patternPlus{};  ///< its colours in `covals`
+    std::vector<Pcoval> covals;
     phigs::c::InputAnswer input;  ///< the input inquiries' answers
     std::vector<Pfloat> floats;   // PHIGS PLUS: knots
     std::vector<Ppoint4> points4;
@@ -59,7 +61,7 @@ struct Phigs_store {
         halfSpaces3.clear(), halfSpaces.clear(), text.clear();
         refs.clear(), refLists.clear(), paths = {};
         names.clear(), files.clear(), fileList = {};
-        filter = {}, pattern = {};
+        filter = {}, pattern = {}, patternPlus = {}, covals.clear();
         input = {};
         floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
         ptcolrs.clear(), ptnorms.clear(), ptconorms.clear(), vertexLists.clear();

@@ -35,6 +35,28 @@ Workstation& inquiredWorkstation(Phigs& p, Pint id) {
     return *ws;
 }
 
+bool realizedWanted(const Pinq_type& type) {
+    const int t = raw(type);
+    if (t != PINQ_SET && t != PINQ_REALIZED)
+        throw Error(PE_ENUM_TYPE_INVAL, "inquiry", "type of returned value");
+    return t == PINQ_REALIZED;
+}
+
+PatternRepresentation inquiredPattern(Phigs& p, Pint ws_id, Pint index, const Pinq_type& type) {
+    const Workstation& ws = inquiredWorkstation(p, ws_id);
+    if (index < 1) throw Error(errors::PatternIndexBelowOne, "inquiry", "index " + std::to_string(index));
+    const bool realize = realizedWanted(type);
+    const PatternRepresentation* pattern = ws.patterns().find(index);
+    if (!pattern && realize) pattern = ws.patterns().find(1);
+    if (!pattern)
+        throw Error(errors::RepresentationNotDefined, "inquiry", "pattern " + std::to_string(index));
+    return realize ? realized(*pattern, ws.tables().colours) : *pattern;
+}
+
+const PredefinedRepresentations& predefinedOf(Pint type) {
+    return predefinedRepresentations(workstationTypeOf(type, "inquiry"));
+}
+
 Plimit3 limit3(const glm::dvec3& min, const glm::dvec3& max) {
     return {static_cast<Pfloat>(min.x), static_cast<Pfloat>(max.x), static_cast<Pfloat>(min.y),
             static_cast<Pfloat>(max.y), static_cast<Pfloat>(min.z), static_cast<Pfloat>(max.z)};
@@ -57,8 +79,9 @@ Pview_rep3 viewRep3(const ViewRepresentation& v) {
 }
 
 Pint colourIndexOf(const Colour& colour) {
-    // A direct colour has no index: error 134 (the core's bundles may hold PHIGS PLUS colours).
-    if (colour.direct) throw Error(134, "inquiry", "the representation's colour is direct");
+    // A direct colour has no index: error 134 (the core's bundles hold PHIGS PLUS colours).
+    if (colour.direct)
+        throw Error(errors::NotIndirectColour, "inquiry", "the representation's colour is direct");
     return colour.index;
 }
 
@@ -97,7 +120,8 @@ PatternRepresentation corePattern(const Ppat_rep& p, const char* function) {
     if (p.dims.size_x < 1 || p.dims.size_y < 1) return r;  // error 116 in the table, after 112
     const std::size_t n = static_cast<std::size_t>(p.dims.size_x) * static_cast<std::size_t>(p.dims.size_y);
     require(p.colr_array, function);
-    r.colourIndices.assign(p.colr_array, p.colr_array + n);
+    r.colours.clear();
+    for (std::size_t i = 0; i < n; ++i) r.colours.push_back(Colour::indexed(p.colr_array[i]));
     return r;
 }
 
@@ -125,7 +149,7 @@ Pedge_bundle cBundle(const EdgeBundle& b) {
 
 Ppat_rep* answerPattern(const PatternRepresentation& p, Phigs_store& s) {
     s.clear();
-    s.ints.assign(p.colourIndices.begin(), p.colourIndices.end());
+    for (const Colour& c : p.colours) s.ints.push_back(colourIndexOf(c));
     s.pattern = {{p.columns, p.rows}, s.ints.data()};
     return &s.pattern;
 }

@@ -8,6 +8,9 @@
 #include "StoreBuffer.h"
 #include "phigs.h"
 #include "phigs/ws/PatternTable.h"
+#include "phigs/ws/PredefinedRepresentations.h"
+#include "phigs/ws/Realization.h"
+#include "phigs/ws/WorkstationErrors.h"
 
 #include <glm/vec3.hpp>
 
@@ -28,6 +31,40 @@ Workstation& inquiredWorkstation(Phigs& p, Pint id);
 template <class Body>
 void onOpenWorkstation(int function, Pint id, Body&& body) {
     Binding::instance().call(function, [&](Phigs& p) { body(p.workstation(id)); });
+}
+
+/// PINQ_SET or PINQ_REALIZED (2202 otherwise): whether the realized value is asked.
+bool realizedWanted(const Pinq_type& type);
+
+/// The bundle INQUIRE ... REPRESENTATION (PLUS) answers from table `table` of the open
+/// workstation `ws_id`: 100 for an index below 1; the entry as set (101 when not defined) or as
+/// realized (entry 1's for an undefined index).
+template <class Bundle>
+Bundle inquiredBundle(Phigs& p, Pint ws_id, Pint index, const Pinq_type& type,
+                      BundleTable<Bundle> WorkstationTables::*table) {
+    const Workstation& ws = inquiredWorkstation(p, ws_id);
+    if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry", "index " + std::to_string(index));
+    const bool realize = realizedWanted(type);
+    const BundleTable<Bundle>& t = ws.tables().*table;
+    if (!t.defined(index) && !realize)
+        throw Error(errors::RepresentationNotDefined, "inquiry", "index " + std::to_string(index));
+    return realize ? realized(t.get(index), ws.description(), ws.tables().colours) : t.get(index);
+}
+
+/// The pattern INQUIRE PATTERN REPRESENTATION (PLUS) answers, likewise (112 below 1).
+PatternRepresentation inquiredPattern(Phigs& p, Pint ws_id, Pint index, const Pinq_type& type);
+
+/// The predefined representations of the PWST_* type `type` (52 for another number).
+const PredefinedRepresentations& predefinedOf(Pint type);
+
+/// Entry `index` of a predefined list numbered from `first`: error `below` under it, 102 past
+/// the last.
+template <class T>
+const T& predefinedEntry(const std::vector<T>& entries, Pint index, int first, int below) {
+    if (index < first) throw Error(below, "inquiry", "index " + std::to_string(index));
+    if (index - first >= static_cast<Pint>(entries.size()))
+        throw Error(errors::RepresentationNotPredefined, "inquiry", "index " + std::to_string(index));
+    return entries[static_cast<std::size_t>(index - first)];
 }
 
 /// Limits between phigs.h and the core.
@@ -52,7 +89,7 @@ Pmarker_bundle cBundle(const PolymarkerBundle& b);
 Ptext_bundle cBundle(const TextBundle& b);
 Pint_bundle cBundle(const InteriorBundle& b);
 Pedge_bundle cBundle(const EdgeBundle& b);
-/// A pattern answered in `store` (its colour indices in store.ints).
+/// A pattern answered in `store` (its colour indices in store.ints; 134 when a colour is direct).
 Ppat_rep* answerPattern(const PatternRepresentation& p, Phigs_store& store);
 Pcolr_rep cColour(const glm::dvec3& rgb);
 

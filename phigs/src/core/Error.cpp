@@ -51,6 +51,15 @@ const std::map<int, const char*>& messages() {
         {118, "Ignoring function, one of the components of the colour specification is out of range"},
         {121, "Ignoring function, the colour mapping index value is less than zero"},
         {126, "Ignoring function, the specified colour mapping method is not available on the workstation"},
+        {122, "Ignoring function, the specified polyline shading method is not available on the workstation"},
+        {123, "Ignoring function, the specified interior shading method is not available on the workstation"},
+        {124,
+         "Ignoring function, the specified interior reflectance equation is not available on the "
+         "workstation"},
+        {134,
+         "Ignoring function, the requested entry contains a general colour specification with colour type "
+         "other than INDIRECT"},
+        {136, "Ignoring function, one of the components of the colour specification is out of range"},
         {150,
          "Ignoring function, setting this view table entry would exceed the maximum number of entries "
          "allowed in the workstation's view table"},

@@ -454,6 +454,10 @@ struct Resolver {
                 s.ind(AspectId::EdgeType) ? s.edgeType : b.type,
                 static_cast<float>(s.ind(AspectId::EdgewidthScale) ? s.edgeWidth : b.width)};
     }
+    ApproximationAttribute curveApproximation(const State& s) const {
+        return s.ind(AspectId::CurveApproximation) ? s.curveApproximation
+                                                   : t.polylines.get(s.polylineIndex).approximation;
+    }
     ApproximationAttribute surfaceApproximation(const State& s) const {
         return s.ind(AspectId::SurfaceApproximation) ? s.surfaceApproximation
                                                      : t.interiors.get(s.interiorIndex).approximation;
@@ -858,7 +862,7 @@ private:
     template <class Build>
     void curve(const Structure& s, const StoredElement& stored, int number, const State& state, Build build,
                double rangeStart, double rangeEnd) {
-        const ApproximationAttribute& a = state.curveApproximation;
+        const ApproximationAttribute a = resolve_.curveApproximation(state);
         TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
         const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
             TessellationCache::Entry built;

@@ -17,6 +17,18 @@ void ColourTable::set(int index, const glm::dvec3& rgb, ErrorLog* log) {
     entries_[index] = rgb;
 }
 
+void ColourTable::check(const Colour& colour, ErrorLog* log, const char* function) {
+    if (!colour.direct) {
+        if (colour.index < 0)
+            raise(log, errors::ColourIndexBelowZero, function,
+                  "colour index " + std::to_string(colour.index));
+        return;
+    }
+    for (int i = 0; i < 3; ++i)
+        if (!(colour.rgb[i] >= 0.0 && colour.rgb[i] <= 1.0))
+            raise(log, errors::BadDirectColour, function, "direct colour component " + std::to_string(i));
+}
+
 glm::dvec3 ColourTable::get(int index) const {
     auto it = entries_.find(index);
     return it != entries_.end() ? it->second : entries_.at(1);

@@ -29,7 +29,8 @@ PredefinedRepresentations make() {
         p.interiors.push_back(b);
     }
     p.edges = {EdgeBundle{}, {true, LineType::Solid, 1.0, white}, {true, LineType::Dashed, 1.0, white}};
-    p.patterns = {{2, 2, {0, 1, 1, 0}}, {4, 1, {1, 1, 0, 0}}};
+    p.patterns = {PatternRepresentation::indexed(2, 2, {0, 1, 1, 0}),
+                  PatternRepresentation::indexed(4, 1, {1, 1, 0, 0})};
     const ColourTable colours;
     for (int i : colours.definedIndices()) p.colours.push_back(colours.get(i));
     p.views = {ViewRepresentation{}};

@@ -43,6 +43,8 @@ InteriorBundle realized(const InteriorBundle& b, const WorkstationDescription&, 
     InteriorBundle r = b;
     r.colour = realizedColour(b.colour, c);
     r.backColour = realizedColour(b.backColour, c);
+    r.properties.specularColour = realizedColour(b.properties.specularColour, c);
+    r.backProperties.specularColour = realizedColour(b.backProperties.specularColour, c);
     return r;
 }
 
@@ -55,8 +57,7 @@ EdgeBundle realized(const EdgeBundle& b, const WorkstationDescription& d, const 
 
 PatternRepresentation realized(const PatternRepresentation& p, const ColourTable& c) {
     PatternRepresentation r = p;
-    for (int& index : r.colourIndices)
-        if (!c.defined(index)) index = 1;
+    for (Colour& colour : r.colours) colour = realizedColour(colour, c);
     return r;
 }
 

@@ -267,30 +267,37 @@ void checkLineType(LineType t, ErrorLog* log, const char* function, int error = 
 }  // namespace
 
 /// The checks every SET ... REPRESENTATION of a bundle makes first, in the standard's order:
-/// 100 (index < 1), 103 (a new entry beyond the table), 113 (a colour index < 0).
+/// 100 (index < 1), 103 (a new entry beyond the table), 113 and 136 (each general colour).
 template <class Table>
-void Workstation::checkBundle(const Table& table, int index, const Colour& colour,
+void Workstation::checkBundle(const Table& table, int index, std::initializer_list<Colour> colours,
                               const char* function) const {
     const std::string where = "index " + std::to_string(index);
     if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, where);
     if (!table.defined(index) &&
         static_cast<int>(table.definedIndices().size()) >= description_.bundleTableSize)
         raise(log_, errors::BundleTableFull, function, where);
-    if (!colour.direct && colour.index < 0)
-        raise(log_, errors::ColourIndexBelowZero, function, "colour index " + std::to_string(colour.index));
+    for (const Colour& colour : colours) ColourTable::check(colour, log_, function);
+}
+
+void Workstation::checkAvailable(const std::vector<int>& available, int method, int error,
+                                 const char* function) const {
+    if (std::find(available.begin(), available.end(), method) == available.end())
+        raise(log_, error, function, "method " + std::to_string(method));
 }
 
 void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bundle) {
     const char* function = "SET POLYLINE REPRESENTATION";
-    checkBundle(tables_.polylines, index, bundle.colour, function);
+    checkBundle(tables_.polylines, index, {bundle.colour}, function);
     checkLineType(bundle.type, log_, function);
+    checkAvailable(description_.polylineShadingMethods, static_cast<int>(bundle.shading),
+                   errors::PolylineShadingNotAvailable, function);
     tables_.polylines.set(index, bundle, log_, function);
     changed();
 }
 
 void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle) {
     const char* function = "SET POLYMARKER REPRESENTATION";
-    checkBundle(tables_.polymarkers, index, bundle.colour, function);
+    checkBundle(tables_.polymarkers, index, {bundle.colour}, function);
     if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > description_.markerTypes)
         raise(log_, errors::BadMarkerType, function, "type " + std::to_string(static_cast<int>(bundle.type)));
     tables_.polymarkers.set(index, bundle, log_, function);
@@ -299,7 +306,7 @@ void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle&
 
 void Workstation::setTextRepresentation(int index, const TextBundle& bundle) {
     const char* function = "SET TEXT REPRESENTATION";
-    checkBundle(tables_.texts, index, bundle.colour, function);
+    checkBundle(tables_.texts, index, {bundle.colour}, function);
     if (bundle.font < 1 || bundle.font > description_.textFonts || bundle.precision < 0 ||
         bundle.precision > 2)
         raise(log_, errors::TextFontNotAvailable, function,
@@ -310,7 +317,10 @@ void Workstation::setTextRepresentation(int index, const TextBundle& bundle) {
 
 void Workstation::setInteriorRepresentation(int index, const InteriorBundle& bundle) {
     const char* function = "SET INTERIOR REPRESENTATION";
-    checkBundle(tables_.interiors, index, bundle.colour, function);
+    checkBundle(tables_.interiors, index,
+                {bundle.colour, bundle.backColour, bundle.properties.specularColour,
+                 bundle.backProperties.specularColour},
+                function);
     for (InteriorStyle style : {bundle.style, bundle.backStyle})
         if (static_cast<int>(style) < 0 || static_cast<int>(style) >= description_.interiorStyles)
             raise(log_, errors::BadInteriorStyle, function,
@@ -318,13 +328,19 @@ void Workstation::setInteriorRepresentation(int index, const InteriorBundle& bun
     if ((bundle.style == InteriorStyle::Pattern && bundle.styleIndex < 1) ||
         (bundle.backStyle == InteriorStyle::Pattern && bundle.backStyleIndex < 1))
         raise(log_, errors::PatternIndexBelowOne, function);
+    for (ShadingMethod shading : {bundle.shading, bundle.backShading})
+        checkAvailable(description_.interiorShadingMethods, static_cast<int>(shading),
+                       errors::InteriorShadingNotAvailable, function);
+    for (ReflectanceModel reflectance : {bundle.reflectance, bundle.backReflectance})
+        checkAvailable(description_.reflectanceEquations, static_cast<int>(reflectance),
+                       errors::ReflectanceNotAvailable, function);
     tables_.interiors.set(index, bundle, log_, function);
     changed();
 }
 
 void Workstation::setEdgeRepresentation(int index, const EdgeBundle& bundle) {
     const char* function = "SET EDGE REPRESENTATION";
-    checkBundle(tables_.edges, index, bundle.colour, function);
+    checkBundle(tables_.edges, index, {bundle.colour}, function);
     checkLineType(bundle.type, log_, function, errors::EdgeTypeNotAvailable);
     tables_.edges.set(index, bundle, log_, function);
     changed();

@@ -57,6 +57,7 @@ inline constexpr int ViewIndexBelowOne = 115;
 inline constexpr int BadColour = 118;
 inline constexpr int ColourMappingIndexBelowZero = 121;      ///< PHIGS PLUS
 inline constexpr int ColourMappingMethodNotAvailable = 126;  ///< PHIGS PLUS
+inline constexpr int BadDirectColour = 136;  ///< a direct colour component outside its model's range
 inline constexpr int ViewTableFull = 150;
 inline constexpr int InvalidWindow = 151;
 inline constexpr int InvalidViewport = 152;

@@ -13,11 +13,13 @@
 
 namespace phigs {
 
-/// Polyline bundle (SET POLYLINE REPRESENTATION, PLUS: shading method).
+/// Polyline bundle, extended as PHIGS PLUS does (shading method, curve approximation criteria).
 struct PolylineBundle {
     LineType type = LineType::Solid;
     double width = 1.0;
     Colour colour = Colour::indexed(1);
+    ShadingMethod shading = ShadingMethod::None;  ///< NONE or COLOUR (the polyline shading methods)
+    ApproximationAttribute approximation{ElementType::CurveApproximationCriteria};
     bool operator==(const PolylineBundle&) const = default;
 };
 /// Polymarker bundle.
@@ -98,6 +100,9 @@ public:
     std::vector<int> definedIndices() const;
     /// RGB of a colour: direct as it is, indexed through the table.
     glm::dvec3 resolve(const Colour& colour) const { return colour.direct ? colour.rgb : get(colour.index); }
+    /// A general colour a representation may hold: error 113 for an index below 0, 136 for a
+    /// direct (RGB) component outside [0, 1].
+    static void check(const Colour& colour, ErrorLog* log, const char* function);
 
 private:
     int capacity_;

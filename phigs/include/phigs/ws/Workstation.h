@@ -13,6 +13,7 @@
 #include "phigs/ws/WorkstationType.h"
 
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <memory>
 #include <optional>
@@ -105,7 +106,8 @@ public:
     /// structure in their networks. Equal stamps, equal pictures (for the same filters).
     std::uint64_t contentStamp() const;
 
-    // ---- tables (each change counts as a change of the picture)
+    // ---- tables (each change counts as a change of the picture). A bundle's colours are general
+    // colours (PHIGS PLUS); errors 100, 103, 113, 136, then the entries' own (104 .. 124).
     void setColourRepresentation(int index, const glm::dvec3& rgb);
     void setPolylineRepresentation(int index, const PolylineBundle& bundle);
     void setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle);
@@ -211,7 +213,10 @@ private:
     void changed();
     void commitCurrent();
     template <class Table>
-    void checkBundle(const Table& table, int index, const Colour& colour, const char* function) const;
+    void checkBundle(const Table& table, int index, std::initializer_list<Colour> colours,
+                     const char* function) const;
+    /// Error `error` when `method` is not one of `available` (the description's list).
+    void checkAvailable(const std::vector<int>& available, int method, int error, const char* function) const;
     void regenerate(VisualState after);
     bool showsChangesAtOnce() const;
     bool changesTakeEffectAtOnce() const;

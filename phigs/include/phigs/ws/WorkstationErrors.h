@@ -10,6 +10,10 @@ inline constexpr int TextFontNotAvailable = 106;         ///< font and precision
 inline constexpr int EdgeTypeNotAvailable = 107;
 inline constexpr int ColourModelNotAvailable = 110;
 inline constexpr int PatternIndexBelowOne = 112;
-inline constexpr int BadPatternDimensions = 116;  ///< a dimension of the colour index array below one
+inline constexpr int BadPatternDimensions = 116;         ///< a dimension of the colour index array below one
+inline constexpr int PolylineShadingNotAvailable = 122;  ///< PHIGS PLUS
+inline constexpr int InteriorShadingNotAvailable = 123;
+inline constexpr int ReflectanceNotAvailable = 124;
+inline constexpr int NotIndirectColour = 134;  ///< the entry's general colour is not an index
 
 }  // namespace phigs::errors

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "phigs/input/InputDevice.h"
+#include "phigs/view/ColourMappingTable.h"
 
 #include <glm/vec2.hpp>
 
@@ -40,6 +41,7 @@ struct WorkstationDescription {
     int bundleTableSize = 32;
     int lightTableSize = 16;
     int depthCueTableSize = 8;
+    int colourMappingTableSize = ColourMappingTable::kCapacity;  ///< entries 0 (TRUE) and up
     std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
     int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
     WorkstationClass workstationClass = WorkstationClass::Raster;
@@ -53,7 +55,13 @@ struct WorkstationDescription {
     int textFonts = 4;                 ///< fonts 1..textFonts, each in every precision (stroked)
     std::vector<int> hatchStyles;      ///< the hatch style indices drawn as hatching
     std::vector<int> colourModels{1};  ///< RGB only
-    int displayPriorities = 0;         ///< 0: continuous
+    /// PHIGS PLUS: polyline shading methods (1 none, 2 colour), interior shading methods (1 none,
+    /// 2 colour, 3 dot product, 4 normal) and reflectance equations (1 none .. 4 ambient, diffuse
+    /// and specular).
+    std::vector<int> polylineShadingMethods{1, 2};
+    std::vector<int> interiorShadingMethods{1, 2, 3, 4};
+    std::vector<int> reflectanceEquations{1, 2, 3, 4};
+    int displayPriorities = 0;  ///< 0: continuous
     DeferralMode defaultDeferral = DeferralMode::Asap;
     ModificationMode defaultModification = ModificationMode::Nive;
     /// Every change of a workstation attribute or of the posted networks re-traverses.
