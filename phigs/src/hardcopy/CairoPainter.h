@@ -26,6 +26,8 @@ private:
     void useClip(int clip);
     void contours(const std::vector<std::vector<glm::dvec2>>& contours);
     void colour(glm::vec3 rgb, float opacity = 1.0f);
+    /// A PATTERN fill's source: its cells as a repeating image, nearest cell, mapped by its matrix.
+    void patternSource(const PagePattern& pattern, float opacity);
 
     cairo_t* cr_;
     bool opaque_;

@@ -113,8 +113,8 @@ public:
     void setInteriorRepresentation(int index, const InteriorBundle& bundle);
     void setEdgeRepresentation(int index, const EdgeBundle& bundle);
     void setViewRepresentation(int index, const ViewRepresentation& view);
-    /// SET PATTERN REPRESENTATION (errors of PatternTable::set); patterns are stored and
-    /// inquired, interiors of style PATTERN draw solid.
+    /// SET PATTERN REPRESENTATION (errors of PatternTable::set); the picture carries the table
+    /// with the cells' colours looked up (DrawList::patterns).
     void setPatternRepresentation(int index, const PatternRepresentation& pattern);
     const PatternTable& patterns() const { return patterns_; }
     /// SET COLOUR MODEL: one of the description's colour models (error 110).
@@ -206,6 +206,8 @@ private:
     template <class Table>
     void checkBundle(const Table& table, int index, const Colour& colour, const char* function) const;
     void regenerate(VisualState after);
+    /// The pattern table with each cell's colour index looked up in the colour table.
+    std::map<int, DrawPattern> resolvedPatterns() const;
     bool showsChangesAtOnce() const;
     bool changesTakeEffectAtOnce() const;
 
