@@ -79,7 +79,7 @@ bool near(const std::uint8_t* p, glm::vec3 rgb, int tolerance) {
 
 }  // namespace
 
-TEST_CASE("vector hardcopy: PDF and SVG tile PATTERN interiors with the cells the placement gives",
+TEST_CASE("vector hardcopy: PDF and SVG tile PATTERN fill areas and meshes with the placement's cells",
           "[hardcopy][pattern]") {
     std::mt19937 random(23);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -103,7 +103,20 @@ TEST_CASE("vector hardcopy: PDF and SVG tile PATTERN interiors with the cells th
         p.vectorY = glm::dvec3(std::cos(a + skew), std::sin(a + skew), 0.0);
         const double cell = (16.0 + 14.0 * unit(random)) / kPixels;
         p.size = {cell * pattern.columns, cell * pattern.rows};
-        list.items.push_back(square(0.1, 0.1, 0.9, 0.9, 0.5, interior));
+        if (trial % 2 == 0) {
+            list.items.push_back(square(0.1, 0.1, 0.9, 0.9, 0.5, interior));
+        } else {
+            // A mesh: each triangle is a facet of its own, its pattern fitted to it.
+            auto mesh = std::make_shared<MeshData>();
+            mesh->positions = {{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.9, 0.9, 0.5}, {0.1, 0.9, 0.5}};
+            mesh->triangles = {0, 1, 2, 0, 2, 3};
+            DrawMesh m;
+            m.mesh = mesh;
+            m.interior = interior;
+            DrawItem item;
+            item.primitive = std::move(m);
+            list.items.push_back(std::move(item));
+        }
         const std::vector<Image> rasters = drawnFiles(list, "pattern" + std::to_string(trial), true);
         // The cell of a page pixel, solved in the box edges (the plane is the box's own).
         const glm::dvec2 ea = glm::dvec2(glm::normalize(p.vectorX)) * p.size.x;

@@ -158,7 +158,8 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     f.opacity = paint.opacity;
     f.hatch = paint.hatch;
     f.hatchIndex = paint.hatchIndex;
-    if (paint.pattern && patternMap_) f.pattern = pagePattern(world, depth / double(count));
+    if (paint.pattern && !paint.coverOnly && patternMap_)
+        f.pattern = pagePattern(world, depth / double(count));
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;
