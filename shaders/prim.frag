@@ -1,5 +1,5 @@
 #version 450
-// The one fragment shader (specialised per pipeline, see scene.glsl): NPC z and model clipping, hatch and line patterns, flat / Gouraud / Phong
+// The one fragment shader (specialised per pipeline, see scene.glsl): NPC z and model clipping, hatch and line patterns, pattern interiors, flat / Gouraud / Phong
 // lighting with distinct back faces, depth cueing and highlighting.
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
@@ -45,6 +45,18 @@ bool patternOn(int type, float width, float distance) {
     return d < lengths.z;
 }
 
+// The colour of the pattern cell at a world point: the cell coordinates are affine in the world
+// position on the primitive's plane (phigs/render/PatternMapping.h).
+vec3 patternColour(vec3 world) {
+    int record = int(DRAW.misc.w);
+    vec4 u = patternData[record], v = patternData[record + 1];
+    ivec3 p = ivec3(patternData[record + 2].xyz);  // first cell, columns, rows
+    vec2 cell = floor(vec2(dot(u.xyz, world) + u.w, dot(v.xyz, world) + v.w));
+    int column = clamp(int(cell.x - float(p.y) * floor(cell.x / float(p.y))), 0, p.y - 1);
+    int row = clamp(int(cell.y - float(p.z) * floor(cell.y / float(p.z))), 0, p.z - 1);
+    return patternData[p.x + row * p.y + column].rgb;
+}
+
 void main() {
     int viewIndex = push.viewIndex;
     if (MAY_DISCARD) {
@@ -68,7 +80,7 @@ void main() {
 
     bool back = TRIANGLES && !gl_FrontFacing;
     bool useBack = DISTINGUISH_BACK && back;
-    vec3 base = USE_VERTEX_COLOURS ? vColour : push.colour.rgb;
+    vec3 base = PATTERNED ? patternColour(vWorld) : USE_VERTEX_COLOURS ? vColour : push.colour.rgb;
     vec3 colour;
     if (VERTEX_LIGHTING) {
         colour = back ? vLitBack : vLitFront;

@@ -50,11 +50,18 @@ struct DrawParams {
     mat4 normalMatrix;
     ivec4 indices;         // view, light set, depth cue, flags
     ivec4 style;           // role, hatch index, line type, shading
-    vec4 misc;             // line width, first model clip plane, model clip plane count
+    vec4 misc;             // line width, first model clip plane, model clip plane count, pattern record
 };
 
 layout(std430, set = 0, binding = 1) readonly buffer Draws {
     DrawParams draws[];
+};
+
+// PATTERN interiors: per patterned draw a record at misc.w (world to cell column as
+// dot(xyz, world) + w, the same to cell row, then first cell, columns, rows), and the cells of
+// the patterns this frame draws, row by row (rgb, unused).
+layout(std430, set = 0, binding = 2) readonly buffer Patterns {
+    vec4 patternData[];
 };
 
 // The draw record's index, the frame-block indices the shaders look up with, and the values the
@@ -105,6 +112,8 @@ layout(constant_id = 9) const bool DISTINGUISH_BACK = false;
 layout(constant_id = 10) const bool TRIANGLES = true;
 // Screen offsets of the vertices: 0 none, 1 in pixels (markers), 2 in NPC (annotation text).
 layout(constant_id = 11) const int SCREEN_OFFSETS = 1;
+// The draws are PATTERN interiors: the base colour is the pattern cell under the fragment.
+layout(constant_id = 12) const bool PATTERNED = false;
 
 vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world, vec3 n, vec3 eye) {
     vec4 colour = frame.lights[i].colour;

@@ -996,8 +996,8 @@ void pset_edge_flag(Pedge_flag edge_flag);
 void pset_edgetype(Pint edgetype);
 void pset_edgewidth(Pfloat edgewidth);
 void pset_edge_colr_ind(Pint colr_ind);
-/* Pattern size, reference point and vectors: stored, archived and inquired; an interior of
- * style PATTERN is drawn solid until patterns are drawn (see COVERAGE.md). */
+/* Pattern size, reference point and vectors (modelling coordinates): where the cells of an
+ * interior of style PATTERN lie; a zero size component or parallel vectors change nothing. */
 void pset_pat_size(const Pfloat_size* pat_size);
 void pset_pat_ref_point(const Ppoint* ref_point);
 void pset_pat_ref_point_vecs(const Ppoint3* ref_point, const Pvec3 ref_vec[2]);
@@ -1343,7 +1343,7 @@ void pinq_wss_posted(Pint struct_id, Pint length, Pint start, Pint* err_ind, Pin
  * interior style, 112 pattern index < 1, 116 pattern dimensions, 118 colour component. The
  * inquiries answer 101 for an undefined index with PINQ_SET and index 1's representation with
  * PINQ_REALIZED (widths and sizes within the facilities, text in STROKE precision, undefined
- * colour indices as 1). Patterns are stored; style PSTYLE_PAT draws solid. */
+ * colour indices as 1). Interiors of style PSTYLE_PAT draw the pattern's cells. */
 void pset_line_rep(Pint ws_id, Pint line_ind, const Pline_bundle* line_bundle);
 void pset_marker_rep(Pint ws_id, Pint marker_ind, const Pmarker_bundle* marker_bundle);
 void pset_text_rep(Pint ws_id, Pint text_ind, const Ptext_bundle* text_bundle);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <variant>
 
 namespace phigs::hardcopy {
@@ -133,10 +135,49 @@ void CairoPainter::colour(glm::vec3 rgb, float opacity) {
         cairo_set_source_rgba(cr_, rgb.x, rgb.y, rgb.z, std::max(0.0f, opacity));
 }
 
+void CairoPainter::patternSource(const PagePattern& pattern, float opacity) {
+    const DrawPattern& cells = pattern.cells;
+    // Each cell a block of pixels: a viewer that smooths images (SVG renderers ignore the
+    // nearest filter) then blurs only a thin seam between cells, not the whole cell.
+    const int block = std::clamp(1024 / std::max(cells.columns, cells.rows), 1, 16);
+    cairo_surface_t* surface =
+        cairo_image_surface_create(CAIRO_FORMAT_ARGB32, cells.columns * block, cells.rows * block);
+    cairo_surface_flush(surface);
+    unsigned char* data = cairo_image_surface_get_data(surface);
+    const int stride = cairo_image_surface_get_stride(surface);
+    const double alpha = opaque_ ? 1.0 : std::clamp(double(opacity), 0.0, 1.0);
+    auto channel = [&](float c) {
+        return std::uint32_t(std::lround(std::clamp(double(c), 0.0, 1.0) * alpha * 255.0));
+    };
+    for (int y = 0; y < cells.rows * block; ++y)
+        for (int x = 0; x < cells.columns * block; ++x) {
+            const glm::vec3 c = cells.colours[std::size_t((y / block) * cells.columns + x / block)];
+            // Premultiplied ARGB in native byte order.
+            const std::uint32_t pixel = std::uint32_t(std::lround(alpha * 255.0)) << 24 | channel(c.x) << 16 |
+                                        channel(c.y) << 8 | channel(c.z);
+            std::memcpy(data + y * stride + x * 4, &pixel, 4);
+        }
+    cairo_surface_mark_dirty(surface);
+    cairo_pattern_t* source = cairo_pattern_create_for_surface(surface);
+    cairo_surface_destroy(surface);
+    cairo_pattern_set_extend(source, CAIRO_EXTEND_REPEAT);
+    cairo_pattern_set_filter(source, CAIRO_FILTER_NEAREST);
+    // The pattern matrix maps user space (the page) to pattern space (cells, `block` pixels each).
+    cairo_matrix_t matrix;
+    const glm::dvec3 u = pattern.u * double(block), v = pattern.v * double(block);
+    cairo_matrix_init(&matrix, u.x, v.x, u.y, v.y, u.z, v.z);
+    cairo_pattern_set_matrix(source, &matrix);
+    cairo_set_source(cr_, source);
+    cairo_pattern_destroy(source);
+}
+
 void CairoPainter::operator()(const VectorFill& fill) {
     useClip(fill.clip);
     contours(fill.contours);
-    colour(fill.colour, fill.opacity);
+    if (fill.pattern)
+        patternSource(*fill.pattern, fill.opacity);
+    else
+        colour(fill.colour, fill.opacity);
     cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
     if (fill.seamWidth > 0.0) {
         cairo_fill_preserve(cr_);

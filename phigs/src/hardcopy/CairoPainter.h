@@ -28,6 +28,8 @@ private:
     /// Fills [begin, end) of `ops`, opaque convex VectorFills of one style, as one path.
     void fillRun(const std::vector<VectorOp>& ops, std::size_t begin, std::size_t end);
     void colour(glm::vec3 rgb, float opacity = 1.0f);
+    /// A PATTERN fill's source: its cells as a repeating image, nearest cell, mapped by its matrix.
+    void patternSource(const PagePattern& pattern, float opacity);
 
     cairo_t* cr_;
     bool opaque_;

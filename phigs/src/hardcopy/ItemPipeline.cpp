@@ -30,6 +30,55 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
       view_(viewVolume(viewOf(list, item), list)),
       model_(modelVolume(item.modelClipPlanes)),
       colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
+    const InteriorStyleSet* interior = nullptr;
+    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
+    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior;
+    if (!interior || interior->style != InteriorStyle::Pattern) return;
+    // No pattern defined, or a pattern box with no area on the primitive: drawn solid.
+    pattern_ = render::findPattern(list, interior->styleIndex);
+    if (pattern_ && pattern_->columns >= 1 && pattern_->rows >= 1 &&
+        pattern_->colours.size() == std::size_t(pattern_->columns) * std::size_t(pattern_->rows))
+        patternMap_ = render::itemPatternMap(item, *pattern_);
+}
+
+std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
+    const std::vector<std::vector<glm::dvec3>>& world, double depth) const {
+    // Three well spread points of the facet: the first, the farthest from it, and the one
+    // farthest from the line through those two.
+    std::vector<glm::dvec3> points;
+    for (const auto& contour : world) points.insert(points.end(), contour.begin(), contour.end());
+    if (points.size() < 3) return nullptr;
+    const glm::dmat4 toPage = worldToPage();
+    auto page = [&](const glm::dvec3& x) {
+        const glm::dvec4 h = toPage * glm::dvec4(x, 1.0);
+        return glm::dvec2(h) / h.w;
+    };
+    auto score = [&](auto measure) {
+        std::size_t best = 0;
+        double most = -1.0;
+        for (std::size_t k = 0; k < points.size(); ++k)
+            if (const double m = measure(page(points[k])); m > most) most = m, best = k;
+        return best;
+    };
+    const glm::dvec2 p0 = page(points[0]);
+    const glm::dvec3 x1 = points[score([&](glm::dvec2 p) { return glm::length(p - p0); })];
+    const glm::dvec2 p1 = page(x1);
+    const glm::dvec3 x2 = points[score(
+        [&](glm::dvec2 p) { return std::abs((p1.x - p0.x) * (p.y - p0.y) - (p1.y - p0.y) * (p.x - p0.x)); })];
+    const glm::dvec2 p2 = page(x2);
+    // Rows (x, y, 1) of the three page points; the cell coordinates there give u and v.
+    const glm::dmat3 rows =
+        glm::transpose(glm::dmat3(glm::dvec3(p0, 1), glm::dvec3(p1, 1), glm::dvec3(p2, 1)));
+    const double det = glm::determinant(rows);
+    if (!(std::abs(det) > 1e-12)) return nullptr;
+    const glm::dmat3 inverse = glm::inverse(rows);
+    const glm::dvec2 c0 = patternMap_->at(points[0]), c1 = patternMap_->at(x1), c2 = patternMap_->at(x2);
+    auto result = std::make_shared<PagePattern>();
+    result->cells = *pattern_;
+    for (glm::vec3& colour : result->cells.colours) colour = colouring_.finish(colour, depth);
+    result->u = inverse * glm::dvec3(c0.x, c1.x, c2.x);
+    result->v = inverse * glm::dvec3(c0.y, c1.y, c2.y);
+    return result;
 }
 
 bool ItemPipeline::modelClipKeeps(const glm::dvec3& world) const {
@@ -109,6 +158,8 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     f.opacity = paint.opacity;
     f.hatch = paint.hatch;
     f.hatchIndex = paint.hatchIndex;
+    if (paint.pattern && !paint.coverOnly && patternMap_)
+        f.pattern = pagePattern(world, depth / double(count));
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;

@@ -111,6 +111,7 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     paint.opacity = opacityOf(in, facing < 0);
     paint.hatch = in.style == InteriorStyle::Hatch;
     paint.hatchIndex = in.styleIndex;
+    paint.pattern = in.style == InteriorStyle::Pattern;
     pipeline_.facet(world, paint);
 }
 
@@ -136,6 +137,7 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
             paint.opacity = opacityOf(in, facing < 0);
             paint.hatch = in.style == InteriorStyle::Hatch;
             paint.hatchIndex = in.styleIndex;
+            paint.pattern = in.style == InteriorStyle::Pattern;
             paint.seam = true;
             pipeline_.facet({triangle}, paint);
         }

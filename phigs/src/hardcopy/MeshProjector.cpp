@@ -73,6 +73,7 @@ void MeshProjector::facets(bool coverOnly) {
             paint.opacity = 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
             paint.hatch = in.style == InteriorStyle::Hatch;
             paint.hatchIndex = in.styleIndex;
+            paint.pattern = in.style == InteriorStyle::Pattern;
         }
         pipeline_.facet({{vertices[0].position, vertices[1].position, vertices[2].position}}, paint);
     }

@@ -55,6 +55,7 @@ void PaintBuilder::operator()(const ProjectedFacet& facet) {
     f.contours = flatten(facet.contours);
     f.colour = facet.colour;
     f.opacity = facet.opacity;
+    f.pattern = facet.pattern;
     // Half a pixel of outline closes the hairline a viewer's anti-aliasing leaves between pieces.
     f.seamWidth = facet.seam && facet.opacity >= 1.0f ? 0.5 * pixel_ : 0.0;
     f.clip = facet.clip;

@@ -4,6 +4,7 @@
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -40,6 +41,7 @@ struct State {
     int annoH = 0, annoV = 0;
     InteriorStyle style = InteriorStyle::Hollow, backStyle = InteriorStyle::Hollow;
     int styleIndex = 1, backStyleIndex = 1;
+    PatternPlacement pattern;
     Colour interiorColour = Colour::indexed(1), backColour = Colour::indexed(1);
     ShadingMethod shading = ShadingMethod::None, backShading = ShadingMethod::None;
     ReflectanceModel reflectance = ReflectanceModel::None, backReflectance = ReflectanceModel::None;
@@ -436,6 +438,7 @@ struct Resolver {
         InteriorStyleSet out;
         out.style = s.ind(AspectId::InteriorStyle) ? s.style : b.style;
         out.styleIndex = s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex;
+        out.pattern = s.pattern;
         out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour, s);
         out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour, s);
         out.shading = s.ind(AspectId::InteriorShading) ? s.shading : b.shading;
@@ -814,6 +817,8 @@ private:
                         state.annoH = e.horizontal, state.annoV = e.vertical;
                 } else if constexpr (std::is_same_v<E, AreaPropertiesAttribute>) {
                     (e.type == ElementType::AreaProperties ? state.properties : state.backProperties) = e;
+                } else if constexpr (std::is_same_v<E, PatternAttribute>) {
+                    applyPattern(state, e);
                 } else if constexpr (std::is_same_v<E, AsfAttribute>) {
                     state.individual[static_cast<std::size_t>(e.aspect)] = e.individual;
                 } else if constexpr (std::is_same_v<E, ApproximationAttribute>) {
@@ -873,6 +878,20 @@ private:
         });
         emit(s, number, state,
              DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), rangeStart, rangeEnd});
+    }
+
+    // A zero size component, a zero vector or parallel vectors leave the placement as it was:
+    // no pattern box could be formed from them.
+    static void applyPattern(State& state, const PatternAttribute& e) {
+        PatternPlacement& p = state.pattern;
+        if (e.type == ElementType::PatternSize) {
+            if (e.size.x != 0.0 && e.size.y != 0.0) p.size = glm::abs(e.size);
+            return;
+        }
+        if (glm::length(glm::cross(e.vectorX, e.vectorY)) <= 0.0) return;
+        p.referencePoint = e.referencePoint;
+        p.vectorX = e.vectorX;
+        p.vectorY = e.vectorY;
     }
 
     void fillStyle(DrawFillArea& f, const State& state) const {

@@ -64,7 +64,10 @@ struct DrawParams {
     glm::mat4 normalMatrix{1.0f};
     glm::ivec4 indices{0};
     glm::ivec4 style{0};
-    glm::vec4 misc{0.0f};  ///< line width, first model clip plane, clip plane count
+    /// line width, first model clip plane, clip plane count, PATTERN interiors: where the draw's
+    /// pattern record starts in the pattern buffer (world to cell column, to cell row, and the
+    /// first cell, columns and rows)
+    glm::vec4 misc{0.0f};
 };
 static_assert(sizeof(DrawParams) == 176);
 

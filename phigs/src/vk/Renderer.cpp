@@ -2,6 +2,7 @@
 
 #include "GpuLayout.h"
 #include "ShaderSpecialisation.h"
+#include "phigs/render/PatternMapping.h"
 #include "phigs/traverse/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
@@ -38,6 +39,8 @@ constexpr std::uint64_t kDistinguishBack = 1ull << 32;
 constexpr int kOffsetShift = 33;  // screen offsets: 0 none, 1 pixels (markers), 2 NPC (annotation text)
 // PHIGS PLUS transparency: blended over what is behind, without writing depth.
 constexpr std::uint64_t kTransparent = 1ull << 35;
+// PATTERN interiors: the colour is the pattern cell under the fragment.
+constexpr std::uint64_t kPatterned = 1ull << 36;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -149,6 +152,7 @@ void Renderer::release() {
     geometry_.clear();
     meshes_.clear();
     drawBuffer_.reset();
+    patternBuffer_.reset();
     frameBuffer_.reset();
     for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
     pipelines_.clear();
@@ -164,7 +168,7 @@ void Renderer::release() {
 
 void Renderer::createDescriptors() {
     VkDevice device = context_.device();
-    VkDescriptorSetLayoutBinding bindings[2]{};
+    VkDescriptorSetLayoutBinding bindings[3]{};
     bindings[0].binding = 0;
     bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     bindings[0].descriptorCount = 1;
@@ -173,9 +177,13 @@ void Renderer::createDescriptors() {
     bindings[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[1].descriptorCount = 1;
     bindings[1].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    bindings[2].binding = 2;
+    bindings[2].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[2].descriptorCount = 1;
+    bindings[2].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
     VkDescriptorSetLayoutCreateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setInfo.bindingCount = 2;
+    setInfo.bindingCount = 3;
     setInfo.pBindings = bindings;
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
 
@@ -190,7 +198,7 @@ void Renderer::createDescriptors() {
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
 
     VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     poolInfo.maxSets = 1;
@@ -226,6 +234,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {9, flag(kDistinguishBack)},
         {10, lines ? 0 : 1},
         {11, std::int32_t((key >> kOffsetShift) & 3)},
+        {12, flag(kPatterned)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -382,6 +391,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     frame_ = {};
     commands_.clear();
     drawBytes_.clear();
+    patternCells_.clear();
+    patternFirst_.clear();
     clipPlanes_.clear();
     clipPlaneSets_.clear();
     depthTest_ = list.hiddenSurfaceRemoval;
@@ -456,6 +467,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             push.backColour = push.colour;
             int flags = d.indices.w;
             int shade = gpu::Flat;
+            bool patterned = false;
             if (part.vertexColours) flags |= gpu::VertexColours;
             if (part.offsetInNpc) flags |= gpu::OffsetNpc;
             if (part.lines && part.lineType != LineType::Solid) flags |= gpu::Pattern;
@@ -464,6 +476,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (interior && part.role == render::PartRole::Interior) {
                 const InteriorStyleSet& s = *interior;
                 if (s.style == InteriorStyle::Hatch) flags |= gpu::Hatch;
+                if (s.style == InteriorStyle::Pattern) patterned = patternDraw(list, item, d);
                 if (s.reflectance != ReflectanceModel::None && item.lightSet >= 0) flags |= gpu::Lit;
                 if (s.distinguishBackFaces) {
                     flags |= gpu::DistinguishBack;
@@ -485,12 +498,13 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             d.indices.w = flags;
             d.style =
                 glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
-            d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, 0);
+            d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, d.misc.w);
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
             if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
             if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
                 c.pipeline |= kMayDiscard;
-            bool fragmentNeedsWorld = modelClip.y > 0;
+            if (patterned) c.pipeline |= kPatterned;
+            bool fragmentNeedsWorld = modelClip.y > 0 || patterned;
             if (flags & gpu::Lit) {
                 // Front and back share the model; a fixed light set shape lets the shader unroll.
                 c.pipeline |= int(interior->reflectance) << kReflectanceShift;
@@ -608,6 +622,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     if (!draws.empty()) std::memcpy(drawBytes_.data(), draws.data(), drawBytes_.size());
     uploadFrame(list, extent, firstLights);
     uploadDraws();
+    uploadPatterns();
     // With hidden-surface removal, transparent draws come after every opaque one (in traversal
     // order among themselves), so what lies behind them is there to show through.
     if (depthTest_)
@@ -615,6 +630,55 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                               [](const Command& c) { return !(c.pipeline & kTransparent); });
     frame_.drawCalls = commands_.size();
     total_.add(frame_);
+}
+
+bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, gpu::DrawParams& d) {
+    const InteriorStyleSet* interior = nullptr;
+    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
+    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior;
+    if (!interior) return false;
+    // No pattern defined at all, or a pattern box with no area on the primitive: drawn solid.
+    const DrawPattern* pattern = render::findPattern(list, interior->styleIndex);
+    if (!pattern || pattern->columns < 1 || pattern->rows < 1 ||
+        pattern->colours.size() != std::size_t(pattern->columns) * std::size_t(pattern->rows))
+        return false;
+    const std::optional<render::PatternMap> map = render::itemPatternMap(item, *pattern);
+    if (!map) return false;
+    auto [at, added] = patternFirst_.try_emplace(pattern, 0);
+    if (added) {
+        at->second = int(patternCells_.size());
+        for (const glm::vec3& colour : pattern->colours) patternCells_.push_back(glm::vec4(colour, 1.0f));
+    }
+    d.misc.w = float(patternCells_.size());
+    patternCells_.push_back(glm::vec4(map->u));
+    patternCells_.push_back(glm::vec4(map->v));
+    patternCells_.push_back(
+        glm::vec4(float(at->second), float(pattern->columns), float(pattern->rows), 0.0f));
+    return true;
+}
+
+void Renderer::uploadPatterns() {
+    if (patternCells_.empty()) patternCells_.push_back(glm::vec4(0.0f));  // the binding is never empty
+    const std::size_t bytes = patternCells_.size() * sizeof(glm::vec4);
+    if (!patternBuffer_ || patternBuffer_->size() < bytes) {
+        patternBuffer_.reset();
+        patternBuffer_ = std::make_unique<GpuBuffer>(context_, bytes + bytes / 2,
+                                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frame_);
+        lastPatternCells_.clear();
+        VkDescriptorBufferInfo info{patternBuffer_->handle(), 0, VK_WHOLE_SIZE};
+        VkWriteDescriptorSet write{};
+        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        write.dstSet = set_;
+        write.dstBinding = 2;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &info;
+        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+    }
+    if (patternCells_ != lastPatternCells_) {
+        patternBuffer_->write(patternCells_.data(), bytes);
+        lastPatternCells_ = patternCells_;
+    }
 }
 
 glm::vec2 Renderer::clipPlaneRange(const DrawItem& item, std::size_t index) {

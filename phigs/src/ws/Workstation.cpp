@@ -210,6 +210,7 @@ void Workstation::regenerate(VisualState after) {
     picture_.generation = generation + 1;
     pictured_ = false;
     picture_ = traverser_.traverse(store_, roots, tables_, filters_);
+    picture_.patterns = resolvedPatterns();
     picture_.generation = same ? generation : generation + 1;
     pictureStamp_ = stamp;
     pictured_ = true;
@@ -218,6 +219,21 @@ void Workstation::regenerate(VisualState after) {
     commitCurrent();
     pictureState_ = after;
     ++regenerations_;
+}
+
+std::map<int, DrawPattern> Workstation::resolvedPatterns() const {
+    std::map<int, DrawPattern> out;
+    for (int index : patterns_.definedIndices()) {
+        const PatternRepresentation& p = *patterns_.find(index);
+        DrawPattern& d = out[index];
+        d.columns = p.columns;
+        d.rows = p.rows;
+        d.colours.clear();
+        // Indexed cells through the colour table as it is now; direct cells (PHIGS PLUS) as given.
+        for (const Colour& c : p.colours)
+            d.colours.push_back(glm::vec3(c.direct ? c.rgb : tables_.colours.get(c.index)));
+    }
+    return out;
 }
 
 void Workstation::update(Regeneration regeneration) {

@@ -47,13 +47,24 @@ struct Reflectance {
     float specular = 0.0f;  ///< specular coefficient
     glm::vec3 specularColour{1.0f};
     float specularExponent = 10.0f;
-    float transparency = 0.0f;  ///< 0 opaque
+    float transparency = 0.0f;  ///< PHIGS PLUS transparency coefficient: 0 opaque, 1 invisible
+};
+
+/// Where a PATTERN interior's pattern box lies, in modelling coordinates (ISO 9592 pattern
+/// reference point, reference vectors and pattern size): the box spans size.x along vectorX and
+/// size.y along vectorY from the reference point, and is projected onto the primitive's plane.
+struct PatternPlacement {
+    glm::dvec3 referencePoint{0.0};
+    glm::dvec3 vectorX{1, 0, 0}, vectorY{0, 1, 0};
+    glm::dvec2 size{1.0, 1.0};
+    bool operator==(const PatternPlacement&) const = default;
 };
 
 /// Resolved interior (fill area, mesh, surface) attributes.
 struct InteriorStyleSet {
     InteriorStyle style = InteriorStyle::Hollow;
     int styleIndex = 1;  ///< hatch or pattern index
+    PatternPlacement pattern;
     glm::vec3 colour{1.0f};
     glm::vec3 backColour{1.0f};  ///< PHIGS PLUS back interior colour
     ShadingMethod shading = ShadingMethod::None;

@@ -5,10 +5,12 @@
 #include "phigs/hardcopy/PageMapping.h"
 #include "phigs/hardcopy/ProjectedScene.h"
 #include "phigs/hardcopy/VectorOptions.h"
+#include "phigs/render/PatternMapping.h"
 #include "phigs/traverse/DrawList.h"
 
 #include <glm/mat4x4.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace phigs::hardcopy {
@@ -19,6 +21,7 @@ struct FacetPaint {
     float opacity = 1.0f;
     bool hatch = false;
     int hatchIndex = 1;
+    bool pattern = false;  ///< a PATTERN interior: the item's pattern, when it has one, not `colour`
     bool coverOnly = false;
     bool seam = false;
 };
@@ -57,6 +60,10 @@ public:
     glm::dmat4 worldToPage() const { return mapping_.npcToPage * worldToNpc_; }
 
 private:
+    /// The page pattern of a facet given by its world contours (the item's map at three of its
+    /// points; exact under parallel projection, fitted at those points under perspective).
+    std::shared_ptr<const PagePattern> pagePattern(const std::vector<std::vector<glm::dvec3>>& world,
+                                                   double depth) const;
     void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
 
     const DrawList& list_;
@@ -67,6 +74,8 @@ private:
     glm::dmat4 worldToNpc_{1.0};
     std::vector<HalfSpace> view_, model_;
     ItemColouring colouring_;
+    const DrawPattern* pattern_ = nullptr;          ///< a PATTERN interior's pattern, or null
+    std::optional<render::PatternMap> patternMap_;  ///< and its world map
 };
 
 }  // namespace phigs::hardcopy

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <variant>
 #include <vector>
 
@@ -16,12 +17,20 @@ namespace phigs::hardcopy {
 /// A point on the page (x right, y down, points) with its NPC depth as z (1 is the front).
 using PagePoint = glm::dvec3;
 
+/// A PATTERN interior on the page: its cells, and the affine map from page points (x, y) to cell
+/// coordinates, column = dot(u, (x, y, 1)) and row = dot(v, (x, y, 1)).
+struct PagePattern {
+    DrawPattern cells;
+    glm::dvec3 u{0.0}, v{0.0};
+};
+
 /// A planar region of one colour (even-odd over its contours): a clipped mesh facet or fill area.
 struct ProjectedFacet {
     std::vector<std::vector<PagePoint>> contours;
     glm::vec3 colour{1.0f};
     float opacity = 1.0f;
-    bool hatch = false;  ///< hatch lines in `colour` instead of a fill (pattern arrives as solid)
+    bool hatch = false;                          ///< hatch lines in `colour` instead of a fill
+    std::shared_ptr<const PagePattern> pattern;  ///< PATTERN interiors: the cells instead of `colour`
     int hatchIndex = 1;
     bool occludes = true;  ///< hides what lies behind (not when transparent or hatched)
     /// A hidden-line surface: it hides, and is painted in the background colour only where

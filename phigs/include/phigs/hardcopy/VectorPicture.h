@@ -4,10 +4,12 @@
 // with nothing left to decide but how a file format writes them. A small closed family.
 
 #include "phigs/hardcopy/PageMapping.h"
+#include "phigs/hardcopy/ProjectedScene.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <variant>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct VectorFill {
     std::vector<std::vector<glm::dvec2>> contours;
     glm::vec3 colour{1.0f};
     float opacity = 1.0f;
+    std::shared_ptr<const PagePattern> pattern;  ///< tiles the region with its cells instead of `colour`
     double seamWidth = 0.0;
     int clip = -1;  ///< index into VectorPicture::clips, -1: none
 };

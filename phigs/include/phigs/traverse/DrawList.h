@@ -16,6 +16,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <variant>
@@ -32,6 +33,15 @@ struct DrawView {
     bool clipXY = true, clipBack = true, clipFront = true;
 };
 
+/// A pattern representation with its cells' colours looked up in the colour table: `columns`
+/// cells along the pattern's x vector, `rows` along its y vector, row by row from the row at
+/// the reference point.
+struct DrawPattern {
+    int columns = 1, rows = 1;
+    std::vector<glm::vec3> colours{glm::vec3(1.0f)};
+    bool operator==(const DrawPattern&) const = default;
+};
+
 /// What one traversal of a workstation's posted networks produced, in drawing order.
 struct DrawList {
     DrawItems items;  ///< shared segments, read like a vector
@@ -45,6 +55,8 @@ struct DrawList {
     glm::dvec2 displaySize{1.0};
     /// View indices from highest to lowest view transformation input priority; empty: 0, 1, 2, ...
     std::vector<int> viewInputPriority;
+    /// The workstation's pattern table, colours resolved (the workstation fills it in).
+    std::map<int, DrawPattern> patterns;
     glm::vec3 background{0.0f};         ///< colour index 0
     bool hiddenSurfaceRemoval = false;  ///< HLHSR mode: depth buffer on
     std::uint64_t generation = 0;       ///< changes whenever any item changed

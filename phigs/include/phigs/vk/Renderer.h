@@ -16,6 +16,10 @@
 
 namespace phigs::vk {
 
+namespace gpu {
+struct DrawParams;
+}
+
 /// Draws a phigs::DrawList into any framebuffer of its render pass: offscreen images, window
 /// swapchains and hardcopies share it. prepare() compiles the list (GPU buffers reused while the
 /// input is unchanged, only changes uploaded); record() records the frame's commands.
@@ -83,6 +87,11 @@ private:
     /// Writes the frame block; firstLights[s] is where light set s starts in its light array.
     void uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights);
     void uploadDraws();
+    /// A PATTERN interior item's pattern record (its map to cells) into the pattern buffer and
+    /// `d` (the pattern's cells join it once a frame); false when it has no drawable pattern
+    /// and draws solid.
+    bool patternDraw(const DrawList& list, const DrawItem& item, gpu::DrawParams& d);
+    void uploadPatterns();
     /// Where item `index`'s model clipping planes sit in the frame block (first, count); equal
     /// plane sets share one run.
     glm::vec2 clipPlaneRange(const DrawItem& item, std::size_t index);
@@ -104,6 +113,9 @@ private:
     std::unique_ptr<GpuBuffer> drawBuffer_;
     std::vector<unsigned char> drawBytes_;      // what this frame wants
     std::vector<unsigned char> lastDrawBytes_;  // what the draw buffer holds
+    std::unique_ptr<GpuBuffer> patternBuffer_;
+    std::vector<glm::vec4> patternCells_, lastPatternCells_;  // this frame's records and cells, the buffer's
+    std::map<const DrawPattern*, int> patternFirst_;          // this frame's patterns' first cells
 
     std::unordered_map<std::uint64_t, CachedGeometry> geometry_;
     std::unordered_map<const MeshData*, CachedMesh> meshes_;

@@ -115,8 +115,8 @@ public:
     void setInteriorRepresentation(int index, const InteriorBundle& bundle);
     void setEdgeRepresentation(int index, const EdgeBundle& bundle);
     void setViewRepresentation(int index, const ViewRepresentation& view);
-    /// SET PATTERN REPRESENTATION (errors of PatternTable::set); patterns are stored and
-    /// inquired, interiors of style PATTERN draw solid.
+    /// SET PATTERN REPRESENTATION (errors of PatternTable::set); the picture carries the table
+    /// with the cells' colours looked up (DrawList::patterns).
     void setPatternRepresentation(int index, const PatternRepresentation& pattern);
     const PatternTable& patterns() const { return patterns_; }
     /// SET COLOUR MODEL: one of the description's colour models (error 110).
@@ -218,6 +218,8 @@ private:
     /// Error `error` when `method` is not one of `available` (the description's list).
     void checkAvailable(const std::vector<int>& available, int method, int error, const char* function) const;
     void regenerate(VisualState after);
+    /// The pattern table with each cell's colour index looked up in the colour table.
+    std::map<int, DrawPattern> resolvedPatterns() const;
     bool showsChangesAtOnce() const;
     bool changesTakeEffectAtOnce() const;
 

@@ -42,7 +42,7 @@ struct WorkstationDescription {
     int lightTableSize = 16;
     int depthCueTableSize = 8;
     int colourMappingTableSize = ColourMappingTable::kCapacity;  ///< entries 0 (TRUE) and up
-    std::vector<int> hlhsrModes{0, 1};  ///< 0 none, 1 z-buffer
+    std::vector<int> hlhsrModes{0, 1};                           ///< 0 none, 1 z-buffer
     int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
     WorkstationClass workstationClass = WorkstationClass::Raster;
     int patternTableSize = 32;
