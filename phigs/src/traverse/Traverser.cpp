@@ -481,8 +481,7 @@ private:
         for (std::size_t i = 0; i < s->elements.size(); ++i) {
             ++visited;
             const int number = static_cast<int>(i) + 1;
-            const StoredElement& element = s->elements[i];
-            if (auto x = std::get_if<ExecuteStructureElement>(&element.value)) {
+            if (auto x = s->elements.get<ExecuteStructureElement>(i)) {
                 if (!child) child = inherited(state);
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
@@ -490,8 +489,8 @@ private:
                 continue;
             }
             child.reset();
-            if (!segment_ && mayDraw(element.value)) segment_ = newSegment(*s, i);
-            apply(*s, element, number, state);
+            if (!segment_ && mayDraw(s->elements.family(i))) segment_ = newSegment(*s, i);
+            apply(*s, i, number, state);
         }
     }
 
@@ -586,15 +585,15 @@ private:
     static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
-            if (std::holds_alternative<ExecuteStructureElement>(s.elements[i].value)) break;
-            primitives += mayDraw(s.elements[i].value);
+            if (s.elements.get<ExecuteStructureElement>(i)) break;
+            primitives += mayDraw(s.elements.family(i));
         }
         auto segment = std::make_shared<DrawSegment>();
         segment->items.reserve(primitives);
         return segment;
     }
-    static bool mayDraw(const Element& e) {
-        return e.index() <= kLastPrimitive || std::holds_alternative<GdpElement>(e);
+    static bool mayDraw(std::size_t family) {
+        return family <= kLastPrimitive || family == detail::AlternativeIndex<GdpElement, Element>::value;
     }
     /// The variant index of the last output primitive family (they come first in Element).
     static constexpr std::size_t kLastPrimitive = 11;
@@ -658,8 +657,9 @@ private:
         return out;
     }
 
-    void apply(const Structure& s, const StoredElement& stored, int number, State& state) {
-        std::visit(
+    void apply(const Structure& s, std::size_t index, int number, State& state) {
+        const std::uint64_t serial = s.elements.serial(index);
+        visitElement(
             [&](const auto& e) {
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
@@ -709,21 +709,21 @@ private:
                     t.style = resolve_.text(state, true);
                     emit(s, number, state, std::move(t));
                 } else if constexpr (std::is_same_v<E, CellArrayElement>) {
-                    cellArray(s, stored, number, state, e);
+                    cellArray(s, serial, number, state, e);
                 } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
                     curve(
-                        s, stored, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
+                        s, serial, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
                 } else if constexpr (std::is_same_v<E, GdpElement>) {
                     // Registered GDPs draw as exact curves (the store refused bad points at
                     // insert); the others are ignored (ISO 9592).
                     if (isRegisteredGdp(e.identifier))
                         curve(
-                            s, stored, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
+                            s, serial, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
                 } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                     ApproximationAttribute a = resolve_.surfaceApproximation(state);
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
-                    TessellationCache::Key key{stored.serial, a.criteria, a.valueU,  a.valueV,
-                                               c.style,       c.curvesU,  c.curvesV, 0};
+                    TessellationCache::Key key{serial,  a.criteria, a.valueU,  a.valueV,
+                                               c.style, c.curvesU,  c.curvesV, 0};
                     const auto& entry = cache_.get(key, TessellationCache::Kind::Surface, [&] {
                         TessellationCache::Entry built;
                         built.surface = std::make_shared<const geom::Surface>(e.surface);
@@ -735,7 +735,7 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                     if (e.points.size() < 3) return;
-                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
+                    auto mesh = cachedMesh(serial, e.vertexColours, [&] {
                         MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
                         for (std::uint32_t k = 0; k + 2 < e.points.size(); ++k)
                             if (k % 2 == 0)
@@ -749,7 +749,7 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                     if (e.rows < 2 || e.columns < 2) return;
-                    auto mesh = cachedMesh(stored, e.vertexColours, [&] {
+                    auto mesh = cachedMesh(serial, e.vertexColours, [&] {
                         MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals);
                         auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * e.columns + c); };
                         for (int r = 0; r + 1 < e.rows; ++r)
@@ -819,16 +819,16 @@ private:
                 }
                 // labels, application data and GSEs (none registered) do not change the draw list
             },
-            stored.value);
+            s.elements, index);
     }
 
     // A curve primitive, tessellated once per element and approximation; `build` makes the
     // exact curve on a cache miss.
     template <class Build>
-    void curve(const Structure& s, const StoredElement& stored, int number, const State& state, Build build,
+    void curve(const Structure& s, std::uint64_t serial, int number, const State& state, Build build,
                double rangeStart, double rangeEnd) {
         const ApproximationAttribute& a = state.curveApproximation;
-        TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
+        TessellationCache::Key key{serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
         const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
             TessellationCache::Entry built;
             built.curve = std::make_shared<const geom::Curve>(build());
@@ -856,10 +856,10 @@ private:
     }
 
     template <class Build>
-    std::shared_ptr<const MeshData> cachedMesh(const StoredElement& stored,
-                                               const std::vector<Colour>& colours, Build build) {
-        TessellationCache::Key key{
-            stored.serial, 0, 0, 0, 0, 0, 0, anyIndexed(colours) ? tables_.generation + 1 : 0};
+    std::shared_ptr<const MeshData> cachedMesh(std::uint64_t serial, const std::vector<Colour>& colours,
+                                               Build build) {
+        TessellationCache::Key key{serial, 0, 0, 0,
+                                   0,      0, 0, anyIndexed(colours) ? tables_.generation + 1 : 0};
         return cache_
             .get(key, TessellationCache::Kind::Mesh,
                  [&] {
@@ -870,10 +870,10 @@ private:
             .mesh;
     }
 
-    void cellArray(const Structure& s, const StoredElement& stored, int number, const State& state,
+    void cellArray(const Structure& s, std::uint64_t serial, int number, const State& state,
                    const CellArrayElement& e) {
         if (e.columns < 1 || e.rows < 1) return;
-        TessellationCache::Key key{stored.serial, 0, 0, 0, 0, 0, 0, tables_.generation + 1};
+        TessellationCache::Key key{serial, 0, 0, 0, 0, 0, 0, tables_.generation + 1};
         auto mesh = cache_
                         .get(key, TessellationCache::Kind::Mesh,
                              [&] {
