@@ -148,7 +148,8 @@ std::map<int, std::vector<Element>> Phigs::cssContents(const std::set<int>& ids)
     for (int id : ids)
         if (const Structure* s = store_.find(id)) {
             auto& elements = out[id];
-            for (const auto& e : s->elements) elements.push_back(e.value);
+            elements.reserve(s->elements.size());
+            for (std::size_t i = 0; i < s->elements.size(); ++i) elements.push_back(s->elements.element(i));
         }
     return out;
 }

@@ -101,7 +101,8 @@ StoreState stateOf(const StructureStore& store) {
     StoreState s{snapshot(store), {}, {}, store.operationCount()};
     for (int id : store.structureIds()) {
         s.versions[id] = store.structure(id).version;
-        for (const auto& e : store.structure(id).elements) s.serials.push_back(e.serial);
+        const ElementArena& elements = store.structure(id).elements;
+        for (std::size_t i = 0; i < elements.size(); ++i) s.serials.push_back(elements.serial(i));
     }
     return s;
 }

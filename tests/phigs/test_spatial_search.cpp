@@ -250,7 +250,8 @@ void positions(const StructureStore& store, int id, StructurePath prefix, std::v
     for (int k = 1; k <= store.elementCount(id); ++k) {
         prefix.back().elementNumber = k;
         out.push_back(prefix);
-        if (const auto* x = std::get_if<ExecuteStructureElement>(&store.elementAt(id, k)))
+        if (const auto* x =
+                store.structure(id).elements.get<ExecuteStructureElement>(static_cast<std::size_t>(k - 1)))
             positions(store, x->structureId, prefix, out);
     }
 }

@@ -184,9 +184,9 @@ std::string StampTracker::checkStructure(const Structure& s, const std::vector<E
     auto [known, added] = structures_.try_emplace(s.id);
     Known& k = known->second;
     k.round = round_;
-    const bool sameSerials =
-        std::equal(k.serials.begin(), k.serials.end(), s.elements.begin(), s.elements.end(),
-                   [](std::uint64_t a, const StoredElement& e) { return a == e.serial; });
+    bool sameSerials = k.serials.size() == s.elements.size();
+    for (std::size_t i = 0; sameSerials && i < k.serials.size(); ++i)
+        sameSerials = k.serials[i] == s.elements.serial(i);
     if (!added && k.version == s.version) {
         if (!sameSerials) return "its elements changed, its version did not";
     } else {
@@ -194,10 +194,10 @@ std::string StampTracker::checkStructure(const Structure& s, const std::vector<E
         if (s.version <= operations_ || s.version > now) return "a version from the past";
         k.version = s.version;
         k.serials.clear();
-        for (const auto& e : s.elements) k.serials.push_back(e.serial);
+        for (std::size_t i = 0; i < s.elements.size(); ++i) k.serials.push_back(s.elements.serial(i));
     }
     for (std::size_t i = 0; i < elements.size(); ++i) {
-        const std::uint64_t serial = s.elements[i].serial;
+        const std::uint64_t serial = s.elements.serial(i);
         auto value = values_.find(serial);
         if (value == values_.end()) {
             if (refused || serial <= operations_) return "an element with a serial not from this operation";
@@ -228,7 +228,7 @@ std::string storeDifference(Phigs& phigs, const StoreModel& model, bool postings
         if (s.elements.size() != elements.size())
             return "element count of " + std::to_string(id) + " differs";
         for (std::size_t i = 0; i < elements.size(); ++i)
-            if (!(s.elements[i].value == elements[i]))
+            if (!(s.elements.element(i) == elements[i]))
                 return "element " + std::to_string(i + 1) + " of " + std::to_string(id) + " differs";
         const auto status = elements.empty() ? StructureStatus::Empty : StructureStatus::NotEmpty;
         if (store.structureStatus(id) != status) return "status of " + std::to_string(id) + " differs";

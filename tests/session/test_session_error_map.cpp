@@ -17,16 +17,17 @@ glm::dvec3 expectedColour(double t) {
 
 const phigs::QuadrilateralMeshElement& errorMesh(acsynt::Session& s) {
     const phigs::Structure& e = s.phigs().store().structure(acsynt::structures::errorMap);
-    for (const auto& element : e.elements)
-        if (const auto* mesh = std::get_if<phigs::QuadrilateralMeshElement>(&element.value)) return *mesh;
+    for (std::size_t i = 0; i < e.elements.size(); ++i)
+        if (const auto* mesh = e.elements.get<phigs::QuadrilateralMeshElement>(i)) return *mesh;
     FAIL("no error mesh drawn");
     throw;
 }
 
 std::vector<std::string> legendTexts(acsynt::Session& s) {
     std::vector<std::string> texts;
-    for (const auto& element : s.phigs().store().structure(acsynt::structures::legend).elements)
-        if (const auto* t = std::get_if<phigs::TextElement>(&element.value)) texts.push_back(t->text);
+    const phigs::ElementArena& elements = s.phigs().store().structure(acsynt::structures::legend).elements;
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        if (const auto* t = elements.get<phigs::TextElement>(i)) texts.push_back(t->text);
     return texts;
 }
 

@@ -28,7 +28,8 @@ void checkStart(const StructureStore& store, const SpatialSearchQuery& q, const 
                         std::to_string(r.structureId));
         if (last) break;
         const auto* e =
-            std::get_if<ExecuteStructureElement>(&store.elementAt(r.structureId, r.elementNumber));
+            store.structure(r.structureId)
+                .elements.get<ExecuteStructureElement>(static_cast<std::size_t>(r.elementNumber - 1));
         if (!e || e->structureId != q.start[i + 1].structureId)
             fail(i, "element " + std::to_string(r.elementNumber) + " does not execute structure " +
                         std::to_string(q.start[i + 1].structureId));
@@ -54,10 +55,12 @@ bool searched(const std::vector<DrawPathLevel>& path, const SpatialSearchQuery& 
 // The name set at a primitive: the names added and removed before each level's element.
 std::set<int> namesAt(const StructureStore& store, const std::vector<DrawPathLevel>& path) {
     std::set<int> names;
-    for (const DrawPathLevel& level : path)
+    for (const DrawPathLevel& level : path) {
+        const Structure& s = store.structure(level.structureId);
         for (int k = 1; k < level.elementNumber; ++k)
-            if (const auto* n = std::get_if<NameSetElement>(&store.elementAt(level.structureId, k)))
+            if (const auto* n = s.elements.get<NameSetElement>(static_cast<std::size_t>(k - 1)))
                 for (int name : n->names) n->add ? void(names.insert(name)) : void(names.erase(name));
+    }
     return names;
 }
 

@@ -41,10 +41,14 @@ const ExecuteStructureElement* asExecute(const Element& e) {
     return std::get_if<ExecuteStructureElement>(&e);
 }
 
+const ExecuteStructureElement* asExecute(const Structure& s, std::size_t i) {
+    return s.elements.get<ExecuteStructureElement>(i);
+}
+
 /// Whether elements [first, last) of `s` hold an EXECUTE STRUCTURE.
 bool anyExecute(const Structure& s, std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last && i < s.elements.size(); ++i)
-        if (asExecute(s.elements[i].value)) return true;
+        if (asExecute(s, i)) return true;
     return false;
 }
 
@@ -164,8 +168,8 @@ std::map<int, std::set<int>> StructureStore::childrenGraph() const {
     std::map<int, std::set<int>> graph;
     for (const auto& [id, s] : structures_) {
         auto& children = graph[id];
-        for (const auto& e : s.elements)
-            if (auto x = asExecute(e.value)) children.insert(x->structureId);
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s, i)) children.insert(x->structureId);
     }
     return graph;
 }
@@ -176,8 +180,8 @@ const std::vector<int>& StructureStore::executedBy(const Structure& s) const {
     if (version != s.version) {
         version = s.version;
         ids.clear();
-        for (const auto& e : s.elements)
-            if (auto x = asExecute(e.value)) ids.push_back(x->structureId);
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s, i)) ids.push_back(x->structureId);
     }
     return ids;
 }
@@ -224,12 +228,12 @@ void StructureStore::insert(Element element) {
     if (auto x = asExecute(element)) createIfMissing(x->structureId);
     Structure& s = *openStructure_;
     const bool replacing = editMode_ == EditMode::Replace && pointer_ > 0;
-    if (replacing && asExecute(s.elements[static_cast<std::size_t>(pointer_ - 1)].value)) executesChanged();
+    if (replacing && asExecute(s, static_cast<std::size_t>(pointer_ - 1))) executesChanged();
     if (auto x = asExecute(element); x && !parentsStale_) parents_[x->structureId].push_back(s.id);
     if (replacing) {
-        s.elements[static_cast<std::size_t>(pointer_ - 1)] = stored(std::move(element));
+        s.elements.replace(static_cast<std::size_t>(pointer_ - 1), std::move(element), nextSerial());
     } else {
-        s.elements.insert(s.elements.begin() + pointer_, stored(std::move(element)));
+        s.elements.insert(static_cast<std::size_t>(pointer_), std::move(element), nextSerial());
         ++pointer_;
     }
     touch(s);
@@ -253,7 +257,7 @@ void StructureStore::setElementPointerAtLabel(int labelValue) {
     requireOpen(function);
     const auto& elements = openStructure_->elements;
     for (std::size_t i = static_cast<std::size_t>(pointer_); i < elements.size(); ++i) {
-        auto l = std::get_if<LabelElement>(&elements[i].value);
+        auto l = elements.get<LabelElement>(i);
         if (l && l->label == labelValue) {
             pointer_ = static_cast<int>(i) + 1;
             return;
@@ -268,7 +272,7 @@ void StructureStore::deleteElement() {
     Structure& s = *openStructure_;
     const auto at = static_cast<std::size_t>(pointer_ - 1);
     if (anyExecute(s, at, at + 1)) executesChanged();
-    s.elements.erase(s.elements.begin() + (pointer_ - 1));
+    s.elements.erase(at, at + 1);
     --pointer_;
     touch(s);
 }
@@ -284,7 +288,7 @@ void StructureStore::deleteElementRange(int first, int second) {
     // nothing (0..0, or an empty structure) leaves it where it was.
     if (high < low) return;
     if (anyExecute(s, static_cast<std::size_t>(low - 1), static_cast<std::size_t>(high))) executesChanged();
-    s.elements.erase(s.elements.begin() + (low - 1), s.elements.begin() + high);
+    s.elements.erase(static_cast<std::size_t>(low - 1), static_cast<std::size_t>(high));
     touch(s);
     pointer_ = low - 1;
 }
@@ -295,7 +299,7 @@ void StructureStore::deleteElementsBetweenLabels(int first, int second) {
     Structure& s = *openStructure_;
     auto findLabel = [&](std::size_t from, int value) -> std::optional<std::size_t> {
         for (std::size_t i = from; i < s.elements.size(); ++i) {
-            auto l = std::get_if<LabelElement>(&s.elements[i].value);
+            auto l = s.elements.get<LabelElement>(i);
             if (l && l->label == value) return i;
         }
         return std::nullopt;
@@ -307,8 +311,7 @@ void StructureStore::deleteElementsBetweenLabels(int first, int second) {
               "labels " + std::to_string(first) + ", " + std::to_string(second));
     if (*b > *a + 1) {
         if (anyExecute(s, *a + 1, *b)) executesChanged();
-        s.elements.erase(s.elements.begin() + static_cast<long>(*a + 1),
-                         s.elements.begin() + static_cast<long>(*b));
+        s.elements.erase(*a + 1, *b);
         touch(s);
     }
     pointer_ = static_cast<int>(*a) + 1;
@@ -321,18 +324,16 @@ void StructureStore::copyAllElementsFromStructure(int id) {
     const Structure* source = find(id);
     if (!source) return;
     std::vector<Element> copies;
-    for (const auto& e : source->elements) {
-        checkElement(e.value, *open_, function);
-        copies.push_back(e.value);
+    copies.reserve(source->elements.size());
+    for (std::size_t i = 0; i < source->elements.size(); ++i) {
+        copies.push_back(source->elements.element(i));
+        checkElement(copies.back(), *open_, function);
     }
     Structure& s = *openStructure_;
     if (anyExecute(*source, 0, source->elements.size())) executesChanged();
-    std::vector<StoredElement> fresh;
-    for (auto& e : copies) fresh.push_back(stored(std::move(e)));
-    s.elements.insert(s.elements.begin() + pointer_, std::make_move_iterator(fresh.begin()),
-                      std::make_move_iterator(fresh.end()));
-    pointer_ += static_cast<int>(fresh.size());
-    if (!fresh.empty()) touch(s);
+    for (auto& e : copies)
+        s.elements.insert(static_cast<std::size_t>(pointer_++), std::move(e), nextSerial());
+    if (!copies.empty()) touch(s);
 }
 
 void StructureStore::emptyStructure(int id) {
@@ -353,9 +354,9 @@ void StructureStore::removeReferencesTo(int id) {
     for (auto& [sid, s] : structures_) {
         bool changed = false;
         for (std::size_t i = s.elements.size(); i-- > 0;) {
-            auto x = asExecute(s.elements[i].value);
+            auto x = asExecute(s, i);
             if (!x || x->structureId != id) continue;
-            s.elements.erase(s.elements.begin() + static_cast<long>(i));
+            s.elements.erase(i, i + 1);
             if (open_ == sid && static_cast<int>(i) < pointer_) --pointer_;
             changed = true;
         }
@@ -374,8 +375,8 @@ bool StructureStore::postedAnywhere(int id) const {
 
 bool StructureStore::referenced(int id) const {
     for (const auto& [sid, s] : structures_)
-        for (const auto& e : s.elements)
-            if (auto x = asExecute(e.value); x && x->structureId == id) return true;
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s, i); x && x->structureId == id) return true;
     return false;
 }
 
@@ -457,16 +458,15 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
               "structure " + std::to_string(result) + " would execute itself through " +
                   std::to_string(original));
     executesChanged();
-    std::vector<StoredElement> moved;
+    ElementArena moved;
     if (auto from = structures_.find(original); from != structures_.end()) {
-        moved = std::move(from->second.elements);
-        from->second.elements.clear();
+        moved.swap(from->second.elements);
         touch(from->second);
     }
     Structure& to = createIfMissing(result);
     to.elements = std::move(moved);
-    for (const auto& e : to.elements)
-        if (auto x = asExecute(e.value)) createIfMissing(x->structureId);
+    for (std::size_t i = 0; i < to.elements.size(); ++i)
+        if (auto x = asExecute(to, i)) createIfMissing(x->structureId);
     touch(to);
     if (open_ == result) pointer_ = static_cast<int>(to.elements.size());
     if (open_ == original) pointer_ = 0;
@@ -493,10 +493,10 @@ void StructureStore::changeStructureReferences(int original, int result) {
     createIfMissing(result);
     for (auto& [id, s] : structures_) {
         bool changed = false;
-        for (auto& e : s.elements) {
-            auto x = std::get_if<ExecuteStructureElement>(&e.value);
+        for (std::size_t i = 0; i < s.elements.size(); ++i) {
+            auto x = asExecute(s, i);
             if (x && x->structureId == original) {
-                e = stored(ExecuteStructureElement{result});
+                s.elements.replace(i, ExecuteStructureElement{result}, nextSerial());
                 changed = true;
             }
         }
@@ -543,7 +543,7 @@ std::vector<int> StructureStore::structureIds() const {
 // Inquiries (INQUIRE ..., ELEMENT SEARCH) never log: ISO 9592 has them return an error
 // indicator, so they throw phigs::Error with no ErrorLog (raise(nullptr, ...)) and the C
 // binding turns the number into the indicator.
-const Element& StructureStore::elementAt(int id, int elementNumber) const {
+Element StructureStore::elementAt(int id, int elementNumber) const {
     const Structure* s = find(id);
     if (!s)
         raise(nullptr, errors::StructureDoesNotExist, "INQUIRE ELEMENT CONTENT",
@@ -551,13 +551,16 @@ const Element& StructureStore::elementAt(int id, int elementNumber) const {
     if (elementNumber < 1 || elementNumber > static_cast<int>(s->elements.size()))
         raise(nullptr, errors::ElementDoesNotExist, "INQUIRE ELEMENT CONTENT",
               "element " + std::to_string(elementNumber) + " of structure " + std::to_string(id));
-    return s->elements[static_cast<std::size_t>(elementNumber - 1)].value;
+    return s->elements.element(static_cast<std::size_t>(elementNumber - 1));
 }
 
 // Position 0 of an existing structure holds no element: ISO 9592 answers NIL, size 0 there.
 ElementType StructureStore::elementTypeAt(int id, int elementNumber) const {
     if (elementNumber == 0 && exists(id)) return ElementType::Nil;
-    return elementType(elementAt(id, elementNumber));
+    const Structure* s = find(id);
+    if (s && elementNumber >= 1 && elementNumber <= static_cast<int>(s->elements.size()))
+        return s->elements.type(static_cast<std::size_t>(elementNumber - 1));
+    return elementType(elementAt(id, elementNumber));  // raises the inquiry's error
 }
 
 std::size_t StructureStore::elementSizeAt(int id, int elementNumber) const {
@@ -565,24 +568,31 @@ std::size_t StructureStore::elementSizeAt(int id, int elementNumber) const {
     return elementSize(elementAt(id, elementNumber));
 }
 
-const Element& StructureStore::currentElement() const {
+Element StructureStore::currentElement() const {
     if (!open_) raise(nullptr, errors::NotStructureOpen, "INQUIRE CURRENT ELEMENT CONTENT");
     if (pointer_ == 0)
         raise(nullptr, errors::ElementDoesNotExist, "INQUIRE CURRENT ELEMENT CONTENT",
               "element pointer is 0");
-    return openStructure_->elements[static_cast<std::size_t>(pointer_ - 1)].value;
+    return openStructure_->elements.element(static_cast<std::size_t>(pointer_ - 1));
 }
 
 SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
                                            const std::set<ElementType>& include,
                                            const std::set<ElementType>& exclude) const {
-    auto matches = [&](const Element* e) {
-        const ElementType t = e ? elementType(*e) : ElementType::Nil;
+    const Structure* s = find(id);
+    if (!s)
+        raise(nullptr, errors::StructureDoesNotExist, "ELEMENT SEARCH", "structure " + std::to_string(id));
+    auto matches = [&](int n) {
+        const ElementType t = n == 0 ? ElementType::Nil : s->elements.type(static_cast<std::size_t>(n - 1));
         bool in = include.contains(ElementType::All) || include.contains(t);
         bool out = exclude.contains(ElementType::All) || exclude.contains(t);
         return in && !out;
     };
-    return elementSearch(id, start, direction, matches);
+    const int count = static_cast<int>(s->elements.size());
+    const bool forward = direction == SearchDirection::Forward;
+    for (int n = std::clamp(start, 0, count); n >= 0 && n <= count; n += forward ? 1 : -1)
+        if (matches(n)) return {true, n};
+    return {};
 }
 
 SearchResult StructureStore::elementSearch(int id, int start, SearchDirection direction,
@@ -594,7 +604,11 @@ SearchResult StructureStore::elementSearch(int id, int start, SearchDirection di
     // Position 0 holds the NIL element (ISO 9592): NIL or ALL in the inclusion set finds it.
     const bool forward = direction == SearchDirection::Forward;
     for (int n = std::clamp(start, 0, count); n >= 0 && n <= count; n += forward ? 1 : -1)
-        if (matches(n == 0 ? nullptr : &s->elements[static_cast<std::size_t>(n - 1)].value)) return {true, n};
+        if (n == 0 ? matches(nullptr) : [&] {
+                const Element e = s->elements.element(static_cast<std::size_t>(n - 1));
+                return matches(&e);
+            }())
+            return {true, n};
     return {};
 }
 
@@ -603,8 +617,7 @@ ExecuteReferences StructureStore::executeReferences() const {
     for (const auto& [id, s] : structures_) {
         auto& refs = references[id];
         for (std::size_t i = 0; i < s.elements.size(); ++i)
-            if (auto x = asExecute(s.elements[i].value))
-                refs.emplace_back(static_cast<int>(i) + 1, x->structureId);
+            if (auto x = asExecute(s, i)) refs.emplace_back(static_cast<int>(i) + 1, x->structureId);
     }
     return references;
 }
@@ -645,7 +658,7 @@ void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>
         Structure& s = createIfMissing(id);
         s.elements.clear();
         for (const auto& e : elements) {
-            s.elements.push_back(stored(e));
+            s.elements.insert(s.elements.size(), Element(e), nextSerial());
             if (auto x = asExecute(e)) createIfMissing(x->structureId);
         }
         touch(s);

@@ -507,8 +507,7 @@ private:
         for (std::size_t i = 0; i < s->elements.size(); ++i) {
             ++visited;
             const int number = static_cast<int>(i) + 1;
-            const StoredElement& element = s->elements[i];
-            if (auto x = std::get_if<ExecuteStructureElement>(&element.value)) {
+            if (auto x = s->elements.get<ExecuteStructureElement>(i)) {
                 if (!child) child = inherited(state);
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
@@ -516,8 +515,8 @@ private:
                 continue;
             }
             child.reset();
-            if (!segment_ && mayDraw(element.value)) segment_ = newSegment(*s, i);
-            apply(*s, element, number, state);
+            if (!segment_ && mayDraw(s->elements.family(i))) segment_ = newSegment(*s, i);
+            apply(*s, i, number, state);
         }
     }
 
@@ -612,15 +611,15 @@ private:
     static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
-            if (std::holds_alternative<ExecuteStructureElement>(s.elements[i].value)) break;
-            primitives += mayDraw(s.elements[i].value);
+            if (s.elements.get<ExecuteStructureElement>(i)) break;
+            primitives += mayDraw(s.elements.family(i));
         }
         auto segment = std::make_shared<DrawSegment>();
         segment->items.reserve(primitives);
         return segment;
     }
-    static bool mayDraw(const Element& e) {
-        return e.index() <= kLastPrimitive || std::holds_alternative<GdpElement>(e);
+    static bool mayDraw(std::size_t family) {
+        return family <= kLastPrimitive || family == detail::AlternativeIndex<GdpElement, Element>::value;
     }
     /// The variant index of the last output primitive family (they come first in Element).
     static constexpr std::size_t kLastPrimitive = 14;
@@ -684,8 +683,9 @@ private:
         return out;
     }
 
-    void apply(const Structure& s, const StoredElement& stored, int number, State& state) {
-        std::visit(
+    void apply(const Structure& s, std::size_t index, int number, State& state) {
+        const std::uint64_t serial = s.elements.serial(index);
+        visitElement(
             [&](const auto& e) {
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
@@ -739,10 +739,10 @@ private:
                     // the first column (3D).
                     glm::dvec3 du = e.twoD ? glm::dvec3(e.q.x - e.p.x, 0, 0) : e.q - e.p;
                     glm::dvec3 dv = e.twoD ? glm::dvec3(0, e.q.y - e.p.y, 0) : e.r - e.p;
-                    cellArray(s, stored, number, state, {e.p, du, dv, e.columns, e.rows},
+                    cellArray(s, serial, number, state, {e.p, du, dv, e.columns, e.rows},
                               [&](std::size_t k) { return Colour::indexed(e.colourIndices[k]); });
                 } else if constexpr (std::is_same_v<E, CellArrayPlusElement>) {
-                    cellArray(s, stored, number, state, {e.p, e.q - e.p, e.r - e.p, e.columns, e.rows},
+                    cellArray(s, serial, number, state, {e.p, e.q - e.p, e.r - e.p, e.columns, e.rows},
                               [&](std::size_t k) { return e.colours[k]; });
                 } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>) {
                     polylineSet(s, number, state, e);
@@ -750,18 +750,18 @@ private:
                     for (std::size_t k = 0; k < e.sets.size(); ++k) fillAreaSetOfSet(s, number, state, e, k);
                 } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
                     curve(
-                        s, stored, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
+                        s, serial, number, state, [&] { return e.curve; }, e.rangeStart, e.rangeEnd);
                 } else if constexpr (std::is_same_v<E, GdpElement>) {
                     // Registered GDPs draw as exact curves (the store refused bad points at
                     // insert); the others are ignored (ISO 9592).
                     if (isRegisteredGdp(e.identifier))
                         curve(
-                            s, stored, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
+                            s, serial, number, state, [&] { return *gdpCurve(e); }, 0.0, 0.0);
                 } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                     ApproximationAttribute a = resolve_.surfaceApproximation(state);
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
-                    TessellationCache::Key key{stored.serial, a.criteria, a.valueU,  a.valueV,
-                                               c.style,       c.curvesU,  c.curvesV, 0};
+                    TessellationCache::Key key{serial,  a.criteria, a.valueU,  a.valueV,
+                                               c.style, c.curvesU,  c.curvesV, 0};
                     const auto& entry = cache_.get(key, TessellationCache::Kind::Surface, [&] {
                         TessellationCache::Entry built;
                         built.surface = std::make_shared<const geom::Surface>(e.surface);
@@ -773,7 +773,7 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                     if (e.points.size() < 3) return;
-                    auto mesh = cachedMesh(stored, state, e.vertexColours, [&] {
+                    auto mesh = cachedMesh(serial, state, e.vertexColours, [&] {
                         MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
                         for (std::uint32_t k = 0; k + 2 < e.points.size(); ++k)
                             if (k % 2 == 0)
@@ -787,7 +787,7 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                     if (e.rows < 2 || e.columns < 2) return;
-                    auto mesh = cachedMesh(stored, state, e.vertexColours, [&] {
+                    auto mesh = cachedMesh(serial, state, e.vertexColours, [&] {
                         MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
                         auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * e.columns + c); };
                         for (int r = 0; r + 1 < e.rows; ++r)
@@ -859,16 +859,16 @@ private:
                 }
                 // labels, application data and GSEs (none registered) do not change the draw list
             },
-            stored.value);
+            s.elements, index);
     }
 
     // A curve primitive, tessellated once per element and approximation; `build` makes the
     // exact curve on a cache miss.
     template <class Build>
-    void curve(const Structure& s, const StoredElement& stored, int number, const State& state, Build build,
+    void curve(const Structure& s, std::uint64_t serial, int number, const State& state, Build build,
                double rangeStart, double rangeEnd) {
         const ApproximationAttribute a = resolve_.curveApproximation(state);
-        TessellationCache::Key key{stored.serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
+        TessellationCache::Key key{serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
         const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
             TessellationCache::Entry built;
             built.curve = std::make_shared<const geom::Curve>(build());
@@ -912,23 +912,19 @@ private:
     /// The cache key of a mesh whose colours are resolved at build: they depend on the tables
     /// when one is indexed or the colour mapping entry changes colours (its index is part of
     /// the key then).
-    TessellationCache::Key meshKey(const StoredElement& stored, const State& state, bool indexed,
+    TessellationCache::Key meshKey(std::uint64_t serial, const State& state, bool indexed,
                                    bool coloured) const {
         const bool mapped = coloured && resolve_.maps(state.colourMapIndex);
-        return {stored.serial,
-                0,
-                0,
-                0,
-                0,
-                mapped ? state.colourMapIndex : 0,
-                0,
-                indexed || mapped ? tables_.generation + 1 : 0};
+        return {serial, 0,
+                0,      0,
+                0,      mapped ? state.colourMapIndex : 0,
+                0,      indexed || mapped ? tables_.generation + 1 : 0};
     }
 
     template <class Build>
-    std::shared_ptr<const MeshData> cachedMesh(const StoredElement& stored, const State& state,
+    std::shared_ptr<const MeshData> cachedMesh(std::uint64_t serial, const State& state,
                                                const std::vector<Colour>& colours, Build build) {
-        TessellationCache::Key key = meshKey(stored, state, anyIndexed(colours), !colours.empty());
+        TessellationCache::Key key = meshKey(serial, state, anyIndexed(colours), !colours.empty());
         return cache_
             .get(key, TessellationCache::Kind::Mesh,
                  [&] {
@@ -948,10 +944,10 @@ private:
     /// A cell array as a mesh of coloured quadrilaterals; `colourOf(k)` is cell k's colour (row by
     /// row). The colours depend on the colour table and the mapping entry, so the key does too.
     template <class ColourOf>
-    void cellArray(const Structure& s, const StoredElement& stored, int number, const State& state,
+    void cellArray(const Structure& s, std::uint64_t serial, int number, const State& state,
                    const CellGrid& g, ColourOf colourOf) {
         if (g.columns < 1 || g.rows < 1) return;
-        const TessellationCache::Key key = meshKey(stored, state, true, true);
+        const TessellationCache::Key key = meshKey(serial, state, true, true);
         auto mesh = cache_
                         .get(key, TessellationCache::Kind::Mesh,
                              [&] {

@@ -122,9 +122,9 @@ public:
     /// INQUIRE ELEMENT TYPE AND SIZE: NIL and 0 at position 0; error 202 outside 0..count.
     ElementType elementTypeAt(int id, int elementNumber) const;
     std::size_t elementSizeAt(int id, int elementNumber) const;
-    const Element& elementAt(int id, int elementNumber) const;  ///< error 202 outside 1..count
-    /// The element at the pointer of the open structure (error 202 at position 0).
-    const Element& currentElement() const;
+    Element elementAt(int id, int elementNumber) const;  ///< a copy; error 202 outside 1..count
+    /// A copy of the element at the pointer of the open structure (error 202 at position 0).
+    Element currentElement() const;
     /// ELEMENT SEARCH: position 0 is the NIL element, which NIL or ALL in `include` finds.
     SearchResult elementSearch(int id, int start, SearchDirection direction,
                                const std::set<ElementType>& include,
@@ -163,7 +163,7 @@ private:
     /// Carries every edit since the last call up to the subtree versions of its ancestors.
     void settleVersions() const;
     void forgetVersions(int id) { subtreeVersions_.erase(id); }
-    StoredElement stored(Element e) { return {std::move(e), ++serial_}; }
+    std::uint64_t nextSerial() { return ++serial_; }
     void requireOpen(const char* function) const;
     void checkElement(const Element& e, int into, const char* function) const;
     void removeReferencesTo(int id);

@@ -1,0 +1,162 @@
+#pragma once
+
+#include "phigs/store/Element.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <new>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace phigs {
+
+namespace detail {
+
+/// The position of `T` among the alternatives of the variant `V`.
+template <class T, class V>
+struct AlternativeIndex;
+template <class T, class... U>
+struct AlternativeIndex<T, std::variant<U...>> {
+    static constexpr std::size_t value = [] {
+        constexpr bool same[] = {std::is_same_v<T, U>...};
+        std::size_t i = 0;
+        while (i < sizeof...(U) && !same[i]) ++i;
+        return i;
+    }();
+    static_assert(value < sizeof...(U), "not an element payload");
+};
+
+/// Whether `F` takes every payload of the variant `V` as `const T&`, with one result type.
+template <class F, class V>
+struct TakesEveryPayload;
+template <class F, class... U>
+struct TakesEveryPayload<F, std::variant<U...>> {
+    static constexpr bool value = [] {
+        if constexpr ((std::is_invocable_v<F&, const U&> && ...))
+            return (std::is_same_v<
+                        std::invoke_result_t<F&, const U&>,
+                        std::invoke_result_t<F&, const std::variant_alternative_t<0, std::variant<U...>>&>> &&
+                    ...);
+        else
+            return false;
+    }();
+};
+
+}  // namespace detail
+
+/// An element visitor: it takes every payload (a forgotten one does not compile).
+template <class F>
+concept ElementVisitor = detail::TakesEveryPayload<std::remove_reference_t<F>, Element>::value;
+
+/// The elements of one structure, compact: each payload kept as its own type in one byte arena
+/// (no variant per element, no allocation per element beyond the payload's own lists) and one
+/// 16-byte slot (serial, place, payload family) per element, in element order.
+class ElementArena {
+public:
+    ElementArena() = default;
+    ElementArena(ElementArena&& other) noexcept { swap(other); }
+    ElementArena& operator=(ElementArena&& other) noexcept {
+        ElementArena gone(std::move(other));
+        swap(gone);
+        return *this;
+    }
+    ElementArena(const ElementArena&) = delete;
+    ElementArena& operator=(const ElementArena&) = delete;
+    ~ElementArena() { release(); }
+
+    std::size_t size() const { return slots_.size(); }
+    bool empty() const { return slots_.empty(); }
+    /// The payload family of element `i` (0-based): its alternative index in Element.
+    std::size_t family(std::size_t i) const { return slots_[i].family; }
+    /// The element's serial: unique in the store's lifetime, renewed on insert and replace.
+    std::uint64_t serial(std::size_t i) const { return slots_[i].serial; }
+
+    /// The payload of element `i` when it is a `T`, else nullptr.
+    template <class T>
+    const T* get(std::size_t i) const {
+        const Slot& s = slots_[i];
+        return s.family == detail::AlternativeIndex<T, Element>::value ? object<T>(s.offset) : nullptr;
+    }
+    /// Calls `f` with the payload of element `i` (a `const T&`), as std::visit does with an
+    /// Element: `f` must take every payload, else this does not compile.
+    template <ElementVisitor F>
+    decltype(auto) visit(std::size_t i, F&& f) const {
+        return dispatch(slots_[i], f, std::make_index_sequence<std::variant_size_v<Element>>{});
+    }
+    /// A copy of element `i` as an Element value.
+    Element element(std::size_t i) const;
+    /// The PHIGS type of element `i`.
+    ElementType type(std::size_t i) const;
+
+    /// Inserts `e` before element `at` (at == size(): appends) with `serial`.
+    void insert(std::size_t at, Element&& e, std::uint64_t serial);
+    /// Replaces element `at` by `e` with `serial`.
+    void replace(std::size_t at, Element&& e, std::uint64_t serial);
+    /// Removes elements [first, last).
+    void erase(std::size_t first, std::size_t last);
+    void clear();
+    void swap(ElementArena& other) noexcept {
+        slots_.swap(other.slots_);
+        std::swap(data_, other.data_);
+        std::swap(used_, other.used_);
+        std::swap(capacity_, other.capacity_);
+        std::swap(dead_, other.dead_);
+    }
+
+    /// Arena bytes held, and of those the ones left by removed or replaced payloads.
+    std::size_t capacityBytes() const { return capacity_; }
+    std::size_t deadBytes() const { return dead_; }
+    /// Checks the arena's bookkeeping (places in bounds, aligned, not overlapping, byte counts);
+    /// an empty string when consistent, else what is wrong.
+    std::string checkLayout() const;
+
+private:
+    struct Slot {
+        std::uint64_t serial;
+        std::uint32_t offset;  ///< the payload's place in the arena
+        std::uint32_t family;
+    };
+
+    template <class T>
+    const T* object(std::uint32_t offset) const {
+        return std::launder(reinterpret_cast<const T*>(data_ + offset));
+    }
+    template <std::size_t I, class R, class F>
+    static R call(const ElementArena& a, std::uint32_t offset, F& f) {
+        return std::invoke(f, *a.object<std::variant_alternative_t<I, Element>>(offset));
+    }
+    template <class F, std::size_t... I>
+    decltype(auto) dispatch(const Slot& s, F& f, std::index_sequence<I...>) const {
+        using R = std::invoke_result_t<F&, const std::variant_alternative_t<0, Element>&>;
+        using Call = R (*)(const ElementArena&, std::uint32_t, F&);
+        static constexpr Call calls[] = {&call<I, R, F>...};
+        return calls[s.family](*this, s.offset, f);
+    }
+
+    /// Moves `e`'s payload into the arena (growing it when full); returns its place.
+    std::uint32_t emplace(Element&& e);
+    /// Moves every live payload, in element order, into a new arena with room for `extra` more bytes.
+    void relocate(std::size_t extra);
+    void destroy(const Slot& s);
+    /// Compacts when most of the arena is left over from removed payloads.
+    void compactIfSparse();
+    void release() noexcept;
+
+    std::vector<Slot> slots_;
+    std::byte* data_ = nullptr;
+    std::uint32_t used_ = 0;      ///< bytes up to the end of the last payload placed
+    std::uint32_t capacity_ = 0;  ///< bytes allocated
+    std::uint32_t dead_ = 0;      ///< bytes below used_ that no slot refers to
+};
+
+/// std::visit's form of ElementArena::visit: `f` on the payload of element `i` of `elements`.
+template <ElementVisitor F>
+decltype(auto) visitElement(F&& f, const ElementArena& elements, std::size_t i) {
+    return elements.visit(i, std::forward<F>(f));
+}
+
+}  // namespace phigs

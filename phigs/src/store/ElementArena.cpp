@@ -1,0 +1,192 @@
+#include "phigs/store/ElementArena.h"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace phigs {
+
+namespace {
+
+/// How the arena handles one payload family without knowing its type.
+struct FamilyOps {
+    std::uint32_t size = 0, align = 0;
+    void (*moveTo)(std::byte* from, std::byte* to) = nullptr;  ///< move-constructs at `to`, destroys `from`
+    void (*destroy)(std::byte* at) = nullptr;
+};
+
+template <class T>
+FamilyOps opsOf() {
+    static_assert(std::is_nothrow_move_constructible_v<T>, "payloads move without throwing");
+    return {static_cast<std::uint32_t>(sizeof(T)), static_cast<std::uint32_t>(alignof(T)),
+            [](std::byte* from, std::byte* to) {
+                T* source = std::launder(reinterpret_cast<T*>(from));
+                ::new (static_cast<void*>(to)) T(std::move(*source));
+                source->~T();
+            },
+            [](std::byte* at) { std::launder(reinterpret_cast<T*>(at))->~T(); }};
+}
+
+template <std::size_t... I>
+std::array<FamilyOps, sizeof...(I)> familyTable(std::index_sequence<I...>) {
+    return {opsOf<std::variant_alternative_t<I, Element>>()...};
+}
+
+const std::array<FamilyOps, std::variant_size_v<Element>> kFamilies =
+    familyTable(std::make_index_sequence<std::variant_size_v<Element>>{});
+
+template <class... T>
+constexpr std::size_t maxAlignOf(const std::variant<T...>*) {
+    return std::max({alignof(T)...});
+}
+/// The arena's own alignment: that of the most aligned payload.
+constexpr std::align_val_t kArenaAlign{maxAlignOf(static_cast<const Element*>(nullptr))};
+
+constexpr std::uint32_t alignUp(std::uint32_t offset, std::uint32_t align) {
+    return (offset + align - 1) / align * align;
+}
+
+/// Arenas keep 32-bit places: at most 4 GiB of payload records per structure.
+constexpr std::size_t kArenaLimit = std::numeric_limits<std::uint32_t>::max() / 2;
+
+}  // namespace
+
+Element ElementArena::element(std::size_t i) const {
+    return visit(i, [](const auto& payload) { return Element(payload); });
+}
+
+ElementType ElementArena::type(std::size_t i) const {
+    // The tagged families name their type; the others are read from a copy (an inquiry).
+    return visit(i, [](const auto& payload) {
+        if constexpr (requires { payload.type; })
+            return payload.type;
+        else
+            return elementType(Element(payload));
+    });
+}
+
+std::uint32_t ElementArena::emplace(Element&& e) {
+    const FamilyOps& ops = kFamilies[e.index()];
+    std::uint32_t at = alignUp(used_, ops.align);
+    if (static_cast<std::size_t>(at) + ops.size > capacity_) {
+        relocate(ops.size + ops.align);
+        at = alignUp(used_, ops.align);
+    }
+    std::visit(
+        [&](auto& payload) {
+            using T = std::decay_t<decltype(payload)>;
+            ::new (static_cast<void*>(data_ + at)) T(std::move(payload));
+        },
+        e);
+    dead_ += at - used_;  // alignment padding
+    used_ = at + ops.size;
+    return at;
+}
+
+void ElementArena::relocate(std::size_t extra) {
+    const std::size_t live = used_ - dead_;
+    const std::size_t wanted = std::max<std::size_t>(256, (live + extra) * 3 / 2);
+    if (live + extra > kArenaLimit)
+        throw std::length_error("ElementArena: a structure's element records exceed 2 GiB");
+    const std::size_t capacity = std::min(wanted, kArenaLimit);
+    auto* fresh = static_cast<std::byte*>(::operator new(capacity, kArenaAlign));
+    std::uint32_t at = 0, padding = 0;
+    for (Slot& s : slots_) {
+        const FamilyOps& ops = kFamilies[s.family];
+        padding += alignUp(at, ops.align) - at;
+        at = alignUp(at, ops.align);
+        ops.moveTo(data_ + s.offset, fresh + at);
+        s.offset = at;
+        at += ops.size;
+    }
+    if (data_) ::operator delete(data_, kArenaAlign);
+    data_ = fresh;
+    capacity_ = static_cast<std::uint32_t>(capacity);
+    used_ = at;
+    dead_ = padding;
+}
+
+void ElementArena::destroy(const Slot& s) {
+    const FamilyOps& ops = kFamilies[s.family];
+    ops.destroy(data_ + s.offset);
+    dead_ += ops.size;
+}
+
+void ElementArena::insert(std::size_t at, Element&& e, std::uint64_t serial) {
+    // Room for the slot first, so that nothing can fail once the payload is in the arena.
+    if (slots_.size() == slots_.capacity()) slots_.reserve(std::max<std::size_t>(4, slots_.size() * 2));
+    const std::uint32_t family = static_cast<std::uint32_t>(e.index());
+    const std::uint32_t offset = emplace(std::move(e));
+    slots_.insert(slots_.begin() + static_cast<std::ptrdiff_t>(at), Slot{serial, offset, family});
+}
+
+void ElementArena::replace(std::size_t at, Element&& e, std::uint64_t serial) {
+    const std::uint32_t family = static_cast<std::uint32_t>(e.index());
+    if (slots_[at].family == family) {
+        // Same family: the payload is assigned where it is, and the arena does not grow.
+        std::byte* place = data_ + slots_[at].offset;
+        std::visit(
+            [&](auto& payload) {
+                using T = std::decay_t<decltype(payload)>;
+                *std::launder(reinterpret_cast<T*>(place)) = std::move(payload);
+            },
+            e);
+    } else {
+        const std::uint32_t offset = emplace(std::move(e));  // may move the old payload too
+        destroy(slots_[at]);
+        slots_[at].offset = offset;
+        slots_[at].family = family;
+    }
+    slots_[at].serial = serial;
+    compactIfSparse();
+}
+
+void ElementArena::erase(std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) destroy(slots_[i]);
+    slots_.erase(slots_.begin() + static_cast<std::ptrdiff_t>(first),
+                 slots_.begin() + static_cast<std::ptrdiff_t>(last));
+    if (slots_.empty())
+        clear();
+    else
+        compactIfSparse();
+}
+
+void ElementArena::compactIfSparse() {
+    if (dead_ >= 4096 && dead_ > (used_ - dead_)) relocate(0);
+}
+
+void ElementArena::clear() {
+    release();
+    slots_ = {};
+    data_ = nullptr;
+    used_ = capacity_ = dead_ = 0;
+}
+
+void ElementArena::release() noexcept {
+    for (const Slot& s : slots_) kFamilies[s.family].destroy(data_ + s.offset);
+    if (data_) ::operator delete(data_, kArenaAlign);
+}
+
+std::string ElementArena::checkLayout() const {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> spans;  // [begin, end) of each payload
+    for (const Slot& s : slots_) {
+        if (s.family >= kFamilies.size()) return "a slot with no payload family";
+        const FamilyOps& ops = kFamilies[s.family];
+        if (s.offset % ops.align != 0) return "a misaligned payload";
+        if (static_cast<std::size_t>(s.offset) + ops.size > used_) return "a payload past the arena's end";
+        spans.emplace_back(s.offset, s.offset + ops.size);
+    }
+    std::sort(spans.begin(), spans.end());
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        if (i > 0 && spans[i].first < spans[i - 1].second) return "two payloads overlap";
+        live += spans[i].second - spans[i].first;
+    }
+    if (used_ > capacity_) return "more bytes used than held";
+    if (live + dead_ != used_) return "live and dead bytes do not add up";
+    return {};
+}
+
+}  // namespace phigs

@@ -1,0 +1,288 @@
+// The compact element storage (ElementArena) against a plain reference: a vector of Element
+// values with their serials. Random edit sequences (inserts anywhere, replaces by the same or
+// another payload family, deleted ranges, clears, moves between arenas) of elements of every
+// payload family; after every operation every element, serial, family and type must agree and
+// the arena's layout must be consistent (no overlap, aligned, bytes accounted for). Long runs
+// grow and compact the arena many times. And through the store: random editing (insert and
+// replace mode, pointer moves, labels, deleted ranges, copies of whole structures) against a
+// vector model of the structures, checking contents, pointer and serials after every operation.
+
+#include "RandomElements.h"
+#include "phigs/store/ElementArena.h"
+#include "phigs/store/StructureStore.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace phigs;
+using phigs::testing::randomElement;
+using phigs::testing::randomInt;
+
+namespace {
+
+struct Reference {
+    Element value;
+    std::uint64_t serial = 0;
+};
+
+/// What differs between the arena and the reference, or an empty string.
+std::string difference(const ElementArena& arena, const std::vector<Reference>& reference) {
+    if (arena.size() != reference.size())
+        return "size " + std::to_string(arena.size()) + ", reference " + std::to_string(reference.size());
+    if (arena.empty() != reference.empty()) return "empty() disagrees";
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        const Reference& r = reference[i];
+        const std::string at = " of element " + std::to_string(i);
+        if (arena.serial(i) != r.serial) return "serial" + at;
+        if (arena.family(i) != r.value.index()) return "family" + at;
+        if (!(arena.element(i) == r.value)) return "value" + at;
+        if (arena.type(i) != elementType(r.value)) return "type" + at;
+        if ((arena.get<LabelElement>(i) != nullptr) != std::holds_alternative<LabelElement>(r.value))
+            return "get<LabelElement>" + at;
+        if (const auto* p = arena.get<PolylineElement>(i); p && !(*p == std::get<PolylineElement>(r.value)))
+            return "get<PolylineElement>" + at;
+        const std::size_t visited =
+            arena.visit(i, [](const auto& payload) -> std::size_t { return Element(payload).index(); });
+        if (visited != r.value.index()) return "visit" + at;
+    }
+    return arena.checkLayout();
+}
+
+/// A visitor that forgets one payload: visit() must not accept it.
+struct ForgetsLabels {
+    template <class T>
+    requires(!std::is_same_v<T, LabelElement>) int operator()(const T&) const { return 0; }
+};
+struct TakesAll {
+    template <class T>
+    int operator()(const T&) const {
+        return 0;
+    }
+};
+static_assert(!ElementVisitor<ForgetsLabels>, "a visitor forgetting a payload must not compile");
+static_assert(ElementVisitor<TakesAll>);
+template <class F>
+constexpr bool arenaVisits = requires(const ElementArena& a, F f) {
+    a.visit(0, f);
+};
+static_assert(!arenaVisits<ForgetsLabels>);
+static_assert(arenaVisits<TakesAll>);
+
+/// One random edit of `arena` and `reference` alike; `other` takes part in moves.
+void edit(std::mt19937& rng, ElementArena& arena, std::vector<Reference>& reference, ElementArena& other,
+          std::vector<Reference>& otherReference, std::uint64_t& serial, bool grow) {
+    // Growing: more inserts than elements deleted, long ranges and clears rare.
+    const std::size_t maxSize = grow ? 600 : 40;
+    int op = randomInt(rng, 0, 99);
+    if (grow && op >= 90 && randomInt(rng, 0, 19) > 0) op = randomInt(rng, 0, 49);
+    const auto size = static_cast<int>(reference.size());
+    auto position = [&](int count) { return static_cast<std::size_t>(randomInt(rng, 0, count)); };
+    if (op < 50 && reference.size() < maxSize) {  // insert anywhere, the end most often
+        const std::size_t at = op < 25 ? reference.size() : position(size);
+        Element e = randomElement(rng, 1, 50);
+        reference.insert(reference.begin() + static_cast<std::ptrdiff_t>(at), {e, ++serial});
+        arena.insert(at, std::move(e), serial);
+    } else if (op < 70 && size > 0) {  // replace, by the same family or another one
+        const std::size_t at = position(size - 1);
+        Element e = randomElement(rng, 1, 50);
+        if (op < 60) {
+            while (e.index() != reference[at].value.index()) e = randomElement(rng, 1, 50);
+        }
+        reference[at] = {e, ++serial};
+        arena.replace(at, std::move(e), serial);
+    } else if (op < 95 && size > 0) {  // delete a range, usually a short one
+        const std::size_t first = position(size - 1);
+        const std::size_t last = std::min<std::size_t>(
+            reference.size(), first + 1 + (op < 90 ? position(grow ? 1 : 3) : position(size)));
+        reference.erase(reference.begin() + static_cast<std::ptrdiff_t>(first),
+                        reference.begin() + static_cast<std::ptrdiff_t>(last));
+        arena.erase(first, last);
+    } else if (op < 97) {  // exchange with the other arena, or move it over
+        if (op == 95) {
+            arena.swap(other);
+        } else {
+            other = std::move(arena);
+            arena = ElementArena();
+            otherReference = std::move(reference);
+            reference.clear();
+            arena.swap(other);
+        }
+        std::swap(reference, otherReference);
+    } else if (op == 99) {
+        arena.clear();
+        reference.clear();
+    }
+}
+
+}  // namespace
+
+TEST_CASE("element arena: random edits agree with a vector of elements", "[store][random]") {
+    for (unsigned seed : {1u, 2u, 3u, 4u}) {
+        std::mt19937 rng(seed);
+        ElementArena arena, other;
+        std::vector<Reference> reference, otherReference;
+        std::uint64_t serial = 0;
+        std::size_t largest = 0, relocations = 0;
+        // Small arenas first (every edit checked against the whole reference), then large ones
+        // that grow and compact the arena many times.
+        for (int op = 0; op < 8000; ++op) {
+            const std::size_t deadBefore = arena.deadBytes();
+            edit(rng, arena, reference, other, otherReference, serial, op >= 4000);
+            largest = std::max(largest, reference.size());
+            relocations += arena.deadBytes() < deadBefore && !arena.empty();
+            std::string broken = difference(arena, reference);
+            if (broken.empty()) broken = difference(other, otherReference);
+            INFO("seed " << seed << ", operation " << op);
+            REQUIRE(broken == "");
+        }
+        // The runs reach sizes that grow the arena many times, and compact it.
+        CHECK(largest > 200);
+        CHECK(relocations > 10);
+    }
+}
+
+TEST_CASE("element arena: deletions give the space back", "[store]") {
+    ElementArena arena;
+    std::uint64_t serial = 0;
+    for (int i = 0; i < 20000; ++i)
+        arena.insert(arena.size(), PolylineElement{{{i, 0, 0}, {i, 1, 0}}, false}, ++serial);
+    const std::size_t full = arena.capacityBytes();
+    arena.erase(0, 19000);
+    // Most of the arena is dead: it was compacted to the live payloads.
+    CHECK(arena.capacityBytes() < full / 4);
+    CHECK(arena.deadBytes() == 0);
+    CHECK(arena.checkLayout() == "");
+    CHECK(arena.get<PolylineElement>(0)->points[0].x == 19000);
+    arena.erase(0, arena.size());
+    CHECK(arena.capacityBytes() == 0);
+}
+
+namespace {
+
+/// The store's editing functions on one structure against a vector model of its elements.
+struct EditModel {
+    std::map<int, std::vector<Element>> structures;
+    int pointer = 0;
+};
+
+std::string storeDifference(const StructureStore& store, const EditModel& model) {
+    if (store.elementPointer() != model.pointer)
+        return "pointer " + std::to_string(store.elementPointer()) + ", model " +
+               std::to_string(model.pointer);
+    for (const auto& [id, elements] : model.structures) {
+        const Structure& s = store.structure(id);
+        if (s.elements.size() != elements.size()) return "size of " + std::to_string(id);
+        for (std::size_t i = 0; i < elements.size(); ++i)
+            if (!(store.elementAt(id, static_cast<int>(i) + 1) == elements[i]))
+                return "element " + std::to_string(i + 1) + " of " + std::to_string(id);
+        if (std::string layout = s.elements.checkLayout(); !layout.empty()) return layout;
+    }
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("element arena: store editing agrees with a vector model", "[store][random]") {
+    for (unsigned seed : {11u, 12u, 13u}) {
+        std::mt19937 rng(seed);
+        StructureStore store;
+        EditModel model;
+        for (int id : {1, 2, 3}) {
+            store.emptyStructure(id);
+            model.structures[id];
+        }
+        int open = 1;
+        store.openStructure(open);
+        model.pointer = 0;
+        for (int op = 0; op < 4000; ++op) {
+            auto& elements = model.structures[open];
+            const int count = static_cast<int>(elements.size());
+            const int choice = randomInt(rng, 0, 99);
+            // Labels 1..4 and executes are left out of the random elements (no networks here).
+            auto element = [&] {
+                Element e = randomElement(rng, 100, 100);
+                while (std::holds_alternative<ExecuteStructureElement>(e)) e = randomElement(rng, 100, 100);
+                if (randomInt(rng, 0, 5) == 0) e = label(randomInt(rng, 1, 4));
+                return e;
+            };
+            if (choice < 45) {
+                Element e = element();
+                const bool replace = randomInt(rng, 0, 3) == 0;
+                store.setEditMode(replace ? EditMode::Replace : EditMode::Insert);
+                if (replace && model.pointer > 0) {
+                    elements[static_cast<std::size_t>(model.pointer - 1)] = e;
+                } else {
+                    elements.insert(elements.begin() + model.pointer, e);
+                    ++model.pointer;
+                }
+                store.insert(std::move(e));
+            } else if (choice < 60) {
+                const int to = randomInt(rng, -2, count + 2);
+                store.setElementPointer(to);
+                model.pointer = std::clamp(to, 0, count);
+            } else if (choice < 68) {
+                const int by = randomInt(rng, -3, 3);
+                store.offsetElementPointer(by);
+                model.pointer = std::clamp(model.pointer + by, 0, count);
+            } else if (choice < 76) {
+                store.deleteElement();
+                if (model.pointer > 0) elements.erase(elements.begin() + --model.pointer);
+            } else if (choice < 84) {
+                const int a = randomInt(rng, -1, count + 1), b = randomInt(rng, -1, count + 1);
+                store.deleteElementRange(a, b);
+                int low = std::clamp(std::min(a, b), 0, count), high = std::clamp(std::max(a, b), 0, count);
+                if (low == 0) low = 1;
+                if (high >= low) {
+                    elements.erase(elements.begin() + (low - 1), elements.begin() + high);
+                    model.pointer = low - 1;
+                }
+            } else if (choice < 90) {
+                const int l = randomInt(rng, 1, 4);
+                auto it =
+                    std::find_if(elements.begin() + model.pointer, elements.end(), [&](const Element& e) {
+                        return std::holds_alternative<LabelElement>(e) &&
+                               std::get<LabelElement>(e).label == l;
+                    });
+                if (it == elements.end()) {
+                    CHECK_THROWS(store.setElementPointerAtLabel(l));
+                } else {
+                    store.setElementPointerAtLabel(l);
+                    model.pointer = static_cast<int>(it - elements.begin()) + 1;
+                }
+            } else if (choice < 94) {
+                const int from = randomInt(rng, 1, 4);  // 4 does not exist: nothing to copy
+                std::vector<Element> copies;
+                if (auto it = model.structures.find(from); it != model.structures.end()) copies = it->second;
+                if (copies.size() + elements.size() < 400) {
+                    store.copyAllElementsFromStructure(from);
+                    elements.insert(elements.begin() + model.pointer, copies.begin(), copies.end());
+                    model.pointer += static_cast<int>(copies.size());
+                }
+            } else if (choice < 97) {
+                store.closeStructure();
+                open = randomInt(rng, 1, 3);
+                store.openStructure(open);
+                model.pointer = static_cast<int>(model.structures[open].size());
+            } else {
+                store.emptyStructure(open);
+                elements.clear();
+                model.pointer = 0;
+            }
+            INFO("seed " << seed << ", operation " << op << ", choice " << choice);
+            REQUIRE(storeDifference(store, model) == "");
+            // Serials are unique across the store.
+            std::map<std::uint64_t, int> seen;
+            for (int id : {1, 2, 3}) {
+                const Structure& s = store.structure(id);
+                for (std::size_t i = 0; i < s.elements.size(); ++i)
+                    REQUIRE(seen[s.elements.serial(i)]++ == 0);
+            }
+        }
+    }
+}
