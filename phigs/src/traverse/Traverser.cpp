@@ -583,7 +583,7 @@ private:
 
     /// A segment with room for every primitive up to the next execute (an upper bound on its
     /// items), so it never grows by copying.
-    static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
+    std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
             if (std::holds_alternative<ExecuteStructureElement>(s.elements[i].value)) break;
@@ -591,7 +591,13 @@ private:
         }
         auto segment = std::make_shared<DrawSegment>();
         segment->items.reserve(primitives);
+        segment->points.reserve(primitives * 4);
+        segment->pathPrefix = path_;
         return segment;
+    }
+    /// A view of a copy of `points` in the segment being built.
+    ItemArray<glm::dvec3> segmentPoints(const std::vector<glm::dvec3>& points) const {
+        return ItemArray<glm::dvec3>::view(segment_->points.add(points.data(), points.size()), points.size());
     }
     static bool mayDraw(const Element& e) {
         return e.index() <= kLastPrimitive || std::holds_alternative<GdpElement>(e);
@@ -619,9 +625,9 @@ private:
         item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
         item.lightSet = lightSet(state.lights);
         item.depthCue = depthCue(state.depthCueIndex);
-        item.source.path.reserve(path_.size() + 1);
-        item.source.path.assign(path_.begin(), path_.end());
-        item.source.path.push_back({s.id, number, state.pickId});
+        const std::vector<DrawPathLevel>& prefix = segment_->pathPrefix;
+        item.source.path = DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
+                                           {s.id, number, state.pickId});
         item.source.structureVersion = s.version;
         if (state.modelClip) item.modelClipPlanes = state.clipVolume;
         return &item;
@@ -664,10 +670,11 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{e.points, resolve_.line(state)});
+                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
-                        emit(s, number, state, DrawPolymarker{e.points, resolve_.marker(state)});
+                        emit(s, number, state,
+                             DrawPolymarker{segmentPoints(e.points), resolve_.marker(state)});
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;
@@ -837,7 +844,8 @@ private:
             return built;
         });
         emit(s, number, state,
-             DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), rangeStart, rangeEnd});
+             DrawCurve{segmentPoints(entry.curvePoints), entry.curve, resolve_.line(state), rangeStart,
+                       rangeEnd});
     }
 
     void fillStyle(DrawFillArea& f, const State& state) const {
