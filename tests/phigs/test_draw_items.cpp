@@ -94,3 +94,50 @@ TEST_CASE("draw items read like a vector over random edits", "[traverse][random]
         }
     }
 }
+
+TEST_CASE("items viewing a segment's storage keep their values once copied", "[traverse][random]") {
+    for (unsigned seed : {5u, 6u, 7u, 8u}) {
+        std::mt19937 rng(seed);
+        auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        // Items as traversal makes them: points and the path above them are views of the
+        // segment's own storage.
+        auto segment = std::make_shared<DrawSegment>();
+        for (int k = pick(1, 3); k > 0; --k)
+            segment->pathPrefix.push_back({pick(1, 9), pick(1, 9), pick(0, 9)});
+        std::vector<std::vector<glm::dvec3>> points;
+        std::vector<std::vector<DrawPathLevel>> paths;
+        for (int n = pick(1, 40); n > 0; --n) {
+            std::vector<glm::dvec3> p;
+            for (int k = pick(0, 6); k > 0; --k)
+                p.push_back(glm::dvec3(pick(-9, 9), pick(-9, 9), pick(-9, 9)));
+            DrawItem item;
+            item.primitive = DrawPolyline{
+                ItemArray<glm::dvec3>::view(segment->points.add(p.data(), p.size()), p.size()), {}};
+            const DrawPathLevel own{pick(1, 9), pick(1, 99), pick(0, 9)};
+            item.source.path = DrawPath::below(
+                ItemArray<DrawPathLevel>::view(segment->pathPrefix.data(), segment->pathPrefix.size()), own);
+            segment->items.push_back(std::move(item));
+            points.push_back(p);
+            paths.push_back(segment->pathPrefix);
+            paths.back().push_back(own);
+        }
+        DrawItems shared, writer;
+        shared.appendSegment(segment);
+        writer.appendSegment(segment);
+        const std::size_t at = static_cast<std::size_t>(pick(0, static_cast<int>(points.size()) - 1));
+        writer[at].viewIndex = 7;  // writing copies the shared segment first
+        DrawItem copied = shared[at];
+        REQUIRE(std::get<DrawPolyline>(copied.primitive).points.owned() == !points[at].empty());
+        segment.reset();
+        shared.clear();  // the segment and its storage are gone; the copies must not need them
+        REQUIRE(writer.size() == points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            INFO("seed " << seed << " item " << i);
+            REQUIRE(std::get<DrawPolyline>(writer[i].primitive).points == points[i]);
+            REQUIRE(writer[i].source.path == paths[i]);
+            REQUIRE(std::vector<DrawPathLevel>(writer[i].source.path) == paths[i]);
+        }
+        REQUIRE(std::get<DrawPolyline>(copied.primitive).points == points[at]);
+        REQUIRE(copied.source.path == paths[at]);
+    }
+}

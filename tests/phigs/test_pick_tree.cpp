@@ -72,8 +72,9 @@ DrawItem randomItem(std::mt19937& rng, int index) {
     switch (rng() % 8) {
         case 0: {
             DrawPolyline line;
-            for (int k = 0; k < 4; ++k)
-                line.points.push_back(c + glm::dvec3(small(rng), small(rng), small(rng)));
+            std::vector<glm::dvec3> points;
+            for (int k = 0; k < 4; ++k) points.push_back(c + glm::dvec3(small(rng), small(rng), small(rng)));
+            line.points = points;
             primitive = line;
             break;
         }

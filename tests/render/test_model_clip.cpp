@@ -42,7 +42,9 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         list.items.push_back(clippedLine);
         // Markers at x = 0.1 .. 0.9, kept where x <= 0.5 (a marker is clipped by its position).
         DrawPolymarker markers;
-        for (int i = 1; i <= 9; ++i) markers.points.push_back({0.1 * i, 0.1, 0.5});
+        std::vector<glm::dvec3> markerPoints;
+        for (int i = 1; i <= 9; ++i) markerPoints.push_back({0.1 * i, 0.1, 0.5});
+        markers.points = markerPoints;
         markers.style.type = MarkerType::Cross;
         markers.style.scale = 2.0f;
         markers.style.colour = {0.3f, 1.0f, 0.3f};

@@ -288,8 +288,10 @@ TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; 
         hollow.interior.colour = {0, 1, 0};
         list.items.push_back(item(hollow));
         DrawCurve curve;
+        std::vector<glm::dvec3> curvePoints;
         for (int k = 0; k <= 16; ++k)
-            curve.points.push_back({0.1 + 0.05 * k, 0.75 + 0.1 * std::sin(0.4 * k), 0.5});
+            curvePoints.push_back({0.1 + 0.05 * k, 0.75 + 0.1 * std::sin(0.4 * k), 0.5});
+        curve.points = curvePoints;
         curve.style.colour = {1, 1, 0};
         list.items.push_back(item(curve));
         const Image image = ws.draw(list);

@@ -97,7 +97,10 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(renderer.lastFrame().uploads == 0);
         }
         SECTION("moving one polyline re-uploads that polyline's vertices only") {
-            std::get<DrawPolyline>(list.items[1].primitive).points[1].y += 0.1;
+            auto& moved = std::get<DrawPolyline>(list.items[1].primitive).points;
+            std::vector<glm::dvec3> points = moved;
+            points[1].y += 0.1;
+            moved = points;
             list.items[1].source.structureVersion = 2;
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 1);

@@ -102,7 +102,9 @@ DrawList hiddenLineReference(const DrawList& list) {
         if (!mesh) continue;
         for (const auto& chain : chainEdges(patchBoundaryEdges(*mesh->mesh, mesh->surface.get()))) {
             DrawPolyline boundary;
-            for (std::uint32_t i : chain) boundary.points.push_back(glm::dvec3(mesh->mesh->positions[i]));
+            std::vector<glm::dvec3> points;
+            for (std::uint32_t i : chain) points.push_back(glm::dvec3(mesh->mesh->positions[i]));
+            boundary.points = points;
             boundary.style.colour = mesh->interior.colour;
             DrawItem copy = item;
             copy.primitive = boundary;

@@ -33,7 +33,7 @@ bool culled(CullMode cull, int facing) {
 
 }  // namespace
 
-std::vector<glm::dvec3> ItemProjector::toWorld(const std::vector<glm::dvec3>& points) const {
+std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> points) const {
     std::vector<glm::dvec3> world;
     world.reserve(points.size());
     for (const glm::dvec3& p : points) world.push_back(apply(pipeline_.item().modelTransform, p));

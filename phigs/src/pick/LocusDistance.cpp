@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 namespace phigs {
@@ -111,7 +112,7 @@ private:
     const std::vector<glm::dvec4>* planes_;
 };
 
-void strip(Measure& m, const std::vector<glm::dvec3>& points, const glm::dmat4& model, bool closed) {
+void strip(Measure& m, std::span<const glm::dvec3> points, const glm::dmat4& model, bool closed) {
     if (points.size() == 1) m.at(apply(model, points[0]));
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
         m.segment(apply(model, points[i]), apply(model, points[i + 1]));

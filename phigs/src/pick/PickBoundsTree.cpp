@@ -18,9 +18,9 @@ void grow(glm::dvec3& lo, glm::dvec3& hi, const glm::dvec3& p) {
     hi = glm::max(hi, p);
 }
 
-template <typename Point>
-void growAll(glm::dvec3& lo, glm::dvec3& hi, const std::vector<Point>& points) {
-    for (const Point& p : points) grow(lo, hi, glm::dvec3(p));
+template <typename Points>
+void growAll(glm::dvec3& lo, glm::dvec3& hi, const Points& points) {
+    for (const auto& p : points) grow(lo, hi, glm::dvec3(p));
 }
 
 bool finite(const glm::dvec3& p) {

@@ -226,8 +226,8 @@ bool insideClip(const DrawView& view, const glm::dvec3& npc) {
     return true;
 }
 
-template <typename Point>
-std::vector<Projected> projectAll(const glm::dmat4& m, const std::vector<Point>& points) {
+template <typename Points>
+std::vector<Projected> projectAll(const glm::dmat4& m, const Points& points) {
     std::vector<Projected> out;
     out.reserve(points.size());
     for (const auto& p : points) out.push_back(project(m, glm::dvec3(p)));

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <type_traits>
 #include <unordered_set>
 
@@ -55,7 +56,7 @@ public:
         end(part);
     }
 
-    void polyline(const std::vector<glm::dvec3>& points, const LineStyle& style) {
+    void polyline(std::span<const glm::dvec3> points, const LineStyle& style) {
         std::vector<glm::dvec3> world;
         world.reserve(points.size());
         for (const auto& p : points) world.push_back(apply(model_, p));
@@ -232,8 +233,9 @@ struct Hasher {
         value(t.colour), value(t.font), value(t.expansion), value(t.spacing), value(t.height);
         value(t.upVector), value(t.path), value(t.horizontal), value(t.vertical);
     }
-    template <class T>
-    void values(const std::vector<T>& v) {
+    template <class Values>
+    void values(const Values& v) {
+        using T = typename Values::value_type;
         value(v.size());
         if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
     }

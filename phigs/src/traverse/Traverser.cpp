@@ -608,7 +608,7 @@ private:
 
     /// A segment with room for every primitive up to the next execute (one item each: only a
     /// polyline set or a set of fill area sets makes more, and the segment grows for those).
-    static std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) {
+    std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
             if (s.elements.get<ExecuteStructureElement>(i)) break;
@@ -616,7 +616,13 @@ private:
         }
         auto segment = std::make_shared<DrawSegment>();
         segment->items.reserve(primitives);
+        segment->points.reserve(primitives * 4);
+        segment->pathPrefix = path_;
         return segment;
+    }
+    /// A view of a copy of `points` in the segment being built.
+    ItemArray<glm::dvec3> segmentPoints(const std::vector<glm::dvec3>& points) const {
+        return ItemArray<glm::dvec3>::view(segment_->points.add(points.data(), points.size()), points.size());
     }
     static bool mayDraw(std::size_t family) {
         return family <= kLastPrimitive || family == detail::AlternativeIndex<GdpElement, Element>::value;
@@ -644,9 +650,9 @@ private:
         item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
         item.lightSet = lightSet(state.lights);
         item.depthCue = depthCue(state.depthCueIndex);
-        item.source.path.reserve(path_.size() + 1);
-        item.source.path.assign(path_.begin(), path_.end());
-        item.source.path.push_back({s.id, number, state.pickId});
+        const std::vector<DrawPathLevel>& prefix = segment_->pathPrefix;
+        item.source.path = DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
+                                           {s.id, number, state.pickId});
         item.source.structureVersion = s.version;
         if (state.modelClip) item.modelClipPlanes = state.clipVolume;
         return &item;
@@ -690,10 +696,11 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{e.points, resolve_.line(state)});
+                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
-                        emit(s, number, state, DrawPolymarker{e.points, resolve_.marker(state)});
+                        emit(s, number, state,
+                             DrawPolymarker{segmentPoints(e.points), resolve_.marker(state)});
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;
@@ -877,7 +884,8 @@ private:
             return built;
         });
         emit(s, number, state,
-             DrawCurve{entry.curvePoints, entry.curve, resolve_.line(state), rangeStart, rangeEnd});
+             DrawCurve{segmentPoints(entry.curvePoints), entry.curve, resolve_.line(state), rangeStart,
+                       rangeEnd});
     }
 
     // A zero size component, a zero vector or parallel vectors leave the placement as it was:
@@ -986,7 +994,7 @@ private:
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
             if (e.vertexColours.empty()) {
-                emit(s, number, state, DrawPolyline{points, style});
+                emit(s, number, state, DrawPolyline{segmentPoints(points), style});
                 continue;
             }
             const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
@@ -996,10 +1004,10 @@ private:
                 LineStyle run = style;
                 run.colour = colours[start];
                 emit(s, number, state,
-                     DrawPolyline{
-                         std::vector<glm::dvec3>(points.begin() + static_cast<std::ptrdiff_t>(start),
-                                                 points.begin() + static_cast<std::ptrdiff_t>(end) + 1),
-                         run});
+                     DrawPolyline{segmentPoints(std::vector<glm::dvec3>(
+                                      points.begin() + static_cast<std::ptrdiff_t>(start),
+                                      points.begin() + static_cast<std::ptrdiff_t>(end) + 1)),
+                                  run});
                 start = end;
             }
         }
@@ -1039,7 +1047,7 @@ private:
         emit(s, number, state, std::move(f));
         for (auto& line : edges)
             emit(s, number, state,
-                 DrawPolyline{std::move(line), {edgeStyle.colour, edgeStyle.type, edgeStyle.width}});
+                 DrawPolyline{segmentPoints(line), {edgeStyle.colour, edgeStyle.type, edgeStyle.width}});
     }
 
     /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from

@@ -30,8 +30,9 @@ void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const Works
     picture.items.push_back(echoItem(std::move(box)));
 
     DrawPolyline outline;
-    outline.points = corners;
-    outline.points.push_back(corners.front());
+    std::vector<glm::dvec3> closed = corners;
+    closed.push_back(corners.front());
+    outline.points = closed;
     outline.style.colour = glm::vec3(style.outline);
     picture.items.push_back(echoItem(std::move(outline)));
 

@@ -3,6 +3,9 @@
 #include "phigs/hardcopy/ItemPipeline.h"
 #include "phigs/hardcopy/ProjectedScene.h"
 
+#include <span>
+#include <vector>
+
 namespace phigs::hardcopy {
 
 /// Puts one draw item's primitive on the page through its ItemPipeline, part by part in the
@@ -21,7 +24,7 @@ public:
     void operator()(const DrawMesh& mesh);
 
 private:
-    std::vector<glm::dvec3> toWorld(const std::vector<glm::dvec3>& points) const;
+    std::vector<glm::dvec3> toWorld(std::span<const glm::dvec3> points) const;
     void fillInterior(const DrawFillArea& fill, const std::vector<std::vector<glm::dvec3>>& world);
     void fillTriangles(const DrawFillArea& fill);
 

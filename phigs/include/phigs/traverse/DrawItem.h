@@ -3,6 +3,8 @@
 // One primitive of a draw list with every attribute resolved (see DrawList.h).
 
 #include "phigs/core/Attributes.h"
+#include "phigs/traverse/DrawPath.h"
+#include "phigs/traverse/ItemArray.h"
 
 #include "geom/Curve.h"
 #include "geom/Surface.h"
@@ -20,30 +22,22 @@
 
 namespace phigs {
 
-/// One level of the path from a posted root to the element that produced a draw item.
-struct DrawPathLevel {
-    int structureId = 0;
-    int elementNumber = 0;  ///< 1-based position of the element (the execute structure, or the primitive)
-    int pickId = 0;         ///< current pick id at that element
-    bool operator==(const DrawPathLevel&) const = default;
-};
-
 /// Where a draw item came from: the whole path from the posted root (top first), and the
 /// version of the primitive's own structure (a renderer may cache per element and version).
 struct DrawSource {
-    std::vector<DrawPathLevel> path;  ///< path.back() is the primitive's own element
+    DrawPath path;  ///< path.back() is the primitive's own element
     std::uint64_t structureVersion = 0;
 };
 
 /// A polyline: one connected strip of points in modelling coordinates.
 struct DrawPolyline {
-    std::vector<glm::dvec3> points;
+    ItemArray<glm::dvec3> points;
     LineStyle style;
 };
 
 /// A set of markers at points in modelling coordinates.
 struct DrawPolymarker {
-    std::vector<glm::dvec3> points;
+    ItemArray<glm::dvec3> points;
     MarkerStyle style;
 };
 
@@ -96,7 +90,7 @@ struct DrawMesh {
 /// A B-spline curve already tessellated into a polyline; `curve` keeps the exact form and the
 /// range the part drawn (a vector target tessellates it again to its own tolerance).
 struct DrawCurve {
-    std::vector<glm::dvec3> points;
+    ItemArray<glm::dvec3> points;
     std::shared_ptr<const geom::Curve> curve;
     LineStyle style;
     double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain

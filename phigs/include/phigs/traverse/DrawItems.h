@@ -6,6 +6,7 @@
 // looks like a vector (size, [], at, iteration); writing a shared segment copies it first, so
 // a draw list keeps value semantics.
 
+#include "phigs/traverse/BlockPool.h"
 #include "phigs/traverse/DrawItem.h"
 
 #include <cstddef>
@@ -16,9 +17,17 @@
 
 namespace phigs {
 
-/// Consecutive draw items produced together (one structure's elements between two executes).
+/// Consecutive draw items produced together (one structure's elements between two executes),
+/// with the storage their views refer to (points, the path above the structure). A copy copies
+/// the items only: each copied item holds its own values.
 struct DrawSegment {
     std::vector<DrawItem> items;
+    BlockPool<glm::dvec3> points;           ///< what the items' point views show
+    std::vector<DrawPathLevel> pathPrefix;  ///< the levels above the items' own (set before any item)
+
+    DrawSegment() = default;
+    DrawSegment(const DrawSegment& other) : items(other.items) {}
+    DrawSegment& operator=(const DrawSegment&) = delete;
 };
 
 /// A draw list's items: shared segments read as one sequence.
