@@ -30,7 +30,7 @@ struct Phigs_store {
     Pfilter filter{};
     Ppat_rep pattern{};
     Ppat_rep_plus patternPlus{};  ///< its colours in `covals`
-    std::vector<Pcoval> covals;
+    std::vector<Pcoval> covals;   ///< also the cells of a cell array plus
     phigs::c::InputAnswer input;  ///< the input inquiries' answers
     std::vector<Pfloat> floats;   // PHIGS PLUS: knots
     std::vector<Ppoint4> points4;
@@ -42,7 +42,6 @@ struct Phigs_store {
     std::vector<Pfacet_vdata_list3> vertexLists;
     // Polyline sets, cell arrays plus, sets of fill area sets, colour mapping answers.
     std::vector<Pline_vdata_list3> lineLists;
-    std::vector<Pcoval> covals;
     std::vector<Pvec3> norms;
     std::vector<Pconorm3> conorms;
     std::vector<Pint_list> intLists;
@@ -65,7 +64,7 @@ struct Phigs_store {
         input = {};
         floats.clear(), points4.clear(), trimCurves.clear(), trimLoops.clear();
         ptcolrs.clear(), ptnorms.clear(), ptconorms.clear(), vertexLists.clear();
-        lineLists.clear(), covals.clear(), norms.clear(), conorms.clear();
+        lineLists.clear(), norms.clear(), conorms.clear();
         intLists.clear(), intListLists.clear(), edgeFlags.clear(), edgeLists.clear(), edgeListLists.clear();
         colourMap = {}, colourReps.clear(), floatLists.clear();
     }

@@ -21,10 +21,11 @@ double signedArea(const std::vector<glm::dvec2>& c) {
     return a;
 }
 
-/// A fill of one convex contour, opaque: inside it the winding number is 1 or -1, so several of
-/// them filled as one path by the non-zero rule cover their union, as painting each in turn does.
+/// A fill of one convex contour, opaque, in a plain colour (a PATTERN fill has a source of its
+/// own): inside it the winding number is 1 or -1, so several of them filled as one path by the
+/// non-zero rule cover their union, as painting each in turn does.
 bool convexOpaque(const VectorFill& fill, bool opaque) {
-    if (fill.contours.size() != 1 || !(opaque || fill.opacity >= 1.0f)) return false;
+    if (fill.pattern || fill.contours.size() != 1 || !(opaque || fill.opacity >= 1.0f)) return false;
     const auto& c = fill.contours[0];
     if (c.size() < 3) return false;
     int sign = 0;
