@@ -657,6 +657,19 @@ bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, gpu::Draw
     return true;
 }
 
+void Renderer::bindBuffer(std::uint32_t binding, VkDescriptorType type, const GpuBuffer& buffer,
+                          VkDeviceSize range) const {
+    VkDescriptorBufferInfo info{buffer.handle(), 0, range};
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstSet = set_;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    write.pBufferInfo = &info;
+    vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+}
+
 void Renderer::uploadPatterns() {
     if (patternCells_.empty()) patternCells_.push_back(glm::vec4(0.0f));  // the binding is never empty
     const std::size_t bytes = patternCells_.size() * sizeof(glm::vec4);
@@ -665,15 +678,7 @@ void Renderer::uploadPatterns() {
         patternBuffer_ = std::make_unique<GpuBuffer>(context_, bytes + bytes / 2,
                                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frame_);
         lastPatternCells_.clear();
-        VkDescriptorBufferInfo info{patternBuffer_->handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet write{};
-        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        write.dstSet = set_;
-        write.dstBinding = 2;
-        write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        write.pBufferInfo = &info;
-        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+        bindBuffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, *patternBuffer_, VK_WHOLE_SIZE);
     }
     if (patternCells_ != lastPatternCells_) {
         patternBuffer_->write(patternCells_.data(), bytes);
@@ -749,15 +754,7 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::v
         lastFrameBytes_.assign(bytes, bytes + sizeof f);
     }
     if (created) {
-        VkDescriptorBufferInfo info{frameBuffer_->handle(), 0, sizeof f};
-        VkWriteDescriptorSet write{};
-        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        write.dstSet = set_;
-        write.dstBinding = 0;
-        write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        write.pBufferInfo = &info;
-        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+        bindBuffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, *frameBuffer_, sizeof f);
     }
 }
 
@@ -768,15 +765,7 @@ void Renderer::uploadDraws() {
         drawBuffer_ = std::make_unique<GpuBuffer>(context_, needed + needed / 2,
                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frame_);
         lastDrawBytes_.clear();
-        VkDescriptorBufferInfo info{drawBuffer_->handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet write{};
-        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        write.dstSet = set_;
-        write.dstBinding = 1;
-        write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        write.pBufferInfo = &info;
-        vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+        bindBuffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, *drawBuffer_, VK_WHOLE_SIZE);
     }
     // Only the runs of draw records that differ from what the buffer holds are written.
     constexpr std::size_t record = sizeof(gpu::DrawParams);

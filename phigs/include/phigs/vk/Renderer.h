@@ -87,6 +87,9 @@ private:
     /// Writes the frame block; firstLights[s] is where light set s starts in its light array.
     void uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights);
     void uploadDraws();
+    /// Points descriptor `binding` of the set at `buffer` (its first `range` bytes).
+    void bindBuffer(std::uint32_t binding, VkDescriptorType type, const GpuBuffer& buffer,
+                    VkDeviceSize range) const;
     /// A PATTERN interior item's pattern record (its map to cells) into the pattern buffer and
     /// `d` (the pattern's cells join it once a frame); false when it has no drawable pattern
     /// and draws solid.
