@@ -56,7 +56,8 @@ struct ArchiveModel {
             std::erase_if(taken, [&](const auto& entry) { return store.structures.contains(entry.first); });
         Graph after = graphOf(store.structures);
         for (const auto& [id, elements] : taken) {
-            std::erase_if(after.edges, [&](auto& edge) { return edge.first == id; });
+            const int from = id;  // clang 14 cannot capture a structured binding
+            std::erase_if(after.edges, [from](auto& edge) { return edge.first == from; });
             for (const auto& e : elements)
                 if (auto x = executeOf(e)) after.add(id, x->structureId);
         }
