@@ -3,7 +3,6 @@
 // session can be recorded as a script. --export converts a model to IGES or STEP without a session.
 #include "acsynt/session/ModelExchange.h"
 #include "acsynt/session/Session.h"
-#include "geom/exchange/CadFile.h"
 #include "geom/exchange/ExchangeError.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/vk/Context.h"
@@ -23,6 +22,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -120,9 +120,12 @@ std::string unreadable(const std::string& path) {
 /// --export OUT MODEL: OUT an IGES or STEP name that can be written, MODEL readable.
 bool checkExport(const Options& o) {
     try {
-        geom::exchange::cadFormatOf(o.exportFile);
+        acsynt::exchangeCalls().checkFileName(o.exportFile);
     } catch (const geom::exchange::ExchangeError& e) {
         std::cerr << "acsynt: --export " << e.reason() << "\n";
+        return false;
+    } catch (const std::runtime_error& e) {  // the exchange module cannot be loaded
+        std::cerr << "acsynt: --export: " << e.what() << "\n";
         return false;
     }
     if (const std::string why = unwritable(o.exportFile); !why.empty()) {
@@ -270,7 +273,7 @@ int finish(acsynt::Session& session, const Options& o) {
 int exportModel(const Options& o) {
     try {
         const acsynt::Model model = acsynt::loadModel(o.model);
-        geom::exchange::writeCadFile(acsynt::cadModelOf(model, {}), o.exportFile);
+        acsynt::exchangeCalls().exportModel(model, {}, o.exportFile);
         std::cout << o.exportFile << "\n";
         return 0;
     } catch (const std::exception& e) {  // a model file that does not parse, a file that cannot be written
@@ -320,6 +323,11 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
         return kExitUsage;
 #endif
     } else {
+        // lavapipe draws in this thread rather than its own pool (the user's LP_NUM_THREADS
+        // wins): a script waits for each picture anyway, and the pool's per-thread tile bins
+        // cost about 35 MB of peak memory and their hand-offs system time; the pictures are
+        // the same, as the rasteriser's result does not depend on how it divides the work.
+        setenv("LP_NUM_THREADS", "0", 0);
         source = std::make_unique<phigs::ScriptInputSource>(
             phigs::ScriptInputSource::fromFile(options.script, acsynt::Session::directives()));
     }

@@ -39,8 +39,18 @@ bool convexOpaque(const VectorFill& fill, bool opaque) {
     return sign != 0;
 }
 
+/// A colour channel at 8 bits, as the raster has it: finer steps show on no screen or print,
+/// and neighbouring facets of a smooth surface then share colours, so runs of them are one path.
+double channel8(float c) {
+    return std::lround(std::clamp(double(c), 0.0, 1.0) * 255.0) / 255.0;
+}
+
+bool sameColour(glm::vec3 a, glm::vec3 b) {
+    return channel8(a.x) == channel8(b.x) && channel8(a.y) == channel8(b.y) && channel8(a.z) == channel8(b.z);
+}
+
 bool sameFillStyle(const VectorFill& a, const VectorFill& b) {
-    return a.colour == b.colour && a.seamWidth == b.seamWidth && a.clip == b.clip;
+    return sameColour(a.colour, b.colour) && a.seamWidth == b.seamWidth && a.clip == b.clip;
 }
 
 }  // namespace
@@ -130,10 +140,11 @@ void CairoPainter::fillRun(const std::vector<VectorOp>& ops, std::size_t begin, 
 }
 
 void CairoPainter::colour(glm::vec3 rgb, float opacity) {
+    const double r = channel8(rgb.x), g = channel8(rgb.y), b = channel8(rgb.z);
     if (opaque_ || opacity >= 1.0f)
-        cairo_set_source_rgb(cr_, rgb.x, rgb.y, rgb.z);
+        cairo_set_source_rgb(cr_, r, g, b);
     else
-        cairo_set_source_rgba(cr_, rgb.x, rgb.y, rgb.z, std::max(0.0f, opacity));
+        cairo_set_source_rgba(cr_, r, g, b, std::max(0.0f, opacity));
 }
 
 void CairoPainter::patternSource(const PagePattern& pattern, float opacity) {

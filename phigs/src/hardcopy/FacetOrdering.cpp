@@ -6,12 +6,19 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
 #include <utility>
 
 namespace phigs::hardcopy {
 namespace {
 
 enum class Side { On, Front, Back, Both };
+
+/// A colour channel at the 8 bits of the raster (and of the painter's colours).
+int channel8(float c) {
+    return int(std::lround(std::clamp(double(c), 0.0, 1.0) * 255.0));
+}
 
 /// The BSP tree over facets in page space with depth scaled to points.
 class Bsp {
@@ -123,7 +130,8 @@ private:
     }
 
     void build(std::vector<std::size_t> all);
-    void walk(std::vector<ProjectedFacet>& out) const;
+    /// Moves the facets out of the pool, far to near: each is on one node only.
+    void walk(std::vector<ProjectedFacet>& out);
     void sortByDepth(Node& node) const;
 
     std::vector<ProjectedFacet> pool_;
@@ -192,7 +200,7 @@ void Bsp::sortByDepth(Node& node) const {
                      [&](std::size_t a, std::size_t b) { return depth(a) < depth(b); });
 }
 
-void Bsp::walk(std::vector<ProjectedFacet>& out) const {
+void Bsp::walk(std::vector<ProjectedFacet>& out) {
     if (nodes_.empty()) return;
     // The viewer looks down -z from z = +infinity: the side the plane's normal z points to is near.
     struct Step {
@@ -205,7 +213,7 @@ void Bsp::walk(std::vector<ProjectedFacet>& out) const {
         stack.pop_back();
         const Node& node = nodes_[std::size_t(step.node)];
         if (step.emit) {
-            for (std::size_t f : node.on) out.push_back(pool_[f]);
+            for (std::size_t f : node.on) out.push_back(std::move(pool_[f]));
             continue;
         }
         const bool frontIsNear = node.plane.z >= 0.0;
@@ -224,12 +232,23 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
     FacetOrderStats total;
     total.input = facets.size();
     std::vector<ProjectedFacet> out;
-    for (const auto& cluster : overlapClusters(facets)) {
-        // A facet that overlaps no other may be painted at any time.
-        if (cluster.size() == 1) {
-            out.push_back(std::move(facets[cluster[0]]));
-            continue;
-        }
+    const auto clusters = overlapClusters(facets);
+    // A facet that overlaps no other may be painted at any time: these come first, by view and
+    // colour, so that the painter can paint a run of one colour as one path (CairoPainter).
+    std::vector<std::size_t> alone;
+    for (const auto& cluster : clusters)
+        if (cluster.size() == 1) alone.push_back(cluster[0]);
+    std::stable_sort(alone.begin(), alone.end(), [&](std::size_t a, std::size_t b) {
+        const ProjectedFacet &p = facets[a], &q = facets[b];
+        const auto key = [](const ProjectedFacet& f) {
+            return std::tuple(f.clip, channel8(f.colour.x), channel8(f.colour.y), channel8(f.colour.z));
+        };
+        return key(p) < key(q);
+    });
+    out.reserve(facets.size());
+    for (std::size_t i : alone) out.push_back(std::move(facets[i]));
+    for (const auto& cluster : clusters) {
+        if (cluster.size() == 1) continue;
         std::vector<ProjectedFacet> group;
         for (std::size_t i : cluster) group.push_back(std::move(facets[i]));
         Bsp bsp(std::move(group), pointsPerDepth);

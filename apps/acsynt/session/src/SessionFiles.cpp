@@ -10,7 +10,6 @@
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
-#include "geom/exchange/CadFile.h"
 #include "phigs/core/Error.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
@@ -146,10 +145,8 @@ void Session::saveModel(const std::string& name) {
 void Session::exportModel(const std::string& name) {
     const auto path = outputPath(name);
     const Model& model = core_.models.current();
-    const geom::exchange::CadModel cad = cadModelOf(model, core_.mappings);
-    geom::exchange::writeCadFile(cad, path);  // ExchangeError (a runtime_error) names the file and cause
-    std::size_t curves = 0;
-    for (const auto& s : cad.surfaces) curves += s.curves.size();
+    // ExchangeError (a runtime_error) names the file and cause.
+    const std::size_t curves = exchangeCalls().exportModel(model, core_.mappings, path);
     say("MODEL " + model.name + " EXPORTED TO " + path.string() + ": " +
         std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(model.patchCount()) +
         " PATCHES, " + std::to_string(curves) + " MAPPED CURVES");
@@ -157,7 +154,7 @@ void Session::exportModel(const std::string& name) {
 
 void Session::importModel(const std::string& name) {
     ImportedModel imported =
-        importCadModel(findInput(name));  // all or nothing: throws before anything changes
+        exchangeCalls().importModel(findInput(name));  // all or nothing: throws before anything changes
     for (std::size_t i = 0; i < core_.models.size(); ++i)
         if (core_.models.at(i).name == imported.model.name) {
             fail("A MODEL NAMED " + imported.model.name + " IS ALREADY LOADED");

@@ -13,7 +13,6 @@
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
-#include "geom/exchange/CadFile.h"
 #include "phigs/core/Error.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"

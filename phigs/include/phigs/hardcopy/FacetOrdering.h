@@ -20,7 +20,8 @@ struct FacetOrderStats {
 /// planes, the page's x and y with depth scaled by `pointsPerDepth`; a facet straddling the plane
 /// of another is split there, so facets that overlap in depth come out right. Splits are capped
 /// at eight times a cluster's size (plus 10,000); beyond that the rest of the cluster is sorted
-/// by mean depth, which stats report.
+/// by mean depth, which stats report. Facets that overlap no other come first, by view and by
+/// colour at 8 bits per channel, so that runs of one colour can be painted as one path.
 std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets, double pointsPerDepth,
                                              FacetOrderStats* stats = nullptr);
 

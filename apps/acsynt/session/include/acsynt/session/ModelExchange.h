@@ -1,10 +1,11 @@
 #pragma once
-// A model with its mapped curves to and from IGES / STEP (geom_exchange).
+// A model with its mapped curves to and from IGES / STEP: the calls of the exchange module
+// (apps/acsynt/exchange, on OpenCASCADE), which the program loads on the first of them.
 
 #include "acsynt/Model.h"
-#include "acsynt/session/Session.h"
-#include "geom/exchange/CadModel.h"
+#include "acsynt/session/MappingRecord.h"
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,11 +16,6 @@ namespace acsynt {
 /// within this distance, in model units (metres): 10 micrometres.
 inline constexpr double kImportTolerance = 1e-5;
 
-/// The model as an exchange model in metres: each component a named surface with its colour,
-/// and the loops of each of the model's mappings ((u, w) and points) as curves on it, named
-/// after the curve file.
-geom::exchange::CadModel cadModelOf(const Model& model, const std::vector<MappingRecord>& mappings);
-
 /// A model read from an IGES or STEP file, with its mapped curves and what was changed or left out.
 struct ImportedModel {
     Model model;
@@ -27,13 +23,25 @@ struct ImportedModel {
     std::vector<std::string> warnings;
 };
 
-/// Reads an IGES or STEP file (geom::exchange::readCadFile, in metres) as a new model: each
-/// surface a component (names made valid and unique, the kind guessed from the name), made a
-/// polynomial bicubic (exact where it can be, else within kImportTolerance, with a warning), its
-/// patch list built, closed round a direction that is periodic by construction; each curve set a
-/// mapping of one part. The model is named after the file's model (or the file). Throws
-/// geom::exchange::ExchangeError for a file that cannot be read or a model over the program's
-/// limits (64 components, 8192 patches); nothing is returned half-read.
-ImportedModel importCadModel(const std::filesystem::path& path);
+/// The exchange module's entry points. Each throws geom::exchange::ExchangeError (a
+/// std::runtime_error, "FILE: REASON") for a file that cannot be read or written.
+struct ExchangeCalls {
+    /// acsynt::importCadModel: a new model from an IGES or STEP file, all or nothing.
+    ImportedModel (*importModel)(const std::filesystem::path& path);
+    /// Writes the model with its mappings (acsynt::cadModelOf, then geom::exchange::writeCadFile)
+    /// and gives the number of mapped curves written.
+    std::size_t (*exportModel)(const Model& model, const std::vector<MappingRecord>& mappings,
+                               const std::filesystem::path& path);
+    /// geom::exchange::cadFormatOf: refuses a name that is not .igs/.iges/.stp/.step.
+    void (*checkFileName)(const std::filesystem::path& path);
+};
+
+/// The exchange calls. OpenCASCADE's libraries are large (relocating them costs a tenth of a
+/// short session), so the module is opened (dlopen) on the first call, not at the program's
+/// start; std::runtime_error naming the module and the loader's reason when it cannot be.
+const ExchangeCalls& exchangeCalls();
 
 }  // namespace acsynt
+
+/// The module's one exported symbol: its calls.
+extern "C" const acsynt::ExchangeCalls* acsynt_exchange_calls();

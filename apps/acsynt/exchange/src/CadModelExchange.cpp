@@ -1,0 +1,159 @@
+#include "acsynt/exchange/CadModelExchange.h"
+
+#include "acsynt/ModelFile.h"
+#include "geom/GeometryError.h"
+#include "geom/exchange/Bicubic.h"
+#include "geom/exchange/CadFile.h"
+#include "geom/exchange/ExchangeError.h"
+#include "geom/exchange/OcctConversion.h"
+
+#include <cctype>
+#include <set>
+
+namespace acsynt {
+
+namespace {
+
+/// A valid model or component name (1 to 20 of letters, digits, '_', '-', '.') from any text,
+/// made unique among `taken`.
+std::string validName(const std::string& text, std::set<std::string>& taken, const std::string& fallback) {
+    std::string name;
+    for (char c : text)
+        if (name.size() < 20)
+            name += std::isalnum((unsigned char)c) || c == '_' || c == '-' || c == '.' ? c : '_';
+    if (name.empty()) name = fallback;
+    const std::string stem = name.substr(0, 16);
+    for (int k = 2; taken.count(name); ++k) name = stem + "_" + std::to_string(k);
+    taken.insert(name);
+    return name;
+}
+
+ComponentKind kindFromName(const std::string& name, bool closed) {
+    auto has = [&](const char* word) { return name.find(word) != std::string::npos; };
+    if (has("fuselage") || has("body")) return ComponentKind::Fuselage;
+    if (has("htail") || has("stab")) return ComponentKind::HorizontalTail;
+    if (has("fin") || has("vtail")) return ComponentKind::VerticalTail;
+    if (has("engine") || has("nacelle")) return ComponentKind::Nacelle;
+    if (has("wing")) return ComponentKind::Wing;
+    return closed ? ComponentKind::Fuselage : ComponentKind::Wing;
+}
+
+std::size_t spans(const std::vector<double>& knots, int degree, std::size_t count) {
+    std::size_t n = 0;
+    for (std::size_t k = std::size_t(degree); k < count; ++k) n += knots[k] < knots[k + 1];
+    return n;
+}
+
+/// One imported surface as a component; its curve sets become mappings of the model.
+Component componentOf(const geom::exchange::CadSurface& s, const std::string& name, ImportedModel& result,
+                      std::size_t& patches, const std::string& file) {
+    Component c;
+    c.name = name;
+    c.colour = s.colour.value_or(glm::dvec3(1.0));
+    const geom::exchange::BicubicSurface bicubic = geom::exchange::toBicubic(s.surface, kImportTolerance);
+    if (!bicubic.exact)
+        result.warnings.push_back(name + ": a " + (s.surface.rational() ? "rational" : "higher-degree") +
+                                  " surface made bicubic within " + std::to_string(bicubic.maxError) + " m");
+    c.surface = bicubic.surface;
+    c.closedU = geom::exchange::periodicByConstruction(c.surface, false);
+    c.closedW = geom::exchange::periodicByConstruction(c.surface, true);
+    c.kind = kindFromName(name, c.closedW);
+    patches += spans(c.surface.knotsU, 3, c.surface.countU) * spans(c.surface.knotsV, 3, c.surface.countV);
+    if (patches > kModelMaxPatches)
+        throw geom::exchange::ExchangeError(file, "more than " + std::to_string(kModelMaxPatches) +
+                                                      " patches: the program's limit for a model");
+    c.updatePatches();
+    return c;
+}
+
+MappingRecord mappingOf(const geom::exchange::SurfaceCurves& curves, const Model& model, int component) {
+    MappingRecord m;
+    m.model = model.name;
+    m.component = model.components[std::size_t(component)].name;
+    m.curveFile = curves.name;
+    m.reference.component = component;
+    m.parts = 1;  // how the loops grouped into parts is not in the file
+    m.loops = curves.loops.size();
+    m.loopsPerPart = {m.loops};
+    for (const auto& loop : curves.loops) {
+        m.polylines.push_back(loop.points);
+        m.uvPolylines.push_back(loop.uv);
+    }
+    return m;
+}
+
+}  // namespace
+
+geom::exchange::CadModel cadModelOf(const Model& model, const std::vector<MappingRecord>& mappings) {
+    geom::exchange::CadModel cad;
+    cad.name = model.name;
+    cad.unit = "M";
+    for (const Component& c : model.components) {
+        geom::exchange::CadSurface s{c.name, c.surface, c.colour, {}};
+        for (const MappingRecord& m : mappings) {
+            if (m.model != model.name || m.component != c.name) continue;
+            geom::exchange::SurfaceCurves curves{m.curveFile, {}};
+            for (std::size_t l = 0; l < m.polylines.size() && l < m.uvPolylines.size(); ++l)
+                curves.loops.push_back({m.uvPolylines[l], m.polylines[l]});
+            s.curves.push_back(std::move(curves));
+        }
+        cad.surfaces.push_back(std::move(s));
+    }
+    return cad;
+}
+
+ImportedModel importCadModel(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    geom::exchange::CadReadOptions options;
+    options.unit = "M";
+    geom::exchange::CadImport read = geom::exchange::readCadFile(path, options);
+    if (read.model.surfaces.size() > kModelMaxComponents)
+        throw geom::exchange::ExchangeError(
+            file, std::to_string(read.model.surfaces.size()) + " surfaces: more than the " +
+                      std::to_string(kModelMaxComponents) + " components a model may have");
+    ImportedModel result;
+    result.warnings = std::move(read.warnings);
+    std::set<std::string> modelNames, names;
+    Model& model = result.model;
+    model.name = validName(read.model.name, modelNames, "imported");
+    model.description.name = model.name;
+    model.sourceFile = file;
+    std::size_t patches = 0;
+    try {
+        for (std::size_t i = 0; i < read.model.surfaces.size(); ++i) {
+            const auto& s = read.model.surfaces[i];
+            model.components.push_back(componentOf(
+                s, validName(s.name, names, "surface_" + std::to_string(i + 1)), result, patches, file));
+            for (const auto& curves : s.curves) result.mappings.push_back(mappingOf(curves, model, int(i)));
+        }
+    } catch (const geom::GeometryError& e) {
+        throw geom::exchange::ExchangeError(file,
+                                            std::string("a surface the program cannot take: ") + e.what());
+    }
+    return result;
+}
+
+namespace {
+
+std::size_t exportModel(const Model& model, const std::vector<MappingRecord>& mappings,
+                        const std::filesystem::path& path) {
+    const geom::exchange::CadModel cad = cadModelOf(model, mappings);
+    geom::exchange::writeCadFile(cad, path);
+    std::size_t curves = 0;
+    for (const auto& s : cad.surfaces) curves += s.curves.size();
+    return curves;
+}
+
+void checkFileName(const std::filesystem::path& path) {
+    geom::exchange::cadFormatOf(path);
+}
+
+}  // namespace
+
+}  // namespace acsynt
+
+extern "C" __attribute__((visibility("default"))) const acsynt::ExchangeCalls* acsynt_exchange_calls() {
+    static const acsynt::ExchangeCalls calls{&acsynt::importCadModel, &acsynt::exportModel,
+                                             &acsynt::checkFileName};
+    return &calls;
+}
