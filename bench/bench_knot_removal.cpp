@@ -120,8 +120,8 @@ geom::Curve refinedAndJittered(std::mt19937& rng, const geom::Curve& base, std::
     return c;
 }
 
-std::vector<CurveCase> generatedCases() {
-    std::mt19937 rng(2026);
+std::vector<CurveCase> generatedCases(unsigned seed = 2026) {
+    std::mt19937 rng(seed);
     std::vector<CurveCase> cases;
     for (int p = 1; p <= 7; ++p)
         cases.push_back({"degree" + std::to_string(p),
@@ -231,6 +231,49 @@ int main(int argc, char** argv) {
         std::printf("{%s}\n", json.c_str());
         return 0;
     };
+    // --profile CLASS N: geom's reduction of one generated class N times, nothing else (for a
+    // profiler; prints only the control points left).
+    if (argc > 3 && std::string(argv[1]) == "--profile") {
+        for (const CurveCase& c : generatedCases()) {
+            if (c.name != argv[2]) continue;
+            geom::ReductionOptions o;
+            o.tolerance = c.tolerance;
+            o.report = false;
+            geom::CurveReduction r;
+            for (int i = 0, runs = std::stoi(argv[3]); i < runs; ++i) r = geom::reduceCurve(c.curve, o);
+            std::printf("%s: %zu control points\n", c.name.c_str(), r.curve.points.size());
+        }
+        return 0;
+    }
+    // --seeds CLASS N: the class generated from N other seeds, geom and SISL on each (control
+    // points and time), for a change judged on the whole class rather than one member.
+    if (argc > 3 && std::string(argv[1]) == "--seeds") {
+        double worstTime = 0, worstCps = 0, worstError = 0;
+        for (unsigned seed = 1, seeds = static_cast<unsigned>(std::stoi(argv[3])); seed <= seeds; ++seed)
+            for (const CurveCase& c : generatedCases(seed)) {
+                if (c.name != argv[2]) continue;
+                geom::ReductionOptions o;
+                o.tolerance = c.tolerance;
+                o.report = false;
+                geom::CurveReduction r;
+                int status = 0;
+                geom::Curve s;
+                const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
+                                                  [&] { s = sislReduce(c.curve, c.tolerance, status); }, 5);
+                const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
+                const double cps =
+                    double(r.curve.points.size()) / double(std::max<std::size_t>(s.points.size(), 1));
+                std::printf(
+                    "%s seed %u: geom %zu (err/tol %.3f, %.3f ms), sisl %zu (%.3f ms): time %.2f cps %.2f\n",
+                    c.name.c_str(), seed, r.curve.points.size(), gerr, ms, s.points.size(), sms, ms / sms,
+                    cps);
+                worstTime = std::max(worstTime, ms / sms);
+                worstCps = std::max(worstCps, cps);
+                worstError = std::max(worstError, gerr);
+            }
+        std::printf("worst time %.2f, worst cps %.2f, worst err/tol %.3f\n", worstTime, worstCps, worstError);
+        return 0;
+    }
     if (classesOnly) {
         runClasses(argc > 2 ? argv[2] : "");
         return finish();

@@ -1311,6 +1311,7 @@ private:
 // knots come far below the tolerance (the first count overshoots), the comparison is with the
 // tolerance instead: a refined degree-5 curve whose significant knots missed 3000 times the
 // moved fit's error but only 17 times the tolerance kept 16 points by the search, 13 by the loop.
+constexpr double kModelMissed = 1.5;
 template <class LoopCount>
 CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, LoopCount&& loopCount,
                                       bool& refined, bool& settled,
@@ -1380,7 +1381,14 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         ++out.fits;
         moved = fitter.fit(first, {}, true, 0,
                            FreeKnotStops{1.2 * 0.99 * o.tolerance, overshootBelow(o, p, first, lowest - 1)});
-        refined = refined || significantError <= 45.0 * moved.sampleError;
+        // A moved-knot fit that misses by half the tolerance again at the model's count (on smooth
+        // curves it comes within 0.6-1.25 of it there) says the model, made from the density of
+        // the original, does not describe the curve: a densely refined one whose jitter inflates
+        // the density, and whose knots that matter hide from the ranking among their many
+        // neighbours (the significant-knot check above cannot see them). Such a curve goes to the
+        // loop as well, which finds its knots by removing the inserted ones.
+        refined = refined || significantError <= 45.0 * moved.sampleError ||
+                  moved.sampleError > kModelMissed * o.tolerance;
         if (refined) ceiling = std::min(ceiling, loopCount());
         // Measure before searching (see searchIsFutile).
         if (refined && searchIsFutile(moved, p, first, ceiling, o.tolerance)) ceiling = lowest;
