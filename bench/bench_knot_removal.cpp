@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -231,17 +232,29 @@ int main(int argc, char** argv) {
         std::printf("{%s}\n", json.c_str());
         return 0;
     };
-    // --profile CLASS N: geom's reduction of one generated class N times, nothing else (for a
-    // profiler; prints only the control points left).
+    // --profile CLASS N: geom's reduction of one generated class (or "ibeam" / "airfoil" at
+    // 1e-4) N times, nothing else (for a profiler); prints the control points left and a digest
+    // of the result's bits (a change meant to leave results alone must leave it alone).
     if (argc > 3 && std::string(argv[1]) == "--profile") {
-        for (const CurveCase& c : generatedCases()) {
+        std::vector<CurveCase> cases = generatedCases();
+        cases.push_back({"ibeam", geom::iBeamCurve(), 1e-4});
+        cases.push_back({"airfoil", geom::nacaAirfoilCurve(), 1e-4});
+        for (const CurveCase& c : cases) {
             if (c.name != argv[2]) continue;
             geom::ReductionOptions o;
             o.tolerance = c.tolerance;
             o.report = false;
             geom::CurveReduction r;
             for (int i = 0, runs = std::stoi(argv[3]); i < runs; ++i) r = geom::reduceCurve(c.curve, o);
-            std::printf("%s: %zu control points\n", c.name.c_str(), r.curve.points.size());
+            std::uint64_t digest = 1469598103934665603ull;  // FNV-1a over the knots' and points' bytes
+            auto add = [&](const void* data, std::size_t size) {
+                for (std::size_t i = 0; i < size; ++i)
+                    digest = (digest ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+            };
+            add(r.curve.knots.data(), r.curve.knots.size() * sizeof(double));
+            add(r.curve.points.data(), r.curve.points.size() * sizeof(glm::dvec3));
+            std::printf("%s: %zu control points, digest %016llx\n", c.name.c_str(), r.curve.points.size(),
+                        static_cast<unsigned long long>(digest));
         }
         return 0;
     }
