@@ -199,7 +199,17 @@ private:
     }
 
     bool fit(std::size_t nt, std::vector<glm::dvec3>& c) {
-        const std::size_t p = p_, n0 = o_.points.size(), wb = p + 1, nf = nt - 2;  // free: 1 .. nt-2
+        bool ok = false;
+        detail::withFixedDegree(p_, [&](auto fixed) { ok = fitWith<fixed()>(nt, c); });
+        return ok;
+    }
+
+    // The fit with the degree fixed at compile time where P > 0 (the loops over a row's p+1
+    // entries unroll; the same arithmetic in the same order), any degree where P = 0.
+    template <std::size_t P>
+    bool fitWith(std::size_t nt, std::vector<glm::dvec3>& c) {
+        const std::size_t p = P > 0 ? P : p_, n0 = o_.points.size(), wb = p + 1,
+                          nf = nt - 2;  // free: 1 .. nt-2
         const std::vector<double>& t0 = o_.knots;
         band_.assign(nf * wb, 0.0);
         rhs_.assign(nf, glm::dvec3(0.0));
@@ -211,6 +221,7 @@ private:
             if (w == 0.0) continue;
             glm::dvec3 target = o_.points[j];
             bool touchesFree = false;
+#pragma GCC unroll 8
             for (std::size_t k = 0; k <= p; ++k) {
                 if (row[k] == 0.0) continue;
                 if (c0 + k == 0 || c0 + k == nt - 1)
@@ -219,6 +230,7 @@ private:
                     touchesFree = true;
             }
             if (!touchesFree) continue;
+#pragma GCC unroll 8
             for (std::size_t a = 0; a <= p; ++a) {
                 const std::size_t ca = c0 + a;
                 if (ca == 0 || ca >= nt - 1 || row[a] == 0.0) continue;
@@ -235,11 +247,21 @@ private:
     }
 
     bool within(const std::vector<glm::dvec3>& c, double tolerance) const {
+        bool ok = false;
+        detail::withFixedDegree(p_, [&](auto fixed) { ok = withinWith<fixed()>(c, tolerance); });
+        return ok;
+    }
+
+    template <std::size_t P>
+    bool withinWith(const std::vector<glm::dvec3>& c, double tolerance) const {
+        const std::size_t p = P > 0 ? P : p_;
         const double tol2 = tolerance * tolerance;
         for (std::size_t j = 0; j < o_.points.size(); ++j) {
-            const double* row = &rows_[j * (p_ + 1)];
+            const double* row = &rows_[j * (p + 1)];
+            const glm::dvec3* cj = &c[first_[j]];
             glm::dvec3 v(0.0);
-            for (std::size_t a = 0; a <= p_; ++a) v += row[a] * c[first_[j] + a];
+#pragma GCC unroll 8
+            for (std::size_t a = 0; a <= p; ++a) v += row[a] * cj[a];
             const glm::dvec3 d = v - o_.points[j];
             if (glm::dot(d, d) > tol2) return false;
         }
