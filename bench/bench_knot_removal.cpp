@@ -16,6 +16,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -120,8 +121,8 @@ geom::Curve refinedAndJittered(std::mt19937& rng, const geom::Curve& base, std::
     return c;
 }
 
-std::vector<CurveCase> generatedCases() {
-    std::mt19937 rng(2026);
+std::vector<CurveCase> generatedCases(unsigned seed = 2026) {
+    std::mt19937 rng(seed);
     std::vector<CurveCase> cases;
     for (int p = 1; p <= 7; ++p)
         cases.push_back({"degree" + std::to_string(p),
@@ -231,6 +232,61 @@ int main(int argc, char** argv) {
         std::printf("{%s}\n", json.c_str());
         return 0;
     };
+    // --profile CLASS N: geom's reduction of one generated class (or "ibeam" / "airfoil" at
+    // 1e-4) N times, nothing else (for a profiler); prints the control points left and a digest
+    // of the result's bits (a change meant to leave results alone must leave it alone).
+    if (argc > 3 && std::string(argv[1]) == "--profile") {
+        std::vector<CurveCase> cases = generatedCases();
+        cases.push_back({"ibeam", geom::iBeamCurve(), 1e-4});
+        cases.push_back({"airfoil", geom::nacaAirfoilCurve(), 1e-4});
+        for (const CurveCase& c : cases) {
+            if (c.name != argv[2]) continue;
+            geom::ReductionOptions o;
+            o.tolerance = c.tolerance;
+            o.report = false;
+            geom::CurveReduction r;
+            for (int i = 0, runs = std::stoi(argv[3]); i < runs; ++i) r = geom::reduceCurve(c.curve, o);
+            std::uint64_t digest = 1469598103934665603ull;  // FNV-1a over the knots' and points' bytes
+            auto add = [&](const void* data, std::size_t size) {
+                for (std::size_t i = 0; i < size; ++i)
+                    digest = (digest ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+            };
+            add(r.curve.knots.data(), r.curve.knots.size() * sizeof(double));
+            add(r.curve.points.data(), r.curve.points.size() * sizeof(glm::dvec3));
+            std::printf("%s: %zu control points, digest %016llx\n", c.name.c_str(), r.curve.points.size(),
+                        static_cast<unsigned long long>(digest));
+        }
+        return 0;
+    }
+    // --seeds CLASS N: the class generated from N other seeds, geom and SISL on each (control
+    // points and time), for a change judged on the whole class rather than one member.
+    if (argc > 3 && std::string(argv[1]) == "--seeds") {
+        double worstTime = 0, worstCps = 0, worstError = 0;
+        for (unsigned seed = 1, seeds = static_cast<unsigned>(std::stoi(argv[3])); seed <= seeds; ++seed)
+            for (const CurveCase& c : generatedCases(seed)) {
+                if (c.name != argv[2]) continue;
+                geom::ReductionOptions o;
+                o.tolerance = c.tolerance;
+                o.report = false;
+                geom::CurveReduction r;
+                int status = 0;
+                geom::Curve s;
+                const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
+                                                  [&] { s = sislReduce(c.curve, c.tolerance, status); }, 5);
+                const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
+                const double cps =
+                    double(r.curve.points.size()) / double(std::max<std::size_t>(s.points.size(), 1));
+                std::printf(
+                    "%s seed %u: geom %zu (err/tol %.3f, %.3f ms), sisl %zu (%.3f ms): time %.2f cps %.2f\n",
+                    c.name.c_str(), seed, r.curve.points.size(), gerr, ms, s.points.size(), sms, ms / sms,
+                    cps);
+                worstTime = std::max(worstTime, ms / sms);
+                worstCps = std::max(worstCps, cps);
+                worstError = std::max(worstError, gerr);
+            }
+        std::printf("worst time %.2f, worst cps %.2f, worst err/tol %.3f\n", worstTime, worstCps, worstError);
+        return 0;
+    }
     if (classesOnly) {
         runClasses(argc > 2 ? argv[2] : "");
         return finish();

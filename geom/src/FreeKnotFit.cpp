@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace geom {
 
@@ -19,6 +20,10 @@ namespace {
 // About the factor by which Lawson's rounds lower the error of a fit's first round on its final
 // knots (FreeKnotStops; 0.77-0.93 on the reference curves).
 constexpr double lawsonGain = 0.8;
+
+// A fit this many times above its caller's giveUpAbove after three knot-moving rounds gives up
+// there (FitRounds::keepGoing).
+constexpr double kHopeless = 50.0;
 
 // The p+1 non-zero B-splines at u in the span whose knots start at t[0] = t_span (Cox-de Boor,
 // with the reciprocals of the knot differences it divides by made once per span: inverse holds
@@ -41,9 +46,9 @@ inline void spanBasis(const double* t, const double* inverse, double u, double* 
     }
 }
 
-// The rounds of one fit (FreeKnotFitter::fit): P > 0 is the degree fixed at compile time, so that
-// the loops over the p+1 basis functions unroll; P = 0 takes any degree (degree).
-struct FitRounds {
+// What one fit (FreeKnotFitter::fit) starts from: the samples, the start knots and held points,
+// the rounds and the stops.
+struct FitInputs {
     const std::vector<double>& params;
     const std::vector<glm::dvec3>& targets;
     const std::vector<double>& spacing;
@@ -57,24 +62,19 @@ struct FitRounds {
     double settledMove, lawsonSettled;
     double giveUpAbove, stopBelow, passAt;
     std::vector<char> pinned;  // by free knot: stays where it starts (empty: none)
+};
 
+// The rounds of one fit: P > 0 is the degree fixed at compile time, so that the loops over the
+// p+1 basis functions unroll; P = 0 takes any degree (degree).
+class FitRounds : public FitInputs {
+public:
+    explicit FitRounds(FitInputs inputs) : FitInputs(std::move(inputs)) {}
+
+    /// Runs the rounds; the best round's fit goes to out.
     template <std::size_t P>
     void run(FreeKnotFit& out) {
-        const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree), fixed = k + 1;
-        const std::size_t m = params.size(), free = count - p - 1 - 2 * k, gaps = free + 1;
-        std::vector<double> s = params, lawson(m, 1.0), error(m, 0.0), basisStore(P > 0 ? 0 : p + 1);
-        double* basis = basisStore.data();
-        const std::size_t nf = count - 2 * fixed, wb = p + 1;
-        std::vector<double> band, inverse, gapError(gaps), h(gaps), before;
-        std::vector<glm::dvec3> rhs, forms(P > 0 ? count * (P + 1) : 0);
-        std::vector<double> reciprocal(P > 0 ? count : 0);  // of each span's length
+        prepare<P>();
         detail::SplineSampler fitted(degree, knots, points.data(), count, true);
-        // Every sample's span and basis values, kept from a round that moved neither the knots
-        // nor the parameters for the next (P > 0).
-        std::vector<std::size_t> spanOf(P > 0 ? m : 0);
-        std::vector<double> basisOf(P > 0 ? m * (P + 1) : 0);
-        bool basisKept = false;
-        double previousWorst = std::numeric_limits<double>::infinity();
         for (int iteration = 0; iteration < iterations; ++iteration) {
             // Lawson's rounds on fixed knots barely move the parameters (the knot-moving rounds
             // have corrected them): only the first (after the last knot move; it is also the one
@@ -82,266 +82,369 @@ struct FitRounds {
             // samples' basis values unchanged, reuse them (the same counts on the reference curves).
             const bool lawsonRound = moveKnots && iteration >= movingRounds;
             const bool stepParams = !lawsonRound || iteration == movingRounds || iteration + 2 >= iterations;
-            // Least squares on the samples at their current parameters, end points held.
-            if (nf > 0) {
-                // The normal equations of every column, the held ones too (each sample adds to p+1
-                // neighbouring rows, no end cases); the held columns' terms then move to the right.
-                band.assign(count * wb, 0.0);
-                rhs.assign(count, glm::dvec3(0.0));
-                // Cox-de Boor's knot differences do not depend on the parameter: their reciprocals
-                // are made once per span, and the (ascending) parameters walk the spans forward.
-                const std::size_t triangle = p * (p + 1) / 2;
-                inverse.assign(count * triangle, 0.0);
-                for (std::size_t span = p; span < count && !(P > 0 && basisKept); ++span)
-                    for (std::size_t j = 1, at = span * triangle; j <= p; ++j)
-                        for (std::size_t r = 0; r < j; ++r, ++at) {
-                            const double d = knots[span + r + 1] - knots[span + 1 + r - j];
-                            inverse[at] = d > 0.0 ? 1.0 / d : 0.0;
-                        }
-                std::size_t span = p;
-                for (std::size_t i = 0; i < m; ++i) {
-                    const double w = spacing[i] * lawson[i];
-                    if (P > 0 && basisKept) {
-                        span = spanOf[i];
-                    } else {
-                        while (span + 1 < count && !(s[i] < knots[span + 1])) ++span;
-                        while (span > p && s[i] < knots[span]) --span;
-                        if constexpr (P > 0) spanOf[i] = span;
-                    }
-                    if (w == 0.0) continue;
-                    const std::size_t c0 = span - p;
-                    double* row = band.data() + c0 * wb;
-                    glm::dvec3* right = rhs.data() + c0;
-                    if constexpr (P > 0) {
-                        // In locals, which the band's stores cannot alias: the loops over the p+1
-                        // basis functions then stay in registers (P fixed at compile time; -O2
-                        // does not unroll them by itself).
-                        std::array<double, P + 1> n;
-                        double* kept = &basisOf[i * (P + 1)];
-                        if (basisKept) {
-#pragma GCC unroll 6
-                            for (std::size_t x = 0; x <= P; ++x) n[x] = kept[x];
-                        } else {
-                            spanBasis<P>(knots.data() + span, inverse.data() + span * triangle, s[i],
-                                         n.data());
-#pragma GCC unroll 6
-                            for (std::size_t x = 0; x <= P; ++x) kept[x] = n[x];
-                        }
-                        const glm::dvec3 q = targets[i];
-#pragma GCC unroll 6
-                        for (std::size_t x = 0; x <= P; ++x, row += wb) {
-                            const double wx = w * n[x];
-                            right[x] += wx * q;
-#pragma GCC unroll 6
-                            for (std::size_t y = x; y <= P; ++y) row[y - x] += wx * n[y];
-                        }
-                    } else {
-                        spanBasis<0>(knots.data() + span, inverse.data() + span * triangle, s[i], basis, p);
-                        for (std::size_t x = 0; x <= p; ++x, row += wb) {
-                            const double wx = w * basis[x];
-                            right[x] += wx * targets[i];
-                            for (std::size_t y = x; y <= p; ++y) row[y - x] += wx * basis[y];
-                        }
-                    }
-                }
-                for (std::size_t r = fixed; r < count - fixed; ++r)
-                    for (std::size_t c = 0; c < fixed; ++c) {
-                        if (r <= c + p) rhs[r] -= band[c * wb + (r - c)] * points[c];
-                        const std::size_t e = count - 1 - c;  // the held column at the far end
-                        if (e <= r + p) rhs[r] -= band[r * wb + (e - r)] * points[e];
-                    }
-                band.erase(band.begin(), band.begin() + static_cast<std::ptrdiff_t>(fixed * wb));
-                rhs.erase(rhs.begin(), rhs.begin() + static_cast<std::ptrdiff_t>(fixed));
-                if (!detail::solveBanded(band, nf, p, rhs)) break;
-                for (std::size_t i = 0; i < nf; ++i) points[fixed + i] = rhs[i];
+            if (nf_ > 0) {
+                assemble<P>();
+                if (!solveFree()) break;
             }
-
-            // Parameter correction: one Newton step per sample towards its foot point on the fit
-            // (the rounds repeat it), kept in order, so that the parameters stay a monotone map of
-            // the samples'. Then the sample error at the new parameter.
             double worst = 0.0;
-            if constexpr (P > 0) {
-                // Every span's power form, and the ascending parameters walk the spans.
-                for (std::size_t span = p; span < count; ++span)
-                    if (knots[span + 1] > knots[span]) {
-                        detail::spanPowerForm<P>(span, P, knots.data(), points.data(),
-                                                 &forms[span * (P + 1)]);
-                        reciprocal[span] = 1.0 / (knots[span + 1] - knots[span]);
-                    }
-                std::size_t span = p;
-                auto locate = [&](double u) {
-                    // Most samples stay in their span (then the walks below would not move).
-                    if (!(knots[span] <= u && u < knots[span + 1])) {
-                        while (span + 1 < count && !(u < knots[span + 1])) ++span;
-                        while (span > p && (u < knots[span] || !(knots[span + 1] > knots[span]))) --span;
-                    }
-                    return (u - knots[span]) * reciprocal[span];
-                };
-                for (std::size_t i = 0; i < m && !stepParams; ++i) {
-                    const double x = locate(s[i]);
-                    const glm::dvec3* form = &forms[span * (P + 1)];
-                    glm::dvec3 c = form[P];
-#pragma GCC unroll 6
-                    for (std::size_t e = P; e > 0; --e) c = c * x + form[e - 1];
-                    error[i] = glm::length(c - targets[i]);
-                    worst = std::max(worst, error[i]);
-                }
-                for (std::size_t i = 0; i < m && stepParams; ++i) {
-                    // The span's polynomial in its local parameter, re-expanded about the sample's
-                    // (Taylor coefficients taylor[e] = C^(e) / e!, by repeated synthetic division):
-                    // the Newton step needs the first three, and the point after the step, while
-                    // it stays in the span, is their polynomial in the step (no second locate).
-                    const double x = locate(s[i]);
-                    glm::dvec3 taylor[P + 1];
-                    const glm::dvec3* form = &forms[span * (P + 1)];
-#pragma GCC unroll 6
-                    for (std::size_t e = 0; e <= P; ++e) taylor[e] = form[e];
-#pragma GCC unroll 6
-                    for (std::size_t level = 0; level < P; ++level)
-#pragma GCC unroll 6
-                        for (std::size_t e = P - 1; e + 1 > level; --e) taylor[e] += x * taylor[e + 1];
-                    double step = 0.0;  // in the local parameter
-                    if (i > 0 && i + 1 < m) {
-                        const glm::dvec3 r = taylor[0] - targets[i];
-                        const double speed = glm::dot(taylor[1], taylor[1]);
-                        double hess = speed + 2.0 * glm::dot(r, taylor[2 <= P ? 2 : P]);
-                        if (hess <= 0.1 * speed) hess = speed;
-                        if (hess > 0.0) {
-                            const double length = knots[span + 1] - knots[span];
-                            const double u = std::clamp(s[i] - length * glm::dot(r, taylor[1]) / hess,
-                                                        std::max(a, s[i - 1]), std::min(b, s[i + 1]));
-                            step = (u - s[i]) * reciprocal[span];
-                            s[i] = u;
-                        }
-                    }
-                    glm::dvec3 c;
-                    if (x + step >= 0.0 && x + step <= 1.0) {
-                        c = taylor[P];
-#pragma GCC unroll 6
-                        for (std::size_t e = P; e > 0; --e) c = c * step + taylor[e - 1];
-                    } else {
-                        const double moved = locate(s[i]);
-                        form = &forms[span * (P + 1)];
-                        c = form[P];
-#pragma GCC unroll 6
-                        for (std::size_t e = P; e > 0; --e) c = c * moved + form[e - 1];
-                    }
-                    error[i] = glm::length(c - targets[i]);
-                    worst = std::max(worst, error[i]);
-                }
-            } else {
-                fitted.restart();
-                for (std::size_t i = 0; i < m; ++i) {
-                    glm::dvec3 c, d1, d2;
-                    if (stepParams && i > 0 && i + 1 < m) {
-                        fitted.derivatives(s[i], c, d1, d2);
-                        const glm::dvec3 r = c - targets[i];
-                        double hess = glm::dot(d1, d1) + glm::dot(r, d2);
-                        if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
-                        if (hess > 0.0)
-                            s[i] = std::clamp(s[i] - glm::dot(r, d1) / hess, std::max(a, s[i - 1]),
-                                              std::min(b, s[i + 1]));
-                    }
-                    error[i] = glm::length(fitted.value(s[i]) - targets[i]);
-                    worst = std::max(worst, error[i]);
-                }
-            }
-            basisKept = P > 0 && nf > 0 && !stepParams && lawsonRound;
-            out.rounds = iteration + 1;
-            if (worst < out.sampleError) {
-                out.sampleError = worst;
-                out.curve.degree = degree;
-                out.curve.knots = knots;
-                out.curve.points = points;
-                out.map.to = s;
-            }
-            if (!(worst > 0.0) || iteration + 1 == iterations || worst <= passAt) break;
-            // Lawson's rounds end where one no longer pays (it lowered the error by less than
-            // lawsonSettled): the rest, the last two's parameter correction included, would gain
-            // as little.
-            if (lawsonRound) {
-                if (lawsonSettled > 0.0 && iteration > movingRounds && iteration + 2 < iterations &&
-                    worst > (1.0 - lawsonSettled) * previousWorst)
-                    break;
-                previousWorst = worst;
-            }
-            // The first round on the final knots: Lawson's rounds will lower its error by about a
-            // fifth (lawsonGain). A fit expected to come below stopBelow (a smaller count would do) stops
-            // there too; Lawson's gain is that of all its rounds, so only the first is judged by it.
-            if (moveKnots && iteration >= movingRounds) {
-                const double expected = std::min(out.sampleError, lawsonGain * worst);
-                const bool first = iteration == movingRounds;
-                if (expected > giveUpAbove || (first && expected < stopBelow)) {
-                    (expected > giveUpAbove ? out.gaveUp : out.overshot) = true;
-                    out.expectedError = expected;
-                    break;
-                }
-            }
-
+            if constexpr (P > 0)
+                worst = correctFixed<P>(stepParams);
+            else
+                worst = correctAny(fitted, stepParams);
+            basisKept_ = P > 0 && nf_ > 0 && !stepParams && lawsonRound;
+            if (!keepGoing(out, iteration, lawsonRound, worst)) break;
             // The first half moves the knots on plain least squares (Lawson weights made for other
             // knots would mislead it); the second half keeps the knots and runs Lawson's iteration:
             // weights grow where the error is large, towards the equioscillating best max-norm fit.
-            if (moveKnots && iteration < movingRounds) {
-                std::fill(lawson.begin(), lawson.end(), 1.0);
-            } else {
-                double sum = 0.0;
-                for (std::size_t i = 0; i < m; ++i) sum += lawson[i] * error[i];
-                for (std::size_t i = 0; i < m; ++i)
-                    lawson[i] = std::max(lawson[i] * error[i] * double(m) / sum, 1e-6);
+            if (!(moveKnots && iteration < movingRounds)) {
+                reweight();
                 continue;
             }
+            std::fill(lawson_.begin(), lawson_.end(), 1.0);
+            gapErrors();
+            if (free_ == 0) continue;
+            spreadKnots(worst);
+            settle(iteration);
+        }
+    }
 
-            // Equidistribution: each gap between free knots scaled by its error^(-1/(p+1)); gap g
-            // lies between free knots g and g+1 (the ascending parameters walk them).
-            std::fill(gapError.begin(), gapError.end(), 0.0);
-            std::size_t g = 0;
-            for (std::size_t i = 0; i < m; ++i) {
-                if (s[i] < lo || s[i] > hi) continue;
-                while (g < free && knots[p + k + 1 + g] <= s[i]) ++g;
-                const std::size_t gap = std::min(g, gaps - 1);
-                gapError[gap] = std::max(gapError[gap], error[i]);
-            }
-            if (free == 0) continue;
-            for (std::size_t gap = 0; gap < gaps; ++gap) {
-                const double width = knots[p + k + gap + 1] - knots[p + k + gap];
-                const double e = std::max(gapError[gap], 1e-3 * worst);
-                // Half the full step, at most 1.5 times wider: the full step overshoots and oscillates.
-                h[gap] = width * std::clamp(std::pow(worst / e, 0.5 / double(p + 1)), 1.0, 1.5);
-            }
-            // Each run of knots between two that stay (or the domain's ends) spreads over its
-            // interval by its own gaps' steps.
-            before.assign(knots.begin() + static_cast<std::ptrdiff_t>(p + k),
-                          knots.begin() + static_cast<std::ptrdiff_t>(p + k + free + 2));
-            auto knotAt = [&](std::size_t i) { return i == 0 ? lo : i > free ? hi : knots[p + k + i]; };
-            for (std::size_t from = 0, to = 1; to <= free + 1; ++to) {
-                if (to <= free && (pinned.empty() || !pinned[to - 1])) continue;
-                // Free knots from + 1 .. to - 1 (1-based, lo and hi at 0 and free + 1), gaps from .. to - 1.
-                const double start = knotAt(from), length = knotAt(to) - start;
-                double sum = 0.0;
-                for (std::size_t gap = from; gap < to; ++gap) sum += h[gap];
-                const double minimum = 0.05 * length / double(to - from);
-                double at = start;
-                for (std::size_t gap = from; gap + 1 < to; ++gap) {
-                    at += std::max(h[gap] * length / sum, minimum);
-                    knots[p + k + 1 + gap] = std::min(at, start + length - minimum * double(to - 1 - gap));
+private:
+    /// The sizes and the working arrays of the rounds.
+    template <std::size_t P>
+    void prepare() {
+        p_ = P > 0 ? P : static_cast<std::size_t>(degree);
+        fixed_ = k + 1;
+        m_ = params.size();
+        free_ = count - p_ - 1 - 2 * k;
+        gaps_ = free_ + 1;
+        nf_ = count - 2 * fixed_;
+        wb_ = p_ + 1;
+        triangle_ = p_ * (p_ + 1) / 2;
+        s_ = params;
+        lawson_.assign(m_, 1.0);
+        error_.assign(m_, 0.0);
+        basis_.resize(P > 0 ? 0 : p_ + 1);
+        gapError_.resize(gaps_);
+        h_.resize(gaps_);
+        forms_.resize(P > 0 ? count * (P + 1) : 0);
+        reciprocal_.resize(P > 0 ? count : 0);
+        spanOf_.resize(P > 0 ? m_ : 0);
+        basisOf_.resize(P > 0 ? m_ * (P + 1) : 0);
+    }
+
+    /// Cox-de Boor's knot differences do not depend on the parameter: their reciprocals are made
+    /// once per span, level by level.
+    void makeInverses() {
+        inverse_.assign(count * triangle_, 0.0);
+        for (std::size_t span = p_; span < count; ++span)
+            for (std::size_t j = 1, at = span * triangle_; j <= p_; ++j)
+                for (std::size_t r = 0; r < j; ++r, ++at) {
+                    const double d = knots[span + r + 1] - knots[span + 1 + r - j];
+                    inverse_[at] = d > 0.0 ? 1.0 / d : 0.0;
                 }
-                from = to;
+    }
+
+    /// The normal equations of least squares on the samples at their current parameters, for
+    /// every column, the held ones too (each sample adds to p+1 neighbouring rows, no end cases).
+    /// The (ascending) parameters walk the spans forward.
+    template <std::size_t P>
+    void assemble() {
+        band_.assign(count * wb_, 0.0);
+        rhs_.assign(count, glm::dvec3(0.0));
+        const bool kept = P > 0 && basisKept_;
+        if (!kept) makeInverses();
+        std::size_t span = p_;
+        for (std::size_t i = 0; i < m_; ++i) {
+            const double w = spacing[i] * lawson_[i];
+            if (kept) {
+                span = spanOf_[i];
+            } else {
+                while (span + 1 < count && !(s_[i] < knots[span + 1])) ++span;
+                while (span > p_ && s_[i] < knots[span]) --span;
+                if constexpr (P > 0) spanOf_[i] = span;
             }
-            // Knots that have settled (on average a round moves them by less than settledMove of
-            // their nearer neighbour's distance) end the knot-moving rounds; Lawson's rounds follow.
-            double moved = 0.0;
-            std::size_t moving = 0;
-            for (std::size_t i = 1; i <= free; ++i) {
-                const double near = std::min(before[i] - before[i - 1], before[i + 1] - before[i]);
-                if ((pinned.empty() || !pinned[i - 1]) && near > 0.0)
-                    moved += std::abs(knots[p + k + i] - before[i]) / near, ++moving;
+            if (w != 0.0) addSample<P>(i, span, w);
+        }
+    }
+
+    /// Sample i's terms of the normal equations, with weight w, in span.
+    template <std::size_t P>
+    void addSample(std::size_t i, std::size_t span, double w) {
+        double* row = band_.data() + (span - p_) * wb_;
+        glm::dvec3* right = rhs_.data() + (span - p_);
+        if constexpr (P > 0) {
+            // In locals, which the band's stores cannot alias: the loops over the p+1 basis
+            // functions then stay in registers (P fixed at compile time; -O2 does not unroll them
+            // by itself). A round that reuses the basis values reads them back.
+            std::array<double, P + 1> n;
+            double* kept = &basisOf_[i * (P + 1)];
+            if (basisKept_) {
+#pragma GCC unroll 6
+                for (std::size_t x = 0; x <= P; ++x) n[x] = kept[x];
+            } else {
+                spanBasis<P>(knots.data() + span, inverse_.data() + span * triangle_, s_[i], n.data());
+#pragma GCC unroll 6
+                for (std::size_t x = 0; x <= P; ++x) kept[x] = n[x];
             }
-            if (moved < settledMove * double(moving) && iteration + 1 < movingRounds) {
-                iterations -= movingRounds - (iteration + 1);
-                movingRounds = iteration + 1;
+            const glm::dvec3 q = targets[i];
+#pragma GCC unroll 6
+            for (std::size_t x = 0; x <= P; ++x, row += wb_) {
+                const double wx = w * n[x];
+                right[x] += wx * q;
+#pragma GCC unroll 6
+                for (std::size_t y = x; y <= P; ++y) row[y - x] += wx * n[y];
+            }
+        } else {
+            double* basis = basis_.data();
+            spanBasis<0>(knots.data() + span, inverse_.data() + span * triangle_, s_[i], basis, p_);
+            for (std::size_t x = 0; x <= p_; ++x, row += wb_) {
+                const double wx = w * basis[x];
+                right[x] += wx * targets[i];
+                for (std::size_t y = x; y <= p_; ++y) row[y - x] += wx * basis[y];
             }
         }
     }
+
+    /// Moves the held columns' terms to the right and solves for the free coefficients; false
+    /// where the system is singular.
+    bool solveFree() {
+        const std::size_t fixed = fixed_, wb = wb_, p = p_;
+        for (std::size_t r = fixed; r < count - fixed; ++r)
+            for (std::size_t c = 0; c < fixed; ++c) {
+                if (r <= c + p) rhs_[r] -= band_[c * wb + (r - c)] * points[c];
+                const std::size_t e = count - 1 - c;  // the held column at the far end
+                if (e <= r + p) rhs_[r] -= band_[r * wb + (e - r)] * points[e];
+            }
+        band_.erase(band_.begin(), band_.begin() + static_cast<std::ptrdiff_t>(fixed * wb));
+        rhs_.erase(rhs_.begin(), rhs_.begin() + static_cast<std::ptrdiff_t>(fixed));
+        if (!detail::solveBanded(band_, nf_, p, rhs_)) return false;
+        for (std::size_t i = 0; i < nf_; ++i) points[fixed + i] = rhs_[i];
+        return true;
+    }
+
+    /// The local parameter of u in its span (span: the last sample's, walked to u's); most
+    /// samples stay in their span (then the walks would not move).
+    double locate(double u, std::size_t& span) const {
+        if (!(knots[span] <= u && u < knots[span + 1])) {
+            while (span + 1 < count && !(u < knots[span + 1])) ++span;
+            while (span > p_ && (u < knots[span] || !(knots[span + 1] > knots[span]))) --span;
+        }
+        return (u - knots[span]) * reciprocal_[span];
+    }
+
+    /// Parameter correction (P > 0): one Newton step per sample towards its foot point on the fit
+    /// where stepParams (the rounds repeat it), kept in order, so that the parameters stay a
+    /// monotone map of the samples'; then each sample's error at its parameter. Returns the
+    /// largest. Every span's power form is made first, and the ascending parameters walk them.
+    template <std::size_t P>
+    double correctFixed(bool stepParams) {
+        for (std::size_t span = p_; span < count; ++span)
+            if (knots[span + 1] > knots[span]) {
+                detail::spanPowerForm<P>(span, P, knots.data(), points.data(), &forms_[span * (P + 1)]);
+                reciprocal_[span] = 1.0 / (knots[span + 1] - knots[span]);
+            }
+        double worst = 0.0;
+        std::size_t span = p_;
+        for (std::size_t i = 0; i < m_ && !stepParams; ++i) {
+            const double x = locate(s_[i], span);
+            const glm::dvec3* form = &forms_[span * (P + 1)];
+            glm::dvec3 c = form[P];
+#pragma GCC unroll 6
+            for (std::size_t e = P; e > 0; --e) c = c * x + form[e - 1];
+            error_[i] = glm::length(c - targets[i]);
+            worst = std::max(worst, error_[i]);
+        }
+        for (std::size_t i = 0; i < m_ && stepParams; ++i) {
+            error_[i] = stepSample<P>(i, span);
+            worst = std::max(worst, error_[i]);
+        }
+        return worst;
+    }
+
+    /// One sample's Newton step (not at the ends) and its error after it. The span's polynomial
+    /// in its local parameter is re-expanded about the sample's (Taylor coefficients taylor[e] =
+    /// C^(e) / e!, by repeated synthetic division): the step needs the first three, and the
+    /// point after the step, while it stays in the span, is their polynomial in the step.
+    template <std::size_t P>
+    double stepSample(std::size_t i, std::size_t& span) {
+        const double x = locate(s_[i], span);
+        glm::dvec3 taylor[P + 1];
+        const glm::dvec3* form = &forms_[span * (P + 1)];
+#pragma GCC unroll 6
+        for (std::size_t e = 0; e <= P; ++e) taylor[e] = form[e];
+#pragma GCC unroll 6
+        for (std::size_t level = 0; level < P; ++level)
+#pragma GCC unroll 6
+            for (std::size_t e = P - 1; e + 1 > level; --e) taylor[e] += x * taylor[e + 1];
+        double step = 0.0;  // in the local parameter
+        if (i > 0 && i + 1 < m_) {
+            const glm::dvec3 r = taylor[0] - targets[i];
+            const double speed = glm::dot(taylor[1], taylor[1]);
+            double hess = speed + 2.0 * glm::dot(r, taylor[2 <= P ? 2 : P]);
+            if (hess <= 0.1 * speed) hess = speed;
+            if (hess > 0.0) {
+                const double length = knots[span + 1] - knots[span];
+                const double u = std::clamp(s_[i] - length * glm::dot(r, taylor[1]) / hess,
+                                            std::max(a, s_[i - 1]), std::min(b, s_[i + 1]));
+                step = (u - s_[i]) * reciprocal_[span];
+                s_[i] = u;
+            }
+        }
+        glm::dvec3 c;
+        if (x + step >= 0.0 && x + step <= 1.0) {
+            c = taylor[P];
+#pragma GCC unroll 6
+            for (std::size_t e = P; e > 0; --e) c = c * step + taylor[e - 1];
+        } else {
+            const double moved = locate(s_[i], span);
+            form = &forms_[span * (P + 1)];
+            c = form[P];
+#pragma GCC unroll 6
+            for (std::size_t e = P; e > 0; --e) c = c * moved + form[e - 1];
+        }
+        return glm::length(c - targets[i]);
+    }
+
+    /// correctFixed for any degree, by the sampler's derivatives.
+    double correctAny(detail::SplineSampler& fitted, bool stepParams) {
+        double worst = 0.0;
+        fitted.restart();
+        for (std::size_t i = 0; i < m_; ++i) {
+            glm::dvec3 c, d1, d2;
+            if (stepParams && i > 0 && i + 1 < m_) {
+                fitted.derivatives(s_[i], c, d1, d2);
+                const glm::dvec3 r = c - targets[i];
+                double hess = glm::dot(d1, d1) + glm::dot(r, d2);
+                if (hess <= 0.1 * glm::dot(d1, d1)) hess = glm::dot(d1, d1);
+                if (hess > 0.0)
+                    s_[i] = std::clamp(s_[i] - glm::dot(r, d1) / hess, std::max(a, s_[i - 1]),
+                                       std::min(b, s_[i + 1]));
+            }
+            error_[i] = glm::length(fitted.value(s_[i]) - targets[i]);
+            worst = std::max(worst, error_[i]);
+        }
+        return worst;
+    }
+
+    /// Keeps the round's fit where it is the best so far; false where the rounds end here.
+    bool keepGoing(FreeKnotFit& out, int iteration, bool lawsonRound, double worst) {
+        out.rounds = iteration + 1;
+        if (worst < out.sampleError) {
+            out.sampleError = worst;
+            out.curve.degree = degree;
+            out.curve.knots = knots;
+            out.curve.points = points;
+            out.map.to = s_;
+        }
+        if (!(worst > 0.0) || iteration + 1 == iterations || worst <= passAt) return false;
+        // Measure before searching on: a fit still kHopeless times above giveUpAbove after its
+        // third knot-moving round will not come down to it (over the geom tests' fits and the
+        // generated classes, the rounds after the third lowered the error by at most 12 times).
+        if (moveKnots && iteration >= 2 && iteration < movingRounds && worst > kHopeless * giveUpAbove) {
+            out.gaveUp = true;
+            out.expectedError = lawsonGain * out.sampleError;
+            return false;
+        }
+        // Lawson's rounds end where one no longer pays (it lowered the error by less than
+        // lawsonSettled): the rest, the last two's parameter correction included, would gain
+        // as little.
+        if (lawsonRound) {
+            if (lawsonSettled > 0.0 && iteration > movingRounds && iteration + 2 < iterations &&
+                worst > (1.0 - lawsonSettled) * previousWorst_)
+                return false;
+            previousWorst_ = worst;
+        }
+        // The first round on the final knots: Lawson's rounds will lower its error by about a
+        // fifth (lawsonGain). A fit expected to come below stopBelow (a smaller count would do) stops
+        // there too; Lawson's gain is that of all its rounds, so only the first is judged by it.
+        if (moveKnots && iteration >= movingRounds) {
+            const double expected = std::min(out.sampleError, lawsonGain * worst);
+            const bool first = iteration == movingRounds;
+            if (expected > giveUpAbove || (first && expected < stopBelow)) {
+                (expected > giveUpAbove ? out.gaveUp : out.overshot) = true;
+                out.expectedError = expected;
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /// Lawson's reweighting: each sample's weight grows with its error.
+    void reweight() {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < m_; ++i) sum += lawson_[i] * error_[i];
+        for (std::size_t i = 0; i < m_; ++i)
+            lawson_[i] = std::max(lawson_[i] * error_[i] * double(m_) / sum, 1e-6);
+    }
+
+    /// The largest sample error of each gap between free knots (gap g lies between free knots g
+    /// and g+1; the ascending parameters walk them).
+    void gapErrors() {
+        std::fill(gapError_.begin(), gapError_.end(), 0.0);
+        std::size_t g = 0;
+        for (std::size_t i = 0; i < m_; ++i) {
+            if (s_[i] < lo || s_[i] > hi) continue;
+            while (g < free_ && knots[p_ + k + 1 + g] <= s_[i]) ++g;
+            const std::size_t gap = std::min(g, gaps_ - 1);
+            gapError_[gap] = std::max(gapError_[gap], error_[i]);
+        }
+    }
+
+    /// Equidistribution: each gap scaled by its error^(-1/(p+1)); each run of knots between two
+    /// that stay (or the domain's ends) spreads over its interval by its own gaps' steps.
+    void spreadKnots(double worst) {
+        const std::size_t p = p_, free = free_;
+        for (std::size_t gap = 0; gap < gaps_; ++gap) {
+            const double width = knots[p + k + gap + 1] - knots[p + k + gap];
+            const double e = std::max(gapError_[gap], 1e-3 * worst);
+            // Half the full step, at most 1.5 times wider: the full step overshoots and oscillates.
+            h_[gap] = width * std::clamp(std::pow(worst / e, 0.5 / double(p + 1)), 1.0, 1.5);
+        }
+        before_.assign(knots.begin() + static_cast<std::ptrdiff_t>(p + k),
+                       knots.begin() + static_cast<std::ptrdiff_t>(p + k + free + 2));
+        auto knotAt = [&](std::size_t i) { return i == 0 ? lo : i > free ? hi : knots[p + k + i]; };
+        for (std::size_t from = 0, to = 1; to <= free + 1; ++to) {
+            if (to <= free && (pinned.empty() || !pinned[to - 1])) continue;
+            // Free knots from + 1 .. to - 1 (1-based, lo and hi at 0 and free + 1), gaps from .. to - 1.
+            const double start = knotAt(from), length = knotAt(to) - start;
+            double sum = 0.0;
+            for (std::size_t gap = from; gap < to; ++gap) sum += h_[gap];
+            const double minimum = 0.05 * length / double(to - from);
+            double at = start;
+            for (std::size_t gap = from; gap + 1 < to; ++gap) {
+                at += std::max(h_[gap] * length / sum, minimum);
+                knots[p + k + 1 + gap] = std::min(at, start + length - minimum * double(to - 1 - gap));
+            }
+            from = to;
+        }
+    }
+
+    /// Knots that have settled (on average the round moved them by less than settledMove of
+    /// their nearer neighbour's distance) end the knot-moving rounds; Lawson's rounds follow.
+    void settle(int iteration) {
+        double moved = 0.0;
+        std::size_t moving = 0;
+        for (std::size_t i = 1; i <= free_; ++i) {
+            const double near = std::min(before_[i] - before_[i - 1], before_[i + 1] - before_[i]);
+            if ((pinned.empty() || !pinned[i - 1]) && near > 0.0)
+                moved += std::abs(knots[p_ + k + i] - before_[i]) / near, ++moving;
+        }
+        if (moved < settledMove * double(moving) && iteration + 1 < movingRounds) {
+            iterations -= movingRounds - (iteration + 1);
+            movingRounds = iteration + 1;
+        }
+    }
+
+    std::size_t p_ = 0, fixed_ = 0, m_ = 0, free_ = 0, gaps_ = 0, nf_ = 0, wb_ = 0, triangle_ = 0;
+    std::vector<double> s_, lawson_, error_, basis_, band_, inverse_, gapError_, h_, before_;
+    std::vector<glm::dvec3> rhs_, forms_;
+    std::vector<double> reciprocal_;  // of each span's length (P > 0)
+    // Every sample's span and basis values, kept from a round that moved neither the knots nor
+    // the parameters for the next (P > 0).
+    std::vector<std::size_t> spanOf_;
+    std::vector<double> basisOf_;
+    bool basisKept_ = false;
+    double previousWorst_ = std::numeric_limits<double>::infinity();
 };
 
 /// The original's corners inside (lo, hi), or none where their knots are more than free.
@@ -652,29 +755,29 @@ FreeKnotFit FreeKnotFitter::fit(std::size_t count, std::span<const double> start
     KnotLayout layout = initialKnots(count, warm ? startKnots : std::span<const double>{}, moveKnots);
     out.pinnedKnots = static_cast<std::size_t>(std::count(layout.pinned.begin(), layout.pinned.end(), 1));
     const Samples& data = samplesFor(count, samplesPerFitSpan);
-    FitRounds run{data.params,
-                  data.points,
-                  data.spacing,
-                  std::move(layout.knots),
-                  std::vector<glm::dvec3>(count),
-                  degree,
-                  count,
-                  k,
-                  original_.knots[p],
-                  original_.knots[n0],
-                  original_.knots[p + k],
-                  original_.knots[n0 - k],
-                  moveKnots,
-                  rounds > 0 ? rounds
-                  : warm     ? options_.warmIterations
-                             : options_.iterations,
-                  0,
-                  options_.settledMove,
-                  options_.lawsonSettled,
-                  stops.giveUpAbove,
-                  stops.stopBelow,
-                  stops.passAt,
-                  std::move(layout.pinned)};
+    FitRounds run(FitInputs{data.params,
+                            data.points,
+                            data.spacing,
+                            std::move(layout.knots),
+                            std::vector<glm::dvec3>(count),
+                            degree,
+                            count,
+                            k,
+                            original_.knots[p],
+                            original_.knots[n0],
+                            original_.knots[p + k],
+                            original_.knots[n0 - k],
+                            moveKnots,
+                            rounds > 0 ? rounds
+                            : warm     ? options_.warmIterations
+                                       : options_.iterations,
+                            0,
+                            options_.settledMove,
+                            options_.lawsonSettled,
+                            stops.giveUpAbove,
+                            stops.stopBelow,
+                            stops.passAt,
+                            std::move(layout.pinned)});
     run.movingRounds = (run.iterations + 1) / 2;
     for (std::size_t i = 0; i < fixed; ++i) {
         run.points[i] = original_.points[i];

@@ -197,6 +197,40 @@ TEST_CASE("a free-knot fit that cannot reach the caller's bound gives up after i
     REQUIRE(reached.sampleError == full.sampleError);
 }
 
+TEST_CASE("a free-knot fit far above the caller's bound gives up after three knot-moving rounds",
+          "[geom][knots][freeknots]") {
+    // Refined, jittered curves of degree 1 to 5 and the airfoil, at a count well below what they
+    // need and at one they nearly reach: a bound a hundredth of the full fit's error ends the fit
+    // at its third round; a bound the full fit reaches (the rounds after the third lower the
+    // error by far less than fifty times) never ends it before its knot-moving rounds are done.
+    std::mt19937 rng(91);
+    std::vector<Curve> curves{nacaAirfoilCurve()};
+    for (int p = 1; p <= 5; ++p) curves.push_back(noisyRefinedCurve(rng, p, 40, 1e-5));
+    for (const Curve& c : curves)
+        for (std::size_t count : {c.points.size() / 8, c.points.size() / 3}) {
+            const FreeKnotFitter fitter(c, FreeKnotOptions{});
+            if (count < static_cast<std::size_t>(c.degree) + 2) continue;
+            const FreeKnotFit full = fitter.fit(count);
+            INFO("degree " << c.degree << ", " << count << " of " << c.points.size() << " points");
+            REQUIRE(std::isfinite(full.sampleError));
+            const FreeKnotFit hopeless =
+                fitter.fit(count, {}, true, 0, FreeKnotStops{0.01 * full.sampleError});
+            REQUIRE(hopeless.gaveUp);
+            REQUIRE(hopeless.rounds == 3);
+            REQUIRE(hopeless.curve.points.size() == count);
+            REQUIRE(hopeless.sampleError >= full.sampleError);
+            // With every knot-moving round run (none settle early), only this stop could end the
+            // fit before the first round on the final knots.
+            FreeKnotOptions allMoves;
+            allMoves.settledMove = 0.0;
+            const FreeKnotFitter moving(c, allMoves);
+            const FreeKnotFit reference = moving.fit(count);
+            const FreeKnotFit near =
+                moving.fit(count, {}, true, 0, FreeKnotStops{0.5 * reference.sampleError});
+            REQUIRE(near.rounds > 3);
+        }
+}
+
 TEST_CASE("a free-knot fit expected to pass far below the caller's bound stops after its knot-moving rounds",
           "[geom][knots][freeknots]") {
     const Curve c = nacaAirfoilCurve();
