@@ -270,7 +270,7 @@ static void representations(const char* pdf) {
     CHECK(err == 0 && total == 1 && buffer[0] == PMODEL_RGB);
     buffer[0] = 0;
     pinq_direct_colr_model_facs(PWST_PNG, 8, 0, &err, &total, &inds);
-    CHECK(err == 0 && total == 1 && inds.num_ints == 1 && buffer[0] == PMODEL_RGB);
+    CHECK(err == 0 && total == 4 && inds.num_ints == 4 && buffer[0] == PMODEL_RGB && buffer[3] == PMODEL_HLS);
     {
         Pint a[4], b[4], c[4], e[4], totals[4] = {0, 0, 0, 0};
         Pcurvsurf_facs facs;

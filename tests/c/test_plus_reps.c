@@ -483,7 +483,7 @@ static void errors(Pstore store) {
                       "ERROR 122 in SET POLYLINE REPRESENTATION PLUS (function 334): Ignoring function, the "
                       "specified polyline shading method is not available on the workstation"));
     line.shad_meth = PSD_NONE;
-    line.colr.type = PMODEL_HSV;
+    line.colr.type = PMODEL_HLS + 1; /* no colour model */
     EXPECT_ERROR(pset_line_rep_plus(1, 5, &line), 110, Pfn_set_line_rep_plus);
     line.colr.type = PINDIRECT;
     line.colr.val.ind = -1;
@@ -520,7 +520,7 @@ static void errors(Pstore store) {
         bad.back_refl_props.specular_colr.val.direct.y = -0.5f;
         EXPECT_ERROR(pset_int_rep_plus(1, 5, &bad), 136, Pfn_set_int_rep_plus);
         bad = interior;
-        bad.refl_props.specular_colr.type = PMODEL_CIELUV;
+        bad.refl_props.specular_colr.type = 7;
         EXPECT_ERROR(pset_int_rep_plus(1, 5, &bad), 110, Pfn_set_int_rep_plus);
         bad = interior;
         bad.back_shad_meth = 5;
@@ -543,7 +543,7 @@ static void errors(Pstore store) {
     for (int i = 0; i < 4; ++i) cells[i].ind = i;
     EXPECT_NO_ERROR(pset_pat_rep_plus(1, 4, &pattern));
     EXPECT_ERROR(pset_pat_rep_plus(1, 0, &pattern), 112, Pfn_set_pat_rep_plus);
-    pattern.type = PMODEL_HLS;
+    pattern.type = -1;
     EXPECT_ERROR(pset_pat_rep_plus(1, 4, &pattern), 110, Pfn_set_pat_rep_plus);
     pattern.type = PINDIRECT;
     pattern.dims.size_y = 0;

@@ -90,7 +90,8 @@ static void facilities_of(Pint t) {
     pinq_colr_facs(t, &err, &colour);
     CHECK(err == 0 && colour.colr_avail == PAVAIL_COLR && colour.num_pred_inds == 8);
     pinq_colr_model_facs(t, 16, 0, &err, &list, &total, &def);
-    CHECK(err == 0 && total == 1 && ints[0] == PMODEL_RGB && def == PMODEL_RGB);
+    CHECK(err == 0 && total == 4 && ints[0] == PMODEL_RGB && ints[1] == PMODEL_CIELUV &&
+          ints[2] == PMODEL_HSV && ints[3] == PMODEL_HLS && def == PMODEL_RGB);
     pinq_anno_facs(t, 16, 0, &err, &list, &total, &n, &lo, &hi);
     CHECK(err == 0 && total == 2 && ints[1] == PANNO_STYLE_LEAD_LINE && n == 0 && lo < hi);
     pinq_line_facs(t, 1, 4, &err, &line, &total);

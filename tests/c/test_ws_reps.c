@@ -169,7 +169,7 @@ static void colour_model(void) {
     Pint err = -1, model = 0;
     pinq_colr_model(1, &err, &model);
     CHECK(err == 0 && model == PMODEL_RGB);
-    EXPECT_ERROR(pset_colr_model(1, PMODEL_HSV), 110, Pfn_set_colr_model);
+    EXPECT_ERROR(pset_colr_model(1, PMODEL_HLS + 1), 110, Pfn_set_colr_model);
     EXPECT_NO_ERROR(pset_colr_model(1, PMODEL_RGB));
     pinq_colr_model(1, &err, &model);
     CHECK(err == 0 && model == PMODEL_RGB);

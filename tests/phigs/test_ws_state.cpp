@@ -172,7 +172,7 @@ TEST_CASE("representation errors in the standard's order leave the tables unchan
     for (int i = 3; i <= ws.description().patternTableSize; ++i) ws.setPatternRepresentation(i, {});
     CHECK(errorOf([&] { ws.setPatternRepresentation(99, {}); }) == errors::BundleTableFull);
     CHECK(ws.patterns().find(99) == nullptr);
-    CHECK(errorOf([&] { ws.setColourModel(3); }) == errors::ColourModelNotAvailable);
+    CHECK(errorOf([&] { ws.setColourModel(5); }) == errors::ColourModelNotAvailable);
     CHECK(ws.colourModel() == 1);
 }
 

@@ -123,6 +123,7 @@ TEST_CASE("back faces: distinguished colour, and culling of back or front faces"
             f.interior.colour = {0.2f, 0.8f, 0.2f};
             f.interior.backColour = {0.9f, 0.2f, 0.2f};
             f.interior.distinguishBackFaces = true;
+            f.interior.back.style = InteriorStyle::Solid;
             f.facetNormal = front ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 0, -1);
             return f;
         };

@@ -365,9 +365,11 @@ typedef struct {
     Pfloat back_plane;
     Pfloat front_plane;
 } Pview_map3;
-/* A general colour (PHIGS PLUS): an index, or a direct colour in the RGB model. */
+/* A general colour (PHIGS PLUS): an index, or a direct colour whose x, y, z are the components
+ * in colour model `type` (PMODEL_RGB: red, green, blue; PMODEL_CIELUV: u', v', Y; PMODEL_HSV:
+ * hue, saturation, value; PMODEL_HLS: hue, lightness, saturation; see pset_colr_model). */
 typedef struct {
-    Pint type; /* PINDIRECT or PMODEL_RGB */
+    Pint type; /* PINDIRECT or PMODEL_RGB .. PMODEL_HLS */
     union {
         Pint ind;
         struct {
@@ -466,8 +468,8 @@ typedef struct {
     Ptrimcurve* curves;
 } Ptrimcurve_list;
 /* Primitives with data (PHIGS PLUS): which data the facets, edges and vertices carry. A colour
- * value is an index (colr_type PINDIRECT) or direct RGB (PMODEL_RGB), the same for every vertex
- * and facet of one primitive. */
+ * value is an index (colr_type PINDIRECT) or direct in a colour model (PMODEL_RGB .. PMODEL_HLS), the same
+ * for every vertex and facet of one primitive. */
 #define PFACET_NONE 0
 #define PFACET_COLOUR 1
 #define PFACET_NORMAL 2
@@ -1167,7 +1169,15 @@ typedef enum { PCLASS_VEC, PCLASS_RASTER, PCLASS_OTHER } Pws_class;
 typedef enum { PDC_METRES, PDC_OTHER } Pdc_units;
 typedef enum { PAVAIL_MONOCHR, PAVAIL_COLR } Pcolr_avail;
 typedef enum { PDYN_IRG, PDYN_IMM, PDYN_CBS } Pdyn_mod;
-/* Colour models (pset_colr_model): this implementation has RGB only. */
+/* Colour models (pset_colr_model; every workstation type has all four, default RGB). Each has
+ * three components in [0, 1]. RGB: linear, ITU-R BT.709 primaries. CIELUV: CIE 1976 chromaticity
+ * u', v' and luminance Y relative to the reference white D65 (u' 0.1978, v' 0.4683), Y 1 being
+ * RGB (1, 1, 1). HSV and HLS: hue a fraction of a turn (0 red, 1/3 green, 2/3 blue), as Foley,
+ * van Dam, Feiner and Hughes, "Computer Graphics: Principles and Practice" (1990) give them. The
+ * workstation's model says how pset_colr_rep's and pinq_colr_rep's Pcolr_rep are read: an entry
+ * keeps the model it was given in (PINQ_SET answers it converted to the current model, exactly
+ * when unchanged); it is drawn as RGB clamped to [0, 1] (PINQ_REALIZED: that RGB in the current
+ * model). Direct general colours carry their own model. */
 #define PMODEL_CIELUV 2
 #define PMODEL_HSV 3
 #define PMODEL_HLS 4
@@ -1890,9 +1900,9 @@ void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* d
 void pcomp_fill_area_set_gnorm(Pint vflag, Pint nfa, const Pfacet_vdata_list3* vdata, Pint* err_ind,
                                Pvec3* norm);
 
-/* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct RGB
- * (PMODEL_RGB) or an index resolved through the workstation's colour table when set (113 for a
- * negative index). */
+/* ---- PHIGS PLUS representations: light sources and depth cueing. Colours are direct (any colour
+ * model, held as its RGB) or an index resolved through the workstation's colour table when set
+ * (113 for a negative index). */
 #define PLIGHT_AMBIENT 1
 #define PLIGHT_DIRECTIONAL 2
 #define PLIGHT_POSITIONAL 3
@@ -1936,9 +1946,12 @@ typedef struct {
     Pgcolr colr;
 } Pdcue_bundle;
 /* Light sources: index >= 1 (100), table full 103, type outside 1..4 (2202). Depth cue: index
- * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. The inquiries answer
- * the set values (PINQ_SET and PINQ_REALIZED alike: representations take effect at once),
- * 101 for an index not defined. */
+ * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. PINQ_SET answers the
+ * values set (colours as PMODEL_RGB); PINQ_REALIZED what is drawn: colours clamped to [0, 1],
+ * light directions of unit length ((0, 0, -1) for a zero one), attenuation coefficients >= 0, spot
+ * exponent in [0, 128] and spread angle in [0, pi]; depth cue planes and scales clamped to [0, 1]
+ * and the planes ordered front >= back (a reversed pair swapped with its scales). 101 for an
+ * index not defined. */
 void pset_light_src_rep(Pint ws_id, Pint light_src_ind, const Plight_src_bundle* light_src_rep);
 void pinq_light_src_rep(Pint ws_id, Pint light_src_ind, Pinq_type type, Pint* err_ind,
                         Plight_src_bundle* light_src_rep);
@@ -1971,7 +1984,8 @@ typedef struct {
     Pint_list psc_types;
 } Pcurvsurf_facs;
 void pinq_dcue_facs(Pint ws_type, Pint* err_ind, Pint* num_pred_inds);
-/* The direct colour models (PMODEL_RGB); the total comes before the list, as in the PHIGS PLUS binding. */
+/* The direct colour models (PMODEL_RGB .. PMODEL_HLS); the total comes before the list, as in the PHIGS PLUS
+ * binding. */
 void pinq_direct_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                                  Pint* num_elems_impl_list, Pint_list* models);
 void pinq_rendering_colr_model_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
@@ -1994,7 +2008,9 @@ enum {
     Pfn_set_colr_map_rep = 342
 };
 /* POLYLINE SET 3 WITH DATA: npl polylines; vflag PVERT_COORD or PVERT_COORD_COLOUR (a colour at
- * every vertex: a segment is drawn in its first vertex's colour). */
+ * every vertex: with polyline shading method PSD_NONE a segment is drawn in its first vertex's
+ * colour, with PSD_COLOUR the colour goes linearly from one vertex's to the next along it, in
+ * pieces within 1/255 of each other). */
 void ppolyline_set3_data(Pint vflag, Pint colr_type, Pint npl, const Pline_vdata_list3* vdata);
 /* CELL ARRAY 3 PLUS: dim->size_x columns x dim->size_y rows of general colours, row by row. */
 void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type, const Pcoval* colrs);
@@ -2074,7 +2090,7 @@ void pinq_colr_map_method_facs(Pint ws_type, Pint map_method, Pint* err_ind, Pco
  * indexed colour (PINDIRECT) and the PHIGS PLUS fields at their defaults (shading PSD_NONE,
  * reflectance PREFL_NONE, approximation PCURV_WS_DEP / PSURF_WS_DEP with value 1, the back face
  * as the front); pinq_*_rep of an entry whose colour is direct answers 134. Colours are
- * PINDIRECT or PMODEL_RGB (any other type: 110); errors 100 (index < 1; 112 for patterns), 103
+ * PINDIRECT or PMODEL_RGB .. PMODEL_HLS (any other type: 110); errors 100 (index < 1; 112 for patterns), 103
  * (table full), 113 (an index < 0), 136 (a direct component outside [0, 1]), 104 .. 108 as the
  * plain functions, 122 polyline shading method, 123 interior shading method and 124 reflectance
  * equation not available. PINQ_REALIZED answers as the plain inquiries do (undefined index:
@@ -2122,7 +2138,7 @@ typedef struct {
     Pgcolr colr;
 } Pedge_bundle_plus;
 /* A pattern of general colours: dims.size_x x dims.size_y cells, row by row, all of colour type
- * `type` (PINDIRECT: colr_array[i].ind; PMODEL_RGB: colr_array[i].direct). */
+ * `type` (PINDIRECT: colr_array[i].ind; a colour model: colr_array[i].direct). */
 typedef struct {
     Pint_size dims;
     Pint type;

@@ -130,7 +130,7 @@ void colourContent(const ColourAttribute& e, Phigs_store& s) {
         s.data.int_data = e.colour.index;
         return;
     }
-    s.data.colr.type = PMODEL_RGB;
+    s.data.colr.type = static_cast<Pint>(e.colour.model);
     s.data.colr.val.direct = {static_cast<Pfloat>(e.colour.rgb.x), static_cast<Pfloat>(e.colour.rgb.y),
                               static_cast<Pfloat>(e.colour.rgb.z)};
 }
@@ -151,7 +151,7 @@ void propertiesContent(const AreaPropertiesAttribute& e, Phigs_store& s) {
     p.specular_exp = static_cast<Pfloat>(e.specularExponent),
     p.transpar_coef = static_cast<Pfloat>(e.transparency);
     if (e.specularColour.direct) {
-        p.specular_colr.type = PMODEL_RGB;
+        p.specular_colr.type = static_cast<Pint>(e.specularColour.model);
         p.specular_colr.val.direct = {static_cast<Pfloat>(e.specularColour.rgb.x),
                                       static_cast<Pfloat>(e.specularColour.rgb.y),
                                       static_cast<Pfloat>(e.specularColour.rgb.z)};
@@ -334,8 +334,8 @@ void reserveVertices(Phigs_store& s, std::size_t n) {
 }
 
 Pint colourType(const std::vector<Colour>& colours, bool facet, const Colour& facetColour) {
-    const bool direct = (!colours.empty() && colours.front().direct) || (facet && facetColour.direct);
-    return direct ? PMODEL_RGB : PINDIRECT;
+    if (!colours.empty() && colours.front().direct) return static_cast<Pint>(colours.front().model);
+    return facet && facetColour.direct ? static_cast<Pint>(facetColour.model) : PINDIRECT;
 }
 
 void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
@@ -366,7 +366,7 @@ void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
 template <class Lists>
 Pint firstColourType(const Lists& lists) {
     for (const auto& list : lists)
-        if (!list.empty()) return list.front().direct ? PMODEL_RGB : PINDIRECT;
+        if (!list.empty()) return list.front().direct ? static_cast<Pint>(list.front().model) : PINDIRECT;
     return PINDIRECT;
 }
 

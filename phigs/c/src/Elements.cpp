@@ -39,9 +39,9 @@ void insertColour(int fn, ElementType type, const Pgcolr* colr) {
     insertElement(fn, [&](const char* name) -> Element {
         c::require(colr, name);
         if (colr->type == PINDIRECT) return ColourAttribute{type, Colour::indexed(colr->val.ind)};
-        if (colr->type != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+        if (!isColourModel(colr->type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
         const auto& d = colr->val.direct;
-        return ColourAttribute{type, Colour::fromRgb({d.x, d.y, d.z})};
+        return ColourAttribute{type, Colour::inModel(static_cast<ColourModel>(colr->type), {d.x, d.y, d.z})};
     });
 }
 

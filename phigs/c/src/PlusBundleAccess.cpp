@@ -39,15 +39,16 @@ Prefl_props plusProperties(const AreaPropertiesAttribute& a) {
 
 Colour coreColour(const Pgcolr& colour, const char* function) {
     if (colour.type == PINDIRECT) return Colour::indexed(colour.val.ind);
-    if (colour.type != PMODEL_RGB)
+    if (!isColourModel(colour.type))
         throw Error(errors::ColourModelNotAvailable, function, "colour type " + std::to_string(colour.type));
-    return Colour::fromRgb({colour.val.direct.x, colour.val.direct.y, colour.val.direct.z});
+    return Colour::inModel(static_cast<ColourModel>(colour.type),
+                           {colour.val.direct.x, colour.val.direct.y, colour.val.direct.z});
 }
 
 Pgcolr generalColour(const Colour& colour) {
     Pgcolr g{};
     if (colour.direct) {
-        g.type = PMODEL_RGB;
+        g.type = static_cast<Pint>(colour.model);
         g.val.direct.x = real(colour.rgb.x), g.val.direct.y = real(colour.rgb.y),
         g.val.direct.z = real(colour.rgb.z);
     } else {
@@ -100,7 +101,7 @@ EdgeBundle coreBundle(const Pedge_bundle_plus& b, const char* function) {
 }
 
 PatternRepresentation corePattern(const Ppat_rep_plus& p, const char* function) {
-    if (p.type != PINDIRECT && p.type != PMODEL_RGB)
+    if (p.type != PINDIRECT && !isColourModel(p.type))
         throw Error(errors::ColourModelNotAvailable, function, "colour type " + std::to_string(p.type));
     PatternRepresentation r{p.dims.size_x, p.dims.size_y, {}};
     if (p.dims.size_x < 1 || p.dims.size_y < 1) return r;  // error 116 in the table, after 112
@@ -110,7 +111,8 @@ PatternRepresentation corePattern(const Ppat_rep_plus& p, const char* function) 
     for (std::size_t i = 0; i < n; ++i) {
         const Pcoval& c = p.colr_array[i];
         r.colours.push_back(p.type == PINDIRECT ? Colour::indexed(c.ind)
-                                                : Colour::fromRgb({c.direct.x, c.direct.y, c.direct.z}));
+                                                : Colour::inModel(static_cast<ColourModel>(p.type),
+                                                                  {c.direct.x, c.direct.y, c.direct.z}));
     }
     return r;
 }
@@ -155,17 +157,25 @@ Ppat_rep_plus* answerPatternPlus(const PatternRepresentation& p, const ColourTab
     s.clear();
     const bool direct =
         std::any_of(p.colours.begin(), p.colours.end(), [](const Colour& c) { return c.direct; });
+    // Cells all direct in one model answer as given; a mixed pattern as the RGB drawn.
+    const ColourModel model = direct ? p.colours.front().model : ColourModel::Rgb;
+    const bool asGiven = direct && std::all_of(p.colours.begin(), p.colours.end(),
+                                               [&](const Colour& c) { return c.direct && c.model == model; });
     for (const Colour& c : p.colours) {
         Pcoval v{};
         if (direct) {
-            const glm::dvec3 rgb = colours.resolve(c);
+            const glm::dvec3 rgb = asGiven ? c.rgb : colours.resolve(c);
             v.direct.x = real(rgb.x), v.direct.y = real(rgb.y), v.direct.z = real(rgb.z);
         } else {
             v.ind = c.index;
         }
         s.covals.push_back(v);
     }
-    s.patternPlus = {{p.columns, p.rows}, direct ? PMODEL_RGB : PINDIRECT, s.covals.data()};
+    s.patternPlus = {{p.columns, p.rows},
+                     !direct   ? PINDIRECT
+                     : asGiven ? static_cast<Pint>(model)
+                               : PMODEL_RGB,
+                     s.covals.data()};
     return &s.patternPlus;
 }
 

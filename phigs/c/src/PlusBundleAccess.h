@@ -32,7 +32,8 @@ Ptext_bundle_plus plusBundle(const TextBundle& b);
 Pint_bundle_plus plusBundle(const InteriorBundle& b);
 Pedge_bundle_plus plusBundle(const EdgeBundle& b);
 /// A pattern answered in `store`, its colours in store.covals: PINDIRECT when every colour is an
-/// index, otherwise PMODEL_RGB with the indexed ones resolved through `colours`.
+/// index, the model and components as given when every colour is direct in one model, otherwise
+/// PMODEL_RGB with every colour as drawn (indexed ones resolved through `colours`).
 Ppat_rep_plus* answerPatternPlus(const PatternRepresentation& p, const ColourTable& colours,
                                  Phigs_store& store);
 

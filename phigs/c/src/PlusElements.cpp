@@ -21,8 +21,9 @@ void insertRanged(int fn, ElementType type, int v, int lo, int hi) {
 
 Colour colour(const Pgcolr& c, const char* name) {
     if (c.type == PINDIRECT) return Colour::indexed(c.val.ind);
-    if (c.type != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
-    return Colour::fromRgb({c.val.direct.x, c.val.direct.y, c.val.direct.z});
+    if (!isColourModel(c.type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+    return Colour::inModel(static_cast<ColourModel>(c.type),
+                           {c.val.direct.x, c.val.direct.y, c.val.direct.z});
 }
 
 Element properties(ElementType type, const Prefl_props* p, const char* name) {

@@ -30,12 +30,13 @@ glm::dvec3 vec(const Pvec3& v) {
 void checkFlags(int vflag, int colrType, const char* name) {
     if (vflag < PVERT_COORD || vflag > PVERT_COORD_COLOUR_NORMAL)
         throw Error(PE_ENUM_TYPE_INVAL, name, "vertex flag");
-    if (colrType != PINDIRECT && colrType != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+    if (colrType != PINDIRECT && !isColourModel(colrType))
+        throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
 }
 
 Colour colour(const Pcoval& c, int colrType) {
     if (colrType == PINDIRECT) return Colour::indexed(c.ind);
-    return Colour::fromRgb({c.direct.x, c.direct.y, c.direct.z});
+    return Colour::inModel(static_cast<ColourModel>(colrType), {c.direct.x, c.direct.y, c.direct.z});
 }
 
 /// `n` vertices of the form `vflag` says.
@@ -147,7 +148,7 @@ void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type
     insertElement(Pfn_cell_array3_plus, [&](const char* n) -> Element {
         c::require(paral, n);
         c::require(dim, n);
-        if (colr_type != PINDIRECT && colr_type != PMODEL_RGB)
+        if (colr_type != PINDIRECT && !isColourModel(colr_type))
             throw Error(PE_ENUM_TYPE_INVAL, n, "colour type");
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
         if (columns * rows) c::require(colrs, n);

@@ -1,5 +1,6 @@
 // PHIGS PLUS representations: light sources and depth cueing on a workstation, and their
-// inquiries (which answer the set values: representations take effect at once); the predefined
+// inquiries (SET: the values given, colours as RGB; REALIZED: what the workstation draws, as
+// phigs/view/RealizedLighting.h rules); the predefined
 // representations and the PHIGS PLUS facilities of the workstation types.
 
 #include "Binding.h"
@@ -7,6 +8,7 @@
 #include "Inquiry.h"
 #include "WorkstationAccess.h"
 #include "phigs.h"
+#include "phigs/view/RealizedLighting.h"
 
 #include <climits>
 
@@ -22,8 +24,10 @@ glm::vec3 rgb(const Workstation& ws, const Pgcolr& c, const char* name) {
             throw Error(errors::ColourIndexBelowZero, name, "colour index " + std::to_string(c.val.ind));
         return glm::vec3(ws.tables().colours.get(c.val.ind));
     }
-    if (c.type != PMODEL_RGB) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
-    return {c.val.direct.x, c.val.direct.y, c.val.direct.z};
+    if (!isColourModel(c.type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
+    // Held as RGB (converted, not clamped: REALIZED clamps).
+    return glm::vec3(
+        toRgb(static_cast<ColourModel>(c.type), {c.val.direct.x, c.val.direct.y, c.val.direct.z}));
 }
 
 Pgcolr gcolr(const glm::vec3& c) {
@@ -151,7 +155,7 @@ void pinq_light_src_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pligh
         const auto found = ws.tables().lights.find(index);
         if (found == ws.tables().lights.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
         c::require(rep, "inquiry");
-        *rep = bundle(found->second);
+        *rep = bundle(t == PINQ_REALIZED ? realized(found->second) : found->second);
     });
 }
 
@@ -186,7 +190,7 @@ void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bund
         const auto found = ws.tables().depthCues.find(index);
         if (found == ws.tables().depthCues.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
         c::require(rep, "inquiry");
-        *rep = bundle(found->second);
+        *rep = bundle(t == PINQ_REALIZED ? realized(found->second) : found->second);
     });
 }
 
@@ -252,10 +256,8 @@ void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* e
 // The PHIGS PLUS binding puts the total before the list here.
 void pinq_direct_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint* total,
                                  Pint_list* models) {
-    c::inquire(err, [&](Phigs&) {
-        description(ws_type);
-        c::answerList({PMODEL_RGB}, appl, start, models, total);
-    });
+    c::inquire(err,
+               [&](Phigs&) { c::answerList(description(ws_type).colourModels, appl, start, models, total); });
 }
 
 void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,

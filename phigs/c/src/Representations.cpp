@@ -86,8 +86,7 @@ void pset_pat_rep(Pint ws_id, Pint index, const Ppat_rep* rep) {
 void pset_colr_rep(Pint ws_id, Pint index, const Pcolr_rep* rep) {
     c::onOpenWorkstation(Pfn_set_colr_rep, ws_id, [&](Workstation& ws) {
         c::require(rep, "SET COLOUR REPRESENTATION");
-        ws.setColourRepresentation(index,
-                                   {rep->rgb.red, rep->rgb.green, rep->rgb.blue});  // RGB: the only model
+        ws.setColourRepresentation(index, c::colourComponents(*rep, ws.colourModel()));  // in its model
     });
 }
 
@@ -132,7 +131,14 @@ void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pcolr_rep*
         const ColourTable& colours = ws.tables().colours;
         if (!colours.defined(index) && !realize)
             throw Error(errors::RepresentationNotDefined, "inquiry", "colour " + std::to_string(index));
-        if (rep) *rep = c::cColour(colours.get(index));  // realized: drawn as given, undefined as 1
+        // In the workstation's current colour model: SET converts the entry from the model it was
+        // given in (exact when the same), REALIZED the RGB drawn (clamped; an undefined index as 1).
+        const auto model = static_cast<ColourModel>(ws.colourModel());
+        const Colour given = colours.given(index);
+        const glm::dvec3 v = realize                ? fromRgb(model, colours.get(index))
+                             : given.model == model ? given.rgb
+                                                    : fromRgb(model, toRgb(given.model, given.rgb));
+        if (rep) *rep = c::cColour(v, ws.colourModel());
     });
 }
 

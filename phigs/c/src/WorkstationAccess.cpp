@@ -155,9 +155,40 @@ Ppat_rep* answerPattern(const PatternRepresentation& p, Phigs_store& s) {
 }
 
 Pcolr_rep cColour(const glm::dvec3& rgb) {
+    return cColour(rgb, PMODEL_RGB);
+}
+
+Pcolr_rep cColour(const glm::dvec3& v, int model) {
     Pcolr_rep r{};
-    r.rgb = {static_cast<Pfloat>(rgb.x), static_cast<Pfloat>(rgb.y), static_cast<Pfloat>(rgb.z)};
+    const Pfloat x = static_cast<Pfloat>(v.x), y = static_cast<Pfloat>(v.y), z = static_cast<Pfloat>(v.z);
+    switch (model) {
+        case PMODEL_CIELUV:
+            r.cieluv = {x, y, z};
+            break;
+        case PMODEL_HSV:
+            r.hsv = {x, y, z};
+            break;
+        case PMODEL_HLS:
+            r.hls = {x, y, z};
+            break;
+        default:
+            r.rgb = {x, y, z};
+            break;
+    }
     return r;
+}
+
+glm::dvec3 colourComponents(const Pcolr_rep& r, int model) {
+    switch (model) {
+        case PMODEL_CIELUV:
+            return {r.cieluv.cieluv_x, r.cieluv.cieluv_y, r.cieluv.cieluv_y_lum};
+        case PMODEL_HSV:
+            return {r.hsv.hue, r.hsv.satur, r.hsv.value};
+        case PMODEL_HLS:
+            return {r.hls.hue, r.hls.lightness, r.hls.satur};
+        default:
+            return {r.rgb.red, r.rgb.green, r.rgb.blue};
+    }
 }
 
 }  // namespace phigs::c

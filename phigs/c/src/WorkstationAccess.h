@@ -92,5 +92,9 @@ Pedge_bundle cBundle(const EdgeBundle& b);
 /// A pattern answered in `store` (its colour indices in store.ints; 134 when a colour is direct).
 Ppat_rep* answerPattern(const PatternRepresentation& p, Phigs_store& store);
 Pcolr_rep cColour(const glm::dvec3& rgb);
+/// A colour representation of components `v` in colour model `model` (PMODEL_RGB .. PMODEL_HLS).
+Pcolr_rep cColour(const glm::dvec3& v, int model);
+/// The components of `r` in colour model `model` (the union member that model names).
+glm::dvec3 colourComponents(const Pcolr_rep& r, int model);
 
 }  // namespace phigs::c

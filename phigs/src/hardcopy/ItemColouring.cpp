@@ -62,7 +62,8 @@ ItemColouring::ItemColouring(const DrawList& list, const DrawItem& item, const g
 
 glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::vec3 base,
                              const glm::dvec3& world, const glm::dvec3& normal) const {
-    const int model = int(interior.reflectance);
+    const int model =
+        int(back && interior.distinguishBackFaces ? interior.back.reflectance : interior.reflectance);
     if (model <= 1 || !lights_) return base;
     const Reflectance& k = back ? interior.backProperties : interior.properties;
     glm::dvec3 sum(0.0);
@@ -81,7 +82,8 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
     const double n = double(vertices.size());
     centre /= n, base /= n;
     const glm::vec3 front = glm::vec3(base), backBase = useBack ? interior.backColour : front;
-    const bool lighting = interior.reflectance != ReflectanceModel::None && lights_;
+    const ReflectanceModel model = useBack ? interior.back.reflectance : interior.reflectance;
+    const bool lighting = model != ReflectanceModel::None && lights_;
     if (!lighting) return useBack ? interior.backColour : front;
     const ShadingMethod method = vertexNormals ? interior.shading : ShadingMethod::None;
     if (method == ShadingMethod::Colour || method == ShadingMethod::DotProduct) {

@@ -27,8 +27,19 @@ float opacityOf(const InteriorStyleSet& interior, bool back) {
     return 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
 }
 
-bool culled(CullMode cull, int facing) {
-    return (cull == CullMode::BackFaces && facing < 0) || (cull == CullMode::FrontFaces && facing > 0);
+/// Whether a facet facing that way is not filled: culled, or a back face of a HOLLOW or EMPTY
+/// back style with face distinguishing on.
+bool culled(const InteriorStyleSet& in, int facing) {
+    return (facing < 0 && !in.fillsBackFaces()) || (in.cull == CullMode::FrontFaces && facing > 0);
+}
+
+/// The hatch or pattern style of the side a facet shows (the back style for a distinguished back).
+void styleOf(FacetPaint& paint, const InteriorStyleSet& in, int facing) {
+    const bool back = facing < 0 && in.distinguishBackFaces;
+    const InteriorStyle style = back ? in.back.style : in.style;
+    paint.hatch = style == InteriorStyle::Hatch;
+    paint.hatchIndex = back ? in.back.styleIndex : in.styleIndex;
+    paint.pattern = style == InteriorStyle::Pattern;
 }
 
 }  // namespace
@@ -105,13 +116,11 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     const glm::dvec3 u = glm::normalize(glm::cross(helper, normal)) * size, v = glm::cross(normal, u);
     const int facing = pipeline_.facing(centre, centre + u, centre + v);
     const InteriorStyleSet& in = fill.interior;
-    if (culled(in.cull, facing)) return;
+    if (culled(in, facing)) return;
     FacetPaint paint;
     paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
     paint.opacity = opacityOf(in, facing < 0);
-    paint.hatch = in.style == InteriorStyle::Hatch;
-    paint.hatchIndex = in.styleIndex;
-    paint.pattern = in.style == InteriorStyle::Pattern;
+    styleOf(paint, in, facing);
     pipeline_.facet(world, paint);
 }
 
@@ -131,13 +140,11 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
                                     part.vertexColours ? r.colour : in.colour});
             }
             const int facing = pipeline_.facing(triangle[0], triangle[1], triangle[2]);
-            if (culled(in.cull, facing)) continue;
+            if (culled(in, facing)) continue;
             FacetPaint paint;
             paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
             paint.opacity = opacityOf(in, facing < 0);
-            paint.hatch = in.style == InteriorStyle::Hatch;
-            paint.hatchIndex = in.styleIndex;
-            paint.pattern = in.style == InteriorStyle::Pattern;
+            styleOf(paint, in, facing);
             paint.seam = true;
             pipeline_.facet({triangle}, paint);
         }

@@ -49,8 +49,10 @@ struct Writer {
     }
     void operator()(const Colour& c) {
         space();
-        if (c.direct)
+        if (c.direct && c.model == ColourModel::Rgb)
             out += "D", (*this)(c.rgb);
+        else if (c.direct)  // another colour model: D<model>
+            out += "D" + std::to_string(static_cast<int>(c.model)), (*this)(c.rgb);
         else
             out += "I", (*this)(c.index);
     }
@@ -221,7 +223,9 @@ struct Reader {
     void operator()(Colour& c) {
         std::string_view kind = token();
         if (kind == "D")
-            c.direct = true, (*this)(c.rgb);
+            c.direct = true, c.model = ColourModel::Rgb, (*this)(c.rgb);
+        else if (kind.size() == 2 && kind[0] == 'D' && isColourModel(kind[1] - '0'))
+            c.direct = true, c.model = static_cast<ColourModel>(kind[1] - '0'), (*this)(c.rgb);
         else if (kind == "I")
             c.direct = false, (*this)(c.index);
         else

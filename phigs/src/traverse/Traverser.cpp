@@ -3,13 +3,16 @@
 #include "Tessellation.h"
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
+#include "phigs/view/RealizedLighting.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <array>
 #include <climits>
+#include <cmath>
 #include <map>
 #include <unordered_map>
 #include <utility>
@@ -44,6 +47,7 @@ struct State {
     PatternPlacement pattern;
     Colour interiorColour = Colour::indexed(1), backColour = Colour::indexed(1);
     ShadingMethod shading = ShadingMethod::None, backShading = ShadingMethod::None;
+    ShadingMethod lineShading = ShadingMethod::None;
     ReflectanceModel reflectance = ReflectanceModel::None, backReflectance = ReflectanceModel::None;
     AreaPropertiesAttribute properties{ElementType::AreaProperties};
     AreaPropertiesAttribute backProperties{ElementType::BackAreaProperties};
@@ -326,8 +330,11 @@ void applyIndex(State& s, const IndexAttribute& a) {
         case T::ModelClippingIndicator:
             s.modelClip = v != 0;
             break;
+        case T::PolylineShadingMethod:
+            s.lineShading = static_cast<ShadingMethod>(v);
+            break;
         default:
-            break;  // polyline shading, annotation style: no draw-list effect
+            break;  // annotation style: no draw-list effect
     }
 }
 
@@ -405,6 +412,12 @@ struct Resolver {
                 s.ind(AspectId::LineType) ? s.lineType : b.type,
                 static_cast<float>(s.ind(AspectId::LinewidthScale) ? s.lineWidth : b.width)};
     }
+    /// Whether polylines with vertex colours interpolate them (polyline shading method COLOUR).
+    bool lineShaded(const State& s) const {
+        const ShadingMethod m =
+            s.ind(AspectId::PolylineShading) ? s.lineShading : t.polylines.get(s.polylineIndex).shading;
+        return m == ShadingMethod::Colour;
+    }
     MarkerStyle marker(const State& s) const {
         const PolymarkerBundle& b = t.polymarkers.get(s.polymarkerIndex);
         return {rgb(s.ind(AspectId::PolymarkerColour) ? s.markerColour : b.colour, s),
@@ -448,6 +461,10 @@ struct Resolver {
             reflectance(s.ind(AspectId::BackAreaProperties) ? s.backProperties : b.backProperties);
         out.cull = static_cast<CullMode>(s.faceCulling);
         out.distinguishBackFaces = s.faceDistinguishing != 0;
+        out.back = {s.ind(AspectId::BackInteriorStyle) ? s.backStyle : b.backStyle,
+                    s.ind(AspectId::BackInteriorStyleIndex) ? s.backStyleIndex : b.backStyleIndex,
+                    s.ind(AspectId::BackInteriorShading) ? s.backShading : b.backShading,
+                    s.ind(AspectId::BackInteriorReflectance) ? s.backReflectance : b.backReflectance};
         return out;
     }
     EdgeStyle edge(const State& s) const {
@@ -665,7 +682,7 @@ private:
             std::vector<Light> lights;
             for (int index : active)
                 if (auto l = tables_.lights.find(index); l != tables_.lights.end())
-                    lights.push_back(l->second);
+                    lights.push_back(realized(l->second));  // drawn as realized
             it->second = itemTables_.lightSet(active, std::move(lights));
         }
         return it->second;
@@ -677,7 +694,7 @@ private:
         if (entry == tables_.depthCues.end()) entry = tables_.depthCues.find(0);
         int result = -1;
         if (entry != tables_.depthCues.end() && entry->second.enabled)
-            result = itemTables_.depthCue(entry->first, entry->second);
+            result = itemTables_.depthCue(entry->first, realized(entry->second));
         lastCue_ = {index, result};
         return result;
     }
@@ -986,10 +1003,20 @@ private:
 
     /// POLYLINE SET 3 WITH DATA: a polyline per member; with vertex colours a segment takes the
     /// colour of its first vertex (polyline shading NONE, ISO/IEC 9592-4), and each run of
-    /// segments of one colour is one polyline.
+    /// segments of one colour is one polyline; with polyline shading COLOUR the colours are
+    /// interpolated along each segment (shadedSegment).
     void polylineSet(const Structure& s, int number, const State& state,
                      const PolylineSetWithDataElement& e) {
         const LineStyle style = resolve_.line(state);
+        if (!e.vertexColours.empty() && resolve_.lineShaded(state)) {
+            for (std::size_t i = 0; i < e.polylines.size(); ++i) {
+                const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
+                for (std::size_t j = 0; j + 1 < e.polylines[i].size(); ++j)
+                    shadedSegment(s, number, state, style, {e.polylines[i][j], e.polylines[i][j + 1]},
+                                  {colours[j], colours[j + 1]});
+            }
+            return;
+        }
         for (std::size_t i = 0; i < e.polylines.size(); ++i) {
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
@@ -1010,6 +1037,23 @@ private:
                                   run});
                 start = end;
             }
+        }
+    }
+
+    /// A segment from ends[0] to ends[1] whose colour goes linearly from colours[0] to colours[1]:
+    /// n equal pieces, each of the colour at its middle, n such that neighbouring pieces differ
+    /// by at most 1/255 in every component (so at 8 bits a piece is within half a step of the
+    /// exact colour at every point; at most 255 pieces).
+    void shadedSegment(const Structure& s, int number, const State& state, LineStyle style,
+                       std::array<glm::dvec3, 2> ends, std::array<glm::vec3, 2> colours) {
+        const glm::vec3 d = glm::abs(colours[1] - colours[0]);
+        const int n = std::clamp(static_cast<int>(std::ceil(std::max({d.x, d.y, d.z}) * 255.0f)), 1, 255);
+        for (int k = 0; k < n; ++k) {
+            const double t0 = double(k) / n, t1 = double(k + 1) / n;
+            style.colour = glm::mix(colours[0], colours[1], static_cast<float>((t0 + t1) / 2));
+            emit(s, number, state,
+                 DrawPolyline{segmentPoints({glm::mix(ends[0], ends[1], t0), glm::mix(ends[0], ends[1], t1)}),
+                              style});
         }
     }
 

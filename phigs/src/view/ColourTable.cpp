@@ -3,18 +3,19 @@
 namespace phigs {
 
 ColourTable::ColourTable(int capacity) : capacity_(capacity) {
-    entries_ = {{0, {0, 0, 0}}, {1, {1, 1, 1}}, {2, {1, 0, 0}}, {3, {0, 1, 0}},
-                {4, {0, 0, 1}}, {5, {1, 1, 0}}, {6, {0, 1, 1}}, {7, {1, 0, 1}}};
+    const glm::dvec3 rgb[] = {{0, 0, 0}, {1, 1, 1}, {1, 0, 0}, {0, 1, 0},
+                              {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+    for (int i = 0; i < 8; ++i) entries_[i] = Colour::fromRgb(rgb[i]);
 }
 
-void ColourTable::set(int index, const glm::dvec3& rgb, ErrorLog* log) {
+void ColourTable::set(int index, const glm::dvec3& rgb, ErrorLog* log, ColourModel model) {
     const char* function = "SET COLOUR REPRESENTATION";
     if (index < 0) raise(log, errors::ColourIndexBelowZero, function, "index " + std::to_string(index));
     if (index >= capacity_) raise(log, errors::BundleTableFull, function, "index " + std::to_string(index));
     for (int i = 0; i < 3; ++i)
         if (!(rgb[i] >= 0.0 && rgb[i] <= 1.0))
             raise(log, errors::BadColour, function, "component " + std::to_string(i));
-    entries_[index] = rgb;
+    entries_[index] = Colour::inModel(model, rgb);
 }
 
 void ColourTable::check(const Colour& colour, ErrorLog* log, const char* function) {
@@ -30,6 +31,11 @@ void ColourTable::check(const Colour& colour, ErrorLog* log, const char* functio
 }
 
 glm::dvec3 ColourTable::get(int index) const {
+    const Colour c = given(index);
+    return clampedRgb(c.model, c.rgb);
+}
+
+Colour ColourTable::given(int index) const {
     auto it = entries_.find(index);
     return it != entries_.end() ? it->second : entries_.at(1);
 }

@@ -217,7 +217,6 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
     const bool lines = key & kLines;
     const bool depth = key & kDepth;
-    const auto cull = static_cast<CullMode>((key >> kCullShift) & 3);
     const VkBool32 mayDiscard = (key & kMayDiscard) ? VK_TRUE : VK_FALSE;
     auto flag = [&](std::uint64_t bit) { return (key & bit) ? 1 : 0; };
     // The specialisation constants of shaders/scene.glsl.
@@ -286,9 +285,11 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     VkPipelineRasterizationStateCreateInfo raster{};
     raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
     raster.polygonMode = VK_POLYGON_MODE_FILL;
-    raster.cullMode = cull == CullMode::BackFaces    ? VK_CULL_MODE_BACK_BIT
-                      : cull == CullMode::FrontFaces ? VK_CULL_MODE_FRONT_BIT
-                                                     : VK_CULL_MODE_NONE;
+    const int culled = (key >> kCullShift) & 3;  // CullMode bits: 1 back, 2 front, 3 both
+    raster.cullMode = culled == 3                           ? VK_CULL_MODE_FRONT_AND_BACK
+                      : culled == int(CullMode::BackFaces)  ? VK_CULL_MODE_BACK_BIT
+                      : culled == int(CullMode::FrontFaces) ? VK_CULL_MODE_FRONT_BIT
+                                                            : VK_CULL_MODE_NONE;
     // Vulkan's winding test already allows for the framebuffer's downward y, so counter-clockwise
     // in NPC (x right, y up) is counter-clockwise here too.
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -477,7 +478,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 const InteriorStyleSet& s = *interior;
                 if (s.style == InteriorStyle::Hatch) flags |= gpu::Hatch;
                 if (s.style == InteriorStyle::Pattern) patterned = patternDraw(list, item, d);
-                if (s.reflectance != ReflectanceModel::None && item.lightSet >= 0) flags |= gpu::Lit;
+                const ReflectanceModel backModel =
+                    s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
+                if ((s.reflectance != ReflectanceModel::None || backModel != ReflectanceModel::None) &&
+                    item.lightSet >= 0)
+                    flags |= gpu::Lit;
                 if (s.distinguishBackFaces) {
                     flags |= gpu::DistinguishBack;
                     push.backColour = glm::vec4(s.backColour, 1.0f);
@@ -490,7 +495,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 };
                 reflect(s.properties, s.reflectance, push.reflectance, push.specularColour);
                 const Reflectance& back = s.distinguishBackFaces ? s.backProperties : s.properties;
-                reflect(back, s.reflectance, push.backReflectance, push.backSpecularColour);
+                reflect(back, backModel, push.backReflectance, push.backSpecularColour);
                 // The colours' alpha is the opacity the fragment shader writes.
                 push.colour.w = 1.0f - std::clamp(s.properties.transparency, 0.0f, 1.0f);
                 push.backColour.w = 1.0f - std::clamp(back.transparency, 0.0f, 1.0f);
@@ -500,14 +505,23 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
             d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, d.misc.w);
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
-            if (interior && !part.lines) c.pipeline |= int(interior->cull) << kCullShift;
+            if (interior && !part.lines) {
+                // Back faces not filled (culled, or a HOLLOW / EMPTY distinguished back): cull them too.
+                const int cull =
+                    int(interior->cull) | (interior->fillsBackFaces() ? 0 : int(CullMode::BackFaces));
+                c.pipeline |= std::uint64_t(cull) << kCullShift;
+            }
             if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
                 c.pipeline |= kMayDiscard;
             if (patterned) c.pipeline |= kPatterned;
             bool fragmentNeedsWorld = modelClip.y > 0 || patterned;
             if (flags & gpu::Lit) {
-                // Front and back share the model; a fixed light set shape lets the shader unroll.
-                c.pipeline |= int(interior->reflectance) << kReflectanceShift;
+                // A model both sides share is fixed (0: each side's is read per draw); a fixed light
+                // set shape lets the shader unroll.
+                const ReflectanceModel backModel =
+                    interior->distinguishBackFaces ? interior->back.reflectance : interior->reflectance;
+                c.pipeline |= (backModel == interior->reflectance ? int(interior->reflectance) : 0)
+                              << kReflectanceShift;
                 const int signature = signatures[std::size_t(item.lightSet)];
                 c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
                 if (shade == gpu::Gouraud) {

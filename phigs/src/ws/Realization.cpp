@@ -6,7 +6,8 @@ namespace phigs {
 namespace {
 
 Colour realizedColour(const Colour& colour, const ColourTable& table) {
-    if (colour.direct || table.defined(colour.index)) return colour;
+    if (colour.direct) return Colour::fromRgb(clampedRgb(colour.model, colour.rgb));  // drawn as RGB
+    if (table.defined(colour.index)) return colour;
     return Colour::indexed(1);
 }
 

@@ -230,8 +230,7 @@ std::map<int, DrawPattern> Workstation::resolvedPatterns() const {
         d.rows = p.rows;
         d.colours.clear();
         // Indexed cells through the colour table as it is now; direct cells (PHIGS PLUS) as given.
-        for (const Colour& c : p.colours)
-            d.colours.push_back(glm::vec3(c.direct ? c.rgb : tables_.colours.get(c.index)));
+        for (const Colour& c : p.colours) d.colours.push_back(glm::vec3(tables_.colours.resolve(c)));
     }
     return out;
 }
@@ -268,8 +267,8 @@ DrawList Workstation::traverse(const TraversalFilters& filters) {
     return traverser_.traverse(store_, roots, shown ? tables_ : pictureTables_, filters);
 }
 
-void Workstation::setColourRepresentation(int index, const glm::dvec3& rgb) {
-    tables_.colours.set(index, rgb, log_);
+void Workstation::setColourRepresentation(int index, const glm::dvec3& components) {
+    tables_.colours.set(index, components, log_, static_cast<ColourModel>(colourModel_));
     changed();
 }
 
@@ -371,7 +370,7 @@ void Workstation::setColourModel(int model) {
     const auto& models = description_.colourModels;
     if (std::find(models.begin(), models.end(), model) == models.end())
         raise(log_, errors::ColourModelNotAvailable, "SET COLOUR MODEL", "model " + std::to_string(model));
-    colourModel_ = model;  // colours are stored and drawn as RGB: nothing to redraw
+    colourModel_ = model;  // entries keep the model they were given in: nothing to redraw
 }
 
 void Workstation::setViewRepresentation(int index, const ViewRepresentation& view) {

@@ -60,6 +60,16 @@ struct PatternPlacement {
     bool operator==(const PatternPlacement&) const = default;
 };
 
+/// PHIGS PLUS back interior style, shading and reflectance equation: used for back faces when
+/// face distinguishing is on. A HOLLOW or EMPTY back style fills no back face.
+struct BackFaceStyle {
+    InteriorStyle style = InteriorStyle::Hollow;
+    int styleIndex = 1;
+    ShadingMethod shading = ShadingMethod::None;
+    ReflectanceModel reflectance = ReflectanceModel::None;
+    bool operator==(const BackFaceStyle&) const = default;
+};
+
 /// Resolved interior (fill area, mesh, surface) attributes.
 struct InteriorStyleSet {
     InteriorStyle style = InteriorStyle::Hollow;
@@ -72,7 +82,14 @@ struct InteriorStyleSet {
     Reflectance properties;
     Reflectance backProperties;
     CullMode cull = CullMode::None;
-    bool distinguishBackFaces = false;  ///< back faces use backColour / backProperties
+    bool distinguishBackFaces = false;  ///< back faces use backColour / backProperties / back
+    BackFaceStyle back;
+    /// Whether back faces are filled: not culled, and with face distinguishing a filled back style.
+    bool fillsBackFaces() const {
+        return cull != CullMode::BackFaces &&
+               !(distinguishBackFaces &&
+                 (back.style == InteriorStyle::Hollow || back.style == InteriorStyle::Empty));
+    }
 };
 
 /// Resolved edge attributes (fill areas, meshes, surfaces).

@@ -26,7 +26,8 @@ namespace phigs {
 /// @endverbatim
 /// Fields: integers and reals in decimal (reals shortest round-trip), booleans 0/1, strings as
 /// `<byte count>:<bytes>`, lists as `<count>` then the items, points as x y z, matrices as 16
-/// reals column by column, colours as D r g b or I index, B-spline curves as degree, knots,
+/// reals column by column, colours as D r g b (RGB), D<model> c1 c2 c3 (another colour
+/// model, 2 .. 4) or I index, B-spline curves as degree, knots,
 /// points, weights. A file that does not parse, misses its END line or fails its checksum is
 /// refused with error 403 naming the file and the line.
 ///

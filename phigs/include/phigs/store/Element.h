@@ -7,6 +7,7 @@
 
 #include "geom/Curve.h"
 #include "geom/Surface.h"
+#include "phigs/core/ColourModels.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -129,16 +130,19 @@ std::string_view elementTypeName(ElementType type);
 /// The type whose name is `name`, or ElementType::Count_.
 ElementType elementTypeFromName(std::string_view name);
 
-/// A colour as PHIGS PLUS has it: an index into the workstation colour table, or direct RGB.
+/// A colour as PHIGS PLUS has it: an index into the workstation colour table, or direct, its
+/// three components (`rgb`) given in colour model `model` (ColourModels.h; RGB unless set).
 struct Colour {
     bool direct = false;
+    ColourModel model = ColourModel::Rgb;
     int index = 1;
     glm::dvec3 rgb{1.0};
-    static Colour indexed(int i) { return {false, i, glm::dvec3(1.0)}; }
-    static Colour fromRgb(glm::dvec3 c) { return {true, 0, c}; }
+    static Colour indexed(int i) { return {false, ColourModel::Rgb, i, glm::dvec3(1.0)}; }
+    static Colour fromRgb(glm::dvec3 c) { return {true, ColourModel::Rgb, 0, c}; }
+    static Colour inModel(ColourModel m, glm::dvec3 c) { return {true, m, 0, c}; }
     /// Equal when they name the same colour (an indexed colour's rgb and a direct one's index are unused).
     bool operator==(const Colour& o) const {
-        return direct == o.direct && (direct ? rgb == o.rgb : index == o.index);
+        return direct == o.direct && (direct ? model == o.model && rgb == o.rgb : index == o.index);
     }
 };
 

@@ -93,20 +93,25 @@ class ColourTable {
 public:
     explicit ColourTable(int capacity = 256);
     /// SET COLOUR REPRESENTATION: errors 113 (index < 0), 103 (beyond capacity), 118 (component outside
-    /// [0,1]).
-    void set(int index, const glm::dvec3& rgb, ErrorLog* log);
+    /// [0,1]). The entry keeps `components` in `model` as given.
+    void set(int index, const glm::dvec3& components, ErrorLog* log, ColourModel model = ColourModel::Rgb);
+    /// The RGB colour drawn for entry `index` (index 1 when undefined), clamped to [0, 1].
     glm::dvec3 get(int index) const;
+    /// Entry `index` as set: a direct colour in the model it was given in (index 1 when undefined).
+    Colour given(int index) const;
     bool defined(int index) const { return entries_.contains(index); }
     std::vector<int> definedIndices() const;
-    /// RGB of a colour: direct as it is, indexed through the table.
-    glm::dvec3 resolve(const Colour& colour) const { return colour.direct ? colour.rgb : get(colour.index); }
+    /// RGB of a colour as drawn: direct converted from its model and clamped, indexed through the table.
+    glm::dvec3 resolve(const Colour& colour) const {
+        return colour.direct ? clampedRgb(colour.model, colour.rgb) : get(colour.index);
+    }
     /// A general colour a representation may hold: error 113 for an index below 0, 136 for a
-    /// direct (RGB) component outside [0, 1].
+    /// direct component outside [0, 1].
     static void check(const Colour& colour, ErrorLog* log, const char* function);
 
 private:
     int capacity_;
-    std::map<int, glm::dvec3> entries_;
+    std::map<int, Colour> entries_;  ///< direct colours
 };
 
 /// Everything of a workstation that traversal reads: colour, bundle, view, light and depth cue

@@ -8,8 +8,9 @@ namespace phigs {
 
 /// What a workstation described by `d` draws for a representation (the REALIZED values of
 /// INQUIRE ... REPRESENTATION): widths and marker sizes within the description's range, text in
-/// STROKE precision (every font is stroked), an undefined colour index as index 1 (direct colours
-/// as given); the PHIGS PLUS entries (shading, reflectance, approximation) as set.
+/// STROKE precision (every font is stroked), an undefined colour index as index 1, a direct
+/// colour converted to RGB and clamped to [0, 1]; the PHIGS PLUS entries (shading, reflectance,
+/// approximation) as set.
 PolylineBundle realized(const PolylineBundle& b, const WorkstationDescription& d, const ColourTable& c);
 PolymarkerBundle realized(const PolymarkerBundle& b, const WorkstationDescription& d, const ColourTable& c);
 TextBundle realized(const TextBundle& b, const WorkstationDescription& d, const ColourTable& c);

@@ -108,7 +108,8 @@ public:
 
     // ---- tables (each change counts as a change of the picture). A bundle's colours are general
     // colours (PHIGS PLUS); errors 100, 103, 113, 136, then the entries' own (104 .. 124).
-    void setColourRepresentation(int index, const glm::dvec3& rgb);
+    /// SET COLOUR REPRESENTATION: `components` in the workstation's colour model (colourModel()).
+    void setColourRepresentation(int index, const glm::dvec3& components);
     void setPolylineRepresentation(int index, const PolylineBundle& bundle);
     void setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle);
     void setTextRepresentation(int index, const TextBundle& bundle);

@@ -52,9 +52,9 @@ struct WorkstationDescription {
     /// Character heights and expansion factors (0: continuous range).
     double minCharHeight = 1.0e-6, maxCharHeight = 1.0e6;
     double minCharExpansion = 0.01, maxCharExpansion = 100.0;
-    int textFonts = 4;                 ///< fonts 1..textFonts, each in every precision (stroked)
-    std::vector<int> hatchStyles;      ///< the hatch style indices drawn as hatching
-    std::vector<int> colourModels{1};  ///< RGB only
+    int textFonts = 4;                          ///< fonts 1..textFonts, each in every precision (stroked)
+    std::vector<int> hatchStyles;               ///< the hatch style indices drawn as hatching
+    std::vector<int> colourModels{1, 2, 3, 4};  ///< RGB, CIELUV, HSV, HLS (ColourModels.h)
     /// PHIGS PLUS: polyline shading methods (1 none, 2 colour), interior shading methods (1 none,
     /// 2 colour, 3 dot product, 4 normal) and reflectance equations (1 none .. 4 ambient, diffuse
     /// and specular).

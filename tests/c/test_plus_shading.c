@@ -1,0 +1,210 @@
+/* Back faces and polyline shading drawn on the offscreen type (lavapipe, validation layer on)
+ * and the PDF type (rasterised by pdftoppm at 144 dpi):
+ * seeded random triangles, front or back facing, under every face distinguishing mode, face
+ * culling mode and back interior style, show at their centre the front colour, the back colour
+ * or the background exactly as the rules say; and a polyline set with data whose two vertex
+ * colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its first
+ * vertex's colour with PSD_NONE. argv[1]: a directory for the files. */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include <png.h>
+
+static unsigned long long random_state = 0x853c49e6748fea9bULL;
+
+static unsigned next_random(void) {
+    random_state = random_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (unsigned)(random_state >> 33);
+}
+
+static double random_real(double lo, double hi) {
+    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
+}
+
+typedef struct {
+    int width, height;
+    unsigned char* rgb; /* rows top to bottom */
+    double side;        /* NPC [0, 1]^2 is the lower left side x side pixels */
+    const char* name;
+} Picture;
+
+static int read_png(const char* path, Picture* out) {
+    png_image image;
+    memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path)) return 0;
+    image.format = PNG_FORMAT_RGB;
+    out->width = (int)image.width, out->height = (int)image.height;
+    out->rgb = malloc(PNG_IMAGE_SIZE(image));
+    return out->rgb && png_image_finish_read(&image, NULL, out->rgb, 0, NULL);
+}
+
+/* A binary PPM (P6, maxval 255) as pdftoppm writes it. */
+static int read_ppm(const char* path, Picture* out) {
+    FILE* f = fopen(path, "rb");
+    int maxval = 0;
+    if (!f) return 0;
+    if (fscanf(f, "P6 %d %d %d", &out->width, &out->height, &maxval) != 3 || maxval != 255) {
+        fclose(f);
+        return 0;
+    }
+    fgetc(f);
+    const size_t size = (size_t)out->width * (size_t)out->height * 3;
+    out->rgb = malloc(size);
+    const int ok = out->rgb && fread(out->rgb, 1, size, f) == size;
+    fclose(f);
+    return ok;
+}
+
+static const unsigned char* pixel(const Picture* p, double x, double y) {
+    const int i = (int)(x * p->side), j = (int)(p->height - y * p->side);
+    return p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
+}
+
+/* Whether the pixel at NPC (x, y) is `rgb` (NULL: the background, the pixel at NPC (0.02, 0.02)),
+ * within 2/255. */
+static int pixel_is(const Picture* p, double x, double y, const double* rgb, const char* what) {
+    const unsigned char* c = pixel(p, x, y);
+    const unsigned char* background = pixel(p, 0.02, 0.02);
+    double expected[3];
+    int ok = 1;
+    for (int k = 0; k < 3; ++k) expected[k] = rgb ? 255 * rgb[k] : background[k];
+    for (int k = 0; k < 3; ++k) ok = ok && fabs(c[k] - expected[k]) <= 2.5;
+    if (!ok)
+        fprintf(stderr, "  %s, %s: pixel at NPC (%.3f, %.3f) is %d %d %d, expected %.1f %.1f %.1f\n", p->name,
+                what, x, y, c[0], c[1], c[2], expected[0], expected[1], expected[2]);
+    return ok;
+}
+
+static Pgcolr direct(const double c[3]) {
+    Pgcolr g;
+    g.type = PMODEL_RGB;
+    g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+    return g;
+}
+
+static void random_rgb(double c[3]) {
+    /* Multiples of 1/255: what the picture can hold exactly. */
+    for (int k = 0; k < 3; ++k) c[k] = (double)(next_random() % 256u) / 255.0;
+}
+
+static char png[512], pdf[512], ppm_root[512];
+
+/* Draws structure 1 on a fresh offscreen and PDF workstation and reads both pictures (p[0], p[1]). */
+static int draw(Picture p[2]) {
+    char command[2048], ppm[600];
+    remove(png), remove(pdf);
+    EXPECT_NO_ERROR(popen_ws(1, png, PWST_OFFSCREEN));
+    EXPECT_NO_ERROR(popen_ws(2, pdf, PWST_PDF));
+    for (Pint ws = 1; ws <= 2; ++ws) {
+        EXPECT_NO_ERROR(ppost_struct(ws, 1, 0.5f));
+        EXPECT_NO_ERROR(pupd_ws(ws, PFLAG_PERFORM));
+        EXPECT_NO_ERROR(pclose_ws(ws));
+    }
+    p[0].rgb = p[1].rgb = NULL;
+    p[0].side = 768, p[0].name = "offscreen";
+    p[1].side = 595.2756 * 2, p[1].name = "PDF";
+    snprintf(command, sizeof command, "pdftoppm -r 144 -singlefile '%s' '%s'", pdf, ppm_root);
+    snprintf(ppm, sizeof ppm, "%s.ppm", ppm_root);
+    return read_png(png, &p[0]) && system(command) == 0 && read_ppm(ppm, &p[1]);
+}
+
+static void back_faces(void) {
+    for (int round = 0; round < 24; ++round) {
+        double front[3], back[3];
+        const int backFacing = (int)(next_random() % 2), distinguish = (int)(next_random() % 2);
+        const Pcull_mode cull = (Pcull_mode)(next_random() % 3);
+        const Pint_style backStyle = (Pint_style)(next_random() % 3 == 0   ? PSTYLE_EMPTY
+                                                  : next_random() % 2 == 0 ? PSTYLE_HOLLOW
+                                                                           : PSTYLE_SOLID);
+        const double cx = random_real(0.3, 0.7), cy = random_real(0.3, 0.7), r = random_real(0.1, 0.2);
+        Ppoint3 corners[3];
+        Ppoint_list3 triangle = {3, corners};
+        Pgcolr f, b;
+        Picture p[2];
+        const double* expected;
+        random_rgb(front), random_rgb(back);
+        f = direct(front), b = direct(back);
+        for (int k = 0; k < 3; ++k) {
+            /* Counter-clockwise seen from +z (front facing) or clockwise. */
+            const double a = (backFacing ? -1 : 1) * k * 2.0943951 + 0.3;
+            corners[k].x = (Pfloat)(cx + r * cos(a)), corners[k].y = (Pfloat)(cy + r * sin(a)),
+            corners[k].z = 0;
+        }
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(PSTYLE_SOLID);
+        pset_int_colr(&f);
+        pset_back_int_colr(&b);
+        pset_back_int_style(backStyle);
+        pset_face_disting_mode(distinguish ? PDISTING_YES : PDISTING_NO);
+        pset_face_cull_mode(cull);
+        pfill_area3(&triangle);
+        pclose_struct();
+        if ((backFacing && cull == PCULL_BACKFACE) || (!backFacing && cull == PCULL_FRONTFACE))
+            expected = NULL; /* the background */
+        else if (!backFacing || !distinguish)
+            expected = front;
+        else
+            expected = backStyle == PSTYLE_SOLID ? back : NULL;
+        CHECK(draw(p));
+        for (int i = 0; i < 2; ++i) {
+            char what[160];
+            snprintf(what, sizeof what, "triangle %s, distinguishing %d, cull %d, back style %d",
+                     backFacing ? "back" : "front", distinguish, (int)cull, (int)backStyle);
+            if (p[i].rgb) CHECK(pixel_is(&p[i], cx, cy, expected, what));
+            free(p[i].rgb);
+        }
+    }
+}
+
+static void line_shading(void) {
+    for (int round = 0; round < 12; ++round) {
+        double c0[3], c1[3], mid[3];
+        const int shaded = round % 2;
+        const double y = random_real(0.2, 0.8);
+        Pptco3 vertices[2];
+        Pline_vdata_list3 line;
+        Picture p[2];
+        random_rgb(c0), random_rgb(c1);
+        for (int k = 0; k < 3; ++k) mid[k] = (c0[k] + c1[k]) / 2;
+        vertices[0].point.x = 0.1f, vertices[1].point.x = 0.9f;
+        vertices[0].point.y = vertices[1].point.y = (Pfloat)y;
+        vertices[0].point.z = vertices[1].point.z = 0;
+        vertices[0].colr.direct.x = (Pfloat)c0[0], vertices[0].colr.direct.y = (Pfloat)c0[1],
+        vertices[0].colr.direct.z = (Pfloat)c0[2];
+        vertices[1].colr.direct.x = (Pfloat)c1[0], vertices[1].colr.direct.y = (Pfloat)c1[1],
+        vertices[1].colr.direct.z = (Pfloat)c1[2];
+        line.num_vertices = 2, line.vertex_data.ptcolrs = vertices;
+        pdel_struct(1);
+        popen_struct(1);
+        pset_linewidth(6);
+        pset_line_shad_meth(shaded ? PSD_COLOUR : PSD_NONE);
+        ppolyline_set3_data(PVERT_COORD_COLOUR, PMODEL_RGB, 1, &line);
+        pclose_struct();
+        CHECK(draw(p));
+        for (int i = 0; i < 2; ++i) {
+            if (p[i].rgb) {
+                CHECK(
+                    pixel_is(&p[i], 0.5, y, shaded ? mid : c0, shaded ? "shaded midpoint" : "flat midpoint"));
+                CHECK(pixel_is(&p[i], 0.102, y, c0, "first end"));
+                if (shaded) CHECK(pixel_is(&p[i], 0.898, y, c1, "last end"));
+            }
+            free(p[i].rgb);
+        }
+    }
+}
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    char errors[512];
+    snprintf(png, sizeof png, "%s/plus_shading.png", dir);
+    snprintf(pdf, sizeof pdf, "%s/plus_shading.pdf", dir);
+    snprintf(ppm_root, sizeof ppm_root, "%s/plus_shading_pdf", dir);
+    snprintf(errors, sizeof errors, "%s/plus_shading_errors.txt", dir);
+    open_with_handler(errors);
+    back_faces();
+    line_shading();
+    pclose_phigs();
+    return finish("test_plus_shading");
+}
