@@ -48,15 +48,16 @@ void fields(V& v, NurbsSurfaceElement& e) {
 template <class V>
 void fields(V& v, FillAreaSetWithDataElement& e) {
     v(e.contours), v(e.vertexColours), v(e.vertexNormals), v(e.hasFacetColour), v(e.facetColour),
-        v(e.hasFacetNormal), v(e.facetNormal);
+        v(e.hasFacetNormal), v(e.facetNormal), v(e.edgeFlags);
 }
 template <class V>
 void fields(V& v, TriangleStripElement& e) {
-    v(e.points), v(e.vertexColours), v(e.vertexNormals);
+    v(e.points), v(e.vertexColours), v(e.vertexNormals), v(e.facetColours), v(e.facetNormals);
 }
 template <class V>
 void fields(V& v, QuadrilateralMeshElement& e) {
-    v(e.rows), v(e.columns), v(e.points), v(e.vertexColours), v(e.vertexNormals);
+    v(e.rows), v(e.columns), v(e.points), v(e.vertexColours), v(e.vertexNormals), v(e.facetColours),
+        v(e.facetNormals);
 }
 template <class V>
 void fields(V& v, PolylineSetWithDataElement& e) {
@@ -114,7 +115,7 @@ void fields(V& v, ApproximationAttribute& e) {
 }
 template <class V>
 void fields(V& v, SurfaceCharacteristicsAttribute& e) {
-    v(e.style), v(e.placement), v(e.curvesU), v(e.curvesV);
+    v(e.style), v(e.placement), v(e.curvesU), v(e.curvesV), v(e.origin), v(e.direction), v(e.levels);
 }
 template <class V>
 void fields(V& v, LightSourceStateAttribute& e) {
