@@ -681,7 +681,7 @@ typedef union {
         Pint fflag, eflag, vflag, colr_type;
         Pfacet_data3 fdata;
         Pint nfa;
-        Pedge_data_list* edata; /* NULL: edge data are not stored */
+        Pedge_data_list* edata; /* one list per contour with PEDGE_VISIBILITY, else NULL */
         Pfacet_vdata_list3* vdata;
     } fas3_data;
     struct {
