@@ -609,7 +609,8 @@ private:
     }
 
     /// A segment with room for every primitive up to the next execute (one item each: only a
-    /// polyline set or a set of fill area sets makes more, and the segment grows for those).
+    /// polyline set, a set of fill area sets or edge data makes more, and the segment grows for
+    /// those).
     std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
