@@ -168,10 +168,11 @@ void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type
         if (colr_type != PINDIRECT && colr_type != PMODEL_RGB)
             throw Error(PE_ENUM_TYPE_INVAL, n, "colour type");
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
-        if (columns * rows) c::require(colrs, n);
+        const std::size_t cells = columns * rows;  // each below 2^31: no overflow
+        if (cells != 0) c::require(colrs, n);
         CellArrayPlusElement e{point(paral->p),           point(paral->q),        point(paral->r),
                                static_cast<int>(columns), static_cast<int>(rows), {}};
-        for (std::size_t k = 0; k < columns * rows; ++k) e.colours.push_back(colour(colrs[k], colr_type));
+        for (std::size_t k = 0; k < cells; ++k) e.colours.push_back(colour(colrs[k], colr_type));
         return e;
     });
 }
