@@ -52,7 +52,7 @@ static void attributes(void) {
     EXPECT_REFUSED(pset_line_shad_meth(PSD_NORMAL), PE_ENUM_TYPE_INVAL, Pfn_set_line_shad_meth);
     EXPECT_REFUSED(pset_face_cull_mode((Pcull_mode)3), PE_ENUM_TYPE_INVAL, Pfn_set_face_cull_mode);
     EXPECT_REFUSED(pset_refl_props(NULL), -204, Pfn_set_refl_props);
-    EXPECT_REFUSED(pset_para_surf_characs(4, &iso), -202, Pfn_set_para_surf_characs);
+    EXPECT_REFUSED(pset_para_surf_characs(6, &iso), -202, Pfn_set_para_surf_characs);
     pclose_struct();
     EXPECT_ERROR(pset_dcue_ind(1), 5, Pfn_set_dcue_ind);
 
@@ -176,11 +176,11 @@ static void with_data(void) {
                                          PMODEL_RGB, &facet, 1, NULL, &area));
     EXPECT_NO_ERROR(ptri_strip3_data(PFACET_NONE, PVERT_COORD_NORMAL, PINDIRECT, 3, NULL, &strip_data));
     EXPECT_NO_ERROR(pquad_mesh3_data(PFACET_NONE, PVERT_COORD, PINDIRECT, &dim, NULL, &mesh_data));
-    EXPECT_REFUSED(ptri_strip3_data(PFACET_NORMAL, PVERT_COORD_NORMAL, PINDIRECT, 3, NULL, &strip_data), -202,
+    EXPECT_REFUSED(ptri_strip3_data(PFACET_NORMAL, PVERT_COORD_NORMAL, PINDIRECT, 3, NULL, &strip_data), -204,
                    Pfn_tri_strip3_data);
     EXPECT_REFUSED(
-        pfill_area_set3_data(PFACET_NONE, PEDGE_VISIBILITY, PVERT_COORD, PINDIRECT, NULL, 0, NULL, NULL),
-        -202, Pfn_fill_area_set3_data);
+        pfill_area_set3_data(PFACET_NONE, PEDGE_VISIBILITY, PVERT_COORD, PINDIRECT, NULL, 1, NULL, &area),
+        -204, Pfn_fill_area_set3_data);
     EXPECT_REFUSED(pquad_mesh3_data(PFACET_NONE, 7, PINDIRECT, &dim, NULL, &mesh_data), PE_ENUM_TYPE_INVAL,
                    Pfn_quad_mesh3_data);
     pclose_struct();
@@ -277,7 +277,7 @@ static void representations(const char* pdf) {
         facs.cat_types.ints = a, facs.sat_types.ints = b, facs.tcat_types.ints = c, facs.psc_types.ints = e;
         pinq_curv_surf_facs(PWST_OFFSCREEN, 4, 0, 4, 1, 4, 0, 4, 0, &err, &facs, &totals[0], &totals[1],
                             &totals[2], &totals[3]);
-        CHECK(err == 0 && totals[0] == 3 && totals[1] == 3 && totals[2] == 1 && totals[3] == 3);
+        CHECK(err == 0 && totals[0] == 3 && totals[1] == 3 && totals[2] == 1 && totals[3] == 5);
         CHECK(facs.sat_types.num_ints == 2 && b[1] == PSURF_CHORDAL_DEVIATION_WC &&
               e[2] == PSC_ISOPARAMETRIC_CURVES);
         CHECK(facs.max_bsp_order >= 4);

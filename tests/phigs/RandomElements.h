@@ -95,12 +95,21 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
             f.vertexColours = {{randomColour(rng), randomColour(rng), randomColour(rng)}};
             f.hasFacetNormal = true;
             f.facetNormal = {0, 0, 1};
+            if (randomInt(rng, 0, 1)) f.edgeFlags = {{randomInt(rng, 0, 1), randomInt(rng, 0, 1), 1}};
             return f;
         }
-        case 10:
-            return TriangleStripElement{randomPoints(rng, 4), {}, randomPoints(rng, 4)};
-        case 11:
-            return QuadrilateralMeshElement{2, 2, randomPoints(rng, 4), {}, {}};
+        case 10: {
+            TriangleStripElement e{randomPoints(rng, 4), {}, randomPoints(rng, 4)};
+            if (randomInt(rng, 0, 1)) e.facetColours = {randomColour(rng), randomColour(rng)};
+            if (randomInt(rng, 0, 1)) e.facetNormals = randomPoints(rng, 2);
+            return e;
+        }
+        case 11: {
+            QuadrilateralMeshElement e{2, 2, randomPoints(rng, 4), {}, {}};
+            if (randomInt(rng, 0, 1)) e.facetColours = {randomColour(rng)};
+            if (randomInt(rng, 0, 1)) e.facetNormals = randomPoints(rng, 1);
+            return e;
+        }
         case 12: {
             static const T types[] = {T::PolylineIndex, T::Linetype,        T::MarkerType,
                                       T::TextFont,      T::InteriorStyle,   T::EdgeFlag,
@@ -124,8 +133,13 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
             return AsfAttribute{static_cast<AspectId>(randomInt(rng, 0, int(AspectId::Count_) - 1)), twoD};
         case 19:
             return ApproximationAttribute{T::SurfaceApproximationCriteria, 2, 4.0, 3.0};
-        case 20:
-            return SurfaceCharacteristicsAttribute{3, 0, 2, 5};
+        case 20: {
+            if (randomInt(rng, 0, 1)) return SurfaceCharacteristicsAttribute{3, 0, 2, 5};
+            SurfaceCharacteristicsAttribute e{randomInt(rng, 4, 5), 0, 0, 0};
+            e.origin = randomPoint(rng), e.direction = randomPoint(rng);
+            for (int k = randomInt(rng, 0, 4); k > 0; --k) e.levels.push_back(randomReal(rng));
+            return e;
+        }
         case 21:
             return LightSourceStateAttribute{{1, 2}, {3}};
         case 22: {

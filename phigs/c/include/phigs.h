@@ -390,11 +390,20 @@ typedef enum { PCULL_NONE, PCULL_BACKFACE, PCULL_FRONTFACE } Pcull_mode;
 #define PSURF_WS_DEP 1
 #define PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS 2
 #define PSURF_CHORDAL_DEVIATION_WC 6
-/* Parametric surface characteristics: none, workstation dependent, iso-parametric curves (level
- * curves, types 4 and 5, are refused with -202). */
+/* Parametric surface characteristics: none, workstation dependent, iso-parametric curves, level
+ * curves in modelling (4) or world (5) coordinates: the surface cut by the planes through
+ * origin + t * direction perpendicular to direction, one per t in params, drawn with the
+ * polyline attributes as iso-parametric curves are. A zero direction or a value that is not
+ * finite is -202. */
 #define PSC_NONE 1
 #define PSC_WS_DEP 2
 #define PSC_ISOPARAMETRIC_CURVES 3
+#define PSC_LEVEL_CURVES_MC 4
+#define PSC_LEVEL_CURVES_WC 5
+typedef struct {
+    Pint num_floats;
+    Pfloat* floats;
+} Pfloat_list;
 typedef enum { PCP_UNIFORM, PCP_NON_UNIFORM } Pcurve_placement;
 typedef union {
     struct {
@@ -408,6 +417,16 @@ typedef union {
         Pint u_count;
         Pint v_count;
     } psc_3;
+    struct {
+        Ppoint3 origin;
+        Pvec3 direction;
+        Pfloat_list params;
+    } psc_4;
+    struct {
+        Ppoint3 origin;
+        Pvec3 direction;
+        Pfloat_list params;
+    } psc_5;
 } Ppara_surf_characs;
 typedef struct {
     Pfloat ambient_coef;
@@ -434,10 +453,6 @@ typedef struct {
     Pint num_points;
     Ppoint4* points;
 } Ppoint_list4;
-typedef struct {
-    Pint num_floats;
-    Pfloat* floats;
-} Pfloat_list;
 typedef union {
     Ppoint_list3 point3d; /* PNON_RATIONAL */
     Ppoint_list4 point4d; /* PRATIONAL */
@@ -668,7 +683,7 @@ typedef union {
         Pint fflag, eflag, vflag, colr_type;
         Pfacet_data3 fdata;
         Pint nfa;
-        Pedge_data_list* edata; /* NULL: edge data are not stored */
+        Pedge_data_list* edata; /* one list per contour with PEDGE_VISIBILITY, else NULL */
         Pfacet_vdata_list3* vdata;
     } fas3_data;
     struct {
@@ -1886,9 +1901,14 @@ void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const P
                     const Ptrimcurve_list* trim_loops);
 
 /* ---- PHIGS PLUS primitives with data. FILL AREA SET 3 WITH DATA keeps a facet colour and
- * normal and per-vertex colours and normals; triangle strips and quadrilateral meshes keep the
- * per-vertex data (facet data, and per-edge visibility, are refused with -202). A quadrilateral
- * mesh of dim.size_x x dim.size_y points runs x fastest. */
+ * normal, per-vertex colours and normals and, with PEDGE_VISIBILITY, a flag per contour edge
+ * (edata[c].edgedata[k]: the edge from vertex k to k + 1, the last back to the first; with the
+ * edge flag on only the edges flagged PEDGE_ON are drawn). Triangle strips and quadrilateral
+ * meshes keep per-vertex data and facet data: one per triangle (nv - 2; triangle k has vertices
+ * k, k + 1, k + 2) or per quadrilateral ((size_x - 1) x (size_y - 1), x fastest). Vertex colours
+ * take precedence over facet colours, which colour their facet flat; vertex normals over facet
+ * normals, which also give their facet's front. A quadrilateral mesh of dim.size_x x dim.size_y
+ * points runs x fastest. */
 void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
                           Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata);
 void ptri_strip3_data(Pint fflag, Pint vflag, Pint colr_type, Pint nv, const Pfacet_data_arr3* fdata,
@@ -1973,7 +1993,7 @@ void pinq_light_src_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind,
 /* More facilities of every type: the predefined depth cue entries (1), the rendering colour
  * models (PMODEL_RGB), and the curve and surface facilities: the approximation criteria drawn
  * (workstation dependent, constant subdivision between knots, chordal deviation), trimming curves
- * workstation dependent, surface characteristics PSC_NONE .. PSC_ISOPARAMETRIC_CURVES, and no
+ * workstation dependent, surface characteristics PSC_NONE .. PSC_LEVEL_CURVES_WC, and no
  * limit on B-spline orders (INT_MAX). */
 typedef struct {
     Pint max_bsp_order;

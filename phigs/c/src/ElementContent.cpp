@@ -2,6 +2,7 @@
 
 #include "Conversions.h"
 
+#include <algorithm>
 #include <type_traits>
 
 namespace phigs::c {
@@ -173,6 +174,17 @@ void characteristicsContent(const SurfaceCharacteristicsAttribute& e, Phigs_stor
     if (e.style == PSC_ISOPARAMETRIC_CURVES)
         s.data.para_surf_characs.data.psc_3 = {static_cast<Pcurve_placement>(e.placement), e.curvesU,
                                                e.curvesV};
+    if (e.style != PSC_LEVEL_CURVES_MC && e.style != PSC_LEVEL_CURVES_WC) return;
+    for (double t : e.levels) s.floats.push_back(static_cast<Pfloat>(t));
+    auto write = [&](auto& d) {
+        d.origin = p3(e.origin);
+        d.direction = v3(e.direction);
+        d.params = {static_cast<Pint>(s.floats.size()), s.floats.data()};
+    };
+    if (e.style == PSC_LEVEL_CURVES_MC)
+        write(s.data.para_surf_characs.data.psc_4);
+    else
+        write(s.data.para_surf_characs.data.psc_5);
 }
 
 void lightStateContent(const LightSourceStateAttribute& e, Phigs_store& s) {
@@ -360,6 +372,16 @@ void fasDataContent(const FillAreaSetWithDataElement& e, Phigs_store& s) {
     d.nfa = static_cast<Pint>(e.contours.size());
     d.edata = nullptr;
     d.vdata = s.vertexLists.data();
+    if (e.edgeFlags.empty()) return;
+    d.eflag = PEDGE_VISIBILITY;
+    for (const auto& flags : e.edgeFlags)
+        for (int f : flags) s.edgeFlags.push_back(f ? PEDGE_ON : PEDGE_OFF);
+    std::size_t at = 0;
+    for (const auto& flags : e.edgeFlags) {
+        s.edgeLists.push_back({static_cast<Pint>(flags.size()), s.edgeFlags.data() + at});
+        at += flags.size();
+    }
+    d.edata = s.edgeLists.data();
 }
 
 /// The colour type of a primitive's colours: that of the first one (the binding gives one type to all).
@@ -472,9 +494,33 @@ template <class Mesh>
 Pfacet_vdata_arr3 meshData(const Mesh& e, Pint& vflag, Pint& colrType, Phigs_store& s) {
     const bool colours = !e.vertexColours.empty(), normals = !e.vertexNormals.empty();
     vflag = vertexFlag(colours, normals);
-    colrType = colourType(e.vertexColours, false, Colour{});
+    colrType = firstColourType(std::vector<std::vector<Colour>>{e.vertexColours, e.facetColours});
     reserveVertices(s, e.points.size());
     return vertexData(vflag, e.points, &e.vertexColours, &e.vertexNormals, s);
+}
+
+/// The facet data of a triangle strip or quadrilateral mesh in the store's arrays.
+template <class Mesh>
+Pfacet_data_arr3 meshFacets(const Mesh& e, Pint& fflag, Phigs_store& s) {
+    const bool fc = !e.facetColours.empty(), fn = !e.facetNormals.empty();
+    fflag = fc ? (fn ? PFACET_COLOUR_NORMAL : PFACET_COLOUR) : (fn ? PFACET_NORMAL : PFACET_NONE);
+    Pfacet_data_arr3 out{};
+    const std::size_t n = std::max(e.facetColours.size(), e.facetNormals.size());
+    for (std::size_t k = 0; k < n; ++k) switch (fflag) {
+            case PFACET_COLOUR:
+                s.covals.push_back(coval(e.facetColours[k]));
+                break;
+            case PFACET_NORMAL:
+                s.norms.push_back(v3(e.facetNormals[k]));
+                break;
+            default:
+                s.conorms.push_back({coval(e.facetColours[k]), v3(e.facetNormals[k])});
+                break;
+        }
+    if (fflag == PFACET_COLOUR) out.colrs = s.covals.data();
+    if (fflag == PFACET_NORMAL) out.norms = s.norms.data();
+    if (fflag == PFACET_COLOUR_NORMAL) out.conorms = s.conorms.data();
+    return out;
 }
 
 }  // namespace
@@ -544,12 +590,14 @@ int fillContent(const Element& element, Phigs_store& s) {
                 fasDataContent(e, s);
             else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                 auto& d = s.data.tri_strip3;
-                d.fflag = PFACET_NONE, d.nv = static_cast<Pint>(e.points.size());
+                d.nv = static_cast<Pint>(e.points.size());
                 d.vdata = meshData(e, d.vflag, d.colr_type, s);
+                d.fdata = meshFacets(e, d.fflag, s);
             } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                 auto& d = s.data.quad_mesh3;
-                d.fflag = PFACET_NONE, d.dim = {e.columns, e.rows};
+                d.dim = {e.columns, e.rows};
                 d.vdata = meshData(e, d.vflag, d.colr_type, s);
+                d.fdata = meshFacets(e, d.fflag, s);
             } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>)
                 polylineSetContent(e, s);
             else if constexpr (std::is_same_v<E, CellArrayPlusElement>)

@@ -91,6 +91,23 @@ geom::Curve trimCurve(const Ptrimcurve& t, const char* name) {
     return checked(name, [&] { return geom::Curve(t.order - 1, knots, points, weights); });
 }
 
+/// Level curves (types 4 and 5; psc_4 and psc_5 have one layout): origin, direction and the
+/// parameters of the planes. The store refuses a zero direction or values that are not finite.
+SurfaceCharacteristicsAttribute levelCurves(Pint type, const Ppara_surf_characs* data, const char* n) {
+    c::require(data, n);
+    SurfaceCharacteristicsAttribute e{type, 0, 0, 0};
+    auto read = [&](const auto& d) {
+        e.origin = {d.origin.x, d.origin.y, d.origin.z};
+        e.direction = {d.direction.delta_x, d.direction.delta_y, d.direction.delta_z};
+        e.levels = floats(&d.params, n);
+    };
+    if (type == PSC_LEVEL_CURVES_MC)
+        read(data->psc_4);
+    else
+        read(data->psc_5);
+    return e;
+}
+
 }  // namespace
 
 extern "C" {
@@ -171,6 +188,7 @@ void pset_surf_approx(Pint type, Pfloat u, Pfloat v) {
 void pset_para_surf_characs(Pint type, const Ppara_surf_characs* data) {
     insertElement(Pfn_set_para_surf_characs, [&](const char* n) -> Element {
         if (type == PSC_NONE || type == PSC_WS_DEP) return SurfaceCharacteristicsAttribute{type, 0, 0, 0};
+        if (type == PSC_LEVEL_CURVES_MC || type == PSC_LEVEL_CURVES_WC) return levelCurves(type, data, n);
         if (type != PSC_ISOPARAMETRIC_CURVES)
             throw Error(errors::InvalidElementData, n,
                         "surface characteristics type " + std::to_string(type));

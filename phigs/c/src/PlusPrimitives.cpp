@@ -64,33 +64,51 @@ VertexData vertices(int vflag, int colrType, std::size_t n, const Pfacet_vdata_a
     return v;
 }
 
-void noFacetData(Pint fflag, const char* name) {
+/// Facet data of `facets` facets as `fflag` says (nothing for PFACET_NONE).
+void facetList(Pint fflag, Pint colrType, std::size_t facets, const Pfacet_data_arr3* fdata,
+               std::vector<Colour>& colours, std::vector<glm::dvec3>& normals, const char* name) {
     if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
         throw Error(PE_ENUM_TYPE_INVAL, name, "facet flag");
-    if (fflag != PFACET_NONE)
-        throw Error(errors::InvalidElementData, name, "facet data are not stored for this primitive");
+    if (fflag == PFACET_NONE || facets == 0) return;
+    c::require(fdata, name);
+    c::require(fdata->colrs, name);  // every member of the union is a pointer to the array
+    for (std::size_t k = 0; k < facets; ++k) switch (fflag) {
+            case PFACET_COLOUR:
+                colours.push_back(colour(fdata->colrs[k], colrType));
+                break;
+            case PFACET_NORMAL:
+                normals.push_back(vec(fdata->norms[k]));
+                break;
+            default:
+                colours.push_back(colour(fdata->conorms[k].colr, colrType));
+                normals.push_back(vec(fdata->conorms[k].norm));
+                break;
+        }
+}
+
+/// The edge flags of a fill area set with data: one list per contour, one flag per vertex.
+std::vector<std::vector<int>> edgeFlags(std::size_t contours, const Pedge_data_list* edata,
+                                        const char* name) {
+    std::vector<std::vector<int>> out;
+    if (contours) c::require(edata, name);
+    for (std::size_t c = 0; c < contours; ++c) {
+        const std::size_t k = c::count(edata[c].num_edges, name);
+        if (k) c::require(edata[c].edgedata, name);
+        auto& flags = out.emplace_back();
+        for (std::size_t j = 0; j < k; ++j) {
+            const int f = c::raw(edata[c].edgedata[j]);
+            if (f != PEDGE_OFF && f != PEDGE_ON)
+                throw Error(PE_ENUM_TYPE_INVAL, name, "edge visibility flag");
+            flags.push_back(f == PEDGE_ON ? 1 : 0);
+        }
+    }
+    return out;
 }
 
 /// Facet data of `sets` sets as `fflag` says (nothing for PFACET_NONE).
 void facetData(SetOfFillAreaSetsElement& e, Pint fflag, Pint colrType, std::size_t sets,
                const Pfacet_data_arr3* fdata, const char* name) {
-    if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
-        throw Error(PE_ENUM_TYPE_INVAL, name, "facet flag");
-    if (fflag == PFACET_NONE || sets == 0) return;
-    c::require(fdata, name);
-    c::require(fdata->colrs, name);  // every member of the union is a pointer to the array
-    for (std::size_t k = 0; k < sets; ++k) switch (fflag) {
-            case PFACET_COLOUR:
-                e.facetColours.push_back(colour(fdata->colrs[k], colrType));
-                break;
-            case PFACET_NORMAL:
-                e.facetNormals.push_back(vec(fdata->norms[k]));
-                break;
-            default:
-                e.facetColours.push_back(colour(fdata->conorms[k].colr, colrType));
-                e.facetNormals.push_back(vec(fdata->conorms[k].norm));
-                break;
-        }
+    facetList(fflag, colrType, sets, fdata, e.facetColours, e.facetNormals, name);
 }
 
 /// The contours of set `k` (vertex indices) and, with edge data, their edge flags.
@@ -151,10 +169,11 @@ void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type
         if (colr_type != PINDIRECT && !isColourModel(colr_type))
             throw Error(PE_ENUM_TYPE_INVAL, n, "colour type");
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
-        if (columns * rows) c::require(colrs, n);
+        const std::size_t cells = columns * rows;  // each below 2^31: no overflow
+        if (cells != 0) c::require(colrs, n);
         CellArrayPlusElement e{point(paral->p),           point(paral->q),        point(paral->r),
                                static_cast<int>(columns), static_cast<int>(rows), {}};
-        for (std::size_t k = 0; k < columns * rows; ++k) e.colours.push_back(colour(colrs[k], colr_type));
+        for (std::size_t k = 0; k < cells; ++k) e.colours.push_back(colour(colrs[k], colr_type));
         return e;
     });
 }
@@ -188,14 +207,11 @@ void pset_rendering_colr_model(Pint model) {
 
 void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, const Pfacet_data3* fdata,
                           Pint nfa, const Pedge_data_list* edata, const Pfacet_vdata_list3* vdata) {
-    (void)edata;
     insertElement(Pfn_fill_area_set3_data, [&](const char* n) -> Element {
         checkFlags(vflag, colr_type, n);
         if (fflag < PFACET_NONE || fflag > PFACET_COLOUR_NORMAL)
             throw Error(PE_ENUM_TYPE_INVAL, n, "facet flag");
         if (eflag != PEDGE_NONE && eflag != PEDGE_VISIBILITY) throw Error(PE_ENUM_TYPE_INVAL, n, "edge flag");
-        if (eflag == PEDGE_VISIBILITY)
-            throw Error(errors::InvalidElementData, n, "per-edge visibility is not stored");
         FillAreaSetWithDataElement e;
         if (fflag != PFACET_NONE) {
             c::require(fdata, n);
@@ -218,34 +234,37 @@ void pfill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, co
             if (vflag == PVERT_COORD_NORMAL || vflag == PVERT_COORD_COLOUR_NORMAL)
                 e.vertexNormals.push_back(std::move(v.normals));
         }
+        if (eflag == PEDGE_VISIBILITY) e.edgeFlags = edgeFlags(areas, edata, n);
         return e;
     });
 }
 
 void ptri_strip3_data(Pint fflag, Pint vflag, Pint colr_type, Pint nv, const Pfacet_data_arr3* fdata,
                       const Pfacet_vdata_arr3* vdata) {
-    (void)fdata;
     insertElement(Pfn_tri_strip3_data, [&](const char* n) -> Element {
         checkFlags(vflag, colr_type, n);
-        noFacetData(fflag, n);
         c::require(vdata, n);
-        VertexData v = vertices(vflag, colr_type, c::count(nv, n), *vdata, n);
-        return TriangleStripElement{std::move(v.points), std::move(v.colours), std::move(v.normals)};
+        const std::size_t count = c::count(nv, n);
+        VertexData v = vertices(vflag, colr_type, count, *vdata, n);
+        TriangleStripElement e{std::move(v.points), std::move(v.colours), std::move(v.normals)};
+        facetList(fflag, colr_type, count < 3 ? 0 : count - 2, fdata, e.facetColours, e.facetNormals, n);
+        return e;
     });
 }
 
 void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* dim,
                       const Pfacet_data_arr3* fdata, const Pfacet_vdata_arr3* vdata) {
-    (void)fdata;
     insertElement(Pfn_quad_mesh3_data, [&](const char* n) -> Element {
         checkFlags(vflag, colr_type, n);
-        noFacetData(fflag, n);
         c::require(dim, n);
         c::require(vdata, n);
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
         VertexData v = vertices(vflag, colr_type, columns * rows, *vdata, n);
-        return QuadrilateralMeshElement{static_cast<int>(rows), static_cast<int>(columns),
-                                        std::move(v.points), std::move(v.colours), std::move(v.normals)};
+        QuadrilateralMeshElement e{static_cast<int>(rows), static_cast<int>(columns), std::move(v.points),
+                                   std::move(v.colours), std::move(v.normals)};
+        const std::size_t quads = rows < 2 || columns < 2 ? 0 : (rows - 1) * (columns - 1);
+        facetList(fflag, colr_type, quads, fdata, e.facetColours, e.facetNormals, n);
+        return e;
     });
 }
 

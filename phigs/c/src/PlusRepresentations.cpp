@@ -271,8 +271,9 @@ void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, 
         c::answerList({PSURF_WS_DEP, PSURF_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, PSURF_CHORDAL_DEVIATION_WC},
                       sat_len, sat_st, &facs->sat_types, tot_sat_len);
         c::answerList({PCURV_WS_DEP}, tcat_len, tcat_st, &facs->tcat_types, tot_tcat_len);
-        c::answerList({PSC_NONE, PSC_WS_DEP, PSC_ISOPARAMETRIC_CURVES}, psc_len, psc_st, &facs->psc_types,
-                      tot_psc_len);
+        c::answerList(
+            {PSC_NONE, PSC_WS_DEP, PSC_ISOPARAMETRIC_CURVES, PSC_LEVEL_CURVES_MC, PSC_LEVEL_CURVES_WC},
+            psc_len, psc_st, &facs->psc_types, tot_psc_len);
         facs->max_bsp_order = INT_MAX;  // the geometry kernel sets no limit
         facs->max_tc_order = INT_MAX;
     });

@@ -120,8 +120,10 @@ struct MinText<geom::Surface> {
     static constexpr std::size_t value = 8 * 2;  // two degrees, two counts, four empty lists
 };
 
-/// Adds up MinText over the fields of a payload.
+/// Adds up MinText over the fields of a payload, as the oldest format version has them (fewer
+/// fields, so never more than a newer file's least).
 struct MinTextCounter {
+    int version = 1;
     std::size_t total = 0;
     template <class T>
     void operator()(T&) {
@@ -148,6 +150,7 @@ struct Reader {
     const std::string& text;
     std::size_t at = 0;
     int line = 1;
+    int version = ArchiveFile::kFormatVersion;  ///< the file's: fields added later keep their defaults
 
     [[noreturn]] void fail(const std::string& reason) {
         throw std::runtime_error("line " + std::to_string(line) + ": " + reason);
@@ -431,7 +434,7 @@ std::vector<int> ArchiveFile::structureIds() const {
 }
 
 std::string ArchiveFile::encode(const std::map<int, std::vector<Element>>& contents) {
-    std::string out = "PHIGS-ARCHIVE 1\n";
+    std::string out = "PHIGS-ARCHIVE " + std::to_string(kFormatVersion) + "\n";
     Writer w{out};
     for (const auto& [id, elements] : contents) {
         out += "STRUCTURE";
@@ -454,8 +457,10 @@ std::map<int, std::vector<Element>> ArchiveFile::decode(const std::string& text,
     std::map<int, std::vector<Element>> contents;
     try {
         if (in.token() != "PHIGS-ARCHIVE") in.fail("not a PHIGS archive (no PHIGS-ARCHIVE header)");
-        int version = in.number<int>("version");
-        if (version != 1) in.fail("unsupported archive version " + std::to_string(version));
+        in.version = in.number<int>("version");
+        if (in.version < 1 || in.version > kFormatVersion)
+            in.fail("unsupported archive version " + std::to_string(in.version) +
+                    " (this reader reads 1 to " + std::to_string(kFormatVersion) + ")");
         while (true) {
             std::size_t tokenStart = (in.skipSpace(), in.at);
             std::string_view keyword = in.token();

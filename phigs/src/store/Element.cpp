@@ -3,6 +3,8 @@
 #include "ElementFields.h"
 #include "phigs/store/Gdp.h"
 
+#include <glm/geometric.hpp>
+
 #include <array>
 #include <cmath>
 #include <type_traits>
@@ -262,6 +264,42 @@ std::string checkSetOfFillAreaSets(const SetOfFillAreaSetsElement& e) {
     return {};
 }
 
+/// Facet data of a mesh: none, or one colour / normal per facet.
+std::string checkFacets(std::size_t colours, std::size_t normals, std::size_t facets, const char* what) {
+    for (auto [n, name] : {std::pair{colours, "facet colours"}, std::pair{normals, "facet normals"}})
+        if (n != 0 && n != facets)
+            return std::to_string(n) + " " + name + " for " + std::to_string(facets) + " " + what;
+    return {};
+}
+
+/// Edge flags of a fill area set with data: none, or one flag (0 or 1) per contour vertex.
+std::string checkEdgeFlags(const FillAreaSetWithDataElement& e) {
+    if (e.edgeFlags.empty()) return {};
+    if (e.edgeFlags.size() != e.contours.size())
+        return std::to_string(e.edgeFlags.size()) + " edge flag lists for " +
+               std::to_string(e.contours.size()) + " contours";
+    for (std::size_t c = 0; c < e.contours.size(); ++c) {
+        if (e.edgeFlags[c].size() != e.contours[c].size())
+            return "contour " + std::to_string(c) + " has " + std::to_string(e.edgeFlags[c].size()) +
+                   " edge flags for " + std::to_string(e.contours[c].size()) + " edges";
+        for (int f : e.edgeFlags[c])
+            if (f != 0 && f != 1)
+                return "contour " + std::to_string(c) + ": edge flag " + std::to_string(f) +
+                       " is neither 0 nor 1";
+    }
+    return {};
+}
+
+/// Surface characteristics: styles 1 to 5; iso-curve counts not negative; level curves with a
+/// direction that is not zero (the planes are perpendicular to it).
+std::string checkCharacteristics(const SurfaceCharacteristicsAttribute& e) {
+    if (e.style < 1 || e.style > 5) return "surface characteristics type " + std::to_string(e.style);
+    if (e.curvesU < 0 || e.curvesV < 0) return "negative iso-curve count";
+    if (e.placement != 0 && e.placement != 1) return "iso-curve placement " + std::to_string(e.placement);
+    if (e.style >= 4 && glm::dot(e.direction, e.direction) == 0.0) return "level curve direction is zero";
+    return {};
+}
+
 std::string validatePayload(const Element& element) {
     return std::visit(
         [](const auto& e) -> std::string {
@@ -308,12 +346,15 @@ std::string validatePayload(const Element& element) {
                             !r.empty())
                             return r;
                 }
-                return {};
+                return checkEdgeFlags(e);
             } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                 if (auto r = checkPoints(e.points, 0, "triangle strip"); !r.empty()) return r;
                 if (auto r = checkPerVertex(e.vertexColours, e.points.size(), "vertex colours"); !r.empty())
                     return r;
-                return checkPerVertex(e.vertexNormals, e.points.size(), "vertex normals");
+                if (auto r = checkPerVertex(e.vertexNormals, e.points.size(), "vertex normals"); !r.empty())
+                    return r;
+                return checkFacets(e.facetColours.size(), e.facetNormals.size(),
+                                   e.points.size() < 3 ? 0 : e.points.size() - 2, "triangles");
             } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                 if (e.rows < 0 || e.columns < 0) return "quadrilateral mesh dimensions are negative";
                 std::size_t n = static_cast<std::size_t>(e.rows) * static_cast<std::size_t>(e.columns);
@@ -322,7 +363,12 @@ std::string validatePayload(const Element& element) {
                            std::to_string(e.rows) + " x " + std::to_string(e.columns);
                 if (auto r = checkPoints(e.points, 0, "quadrilateral mesh"); !r.empty()) return r;
                 if (auto r = checkPerVertex(e.vertexColours, n, "vertex colours"); !r.empty()) return r;
-                return checkPerVertex(e.vertexNormals, n, "vertex normals");
+                if (auto r = checkPerVertex(e.vertexNormals, n, "vertex normals"); !r.empty()) return r;
+                const std::size_t quads =
+                    e.rows < 2 || e.columns < 2
+                        ? 0
+                        : static_cast<std::size_t>(e.rows - 1) * static_cast<std::size_t>(e.columns - 1);
+                return checkFacets(e.facetColours.size(), e.facetNormals.size(), quads, "quadrilaterals");
             } else if constexpr (std::is_same_v<E, PolylineSetWithDataElement>) {
                 return checkPolylineSet(e);
             } else if constexpr (std::is_same_v<E, CellArrayPlusElement>) {
@@ -337,6 +383,8 @@ std::string validatePayload(const Element& element) {
                 return {};
             } else if constexpr (std::is_same_v<E, PatternAttribute>) {
                 return checkPattern(e);
+            } else if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>) {
+                return checkCharacteristics(e);
             } else {
                 return {};
             }
@@ -568,6 +616,13 @@ std::size_t elementSize(const Element& element) {
             using E = std::decay_t<decltype(e)>;
             std::size_t bytes = sizeof(E);
             if constexpr (requires { e.points; }) bytes += e.points.size() * sizeof(glm::dvec3);
+            if constexpr (std::is_same_v<E, TriangleStripElement> ||
+                          std::is_same_v<E, QuadrilateralMeshElement>)
+                bytes += e.facetColours.size() * sizeof(Colour) + e.facetNormals.size() * sizeof(glm::dvec3);
+            if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>)
+                for (const auto& flags : e.edgeFlags) bytes += flags.size() * sizeof(int);
+            if constexpr (std::is_same_v<E, SurfaceCharacteristicsAttribute>)
+                bytes += e.levels.size() * sizeof(double);
             if constexpr (requires { e.contours; })
                 for (const auto& c : e.contours) bytes += c.size() * sizeof(glm::dvec3);
             if constexpr (std::is_same_v<E, TextElement> || std::is_same_v<E, AnnotationTextElement>)

@@ -3,11 +3,22 @@
 // One list of fields per element payload, shared by the archive's writer and reader and by the
 // element checks: fields(visitor, payload) calls visitor(field) for each field in file order.
 // The leading type token already says 2D / 3D, add / remove and which tagged attribute, so
-// those are not fields.
+// those are not fields. A field added by a later archive format version comes after a
+// since(v, version) test: a reader of an older file (a visitor with a `version` member below it)
+// skips the field and leaves its default; every other visitor sees it.
 
 #include "phigs/store/Element.h"
 
 namespace phigs::detail {
+
+/// Whether visitor `v` takes the fields that archive format `version` added.
+template <class V>
+constexpr bool since(const V& v, int version) {
+    if constexpr (requires { v.version; })
+        return v.version >= version;
+    else
+        return true;
+}
 
 template <class V>
 void fields(V& v, PolylineElement& e) {
@@ -49,14 +60,17 @@ template <class V>
 void fields(V& v, FillAreaSetWithDataElement& e) {
     v(e.contours), v(e.vertexColours), v(e.vertexNormals), v(e.hasFacetColour), v(e.facetColour),
         v(e.hasFacetNormal), v(e.facetNormal);
+    if (since(v, 2)) v(e.edgeFlags);
 }
 template <class V>
 void fields(V& v, TriangleStripElement& e) {
     v(e.points), v(e.vertexColours), v(e.vertexNormals);
+    if (since(v, 2)) v(e.facetColours), v(e.facetNormals);
 }
 template <class V>
 void fields(V& v, QuadrilateralMeshElement& e) {
     v(e.rows), v(e.columns), v(e.points), v(e.vertexColours), v(e.vertexNormals);
+    if (since(v, 2)) v(e.facetColours), v(e.facetNormals);
 }
 template <class V>
 void fields(V& v, PolylineSetWithDataElement& e) {
@@ -115,6 +129,7 @@ void fields(V& v, ApproximationAttribute& e) {
 template <class V>
 void fields(V& v, SurfaceCharacteristicsAttribute& e) {
     v(e.style), v(e.placement), v(e.curvesU), v(e.curvesV);
+    if (since(v, 2)) v(e.origin), v(e.direction), v(e.levels);
 }
 template <class V>
 void fields(V& v, LightSourceStateAttribute& e) {

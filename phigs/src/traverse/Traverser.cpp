@@ -1,5 +1,7 @@
 #include "phigs/traverse/Traverser.h"
 
+#include "FacetMesh.h"
+#include "LevelCurves.h"
 #include "Tessellation.h"
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
@@ -624,7 +626,8 @@ private:
     }
 
     /// A segment with room for every primitive up to the next execute (one item each: only a
-    /// polyline set or a set of fill area sets makes more, and the segment grows for those).
+    /// polyline set, a set of fill area sets or edge data makes more, and the segment grows for
+    /// those).
     std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
         std::size_t primitives = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
@@ -741,7 +744,12 @@ private:
                     if (e.hasFacetNormal) f.facetNormal = e.facetNormal;
                     fillStyle(f, state);
                     if (e.hasFacetColour) f.interior.colour = resolve_.rgb(e.facetColour, state);
-                    emit(s, number, state, std::move(f));
+                    std::vector<std::vector<glm::dvec3>> edges;
+                    const bool edgeData = !e.edgeFlags.empty() && f.edges.visible;
+                    if (edgeData)
+                        for (std::size_t c = 0; c < e.contours.size(); ++c)
+                            if (e.contours[c].size() >= 2) visibleEdges(e.contours[c], e.edgeFlags[c], edges);
+                    emitWithEdges(s, number, state, std::move(f), edgeData, edges);
                 } else if constexpr (std::is_same_v<E, TextElement>) {
                     DrawText t;
                     t.text = e.text;
@@ -786,10 +794,15 @@ private:
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
                     TessellationCache::Key key{serial,  a.criteria, a.valueU,  a.valueV,
                                                c.style, c.curvesU,  c.curvesV, 0};
+                    const std::vector<glm::dvec4> planes = detail::levelPlanes(c, state.composite);
+                    for (const glm::dvec4& p : planes)
+                        key.levelPlanes.insert(key.levelPlanes.end(), {p.x, p.y, p.z, p.w});
                     const auto& entry = cache_.get(key, TessellationCache::Kind::Surface, [&] {
                         TessellationCache::Entry built;
                         built.surface = std::make_shared<const geom::Surface>(e.surface);
-                        built.mesh = std::make_shared<const MeshData>(detail::tessellateSurface(e, a, c));
+                        MeshData mesh = detail::tessellateSurface(e, a, c);
+                        detail::addLevelCurves(mesh, planes, built.surface.get());
+                        built.mesh = std::make_shared<const MeshData>(std::move(mesh));
                         return built;
                     });
                     emit(s, number, state,
@@ -797,35 +810,14 @@ private:
                                   resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                     if (e.points.size() < 3) return;
-                    auto mesh = cachedMesh(serial, state, e.vertexColours, [&] {
-                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
-                        for (std::uint32_t k = 0; k + 2 < e.points.size(); ++k)
-                            if (k % 2 == 0)
-                                m.triangles.insert(m.triangles.end(), {k, k + 1, k + 2});
-                            else
-                                m.triangles.insert(m.triangles.end(), {k + 1, k, k + 2});
-                        return m;
+                    facetedMesh(s, serial, number, state, e, [&](detail::FacetMeshInput in) {
+                        return detail::stripTriangles(std::move(in));
                     });
-                    emit(s, number, state,
-                         DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state),
-                                  resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, QuadrilateralMeshElement>) {
                     if (e.rows < 2 || e.columns < 2) return;
-                    auto mesh = cachedMesh(serial, state, e.vertexColours, [&] {
-                        MeshData m = meshData(e.points, e.vertexColours, e.vertexNormals, state);
-                        auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * e.columns + c); };
-                        for (int r = 0; r + 1 < e.rows; ++r)
-                            for (int c = 0; c + 1 < e.columns; ++c) {
-                                m.triangles.insert(m.triangles.end(),
-                                                   {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
-                                m.triangles.insert(m.triangles.end(),
-                                                   {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
-                            }
-                        return m;
+                    facetedMesh(s, serial, number, state, e, [&](detail::FacetMeshInput in) {
+                        return detail::gridTriangles(std::move(in), e.rows, e.columns);
                     });
-                    emit(s, number, state,
-                         DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state),
-                                  resolve_.line(state)});
                 } else if constexpr (std::is_same_v<E, IndexAttribute>) {
                     applyIndex(state, e);
                 } else if constexpr (std::is_same_v<E, RealAttribute>) {
@@ -924,14 +916,21 @@ private:
         f.edges = resolve_.edge(state);
     }
 
-    MeshData meshData(const std::vector<glm::dvec3>& points, const std::vector<Colour>& colours,
-                      const std::vector<glm::dvec3>& normals, const State& state) const {
-        MeshData m;
-        for (const auto& p : points) m.positions.push_back(glm::vec3(p));
-        for (const auto& n : normals)
-            m.normals.push_back(glm::vec3(glm::length(n) > 0 ? glm::normalize(n) : n));
-        m.colours = resolveColours(colours, state);
-        return m;
+    /// A triangle strip or quadrilateral mesh `e` as a mesh: `triangulate` adds its triangles and
+    /// their facets to the input. The colours in use (vertex, else facet) key the cache.
+    template <class Mesh, class Triangulate>
+    void facetedMesh(const Structure& s, std::uint64_t serial, int number, const State& state, const Mesh& e,
+                     Triangulate triangulate) {
+        const std::vector<Colour>& used = e.vertexColours.empty() ? e.facetColours : e.vertexColours;
+        auto mesh = cachedMesh(serial, state, used, [&] {
+            const std::vector<glm::vec3> vertexColours = resolveColours(e.vertexColours, state);
+            const std::vector<glm::vec3> facetColours =
+                e.vertexColours.empty() ? resolveColours(e.facetColours, state) : std::vector<glm::vec3>{};
+            return detail::facetMesh(triangulate(detail::FacetMeshInput{
+                e.points, vertexColours, e.vertexNormals, facetColours, e.facetNormals, {}, {}}));
+        });
+        emit(s, number, state,
+             DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state), resolve_.line(state)});
     }
 
     /// The cache key of a mesh whose colours are resolved at build: they depend on the tables
@@ -1086,10 +1085,17 @@ private:
         if (f.contours.empty()) return;
         if (!e.facetColours.empty()) f.interior.colour = resolve_.rgb(e.facetColours[k], state);
         if (!e.facetNormals.empty()) f.facetNormal = e.facetNormals[k];
+        emitWithEdges(s, number, state, std::move(f), edgeData, edges);
+    }
+
+    /// A fill area; with edge data (`edgeData`) it draws no edges itself and its edges whose flag
+    /// is on (`edges`, open polylines) follow as polylines in its edge style.
+    void emitWithEdges(const Structure& s, int number, const State& state, DrawFillArea&& f, bool edgeData,
+                       const std::vector<std::vector<glm::dvec3>>& edges) {
         const EdgeStyle edgeStyle = f.edges;
         if (edgeData) f.edges.visible = false;
         emit(s, number, state, std::move(f));
-        for (auto& line : edges)
+        for (const auto& line : edges)
             emit(s, number, state,
                  DrawPolyline{segmentPoints(line), {edgeStyle.colour, edgeStyle.type, edgeStyle.width}});
     }

@@ -220,13 +220,17 @@ struct FillAreaSetWithDataElement {
     Colour facetColour;
     bool hasFacetNormal = false;
     glm::dvec3 facetNormal{0, 0, 1};
+    /// empty, or shaped as `contours`: flag k (0 off, 1 on) is the edge from vertex k to k + 1 (cyclic)
+    std::vector<std::vector<int>> edgeFlags{};
     bool operator==(const FillAreaSetWithDataElement&) const = default;
 };
-/// TRIANGLE STRIP 3 WITH DATA (PHIGS PLUS).
+/// TRIANGLE STRIP 3 WITH DATA (PHIGS PLUS): triangle k has points k, k + 1, k + 2.
 struct TriangleStripElement {
     std::vector<glm::dvec3> points;
-    std::vector<Colour> vertexColours;      ///< empty, or one per point
-    std::vector<glm::dvec3> vertexNormals;  ///< empty, or one per point
+    std::vector<Colour> vertexColours;       ///< empty, or one per point
+    std::vector<glm::dvec3> vertexNormals;   ///< empty, or one per point
+    std::vector<Colour> facetColours{};      ///< empty, or one per triangle (points - 2)
+    std::vector<glm::dvec3> facetNormals{};  ///< empty, or one per triangle
     bool operator==(const TriangleStripElement&) const = default;
 };
 /// QUADRILATERAL MESH 3 WITH DATA (PHIGS PLUS): a rows x columns grid of points, row by row.
@@ -235,6 +239,9 @@ struct QuadrilateralMeshElement {
     std::vector<glm::dvec3> points;
     std::vector<Colour> vertexColours;
     std::vector<glm::dvec3> vertexNormals;
+    std::vector<Colour>
+        facetColours{};  ///< empty, or one per quadrilateral ((rows-1) x (columns-1), row by row)
+    std::vector<glm::dvec3> facetNormals{};  ///< empty, or one per quadrilateral
     bool operator==(const QuadrilateralMeshElement&) const = default;
 };
 /// POLYLINE SET 3 WITH DATA (PHIGS PLUS): polylines, optionally a colour at every vertex.
@@ -364,11 +371,16 @@ struct ApproximationAttribute {
     double valueU = 1.0, valueV = 1.0;
     bool operator==(const ApproximationAttribute&) const = default;
 };
-/// SET PARAMETRIC SURFACE CHARACTERISTICS: 1 none, 2 workstation dependent, 3 iso-curves.
+/// SET PARAMETRIC SURFACE CHARACTERISTICS: 1 none, 2 workstation dependent, 3 iso-curves,
+/// 4 / 5 level curves in modelling / world coordinates (the surface cut by the planes through
+/// origin + t * direction perpendicular to direction, one per t in levels).
 struct SurfaceCharacteristicsAttribute {
     int style = 1;
     int placement = 0;  ///< iso-curves: 0 uniform, 1 at knots
     int curvesU = 0, curvesV = 0;
+    glm::dvec3 origin{0.0};         ///< level curves
+    glm::dvec3 direction{0, 0, 1};  ///< level curves: not zero
+    std::vector<double> levels{};   ///< level curves: the parameters t
     bool operator==(const SurfaceCharacteristicsAttribute&) const = default;
 };
 /// SET LIGHT SOURCE STATE: indices into the workstation light source table.

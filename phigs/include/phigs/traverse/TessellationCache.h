@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <tuple>
+#include <vector>
 
 namespace phigs {
 
@@ -21,7 +22,8 @@ public:
         double valueU = 0, valueV = 0;
         int isoStyle = 0, isoU = 0, isoV = 0;
         std::uint64_t colourGeneration =
-            0;  ///< meshes with indexed vertex colours depend on the colour table
+            0;                              ///< meshes with indexed vertex colours depend on the colour table
+        std::vector<double> levelPlanes{};  ///< level curves: their planes in modelling coordinates
         auto operator<=>(const Key&) const = default;
     };
     struct Entry {

@@ -1,0 +1,75 @@
+#include "FacetMesh.h"
+
+#include <glm/geometric.hpp>
+
+namespace phigs::detail {
+
+namespace {
+
+glm::vec3 unit(const glm::dvec3& n) {
+    return glm::vec3(glm::length(n) > 0.0 ? glm::normalize(n) : n);
+}
+
+/// Shared points: what a primitive without facet data in use draws.
+MeshData sharedMesh(const FacetMeshInput& in) {
+    MeshData m;
+    m.positions.reserve(in.points.size());
+    for (const auto& p : in.points) m.positions.push_back(glm::vec3(p));
+    for (const auto& n : in.vertexNormals) m.normals.push_back(unit(n));
+    m.colours = in.vertexColours;
+    m.triangles = in.triangles;
+    return m;
+}
+
+}  // namespace
+
+MeshData facetMesh(const FacetMeshInput& in) {
+    const bool facetColours = in.vertexColours.empty() && !in.facetColours.empty();
+    const bool facetNormals = in.vertexNormals.empty() && !in.facetNormals.empty();
+    if (!facetColours && !facetNormals) return sharedMesh(in);
+    MeshData m;
+    const std::size_t corners = in.triangles.size() / 3 * 3;
+    m.positions.reserve(corners);
+    for (std::size_t t = 0; t < corners; t += 3) {
+        const std::uint32_t f = in.facetOf[t / 3];
+        std::uint32_t a = in.triangles[t], b = in.triangles[t + 1], c = in.triangles[t + 2];
+        if (facetNormals) {
+            const glm::dvec3 winding = glm::cross(in.points[b] - in.points[a], in.points[c] - in.points[a]);
+            if (glm::dot(winding, in.facetNormals[f]) < 0.0) std::swap(b, c);
+        }
+        for (std::uint32_t i : {a, b, c}) {
+            m.triangles.push_back(static_cast<std::uint32_t>(m.positions.size()));
+            m.positions.push_back(glm::vec3(in.points[i]));
+            if (!in.vertexColours.empty()) m.colours.push_back(in.vertexColours[i]);
+            if (facetColours) m.colours.push_back(in.facetColours[f]);
+            if (!in.vertexNormals.empty()) m.normals.push_back(unit(in.vertexNormals[i]));
+            if (facetNormals) m.normals.push_back(unit(in.facetNormals[f]));
+        }
+    }
+    return m;
+}
+
+FacetMeshInput stripTriangles(FacetMeshInput in) {
+    for (std::uint32_t k = 0; k + 2 < in.points.size(); ++k) {
+        if (k % 2 == 0)
+            in.triangles.insert(in.triangles.end(), {k, k + 1, k + 2});
+        else
+            in.triangles.insert(in.triangles.end(), {k + 1, k, k + 2});
+        in.facetOf.push_back(k);
+    }
+    return in;
+}
+
+FacetMeshInput gridTriangles(FacetMeshInput in, int rows, int columns) {
+    auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * columns + c); };
+    for (int r = 0; r + 1 < rows; ++r)
+        for (int c = 0; c + 1 < columns; ++c) {
+            in.triangles.insert(in.triangles.end(), {at(r, c), at(r, c + 1), at(r + 1, c + 1)});
+            in.triangles.insert(in.triangles.end(), {at(r, c), at(r + 1, c + 1), at(r + 1, c)});
+            const auto facet = static_cast<std::uint32_t>(r * (columns - 1) + c);
+            in.facetOf.insert(in.facetOf.end(), {facet, facet});
+        }
+    return in;
+}
+
+}  // namespace phigs::detail

@@ -1,0 +1,85 @@
+// The vector hardcopy of PHIGS PLUS facet data and edge flags, from the store through traversal:
+// each facet of a strip in its facet colour, and only the flagged edges of a fill area set with
+// data stroked.
+#include "phigs/Phigs.h"
+#include "phigs/hardcopy/VectorDescriber.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace phigs;
+using namespace phigs::hardcopy;
+
+namespace {
+
+/// The fills of `colour` and the centre of their corners (page coordinates).
+std::vector<const VectorFill*> fillsOf(const VectorPicture& picture, glm::vec3 colour) {
+    std::vector<const VectorFill*> out;
+    for (const VectorOp& op : picture.ops)
+        if (const auto* f = std::get_if<VectorFill>(&op); f && f->colour == colour) out.push_back(f);
+    return out;
+}
+glm::dvec2 centre(const VectorFill& f) {
+    glm::dvec2 sum(0.0);
+    std::size_t n = 0;
+    for (const auto& c : f.contours)
+        for (const auto& p : c) sum += p, ++n;
+    return sum / double(n);
+}
+
+}  // namespace
+
+TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is off are not stroked",
+          "[hardcopy]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    Workstation& model = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    store.openStructure(1);
+    store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
+    TriangleStripElement strip{
+        {{0.05, 0.05, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}, {0.45, 0.45, 0.5}}, {}, {}};
+    strip.facetColours = {Colour::fromRgb({1, 0, 0}), Colour::fromRgb({0, 1, 0})};
+    store.insert(strip);
+    store.insert(IndexAttribute{ElementType::EdgeFlag, 1});
+    store.insert(ColourAttribute{ElementType::EdgeColour, Colour::fromRgb({1, 1, 0})});
+    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0.5, 0.5, 0.5})});
+    FillAreaSetWithDataElement square;
+    square.contours = {{{0.55, 0.55, 0.5}, {0.95, 0.55, 0.5}, {0.95, 0.95, 0.5}, {0.55, 0.95, 0.5}}};
+    square.edgeFlags = {{1, 0, 0, 0}};  // the bottom edge only
+    store.insert(square);
+    store.closeStructure();
+    model.postStructure(1, 0.5);
+    PageSetup page;
+    page.paper = {100, 100};
+    page.nominalPixel = 1.0;
+    page.background = false;
+    const VectorPicture picture = describePicture(model.display(), page);
+    // The strip's two triangles in their facet colours: red lower left, green upper right (page y down).
+    const auto red = fillsOf(picture, {1, 0, 0}), green = fillsOf(picture, {0, 1, 0});
+    REQUIRE(red.size() == 1);
+    REQUIRE(green.size() == 1);
+    CHECK(centre(*red[0]).x < centre(*green[0]).x);
+    CHECK(centre(*red[0]).y > centre(*green[0]).y);
+    CHECK(fillsOf(picture, {1, 1, 1}).empty());  // the interior colour does not show
+    // The square's edges: only its bottom one, the whole of it.
+    const auto grey = fillsOf(picture, {0.5f, 0.5f, 0.5f});
+    REQUIRE(grey.size() == 1);
+    double bottom = -1e300, left = 1e300, right = -1e300;
+    for (const auto& p : grey[0]->contours.at(0))
+        bottom = std::max(bottom, p.y), left = std::min(left, p.x), right = std::max(right, p.x);
+    double low = 1e300, high = -1e300;
+    int stroked = 0;
+    for (const VectorOp& op : picture.ops)
+        if (const auto* s = std::get_if<VectorStroke>(&op); s && s->colour == glm::vec3(1, 1, 0))
+            for (const glm::dvec2& p : s->points) {
+                CHECK(std::abs(p.y - bottom) < 1e-6);  // on the bottom edge's line
+                low = std::min(low, p.x), high = std::max(high, p.x);
+                ++stroked;
+            }
+    CHECK(stroked >= 2);
+    CHECK(std::abs(low - left) < 1e-6);
+    CHECK(std::abs(high - right) < 1e-6);
+}
