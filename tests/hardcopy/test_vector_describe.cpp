@@ -215,8 +215,8 @@ TEST_CASE("vector describe: shaded facets take the raster path's reflectance", "
     DrawFillArea f =
         solid({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}, {0.2f, 0.6f, 1.0f});
     f.interior.edit().reflectance = ReflectanceModel::Diffuse;
-    f.interior->properties.ambient = 0.3f;
-    f.interior->properties.diffuse = 0.7f;
+    f.interior.edit().properties.ambient = 0.3f;
+    f.interior.edit().properties.diffuse = 0.7f;
     DrawItem lit = item(f);
     lit.lightSet = 0;
     list.items.push_back(lit);

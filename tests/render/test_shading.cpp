@@ -16,10 +16,10 @@ DrawMesh shaded(std::shared_ptr<const MeshData> mesh, ShadingMethod shading, glm
     m.interior.edit().colour = colour;
     m.interior.edit().shading = shading;
     m.interior.edit().reflectance = ReflectanceModel::Specular;
-    m.interior->properties.ambient = 0.2f;
-    m.interior->properties.diffuse = 0.7f;
-    m.interior->properties.specular = 0.6f;
-    m.interior->properties.specularExponent = 30.0f;
+    m.interior.edit().properties.ambient = 0.2f;
+    m.interior.edit().properties.diffuse = 0.7f;
+    m.interior.edit().properties.specular = 0.6f;
+    m.interior.edit().properties.specularExponent = 30.0f;
     return m;
 }
 
@@ -90,8 +90,8 @@ TEST_CASE("lights: ambient, directional, positional and spot light on four grids
                 shaded(grid(cells[k][0], cells[k][1], cells[k][0] + 0.46, cells[k][1] + 0.46, 0.5, 16),
                        ShadingMethod::Normal, {1, 1, 1});
             m.interior.edit().reflectance = ReflectanceModel::Diffuse;
-            m.interior->properties.ambient = 1.0f;
-            m.interior->properties.diffuse = 1.0f;
+            m.interior.edit().properties.ambient = 1.0f;
+            m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
             i.lightSet = k;
             list.items.push_back(i);
@@ -256,7 +256,7 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
                                     : std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2};
             DrawMesh m = shaded(mesh, ShadingMethod::None, {1, 1, 1});
             m.interior.edit().reflectance = ReflectanceModel::Diffuse;
-            m.interior->properties.diffuse = 1.0f;
+            m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
             i.lightSet = 0;
             list.items.push_back(i);
@@ -324,7 +324,7 @@ TEST_CASE("transparency: a surface blends over what lies behind it, whatever the
         list.hiddenSurfaceRemoval = true;
         auto square = [](double x0, double x1, double z, glm::vec3 colour, float transparency) {
             DrawFillArea f = solidRectangle(x0, 0.2, x1, 0.8, z, colour);
-            f.interior->properties.transparency = transparency;
+            f.interior.edit().properties.transparency = transparency;
             return f;
         };
         // Traversal order: the see-through blue square (front) first, then the opaque red one

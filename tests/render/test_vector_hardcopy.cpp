@@ -113,8 +113,8 @@ DrawList hiddenLineReference(const DrawList& list) {
     }
     for (DrawItem& item : reference.items)
         if (auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
-            mesh->interior->colour = reference.background;
-            mesh->interior->reflectance = ReflectanceModel::None;
+            mesh->interior.edit().colour = reference.background;
+            mesh->interior.edit().reflectance = ReflectanceModel::None;
         }
     return reference;
 }
