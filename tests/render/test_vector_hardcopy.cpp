@@ -77,7 +77,7 @@ void compareWithLavapipe(const std::string& name, const DrawList& list, std::uin
 DrawPolyline line(std::vector<glm::dvec3> points, glm::vec3 colour, LineType type, float width) {
     DrawPolyline p;
     p.points = std::move(points);
-    p.style = {colour, type, width};
+    p.style = LineStyle{colour, type, width};
     return p;
 }
 
@@ -170,12 +170,12 @@ TEST_CASE("vector hardcopy against lavapipe: fill areas and sets, hollow, solid,
                             {0.15, 0.45, 0.5},
                             {0.05, 0.45, 0.5}}},
                           InteriorStyle::Solid, {0.9f, 0.2f, 0.6f});
-    u.edges = {true, {1, 1, 1}, LineType::Dashed, 2.0f};
+    u.edges = EdgeStyle{true, {1, 1, 1}, LineType::Dashed, 2.0f};
     list.items.push_back(item(u));
     DrawFillArea holes = fill(
         {rectangle(0.55, 0.05, 0.95, 0.45), rectangle(0.6, 0.1, 0.72, 0.4), rectangle(0.78, 0.1, 0.9, 0.4)},
         InteriorStyle::Solid, {0.3f, 1.0f, 0.3f});
-    holes.edges = {true, {1, 0, 0}, LineType::Solid, 1.0f};
+    holes.edges = EdgeStyle{true, {1, 0, 0}, LineType::Solid, 1.0f};
     list.items.push_back(item(holes));
     compareWithLavapipe("fill_areas", list, 256, 256);
 }
@@ -224,7 +224,7 @@ TEST_CASE("vector hardcopy against lavapipe: a NURBS curve tessellated to the pa
     DrawCurve drawn;
     drawn.curve = curve;
     drawn.points = geom::tessellate(*curve, 1e-4);  // the raster's polyline, finer than a pixel
-    drawn.style = {{0.4f, 1.0f, 0.8f}, LineType::Solid, 2.0f};
+    drawn.style = LineStyle{{0.4f, 1.0f, 0.8f}, LineType::Solid, 2.0f};
     list.items.push_back(item(drawn));
     compareWithLavapipe("nurbs_curve", list, 256, 256);
 }
@@ -288,7 +288,7 @@ TEST_CASE("vector hardcopy against lavapipe: four views, one in perspective, wit
         m.interior.edit().colour = {0.8f, 0.8f, 0.8f};
         m.interior.edit().shading = ShadingMethod::Normal;
         m.interior.edit().reflectance = ReflectanceModel::Diffuse;
-        m.isoLineStyle = {{1, 1, 0}, LineType::Dashed, 1.0f};
+        m.isoLineStyle = LineStyle{{1, 1, 0}, LineType::Dashed, 1.0f};
         DrawItem i = item(m, v);
         i.lightSet = 0;
         list.items.push_back(i);
