@@ -97,7 +97,7 @@ std::optional<BruteHit> bruteForce(const phigs::DrawList& list,
     for (std::size_t i = 0; i < list.items.size(); ++i) {
         const auto& item = list.items[i];
         const auto& view = list.views[static_cast<std::size_t>(item.viewIndex)];
-        const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform;
+        const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform.get();
         const glm::dmat4 inv = glm::inverse(m);
         const glm::dvec4 f = inv * glm::dvec4(npc, 1.0, 1.0), b = inv * glm::dvec4(npc, 0.0, 1.0);
         const glm::dvec3 origin = glm::dvec3(f) / f.w;

@@ -45,8 +45,8 @@ DrawItem item(P primitive, int view = 0) {
 DrawFillArea solid(std::vector<glm::dvec3> contour, glm::vec3 colour) {
     DrawFillArea f;
     f.contours = {std::move(contour)};
-    f.interior.style = InteriorStyle::Solid;
-    f.interior.colour = colour;
+    f.interior.edit().style = InteriorStyle::Solid;
+    f.interior.edit().colour = colour;
     return f;
 }
 
@@ -90,11 +90,11 @@ TEST_CASE("vector describe: lines are cut at the view's clip limits, its depth l
     list.items.push_back(item(across, 1));
     DrawPolyline deep;  // from z 0 to z 1 along x: only z >= 0.4 survives the back plane
     deep.points = {{0.3, 0.3, 0.0}, {0.7, 0.3, 1.0}};
-    deep.style.colour = {0, 1, 0};
+    deep.style.edit().colour = {0, 1, 0};
     list.items.push_back(item(deep, 1));
     DrawPolyline cut;  // the model clipping volume keeps x <= 0.6
     cut.points = {{0.0, 0.9, 0.5}, {1.0, 0.9, 0.5}};
-    cut.style.colour = {0, 0, 1};
+    cut.style.edit().colour = {0, 0, 1};
     DrawItem modelClipped = item(cut);
     modelClipped.modelClipPlanes = {{-1, 0, 0, 0.6}};
     list.items.push_back(modelClipped);
@@ -214,9 +214,9 @@ TEST_CASE("vector describe: shaded facets take the raster path's reflectance", "
     list.lightSets.push_back({ambient, key});
     DrawFillArea f =
         solid({{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}, {0.2f, 0.6f, 1.0f});
-    f.interior.reflectance = ReflectanceModel::Diffuse;
-    f.interior.properties.ambient = 0.3f;
-    f.interior.properties.diffuse = 0.7f;
+    f.interior.edit().reflectance = ReflectanceModel::Diffuse;
+    f.interior.edit().properties.ambient = 0.3f;
+    f.interior.edit().properties.diffuse = 0.7f;
     DrawItem lit = item(f);
     lit.lightSet = 0;
     list.items.push_back(lit);
@@ -225,7 +225,7 @@ TEST_CASE("vector describe: shaded facets take the raster path's reflectance", "
     const auto& fill = std::get<VectorFill>(picture.ops[0]);
     // ka La C + kd L C max(N . L, 0), N = +z, L = -direction.
     const float nl = float(glm::dot(glm::dvec3(0, 0, 1), -key.direction));
-    const glm::vec3 expected = 0.3f * 0.5f * f.interior.colour + 0.7f * f.interior.colour * nl;
+    const glm::vec3 expected = 0.3f * 0.5f * f.interior->colour + 0.7f * f.interior->colour * nl;
     CHECK(glm::length(fill.colour - expected) < 1e-5f);
     CHECK(fill.seamWidth == 0.0);  // one whole area: nothing to seam
 }
@@ -238,21 +238,21 @@ TEST_CASE("vector describe: under hidden-surface removal lines and markers behin
         item(solid({{0.3, 0.3, 0.6}, {0.7, 0.3, 0.6}, {0.7, 0.7, 0.6}, {0.3, 0.7, 0.6}}, {0, 0, 1})));
     DrawPolyline behind;
     behind.points = {{0.1, 0.5, 0.4}, {0.9, 0.5, 0.4}};
-    behind.style.colour = {1, 0, 0};
-    behind.style.type = LineType::Dashed;
+    behind.style.edit().colour = {1, 0, 0};
+    behind.style.edit().type = LineType::Dashed;
     list.items.push_back(item(behind));
     DrawPolyline front;
     front.points = {{0.5, 0.1, 0.8}, {0.5, 0.9, 0.8}};
-    front.style.colour = {0, 1, 0};
+    front.style.edit().colour = {0, 1, 0};
     list.items.push_back(item(front));
     DrawPolyline onTop;  // on the facet's plane: stays (the raster's depth bias)
     onTop.points = {{0.35, 0.35, 0.6}, {0.65, 0.65, 0.6}};
-    onTop.style.colour = {1, 1, 0};
+    onTop.style.edit().colour = {1, 1, 0};
     list.items.push_back(item(onTop));
     DrawPolymarker markers;
     markers.points = {{0.5, 0.4, 0.2}, {0.2, 0.2, 0.2}};
-    markers.style.colour = {1, 0, 1};
-    markers.style.type = MarkerType::Circle;
+    markers.style.edit().colour = {1, 0, 1};
+    markers.style.edit().type = MarkerType::Circle;
     list.items.push_back(item(markers));
 
     const VectorPicture picture = describePicture(list, squarePage());

@@ -32,20 +32,20 @@ DrawList sampleScene(glm::vec3 squareColour = {0, 0.8f, 1}) {
     list.background = {0.1f, 0.1f, 0.1f};
     DrawFillArea square;
     square.contours = {{{0.1, 0.1, 0.5}, {0.5, 0.1, 0.5}, {0.5, 0.5, 0.5}, {0.1, 0.5, 0.5}}};
-    square.interior.style = InteriorStyle::Solid;
-    square.interior.colour = squareColour;
+    square.interior.edit().style = InteriorStyle::Solid;
+    square.interior.edit().colour = squareColour;
     DrawPolyline line;
     line.points = {{0.1, 0.8, 0.5}, {0.9, 0.9, 0.5}};
-    line.style.colour = {1, 1, 0};
-    line.style.type = LineType::Dashed;
+    line.style.edit().colour = {1, 1, 0};
+    line.style.edit().type = LineType::Dashed;
     DrawPolymarker marker;
     marker.points = {{0.75, 0.3, 0.5}};
-    marker.style.type = MarkerType::Circle;
-    marker.style.scale = 3;
+    marker.style.edit().type = MarkerType::Circle;
+    marker.style.edit().scale = 3;
     DrawText text;
     text.text = "PHIGS";
     text.position = {0.55, 0.6, 0.5};
-    text.style.height = 0.08;
+    text.style.edit().height = 0.08;
     for (DrawPrimitive p :
          {DrawPrimitive(square), DrawPrimitive(line), DrawPrimitive(marker), DrawPrimitive(text)}) {
         DrawItem item;

@@ -56,8 +56,8 @@ TEST_CASE("vector hardcopy: runs of one colour show the union of their fills, in
             triangles.emplace_back(t, colour);
             DrawFillArea fill;
             fill.contours = {{{t[0], 0.5}, {t[1], 0.5}, {t[2], 0.5}}};
-            fill.interior.style = InteriorStyle::Solid;
-            fill.interior.colour = colour;
+            fill.interior.edit().style = InteriorStyle::Solid;
+            fill.interior.edit().colour = colour;
             DrawItem item;
             item.primitive = std::move(fill);
             list.items.push_back(std::move(item));

@@ -41,7 +41,7 @@ inline DrawItem item(DrawPrimitive primitive, std::vector<DrawPathLevel> path) {
 inline DrawFillArea square(double lo, double hi, double z, InteriorStyle style = InteriorStyle::Solid) {
     DrawFillArea f;
     f.contours = {{{lo, lo, z}, {hi, lo, z}, {hi, hi, z}, {lo, hi, z}}};
-    f.interior.style = style;
+    f.interior.edit().style = style;
     return f;
 }
 

@@ -69,7 +69,7 @@ TEST_CASE("polymarker bundle: bundled aspects read the representation, individua
         markers,  // undefined bundle 7 reads as bundle 1
     });
     REQUIRE(list.items.size() == 4);
-    auto style = [&](int i) { return std::get<DrawPolymarker>(list.items[i].primitive).style; };
+    auto style = [&](int i) { return std::get<DrawPolymarker>(list.items[i].primitive).style.get(); };
     CHECK(style(0).type == MarkerType::Plus);
     CHECK(style(0).scale == 0.5f);
     CHECK(style(0).colour == colour6);
@@ -85,9 +85,9 @@ TEST_CASE("polymarker bundle: bundled aspects read the representation, individua
     s.ws->setPolymarkerRepresentation(3, {MarkerType::Cross, 4.0, Colour::indexed(6)});
     const DrawList& again = s.ws->display();
     REQUIRE(again.items.size() == 4);
-    CHECK(std::get<DrawPolymarker>(again.items[1].primitive).style.type == MarkerType::Cross);
-    CHECK(std::get<DrawPolymarker>(again.items[1].primitive).style.scale == 4.0f);
-    CHECK(std::get<DrawPolymarker>(again.items[0].primitive).style.type == MarkerType::Plus);
+    CHECK(std::get<DrawPolymarker>(again.items[1].primitive).style->type == MarkerType::Cross);
+    CHECK(std::get<DrawPolymarker>(again.items[1].primitive).style->scale == 4.0f);
+    CHECK(std::get<DrawPolymarker>(again.items[0].primitive).style->type == MarkerType::Plus);
 }
 
 TEST_CASE("text bundle: font, expansion, spacing and colour from the representation when bundled",
@@ -111,7 +111,7 @@ TEST_CASE("text bundle: font, expansion, spacing and colour from the representat
         words,
     });
     REQUIRE(list.items.size() == 3);
-    auto style = [&](int i) { return std::get<DrawText>(list.items[i].primitive).style; };
+    auto style = [&](int i) { return std::get<DrawText>(list.items[i].primitive).style.get(); };
     CHECK(style(0).font == 2);
     CHECK(style(0).expansion == 0.8f);
     CHECK(style(0).spacing == 0.1f);
@@ -156,7 +156,7 @@ TEST_CASE("interior bundle: style, style index, colours, shading and reflectance
         square,
     });
     REQUIRE(list.items.size() == 3);
-    auto interior = [&](int i) { return std::get<DrawFillArea>(list.items[i].primitive).interior; };
+    auto interior = [&](int i) { return std::get<DrawFillArea>(list.items[i].primitive).interior.get(); };
     CHECK(interior(0).style == InteriorStyle::Solid);
     CHECK(interior(0).styleIndex == 2);
     CHECK(interior(0).colour == colour6);
@@ -206,11 +206,11 @@ TEST_CASE("polyline bundle (PHIGS PLUS): a direct colour and the curve approxima
         const DrawCurve& second = std::get<DrawCurve>(list.items[1].primitive);
         INFO("segments " << individualSegments << " and " << bundledSegments);
         CHECK(first.points.size() == std::size_t(individualSegments) + 1);  // one span
-        CHECK(first.style.colour == glm::vec3(1.0f));
+        CHECK(first.style->colour == glm::vec3(1.0f));
         CHECK(second.points.size() == std::size_t(bundledSegments) + 1);
-        CHECK(second.style.colour == glm::vec3(rgb));
-        CHECK(second.style.type == LineType::Dotted);
-        CHECK(std::get<DrawPolyline>(list.items[2].primitive).style.colour == glm::vec3(rgb));
+        CHECK(second.style->colour == glm::vec3(rgb));
+        CHECK(second.style->type == LineType::Dotted);
+        CHECK(std::get<DrawPolyline>(list.items[2].primitive).style->colour == glm::vec3(rgb));
     }
 }
 

@@ -40,7 +40,7 @@ ItemView view(const DrawList& list, const DrawItem& item) {
     ItemView v{item.primitive.index(),
                item.source.path,
                item.source.structureVersion,
-               item.modelTransform,
+               item.modelTransform.get(),
                item.viewIndex,
                item.highlighted,
                item.pickable,

@@ -28,7 +28,11 @@ TEST_CASE("pick model clip: a clipped-away part of a fill area is not hit and hi
     REQUIRE(through);
     CHECK(through->item == 0);  // the front square is clipped here: the one behind is picked
     // A second half space intersects: keep x >= 0.5 and y <= 0.4.
-    list.items[1].modelClipPlanes.push_back({0, -1, 0, 0.4});
+    {
+        std::vector<glm::dvec4> planes = list.items[1].modelClipPlanes;
+        planes.push_back({0, -1, 0, 0.4});
+        list.items[1].modelClipPlanes = planes;
+    }
     CHECK(picker.nearest(list, {0.7, 0.5}, 0.001)->item == 0);
     CHECK(picker.nearest(list, {0.7, 0.3}, 0.001)->item == 1);
 }

@@ -104,15 +104,15 @@ TEST_CASE("pick: fill area sets use the even-odd rule and hollow ones only their
     CHECK(picker.pick(list, {0.5, 0.5}, {0.15}).status == InputStatus::Ok);     // aperture reaches the ring
     CHECK(picker.pick(list, {0.9, 0.9}, {0.001}).status == InputStatus::None);
 
-    std::get<DrawFillArea>(list.items[0].primitive).interior.style = InteriorStyle::Hollow;
+    std::get<DrawFillArea>(list.items[0].primitive).interior.edit().style = InteriorStyle::Hollow;
     CHECK(picker.pick(list, {0.3, 0.3}, {0.001}).status == InputStatus::None);
     CHECK(picker.pick(list, {0.2, 0.3}, {0.001}).status == InputStatus::Ok);  // on the outer edge
     CHECK(picker.pick(list, {0.4, 0.5}, {0.001}).status == InputStatus::Ok);  // on the hole's edge
 
     auto& empty = std::get<DrawFillArea>(list.items[0].primitive);
-    empty.interior.style = InteriorStyle::Empty;
+    empty.interior.edit().style = InteriorStyle::Empty;
     CHECK(picker.pick(list, {0.2, 0.3}, {0.001}).status == InputStatus::None);
-    empty.edges.visible = true;
+    empty.edges.edit().visible = true;
     CHECK(picker.pick(list, {0.2, 0.3}, {0.001}).status == InputStatus::Ok);
 }
 
@@ -120,7 +120,7 @@ TEST_CASE("pick: a tilted fill area reports the depth of its plane under the ape
     DrawList list = unitList();
     DrawFillArea f;
     f.contours = {{{0.0, 0.0, 0.0}, {1.0, 0.0, 1.0}, {1.0, 1.0, 1.0}, {0.0, 1.0, 0.0}}};  // z = x
-    f.interior.style = InteriorStyle::Solid;
+    f.interior.edit().style = InteriorStyle::Solid;
     list.items.push_back(item(f, {{1, 1, 0}}));
     const auto hits = Picker().hits(list, {0.25, 0.5}, 0.001);
     REQUIRE(hits.size() == 1);
@@ -131,7 +131,7 @@ TEST_CASE("pick: polymarkers are hit within the aperture widened by the marker s
     DrawList list = unitList();
     DrawPolymarker m;
     m.points = {{0.2, 0.2, 0.5}, {0.7, 0.7, 0.5}};
-    m.style.scale = 2.0f;  // 14 pixels = 0.14 NPC on a 100 pixel viewport: half size 0.07
+    m.style.edit().scale = 2.0f;  // 14 pixels = 0.14 NPC on a 100 pixel viewport: half size 0.07
     list.items.push_back(item(m, {{1, 4, 3}}));
     const Picker picker;
     CHECK(picker.pick(list, {0.7, 0.7}, {0.001}).status == InputStatus::Ok);
@@ -145,7 +145,7 @@ TEST_CASE("pick: text is picked by its box", "[pick]") {
     DrawText t;
     t.text = "WING";  // four character boxes of 0.1 x 0.1
     t.position = {0.2, 0.3, 0.5};
-    t.style.height = 0.1;
+    t.style.edit().height = 0.1;
     list.items.push_back(item(t, {{1, 2, 0}}));
     const Picker picker;
     CHECK(picker.pick(list, {0.25, 0.35}, {0.001}).status == InputStatus::Ok);
@@ -155,8 +155,8 @@ TEST_CASE("pick: text is picked by its box", "[pick]") {
 
     // Centred horizontally and half-way vertically.
     auto& centred = std::get<DrawText>(list.items[0].primitive);
-    centred.style.horizontal = HorizontalAlignment::Centre;
-    centred.style.vertical = VerticalAlignment::Half;
+    centred.style.edit().horizontal = HorizontalAlignment::Centre;
+    centred.style.edit().vertical = VerticalAlignment::Half;
     CHECK(picker.pick(list, {0.05, 0.27}, {0.001}).status == InputStatus::Ok);
     CHECK(picker.pick(list, {0.41, 0.3}, {0.001}).status == InputStatus::None);
 
@@ -166,7 +166,7 @@ TEST_CASE("pick: text is picked by its box", "[pick]") {
     a.annotation = true;
     a.position = {0.5, 0.5, 0.5};
     a.annotationOffset = {0.1, 0.2, 0.0};
-    a.style.height = 0.05;
+    a.style.edit().height = 0.05;
     list.items = {item(a, {{1, 3, 0}})};
     CHECK(picker.pick(list, {0.65, 0.72}, {0.001}).status == InputStatus::Ok);
     CHECK(picker.pick(list, {0.55, 0.55}, {0.001}).status == InputStatus::None);

@@ -143,7 +143,7 @@ TEST_CASE("pick surface: rotated and clipped surfaces, nearest of several, path 
         const auto& surface = *std::get<DrawMesh>(item.primitive).surface;
         const glm::dvec3 p = h.surface->point;
         CHECK(glm::length(p - geom::evaluate(surface, h.surface->uv.x, h.surface->uv.y)) < 1e-9);
-        const glm::dvec3 world = glm::dvec3(item.modelTransform * glm::dvec4(p, 1.0));
+        const glm::dvec3 world = glm::dvec3(item.modelTransform.get() * glm::dvec4(p, 1.0));
         CHECK(world.x == Approx(0.52).margin(1e-9));
         CHECK(world.y == Approx(0.5).margin(1e-9));
         CHECK(std::hypot(p.x, p.z) == Approx(h.item == 0 ? r : 0.1).margin(1e-9));

@@ -158,8 +158,8 @@ TEST_CASE("pick tree: random picks hit what testing every item hits", "[pick][tr
         // A few items move or change (a new generation): refitted, not rebuilt, and still exact.
         for (int k = 0; k < 3; ++k) {
             DrawItem& item = list.items[rng() % list.items.size()];
-            item.modelTransform =
-                glm::translate(glm::dmat4(1.0), glm::dvec3(0.05 * k, -0.03, 0.02)) * item.modelTransform;
+            item.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.05 * k, -0.03, 0.02)) *
+                                  item.modelTransform.get();
         }
         list.items[rng() % list.items.size()] = randomItem(rng, 999);
         list.generation = 2;

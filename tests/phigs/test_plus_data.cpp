@@ -122,12 +122,12 @@ TEST_CASE("polyline set with data: a segment takes its first vertex's colour", "
     // one-point polyline draws nothing; the set without colours in the polyline colour
     REQUIRE(lines.size() == 4);
     CHECK(lines[0]->points.size() == 3);
-    CHECK(lines[0]->style.colour == glm::vec3(1, 0, 0));
+    CHECK(lines[0]->style->colour == glm::vec3(1, 0, 0));
     CHECK(lines[1]->points == std::vector<glm::dvec3>{{2, 0, 0}, {3, 0, 0}});
-    CHECK(lines[1]->style.colour == glm::vec3(0, 1, 0));
-    CHECK(lines[2]->style.colour == glm::vec3(0.5f, 0.25f, 1));
+    CHECK(lines[1]->style->colour == glm::vec3(0, 1, 0));
+    CHECK(lines[2]->style->colour == glm::vec3(0.5f, 0.25f, 1));
     CHECK(lines[3]->points.size() == 4);
-    CHECK(lines[3]->style.colour == glm::vec3(0, 1, 1));
+    CHECK(lines[3]->style->colour == glm::vec3(0, 1, 1));
 }
 
 TEST_CASE("cell array plus draws its general colours as a mesh", "[plus][traverse]") {
@@ -160,15 +160,15 @@ TEST_CASE("set of fill area sets: one fill area per set, facet colours, edges wh
     REQUIRE(areas.size() == 2);
     CHECK(areas[0]->contours ==
           std::vector<std::vector<glm::dvec3>>{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}});
-    CHECK(areas[0]->interior.colour == glm::vec3(1, 0, 0));
-    CHECK(areas[1]->interior.colour == glm::vec3(0, 1, 0));
+    CHECK(areas[0]->interior->colour == glm::vec3(1, 0, 0));
+    CHECK(areas[1]->interior->colour == glm::vec3(0, 1, 0));
     CHECK(areas[1]->contours.size() == 1);  // the two-vertex contour is dropped
     CHECK(areas[0]->vertexNormals.size() == 1);
-    CHECK_FALSE(areas[0]->edges.visible);  // its edges come as polylines
+    CHECK_FALSE(areas[0]->edges->visible);  // its edges come as polylines
     // set 0: edges 2, 3 and 0 on make one run 2 -> 3 -> 0 -> 1; set 1's triangle has none on
     REQUIRE(edges.size() == 1);
     CHECK(edges[0]->points == std::vector<glm::dvec3>{{1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}});
-    CHECK(edges[0]->style.colour == glm::vec3(1, 1, 0));
+    CHECK(edges[0]->style->colour == glm::vec3(1, 1, 0));
     // with the edge flag off no edge is drawn whatever the data says
     const DrawList& off = s.draw({e});
     CHECK(itemsOf<DrawPolyline>(off).empty());
@@ -209,10 +209,10 @@ TEST_CASE("a PSEUDO colour mapping changes the drawn colours, TRUE leaves them",
                 IndexAttribute{ElementType::ColourMappingIndex, 9}, line});
     const auto lines = itemsOf<DrawPolyline>(list);
     REQUIRE(lines.size() == 4);
-    CHECK(lines[0]->style.colour == glm::vec3(1, 0, 0));  // entry 0: TRUE
-    CHECK(lines[1]->style.colour == glm::vec3(0.5f));     // red: v = 1/3 -> the middle of the ramp
-    CHECK(lines[2]->style.colour == glm::vec3(0, 1, 0));  // red: 3 + 0 + 0, colour 3
-    CHECK(lines[3]->style.colour == glm::vec3(1, 0, 0));  // undefined 9 maps as 0
+    CHECK(lines[0]->style->colour == glm::vec3(1, 0, 0));  // entry 0: TRUE
+    CHECK(lines[1]->style->colour == glm::vec3(0.5f));     // red: v = 1/3 -> the middle of the ramp
+    CHECK(lines[2]->style->colour == glm::vec3(0, 1, 0));  // red: 3 + 0 + 0, colour 3
+    CHECK(lines[3]->style->colour == glm::vec3(1, 0, 0));  // undefined 9 maps as 0
     const auto meshes = itemsOf<DrawMesh>(list);
     REQUIRE(meshes.size() == 1);
     CHECK(meshes[0]->mesh->colours == std::vector<glm::vec3>{glm::vec3(0.5f), glm::vec3(0.5f), glm::vec3(1)});
@@ -224,10 +224,10 @@ TEST_CASE("a colour mapping change waits for the update under ASTI", "[plus][col
     s.draw({IndexAttribute{ElementType::ColourMappingIndex, 1}, line});
     s.ws->setDeferralState(DeferralMode::Asti, ModificationMode::Nive);
     s.ws->setColourMappingRepresentation(1, pseudoRamp({{0, 0, 1}}, {1, 0, 0}));
-    CHECK(std::get<DrawPolyline>(s.ws->display().items[0].primitive).style.colour == glm::vec3(1));
+    CHECK(std::get<DrawPolyline>(s.ws->display().items[0].primitive).style->colour == glm::vec3(1));
     CHECK(s.ws->visualState() == VisualState::Deferred);
     s.ws->update(Regeneration::Perform);
-    CHECK(std::get<DrawPolyline>(s.ws->display().items[0].primitive).style.colour == glm::vec3(0, 0, 1));
+    CHECK(std::get<DrawPolyline>(s.ws->display().items[0].primitive).style->colour == glm::vec3(0, 0, 1));
     CHECK(s.ws->tables().colourMappings.get(1).colours.size() == 1);
 }
 

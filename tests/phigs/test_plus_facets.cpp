@@ -236,10 +236,10 @@ TEST_CASE("fill area set with data: only the edges whose flag is on are drawn", 
                                        ColourAttribute{ElementType::EdgeColour, edgeColour}, e});
         const auto fills = itemsOf<DrawFillArea>(list);
         REQUIRE(fills.size() == 1);
-        CHECK_FALSE(fills[0].first->edges.visible);  // its edges come as polylines, or not at all
+        CHECK_FALSE(fills[0].first->edges->visible);  // its edges come as polylines, or not at all
         std::set<std::pair<std::array<double, 3>, std::array<double, 3>>> drawn;
         for (const auto& [line, item] : itemsOf<DrawPolyline>(list)) {
-            CHECK(line->style.colour == glm::vec3(edgeColour.rgb));
+            CHECK(line->style->colour == glm::vec3(edgeColour.rgb));
             for (std::size_t k = 0; k + 1 < line->points.size(); ++k)
                 drawn.insert(std::minmax(key(line->points[k]), key(line->points[k + 1])));
         }
@@ -271,7 +271,7 @@ TEST_CASE("level curves lie on the surface and on their planes, in modelling and
         const auto meshes = itemsOf<DrawMesh>(list);
         REQUIRE(meshes.size() == 1);
         const MeshData& m = *meshes[0].first->mesh;
-        const glm::dmat4& toWorld = meshes[0].second->modelTransform;
+        const glm::dmat4& toWorld = *meshes[0].second->modelTransform;
         // Each plane that cuts the surface (its values on a fine grid change sign) has a curve.
         std::size_t expected = 0;
         for (double t : c.levels) {

@@ -129,10 +129,10 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     DrawFillArea fill;
     fill.contours = {{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}},
                      {{0.5, 0.5, 0}, {1.5, 0.5, 0}, {1.5, 1.5, 0}, {0.5, 1.5, 0}}};
-    fill.interior.style = InteriorStyle::Solid;
-    fill.edges.visible = true;
+    fill.interior.edit().style = InteriorStyle::Solid;
+    fill.edges.edit().visible = true;
     item.primitive = fill;
-    item.modelTransform[3] = glm::dvec4(10, 0, 0, 1);  // translate by 10 in x
+    item.modelTransform.edit()[3] = glm::dvec4(10, 0, 0, 1);  // translate by 10 in x
     const ItemGeometry g = describeItem(item, glm::dmat4(1.0));
     REQUIRE(g.parts.size() == 2);
     CHECK_FALSE(g.parts[0].lines);
@@ -150,7 +150,7 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
 
     DrawPolyline dashed;
     dashed.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
-    dashed.style.type = LineType::Dashed;
+    dashed.style.edit().type = LineType::Dashed;
     item.primitive = dashed;
     item.modelTransform = glm::dmat4(1.0);
     const glm::dmat4 toPixels = glm::dmat4(100.0);

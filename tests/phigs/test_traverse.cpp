@@ -45,10 +45,10 @@ TEST_CASE("attributes are inherited by executed structures and restored on retur
     s.ws->postStructure(1, 0.5);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 3);
-    CHECK(polylineOf(list.items[0]).style.colour == glm::vec3(1, 0, 0));  // inherited colour 2
-    CHECK(polylineOf(list.items[0]).style.type == LineType::Dashed);
-    CHECK(polylineOf(list.items[1]).style.colour == glm::vec3(0, 1, 0));  // set in the child
-    CHECK(polylineOf(list.items[2]).style.colour == glm::vec3(1, 0, 0));  // restored after return
+    CHECK(polylineOf(list.items[0]).style->colour == glm::vec3(1, 0, 0));  // inherited colour 2
+    CHECK(polylineOf(list.items[0]).style->type == LineType::Dashed);
+    CHECK(polylineOf(list.items[1]).style->colour == glm::vec3(0, 1, 0));  // set in the child
+    CHECK(polylineOf(list.items[2]).style->colour == glm::vec3(1, 0, 0));  // restored after return
     // the paths: structure, 1-based element number, pick id per level
     CHECK(list.items[1].source.path == std::vector<DrawPathLevel>{{1, 3, 0}, {2, 3, 0}});
     CHECK(list.items[2].source.path == std::vector<DrawPathLevel>{{1, 4, 0}});
@@ -64,11 +64,11 @@ TEST_CASE("bundled attributes through the aspect source flags", "[traverse]") {
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 3);
-    CHECK(polylineOf(list.items[0]).style.type == LineType::Solid);  // individual by default
-    CHECK(polylineOf(list.items[1]).style.type == LineType::Dotted);
-    CHECK(polylineOf(list.items[1]).style.colour == glm::vec3(0, 0, 1));
-    CHECK(polylineOf(list.items[1]).style.width == 1.0f);            // width still individual
-    CHECK(polylineOf(list.items[2]).style.type == LineType::Solid);  // undefined bundle 9 reads as bundle 1
+    CHECK(polylineOf(list.items[0]).style->type == LineType::Solid);  // individual by default
+    CHECK(polylineOf(list.items[1]).style->type == LineType::Dotted);
+    CHECK(polylineOf(list.items[1]).style->colour == glm::vec3(0, 0, 1));
+    CHECK(polylineOf(list.items[1]).style->width == 1.0f);            // width still individual
+    CHECK(polylineOf(list.items[2]).style->type == LineType::Solid);  // undefined bundle 9 reads as bundle 1
 }
 
 TEST_CASE("colours: direct RGB and indices through the colour table", "[traverse]") {
@@ -79,9 +79,9 @@ TEST_CASE("colours: direct RGB and indices through the colour table", "[traverse
                 polylineColourIndex(200), line});
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
-    CHECK(polylineOf(list.items[0]).style.colour == glm::vec3(0.25f, 0.5f, 0.75f));
-    CHECK(polylineOf(list.items[1]).style.colour == glm::vec3(0.1f, 0.2f, 0.3f));
-    CHECK(polylineOf(list.items[2]).style.colour == glm::vec3(1.0f));  // undefined index reads as 1
+    CHECK(polylineOf(list.items[0]).style->colour == glm::vec3(0.25f, 0.5f, 0.75f));
+    CHECK(polylineOf(list.items[1]).style->colour == glm::vec3(0.1f, 0.2f, 0.3f));
+    CHECK(polylineOf(list.items[2]).style->colour == glm::vec3(1.0f));  // undefined index reads as 1
     CHECK(list.background == glm::vec3(0.0f));
 }
 
@@ -99,11 +99,11 @@ TEST_CASE("modelling transforms: composition order, global and inheritance", "[t
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 4);
-    CHECK(list.items[0].modelTransform == r * t);  // preconcatenate: R applied after T
-    CHECK(list.items[1].modelTransform == t * r);
+    CHECK(list.items[0].modelTransform.get() == r * t);  // preconcatenate: R applied after T
+    CHECK(list.items[1].modelTransform.get() == t * r);
     // the child's global is the parent's composite (G * (T * R)), its local starts as identity
-    CHECK(list.items[2].modelTransform == (g * (t * r)) * t);
-    CHECK(list.items[3].modelTransform == g * (t * r));  // restored
+    CHECK(list.items[2].modelTransform.get() == (g * (t * r)) * t);
+    CHECK(list.items[3].modelTransform.get() == g * (t * r));  // restored
 }
 
 TEST_CASE("name sets: invisibility, highlighting and pick filters", "[traverse]") {
@@ -189,7 +189,7 @@ TEST_CASE("draw list content for a small network: views, lights, depth cue, prim
     CHECK(list.items[0].depthCue == 0);
     CHECK(list.hiddenSurfaceRemoval);
     const auto& fill = std::get<DrawFillArea>(list.items[0].primitive);
-    CHECK(fill.interior.style == InteriorStyle::Solid);
+    CHECK(fill.interior->style == InteriorStyle::Solid);
     const auto& withData = std::get<DrawFillArea>(list.items[1].primitive);
     REQUIRE(withData.vertexColours.size() == 1);
     CHECK(withData.vertexColours[0] == std::vector<glm::vec3>{{1, 0, 0}, {0, 0, 0.5f}, {0, 1, 0}});
@@ -282,7 +282,7 @@ TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full tra
     auto summary = [](const DrawList& list) {
         std::vector<std::tuple<std::vector<DrawPathLevel>, glm::dmat4, bool, int, std::size_t>> out;
         for (const auto& item : list.items)
-            out.emplace_back(item.source.path, item.modelTransform, item.highlighted, item.lightSet,
+            out.emplace_back(item.source.path, item.modelTransform.get(), item.highlighted, item.lightSet,
                              item.primitive.index());
         return out;
     };

@@ -375,7 +375,7 @@ TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the pi
         CHECK(at.x > area.xmin);
         CHECK(at.x < area.xmin + 0.2 * (area.ymax - area.ymin) + 3);
         CHECK(at.y == Approx((area.ymin + area.ymax) / 2));
-        CHECK(mapping.pixelsPerNpc * text->style.height == Approx(0.45 * (area.ymax - area.ymin)));
+        CHECK(mapping.pixelsPerNpc * text->style->height == Approx(0.45 * (area.ymax - area.ymin)));
         for (std::size_t k = picture.items.size(); k < shown.items.size(); ++k)
             CHECK_FALSE(shown.items[k].pickable);
     }

@@ -43,8 +43,8 @@ inline phigs::DrawFillArea solidRectangle(double x0, double y0, double x1, doubl
                                           glm::vec3 colour) {
     phigs::DrawFillArea f;
     f.contours = {{{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}}};
-    f.interior.style = phigs::InteriorStyle::Solid;
-    f.interior.colour = colour;
+    f.interior.edit().style = phigs::InteriorStyle::Solid;
+    f.interior.edit().colour = colour;
     return f;
 }
 

@@ -16,16 +16,16 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         // A sphere cut by the plane x = 0.3: only its left half stays (its inside shows).
         DrawMesh ball;
         ball.mesh = sphere({0.3f, 0.7f, 0.5f}, 0.2f, 32, 16);
-        ball.interior.style = InteriorStyle::Solid;
-        ball.interior.colour = {0.2f, 0.5f, 1.0f};
+        ball.interior.edit().style = InteriorStyle::Solid;
+        ball.interior.edit().colour = {0.2f, 0.5f, 1.0f};
         DrawItem clippedBall = item(ball);
         clippedBall.modelClipPlanes = {{-1, 0, 0, 0.3}};
         list.items.push_back(clippedBall);
         // A square cut by two half spaces: x + y <= 1.5 and y >= 0.6.
         DrawFillArea square;
         square.contours = {{{0.55, 0.55, 0.5}, {0.95, 0.55, 0.5}, {0.95, 0.95, 0.5}, {0.55, 0.95, 0.5}}};
-        square.interior.style = InteriorStyle::Solid;
-        square.interior.colour = {1.0f, 0.3f, 0.1f};
+        square.interior.edit().style = InteriorStyle::Solid;
+        square.interior.edit().colour = {1.0f, 0.3f, 0.1f};
         DrawItem clippedSquare = item(square);
         clippedSquare.modelClipPlanes = {{-1, -1, 0, 1.5}, {0, 1, 0, -0.6}};
         list.items.push_back(clippedSquare);
@@ -33,11 +33,11 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         // are in world coordinates).
         DrawPolyline line;
         line.points = {{0.05, 0.0, 0.5}, {0.95, 0.0, 0.5}};
-        line.style.colour = {1.0f, 1.0f, 0.2f};
-        line.style.width = 5.0f;
+        line.style.edit().colour = {1.0f, 1.0f, 0.2f};
+        line.style.edit().width = 5.0f;
         DrawItem clippedLine = item(line);
         clippedLine.modelTransform = glm::dmat4(1.0);
-        clippedLine.modelTransform[3] = glm::dvec4(0.0, 0.3, 0.0, 1.0);
+        clippedLine.modelTransform.edit()[3] = glm::dvec4(0.0, 0.3, 0.0, 1.0);
         clippedLine.modelClipPlanes = {{1, 0, 0, -0.2}, {-1, 0, 0, 0.8}};
         list.items.push_back(clippedLine);
         // Markers at x = 0.1 .. 0.9, kept where x <= 0.5 (a marker is clipped by its position).
@@ -45,9 +45,9 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         std::vector<glm::dvec3> markerPoints;
         for (int i = 1; i <= 9; ++i) markerPoints.push_back({0.1 * i, 0.1, 0.5});
         markers.points = markerPoints;
-        markers.style.type = MarkerType::Cross;
-        markers.style.scale = 2.0f;
-        markers.style.colour = {0.3f, 1.0f, 0.3f};
+        markers.style.edit().type = MarkerType::Cross;
+        markers.style.edit().scale = 2.0f;
+        markers.style.edit().colour = {0.3f, 1.0f, 0.3f};
         DrawItem clippedMarkers = item(markers);
         clippedMarkers.modelClipPlanes = {{-1, 0, 0, 0.5}};
         list.items.push_back(clippedMarkers);

@@ -148,9 +148,9 @@ TEST_CASE("patterns: an undefined pattern index draws pattern 1, no pattern tabl
         vk::ImageTarget ws(context, 64, 64);
         DrawList list = emptyScene();
         DrawFillArea f = solidRectangle(0.0, 0.0, 1.0, 1.0, 0.5, {0.5f, 0.5f, 0.5f});
-        f.interior.style = InteriorStyle::Pattern;
-        f.interior.styleIndex = 7;
-        f.interior.pattern.size = {2.0, 2.0};  // one cell covers the whole picture
+        f.interior.edit().style = InteriorStyle::Pattern;
+        f.interior.edit().styleIndex = 7;
+        f.interior.edit().pattern.size = {2.0, 2.0};  // one cell covers the whole picture
         list.items.push_back(item(f));
         const Image solid = ws.draw(list);
         CHECK(near(at(solid, 32, 32), 128, 128, 128));

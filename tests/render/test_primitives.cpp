@@ -11,17 +11,17 @@ namespace {
 DrawPolyline line(std::vector<glm::dvec3> points, glm::vec3 colour, LineType type, float width) {
     DrawPolyline p;
     p.points = std::move(points);
-    p.style.colour = colour;
-    p.style.type = type;
-    p.style.width = width;
+    p.style.edit().colour = colour;
+    p.style.edit().type = type;
+    p.style.edit().width = width;
     return p;
 }
 
 DrawFillArea fill(std::vector<std::vector<glm::dvec3>> contours, InteriorStyle style, glm::vec3 colour) {
     DrawFillArea f;
     f.contours = std::move(contours);
-    f.interior.style = style;
-    f.interior.colour = colour;
+    f.interior.edit().style = style;
+    f.interior.edit().colour = colour;
     return f;
 }
 
@@ -75,10 +75,10 @@ TEST_CASE("mesh iso-lines take the PHIGS line types, their dashes measured in pi
             DrawList list = emptyScene();
             DrawMesh m;
             m.mesh = mesh;
-            m.interior.style = InteriorStyle::Solid;
-            m.interior.colour = {0.3f, 0.3f, 0.3f};
-            m.isoLineStyle.colour = {1, 1, 0};
-            m.isoLineStyle.type = type;
+            m.interior.edit().style = InteriorStyle::Solid;
+            m.interior.edit().colour = {0.3f, 0.3f, 0.3f};
+            m.isoLineStyle.edit().colour = {1, 1, 0};
+            m.isoLineStyle.edit().type = type;
             DrawItem i = item(m);
             i.modelTransform = glm::dmat4(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
                                           glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0, 0, 0, 1));
@@ -134,11 +134,11 @@ TEST_CASE("polymarkers: the five marker types at three scales", "[render][primit
                                     MarkerType::Circle, MarkerType::Cross};
         for (int t = 0; t < 5; ++t) {
             DrawPolymarker m;
-            m.style.type = types[t];
-            m.style.colour = {0.3f + 0.15f * t, 1.0f, 1.0f - 0.2f * t};
+            m.style.edit().type = types[t];
+            m.style.edit().colour = {0.3f + 0.15f * t, 1.0f, 1.0f - 0.2f * t};
             for (int s = 0; s < 3; ++s) {
                 m.points = {{0.2 + 0.3 * s, 0.85 - 0.17 * t, 0.5}};
-                m.style.scale = 1.0f + 1.5f * s;
+                m.style.edit().scale = 1.0f + 1.5f * s;
                 list.items.push_back(item(m));
             }
         }
@@ -169,7 +169,7 @@ TEST_CASE("fill areas: hollow, solid, hatch, a concave outline and a set with ho
         for (int h = 1; h <= 2; ++h) {
             DrawFillArea hatch = fill({rectangle(0.69, 0.75 - (h - 1) * 0.2, 0.95, 0.95 - (h - 1) * 0.2)},
                                       InteriorStyle::Hatch, {1, 0.5f, 0.2f});
-            hatch.interior.styleIndex = h == 1 ? 3 : 5;
+            hatch.interior.edit().styleIndex = h == 1 ? 3 : 5;
             list.items.push_back(item(hatch));
         }
         // A concave "U" with visible dashed edges.
@@ -182,17 +182,17 @@ TEST_CASE("fill areas: hollow, solid, hatch, a concave outline and a set with ho
                                 {0.15, 0.45, 0.5},
                                 {0.05, 0.45, 0.5}}},
                               InteriorStyle::Solid, {0.9f, 0.2f, 0.6f});
-        u.edges.visible = true;
-        u.edges.colour = {1, 1, 1};
-        u.edges.type = LineType::Dashed;
-        u.edges.width = 2.0f;
+        u.edges.edit().visible = true;
+        u.edges.edit().colour = {1, 1, 1};
+        u.edges.edit().type = LineType::Dashed;
+        u.edges.edit().width = 2.0f;
         list.items.push_back(item(u));
         // A fill area set: a square with two square holes.
         DrawFillArea holes = fill({rectangle(0.55, 0.05, 0.95, 0.45), rectangle(0.6, 0.1, 0.72, 0.4),
                                    rectangle(0.78, 0.1, 0.9, 0.4)},
                                   InteriorStyle::Solid, {0.3f, 1.0f, 0.3f});
-        holes.edges.visible = true;
-        holes.edges.colour = {1, 0, 0};
+        holes.edges.edit().visible = true;
+        holes.edges.edit().colour = {1, 0, 0};
         list.items.push_back(item(holes));
         const Image image = ws.draw(list);
         auto px = [&](double x, double y) {
@@ -219,46 +219,46 @@ TEST_CASE("text: stroke text with height, up vector, path, alignment and expansi
             DrawText t;
             t.text = std::move(s);
             t.position = at;
-            t.style.height = 0.06;
-            t.style.colour = {1, 1, 1};
+            t.style.edit().height = 0.06;
+            t.style.edit().colour = {1, 1, 1};
             adjust(t);
             list.items.push_back(item(t));
         };
         text("PHIGS", {0.05, 0.85, 0.5}, [](DrawText&) {});
         text("wide", {0.55, 0.85, 0.5}, [](DrawText& t) {
-            t.style.expansion = 1.6f;
-            t.style.colour = {1, 0.6f, 0.2f};
+            t.style.edit().expansion = 1.6f;
+            t.style.edit().colour = {1, 0.6f, 0.2f};
         });
         text("UP", {0.1, 0.15, 0.5}, [](DrawText& t) {
-            t.style.upVector = {-1, 1};
-            t.style.colour = {0.4f, 1, 0.4f};
+            t.style.edit().upVector = {-1, 1};
+            t.style.edit().colour = {0.4f, 1, 0.4f};
         });
         text("DOWN", {0.9, 0.75, 0.5}, [](DrawText& t) {
-            t.style.path = TextPath::Down;
-            t.style.height = 0.04;
-            t.style.colour = {0.4f, 0.7f, 1};
+            t.style.edit().path = TextPath::Down;
+            t.style.edit().height = 0.04;
+            t.style.edit().colour = {0.4f, 0.7f, 1};
         });
         text("centred", {0.5, 0.55, 0.5}, [](DrawText& t) {
-            t.style.horizontal = HorizontalAlignment::Centre;
-            t.style.vertical = VerticalAlignment::Half;
-            t.style.colour = {1, 1, 0};
+            t.style.edit().horizontal = HorizontalAlignment::Centre;
+            t.style.edit().vertical = VerticalAlignment::Half;
+            t.style.edit().colour = {1, 1, 0};
         });
         text("<-left", {0.8, 0.4, 0.5}, [](DrawText& t) {
-            t.style.path = TextPath::Left;
-            t.style.height = 0.04;
+            t.style.edit().path = TextPath::Left;
+            t.style.edit().height = 0.04;
         });
         DrawText note;
         note.text = "note";
         note.annotation = true;
         note.position = {0.3, 0.3, 0.5};
         note.annotationOffset = {0.05, -0.1, 0};
-        note.style.height = 0.05;
-        note.style.colour = {1, 0.3f, 0.3f};
+        note.style.edit().height = 0.05;
+        note.style.edit().colour = {1, 0.3f, 0.3f};
         list.items.push_back(item(note));
         DrawPolymarker reference;
         reference.points = {{0.5, 0.55, 0.5}, {0.3, 0.3, 0.5}};
-        reference.style.type = MarkerType::Plus;
-        reference.style.colour = {1, 0, 1};
+        reference.style.edit().type = MarkerType::Plus;
+        reference.style.edit().colour = {1, 0, 1};
         list.items.push_back(item(reference));
         const Image image = ws.draw(list);
         compareWithReference(image, "text");

@@ -12,14 +12,14 @@ namespace {
 DrawMesh shaded(std::shared_ptr<const MeshData> mesh, ShadingMethod shading, glm::vec3 colour) {
     DrawMesh m;
     m.mesh = std::move(mesh);
-    m.interior.style = InteriorStyle::Solid;
-    m.interior.colour = colour;
-    m.interior.shading = shading;
-    m.interior.reflectance = ReflectanceModel::Specular;
-    m.interior.properties.ambient = 0.2f;
-    m.interior.properties.diffuse = 0.7f;
-    m.interior.properties.specular = 0.6f;
-    m.interior.properties.specularExponent = 30.0f;
+    m.interior.edit().style = InteriorStyle::Solid;
+    m.interior.edit().colour = colour;
+    m.interior.edit().shading = shading;
+    m.interior.edit().reflectance = ReflectanceModel::Specular;
+    m.interior.edit().properties.ambient = 0.2f;
+    m.interior.edit().properties.diffuse = 0.7f;
+    m.interior.edit().properties.specular = 0.6f;
+    m.interior.edit().properties.specularExponent = 30.0f;
     return m;
 }
 
@@ -89,9 +89,9 @@ TEST_CASE("lights: ambient, directional, positional and spot light on four grids
             DrawMesh m =
                 shaded(grid(cells[k][0], cells[k][1], cells[k][0] + 0.46, cells[k][1] + 0.46, 0.5, 16),
                        ShadingMethod::Normal, {1, 1, 1});
-            m.interior.reflectance = ReflectanceModel::Diffuse;
-            m.interior.properties.ambient = 1.0f;
-            m.interior.properties.diffuse = 1.0f;
+            m.interior.edit().reflectance = ReflectanceModel::Diffuse;
+            m.interior.edit().properties.ambient = 1.0f;
+            m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
             i.lightSet = k;
             list.items.push_back(i);
@@ -119,11 +119,11 @@ TEST_CASE("back faces: distinguished colour, and culling of back or front faces"
                 {x, y, 0.5}, {x + 0.25, y, 0.5}, {x + 0.25, y + 0.4, 0.5}, {x, y + 0.4, 0.5}};
             if (!front) std::reverse(c.begin(), c.end());
             f.contours = {c};
-            f.interior.style = InteriorStyle::Solid;
-            f.interior.colour = {0.2f, 0.8f, 0.2f};
-            f.interior.backColour = {0.9f, 0.2f, 0.2f};
-            f.interior.distinguishBackFaces = true;
-            f.interior.back.style = InteriorStyle::Solid;
+            f.interior.edit().style = InteriorStyle::Solid;
+            f.interior.edit().colour = {0.2f, 0.8f, 0.2f};
+            f.interior.edit().backColour = {0.9f, 0.2f, 0.2f};
+            f.interior.edit().distinguishBackFaces = true;
+            f.interior.edit().back.style = InteriorStyle::Solid;
             f.facetNormal = front ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 0, -1);
             return f;
         };
@@ -131,7 +131,7 @@ TEST_CASE("back faces: distinguished colour, and culling of back or front faces"
         for (int k = 0; k < 3; ++k)
             for (bool front : {true, false}) {
                 DrawFillArea f = quad(0.05 + 0.32 * k, front ? 0.55 : 0.05, front);
-                f.interior.cull = culls[k];
+                f.interior.edit().cull = culls[k];
                 list.items.push_back(item(f));
             }
         const Image image = ws.draw(list);
@@ -164,7 +164,7 @@ TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surfa
         list.items.push_back(item(square(0.2, 0.3, {0.2f, 0.2f, 1})));
         DrawMesh globe =
             shaded(sphere({0.7f, 0.35f, 0.5f}, 0.25f, 32, 16, 4), ShadingMethod::Normal, {0.9f, 0.9f, 0.9f});
-        globe.isoLineStyle.colour = {1, 1, 0};
+        globe.isoLineStyle.edit().colour = {1, 1, 0};
         DrawItem g = item(globe);
         g.lightSet = 0;
         list.items.push_back(g);
@@ -217,8 +217,8 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
         for (int k = 0; k < 2; ++k) {
             DrawPolyline l;
             l.points = {{0.1, 0.3 - 0.15 * k, 0.5}, {0.9, 0.3 - 0.15 * k, 0.5}};
-            l.style.colour = {0.2f, 0.4f, 1.0f};
-            l.style.width = 5.0f;
+            l.style.edit().colour = {0.2f, 0.4f, 1.0f};
+            l.style.edit().width = 5.0f;
             DrawItem i = item(l);
             i.highlighted = k == 1;
             list.items.push_back(i);
@@ -256,8 +256,8 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
             mesh->triangles = front ? std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}
                                     : std::vector<std::uint32_t>{0, 2, 1, 0, 3, 2};
             DrawMesh m = shaded(mesh, ShadingMethod::None, {1, 1, 1});
-            m.interior.reflectance = ReflectanceModel::Diffuse;
-            m.interior.properties.diffuse = 1.0f;
+            m.interior.edit().reflectance = ReflectanceModel::Diffuse;
+            m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
             i.lightSet = 0;
             list.items.push_back(i);
@@ -278,22 +278,22 @@ TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; 
         DrawList list = emptyScene();
         DrawMesh solid;
         solid.mesh = grid(0.05, 0.05, 0.45, 0.45, 0.5, 2);
-        solid.interior.style = InteriorStyle::Solid;
-        solid.interior.colour = {0, 0, 1};
-        solid.edges.visible = true;
-        solid.edges.colour = {1, 0, 0};
+        solid.interior.edit().style = InteriorStyle::Solid;
+        solid.interior.edit().colour = {0, 0, 1};
+        solid.edges.edit().visible = true;
+        solid.edges.edit().colour = {1, 0, 0};
         list.items.push_back(item(solid));
         DrawMesh hollow;
         hollow.mesh = grid(0.55, 0.05, 0.95, 0.45, 0.5, 2);
-        hollow.interior.style = InteriorStyle::Hollow;
-        hollow.interior.colour = {0, 1, 0};
+        hollow.interior.edit().style = InteriorStyle::Hollow;
+        hollow.interior.edit().colour = {0, 1, 0};
         list.items.push_back(item(hollow));
         DrawCurve curve;
         std::vector<glm::dvec3> curvePoints;
         for (int k = 0; k <= 16; ++k)
             curvePoints.push_back({0.1 + 0.05 * k, 0.75 + 0.1 * std::sin(0.4 * k), 0.5});
         curve.points = curvePoints;
-        curve.style.colour = {1, 1, 0};
+        curve.style.edit().colour = {1, 1, 0};
         list.items.push_back(item(curve));
         const Image image = ws.draw(list);
         int red = 0, blue = 0, green = 0, yellow = 0, greenInside = 0;
@@ -325,7 +325,7 @@ TEST_CASE("transparency: a surface blends over what lies behind it, whatever the
         list.hiddenSurfaceRemoval = true;
         auto square = [](double x0, double x1, double z, glm::vec3 colour, float transparency) {
             DrawFillArea f = solidRectangle(x0, 0.2, x1, 0.8, z, colour);
-            f.interior.properties.transparency = transparency;
+            f.interior.edit().properties.transparency = transparency;
             return f;
         };
         // Traversal order: the see-through blue square (front) first, then the opaque red one

@@ -20,8 +20,8 @@ DrawList editableScene(std::shared_ptr<const MeshData> mesh) {
     for (int k = 0; k < 3; ++k) {
         DrawPolyline l;
         l.points = {{0.1, 0.2 + 0.2 * k, 0.5}, {0.9, 0.2 + 0.2 * k, 0.5}};
-        l.style.colour = {1, 1, 0};
-        l.style.type = k == 2 ? LineType::Dashed : LineType::Solid;
+        l.style.edit().colour = {1, 1, 0};
+        l.style.edit().type = k == 2 ? LineType::Dashed : LineType::Solid;
         DrawItem i = item(l);
         i.source.path = {{1, k + 1, 0}};
         i.source.structureVersion = 1;
@@ -29,12 +29,12 @@ DrawList editableScene(std::shared_ptr<const MeshData> mesh) {
     }
     DrawMesh m;
     m.mesh = std::move(mesh);
-    m.interior.style = InteriorStyle::Solid;
+    m.interior.edit().style = InteriorStyle::Solid;
     list.items.push_back(item(m));
     DrawText t;
     t.text = "fixed";
     t.position = {0.1, 0.85, 0.5};
-    t.style.height = 0.05;
+    t.style.edit().height = 0.05;
     list.items.push_back(item(t));
     return list;
 }
@@ -109,13 +109,13 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(renderer.lastFrame().buffersDestroyed == 1);
         }
         SECTION("recolouring a polyline re-uploads its vertices only (colour is part of its key)") {
-            std::get<DrawPolyline>(list.items[0].primitive).style.colour = {0, 1, 1};
+            std::get<DrawPolyline>(list.items[0].primitive).style.edit().colour = {0, 1, 1};
             ws.draw(list);
             CHECK(renderer.lastFrame().buffersCreated == 1);  // its geometry key includes the style
             CHECK(renderer.lastFrame().uploads == 1);         // that buffer; colours are push constants
         }
         SECTION("changing the mesh's interior colour uploads nothing and draws the new colour") {
-            std::get<DrawMesh>(list.items[3].primitive).interior.colour = {1, 0, 0};
+            std::get<DrawMesh>(list.items[3].primitive).interior.edit().colour = {1, 0, 0};
             const Image red = ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 0);
             CHECK(renderer.lastFrame().uploadedBytes == 0);
@@ -126,7 +126,7 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(at(first, 64, 64).g > 100);  // white before
         }
         SECTION("moving the mesh uploads its draw records only (the modelling matrix)") {
-            list.items[3].modelTransform[3][0] = 0.1;
+            list.items[3].modelTransform.edit()[3][0] = 0.1;
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 1);
             CHECK(renderer.lastFrame().uploadedBytes == 2 * 176);  // interior and iso-lines, adjacent

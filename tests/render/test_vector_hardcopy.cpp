@@ -77,15 +77,15 @@ void compareWithLavapipe(const std::string& name, const DrawList& list, std::uin
 DrawPolyline line(std::vector<glm::dvec3> points, glm::vec3 colour, LineType type, float width) {
     DrawPolyline p;
     p.points = std::move(points);
-    p.style = {colour, type, width};
+    p.style = LineStyle{colour, type, width};
     return p;
 }
 
 DrawFillArea fill(std::vector<std::vector<glm::dvec3>> contours, InteriorStyle style, glm::vec3 colour) {
     DrawFillArea f;
     f.contours = std::move(contours);
-    f.interior.style = style;
-    f.interior.colour = colour;
+    f.interior.edit().style = style;
+    f.interior.edit().colour = colour;
     return f;
 }
 
@@ -105,7 +105,7 @@ DrawList hiddenLineReference(const DrawList& list) {
             std::vector<glm::dvec3> points;
             for (std::uint32_t i : chain) points.push_back(glm::dvec3(mesh->mesh->positions[i]));
             boundary.points = points;
-            boundary.style.colour = mesh->interior.colour;
+            boundary.style.edit().colour = mesh->interior->colour;
             DrawItem copy = item;
             copy.primitive = boundary;
             reference.items.push_back(copy);
@@ -113,8 +113,8 @@ DrawList hiddenLineReference(const DrawList& list) {
     }
     for (DrawItem& item : reference.items)
         if (auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
-            mesh->interior.colour = reference.background;
-            mesh->interior.reflectance = ReflectanceModel::None;
+            mesh->interior.edit().colour = reference.background;
+            mesh->interior.edit().reflectance = ReflectanceModel::None;
         }
     return reference;
 }
@@ -139,11 +139,11 @@ TEST_CASE("vector hardcopy against lavapipe: polymarkers", "[render][hardcopy]")
                                 MarkerType::Cross};
     for (int t = 0; t < 5; ++t) {
         DrawPolymarker m;
-        m.style.type = types[t];
-        m.style.colour = {0.3f + 0.15f * t, 1.0f, 1.0f - 0.2f * t};
+        m.style.edit().type = types[t];
+        m.style.edit().colour = {0.3f + 0.15f * t, 1.0f, 1.0f - 0.2f * t};
         for (int s = 0; s < 3; ++s) {
             m.points = {{0.2 + 0.3 * s, 0.85 - 0.17 * t, 0.5}};
-            m.style.scale = 1.0f + 1.5f * s;
+            m.style.edit().scale = 1.0f + 1.5f * s;
             list.items.push_back(item(m));
         }
     }
@@ -158,7 +158,7 @@ TEST_CASE("vector hardcopy against lavapipe: fill areas and sets, hollow, solid,
     for (int h = 1; h <= 2; ++h) {
         DrawFillArea hatch = fill({rectangle(0.69, 0.75 - (h - 1) * 0.2, 0.95, 0.95 - (h - 1) * 0.2)},
                                   InteriorStyle::Hatch, {1, 0.5f, 0.2f});
-        hatch.interior.styleIndex = h == 1 ? 3 : 5;
+        hatch.interior.edit().styleIndex = h == 1 ? 3 : 5;
         list.items.push_back(item(hatch));
     }
     DrawFillArea u = fill({{{0.05, 0.05, 0.5},
@@ -170,12 +170,12 @@ TEST_CASE("vector hardcopy against lavapipe: fill areas and sets, hollow, solid,
                             {0.15, 0.45, 0.5},
                             {0.05, 0.45, 0.5}}},
                           InteriorStyle::Solid, {0.9f, 0.2f, 0.6f});
-    u.edges = {true, {1, 1, 1}, LineType::Dashed, 2.0f};
+    u.edges = EdgeStyle{true, {1, 1, 1}, LineType::Dashed, 2.0f};
     list.items.push_back(item(u));
     DrawFillArea holes = fill(
         {rectangle(0.55, 0.05, 0.95, 0.45), rectangle(0.6, 0.1, 0.72, 0.4), rectangle(0.78, 0.1, 0.9, 0.4)},
         InteriorStyle::Solid, {0.3f, 1.0f, 0.3f});
-    holes.edges = {true, {1, 0, 0}, LineType::Solid, 1.0f};
+    holes.edges = EdgeStyle{true, {1, 0, 0}, LineType::Solid, 1.0f};
     list.items.push_back(item(holes));
     compareWithLavapipe("fill_areas", list, 256, 256);
 }
@@ -186,27 +186,27 @@ TEST_CASE("vector hardcopy against lavapipe: stroke text and annotation text", "
         DrawText t;
         t.text = std::move(s);
         t.position = at;
-        t.style.height = 0.06;
+        t.style.edit().height = 0.06;
         adjust(t);
         list.items.push_back(item(t));
     };
     text("PHIGS", {0.05, 0.85, 0.5}, [](DrawText&) {});
-    text("wide", {0.55, 0.85, 0.5}, [](DrawText& t) { t.style.expansion = 1.6f; });
-    text("UP", {0.1, 0.15, 0.5}, [](DrawText& t) { t.style.upVector = {-1, 1}; });
+    text("wide", {0.55, 0.85, 0.5}, [](DrawText& t) { t.style.edit().expansion = 1.6f; });
+    text("UP", {0.1, 0.15, 0.5}, [](DrawText& t) { t.style.edit().upVector = {-1, 1}; });
     text("DOWN", {0.9, 0.75, 0.5}, [](DrawText& t) {
-        t.style.path = TextPath::Down;
-        t.style.height = 0.04;
+        t.style.edit().path = TextPath::Down;
+        t.style.edit().height = 0.04;
     });
     text("centred", {0.5, 0.55, 0.5}, [](DrawText& t) {
-        t.style.horizontal = HorizontalAlignment::Centre;
-        t.style.vertical = VerticalAlignment::Half;
+        t.style.edit().horizontal = HorizontalAlignment::Centre;
+        t.style.edit().vertical = VerticalAlignment::Half;
     });
     DrawText note;
     note.text = "note";
     note.annotation = true;
     note.position = {0.3, 0.3, 0.5};
     note.annotationOffset = {0.05, -0.1, 0};
-    note.style.height = 0.05;
+    note.style.edit().height = 0.05;
     list.items.push_back(item(note));
     compareWithLavapipe("text", list, 256, 256);
 }
@@ -224,7 +224,7 @@ TEST_CASE("vector hardcopy against lavapipe: a NURBS curve tessellated to the pa
     DrawCurve drawn;
     drawn.curve = curve;
     drawn.points = geom::tessellate(*curve, 1e-4);  // the raster's polyline, finer than a pixel
-    drawn.style = {{0.4f, 1.0f, 0.8f}, LineType::Solid, 2.0f};
+    drawn.style = LineStyle{{0.4f, 1.0f, 0.8f}, LineType::Solid, 2.0f};
     list.items.push_back(item(drawn));
     compareWithLavapipe("nurbs_curve", list, 256, 256);
 }
@@ -284,11 +284,11 @@ TEST_CASE("vector hardcopy against lavapipe: four views, one in perspective, wit
         }
         DrawMesh m;
         m.mesh = body;
-        m.interior.style = InteriorStyle::Solid;
-        m.interior.colour = {0.8f, 0.8f, 0.8f};
-        m.interior.shading = ShadingMethod::Normal;
-        m.interior.reflectance = ReflectanceModel::Diffuse;
-        m.isoLineStyle = {{1, 1, 0}, LineType::Dashed, 1.0f};
+        m.interior.edit().style = InteriorStyle::Solid;
+        m.interior.edit().colour = {0.8f, 0.8f, 0.8f};
+        m.interior.edit().shading = ShadingMethod::Normal;
+        m.interior.edit().reflectance = ReflectanceModel::Diffuse;
+        m.isoLineStyle = LineStyle{{1, 1, 0}, LineType::Dashed, 1.0f};
         DrawItem i = item(m, v);
         i.lightSet = 0;
         list.items.push_back(i);

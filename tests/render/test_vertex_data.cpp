@@ -32,8 +32,8 @@ TEST_CASE("vertex colours: a fill area set with data and a mesh blend the colour
                           {{0.15, 0.4, 0.5}, {0.35, 0.4, 0.5}, {0.35, 0.6, 0.5}, {0.15, 0.6, 0.5}}};
         frame.vertexColours = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}},
                                {{1, 1, 0}, {1, 1, 0}, {1, 1, 0}, {1, 1, 0}}};
-        frame.interior.style = InteriorStyle::Solid;
-        frame.interior.colour = {0.5f, 0.5f, 0.5f};  // must not show: the vertices have colours
+        frame.interior.edit().style = InteriorStyle::Solid;
+        frame.interior.edit().colour = {0.5f, 0.5f, 0.5f};  // must not show: the vertices have colours
         list.items.push_back(item(frame));
         // A mesh of two triangles: black, red, yellow, green at its corners.
         auto mesh = std::make_shared<MeshData>();
@@ -43,8 +43,8 @@ TEST_CASE("vertex colours: a fill area set with data and a mesh blend the colour
         mesh->triangles = {0, 1, 2, 0, 2, 3};
         DrawMesh quad;
         quad.mesh = mesh;
-        quad.interior.style = InteriorStyle::Solid;
-        quad.interior.colour = {0.5f, 0.5f, 0.5f};
+        quad.interior.edit().style = InteriorStyle::Solid;
+        quad.interior.edit().colour = {0.5f, 0.5f, 0.5f};
         list.items.push_back(item(quad));
 
         const Image image = ws.draw(list);

@@ -47,16 +47,16 @@ void addAxesAndBody(DrawList& list, int view, std::shared_ptr<const MeshData> bo
         glm::dvec3 end(0.0);
         end[a] = 1.2;
         axis.points = {glm::dvec3(0.0), end};
-        axis.style.colour = colours[a];
-        axis.style.width = 2.0f;
+        axis.style.edit().colour = colours[a];
+        axis.style.edit().width = 2.0f;
         list.items.push_back(item(axis, view));
     }
     DrawMesh m;
     m.mesh = std::move(body);
-    m.interior.style = InteriorStyle::Solid;
-    m.interior.colour = {0.8f, 0.8f, 0.8f};
-    m.interior.shading = ShadingMethod::Normal;
-    m.interior.reflectance = ReflectanceModel::Diffuse;
+    m.interior.edit().style = InteriorStyle::Solid;
+    m.interior.edit().colour = {0.8f, 0.8f, 0.8f};
+    m.interior.edit().shading = ShadingMethod::Normal;
+    m.interior.edit().reflectance = ReflectanceModel::Diffuse;
     DrawItem i = item(m, view);
     i.lightSet = 0;
     list.items.push_back(i);
@@ -95,7 +95,7 @@ TEST_CASE("views: four views with their own orientation, mapping and clip limits
             // A polyline crossing the whole view shows that each view clips at its own limits.
             DrawPolyline across;
             across.points = {{-5, -5, -5}, {5, 5, 5}};
-            across.style.colour = {1, 1, 0};
+            across.style.edit().colour = {1, 1, 0};
             list.items.push_back(item(across, v));
         }
         const Image image = ws.draw(list);
@@ -134,13 +134,13 @@ TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically"
         vk::ImageTarget ws(context, 256, 256);
         DrawPolymarker m;
         m.points = {{0.25, 0.25, 0.5}, {0.75, 0.75, 0.5}};  // the second lies outside the window
-        m.style.type = MarkerType::Plus;
-        m.style.scale = 3.0f;
+        m.style.edit().type = MarkerType::Plus;
+        m.style.edit().scale = 3.0f;
         list.items.push_back(item(m));
         DrawFillArea f;
         f.contours = {{{0.0, 0.0, 0.5}, {0.1, 0.0, 0.5}, {0.1, 0.1, 0.5}, {0.0, 0.1, 0.5}}};
-        f.interior.style = InteriorStyle::Solid;
-        f.interior.colour = {0, 0, 1};
+        f.interior.edit().style = InteriorStyle::Solid;
+        f.interior.edit().colour = {0, 0, 1};
         list.items.push_back(item(f));
         const Image image = ws.draw(list);
         CHECK(std::max(at(image, 128 + 8, 127).g, at(image, 128 + 8, 128).g) > 200);

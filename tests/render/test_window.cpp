@@ -19,13 +19,13 @@ DrawList knownScene() {
     list.background = {0.0f, 0.0f, 0.3f};
     DrawFillArea f;
     f.contours = {{{0.1, 0.1, 0.5}, {0.9, 0.1, 0.5}, {0.5, 0.9, 0.5}}};
-    f.interior.style = InteriorStyle::Solid;
-    f.interior.colour = {1.0f, 0.5f, 0.0f};
+    f.interior.edit().style = InteriorStyle::Solid;
+    f.interior.edit().colour = {1.0f, 0.5f, 0.0f};
     list.items.push_back(item(f));
     DrawPolymarker m;
     m.points = {{0.5, 0.4, 0.5}};
-    m.style.type = MarkerType::Circle;
-    m.style.scale = 4.0f;
+    m.style.edit().type = MarkerType::Circle;
+    m.style.edit().scale = 4.0f;
     list.items.push_back(item(m));
     return list;
 }

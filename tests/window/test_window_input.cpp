@@ -37,7 +37,7 @@ DrawList squareScene() {
     list.displaySize = {100.0, 100.0};
     DrawFillArea f;
     f.contours = {{{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}};
-    f.interior.style = InteriorStyle::Solid;
+    f.interior.edit().style = InteriorStyle::Solid;
     DrawItem item;
     item.primitive = f;
     item.source.path = {{3, 2, 1}, {4, 6, 8}};

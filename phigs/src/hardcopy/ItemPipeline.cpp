@@ -31,8 +31,8 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
       model_(modelVolume(item.modelClipPlanes)),
       colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
     const InteriorStyleSet* interior = nullptr;
-    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior;
+    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
+    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior.get();
     if (!interior || interior->style != InteriorStyle::Pattern) return;
     // No pattern defined, or a pattern box with no area on the primitive: drawn solid.
     pattern_ = render::findPattern(list, interior->styleIndex);

@@ -47,13 +47,13 @@ void styleOf(FacetPaint& paint, const InteriorStyleSet& in, int facing) {
 std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> points) const {
     std::vector<glm::dvec3> world;
     world.reserve(points.size());
-    for (const glm::dvec3& p : points) world.push_back(apply(pipeline_.item().modelTransform, p));
+    for (const glm::dvec3& p : points) world.push_back(apply(pipeline_.item().modelTransform.get(), p));
     return world;
 }
 
 void ItemProjector::operator()(const DrawPolyline& polyline) {
-    pipeline_.line(toWorld(polyline.points), false, polyline.style.colour, polyline.style.type,
-                   polyline.style.width);
+    pipeline_.line(toWorld(polyline.points), false, polyline.style->colour, polyline.style->type,
+                   polyline.style->width);
 }
 
 void ItemProjector::operator()(const DrawCurve& curve) {
@@ -61,14 +61,14 @@ void ItemProjector::operator()(const DrawCurve& curve) {
     std::vector<glm::dvec3> points = curve.points;
     if (curve.curve)
         points = refineCurve(*curve.curve, curve.rangeStart, curve.rangeEnd,
-                             pipeline_.worldToPage() * pipeline_.item().modelTransform,
+                             pipeline_.worldToPage() * pipeline_.item().modelTransform.get(),
                              pipeline_.options().curveTolerance);
-    pipeline_.line(toWorld(points), false, curve.style.colour, curve.style.type, curve.style.width);
+    pipeline_.line(toWorld(points), false, curve.style->colour, curve.style->type, curve.style->width);
 }
 
 void ItemProjector::operator()(const DrawPolymarker& markers) {
     for (const glm::dvec3& p : markers.points)
-        pipeline_.marker(apply(pipeline_.item().modelTransform, p), markers.style);
+        pipeline_.marker(apply(pipeline_.item().modelTransform.get(), p), markers.style);
 }
 
 void ItemProjector::operator()(const DrawFillArea& fill) {
@@ -83,9 +83,9 @@ void ItemProjector::operator()(const DrawFillArea& fill) {
         else
             fillTriangles(fill);
     }
-    if (fill.edges.visible)
+    if (fill.edges->visible)
         for (const auto& contour : world)
-            pipeline_.line(contour, true, fill.edges.colour, fill.edges.type, fill.edges.width);
+            pipeline_.line(contour, true, fill.edges->colour, fill.edges->type, fill.edges->width);
 }
 
 void ItemProjector::fillInterior(const DrawFillArea& fill,
@@ -99,13 +99,14 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
             normal +=
                 glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
             centre += a, low = glm::min(low, a), high = glm::max(high, a);
-            vertices.push_back({a, {}, fill.interior.colour});
+            vertices.push_back({a, {}, fill.interior->colour});
         }
     if (vertices.size() < 3 || glm::length(normal) == 0.0) return;
     normal = glm::normalize(normal);
     if (glm::length(fill.facetNormal) > 0.0) {
-        const glm::dvec3 given = glm::dvec3(glm::transpose(glm::inverse(pipeline_.item().modelTransform)) *
-                                            glm::dvec4(fill.facetNormal, 0.0));
+        const glm::dvec3 given =
+            glm::dvec3(glm::transpose(glm::inverse(pipeline_.item().modelTransform.get())) *
+                       glm::dvec4(fill.facetNormal, 0.0));
         if (glm::dot(given, normal) < 0.0) normal = -normal;
     }
     centre /= double(vertices.size());
@@ -153,9 +154,9 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
 
 void ItemProjector::operator()(const DrawText& text) {
     const auto strips =
-        render::layoutText(render::StrokeFont::forIndex(text.style.font), text.text, text.style);
-    const glm::vec3 colour = text.style.colour;
-    const glm::dmat4& model = pipeline_.item().modelTransform;
+        render::layoutText(render::StrokeFont::forIndex(text.style->font), text.text, text.style);
+    const glm::vec3 colour = text.style->colour;
+    const glm::dmat4& model = pipeline_.item().modelTransform.get();
     if (text.annotation) {
         // Laid out in NPC at the projected reference point plus the offset, at its depth.
         const glm::dvec3 reference = apply(model, text.position);

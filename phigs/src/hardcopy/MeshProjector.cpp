@@ -10,7 +10,7 @@ namespace phigs::hardcopy {
 
 MeshProjector::MeshProjector(ItemPipeline& pipeline, const DrawMesh& mesh)
     : pipeline_(pipeline), mesh_(mesh), data_(*mesh.mesh) {
-    const glm::dmat4& model = pipeline_.item().modelTransform;
+    const glm::dmat4& model = pipeline_.item().modelTransform.get();
     world_.reserve(data_.positions.size());
     for (const glm::vec3& p : data_.positions) {
         const glm::dvec4 q = model * glm::dvec4(glm::dvec3(p), 1.0);
@@ -38,8 +38,8 @@ void MeshProjector::project() {
         isoLines();
     }
     // Mesh edges are solid, as the raster draws them.
-    if (mesh_.edges.visible)
-        edgeLines(chainEdges(uniqueEdges(data_)), mesh_.edges.colour, LineType::Solid, mesh_.edges.width);
+    if (mesh_.edges->visible)
+        edgeLines(chainEdges(uniqueEdges(data_)), mesh_.edges->colour, LineType::Solid, mesh_.edges->width);
 }
 
 void MeshProjector::facets(bool coverOnly) {
@@ -47,7 +47,8 @@ void MeshProjector::facets(bool coverOnly) {
     const std::size_t count = world_.size();
     const bool normals = data_.normals.size() == count && count > 0;
     const bool colours = data_.colours.size() == count && count > 0;
-    const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform)));
+    const glm::dmat3 normalMatrix =
+        glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform.get())));
     std::vector<FacetVertex> vertices(3);
     for (std::size_t t = 0; t < facing_.size(); ++t) {
         const std::uint32_t* index = &data_.triangles[3 * t];
@@ -101,7 +102,7 @@ void MeshProjector::outline() {
     edges.insert(edges.end(), silhouette.begin(), silhouette.end());
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    edgeLines(chainEdges(edges), mesh_.interior.colour, LineType::Solid, 1.0f);
+    edgeLines(chainEdges(edges), mesh_.interior->colour, LineType::Solid, 1.0f);
 }
 
 }  // namespace phigs::hardcopy

@@ -49,8 +49,7 @@ glm::dvec3 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm
 /// The smallest distance from a point to the parts of a locus the clipping planes keep.
 class Measure {
 public:
-    Measure(const glm::dvec3& point, const std::vector<glm::dvec4>* planes)
-        : point_(point), planes_(planes) {}
+    Measure(const glm::dvec3& point, const ItemArray<glm::dvec4>* planes) : point_(point), planes_(planes) {}
 
     double best = std::numeric_limits<double>::infinity();
 
@@ -99,7 +98,7 @@ private:
 
     void convex(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
         if (glm::length(glm::cross(b - a, c - a)) == 0.0) {  // degenerate: its edges are all of it
-            const std::vector<glm::dvec4>* planes = planes_;
+            const ItemArray<glm::dvec4>* planes = planes_;
             planes_ = nullptr;  // already clipped
             segment(a, b), segment(b, c), segment(c, a);
             planes_ = planes;
@@ -109,7 +108,7 @@ private:
     }
 
     glm::dvec3 point_;
-    const std::vector<glm::dvec4>* planes_;
+    const ItemArray<glm::dvec4>* planes_;
 };
 
 void strip(Measure& m, std::span<const glm::dvec3> points, const glm::dmat4& model, bool closed) {
@@ -165,7 +164,7 @@ void mesh(Measure& m, const DrawMesh& d, const glm::dmat4& model) {
 // Text strokes as the renderer lays them out (world coordinates).
 void text(Measure& m, const DrawItem& item, const DrawText& t) {
     if (t.annotation) {
-        m.at(apply(item.modelTransform, t.position));
+        m.at(apply(item.modelTransform.get(), t.position));
         return;
     }
     const render::ItemGeometry g = render::describeItem(item, glm::dmat4(1.0));
@@ -178,7 +177,7 @@ void text(Measure& m, const DrawItem& item, const DrawText& t) {
 
 double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
     Measure m(point, clip && !item.modelClipPlanes.empty() ? &item.modelClipPlanes : nullptr);
-    const glm::dmat4& model = item.modelTransform;
+    const glm::dmat4& model = item.modelTransform.get();
     std::visit(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;

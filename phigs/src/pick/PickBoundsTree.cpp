@@ -57,7 +57,7 @@ PickBoundsTree::Key PickBoundsTree::keyOf(const DrawItem& item) const {
     key.pickable = item.pickable;
     if (!item.pickable) return key;
     key.view = item.viewIndex;
-    key.transform = item.modelTransform;
+    key.transform = item.modelTransform.get();
     if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
         key.geometry = mesh->surface.get();
         key.mesh = mesh->mesh.get();
@@ -120,7 +120,7 @@ PickItemBounds PickBoundsTree::boundsOf(const DrawList& list, const DrawItem& it
     if (!item.pickable || item.viewIndex < 0 || static_cast<std::size_t>(item.viewIndex) >= list.views.size())
         return b;
     b.tested = true;
-    b.toNpc = views_[static_cast<std::size_t>(item.viewIndex)] * item.modelTransform;
+    b.toNpc = views_[static_cast<std::size_t>(item.viewIndex)] * item.modelTransform.get();
     b.fromNpc = glm::inverse(b.toNpc);
     b.lo = glm::dvec3(-infinity);
     b.hi = glm::dvec3(infinity);

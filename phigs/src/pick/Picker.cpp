@@ -35,7 +35,7 @@ bool insideModelClip(const DrawItem& item, const glm::dvec3& world) {
 }
 
 glm::dvec3 toWorld(const DrawItem& item, const glm::dvec3& modelling) {
-    const glm::dvec4 h = item.modelTransform * glm::dvec4(modelling, 1.0);
+    const glm::dvec4 h = item.modelTransform.get() * glm::dvec4(modelling, 1.0);
     return glm::dvec3(h) / h.w;
 }
 
@@ -334,7 +334,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
     if (view.clipXY && (npc.x < view.clipMin.x || npc.x > view.clipMax.x || npc.y < view.clipMin.y ||
                         npc.y > view.clipMax.y))
         return std::nullopt;
-    const glm::dmat4 m = bounds ? bounds->toNpc : view.mapping * view.orientation * item.modelTransform;
+    const glm::dmat4 m = bounds ? bounds->toNpc : view.mapping * view.orientation * item.modelTransform.get();
     const Aperture ap{npc, aperture};
 
     std::optional<PickHit> hit;
@@ -346,7 +346,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 z = polylineHit(ap, projectAll(m, p.points), false);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 // The marker's own size widens the aperture (nominal 7 pixels times the scale).
-                const double grow = mapping.npcLength(3.5 * p.style.scale);
+                const double grow = mapping.npcLength(3.5 * p.style->scale);
                 // A marker is clipped by its position, as drawn.
                 for (const glm::dvec3& point : p.points) {
                     const Projected q = project(m, point);
@@ -357,13 +357,13 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
             } else if constexpr (std::is_same_v<T, DrawFillArea>) {
                 std::vector<std::vector<Projected>> contours;
                 for (const auto& c : p.contours) contours.push_back(projectAll(m, c));
-                const InteriorStyle s = p.interior.style;
+                const InteriorStyle s = p.interior->style;
                 const bool interior = s != InteriorStyle::Hollow && s != InteriorStyle::Empty;
-                z = regionHit(ap, contours, interior, s == InteriorStyle::Hollow || p.edges.visible);
+                z = regionHit(ap, contours, interior, s == InteriorStyle::Hollow || p.edges->visible);
             } else if constexpr (std::is_same_v<T, DrawText>) {
                 std::vector<std::vector<Projected>> box(1);
                 const glm::dvec2 up =
-                    glm::length(p.style.upVector) > 0 ? glm::normalize(p.style.upVector) : glm::dvec2(0, 1);
+                    glm::length(p.style->upVector) > 0 ? glm::normalize(p.style->upVector) : glm::dvec2(0, 1);
                 const glm::dvec2 base(up.y, -up.x);
                 if (p.annotation) {
                     const Projected ref = project(m, p.position);

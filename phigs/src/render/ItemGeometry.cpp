@@ -25,7 +25,7 @@ glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
 class Builder {
 public:
     Builder(const DrawItem& item, const glm::dmat4& worldToPixels)
-        : model_(item.modelTransform), toPixels_(worldToPixels) {}
+        : model_(item.modelTransform.get()), toPixels_(worldToPixels) {}
 
     ItemGeometry geometry;
 
@@ -64,13 +64,13 @@ public:
     }
 
     void polymarker(const DrawPolymarker& m) {
-        const MarkerShape shape = markerShape(m.style.type, m.style.scale);
+        const MarkerShape shape = markerShape(m.style->type, m.style->scale);
         const bool triangles = !shape.triangles.empty();
-        GeometryPart part = begin(!triangles, PartRole::Marker, m.style.colour);
+        GeometryPart part = begin(!triangles, PartRole::Marker, m.style->colour);
         const auto& offsets = triangles ? shape.triangles : shape.segments;
         for (const auto& p : m.points) {
             const glm::dvec3 w = apply(model_, p);
-            for (const glm::vec2& o : offsets) push(w, {}, m.style.colour, o, 0.0f);
+            for (const glm::vec2& o : offsets) push(w, {}, m.style->colour, o, 0.0f);
         }
         end(part);
     }
@@ -87,14 +87,14 @@ public:
         } else if (in.style != InteriorStyle::Empty) {
             interior(f, contours);
         }
-        if (f.edges.visible)
-            lineStrips(contours, true, PartRole::Edge, f.edges.colour, f.edges.type, f.edges.width);
+        if (f.edges->visible)
+            lineStrips(contours, true, PartRole::Edge, f.edges->colour, f.edges->type, f.edges->width);
     }
 
     void text(const DrawText& t) {
-        const StrokeFont& font = StrokeFont::forIndex(t.style.font);
+        const StrokeFont& font = StrokeFont::forIndex(t.style->font);
         const auto strips = layoutText(font, t.text, t.style);
-        const glm::vec3 colour = t.style.colour;
+        const glm::vec3 colour = t.style->colour;
         if (t.annotation) {
             const glm::dvec3 reference = apply(model_, t.position);
             GeometryPart part = begin(true, PartRole::Text, colour);
@@ -181,13 +181,13 @@ private:
                 if (haveColours)
                     colours.push_back(c < f.vertexColours.size() && i < f.vertexColours[c].size()
                                           ? f.vertexColours[c][i]
-                                          : f.interior.colour);
+                                          : f.interior->colour);
                 if (haveNormals)
                     normals.push_back(c < f.vertexNormals.size() && i < f.vertexNormals[c].size()
                                           ? glm::normalize(normalMatrix * f.vertexNormals[c][i])
                                           : normal);
             }
-        GeometryPart part = begin(false, PartRole::Interior, f.interior.colour);
+        GeometryPart part = begin(false, PartRole::Interior, f.interior->colour);
         part.vertexColours = haveColours;
         part.vertexNormals = true;
         for (std::uint32_t index : tri.triangles) {
@@ -195,7 +195,7 @@ private:
             const double t = tv.t;
             const glm::dvec3 p = flat[tv.from] * (1.0 - t) + flat[tv.to] * t;
             const glm::vec3 colour =
-                haveColours ? glm::mix(colours[tv.from], colours[tv.to], float(t)) : f.interior.colour;
+                haveColours ? glm::mix(colours[tv.from], colours[tv.to], float(t)) : f.interior->colour;
             glm::dvec3 n = haveNormals ? normals[tv.from] * (1.0 - t) + normals[tv.to] * t : normal;
             if (glm::length(n) > 0.0) n = glm::normalize(n);
             push(p, glm::vec3(n), colour, {}, 0.0f);
@@ -219,6 +219,10 @@ struct Hasher {
         static_assert(std::is_trivially_copyable_v<T>);
         bytes(&v, sizeof v);
     }
+    template <class T>
+    void value(const ItemRef<T>& r) {
+        value(r.get());
+    }
     void value(const Reflectance& r) {
         value(r.ambient), value(r.diffuse), value(r.specular), value(r.specularColour);
         value(r.specularExponent), value(r.transparency);
@@ -226,7 +230,8 @@ struct Hasher {
     void value(const InteriorStyleSet& s) {
         value(s.style), value(s.styleIndex), value(s.colour), value(s.backColour), value(s.shading);
         value(s.reflectance), value(s.properties), value(s.backProperties), value(s.cull);
-        value(s.distinguishBackFaces);
+        value(s.distinguishBackFaces), value(s.back.style), value(s.back.styleIndex);
+        value(s.back.shading), value(s.back.reflectance);
     }
     void value(const EdgeStyle& e) { value(e.visible), value(e.colour), value(e.type), value(e.width); }
     void value(const TextStyle& t) {
@@ -264,14 +269,14 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
 std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels) {
     Hasher h;
     h.value(item.primitive.index());
-    h.value(item.modelTransform);
+    h.value(item.modelTransform.get());
     std::visit(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
                 h.values(p.points);
                 h.value(p.style);
-                if (p.style.type != LineType::Solid) h.value(worldToPixels);
+                if (p.style->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 h.values(p.points);
                 h.value(p.style);
@@ -282,7 +287,7 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
                 h.value(p.facetNormal);
                 h.value(p.interior);
                 h.value(p.edges);
-                if (p.edges.visible && p.edges.type != LineType::Solid) h.value(worldToPixels);
+                if (p.edges->visible && p.edges->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawText>) {
                 h.bytes(p.text.data(), p.text.size());
                 h.value(p.position);

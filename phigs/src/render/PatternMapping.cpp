@@ -100,19 +100,19 @@ std::optional<PatternMap> patternMap(const PatternPlacement& placement, const gl
 }
 
 std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern& pattern) {
-    const glm::dmat4& model = item.modelTransform;
+    const glm::dmat4& model = item.modelTransform.get();
     if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) {
-        if (fill->interior.style != InteriorStyle::Pattern) return std::nullopt;
+        if (fill->interior->style != InteriorStyle::Pattern) return std::nullopt;
         const std::optional<Plane> plane = fillPlane(*fill, model);
         if (!plane) return std::nullopt;
-        return patternMap(fill->interior.pattern, model, pattern, plane->point, plane->normal);
+        return patternMap(fill->interior->pattern, model, pattern, plane->point, plane->normal);
     }
     if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
-        if (mesh->interior.style != InteriorStyle::Pattern || !mesh->mesh) return std::nullopt;
+        if (mesh->interior->style != InteriorStyle::Pattern || !mesh->mesh) return std::nullopt;
         if (const std::optional<Plane> plane = meshPlane(*mesh->mesh, model))
-            return patternMap(mesh->interior.pattern, model, pattern, plane->point, plane->normal);
+            return patternMap(mesh->interior->pattern, model, pattern, plane->point, plane->normal);
         // A curved surface: its points take the cell of their projection onto the pattern's plane.
-        const PatternPlacement& p = mesh->interior.pattern;
+        const PatternPlacement& p = mesh->interior->pattern;
         const glm::dvec3 origin = apply(model, p.referencePoint);
         const glm::dvec3 normal = glm::cross(apply(model, p.referencePoint + p.vectorX) - origin,
                                              apply(model, p.referencePoint + p.vectorY) - origin);

@@ -5,6 +5,7 @@
 #include "Tessellation.h"
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
+#include "phigs/traverse/StylePool.h"
 #include "phigs/view/RealizedLighting.h"
 
 #include <glm/common.hpp>
@@ -16,6 +17,7 @@
 #include <climits>
 #include <cmath>
 #include <map>
+#include <span>
 #include <unordered_map>
 #include <utility>
 
@@ -199,10 +201,12 @@ struct Traverser::ItemTables {
     std::vector<std::vector<Light>> lightSets;
     std::map<int, std::vector<int>> cueIndices;
     std::vector<DepthCue> depthCues;
+    /// The interned styles of the items (shared with the segments that view them).
+    std::shared_ptr<StylePool> styles = std::make_shared<StylePool>();
 
     /// Past this many entries the tables start again (and so must every cached subtree).
     static constexpr std::size_t kLimit = 4096;
-    bool full() const { return lightSets.size() + depthCues.size() > kLimit; }
+    bool full() const { return lightSets.size() + depthCues.size() > kLimit || styles->size() > 16 * kLimit; }
 
     int lightSet(const std::set<int>& active, std::vector<Light> lights) {
         auto& candidates = lightIndices[active];
@@ -523,6 +527,7 @@ private:
         if (!s) return;
         // What the executes here hand down, made once until an element may change the state.
         std::shared_ptr<const State> child;
+        ++epoch_;  // another state: the styles resolved so far are not its
         for (std::size_t i = 0; i < s->elements.size(); ++i) {
             ++visited;
             const int number = static_cast<int>(i) + 1;
@@ -531,10 +536,15 @@ private:
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
                 path_.pop_back();
+                ++epoch_;
                 continue;
             }
             child.reset();
-            if (!segment_ && mayDraw(s->elements.family(i))) segment_ = newSegment(*s, i);
+            const bool primitive = mayDraw(s->elements.family(i));
+            if (!primitive)
+                ++epoch_;  // the state may change
+            else if (!segment_)
+                segment_ = newSegment(*s, i);
             apply(*s, i, number, state);
         }
     }
@@ -638,6 +648,7 @@ private:
         segment->items.reserve(primitives);
         segment->points.reserve(primitives * 4);
         segment->pathPrefix = path_;
+        segment->styles = itemTables_.styles;
         return segment;
     }
     /// A view of a copy of `points` in the segment being built.
@@ -656,6 +667,59 @@ private:
     void flush() {
         if (segment_ && !segment_->items.empty()) out_.items.appendSegment(std::move(segment_));
         segment_.reset();
+        transform_ = nullptr;
+        clip_ = {};
+    }
+
+    /// The segment's record of the current transform: a new one only when it changed.
+    ItemRef<glm::dmat4> transform(const State& state) {
+        if (!transform_ || *transform_ != state.composite)
+            transform_ = segment_->transforms.add(&state.composite, 1);
+        return ItemRef<glm::dmat4>::view(transform_);
+    }
+    /// The segment's copy of the current model clipping volume, shared by the items it holds for.
+    ItemArray<glm::dvec4> clipPlanes(const State& state) {
+        const std::vector<glm::dvec4>& v = state.clipVolume;
+        if (clip_.size() != v.size() || !std::equal(v.begin(), v.end(), clip_.begin()))
+            clip_ = std::span<const glm::dvec4>(segment_->clipPlanes.add(v.data(), v.size()), v.size());
+        return ItemArray<glm::dvec4>::view(clip_.data(), clip_.size());
+    }
+
+    template <class T>
+    static ItemRef<T> viewOf(const T* record) {
+        return ItemRef<T>::view(record);
+    }
+    ItemRef<LineStyle> intern(const LineStyle& v) { return viewOf(styles_.lines.intern(v)); }
+    ItemRef<MarkerStyle> intern(const MarkerStyle& v) { return viewOf(styles_.markers.intern(v)); }
+    ItemRef<TextStyle> intern(const TextStyle& v) { return viewOf(styles_.texts.intern(v)); }
+    ItemRef<InteriorStyleSet> intern(const InteriorStyleSet& v) {
+        return viewOf(styles_.interiors.intern(v));
+    }
+    ItemRef<EdgeStyle> intern(const EdgeStyle& v) { return viewOf(styles_.edges.intern(v)); }
+
+    /// A style resolved from the state, interned once per state: later items of the same state
+    /// reuse the record without resolving again.
+    template <class T>
+    struct Resolved {
+        std::uint64_t epoch = 0;
+        const T* record = nullptr;
+    };
+    template <class T, class Resolve>
+    ItemRef<T> resolved(Resolved<T>& cached, Resolve resolve) {
+        if (cached.epoch != epoch_) cached = {epoch_, intern(resolve()).operator->()};
+        return viewOf(cached.record);
+    }
+    ItemRef<LineStyle> line(const State& s) {
+        return resolved(line_, [&] { return resolve_.line(s); });
+    }
+    ItemRef<MarkerStyle> marker(const State& s) {
+        return resolved(marker_, [&] { return resolve_.marker(s); });
+    }
+    ItemRef<InteriorStyleSet> interior(const State& s) {
+        return resolved(interior_, [&] { return resolve_.interior(s); });
+    }
+    ItemRef<EdgeStyle> edge(const State& s) {
+        return resolved(edge_, [&] { return resolve_.edge(s); });
     }
 
     template <class Primitive>
@@ -664,7 +728,7 @@ private:
         // Built in place: a draw item is large, and moving it costs as much as filling it.
         DrawItem& item = segment_->items.emplace_back();
         item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
-        item.modelTransform = state.composite;
+        item.modelTransform = transform(state);
         item.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
         item.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
         item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
@@ -674,7 +738,7 @@ private:
         item.source.path = DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
                                            {s.id, number, state.pickId});
         item.source.structureVersion = s.version;
-        if (state.modelClip) item.modelClipPlanes = state.clipVolume;
+        if (state.modelClip) item.modelClipPlanes = clipPlanes(state);
         return &item;
     }
 
@@ -716,11 +780,10 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), resolve_.line(state)});
+                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), line(state)});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
-                        emit(s, number, state,
-                             DrawPolymarker{segmentPoints(e.points), resolve_.marker(state)});
+                        emit(s, number, state, DrawPolymarker{segmentPoints(e.points), marker(state)});
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;
@@ -743,9 +806,9 @@ private:
                     f.vertexNormals = e.vertexNormals;
                     if (e.hasFacetNormal) f.facetNormal = e.facetNormal;
                     fillStyle(f, state);
-                    if (e.hasFacetColour) f.interior.colour = resolve_.rgb(e.facetColour, state);
+                    if (e.hasFacetColour) f.interior = facetColoured(*f.interior, e.facetColour, state);
                     std::vector<std::vector<glm::dvec3>> edges;
-                    const bool edgeData = !e.edgeFlags.empty() && f.edges.visible;
+                    const bool edgeData = !e.edgeFlags.empty() && f.edges->visible;
                     if (edgeData)
                         for (std::size_t c = 0; c < e.contours.size(); ++c)
                             if (e.contours[c].size() >= 2) visibleEdges(e.contours[c], e.edgeFlags[c], edges);
@@ -756,7 +819,7 @@ private:
                     t.position = e.position;
                     t.direction1 = e.direction1;
                     t.direction2 = e.direction2;
-                    t.style = resolve_.text(state, false);
+                    t.style = intern(resolve_.text(state, false));
                     emit(s, number, state, std::move(t));
                 } else if constexpr (std::is_same_v<E, AnnotationTextElement>) {
                     DrawText t;
@@ -764,7 +827,7 @@ private:
                     t.position = e.reference;
                     t.annotation = true;
                     t.annotationOffset = e.offset;
-                    t.style = resolve_.text(state, true);
+                    t.style = intern(resolve_.text(state, true));
                     emit(s, number, state, std::move(t));
                 } else if constexpr (std::is_same_v<E, CellArrayElement>) {
                     // P, Q, R: P and Q opposite corners (2D), or P, Q along the first row, R along
@@ -806,8 +869,7 @@ private:
                         return built;
                     });
                     emit(s, number, state,
-                         DrawMesh{entry.mesh, entry.surface, resolve_.interior(state), resolve_.edge(state),
-                                  resolve_.line(state)});
+                         DrawMesh{entry.mesh, entry.surface, interior(state), edge(state), line(state)});
                 } else if constexpr (std::is_same_v<E, TriangleStripElement>) {
                     if (e.points.size() < 3) return;
                     facetedMesh(s, serial, number, state, e, [&](detail::FacetMeshInput in) {
@@ -893,8 +955,7 @@ private:
             return built;
         });
         emit(s, number, state,
-             DrawCurve{segmentPoints(entry.curvePoints), entry.curve, resolve_.line(state), rangeStart,
-                       rangeEnd});
+             DrawCurve{segmentPoints(entry.curvePoints), entry.curve, line(state), rangeStart, rangeEnd});
     }
 
     // A zero size component, a zero vector or parallel vectors leave the placement as it was:
@@ -911,9 +972,15 @@ private:
         p.vectorY = e.vectorY;
     }
 
-    void fillStyle(DrawFillArea& f, const State& state) const {
-        f.interior = resolve_.interior(state);
-        f.edges = resolve_.edge(state);
+    void fillStyle(DrawFillArea& f, const State& state) {
+        f.interior = interior(state);
+        f.edges = edge(state);
+    }
+    /// `interior` with a facet's own colour.
+    ItemRef<InteriorStyleSet> facetColoured(InteriorStyleSet interior, const Colour& colour,
+                                            const State& state) {
+        interior.colour = resolve_.rgb(colour, state);
+        return intern(interior);
     }
 
     /// A triangle strip or quadrilateral mesh `e` as a mesh: `triangulate` adds its triangles and
@@ -929,8 +996,7 @@ private:
             return detail::facetMesh(triangulate(detail::FacetMeshInput{
                 e.points, vertexColours, e.vertexNormals, facetColours, e.facetNormals, {}, {}}));
         });
-        emit(s, number, state,
-             DrawMesh{mesh, nullptr, resolve_.interior(state), resolve_.edge(state), resolve_.line(state)});
+        emit(s, number, state, DrawMesh{mesh, nullptr, interior(state), edge(state), line(state)});
     }
 
     /// The cache key of a mesh whose colours are resolved at build: they depend on the tables
@@ -995,9 +1061,9 @@ private:
                                  return entry;
                              })
                         .mesh;
-        InteriorStyleSet interior = resolve_.interior(state);
-        interior.style = InteriorStyle::Solid;
-        emit(s, number, state, DrawMesh{mesh, nullptr, interior, EdgeStyle{}, resolve_.line(state)});
+        InteriorStyleSet solid = resolve_.interior(state);
+        solid.style = InteriorStyle::Solid;
+        emit(s, number, state, DrawMesh{mesh, nullptr, intern(solid), intern(EdgeStyle{}), line(state)});
     }
 
     /// POLYLINE SET 3 WITH DATA: a polyline per member; with vertex colours a segment takes the
@@ -1006,12 +1072,12 @@ private:
     /// interpolated along each segment (shadedSegment).
     void polylineSet(const Structure& s, int number, const State& state,
                      const PolylineSetWithDataElement& e) {
-        const LineStyle style = resolve_.line(state);
+        const ItemRef<LineStyle> style = line(state);
         if (!e.vertexColours.empty() && resolve_.lineShaded(state)) {
             for (std::size_t i = 0; i < e.polylines.size(); ++i) {
                 const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
                 for (std::size_t j = 0; j + 1 < e.polylines[i].size(); ++j)
-                    shadedSegment(s, number, state, style, {e.polylines[i][j], e.polylines[i][j + 1]},
+                    shadedSegment(s, number, state, *style, {e.polylines[i][j], e.polylines[i][j + 1]},
                                   {colours[j], colours[j + 1]});
             }
             return;
@@ -1027,13 +1093,13 @@ private:
             for (std::size_t start = 0; start + 1 < points.size();) {
                 std::size_t end = start + 1;
                 while (end + 1 < points.size() && colours[end] == colours[start]) ++end;
-                LineStyle run = style;
+                LineStyle run = *style;
                 run.colour = colours[start];
                 emit(s, number, state,
                      DrawPolyline{segmentPoints(std::vector<glm::dvec3>(
                                       points.begin() + static_cast<std::ptrdiff_t>(start),
                                       points.begin() + static_cast<std::ptrdiff_t>(end) + 1)),
-                                  run});
+                                  intern(run)});
                 start = end;
             }
         }
@@ -1063,7 +1129,7 @@ private:
                           const SetOfFillAreaSetsElement& e, std::size_t k) {
         DrawFillArea f;
         fillStyle(f, state);
-        const bool edgeData = !e.edgeFlags.empty() && f.edges.visible;
+        const bool edgeData = !e.edgeFlags.empty() && f.edges->visible;
         std::vector<std::vector<glm::dvec3>> edges;
         for (std::size_t c = 0; c < e.sets[k].size(); ++c) {
             const std::vector<int>& contour = e.sets[k][c];
@@ -1083,7 +1149,7 @@ private:
             if (!normals.empty()) f.vertexNormals.push_back(std::move(normals));
         }
         if (f.contours.empty()) return;
-        if (!e.facetColours.empty()) f.interior.colour = resolve_.rgb(e.facetColours[k], state);
+        if (!e.facetColours.empty()) f.interior = facetColoured(*f.interior, e.facetColours[k], state);
         if (!e.facetNormals.empty()) f.facetNormal = e.facetNormals[k];
         emitWithEdges(s, number, state, std::move(f), edgeData, edges);
     }
@@ -1092,12 +1158,13 @@ private:
     /// is on (`edges`, open polylines) follow as polylines in its edge style.
     void emitWithEdges(const Structure& s, int number, const State& state, DrawFillArea&& f, bool edgeData,
                        const std::vector<std::vector<glm::dvec3>>& edges) {
-        const EdgeStyle edgeStyle = f.edges;
-        if (edgeData) f.edges.visible = false;
+        const EdgeStyle edgeStyle = *f.edges;
+        if (edgeData) f.edges = intern(EdgeStyle{false, edgeStyle.colour, edgeStyle.type, edgeStyle.width});
         emit(s, number, state, std::move(f));
         for (const auto& line : edges)
             emit(s, number, state,
-                 DrawPolyline{segmentPoints(line), {edgeStyle.colour, edgeStyle.type, edgeStyle.width}});
+                 DrawPolyline{segmentPoints(line),
+                              intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width})});
     }
 
     /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from
@@ -1138,6 +1205,14 @@ private:
     Traverser::ItemTables& itemTables_;
     std::uint64_t baseStamp_;
     std::shared_ptr<DrawSegment> segment_;  ///< the segment being built
+    StylePool& styles_ = *itemTables_.styles;
+    std::uint64_t epoch_ = 1;  ///< changes whenever the state may have changed
+    Resolved<LineStyle> line_;
+    Resolved<MarkerStyle> marker_;
+    Resolved<InteriorStyleSet> interior_;
+    Resolved<EdgeStyle> edge_;
+    const glm::dmat4* transform_ = nullptr;  ///< the segment's record of the last transform
+    std::span<const glm::dvec4> clip_;       ///< the segment's copy of the last clipping volume
 };
 
 }  // namespace

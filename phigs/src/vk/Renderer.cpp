@@ -561,7 +561,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!mesh->mesh) continue;
             CachedMesh& cached = compileMesh(mesh->mesh);
             if (!cached.vertices) continue;
-            base.model = toFloat(item.modelTransform);
+            base.model = toFloat(item.modelTransform.get());
             base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
             const InteriorStyleSet& s = mesh->interior;
             render::GeometryPart part;
@@ -585,20 +585,20 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 render::GeometryPart iso;
                 iso.lines = true;
                 iso.role = render::PartRole::IsoLine;
-                iso.colour = mesh->isoLineStyle.colour;
-                iso.lineType = mesh->isoLineStyle.type;
-                iso.lineWidth = mesh->isoLineStyle.width;
+                iso.colour = mesh->isoLineStyle->colour;
+                iso.lineType = mesh->isoLineStyle->type;
+                iso.lineWidth = mesh->isoLineStyle->width;
                 iso.first = cached.counts.triangleCount;
                 iso.count = cached.counts.isoLineCount;
                 iso.patternInModelUnits = true;
                 addPart(iso, nullptr, false, cached.vertices->handle(), cached.indices->handle());
             }
-            if (mesh->edges.visible && cached.counts.edgeCount) {
+            if (mesh->edges->visible && cached.counts.edgeCount) {
                 render::GeometryPart edge;
                 edge.lines = true;
                 edge.role = render::PartRole::Edge;
-                edge.colour = mesh->edges.colour;
-                edge.lineWidth = mesh->edges.width;
+                edge.colour = mesh->edges->colour;
+                edge.lineWidth = mesh->edges->width;
                 edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
                 edge.count = cached.counts.edgeCount;
                 addPart(edge, nullptr, false, cached.vertices->handle(), cached.indices->handle());
@@ -623,7 +623,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         it->second.lastUsed = frameNumber_;
         if (!it->second.vertices) continue;
         const InteriorStyleSet* interior = nullptr;
-        if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
+        if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
         for (const auto& part : it->second.parts)
             addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
     }
@@ -648,8 +648,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
 
 bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, gpu::DrawParams& d) {
     const InteriorStyleSet* interior = nullptr;
-    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior;
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior;
+    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
+    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior.get();
     if (!interior) return false;
     // No pattern defined at all, or a pattern box with no area on the primitive: drawn solid.
     const DrawPattern* pattern = render::findPattern(list, interior->styleIndex);

@@ -25,15 +25,17 @@ void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const Works
 
     DrawFillArea box;
     box.contours = {corners};
-    box.interior.style = InteriorStyle::Solid;
-    box.interior.colour = glm::vec3(style.box);
+    InteriorStyleSet boxInterior;
+    boxInterior.style = InteriorStyle::Solid;
+    boxInterior.colour = glm::vec3(style.box);
+    box.interior = boxInterior;
     picture.items.push_back(echoItem(std::move(box)));
 
     DrawPolyline outline;
     std::vector<glm::dvec3> closed = corners;
     closed.push_back(corners.front());
     outline.points = closed;
-    outline.style.colour = glm::vec3(style.outline);
+    outline.style = LineStyle{glm::vec3(style.outline)};
     picture.items.push_back(echoItem(std::move(outline)));
 
     // Cap height 45 % of the area, from a quarter of that height in from the left edge.
@@ -41,10 +43,12 @@ void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const Works
     DrawText text;
     text.text = echo.shown();
     text.position = {lo.x + height * 0.25 + mapping.npcLength(2.0), (lo.y + hi.y) * 0.5, z};
-    text.style.colour = glm::vec3(echo.cancelled ? style.current : style.text);
-    text.style.height = height;
-    text.style.horizontal = HorizontalAlignment::Left;
-    text.style.vertical = VerticalAlignment::Half;
+    TextStyle textStyle;
+    textStyle.colour = glm::vec3(echo.cancelled ? style.current : style.text);
+    textStyle.height = height;
+    textStyle.horizontal = HorizontalAlignment::Left;
+    textStyle.vertical = VerticalAlignment::Half;
+    text.style = textStyle;
     picture.items.push_back(echoItem(std::move(text)));
 }
 

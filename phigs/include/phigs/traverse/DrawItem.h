@@ -5,6 +5,7 @@
 #include "phigs/core/Attributes.h"
 #include "phigs/traverse/DrawPath.h"
 #include "phigs/traverse/ItemArray.h"
+#include "phigs/traverse/ItemRef.h"
 
 #include "geom/Curve.h"
 #include "geom/Surface.h"
@@ -32,13 +33,13 @@ struct DrawSource {
 /// A polyline: one connected strip of points in modelling coordinates.
 struct DrawPolyline {
     ItemArray<glm::dvec3> points;
-    LineStyle style;
+    ItemRef<LineStyle> style;
 };
 
 /// A set of markers at points in modelling coordinates.
 struct DrawPolymarker {
     ItemArray<glm::dvec3> points;
-    MarkerStyle style;
+    ItemRef<MarkerStyle> style;
 };
 
 /// A planar fill area set: one or more closed contours (the first is the outer boundary, the
@@ -48,8 +49,8 @@ struct DrawFillArea {
     std::vector<std::vector<glm::vec3>> vertexColours;   ///< empty, or one per vertex of each contour
     std::vector<std::vector<glm::dvec3>> vertexNormals;  ///< empty, or one per vertex of each contour
     glm::dvec3 facetNormal{0.0};                         ///< (0,0,0): derive from the contour
-    InteriorStyleSet interior;
-    EdgeStyle edges;
+    ItemRef<InteriorStyleSet> interior;
+    ItemRef<EdgeStyle> edges;
 };
 
 /// Text at a point on a plane given by two direction vectors (PHIGS TEXT 3), or annotation
@@ -61,7 +62,7 @@ struct DrawText {
     glm::dvec3 direction2{0, 1, 0};  ///< text plane y axis
     bool annotation = false;
     glm::dvec3 annotationOffset{0.0};  ///< NPC offset of the text from the reference point
-    TextStyle style;
+    ItemRef<TextStyle> style;
 };
 
 /// A triangle mesh: what NURBS surfaces, triangle strips, quadrilateral meshes and fill area sets
@@ -82,9 +83,9 @@ struct MeshData {
 struct DrawMesh {
     std::shared_ptr<const MeshData> mesh;
     std::shared_ptr<const geom::Surface> surface;  ///< the exact surface, or null
-    InteriorStyleSet interior;
-    EdgeStyle edges;
-    LineStyle isoLineStyle;
+    ItemRef<InteriorStyleSet> interior;
+    ItemRef<EdgeStyle> edges;
+    ItemRef<LineStyle> isoLineStyle;
 };
 
 /// A B-spline curve already tessellated into a polyline; `curve` keeps the exact form and the
@@ -92,26 +93,35 @@ struct DrawMesh {
 struct DrawCurve {
     ItemArray<glm::dvec3> points;
     std::shared_ptr<const geom::Curve> curve;
-    LineStyle style;
+    ItemRef<LineStyle> style;
     double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
 };
 
 /// The closed family of primitives a draw list holds.
 using DrawPrimitive = std::variant<DrawPolyline, DrawPolymarker, DrawFillArea, DrawText, DrawMesh, DrawCurve>;
 
-/// One primitive with everything a consumer needs to draw or pick it.
+/// The identity transform, shared by the items that have no modelling transform of their own.
+inline const glm::dmat4& identityTransform() {
+    static const glm::dmat4 identity(1.0);
+    return identity;
+}
+
+/// One primitive with everything a consumer needs to draw or pick it. The transform and the
+/// styles are views of records shared by many items (one transform per run of items of a
+/// segment, one interned record per distinct style); assigning a value gives an item its own.
 struct DrawItem {
     DrawPrimitive primitive;
-    glm::dmat4 modelTransform{1.0};  ///< composite modelling transform (global * local), to world
-    int viewIndex = 0;               ///< index into DrawList::views
+    /// Composite modelling transform (global * local), to world.
+    ItemRef<glm::dmat4> modelTransform = ItemRef<glm::dmat4>::view(&identityTransform());
+    std::int32_t viewIndex = 0;  ///< index into DrawList::views
+    std::int32_t lightSet = -1;  ///< index into DrawList::lightSets, -1: no lights
+    std::int32_t depthCue = -1;  ///< index into DrawList::depthCues, -1: none
     bool highlighted = false;
     bool pickable = true;  ///< false when the pick filter or detectability excludes it
-    int lightSet = -1;     ///< index into DrawList::lightSets, -1: no lights
-    int depthCue = -1;     ///< index into DrawList::depthCues, -1: none
     DrawSource source;
     /// Model clipping volume in world coordinates: keep x where dot(plane.xyz, x) + plane.w >= 0
     /// for every plane; empty when the model clipping indicator is off.
-    std::vector<glm::dvec4> modelClipPlanes;
+    ItemArray<glm::dvec4> modelClipPlanes;
 };
 
 }  // namespace phigs

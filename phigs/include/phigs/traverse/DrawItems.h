@@ -8,6 +8,7 @@
 
 #include "phigs/traverse/BlockPool.h"
 #include "phigs/traverse/DrawItem.h"
+#include "phigs/traverse/StylePool.h"
 
 #include <cstddef>
 #include <initializer_list>
@@ -18,12 +19,16 @@
 namespace phigs {
 
 /// Consecutive draw items produced together (one structure's elements between two executes),
-/// with the storage their views refer to (points, the path above the structure). A copy copies
-/// the items only: each copied item holds its own values.
+/// with the storage their views refer to (points, transforms, clipping volumes, the path above
+/// the structure, the interned styles). A copy copies the items only: each copied item holds
+/// its own values.
 struct DrawSegment {
     std::vector<DrawItem> items;
-    BlockPool<glm::dvec3> points;           ///< what the items' point views show
-    std::vector<DrawPathLevel> pathPrefix;  ///< the levels above the items' own (set before any item)
+    BlockPool<glm::dvec3> points;             ///< what the items' point views show
+    BlockPool<glm::dmat4> transforms;         ///< one per run of items that share a transform
+    BlockPool<glm::dvec4> clipPlanes;         ///< one volume per run of items that share it
+    std::vector<DrawPathLevel> pathPrefix;    ///< the levels above the items' own (set before any item)
+    std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
 
     DrawSegment() = default;
     DrawSegment(const DrawSegment& other) : items(other.items) {}

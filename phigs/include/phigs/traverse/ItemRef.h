@@ -1,0 +1,63 @@
+#pragma once
+
+#include <cstdint>
+#include <utility>
+
+namespace phigs {
+
+/// One read-only value of a draw item: a view of a record shared by many items (a segment's
+/// transform, an interned style; what traversal makes), or a copy of its own (any other
+/// construction, and every copy). One pointer wide: the low bit says whether it owns.
+template <class T>
+class ItemRef {
+    static_assert(alignof(T) >= 2, "the low bit of the pointer tells an owned copy");
+
+public:
+    /// A view of one default value, shared by every default reference.
+    ItemRef() : bits_(reinterpret_cast<std::uintptr_t>(&defaultValue())) {}
+    ItemRef(const T& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(value)) | 1u) {}  // NOLINT
+    /// A view of `record`, which must outlive it (segment storage, an interned style).
+    static ItemRef view(const T* record) {
+        ItemRef r(Empty{});
+        r.bits_ = reinterpret_cast<std::uintptr_t>(record);
+        return r;
+    }
+    ItemRef(const ItemRef& other) : ItemRef(other.get()) {}
+    ItemRef(ItemRef&& other) noexcept : bits_(std::exchange(other.bits_, 0)) {}
+    ItemRef& operator=(ItemRef other) noexcept {
+        std::swap(bits_, other.bits_);
+        return *this;
+    }
+    ~ItemRef() {
+        if (owned()) delete ptr();
+    }
+
+    const T& get() const { return *ptr(); }
+    const T& operator*() const { return *ptr(); }
+    const T* operator->() const { return ptr(); }
+    operator const T&() const { return *ptr(); }  // NOLINT: reads as the value
+    /// The value to change in place: a view becomes a copy of its own first.
+    T& edit() {
+        if (!owned()) *this = ItemRef(get());
+        return *const_cast<T*>(ptr());
+    }
+    /// Whether this holds its own copy (false: a view of shared storage).
+    bool owned() const { return (bits_ & 1u) != 0; }
+    /// Whether two references show the same record (views of one interned style do).
+    bool sameRecord(const ItemRef& other) const { return ptr() == other.ptr(); }
+
+    friend bool operator==(const ItemRef& a, const ItemRef& b) { return a.get() == b.get(); }
+
+private:
+    static const T& defaultValue() {
+        static const T value{};
+        return value;
+    }
+    struct Empty {};
+    explicit ItemRef(Empty) {}
+    const T* ptr() const { return reinterpret_cast<const T*>(bits_ & ~std::uintptr_t{1}); }
+
+    std::uintptr_t bits_ = 0;
+};
+
+}  // namespace phigs
