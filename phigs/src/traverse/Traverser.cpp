@@ -621,7 +621,7 @@ private:
         return segment;
     }
     /// A view of a copy of `points` in the segment being built.
-    ItemArray<glm::dvec3> segmentPoints(const std::vector<glm::dvec3>& points) const {
+    ItemArray<glm::dvec3> segmentPoints(std::span<const glm::dvec3> points) const {
         return ItemArray<glm::dvec3>::view(segment_->points.add(points.data(), points.size()), points.size());
     }
     static bool mayDraw(std::size_t family) {
@@ -704,7 +704,7 @@ private:
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;
-                        f.contours = {e.points};
+                        f.contours = {e.points.toVector()};
                         fillStyle(f, state);
                         emit(s, number, state, std::move(f));
                     }
