@@ -59,6 +59,10 @@ constexpr std::size_t alignUp(std::size_t offset, std::size_t align) {
 
 /// Arenas keep 32-bit places: at most 4 GiB of payload records per structure.
 constexpr std::size_t kArenaLimit = std::numeric_limits<std::uint32_t>::max() / 2;
+/// The room a growing arena and pool take at least: few relocations while a structure is built;
+/// settle() gives what stays unused back.
+constexpr std::size_t kFirstBytes = 4096, kFirstPoints = 256;
+
 /// Pools keep 32-bit places too.
 constexpr std::size_t kPoolLimit = std::numeric_limits<std::uint32_t>::max() / 2;
 
@@ -116,7 +120,7 @@ void ElementArena::relocate(std::size_t extra, bool exact) {
     std::size_t live = 0;  // the payloads packed in element order, with their padding
     for (const Slot& s : slots_) live = alignUp(live, kFamilies[s.family].align) + kFamilies[s.family].size;
     const std::size_t wanted =
-        exact ? std::max<std::size_t>(live, 1) : std::max<std::size_t>(512, (live + extra) * 2);
+        exact ? std::max<std::size_t>(live, 1) : std::max<std::size_t>(kFirstBytes, (live + extra) * 2);
     if (live + extra > kArenaLimit)
         throw std::length_error("ElementArena: a structure's element records exceed 2 GiB");
     const std::size_t capacity = std::min(wanted, kArenaLimit);
@@ -160,7 +164,7 @@ void ElementArena::repool(std::size_t extra, bool exact) {
     const std::size_t live = pointsUsed_ - pointsDead_;
     if (live + extra > kPoolLimit) throw std::length_error("ElementArena: a structure's points exceed 2^31");
     const std::size_t capacity =
-        exact ? live : std::min(std::max<std::size_t>(64, (live + extra) * 2), kPoolLimit);
+        exact ? live : std::min(std::max<std::size_t>(kFirstPoints, (live + extra) * 2), kPoolLimit);
     auto fresh = capacity ? std::make_unique_for_overwrite<glm::dvec3[]>(capacity) : nullptr;
     std::uint32_t at = 0;
     for (const Slot& s : slots_)
@@ -228,7 +232,12 @@ void ElementArena::erase(std::size_t first, std::size_t last) {
 }
 
 void ElementArena::settle() {
-    if (slots_.empty() || slots_.size() < 2 * settled_) return;
+    // Doubled since the last settle (amortized), or holding the first room mostly unused (a
+    // bounded copy): a small structure edited once does not keep its first room.
+    const bool doubled = slots_.size() >= 2 * settled_;
+    const bool sparse = (capacity_ >= kFirstBytes && used_ < capacity_ / 4) ||
+                        (pointsCapacity_ >= kFirstPoints && pointsUsed_ < pointsCapacity_ / 4);
+    if (slots_.empty() || !(doubled || sparse)) return;
     relocate(0, true);
     repool(0, true);
     slots_.shrink_to_fit();
