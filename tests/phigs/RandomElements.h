@@ -22,6 +22,11 @@ inline std::vector<glm::dvec3> randomPoints(std::mt19937& rng, int n) {
     for (int i = 0; i < n; ++i) p.push_back(randomPoint(rng));
     return p;
 }
+/// A point list's length: empty often, a few points mostly, now and then hundreds.
+inline int randomPointCount(std::mt19937& rng) {
+    const int kind = randomInt(rng, 0, 15);
+    return kind < 2 ? 0 : kind < 15 ? randomInt(rng, 1, 6) : randomInt(rng, 100, 400);
+}
 inline Colour randomColour(std::mt19937& rng) {
     if (randomInt(rng, 0, 1)) return Colour::indexed(randomInt(rng, 0, 20));
     return Colour::fromRgb({randomInt(rng, 0, 10) / 10.0, 0.25, 1.0 / 3.0});
@@ -69,11 +74,11 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
     bool twoD = randomInt(rng, 0, 1) == 1;
     switch (randomInt(rng, 0, 31)) {
         case 0:
-            return PolylineElement{randomPoints(rng, randomInt(rng, 0, 5)), twoD};
+            return PolylineElement{randomPoints(rng, randomPointCount(rng)), twoD};
         case 1:
-            return PolymarkerElement{randomPoints(rng, randomInt(rng, 0, 5)), twoD};
+            return PolymarkerElement{randomPoints(rng, randomPointCount(rng)), twoD};
         case 2:
-            return FillAreaElement{randomPoints(rng, 3), twoD};
+            return FillAreaElement{randomPoints(rng, randomPointCount(rng)), twoD};
         case 3:
             return FillAreaSetElement{{randomPoints(rng, 4), randomPoints(rng, 3)}, twoD};
         case 4:

@@ -2,10 +2,12 @@
 // values with their serials. Random edit sequences (inserts anywhere, replaces by the same or
 // another payload family, deleted ranges, clears, moves between arenas) of elements of every
 // payload family; after every operation every element, serial, family and type must agree and
-// the arena's layout must be consistent (no overlap, aligned, bytes accounted for). Long runs
-// grow and compact the arena many times. And through the store: random editing (insert and
-// replace mode, pointer moves, labels, deleted ranges, copies of whole structures) against a
-// vector model of the structures, checking contents, pointer and serials after every operation.
+// the arena's layout must be consistent (no overlap, aligned, bytes accounted for; every stored
+// point list a view of the pool, none overlapping, points accounted for). Point lists are empty,
+// short or hundreds long. Long runs grow and compact the arena and its point pool many times. And through the
+// store: random editing (insert and replace mode, pointer moves, labels, deleted ranges, copies of whole
+// structures) against a vector model of the structures, checking contents, pointer and serials after every
+// operation.
 
 #include "RandomElements.h"
 #include "phigs/store/ElementArena.h"
@@ -128,14 +130,15 @@ TEST_CASE("element arena: random edits agree with a vector of elements", "[store
         ElementArena arena, other;
         std::vector<Reference> reference, otherReference;
         std::uint64_t serial = 0;
-        std::size_t largest = 0, relocations = 0;
+        std::size_t largest = 0, relocations = 0, repools = 0;
         // Small arenas first (every edit checked against the whole reference), then large ones
         // that grow and compact the arena many times.
         for (int op = 0; op < 8000; ++op) {
-            const std::size_t deadBefore = arena.deadBytes();
+            const std::size_t deadBefore = arena.deadBytes(), poolDeadBefore = arena.poolDead();
             edit(rng, arena, reference, other, otherReference, serial, op >= 4000);
             largest = std::max(largest, reference.size());
             relocations += arena.deadBytes() < deadBefore && !arena.empty();
+            repools += arena.poolDead() < poolDeadBefore && !arena.empty();
             std::string broken = difference(arena, reference);
             if (broken.empty()) broken = difference(other, otherReference);
             INFO("seed " << seed << ", operation " << op);
@@ -144,7 +147,47 @@ TEST_CASE("element arena: random edits agree with a vector of elements", "[store
         // The runs reach sizes that grow the arena many times, and compact it.
         CHECK(largest > 200);
         CHECK(relocations > 10);
+        CHECK(repools > 10);
     }
+}
+
+TEST_CASE("element arena: point lists live in the pool, reused and compacted", "[store][random]") {
+    std::mt19937 rng(7);
+    ElementArena arena;
+    std::vector<Reference> reference;
+    std::uint64_t serial = 0;
+    auto polyline = [&](int count) { return PolylineElement{testing::randomPoints(rng, count), false}; };
+    for (int i = 0; i < 3000; ++i) {
+        Element e = polyline(testing::randomPointCount(rng));
+        reference.push_back({e, ++serial});
+        arena.insert(arena.size(), std::move(e), serial);
+    }
+    REQUIRE(difference(arena, reference) == "");
+    // Stored lists view the pool; a copy out of the arena owns its points.
+    const auto* stored = arena.get<PolylineElement>(0);
+    CHECK_FALSE(stored->points.ownsPoints());
+    CHECK(std::get<PolylineElement>(arena.element(0)).points.ownsPoints() == !stored->points.empty());
+    // Replacing lists by the same family with other lengths, then deleting most: the pool's
+    // dead points are counted, and it is compacted to the live ones.
+    for (int i = 0; i < 3000; i += 2) {
+        Element e = polyline(randomInt(rng, 0, 1) ? 0 : randomInt(rng, 1, 50));
+        reference[static_cast<std::size_t>(i)] = {e, ++serial};
+        arena.replace(static_cast<std::size_t>(i), std::move(e), serial);
+        INFO("replacement " << i);
+        REQUIRE(arena.checkLayout() == "");
+    }
+    REQUIRE(difference(arena, reference) == "");
+    const std::size_t pooled = arena.poolCapacity();
+    reference.erase(reference.begin() + 100, reference.end());
+    arena.erase(100, arena.size());
+    REQUIRE(difference(arena, reference) == "");
+    CHECK(arena.poolCapacity() < pooled / 4);
+    CHECK(arena.poolDead() == 0);
+    // A list longer than the whole pool grows it in one step.
+    Element big = polyline(100000);
+    reference.insert(reference.begin() + 50, {big, ++serial});
+    arena.insert(50, std::move(big), serial);
+    REQUIRE(difference(arena, reference) == "");
 }
 
 TEST_CASE("element arena: deletions give the space back", "[store]") {

@@ -213,8 +213,8 @@ private:
         } else if (searching_) {
             std::vector<glm::dvec3> points;
             bool line = false;
-            if (const auto* l = std::get_if<PolylineElement>(&e)) points = l->points, line = true;
-            if (const auto* mk = std::get_if<PolymarkerElement>(&e)) points = mk->points;
+            if (const auto* l = std::get_if<PolylineElement>(&e)) points = l->points.toVector(), line = true;
+            if (const auto* mk = std::get_if<PolymarkerElement>(&e)) points = mk->points.toVector();
             double best = 1e300;
             const std::vector<glm::dvec4> none;
             const auto& planes = q_.modelClip && s.clip ? s.planes : none;

@@ -3,6 +3,7 @@
 #include "Conversions.h"
 
 #include <algorithm>
+#include <span>
 #include <type_traits>
 
 namespace phigs::c {
@@ -42,7 +43,7 @@ void pointLists(const std::vector<std::vector<glm::dvec3>>& contours, bool twoD,
         s.data.point_list_list3 = {static_cast<Pint>(s.lists3.size()), s.lists3.data()};
 }
 
-void pointList(const std::vector<glm::dvec3>& points, bool twoD, Phigs_store& s) {
+void pointList(std::span<const glm::dvec3> points, bool twoD, Phigs_store& s) {
     for (const auto& v : points) twoD ? s.points.push_back(p2(v)) : s.points3.push_back(p3(v));
     if (twoD)
         s.data.point_list = {static_cast<Pint>(s.points.size()), s.points.data()};

@@ -74,6 +74,10 @@ struct Writer {
         (*this)(list.size());
         for (const T& item : list) (*this)(item);
     }
+    void operator()(const PointList& list) {
+        (*this)(list.size());
+        for (const glm::dvec3& p : list) (*this)(p);
+    }
 };
 
 // ---- the fewest bytes of text one value of a field type takes, with the white space before it.
@@ -105,6 +109,10 @@ struct MinText<Colour> {
 };
 template <class T>
 struct MinText<std::vector<T>> {
+    static constexpr std::size_t value = 2;
+};
+template <>
+struct MinText<PointList> {
     static constexpr std::size_t value = 2;
 };
 template <class A, class B>
@@ -261,6 +269,11 @@ struct Reader {
         list.clear();
         list.reserve(std::min(n, kReserveItems));
         for (std::size_t i = 0; i < n; ++i) (*this)(list.emplace_back());
+    }
+    void operator()(PointList& list) {
+        std::vector<glm::dvec3> points;
+        (*this)(points);
+        list = PointList(points);
     }
 };
 

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <span>
 #include <type_traits>
 
 namespace phigs {
@@ -133,7 +134,7 @@ bool finite(const glm::dvec3& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
-std::string checkPoints(const std::vector<glm::dvec3>& points, std::size_t minimum, const char* what) {
+std::string checkPoints(std::span<const glm::dvec3> points, std::size_t minimum, const char* what) {
     if (points.size() < minimum)
         return std::string(what) + " needs at least " + std::to_string(minimum) + " points, has " +
                std::to_string(points.size());
@@ -178,6 +179,9 @@ struct FiniteCheck {
     template <class T>
     void operator()(const std::vector<T>& list) {
         for (const T& item : list) (*this)(item);
+    }
+    void operator()(const PointList& list) {
+        for (const glm::dvec3& p : list) (*this)(p);
     }
     template <class T>
     void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces

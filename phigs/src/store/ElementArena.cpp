@@ -15,7 +15,16 @@ struct FamilyOps {
     std::uint32_t size = 0, align = 0;
     void (*moveTo)(std::byte* from, std::byte* to) = nullptr;  ///< move-constructs at `to`, destroys `from`
     void (*destroy)(std::byte* at) = nullptr;
+    PointList* (*points)(std::byte* at) = nullptr;  ///< the payload's point list; null: none
 };
+
+template <class T>
+auto pointsOfPayload() -> PointList* (*)(std::byte*) {
+    if constexpr (PooledPoints<T>)
+        return [](std::byte* at) { return &std::launder(reinterpret_cast<T*>(at))->points; };
+    else
+        return nullptr;
+}
 
 template <class T>
 FamilyOps opsOf() {
@@ -26,7 +35,7 @@ FamilyOps opsOf() {
                 ::new (static_cast<void*>(to)) T(std::move(*source));
                 source->~T();
             },
-            [](std::byte* at) { std::launder(reinterpret_cast<T*>(at))->~T(); }};
+            [](std::byte* at) { std::launder(reinterpret_cast<T*>(at))->~T(); }, pointsOfPayload<T>()};
 }
 
 template <std::size_t... I>
@@ -44,12 +53,30 @@ constexpr std::size_t maxAlignOf(const std::variant<T...>*) {
 /// The arena's own alignment: that of the most aligned payload.
 constexpr std::align_val_t kArenaAlign{maxAlignOf(static_cast<const Element*>(nullptr))};
 
-constexpr std::uint32_t alignUp(std::uint32_t offset, std::uint32_t align) {
+constexpr std::size_t alignUp(std::size_t offset, std::size_t align) {
     return (offset + align - 1) / align * align;
 }
 
 /// Arenas keep 32-bit places: at most 4 GiB of payload records per structure.
 constexpr std::size_t kArenaLimit = std::numeric_limits<std::uint32_t>::max() / 2;
+/// The room a growing arena and pool take at least: few relocations while a structure is built;
+/// settle() gives what stays unused back.
+constexpr std::size_t kFirstBytes = 4096, kFirstPoints = 256;
+
+/// Pools keep 32-bit places too.
+constexpr std::size_t kPoolLimit = std::numeric_limits<std::uint32_t>::max() / 2;
+
+/// The point list of an element value, or nullptr when its payload has none.
+PointList* pointsOf(Element& e) {
+    return std::visit(
+        [](auto& payload) -> PointList* {
+            if constexpr (PooledPoints<std::decay_t<decltype(payload)>>)
+                return &payload.points;
+            else
+                return nullptr;
+        },
+        e);
+}
 
 }  // namespace
 
@@ -69,10 +96,14 @@ ElementType ElementArena::type(std::size_t i) const {
 
 std::uint32_t ElementArena::emplace(Element&& e) {
     const FamilyOps& ops = kFamilies[e.index()];
-    std::uint32_t at = alignUp(used_, ops.align);
+    auto at = static_cast<std::uint32_t>(alignUp(used_, ops.align));
     if (static_cast<std::size_t>(at) + ops.size > capacity_) {
         relocate(ops.size + ops.align);
-        at = alignUp(used_, ops.align);
+        at = static_cast<std::uint32_t>(alignUp(used_, ops.align));
+    }
+    if (PointList* list = pointsOf(e)) {
+        reservePoints(list->size());
+        pool(*list);
     }
     std::visit(
         [&](auto& payload) {
@@ -85,9 +116,11 @@ std::uint32_t ElementArena::emplace(Element&& e) {
     return at;
 }
 
-void ElementArena::relocate(std::size_t extra) {
-    const std::size_t live = used_ - dead_;
-    const std::size_t wanted = std::max<std::size_t>(256, (live + extra) * 3 / 2);
+void ElementArena::relocate(std::size_t extra, bool exact) {
+    std::size_t live = 0;  // the payloads packed in element order, with their padding
+    for (const Slot& s : slots_) live = alignUp(live, kFamilies[s.family].align) + kFamilies[s.family].size;
+    const std::size_t wanted =
+        exact ? std::max<std::size_t>(live, 1) : std::max<std::size_t>(kFirstBytes, (live + extra) * 2);
     if (live + extra > kArenaLimit)
         throw std::length_error("ElementArena: a structure's element records exceed 2 GiB");
     const std::size_t capacity = std::min(wanted, kArenaLimit);
@@ -95,8 +128,9 @@ void ElementArena::relocate(std::size_t extra) {
     std::uint32_t at = 0, padding = 0;
     for (Slot& s : slots_) {
         const FamilyOps& ops = kFamilies[s.family];
-        padding += alignUp(at, ops.align) - at;
-        at = alignUp(at, ops.align);
+        const auto aligned = static_cast<std::uint32_t>(alignUp(at, ops.align));
+        padding += aligned - at;
+        at = aligned;
         ops.moveTo(data_ + s.offset, fresh + at);
         s.offset = at;
         at += ops.size;
@@ -108,8 +142,47 @@ void ElementArena::relocate(std::size_t extra) {
     dead_ = padding;
 }
 
+PointList* ElementArena::pointsAt(std::uint32_t family, std::uint32_t offset) const {
+    const FamilyOps& ops = kFamilies[family];
+    return ops.points ? ops.points(data_ + offset) : nullptr;
+}
+
+void ElementArena::reservePoints(std::size_t count) {
+    if (pointsUsed_ + count > pointsCapacity_) repool(count);
+}
+
+void ElementArena::pool(PointList& list) noexcept {
+    const auto count = static_cast<std::uint32_t>(list.size());
+    if (count == 0) return list.view(nullptr, 0);
+    glm::dvec3* at = points_ + pointsUsed_;
+    std::copy(list.begin(), list.end(), at);
+    list.view(at, count);
+    pointsUsed_ += count;
+}
+
+void ElementArena::repool(std::size_t extra, bool exact) {
+    const std::size_t live = pointsUsed_ - pointsDead_;
+    if (live + extra > kPoolLimit) throw std::length_error("ElementArena: a structure's points exceed 2^31");
+    const std::size_t capacity =
+        exact ? live : std::min(std::max<std::size_t>(kFirstPoints, (live + extra) * 2), kPoolLimit);
+    auto fresh = capacity ? std::make_unique_for_overwrite<glm::dvec3[]>(capacity) : nullptr;
+    std::uint32_t at = 0;
+    for (const Slot& s : slots_)
+        if (PointList* list = pointsAt(s.family, s.offset); list && !list->empty()) {
+            std::copy(list->begin(), list->end(), fresh.get() + at);
+            list->view(fresh.get() + at, static_cast<std::uint32_t>(list->size()));
+            at += static_cast<std::uint32_t>(list->size());
+        }
+    delete[] points_;
+    points_ = fresh.release();
+    pointsCapacity_ = static_cast<std::uint32_t>(capacity);
+    pointsUsed_ = at;
+    pointsDead_ = 0;
+}
+
 void ElementArena::destroy(const Slot& s) {
     const FamilyOps& ops = kFamilies[s.family];
+    if (ops.points) pointsDead_ += static_cast<std::uint32_t>(ops.points(data_ + s.offset)->size());
     ops.destroy(data_ + s.offset);
     dead_ += ops.size;
 }
@@ -126,6 +199,11 @@ void ElementArena::replace(std::size_t at, Element&& e, std::uint64_t serial) {
     const std::uint32_t family = static_cast<std::uint32_t>(e.index());
     if (slots_[at].family == family) {
         // Same family: the payload is assigned where it is, and the arena does not grow.
+        if (PointList* list = pointsOf(e)) {
+            reservePoints(list->size());
+            pool(*list);
+            pointsDead_ += static_cast<std::uint32_t>(pointsAt(family, slots_[at].offset)->size());
+        }
         std::byte* place = data_ + slots_[at].offset;
         std::visit(
             [&](auto& payload) {
@@ -153,8 +231,22 @@ void ElementArena::erase(std::size_t first, std::size_t last) {
         compactIfSparse();
 }
 
+void ElementArena::settle() {
+    // Doubled since the last settle (amortized), or holding the first room mostly unused (a
+    // bounded copy): a small structure edited once does not keep its first room.
+    const bool doubled = slots_.size() >= 2 * settled_;
+    const bool sparse = (capacity_ >= kFirstBytes && used_ < capacity_ / 4) ||
+                        (pointsCapacity_ >= kFirstPoints && pointsUsed_ < pointsCapacity_ / 4);
+    if (slots_.empty() || !(doubled || sparse)) return;
+    relocate(0, true);
+    repool(0, true);
+    slots_.shrink_to_fit();
+    settled_ = static_cast<std::uint32_t>(slots_.size());
+}
+
 void ElementArena::compactIfSparse() {
     if (dead_ >= 4096 && dead_ > (used_ - dead_)) relocate(0);
+    if (pointsDead_ >= 256 && pointsDead_ > (pointsUsed_ - pointsDead_)) repool(0);
 }
 
 void ElementArena::clear() {
@@ -162,11 +254,15 @@ void ElementArena::clear() {
     slots_ = {};
     data_ = nullptr;
     used_ = capacity_ = dead_ = 0;
+    points_ = nullptr;
+    pointsUsed_ = pointsCapacity_ = pointsDead_ = 0;
+    settled_ = 0;
 }
 
 void ElementArena::release() noexcept {
     for (const Slot& s : slots_) kFamilies[s.family].destroy(data_ + s.offset);
     if (data_) ::operator delete(data_, kArenaAlign);
+    delete[] points_;
 }
 
 std::string ElementArena::checkLayout() const {
@@ -186,6 +282,32 @@ std::string ElementArena::checkLayout() const {
     }
     if (used_ > capacity_) return "more bytes used than held";
     if (live + dead_ != used_) return "live and dead bytes do not add up";
+    return checkPool();
+}
+
+std::string ElementArena::checkPool() const {
+    std::vector<std::pair<std::size_t, std::size_t>> spans;  // [begin, end) of each point list
+    for (const Slot& s : slots_) {
+        const PointList* list = pointsAt(s.family, s.offset);
+        if (!list) continue;
+        if (list->ownsPoints()) return "a stored point list outside the pool";
+        if (list->empty()) {
+            if (list->data()) return "an empty point list viewing the pool";
+            continue;
+        }
+        if (list->data() < points_ || list->data() + list->size() > points_ + pointsUsed_)
+            return "a point list past the pool's end";
+        const auto begin = static_cast<std::size_t>(list->data() - points_);
+        spans.emplace_back(begin, begin + list->size());
+    }
+    std::sort(spans.begin(), spans.end());
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        if (i > 0 && spans[i].first < spans[i - 1].second) return "two point lists overlap";
+        live += spans[i].second - spans[i].first;
+    }
+    if (pointsUsed_ > pointsCapacity_) return "more points used than held";
+    if (live + pointsDead_ != pointsUsed_) return "live and dead points do not add up";
     return {};
 }
 

@@ -149,6 +149,7 @@ void StructureStore::openStructure(int id) {
 
 void StructureStore::closeStructure() {
     requireOpen("CLOSE STRUCTURE");
+    openStructure_->elements.settle();
     open_.reset();
     openStructure_ = nullptr;
     pointer_ = 0;

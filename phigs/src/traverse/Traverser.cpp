@@ -652,7 +652,7 @@ private:
         return segment;
     }
     /// A view of a copy of `points` in the segment being built.
-    ItemArray<glm::dvec3> segmentPoints(const std::vector<glm::dvec3>& points) const {
+    ItemArray<glm::dvec3> segmentPoints(std::span<const glm::dvec3> points) const {
         return ItemArray<glm::dvec3>::view(segment_->points.add(points.data(), points.size()), points.size());
     }
     static bool mayDraw(std::size_t family) {
@@ -787,7 +787,7 @@ private:
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;
-                        f.contours = {e.points};
+                        f.contours = {e.points.toVector()};
                         fillStyle(f, state);
                         emit(s, number, state, std::move(f));
                     }
@@ -1116,9 +1116,9 @@ private:
         for (int k = 0; k < n; ++k) {
             const double t0 = double(k) / n, t1 = double(k + 1) / n;
             style.colour = glm::mix(colours[0], colours[1], static_cast<float>((t0 + t1) / 2));
-            emit(s, number, state,
-                 DrawPolyline{segmentPoints({glm::mix(ends[0], ends[1], t0), glm::mix(ends[0], ends[1], t1)}),
-                              style});
+            const std::array<glm::dvec3, 2> piece{glm::mix(ends[0], ends[1], t0),
+                                                  glm::mix(ends[0], ends[1], t1)};
+            emit(s, number, state, DrawPolyline{segmentPoints(piece), style});
         }
     }
 

@@ -8,6 +8,7 @@
 #include "geom/Curve.h"
 #include "geom/Surface.h"
 #include "phigs/core/ColourModels.h"
+#include "phigs/store/PointList.h"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -150,19 +151,19 @@ struct Colour {
 
 /// POLYLINE 3 / POLYLINE.
 struct PolylineElement {
-    std::vector<glm::dvec3> points;
+    PointList points;
     bool twoD = false;
     bool operator==(const PolylineElement&) const = default;
 };
 /// POLYMARKER 3 / POLYMARKER.
 struct PolymarkerElement {
-    std::vector<glm::dvec3> points;
+    PointList points;
     bool twoD = false;
     bool operator==(const PolymarkerElement&) const = default;
 };
 /// FILL AREA 3 / FILL AREA.
 struct FillAreaElement {
-    std::vector<glm::dvec3> points;
+    PointList points;
     bool twoD = false;
     bool operator==(const FillAreaElement&) const = default;
 };
@@ -439,7 +440,7 @@ struct ApplicationDataElement {
 /// the others, as ISO 9592 lets a workstation do with a GDP it cannot generate.
 struct GdpElement {
     int identifier = 0;
-    std::vector<glm::dvec3> points;
+    PointList points;
     std::string data;
     bool twoD = false;
     bool operator==(const GdpElement&) const = default;
@@ -475,13 +476,13 @@ std::string validateElement(const Element& element);
 std::size_t elementSize(const Element& element);
 
 // ---- element constructors with the PHIGS names, for readable application code
-inline Element polyline3(std::vector<glm::dvec3> p) {
+inline Element polyline3(PointList p) {
     return PolylineElement{std::move(p), false};
 }
-inline Element polymarker3(std::vector<glm::dvec3> p) {
+inline Element polymarker3(PointList p) {
     return PolymarkerElement{std::move(p), false};
 }
-inline Element fillArea3(std::vector<glm::dvec3> p) {
+inline Element fillArea3(PointList p) {
     return FillAreaElement{std::move(p), false};
 }
 inline Element label(int l) {

@@ -2,6 +2,7 @@
 
 #include "phigs/store/Element.h"
 
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -52,9 +53,15 @@ struct TakesEveryPayload<F, std::variant<U...>> {
 template <class F>
 concept ElementVisitor = detail::TakesEveryPayload<std::remove_reference_t<F>, Element>::value;
 
+/// Whether payloads of type `T` keep their points in a PointList (stored in the arena's pool).
+template <class T>
+concept PooledPoints = requires(T& t) {
+    { t.points } -> std::same_as<PointList&>;
+};
+
 /// The elements of one structure, compact: each payload kept as its own type in one byte arena
-/// (no variant per element, no allocation per element beyond the payload's own lists) and one
-/// 16-byte slot (serial, place, payload family) per element, in element order.
+/// (no variant per element), the points of its PointList in one point pool (no allocation per
+/// element for them), and one 16-byte slot (serial, place, payload family) per element.
 class ElementArena {
 public:
     ElementArena() = default;
@@ -99,17 +106,29 @@ public:
     /// Removes elements [first, last).
     void erase(std::size_t first, std::size_t last);
     void clear();
+    /// Gives back the room held for growth once the arena has at least doubled its elements
+    /// since it last did (a structure built, then closed): each element is moved a bounded
+    /// number of times however the structure is edited.
+    void settle();
     void swap(ElementArena& other) noexcept {
         slots_.swap(other.slots_);
         std::swap(data_, other.data_);
         std::swap(used_, other.used_);
         std::swap(capacity_, other.capacity_);
         std::swap(dead_, other.dead_);
+        std::swap(points_, other.points_);
+        std::swap(pointsUsed_, other.pointsUsed_);
+        std::swap(pointsCapacity_, other.pointsCapacity_);
+        std::swap(pointsDead_, other.pointsDead_);
+        std::swap(settled_, other.settled_);
     }
 
     /// Arena bytes held, and of those the ones left by removed or replaced payloads.
     std::size_t capacityBytes() const { return capacity_; }
     std::size_t deadBytes() const { return dead_; }
+    /// Point pool places held, and of those the ones left by removed or replaced point lists.
+    std::size_t poolCapacity() const { return pointsCapacity_; }
+    std::size_t poolDead() const { return pointsDead_; }
     /// Checks the arena's bookkeeping (places in bounds, aligned, not overlapping, byte counts);
     /// an empty string when consistent, else what is wrong.
     std::string checkLayout() const;
@@ -137,20 +156,38 @@ private:
         return calls[s.family](*this, s.offset, f);
     }
 
-    /// Moves `e`'s payload into the arena (growing it when full); returns its place.
+    /// Moves `e`'s payload into the arena (growing it when full), its points into the pool;
+    /// returns its place.
     std::uint32_t emplace(Element&& e);
-    /// Moves every live payload, in element order, into a new arena with room for `extra` more bytes.
-    void relocate(std::size_t extra);
+    /// Makes room in the pool for `count` more points.
+    void reservePoints(std::size_t count);
+    /// Copies `list`'s points to the pool's end (room made) and makes `list` view them there.
+    void pool(PointList& list) noexcept;
+    /// Moves every live point list, in element order, into a new pool with room for `extra` more
+    /// (and as much again for growth), or `exact`ly the live ones.
+    void repool(std::size_t extra, bool exact = false);
+    /// checkLayout's part for the point pool.
+    std::string checkPool() const;
+    /// The point list of the payload at `offset` of family `family`, or nullptr.
+    PointList* pointsAt(std::uint32_t family, std::uint32_t offset) const;
+    /// Moves every live payload, in element order, into a new arena with room for `extra` more
+    /// bytes (and as much again for growth), or `exact`ly the live ones.
+    void relocate(std::size_t extra, bool exact = false);
     void destroy(const Slot& s);
-    /// Compacts when most of the arena is left over from removed payloads.
+    /// Compacts the arena (the pool) when most of it is left over from removed payloads (lists).
     void compactIfSparse();
     void release() noexcept;
 
     std::vector<Slot> slots_;
     std::byte* data_ = nullptr;
-    std::uint32_t used_ = 0;      ///< bytes up to the end of the last payload placed
-    std::uint32_t capacity_ = 0;  ///< bytes allocated
-    std::uint32_t dead_ = 0;      ///< bytes below used_ that no slot refers to
+    std::uint32_t used_ = 0;            ///< bytes up to the end of the last payload placed
+    std::uint32_t capacity_ = 0;        ///< bytes allocated
+    std::uint32_t dead_ = 0;            ///< bytes below used_ that no slot refers to
+    glm::dvec3* points_ = nullptr;      ///< the point pool
+    std::uint32_t pointsUsed_ = 0;      ///< points up to the end of the last list placed
+    std::uint32_t pointsCapacity_ = 0;  ///< points allocated
+    std::uint32_t pointsDead_ = 0;      ///< points below pointsUsed_ that no list views
+    std::uint32_t settled_ = 0;         ///< elements when settle() last gave room back
 };
 
 /// std::visit's form of ElementArena::visit: `f` on the payload of element `i` of `elements`.
