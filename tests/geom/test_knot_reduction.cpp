@@ -597,7 +597,7 @@ TEST_CASE("a long, densely refined curve reduces to about its simpler curve", "[
         std::vector<glm::dvec3> points{glm::dvec3(0.0)};
         glm::dvec3 v(1.0, 0.0, 0.0);
         while (points.size() < 100) {
-            v = 0.7 * v + glm::dvec3(step(rng), step(rng), 0.3 * step(rng));
+            v = 0.7 * v + glm::dvec3{step(rng), step(rng), 0.3 * step(rng)};  // braces: drawn in order
             points.push_back(points.back() + v);
         }
         std::vector<double> knots(4, 0.0);
@@ -608,7 +608,7 @@ TEST_CASE("a long, densely refined curve reduces to about its simpler curve", "[
         std::vector<double> inserted;
         for (int i = 0; i < 2400; ++i) inserted.push_back(unit(rng));
         Curve refined = refineKnots(simple, inserted);
-        for (glm::dvec3& q : refined.points) q += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+        for (glm::dvec3& q : refined.points) q += glm::dvec3{jitter(rng), jitter(rng), jitter(rng)};
         ReductionOptions o;
         o.tolerance = 1e-3;
         o.report = false;
@@ -640,7 +640,7 @@ TEST_CASE("a refined curve whose knots mostly weigh nothing is left to the remov
             std::vector<double> inserted;
             for (int i = 0; i < 80; ++i) inserted.push_back(unit(rng));
             Curve refined = refineKnots(simple, inserted);
-            for (glm::dvec3& q : refined.points) q += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+            for (glm::dvec3& q : refined.points) q += glm::dvec3{jitter(rng), jitter(rng), jitter(rng)};
             const CurveReduction r = reduceCurve(refined, o);
             INFO("degree " << p << ", trial " << trial << ": " << r.curve.points.size() << " points, "
                            << r.freeKnotFits << " free-knot fits");
