@@ -79,12 +79,10 @@ void checkOptions(const ReductionOptions& o, const char* where) {
 // inserted: the local insertion matrix gives the fit. Fitting the original rather than the
 // previous approximation keeps the errors of successive removals from piling up. Returns false,
 // leaving points alone, where the original has too few coefficients to determine the window.
-// P is the degree fixed at compile time (its row loops unroll), 0 for any degree.
-template <std::size_t P>
-bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
-                         std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
-                         const std::vector<glm::dvec3>& d0) {
-    const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree);
+bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                     const std::vector<glm::dvec3>& d0) {
+    const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t nt = points.size() / sequences;
     const std::size_t n0 = d0.size() / sequences;
     // The original coefficients whose rows can reach the free columns: their knot intervals
@@ -102,14 +100,8 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
     std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0)), target(sequences);
     std::size_t fitRows = 0;
     for (std::size_t j = jFirst; j <= jLast; ++j) {
-        const std::size_t mu = detail::osloSpan(static_cast<int>(p), tau, nt, t0, j);
+        const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
         const std::size_t c0 = mu - p;
-        // A row whose coefficients c0 .. c0 + p miss the free columns adds nothing.
-        if (c0 + p < cL || c0 > cH) continue;
-        if constexpr (P > 0)
-            detail::osloRowAtFixed<P>(tau, t0, j, mu, row.data());
-        else
-            detail::osloRowAt(static_cast<int>(p), tau, t0, j, mu, row.data());
         bool touchesFree = false;
         for (std::size_t k = 0; k <= p; ++k)
             touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
@@ -138,16 +130,6 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) points[c * sequences + s] = rhs[(c - cL) * sequences + s];
     return true;
-}
-
-bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
-                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
-                     const std::vector<glm::dvec3>& d0) {
-    bool ok = false;
-    detail::withFixedDegree(static_cast<std::size_t>(degree), [&](auto fixed) {
-        ok = refitToOriginalWith<fixed()>(degree, tau, points, sequences, cL, cH, t0, d0);
-    });
-    return ok;
 }
 
 // The linear stage's fit and bound: the best fit to the original (knots t0, coefficients d0) in
@@ -1135,26 +1117,6 @@ bool linearFitPasses(const Curve& curve, const ReductionOptions& o, const std::v
     return fits;
 }
 
-/// True where half the original's knots (ranked: all of them, by weight) would each move the
-/// curve by less than 2% of the tolerance: a refinement of a simpler curve whose inserted knots
-/// carry only noise far below the tolerance, or a densely sampled smooth curve. Where the loop
-/// also came below the model's first count (the density, inflated by the noise, overestimates
-/// the count), the curve is the former: the loop takes the inserted knots out and spends the
-/// tolerance on the rest, and the moved-knot search found no count below its own there (12
-/// curves of each refined class of degrees 1 to 7 and with corners, median weights 0.3-0.9% of
-/// the tolerance). On a densely sampled smooth curve the model's count is the lower and the
-/// search can beat the loop (a point on the corner test curve). Noisy digitised data (median
-/// weights 9-10%: every knot carries the noise) is neither; there the search beat the loop by
-/// 1-2 points on half the curves.
-bool mostKnotsAreFree(std::vector<KnotSignificance> ranked, double tolerance) {
-    if (ranked.empty()) return false;
-    const auto middle = ranked.begin() + static_cast<std::ptrdiff_t>(ranked.size() / 2);
-    std::nth_element(
-        ranked.begin(), middle, ranked.end(),
-        [](const KnotSignificance& a, const KnotSignificance& b) { return a.weight < b.weight; });
-    return middle->weight < 0.02 * tolerance;
-}
-
 /// A probe expected to pass so easily that the model has the count two below it pass too stops
 /// early (FreeKnotFit::overshot): it will not be the one the search ends on. That needs the count
 /// two below to be still open (above the largest failure, fail); 0 means no such stop.
@@ -1267,7 +1229,6 @@ private:
             firstUsed_ = true;
         } else {
             ++out_.fits;
-            ++out_.freeKnotFits;
             // A probe just above the largest failure ends the search if it passes: it stops at its
             // first round within 0.95 of the tolerance (FreeKnotStops::passAt), the margin for the
             // meter (within 0.99 it missed the meter on the I-beam at 1e-4 and cost a point). A
@@ -1410,7 +1371,6 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return out;
     }
     ++out.fits;
-    ++out.freeKnotFits;
     // Half the samples do for the check (the same counts on the reference and test curves; a
     // third of them misjudge one of 72 refined curves).
     const double significantError = fitter
@@ -1432,23 +1392,15 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // tolerance, the loop runs whatever the moved-knot fit gives (see above).
     refined =
         (!std::isfinite(significantError) && first + 1 >= ceiling) || significantError <= 45.0 * o.tolerance;
-    const bool mostFree = mostKnotsAreFree(ranked, o.tolerance);
     // On a refined curve the removal loop runs too (from the linear stage's state) and runs
     // first: the search looks only below the count it reached, where on refined curves it
     // rarely has anything to find (probes above it were fits and measurements for nothing).
     if (refined) ceiling = std::min(ceiling, loopCount());
-    // A refined curve most of whose knots go for almost nothing (see mostKnotsAreFree), where the
-    // loop came below the model's first count, is left to the loop alone.
-    if (refined && mostFree && first >= ceiling) {
-        out.removed = n0 - out.curve.points.size();
-        return out;
-    }
     // A first fit at or above the ceiling is never probed (the search starts from the model):
     // it is made only below it.
     FreeKnotFit moved;
     if (first < ceiling) {
         ++out.fits;
-        ++out.freeKnotFits;
         moved = fitter.fit(first, {}, true, 0,
                            FreeKnotStops{1.2 * 0.99 * o.tolerance, overshootBelow(o, p, first, lowest - 1)});
         // A moved-knot fit that misses by half the tolerance again at the model's count (on smooth
@@ -1874,10 +1826,9 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     CurveReduction out = std::move(*loop);
     if (fitted && fitted->curve.points.size() <= out.curve.points.size()) {
         fitted->fits += out.fits;
-        fitted->freeKnotFits += out.freeKnotFits;
         return *fitted;
     }
-    if (fitted) out.fits += fitted->fits, out.freeKnotFits += fitted->freeKnotFits;
+    if (fitted) out.fits += fitted->fits;
     return out;
 }
 

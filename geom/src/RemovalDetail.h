@@ -103,39 +103,15 @@ inline std::vector<std::vector<double>> insertionRows(int degree, std::vector<do
 // levels take successive fine knots). Writes p+1 weights to out and returns mu.
 inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const std::vector<double>& t,
                              std::size_t j, std::size_t mu, double* out);
-// The span mu of osloRow's row j: tau[mu] <= t[j] < tau[mu+1] on a non-empty span inside
-// [p, nTau-1].
-inline std::size_t osloSpan(int degree, const std::vector<double>& tau, std::size_t nTau,
-                            const std::vector<double>& t, std::size_t j) {
+inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size_t nTau,
+                           const std::vector<double>& t, std::size_t j, double* out) {
     const std::size_t p = static_cast<std::size_t>(degree);
+    // tau[mu] <= t[j] < tau[mu+1] on a non-empty span inside [p, nTau-1].
     std::size_t mu = static_cast<std::size_t>(std::upper_bound(tau.begin(), tau.end(), t[j]) - tau.begin());
     mu = mu == 0 ? 0 : mu - 1;
     mu = std::clamp(mu, p, nTau - 1);
     while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
-    return mu;
-}
-
-inline std::size_t osloRow(int degree, const std::vector<double>& tau, std::size_t nTau,
-                           const std::vector<double>& t, std::size_t j, double* out) {
-    return osloRowAt(degree, tau, t, j, osloSpan(degree, tau, nTau, t, j), out);
-}
-
-// osloRowAt with the degree P fixed at compile time (the same arithmetic, unrolled).
-template <std::size_t P>
-inline void osloRowAtFixed(const std::vector<double>& tau, const std::vector<double>& t, std::size_t j,
-                           std::size_t mu, double* out) {
-    out[0] = 1.0;
-    for (std::size_t level = 1; level <= P; ++level) {
-        const double x = t[j + level];
-        double saved = 0.0;
-        for (std::size_t r = 0; r < level; ++r) {
-            const double hi = tau[mu + r + 1], lo = tau[mu + r + 1 - level];
-            const double temp = hi > lo ? out[r] / (hi - lo) : 0.0;
-            out[r] = saved + (hi - x) * temp;
-            saved = (x - lo) * temp;
-        }
-        out[level] = saved;
-    }
+    return osloRowAt(degree, tau, t, j, mu, out);
 }
 
 // osloRow with the span mu already found (a caller walking ascending t finds it cheaper).

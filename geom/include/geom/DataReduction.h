@@ -61,10 +61,9 @@ struct ReductionOptions {
 /// A reduced curve with its bookkeeping and its measured error report.
 struct CurveReduction {
     Curve curve;
-    std::size_t removed = 0;       ///< knots removed
-    std::size_t fits = 0;          ///< least-squares fits tried (accepted or not)
-    std::size_t freeKnotFits = 0;  ///< of those, free-knot fits (the count search's probes and checks)
-    std::size_t steppedBack = 0;   ///< accepted states the final measurement undid (usually 0)
+    std::size_t removed = 0;      ///< knots removed
+    std::size_t fits = 0;         ///< least-squares fits tried (accepted or not)
+    std::size_t steppedBack = 0;  ///< accepted states the final measurement undid (usually 0)
     /// True when the curve is a free-knot fit (its knots moved; the report samples it at four
     /// times samplesPerSpan per span), false when it keeps a subset of the original's knots.
     bool freeKnotFit = false;
