@@ -1,6 +1,7 @@
 // Generalized drawing primitives and structure elements: the registered GDPs draw exact
 // circles and arcs through their points, others and GSEs draw nothing; bad points are refused.
 #include "ErrorNumber.h"
+#include "PostedScene.h"
 #include "phigs/Phigs.h"
 #include "phigs/store/Gdp.h"
 
@@ -19,24 +20,7 @@ using phigs::test::errorOf;
 
 namespace {
 
-struct Scene {
-    Phigs phigs;
-    StructureStore* store = nullptr;
-    Workstation* ws = nullptr;
-    Scene() {
-        phigs.open();
-        store = &phigs.store();
-        ws = &phigs.openWorkstation(1, WorkstationType::OffscreenImage);
-        ws->postStructure(1, 0.5);
-    }
-    const DrawList& draw(const Element& e) {
-        store->openStructure(1);
-        store->emptyStructure(1);
-        store->insert(e);
-        store->closeStructure();
-        return ws->display();
-    }
-};
+using Scene = phigs::test::PostedScene;
 
 glm::dvec3 randomPoint(std::mt19937& rng) {
     std::uniform_real_distribution<double> d(-10.0, 10.0);
@@ -52,7 +36,7 @@ TEST_CASE("GDP circles: every drawn point on the circle, in the plane of the thr
         const glm::dvec3 c = randomPoint(rng), p = randomPoint(rng), q = randomPoint(rng);
         const GdpElement circle{gdp::Circle, {c, p, q}, "", false};
         if (!checkGdp(circle).empty()) continue;  // collinear by chance: refused, tested below
-        const DrawList& list = s.draw(circle);
+        const DrawList& list = s.draw({circle});
         REQUIRE(list.items.size() == 1);
         const auto& drawn = std::get<DrawCurve>(list.items[0].primitive);
         REQUIRE(drawn.curve);
@@ -76,7 +60,7 @@ TEST_CASE("GDP arcs: from the first point through the second to the third, on th
         if (twoD) a.z = b.z = c.z = 0.0;
         const GdpElement arc{gdp::ThreePointArc, {a, b, c}, "", twoD};
         if (!checkGdp(arc).empty()) continue;
-        const DrawList& list = s.draw(arc);
+        const DrawList& list = s.draw({arc});
         REQUIRE(list.items.size() == 1);
         const auto& drawn = std::get<DrawCurve>(list.items[0].primitive);
         const double size = glm::length(b - a) + glm::length(c - a) + 1.0;
@@ -99,8 +83,8 @@ TEST_CASE("GDP arcs: from the first point through the second to the third, on th
 
 TEST_CASE("GDPs of other identifiers and GSEs are stored and draw nothing", "[gdp]") {
     Scene s;
-    CHECK(s.draw(GdpElement{4711, {{0, 0, 0}, {1, 1, 1}}, std::string("\0rec", 4), false}).items.empty());
-    CHECK(s.draw(GseElement{-3, "record"}).items.empty());
+    CHECK(s.draw({GdpElement{4711, {{0, 0, 0}, {1, 1, 1}}, std::string("\0rec", 4), false}}).items.empty());
+    CHECK(s.draw({GseElement{-3, "record"}}).items.empty());
     const Element stored = s.store->elementAt(1, 1);
     CHECK(stored == Element{GseElement{-3, "record"}});
     CHECK(elementType(stored) == ElementType::GeneralizedStructureElement);
@@ -109,7 +93,7 @@ TEST_CASE("GDPs of other identifiers and GSEs are stored and draw nothing", "[gd
 
 TEST_CASE("a registered GDP with points it cannot use is refused and changes nothing", "[gdp]") {
     Scene s;
-    s.draw(polyline3({{0, 0, 0}, {1, 0, 0}}));
+    s.draw({polyline3({{0, 0, 0}, {1, 0, 0}})});
     s.store->openStructure(1);
     const auto refused = [&](GdpElement e) { return errorOf([&] { s.store->insert(e); }); };
     CHECK(refused({gdp::Circle, {{0, 0, 0}, {1, 0, 0}}, "", false}) == errors::InvalidElementData);

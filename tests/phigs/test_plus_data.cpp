@@ -3,6 +3,7 @@
 // archived and read back, with seeded random members.
 
 #include "ErrorNumber.h"
+#include "PostedScene.h"
 #include "RandomElements.h"
 #include "phigs/Phigs.h"
 #include "phigs/store/ArchiveFile.h"
@@ -21,24 +22,7 @@ using phigs::testing::randomPoints;
 
 namespace {
 
-struct Scene {
-    Phigs phigs;
-    StructureStore* store = nullptr;
-    Workstation* ws = nullptr;
-    Scene() {
-        phigs.open();
-        store = &phigs.store();
-        ws = &phigs.openWorkstation(1, WorkstationType::OffscreenImage);
-        ws->postStructure(1, 0.5);
-    }
-    const DrawList& draw(const std::vector<Element>& elements) {
-        store->openStructure(1);
-        store->emptyStructure(1);
-        for (const Element& e : elements) store->insert(e);
-        store->closeStructure();
-        return ws->display();
-    }
-};
+using Scene = phigs::test::PostedScene;
 
 template <class P>
 std::vector<const P*> itemsOf(const DrawList& list) {
