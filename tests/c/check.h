@@ -19,6 +19,19 @@ static int failures = 0;
         }                                                                            \
     } while (0)
 
+/* A fixed 64-bit linear congruential sequence (its high bits): the same random members on every
+ * run; a test seeds it once at the start of main. */
+static unsigned long long random_state = 1;
+
+static inline void seed_random(unsigned long long seed) {
+    random_state = seed;
+}
+
+static inline unsigned next_random(void) {
+    random_state = random_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (unsigned)(random_state >> 33);
+}
+
 /* Every call of the error handler, in order; each is passed on to perr_hand (the error file). */
 #define MAX_ERRORS 32
 static Pint error_numbers[MAX_ERRORS];

@@ -10,13 +10,6 @@
 
 #include <png.h>
 
-static unsigned long long random_state = 0x2545f4914f6cdd1dULL;
-
-static unsigned next_random(void) {
-    random_state = random_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (unsigned)(random_state >> 33);
-}
-
 static double random_real(double lo, double hi) {
     return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
 }
@@ -333,6 +326,7 @@ static void picture(const char* dir) {
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512], svg[512];
+    seed_random(0x2545f4914f6cdd1dULL);
     Pint err = -1;
     Pstore store;
     snprintf(errors, sizeof errors, "%s/colour_models_errors.txt", dir);

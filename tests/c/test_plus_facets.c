@@ -13,12 +13,12 @@
 static Pstore store;
 static unsigned long rng_state = 0x2545F491UL;
 
-static unsigned next_random(void) {
+static unsigned next_rng(void) {
     rng_state = (rng_state * 1103515245UL + 12345UL) & 0x7fffffffUL;
     return (unsigned)(rng_state >> 8);
 }
 static int below(int n) {
-    return (int)(next_random() % (unsigned)n);
+    return (int)(next_rng() % (unsigned)n);
 }
 /* A real with few significant bits, exact in float and double. */
 static Pfloat real(void) {

@@ -11,14 +11,6 @@ static char error_file[512], svg_file[512];
 
 static const Pint types[6] = {PWST_OFFSCREEN, PWST_WINDOW, PWST_PNG, PWST_PDF, PWST_SVG, PWST_EPS};
 
-/* A fixed linear congruential sequence: the same random bundles on every run. */
-static unsigned long long random_state = 0x9e3779b97f4a7c15ULL;
-
-static unsigned next_random(void) {
-    random_state = random_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (unsigned)(random_state >> 33);
-}
-
 static int random_int(int lo, int hi) {
     return lo + (int)(next_random() % (unsigned)(hi - lo + 1));
 }
@@ -647,6 +639,7 @@ int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     Pint err = -1;
     Pstore store = NULL;
+    seed_random(0x9e3779b97f4a7c15ULL);
     Pline_bundle_plus line = {1, 1.0f, {PINDIRECT, {1}}, PSD_NONE, PCURV_WS_DEP, 1.0f};
     snprintf(error_file, sizeof error_file, "%s/plus_reps_errors.txt", dir);
     snprintf(svg_file, sizeof svg_file, "%s/plus_reps.svg", dir);

@@ -10,13 +10,6 @@
 
 #include <png.h>
 
-static unsigned long long random_state = 0x853c49e6748fea9bULL;
-
-static unsigned next_random(void) {
-    random_state = random_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (unsigned)(random_state >> 33);
-}
-
 static double random_real(double lo, double hi) {
     return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
 }
@@ -198,6 +191,7 @@ static void line_shading(void) {
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
+    seed_random(0x853c49e6748fea9bULL);
     snprintf(png, sizeof png, "%s/plus_shading.png", dir);
     snprintf(pdf, sizeof pdf, "%s/plus_shading.pdf", dir);
     snprintf(ppm_root, sizeof ppm_root, "%s/plus_shading_pdf", dir);
