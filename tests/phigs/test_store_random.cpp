@@ -20,6 +20,7 @@
 #include "ArchiveModel.h"
 #include "ErrorNumber.h"
 #include "RandomElements.h"
+#include "Sanitized.h"
 
 #include <catch2/catch.hpp>
 
@@ -38,21 +39,9 @@ using test::ArchiveModel;
 using test::Contents;
 using test::StoreModel;
 
-#if defined(__SANITIZE_ADDRESS__)
-#define PHIGS_RANDOM_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define PHIGS_RANDOM_SANITIZED 1
-#endif
-#endif
-
 namespace {
 
-#ifdef PHIGS_RANDOM_SANITIZED
-constexpr long kOperations = 40000;
-#else
-constexpr long kOperations = 100000;
-#endif
+constexpr long kOperations = kSanitizedBuild ? 40000 : 100000;
 
 constexpr int kArchive = 1;
 const int kWorkstations[] = {1, 2};
