@@ -36,8 +36,8 @@ double cross(glm::dvec2 a, glm::dvec2 b) {
 
 OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) {
     // The triangles the facets make (n - 2 for a simple contour, n + 2 h - 2 with h holes; more
-    // only where contours cross): one allocation of about the right size, not a doubling
-    // vector's spare half.
+    // where contours cross or the triangulation adds points, hence the slack): one allocation of
+    // about the right size, not a doubling vector's spare half.
     std::size_t expected = 0;
     for (const ProjectedFacet& f : facets) {
         if (!f.occludes) continue;
@@ -45,7 +45,7 @@ OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double
         for (const auto& c : f.contours) points += c.size() + 2;
         expected += points > 4 ? points - 4 : 0;
     }
-    triangles_.reserve(expected);
+    triangles_.reserve(expected + expected / 8 + 16);
     for (const ProjectedFacet& f : facets) {
         if (!f.occludes) continue;
         if (f.contours.size() == 1 && f.contours[0].size() == 3) {
