@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The acsynt program's exit status, its last line and its refusals of paths and options, run as
-# a user runs it: test_acsynt_program.sh ACSYNT_BINARY WORK_DIR. Each check prints what failed.
+# a user runs it: test_acsynt_program.sh ACSYNT_BINARY WORK_DIR EXCHANGE_MODULE MODULE_DIR (the
+# module's folder relative to the program's in an install). Each check prints what failed.
 set -u
 acsynt=$(realpath "$1")
 work=$2
+module=$(realpath "$3")
+install_dir=$4
 rm -rf "$work" && mkdir -p "$work"
 cd "$work" || exit 1
 failures=0
@@ -98,6 +101,26 @@ expect_in import_missing.err "--import nothing.step cannot be read"
 head -c 20000 transport.step >cut.step
 run import_cut 1 --import cut.step --script list.session --output out_import_cut --size 320x240
 expect_in import_cut.err "cut.step: not a readable STEP file"
+
+# The exchange module is found next to the program, then in the installed layout, so the
+# program can move with it: a copy that is not a module, in either place, is the one refused.
+mkdir -p moved installed/bin "installed/bin/$install_dir"
+cp "$acsynt" moved/acsynt && cp "$module" moved/
+cp "$acsynt" installed/bin/acsynt && cp "$module" "installed/bin/$install_dir/"
+acsynt_built=$acsynt
+for place in moved installed/bin; do
+  acsynt=$(realpath "$place/acsynt")
+  run "export_$(basename "$place")" 0 --export "$place.step" transport.acm
+  [ -s "$place.step" ] || fail "export from $place: no $place.step"
+done
+echo "not a module" >"installed/bin/$install_dir/$(basename "$module")"
+run export_installed_broken 2 --export broken_installed.step transport.acm
+expect_in export_installed_broken.err "$(realpath -m "installed/bin/$install_dir/$(basename "$module")")"
+echo "not a module" >"moved/$(basename "$module")"
+acsynt=$(realpath moved/acsynt)
+run export_moved_broken 2 --export broken_moved.step transport.acm
+expect_in export_moved_broken.err "$(realpath moved)/$(basename "$module") cannot be loaded"
+acsynt=$acsynt_built
 
 # --help names the window's buttons and keys.
 run help 0 --help

@@ -1,5 +1,7 @@
 #include "CairoPainter.h"
 
+#include "phigs/hardcopy/UnionOutline.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -113,18 +115,24 @@ void CairoPainter::contours(const std::vector<std::vector<glm::dvec2>>& contours
 void CairoPainter::fillRun(const std::vector<VectorOp>& ops, std::size_t begin, std::size_t end) {
     const VectorFill& style = std::get<VectorFill>(ops[begin]);
     useClip(style.clip);
-    cairo_new_path(cr_);
+    // All counter-clockwise (in page coordinates), so that overlaps add up rather than cancel;
+    // then the edges neighbours share cancel, and cairo gets the outline of the union.
+    std::vector<std::vector<glm::dvec2>> reversed;
+    reversed.reserve(end - begin);
+    std::vector<const std::vector<glm::dvec2>*> run;
     for (std::size_t i = begin; i < end; ++i) {
         const auto& c = std::get<VectorFill>(ops[i]).contours[0];
-        // All counter-clockwise (in page coordinates), so that overlaps add up rather than cancel.
-        const bool reverse = signedArea(c) < 0.0;
-        for (std::size_t k = 0; k < c.size(); ++k) {
-            const glm::dvec2& p = c[reverse ? c.size() - 1 - k : k];
-            if (k == 0)
-                cairo_move_to(cr_, p.x, p.y);
-            else
-                cairo_line_to(cr_, p.x, p.y);
+        if (signedArea(c) >= 0.0) {
+            run.push_back(&c);
+        } else {
+            reversed.emplace_back(c.rbegin(), c.rend());
+            run.push_back(&reversed.back());
         }
+    }
+    cairo_new_path(cr_);
+    for (const auto& loop : unionOutline(run)) {
+        cairo_move_to(cr_, loop[0].x, loop[0].y);
+        for (std::size_t k = 1; k < loop.size(); ++k) cairo_line_to(cr_, loop[k].x, loop[k].y);
         cairo_close_path(cr_);
     }
     colour(style.colour);

@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
+
 namespace phigs::hardcopy {
 namespace {
 
@@ -139,12 +141,19 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     ProjectedFacet f;
     double depth = 0.0;
     std::size_t count = 0;
+    std::vector<ClipVertex>& polygon = polygon_;
+    // A contour inside a volume is what clipping to it gives back: those skip the clipper.
+    auto within = [&](const std::vector<HalfSpace>& volume) {
+        return std::all_of(polygon.begin(), polygon.end(),
+                           [&](const ClipVertex& v) { return inside(v.h, volume); });
+    };
     for (const auto& contour : world) {
-        std::vector<ClipVertex> polygon;
+        polygon.clear();
         for (const glm::dvec3& p : contour) polygon.push_back({glm::dvec4(p, 1.0), 0.0});
-        polygon = clipPolygon(std::move(polygon), model_);
+        if (polygon.size() < 3) continue;
+        if (!within(model_)) polygon = clipPolygon(std::move(polygon), model_);
         for (ClipVertex& v : polygon) v.h = worldToNpc_ * v.h;
-        polygon = clipPolygon(std::move(polygon), view_);
+        if (!within(view_)) polygon = clipPolygon(std::move(polygon), view_);
         if (polygon.empty()) continue;
         f.contours.emplace_back();
         for (const ClipVertex& v : polygon) {

@@ -50,6 +50,7 @@ void MeshProjector::facets(bool coverOnly) {
     const glm::dmat3 normalMatrix =
         glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform.get())));
     std::vector<FacetVertex> vertices(3);
+    std::vector<std::vector<glm::dvec3>> triangle{std::vector<glm::dvec3>(3)};  // one allocation for all
     for (std::size_t t = 0; t < facing_.size(); ++t) {
         const std::uint32_t* index = &data_.triangles[3 * t];
         if (index[0] >= count || index[1] >= count || index[2] >= count) continue;
@@ -76,7 +77,8 @@ void MeshProjector::facets(bool coverOnly) {
             paint.hatchIndex = in.styleIndex;
             paint.pattern = in.style == InteriorStyle::Pattern;
         }
-        pipeline_.facet({{vertices[0].position, vertices[1].position, vertices[2].position}}, paint);
+        for (int k = 0; k < 3; ++k) triangle[0][std::size_t(k)] = vertices[std::size_t(k)].position;
+        pipeline_.facet(triangle, paint);
     }
 }
 

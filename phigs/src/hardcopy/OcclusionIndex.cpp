@@ -35,6 +35,17 @@ double cross(glm::dvec2 a, glm::dvec2 b) {
 }  // namespace
 
 OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) {
+    // The triangles the facets make (n - 2 for a simple contour, n + 2 h - 2 with h holes; more
+    // where contours cross or the triangulation adds points, hence the slack): one allocation of
+    // about the right size, not a doubling vector's spare half.
+    std::size_t expected = 0;
+    for (const ProjectedFacet& f : facets) {
+        if (!f.occludes) continue;
+        std::size_t points = 0;
+        for (const auto& c : f.contours) points += c.size() + 2;
+        expected += points > 4 ? points - 4 : 0;
+    }
+    triangles_.reserve(expected + expected / 8 + 16);
     for (const ProjectedFacet& f : facets) {
         if (!f.occludes) continue;
         if (f.contours.size() == 1 && f.contours[0].size() == 3) {
@@ -76,19 +87,27 @@ void OcclusionIndex::bin() {
     if (triangles_.empty()) return;
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo), hi = glm::max(hi, t.hi);
-    const int n = std::clamp(int(std::ceil(std::sqrt(double(triangles_.size())))), 1, kMaxCells);
+    // About four cells per triangle: the model covers a part of the page only, and a query then
+    // meets few triangles that its cells hold but its segment misses.
+    const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxCells);
     columns_ = rows_ = n;
     lo_ = lo;
     cell_ = glm::max((hi - lo) / double(n), glm::dvec2(1e-9));
-    cells_.assign(std::size_t(columns_) * std::size_t(rows_), {});
+    // The cells' lists in one array (counted, then filled): no allocation per cell.
+    cellStart_.assign(std::size_t(columns_) * std::size_t(rows_) + 1, 0);
+    for (const Triangle& t : triangles_)
+        forCells(t.lo, t.hi, [&](std::size_t cell) { ++cellStart_[cell + 1]; });
+    for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+    cellItems_.resize(cellStart_.back());
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-        forCells(triangles_[i].lo, triangles_[i].hi, [&](std::size_t cell) { cells_[cell].push_back(i); });
+        forCells(triangles_[i].lo, triangles_[i].hi, [&](std::size_t cell) { cellItems_[fill[cell]++] = i; });
     stamp_.assign(triangles_.size(), 0);
 }
 
 template <class F>
 void OcclusionIndex::forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
-    if (cells_.empty()) return;
+    if (cellStart_.empty()) return;
     const int x0 = std::clamp(int(std::floor((lo.x - lo_.x) / cell_.x)), 0, columns_ - 1);
     const int x1 = std::clamp(int(std::floor((hi.x - lo_.x) / cell_.x)), 0, columns_ - 1);
     const int y0 = std::clamp(int(std::floor((lo.y - lo_.y) / cell_.y)), 0, rows_ - 1);
@@ -128,7 +147,7 @@ void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b,
     if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
     const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
     forCells(lo, hi, [&](std::size_t cell) {
-        for (std::uint32_t i : cells_[cell]) {
+        for (std::uint32_t i : items(cell)) {
             if (stamp_[i] == query_) continue;
             stamp_[i] = query_;
             glm::dvec2 interval;
@@ -165,7 +184,7 @@ bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
 bool OcclusionIndex::visible(const PagePoint& p) const {
     bool hidden = false;
     forCells(glm::dvec2(p), glm::dvec2(p), [&](std::size_t cell) {
-        for (std::uint32_t i : cells_[cell]) {
+        for (std::uint32_t i : items(cell)) {
             glm::dvec2 interval;
             hidden = hidden || hides(triangles_[i], p, p, interval);
         }

@@ -32,6 +32,10 @@ void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuil
                     DescribeStats& stats) {
     // The facets move out of the scene: only its lines and markers are read after this.
     std::vector<ProjectedFacet> facets;
+    facets.reserve(
+        std::size_t(std::count_if(scene.parts.begin(), scene.parts.end(), [](const ProjectedPart& p) {
+            return std::holds_alternative<ProjectedFacet>(p);
+        })));
     for (ProjectedPart& part : scene.parts)
         if (auto* f = std::get_if<ProjectedFacet>(&part); f && coversArea(*f))
             facets.push_back(std::move(*f));

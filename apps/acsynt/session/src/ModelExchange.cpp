@@ -2,12 +2,43 @@
 
 #include <dlfcn.h>
 
+#include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <vector>
 
 namespace acsynt {
 namespace {
+
+#ifndef ACSYNT_EXCHANGE_LINKED
+/// The folder of the running program (empty when the system cannot say).
+std::filesystem::path programFolder() {
+    std::error_code error;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+    return error ? std::filesystem::path() : program.parent_path();
+}
+
+/// The first of the module's places that holds a file: next to the program (a build tree, or a
+/// copy moved with it), the installed layout relative to the program's folder, the build tree's
+/// path. A file found is the module, whether or not it loads.
+std::filesystem::path modulePath() {
+    const std::filesystem::path folder = programFolder();
+    std::vector<std::filesystem::path> places;
+    if (!folder.empty()) {
+        places.push_back(folder / ACSYNT_EXCHANGE_MODULE_NAME);
+        places.push_back(
+            (folder / ACSYNT_EXCHANGE_INSTALL_DIR / ACSYNT_EXCHANGE_MODULE_NAME).lexically_normal());
+    }
+    places.emplace_back(ACSYNT_EXCHANGE_MODULE);
+    for (const auto& place : places) {
+        std::error_code error;
+        if (std::filesystem::is_regular_file(place, error)) return place;
+    }
+    return places.back();
+}
+#endif
 
 /// Opens the module once and keeps it open (its code backs the models it returns).
 const ExchangeCalls& loadCalls() {
@@ -15,8 +46,8 @@ const ExchangeCalls& loadCalls() {
     // A build with the module's code linked in (the fuzz targets): no file to open.
     return *acsynt_exchange_calls();
 #else
-    const char* path = ACSYNT_EXCHANGE_MODULE;
-    void* module = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    const std::string path = modulePath().string();
+    void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     const char* why = module ? nullptr : dlerror();
     void* entry = module ? dlsym(module, "acsynt_exchange_calls") : nullptr;
     if (module && !entry) why = dlerror();

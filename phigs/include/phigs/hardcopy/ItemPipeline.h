@@ -76,6 +76,7 @@ private:
     ItemColouring colouring_;
     const DrawPattern* pattern_ = nullptr;          ///< a PATTERN interior's pattern, or null
     std::optional<render::PatternMap> patternMap_;  ///< and its world map
+    std::vector<ClipVertex> polygon_;               ///< facet()'s contour being clipped, kept
 };
 
 }  // namespace phigs::hardcopy

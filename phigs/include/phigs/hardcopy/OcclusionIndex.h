@@ -5,6 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace phigs::hardcopy {
@@ -54,7 +55,12 @@ private:
     std::vector<Triangle> triangles_;
     glm::dvec2 lo_{0.0}, cell_{1.0};
     int columns_ = 0, rows_ = 0;
-    std::vector<std::vector<std::uint32_t>> cells_;
+    /// The triangles over each cell: cellItems_[cellStart_[c], cellStart_[c + 1]).
+    std::span<const std::uint32_t> items(std::size_t cell) const {
+        return {cellItems_.data() + cellStart_[cell], cellItems_.data() + cellStart_[cell + 1]};
+    }
+
+    std::vector<std::uint32_t> cellStart_, cellItems_;
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t query_ = 0;
     mutable std::vector<glm::dvec2> scratch_;  ///< hiddenWhole's intervals, kept between calls

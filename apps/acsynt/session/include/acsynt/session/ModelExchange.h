@@ -38,7 +38,9 @@ struct ExchangeCalls {
 
 /// The exchange calls. OpenCASCADE's libraries are large (relocating them costs a tenth of a
 /// short session), so the module is opened (dlopen) on the first call, not at the program's
-/// start; std::runtime_error naming the module and the loader's reason when it cannot be.
+/// start. It is looked for next to the program, then in the installed layout (lib/acsynt beside
+/// bin), then at the build tree's path; std::runtime_error naming the module and the loader's
+/// reason when it cannot be loaded.
 const ExchangeCalls& exchangeCalls();
 
 }  // namespace acsynt
