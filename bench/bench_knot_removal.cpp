@@ -152,6 +152,17 @@ std::vector<CurveCase> generatedCases(unsigned seed = 2026) {
     return cases;
 }
 
+/// The rational class: a cubic with weights spanning 1e-1..1e1, refined and jittered (geom only:
+/// s1940 takes the homogeneous coefficients and returns NaN poles).
+CurveCase rationalCase() {
+    std::mt19937 rng(7);
+    geom::Curve base = randomCurve(rng, 3, 12, 1.0);
+    std::uniform_real_distribution<double> exponent(-1.0, 1.0);
+    for (std::size_t i = 0; i < base.points.size(); ++i)
+        base.weights.push_back(std::pow(10.0, exponent(rng)));
+    return {"rational", refinedAndJittered(rng, base, 80, 1e-5), 1e-3};
+}
+
 std::string json;
 void figure(const std::string& name, double value) {
     char buf[128];
@@ -195,15 +206,10 @@ void runClasses(const std::string& only = {}) {
         figure(c.name + "_geom_error_over_tolerance", gerr);
     }
     if (only.empty() || only == "rational") {
-        // Rational: geom only (s1940 takes the homogeneous coefficients and returns NaN poles).
-        std::mt19937 rng(7);
-        geom::Curve base = randomCurve(rng, 3, 12, 1.0);
-        std::uniform_real_distribution<double> exponent(-1.0, 1.0);
-        for (std::size_t i = 0; i < base.points.size(); ++i)
-            base.weights.push_back(std::pow(10.0, exponent(rng)));
-        const geom::Curve c = refinedAndJittered(rng, base, 80, 1e-5);
+        const CurveCase rational = rationalCase();
+        const geom::Curve& c = rational.curve;
         geom::ReductionOptions o;
-        o.tolerance = 1e-3;
+        o.tolerance = rational.tolerance;
         geom::CurveReduction r;
         const double ms = timeMs([&] { r = geom::reduceCurve(c, o); }, 3);
         const double gerr = geom::measureDeviation(c, r.curve).maxError / o.tolerance;
@@ -232,29 +238,38 @@ int main(int argc, char** argv) {
         std::printf("{%s}\n", json.c_str());
         return 0;
     };
-    // --profile CLASS N: geom's reduction of one generated class (or "ibeam" / "airfoil" at
-    // 1e-4) N times, nothing else (for a profiler); prints the control points left and a digest
+    // --profile CLASS N: geom's reduction of one generated class (or "rational", or "ibeam" /
+    // "airfoil" at 1e-4) N times, nothing else (for a profiler); prints the control points left and a digest
     // of the result's bits (a change meant to leave results alone must leave it alone).
     if (argc > 3 && std::string(argv[1]) == "--profile") {
         std::vector<CurveCase> cases = generatedCases();
+        cases.push_back(rationalCase());
         cases.push_back({"ibeam", geom::iBeamCurve(), 1e-4});
         cases.push_back({"airfoil", geom::nacaAirfoilCurve(), 1e-4});
+        bool found = false;
         for (const CurveCase& c : cases) {
             if (c.name != argv[2]) continue;
+            found = true;
             geom::ReductionOptions o;
             o.tolerance = c.tolerance;
             o.report = false;
             geom::CurveReduction r;
             for (int i = 0, runs = std::stoi(argv[3]); i < runs; ++i) r = geom::reduceCurve(c.curve, o);
-            std::uint64_t digest = 1469598103934665603ull;  // FNV-1a over the knots' and points' bytes
+            std::uint64_t digest =
+                1469598103934665603ull;  // FNV-1a over the knots', points' and weights' bytes
             auto add = [&](const void* data, std::size_t size) {
                 for (std::size_t i = 0; i < size; ++i)
                     digest = (digest ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
             };
             add(r.curve.knots.data(), r.curve.knots.size() * sizeof(double));
             add(r.curve.points.data(), r.curve.points.size() * sizeof(glm::dvec3));
+            add(r.curve.weights.data(), r.curve.weights.size() * sizeof(double));
             std::printf("%s: %zu control points, digest %016llx\n", c.name.c_str(), r.curve.points.size(),
                         static_cast<unsigned long long>(digest));
+        }
+        if (!found) {
+            std::fprintf(stderr, "bench_knot_removal --profile: no class named '%s'\n", argv[2]);
+            return 1;
         }
         return 0;
     }
