@@ -1,5 +1,7 @@
 #include "SegmentPool.h"
 
+#include <new>
+
 namespace phigs::detail {
 
 namespace {
@@ -21,44 +23,69 @@ void empty(DrawSegment& segment) {
 
 }  // namespace
 
+/// Places a segment's control block in its slot; freeing the block gives the slot back. The
+/// pool is kept alive by the allocator, the last thing a control block lets go of.
+template <class T>
+struct SegmentPool::SlotAllocator {
+    using value_type = T;
+    std::shared_ptr<SegmentPool> pool;
+    Slot* slot = nullptr;
+
+    SlotAllocator(std::shared_ptr<SegmentPool> p, Slot* s) : pool(std::move(p)), slot(s) {}
+    template <class U>
+    SlotAllocator(const SlotAllocator<U>& other) : pool(other.pool), slot(other.slot) {}  // NOLINT
+    T* allocate(std::size_t n) {
+        static_assert(sizeof(T) <= Slot::kControl && alignof(T) <= alignof(std::max_align_t));
+        if (n != 1) throw std::bad_alloc();
+        return reinterpret_cast<T*>(slot->control);
+    }
+    void deallocate(T*, std::size_t) { pool->give(slot); }
+    template <class U>
+    bool operator==(const SlotAllocator<U>& other) const {
+        return slot == other.slot;
+    }
+};
+
 std::shared_ptr<DrawSegment> SegmentPool::take() {
-    std::unique_ptr<DrawSegment> segment;
+    std::unique_ptr<Slot> slot;
     {
         std::lock_guard lock(mutex_);
         ++taken_;
         if (!free_.empty()) {
-            segment = std::move(free_.back());
+            slot = std::move(free_.back());
             free_.pop_back();
         }
     }
-    if (segment)
-        empty(*segment);
+    if (slot)
+        empty(slot->segment);
     else
-        segment = std::make_unique<DrawSegment>();
-    auto self = shared_from_this();
-    return {segment.release(), [self](DrawSegment* s) { self->give(s); }};
+        slot = std::make_unique<Slot>();
+    Slot* s = slot.release();
+    // The deleter does nothing: the slot comes back when its control block is freed.
+    return {&s->segment, [](DrawSegment*) {}, SlotAllocator<DrawSegment>(shared_from_this(), s)};
 }
 
-void SegmentPool::give(DrawSegment* segment) {
-    std::unique_ptr<DrawSegment> owned(segment);
-    if (owned->items.capacity() > kKeepItems || owned->points.capacity() > kKeepPoints) return;
+void SegmentPool::give(Slot* slot) {
+    std::unique_ptr<Slot> owned(slot);
+    const DrawSegment& segment = owned->segment;
+    if (segment.items.capacity() > kKeepItems || segment.points.capacity() > kKeepPoints) return;
     std::lock_guard lock(mutex_);
     if (!closed_) free_.push_back(std::move(owned));
 }
 
 void SegmentPool::settle(std::size_t count) {
-    std::vector<std::unique_ptr<DrawSegment>> dropped;
+    std::vector<std::unique_ptr<Slot>> dropped;
     std::lock_guard lock(mutex_);
     if (free_.size() > count) {
         dropped.assign(std::make_move_iterator(free_.begin() + static_cast<std::ptrdiff_t>(count)),
                        std::make_move_iterator(free_.end()));
         free_.resize(count);
     }
-    for (auto& segment : free_) empty(*segment);
+    for (auto& slot : free_) empty(slot->segment);
 }
 
 void SegmentPool::close() {
-    std::vector<std::unique_ptr<DrawSegment>> dropped;
+    std::vector<std::unique_ptr<Slot>> dropped;
     std::lock_guard lock(mutex_);
     closed_ = true;
     dropped.swap(free_);

@@ -9,6 +9,7 @@
 #include "phigs/traverse/DrawItems.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -31,10 +32,20 @@ public:
     std::size_t takenSince();
 
 private:
-    void give(DrawSegment* segment);
+    /// A segment and the room for the shared pointer's control block next to it: handing one
+    /// out allocates nothing, and a draw list reading a segment finds both in one place.
+    struct Slot {
+        static constexpr std::size_t kControl = 64;
+        DrawSegment segment;
+        alignas(std::max_align_t) std::byte control[kControl];
+    };
+    template <class T>
+    struct SlotAllocator;
+    /// Called when the control block of `slot` is gone (the last owner let go of its segment).
+    void give(Slot* slot);
 
     std::mutex mutex_;  ///< a draw list may be dropped on another thread
-    std::vector<std::unique_ptr<DrawSegment>> free_;
+    std::vector<std::unique_ptr<Slot>> free_;
     std::size_t taken_ = 0;
     bool closed_ = false;
 };
