@@ -2,15 +2,15 @@
 
 namespace phigs {
 
-const TessellationCache::Entry& TessellationCache::get(const Key& key, Kind kind,
-                                                       const std::function<Entry()>& build) {
+const TessellationCache::Entry* TessellationCache::find(const Key& key) {
     auto it = entries_.find(key);
-    if (it != entries_.end()) {
-        ++counters_.hits;
-        it->second.used = true;
-        return it->second.entry;
-    }
-    Entry entry = build();
+    if (it == entries_.end()) return nullptr;
+    ++counters_.hits;
+    it->second.used = true;
+    return &it->second.entry;
+}
+
+const TessellationCache::Entry& TessellationCache::add(const Key& key, Kind kind, Entry entry) {
     ++builtSinceSweep_;
     switch (kind) {
         case Kind::Surface:

@@ -2,6 +2,7 @@
 
 #include "FacetMesh.h"
 #include "LevelCurves.h"
+#include "SegmentPool.h"
 #include "Tessellation.h"
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
@@ -229,6 +230,9 @@ struct Traverser::ItemTables {
 namespace {
 
 using detail::State;
+
+/// Free draw segments kept past what the last traversal took.
+constexpr std::size_t kSpareSegments = 64;
 
 glm::dmat4 compose(const glm::dmat4& current, const TransformElement& t) {
     switch (t.composition) {
@@ -500,7 +504,7 @@ class Walk {
 public:
     Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
          TessellationCache& cache, Traverser::SubtreeCache* subtrees, Traverser::ItemTables& itemTables,
-         DrawList& out)
+         detail::SegmentPool& segmentPool, DrawList& out)
         : store_(store),
           tables_(tables),
           filters_(filters),
@@ -509,6 +513,7 @@ public:
           resolve_{tables},
           subtrees_(subtrees),
           itemTables_(itemTables),
+          segmentPool_(segmentPool),
           baseStamp_(baseStamp(tables, filters)) {}
 
     std::uint64_t visited = 0;
@@ -644,7 +649,7 @@ private:
             if (s.elements.get<ExecuteStructureElement>(i)) break;
             primitives += mayDraw(s.elements.family(i));
         }
-        auto segment = std::make_shared<DrawSegment>();
+        auto segment = segmentPool_.take();
         segment->items.reserve(primitives);
         segment->points.reserve(primitives * 4);
         segment->pathPrefix = path_;
@@ -673,8 +678,11 @@ private:
 
     /// The segment's record of the current transform: a new one only when it changed.
     ItemRef<glm::dmat4> transform(const State& state) {
-        if (!transform_ || *transform_ != state.composite)
-            transform_ = segment_->transforms.add(&state.composite, 1);
+        if (!transform_ || transformEpoch_ != epoch_) {  // the state may have changed: compare
+            if (!transform_ || *transform_ != state.composite)
+                transform_ = segment_->transforms.add(&state.composite, 1);
+            transformEpoch_ = epoch_;
+        }
         return ItemRef<glm::dmat4>::view(transform_);
     }
     /// The segment's copy of the current model clipping volume, shared by the items it holds for.
@@ -722,18 +730,38 @@ private:
         return resolved(edge_, [&] { return resolve_.edge(s); });
     }
 
+    /// What every item of one state shares besides its styles: resolved once per state.
+    struct ItemFields {
+        std::uint64_t epoch = 0;
+        bool invisible = false, highlighted = false, pickable = true;
+        std::int32_t viewIndex = 0, lightSet = -1, depthCue = -1;
+    };
+    const ItemFields& itemFields(const State& state) {
+        if (fields_.epoch == epoch_) return fields_;
+        fields_.epoch = epoch_;
+        fields_.invisible = filters_.invisibility && filters_.invisibility->accepts(state.names);
+        if (fields_.invisible) return fields_;  // no item: nothing else is asked for
+        fields_.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
+        fields_.pickable = !filters_.pick || filters_.pick->accepts(state.names);
+        fields_.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
+        fields_.lightSet = lightSet(state.lights);
+        fields_.depthCue = depthCue(state.depthCueIndex);
+        return fields_;
+    }
+
     template <class Primitive>
     DrawItem* emit(const Structure& s, int number, const State& state, Primitive&& primitive) {
-        if (filters_.invisibility && filters_.invisibility->accepts(state.names)) return nullptr;
-        // Built in place: a draw item is large, and moving it costs as much as filling it.
-        DrawItem& item = segment_->items.emplace_back();
-        item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
+        const ItemFields& f = itemFields(state);
+        if (f.invisible) return nullptr;
+        // Built in place from the primitive: a draw item is large, and moving it costs as much
+        // as filling it.
+        DrawItem& item = segment_->items.emplace_back(std::forward<Primitive>(primitive));
         item.modelTransform = transform(state);
-        item.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
-        item.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
-        item.pickable = !filters_.pick || filters_.pick->accepts(state.names);
-        item.lightSet = lightSet(state.lights);
-        item.depthCue = depthCue(state.depthCueIndex);
+        item.viewIndex = f.viewIndex;
+        item.highlighted = f.highlighted;
+        item.pickable = f.pickable;
+        item.lightSet = f.lightSet;
+        item.depthCue = f.depthCue;
         const std::vector<DrawPathLevel>& prefix = segment_->pathPrefix;
         item.source.path = DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
                                            {s.id, number, state.pickId});
@@ -1203,6 +1231,7 @@ private:
     std::pair<int, int> lastCue_{INT_MIN, -1};  ///< depth cue index and its answer, this traversal
     Traverser::SubtreeCache* subtrees_;
     Traverser::ItemTables& itemTables_;
+    detail::SegmentPool& segmentPool_;
     std::uint64_t baseStamp_;
     std::shared_ptr<DrawSegment> segment_;  ///< the segment being built
     StylePool& styles_ = *itemTables_.styles;
@@ -1212,16 +1241,22 @@ private:
     Resolved<InteriorStyleSet> interior_;
     Resolved<EdgeStyle> edge_;
     const glm::dmat4* transform_ = nullptr;  ///< the segment's record of the last transform
+    std::uint64_t transformEpoch_ = 0;       ///< the state transform_ was last compared with
+    ItemFields fields_;                      ///< the last state's item fields
     std::span<const glm::dvec4> clip_;       ///< the segment's copy of the last clipping volume
 };
 
 }  // namespace
 
 Traverser::Traverser()
-    : subtrees_(std::make_unique<SubtreeCache>()), itemTables_(std::make_unique<ItemTables>()) {
+    : subtrees_(std::make_unique<SubtreeCache>()),
+      itemTables_(std::make_unique<ItemTables>()),
+      segmentPool_(std::make_shared<detail::SegmentPool>()) {
 }
 
-Traverser::~Traverser() = default;
+Traverser::~Traverser() {
+    segmentPool_->close();
+}
 
 void Traverser::setIncremental(bool incremental) {
     if (incremental && !subtrees_) subtrees_ = std::make_unique<SubtreeCache>();
@@ -1246,12 +1281,15 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
         *itemTables_ = {};
         if (subtrees_) subtrees_->clear();
     }
-    Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, out);
+    Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, *segmentPool_, out);
     for (int root : roots) walk.root(root);
     out.lightSets = itemTables_->lightSets;
     out.depthCues = itemTables_->depthCues;
     elementsTraversed_ = walk.visited;
     elementsReused_ = walk.reused;
+    // Free segments this traversal did not need are not kept for the next (a smaller picture),
+    // and the kept ones let go of their old items before the cache counts what is drawn.
+    segmentPool_->settle(segmentPool_->takenSince() + kSpareSegments);
     cache_.prune();
     if (subtrees_) subtrees_->prune();
     return out;

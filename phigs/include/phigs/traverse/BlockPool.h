@@ -7,7 +7,8 @@
 
 namespace phigs {
 
-/// Values copied into blocks that never move, so views of them stay valid while the pool lives.
+/// Values copied into blocks that never move, so views of them stay valid until the pool is
+/// cleared or goes; a cleared pool fills its blocks again without allocating.
 template <class T>
 class BlockPool {
 public:
@@ -17,27 +18,42 @@ public:
     BlockPool(BlockPool&&) noexcept = default;
     BlockPool& operator=(BlockPool&&) noexcept = default;
 
-    /// The size of the first block, when nothing was added yet.
+    /// The size of the next block to allocate (at least).
     void reserve(std::size_t count) { nextBlock_ = std::max(nextBlock_, count); }
 
-    /// A copy of `count` values at `values`, in place until the pool goes.
+    /// A copy of `count` values at `values`, in place until the pool is cleared or goes.
     const T* add(const T* values, std::size_t count) {
         if (count == 0) return nullptr;
-        if (capacity_ - used_ < count) {
-            capacity_ = std::max(count, nextBlock_);
-            nextBlock_ = capacity_ * 2;
-            blocks_.push_back(std::make_unique_for_overwrite<T[]>(capacity_));
+        while (current_ < blocks_.size() && blocks_[current_].size - used_ < count) ++current_, used_ = 0;
+        if (current_ == blocks_.size()) {
+            const std::size_t size = std::max(count, nextBlock_);
+            nextBlock_ = size * 2;
+            blocks_.push_back({std::make_unique_for_overwrite<T[]>(size), size});
             used_ = 0;
         }
-        T* at = blocks_.back().get() + used_;
+        T* at = blocks_[current_].data.get() + used_;
         std::copy(values, values + count, at);
         used_ += count;
         return at;
     }
 
+    /// Forgets every value (views of them dangle) and keeps the blocks for the next ones.
+    void clear() { current_ = used_ = 0; }
+
+    /// Values the blocks hold room for.
+    std::size_t capacity() const {
+        std::size_t total = 0;
+        for (const Block& b : blocks_) total += b.size;
+        return total;
+    }
+
 private:
-    std::vector<std::unique_ptr<T[]>> blocks_;
-    std::size_t used_ = 0, capacity_ = 0;
+    struct Block {
+        std::unique_ptr<T[]> data;
+        std::size_t size = 0;
+    };
+    std::vector<Block> blocks_;
+    std::size_t current_ = 0, used_ = 0;  ///< the block being filled and the values it holds
     std::size_t nextBlock_ = 16;
 };
 

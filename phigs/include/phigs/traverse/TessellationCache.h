@@ -3,10 +3,8 @@
 #include "phigs/traverse/DrawList.h"
 
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <memory>
-#include <tuple>
 #include <vector>
 
 namespace phigs {
@@ -41,7 +39,11 @@ public:
 
     /// The cached entry for `key`, built with `build` (and counted under `kind`) when missing.
     enum class Kind { Surface, Curve, Mesh };
-    const Entry& get(const Key& key, Kind kind, const std::function<Entry()>& build);
+    template <class Build>
+    const Entry& get(const Key& key, Kind kind, Build&& build) {
+        if (const Entry* found = find(key)) return *found;
+        return add(key, kind, build());
+    }
     /// Forgets every entry not asked for since the previous sweep and held by no draw list
     /// (after each traversal). A sweep visits every entry, so it runs once enough entries were
     /// built or traversals passed to share its cost; until then an unused entry lingers.
@@ -56,11 +58,14 @@ public:
     std::size_t size() const { return entries_.size(); }
 
 private:
+    const Entry* find(const Key& key);
+    const Entry& add(const Key& key, Kind kind, Entry entry);
+
     struct Slot {
         Entry entry;
         bool used = true;
     };
-    std::map<Key, Slot> entries_;
+    std::map<Key, Slot> entries_;  ///< ordered: a traversal asks in about serial order
     Counters counters_;
     std::size_t builtSinceSweep_ = 0, keptBySweep_ = 0, prunesSinceSweep_ = 0;
     static constexpr std::size_t kSweepEvery = 16;

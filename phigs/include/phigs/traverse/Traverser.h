@@ -14,6 +14,10 @@
 
 namespace phigs {
 
+namespace detail {
+class SegmentPool;
+}
+
 /// The filters of one traversal; an absent filter passes everything (an absent pick filter
 /// makes every primitive pickable, an absent invisibility filter hides nothing).
 struct TraversalFilters {
@@ -57,6 +61,7 @@ private:
     TessellationCache cache_;
     std::unique_ptr<SubtreeCache> subtrees_;
     std::unique_ptr<ItemTables> itemTables_;
+    std::shared_ptr<detail::SegmentPool> segmentPool_;  ///< the draw segments made, kept for reuse
     std::uint64_t elementsTraversed_ = 0;
     std::uint64_t elementsReused_ = 0;
 };
