@@ -2,9 +2,12 @@
  * (RGB, CIELUV, HSV, HLS) and inquired SET (as given) and REALIZED (the RGB drawn, clamped, in
  * the current model), converted here by the textbook formulas (HSV by hue sector; HLS through
  * HSV; CIELUV through CIE XYZ and the BT.709 matrix, reference white D65); direct general colours
- * in elements keep their model; light source and depth cue REALIZED values differ from SET
- * exactly where the clamping rules say; and an HSV and an HLS colour paint the right RGB pixels
- * on the offscreen type (lavapipe). argv[1]: a directory for the files. */
+ * in elements keep their model; light source and depth cue colours (random indices and models)
+ * are answered SET as given and REALIZED as the clamped RGB drawn, their other REALIZED values
+ * differing from SET exactly where the clamping rules say; PSEUDO and PSEUDO_N colour mapping
+ * entries in a random model keep it and map a square's colour as the formulas say; and an HSV
+ * and an HLS colour paint the right RGB pixels on the offscreen type (lavapipe). argv[1]: a
+ * directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -188,17 +191,62 @@ static Pfloat realized_f(Pfloat v, Pfloat lo, Pfloat hi) {
     return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* A random general colour: an index into the colour table (0 .. 9, some undefined), or direct in
+ * a random model (RGB components partly outside [0, 1]: SET keeps them, REALIZED clamps). */
+static Pgcolr random_general_colour(void) {
+    Pgcolr g;
+    double c[3];
+    memset(&g, 0, sizeof g);
+    g.type = (Pint)(next_random() % 5);
+    if (g.type == PINDIRECT) {
+        g.val.ind = (Pint)(next_random() % 10);
+        return g;
+    }
+    random_colour(g.type, c);
+    if (g.type == PMODEL_RGB) c[0] = random_real(-0.5, 1.5), c[2] = random_real(-0.5, 1.5);
+    g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+    return g;
+}
+
+static int same_general_colour(const Pgcolr* a, const Pgcolr* b) {
+    if (a->type != b->type) return 0;
+    if (a->type == PINDIRECT) return a->val.ind == b->val.ind;
+    return a->val.direct.x == b->val.direct.x && a->val.direct.y == b->val.direct.y &&
+           a->val.direct.z == b->val.direct.z;
+}
+
+/* The RGB a workstation draws for a general colour: clamped, an index through the colour table
+ * (inquired REALIZED, under the RGB colour model). */
+static void drawn_rgb(const Pgcolr* g, double out[3]) {
+    if (g->type == PINDIRECT) {
+        Pint err = -1;
+        Pcolr_rep rep;
+        pinq_colr_rep(1, g->val.ind, PINQ_REALIZED, &err, &rep);
+        CHECK(err == 0);
+        out[0] = rep.rgb.red, out[1] = rep.rgb.green, out[2] = rep.rgb.blue;
+        return;
+    }
+    {
+        const double c[3] = {g->val.direct.x, g->val.direct.y, g->val.direct.z};
+        to_rgb(g->type, c, out);
+        for (int k = 0; k < 3; ++k) out[k] = clamp01(out[k]);
+    }
+}
+
+static int drawn_as(const Pgcolr* realized, const double rgb[3]) {
+    const double got[3] = {realized->val.direct.x, realized->val.direct.y, realized->val.direct.z};
+    return realized->type == PMODEL_RGB && close3(got, rgb, 1e-4);
+}
+
 static void lights_and_cues(void) {
     Pint err = -1;
-    for (int i = 0; i < 40; ++i) {
+    for (int i = 0; i < 60; ++i) {
         Plight_src_bundle spot, got, real;
         Pdcue_bundle cue, cue_got, cue_real;
+        double rgb[3];
         memset(&spot, 0, sizeof spot);
         spot.type = PLIGHT_SPOT;
-        spot.rec.spot.colr.type = PMODEL_RGB;
-        spot.rec.spot.colr.val.direct.x = (Pfloat)random_real(-0.5, 1.5);
-        spot.rec.spot.colr.val.direct.y = (Pfloat)random_real(0, 1);
-        spot.rec.spot.colr.val.direct.z = (Pfloat)random_real(-0.5, 1.5);
+        spot.rec.spot.colr = random_general_colour();
         spot.rec.spot.pos.x = (Pfloat)random_real(-1, 1);
         spot.rec.spot.dir.delta_z = -2;
         spot.rec.spot.exp = (Pfloat)random_real(-10, 200);
@@ -208,13 +256,12 @@ static void lights_and_cues(void) {
         pinq_light_src_rep(1, 2, PINQ_SET, &err, &got);
         CHECK(err == 0 && got.rec.spot.exp == spot.rec.spot.exp &&
               got.rec.spot.angle == spot.rec.spot.angle &&
-              got.rec.spot.colr.val.direct.x == spot.rec.spot.colr.val.direct.x &&
+              same_general_colour(&got.rec.spot.colr, &spot.rec.spot.colr) && /* as given */
               got.rec.spot.coef[0] == spot.rec.spot.coef[0] && got.rec.spot.dir.delta_z == -2);
         pinq_light_src_rep(1, 2, PINQ_REALIZED, &err, &real);
         CHECK(err == 0 && real.type == PLIGHT_SPOT);
-        CHECK(real.rec.spot.colr.val.direct.x == realized_f(spot.rec.spot.colr.val.direct.x, 0, 1));
-        CHECK(real.rec.spot.colr.val.direct.y == spot.rec.spot.colr.val.direct.y);
-        CHECK(real.rec.spot.colr.val.direct.z == realized_f(spot.rec.spot.colr.val.direct.z, 0, 1));
+        drawn_rgb(&spot.rec.spot.colr, rgb);
+        CHECK(drawn_as(&real.rec.spot.colr, rgb)); /* the clamped RGB drawn */
         CHECK(real.rec.spot.exp == realized_f(spot.rec.spot.exp, 0, 128));
         CHECK(real.rec.spot.coef[0] == realized_f(spot.rec.spot.coef[0], 0, 1e30f));
         CHECK(real.rec.spot.coef[1] == spot.rec.spot.coef[1]);
@@ -226,24 +273,47 @@ static void lights_and_cues(void) {
         cue.ref_planes[0] = (Pfloat)random_real(-0.2, 1.2),
         cue.ref_planes[1] = (Pfloat)random_real(-0.2, 1.2);
         cue.scaling[0] = (Pfloat)random_real(0, 1), cue.scaling[1] = (Pfloat)random_real(0, 1);
-        cue.colr.type = PMODEL_HSV; /* held as its RGB */
-        cue.colr.val.direct.x = 0, cue.colr.val.direct.y = 1, cue.colr.val.direct.z = 0.5f;
+        cue.colr = random_general_colour();
         EXPECT_NO_ERROR(pset_dcue_rep(1, 1, &cue));
         pinq_dcue_rep(1, 1, PINQ_SET, &err, &cue_got);
         CHECK(err == 0 && cue_got.ref_planes[0] == cue.ref_planes[0] &&
               cue_got.ref_planes[1] == cue.ref_planes[1]);
-        CHECK(cue_got.colr.type == PMODEL_RGB && near(cue_got.colr.val.direct.x, 0.5) &&
-              cue_got.colr.val.direct.y == 0);
+        CHECK(same_general_colour(&cue_got.colr, &cue.colr));
         pinq_dcue_rep(1, 1, PINQ_REALIZED, &err, &cue_real);
+        drawn_rgb(&cue.colr, rgb);
+        CHECK(err == 0 && drawn_as(&cue_real.colr, rgb));
         {
             const Pfloat f = realized_f(cue.ref_planes[0], 0, 1), b = realized_f(cue.ref_planes[1], 0, 1);
             const int swapped = f < b;
-            CHECK(err == 0 && cue_real.ref_planes[0] == (swapped ? b : f) &&
-                  cue_real.ref_planes[1] == (swapped ? f : b));
+            CHECK(cue_real.ref_planes[0] == (swapped ? b : f) && cue_real.ref_planes[1] == (swapped ? f : b));
             CHECK(cue_real.scaling[0] == cue.scaling[swapped ? 1 : 0] &&
                   cue_real.scaling[1] == cue.scaling[swapped ? 0 : 1]);
             CHECK(cue_real.ref_planes[0] >= cue_real.ref_planes[1]);
         }
+    }
+    /* An indexed light colour is drawn through the colour table as it is now. */
+    {
+        Plight_src_bundle ambient, real;
+        Pcolr_rep rep;
+        double rgb[3];
+        memset(&ambient, 0, sizeof ambient);
+        ambient.type = PLIGHT_AMBIENT;
+        ambient.rec.ambient.colr.type = PINDIRECT;
+        ambient.rec.ambient.colr.val.ind = 12;
+        EXPECT_NO_ERROR(pset_light_src_rep(1, 3, &ambient));
+        for (int i = 0; i < 5; ++i) {
+            rgb[0] = random_real(0, 1), rgb[1] = random_real(0, 1), rgb[2] = random_real(0, 1);
+            rep = representation(PMODEL_RGB, rgb);
+            EXPECT_NO_ERROR(pset_colr_rep(1, 12, &rep));
+            pinq_light_src_rep(1, 3, PINQ_REALIZED, &err, &real);
+            CHECK(err == 0 && drawn_as(&real.rec.ambient.colr, rgb));
+        }
+        ambient.rec.ambient.colr.val.ind = -1;
+        EXPECT_ERROR(pset_light_src_rep(1, 3, &ambient), 113, Pfn_set_light_src_rep);
+        ambient.rec.ambient.colr.type = 7;
+        EXPECT_ERROR(pset_light_src_rep(1, 3, &ambient), PE_ENUM_TYPE_INVAL, Pfn_set_light_src_rep);
+        pinq_light_src_rep(1, 3, PINQ_SET, &err, &real);
+        CHECK(err == 0 && real.rec.ambient.colr.type == PINDIRECT && real.rec.ambient.colr.val.ind == 12);
     }
 }
 
@@ -323,6 +393,143 @@ static void picture(const char* dir) {
     }
 }
 
+/* The components in `model` of an RGB colour: the inverse formulas of to_rgb. */
+static void from_rgb(Pint model, const double rgb[3], double out[3]) {
+    const double r = rgb[0], g = rgb[1], b = rgb[2];
+    const double hi = fmax(r, fmax(g, b)), lo = fmin(r, fmin(g, b)), d = hi - lo;
+    double h = 0;
+    if (d > 0) {
+        if (hi == r)
+            h = fmod((g - b) / d + 6, 6) / 6;
+        else if (hi == g)
+            h = ((b - r) / d + 2) / 6;
+        else
+            h = ((r - g) / d + 4) / 6;
+    }
+    if (model == PMODEL_HSV) {
+        out[0] = h, out[1] = hi > 0 ? d / hi : 0, out[2] = hi;
+    } else if (model == PMODEL_HLS) {
+        const double l = (hi + lo) / 2;
+        out[0] = h, out[1] = l, out[2] = d > 0 ? d / (1 - fabs(2 * l - 1)) : 0;
+    } else if (model == PMODEL_CIELUV) {
+        const double x = 0.4124 * r + 0.3576 * g + 0.1805 * b, y = 0.2126 * r + 0.7152 * g + 0.0722 * b,
+                     z = 0.0193 * r + 0.1192 * g + 0.9505 * b, den = x + 15 * y + 3 * z;
+        out[0] = den > 0 ? 4 * x / den : 0.1978, out[1] = den > 0 ? 9 * y / den : 0.4683, out[2] = y;
+    } else {
+        for (int k = 0; k < 3; ++k) out[k] = rgb[k];
+    }
+}
+
+/* A random RGB colour of 8-bit components, saturated enough that its hue is well defined. */
+static void random_vivid(double rgb[3]) {
+    do
+        for (int k = 0; k < 3; ++k) rgb[k] = (double)(next_random() % 256u) / 255.0;
+    while (fmax(rgb[0], fmax(rgb[1], rgb[2])) - fmin(rgb[0], fmin(rgb[1], rgb[2])) < 0.2);
+}
+
+/* round(clamp(v) (n - 1)), or -1 when v (n - 1) is too near a half for float and double to agree. */
+static int ramp_slot(double v, int n) {
+    const double x = (v < 0 ? 0 : v > 1 ? 1 : v) * (n - 1), f = x - floor(x);
+    return fabs(f - 0.5) < 0.02 ? -1 : (int)lround(x);
+}
+
+/* Colour mapping on the offscreen type: a square of a random RGB colour drawn through a PSEUDO
+ * entry (weights and ramp in a random model) and one through a PSEUDO_N entry (lists of a random
+ * model) shows the mapped colour; the inquiry answers the model given. */
+static void mapping_picture(const char* dir, Pstore store) {
+    char png[512];
+    snprintf(png, sizeof png, "%s/colour_mapping.png", dir);
+    for (int round = 0; round < 8; ++round) {
+        const Pint model = 1 + (Pint)(next_random() % 4);
+        double rgb[3], c[3], pseudo_rgb[3], pseudo_n_rgb[3];
+        Pfloat weights[3], values[3][5];
+        Pcolr_rep ramp[6];
+        Pfloat_list lists[3];
+        Pcolr_map_data data, *got = NULL;
+        Pint n = 2 + (Pint)(next_random() % 5), slot = -1, sum = 0, err = -1, method = 0;
+        Picture p = {0, 0, NULL};
+        for (;;) { /* a colour away from the rounding boundaries of both entries */
+            double v = 0;
+            random_vivid(rgb);
+            from_rgb(model, rgb, c);
+            for (int k = 0; k < 3; ++k) weights[k] = (Pfloat)random_real(0, 0.6), v += weights[k] * c[k];
+            slot = ramp_slot(v, n);
+            sum = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int m = 2 + (int)(next_random() % 4), at = ramp_slot(c[k], m);
+                for (int i = 0; i < m; ++i) values[k][i] = (Pfloat)(next_random() % 3);
+                lists[k].num_floats = m, lists[k].floats = values[k];
+                if (at < 0)
+                    slot = -1;
+                else
+                    sum += (Pint)values[k][at];
+            }
+            if (slot >= 0) break;
+        }
+        for (Pint i = 0; i < n; ++i) {
+            double r[3];
+            random_colour(model, r);
+            ramp[i] = representation(model, r);
+            if (i == slot) {
+                to_rgb(model, r, pseudo_rgb);
+                for (int k = 0; k < 3; ++k) pseudo_rgb[k] = clamp01(pseudo_rgb[k]);
+            }
+        }
+        remove(png);
+        EXPECT_NO_ERROR(popen_ws(2, png, PWST_OFFSCREEN));
+        data.meth_r2.colr_model = model;
+        data.meth_r2.weights.num_floats = 3, data.meth_r2.weights.floats = weights;
+        data.meth_r2.colrs.num_colr_reps = n, data.meth_r2.colrs.colr_reps = ramp;
+        EXPECT_NO_ERROR(pset_colr_map_rep(2, 1, PCOLR_MAP_PSEUDO, &data));
+        pinq_colr_map_rep(2, 1, PINQ_SET, store, &err, &method, &got);
+        CHECK(err == 0 && method == PCOLR_MAP_PSEUDO && got && got->meth_r2.colr_model == model &&
+              got->meth_r2.colrs.num_colr_reps == n);
+        if (err == 0 && got) {
+            double given[3], back[3];
+            components(model, &ramp[n - 1], given);
+            components(model, &got->meth_r2.colrs.colr_reps[n - 1], back);
+            CHECK(close3(given, back, 1e-6)); /* the ramp as given, in its model */
+        }
+        data.meth_r3.colr_model = model;
+        data.meth_r3.colr_lists.num_lists = 3, data.meth_r3.colr_lists.lists = lists;
+        EXPECT_NO_ERROR(pset_colr_map_rep(2, 2, PCOLR_MAP_PSEUDO_N, &data));
+        pinq_colr_map_rep(2, 2, PINQ_REALIZED, store, &err, &method, &got);
+        CHECK(err == 0 && method == PCOLR_MAP_PSEUDO_N && got && got->meth_r3.colr_model == model);
+        {
+            Pcolr_rep entry;
+            pinq_colr_rep(2, sum, PINQ_REALIZED, &err, &entry);
+            CHECK(err == 0);
+            pseudo_n_rgb[0] = entry.rgb.red, pseudo_n_rgb[1] = entry.rgb.green,
+            pseudo_n_rgb[2] = entry.rgb.blue;
+        }
+        pdel_struct(8);
+        popen_struct(8);
+        pset_int_style(PSTYLE_SOLID);
+        {
+            Pgcolr g;
+            g.type = PMODEL_RGB;
+            g.val.direct.x = (Pfloat)rgb[0], g.val.direct.y = (Pfloat)rgb[1], g.val.direct.z = (Pfloat)rgb[2];
+            pset_int_colr(&g);
+        }
+        square(0.1, 0.1); /* entry 0: TRUE */
+        pset_colr_map_ind(1);
+        square(0.6, 0.1);
+        pset_colr_map_ind(2);
+        square(0.1, 0.6);
+        pclose_struct();
+        EXPECT_NO_ERROR(ppost_struct(2, 8, 0.5f));
+        EXPECT_NO_ERROR(pupd_ws(2, PFLAG_PERFORM));
+        CHECK(read_png(png, &p));
+        if (p.rgb) {
+            CHECK(pixel_is(&p, 0.25, 0.25, rgb));
+            CHECK(pixel_is(&p, 0.75, 0.25, pseudo_rgb));
+            CHECK(pixel_is(&p, 0.25, 0.75, pseudo_n_rgb));
+            free(p.rgb);
+        }
+        EXPECT_NO_ERROR(pclose_ws(2));
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512], svg[512];
@@ -339,6 +546,7 @@ int main(int argc, char** argv) {
     lights_and_cues();
     EXPECT_NO_ERROR(pclose_ws(1));
     picture(dir);
+    mapping_picture(dir, store);
     pdel_store(store);
     pclose_phigs();
     return finish("test_colour_models");

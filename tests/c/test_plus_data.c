@@ -225,7 +225,7 @@ static void refusals(void) {
     pseudo_entry(&data, weights, ramp, 1);
     data.meth_r2.weights.num_floats = 2;
     EXPECT_ERROR(pset_colr_map_rep(1, 5, PCOLR_MAP_PSEUDO, &data), -207, Pfn_set_colr_map_rep);
-    data.meth_r2.weights.num_floats = 3, data.meth_r2.colr_model = PMODEL_HSV;
+    data.meth_r2.weights.num_floats = 3, data.meth_r2.colr_model = 5;
     EXPECT_ERROR(pset_colr_map_rep(1, 5, PCOLR_MAP_PSEUDO, &data), 110, Pfn_set_colr_map_rep);
     EXPECT_ERROR(pset_colr_map_rep(1, 5, PCOLR_MAP_PSEUDO, NULL), -204, Pfn_set_colr_map_rep);
     data.meth_r3.colr_model = PMODEL_RGB, data.meth_r3.colr_lists.num_lists = 2,

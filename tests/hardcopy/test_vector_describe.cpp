@@ -1,6 +1,7 @@
 // The describe step of the vector hardcopy without files: clipping to views and model clipping
-// volumes, NURBS curves to the page tolerance, facets split and ordered back to front, hidden
-// lines removed, the raster's lighting, and mesh outlines.
+// volumes, vertex-coloured dashed lines whose dashes run on across their colour pieces, NURBS curves to the
+// page tolerance, facets split and ordered back to front, hidden lines removed, the raster's lighting, and
+// mesh outlines.
 #include "VectorRaster.h"
 #include "VectorScenes.h"
 #include "phigs/hardcopy/MeshOutline.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 using namespace phigs;
 using namespace phigs::hardcopy;
@@ -150,6 +152,59 @@ TEST_CASE(
     CHECK(worstSagitta <= 0.01);
     CHECK(stroke.points.size() > 100);  // traversal's 8 per span would give 33
     CHECK(glm::length(stroke.points.front() - stroke.points.back()) < 1e-9);
+}
+
+TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash phase across its pieces",
+          "[hardcopy]") {
+    std::mt19937 rng(7013);
+    std::uniform_real_distribution<double> at(0.05, 0.95);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int round = 0; round < 60; ++round) {
+        DrawPolyline line;
+        std::vector<glm::dvec3> points;
+        std::vector<glm::vec3> colours;
+        const int n = 2 + int(rng() % 6);
+        for (int i = 0; i < n; ++i) {
+            points.push_back({at(rng), at(rng), 0.5});
+            colours.push_back({unit(rng), unit(rng), unit(rng)});
+        }
+        line.points = points;
+        line.colours = colours;
+        line.interpolated = rng() % 2 == 0;
+        line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
+        DrawList list = identityList();
+        list.items.push_back(item(line));
+        const VectorPicture picture = describePicture(list, squarePage());
+        // Page lengths along the line (one point per nominal pixel).
+        std::vector<double> along{0.0};
+        for (int i = 1; i < n; ++i)
+            along.push_back(along.back() + 100.0 * glm::length(glm::dvec2(points[std::size_t(i)]) -
+                                                               glm::dvec2(points[std::size_t(i - 1)])));
+        double phase = 0.0;
+        std::size_t pieces = 0;
+        for (const VectorOp& op : picture.ops) {
+            const auto* stroke = std::get_if<VectorStroke>(&op);
+            if (!stroke) continue;
+            ++pieces;
+            REQUIRE_FALSE(stroke->dashes.empty());
+            CHECK(stroke->dashOffset == Approx(phase).margin(1e-6));  // the dashes run on
+            double length = 0.0;
+            for (std::size_t k = 1; k < stroke->points.size(); ++k)
+                length += glm::length(stroke->points[k] - stroke->points[k - 1]);
+            // The colour at the piece's middle: the segment's first colour, or interpolated.
+            const double middle = phase + length / 2;
+            std::size_t k = 0;
+            while (k + 2 < along.size() && along[k + 1] <= middle) ++k;
+            const float t = float((middle - along[k]) / std::max(along[k + 1] - along[k], 1e-12));
+            const glm::vec3 expected =
+                line.interpolated ? glm::mix(colours[k], colours[k + 1], t) : colours[k];
+            CHECK(glm::length(stroke->colour - expected) < (line.interpolated ? 2.0f / 255 : 1e-5f));
+            phase += length;
+        }
+        CHECK(phase == Approx(along.back()).epsilon(1e-6));
+        CHECK(pieces >= 1);
+        if (!line.interpolated) CHECK(pieces <= std::size_t(n - 1));
+    }
 }
 
 TEST_CASE("vector describe: facets overlapping in depth are split and painted back to front", "[hardcopy]") {

@@ -111,8 +111,11 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
             for (int k = pick(0, 6); k > 0; --k)
                 p.push_back(glm::dvec3(pick(-9, 9), pick(-9, 9), pick(-9, 9)));
             DrawItem item;
-            item.primitive = DrawPolyline{
-                ItemArray<glm::dvec3>::view(segment->points.add(p.data(), p.size()), p.size()), {}};
+            item.primitive =
+                DrawPolyline{ItemArray<glm::dvec3>::view(segment->points.add(p.data(), p.size()), p.size()),
+                             {},
+                             {},
+                             false};
             const DrawPathLevel own{pick(1, 9), pick(1, 99), pick(0, 9)};
             item.source.path = DrawPath::below(
                 ItemArray<DrawPathLevel>::view(segment->pathPrefix.data(), segment->pathPrefix.size()), own);

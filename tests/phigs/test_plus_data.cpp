@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
 
 using namespace phigs;
 using phigs::test::errorOf;
@@ -102,16 +105,16 @@ TEST_CASE("polyline set with data: a segment takes its first vertex's colour", "
                        {Colour::indexed(5)}};
     const auto lines = itemsOf<DrawPolyline>(
         s.draw({e, polylineColourIndex(6), PolylineSetWithDataElement{{e.polylines[0]}, {}}}));
-    // first polyline: red run of two segments, then green; the second in its direct colour; the
-    // one-point polyline draws nothing; the set without colours in the polyline colour
-    REQUIRE(lines.size() == 4);
-    CHECK(lines[0]->points.size() == 3);
-    CHECK(lines[0]->style->colour == glm::vec3(1, 0, 0));
-    CHECK(lines[1]->points == std::vector<glm::dvec3>{{2, 0, 0}, {3, 0, 0}});
-    CHECK(lines[1]->style->colour == glm::vec3(0, 1, 0));
-    CHECK(lines[2]->style->colour == glm::vec3(0.5f, 0.25f, 1));
-    CHECK(lines[3]->points.size() == 4);
-    CHECK(lines[3]->style->colour == glm::vec3(0, 1, 1));
+    // one item per polyline of two points or more, its vertex colours resolved (segment i takes
+    // colours[i] under polyline shading NONE); the set without colours in the polyline colour
+    REQUIRE(lines.size() == 3);
+    CHECK(lines[0]->points.size() == 4);
+    CHECK(lines[0]->colours == std::vector<glm::vec3>{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    CHECK_FALSE(lines[0]->interpolated);
+    CHECK(lines[1]->colours == std::vector<glm::vec3>{{0.5f, 0.25f, 1}, {1, 0, 0}});
+    CHECK(lines[2]->points.size() == 4);
+    CHECK(lines[2]->colours.empty());
+    CHECK(lines[2]->style->colour == glm::vec3(0, 1, 1));
 }
 
 TEST_CASE("cell array plus draws its general colours as a mesh", "[plus][traverse]") {
@@ -202,6 +205,44 @@ TEST_CASE("a PSEUDO colour mapping changes the drawn colours, TRUE leaves them",
     CHECK(meshes[0]->mesh->colours == std::vector<glm::vec3>{glm::vec3(0.5f), glm::vec3(0.5f), glm::vec3(1)});
 }
 
+TEST_CASE("light and depth cue colours in a model draw as RGB, an index through the table as it is now",
+          "[plus][traverse][colour]") {
+    std::mt19937 rng(4411);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int round = 0; round < 30; ++round) {
+        Scene s;
+        const auto model = static_cast<ColourModel>(randomInt(rng, 1, 4));
+        const glm::dvec3 c{unit(rng), unit(rng), unit(rng)};
+        Light sun;
+        sun.type = LightType::Directional;
+        s.ws->setLightSourceRepresentation(2, sun, Colour::inModel(model, c));
+        s.ws->setLightSourceRepresentation(3, Light{}, Colour::indexed(9));
+        DepthCue cue;
+        cue.enabled = true;
+        s.ws->setDepthCueRepresentation(1, cue, Colour::indexed(9));
+        CHECK(s.ws->tables().givenLightColour(2) == Colour::inModel(model, c));  // kept as given
+        CHECK(s.ws->tables().givenDepthCueColour(1) == Colour::indexed(9));
+        for (int change = 0; change < 2; ++change) {
+            const glm::dvec3 entry{unit(rng), unit(rng), unit(rng)};
+            s.ws->setColourRepresentation(9, entry);
+            const DrawList& list =
+                s.draw({LightSourceStateAttribute{{2, 3}, {}}, IndexAttribute{ElementType::DepthCueIndex, 1},
+                        polyline3({{0, 0, 0}, {1, 0, 0}})});
+            REQUIRE(list.items.size() == 1);
+            const std::vector<Light>& lights = list.lightSets.at(std::size_t(list.items[0].lightSet));
+            REQUIRE(lights.size() == 2);
+            const glm::vec3 sunRgb(clampedRgb(model, c));
+            CHECK(glm::length(lights[0].colour - sunRgb) < 1e-5f);
+            CHECK(lights[1].colour == glm::vec3(entry));
+            CHECK(list.depthCues.at(std::size_t(list.items[0].depthCue)).colour == glm::vec3(entry));
+        }
+    }
+    Scene s;
+    CHECK(errorOf([&] { s.ws->setLightSourceRepresentation(2, Light{}, Colour::indexed(-1)); }) == 113);
+    CHECK(errorOf([&] { s.ws->setDepthCueRepresentation(1, DepthCue{}, Colour::indexed(-2)); }) == 113);
+    CHECK_FALSE(s.ws->tables().lights.contains(2));
+}
+
 TEST_CASE("a colour mapping change waits for the update under ASTI", "[plus][colour]") {
     Scene s;
     const Element line = polyline3({{0, 0, 0}, {1, 0, 0}});
@@ -213,6 +254,45 @@ TEST_CASE("a colour mapping change waits for the update under ASTI", "[plus][col
     s.ws->update(Regeneration::Perform);
     CHECK(std::get<DrawPolyline>(s.ws->display().items[0].primitive).style->colour == glm::vec3(0, 0, 1));
     CHECK(s.ws->tables().colourMappings.get(1).colours.size() == 1);
+}
+
+TEST_CASE("PSEUDO and PSEUDO_N entries read a colour's components in their own model", "[plus][colour]") {
+    std::mt19937 rng(6203);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    ColourTable colours;
+    for (int round = 0; round < 200; ++round) {
+        const auto model = static_cast<ColourModel>(randomInt(rng, 1, 4));
+        const glm::dvec3 rgb{unit(rng), unit(rng), unit(rng)}, c = fromRgb(model, rgb);
+        ColourMappingTable table;
+        ColourMapping m = pseudoRamp({}, {unit(rng) / 2, unit(rng) / 2, unit(rng) / 2});
+        m.model = model;
+        for (int k = randomInt(rng, 1, 6); k > 0; --k) m.colours.push_back({unit(rng), unit(rng), unit(rng)});
+        table.set(1, m, nullptr, "test");
+        const double v = std::clamp(glm::dot(m.weights, c), 0.0, 1.0) * double(m.colours.size() - 1);
+        if (std::abs(v - std::floor(v) - 0.5) > 1e-6) {
+            const glm::dvec3 expected = clampedRgb(model, m.colours[std::size_t(std::lround(v))]);
+            CHECK(glm::length(table.map(1, rgb, colours) - expected) < 1e-9);
+        }
+        ColourMapping n;
+        n.method = ColourMappingMethod::PseudoN;
+        n.model = model;
+        double sum = 0.0;
+        bool boundary = false;
+        for (int k = 0; k < 3; ++k) {
+            auto& list = n.lists.emplace_back();
+            for (int i = randomInt(rng, 1, 4); i > 0; --i) list.push_back(randomInt(rng, 0, 2));
+            const double x = std::clamp(c[k], 0.0, 1.0) * double(list.size() - 1);
+            boundary = boundary || std::abs(x - std::floor(x) - 0.5) < 1e-6;
+            sum += list[std::size_t(std::lround(x))];
+        }
+        table.set(2, n, nullptr, "test");
+        if (!boundary) CHECK(table.map(2, rgb, colours) == colours.get(int(sum)));
+        CHECK(table.get(2).model == model);
+    }
+    ColourMappingTable table;
+    ColourMapping bad = pseudoRamp({{0, 0, 0}}, {1, 0, 0});
+    bad.model = static_cast<ColourModel>(5);
+    CHECK(errorOf([&] { table.set(1, bad, nullptr, "test"); }) == 110);
 }
 
 TEST_CASE("colour mapping representations refuse bad entries and change nothing", "[plus][colour]") {

@@ -1,5 +1,6 @@
 // GPU-free pieces of the renderer: triangulation with holes, line patterns, marker shapes,
-// stroke-font layout, describe-step geometry and cache keys.
+// stroke-font layout, describe-step geometry (vertex-coloured patterned lines included) and cache
+// keys.
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
@@ -7,9 +8,11 @@
 #include "phigs/render/Triangulation.h"
 
 #include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <fstream>
+#include <random>
 
 using namespace phigs;
 using namespace phigs::render;
@@ -161,8 +164,51 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     CHECK(lines.vertices[3].pattern == Approx(200.0f));  // measured on screen: two 100-pixel segments
     // The cache key follows the content, and for patterned lines the view too.
     CHECK(geometryKey(item, glm::dmat4(1.0)) != geometryKey(item, toPixels));
-    item.primitive = DrawPolyline{dashed.points, {}};
+    item.primitive = DrawPolyline{dashed.points, {}, {}, false};
     CHECK(geometryKey(item, glm::dmat4(1.0)) == geometryKey(item, toPixels));
+}
+
+TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern along its whole length",
+          "[render][unit]") {
+    std::mt19937 rng(5821);
+    std::uniform_real_distribution<double> real(-1.0, 1.0);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int round = 0; round < 100; ++round) {
+        DrawPolyline line;
+        std::vector<glm::dvec3> points;
+        std::vector<glm::vec3> colours;
+        const int n = 2 + int(rng() % 9);
+        for (int i = 0; i < n; ++i) {
+            points.push_back({real(rng), real(rng), real(rng)});
+            colours.push_back({unit(rng), unit(rng), unit(rng)});
+        }
+        line.points = points;
+        line.colours = colours;
+        line.interpolated = rng() % 2 == 0;
+        line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
+        DrawItem item;
+        item.primitive = line;
+        const double scale = 50.0 + 200.0 * unit(rng);
+        const glm::dmat4 toPixels(glm::dvec4(scale, 0, 0, 0), glm::dvec4(0, scale, 0, 0),
+                                  glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
+        const ItemGeometry g = describeItem(item, toPixels);
+        REQUIRE(g.parts.size() == 1);  // one part: the pattern does not start again per segment
+        CHECK(g.parts[0].vertexColours);
+        REQUIRE(g.vertices.size() == std::size_t(2 * (n - 1)));
+        double distance = 0.0;
+        for (int i = 0; i + 1 < n; ++i) {
+            const RenderVertex &a = g.vertices[std::size_t(2 * i)], &b = g.vertices[std::size_t(2 * i + 1)];
+            CHECK(a.pattern == Approx(distance).margin(1e-3));
+            distance += scale * glm::length(glm::dvec2(points[std::size_t(i + 1)] - points[std::size_t(i)]));
+            CHECK(b.pattern == Approx(distance).epsilon(1e-5));
+            CHECK(a.colour == colours[std::size_t(i)]);
+            CHECK(b.colour == colours[std::size_t(line.interpolated ? i + 1 : i)]);
+        }
+        // Colours and shading belong to the cache key.
+        const std::uint64_t key = geometryKey(item, toPixels);
+        std::get<DrawPolyline>(item.primitive).interpolated = !line.interpolated;
+        CHECK(geometryKey(item, toPixels) != key);
+    }
 }
 
 TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cannot overrun",

@@ -1967,7 +1967,9 @@ typedef struct {
 } Pdcue_bundle;
 /* Light sources: index >= 1 (100), table full 103, type outside 1..4 (2202). Depth cue: index
  * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. PINQ_SET answers the
- * values set (colours as PMODEL_RGB); PINQ_REALIZED what is drawn: colours clamped to [0, 1],
+ * values set (colours as given: PINDIRECT with the index, drawn through the colour table as it is
+ * when drawn, or direct in their model; a colour type outside PINDIRECT .. PMODEL_HLS is 2202, an
+ * index below 0 is 113); PINQ_REALIZED what is drawn: colours as PMODEL_RGB clamped to [0, 1],
  * light directions of unit length ((0, 0, -1) for a zero one), attenuation coefficients >= 0, spot
  * exponent in [0, 128] and spread angle in [0, pi]; depth cue planes and scales clamped to [0, 1]
  * and the planes ordered front >= back (a reversed pair swapped with its scales). 101 for an
@@ -2051,10 +2053,12 @@ void pset_rendering_colr_model(Pint model);
 
 /* Colour mapping (PHIGS PLUS). Each workstation has a colour mapping table of 20 entries; entry 0
  * is predefined TRUE, an undefined index maps as entry 0. TRUE draws colours as they are; PSEUDO
- * draws colrs[round(v (n - 1))] with v = clamp(weights . rgb, 0, 1); PSEUDO_N maps each RGB
- * component c through its list (list[round(c (n - 1))]) and draws the colour table entry at the
- * rounded sum. Colours are mapped where traversal resolves them (after the colour table, before
- * lighting), so an unlit primitive shows exactly the mapped colour. */
+ * takes the components c of a colour in colr_model and draws colrs[round(v (n - 1))] (given in
+ * colr_model) with v = clamp(weights . c, 0, 1); PSEUDO_N maps each component c of colr_model
+ * through its list (list[round(c (n - 1))]) and draws the colour table entry at the rounded sum.
+ * A colr_model outside PMODEL_RGB .. PMODEL_HLS is 110; the inquiries answer the model given. Colours are
+ * mapped where traversal resolves them (after the colour table, before lighting), so an unlit primitive shows
+ * exactly the mapped colour. */
 #define PCOLR_MAP_TRUE 1
 #define PCOLR_MAP_PSEUDO 2
 #define PCOLR_MAP_PSEUDO_N 3
@@ -2068,12 +2072,12 @@ typedef struct {
 } Pfloat_list_list;
 typedef union {
     struct {
-        Pint colr_model;     /* PMODEL_RGB */
+        Pint colr_model;     /* PMODEL_RGB .. PMODEL_HLS */
         Pfloat_list weights; /* three */
         Pcolr_rep_list colrs;
     } meth_r2;
     struct {
-        Pint colr_model;             /* PMODEL_RGB */
+        Pint colr_model;             /* PMODEL_RGB .. PMODEL_HLS */
         Pfloat_list_list colr_lists; /* three */
     } meth_r3;
 } Pcolr_map_data;

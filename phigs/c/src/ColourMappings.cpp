@@ -23,35 +23,35 @@ int checkedMethod(Pint method, const char* name) {
     return method;
 }
 
-void rgbModel(Pint model, const char* name) {
-    if (model != PMODEL_RGB)
-        throw Error(kColourModelNotAvailable, name, "colour model " + std::to_string(model) + " (RGB only)");
+/// The colour model of PSEUDO or PSEUDO_N data (110 for a number that names none).
+ColourModel model(Pint model, const char* name) {
+    if (!isColourModel(model))
+        throw Error(kColourModelNotAvailable, name, "colour model " + std::to_string(model));
+    return static_cast<ColourModel>(model);
 }
 
-/// The PSEUDO data of a C record (weights and colours; the core checks their values).
+/// The PSEUDO data of a C record (weights and colours in its model; the core checks their values).
 ColourMapping pseudo(const Pcolr_map_data& d, const char* name) {
-    rgbModel(d.meth_r2.colr_model, name);
     ColourMapping m;
     m.method = ColourMappingMethod::Pseudo;
+    m.model = model(d.meth_r2.colr_model, name);
     const std::size_t weights = c::count(d.meth_r2.weights.num_floats, name);
     if (weights != 3)
         throw Error(errors::BadColourMappingData, name,
-                    std::to_string(weights) + " weights, the RGB model needs 3");
+                    std::to_string(weights) + " weights, a colour model needs 3");
     c::require(d.meth_r2.weights.floats, name);
     m.weights = {d.meth_r2.weights.floats[0], d.meth_r2.weights.floats[1], d.meth_r2.weights.floats[2]};
     const std::size_t n = c::count(d.meth_r2.colrs.num_colr_reps, name);
     if (n) c::require(d.meth_r2.colrs.colr_reps, name);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Prgb& c = d.meth_r2.colrs.colr_reps[i].rgb;
-        m.colours.push_back({c.red, c.green, c.blue});
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        m.colours.push_back(c::colourComponents(d.meth_r2.colrs.colr_reps[i], d.meth_r2.colr_model));
     return m;
 }
 
 ColourMapping pseudoN(const Pcolr_map_data& d, const char* name) {
-    rgbModel(d.meth_r3.colr_model, name);
     ColourMapping m;
     m.method = ColourMappingMethod::PseudoN;
+    m.model = model(d.meth_r3.colr_model, name);
     const std::size_t lists = c::count(d.meth_r3.colr_lists.num_lists, name);
     if (lists) c::require(d.meth_r3.colr_lists.lists, name);
     for (std::size_t i = 0; i < lists; ++i) {
@@ -72,9 +72,10 @@ void answer(const ColourMapping& m, Phigs_store& s, Pint* method, Pcolr_map_data
     if (m.method == ColourMappingMethod::Pseudo) {
         s.floats = {static_cast<Pfloat>(m.weights.x), static_cast<Pfloat>(m.weights.y),
                     static_cast<Pfloat>(m.weights.z)};
-        for (const auto& c : m.colours) s.colourReps.push_back(c::cColour(c));
+        const Pint model = static_cast<Pint>(m.model);
+        for (const auto& c : m.colours) s.colourReps.push_back(c::cColour(c, model));
         s.colourMap.meth_r2 = {
-            PMODEL_RGB, {3, s.floats.data()}, {static_cast<Pint>(s.colourReps.size()), s.colourReps.data()}};
+            model, {3, s.floats.data()}, {static_cast<Pint>(s.colourReps.size()), s.colourReps.data()}};
     } else if (m.method == ColourMappingMethod::PseudoN) {
         for (const auto& list : m.lists)
             for (double v : list) s.floats.push_back(static_cast<Pfloat>(v));
@@ -83,7 +84,8 @@ void answer(const ColourMapping& m, Phigs_store& s, Pint* method, Pcolr_map_data
             s.floatLists.push_back({static_cast<Pint>(list.size()), s.floats.data() + at});
             at += list.size();
         }
-        s.colourMap.meth_r3 = {PMODEL_RGB, {static_cast<Pint>(s.floatLists.size()), s.floatLists.data()}};
+        s.colourMap.meth_r3 = {static_cast<Pint>(m.model),
+                               {static_cast<Pint>(s.floatLists.size()), s.floatLists.data()}};
     }
     *data = &s.colourMap;
 }

@@ -1,14 +1,14 @@
 // PHIGS PLUS representations: light sources and depth cueing on a workstation, and their
-// inquiries (SET: the values given, colours as RGB; REALIZED: what the workstation draws, as
-// phigs/view/RealizedLighting.h rules); the predefined
+// inquiries (SET: the values given, colours in the model or as the index given; REALIZED: what
+// the workstation draws, colours as clamped RGB, as phigs/view/RealizedLighting.h rules); the predefined
 // representations and the PHIGS PLUS facilities of the workstation types.
 
 #include "Binding.h"
 #include "Conversions.h"
 #include "Inquiry.h"
+#include "PlusBundleAccess.h"
 #include "WorkstationAccess.h"
 #include "phigs.h"
-#include "phigs/view/RealizedLighting.h"
 
 #include <climits>
 
@@ -18,16 +18,13 @@ namespace {
 
 using namespace phigs;
 
-glm::vec3 rgb(const Workstation& ws, const Pgcolr& c, const char* name) {
-    if (c.type == PINDIRECT) {
-        if (c.val.ind < 0)
-            throw Error(errors::ColourIndexBelowZero, name, "colour index " + std::to_string(c.val.ind));
-        return glm::vec3(ws.tables().colours.get(c.val.ind));
-    }
+/// A light or depth cue colour as given: an index, or direct in a colour model (2202 for any
+/// other type; the workstation checks the index).
+Colour given(const Pgcolr& c, const char* name) {
+    if (c.type == PINDIRECT) return Colour::indexed(c.val.ind);
     if (!isColourModel(c.type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
-    // Held as RGB (converted, not clamped: REALIZED clamps).
-    return glm::vec3(
-        toRgb(static_cast<ColourModel>(c.type), {c.val.direct.x, c.val.direct.y, c.val.direct.z}));
+    return Colour::inModel(static_cast<ColourModel>(c.type),
+                           {c.val.direct.x, c.val.direct.y, c.val.direct.z});
 }
 
 Pgcolr gcolr(const glm::vec3& c) {
@@ -37,7 +34,23 @@ Pgcolr gcolr(const glm::vec3& c) {
     return g;
 }
 
-Light light(const Workstation& ws, const Plight_src_bundle& b, const char* name) {
+/// The colour of a light source bundle (any type; `B` a bundle, const or not).
+template <class B>
+auto& colourOf(B& b) {
+    switch (b.type) {
+        case PLIGHT_AMBIENT:
+            return b.rec.ambient.colr;
+        case PLIGHT_DIRECTIONAL:
+            return b.rec.directional.colr;
+        case PLIGHT_POSITIONAL:
+            return b.rec.positional.colr;
+        default:
+            return b.rec.spot.colr;
+    }
+}
+
+/// The light of a bundle; its colour comes apart (given()).
+Light light(const Plight_src_bundle& b, const char* name) {
     Light l;
     if (b.type < PLIGHT_AMBIENT || b.type > PLIGHT_SPOT)
         throw Error(PE_ENUM_TYPE_INVAL, name, "light source type");
@@ -46,19 +59,15 @@ Light light(const Workstation& ws, const Plight_src_bundle& b, const char* name)
     auto point = [](const Ppoint3& p) { return glm::dvec3(p.x, p.y, p.z); };
     switch (b.type) {
         case PLIGHT_AMBIENT:
-            l.colour = rgb(ws, b.rec.ambient.colr, name);
             break;
         case PLIGHT_DIRECTIONAL:
-            l.colour = rgb(ws, b.rec.directional.colr, name);
             l.direction = vec(b.rec.directional.dir);
             break;
         case PLIGHT_POSITIONAL:
-            l.colour = rgb(ws, b.rec.positional.colr, name);
             l.position = point(b.rec.positional.pos);
             l.attenuation = {b.rec.positional.coef[0], b.rec.positional.coef[1]};
             break;
         default:
-            l.colour = rgb(ws, b.rec.spot.colr, name);
             l.position = point(b.rec.spot.pos);
             l.direction = vec(b.rec.spot.dir);
             l.concentration = b.rec.spot.exp;
@@ -141,8 +150,10 @@ extern "C" {
 void pset_light_src_rep(Pint ws_id, Pint index, const Plight_src_bundle* rep) {
     Binding::instance().call(Pfn_set_light_src_rep, [&](Phigs& p) {
         Workstation& ws = p.workstation(ws_id);
-        c::require(rep, "SET LIGHT SOURCE REPRESENTATION");
-        ws.setLightSourceRepresentation(index, light(ws, *rep, "SET LIGHT SOURCE REPRESENTATION"));
+        const char* name = "SET LIGHT SOURCE REPRESENTATION";
+        c::require(rep, name);
+        const Light l = light(*rep, name);
+        ws.setLightSourceRepresentation(index, l, given(colourOf(*rep), name));
     });
 }
 
@@ -155,7 +166,12 @@ void pinq_light_src_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pligh
         const auto found = ws.tables().lights.find(index);
         if (found == ws.tables().lights.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
         c::require(rep, "inquiry");
-        *rep = bundle(t == PINQ_REALIZED ? realized(found->second) : found->second);
+        if (t == PINQ_REALIZED) {
+            *rep = bundle(*ws.tables().drawnLight(index));
+        } else {
+            *rep = bundle(found->second);
+            colourOf(*rep) = c::generalColour(ws.tables().givenLightColour(index));
+        }
     });
 }
 
@@ -176,8 +192,7 @@ void pset_dcue_rep(Pint ws_id, Pint index, const Pdcue_bundle* rep) {
         cue.enabled = mode == PALLOWED;
         cue.frontPlane = rep->ref_planes[0], cue.backPlane = rep->ref_planes[1];
         cue.frontScale = rep->scaling[0], cue.backScale = rep->scaling[1];
-        cue.colour = rgb(ws, rep->colr, name);
-        ws.setDepthCueRepresentation(index, cue);
+        ws.setDepthCueRepresentation(index, cue, given(rep->colr, name));
     });
 }
 
@@ -190,7 +205,12 @@ void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bund
         const auto found = ws.tables().depthCues.find(index);
         if (found == ws.tables().depthCues.end()) throw Error(errors::RepresentationNotDefined, "inquiry");
         c::require(rep, "inquiry");
-        *rep = bundle(t == PINQ_REALIZED ? realized(found->second) : found->second);
+        if (t == PINQ_REALIZED) {
+            *rep = bundle(*ws.tables().drawnDepthCue(index));
+        } else {
+            *rep = bundle(found->second);
+            rep->colr = c::generalColour(ws.tables().givenDepthCueColour(index));
+        }
     });
 }
 

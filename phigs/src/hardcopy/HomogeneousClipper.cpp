@@ -16,7 +16,8 @@ double signedDistance(const HalfSpace& s, const ClipVertex& v) {
 
 ClipVertex between(const ClipVertex& a, const ClipVertex& b, double da, double db) {
     const double t = da / (da - db);
-    return {a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance)};
+    return {a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance),
+            a.along + t * (b.along - a.along)};
 }
 
 }  // namespace
@@ -91,7 +92,8 @@ std::vector<std::vector<ClipVertex>> clipPolyline(const std::vector<ClipVertex>&
         }
         const ClipVertex &a = line[i], &b = line[i + 1];
         auto at = [&](double t) {
-            return ClipVertex{a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance)};
+            return ClipVertex{a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance),
+                              a.along + t * (b.along - a.along)};
         };
         if (t0 > 0.0 || run.empty()) {
             finish();

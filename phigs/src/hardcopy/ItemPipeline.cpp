@@ -1,9 +1,11 @@
 #include "phigs/hardcopy/ItemPipeline.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace phigs::hardcopy {
 namespace {
@@ -88,7 +90,7 @@ bool ItemPipeline::modelClipKeeps(const glm::dvec3& world) const {
 }
 
 void ItemPipeline::line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
-                        float width) {
+                        float width, std::span<const glm::vec3> colours, bool interpolated) {
     if (world.size() < 2) return;
     // Dashes are measured along the line on the page, before clipping (the raster measures on screen).
     std::vector<ClipVertex> vertices;
@@ -101,12 +103,58 @@ void ItemPipeline::line(const std::vector<glm::dvec3>& world, bool closed, glm::
         const glm::dvec2 q = page.w > 0.0 ? glm::dvec2(page) / page.w : previous;
         if (i > 0) distance += glm::length(q - previous) / mapping_.nominalPixel;
         previous = q;
-        vertices.push_back({glm::dvec4(p, 1.0), distance});
+        vertices.push_back({glm::dvec4(p, 1.0), distance, double(i)});
     }
+    if (colours.size() != world.size()) colours = {};
     for (auto& run : clipPolyline(vertices, model_)) {
         for (ClipVertex& v : run) v.h = worldToNpc_ * v.h;
-        npcLine(run, colour, type, width);
+        if (colours.empty()) {
+            npcLine(run, colour, type, width);
+            continue;
+        }
+        for (const auto& viewed : clipPolyline(run, view_))
+            colouredRun(viewed, colours, interpolated, type, width);
     }
+}
+
+void ItemPipeline::colouredRun(const std::vector<ClipVertex>& run, std::span<const glm::vec3> colours,
+                               bool interpolated, LineType type, float width) {
+    const std::size_t n = colours.size();
+    auto colourAt = [&](double along) {
+        const double k = std::clamp(std::floor(along), 0.0, double(n - 1));
+        const std::size_t i = std::size_t(k);
+        if (!interpolated || i + 1 >= n) return colours[i];
+        return glm::mix(colours[i], colours[i + 1], float(along - k));
+    };
+    auto at = [](const ClipVertex& a, const ClipVertex& b, double t) {
+        return ClipVertex{a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance),
+                          a.along + t * (b.along - a.along)};
+    };
+    std::vector<ClipVertex> piece;
+    glm::vec3 pieceColour(0.0f);
+    auto flush = [&] {
+        if (piece.size() > 1) emitRun(piece, pieceColour, type, width);
+        piece.clear();
+    };
+    for (std::size_t i = 0; i + 1 < run.size(); ++i) {
+        const ClipVertex &a = run[i], &b = run[i + 1];
+        // A run segment lies within one segment of the line: its colour at its middle.
+        const double middle = 0.5 * (a.along + b.along);
+        if (!interpolated) {
+            const glm::vec3 c = colourAt(middle);
+            if (piece.empty() || c != pieceColour) flush(), piece.push_back(a), pieceColour = c;
+            piece.push_back(b);
+            continue;
+        }
+        flush();
+        const glm::vec3 d = glm::abs(colourAt(b.along) - colourAt(a.along));
+        const int steps = std::clamp(int(std::ceil(std::max({d.x, d.y, d.z}) * 255.0f)), 1, 255);
+        for (int k = 0; k < steps; ++k) {
+            const ClipVertex p = at(a, b, double(k) / steps), q = at(a, b, double(k + 1) / steps);
+            emitRun({p, q}, colourAt(0.5 * (p.along + q.along)), type, width);
+        }
+    }
+    flush();
 }
 
 void ItemPipeline::npcLine(const std::vector<ClipVertex>& npc, glm::vec3 colour, LineType type, float width) {

@@ -30,11 +30,15 @@ public:
     ItemGeometry geometry;
 
     /// Line strips in world coordinates as a line list, with the screen distance for patterns.
+    /// `colours` (when given, one per point of the one strip) colour the segments as DrawPolyline
+    /// says; the pattern distance runs on along each whole strip.
     void lineStrips(const std::vector<std::vector<glm::dvec3>>& strips, bool closed, PartRole role,
-                    glm::vec3 colour, LineType type, float width) {
+                    glm::vec3 colour, LineType type, float width, std::span<const glm::vec3> colours = {},
+                    bool interpolated = false) {
         GeometryPart part = begin(true, role, colour);
         part.lineType = type;
         part.lineWidth = width;
+        part.vertexColours = !colours.empty();
         const bool patterned = type != LineType::Solid;
         for (const auto& strip : strips) {
             const std::size_t n = strip.size();
@@ -48,19 +52,24 @@ public:
                     const glm::dvec3 pa = apply(toPixels_, a), pb = apply(toPixels_, b);
                     length = glm::length(glm::dvec2(pb) - glm::dvec2(pa));
                 }
-                push(a, {}, colour, {}, float(distance));
-                push(b, {}, colour, {}, float(distance + length));
+                const glm::vec3 ca = i < colours.size() ? colours[i] : colour;
+                const glm::vec3 cb = interpolated && (i + 1) % n < colours.size() ? colours[(i + 1) % n] : ca;
+                push(a, {}, ca, {}, float(distance));
+                push(b, {}, cb, {}, float(distance + length));
                 distance += length;
             }
         }
         end(part);
     }
 
-    void polyline(std::span<const glm::dvec3> points, const LineStyle& style) {
+    void polyline(std::span<const glm::dvec3> points, const LineStyle& style,
+                  std::span<const glm::vec3> colours = {}, bool interpolated = false) {
         std::vector<glm::dvec3> world;
         world.reserve(points.size());
         for (const auto& p : points) world.push_back(apply(model_, p));
-        lineStrips({world}, false, PartRole::Line, style.colour, style.type, style.width);
+        if (colours.size() != points.size()) colours = {};
+        lineStrips({world}, false, PartRole::Line, style.colour, style.type, style.width, colours,
+                   interpolated);
     }
 
     void polymarker(const DrawPolymarker& m) {
@@ -253,7 +262,9 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
     std::visit(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
-            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
+            if constexpr (std::is_same_v<T, DrawPolyline>)
+                b.polyline(p.points, p.style, p.colours, p.interpolated);
+            else if constexpr (std::is_same_v<T, DrawCurve>)
                 b.polyline(p.points, p.style);
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
                 b.polymarker(p);
@@ -276,6 +287,7 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
                 h.values(p.points);
                 h.value(p.style);
+                if constexpr (std::is_same_v<T, DrawPolyline>) h.values(p.colours), h.value(p.interpolated);
                 if (p.style->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 h.values(p.points);

@@ -7,7 +7,6 @@
 #include "phigs/store/Gdp.h"
 #include "phigs/store/IdTable.h"
 #include "phigs/traverse/StylePool.h"
-#include "phigs/view/RealizedLighting.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -776,8 +775,7 @@ private:
         if (fresh) {
             std::vector<Light> lights;
             for (int index : active)
-                if (auto l = tables_.lights.find(index); l != tables_.lights.end())
-                    lights.push_back(realized(l->second));  // drawn as realized
+                if (const auto l = tables_.drawnLight(index)) lights.push_back(*l);  // drawn as realized
             it->second = itemTables_.lightSet(active, std::move(lights));
         }
         return it->second;
@@ -785,11 +783,10 @@ private:
 
     int depthCue(int index) {
         if (index == lastCue_.first) return lastCue_.second;
-        auto entry = tables_.depthCues.find(index);
-        if (entry == tables_.depthCues.end()) entry = tables_.depthCues.find(0);
+        const int used = tables_.depthCues.contains(index) ? index : 0;
         int result = -1;
-        if (entry != tables_.depthCues.end() && entry->second.enabled)
-            result = itemTables_.depthCue(entry->first, realized(entry->second));
+        if (const auto cue = tables_.drawnDepthCue(used); cue && cue->enabled)
+            result = itemTables_.depthCue(used, *cue);
         lastCue_ = {index, result};
         return result;
     }
@@ -808,7 +805,7 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), line(state)});
+                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), line(state), {}, false});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
                         emit(s, number, state, DrawPolymarker{segmentPoints(e.points), marker(state)});
@@ -1095,58 +1092,22 @@ private:
     }
 
     /// POLYLINE SET 3 WITH DATA: a polyline per member; with vertex colours a segment takes the
-    /// colour of its first vertex (polyline shading NONE, ISO/IEC 9592-4), and each run of
-    /// segments of one colour is one polyline; with polyline shading COLOUR the colours are
-    /// interpolated along each segment (shadedSegment).
+    /// colour of its first vertex (polyline shading NONE, ISO/IEC 9592-4), or with polyline
+    /// shading COLOUR goes linearly between its vertices' colours. One item per member, so that
+    /// its line type runs on along the whole polyline.
     void polylineSet(const Structure& s, int number, const State& state,
                      const PolylineSetWithDataElement& e) {
         const ItemRef<LineStyle> style = line(state);
-        if (!e.vertexColours.empty() && resolve_.lineShaded(state)) {
-            for (std::size_t i = 0; i < e.polylines.size(); ++i) {
-                const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
-                for (std::size_t j = 0; j + 1 < e.polylines[i].size(); ++j)
-                    shadedSegment(s, number, state, *style, {e.polylines[i][j], e.polylines[i][j + 1]},
-                                  {colours[j], colours[j + 1]});
-            }
-            return;
-        }
+        const bool shaded = resolve_.lineShaded(state);
         for (std::size_t i = 0; i < e.polylines.size(); ++i) {
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
-            if (e.vertexColours.empty()) {
-                emit(s, number, state, DrawPolyline{segmentPoints(points), style});
-                continue;
+            DrawPolyline p{segmentPoints(points), style, {}, false};
+            if (!e.vertexColours.empty()) {
+                p.colours = resolveColours(e.vertexColours[i], state);
+                p.interpolated = shaded;
             }
-            const std::vector<glm::vec3> colours = resolveColours(e.vertexColours[i], state);
-            for (std::size_t start = 0; start + 1 < points.size();) {
-                std::size_t end = start + 1;
-                while (end + 1 < points.size() && colours[end] == colours[start]) ++end;
-                LineStyle run = *style;
-                run.colour = colours[start];
-                emit(s, number, state,
-                     DrawPolyline{segmentPoints(std::vector<glm::dvec3>(
-                                      points.begin() + static_cast<std::ptrdiff_t>(start),
-                                      points.begin() + static_cast<std::ptrdiff_t>(end) + 1)),
-                                  intern(run)});
-                start = end;
-            }
-        }
-    }
-
-    /// A segment from ends[0] to ends[1] whose colour goes linearly from colours[0] to colours[1]:
-    /// n equal pieces, each of the colour at its middle, n such that neighbouring pieces differ
-    /// by at most 1/255 in every component (so at 8 bits a piece is within half a step of the
-    /// exact colour at every point; at most 255 pieces).
-    void shadedSegment(const Structure& s, int number, const State& state, LineStyle style,
-                       std::array<glm::dvec3, 2> ends, std::array<glm::vec3, 2> colours) {
-        const glm::vec3 d = glm::abs(colours[1] - colours[0]);
-        const int n = std::clamp(static_cast<int>(std::ceil(std::max({d.x, d.y, d.z}) * 255.0f)), 1, 255);
-        for (int k = 0; k < n; ++k) {
-            const double t0 = double(k) / n, t1 = double(k + 1) / n;
-            style.colour = glm::mix(colours[0], colours[1], static_cast<float>((t0 + t1) / 2));
-            const std::array<glm::dvec3, 2> piece{glm::mix(ends[0], ends[1], t0),
-                                                  glm::mix(ends[0], ends[1], t1)};
-            emit(s, number, state, DrawPolyline{segmentPoints(piece), style});
+            emit(s, number, state, std::move(p));
         }
     }
 
@@ -1192,7 +1153,9 @@ private:
         for (const auto& line : edges)
             emit(s, number, state,
                  DrawPolyline{segmentPoints(line),
-                              intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width})});
+                              intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width}),
+                              {},
+                              false});
     }
 
     /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from

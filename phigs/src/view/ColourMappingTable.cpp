@@ -10,11 +10,16 @@ namespace phigs {
 
 namespace {
 
+constexpr int kColourModelNotAvailable = 110;  // ISO 9592-1 error 110: colour model not available
+
 bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 void checkData(const ColourMapping& m, ErrorLog* log, const char* function) {
+    if (m.method != ColourMappingMethod::True && !isColourModel(static_cast<int>(m.model)))
+        raise(log, kColourModelNotAvailable, function,
+              "colour model " + std::to_string(static_cast<int>(m.model)));
     if (m.method == ColourMappingMethod::Pseudo) {
         if (!finite(m.weights)) raise(log, errors::BadColourMappingData, function, "a weight is not finite");
         if (m.colours.empty()) raise(log, errors::BadColourMappingData, function, "PSEUDO without colours");
@@ -26,7 +31,7 @@ void checkData(const ColourMapping& m, ErrorLog* log, const char* function) {
     } else if (m.method == ColourMappingMethod::PseudoN) {
         if (m.lists.size() != 3)
             raise(log, errors::BadColourMappingData, function,
-                  "PSEUDO_N has " + std::to_string(m.lists.size()) + " lists, the RGB model needs 3");
+                  "PSEUDO_N has " + std::to_string(m.lists.size()) + " lists, a colour model needs 3");
         for (std::size_t i = 0; i < m.lists.size(); ++i) {
             if (m.lists[i].empty())
                 raise(log, errors::BadColourMappingData, function, "list " + std::to_string(i) + " is empty");
@@ -57,6 +62,7 @@ void ColourMappingTable::set(int index, const ColourMapping& mapping, ErrorLog* 
     ColourMapping kept = mapping;  // only the data of its method
     if (kept.method != ColourMappingMethod::Pseudo) kept.weights = glm::dvec3(0.0), kept.colours.clear();
     if (kept.method != ColourMappingMethod::PseudoN) kept.lists.clear();
+    if (kept.method == ColourMappingMethod::True) kept.model = ColourModel::Rgb;
     entries_[index] = std::move(kept);
     allTrue_ = std::all_of(entries_.begin(), entries_.end(),
                            [](const auto& e) { return e.second.method == ColourMappingMethod::True; });
@@ -80,12 +86,14 @@ std::vector<int> ColourMappingTable::definedIndices() const {
 
 glm::dvec3 ColourMappingTable::map(int index, const glm::dvec3& rgb, const ColourTable& colours) const {
     const ColourMapping& m = get(index);
+    if (m.method == ColourMappingMethod::True) return rgb;
+    const glm::dvec3 c = fromRgb(m.model, rgb);
     switch (m.method) {
         case ColourMappingMethod::Pseudo:
-            return m.colours[slot(glm::dot(m.weights, rgb), m.colours.size())];
+            return clampedRgb(m.model, m.colours[slot(glm::dot(m.weights, c), m.colours.size())]);
         case ColourMappingMethod::PseudoN: {
             double sum = 0.0;
-            for (int k = 0; k < 3; ++k) sum += m.lists[k][slot(rgb[k], m.lists[k].size())];
+            for (int k = 0; k < 3; ++k) sum += m.lists[k][slot(c[k], m.lists[k].size())];
             const double rounded = std::round(sum);
             return colours.get(rounded >= 0.0 && rounded < 1e9 ? static_cast<int>(rounded) : 1);
         }

@@ -383,23 +383,50 @@ void Workstation::setViewTransformationInputPriority(int index, int reference, b
 }
 
 void Workstation::setLightSourceRepresentation(int index, const Light& light) {
+    setLightSourceRepresentation(index, light, Colour::fromRgb(glm::dvec3(light.colour)));
+}
+
+void Workstation::setLightSourceRepresentation(int index, const Light& light, const Colour& colour) {
     const char* function = "SET LIGHT SOURCE REPRESENTATION";
     if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, "index " + std::to_string(index));
     if (!tables_.lights.contains(index) &&
         static_cast<int>(tables_.lights.size()) >= description_.lightTableSize)
         raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
-    tables_.lights[index] = light;
+    Light kept = light;
+    kept.colour = generalColourRgb(colour, function);
+    tables_.lights[index] = kept;
+    tables_.lightColours[index] = colour;
     changed();
 }
 
 void Workstation::setDepthCueRepresentation(int index, const DepthCue& cue) {
+    setDepthCueRepresentation(index, cue, Colour::fromRgb(glm::dvec3(cue.colour)));
+}
+
+void Workstation::setDepthCueRepresentation(int index, const DepthCue& cue, const Colour& colour) {
     const char* function = "SET DEPTH CUE REPRESENTATION";
     if (index < 1) raise(log_, errors::BundleIndexBelowOne, function, "index " + std::to_string(index));
     if (!tables_.depthCues.contains(index) &&
         static_cast<int>(tables_.depthCues.size()) >= description_.depthCueTableSize)
         raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
-    tables_.depthCues[index] = cue;
+    DepthCue kept = cue;
+    kept.colour = generalColourRgb(colour, function);
+    tables_.depthCues[index] = kept;
+    tables_.depthCueColours[index] = colour;
     changed();
+}
+
+glm::vec3 Workstation::generalColourRgb(const Colour& colour, const char* function) const {
+    if (!colour.direct) {
+        if (colour.index < 0)
+            raise(log_, errors::ColourIndexBelowZero, function,
+                  "colour index " + std::to_string(colour.index));
+        return glm::vec3(tables_.colours.get(colour.index));
+    }
+    if (!isColourModel(static_cast<int>(colour.model)))
+        raise(log_, errors::ColourModelNotAvailable, function,
+              "colour model " + std::to_string(static_cast<int>(colour.model)));
+    return glm::vec3(toRgb(colour.model, colour.rgb));
 }
 
 void Workstation::setColourMappingRepresentation(int index, const ColourMapping& mapping) {

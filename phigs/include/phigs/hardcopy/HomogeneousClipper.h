@@ -14,11 +14,13 @@ struct HalfSpace {
     double offset = 0.0;
 };
 
-/// A vertex being clipped: a homogeneous position and the distance along its line (nominal
-/// pixels), which clipping interpolates with the position.
+/// A vertex being clipped: a homogeneous position, the distance along its line (nominal pixels)
+/// and its place on the line (vertex k + t, for vertex colours), which clipping interpolates with
+/// the position.
 struct ClipVertex {
     glm::dvec4 h{0.0, 0.0, 0.0, 1.0};
     double distance = 0.0;
+    double along = 0.0;
 };
 
 /// What a view shows, as half spaces of homogeneous NPC points: w > 0, depth in [0, 1] (the

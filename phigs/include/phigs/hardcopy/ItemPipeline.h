@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace phigs::hardcopy {
@@ -35,9 +36,11 @@ public:
     ItemPipeline(const DrawList& list, const DrawItem& item, const PageMapping& mapping,
                  const VectorOptions& options, ProjectedScene& out);
 
-    /// A polyline (closed: back to its first point) in world coordinates.
-    void line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
-              float width);
+    /// A polyline (closed: back to its first point) in world coordinates; with `colours` (one per
+    /// point) segment k takes colours[k], or with `interpolated` goes from colours[k] to
+    /// colours[k + 1] (in pieces at most 1/255 apart); the dashes run on along the whole line.
+    void line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type, float width,
+              std::span<const glm::vec3> colours = {}, bool interpolated = false);
     /// A polyline given as homogeneous NPC points (annotation text), past the model clipping.
     void npcLine(const std::vector<ClipVertex>& npc, glm::vec3 colour, LineType type, float width);
     /// A planar region (even-odd contours) in world coordinates.
@@ -65,6 +68,9 @@ private:
     std::shared_ptr<const PagePattern> pagePattern(const std::vector<std::vector<glm::dvec3>>& world,
                                                    double depth) const;
     void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
+    /// A view-clipped run of a line with vertex colours (see line()), as pieces of one colour.
+    void colouredRun(const std::vector<ClipVertex>& run, std::span<const glm::vec3> colours,
+                     bool interpolated, LineType type, float width);
 
     const DrawList& list_;
     const DrawItem& item_;

@@ -30,10 +30,14 @@ struct DrawSource {
     std::uint64_t structureVersion = 0;
 };
 
-/// A polyline: one connected strip of points in modelling coordinates.
+/// A polyline: one connected strip of points in modelling coordinates. With vertex colours
+/// (one per point, else `style->colour`) segment i takes colours[i], or with `interpolated` goes
+/// linearly from colours[i] to colours[i + 1]; its line type runs on along the whole strip.
 struct DrawPolyline {
     ItemArray<glm::dvec3> points;
     ItemRef<LineStyle> style;
+    ItemArray<glm::vec3> colours;
+    bool interpolated = false;
 };
 
 /// A set of markers at points in modelling coordinates.

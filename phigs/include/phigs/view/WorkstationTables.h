@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 
 namespace phigs {
 
@@ -126,6 +127,9 @@ struct WorkstationTables {
     ViewTable views;
     std::map<int, Light> lights;        ///< light source table (PHIGS PLUS); 1: white ambient
     std::map<int, DepthCue> depthCues;  ///< depth cue table (PHIGS PLUS); 0: suppressed
+    /// The colour of each light and depth cue entry as given: an index, or direct in its model
+    /// (`lights[i].colour` holds it as RGB, unclamped); an entry without one was given in RGB.
+    std::map<int, Colour> lightColours, depthCueColours;
     ColourMappingTable colourMappings;  ///< colour mapping table (PHIGS PLUS); 0: TRUE
     int hlhsrMode = 0;                  ///< 0 none, 1 z-buffer
     glm::dvec3 windowMin{0.0}, windowMax{1.0};
@@ -134,6 +138,14 @@ struct WorkstationTables {
     std::uint64_t generation = 0;
 
     WorkstationTables() : lights{{1, Light{}}}, depthCues{{0, DepthCue{}}} {}
+    /// Light `index` as drawn now (its indirect colour through the colour table), realized
+    /// (phigs/view/RealizedLighting.h); empty when the entry is undefined.
+    std::optional<Light> drawnLight(int index) const;
+    /// Depth cue `index` as drawn now, as drawnLight; empty when undefined.
+    std::optional<DepthCue> drawnDepthCue(int index) const;
+    /// The colour light `index` was given in (RGB of `lights` when none is kept).
+    Colour givenLightColour(int index) const;
+    Colour givenDepthCueColour(int index) const;
 };
 
 }  // namespace phigs

@@ -124,8 +124,15 @@ public:
     void setColourModel(int model);
     int colourModel() const { return colourModel_; }
     void setViewTransformationInputPriority(int index, int reference, bool higher);
+    /// SET LIGHT SOURCE REPRESENTATION with the light's colour in RGB (`light.colour`).
     void setLightSourceRepresentation(int index, const Light& light);
+    /// SET LIGHT SOURCE REPRESENTATION with a general colour (an index, drawn through the colour
+    /// table as it is when drawn, or direct in its model), kept as given for PINQ_SET; 113 for an
+    /// index below 0, 110 for a direct colour of no model.
+    void setLightSourceRepresentation(int index, const Light& light, const Colour& colour);
     void setDepthCueRepresentation(int index, const DepthCue& cue);
+    /// SET DEPTH CUE REPRESENTATION with a general colour, as setLightSourceRepresentation.
+    void setDepthCueRepresentation(int index, const DepthCue& cue, const Colour& colour);
     /// SET COLOUR MAPPING REPRESENTATION (errors of ColourMappingTable::set); like every table
     /// change it shows when the picture is regenerated (the deferral mode says when).
     void setColourMappingRepresentation(int index, const ColourMapping& mapping);
@@ -218,6 +225,8 @@ private:
                      const char* function) const;
     /// Error `error` when `method` is not one of `available` (the description's list).
     void checkAvailable(const std::vector<int>& available, int method, int error, const char* function) const;
+    /// The RGB (unclamped) of a light or depth cue's general colour, after its checks.
+    glm::vec3 generalColourRgb(const Colour& colour, const char* function) const;
     void regenerate(VisualState after);
     /// The pattern table with each cell's colour index looked up in the colour table.
     std::map<int, DrawPattern> resolvedPatterns() const;
