@@ -38,7 +38,9 @@ public:
 private:
     std::vector<std::unique_ptr<T[]>> blocks_;
     std::size_t used_ = 0, capacity_ = 0;
-    std::size_t nextBlock_ = 16;
+    /// Unreserved, the first block holds just the first values (a segment's one transform is
+    /// the common case: 16 of them were 2 KiB a segment), and blocks double from there.
+    std::size_t nextBlock_ = 1;
 };
 
 }  // namespace phigs
