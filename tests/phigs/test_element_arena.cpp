@@ -7,9 +7,11 @@
 // short or hundreds long. Long runs grow and compact the arena and its point pool many times. And through the
 // store: random editing (insert and replace mode, pointer moves, labels, deleted ranges, copies of whole
 // structures) against a vector model of the structures, checking contents, pointer and serials after every
-// operation.
+// operation. A held point pool (what a draw list keeps) must show its points unchanged through
+// any later edit, and a draw list's polylines view the stored points and outlive their structure.
 
 #include "RandomElements.h"
+#include "phigs/Phigs.h"
 #include "phigs/store/ElementArena.h"
 #include "phigs/store/StructureStore.h"
 
@@ -17,6 +19,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <random>
 #include <string>
 #include <utility>
@@ -188,6 +191,87 @@ TEST_CASE("element arena: point lists live in the pool, reused and compacted", "
     reference.insert(reference.begin() + 50, {big, ++serial});
     arena.insert(50, std::move(big), serial);
     REQUIRE(difference(arena, reference) == "");
+}
+
+TEST_CASE("element arena: a held point pool keeps the points its lists showed", "[store][random]") {
+    // A reader (a draw list) views stored points and holds the pool; random edits that grow,
+    // compact, clear and move the arena afterwards must leave every held view as it was.
+    for (unsigned seed : {21u, 22u, 23u}) {
+        std::mt19937 rng(seed);
+        ElementArena arena, other;
+        std::vector<Reference> reference, otherReference;
+        std::uint64_t serial = 0;
+        struct Held {
+            std::shared_ptr<const void> pool;
+            const glm::dvec3* data;
+            std::vector<glm::dvec3> points;
+        };
+        std::vector<Held> held;
+        std::size_t released = 0;
+        for (int op = 0; op < 6000; ++op) {
+            edit(rng, arena, reference, other, otherReference, serial, op % 2000 >= 1000);
+            // Hold the pool of a stored list (polyline or polymarker) from a random place on.
+            const std::size_t from = static_cast<std::size_t>(randomInt(rng, 0, 999));
+            const bool hold = randomInt(rng, 0, 2) == 0;
+            for (std::size_t k = 0; hold && k < arena.size(); ++k) {
+                const std::size_t at = (from + k) % arena.size();
+                const PointList* list = nullptr;
+                if (const auto* p = arena.get<PolylineElement>(at)) list = &p->points;
+                if (const auto* p = arena.get<PolymarkerElement>(at)) list = &p->points;
+                if (list && !list->empty()) {
+                    held.push_back({arena.pointPool(), list->data(), list->toVector()});
+                    break;
+                }
+            }
+            if (held.size() > 40) {  // drop one: its pool may go now
+                held.erase(held.begin() + randomInt(rng, 0, static_cast<int>(held.size()) - 1));
+                ++released;
+            }
+            for (std::size_t h = 0; h < held.size(); ++h) {
+                INFO("seed " << seed << ", operation " << op << ", held view " << h);
+                REQUIRE(held[h].pool);
+                REQUIRE(std::equal(held[h].points.begin(), held[h].points.end(), held[h].data));
+            }
+            REQUIRE(difference(arena, reference) == "");
+        }
+        CHECK(released > 200);
+    }
+}
+
+TEST_CASE("element arena: a draw list keeps its points after their structure changes", "[store][traverse]") {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    for (int i = 0; i < 200; ++i) store.insert(polyline3({{i, 0, 0}, {i, 1, 0}, {i, 1, 1}}));
+    store.insert(polymarker3({{0, 0, 7}}));
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    ws.postStructure(1, 0.5);
+    const DrawList before = ws.display();
+    REQUIRE(before.items.size() == 201);
+    // Traversal views the stored points instead of copying them.
+    const auto& first = std::get<DrawPolyline>(before.items[0].primitive);
+    CHECK(first.points.data() == store.structure(1).elements.get<PolylineElement>(0)->points.data());
+    // Every point list replaced (the pool grows and is compacted), then the structure deleted.
+    store.openStructure(1);
+    store.setEditMode(EditMode::Replace);
+    for (int i = 1; i <= 200; ++i) {
+        store.setElementPointer(i);
+        store.insert(polyline3({{-i, 5, 5}, {-i, 6, 6}}));
+    }
+    store.closeStructure();
+    CHECK(std::get<DrawPolyline>(ws.display().items[7].primitive).points[0].x == -8);
+    store.deleteStructure(1);
+    ws.display();
+    for (std::size_t i = 0; i < 200; ++i) {
+        const auto& points = std::get<DrawPolyline>(before.items[i].primitive).points;
+        INFO("item " << i);
+        REQUIRE(points.size() == 3);
+        CHECK(points[0] == glm::dvec3(i, 0, 0));
+        CHECK(points[2] == glm::dvec3(i, 1, 1));
+    }
+    CHECK(std::get<DrawPolymarker>(before.items[200].primitive).points[0] == glm::dvec3(0, 0, 7));
 }
 
 TEST_CASE("element arena: deletions give the space back", "[store]") {

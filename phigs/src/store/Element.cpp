@@ -180,9 +180,9 @@ struct FiniteCheck {
     void operator()(const std::vector<T>& list) {
         for (const T& item : list) (*this)(item);
     }
-    void operator()(const PointList& list) {
-        for (const glm::dvec3& p : list) (*this)(p);
-    }
+    /// Point lists are left to validatePayload: every family holding one runs checkPoints on it,
+    /// which names the point that is not finite (and a second pass cost inserts ~8 %).
+    void operator()(const PointList&) {}
     template <class T>
     void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces
 };

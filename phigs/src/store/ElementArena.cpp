@@ -154,7 +154,7 @@ void ElementArena::reservePoints(std::size_t count) {
 void ElementArena::pool(PointList& list) noexcept {
     const auto count = static_cast<std::uint32_t>(list.size());
     if (count == 0) return list.view(nullptr, 0);
-    glm::dvec3* at = points_ + pointsUsed_;
+    glm::dvec3* at = points_.get() + pointsUsed_;
     std::copy(list.begin(), list.end(), at);
     list.view(at, count);
     pointsUsed_ += count;
@@ -165,7 +165,9 @@ void ElementArena::repool(std::size_t extra, bool exact) {
     if (live + extra > kPoolLimit) throw std::length_error("ElementArena: a structure's points exceed 2^31");
     const std::size_t capacity =
         exact ? live : std::min(std::max<std::size_t>(kFirstPoints, (live + extra) * 2), kPoolLimit);
-    auto fresh = capacity ? std::make_unique_for_overwrite<glm::dvec3[]>(capacity) : nullptr;
+    // A new pool every time: a held one (pointPool) keeps its points as they were.
+    std::shared_ptr<glm::dvec3[]> fresh =
+        capacity ? std::make_shared_for_overwrite<glm::dvec3[]>(capacity) : nullptr;
     std::uint32_t at = 0;
     for (const Slot& s : slots_)
         if (PointList* list = pointsAt(s.family, s.offset); list && !list->empty()) {
@@ -173,8 +175,7 @@ void ElementArena::repool(std::size_t extra, bool exact) {
             list->view(fresh.get() + at, static_cast<std::uint32_t>(list->size()));
             at += static_cast<std::uint32_t>(list->size());
         }
-    delete[] points_;
-    points_ = fresh.release();
+    points_ = std::move(fresh);
     pointsCapacity_ = static_cast<std::uint32_t>(capacity);
     pointsUsed_ = at;
     pointsDead_ = 0;
@@ -254,7 +255,7 @@ void ElementArena::clear() {
     slots_ = {};
     data_ = nullptr;
     used_ = capacity_ = dead_ = 0;
-    points_ = nullptr;
+    points_.reset();
     pointsUsed_ = pointsCapacity_ = pointsDead_ = 0;
     settled_ = 0;
 }
@@ -262,7 +263,7 @@ void ElementArena::clear() {
 void ElementArena::release() noexcept {
     for (const Slot& s : slots_) kFamilies[s.family].destroy(data_ + s.offset);
     if (data_) ::operator delete(data_, kArenaAlign);
-    delete[] points_;
+    points_.reset();
 }
 
 std::string ElementArena::checkLayout() const {
@@ -295,9 +296,10 @@ std::string ElementArena::checkPool() const {
             if (list->data()) return "an empty point list viewing the pool";
             continue;
         }
-        if (list->data() < points_ || list->data() + list->size() > points_ + pointsUsed_)
+        const glm::dvec3* pool = points_.get();
+        if (list->data() < pool || list->data() + list->size() > pool + pointsUsed_)
             return "a point list past the pool's end";
-        const auto begin = static_cast<std::size_t>(list->data() - points_);
+        const auto begin = static_cast<std::size_t>(list->data() - pool);
         spans.emplace_back(begin, begin + list->size());
     }
     std::sort(spans.begin(), spans.end());

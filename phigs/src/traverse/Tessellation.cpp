@@ -102,6 +102,8 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
     geom::SurfaceMesh adaptive =
         geom::tessellateAdaptive(element.surface, boundedTolerance(element.surface.points, tolerance));
     MeshData mesh;
+    mesh.positions.reserve(adaptive.positions.size()), mesh.normals.reserve(adaptive.positions.size());
+    mesh.uv.reserve(adaptive.positions.size());
     for (std::size_t i = 0; i < adaptive.positions.size(); ++i) {
         mesh.positions.push_back(glm::vec3(adaptive.positions[i]));
         mesh.normals.push_back(glm::vec3(adaptive.normals[i]));
@@ -137,6 +139,10 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
         segmentsPerSpan(rowV, criteria.criteria, criteria.criteria == 2 ? criteria.valueV : criteria.valueU));
     MeshData mesh;
     const auto nu = static_cast<std::uint32_t>(us.size()), nv = static_cast<std::uint32_t>(vs.size());
+    // Exact room: cached meshes live as long as their elements (growth slack was ~1/3 of them).
+    mesh.positions.reserve(std::size_t{nu} * nv), mesh.normals.reserve(std::size_t{nu} * nv);
+    mesh.uv.reserve(std::size_t{nu} * nv);
+    mesh.triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));
     for (double u : us)
         for (double v : vs) {
             mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
@@ -154,6 +160,7 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
             mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
             mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
         }
+    if (!loops.empty()) mesh.triangles.shrink_to_fit();  // trimmed: fewer than the room made
     if (characteristics.style == 3) {
         // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
         auto lines = [&](int count, std::uint32_t along, bool constantU) {

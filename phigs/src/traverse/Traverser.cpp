@@ -653,7 +653,12 @@ private:
         segment->points.reserve(primitives * 4);
         segment->pathPrefix = path_;
         segment->styles = itemTables_.styles;
+        segment->storePoints = s.elements.pointPool();  // a segment's items are one structure's
         return segment;
+    }
+    /// A view of a stored point list, in the pool the segment holds.
+    static ItemArray<glm::dvec3> storedPoints(const PointList& points) {
+        return ItemArray<glm::dvec3>::view(points.data(), points.size());
     }
     /// A view of a copy of `points` in the segment being built.
     ItemArray<glm::dvec3> segmentPoints(std::span<const glm::dvec3> points) const {
@@ -805,10 +810,10 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{segmentPoints(e.points), line(state), {}, false});
+                        emit(s, number, state, DrawPolyline{storedPoints(e.points), line(state), {}, false});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
-                        emit(s, number, state, DrawPolymarker{segmentPoints(e.points), marker(state)});
+                        emit(s, number, state, DrawPolymarker{storedPoints(e.points), marker(state)});
                 } else if constexpr (std::is_same_v<E, FillAreaElement>) {
                     if (e.points.size() >= 3) {
                         DrawFillArea f;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <new>
 #include <string>
 #include <type_traits>
@@ -126,6 +127,10 @@ public:
     /// Arena bytes held, and of those the ones left by removed or replaced payloads.
     std::size_t capacityBytes() const { return capacity_; }
     std::size_t deadBytes() const { return dead_; }
+    /// The point pool, shared: a reader that views stored points (a draw list) holds it to keep
+    /// them. The arena never writes over points once a list viewed them: edits append, and a
+    /// growth or compaction moves the live lists to a new pool, leaving the held one as it was.
+    std::shared_ptr<const void> pointPool() const { return points_; }
     /// Point pool places held, and of those the ones left by removed or replaced point lists.
     std::size_t poolCapacity() const { return pointsCapacity_; }
     std::size_t poolDead() const { return pointsDead_; }
@@ -180,14 +185,14 @@ private:
 
     std::vector<Slot> slots_;
     std::byte* data_ = nullptr;
-    std::uint32_t used_ = 0;            ///< bytes up to the end of the last payload placed
-    std::uint32_t capacity_ = 0;        ///< bytes allocated
-    std::uint32_t dead_ = 0;            ///< bytes below used_ that no slot refers to
-    glm::dvec3* points_ = nullptr;      ///< the point pool
-    std::uint32_t pointsUsed_ = 0;      ///< points up to the end of the last list placed
-    std::uint32_t pointsCapacity_ = 0;  ///< points allocated
-    std::uint32_t pointsDead_ = 0;      ///< points below pointsUsed_ that no list views
-    std::uint32_t settled_ = 0;         ///< elements when settle() last gave room back
+    std::uint32_t used_ = 0;                ///< bytes up to the end of the last payload placed
+    std::uint32_t capacity_ = 0;            ///< bytes allocated
+    std::uint32_t dead_ = 0;                ///< bytes below used_ that no slot refers to
+    std::shared_ptr<glm::dvec3[]> points_;  ///< the point pool
+    std::uint32_t pointsUsed_ = 0;          ///< points up to the end of the last list placed
+    std::uint32_t pointsCapacity_ = 0;      ///< points allocated
+    std::uint32_t pointsDead_ = 0;          ///< points below pointsUsed_ that no list views
+    std::uint32_t settled_ = 0;             ///< elements when settle() last gave room back
 };
 
 /// std::visit's form of ElementArena::visit: `f` on the payload of element `i` of `elements`.

@@ -54,7 +54,9 @@ private:
     };
     std::vector<Block> blocks_;
     std::size_t current_ = 0, used_ = 0;  ///< the block being filled and the values it holds
-    std::size_t nextBlock_ = 16;
+    /// Unreserved, the first block holds just the first values (a segment's one transform is
+    /// the common case: 16 of them were 2 KiB a segment), and blocks double from there.
+    std::size_t nextBlock_ = 1;
 };
 
 }  // namespace phigs

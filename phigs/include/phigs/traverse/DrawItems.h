@@ -29,6 +29,8 @@ struct DrawSegment {
     BlockPool<glm::dvec4> clipPlanes;         ///< one volume per run of items that share it
     std::vector<DrawPathLevel> pathPrefix;    ///< the levels above the items' own (set before any item)
     std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
+    /// The point pool of the items' structure, which polyline and marker points view (not copied).
+    std::shared_ptr<const void> storePoints;
 
     DrawSegment() = default;
     DrawSegment(const DrawSegment& other) : items(other.items) {}
