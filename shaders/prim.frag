@@ -81,6 +81,9 @@ void main() {
     bool back = TRIANGLES && !gl_FrontFacing;
     bool useBack = DISTINGUISH_BACK && back;
     vec3 base = PATTERNED ? patternColour(vWorld) : USE_VERTEX_COLOURS ? vColour : push.colour.rgb;
+    // The side's own colour: the back colour, unless the back's style is PATTERN (a draw fills
+    // one style; phigs/src/vk/Renderer.cpp draws differing sides as two draws, each culling the other).
+    vec3 side = useBack && !PATTERNED ? push.backColour.rgb : base;
     vec3 colour;
     if (VERTEX_LIGHTING) {
         colour = back ? vLitBack : vLitFront;
@@ -102,9 +105,9 @@ void main() {
         }
         if (back) n = -n;
         vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
-        colour = lit(useBack, useBack ? push.backColour.rgb : base, world, n, frame.views[viewIndex].eye.xyz);
+        colour = lit(useBack, side, world, n, frame.views[viewIndex].eye.xyz);
     } else {
-        colour = useBack ? push.backColour.rgb : base;
+        colour = side;
     }
     if (USE_DEPTH_CUE) {
         DepthCue cue = frame.cues[push.depthCue];

@@ -1,7 +1,7 @@
 /* Back faces and polyline shading drawn on the offscreen type (lavapipe, validation layer on)
  * and the PDF type (rasterised by pdftoppm at 144 dpi):
  * seeded random triangles, front or back facing, under every face distinguishing mode, face
- * culling mode and back interior style, show at their centre the front colour, the back colour
+ * culling mode and front and back interior style, show at their centre the front colour, the back colour
  * or the background exactly as the rules say; and a polyline set with data whose two vertex
  * colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its first
  * vertex's colour with PSD_NONE. argv[1]: a directory for the files. */
@@ -103,13 +103,20 @@ static int draw(Picture p[2]) {
 }
 
 static void back_faces(void) {
-    for (int round = 0; round < 24; ++round) {
+    int filledBackUnderOpenFront = 0;
+    for (int round = 0; round < 32; ++round) {
         double front[3], back[3];
-        const int backFacing = (int)(next_random() % 2), distinguish = (int)(next_random() % 2);
+        /* Every fourth round a filled back under an open (HOLLOW or EMPTY) front, shown. */
+        const int openFront = round % 4 == 0;
+        const int backFacing = openFront || (int)(next_random() % 2),
+                  distinguish = openFront || (int)(next_random() % 2);
         const Pcull_mode cull = (Pcull_mode)(next_random() % 3);
-        const Pint_style backStyle = (Pint_style)(next_random() % 3 == 0   ? PSTYLE_EMPTY
-                                                  : next_random() % 2 == 0 ? PSTYLE_HOLLOW
-                                                                           : PSTYLE_SOLID);
+        const Pint_style frontStyle = (Pint_style)(next_random() % 3 == 0                ? PSTYLE_EMPTY
+                                                   : next_random() % 2 == 0 || openFront ? PSTYLE_HOLLOW
+                                                                                         : PSTYLE_SOLID);
+        const Pint_style backStyle = (Pint_style)(openFront || next_random() % 3 != 0 ? PSTYLE_SOLID
+                                                  : next_random() % 2 == 0            ? PSTYLE_HOLLOW
+                                                                                      : PSTYLE_EMPTY);
         const double cx = random_real(0.3, 0.7), cy = random_real(0.3, 0.7), r = random_real(0.1, 0.2);
         Ppoint3 corners[3];
         Ppoint_list3 triangle = {3, corners};
@@ -126,7 +133,7 @@ static void back_faces(void) {
         }
         pdel_struct(1);
         popen_struct(1);
-        pset_int_style(PSTYLE_SOLID);
+        pset_int_style(frontStyle);
         pset_int_colr(&f);
         pset_back_int_colr(&b);
         pset_back_int_style(backStyle);
@@ -134,21 +141,25 @@ static void back_faces(void) {
         pset_face_cull_mode(cull);
         pfill_area3(&triangle);
         pclose_struct();
+        /* Each side by its own style: a SOLID back shows under a HOLLOW or EMPTY front too; a
+         * HOLLOW side shows its outline only, away from the centre. */
         if ((backFacing && cull == PCULL_BACKFACE) || (!backFacing && cull == PCULL_FRONTFACE))
             expected = NULL; /* the background */
         else if (!backFacing || !distinguish)
-            expected = front;
+            expected = frontStyle == PSTYLE_SOLID ? front : NULL;
         else
             expected = backStyle == PSTYLE_SOLID ? back : NULL;
+        if (expected == back && frontStyle != PSTYLE_SOLID) ++filledBackUnderOpenFront;
         CHECK(draw(p));
         for (int i = 0; i < 2; ++i) {
             char what[160];
-            snprintf(what, sizeof what, "triangle %s, distinguishing %d, cull %d, back style %d",
-                     backFacing ? "back" : "front", distinguish, (int)cull, (int)backStyle);
+            snprintf(what, sizeof what, "triangle %s, distinguishing %d, cull %d, styles %d / %d",
+                     backFacing ? "back" : "front", distinguish, (int)cull, (int)frontStyle, (int)backStyle);
             if (p[i].rgb) CHECK(pixel_is(&p[i], cx, cy, expected, what));
             free(p[i].rgb);
         }
     }
+    CHECK(filledBackUnderOpenFront >= 2); /* the sequence reaches the case */
 }
 
 static void line_shading(void) {

@@ -85,7 +85,7 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
     const ReflectanceModel model = useBack ? interior.back.reflectance : interior.reflectance;
     const bool lighting = model != ReflectanceModel::None && lights_;
     if (!lighting) return useBack ? interior.backColour : front;
-    const ShadingMethod method = vertexNormals ? interior.shading : ShadingMethod::None;
+    const ShadingMethod method = vertexNormals ? interior.shadingOf(back) : ShadingMethod::None;
     if (method == ShadingMethod::Colour || method == ShadingMethod::DotProduct) {
         // Gouraud: each vertex lit (the back with the normal turned round), then averaged.
         glm::dvec3 sum(0.0);

@@ -23,6 +23,19 @@ glm::dvec3 eyeOf(const DrawView& view) {
 
 }  // namespace
 
+void FacetPaint::styleFor(const InteriorStyleSet& in, int facing) {
+    const bool back = facing < 0;
+    const InteriorStyle style = in.styleOf(back);
+    hatch = style == InteriorStyle::Hatch;
+    hatchIndex = in.styleIndexOf(back);
+    pattern = style == InteriorStyle::Pattern;
+    backPattern = back && in.distinguishBackFaces;
+}
+
+bool FacetPaint::unfilled(const InteriorStyleSet& in, int facing) {
+    return facing < 0 ? !in.fillsBackFaces() : facing > 0 && !in.fillsFrontFaces();
+}
+
 ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const PageMapping& mapping,
                            const VectorOptions& options, ProjectedScene& out)
     : list_(list),
@@ -37,16 +50,20 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
     const InteriorStyleSet* interior = nullptr;
     if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
     if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior.get();
-    if (!interior || interior->style != InteriorStyle::Pattern) return;
-    // No pattern defined, or a pattern box with no area on the primitive: drawn solid.
-    pattern_ = render::findPattern(list, interior->styleIndex);
-    if (pattern_ && pattern_->columns >= 1 && pattern_->rows >= 1 &&
-        pattern_->colours.size() == std::size_t(pattern_->columns) * std::size_t(pattern_->rows))
-        patternMap_ = render::itemPatternMap(item, *pattern_);
+    if (!interior) return;
+    for (int side = 0; side < 2; ++side) {
+        if (interior->styleOf(side == 1) != InteriorStyle::Pattern) continue;
+        // No pattern defined, or a pattern box with no area on the primitive: drawn solid.
+        const DrawPattern* pattern = render::findPattern(list, interior->styleIndexOf(side == 1));
+        pattern_[side] = pattern;
+        if (pattern && pattern->columns >= 1 && pattern->rows >= 1 &&
+            pattern->colours.size() == std::size_t(pattern->columns) * std::size_t(pattern->rows))
+            patternMap_[side] = render::itemPatternMap(item, *pattern);
+    }
 }
 
 std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
-    const std::vector<std::vector<glm::dvec3>>& world, double depth) const {
+    const std::vector<std::vector<glm::dvec3>>& world, double depth, int side) const {
     // Three well spread points of the facet: the first, the farthest from it, and the one
     // farthest from the line through those two.
     std::vector<glm::dvec3> points;
@@ -76,9 +93,10 @@ std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
     const double det = glm::determinant(rows);
     if (!(std::abs(det) > 1e-12)) return nullptr;
     const glm::dmat3 inverse = glm::inverse(rows);
-    const glm::dvec2 c0 = patternMap_->at(points[0]), c1 = patternMap_->at(x1), c2 = patternMap_->at(x2);
+    const render::PatternMap& map = *patternMap_[side];
+    const glm::dvec2 c0 = map.at(points[0]), c1 = map.at(x1), c2 = map.at(x2);
     auto result = std::make_shared<PagePattern>();
-    result->cells = *pattern_;
+    result->cells = *pattern_[side];
     for (glm::vec3& colour : result->cells.colours) colour = colouring_.finish(colour, depth);
     result->u = inverse * glm::dvec3(c0.x, c1.x, c2.x);
     result->v = inverse * glm::dvec3(c0.y, c1.y, c2.y);
@@ -215,8 +233,8 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     f.opacity = paint.opacity;
     f.hatch = paint.hatch;
     f.hatchIndex = paint.hatchIndex;
-    if (paint.pattern && !paint.coverOnly && patternMap_)
-        f.pattern = pagePattern(world, depth / double(count));
+    if (const int side = paint.backPattern ? 1 : 0; paint.pattern && !paint.coverOnly && patternMap_[side])
+        f.pattern = pagePattern(world, depth / double(count), side);
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;

@@ -27,21 +27,6 @@ float opacityOf(const InteriorStyleSet& interior, bool back) {
     return 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
 }
 
-/// Whether a facet facing that way is not filled: culled, or a back face of a HOLLOW or EMPTY
-/// back style with face distinguishing on.
-bool culled(const InteriorStyleSet& in, int facing) {
-    return (facing < 0 && !in.fillsBackFaces()) || (in.cull == CullMode::FrontFaces && facing > 0);
-}
-
-/// The hatch or pattern style of the side a facet shows (the back style for a distinguished back).
-void styleOf(FacetPaint& paint, const InteriorStyleSet& in, int facing) {
-    const bool back = facing < 0 && in.distinguishBackFaces;
-    const InteriorStyle style = back ? in.back.style : in.style;
-    paint.hatch = style == InteriorStyle::Hatch;
-    paint.hatchIndex = back ? in.back.styleIndex : in.styleIndex;
-    paint.pattern = style == InteriorStyle::Pattern;
-}
-
 }  // namespace
 
 std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> points) const {
@@ -75,9 +60,10 @@ void ItemProjector::operator()(const DrawFillArea& fill) {
     std::vector<std::vector<glm::dvec3>> world;
     for (const auto& contour : fill.contours) world.push_back(toWorld(contour));
     const InteriorStyleSet& in = fill.interior;
-    if (in.style == InteriorStyle::Hollow) {
+    // A HOLLOW front draws the boundary; each side fills by its own style (ItemGeometry does so).
+    if (in.style == InteriorStyle::Hollow)
         for (const auto& contour : world) pipeline_.line(contour, true, in.colour, LineType::Solid, 1.0f);
-    } else if (in.style != InteriorStyle::Empty) {
+    if (in.fillsFrontFaces() || in.fillsBackFaces()) {
         if (fill.vertexColours.empty() && fill.vertexNormals.empty())
             fillInterior(fill, world);
         else
@@ -117,11 +103,11 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     const glm::dvec3 u = glm::normalize(glm::cross(helper, normal)) * size, v = glm::cross(normal, u);
     const int facing = pipeline_.facing(centre, centre + u, centre + v);
     const InteriorStyleSet& in = fill.interior;
-    if (culled(in, facing)) return;
+    if (FacetPaint::unfilled(in, facing)) return;
     FacetPaint paint;
     paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
     paint.opacity = opacityOf(in, facing < 0);
-    styleOf(paint, in, facing);
+    paint.styleFor(in, facing);
     pipeline_.facet(world, paint);
 }
 
@@ -141,11 +127,11 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
                                     part.vertexColours ? r.colour : in.colour});
             }
             const int facing = pipeline_.facing(triangle[0], triangle[1], triangle[2]);
-            if (culled(in, facing)) continue;
+            if (FacetPaint::unfilled(in, facing)) continue;
             FacetPaint paint;
             paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
             paint.opacity = opacityOf(in, facing < 0);
-            styleOf(paint, in, facing);
+            paint.styleFor(in, facing);
             paint.seam = true;
             pipeline_.facet({triangle}, paint);
         }

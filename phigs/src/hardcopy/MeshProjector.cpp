@@ -31,10 +31,10 @@ void MeshProjector::project() {
         outline();
         isoLines();
     } else {
+        // A HOLLOW front draws the edges; each side fills by its own style (as the raster does).
         if (in.style == InteriorStyle::Hollow)
             edgeLines(chainEdges(uniqueEdges(data_)), in.colour, LineType::Solid, 1.0f);
-        else if (in.style != InteriorStyle::Empty)
-            facets(false);
+        if (in.fillsFrontFaces() || in.fillsBackFaces()) facets(false);
         isoLines();
     }
     // Mesh edges are solid, as the raster draws them.
@@ -56,9 +56,7 @@ void MeshProjector::facets(bool coverOnly) {
         if (index[0] >= count || index[1] >= count || index[2] >= count) continue;
         const int facing = facing_[t];
         // A hidden-line surface hides with both sides; a shaded one is culled as the raster culls.
-        if (!coverOnly && ((in.cull == CullMode::BackFaces && facing < 0) ||
-                           (in.cull == CullMode::FrontFaces && facing > 0)))
-            continue;
+        if (!coverOnly && FacetPaint::unfilled(in, facing)) continue;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t i = index[k];
             vertices[std::size_t(k)] = {
@@ -73,9 +71,7 @@ void MeshProjector::facets(bool coverOnly) {
             paint.colour = pipeline_.colouring().facet(in, vertices, normals, back);
             const Reflectance& r = back && in.distinguishBackFaces ? in.backProperties : in.properties;
             paint.opacity = 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
-            paint.hatch = in.style == InteriorStyle::Hatch;
-            paint.hatchIndex = in.styleIndex;
-            paint.pattern = in.style == InteriorStyle::Pattern;
+            paint.styleFor(in, facing);
         }
         for (int k = 0; k < 3; ++k) triangle[0][std::size_t(k)] = vertices[std::size_t(k)].position;
         pipeline_.facet(triangle, paint);

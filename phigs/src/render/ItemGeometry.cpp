@@ -91,11 +91,11 @@ public:
             for (const auto& p : c) contours.back().push_back(apply(model_, p));
         }
         const InteriorStyleSet& in = f.interior;
-        if (in.style == InteriorStyle::Hollow) {
+        // A HOLLOW front draws the boundary; the triangles go when either side fills (a distinguished
+        // back may fill under a HOLLOW or EMPTY front), each side culled by its own style.
+        if (in.style == InteriorStyle::Hollow)
             lineStrips(contours, true, PartRole::Edge, in.colour, LineType::Solid, 1.0f);
-        } else if (in.style != InteriorStyle::Empty) {
-            interior(f, contours);
-        }
+        if (in.fillsFrontFaces() || in.fillsBackFaces()) interior(f, contours);
         if (f.edges->visible)
             lineStrips(contours, true, PartRole::Edge, f.edges->colour, f.edges->type, f.edges->width);
     }

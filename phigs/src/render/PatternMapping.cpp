@@ -19,6 +19,11 @@ struct Plane {
     glm::dvec3 point{0.0}, normal{0.0};
 };
 
+/// Whether either side of an interior is drawn with the PATTERN style.
+bool patterned(const InteriorStyleSet& in) {
+    return in.styleOf(false) == InteriorStyle::Pattern || in.styleOf(true) == InteriorStyle::Pattern;
+}
+
 /// The plane of a fill area's contours in world coordinates (Newell's normal), if they span one.
 std::optional<Plane> fillPlane(const DrawFillArea& fill, const glm::dmat4& model) {
     Plane plane;
@@ -102,13 +107,13 @@ std::optional<PatternMap> patternMap(const PatternPlacement& placement, const gl
 std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern& pattern) {
     const glm::dmat4& model = item.modelTransform.get();
     if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) {
-        if (fill->interior->style != InteriorStyle::Pattern) return std::nullopt;
+        if (!patterned(fill->interior)) return std::nullopt;
         const std::optional<Plane> plane = fillPlane(*fill, model);
         if (!plane) return std::nullopt;
         return patternMap(fill->interior->pattern, model, pattern, plane->point, plane->normal);
     }
     if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
-        if (mesh->interior->style != InteriorStyle::Pattern || !mesh->mesh) return std::nullopt;
+        if (!patterned(mesh->interior) || !mesh->mesh) return std::nullopt;
         if (const std::optional<Plane> plane = meshPlane(*mesh->mesh, model))
             return patternMap(mesh->interior->pattern, model, pattern, plane->point, plane->normal);
         // A curved surface: its points take the cell of their projection onto the pattern's plane.

@@ -458,8 +458,9 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         gpu::DrawParams base;
         base.indices =
             glm::ivec4(item.viewIndex, item.lightSet, item.depthCue, item.highlighted ? gpu::Highlight : 0);
-        auto addPart = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
-                           bool meshNormals, VkBuffer vertices, VkBuffer indices) {
+        // One draw: an interior part's faces of one side's style (backSide), the culled sides in cull.
+        auto addDraw = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
+                           bool meshNormals, VkBuffer vertices, VkBuffer indices, bool backSide, int cull) {
             gpu::DrawParams d = base;
             if (!indices) d.model = glm::mat4(1.0f), d.normalMatrix = glm::mat4(1.0f);
             Command c;
@@ -476,8 +477,10 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!part.lines) flags |= gpu::Triangles;
             if (interior && part.role == render::PartRole::Interior) {
                 const InteriorStyleSet& s = *interior;
-                if (s.style == InteriorStyle::Hatch) flags |= gpu::Hatch;
-                if (s.style == InteriorStyle::Pattern) patterned = patternDraw(list, item, d);
+                const InteriorStyle style = s.styleOf(backSide);
+                if (style == InteriorStyle::Hatch) flags |= gpu::Hatch;
+                if (style == InteriorStyle::Pattern)
+                    patterned = patternDraw(list, item, s.styleIndexOf(backSide), d);
                 const ReflectanceModel backModel =
                     s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
                 if ((s.reflectance != ReflectanceModel::None || backModel != ReflectanceModel::None) &&
@@ -487,7 +490,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     flags |= gpu::DistinguishBack;
                     push.backColour = glm::vec4(s.backColour, 1.0f);
                 }
-                shade = meshNormals ? shadeOf(s.shading) : gpu::Flat;
+                shade = meshNormals ? shadeOf(s.shadingOf(backSide)) : gpu::Flat;
                 auto reflect = [&](const Reflectance& r, ReflectanceModel model, glm::vec4& k,
                                    glm::vec4& sc) {
                     k = glm::vec4(r.ambient, r.diffuse, r.specular, r.specularExponent);
@@ -501,16 +504,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 push.backColour.w = 1.0f - std::clamp(back.transparency, 0.0f, 1.0f);
             }
             d.indices.w = flags;
-            d.style =
-                glm::ivec4(int(part.role), interior ? interior->styleIndex : 0, int(part.lineType), shade);
+            d.style = glm::ivec4(int(part.role), interior ? interior->styleIndexOf(backSide) : 0,
+                                 int(part.lineType), shade);
             d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, d.misc.w);
             c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
-            if (interior && !part.lines) {
-                // Back faces not filled (culled, or a HOLLOW / EMPTY distinguished back): cull them too.
-                const int cull =
-                    int(interior->cull) | (interior->fillsBackFaces() ? 0 : int(CullMode::BackFaces));
-                c.pipeline |= std::uint64_t(cull) << kCullShift;
-            }
+            c.pipeline |= std::uint64_t(cull) << kCullShift;
             if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
                 c.pipeline |= kMayDiscard;
             if (patterned) c.pipeline |= kPatterned;
@@ -556,6 +554,22 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             draws.push_back(d);
             commands_.push_back(c);
         };
+        // Each side's faces by its own style: the sides not filled (culled, or HOLLOW / EMPTY) are
+        // culled, and a distinguished back of another style, index or shading is a second draw.
+        auto addPart = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
+                           bool meshNormals, VkBuffer vertices, VkBuffer indices) {
+            if (!interior || part.lines)
+                return addDraw(part, interior, meshNormals, vertices, indices, false, 0);
+            const bool front = interior->fillsFrontFaces(), back = interior->fillsBackFaces();
+            const int cullFront = int(CullMode::FrontFaces), cullBack = int(CullMode::BackFaces);
+            if (front && back && interior->sidesDiffer()) {
+                addDraw(part, interior, meshNormals, vertices, indices, false, cullBack);
+                addDraw(part, interior, meshNormals, vertices, indices, true, cullFront);
+            } else if (front || back) {
+                addDraw(part, interior, meshNormals, vertices, indices, !front,
+                        (front ? 0 : cullFront) | (back ? 0 : cullBack));
+            }
+        };
 
         if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
             if (!mesh->mesh) continue;
@@ -573,7 +587,9 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
                 part.count = cached.counts.edgeCount;
                 addPart(part, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            } else if (s.style != InteriorStyle::Empty && cached.counts.triangleCount) {
+            }
+            if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
+                part.lines = false;
                 part.role = render::PartRole::Interior;
                 part.colour = s.colour;
                 part.vertexColours = cached.hasColours;
@@ -646,13 +662,9 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     total_.add(frame_);
 }
 
-bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, gpu::DrawParams& d) {
-    const InteriorStyleSet* interior = nullptr;
-    if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior.get();
-    if (!interior) return false;
+bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, int patternIndex, gpu::DrawParams& d) {
     // No pattern defined at all, or a pattern box with no area on the primitive: drawn solid.
-    const DrawPattern* pattern = render::findPattern(list, interior->styleIndex);
+    const DrawPattern* pattern = render::findPattern(list, patternIndex);
     if (!pattern || pattern->columns < 1 || pattern->rows < 1 ||
         pattern->colours.size() != std::size_t(pattern->columns) * std::size_t(pattern->rows))
         return false;

@@ -87,13 +87,25 @@ struct InteriorStyleSet {
     CullMode cull = CullMode::None;
     bool distinguishBackFaces = false;  ///< back faces use backColour / backProperties / back
     BackFaceStyle back;
-    /// Whether back faces are filled: not culled, and with face distinguishing a filled back style.
-    bool fillsBackFaces() const {
-        return cull != CullMode::BackFaces &&
-               !(distinguishBackFaces &&
-                 (back.style == InteriorStyle::Hollow || back.style == InteriorStyle::Empty));
+    /// The style, style index and shading method a side's faces are drawn with: the back ones for
+    /// back faces with face distinguishing on, else the front ones.
+    InteriorStyle styleOf(bool backFace) const { return backSide(backFace) ? back.style : style; }
+    int styleIndexOf(bool backFace) const { return backSide(backFace) ? back.styleIndex : styleIndex; }
+    ShadingMethod shadingOf(bool backFace) const { return backSide(backFace) ? back.shading : shading; }
+    /// Whether a side's faces are filled: not culled, and drawn with a SOLID, HATCH or PATTERN style
+    /// (each side by its own style with face distinguishing on; HOLLOW and EMPTY fill nothing).
+    bool fillsFrontFaces() const { return cull != CullMode::FrontFaces && filled(style); }
+    bool fillsBackFaces() const { return cull != CullMode::BackFaces && filled(styleOf(true)); }
+    /// Whether the two sides are drawn differently in style, style index or shading method.
+    bool sidesDiffer() const {
+        return distinguishBackFaces &&
+               (back.style != style || back.styleIndex != styleIndex || back.shading != shading);
     }
     bool operator==(const InteriorStyleSet&) const = default;
+
+private:
+    bool backSide(bool backFace) const { return backFace && distinguishBackFaces; }
+    static bool filled(InteriorStyle s) { return s != InteriorStyle::Hollow && s != InteriorStyle::Empty; }
 };
 
 /// Resolved edge attributes (fill areas, meshes, surfaces).

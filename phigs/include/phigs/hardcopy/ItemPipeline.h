@@ -22,9 +22,15 @@ struct FacetPaint {
     float opacity = 1.0f;
     bool hatch = false;
     int hatchIndex = 1;
-    bool pattern = false;  ///< a PATTERN interior: the item's pattern, when it has one, not `colour`
+    bool pattern = false;      ///< a PATTERN interior: the item's pattern, when it has one, not `colour`
+    bool backPattern = false;  ///< the pattern is the distinguished back style's, not the front's
     bool coverOnly = false;
     bool seam = false;
+    /// The hatch or pattern of the side a facet shows (facing < 0: its back; the back style when
+    /// face distinguishing is on).
+    void styleFor(const InteriorStyleSet& in, int facing);
+    /// Whether a facet facing that way is not filled: its side culled, or of a HOLLOW or EMPTY style.
+    static bool unfilled(const InteriorStyleSet& in, int facing);
 };
 
 /// The road from one draw item's world coordinates to the page: model clipping volume (world),
@@ -66,7 +72,7 @@ private:
     /// The page pattern of a facet given by its world contours (the item's map at three of its
     /// points; exact under parallel projection, fitted at those points under perspective).
     std::shared_ptr<const PagePattern> pagePattern(const std::vector<std::vector<glm::dvec3>>& world,
-                                                   double depth) const;
+                                                   double depth, int side) const;
     void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
     /// A view-clipped run of a line with vertex colours (see line()), as pieces of one colour.
     void colouredRun(const std::vector<ClipVertex>& run, std::span<const glm::vec3> colours,
@@ -80,9 +86,9 @@ private:
     glm::dmat4 worldToNpc_{1.0};
     std::vector<HalfSpace> view_, model_;
     ItemColouring colouring_;
-    const DrawPattern* pattern_ = nullptr;          ///< a PATTERN interior's pattern, or null
-    std::optional<render::PatternMap> patternMap_;  ///< and its world map
-    std::vector<ClipVertex> polygon_;               ///< facet()'s contour being clipped, kept
+    const DrawPattern* pattern_[2] = {};               ///< a PATTERN side's pattern (front, back), or null
+    std::optional<render::PatternMap> patternMap_[2];  ///< and its world map
+    std::vector<ClipVertex> polygon_;                  ///< facet()'s contour being clipped, kept
 };
 
 }  // namespace phigs::hardcopy

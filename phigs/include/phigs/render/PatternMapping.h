@@ -33,9 +33,10 @@ std::optional<PatternMap> patternMap(const PatternPlacement& placement, const gl
                                      const DrawPattern& pattern, const glm::dvec3& planePoint,
                                      const glm::dvec3& planeNormal);
 
-/// The map for a fill area or mesh item whose interior style is PATTERN: projected onto the plane
-/// of a planar primitive, onto the pattern's own plane for a curved mesh. Null for other items
-/// and degenerate boxes or primitives.
+/// The map for a fill area or mesh item with a PATTERN side (the front style, or the back style
+/// with face distinguishing on; both share the placement): projected onto the plane of a planar
+/// primitive, onto the pattern's own plane for a curved mesh. Null for other items and
+/// degenerate boxes or primitives.
 std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern& pattern);
 
 /// The colour of the cell holding pattern coordinates `cell`.

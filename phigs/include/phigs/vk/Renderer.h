@@ -90,10 +90,10 @@ private:
     /// Points descriptor `binding` of the set at `buffer` (its first `range` bytes).
     void bindBuffer(std::uint32_t binding, VkDescriptorType type, const GpuBuffer& buffer,
                     VkDeviceSize range) const;
-    /// A PATTERN interior item's pattern record (its map to cells) into the pattern buffer and
-    /// `d` (the pattern's cells join it once a frame); false when it has no drawable pattern
-    /// and draws solid.
-    bool patternDraw(const DrawList& list, const DrawItem& item, gpu::DrawParams& d);
+    /// A PATTERN interior item's record for pattern `patternIndex` (its map to cells) into the
+    /// pattern buffer and `d` (the pattern's cells join it once a frame); false when it has no
+    /// drawable pattern and draws solid.
+    bool patternDraw(const DrawList& list, const DrawItem& item, int patternIndex, gpu::DrawParams& d);
     void uploadPatterns();
     /// Where item `index`'s model clipping planes sit in the frame block (first, count); equal
     /// plane sets share one run.
