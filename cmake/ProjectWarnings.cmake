@@ -11,7 +11,9 @@ if(PHIGS_WERROR)
   target_compile_options(project_options INTERFACE -Werror)
 endif()
 if(PHIGS_SANITIZE)
-  target_compile_options(project_options INTERFACE -fsanitize=address,undefined
+  # -O1 (after the build type's -O2, so it wins): with the sanitizers' instrumentation -O2
+  # compiles two to three times slower for little faster a run, and CI builds twice this way.
+  target_compile_options(project_options INTERFACE -fsanitize=address,undefined -O1
                                                     -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(project_options INTERFACE -fsanitize=address,undefined)
 endif()
