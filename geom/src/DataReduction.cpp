@@ -1110,45 +1110,68 @@ public:
     OriginalSamples(const Curve& curve, int samplesPerSpan)
         : curve_(curve), samplesPerSpan_(samplesPerSpan) {}
 
-    const std::vector<double>& params() { return make().params_; }
-    const std::vector<glm::dvec3>& values() { return make().values_; }
-
-private:
-    OriginalSamples& make() {
-        if (made_) return *this;
-        const std::size_t n = curve_.points.size();
-        params_ = spanSamples(curve_.knots, curve_.degree, n, samplesPerSpan_);
-        values_.resize(params_.size());
-        detail::evaluateAscending(curve_.degree, curve_.knots, curve_.points.data(), n, params_,
-                                  values_.data());
-        made_ = true;
-        return *this;
+    const std::vector<double>& params() {
+        if (!paramsMade_)
+            params_ = spanSamples(curve_.knots, curve_.degree, curve_.points.size(), samplesPerSpan_);
+        paramsMade_ = true;
+        return params_;
+    }
+    const std::vector<glm::dvec3>& values() { return valuesBefore(params().size()); }
+    /// The values, made up to sample `end` at least (a caller that may stop early makes no more).
+    const std::vector<glm::dvec3>& valuesBefore(std::size_t end) {
+        const std::vector<double>& at = params();
+        end = std::min(end, at.size());
+        if (valuesMade_ < end) {
+            values_.resize(at.size());
+            detail::evaluateAscending(curve_.degree, curve_.knots, curve_.points.data(), curve_.points.size(),
+                                      std::span(at).subspan(valuesMade_, end - valuesMade_),
+                                      values_.data() + valuesMade_, &forms());
+            valuesMade_ = end;
+        }
+        return values_;
+    }
+    /// The original's span power forms (detail::powerForms), made when first needed: the samples
+    /// are evaluated from them, and a free-knot fitter shares them.
+    const std::vector<glm::dvec3>& forms() {
+        if (!formsMade_)
+            forms_ =
+                detail::powerForms(curve_.degree, curve_.knots, curve_.points.data(), curve_.points.size());
+        formsMade_ = true;
+        return forms_;
     }
 
+private:
     const Curve& curve_;
     int samplesPerSpan_;
-    bool made_ = false;
+    bool paramsMade_ = false, formsMade_ = false;
+    std::size_t valuesMade_ = 0;  // values_[0, valuesMade_) are made
     std::vector<double> params_;
-    std::vector<glm::dvec3> values_;
+    std::vector<glm::dvec3> values_, forms_;
 };
 
 /// True where the least-squares fit to the coefficients on `knots` (LinearFit: one banded solve)
 /// keeps the pass by the coefficient bound (a bound on the whole curve), or else by its distance
-/// from the original at every loop sample.
+/// from the original at every loop sample. The samples go in blocks: a fit that fails usually
+/// fails in the first, and the rest are not evaluated.
 bool linearFitPasses(const Curve& curve, const ReductionOptions& o, const std::vector<double>& knots,
                      OriginalSamples& samples) {
     std::vector<glm::dvec3> coefficients;
     LinearFit linearFit(curve);
     if (!linearFit.fitOnly(knots, coefficients)) return false;
     if (linearFit.bounded(coefficients, 0.99 * o.tolerance)) return true;
+    constexpr std::size_t kBlock = 64;
     const std::vector<double>& at = samples.params();
-    const std::vector<glm::dvec3>& a = samples.values();
-    std::vector<glm::dvec3> b(at.size());
-    detail::evaluateAscending(curve.degree, knots, coefficients.data(), coefficients.size(), at, b.data());
+    std::vector<glm::dvec3> b(std::min(kBlock, at.size()));
     const double pass2 = 0.99 * 0.99 * o.tolerance * o.tolerance;
-    bool fits = true;
-    for (std::size_t i = 0; i < at.size() && fits; ++i) fits = glm::dot(a[i] - b[i], a[i] - b[i]) <= pass2;
-    return fits;
+    for (std::size_t start = 0; start < at.size(); start += kBlock) {
+        const std::size_t end = std::min(at.size(), start + kBlock);
+        const std::vector<glm::dvec3>& a = samples.valuesBefore(end);
+        detail::evaluateAscending(curve.degree, knots, coefficients.data(), coefficients.size(),
+                                  std::span(at).subspan(start, end - start), b.data());
+        for (std::size_t i = start; i < end; ++i)
+            if (!(glm::dot(a[i] - b[i - start], a[i] - b[i - start]) <= pass2)) return false;
+    }
+    return true;
 }
 
 /// A probe expected to pass so easily that the model has the count two below it pass too stops
@@ -1392,7 +1415,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return out;
     }
     const FreeKnotOptions fo = freeKnotOptions(o);
-    const FreeKnotFitter fitter(curve, fo);
+    FreeKnotFitter fitter(curve, fo);
+    fitter.shareForms([&samples]() -> const std::vector<glm::dvec3>& { return samples.forms(); });
     std::stable_sort(ranked.begin(), ranked.end(), [](const KnotSignificance& x, const KnotSignificance& y) {
         return x.weight > y.weight;
     });
