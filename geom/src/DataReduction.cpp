@@ -73,16 +73,14 @@ void checkOptions(const ReductionOptions& o, const char* where) {
     if (o.freeKnotIterations < 1) throw GeometryError(w + ": freeKnotIterations must be at least 1");
 }
 
-// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
-// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
-// knots contain the reduced ones, so the original is the reduced spline with the missing knots
-// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
-// previous approximation keeps the errors of successive removals from piling up. Returns false,
-// leaving points alone, where the original has too few coefficients to determine the window.
-bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
-                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
-                     const std::vector<glm::dvec3>& d0) {
-    const std::size_t p = static_cast<std::size_t>(degree);
+// refitToOriginal with the degree fixed at compile time where P > 0 (the loops over a row's p+1
+// entries unroll; the same arithmetic in the same order), any degree where P = 0. The rows' spans
+// in tau are walked as t0 ascends (the span osloRow's search finds).
+template <std::size_t P>
+bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                         std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                         const std::vector<glm::dvec3>& d0) {
+    const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree);
     const std::size_t nt = points.size() / sequences;
     const std::size_t n0 = d0.size() / sequences;
     // The original coefficients whose rows can reach the free columns: their knot intervals
@@ -99,10 +97,18 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
     std::vector<double> band(freeCount * wb, 0.0), row(p + 1);
     std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0)), target(sequences);
     std::size_t fitRows = 0;
+    // tau[walk] <= t0[j] < tau[walk + 1] (or walk = nt - 1), from osloRow's search at the first row.
+    std::size_t walk =
+        static_cast<std::size_t>(std::upper_bound(tau.begin(), tau.end(), t0[jFirst]) - tau.begin());
+    walk = std::clamp(walk == 0 ? 0 : walk - 1, p, nt - 1);
     for (std::size_t j = jFirst; j <= jLast; ++j) {
-        const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
+        while (walk + 1 < nt && !(t0[j] < tau[walk + 1])) ++walk;
+        std::size_t mu = walk;
+        while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
+        detail::osloRowAt(static_cast<int>(p), tau, t0, j, mu, row.data());
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
+#pragma GCC unroll 8
         for (std::size_t k = 0; k <= p; ++k)
             touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
         if (!touchesFree) continue;
@@ -110,10 +116,12 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         if (w == 0.0) continue;
         for (std::size_t s = 0; s < sequences; ++s) {
             target[s] = d0[j * sequences + s];
+#pragma GCC unroll 8
             for (std::size_t k = 0; k <= p; ++k)
                 if ((c0 + k < cL || c0 + k > cH) && row[k] != 0.0)
                     target[s] -= row[k] * points[(c0 + k) * sequences + s];
         }
+#pragma GCC unroll 8
         for (std::size_t a = 0; a <= p; ++a) {
             const std::size_t ca = c0 + a;
             if (ca < cL || ca > cH || row[a] == 0.0) continue;
@@ -130,6 +138,22 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) points[c * sequences + s] = rhs[(c - cL) * sequences + s];
     return true;
+}
+
+// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
+// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
+// knots contain the reduced ones, so the original is the reduced spline with the missing knots
+// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
+// previous approximation keeps the errors of successive removals from piling up. Returns false,
+// leaving points alone, where the original has too few coefficients to determine the window.
+bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                     const std::vector<glm::dvec3>& d0) {
+    bool ok = false;
+    detail::withFixedDegree(static_cast<std::size_t>(degree), [&](auto fixed) {
+        ok = refitToOriginalWith<fixed()>(degree, tau, points, sequences, cL, cH, t0, d0);
+    });
+    return ok;
 }
 
 // The linear stage's fit and bound: the best fit to the original (knots t0, coefficients d0) in
