@@ -101,11 +101,14 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
     std::size_t walk =
         static_cast<std::size_t>(std::upper_bound(tau.begin(), tau.end(), t0[jFirst]) - tau.begin());
     walk = std::clamp(walk == 0 ? 0 : walk - 1, p, nt - 1);
+    std::vector<double> inverse(p * (p + 1) / 2);
+    std::size_t inverseSpan = nt;  // the span inverse was made for
     for (std::size_t j = jFirst; j <= jLast; ++j) {
         while (walk + 1 < nt && !(t0[j] < tau[walk + 1])) ++walk;
         std::size_t mu = walk;
         while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
-        detail::osloRowAt(static_cast<int>(p), tau, t0, j, mu, row.data());
+        if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
+        detail::osloRowInverse(p, tau, t0, j, mu, inverse.data(), row.data());
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
 #pragma GCC unroll 8
@@ -204,7 +207,8 @@ private:
         first_.resize(n0);
         const bool before = spans_.size() == n0;
         spans_.resize(n0);
-        std::size_t mu = p;
+        std::size_t mu = p, inverseSpan = nt;  // inverseSpan: the span inverse_ was made for
+        inverse_.resize(p * (p + 1) / 2);
         for (std::size_t j = 0; j < n0; ++j) {
             while (mu + 1 < nt && !(o_.knots[j] < tau[mu + 1])) ++mu;
             std::size_t m = mu;
@@ -217,7 +221,8 @@ private:
                 continue;
             }
             spans_[j] = m;
-            detail::osloRowAt(o_.degree, tau, o_.knots, j, m, &rows_[j * (p + 1)]);
+            if (m != inverseSpan) detail::osloInverses(p, tau, inverseSpan = m, inverse_.data());
+            detail::osloRowInverse(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
         }
         readTau_ = tau;
     }
@@ -294,7 +299,7 @@ private:
 
     const Curve& o_;
     std::size_t p_;
-    std::vector<double> rows_, band_, readTau_;  // readTau_: the knots the rows were made on
+    std::vector<double> rows_, band_, readTau_, inverse_;  // readTau_: the knots the rows were made on
     std::vector<std::size_t> first_, spans_;
     std::vector<glm::dvec3> rhs_;
 };
