@@ -73,16 +73,14 @@ void checkOptions(const ReductionOptions& o, const char* where) {
     if (o.freeKnotIterations < 1) throw GeometryError(w + ": freeKnotIterations must be at least 1");
 }
 
-// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
-// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
-// knots contain the reduced ones, so the original is the reduced spline with the missing knots
-// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
-// previous approximation keeps the errors of successive removals from piling up. Returns false,
-// leaving points alone, where the original has too few coefficients to determine the window.
-bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
-                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
-                     const std::vector<glm::dvec3>& d0) {
-    const std::size_t p = static_cast<std::size_t>(degree);
+// refitToOriginal with the degree fixed at compile time where P > 0 (the loops over a row's p+1
+// entries unroll; the same arithmetic in the same order), any degree where P = 0. The rows' spans
+// in tau are walked as t0 ascends (the span osloRow's search finds).
+template <std::size_t P>
+bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                         std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                         const std::vector<glm::dvec3>& d0) {
+    const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree);
     const std::size_t nt = points.size() / sequences;
     const std::size_t n0 = d0.size() / sequences;
     // The original coefficients whose rows can reach the free columns: their knot intervals
@@ -99,10 +97,21 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
     std::vector<double> band(freeCount * wb, 0.0), row(p + 1);
     std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0)), target(sequences);
     std::size_t fitRows = 0;
+    // tau[walk] <= t0[j] < tau[walk + 1] (or walk = nt - 1), from osloRow's search at the first row.
+    std::size_t walk =
+        static_cast<std::size_t>(std::upper_bound(tau.begin(), tau.end(), t0[jFirst]) - tau.begin());
+    walk = std::clamp(walk == 0 ? 0 : walk - 1, p, nt - 1);
+    std::vector<double> inverse(p * (p + 1) / 2);
+    std::size_t inverseSpan = nt;  // the span inverse was made for
     for (std::size_t j = jFirst; j <= jLast; ++j) {
-        const std::size_t mu = detail::osloRow(degree, tau, nt, t0, j, row.data());
+        while (walk + 1 < nt && !(t0[j] < tau[walk + 1])) ++walk;
+        std::size_t mu = walk;
+        while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
+        if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
+        detail::osloRowInverse(p, tau, t0, j, mu, inverse.data(), row.data());
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
+#pragma GCC unroll 8
         for (std::size_t k = 0; k <= p; ++k)
             touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
         if (!touchesFree) continue;
@@ -110,10 +119,12 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
         if (w == 0.0) continue;
         for (std::size_t s = 0; s < sequences; ++s) {
             target[s] = d0[j * sequences + s];
+#pragma GCC unroll 8
             for (std::size_t k = 0; k <= p; ++k)
                 if ((c0 + k < cL || c0 + k > cH) && row[k] != 0.0)
                     target[s] -= row[k] * points[(c0 + k) * sequences + s];
         }
+#pragma GCC unroll 8
         for (std::size_t a = 0; a <= p; ++a) {
             const std::size_t ca = c0 + a;
             if (ca < cL || ca > cH || row[a] == 0.0) continue;
@@ -130,6 +141,22 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
     for (std::size_t c = cL; c <= cH; ++c)
         for (std::size_t s = 0; s < sequences; ++s) points[c * sequences + s] = rhs[(c - cL) * sequences + s];
     return true;
+}
+
+// Refits coefficients [cL, cH] of a reduced spline to the original one (knots t0, coefficients
+// d0, same layout) in the original's discrete l2 norm, the other coefficients held. The original
+// knots contain the reduced ones, so the original is the reduced spline with the missing knots
+// inserted: the local insertion matrix gives the fit. Fitting the original rather than the
+// previous approximation keeps the errors of successive removals from piling up. Returns false,
+// leaving points alone, where the original has too few coefficients to determine the window.
+bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
+                     std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
+                     const std::vector<glm::dvec3>& d0) {
+    bool ok = false;
+    detail::withFixedDegree(static_cast<std::size_t>(degree), [&](auto fixed) {
+        ok = refitToOriginalWith<fixed()>(degree, tau, points, sequences, cL, cH, t0, d0);
+    });
+    return ok;
 }
 
 // The linear stage's fit and bound: the best fit to the original (knots t0, coefficients d0) in
@@ -180,7 +207,8 @@ private:
         first_.resize(n0);
         const bool before = spans_.size() == n0;
         spans_.resize(n0);
-        std::size_t mu = p;
+        std::size_t mu = p, inverseSpan = nt;  // inverseSpan: the span inverse_ was made for
+        inverse_.resize(p * (p + 1) / 2);
         for (std::size_t j = 0; j < n0; ++j) {
             while (mu + 1 < nt && !(o_.knots[j] < tau[mu + 1])) ++mu;
             std::size_t m = mu;
@@ -193,7 +221,8 @@ private:
                 continue;
             }
             spans_[j] = m;
-            detail::osloRowAt(o_.degree, tau, o_.knots, j, m, &rows_[j * (p + 1)]);
+            if (m != inverseSpan) detail::osloInverses(p, tau, inverseSpan = m, inverse_.data());
+            detail::osloRowInverse(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
         }
         readTau_ = tau;
     }
@@ -270,7 +299,7 @@ private:
 
     const Curve& o_;
     std::size_t p_;
-    std::vector<double> rows_, band_, readTau_;  // readTau_: the knots the rows were made on
+    std::vector<double> rows_, band_, readTau_, inverse_;  // readTau_: the knots the rows were made on
     std::vector<std::size_t> first_, spans_;
     std::vector<glm::dvec3> rhs_;
 };
@@ -1110,45 +1139,68 @@ public:
     OriginalSamples(const Curve& curve, int samplesPerSpan)
         : curve_(curve), samplesPerSpan_(samplesPerSpan) {}
 
-    const std::vector<double>& params() { return make().params_; }
-    const std::vector<glm::dvec3>& values() { return make().values_; }
-
-private:
-    OriginalSamples& make() {
-        if (made_) return *this;
-        const std::size_t n = curve_.points.size();
-        params_ = spanSamples(curve_.knots, curve_.degree, n, samplesPerSpan_);
-        values_.resize(params_.size());
-        detail::evaluateAscending(curve_.degree, curve_.knots, curve_.points.data(), n, params_,
-                                  values_.data());
-        made_ = true;
-        return *this;
+    const std::vector<double>& params() {
+        if (!paramsMade_)
+            params_ = spanSamples(curve_.knots, curve_.degree, curve_.points.size(), samplesPerSpan_);
+        paramsMade_ = true;
+        return params_;
+    }
+    const std::vector<glm::dvec3>& values() { return valuesBefore(params().size()); }
+    /// The values, made up to sample `end` at least (a caller that may stop early makes no more).
+    const std::vector<glm::dvec3>& valuesBefore(std::size_t end) {
+        const std::vector<double>& at = params();
+        end = std::min(end, at.size());
+        if (valuesMade_ < end) {
+            values_.resize(at.size());
+            detail::evaluateAscending(curve_.degree, curve_.knots, curve_.points.data(), curve_.points.size(),
+                                      std::span(at).subspan(valuesMade_, end - valuesMade_),
+                                      values_.data() + valuesMade_, &forms());
+            valuesMade_ = end;
+        }
+        return values_;
+    }
+    /// The original's span power forms (detail::powerForms), made when first needed: the samples
+    /// are evaluated from them, and a free-knot fitter shares them.
+    const std::vector<glm::dvec3>& forms() {
+        if (!formsMade_)
+            forms_ =
+                detail::powerForms(curve_.degree, curve_.knots, curve_.points.data(), curve_.points.size());
+        formsMade_ = true;
+        return forms_;
     }
 
+private:
     const Curve& curve_;
     int samplesPerSpan_;
-    bool made_ = false;
+    bool paramsMade_ = false, formsMade_ = false;
+    std::size_t valuesMade_ = 0;  // values_[0, valuesMade_) are made
     std::vector<double> params_;
-    std::vector<glm::dvec3> values_;
+    std::vector<glm::dvec3> values_, forms_;
 };
 
 /// True where the least-squares fit to the coefficients on `knots` (LinearFit: one banded solve)
 /// keeps the pass by the coefficient bound (a bound on the whole curve), or else by its distance
-/// from the original at every loop sample.
+/// from the original at every loop sample. The samples go in blocks: a fit that fails usually
+/// fails in the first, and the rest are not evaluated.
 bool linearFitPasses(const Curve& curve, const ReductionOptions& o, const std::vector<double>& knots,
                      OriginalSamples& samples) {
     std::vector<glm::dvec3> coefficients;
     LinearFit linearFit(curve);
     if (!linearFit.fitOnly(knots, coefficients)) return false;
     if (linearFit.bounded(coefficients, 0.99 * o.tolerance)) return true;
+    constexpr std::size_t kBlock = 64;
     const std::vector<double>& at = samples.params();
-    const std::vector<glm::dvec3>& a = samples.values();
-    std::vector<glm::dvec3> b(at.size());
-    detail::evaluateAscending(curve.degree, knots, coefficients.data(), coefficients.size(), at, b.data());
+    std::vector<glm::dvec3> b(std::min(kBlock, at.size()));
     const double pass2 = 0.99 * 0.99 * o.tolerance * o.tolerance;
-    bool fits = true;
-    for (std::size_t i = 0; i < at.size() && fits; ++i) fits = glm::dot(a[i] - b[i], a[i] - b[i]) <= pass2;
-    return fits;
+    for (std::size_t start = 0; start < at.size(); start += kBlock) {
+        const std::size_t end = std::min(at.size(), start + kBlock);
+        const std::vector<glm::dvec3>& a = samples.valuesBefore(end);
+        detail::evaluateAscending(curve.degree, knots, coefficients.data(), coefficients.size(),
+                                  std::span(at).subspan(start, end - start), b.data());
+        for (std::size_t i = start; i < end; ++i)
+            if (!(glm::dot(a[i] - b[i - start], a[i] - b[i - start]) <= pass2)) return false;
+    }
+    return true;
 }
 
 /// A probe expected to pass so easily that the model has the count two below it pass too stops
@@ -1392,7 +1444,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         return out;
     }
     const FreeKnotOptions fo = freeKnotOptions(o);
-    const FreeKnotFitter fitter(curve, fo);
+    FreeKnotFitter fitter(curve, fo);
+    fitter.shareForms([&samples]() -> const std::vector<glm::dvec3>& { return samples.forms(); });
     std::stable_sort(ranked.begin(), ranked.end(), [](const KnotSignificance& x, const KnotSignificance& y) {
         return x.weight > y.weight;
     });

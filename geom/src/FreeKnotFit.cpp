@@ -533,24 +533,17 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
         throw GeometryError("FreeKnotFitter: pinShare, settledMove and lawsonSettled must be non-negative");
 
     // The best knots for an l-infinity spline fit put h_i proportional to |f^(p+1)|^(-1/(p+1)).
-    // The original's p-th derivative is constant on each span (p! a_p / h^p for the span's power
-    // form a in s = (u - t_j) / h); its jumps over the neighbouring spans' mean length estimate
+    // The original's p-th derivative is constant on each span: the derivative's coefficients,
+    // differenced p times (level k: (p-k+1) (Q_i - Q_{i-1}) / (t_{i+p-k+1} - t_i)), leave one per
+    // span, O(n p) for the curve. Its jumps over the neighbouring spans' mean length estimate
     // f^(p+1) at the knots.
     const std::vector<double>& t = original.knots;
-    std::vector<glm::dvec3> top(n0, glm::dvec3(0.0));
-    forms_ = detail::powerForms(original_.degree, original_.knots, original_.points.data(), n0);
-    std::vector<double> basis((p + 1) * (p + 1));
-    double factorial = 1.0;
-    for (std::size_t i = 2; i <= p; ++i) factorial *= double(i);
-    for (std::size_t j = p; j < n0; ++j) {
-        if (!(t[j + 1] > t[j])) continue;
-        if (p <= detail::smallDegree) {
-            top[j] = forms_[j * (p + 1) + p] * (factorial / std::pow(t[j + 1] - t[j], double(p)));
-            continue;
+    std::vector<glm::dvec3> top(original.points);
+    for (std::size_t level = 1; level <= p; ++level)
+        for (std::size_t i = n0 - 1; i >= level; --i) {
+            const double d = t[i + p - level + 1] - t[i];
+            top[i] = d > 0.0 ? (double(p - level + 1) / d) * (top[i] - top[i - 1]) : glm::dvec3(0.0);
         }
-        basisDerivatives(j, 0.5 * (t[j] + t[j + 1]), original.degree, t, original.degree, basis);
-        for (std::size_t b = 0; b <= p; ++b) top[j] += basis[p * (p + 1) + b] * original.points[j - p + b];
-    }
     density_.assign(n0, 0.0);
     std::size_t previous = n0;
     for (std::size_t j = p; j < n0; ++j) {
@@ -589,6 +582,14 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
     }
 }
 
+const std::vector<glm::dvec3>& FreeKnotFitter::originalForms() const {
+    if (formsSource_) return formsSource_();
+    if (forms_.empty())
+        forms_ = detail::powerForms(original_.degree, original_.knots, original_.points.data(),
+                                    original_.points.size());
+    return forms_;
+}
+
 const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count, int samplesPerFitSpan) const {
     const std::size_t wanted =
         static_cast<std::size_t>(samplesPerFitSpan > 0 ? samplesPerFitSpan : options_.samplesPerFitSpan) *
@@ -610,7 +611,7 @@ const FreeKnotFitter::Samples& FreeKnotFitter::samplesFor(std::size_t count, int
     out.params.push_back(t[n0]);
     out.points.resize(out.params.size());
     detail::evaluateAscending(original_.degree, original_.knots, original_.points.data(), n0, out.params,
-                              out.points.data(), &forms_);
+                              out.points.data(), &originalForms());
     out.spacing = spacingOf(out.params);
     return out;
 }

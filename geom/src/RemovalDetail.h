@@ -133,6 +133,35 @@ inline std::size_t osloRowAt(int degree, const std::vector<double>& tau, const s
     return mu;
 }
 
+// The reciprocals of the coarse knot differences osloRowAt divides by for span mu, level by
+// level (level l, entry r at l (l - 1) / 2 + r; 0 for an empty difference): rows of the same span
+// share them, and multiply where osloRowAt divides. inverse holds p (p + 1) / 2 entries.
+inline void osloInverses(std::size_t degree, const std::vector<double>& tau, std::size_t mu,
+                         double* inverse) {
+    for (std::size_t level = 1, at = 0; level <= degree; ++level)
+        for (std::size_t r = 0; r < level; ++r, ++at) {
+            const double hi = tau[mu + r + 1], lo = tau[mu + r + 1 - level];
+            inverse[at] = hi > lo ? 1.0 / (hi - lo) : 0.0;
+        }
+}
+
+// osloRowAt with span mu's osloInverses (the same row up to rounding).
+inline void osloRowInverse(std::size_t degree, const std::vector<double>& tau, const std::vector<double>& t,
+                           std::size_t j, std::size_t mu, const double* inverse, double* out) {
+    out[0] = 1.0;
+    for (std::size_t level = 1; level <= degree; ++level) {
+        const double x = t[j + level];
+        double saved = 0.0;
+        for (std::size_t r = 0; r < level; ++r, ++inverse) {
+            const double hi = tau[mu + r + 1], lo = tau[mu + r + 1 - level];
+            const double temp = out[r] * *inverse;
+            out[r] = saved + (hi - x) * temp;
+            saved = (x - lo) * temp;
+        }
+        out[level] = saved;
+    }
+}
+
 // The largest degree the span power forms below take; higher degrees use Basis.h.
 constexpr std::size_t smallDegree = 7;
 

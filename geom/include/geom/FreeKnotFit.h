@@ -5,6 +5,7 @@
 #include "geom/KnotRemoval.h"
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <span>
@@ -109,6 +110,15 @@ public:
     /// follows it, the constant depends on the fit (the caller calibrates it).
     double predictedError(std::size_t count) const;
 
+    /// The original's span power forms (span * (degree + 1) on, in the local parameter of each
+    /// non-empty span; empty above degree 7), made when first needed.
+    const std::vector<glm::dvec3>& originalForms() const;
+    /// Takes the original's power forms from source when first needed instead of making them (a
+    /// caller that needs them too makes them once); source must outlive the fitter.
+    void shareForms(std::function<const std::vector<glm::dvec3>&()> source) {
+        formsSource_ = std::move(source);
+    }
+
 private:
     // A fit's starting knots, and by free knot (interior, not held by the end conditions) whether
     // it stays at the original's (none where pin is false).
@@ -138,7 +148,8 @@ private:
     FreeKnotOptions options_;
 
     mutable std::map<std::size_t, Samples> samples_;  // by number, made when first needed
-    std::vector<glm::dvec3> forms_;                   // the original's span power forms (private to geom)
+    mutable std::vector<glm::dvec3> forms_;  // the original's span power forms, made when first needed
+    std::function<const std::vector<glm::dvec3>&()> formsSource_;  // where they are shared, their maker
     std::vector<double> density_;
     std::vector<double> corners_;   // interior knots of multiplicity >= p where C' jumps
     double densityIntegral_ = 0.0;  // per original span: |C^(p+1)|^(1/(p+1)), estimated
