@@ -51,7 +51,9 @@ private:
 void copyTables(const WorkstationTables& from, Workstation& to) {
     for (int index : from.views.definedIndices())
         if (index > 0) to.setViewRepresentation(index, from.views.get(index));
-    for (const auto& [index, light] : from.lights) to.setLightSourceRepresentation(index, light);
+    // A light's colour as it was given: an indexed one keeps following the colour table.
+    for (const auto& [index, light] : from.lights)
+        to.setLightSourceRepresentation(index, light, from.givenLightColour(index));
     for (int index : from.colours.definedIndices())
         to.setColourRepresentation(index, from.colours.get(index));
     to.setHlhsrMode(from.hlhsrMode);
