@@ -11,7 +11,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
-#include <png.h>
+#include "picture.h"
 
 static double random_real(double lo, double hi) {
     return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
@@ -317,22 +317,6 @@ static void lights_and_cues(void) {
     }
 }
 
-typedef struct {
-    int width, height;
-    unsigned char* rgb;
-} Picture;
-
-static int read_png(const char* path, Picture* out) {
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path)) return 0;
-    image.format = PNG_FORMAT_RGB;
-    out->width = (int)image.width, out->height = (int)image.height;
-    out->rgb = malloc(PNG_IMAGE_SIZE(image));
-    return out->rgb && png_image_finish_read(&image, NULL, out->rgb, 0, NULL);
-}
-
 /* The pixel at NPC (x, y) on the 1024 x 768 offscreen picture (NPC [0, 1]^2 on 768 x 768). */
 static int pixel_is(const Picture* p, double x, double y, const double rgb[3]) {
     const int i = (int)(x * 768), j = (int)(p->height - y * 768);
@@ -363,7 +347,7 @@ static void picture(const char* dir) {
         double rgb_hsv[3], rgb_hls[3];
         Pgcolr g;
         Pcolr_rep rep = representation(PMODEL_HLS, hls);
-        Picture p = {0, 0, NULL};
+        Picture p = {0};
         hsv_to_rgb(hsv[0], hsv[1], hsv[2], rgb_hsv);
         hls_to_rgb(hls[0], hls[1], hls[2], rgb_hls);
         remove(png);
@@ -447,7 +431,7 @@ static void mapping_picture(const char* dir, Pstore store) {
         Pfloat_list lists[3];
         Pcolr_map_data data, *got = NULL;
         Pint n = 2 + (Pint)(next_random() % 5), slot = -1, sum = 0, err = -1, method = 0;
-        Picture p = {0, 0, NULL};
+        Picture p = {0};
         for (;;) { /* a colour away from the rounding boundaries of both entries */
             double v = 0;
             random_vivid(rgb);

@@ -7,44 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
-#include <png.h>
-
-typedef struct {
-    int width, height;
-    unsigned char* rgb; /* rows top to bottom */
-    double side;        /* NPC [0, 1]^2 is the lower left side x side pixels */
-    const char* name;
-} Picture;
-
-static int read_png(const char* path, Picture* out) {
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path)) return 0;
-    image.format = PNG_FORMAT_RGB;
-    out->width = (int)image.width, out->height = (int)image.height;
-    out->rgb = malloc(PNG_IMAGE_SIZE(image));
-    return out->rgb && png_image_finish_read(&image, NULL, out->rgb, 0, NULL);
-}
-
-/* A binary PPM (P6, maxval 255) as pdftoppm writes it. */
-static int read_ppm(const char* path, Picture* out) {
-    FILE* f = fopen(path, "rb");
-    int maxval = 0;
-    size_t size;
-    int ok;
-    if (!f) return 0;
-    if (fscanf(f, "P6 %d %d %d", &out->width, &out->height, &maxval) != 3 || maxval != 255) {
-        fclose(f);
-        return 0;
-    }
-    fgetc(f);
-    size = (size_t)out->width * (size_t)out->height * 3;
-    out->rgb = malloc(size);
-    ok = out->rgb && fread(out->rgb, 1, size, f) == size;
-    fclose(f);
-    return ok;
-}
+#include "picture.h"
 
 /* Whether anything is drawn at pixel column i near NPC height y (a pixel above or below too). */
 static int drawn(const Picture* p, int i, double y) {

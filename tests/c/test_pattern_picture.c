@@ -6,25 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
-#include <png.h>
-
-typedef struct {
-    int width, height;
-    unsigned char* rgb; /* rows top to bottom */
-} Picture;
-
-static int read_png(const char* path, Picture* out) {
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path)) return 0;
-    image.format = PNG_FORMAT_RGB;
-    out->width = (int)image.width;
-    out->height = (int)image.height;
-    out->rgb = malloc(PNG_IMAGE_SIZE(image));
-    if (!out->rgb || !png_image_finish_read(&image, NULL, out->rgb, 0, NULL)) return 0;
-    return 1;
-}
+#include "picture.h"
 
 /* Whether the pixel at NPC (x, y) (the display surface maps NPC [0, 1]^2 onto the picture's
  * height at the lower left) is within 8 of (r, g, b). */
@@ -87,7 +69,7 @@ int main(int argc, char** argv) {
     EXPECT_NO_ERROR(ppost_struct(1, 1, 0.5f));
     EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
 
-    Picture picture = {0, 0, NULL};
+    Picture picture = {0};
     CHECK(read_png(png, &picture));
     if (picture.rgb) {
         const int rgb[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 128, 0}};

@@ -8,45 +8,10 @@
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
-#include <png.h>
+#include "picture.h"
 
 static double random_real(double lo, double hi) {
     return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
-}
-
-typedef struct {
-    int width, height;
-    unsigned char* rgb; /* rows top to bottom */
-    double side;        /* NPC [0, 1]^2 is the lower left side x side pixels */
-    const char* name;
-} Picture;
-
-static int read_png(const char* path, Picture* out) {
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path)) return 0;
-    image.format = PNG_FORMAT_RGB;
-    out->width = (int)image.width, out->height = (int)image.height;
-    out->rgb = malloc(PNG_IMAGE_SIZE(image));
-    return out->rgb && png_image_finish_read(&image, NULL, out->rgb, 0, NULL);
-}
-
-/* A binary PPM (P6, maxval 255) as pdftoppm writes it. */
-static int read_ppm(const char* path, Picture* out) {
-    FILE* f = fopen(path, "rb");
-    int maxval = 0;
-    if (!f) return 0;
-    if (fscanf(f, "P6 %d %d %d", &out->width, &out->height, &maxval) != 3 || maxval != 255) {
-        fclose(f);
-        return 0;
-    }
-    fgetc(f);
-    const size_t size = (size_t)out->width * (size_t)out->height * 3;
-    out->rgb = malloc(size);
-    const int ok = out->rgb && fread(out->rgb, 1, size, f) == size;
-    fclose(f);
-    return ok;
 }
 
 static const unsigned char* pixel(const Picture* p, double x, double y) {

@@ -6,42 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
-#include <png.h>
-
-typedef struct {
-    int width, height;
-    unsigned char* rgb; /* rows top to bottom */
-} Picture;
-
-static int read_png(const char* path, Picture* out) {
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path)) return 0;
-    image.format = PNG_FORMAT_RGB;
-    out->width = (int)image.width;
-    out->height = (int)image.height;
-    out->rgb = malloc(PNG_IMAGE_SIZE(image));
-    if (!out->rgb || !png_image_finish_read(&image, NULL, out->rgb, 0, NULL)) return 0;
-    return 1;
-}
-
-/* A binary PPM (P6, maxval 255) as pdftoppm writes it. */
-static int read_ppm(const char* path, Picture* out) {
-    FILE* f = fopen(path, "rb");
-    int maxval = 0;
-    if (!f) return 0;
-    if (fscanf(f, "P6 %d %d %d", &out->width, &out->height, &maxval) != 3 || maxval != 255) {
-        fclose(f);
-        return 0;
-    }
-    fgetc(f);
-    const size_t size = (size_t)out->width * (size_t)out->height * 3;
-    out->rgb = malloc(size);
-    const int ok = out->rgb && fread(out->rgb, 1, size, f) == size;
-    fclose(f);
-    return ok;
-}
+#include "picture.h"
 
 /* Whether a pixel within `radius` of (x, y) (pixels, y down) is near the colour (r, g, b). */
 static int has_colour_near(const Picture* p, int x, int y, int radius, int r, int g, int b) {
@@ -115,7 +80,7 @@ int main(int argc, char** argv) {
     EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
     EXPECT_NO_ERROR(pupd_ws(2, PFLAG_PERFORM));
 
-    Picture picture = {0, 0, NULL};
+    Picture picture = {0};
     CHECK(read_png(png, &picture)); /* written by the update */
     if (picture.rgb) {
         CHECK(picture.width == 1024 && picture.height == 768);
