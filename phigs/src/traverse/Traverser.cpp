@@ -643,14 +643,16 @@ private:
     /// polyline set, a set of fill area sets or edge data makes more, and the segment grows for
     /// those).
     std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
-        std::size_t primitives = 0;
+        std::size_t primitives = 0, copying = 0;
         for (std::size_t i = from; i < s.elements.size(); ++i) {
             if (s.elements.get<ExecuteStructureElement>(i)) break;
-            primitives += mayDraw(s.elements.family(i));
+            const std::size_t family = s.elements.family(i);
+            primitives += mayDraw(family);
+            copying += mayDraw(family) && !viewsStoredPoints(family);
         }
         auto segment = segmentPool_.take();
         segment->items.reserve(primitives);
-        segment->points.reserve(primitives * 4);
+        segment->points.reserve(copying * 4);
         segment->pathPrefix = path_;
         segment->styles = itemTables_.styles;
         segment->storePoints = s.elements.pointPool();  // a segment's items are one structure's
@@ -666,6 +668,11 @@ private:
     }
     static bool mayDraw(std::size_t family) {
         return family <= kLastPrimitive || family == detail::AlternativeIndex<GdpElement, Element>::value;
+    }
+    /// Polylines and polymarkers draw from the store's points (storedPoints), copying none.
+    static bool viewsStoredPoints(std::size_t family) {
+        return family == detail::AlternativeIndex<PolylineElement, Element>::value ||
+               family == detail::AlternativeIndex<PolymarkerElement, Element>::value;
     }
     /// The variant index of the last output primitive family (they come first in Element).
     static constexpr std::size_t kLastPrimitive = 14;
@@ -758,8 +765,10 @@ private:
         const ItemFields& f = itemFields(state);
         if (f.invisible) return nullptr;
         // Built in place from the primitive: a draw item is large, and moving it costs as much
-        // as filling it.
-        DrawItem& item = segment_->items.emplace_back(std::forward<Primitive>(primitive));
+        // as filling it. (Not emplace_back(primitive): clang 14 has no parenthesised aggregate
+        // initialisation.)
+        DrawItem& item = segment_->items.emplace_back();
+        item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
         item.modelTransform = transform(state);
         item.viewIndex = f.viewIndex;
         item.highlighted = f.highlighted;
