@@ -11,8 +11,8 @@ if(PHIGS_WERROR)
   target_compile_options(project_options INTERFACE -Werror)
 endif()
 if(PHIGS_SANITIZE)
-  # -O1 (after the build type's -O2, so it wins): with the sanitizers' instrumentation -O2
-  # compiles two to three times slower for little faster a run, and CI builds twice this way.
+  # -O1 (after the build type's -O2, so it wins): with the sanitizers' instrumentation, -O2
+  # compiles much slower for a run that is hardly faster.
   target_compile_options(project_options INTERFACE -fsanitize=address,undefined -O1
                                                     -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(project_options INTERFACE -fsanitize=address,undefined)

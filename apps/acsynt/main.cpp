@@ -296,10 +296,9 @@ bool importFirst(acsynt::Session& session, const Options& o) {
 /// Keeps freed heap memory in the process rather than handing it back to the kernel at once. A
 /// session allocates and frees picture-sized blocks all the time (read-backs, tessellations,
 /// lavapipe's vertex and command memory); with glibc's defaults each came back as fresh pages
-/// and page faults, measured at about 0.3-0.5 s of the demo's 3 s CPU time, for 2% more peak RSS.
-/// One arena for all threads: lavapipe's queue thread then reuses what the session freed (and
-/// the other way round) instead of growing an arena of its own, about 24 MB less peak in the
-/// demo session; the threads take turns (a picture is waited for), so they hardly contend.
+/// and page faults. One arena for all threads: lavapipe's queue thread then reuses what the
+/// session freed (and the other way round) instead of growing an arena of its own; the threads
+/// take turns (a picture is waited for), so they hardly contend.
 void keepFreedHeap() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
@@ -308,8 +307,8 @@ void keepFreedHeap() {
 
 /// Points the Vulkan loader at lavapipe's driver manifest alone when the session will use
 /// lavapipe anyway (headless, PHIGS_VK_DEVICE not "hardware") and the user named no drivers: the
-/// loader then neither loads nor initialises the hardware drivers (about 6 MB of peak memory in
-/// the demo session). Nothing changes when no manifest for this machine is found.
+/// loader then neither loads nor initialises the hardware drivers and their memory. Nothing
+/// changes when no manifest for this machine is found.
 void onlyLavapipeDriver(const phigs::vk::ContextSettings& context) {
     if (context.device != phigs::vk::DevicePreference::Lavapipe || std::getenv("VK_DRIVER_FILES") ||
         std::getenv("VK_ICD_FILENAMES"))

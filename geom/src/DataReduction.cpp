@@ -503,11 +503,9 @@ private:
     }
 
     /// The group's knots together, or else one by one; a knot that fails alone is blocked. A
-    /// curve in tolerance mode goes one by one at once: its group fits rarely keep the tolerance
-    /// (over 8 members each of the generated refined degree 3, 5, 7 and noisy digitised classes,
-    /// 2 of 60 on the noisy curves, 2 of 14 on the others), and a failed one is a fit for nothing
-    /// before the same knots are tried alone, in the same order (the counts over 10 members of
-    /// every generated class are the same either way; noisy digitised curves take 8% less time).
+    /// curve in tolerance mode goes one by one at once: its group fits rarely keep the tolerance,
+    /// and a failed one is a fit for nothing before the same knots are tried alone, in the same
+    /// order (the counts come out the same either way).
     void removeGroup(const std::vector<KnotSignificance>& group) {
         if (group.size() > 1 && !(measuring_ && s_.sequences == 1)) {
             std::vector<double> values;

@@ -14,7 +14,6 @@ namespace {
 using namespace phigs;
 
 constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation
-constexpr int kColourModelNotAvailable = 110;
 constexpr Pint kTrueColours = 1 << 24;
 
 int checkedMethod(Pint method, const char* name) {
@@ -26,7 +25,7 @@ int checkedMethod(Pint method, const char* name) {
 /// The colour model of PSEUDO or PSEUDO_N data (110 for a number that names none).
 ColourModel model(Pint model, const char* name) {
     if (!isColourModel(model))
-        throw Error(kColourModelNotAvailable, name, "colour model " + std::to_string(model));
+        throw Error(errors::ColourModelNotAvailable, name, "colour model " + std::to_string(model));
     return static_cast<ColourModel>(model);
 }
 

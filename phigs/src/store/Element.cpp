@@ -181,7 +181,7 @@ struct FiniteCheck {
         for (const T& item : list) (*this)(item);
     }
     /// Point lists are left to validatePayload: every family holding one runs checkPoints on it,
-    /// which names the point that is not finite (and a second pass cost inserts ~8 %).
+    /// which names the point that is not finite (a second pass here would only cost inserts).
     void operator()(const PointList&) {}
     template <class T>
     void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces

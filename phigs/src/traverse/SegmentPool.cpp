@@ -92,11 +92,6 @@ void SegmentPool::close() {
     dropped.swap(free_);
 }
 
-std::size_t SegmentPool::freeCount() {
-    std::lock_guard lock(mutex_);
-    return free_.size();
-}
-
 std::size_t SegmentPool::takenSince() {
     std::lock_guard lock(mutex_);
     return std::exchange(taken_, 0);

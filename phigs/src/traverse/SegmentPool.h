@@ -27,7 +27,6 @@ public:
     void settle(std::size_t count);
     /// No more keeping: frees the free segments, and those given back later are freed at once.
     void close();
-    std::size_t freeCount();
     /// Segments taken since the last call.
     std::size_t takenSince();
 

@@ -139,7 +139,7 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
         segmentsPerSpan(rowV, criteria.criteria, criteria.criteria == 2 ? criteria.valueV : criteria.valueU));
     MeshData mesh;
     const auto nu = static_cast<std::uint32_t>(us.size()), nv = static_cast<std::uint32_t>(vs.size());
-    // Exact room: cached meshes live as long as their elements (growth slack was ~1/3 of them).
+    // Exact room: cached meshes live as long as their elements, and growth slack with them.
     mesh.positions.reserve(std::size_t{nu} * nv), mesh.normals.reserve(std::size_t{nu} * nv);
     mesh.uv.reserve(std::size_t{nu} * nv);
     mesh.triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));

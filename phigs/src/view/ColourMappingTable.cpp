@@ -10,7 +10,8 @@ namespace phigs {
 
 namespace {
 
-constexpr int kColourModelNotAvailable = 110;  // ISO 9592-1 error 110: colour model not available
+// ISO 9592-1 error 110 (errors::ColourModelNotAvailable lives in ws/, which includes view/).
+constexpr int kColourModelNotAvailable = 110;
 
 bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

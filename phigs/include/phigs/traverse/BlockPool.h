@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace phigs {
@@ -15,8 +16,15 @@ public:
     BlockPool() = default;
     BlockPool(const BlockPool&) = delete;
     BlockPool& operator=(const BlockPool&) = delete;
-    BlockPool(BlockPool&&) noexcept = default;
-    BlockPool& operator=(BlockPool&&) noexcept = default;
+    /// The moved-from pool is empty (no blocks, filling from the start).
+    BlockPool(BlockPool&& other) noexcept { *this = std::move(other); }
+    BlockPool& operator=(BlockPool&& other) noexcept {
+        blocks_ = std::exchange(other.blocks_, {});
+        current_ = std::exchange(other.current_, 0);
+        used_ = std::exchange(other.used_, 0);
+        nextBlock_ = std::exchange(other.nextBlock_, 1);
+        return *this;
+    }
 
     /// The size of the next block to allocate (at least).
     void reserve(std::size_t count) { nextBlock_ = std::max(nextBlock_, count); }
@@ -55,7 +63,7 @@ private:
     std::vector<Block> blocks_;
     std::size_t current_ = 0, used_ = 0;  ///< the block being filled and the values it holds
     /// Unreserved, the first block holds just the first values (a segment's one transform is
-    /// the common case: 16 of them were 2 KiB a segment), and blocks double from there.
+    /// the common case), and blocks double from there.
     std::size_t nextBlock_ = 1;
 };
 
