@@ -3,6 +3,8 @@
 #ifndef PHIGS_C_TEST_PICTURE_H
 #define PHIGS_C_TEST_PICTURE_H
 
+#include "check.h"
+
 #include <png.h>
 
 #include <stdio.h>
@@ -44,6 +46,41 @@ static inline int read_ppm(const char* path, Picture* out) {
     const int ok = out->rgb && fread(out->rgb, 1, size, f) == size;
     fclose(f);
     return ok;
+}
+
+/* Where draw_offscreen_and_pdf writes its files (pdftoppm adds ".ppm" to ppm_root). */
+typedef struct {
+    char png[512], pdf[512], ppm_root[512];
+} PictureFiles;
+
+/* The files `dir`/`stem`.png, `dir`/`stem`.pdf and `dir`/`stem`_pdf.ppm. */
+static inline PictureFiles picture_files(const char* dir, const char* stem) {
+    PictureFiles files;
+    snprintf(files.png, sizeof files.png, "%s/%s.png", dir, stem);
+    snprintf(files.pdf, sizeof files.pdf, "%s/%s.pdf", dir, stem);
+    snprintf(files.ppm_root, sizeof files.ppm_root, "%s/%s_pdf", dir, stem);
+    return files;
+}
+
+/* Draws structure 1 on a fresh offscreen workstation (1) and PDF workstation (2) and reads both
+ * pictures: p[0] the offscreen one (NPC [0, 1]^2 on 768 x 768 pixels), p[1] the PDF page
+ * rasterised by pdftoppm at 144 dpi. */
+static inline int draw_offscreen_and_pdf(const PictureFiles* files, Picture p[2]) {
+    char command[2048], ppm[600];
+    remove(files->png), remove(files->pdf);
+    EXPECT_NO_ERROR(popen_ws(1, files->png, PWST_OFFSCREEN));
+    EXPECT_NO_ERROR(popen_ws(2, files->pdf, PWST_PDF));
+    for (Pint ws = 1; ws <= 2; ++ws) {
+        EXPECT_NO_ERROR(ppost_struct(ws, 1, 0.5f));
+        EXPECT_NO_ERROR(pupd_ws(ws, PFLAG_PERFORM));
+        EXPECT_NO_ERROR(pclose_ws(ws));
+    }
+    p[0].rgb = p[1].rgb = NULL;
+    p[0].side = 768, p[0].name = "offscreen";
+    p[1].side = 595.2756 * 2, p[1].name = "PDF";
+    snprintf(command, sizeof command, "pdftoppm -r 144 -singlefile '%s' '%s'", files->pdf, files->ppm_root);
+    snprintf(ppm, sizeof ppm, "%s.ppm", files->ppm_root);
+    return read_png(files->png, &p[0]) && system(command) == 0 && read_ppm(ppm, &p[1]);
 }
 
 #endif

@@ -46,26 +46,7 @@ static void random_rgb(double c[3]) {
     for (int k = 0; k < 3; ++k) c[k] = (double)(next_random() % 256u) / 255.0;
 }
 
-static char png[512], pdf[512], ppm_root[512];
-
-/* Draws structure 1 on a fresh offscreen and PDF workstation and reads both pictures (p[0], p[1]). */
-static int draw(Picture p[2]) {
-    char command[2048], ppm[600];
-    remove(png), remove(pdf);
-    EXPECT_NO_ERROR(popen_ws(1, png, PWST_OFFSCREEN));
-    EXPECT_NO_ERROR(popen_ws(2, pdf, PWST_PDF));
-    for (Pint ws = 1; ws <= 2; ++ws) {
-        EXPECT_NO_ERROR(ppost_struct(ws, 1, 0.5f));
-        EXPECT_NO_ERROR(pupd_ws(ws, PFLAG_PERFORM));
-        EXPECT_NO_ERROR(pclose_ws(ws));
-    }
-    p[0].rgb = p[1].rgb = NULL;
-    p[0].side = 768, p[0].name = "offscreen";
-    p[1].side = 595.2756 * 2, p[1].name = "PDF";
-    snprintf(command, sizeof command, "pdftoppm -r 144 -singlefile '%s' '%s'", pdf, ppm_root);
-    snprintf(ppm, sizeof ppm, "%s.ppm", ppm_root);
-    return read_png(png, &p[0]) && system(command) == 0 && read_ppm(ppm, &p[1]);
-}
+static PictureFiles files;
 
 static void back_faces(void) {
     int filledBackUnderOpenFront = 0;
@@ -115,7 +96,7 @@ static void back_faces(void) {
         else
             expected = backStyle == PSTYLE_SOLID ? back : NULL;
         if (expected == back && frontStyle != PSTYLE_SOLID) ++filledBackUnderOpenFront;
-        CHECK(draw(p));
+        CHECK(draw_offscreen_and_pdf(&files, p));
         for (int i = 0; i < 2; ++i) {
             char what[160];
             snprintf(what, sizeof what, "triangle %s, distinguishing %d, cull %d, styles %d / %d",
@@ -151,7 +132,7 @@ static void line_shading(void) {
         pset_line_shad_meth(shaded ? PSD_COLOUR : PSD_NONE);
         ppolyline_set3_data(PVERT_COORD_COLOUR, PMODEL_RGB, 1, &line);
         pclose_struct();
-        CHECK(draw(p));
+        CHECK(draw_offscreen_and_pdf(&files, p));
         for (int i = 0; i < 2; ++i) {
             if (p[i].rgb) {
                 CHECK(
@@ -168,9 +149,7 @@ int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
     seed_random(0x853c49e6748fea9bULL);
-    snprintf(png, sizeof png, "%s/plus_shading.png", dir);
-    snprintf(pdf, sizeof pdf, "%s/plus_shading.pdf", dir);
-    snprintf(ppm_root, sizeof ppm_root, "%s/plus_shading_pdf", dir);
+    files = picture_files(dir, "plus_shading");
     snprintf(errors, sizeof errors, "%s/plus_shading_errors.txt", dir);
     open_with_handler(errors);
     back_faces();
