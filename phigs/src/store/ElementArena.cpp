@@ -4,6 +4,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace phigs {
@@ -76,6 +77,17 @@ PointList* pointsOf(Element& e) {
                 return nullptr;
         },
         e);
+}
+
+/// The summed length of [begin, end) spans (sorted here), or nothing when two overlap.
+std::optional<std::size_t> disjointLength(std::vector<std::pair<std::size_t, std::size_t>>& spans) {
+    std::sort(spans.begin(), spans.end());
+    std::size_t length = 0;
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+        if (i > 0 && spans[i].first < spans[i - 1].second) return std::nullopt;
+        length += spans[i].second - spans[i].first;
+    }
+    return length;
 }
 
 }  // namespace
@@ -267,7 +279,7 @@ void ElementArena::release() noexcept {
 }
 
 std::string ElementArena::checkLayout() const {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> spans;  // [begin, end) of each payload
+    std::vector<std::pair<std::size_t, std::size_t>> spans;  // [begin, end) of each payload
     for (const Slot& s : slots_) {
         if (s.family >= kFamilies.size()) return "a slot with no payload family";
         const FamilyOps& ops = kFamilies[s.family];
@@ -275,14 +287,10 @@ std::string ElementArena::checkLayout() const {
         if (static_cast<std::size_t>(s.offset) + ops.size > used_) return "a payload past the arena's end";
         spans.emplace_back(s.offset, s.offset + ops.size);
     }
-    std::sort(spans.begin(), spans.end());
-    std::size_t live = 0;
-    for (std::size_t i = 0; i < spans.size(); ++i) {
-        if (i > 0 && spans[i].first < spans[i - 1].second) return "two payloads overlap";
-        live += spans[i].second - spans[i].first;
-    }
+    const std::optional<std::size_t> live = disjointLength(spans);
+    if (!live) return "two payloads overlap";
     if (used_ > capacity_) return "more bytes used than held";
-    if (live + dead_ != used_) return "live and dead bytes do not add up";
+    if (*live + dead_ != used_) return "live and dead bytes do not add up";
     return checkPool();
 }
 
@@ -302,14 +310,10 @@ std::string ElementArena::checkPool() const {
         const auto begin = static_cast<std::size_t>(list->data() - pool);
         spans.emplace_back(begin, begin + list->size());
     }
-    std::sort(spans.begin(), spans.end());
-    std::size_t live = 0;
-    for (std::size_t i = 0; i < spans.size(); ++i) {
-        if (i > 0 && spans[i].first < spans[i - 1].second) return "two point lists overlap";
-        live += spans[i].second - spans[i].first;
-    }
+    const std::optional<std::size_t> live = disjointLength(spans);
+    if (!live) return "two point lists overlap";
     if (pointsUsed_ > pointsCapacity_) return "more points used than held";
-    if (live + pointsDead_ != pointsUsed_) return "live and dead points do not add up";
+    if (*live + pointsDead_ != pointsUsed_) return "live and dead points do not add up";
     return {};
 }
 
