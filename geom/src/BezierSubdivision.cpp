@@ -198,7 +198,7 @@ std::vector<SubdivisionLeaf> subdivideAdaptive(std::span<const glm::dvec3> net, 
     if (options.rule != StoppingRule::FixedDepth &&
         (!std::isfinite(options.tolerance) || !(options.tolerance > 0)))
         throw GeometryError("subdivideAdaptive: tolerance must be positive");
-    Generator g{countU, countV, options, 0, {}, {}};
+    Generator g{countU, countV, options, 0, {}, {}, {}};
     SubdivisionLeaf root;
     root.net.assign(net.begin(), net.end());
     if (options.rule == StoppingRule::GlobalError) {

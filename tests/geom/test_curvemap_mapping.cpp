@@ -1,10 +1,13 @@
 #include "CurveMapTestUtil.h"
 
+#include "geom/DegreeElevation.h"
 #include "geom/GeometryError.h"
 #include "geom/Intersect.h"
+#include "geom/Primitives.h"
 #include "geom/curvemap/SampleSurfaces.h"
 
 #include <map>
+#include <numbers>
 #include <random>
 
 using namespace geom;
@@ -75,6 +78,24 @@ Placement at(double u, double w, int turns = 0, bool flipped = false) {
     p.quarterTurns = turns;
     p.flipped = flipped;
     return p;
+}
+
+/// A random star-shaped closed polygon about the origin as a degree-1 curve, one span per side.
+Curve randomPolygon(std::mt19937& rng) {
+    std::uniform_real_distribution<double> radius(0.4, 1.4), jitter(-0.3, 0.3);
+    const int sides = 3 + static_cast<int>(rng() % 7);
+    std::vector<glm::dvec3> points;
+    std::vector<double> knots{0.0};
+    for (int k = 0; k < sides; ++k) {
+        const double angle = (k + 0.5 * jitter(rng)) * 2.0 * std::numbers::pi / sides;
+        const double r = radius(rng);
+        points.push_back({r * std::cos(angle), r * std::sin(angle), 0.0});
+        knots.push_back(static_cast<double>(k));
+    }
+    points.push_back(points.front());
+    knots.push_back(static_cast<double>(sides));
+    knots.push_back(static_cast<double>(sides));
+    return Curve(1, knots, points);
 }
 
 }  // namespace
@@ -469,4 +490,30 @@ TEST_CASE("refinement stops at the projection budget and says so", "[geom][curve
     }
     options.maxProjections = 8;
     CHECK_THROWS_AS(wave().map(logo, at(4, 4, 2), options), GeometryError);
+}
+
+TEST_CASE("curves of every degree and rational circles map validly, whatever their degree",
+          "[geom][curvemap]") {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> anywhere(1.5, 6.5), radius(0.3, 1.5);
+    for (int trial = 0; trial < 6; ++trial) {
+        // One polygon at degrees 1..5 (the same point set: elevation keeps the curve), and a circle.
+        std::vector<Curve> curves{randomPolygon(rng)};
+        for (int times = 1; times <= 4; ++times) curves.push_back(elevateDegree(curves.front(), times));
+        curves.push_back(makeCircle({0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, radius(rng)));
+        const Placement p = at(anywhere(rng), anywhere(rng), static_cast<int>(rng() % 4), rng() % 2 == 1);
+        INFO("trial " << trial << ": reference " << p.reference.x << ", " << p.reference.y);
+        const MapResult r = wave().map(curves, p, {1e-3});
+        checkMapping(wave(), r, curves);
+        for (std::size_t k = 0; k < curves.size(); ++k) {
+            INFO("part " << k << ", degree " << curves[k].degree);
+            CHECK(r.parts[k].issues.empty());
+            REQUIRE_FALSE(r.parts[k].loops.empty());
+            const double reference = rasterArea(wave(), r, curves[k], r.parts[k].loops, 120);
+            CHECK(std::abs(totalArea(r.parts[k]) - reference) <= 0.02 * reference + 0.01);
+            // Elevation leaves the curve as it was, so the mapped region is the same.
+            if (k > 0 && k + 1 < curves.size())
+                CHECK(totalArea(r.parts[k]) == Approx(totalArea(r.parts[0])).epsilon(2e-3));
+        }
+    }
 }

@@ -118,7 +118,14 @@ struct Boundary {
     }
 };
 
-/// Crossing-number test of a closed polygon (first point repeated or not) around p.
+/// The largest distance of a control point from the origin.
+double largestNorm(const std::vector<glm::dvec3>& points) {
+    double size = 0.0;
+    for (const glm::dvec3& p : points) size = std::max(size, glm::length(p));
+    return size;
+}
+
+/// The diagonal of the points' bounding box (0 for none).
 double boxDiagonal(const std::vector<glm::dvec3>& points) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const glm::dvec3& p : points) {
@@ -128,6 +135,7 @@ double boxDiagonal(const std::vector<glm::dvec3>& points) {
     return points.empty() ? 0.0 : glm::length(hi - lo);
 }
 
+/// Crossing-number test of a closed polygon (first point repeated or not) around p.
 bool insidePolygon(const std::vector<glm::dvec2>& poly, const glm::dvec2& p) {
     bool inside = false;
     for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
@@ -163,6 +171,12 @@ private:
     std::vector<Vertex> boundaryWalk(int component, double from, double length) const;
     void densifyWalk(int component, double a, double b, int depth, std::vector<Vertex>& out) const;
     void emitLoop(std::vector<Vertex> vertices, std::size_t walks);
+    std::vector<Sample> sampleCurve();
+    void mapWithoutHits(const std::vector<Sample>& samples);
+    bool regionLeftAt(const glm::dvec2& uv, double area) const;
+    bool cutArcs(const std::vector<Sample>& samples, std::vector<Arc>& arcs);
+    std::size_t nextEntry(const std::vector<Arc>& arcs, std::size_t cur, double& distance);
+    void closeLoops(std::vector<Arc>& arcs);
     glm::dvec3 pointAt(const glm::dvec2& uv) const {
         return evaluate(surface_, domain_.wrap(uv).x, domain_.wrap(uv).y);
     }
@@ -365,25 +379,20 @@ void PartMapper::emitLoop(std::vector<Vertex> vertices, std::size_t walks) {
     out_.loops.push_back(std::move(loop));
 }
 
-void PartMapper::run() {
-    const double s0 = curve_.domainStart(), s1 = curve_.domainEnd();
-    double size = 0.0;
-    for (const glm::dvec3& p : curve_.points) size = std::max(size, glm::length(p));
-    if (glm::length(evaluate(curve_, s0) - evaluate(curve_, s1)) > 1e-9 * (1.0 + size)) {
-        out_.issues.push_back("the curve part is not closed, so it cannot bound a region; not mapped");
-        return;
-    }
-
+std::vector<Sample> PartMapper::sampleCurve() {
+    const double s1 = curve_.domainEnd();
+    const double size = largestNorm(curve_.points);
     // Initial samples at every distinct knot (C0 corners included) and inside each span.
+    const auto degree = static_cast<std::size_t>(curve_.degree);
     std::vector<double> params;
-    for (std::size_t i = static_cast<std::size_t>(curve_.degree); i < curve_.points.size(); ++i) {
+    for (std::size_t i = degree; i < curve_.points.size(); ++i) {
         const double a = curve_.knots[i], b = curve_.knots[i + 1];
         if (!(b > a)) continue;
-        // A straight span (collinear control points) needs fewer starting samples.
-        const glm::dvec3 p0 = curve_.points[i - 3], p3 = curve_.points[i];
+        // A straight span (its inner control points on the chord) needs fewer starting samples.
+        const glm::dvec3 first = curve_.points[i - degree], last = curve_.points[i];
         double bend = 0.0;
-        for (std::size_t k = i - 2; k < i; ++k)
-            bend = std::max(bend, distanceToSegment(curve_.points[k], p0, p3));
+        for (std::size_t k = i - degree + 1; k < i; ++k)
+            bend = std::max(bend, distanceToSegment(curve_.points[k], first, last));
         const int pieces = bend <= 1e-12 * (1.0 + size) ? 2 : 4;
         for (int k = 0; k < pieces; ++k) params.push_back(a + (b - a) * k / pieces);
     }
@@ -401,59 +410,44 @@ void PartMapper::run() {
     // The closing sample repeats the first line.
     samples.back() = samples.front();
     samples.back().s = s1;
+    return samples;
+}
 
-    // Orientation: the region inside the plane curve must lie left of the loops in (u, w).
-    double area = 0.0;
-    for (std::size_t i = 0; i + 1 < samples.size(); ++i)
-        area += samples[i].local.x * samples[i + 1].local.y - samples[i + 1].local.x * samples[i].local.y;
-    const auto firstHit = std::find_if(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; });
-    const std::size_t n = samples.size() - 1;  // distinct samples; samples[n] repeats samples[0]
-
-    if (firstHit == samples.end()) {
-        // No line meets the surface: the part misses it, or surrounds all of it.
-        std::vector<glm::dvec2> poly;
-        for (const Sample& x : samples) poly.push_back({x.local.x, x.local.y});
-        const glm::dvec3 centre =
-            frame_.toCurve(pointAt({0.5 * (domain_.u0 + domain_.u1), 0.5 * (domain_.w0 + domain_.w1)}));
-        if (!insidePolygon(poly, {centre.x, centre.y})) {
-            out_.issues.push_back("the curve part misses the surface");
-        } else if (boundary_.lengths.size() != 1) {
-            out_.issues.push_back(
-                "the curve part surrounds a closed surface: the region would be bounded by "
-                "silhouettes, not by the surface boundary; not mapped");
-        } else {
-            std::vector<Vertex> walk{{boundary_.uvAt(0, 0.0)}};
-            for (const Vertex& v : boundaryWalk(0, 0.0, boundary_.lengths[0])) walk.push_back(v);
-            emitLoop(std::move(walk), 1);
-        }
-        return;
+void PartMapper::mapWithoutHits(const std::vector<Sample>& samples) {
+    // No line meets the surface: the part misses it, or surrounds all of it.
+    std::vector<glm::dvec2> poly;
+    for (const Sample& x : samples) poly.push_back({x.local.x, x.local.y});
+    const glm::dvec3 centre =
+        frame_.toCurve(pointAt({0.5 * (domain_.u0 + domain_.u1), 0.5 * (domain_.w0 + domain_.w1)}));
+    if (!insidePolygon(poly, {centre.x, centre.y})) {
+        out_.issues.push_back("the curve part misses the surface");
+    } else if (boundary_.lengths.size() != 1) {
+        out_.issues.push_back(
+            "the curve part surrounds a closed surface: the region would be bounded by "
+            "silhouettes, not by the surface boundary; not mapped");
+    } else {
+        std::vector<Vertex> walk{{boundary_.uvAt(0, 0.0)}};
+        for (const Vertex& v : boundaryWalk(0, 0.0, boundary_.lengths[0])) walk.push_back(v);
+        emitLoop(std::move(walk), 1);
     }
+}
+
+bool PartMapper::regionLeftAt(const glm::dvec2& uv, double area) const {
     // Which side of a loop the region lies on depends on the sheet: the surface Jacobian's sign
     // against z (a sheet seen from behind, e.g. inside an open end, reverses it).
-    const auto regionLeftAt = [&](const glm::dvec2& uv) {
-        const glm::dvec2 w = domain_.wrap(uv);
-        const SurfaceDerivatives jd = derivatives(surface_, w.x, w.y, 1);
-        return (area > 0.0) == (glm::dot(glm::cross(jd.at(1, 0), jd.at(0, 1)), frame_.z) > 0.0);
-    };
-    bool anyJump = false;
-    for (std::size_t i = 0; i < n; ++i) anyJump = anyJump || jumps(samples[i], samples[i + 1]);
+    const glm::dvec2 w = domain_.wrap(uv);
+    const SurfaceDerivatives jd = derivatives(surface_, w.x, w.y, 1);
+    return (area > 0.0) == (glm::dot(glm::cross(jd.at(1, 0), jd.at(0, 1)), frame_.z) > 0.0);
+}
 
-    if (!anyJump && std::all_of(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; })) {
-        const bool regionLeft = regionLeftAt(firstHit->uv);
-        std::vector<Vertex> loop;
-        for (std::size_t i = 0; i < n; ++i) loop.push_back({samples[i].uv, samples[i].s, samples[i].from});
-        if (!regionLeft) std::reverse(loop.begin(), loop.end());
-        emitLoop(std::move(loop), 0);
-        return;
-    }
-
+bool PartMapper::cutArcs(const std::vector<Sample>& samples, std::vector<Arc>& arcs) {
+    const std::size_t n = samples.size() - 1;  // distinct samples; samples[n] repeats samples[0]
     // Cut the cycle into arcs from an entry to an exit, starting just after some exit.
     std::size_t start = 0;
     const auto leaves = [&](std::size_t i) {
         return samples[i].hit && (!samples[i + 1].hit || jumps(samples[i], samples[i + 1]));
     };
     while (!leaves(start)) ++start;
-    std::vector<Arc> arcs;
     Arc current;
     bool inArc = false;
     const auto silhouette = [&](const Sample& a) {
@@ -461,6 +455,7 @@ void PartMapper::run() {
             "the nearest hit leaves a sheet of the surface away from its boundary (at a silhouette, or "
             "where another sheet comes in front, near curve parameter " +
             std::to_string(a.s) + "); the part cannot be closed and is not mapped");
+        return false;
     };
     // The pair (start, start + 1) is visited twice: first for an entry into the next sheet
     // (when it is a jump), last for the exit that closes the final arc.
@@ -476,7 +471,7 @@ void PartMapper::run() {
             if (!crossing(a, b, v, where)) return silhouette(a);
             if (!inArc) {
                 out_.issues.push_back("internal: an exit without an entry");
-                return;
+                return false;
             }
             ++out_.exits;
             current.vertices.push_back(v);
@@ -496,14 +491,38 @@ void PartMapper::run() {
             inArc = true;
         }
     }
-    for (Arc& arc : arcs)
-        if (!regionLeftAt(arc.vertices[arc.vertices.size() / 2].uv)) {
-            std::reverse(arc.vertices.begin(), arc.vertices.end());
-            std::swap(arc.entry, arc.exit);
-        }
+    return true;
+}
 
-    // Close: from each exit walk counter-clockwise along its boundary component to the nearest
-    // entry, follow that arc, and so on; every number of exits and entries is handled alike.
+std::size_t PartMapper::nextEntry(const std::vector<Arc>& arcs, std::size_t cur, double& distance) {
+    const Arc& arc = arcs[cur];
+    const int c = arc.exit.component;
+    std::size_t next = arcs.size();
+    double nearestExit = 1e300;
+    distance = 1e300;
+    for (std::size_t j = 0; j < arcs.size(); ++j) {
+        if (arcs[j].entry.component == c) {
+            const double d = boundary_.wrapSigma(c, arcs[j].entry.sigma - arc.exit.sigma);
+            if (d < distance) {
+                distance = d;
+                next = j;
+            }
+        }
+        if (j != cur && arcs[j].exit.component == c)
+            nearestExit = std::min(nearestExit, boundary_.wrapSigma(c, arcs[j].exit.sigma - arc.exit.sigma));
+    }
+    if (next == arcs.size())
+        out_.issues.push_back("an exit has no entry on the same boundary component; the part is not closed");
+    else if (nearestExit < distance)
+        out_.issues.push_back(
+            "exits and entries do not alternate along the boundary (the nearest-hit rule "
+            "switched sheets); the loops may overlap");
+    return next;
+}
+
+void PartMapper::closeLoops(std::vector<Arc>& arcs) {
+    // From each exit walk counter-clockwise along its boundary component to the nearest entry,
+    // follow that arc, and so on; every number of exits and entries is handled alike.
     for (std::size_t first = 0; first < arcs.size(); ++first) {
         if (arcs[first].used) continue;
         std::vector<Vertex> loop;
@@ -513,33 +532,13 @@ void PartMapper::run() {
             Arc& arc = arcs[cur];
             arc.used = true;
             loop.insert(loop.end(), arc.vertices.begin(), arc.vertices.end());
-            const int c = arc.exit.component;
-            std::size_t next = arcs.size();
-            double nearest = 1e300, nearestExit = 1e300;
-            for (std::size_t j = 0; j < arcs.size(); ++j) {
-                if (arcs[j].entry.component == c) {
-                    const double d = boundary_.wrapSigma(c, arcs[j].entry.sigma - arc.exit.sigma);
-                    if (d < nearest) {
-                        nearest = d;
-                        next = j;
-                    }
-                }
-                if (j != cur && arcs[j].exit.component == c)
-                    nearestExit =
-                        std::min(nearestExit, boundary_.wrapSigma(c, arcs[j].exit.sigma - arc.exit.sigma));
-            }
-            if (next == arcs.size()) {
-                out_.issues.push_back(
-                    "an exit has no entry on the same boundary component; the part is not closed");
-                return;
-            }
-            if (nearestExit < nearest)
-                out_.issues.push_back(
-                    "exits and entries do not alternate along the boundary (the nearest-hit rule "
-                    "switched sheets); the loops may overlap");
-            if (nearest > 0.0) {
+            double distance = 0.0;
+            const std::size_t next = nextEntry(arcs, cur, distance);
+            if (next == arcs.size()) return;
+            if (distance > 0.0) {
                 ++walks;
-                for (const Vertex& v : boundaryWalk(c, arc.exit.sigma, nearest)) loop.push_back(v);
+                for (const Vertex& v : boundaryWalk(arc.exit.component, arc.exit.sigma, distance))
+                    loop.push_back(v);
             }
             cur = next;
             if (cur == first) break;
@@ -550,6 +549,41 @@ void PartMapper::run() {
         }
         emitLoop(std::move(loop), walks);
     }
+}
+
+void PartMapper::run() {
+    // Rounding in the curve's evaluation grows with its coordinates' size.
+    const double size = largestNorm(curve_.points);
+    if (glm::length(evaluate(curve_, curve_.domainStart()) - evaluate(curve_, curve_.domainEnd())) >
+        1e-9 * (1.0 + size)) {
+        out_.issues.push_back("the curve part is not closed, so it cannot bound a region; not mapped");
+        return;
+    }
+    const std::vector<Sample> samples = sampleCurve();
+    // Orientation: the region inside the plane curve must lie left of the loops in (u, w).
+    double area = 0.0;
+    for (std::size_t i = 0; i + 1 < samples.size(); ++i)
+        area += samples[i].local.x * samples[i + 1].local.y - samples[i + 1].local.x * samples[i].local.y;
+    const auto firstHit = std::find_if(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; });
+    if (firstHit == samples.end()) return mapWithoutHits(samples);
+
+    const std::size_t n = samples.size() - 1;
+    bool anyJump = false;
+    for (std::size_t i = 0; i < n; ++i) anyJump = anyJump || jumps(samples[i], samples[i + 1]);
+    if (!anyJump && std::all_of(samples.begin(), samples.end(), [](const Sample& x) { return x.hit; })) {
+        std::vector<Vertex> loop;
+        for (std::size_t i = 0; i < n; ++i) loop.push_back({samples[i].uv, samples[i].s, samples[i].from});
+        if (!regionLeftAt(firstHit->uv, area)) std::reverse(loop.begin(), loop.end());
+        return emitLoop(std::move(loop), 0);
+    }
+    std::vector<Arc> arcs;
+    if (!cutArcs(samples, arcs)) return;
+    for (Arc& arc : arcs)
+        if (!regionLeftAt(arc.vertices[arc.vertices.size() / 2].uv, area)) {
+            std::reverse(arc.vertices.begin(), arc.vertices.end());
+            std::swap(arc.entry, arc.exit);
+        }
+    closeLoops(arcs);
 }
 
 }  // namespace
