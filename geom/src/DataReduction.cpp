@@ -108,7 +108,7 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
         std::size_t mu = walk;
         while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
         if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
-        detail::osloRowInverse(p, tau, t0, j, mu, inverse.data(), row.data());
+        detail::osloRowInverse<P>(p, tau, t0, j, mu, inverse.data(), row.data());
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
 #pragma GCC unroll 8
@@ -202,7 +202,14 @@ private:
     // those are the knots the last call read for the same row, the row is the one it made (the
     // stage's fits differ from one another by a few knots, so most rows are).
     void makeRows(const std::vector<double>& tau, std::size_t nt) {
-        const std::size_t n0 = o_.points.size(), p = p_;
+        detail::withFixedDegree(p_, [&](auto fixed) { makeRowsWith<fixed()>(tau, nt); });
+    }
+
+    // makeRows with the degree fixed at compile time where P > 0 (the Oslo rows' loops unroll;
+    // the same arithmetic in the same order), any degree where P = 0.
+    template <std::size_t P>
+    void makeRowsWith(const std::vector<double>& tau, std::size_t nt) {
+        const std::size_t n0 = o_.points.size(), p = P > 0 ? P : p_;
         rows_.resize(n0 * (p + 1));
         first_.resize(n0);
         const bool before = spans_.size() == n0;
@@ -222,7 +229,7 @@ private:
             }
             spans_[j] = m;
             if (m != inverseSpan) detail::osloInverses(p, tau, inverseSpan = m, inverse_.data());
-            detail::osloRowInverse(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
+            detail::osloRowInverse<P>(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
         }
         readTau_ = tau;
     }
