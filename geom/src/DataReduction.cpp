@@ -108,7 +108,7 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
         std::size_t mu = walk;
         while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
         if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
-        detail::osloRowInverse(p, tau, t0, j, mu, inverse.data(), row.data());
+        detail::osloRowInverse<P>(p, tau, t0, j, mu, inverse.data(), row.data());
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
 #pragma GCC unroll 8
@@ -202,7 +202,14 @@ private:
     // those are the knots the last call read for the same row, the row is the one it made (the
     // stage's fits differ from one another by a few knots, so most rows are).
     void makeRows(const std::vector<double>& tau, std::size_t nt) {
-        const std::size_t n0 = o_.points.size(), p = p_;
+        detail::withFixedDegree(p_, [&](auto fixed) { makeRowsWith<fixed()>(tau, nt); });
+    }
+
+    // makeRows with the degree fixed at compile time where P > 0 (the Oslo rows' loops unroll;
+    // the same arithmetic in the same order), any degree where P = 0.
+    template <std::size_t P>
+    void makeRowsWith(const std::vector<double>& tau, std::size_t nt) {
+        const std::size_t n0 = o_.points.size(), p = P > 0 ? P : p_;
         rows_.resize(n0 * (p + 1));
         first_.resize(n0);
         const bool before = spans_.size() == n0;
@@ -222,7 +229,7 @@ private:
             }
             spans_[j] = m;
             if (m != inverseSpan) detail::osloInverses(p, tau, inverseSpan = m, inverse_.data());
-            detail::osloRowInverse(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
+            detail::osloRowInverse<P>(p, tau, o_.knots, j, m, inverse_.data(), &rows_[j * (p + 1)]);
         }
         readTau_ = tau;
     }
@@ -385,7 +392,8 @@ template <class Accept, class Present>
 class RemovalLoop {
 public:
     RemovalLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept& accept,
-                Present& presentError, AcceptedStates* history, const Spline* originalSpline)
+                Present& presentError, AcceptedStates* history, const Spline* originalSpline,
+                bool refitRounds)
         : s_(s),
           o_(o),
           fits_(fits),
@@ -393,7 +401,8 @@ public:
           presentError_(presentError),
           history_(history),
           original_(originalSpline ? *originalSpline : s),
-          measuring_(std::isfinite(o.tolerance)) {}
+          measuring_(std::isfinite(o.tolerance)),
+          refitRounds_(refitRounds) {}
 
     /// Runs the loop's rounds; returns the number of knots removed.
     std::size_t run() {
@@ -412,8 +421,14 @@ public:
             }
             // Every knot left failed against the accumulated local fits. A global best fit to the
             // original on the knots now left usually lowers the error everywhere; if it keeps the
-            // tolerance, the knots that failed get another chance.
-            if (!measuring_ || removed_ == removedBefore || removed_ >= o_.maxRemovals || round >= 4) break;
+            // tolerance, the knots that failed get another chance. Not where the loop started from
+            // the linear stage's state (refitRounds false), itself a global best fit: there the
+            // refit and the second round are fits for nothing (on 10 random members of each
+            // generated class of degrees 3-7, the long curve and noisy data, the second round
+            // removed one knot in all; the refit and its check cost 2-10% of the time).
+            if (!measuring_ || !refitRounds_ || removed_ == removedBefore || removed_ >= o_.maxRemovals ||
+                round >= 4)
+                break;
             if (!refitGlobally()) break;
         }
         return removed_;
@@ -616,7 +631,7 @@ private:
     Present& presentError_;
     AcceptedStates* history_;
     const Spline original_;  // the spline the fits approximate: s itself, or the original s was reduced from
-    const bool measuring_;
+    const bool measuring_, refitRounds_;
     std::unordered_set<double> blocked_;  // by value; a long curve blocks thousands
     std::vector<Cached> cache_;           // by value
     std::size_t removed_ = 0;
@@ -626,10 +641,10 @@ private:
 template <class Accept, class Present>
 std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, Accept&& accept,
                        Present&& presentError, AcceptedStates* history = nullptr,
-                       const Spline* originalSpline = nullptr) {
+                       const Spline* originalSpline = nullptr, bool refitRounds = true) {
     using A = std::remove_reference_t<Accept>;
     using P = std::remove_reference_t<Present>;
-    return RemovalLoop<A, P>(s, o, fits, accept, presentError, history, originalSpline).run();
+    return RemovalLoop<A, P>(s, o, fits, accept, presentError, history, originalSpline, refitRounds).run();
 }
 
 Curve unchecked(int degree, std::vector<double> knots, std::vector<glm::dvec3> points) {
@@ -1404,8 +1419,9 @@ private:
 
 // Tolerance mode with free knots: the exact removals first, then a search over the control
 // point count n (CountSearch). Each probe is a free-knot fit; the smallest count whose fit passes
-// on samples must also pass measureDeviation (the final check itself). loopCount() runs the
-// removal loop (once) and gives its count: on a refined curve the search looks only below it.
+// on samples must also pass measureDeviation (the final check itself). loopCurve() runs the
+// removal loop (once) and gives its result before the final measurement: on a refined curve the
+// search looks only below its count, and not at all where every knot it left is past the cutoff.
 //
 // The original's most significant knots (by removal weight), kept, fit a refined curve whose
 // few knots that matter are where the p-th derivative jumps (equidistribution cannot hit
@@ -1418,9 +1434,9 @@ private:
 // tolerance instead: a refined degree-5 curve whose significant knots missed 3000 times the
 // moved fit's error but only 17 times the tolerance kept 16 points by the search, 13 by the loop.
 constexpr double kModelMissed = 1.5;
-template <class LoopCount>
+template <class LoopCurve>
 CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions& o, OriginalSamples& samples,
-                                      LoopCount&& loopCount, bool& refined, bool& settled,
+                                      LoopCurve&& loopCurve, bool& refined, bool& settled,
                                       std::vector<KnotSignificance>& originalRanking) {
     const std::size_t n0 = curve.points.size(), p = static_cast<std::size_t>(curve.degree);
     const std::size_t k = static_cast<std::size_t>(o.ends.fixedDerivatives);
@@ -1480,7 +1496,16 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // On a refined curve the removal loop runs too (from the linear stage's state) and runs
     // first: the search looks only below the count it reached, where on refined curves it
     // rarely has anything to find (probes above it were fits and measurements for nothing).
-    if (refined) ceiling = std::min(ceiling, loopCount());
+    // Where every knot the loop left weighs more than the cutoff, no fit with fewer points keeps
+    // the tolerance either (see everyKnotPastCutoff): on the refined classes of degrees 2-7 and
+    // the long curve the loop recovers the simpler curve's knots, the search below it found
+    // nothing on 20 random members of each, and its probe cost 10-20% of the time.
+    auto belowLoop = [&] {
+        const Curve& left = loopCurve();
+        ceiling = std::min(ceiling, left.points.size());
+        if (o.weightCutoff > 0.0 && everyKnotPastCutoff(curve, left, o, ranked)) ceiling = lowest;
+    };
+    if (refined) belowLoop();
     // A first fit at or above the ceiling is never probed (the search starts from the model):
     // it is made only below it.
     FreeKnotFit moved;
@@ -1496,7 +1521,7 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         // loop as well, which finds its knots by removing the inserted ones.
         refined = refined || significantError <= 45.0 * moved.sampleError ||
                   moved.sampleError > kModelMissed * o.tolerance;
-        if (refined) ceiling = std::min(ceiling, loopCount());
+        if (refined) belowLoop();
         // Measure before searching (see searchIsFutile).
         if (refined && searchIsFutile(moved, p, first, ceiling, o.tolerance)) ceiling = lowest;
     }
@@ -1656,17 +1681,19 @@ public:
         const std::size_t first = lo > pad_ ? lo - pad_ : 0;
         const std::size_t last = std::min(params_.size(), hi + pad_);
         detail::SplineSampler candidate(g.degree, g.knots, g.points.data(), g.points.size());
+        if (failures_ > accepted_ && !sparseSampleKeeps(g, candidate, first, last)) return rejected();
         std::vector<glm::dvec3> onCandidate(last - first);
         detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(),
                                   std::span(params_).subspan(first, last - first), onCandidate.data());
-        const Window w{candidate, onCandidate, first};
         // The sample farthest from the candidate in parameter first: most candidates that fail,
         // fail there, before any other sample is inverted.
-        const std::size_t farthest = farthestSample(w, last);
-        if (first < last && !sampleKeeps(w, farthest)) return false;
+        const std::size_t farthest = first + farthestOf(onCandidate, first, 1);
+        if (first < last && !sampleKeeps(candidate, onCandidate[farthest - first], farthest))
+            return rejected();
         for (std::size_t i = first; i < last; ++i)
-            if (i != farthest && !sampleKeeps(w, i)) return false;
+            if (i != farthest && !sampleKeeps(candidate, onCandidate[i - first], i)) return rejected();
         commitTrial(first, last);
+        ++accepted_;
         return true;
     }
 
@@ -1686,22 +1713,44 @@ public:
 private:
     /// The largest error of each block of kErrorBlock samples, for the ranking's many range maxima.
     static constexpr std::size_t kErrorBlock = 16;
+    /// A candidate turned away, counted.
+    bool rejected() {
+        ++failures_;
+        return false;
+    }
 
-    /// A candidate's sampler and its points at the samples from `first` on.
-    struct Window {
-        detail::SplineSampler& candidate;
-        const std::vector<glm::dvec3>& onCandidate;
-        std::size_t first;
-    };
+    /// The sparse first check's stride over the window's samples.
+    static constexpr std::size_t kSparseStride = 4;
 
-    /// The sample in [w.first, last) farthest from the candidate at its own parameter.
-    std::size_t farthestSample(const Window& w, std::size_t last) const {
-        std::size_t farthest = w.first;
+    /// Every kSparseStride-th sample of [first, last) first: where the one of them farthest from
+    /// the candidate in parameter fails, the candidate fails (the full check below tries every
+    /// sample, that one too), and most candidates that fail are turned away at a quarter of the
+    /// evaluations. The full check makes its own verdict and witnesses where this one passes, so
+    /// the results are the same either way; accept runs it once more candidates have failed than
+    /// passed (noisy data: three of four fail), not where most pass (higher degrees: most do,
+    /// and it would cost them a quarter of the evaluations more).
+    bool sparseSampleKeeps(const Curve& g, detail::SplineSampler& candidate, std::size_t first,
+                           std::size_t last) {
+        if (last - first < 8 * kSparseStride) return true;
+        sparseParams_.clear();
+        for (std::size_t i = first; i < last; i += kSparseStride) sparseParams_.push_back(params_[i]);
+        sparseValues_.resize(sparseParams_.size());
+        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(), sparseParams_,
+                                  sparseValues_.data());
+        const std::size_t farthest = farthestOf(sparseValues_, first, kSparseStride);
+        return sampleKeeps(candidate, sparseValues_[farthest], first + farthest * kSparseStride);
+    }
+
+    /// The k for which onCandidate[k], the candidate at sample first + k * stride, is farthest
+    /// from that sample.
+    std::size_t farthestOf(const std::vector<glm::dvec3>& onCandidate, std::size_t first,
+                           std::size_t stride) const {
+        std::size_t farthest = 0;
         double farthestDistance = -1.0;
-        for (std::size_t i = w.first; i < last; ++i) {
-            const glm::dvec3 d = w.onCandidate[i - w.first] - samples_[i];
+        for (std::size_t k = 0; k < onCandidate.size(); ++k) {
+            const glm::dvec3 d = onCandidate[k] - samples_[first + k * stride];
             const double e = glm::dot(d, d);
-            if (e > farthestDistance) farthestDistance = e, farthest = i;
+            if (e > farthestDistance) farthestDistance = e, farthest = k;
         }
         return farthest;
     }
@@ -1719,10 +1768,9 @@ private:
 
     /// One sample: true where it keeps the tolerance both ways (its witness and error go to the
     /// trial arrays).
-    bool sampleKeeps(const Window& w, std::size_t i) {
+    bool sampleKeeps(detail::SplineSampler& candidate, const glm::dvec3& q, std::size_t i) {
         // |f(u) - g(u)| bounds the distance both ways, so where it is small enough no
         // projection is needed.
-        const glm::dvec3& q = w.onCandidate[i - w.first];
         const double parametric = glm::length(q - samples_[i]);
         if (parametric <= tol_) {
             trial_[i] = witness_[i];
@@ -1730,9 +1778,9 @@ private:
             return true;
         }
         // Original to reduced, by Newton from the witness (geom's projector, local mode).
-        CurvePoint pr = newton(w.candidate, samples_[i], witness_[i]);
+        CurvePoint pr = newton(candidate, samples_[i], witness_[i]);
         if (pr.distance > tol_) {
-            const CurvePoint again = newton(w.candidate, samples_[i], params_[i]);
+            const CurvePoint again = newton(candidate, samples_[i], params_[i]);
             if (again.distance < pr.distance) pr = again;
         }
         if (pr.distance > tol_) return false;
@@ -1770,7 +1818,9 @@ private:
 
     std::vector<double> params_;
     std::vector<glm::dvec3> samples_;
-    std::vector<double> witness_, trial_, error_, trialError_, blockError_;
+    std::vector<double> witness_, trial_, error_, trialError_, blockError_, sparseParams_;
+    std::vector<glm::dvec3> sparseValues_;
+    std::size_t accepted_ = 0, failures_ = 0;  // the candidates judged so far
     std::size_t pad_;
     double tol_;
     detail::SplineSampler originalSampler_;
@@ -1827,33 +1877,63 @@ void stepBackToTolerance(const Curve& curve, const ReductionOptions& options, Ac
     }
 }
 
-// The removal loop from state s (the original, or the linear stage's), with its final measurement
-// and step back: the result keeps the tolerance as measured by measureDeviation.
-CurveReduction reduceByLoop(const Curve& curve, const ReductionOptions& options, Spline s, double tol,
-                            const Spline& originalSpline, OriginalSamples& originalSamples) {
-    const bool measuring = std::isfinite(options.tolerance);
-    const bool batch = measuring && options.batch;
-    const std::size_t n = curve.points.size();
-    const bool triesNone = loopTriesNone(options, s, n);
-    LoopSamples samples(curve, options.samplesPerSpan, tol, batch || triesNone ? nullptr : &originalSamples);
-    auto accept = [&](const LeastSquaresRemoval& fit) { return !measuring || samples.accept(s.degree, fit); };
-    auto presentError = [&](double from, double to) { return samples.presentError(from, to); };
-    CurveReduction out;
-    AcceptedStates history;
-    if (batch) {
-        BatchReducer reducer(curve, options, tol);
-        out.removed = reducer.run(s.knots, s.points, out.fits, history);
-    } else {
-        const std::size_t before = n - s.points.size();
-        out.removed = before + (triesNone ? 0
-                                          : reduceLoop(s, options, out.fits, accept, presentError, &history,
-                                                       &originalSpline));
+// The removal loop from state s (the original, or the linear stage's), run at construction; its
+// final measurement and step back (the result then keeps the tolerance as measured by
+// measureDeviation) wait until the result is asked for: where the free-knot search beats the
+// loop's count (noisy data: about half the members), the loop's result is never measured.
+class LoopReduction {
+public:
+    LoopReduction(const Curve& curve, const ReductionOptions& options, Spline s, double tol,
+                  const Spline& originalSpline, OriginalSamples& originalSamples)
+        : curve_(curve),
+          options_(options),
+          tol_(tol),
+          triesNone_(loopTriesNone(options, s, curve.points.size())),
+          samples_(curve, options.samplesPerSpan, tol,
+                   (std::isfinite(options.tolerance) && options.batch) || triesNone_ ? nullptr
+                                                                                     : &originalSamples) {
+        const bool measuring = std::isfinite(options.tolerance);
+        const std::size_t n = curve.points.size();
+        auto accept = [&](const LeastSquaresRemoval& fit) {
+            return !measuring || samples_.accept(s.degree, fit);
+        };
+        auto presentError = [&](double from, double to) { return samples_.presentError(from, to); };
+        if (measuring && options.batch) {
+            BatchReducer reducer(curve, options, tol);
+            out_.removed = reducer.run(s.knots, s.points, out_.fits, history_);
+        } else {
+            const std::size_t before = n - s.points.size();
+            out_.removed = before + (triesNone_ ? 0
+                                                : reduceLoop(s, options, out_.fits, accept, presentError,
+                                                             &history_, &originalSpline, before == 0));
+        }
+        out_.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
     }
-    out.curve = Curve(s.degree, std::move(s.knots), std::move(s.points));
-    measureLoopResult(curve, options, tol, samples, out);
-    stepBackToTolerance(curve, options, history, out);
-    return out;
-}
+
+    /// The curve the loop left, before the final measurement (which rarely steps back).
+    const Curve& curve() const { return out_.curve; }
+    std::size_t count() const { return out_.curve.points.size(); }
+    std::size_t fits() const { return out_.fits; }
+
+    /// The result, measured and stepped back until it keeps the tolerance (once).
+    const CurveReduction& result() {
+        if (!measured_) {
+            measureLoopResult(curve_, options_, tol_, samples_, out_);
+            stepBackToTolerance(curve_, options_, history_, out_);
+            measured_ = true;
+        }
+        return out_;
+    }
+
+private:
+    const Curve& curve_;
+    const ReductionOptions& options_;
+    double tol_;
+    bool triesNone_, measured_ = false;
+    LoopSamples samples_;
+    AcceptedStates history_;
+    CurveReduction out_;
+};
 
 }  // namespace
 
@@ -1890,24 +1970,30 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
             linearState = linear ? linearRemoval(curve, tol, 30, originalRanking) : originalSpline;
         return *linearState;
     };
-    std::optional<CurveReduction> loop;
-    auto runLoop = [&]() -> const CurveReduction& {
-        if (!loop) loop = reduceByLoop(curve, options, runLinear(), tol, originalSpline, originalSamples);
+    std::optional<LoopReduction> loop;
+    auto runLoop = [&]() -> LoopReduction& {
+        if (!loop) loop.emplace(curve, options, runLinear(), tol, originalSpline, originalSamples);
         return *loop;
     };
     std::optional<CurveReduction> fitted;
     if (measuring && options.freeKnots && clamped) {
         bool refined = false, settled = false;
         fitted = reduceCurveByFreeKnots(
-            curve, options, originalSamples, [&] { return runLoop().curve.points.size(); }, refined, settled,
-            originalRanking);
+            curve, options, originalSamples, [&]() -> const Curve& { return runLoop().curve(); }, refined,
+            settled, originalRanking);
         // The removal loop runs too where nothing fitted below the original or the original
         // looks like a refined curve (see reduceCurveByFreeKnots); the fewer points win. Where
         // every knot's weight is past the cutoff (settled), the loop would try none.
         if ((fitted->removed > 0 && !refined) || n <= p + 1 || settled) return *fitted;
     }
     runLoop();
-    CurveReduction out = std::move(*loop);
+    // The loop's measurement can only add points (by stepping back): a fit with no more than the
+    // loop's count before it wins without it.
+    if (fitted && fitted->curve.points.size() <= loop->count()) {
+        fitted->fits += loop->fits();
+        return *fitted;
+    }
+    CurveReduction out = loop->result();
     if (fitted && fitted->curve.points.size() <= out.curve.points.size()) {
         fitted->fits += out.fits;
         return *fitted;

@@ -145,16 +145,21 @@ inline void osloInverses(std::size_t degree, const std::vector<double>& tau, std
         }
 }
 
-// osloRowAt with span mu's osloInverses (the same row up to rounding).
+// osloRowAt with span mu's osloInverses (the same row up to rounding), the degree fixed at
+// compile time where P > 0 (the loops unroll), any degree where P = 0.
+template <std::size_t P>
 inline void osloRowInverse(std::size_t degree, const std::vector<double>& tau, const std::vector<double>& t,
                            std::size_t j, std::size_t mu, const double* inverse, double* out) {
+    const std::size_t d = P > 0 ? P : degree;
     out[0] = 1.0;
-    for (std::size_t level = 1; level <= degree; ++level) {
+#pragma GCC unroll 8
+    for (std::size_t level = 1; level <= d; ++level) {
         const double x = t[j + level];
         double saved = 0.0;
-        for (std::size_t r = 0; r < level; ++r, ++inverse) {
+#pragma GCC unroll 8
+        for (std::size_t r = 0; r < level; ++r) {
             const double hi = tau[mu + r + 1], lo = tau[mu + r + 1 - level];
-            const double temp = out[r] * *inverse;
+            const double temp = out[r] * inverse[(level - 1) * level / 2 + r];
             out[r] = saved + (hi - x) * temp;
             saved = (x - lo) * temp;
         }
