@@ -47,10 +47,16 @@ private:
     void forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const;
     /// The interval of t in [0, 1] where the segment is inside the triangle and behind it.
     bool hides(const Triangle& t, const PagePoint& a, const PagePoint& b, glm::dvec2& interval) const;
-    /// The intervals of the segment that triangles hide, in order of their start.
-    void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden) const;
-    /// Whether no part of the segment is visible.
+    /// The intervals of the segment that triangles hide, in order of their start; the triangles
+    /// that hide some of it are added to `hiders` when given.
+    void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
+                         std::vector<std::uint32_t>* hiders = nullptr) const;
+    /// Whether intervals of [0, 1] cover it (sorts them).
+    static bool coverWhole(std::vector<glm::dvec2>& intervals);
+    /// Whether no part of the segment is visible (hidden()'s edges: tries its hints first).
     bool hiddenWhole(const PagePoint& a, const PagePoint& b) const;
+    /// Adds the triangles that hide a point.
+    void hidersOf(const PagePoint& p, std::vector<std::uint32_t>& hiders) const;
 
     std::vector<Triangle> triangles_;
     glm::dvec2 lo_{0.0}, cell_{1.0};
@@ -64,6 +70,8 @@ private:
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t query_ = 0;
     mutable std::vector<glm::dvec2> scratch_;  ///< hiddenWhole's intervals, kept between calls
+    /// hidden()'s triangles known to hide the facet's centre or edges, tried first on each edge.
+    mutable std::vector<std::uint32_t> hints_, found_;
 };
 
 }  // namespace phigs::hardcopy
