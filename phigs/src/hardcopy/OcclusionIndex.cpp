@@ -78,15 +78,13 @@ void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
     t.plane = {-n.x / n.z, -n.y / n.z, 0.0};
     t.plane.z = a.z - t.plane.x * a.x - t.plane.y * a.y;
     t.tolerance = kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel;
-    t.lo = glm::min(t.p[0], glm::min(t.p[1], t.p[2]));
-    t.hi = glm::max(t.p[0], glm::max(t.p[1], t.p[2]));
     triangles_.push_back(t);
 }
 
 void OcclusionIndex::bin() {
     if (triangles_.empty()) return;
     glm::dvec2 lo(1e300), hi(-1e300);
-    for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo), hi = glm::max(hi, t.hi);
+    for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo()), hi = glm::max(hi, t.hi());
     // About four cells per triangle: the model covers a part of the page only, and a query then
     // meets few triangles that its cells hold but its segment misses.
     const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxCells);
@@ -96,12 +94,13 @@ void OcclusionIndex::bin() {
     // The cells' lists in one array (counted, then filled): no allocation per cell.
     cellStart_.assign(std::size_t(columns_) * std::size_t(rows_) + 1, 0);
     for (const Triangle& t : triangles_)
-        forCells(t.lo, t.hi, [&](std::size_t cell) { ++cellStart_[cell + 1]; });
+        forCells(t.lo(), t.hi(), [&](std::size_t cell) { ++cellStart_[cell + 1]; });
     for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
     cellItems_.resize(cellStart_.back());
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-        forCells(triangles_[i].lo, triangles_[i].hi, [&](std::size_t cell) { cellItems_[fill[cell]++] = i; });
+        forCells(triangles_[i].lo(), triangles_[i].hi(),
+                 [&](std::size_t cell) { cellItems_[fill[cell]++] = i; });
     stamp_.assign(triangles_.size(), 0);
 }
 
@@ -119,8 +118,9 @@ void OcclusionIndex::forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
 bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoint& b,
                            glm::dvec2& interval) const {
     const glm::dvec2 pa(a), pb(b);
-    if (std::max(pa.x, pb.x) < t.lo.x || std::min(pa.x, pb.x) > t.hi.x || std::max(pa.y, pb.y) < t.lo.y ||
-        std::min(pa.y, pb.y) > t.hi.y)
+    const glm::dvec2 boxLo = t.lo(), boxHi = t.hi();
+    if (std::max(pa.x, pb.x) < boxLo.x || std::min(pa.x, pb.x) > boxHi.x || std::max(pa.y, pb.y) < boxLo.y ||
+        std::min(pa.y, pb.y) > boxHi.y)
         return false;
     const double area = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
     if (area == 0.0) return false;

@@ -2,6 +2,7 @@
 
 #include "phigs/hardcopy/ProjectedScene.h"
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -39,7 +40,9 @@ private:
         glm::dvec2 p[3];
         glm::dvec3 plane{0.0};  ///< depth = plane.x * x + plane.y * y + plane.z
         double tolerance = 0.0;
-        glm::dvec2 lo{0.0}, hi{0.0};
+        /// The box on the page, worked out when needed rather than held with every triangle.
+        glm::dvec2 lo() const { return glm::min(p[0], glm::min(p[1], p[2])); }
+        glm::dvec2 hi() const { return glm::max(p[0], glm::max(p[1], p[2])); }
     };
     void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel);
     void bin();
