@@ -85,6 +85,7 @@ private:
                 const double d = distance(plane, p);
                 front = front || d > epsilon_;
                 back = back || d < -epsilon_;
+                if (front && back) return Side::Both;
             }
         return front && back ? Side::Both : front ? Side::Front : back ? Side::Back : Side::On;
     }
@@ -121,10 +122,13 @@ private:
         for (std::size_t c = 0; c < candidates; ++c) {
             const std::size_t candidate = facets[c * n / candidates];
             if (planes_[candidate] == glm::dvec4(0.0)) continue;
+            // Counting stops where this candidate can no longer be the first with the fewest, and
+            // the search where one splits none: the choice is the full count's.
             std::size_t splits = 0;
-            for (std::size_t s = 0; s < samples; ++s)
+            for (std::size_t s = 0; s < samples && splits < fewest; ++s)
                 splits += classify(planes_[candidate], pool_[facets[s * n / samples]]) == Side::Both;
             if (splits < fewest) fewest = splits, best = candidate;
+            if (fewest == 0) break;
         }
         return best;
     }

@@ -221,7 +221,8 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
         for (ClipVertex& v : polygon) v.h = worldToNpc_ * v.h;
         if (!within(view_)) polygon = clipPolygon(std::move(polygon), view_);
         if (polygon.empty()) continue;
-        f.contours.emplace_back();
+        if (f.contours.empty()) f.contours.reserve(world.size());
+        f.contours.emplace_back().reserve(polygon.size());
         for (const ClipVertex& v : polygon) {
             f.contours.back().push_back(mapping_.toPage(glm::dvec3(v.h) / v.h.w));
             depth += f.contours.back().back().z;

@@ -78,15 +78,13 @@ void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
     t.plane = {-n.x / n.z, -n.y / n.z, 0.0};
     t.plane.z = a.z - t.plane.x * a.x - t.plane.y * a.y;
     t.tolerance = kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel;
-    t.lo = glm::min(t.p[0], glm::min(t.p[1], t.p[2]));
-    t.hi = glm::max(t.p[0], glm::max(t.p[1], t.p[2]));
     triangles_.push_back(t);
 }
 
 void OcclusionIndex::bin() {
     if (triangles_.empty()) return;
     glm::dvec2 lo(1e300), hi(-1e300);
-    for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo), hi = glm::max(hi, t.hi);
+    for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo()), hi = glm::max(hi, t.hi());
     // About four cells per triangle: the model covers a part of the page only, and a query then
     // meets few triangles that its cells hold but its segment misses.
     const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxCells);
@@ -96,12 +94,13 @@ void OcclusionIndex::bin() {
     // The cells' lists in one array (counted, then filled): no allocation per cell.
     cellStart_.assign(std::size_t(columns_) * std::size_t(rows_) + 1, 0);
     for (const Triangle& t : triangles_)
-        forCells(t.lo, t.hi, [&](std::size_t cell) { ++cellStart_[cell + 1]; });
+        forCells(t.lo(), t.hi(), [&](std::size_t cell) { ++cellStart_[cell + 1]; });
     for (std::size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
     cellItems_.resize(cellStart_.back());
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-        forCells(triangles_[i].lo, triangles_[i].hi, [&](std::size_t cell) { cellItems_[fill[cell]++] = i; });
+        forCells(triangles_[i].lo(), triangles_[i].hi(),
+                 [&](std::size_t cell) { cellItems_[fill[cell]++] = i; });
     stamp_.assign(triangles_.size(), 0);
 }
 
@@ -119,8 +118,9 @@ void OcclusionIndex::forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
 bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoint& b,
                            glm::dvec2& interval) const {
     const glm::dvec2 pa(a), pb(b);
-    if (std::max(pa.x, pb.x) < t.lo.x || std::min(pa.x, pb.x) > t.hi.x || std::max(pa.y, pb.y) < t.lo.y ||
-        std::min(pa.y, pb.y) > t.hi.y)
+    const glm::dvec2 boxLo = t.lo(), boxHi = t.hi();
+    if (std::max(pa.x, pb.x) < boxLo.x || std::min(pa.x, pb.x) > boxHi.x || std::max(pa.y, pb.y) < boxLo.y ||
+        std::min(pa.y, pb.y) > boxHi.y)
         return false;
     const double area = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
     if (area == 0.0) return false;
@@ -141,8 +141,8 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     return true;
 }
 
-void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b,
-                                     std::vector<glm::dvec2>& hidden) const {
+void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
+                                     std::vector<std::uint32_t>* hiders) const {
     hidden.clear();
     if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
     const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
@@ -151,10 +151,23 @@ void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b,
             if (stamp_[i] == query_) continue;
             stamp_[i] = query_;
             glm::dvec2 interval;
-            if (hides(triangles_[i], a, b, interval)) hidden.push_back(interval);
+            if (hides(triangles_[i], a, b, interval)) {
+                hidden.push_back(interval);
+                if (hiders) hiders->push_back(i);
+            }
         }
     });
     std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+}
+
+bool OcclusionIndex::coverWhole(std::vector<glm::dvec2>& intervals) {
+    std::sort(intervals.begin(), intervals.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+    double from = 0.0;
+    for (const glm::dvec2& h : intervals) {
+        if (h.x > from + 1e-9) return false;
+        from = std::max(from, h.y);
+    }
+    return from >= 1.0 - 1e-9;
 }
 
 std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
@@ -171,14 +184,21 @@ std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const P
 }
 
 bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
-    // visibleParts(a, b).empty() without building the parts.
-    hiddenIntervals(a, b, scratch_);
-    double from = 0.0;
-    for (const glm::dvec2& h : scratch_) {
-        if (h.x > from + 1e-9) return false;
-        from = std::max(from, h.y);
+    // First the triangles that hid the facet's centre or its other edges: neighbouring edges are
+    // mostly behind the same few. Their intervals are some of all the triangles' intervals, so
+    // when they cover the segment all of them do, and the answer is the full query's.
+    scratch_.clear();
+    for (std::uint32_t i : hints_) {
+        glm::dvec2 interval;
+        if (hides(triangles_[i], a, b, interval)) scratch_.push_back(interval);
     }
-    return from >= 1.0 - 1e-9;
+    if (!scratch_.empty() && coverWhole(scratch_)) return true;
+    found_.clear();
+    hiddenIntervals(a, b, scratch_, &found_);
+    if (!coverWhole(scratch_)) return false;
+    for (std::uint32_t i : found_)
+        if (std::find(hints_.begin(), hints_.end(), i) == hints_.end()) hints_.push_back(i);
+    return true;
 }
 
 bool OcclusionIndex::visible(const PagePoint& p) const {
@@ -192,6 +212,16 @@ bool OcclusionIndex::visible(const PagePoint& p) const {
     return !hidden;
 }
 
+void OcclusionIndex::hidersOf(const PagePoint& p, std::vector<std::uint32_t>& hiders) const {
+    // A point lies in one cell: no triangle is met twice.
+    forCells(glm::dvec2(p), glm::dvec2(p), [&](std::size_t cell) {
+        for (std::uint32_t i : items(cell)) {
+            glm::dvec2 interval;
+            if (hides(triangles_[i], p, p, interval)) hiders.push_back(i);
+        }
+    });
+}
+
 bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
     PagePoint centre(0.0);
     std::size_t count = 0;
@@ -199,7 +229,9 @@ bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
         for (const PagePoint& p : c) centre += p, ++count;
     if (count == 0) return false;
     centre /= double(count);
-    if (visible(centre)) return false;
+    hints_.clear();
+    hidersOf(centre, hints_);
+    if (hints_.empty()) return false;
     auto inside = [&](const PagePoint& p) {
         const double distance = glm::length(glm::dvec2(centre - p));
         return distance > 0.0 ? p + (centre - p) * std::min(0.1, margin / distance) : p;

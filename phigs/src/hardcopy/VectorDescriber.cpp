@@ -39,6 +39,11 @@ void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuil
     for (ProjectedPart& part : scene.parts)
         if (auto* f = std::get_if<ProjectedFacet>(&part); f && coversArea(*f))
             facets.push_back(std::move(*f));
+    // The scene keeps its lines and markers, in order, and gives back the room of the facets it
+    // held (most of its parts) before the occlusion index takes room of its own.
+    std::erase_if(scene.parts,
+                  [](const ProjectedPart& p) { return std::holds_alternative<ProjectedFacet>(p); });
+    scene.parts.shrink_to_fit();
     const OcclusionIndex occlusion(facets, mapping.nominalPixel);
     stats.occluders = occlusion.triangleCount();
     // Hidden-line surfaces need painting only where other facets could show through them; facets
@@ -51,8 +56,14 @@ void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuil
         return occlusion.hidden(f, kHiddenMargin * mapping.nominalPixel);
     });
     stats.hiddenFacets = before - facets.size();
-    for (const ProjectedFacet& f : orderBackToFront(std::move(facets), mapping.pointsPerNpc, &stats.facets))
-        paint(f);
+    std::vector<ProjectedFacet> ordered =
+        orderBackToFront(std::move(facets), mapping.pointsPerNpc, &stats.facets);
+    // One operation a facet and about one a line or marker (a line hidden in places makes more):
+    // room for them at once, not a doubling vector's spare half.
+    paint.reserve(ordered.size() + scene.parts.size() + scene.parts.size() / 2);
+    // Each facet's points go once painted: the page holds them from then on.
+    for (ProjectedFacet& f : ordered) paint(f), f.contours = {};
+    ordered = {};
     for (const ProjectedPart& part : scene.parts) {
         if (const auto* line = std::get_if<ProjectedLine>(&part))
             for (const ProjectedLine& run : occlusion.visibleRuns(*line)) paint(run);

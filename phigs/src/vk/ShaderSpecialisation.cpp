@@ -1,5 +1,8 @@
 #include "ShaderSpecialisation.h"
 
+#include "phigs/vk/ShaderCache.h"
+
+#include <spirv-tools/libspirv.h>
 #include <spirv-tools/optimizer.hpp>
 
 #include <algorithm>
@@ -86,12 +89,64 @@ SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
                                      std::span<const std::uint32_t> fragment,
                                      std::span<const SpecialisationValue> values);
 
+namespace {
+
+/// What the passes below make of their input depends on SPIRV-Tools' version and on them: a
+/// change to either (bump the number) makes the files of the disk cache misses.
+std::string cacheTag() {
+    return std::string("phigs specialise 1; ") + spvSoftwareVersionDetailsString();
+}
+
+/// The inputs as one word sequence for the disk cache: each part's length, then the part.
+std::vector<std::uint32_t> cacheInput(std::span<const std::uint32_t> vertex,
+                                      std::span<const std::uint32_t> fragment,
+                                      std::span<const SpecialisationValue> values) {
+    std::vector<std::uint32_t> input;
+    input.reserve(vertex.size() + fragment.size() + 2 * values.size() + 3);
+    input.push_back(std::uint32_t(vertex.size()));
+    input.insert(input.end(), vertex.begin(), vertex.end());
+    input.push_back(std::uint32_t(fragment.size()));
+    input.insert(input.end(), fragment.begin(), fragment.end());
+    input.push_back(std::uint32_t(values.size()));
+    for (const SpecialisationValue& v : values)
+        input.push_back(v.id), input.push_back(std::uint32_t(v.value));
+    return input;
+}
+
+/// The pair from the disk cache (PHIGS_SHADER_CACHE), or specialised and stored there.
+SpecialisedStages specialiseThroughDisk(std::span<const std::uint32_t> vertex,
+                                        std::span<const std::uint32_t> fragment,
+                                        std::span<const SpecialisationValue> values) {
+    static const ShaderCache disk = ShaderCache::fromEnvironment();
+    static const std::string tag = cacheTag();
+    if (!disk.enabled()) return specialiseUncached(vertex, fragment, values);
+    const std::vector<std::uint32_t> input = cacheInput(vertex, fragment, values);
+    if (auto pair = disk.load(input, tag)) {
+        try {
+            SpecialisedStages out;
+            out.vertexInputLocations = inputLocations(pair->vertex);
+            inputLocations(pair->fragment);  // throws when its instructions do not add up
+            out.vertex = std::move(pair->vertex);
+            out.fragment = std::move(pair->fragment);
+            return out;
+        } catch (const std::runtime_error&) {
+            // Malformed although its checksum matched: specialised again and stored over it.
+        }
+    }
+    SpecialisedStages out = specialiseUncached(vertex, fragment, values);
+    disk.store(input, tag, {out.vertex, out.fragment});
+    return out;
+}
+
+}  // namespace
+
 SpecialisedStages specialiseStages(std::span<const std::uint32_t> vertex,
                                    std::span<const std::uint32_t> fragment,
                                    std::span<const SpecialisationValue> values) {
     // SPIRV-Tools takes tens of milliseconds a pair; every renderer of the process (offscreen,
     // window, hardcopy, each workstation, each test) asks for the same few pairs, so each is
-    // specialised once. Keyed by the code's contents, not its address.
+    // specialised once, and once for all processes where the disk cache is on. Keyed by the
+    // code's contents, not its address.
     using Key = std::tuple<std::vector<std::uint32_t>, std::vector<std::uint32_t>,
                            std::vector<std::pair<std::uint32_t, std::int32_t>>>;
     static std::mutex mutex;
@@ -102,7 +157,7 @@ SpecialisedStages specialiseStages(std::span<const std::uint32_t> vertex,
         std::lock_guard lock(mutex);
         if (auto it = cache.find(key); it != cache.end()) return it->second;
     }
-    SpecialisedStages out = specialiseUncached(vertex, fragment, values);
+    SpecialisedStages out = specialiseThroughDisk(vertex, fragment, values);
     std::lock_guard lock(mutex);
     return cache.emplace(std::move(key), std::move(out)).first->second;
 }

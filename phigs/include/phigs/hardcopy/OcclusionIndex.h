@@ -2,6 +2,7 @@
 
 #include "phigs/hardcopy/ProjectedScene.h"
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
 
 #include <cstdint>
@@ -39,7 +40,9 @@ private:
         glm::dvec2 p[3];
         glm::dvec3 plane{0.0};  ///< depth = plane.x * x + plane.y * y + plane.z
         double tolerance = 0.0;
-        glm::dvec2 lo{0.0}, hi{0.0};
+        /// The box on the page, worked out when needed rather than held with every triangle.
+        glm::dvec2 lo() const { return glm::min(p[0], glm::min(p[1], p[2])); }
+        glm::dvec2 hi() const { return glm::max(p[0], glm::max(p[1], p[2])); }
     };
     void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel);
     void bin();
@@ -47,10 +50,16 @@ private:
     void forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const;
     /// The interval of t in [0, 1] where the segment is inside the triangle and behind it.
     bool hides(const Triangle& t, const PagePoint& a, const PagePoint& b, glm::dvec2& interval) const;
-    /// The intervals of the segment that triangles hide, in order of their start.
-    void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden) const;
-    /// Whether no part of the segment is visible.
+    /// The intervals of the segment that triangles hide, in order of their start; the triangles
+    /// that hide some of it are added to `hiders` when given.
+    void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
+                         std::vector<std::uint32_t>* hiders = nullptr) const;
+    /// Whether intervals of [0, 1] cover it (sorts them).
+    static bool coverWhole(std::vector<glm::dvec2>& intervals);
+    /// Whether no part of the segment is visible (hidden()'s edges: tries its hints first).
     bool hiddenWhole(const PagePoint& a, const PagePoint& b) const;
+    /// Adds the triangles that hide a point.
+    void hidersOf(const PagePoint& p, std::vector<std::uint32_t>& hiders) const;
 
     std::vector<Triangle> triangles_;
     glm::dvec2 lo_{0.0}, cell_{1.0};
@@ -64,6 +73,8 @@ private:
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t query_ = 0;
     mutable std::vector<glm::dvec2> scratch_;  ///< hiddenWhole's intervals, kept between calls
+    /// hidden()'s triangles known to hide the facet's centre or edges, tried first on each edge.
+    mutable std::vector<std::uint32_t> hints_, found_;
 };
 
 }  // namespace phigs::hardcopy

@@ -17,6 +17,8 @@ public:
     void operator()(const ProjectedFacet& facet);
     void operator()(const ProjectedLine& line);
     void operator()(const ProjectedMarker& marker);
+    /// Makes room for this many operations in the picture.
+    void reserve(std::size_t operations) { picture_.ops.reserve(picture_.ops.size() + operations); }
 
 private:
     double pixel_;
