@@ -12,6 +12,9 @@ inline constexpr int kMaxLights = 64;
 inline constexpr int kMaxLightSets = 16;
 inline constexpr int kMaxCues = 16;
 inline constexpr int kMaxClipPlanes = 64;  ///< model clipping half spaces of all items together
+/// Premultiplied lights of all items together: 192 of them fill 15 KiB, inside the 16 KiB every
+/// Vulkan device allows a uniform buffer; draws beyond them light the general way.
+inline constexpr int kMaxLitLights = 192;
 
 /// The draw record's flags: the shaders test Hatch, Pattern and PatternInModelUnits; the others
 /// decide the pipeline's specialisation (shaders/scene.glsl) and are kept for inspection.
@@ -37,6 +40,17 @@ struct View {
 
 struct Light {
     glm::vec4 colour{0.0f};
+    glm::vec4 position{0.0f};
+    glm::vec4 direction{0.0f};
+    glm::vec4 attenuation{0.0f};
+};
+
+/// A light of a draw's light set with the draw's reflectance folded in (the lit block): an
+/// ambient light's ambient term, or another light's diffuse and specular terms, so the shaders
+/// only multiply by the base colour.
+struct LitLight {
+    glm::vec4 diffuse{0.0f};   ///< ambient light: ambient coefficient x colour; else diffuse x colour
+    glm::vec4 specular{0.0f};  ///< specular x colour x specular colour, exponent
     glm::vec4 position{0.0f};
     glm::vec4 direction{0.0f};
     glm::vec4 attenuation{0.0f};
@@ -70,5 +84,6 @@ struct DrawParams {
     glm::vec4 misc{0.0f};
 };
 static_assert(sizeof(DrawParams) == 176);
+static_assert(sizeof(LitLight) * kMaxLitLights <= 16384);
 
 }  // namespace phigs::vk::gpu

@@ -41,6 +41,10 @@ constexpr int kOffsetShift = 33;  // screen offsets: 0 none, 1 pixels (markers),
 constexpr std::uint64_t kTransparent = 1ull << 35;
 // PATTERN interiors: the colour is the pattern cell under the fragment.
 constexpr std::uint64_t kPatterned = 1ull << 36;
+// The light set's lights come with the draw's reflectance folded in (the lit block, binding 3).
+constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
+// The draws' modelling transformation is the identity (no matrix read per vertex).
+constexpr std::uint64_t kIdentityModel = 1ull << 38;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -54,6 +58,18 @@ VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& w
 
 glm::mat4 toFloat(const glm::dmat4& m) {
     return glm::mat4(m);
+}
+
+/// A PHIGS light as the shaders read it (its colour's w is its type).
+gpu::Light gpuLight(const Light& light) {
+    gpu::Light g;
+    g.colour = glm::vec4(light.colour, float(int(light.type)));
+    g.position = glm::vec4(glm::vec3(light.position), 1.0f);
+    const glm::dvec3 direction =
+        glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
+    g.direction = glm::vec4(glm::vec3(direction), light.concentration);
+    g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
+    return g;
 }
 
 std::string itemName(std::size_t index) {
@@ -153,6 +169,7 @@ void Renderer::release() {
     meshes_.clear();
     drawBuffer_.reset();
     patternBuffer_.reset();
+    litBuffer_.reset();
     frameBuffer_.reset();
     for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
     pipelines_.clear();
@@ -168,7 +185,7 @@ void Renderer::release() {
 
 void Renderer::createDescriptors() {
     VkDevice device = context_.device();
-    VkDescriptorSetLayoutBinding bindings[3]{};
+    VkDescriptorSetLayoutBinding bindings[4]{};
     bindings[0].binding = 0;
     bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     bindings[0].descriptorCount = 1;
@@ -181,9 +198,13 @@ void Renderer::createDescriptors() {
     bindings[2].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[2].descriptorCount = 1;
     bindings[2].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    bindings[3].binding = 3;
+    bindings[3].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    bindings[3].descriptorCount = 1;
+    bindings[3].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     VkDescriptorSetLayoutCreateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setInfo.bindingCount = 3;
+    setInfo.bindingCount = 4;
     setInfo.pBindings = bindings;
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
 
@@ -197,7 +218,7 @@ void Renderer::createDescriptors() {
     layoutInfo.pPushConstantRanges = &range;
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
@@ -234,6 +255,8 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {10, lines ? 0 : 1},
         {11, std::int32_t((key >> kOffsetShift) & 3)},
         {12, flag(kPatterned)},
+        {13, flag(kPremultipliedLights)},
+        {14, flag(kIdentityModel)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -396,6 +419,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     patternFirst_.clear();
     clipPlanes_.clear();
     clipPlaneSets_.clear();
+    litLights_.clear();
+    litRuns_.clear();
     depthTest_ = list.hiddenSurfaceRemoval;
     background_ = list.background;
     if (list.views.size() > std::size_t(gpu::kMaxViews))
@@ -536,6 +561,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
             if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
+            if (d.model == glm::mat4(1.0f)) c.pipeline |= kIdentityModel;
             if (flags & gpu::DistinguishBack) c.pipeline |= kDistinguishBack;
             if (push.colour.w < 1.0f || push.backColour.w < 1.0f) c.pipeline |= kTransparent;
             const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
@@ -547,6 +573,18 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
             c.push.viewIndex = item.viewIndex;
             c.push.firstLight = item.lightSet >= 0 ? firstLights[std::size_t(item.lightSet)] : 0;
+            if ((flags & gpu::Lit) && !(flags & gpu::DistinguishBack) &&
+                ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
+                // A uniform colour is folded in too (shaders/scene.glsl, litPremultiplied).
+                const bool uniformColour = !part.vertexColours && !patterned;
+                const int first =
+                    premultipliedLights(list, item.lightSet, push.reflectance, push.specularColour,
+                                        uniformColour ? glm::vec3(push.colour) : glm::vec3(1.0f));
+                if (first >= 0) {
+                    c.pipeline |= kPremultipliedLights;
+                    c.push.firstLight = first;
+                }
+            }
             c.push.depthCue = item.depthCue;
             c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
             c.scissor = scissor;
@@ -653,6 +691,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     uploadFrame(list, extent, firstLights);
     uploadDraws();
     uploadPatterns();
+    uploadLitLights();
     // With hidden-surface removal, transparent draws come after every opaque one (in traversal
     // order among themselves), so what lies behind them is there to show through.
     if (depthTest_)
@@ -681,6 +720,50 @@ bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, int patte
     patternCells_.push_back(
         glm::vec4(float(at->second), float(pattern->columns), float(pattern->rows), 0.0f));
     return true;
+}
+
+int Renderer::premultipliedLights(const DrawList& list, int lightSet, glm::vec4 reflectance,
+                                  glm::vec4 specularColour, glm::vec3 colour) {
+    const LitRun key{lightSet, reflectance, glm::vec3(specularColour), colour, 0};
+    for (const LitRun& run : litRuns_)
+        if (run.lightSet == key.lightSet && run.reflectance == key.reflectance &&
+            run.specularColour == key.specularColour && run.colour == key.colour)
+            return run.first;
+    const auto& lights = list.lightSets[std::size_t(lightSet)];
+    if (litLights_.size() + lights.size() > std::size_t(gpu::kMaxLitLights)) return -1;
+    const int first = int(litLights_.size());
+    const glm::vec3 specular = reflectance.z * glm::vec3(specularColour);
+    for (const Light& light : lights) {
+        const gpu::Light g = gpuLight(light);
+        gpu::LitLight& lit = litLights_.emplace_back();
+        const glm::vec3 lightColour(g.colour);
+        const bool ambient = light.type == LightType::Ambient;
+        lit.diffuse = glm::vec4((ambient ? reflectance.x : reflectance.y) * lightColour * colour, 0.0f);
+        lit.specular =
+            glm::vec4(ambient ? glm::vec3(0.0f) : specular * lightColour, std::max(reflectance.w, 0.0f));
+        lit.position = g.position;
+        lit.direction = g.direction;
+        lit.attenuation = g.attenuation;
+    }
+    litRuns_.push_back(key);
+    litRuns_.back().first = first;
+    return first;
+}
+
+void Renderer::uploadLitLights() {
+    constexpr std::size_t bytes = sizeof(gpu::LitLight) * gpu::kMaxLitLights;
+    if (!litBuffer_) {
+        litBuffer_ = std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frame_);
+        lastLitLights_.clear();
+        bindBuffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, *litBuffer_, bytes);
+    }
+    const bool same =
+        litLights_.size() <= lastLitLights_.size() &&
+        std::memcmp(litLights_.data(), lastLitLights_.data(), litLights_.size() * sizeof(gpu::LitLight)) == 0;
+    if (!same && !litLights_.empty()) {
+        litBuffer_->write(litLights_.data(), litLights_.size() * sizeof(gpu::LitLight));
+        lastLitLights_ = litLights_;
+    }
 }
 
 void Renderer::bindBuffer(std::uint32_t binding, VkDescriptorType type, const GpuBuffer& buffer,
@@ -749,13 +832,7 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::v
             if (next >= gpu::kMaxLights)
                 throw std::invalid_argument("Renderer: more than " + std::to_string(gpu::kMaxLights) +
                                             " lights in the light sets");
-            gpu::Light& g = f.lights[next++];
-            g.colour = glm::vec4(light.colour, float(int(light.type)));
-            g.position = glm::vec4(glm::vec3(light.position), 1.0f);
-            const glm::dvec3 direction =
-                glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
-            g.direction = glm::vec4(glm::vec3(direction), light.concentration);
-            g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
+            f.lights[next++] = gpuLight(light);
         }
         f.lightSets[s] = glm::ivec4(first, next - first, 0, 0);
     }
