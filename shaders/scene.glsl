@@ -15,7 +15,6 @@ const int MAX_LIGHTS = 64;
 const int MAX_LIGHT_SETS = 16;
 const int MAX_CUES = 16;
 const int MAX_CLIP_PLANES = 64;
-const int MAX_LIT_LIGHTS = 192;
 
 struct View {
     mat4 worldToClip;
@@ -65,13 +64,14 @@ layout(std430, set = 0, binding = 2) readonly buffer Patterns {
     vec4 patternData[];
 };
 
-// Lights with a draw's reflectance folded in (Renderer.cpp fills them for the pipelines of
-// PREMULTIPLIED_LIGHTS, one run per light set, reflectance and colour of the frame): per light
-// the ambient or diffuse coefficient times its colour (and times the draw's colour when that is
-// uniform: no vertex colours, no pattern), the specular coefficient times its colour and the
-// specular colour (w: the exponent), and its position, direction and attenuation as in Light.
-// Folded on the CPU, the products cost no work per fragment (lavapipe redoes uniform arithmetic
-// for every block of fragments).
+// Lights with a draw's reflectance folded in (Renderer.cpp fills a run for the pipelines of
+// PREMULTIPLIED_LIGHTS per view, light set, reflectance and colour of the frame): the view's eye
+// direction, then per light the ambient or diffuse coefficient times its colour (and times the
+// draw's colour when that is uniform: no vertex colours, no pattern), the specular coefficient
+// times its colour and the specular colour (w: the exponent), and its position, direction and
+// attenuation as in Light. The run is bound at a dynamic offset, so the shaders read it at
+// constant offsets: lavapipe loads an array element at an index from push constants lane by
+// lane, and redoes uniform arithmetic for every block of fragments.
 struct LitLight {
     vec4 diffuse;
     vec4 specular;
@@ -80,8 +80,9 @@ struct LitLight {
     vec4 attenuation;
 };
 
-layout(std140, set = 0, binding = 3) uniform LitLights {
-    LitLight litLights[MAX_LIT_LIGHTS];
+layout(std140, set = 0, binding = 3) uniform LitRun {
+    vec4 litEye;
+    LitLight litLights[4];
 };
 
 // The draw record's index, the frame-block indices the shaders look up with, and the values the
@@ -91,7 +92,7 @@ layout(std140, set = 0, binding = 3) uniform LitLights {
 layout(push_constant) uniform Push {
     uint drawIndex;
     int viewIndex;
-    int firstLight;  // the light set's first light in frame.lights (in litLights: PREMULTIPLIED_LIGHTS)
+    int firstLight;  // the light set's first light in frame.lights
     int depthCue;
     vec4 colour;
     vec4 backColour;
@@ -134,8 +135,8 @@ layout(constant_id = 10) const bool TRIANGLES = true;
 layout(constant_id = 11) const int SCREEN_OFFSETS = 1;
 // The draws are PATTERN interiors: the base colour is the pattern cell under the fragment.
 layout(constant_id = 12) const bool PATTERNED = false;
-// The light set's lights come premultiplied from litLights (push.firstLight indexes that block):
-// a fixed LIGHT_SIGNATURE and REFLECTANCE_MODEL, and one reflectance for both sides.
+// The light set's lights and the eye come premultiplied from the lit run (binding 3): a fixed
+// LIGHT_SIGNATURE and REFLECTANCE_MODEL, and one reflectance for both sides.
 layout(constant_id = 13) const bool PREMULTIPLIED_LIGHTS = false;
 // The draws' modelling transformation is the identity: the vertex shader reads no matrix from
 // the draw record (lavapipe gathers such reads lane by lane).
@@ -206,9 +207,10 @@ void premultipliedLight(int type, int i, vec3 world, vec3 n, vec3 eye, inout vec
     }
 }
 
-// lit() for PREMULTIPLIED_LIGHTS: the light set's lights from litLights, unrolled as in lit().
-vec3 litPremultiplied(vec3 base, vec3 world, vec3 n, vec3 eye) {
-    int first = push.firstLight;
+// lit() for PREMULTIPLIED_LIGHTS: the light set's lights from the lit run, unrolled as in lit().
+vec3 litPremultiplied(vec3 base, vec3 world, vec3 n) {
+    const int first = 0;
+    vec3 eye = litEye.xyz;
     int count = LIGHT_SIGNATURE & 7;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
     if (count > 0) premultipliedLight((LIGHT_SIGNATURE >> 3) & 7, first, world, n, eye, diffuse, specular);
@@ -221,7 +223,7 @@ vec3 litPremultiplied(vec3 base, vec3 world, vec3 n, vec3 eye) {
 
 // PHIGS PLUS reflectance: model 1 none, 2 ambient, 3 ambient + diffuse, 4 + specular.
 vec3 lit(bool back, vec3 base, vec3 world, vec3 n, vec3 eye) {
-    if (PREMULTIPLIED_LIGHTS) return litPremultiplied(base, world, n, eye);
+    if (PREMULTIPLIED_LIGHTS) return litPremultiplied(base, world, n);
     vec4 k = back ? push.backReflectance : push.reflectance;
     vec4 sc = back ? push.backSpecularColour : push.specularColour;
     int model = REFLECTANCE_MODEL != 0 ? REFLECTANCE_MODEL : int(sc.w + 0.5);
