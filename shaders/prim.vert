@@ -23,9 +23,9 @@ void main() {
     // Outputs are written, never read back: the renderer removes the stores the fragment shader
     // does not need (phigs/src/vk/ShaderSpecialisation.cpp), which a read-back would then miss.
     int viewIndex = push.viewIndex;
-    vec4 world = DRAW.model * vec4(inPosition, 1.0);
-    vec3 worldPoint = world.xyz / world.w;
-    vec3 normal = mat3(DRAW.normalMatrix) * inNormal;
+    vec4 world = MODEL_IDENTITY ? vec4(inPosition, 1.0) : DRAW.model * vec4(inPosition, 1.0);
+    vec3 worldPoint = MODEL_IDENTITY ? inPosition : world.xyz / world.w;
+    vec3 normal = MODEL_IDENTITY ? inNormal : mat3(DRAW.normalMatrix) * inNormal;
     normal = dot(normal, normal) > 0.0 ? normalize(normal) : vec3(0.0);
     vec3 colour = USE_VERTEX_COLOURS ? inColour : push.colour.rgb;
     vWorld = worldPoint;

@@ -64,6 +64,27 @@ layout(std430, set = 0, binding = 2) readonly buffer Patterns {
     vec4 patternData[];
 };
 
+// Lights with a draw's reflectance folded in (Renderer.cpp fills a run for the pipelines of
+// PREMULTIPLIED_LIGHTS per view, light set, reflectance and colour of the frame): the view's eye
+// direction, then per light the ambient or diffuse coefficient times its colour (and times the
+// draw's colour when that is uniform: no vertex colours, no pattern), the specular coefficient
+// times its colour and the specular colour (w: the exponent), and its position, direction and
+// attenuation as in Light. The run is bound at a dynamic offset, so the shaders read it at
+// constant offsets: lavapipe loads an array element at an index from push constants lane by
+// lane, and redoes uniform arithmetic for every block of fragments.
+struct LitLight {
+    vec4 diffuse;
+    vec4 specular;
+    vec4 position;
+    vec4 direction;
+    vec4 attenuation;
+};
+
+layout(std140, set = 0, binding = 3) uniform LitRun {
+    vec4 litEye;
+    LitLight litLights[4];
+};
+
 // The draw record's index, the frame-block indices the shaders look up with, and the values the
 // fragment shader reads per draw. Measured on lavapipe: reading these from the draw records
 // cost the benchmark frame about 15%, and indices read from a buffer make every later load a
@@ -114,6 +135,12 @@ layout(constant_id = 10) const bool TRIANGLES = true;
 layout(constant_id = 11) const int SCREEN_OFFSETS = 1;
 // The draws are PATTERN interiors: the base colour is the pattern cell under the fragment.
 layout(constant_id = 12) const bool PATTERNED = false;
+// The light set's lights and the eye come premultiplied from the lit run (binding 3): a fixed
+// LIGHT_SIGNATURE and REFLECTANCE_MODEL, and one reflectance for both sides.
+layout(constant_id = 13) const bool PREMULTIPLIED_LIGHTS = false;
+// The draws' modelling transformation is the identity: the vertex shader reads no matrix from
+// the draw record (lavapipe gathers such reads lane by lane).
+layout(constant_id = 14) const bool MODEL_IDENTITY = false;
 
 vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world, vec3 n, vec3 eye) {
     vec4 colour = frame.lights[i].colour;
@@ -147,8 +174,56 @@ vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world
     return sum;
 }
 
+// Light i of litLights, of type `type`, added to the terms the base colour multiplies (diffuse)
+// and the specular ones; the same equations as oneLight.
+void premultipliedLight(int type, int i, vec3 world, vec3 n, vec3 eye, inout vec3 diffuse, inout vec3 specular) {
+    if (type == 1) {
+        diffuse += litLights[i].diffuse.rgb;
+        return;
+    }
+    if (REFLECTANCE_MODEL < 3) return;
+    vec3 l;
+    float attenuation = 1.0;
+    vec4 direction = litLights[i].direction;
+    if (type == 2) {
+        l = -direction.xyz;
+    } else {
+        vec4 coefficients = litLights[i].attenuation;
+        vec3 toLight = litLights[i].position.xyz - world;
+        float distance = length(toLight);
+        l = toLight / max(distance, 1e-9);
+        attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
+        if (type == 4) {
+            float c = dot(-l, direction.xyz);
+            attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
+        }
+    }
+    float nl = dot(n, l);
+    diffuse += litLights[i].diffuse.rgb * (max(nl, 0.0) * attenuation);
+    if (REFLECTANCE_MODEL >= 4) {
+        vec4 s = litLights[i].specular;
+        float rv = max(dot(reflect(-l, n), eye), 0.0);
+        specular += s.rgb * (pow(rv, s.w) * (nl > 0.0 ? attenuation : 0.0));
+    }
+}
+
+// lit() for PREMULTIPLIED_LIGHTS: the light set's lights from the lit run, unrolled as in lit().
+vec3 litPremultiplied(vec3 base, vec3 world, vec3 n) {
+    const int first = 0;
+    vec3 eye = litEye.xyz;
+    int count = LIGHT_SIGNATURE & 7;
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+    if (count > 0) premultipliedLight((LIGHT_SIGNATURE >> 3) & 7, first, world, n, eye, diffuse, specular);
+    if (count > 1) premultipliedLight((LIGHT_SIGNATURE >> 6) & 7, first + 1, world, n, eye, diffuse, specular);
+    if (count > 2) premultipliedLight((LIGHT_SIGNATURE >> 9) & 7, first + 2, world, n, eye, diffuse, specular);
+    if (count > 3) premultipliedLight((LIGHT_SIGNATURE >> 12) & 7, first + 3, world, n, eye, diffuse, specular);
+    // The colour is in the terms unless it varies (Renderer.cpp folds it under the same test).
+    return USE_VERTEX_COLOURS || PATTERNED ? base * diffuse + specular : diffuse + specular;
+}
+
 // PHIGS PLUS reflectance: model 1 none, 2 ambient, 3 ambient + diffuse, 4 + specular.
 vec3 lit(bool back, vec3 base, vec3 world, vec3 n, vec3 eye) {
+    if (PREMULTIPLIED_LIGHTS) return litPremultiplied(base, world, n);
     vec4 k = back ? push.backReflectance : push.reflectance;
     vec4 sc = back ? push.backSpecularColour : push.specularColour;
     int model = REFLECTANCE_MODEL != 0 ? REFLECTANCE_MODEL : int(sc.w + 0.5);

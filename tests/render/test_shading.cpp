@@ -4,6 +4,10 @@
 #include "SceneMeshes.h"
 #include "phigs/vk/ImageTarget.h"
 
+#include <glm/common.hpp>
+
+#include <random>
+
 using namespace phigs;
 using namespace render_test;
 
@@ -346,6 +350,60 @@ TEST_CASE("transparency: a surface blends over what lies behind it, whatever the
         const Image painted = ws.draw(list);
         CHECK(near(at(painted, 38, 64), 255, 0, 0));
         CHECK(near(at(painted, 77, 64), 13, 13, 140));
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("lit surfaces of more materials than the lit runs hold light as the equation says",
+          "[render][shading]") {
+    // Each material's lights are premultiplied by it once a frame, a lit run each, up to the lit
+    // buffer's room; the draws past it light the general way. Both must give the PHIGS PLUS equation's
+    // colour: flat grids facing the viewer (n = eye = +z), random colours and coefficients, lit by a random
+    // ambient and directional light; some grids moved in z by their modelling transform.
+    vk::Context context(lavapipeWithValidation());
+    std::mt19937 random(31);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 2; ++trial) {
+        vk::ImageTarget ws(context, 256, 256);
+        DrawList list = emptyScene();
+        Light ambient;
+        ambient.type = LightType::Ambient;
+        ambient.colour = {0.2f + 0.5f * unit(random), 0.2f + 0.5f * unit(random), 0.2f + 0.5f * unit(random)};
+        Light key;
+        key.type = LightType::Directional;
+        key.direction = glm::normalize(glm::dvec3(unit(random) - 0.5, unit(random) - 0.5, -1.0));
+        key.colour = {0.5f + 0.5f * unit(random), 0.5f + 0.5f * unit(random), 0.5f + 0.5f * unit(random)};
+        list.lightSets.push_back({ambient, key});
+        const int side = 17;  // 289 materials: more than the 256 lit runs
+        std::vector<glm::vec3> expected;
+        for (int k = 0; k < side * side; ++k) {
+            const double x0 = (k % side + 0.1) / side, y0 = (k / side + 0.1) / side;
+            const glm::vec3 colour(unit(random), unit(random), unit(random));
+            DrawMesh m =
+                shaded(grid(x0, y0, x0 + 0.8 / side, y0 + 0.8 / side, 0.5, 2), ShadingMethod::Normal, colour);
+            Reflectance& p = m.interior.edit().properties;
+            p.ambient = unit(random), p.diffuse = unit(random), p.specular = unit(random);
+            p.specularExponent = 1.0f + 20.0f * unit(random);
+            p.specularColour = {unit(random), unit(random), unit(random)};
+            DrawItem i = item(m);
+            i.lightSet = 0;
+            if (k % 3 == 0) {
+                i.modelTransform = glm::dmat4(1.0);
+                i.modelTransform.edit()[3] = glm::dvec4(0.0, 0.0, 0.1, 1.0);
+            }
+            list.items.push_back(i);
+            const glm::vec3 l = -glm::vec3(key.direction);  // toward the light; n = eye = +z
+            const glm::vec3 lit =
+                p.ambient * ambient.colour * colour + p.diffuse * key.colour * colour * l.z +
+                p.specular * key.colour * p.specularColour * std::pow(l.z, p.specularExponent);
+            expected.push_back(glm::clamp(lit, 0.0f, 1.0f));
+        }
+        const Image image = ws.draw(list);
+        for (int k = 0; k < side * side; ++k) {
+            const glm::dvec2 centre((k % side + 0.5) / side * 256, (1.0 - (k / side + 0.5) / side) * 256);
+            INFO("trial " << trial << ", material " << k);
+            CHECK(shows(image, centre, glm::dvec3(expected[std::size_t(k)]), 3));
+        }
     }
     requireNoValidationMessages(context);
 }

@@ -12,6 +12,9 @@ inline constexpr int kMaxLights = 64;
 inline constexpr int kMaxLightSets = 16;
 inline constexpr int kMaxCues = 16;
 inline constexpr int kMaxClipPlanes = 64;  ///< model clipping half spaces of all items together
+/// Lit runs of a frame (a light set of up to 4 lights premultiplied by a material, seen from a
+/// view); draws beyond them light the general way.
+inline constexpr int kMaxLitRuns = 256;
 
 /// The draw record's flags: the shaders test Hatch, Pattern and PatternInModelUnits; the others
 /// decide the pipeline's specialisation (shaders/scene.glsl) and are kept for inspection.
@@ -37,6 +40,17 @@ struct View {
 
 struct Light {
     glm::vec4 colour{0.0f};
+    glm::vec4 position{0.0f};
+    glm::vec4 direction{0.0f};
+    glm::vec4 attenuation{0.0f};
+};
+
+/// A light of a draw's light set with the draw's reflectance folded in (in a LitRun): an
+/// ambient light's ambient term, or another light's diffuse and specular terms, so the shaders
+/// only multiply by the base colour.
+struct LitLight {
+    glm::vec4 diffuse{0.0f};   ///< ambient light: ambient coefficient x colour; else diffuse x colour
+    glm::vec4 specular{0.0f};  ///< specular x colour x specular colour, exponent
     glm::vec4 position{0.0f};
     glm::vec4 direction{0.0f};
     glm::vec4 attenuation{0.0f};
@@ -70,5 +84,12 @@ struct DrawParams {
     glm::vec4 misc{0.0f};
 };
 static_assert(sizeof(DrawParams) == 176);
+/// What a PREMULTIPLIED_LIGHTS draw reads, at its own dynamic offset of the lit buffer: the
+/// view's eye direction and the light set's lights with the material folded in.
+struct LitRun {
+    glm::vec4 eye{0.0f};
+    LitLight lights[4];
+};
+static_assert(sizeof(LitRun) == 336);
 
 }  // namespace phigs::vk::gpu

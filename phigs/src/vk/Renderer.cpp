@@ -41,6 +41,10 @@ constexpr int kOffsetShift = 33;  // screen offsets: 0 none, 1 pixels (markers),
 constexpr std::uint64_t kTransparent = 1ull << 35;
 // PATTERN interiors: the colour is the pattern cell under the fragment.
 constexpr std::uint64_t kPatterned = 1ull << 36;
+// The light set's lights come with the draw's reflectance folded in (a lit run, binding 3).
+constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
+// The draws' modelling transformation is the identity (no matrix read per vertex).
+constexpr std::uint64_t kIdentityModel = 1ull << 38;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -54,6 +58,24 @@ VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& w
 
 glm::mat4 toFloat(const glm::dmat4& m) {
     return glm::mat4(m);
+}
+
+/// A PHIGS light as the shaders read it (its colour's w is its type).
+gpu::Light gpuLight(const Light& light) {
+    gpu::Light g;
+    g.colour = glm::vec4(light.colour, float(int(light.type)));
+    g.position = glm::vec4(glm::vec3(light.position), 1.0f);
+    const glm::dvec3 direction =
+        glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
+    g.direction = glm::vec4(glm::vec3(direction), light.concentration);
+    g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
+    return g;
+}
+
+/// The unit direction toward the viewer of a view, in world coordinates.
+glm::vec3 eyeOf(const DrawView& view) {
+    const glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
+    return glm::length(eye) > 0 ? glm::vec3(glm::normalize(eye)) : glm::vec3(0, 0, 1);
 }
 
 std::string itemName(std::size_t index) {
@@ -153,6 +175,7 @@ void Renderer::release() {
     meshes_.clear();
     drawBuffer_.reset();
     patternBuffer_.reset();
+    litBuffer_.reset();
     frameBuffer_.reset();
     for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
     pipelines_.clear();
@@ -168,7 +191,7 @@ void Renderer::release() {
 
 void Renderer::createDescriptors() {
     VkDevice device = context_.device();
-    VkDescriptorSetLayoutBinding bindings[3]{};
+    VkDescriptorSetLayoutBinding bindings[4]{};
     bindings[0].binding = 0;
     bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     bindings[0].descriptorCount = 1;
@@ -181,9 +204,13 @@ void Renderer::createDescriptors() {
     bindings[2].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[2].descriptorCount = 1;
     bindings[2].stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    bindings[3].binding = 3;
+    bindings[3].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+    bindings[3].descriptorCount = 1;
+    bindings[3].stageFlags = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     VkDescriptorSetLayoutCreateInfo setInfo{};
     setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-    setInfo.bindingCount = 3;
+    setInfo.bindingCount = 4;
     setInfo.pBindings = bindings;
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
 
@@ -197,12 +224,13 @@ void Renderer::createDescriptors() {
     layoutInfo.pPushConstantRanges = &range;
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+    VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                     {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1}};
     VkDescriptorPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     poolInfo.maxSets = 1;
-    poolInfo.poolSizeCount = 2;
+    poolInfo.poolSizeCount = 3;
     poolInfo.pPoolSizes = sizes;
     check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool_), "vkCreateDescriptorPool");
     VkDescriptorSetAllocateInfo alloc{};
@@ -211,6 +239,9 @@ void Renderer::createDescriptors() {
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &setLayout_;
     check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
+    const std::size_t align =
+        std::max<std::size_t>(1, context_.properties().limits.minUniformBufferOffsetAlignment);
+    litStride_ = (sizeof(gpu::LitRun) + align - 1) / align * align;
 }
 
 VkPipeline Renderer::pipeline(std::uint64_t key) {
@@ -234,6 +265,8 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {10, lines ? 0 : 1},
         {11, std::int32_t((key >> kOffsetShift) & 3)},
         {12, flag(kPatterned)},
+        {13, flag(kPremultipliedLights)},
+        {14, flag(kIdentityModel)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -396,6 +429,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     patternFirst_.clear();
     clipPlanes_.clear();
     clipPlaneSets_.clear();
+    litBytes_.clear();
+    litKeys_.clear();
     depthTest_ = list.hiddenSurfaceRemoval;
     background_ = list.background;
     if (list.views.size() > std::size_t(gpu::kMaxViews))
@@ -536,6 +571,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
             if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
+            if (d.model == glm::mat4(1.0f)) c.pipeline |= kIdentityModel;
             if (flags & gpu::DistinguishBack) c.pipeline |= kDistinguishBack;
             if (push.colour.w < 1.0f || push.backColour.w < 1.0f) c.pipeline |= kTransparent;
             const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
@@ -547,6 +583,18 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
             c.push.viewIndex = item.viewIndex;
             c.push.firstLight = item.lightSet >= 0 ? firstLights[std::size_t(item.lightSet)] : 0;
+            if ((flags & gpu::Lit) && !(flags & gpu::DistinguishBack) &&
+                ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
+                // A uniform colour is folded in too (shaders/scene.glsl, litPremultiplied).
+                const bool uniformColour = !part.vertexColours && !patterned;
+                const int run = premultipliedLights(list, item.viewIndex, item.lightSet, push.reflectance,
+                                                    push.specularColour,
+                                                    uniformColour ? glm::vec3(push.colour) : glm::vec3(1.0f));
+                if (run >= 0) {
+                    c.pipeline |= kPremultipliedLights;
+                    c.litOffset = std::uint32_t(std::size_t(run) * litStride_);
+                }
+            }
             c.push.depthCue = item.depthCue;
             c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
             c.scissor = scissor;
@@ -653,6 +701,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     uploadFrame(list, extent, firstLights);
     uploadDraws();
     uploadPatterns();
+    uploadLitRuns();
     // With hidden-surface removal, transparent draws come after every opaque one (in traversal
     // order among themselves), so what lies behind them is there to show through.
     if (depthTest_)
@@ -681,6 +730,51 @@ bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, int patte
     patternCells_.push_back(
         glm::vec4(float(at->second), float(pattern->columns), float(pattern->rows), 0.0f));
     return true;
+}
+
+int Renderer::premultipliedLights(const DrawList& list, int viewIndex, int lightSet, glm::vec4 reflectance,
+                                  glm::vec4 specularColour, glm::vec3 colour) {
+    const LitKey key{viewIndex, lightSet, reflectance, glm::vec3(specularColour), colour};
+    if (const auto it = std::find(litKeys_.begin(), litKeys_.end(), key); it != litKeys_.end())
+        return int(it - litKeys_.begin());
+    const auto& lights = list.lightSets[std::size_t(lightSet)];
+    if (litKeys_.size() >= std::size_t(gpu::kMaxLitRuns) || lights.size() > 4) return -1;
+    gpu::LitRun run;
+    const DrawView defaultView;
+    run.eye = glm::vec4(eyeOf(list.views.empty() ? defaultView : list.views[std::size_t(viewIndex)]), 0.0f);
+    const glm::vec3 specular = reflectance.z * glm::vec3(specularColour);
+    for (std::size_t j = 0; j < lights.size(); ++j) {
+        const gpu::Light g = gpuLight(lights[j]);
+        gpu::LitLight& lit = run.lights[j];
+        const glm::vec3 lightColour(g.colour);
+        const bool ambient = lights[j].type == LightType::Ambient;
+        lit.diffuse = glm::vec4((ambient ? reflectance.x : reflectance.y) * lightColour * colour, 0.0f);
+        lit.specular =
+            glm::vec4(ambient ? glm::vec3(0.0f) : specular * lightColour, std::max(reflectance.w, 0.0f));
+        lit.position = g.position;
+        lit.direction = g.direction;
+        lit.attenuation = g.attenuation;
+    }
+    litBytes_.resize((litKeys_.size() + 1) * litStride_);
+    std::memcpy(&litBytes_[litKeys_.size() * litStride_], &run, sizeof run);
+    litKeys_.push_back(key);
+    return int(litKeys_.size()) - 1;
+}
+
+void Renderer::uploadLitRuns() {
+    const std::size_t bytes = litStride_ * std::size_t(gpu::kMaxLitRuns);
+    if (!litBuffer_) {
+        litBuffer_ = std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frame_);
+        lastLitBytes_.clear();
+        bindBuffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, *litBuffer_, sizeof(gpu::LitRun));
+    }
+    // The runs a frame uses are a prefix of what the buffer holds when nothing changed.
+    const bool same = litBytes_.size() <= lastLitBytes_.size() &&
+                      std::equal(litBytes_.begin(), litBytes_.end(), lastLitBytes_.begin());
+    if (!same) {
+        litBuffer_->write(litBytes_.data(), litBytes_.size());
+        lastLitBytes_ = litBytes_;
+    }
 }
 
 void Renderer::bindBuffer(std::uint32_t binding, VkDescriptorType type, const GpuBuffer& buffer,
@@ -736,9 +830,7 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::v
         const glm::dmat4 worldToNpc = view.mapping * view.orientation;
         f.views[v].worldToNpc = toFloat(worldToNpc);
         f.views[v].worldToClip = toFloat(mapping.npcToClip * worldToNpc);
-        glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
-        eye = glm::length(eye) > 0 ? glm::normalize(eye) : glm::dvec3(0, 0, 1);
-        f.views[v].eye = glm::vec4(glm::vec3(eye), 0.0f);
+        f.views[v].eye = glm::vec4(eyeOf(view), 0.0f);
         f.views[v].clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
                                     view.clipFront ? 1.0f : 0.0f);
     }
@@ -749,13 +841,7 @@ void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::v
             if (next >= gpu::kMaxLights)
                 throw std::invalid_argument("Renderer: more than " + std::to_string(gpu::kMaxLights) +
                                             " lights in the light sets");
-            gpu::Light& g = f.lights[next++];
-            g.colour = glm::vec4(light.colour, float(int(light.type)));
-            g.position = glm::vec4(glm::vec3(light.position), 1.0f);
-            const glm::dvec3 direction =
-                glm::length(light.direction) > 0.0 ? glm::normalize(light.direction) : glm::dvec3(0, 0, -1);
-            g.direction = glm::vec4(glm::vec3(direction), light.concentration);
-            g.attenuation = glm::vec4(light.attenuation, std::cos(light.spreadAngle), 0.0f);
+            f.lights[next++] = gpuLight(light);
         }
         f.lightSets[s] = glm::ivec4(first, next - first, 0, 0);
     }
@@ -828,7 +914,9 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
     const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
+    // The lit run is the set's one dynamic offset: rebound only where it changes.
+    std::uint32_t litOffset = 0;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1, &litOffset);
     std::uint64_t bound = ~0ull;
     VkBuffer boundVertices = VK_NULL_HANDLE, boundIndices = VK_NULL_HANDLE;
     VkRect2D scissor{};
@@ -852,6 +940,11 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
         if (first || c.lineWidth != lineWidth) {
             vkCmdSetLineWidth(cmd, c.lineWidth);
             lineWidth = c.lineWidth;
+        }
+        if ((c.pipeline & kPremultipliedLights) && c.litOffset != litOffset) {
+            litOffset = c.litOffset;
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1,
+                                    &litOffset);
         }
         first = false;
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

@@ -18,7 +18,8 @@ namespace phigs::vk {
 
 namespace gpu {
 struct DrawParams;
-}
+struct LitRun;
+}  // namespace gpu
 
 /// Draws a phigs::DrawList into any framebuffer of its render pass: offscreen images, window
 /// swapchains and hardcopies share it. prepare() compiles the list (GPU buffers reused while the
@@ -80,6 +81,7 @@ private:
         } push;
         float lineWidth = 1.0f;
         VkRect2D scissor{};
+        std::uint32_t litOffset = 0;  ///< its lit run's dynamic offset in the lit buffer
     };
 
     VkPipeline pipeline(std::uint64_t key);
@@ -95,6 +97,13 @@ private:
     /// drawable pattern and draws solid.
     bool patternDraw(const DrawList& list, const DrawItem& item, int patternIndex, gpu::DrawParams& d);
     void uploadPatterns();
+    /// The index of the lit run of view `viewIndex` and light set `lightSet` with this reflectance
+    /// (ambient, diffuse, specular, exponent), specular colour and colour (white when it varies
+    /// per fragment) folded in, added once a frame; -1 when the buffer is full (the draw then
+    /// lights the general way).
+    int premultipliedLights(const DrawList& list, int viewIndex, int lightSet, glm::vec4 reflectance,
+                            glm::vec4 specularColour, glm::vec3 colour);
+    void uploadLitRuns();
     /// Where item `index`'s model clipping planes sit in the frame block (first, count); equal
     /// plane sets share one run.
     glm::vec2 clipPlaneRange(const DrawItem& item, std::size_t index);
@@ -119,6 +128,18 @@ private:
     std::unique_ptr<GpuBuffer> patternBuffer_;
     std::vector<glm::vec4> patternCells_, lastPatternCells_;  // this frame's records and cells, the buffer's
     std::map<const DrawPattern*, int> patternFirst_;          // this frame's patterns' first cells
+    /// What a lit run premultiplies: a view's eye, a light set, a material.
+    struct LitKey {
+        int viewIndex = 0, lightSet = 0;
+        glm::vec4 reflectance{0.0f};
+        glm::vec3 specularColour{0.0f};
+        glm::vec3 colour{0.0f};
+        bool operator==(const LitKey&) const = default;
+    };
+    std::unique_ptr<GpuBuffer> litBuffer_;
+    std::size_t litStride_ = 0;                           // bytes from one run to the next
+    std::vector<unsigned char> litBytes_, lastLitBytes_;  // this frame's runs, the buffer's
+    std::vector<LitKey> litKeys_;                         // this frame's
 
     std::unordered_map<std::uint64_t, CachedGeometry> geometry_;
     std::unordered_map<const MeshData*, CachedMesh> meshes_;
