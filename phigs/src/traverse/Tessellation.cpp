@@ -1,5 +1,7 @@
 #include "Tessellation.h"
 
+#include "phigs/traverse/TessellationCache.h"
+
 #include "geom/Evaluate.h"
 #include "geom/Tessellate.h"
 
@@ -134,7 +136,7 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
 }  // namespace
 
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
-                           const SurfaceCharacteristicsAttribute& characteristics) {
+                           const SurfaceCharacteristicsAttribute& characteristics, TessellationCache* grids) {
     const geom::Surface& s = element.surface;
     const bool withUv = keepsUv(s, characteristics);
     if (chordal(criteria.criteria, criteria.valueU) && characteristics.style != 3)
@@ -152,7 +154,6 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
     // Exact room: cached meshes live as long as their elements, and growth slack with them.
     mesh.positions.reserve(std::size_t{nu} * nv), mesh.normals.reserve(std::size_t{nu} * nv);
     if (withUv) mesh.uv.reserve(std::size_t{nu} * nv);
-    mesh.triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));
     for (double u : us)
         for (double v : vs) {
             mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
@@ -162,15 +163,23 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
     std::vector<std::vector<glm::dvec2>> loops;
     for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
     auto at = [nv](std::uint32_t i, std::uint32_t j) { return i * nv + j; };
-    for (std::uint32_t i = 0; i + 1 < nu; ++i)
-        for (std::uint32_t j = 0; j + 1 < nv; ++j) {
-            if (!loops.empty() && !insideTrim(loops, {(us[i] + us[i + 1]) / 2, (vs[j] + vs[j + 1]) / 2}))
-                continue;
-            // Counter-clockwise in (u, v) is counter-clockwise seen along Su x Sv.
-            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    if (!loops.empty()) mesh.triangles.shrink_to_fit();  // trimmed: fewer than the room made
+    auto cells = [&] {
+        std::vector<std::uint32_t> triangles;
+        triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));
+        for (std::uint32_t i = 0; i + 1 < nu; ++i)
+            for (std::uint32_t j = 0; j + 1 < nv; ++j) {
+                if (!loops.empty() && !insideTrim(loops, {(us[i] + us[i + 1]) / 2, (vs[j] + vs[j + 1]) / 2}))
+                    continue;
+                // Counter-clockwise in (u, v) is counter-clockwise seen along Su x Sv.
+                triangles.insert(triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                triangles.insert(triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        if (!loops.empty()) triangles.shrink_to_fit();  // trimmed: fewer than the room made
+        return triangles;
+    };
+    // Untrimmed grids of one size have the same triangles: the cache shares them.
+    mesh.triangles = grids && loops.empty() ? SharedIndexList::shared(grids->gridTriangles(nu, nv, cells))
+                                            : SharedIndexList(cells());
     if (characteristics.style == 3) {
         // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
         auto lines = [&](int count, std::uint32_t along, bool constantU) {

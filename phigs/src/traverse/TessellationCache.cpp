@@ -42,6 +42,7 @@ void TessellationCache::prune() {
         }
     }
     keptBySweep_ = entries_.size();
+    std::erase_if(grids_, [](const auto& grid) { return grid.second.expired(); });
 }
 
 }  // namespace phigs

@@ -904,7 +904,7 @@ private:
                         // The store's own surface, shared: no copy per tessellation.
                         auto box = s.elements.shared<NurbsSurfaceElement>(index);
                         built.surface = std::shared_ptr<const geom::Surface>(box, &box->surface);
-                        MeshData mesh = detail::tessellateSurface(e, a, c);
+                        MeshData mesh = detail::tessellateSurface(e, a, c, &cache_);
                         detail::addLevelCurves(mesh, planes, built.surface.get());
                         built.mesh = std::make_shared<const MeshData>(std::move(mesh));
                         return built;
