@@ -9,6 +9,8 @@
 // structures) against a vector model of the structures, checking contents, pointer and serials after every
 // operation. A held point pool (what a draw list keeps) must show its points unchanged through
 // any later edit, and a draw list's polylines view the stored points and outlive their structure.
+// A held surface (boxed payload) keeps its value through any later edit, without a copy; a
+// serial past the slots' 48 bits is refused with the arena unchanged.
 
 #include "RandomElements.h"
 #include "phigs/Phigs.h"
@@ -412,4 +414,52 @@ TEST_CASE("element arena: store editing agrees with a vector model", "[store][ra
             }
         }
     }
+}
+
+TEST_CASE("element arena: a held surface keeps its value through any edit", "[store][random]") {
+    // A reader (a draw list) holds a stored surface's box; random edits that replace, delete,
+    // compact, clear and move the arena afterwards must leave every held surface as it was.
+    for (unsigned seed : {31u, 32u}) {
+        std::mt19937 rng(seed);
+        ElementArena arena, other;
+        std::vector<Reference> reference, otherReference;
+        std::uint64_t serial = 0;
+        std::vector<std::pair<std::shared_ptr<const NurbsSurfaceElement>, NurbsSurfaceElement>> held;
+        std::size_t shared = 0;
+        for (int op = 0; op < 4000; ++op) {
+            edit(rng, arena, reference, other, otherReference, serial, op % 2000 >= 1000);
+            if (arena.empty()) continue;
+            const auto at = static_cast<std::size_t>(randomInt(rng, 0, static_cast<int>(arena.size()) - 1));
+            auto box = arena.shared<NurbsSurfaceElement>(at);
+            const auto* surface = arena.get<NurbsSurfaceElement>(at);
+            REQUIRE((box == nullptr) == (surface == nullptr));
+            if (box) {
+                REQUIRE(box.get() == surface);  // the stored payload itself
+                held.emplace_back(box, *box);
+                ++shared;
+            }
+            if (held.size() > 30)
+                held.erase(held.begin() + randomInt(rng, 0, static_cast<int>(held.size()) - 1));
+            for (std::size_t h = 0; h < held.size(); ++h) {
+                INFO("seed " << seed << ", operation " << op << ", held surface " << h);
+                REQUIRE(*held[h].first == held[h].second);
+            }
+            REQUIRE(difference(arena, reference) == "");
+        }
+        CHECK(shared > 50);
+    }
+}
+
+TEST_CASE("element arena: a serial past 48 bits is refused, the arena unchanged", "[store]") {
+    ElementArena arena;
+    arena.insert(0, label(1), 7);
+    const std::uint64_t limit = std::uint64_t{1} << 48;
+    arena.insert(1, label(2), limit - 1);
+    CHECK(arena.serial(1) == limit - 1);
+    CHECK_THROWS_WITH(arena.insert(0, label(3), limit), Catch::Contains("serials exhausted"));
+    CHECK_THROWS_WITH(arena.replace(0, label(3), limit + 5), Catch::Contains("serials exhausted"));
+    REQUIRE(arena.size() == 2);
+    CHECK(arena.serial(0) == 7);
+    CHECK(arena.get<LabelElement>(0)->label == 1);
+    CHECK(arena.checkLayout() == "");
 }

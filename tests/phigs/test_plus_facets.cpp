@@ -1,6 +1,7 @@
 // Facet data of triangle strips and quadrilateral meshes, per-edge visibility of fill area sets
 // with data, and level curves of NURBS surfaces: traversed into draw items (no GPU) and checked
-// against the elements, with seeded random members.
+// against the elements, with seeded random members. Surface meshes keep (u, v) per position
+// exactly where something reads them, and share the stored surface.
 
 #include "ErrorNumber.h"
 #include "PostedScene.h"
@@ -290,5 +291,40 @@ TEST_CASE("level curves lie on the surface and on their planes, in modelling and
             }
         }
         if (expected > 0) CHECK(points > 0);
+    }
+}
+
+TEST_CASE("surface meshes keep (u, v) where read and share the stored surface", "[plus][traverse][surface]") {
+    // (u, v) is read by level curves (styles 4, 5) and by patch edges along knot lines inside
+    // the domain; a one-span surface drawn otherwise has no reader and keeps none.
+    std::mt19937 rng(4411);
+    for (int round = 0; round < 60; ++round) {
+        const geom::Surface surface = randomSheet(rng);
+        const int style = randomInt(rng, 1, 5);
+        SurfaceCharacteristicsAttribute c{style, 0, 2, 2};
+        if (style >= 4) c.levels = {0.5}, c.origin = {5, 5, 0}, c.direction = {1, 1, 0};
+        const bool chordal = style != 3 && randomInt(rng, 0, 1) == 1;
+        Scene s;
+        const DrawList& list = s.draw({ApproximationAttribute{ElementType::SurfaceApproximationCriteria,
+                                                              chordal ? 6 : 2, chordal ? 0.05 : 4, 4},
+                                       c, NurbsSurfaceElement{surface, {}}});
+        const auto meshes = itemsOf<DrawMesh>(list);
+        REQUIRE(meshes.size() == 1);
+        const DrawMesh& d = *meshes[0].first;
+        const MeshData& m = *d.mesh;
+        const bool oneSpan = surface.knotsU.size() == std::size_t(2 * (surface.degreeU + 1)) &&
+                             surface.knotsV.size() == std::size_t(2 * (surface.degreeV + 1));
+        INFO("round " << round << ", style " << style << ", one span " << oneSpan);
+        CHECK(m.uv.empty() == (oneSpan && style < 4));
+        if (!m.uv.empty()) {
+            REQUIRE(m.uv.size() == m.positions.size());
+            for (std::size_t i = 0; i < m.positions.size(); ++i)
+                REQUIRE(glm::distance(glm::dvec3(m.positions[i]),
+                                      geom::evaluate(surface, m.uv[i].x, m.uv[i].y)) < 1e-3);
+        }
+        // The draw item's exact surface is the stored one, not a copy.
+        const auto* stored = s.store->structure(1).elements.get<NurbsSurfaceElement>(2);
+        REQUIRE(stored);
+        CHECK(d.surface.get() == &stored->surface);
     }
 }

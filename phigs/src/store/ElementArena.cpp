@@ -21,13 +21,14 @@ struct FamilyOps {
 
 template <class T>
 auto pointsOfPayload() -> PointList* (*)(std::byte*) {
+    static_assert(!(PooledPoints<T> && BoxedPayload<T>), "boxed payloads keep no pooled points");
     if constexpr (PooledPoints<T>)
         return [](std::byte* at) { return &std::launder(reinterpret_cast<T*>(at))->points; };
     else
         return nullptr;
 }
 
-template <class T>
+template <class Payload, class T = detail::StoredPayload<Payload>>
 FamilyOps opsOf() {
     static_assert(std::is_nothrow_move_constructible_v<T>, "payloads move without throwing");
     return {static_cast<std::uint32_t>(sizeof(T)), static_cast<std::uint32_t>(alignof(T)),
@@ -36,7 +37,7 @@ FamilyOps opsOf() {
                 ::new (static_cast<void*>(to)) T(std::move(*source));
                 source->~T();
             },
-            [](std::byte* at) { std::launder(reinterpret_cast<T*>(at))->~T(); }, pointsOfPayload<T>()};
+            [](std::byte* at) { std::launder(reinterpret_cast<T*>(at))->~T(); }, pointsOfPayload<Payload>()};
 }
 
 template <std::size_t... I>
@@ -120,7 +121,11 @@ std::uint32_t ElementArena::emplace(Element&& e) {
     std::visit(
         [&](auto& payload) {
             using T = std::decay_t<decltype(payload)>;
-            ::new (static_cast<void*>(data_ + at)) T(std::move(payload));
+            if constexpr (BoxedPayload<T>)
+                ::new (static_cast<void*>(data_ + at))
+                    detail::StoredPayload<T>(std::make_shared<const T>(std::move(payload)));
+            else
+                ::new (static_cast<void*>(data_ + at)) T(std::move(payload));
         },
         e);
     dead_ += at - used_;  // alignment padding
@@ -200,16 +205,25 @@ void ElementArena::destroy(const Slot& s) {
     dead_ += ops.size;
 }
 
+void ElementArena::checkSerial(std::uint64_t serial) {
+    if (serial >= kSerialLimit)
+        throw std::length_error("ElementArena: element serials exhausted (2^48 inserts and replaces)");
+}
+
 void ElementArena::insert(std::size_t at, Element&& e, std::uint64_t serial) {
+    checkSerial(serial);
     // Room for the slot first, so that nothing can fail once the payload is in the arena.
     if (slots_.size() == slots_.capacity()) slots_.reserve(std::max<std::size_t>(4, slots_.size() * 2));
-    const std::uint32_t family = static_cast<std::uint32_t>(e.index());
+    const auto family = static_cast<std::uint16_t>(e.index());
     const std::uint32_t offset = emplace(std::move(e));
-    slots_.insert(slots_.begin() + static_cast<std::ptrdiff_t>(at), Slot{serial, offset, family});
+    Slot slot{offset, 0, 0, family};
+    slot.setSerial(serial);
+    slots_.insert(slots_.begin() + static_cast<std::ptrdiff_t>(at), slot);
 }
 
 void ElementArena::replace(std::size_t at, Element&& e, std::uint64_t serial) {
-    const std::uint32_t family = static_cast<std::uint32_t>(e.index());
+    checkSerial(serial);
+    const auto family = static_cast<std::uint16_t>(e.index());
     if (slots_[at].family == family) {
         // Same family: the payload is assigned where it is, and the arena does not grow.
         if (PointList* list = pointsOf(e)) {
@@ -221,7 +235,12 @@ void ElementArena::replace(std::size_t at, Element&& e, std::uint64_t serial) {
         std::visit(
             [&](auto& payload) {
                 using T = std::decay_t<decltype(payload)>;
-                *std::launder(reinterpret_cast<T*>(place)) = std::move(payload);
+                // A boxed payload gets a new box: readers may still hold the old one.
+                if constexpr (BoxedPayload<T>)
+                    *std::launder(reinterpret_cast<detail::StoredPayload<T>*>(place)) =
+                        std::make_shared<const T>(std::move(payload));
+                else
+                    *std::launder(reinterpret_cast<T*>(place)) = std::move(payload);
             },
             e);
     } else {
@@ -230,7 +249,7 @@ void ElementArena::replace(std::size_t at, Element&& e, std::uint64_t serial) {
         slots_[at].offset = offset;
         slots_[at].family = family;
     }
-    slots_[at].serial = serial;
+    slots_[at].setSerial(serial);
     compactIfSparse();
 }
 

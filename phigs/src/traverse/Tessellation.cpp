@@ -1,5 +1,7 @@
 #include "Tessellation.h"
 
+#include "phigs/traverse/TessellationCache.h"
+
 #include "geom/Evaluate.h"
 #include "geom/Tessellate.h"
 
@@ -80,6 +82,15 @@ bool chordal(int criteria, double value) {
     return criteria >= 3 && criteria <= 8 && value > 0.0;
 }
 
+/// Whether a surface mesh keeps (u, v) per position: its readers are the level curves (styles 4
+/// and 5 place their points on the exact surface) and the patch edges drawn along knot lines
+/// inside the domain; a one-span surface without level curves has neither.
+bool keepsUv(const geom::Surface& s, const SurfaceCharacteristicsAttribute& characteristics) {
+    if (characteristics.style == 4 || characteristics.style == 5) return true;
+    return spanBreaks(s.knotsU, s.domainStartU(), s.domainEndU()).size() > 2 ||
+           spanBreaks(s.knotsV, s.domainStartV(), s.domainEndV()).size() > 2;
+}
+
 }  // namespace
 
 std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
@@ -98,16 +109,16 @@ std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, 
 namespace {
 
 /// geom's adaptive mesh (within the tolerance everywhere), trimmed like the grid.
-MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
+MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool withUv) {
     geom::SurfaceMesh adaptive =
         geom::tessellateAdaptive(element.surface, boundedTolerance(element.surface.points, tolerance));
     MeshData mesh;
     mesh.positions.reserve(adaptive.positions.size()), mesh.normals.reserve(adaptive.positions.size());
-    mesh.uv.reserve(adaptive.positions.size());
+    if (withUv) mesh.uv.reserve(adaptive.positions.size());
     for (std::size_t i = 0; i < adaptive.positions.size(); ++i) {
         mesh.positions.push_back(glm::vec3(adaptive.positions[i]));
         mesh.normals.push_back(glm::vec3(adaptive.normals[i]));
-        mesh.uv.push_back(glm::vec2(adaptive.uv[i]));
+        if (withUv) mesh.uv.push_back(glm::vec2(adaptive.uv[i]));
     }
     std::vector<std::vector<glm::dvec2>> loops;
     for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
@@ -125,10 +136,11 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance) {
 }  // namespace
 
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
-                           const SurfaceCharacteristicsAttribute& characteristics) {
-    if (chordal(criteria.criteria, criteria.valueU) && characteristics.style != 3)
-        return adaptiveMesh(element, criteria.valueU);
+                           const SurfaceCharacteristicsAttribute& characteristics, TessellationCache* grids) {
     const geom::Surface& s = element.surface;
+    const bool withUv = keepsUv(s, characteristics);
+    if (chordal(criteria.criteria, criteria.valueU) && characteristics.style != 3)
+        return adaptiveMesh(element, criteria.valueU, withUv);
     std::vector<glm::dvec3> rowU, rowV;  // control polygons along u (first column) and v (first row)
     for (std::size_t i = 0; i < s.countU; ++i) rowU.push_back(s.point(i, 0));
     for (std::size_t j = 0; j < s.countV; ++j) rowV.push_back(s.point(0, j));
@@ -141,26 +153,33 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
     const auto nu = static_cast<std::uint32_t>(us.size()), nv = static_cast<std::uint32_t>(vs.size());
     // Exact room: cached meshes live as long as their elements, and growth slack with them.
     mesh.positions.reserve(std::size_t{nu} * nv), mesh.normals.reserve(std::size_t{nu} * nv);
-    mesh.uv.reserve(std::size_t{nu} * nv);
-    mesh.triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));
+    if (withUv) mesh.uv.reserve(std::size_t{nu} * nv);
     for (double u : us)
         for (double v : vs) {
             mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
             mesh.normals.push_back(glm::vec3(geom::normal(s, u, v)));
-            mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
+            if (withUv) mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
         }
     std::vector<std::vector<glm::dvec2>> loops;
     for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
     auto at = [nv](std::uint32_t i, std::uint32_t j) { return i * nv + j; };
-    for (std::uint32_t i = 0; i + 1 < nu; ++i)
-        for (std::uint32_t j = 0; j + 1 < nv; ++j) {
-            if (!loops.empty() && !insideTrim(loops, {(us[i] + us[i + 1]) / 2, (vs[j] + vs[j + 1]) / 2}))
-                continue;
-            // Counter-clockwise in (u, v) is counter-clockwise seen along Su x Sv.
-            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-        }
-    if (!loops.empty()) mesh.triangles.shrink_to_fit();  // trimmed: fewer than the room made
+    auto cells = [&] {
+        std::vector<std::uint32_t> triangles;
+        triangles.reserve(6 * std::size_t{nu > 0 ? nu - 1 : 0} * (nv > 0 ? nv - 1 : 0));
+        for (std::uint32_t i = 0; i + 1 < nu; ++i)
+            for (std::uint32_t j = 0; j + 1 < nv; ++j) {
+                if (!loops.empty() && !insideTrim(loops, {(us[i] + us[i + 1]) / 2, (vs[j] + vs[j + 1]) / 2}))
+                    continue;
+                // Counter-clockwise in (u, v) is counter-clockwise seen along Su x Sv.
+                triangles.insert(triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+                triangles.insert(triangles.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+        if (!loops.empty()) triangles.shrink_to_fit();  // trimmed: fewer than the room made
+        return triangles;
+    };
+    // Untrimmed grids of one size have the same triangles: the cache shares them.
+    mesh.triangles = grids && loops.empty() ? SharedIndexList::shared(grids->gridTriangles(nu, nv, cells))
+                                            : SharedIndexList(cells());
     if (characteristics.style == 3) {
         // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
         auto lines = [&](int count, std::uint32_t along, bool constantU) {

@@ -8,6 +8,10 @@
 
 #include <vector>
 
+namespace phigs {
+class TessellationCache;
+}
+
 namespace phigs::detail {
 
 /// Segments per knot span for an approximation criteria attribute: 1 (workstation dependent)
@@ -21,11 +25,13 @@ std::vector<double> spanBreaks(const std::vector<double>& knots, double start, d
 std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
                                         double value);
 
-/// A grid over the surface (positions, unit normals, uv, triangles counter-clockwise seen along
-/// the normal), with triangles outside the trimming loops (even-odd in (u, v)) removed and
-/// iso-parametric curves (style 3) added. Criteria 3-8 with a positive tolerance (and no
-/// iso-curves asked for) use geom::tessellateAdaptive instead of the grid.
+/// A grid over the surface (positions, unit normals, triangles counter-clockwise seen along the
+/// normal, uv where read: knot lines inside the domain or level curves, styles 4 and 5), with triangles
+/// outside the trimming loops (even-odd in (u, v)) removed and iso-parametric curves (style 3) added.
+/// Criteria 3-8 with a positive tolerance (and no iso-curves asked for) use geom::tessellateAdaptive instead
+/// of the grid. With `grids`, an untrimmed grid's triangles are shared with every mesh on a grid of its size.
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
-                           const SurfaceCharacteristicsAttribute& characteristics);
+                           const SurfaceCharacteristicsAttribute& characteristics,
+                           TessellationCache* grids = nullptr);
 
 }  // namespace phigs::detail

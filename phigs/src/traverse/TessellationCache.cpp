@@ -31,8 +31,9 @@ void TessellationCache::prune() {
     builtSinceSweep_ = prunesSinceSweep_ = 0;
     for (auto it = entries_.begin(); it != entries_.end();) {
         const Entry& e = it->second.entry;
-        // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid keys.
-        bool held = e.mesh.use_count() > 1 || e.surface.use_count() > 1 || e.curve.use_count() > 1;
+        // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid
+        // keys. A surface is the store's own (held by its element too): its mesh tells.
+        bool held = e.mesh.use_count() > 1 || e.curve.use_count() > 1;
         if (!it->second.used && !held) {
             it = entries_.erase(it);
         } else {
@@ -41,6 +42,7 @@ void TessellationCache::prune() {
         }
     }
     keptBySweep_ = entries_.size();
+    std::erase_if(grids_, [](const auto& grid) { return grid.second.expired(); });
 }
 
 }  // namespace phigs

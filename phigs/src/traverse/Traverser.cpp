@@ -901,8 +901,10 @@ private:
                         key.levelPlanes.insert(key.levelPlanes.end(), {p.x, p.y, p.z, p.w});
                     const auto& entry = cache_.get(key, TessellationCache::Kind::Surface, [&] {
                         TessellationCache::Entry built;
-                        built.surface = std::make_shared<const geom::Surface>(e.surface);
-                        MeshData mesh = detail::tessellateSurface(e, a, c);
+                        // The store's own surface, shared: no copy per tessellation.
+                        auto box = s.elements.shared<NurbsSurfaceElement>(index);
+                        built.surface = std::shared_ptr<const geom::Surface>(box, &box->surface);
+                        MeshData mesh = detail::tessellateSurface(e, a, c, &cache_);
                         detail::addLevelCurves(mesh, planes, built.surface.get());
                         built.mesh = std::make_shared<const MeshData>(std::move(mesh));
                         return built;

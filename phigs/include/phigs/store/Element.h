@@ -151,19 +151,19 @@ struct Colour {
 
 /// POLYLINE 3 / POLYLINE.
 struct PolylineElement {
-    PointList points;
+    [[no_unique_address]] PointList points;  ///< twoD lies in its tail padding
     bool twoD = false;
     bool operator==(const PolylineElement&) const = default;
 };
 /// POLYMARKER 3 / POLYMARKER.
 struct PolymarkerElement {
-    PointList points;
+    [[no_unique_address]] PointList points;  ///< twoD lies in its tail padding
     bool twoD = false;
     bool operator==(const PolymarkerElement&) const = default;
 };
 /// FILL AREA 3 / FILL AREA.
 struct FillAreaElement {
-    PointList points;
+    [[no_unique_address]] PointList points;  ///< twoD lies in its tail padding
     bool twoD = false;
     bool operator==(const FillAreaElement&) const = default;
 };

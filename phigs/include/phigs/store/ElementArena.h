@@ -60,9 +60,20 @@ concept PooledPoints = requires(T& t) {
     { t.points } -> std::same_as<PointList&>;
 };
 
+/// Whether payloads of type `T` live in a shared box of their own (the arena holds a pointer to
+/// it): a reader may keep such a payload past any edit (a draw list keeps a surface) without a copy.
+template <class T>
+concept BoxedPayload = std::same_as<T, NurbsSurfaceElement>;
+
+namespace detail {
+/// How the arena keeps a payload of type `T`: itself, or a pointer to its shared box.
+template <class T>
+using StoredPayload = std::conditional_t<BoxedPayload<T>, std::shared_ptr<const T>, T>;
+}  // namespace detail
+
 /// The elements of one structure, compact: each payload kept as its own type in one byte arena
 /// (no variant per element), the points of its PointList in one point pool (no allocation per
-/// element for them), and one 16-byte slot (serial, place, payload family) per element.
+/// element for them), and one 12-byte slot (serial, place, payload family) per element.
 class ElementArena {
 public:
     ElementArena() = default;
@@ -81,13 +92,21 @@ public:
     /// The payload family of element `i` (0-based): its alternative index in Element.
     std::size_t family(std::size_t i) const { return slots_[i].family; }
     /// The element's serial: unique in the store's lifetime, renewed on insert and replace.
-    std::uint64_t serial(std::size_t i) const { return slots_[i].serial; }
+    std::uint64_t serial(std::size_t i) const { return slots_[i].serial(); }
 
     /// The payload of element `i` when it is a `T`, else nullptr.
     template <class T>
     const T* get(std::size_t i) const {
         const Slot& s = slots_[i];
         return s.family == detail::AlternativeIndex<T, Element>::value ? object<T>(s.offset) : nullptr;
+    }
+    /// The shared box of element `i` when it is a boxed `T`, else null: it stays valid, and
+    /// unchanged, after the element is replaced or removed.
+    template <BoxedPayload T>
+    std::shared_ptr<const T> shared(std::size_t i) const {
+        const Slot& s = slots_[i];
+        if (s.family != detail::AlternativeIndex<T, Element>::value) return nullptr;
+        return *std::launder(reinterpret_cast<const std::shared_ptr<const T>*>(data_ + s.offset));
     }
     /// Calls `f` with the payload of element `i` (a `const T&`), as std::visit does with an
     /// Element: `f` must take every payload, else this does not compile.
@@ -139,15 +158,30 @@ public:
     std::string checkLayout() const;
 
 private:
+    /// Serials are kept in 48 bits (12-byte slots): 2^48 inserts and replaces per store.
+    static constexpr std::uint64_t kSerialLimit = std::uint64_t{1} << 48;
     struct Slot {
-        std::uint64_t serial;
         std::uint32_t offset;  ///< the payload's place in the arena
-        std::uint32_t family;
+        std::uint32_t serialLow;
+        std::uint16_t serialHigh;
+        std::uint16_t family;
+        std::uint64_t serial() const { return serialLow | std::uint64_t{serialHigh} << 32; }
+        void setSerial(std::uint64_t serial) {
+            serialLow = static_cast<std::uint32_t>(serial);
+            serialHigh = static_cast<std::uint16_t>(serial >> 32);
+        }
     };
+    static_assert(sizeof(Slot) == 12);
+    /// Throws when `serial` does not fit a slot (before anything changes).
+    static void checkSerial(std::uint64_t serial);
 
     template <class T>
     const T* object(std::uint32_t offset) const {
-        return std::launder(reinterpret_cast<const T*>(data_ + offset));
+        const auto* stored = std::launder(reinterpret_cast<const detail::StoredPayload<T>*>(data_ + offset));
+        if constexpr (BoxedPayload<T>)
+            return stored->get();
+        else
+            return stored;
     }
     template <std::size_t I, class R, class F>
     static R call(const ElementArena& a, std::uint32_t offset, F& f) {

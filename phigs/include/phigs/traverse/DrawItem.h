@@ -6,6 +6,7 @@
 #include "phigs/traverse/DrawPath.h"
 #include "phigs/traverse/ItemArray.h"
 #include "phigs/traverse/ItemRef.h"
+#include "phigs/traverse/SharedIndexList.h"
 
 #include "geom/Curve.h"
 #include "geom/Surface.h"
@@ -73,11 +74,11 @@ struct DrawText {
 /// with data become. Shared and immutable: the same pointer comes back while its element and
 /// structure are unchanged, so a renderer may key its GPU buffers on it.
 struct MeshData {
-    std::vector<glm::vec3> positions;      ///< modelling coordinates
-    std::vector<glm::vec3> normals;        ///< one per position (unit), or empty (facet normals)
-    std::vector<glm::vec3> colours;        ///< one per position, or empty (interior colour)
-    std::vector<glm::vec2> uv;             ///< surface parameters per position, or empty
-    std::vector<std::uint32_t> triangles;  ///< three indices per triangle, counter-clockwise = front
+    std::vector<glm::vec3> positions;  ///< modelling coordinates
+    std::vector<glm::vec3> normals;    ///< one per position (unit), or empty (facet normals)
+    std::vector<glm::vec3> colours;    ///< one per position, or empty (interior colour)
+    std::vector<glm::vec2> uv;         ///< surface parameters per position, or empty
+    SharedIndexList triangles;         ///< three indices per triangle, counter-clockwise = front
     std::vector<std::vector<std::uint32_t>>
         isoLines;  ///< polylines through positions (iso-parametric curves)
 };

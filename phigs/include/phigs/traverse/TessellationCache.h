@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace phigs {
@@ -50,7 +51,19 @@ public:
     void prune();
     void clear() {
         entries_.clear();
+        grids_.clear();
         builtSinceSweep_ = keptBySweep_ = prunesSinceSweep_ = 0;
+    }
+
+    /// The triangles of an untrimmed grid of `rows` x `columns` positions (two per cell, made by
+    /// `build`), shared by every mesh on such a grid while one holds them.
+    template <class Build>
+    std::shared_ptr<const std::vector<std::uint32_t>> gridTriangles(std::uint32_t rows, std::uint32_t columns,
+                                                                    Build&& build) {
+        std::weak_ptr<const std::vector<std::uint32_t>>& slot = grids_[{rows, columns}];
+        auto held = slot.lock();
+        if (!held) slot = held = std::make_shared<const std::vector<std::uint32_t>>(build());
+        return held;
     }
 
     const Counters& counters() const { return counters_; }
@@ -66,6 +79,7 @@ private:
         bool used = true;
     };
     std::map<Key, Slot> entries_;  ///< ordered: a traversal asks in about serial order
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::weak_ptr<const std::vector<std::uint32_t>>> grids_;
     Counters counters_;
     std::size_t builtSinceSweep_ = 0, keptBySweep_ = 0, prunesSinceSweep_ = 0;
     static constexpr std::size_t kSweepEvery = 16;
