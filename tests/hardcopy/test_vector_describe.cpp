@@ -238,7 +238,7 @@ TEST_CASE("vector describe: facets overlapping in depth are split and painted ba
             int nearest = -1;
             bool nearEdge = false;
             for (int k = 0; k < 3; ++k) {
-                const auto& f = std::get<DrawFillArea>(list.items[std::size_t(k)].primitive);
+                const auto& f = primitiveAs<DrawFillArea>(list.items[std::size_t(k)].primitive);
                 const auto& q = f.contours[0];
                 const glm::dvec2 along = glm::dvec2(q[1] - q[0]), across = glm::dvec2(q[3] - q[0]);
                 const glm::dvec2 d = npc - glm::dvec2(q[0]);

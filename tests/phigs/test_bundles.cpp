@@ -111,7 +111,7 @@ TEST_CASE("text bundle: font, expansion, spacing and colour from the representat
         words,
     });
     REQUIRE(list.items.size() == 3);
-    auto style = [&](int i) { return std::get<DrawText>(list.items[i].primitive).style.get(); };
+    auto style = [&](int i) { return primitiveAs<DrawText>(list.items[i].primitive).style.get(); };
     CHECK(style(0).font == 2);
     CHECK(style(0).expansion == 0.8f);
     CHECK(style(0).spacing == 0.1f);
@@ -156,7 +156,7 @@ TEST_CASE("interior bundle: style, style index, colours, shading and reflectance
         square,
     });
     REQUIRE(list.items.size() == 3);
-    auto interior = [&](int i) { return std::get<DrawFillArea>(list.items[i].primitive).interior.get(); };
+    auto interior = [&](int i) { return primitiveAs<DrawFillArea>(list.items[i].primitive).interior.get(); };
     CHECK(interior(0).style == InteriorStyle::Solid);
     CHECK(interior(0).styleIndex == 2);
     CHECK(interior(0).colour == colour6);

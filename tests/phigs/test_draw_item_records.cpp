@@ -47,7 +47,7 @@ struct AllRecords {
     Records<EdgeStyle> edges;
 
     void add(const DrawItem& item) {
-        std::visit(
+        visitPrimitive(
             [&](const auto& p) {
                 using P = std::decay_t<decltype(p)>;
                 if constexpr (std::is_same_v<P, DrawPolyline> || std::is_same_v<P, DrawCurve>) {

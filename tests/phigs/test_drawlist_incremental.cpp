@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <string>
 
 using namespace phigs;
 
@@ -33,6 +34,7 @@ struct ItemView {
     std::vector<glm::dvec4> clip;
     std::vector<glm::dvec3> points;
     std::size_t meshPositions, meshTriangles;
+    std::string text{};
     bool operator==(const ItemView&) const = default;
 };
 
@@ -56,6 +58,10 @@ ItemView view(const DrawList& list, const DrawItem& item) {
     if (auto p = std::get_if<DrawPolyline>(&item.primitive)) v.points = p->points;
     if (auto p = std::get_if<DrawPolymarker>(&item.primitive)) v.points = p->points;
     if (auto c = std::get_if<DrawCurve>(&item.primitive)) v.points = c->points;
+    if (auto f = primitiveIf<DrawFillArea>(item.primitive))
+        for (const auto& contour : f->contours)
+            v.points.insert(v.points.end(), contour.begin(), contour.end());
+    if (auto t = primitiveIf<DrawText>(item.primitive)) v.text = t->text;
     if (auto m = std::get_if<DrawMesh>(&item.primitive))
         v.meshPositions = m->mesh->positions.size(), v.meshTriangles = m->mesh->triangles.size();
     return v;

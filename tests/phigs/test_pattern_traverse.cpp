@@ -35,7 +35,7 @@ PatternAttribute pointAndVectors(glm::dvec3 r, glm::dvec3 x, glm::dvec3 y) {
     return p;
 }
 const PatternPlacement& placementOf(const DrawItem& item) {
-    return std::get<DrawFillArea>(item.primitive).interior->pattern;
+    return primitiveAs<DrawFillArea>(item.primitive).interior->pattern;
 }
 
 }  // namespace
@@ -72,7 +72,7 @@ TEST_CASE("pattern placement: size, reference point and vectors reach the items 
     CHECK(placementOf(list.items[2]) == PatternPlacement{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}, {0.25, 0.5}});
     CHECK(placementOf(list.items[3]) == set);
     CHECK(placementOf(list.items[4]) == PatternPlacement{{4, 5, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.5}});
-    CHECK(std::get<DrawFillArea>(list.items[4].primitive).interior->style == InteriorStyle::Pattern);
+    CHECK(primitiveAs<DrawFillArea>(list.items[4].primitive).interior->style == InteriorStyle::Pattern);
 }
 
 TEST_CASE("pattern table: the picture carries each pattern's cells through the colour table",

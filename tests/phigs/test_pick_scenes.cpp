@@ -104,12 +104,12 @@ TEST_CASE("pick: fill area sets use the even-odd rule and hollow ones only their
     CHECK(picker.pick(list, {0.5, 0.5}, {0.15}).status == InputStatus::Ok);     // aperture reaches the ring
     CHECK(picker.pick(list, {0.9, 0.9}, {0.001}).status == InputStatus::None);
 
-    std::get<DrawFillArea>(list.items[0].primitive).interior.edit().style = InteriorStyle::Hollow;
+    editPrimitive<DrawFillArea>(list.items[0].primitive).interior.edit().style = InteriorStyle::Hollow;
     CHECK(picker.pick(list, {0.3, 0.3}, {0.001}).status == InputStatus::None);
     CHECK(picker.pick(list, {0.2, 0.3}, {0.001}).status == InputStatus::Ok);  // on the outer edge
     CHECK(picker.pick(list, {0.4, 0.5}, {0.001}).status == InputStatus::Ok);  // on the hole's edge
 
-    auto& empty = std::get<DrawFillArea>(list.items[0].primitive);
+    auto& empty = editPrimitive<DrawFillArea>(list.items[0].primitive);
     empty.interior.edit().style = InteriorStyle::Empty;
     CHECK(picker.pick(list, {0.2, 0.3}, {0.001}).status == InputStatus::None);
     empty.edges.edit().visible = true;
@@ -154,7 +154,7 @@ TEST_CASE("pick: text is picked by its box", "[pick]") {
     CHECK(picker.pick(list, {0.3, 0.41}, {0.001}).status == InputStatus::None);
 
     // Centred horizontally and half-way vertically.
-    auto& centred = std::get<DrawText>(list.items[0].primitive);
+    auto& centred = editPrimitive<DrawText>(list.items[0].primitive);
     centred.style.edit().horizontal = HorizontalAlignment::Centre;
     centred.style.edit().vertical = VerticalAlignment::Half;
     CHECK(picker.pick(list, {0.05, 0.27}, {0.001}).status == InputStatus::Ok);

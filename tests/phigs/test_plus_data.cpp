@@ -31,7 +31,7 @@ template <class P>
 std::vector<const P*> itemsOf(const DrawList& list) {
     std::vector<const P*> out;
     for (const DrawItem& item : list.items)
-        if (auto p = std::get_if<P>(&item.primitive)) out.push_back(p);
+        if (auto p = primitiveIf<P>(item.primitive)) out.push_back(p);
     return out;
 }
 

@@ -32,7 +32,7 @@ template <class P>
 std::vector<std::pair<const P*, const DrawItem*>> itemsOf(const DrawList& list) {
     std::vector<std::pair<const P*, const DrawItem*>> out;
     for (const DrawItem& item : list.items)
-        if (auto p = std::get_if<P>(&item.primitive)) out.push_back({p, &item});
+        if (auto p = primitiveIf<P>(item.primitive)) out.push_back({p, &item});
     return out;
 }
 

@@ -188,13 +188,13 @@ TEST_CASE("draw list content for a small network: views, lights, depth cue, prim
     REQUIRE(list.depthCues.size() == 1);
     CHECK(list.items[0].depthCue == 0);
     CHECK(list.hiddenSurfaceRemoval);
-    const auto& fill = std::get<DrawFillArea>(list.items[0].primitive);
+    const auto& fill = primitiveAs<DrawFillArea>(list.items[0].primitive);
     CHECK(fill.interior->style == InteriorStyle::Solid);
-    const auto& withData = std::get<DrawFillArea>(list.items[1].primitive);
+    const auto& withData = primitiveAs<DrawFillArea>(list.items[1].primitive);
     REQUIRE(withData.vertexColours.size() == 1);
     CHECK(withData.vertexColours[0] == std::vector<glm::vec3>{{1, 0, 0}, {0, 0, 0.5f}, {0, 1, 0}});
-    CHECK(std::get<DrawText>(list.items[2].primitive).text == "Wing");
-    CHECK(std::get<DrawText>(list.items[3].primitive).annotation);
+    CHECK(primitiveAs<DrawText>(list.items[2].primitive).text == "Wing");
+    CHECK(primitiveAs<DrawText>(list.items[3].primitive).annotation);
     CHECK(list.viewportMax.x == s.ws->description().displaySize.x);
 }
 

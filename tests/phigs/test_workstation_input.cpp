@@ -361,8 +361,8 @@ TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the pi
         DrawList shown = picture;
         appendEchoes(shown, echo, mapping);
         REQUIRE(shown.items.size() == picture.items.size() + 3);
-        const auto* box = std::get_if<DrawFillArea>(&shown.items[picture.items.size()].primitive);
-        const auto* text = std::get_if<DrawText>(&shown.items.back().primitive);
+        const auto* box = primitiveIf<DrawFillArea>(shown.items[picture.items.size()].primitive);
+        const auto* text = primitiveIf<DrawText>(shown.items.back().primitive);
         REQUIRE(box);
         REQUIRE(text);
         CHECK(text->text == (i % 2 == 0 ? "cancelled" : "name.acm_"));

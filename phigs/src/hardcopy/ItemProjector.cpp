@@ -186,7 +186,7 @@ ProjectedScene projectScene(const DrawList& list, const PageMapping& mapping, co
                                         std::to_string(list.views.size()));
         ItemPipeline pipeline(list, item, mapping, options, scene);
         ItemProjector projector(pipeline);
-        std::visit(projector, item.primitive);
+        visitPrimitive(projector, item.primitive);
     }
     return scene;
 }

@@ -178,7 +178,7 @@ void text(Measure& m, const DrawItem& item, const DrawText& t) {
 double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
     Measure m(point, clip && !item.modelClipPlanes.empty() ? &item.modelClipPlanes : nullptr);
     const glm::dmat4& model = item.modelTransform.get();
-    std::visit(
+    visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)

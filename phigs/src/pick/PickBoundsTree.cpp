@@ -79,7 +79,7 @@ bool PickBoundsTree::modellingBox(const DrawItem& item, glm::dvec3& lo, glm::dve
     lo = glm::dvec3(infinity);
     hi = glm::dvec3(-infinity);
     bool bounded = true;
-    std::visit(
+    visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
@@ -154,7 +154,7 @@ PickItemBounds PickBoundsTree::boundsOf(const DrawList& list, const DrawItem& it
     b.hi = nhi + pad;
     // A fill area's depth comes from the plane fitted to its contours, which a contour that is
     // not quite planar may put in front of every vertex: no depth bound for those.
-    if (std::holds_alternative<DrawFillArea>(item.primitive)) b.hi.z = infinity;
+    if (holdsPrimitive<DrawFillArea>(item.primitive)) b.hi.z = infinity;
     b.bounded = true;
     return b;
 }

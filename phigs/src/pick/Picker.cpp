@@ -338,7 +338,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
     const Aperture ap{npc, aperture};
 
     std::optional<PickHit> hit;
-    std::visit(
+    visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             std::optional<double> z;

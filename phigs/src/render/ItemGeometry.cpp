@@ -259,7 +259,7 @@ struct Hasher {
 
 ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels) {
     Builder b(item, worldToPixels);
-    std::visit(
+    visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline>)
@@ -281,7 +281,7 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
     Hasher h;
     h.value(item.primitive.index());
     h.value(item.modelTransform.get());
-    std::visit(
+    visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {

@@ -53,7 +53,7 @@ void DrawItems::push_back(DrawItem item) {
 
 DrawItems::DrawItems(std::vector<DrawItem> items) {
     auto segment = std::make_shared<DrawSegment>();
-    segment->items = std::move(items);
+    segment->items = ItemVector(std::move(items));
     appendSegment(std::move(segment));
     lastOwned_ = true;
 }

@@ -19,6 +19,8 @@ void empty(DrawSegment& segment) {
     segment.points.clear();
     segment.transforms.clear();
     segment.clipPlanes.clear();
+    segment.fillAreas.clear();
+    segment.texts.clear();
     segment.storePoints.reset();
 }
 

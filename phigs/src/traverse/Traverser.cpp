@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cmath>
 #include <map>
@@ -499,6 +500,21 @@ bool anyIndexed(const std::vector<Colour>& colours) {
     return false;
 }
 
+/// What a line style is resolved from (the state's side; the tables stay for a traversal).
+struct LineInputs {
+    int bundle = 0, colourMap = 0;
+    unsigned individual = 0;  ///< the ASFs of colour, type and width, one bit each
+    Colour colour;
+    LineType type = LineType::Solid;
+    double width = 0.0;
+    bool operator==(const LineInputs&) const = default;
+};
+/// A line style interned for its inputs.
+struct LineMemo {
+    LineInputs key;
+    const LineStyle* record = nullptr;
+};
+
 class Walk {
 public:
     Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
@@ -728,8 +744,28 @@ private:
         if (cached.epoch != epoch_) cached = {epoch_, intern(resolve()).operator->()};
         return viewOf(cached.record);
     }
+    /// A line style per state, resolved and interned once per distinct inputs: a scene switches
+    /// among few line styles, and most states repeat one seen before.
     ItemRef<LineStyle> line(const State& s) {
-        return resolved(line_, [&] { return resolve_.line(s); });
+        if (line_.epoch == epoch_) return viewOf(line_.record);
+        const LineInputs in{s.polylineIndex,
+                            s.colourMapIndex,
+                            unsigned(s.ind(AspectId::PolylineColour)) |
+                                unsigned(s.ind(AspectId::LineType)) << 1 |
+                                unsigned(s.ind(AspectId::LinewidthScale)) << 2,
+                            s.lineColour,
+                            s.lineType,
+                            s.lineWidth};
+        std::uint64_t h = mix(mix(mix(1469598103934665603ull, std::uint64_t(in.bundle)), in.individual),
+                              std::uint64_t(in.type) * 31 + std::uint64_t(in.colourMap));
+        h = mix(mix(h, std::bit_cast<std::uint64_t>(in.width)),
+                in.colour.direct ? std::bit_cast<std::uint64_t>(in.colour.rgb.x + 3 * in.colour.rgb.y +
+                                                                7 * in.colour.rgb.z)
+                                 : std::uint64_t(in.colour.index));
+        LineMemo& memo = lineMemo_[(h ^ (h >> 29)) % lineMemo_.size()];
+        if (!memo.record || !(memo.key == in)) memo = {in, intern(resolve_.line(s)).operator->()};
+        line_ = {epoch_, memo.record};
+        return viewOf(memo.record);
     }
     ItemRef<MarkerStyle> marker(const State& s) {
         return resolved(marker_, [&] { return resolve_.marker(s); });
@@ -760,26 +796,33 @@ private:
         return fields_;
     }
 
+    /// A primitive as its item holds it: fill areas and text in the segment, viewed.
+    template <class Primitive>
+    DrawPrimitive held(Primitive&& primitive) {
+        using P = std::decay_t<Primitive>;
+        if constexpr (std::is_same_v<P, DrawFillArea>)
+            return ItemRef<P>::view(&segment_->fillAreas.emplace_back(std::forward<Primitive>(primitive)));
+        else if constexpr (std::is_same_v<P, DrawText>)
+            return ItemRef<P>::view(&segment_->texts.emplace_back(std::forward<Primitive>(primitive)));
+        else
+            return DrawPrimitive(std::forward<Primitive>(primitive));
+    }
+
     template <class Primitive>
     DrawItem* emit(const Structure& s, int number, const State& state, Primitive&& primitive) {
         const ItemFields& f = itemFields(state);
         if (f.invisible) return nullptr;
-        // Built in place from the primitive: a draw item is large, and moving it costs as much
-        // as filling it. (Not emplace_back(primitive): clang 14 has no parenthesised aggregate
-        // initialisation.)
-        DrawItem& item = segment_->items.emplace_back();
-        item.primitive.template emplace<std::decay_t<Primitive>>(std::forward<Primitive>(primitive));
-        item.modelTransform = transform(state);
-        item.viewIndex = f.viewIndex;
-        item.highlighted = f.highlighted;
-        item.pickable = f.pickable;
-        item.lightSet = f.lightSet;
-        item.depthCue = f.depthCue;
+        // Built in place (the storage may hold a cold item of an earlier traversal: written once).
         const std::vector<DrawPathLevel>& prefix = segment_->pathPrefix;
-        item.source.path = DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
-                                           {s.id, number, state.pickId});
-        item.source.structureVersion = s.version;
-        if (state.modelClip) item.modelClipPlanes = clipPlanes(state);
+        DrawPrimitive p = held(std::forward<Primitive>(primitive));
+        const bool owns = ItemVector::ownsSomething(p);  // the other fields view the segment
+        DrawItem& item = segment_->items.emplaceKnown(
+            owns, std::move(p), transform(state), f.viewIndex, f.lightSet, f.depthCue, f.highlighted,
+            f.pickable,
+            DrawSource{DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
+                                       {s.id, number, state.pickId}),
+                       s.version},
+            state.modelClip ? clipPlanes(state) : ItemArray<glm::dvec4>{});
         return &item;
     }
 
@@ -1216,6 +1259,7 @@ private:
     StylePool& styles_ = *itemTables_.styles;
     std::uint64_t epoch_ = 1;  ///< changes whenever the state may have changed
     Resolved<LineStyle> line_;
+    std::array<LineMemo, 64> lineMemo_{};  ///< by a hash of the inputs
     Resolved<MarkerStyle> marker_;
     Resolved<InteriorStyleSet> interior_;
     Resolved<EdgeStyle> edge_;

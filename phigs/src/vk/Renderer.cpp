@@ -687,7 +687,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         it->second.lastUsed = frameNumber_;
         if (!it->second.vertices) continue;
         const InteriorStyleSet* interior = nullptr;
-        if (const auto* fill = std::get_if<DrawFillArea>(&item.primitive)) interior = &fill->interior.get();
+        if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
         for (const auto& part : it->second.parts)
             addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
     }

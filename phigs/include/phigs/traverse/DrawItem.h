@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -102,8 +103,60 @@ struct DrawCurve {
     double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
 };
 
-/// The closed family of primitives a draw list holds.
-using DrawPrimitive = std::variant<DrawPolyline, DrawPolymarker, DrawFillArea, DrawText, DrawMesh, DrawCurve>;
+/// The closed family of primitives a draw list holds. Fill areas and text, large and rare, are held
+/// out of line (a view of their draw segment's record, or a copy of their own) so that every item
+/// stays small; read through visitPrimitive and primitiveIf, which hand them out as themselves.
+using DrawPrimitive =
+    std::variant<DrawPolyline, DrawPolymarker, ItemRef<DrawFillArea>, ItemRef<DrawText>, DrawMesh, DrawCurve>;
+
+namespace detail {
+/// A primitive as the variant holds it: T itself, or ItemRef<T> for the out-of-line ones.
+template <class T>
+struct HeldPrimitive {
+    using type = T;
+    static const T& read(const T& held) { return held; }
+    static T& edit(T& held) { return held; }
+};
+template <class T>
+struct HeldPrimitive<ItemRef<T>> {
+    using type = T;
+    static const T& read(const ItemRef<T>& held) { return held.get(); }
+    static T& edit(ItemRef<T>& held) { return held.edit(); }
+};
+template <class T>
+using HeldAs =
+    std::conditional_t<std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText>, ItemRef<T>, T>;
+}  // namespace detail
+
+/// Calls f with the primitive as its own type (DrawPolyline, ..., DrawFillArea, DrawText, ...).
+template <class F>
+decltype(auto) visitPrimitive(F&& f, const DrawPrimitive& primitive) {
+    return std::visit(
+        [&](const auto& held) -> decltype(auto) {
+            return f(detail::HeldPrimitive<std::decay_t<decltype(held)>>::read(held));
+        },
+        primitive);
+}
+/// The primitive as a T, or null when it is another kind.
+template <class T>
+const T* primitiveIf(const DrawPrimitive& primitive) {
+    const auto* held = std::get_if<detail::HeldAs<T>>(&primitive);
+    return held ? &detail::HeldPrimitive<detail::HeldAs<T>>::read(*held) : nullptr;
+}
+/// The primitive as a T; std::bad_variant_access when it is another kind.
+template <class T>
+const T& primitiveAs(const DrawPrimitive& primitive) {
+    return detail::HeldPrimitive<detail::HeldAs<T>>::read(std::get<detail::HeldAs<T>>(primitive));
+}
+/// The primitive as a T to change in place (an out-of-line one viewed becomes a copy of its own).
+template <class T>
+T& editPrimitive(DrawPrimitive& primitive) {
+    return detail::HeldPrimitive<detail::HeldAs<T>>::edit(std::get<detail::HeldAs<T>>(primitive));
+}
+template <class T>
+bool holdsPrimitive(const DrawPrimitive& primitive) {
+    return std::holds_alternative<detail::HeldAs<T>>(primitive);
+}
 
 /// The identity transform, shared by the items that have no modelling transform of their own.
 inline const glm::dmat4& identityTransform() {

@@ -2,9 +2,12 @@
 
 #include "phigs/traverse/ItemArray.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace phigs {
@@ -64,17 +67,40 @@ public:
     /// `prefix` (a view of a segment's storage, or a copy) with `last` below it.
     static DrawPath below(ItemArray<DrawPathLevel> prefix, const DrawPathLevel& last) {
         DrawPath p;
-        p.prefix_ = std::move(prefix);
+        if (prefix.owned())
+            p.copyPrefix(prefix.data(), prefix.size());
+        else
+            p.prefix_ = prefix.data(), p.bits_ = static_cast<std::uint32_t>(prefix.size()) << kSizeShift;
         p.last_ = last;
-        p.hasLast_ = true;
+        p.bits_ |= kHasLast;
         return p;
     }
+    /// Every copy holds its own prefix (as ItemArray does).
+    DrawPath(const DrawPath& other) : last_(other.last_) {
+        copyPrefix(other.prefix_, other.prefixSize());
+        bits_ |= other.bits_ & kHasLast;
+    }
+    DrawPath(DrawPath&& other) noexcept
+        : prefix_(std::exchange(other.prefix_, nullptr)),
+          bits_(std::exchange(other.bits_, 0)),
+          last_(other.last_) {}
+    DrawPath& operator=(DrawPath other) noexcept {
+        std::swap(prefix_, other.prefix_);
+        std::swap(bits_, other.bits_);
+        std::swap(last_, other.last_);
+        return *this;
+    }
+    ~DrawPath() {
+        if (bits_ & kOwned) delete[] prefix_;
+    }
 
-    std::size_t size() const { return prefix_.size() + (hasLast_ ? 1 : 0); }
-    bool empty() const { return !hasLast_; }
-    const DrawPathLevel& operator[](std::size_t i) const { return i < prefix_.size() ? prefix_[i] : last_; }
+    std::size_t size() const { return prefixSize() + ((bits_ & kHasLast) ? 1 : 0); }
+    bool empty() const { return (bits_ & kHasLast) == 0; }
+    const DrawPathLevel& operator[](std::size_t i) const { return i < prefixSize() ? prefix_[i] : last_; }
     const DrawPathLevel& front() const { return (*this)[0]; }
     const DrawPathLevel& back() const { return last_; }
+    /// Whether the levels above the last are a copy of its own (false: a view, or none).
+    bool ownsPrefix() const { return (bits_ & kOwned) != 0; }
     Iterator begin() const { return {this, 0}; }
     Iterator end() const { return {this, size()}; }
     operator std::vector<DrawPathLevel>() const { return {begin(), end()}; }  // NOLINT: reads as a vector
@@ -87,16 +113,28 @@ public:
     }
 
 private:
+    static constexpr std::uint32_t kHasLast = 1, kOwned = 2, kSizeShift = 2;
+    std::size_t prefixSize() const { return bits_ >> kSizeShift; }
     void assign(const DrawPathLevel* levels, std::size_t size) {
         if (size == 0) return;
-        prefix_ = ItemArray<DrawPathLevel>(std::span<const DrawPathLevel>(levels, size - 1));
+        copyPrefix(levels, size - 1);
         last_ = levels[size - 1];
-        hasLast_ = true;
+        bits_ |= kHasLast;
+    }
+    /// Sets the prefix to a copy of its own of `size` levels at `levels` (none: no storage).
+    void copyPrefix(const DrawPathLevel* levels, std::size_t size) {
+        bits_ = static_cast<std::uint32_t>(size) << kSizeShift;
+        if (size == 0) return;
+        auto* own = new DrawPathLevel[size];
+        std::copy(levels, levels + size, own);
+        prefix_ = own;
+        bits_ |= kOwned;
     }
 
-    ItemArray<DrawPathLevel> prefix_;
+    // Three fields in 24 bytes: a draw item holds one.
+    const DrawPathLevel* prefix_ = nullptr;  ///< the levels above the last (a view, or owned)
+    std::uint32_t bits_ = 0;                 ///< prefix size << kSizeShift | kOwned | kHasLast
     DrawPathLevel last_{};
-    bool hasLast_ = false;
 };
 
 }  // namespace phigs

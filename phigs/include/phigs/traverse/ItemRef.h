@@ -15,7 +15,8 @@ class ItemRef {
 public:
     /// A view of one default value, shared by every default reference.
     ItemRef() : bits_(reinterpret_cast<std::uintptr_t>(&defaultValue())) {}
-    ItemRef(const T& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(value)) | 1u) {}  // NOLINT
+    ItemRef(const T& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(value)) | 1u) {}        // NOLINT
+    ItemRef(T&& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(std::move(value))) | 1u) {}  // NOLINT
     /// A view of `record`, which must outlive it (segment storage, an interned style).
     static ItemRef view(const T* record) {
         ItemRef r(Empty{});

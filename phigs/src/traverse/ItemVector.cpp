@@ -1,0 +1,69 @@
+#include "phigs/traverse/ItemVector.h"
+
+#include <algorithm>
+
+namespace phigs {
+
+namespace {
+
+/// Whether a primitive holds anything of its own; one overload per kind, so that a new kind
+/// does not compile until it is answered here.
+struct PrimitiveOwns {
+    bool operator()(const DrawPolyline& p) const {
+        return p.points.owned() || p.colours.owned() || p.style.owned();
+    }
+    bool operator()(const DrawPolymarker& p) const { return p.points.owned() || p.style.owned(); }
+    bool operator()(const ItemRef<DrawFillArea>& p) const { return p.owned(); }
+    bool operator()(const ItemRef<DrawText>& p) const { return p.owned(); }
+    bool operator()(const DrawMesh&) const { return true; }   // shared meshes and surfaces
+    bool operator()(const DrawCurve&) const { return true; }  // a shared curve
+};
+
+}  // namespace
+
+bool ItemVector::ownsSomething(const DrawItem& item) {
+    // Every member of DrawItem that may own is asked: a new one must be added here.
+    static_assert(sizeof(DrawItem) <= 136, "a new DrawItem member: is it asked below?");
+    return item.modelTransform.owned() || item.source.path.ownsPrefix() || item.modelClipPlanes.owned() ||
+           ownsSomething(item.primitive);
+}
+
+bool ItemVector::ownsSomething(const DrawPrimitive& primitive) {
+    return std::visit(PrimitiveOwns{}, primitive);
+}
+
+void ItemVector::grow(std::size_t count) {
+    static_assert(std::is_nothrow_move_constructible_v<DrawItem>);
+    auto* fresh = static_cast<DrawItem*>(
+        ::operator new (count * sizeof(DrawItem), std::align_val_t{alignof(DrawItem)}));
+    for (std::size_t i = 0; i < size_; ++i) {
+        ::new (static_cast<void*>(fresh + i)) DrawItem(std::move(data_[i]));
+        data_[i].~DrawItem();
+    }
+    ::operator delete (data_, std::align_val_t{alignof(DrawItem)});
+    data_ = fresh;
+    capacity_ = count;
+}
+
+void ItemVector::resize(std::size_t count) {
+    while (size_ < count) emplace_back();
+    if (count >= size_) return;
+    for (std::size_t i = count; i < size_; ++i) data_[i].~DrawItem();
+    owning_.erase(std::remove_if(owning_.begin(), owning_.end(), [&](std::uint32_t i) { return i >= count; }),
+                  owning_.end());
+    size_ = count;
+}
+
+void ItemVector::clear() {
+    if (tracked_) {
+        // The others own nothing: their storage is simply reused.
+        for (std::uint32_t i : owning_) data_[i].~DrawItem();
+    } else {
+        destroyAll();
+    }
+    size_ = 0;
+    owning_.clear();
+    tracked_ = true;
+}
+
+}  // namespace phigs

@@ -1,0 +1,100 @@
+// ItemVector against a plain vector: random items that view shared storage or own copies and
+// meshes, writes through indices, resizes and clears; the items read the same as the model, and
+// every clear lets go of every mesh an item held (the sanitizer builds see any leaked copy).
+
+#include "phigs/traverse/ItemVector.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <memory>
+#include <random>
+#include <utility>
+#include <vector>
+
+using namespace phigs;
+
+TEST_CASE("item vector: clearing lets go of exactly what the items own", "[traverse][random]") {
+    const std::vector<glm::dvec3> points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    DrawFillArea fill;
+    fill.contours = {points};
+    DrawText text;
+    text.text = "T";
+    const glm::dmat4 transform(2.0);
+    for (unsigned seed : {1u, 2u, 3u, 4u}) {
+        std::mt19937 rng(seed);
+        auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        auto mesh = std::make_shared<const MeshData>();
+        ItemVector items;
+        std::vector<int> model;
+        auto item = [&](int n) {
+            DrawItem i;
+            i.viewIndex = n;
+            switch (pick(0, 6)) {
+                case 0:
+                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>::view(points.data(), 3), {}, {}, false};
+                    break;
+                case 1:
+                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>(points), {}, {}, false};
+                    break;
+                case 2:
+                    i.primitive = DrawMesh{mesh, nullptr, {}, {}, {}};
+                    break;
+                case 3:
+                    i.primitive = ItemRef<DrawFillArea>::view(&fill);
+                    break;
+                case 4:
+                    i.primitive = fill;  // a copy of its own
+                    break;
+                case 5:
+                    i.primitive = ItemRef<DrawText>::view(&text);
+                    break;
+                default:
+                    i.primitive = text;
+                    break;
+            }
+            if (pick(0, 3) == 0) i.modelTransform = ItemRef<glm::dmat4>(transform);
+            return i;
+        };
+        for (int step = 0; step < 600; ++step) {
+            INFO("seed " << seed << " step " << step);
+            switch (pick(0, 9)) {
+                case 0:
+                    items.clear(), model.clear();
+                    REQUIRE(mesh.use_count() == 1);
+                    break;
+                case 1: {
+                    const auto count = static_cast<std::size_t>(pick(0, 12));
+                    items.resize(count), model.resize(count, 0);
+                    break;
+                }
+                case 2:
+                    if (!items.empty()) {
+                        const auto at = static_cast<std::size_t>(pick(0, int(items.size()) - 1));
+                        items[at] = item(step);  // a write: clearing must now destroy everything
+                        model[at] = step;
+                    }
+                    break;
+                case 3: {
+                    DrawItem copy = item(step);
+                    const bool owns = ItemVector::ownsSomething(copy);
+                    items.emplaceKnown(owns, std::move(copy)), model.push_back(step);
+                    break;
+                }
+                default:
+                    items.push_back(item(step)), model.push_back(step);
+                    break;
+            }
+            REQUIRE(items.size() == model.size());
+            for (std::size_t i = 0; i < model.size(); ++i)
+                REQUIRE(std::as_const(items)[i].viewIndex == model[i]);
+        }
+        const ItemVector copy(items);
+        for (const DrawItem& i : copy) CHECK(ItemVector::ownsSomething(i));  // a copy holds its own
+        items.clear();
+        CHECK(mesh.use_count() ==
+              1 + static_cast<long>(std::count_if(copy.begin(), copy.end(), [](const DrawItem& i) {
+                  return holdsPrimitive<DrawMesh>(i.primitive);
+              })));
+    }
+}
