@@ -11,6 +11,8 @@ layout(location = 3) in float vPattern;
 layout(location = 4) in float vNpcZ;
 layout(location = 5) in vec3 vLitFront;
 layout(location = 6) in vec3 vLitBack;
+layout(location = 7) in vec3 vSpecularFront;
+layout(location = 8) in vec3 vSpecularBack;
 
 layout(location = 0) out vec4 outColour;
 
@@ -85,7 +87,10 @@ void main() {
     // one style; phigs/src/vk/Renderer.cpp draws differing sides as two draws, each culling the other).
     vec3 side = useBack && !PATTERNED ? push.backColour.rgb : base;
     vec3 colour;
-    if (VERTEX_LIGHTING) {
+    if (VERTEX_LIGHTING && PATTERNED) {
+        // Gouraud on a pattern: the cell lit by the interpolated gain and specular term.
+        colour = back ? base * vLitBack + vSpecularBack : base * vLitFront + vSpecularFront;
+    } else if (VERTEX_LIGHTING) {
         colour = back ? vLitBack : vLitFront;
     } else if (FRAGMENT_SHADING != 0) {
         vec3 n;

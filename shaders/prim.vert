@@ -1,7 +1,8 @@
 #version 450
 // The one vertex shader of the PHIGS renderer: modelling (meshes only; other primitives arrive
 // in world coordinates), view orientation and mapping, workstation transform, screen offsets for
-// markers (pixels) and annotation text (NPC), and Gouraud lighting.
+// markers (pixels) and annotation text (NPC), and Gouraud lighting (of PATTERN interiors: the
+// gain and specular term the fragment shader applies to the pattern cell).
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
 
@@ -18,6 +19,8 @@ layout(location = 3) out float vPattern;
 layout(location = 4) out float vNpcZ;
 layout(location = 5) out vec3 vLitFront;
 layout(location = 6) out vec3 vLitBack;
+layout(location = 7) out vec3 vSpecularFront;
+layout(location = 8) out vec3 vSpecularBack;
 
 void main() {
     // Outputs are written, never read back: the renderer removes the stores the fragment shader
@@ -42,7 +45,18 @@ void main() {
     gl_Position = clip;
     vLitFront = vec3(0.0);
     vLitBack = vec3(0.0);
-    if (VERTEX_LIGHTING) {
+    vSpecularFront = vec3(0.0);
+    vSpecularBack = vec3(0.0);
+    if (VERTEX_LIGHTING && PATTERNED) {
+        // The pattern cell is the colour lit, known only per fragment. The reflectance equations
+        // are affine in the base colour, lit(c) = c * gain + specular: the vertices carry the gain
+        // and the specular term, and the fragment shader applies them to its cell.
+        vec3 eye = frame.views[viewIndex].eye.xyz;
+        vSpecularFront = lit(false, vec3(0.0), worldPoint, normal, eye);
+        vSpecularBack = lit(DISTINGUISH_BACK, vec3(0.0), worldPoint, -normal, eye);
+        vLitFront = lit(false, vec3(1.0), worldPoint, normal, eye) - vSpecularFront;
+        vLitBack = lit(DISTINGUISH_BACK, vec3(1.0), worldPoint, -normal, eye) - vSpecularBack;
+    } else if (VERTEX_LIGHTING) {
         vec3 eye = frame.views[viewIndex].eye.xyz;
         vLitFront = lit(false, colour, worldPoint, normal, eye);
         vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye);

@@ -5,8 +5,10 @@
  * in elements keep their model; light source and depth cue colours (random indices and models)
  * are answered SET as given and REALIZED as the clamped RGB drawn, their other REALIZED values
  * differing from SET exactly where the clamping rules say; PSEUDO and PSEUDO_N colour mapping
- * entries in a random model keep it and map a square's colour as the formulas say; and an HSV
- * and an HLS colour paint the right RGB pixels on the offscreen type (lavapipe). argv[1]: a
+ * entries in a random model keep it and map a square's colour as the formulas say; an HSV
+ * and an HLS colour paint the right RGB pixels on the offscreen type (lavapipe); and a random
+ * colour given in each model as an interior, polyline and vertex colour draws as its RGB on the
+ * offscreen type and the PDF type (pdftoppm), its element answering it as given. argv[1]: a
  * directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -514,6 +516,86 @@ static void mapping_picture(const char* dir, Pstore store) {
     }
 }
 
+/* The pixel at NPC (x, y) of a picture read back is `rgb`, within 2.5 / 255. */
+static int picture_shows(const Picture* p, double x, double y, const double rgb[3], Pint model,
+                         const char* what) {
+    const int i = (int)(x * p->side), j = (int)(p->height - y * p->side);
+    const unsigned char* c = p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
+    int ok = 1;
+    for (int k = 0; k < 3; ++k) ok = ok && fabs(c[k] - 255 * rgb[k]) <= 2.5;
+    if (!ok)
+        fprintf(stderr,
+                "  %s, %s in model %d: pixel at NPC (%.2f, %.2f) is %d %d %d, expected %.1f %.1f %.1f\n",
+                p->name, what, (int)model, x, y, c[0], c[1], c[2], 255 * rgb[0], 255 * rgb[1], 255 * rgb[2]);
+    return ok;
+}
+
+/* Direct colours in every model on the offscreen type and the PDF type alike: per model a random
+ * RGB colour given in that model as an interior colour, a polyline colour and the vertex colours
+ * of a fill area set with data draws as that RGB colour; the elements answer the components and
+ * model as given. */
+static void every_model_drawn(const char* dir, Pstore store) {
+    const PictureFiles files = picture_files(dir, "colour_models_targets");
+    for (int round = 0; round < 3; ++round) {
+        double rgb[4][3], given[4][3];
+        Picture p[2];
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(PSTYLE_SOLID);
+        pset_linewidth(8);
+        for (Pint m = PMODEL_RGB; m <= PMODEL_HLS; ++m) {
+            const double x = 0.05 + 0.24 * (m - 1);
+            double c[3];
+            Pint err = -1;
+            Pelem_data* data = NULL;
+            Pgcolr g;
+            Pptco3 corners[4];
+            Pfacet_vdata_list3 vdata;
+            Pfacet_data3 fdata;
+            random_vivid(rgb[m - 1]);
+            from_rgb(m, rgb[m - 1], c);
+            g.type = m;
+            g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+            /* What is drawn: the components as stored (single precision) converted. */
+            given[m - 1][0] = g.val.direct.x, given[m - 1][1] = g.val.direct.y,
+                      given[m - 1][2] = g.val.direct.z;
+            to_rgb(m, given[m - 1], rgb[m - 1]);
+            for (int k = 0; k < 3; ++k) rgb[m - 1][k] = clamp01(rgb[m - 1][k]);
+            pset_int_colr(&g);
+            square(x, 0.05);
+            pset_line_colr(&g);
+            pinq_cur_elem_content(store, &err, &data);
+            CHECK(err == 0 && data && data->colr.type == m && data->colr.val.direct.x == g.val.direct.x &&
+                  data->colr.val.direct.y == g.val.direct.y && data->colr.val.direct.z == g.val.direct.z);
+            {
+                Ppoint3 ends[2] = {{(Pfloat)x, 0.5f, 0}, {(Pfloat)(x + 0.2), 0.5f, 0}};
+                Ppoint_list3 line = {2, ends};
+                ppolyline3(&line);
+            }
+            for (int k = 0; k < 4; ++k) {
+                corners[k].point.x = (Pfloat)(x + (k == 1 || k == 2 ? 0.2 : 0));
+                corners[k].point.y = (Pfloat)(k >= 2 ? 0.85 : 0.6), corners[k].point.z = 0;
+                corners[k].colr.direct.x = g.val.direct.x, corners[k].colr.direct.y = g.val.direct.y,
+                corners[k].colr.direct.z = g.val.direct.z;
+            }
+            vdata.num_vertices = 4, vdata.vertex_data.ptcolrs = corners;
+            memset(&fdata, 0, sizeof fdata);
+            pfill_area_set3_data(PFACET_NONE, PEDGE_NONE, PVERT_COORD_COLOUR, m, &fdata, 1, NULL, &vdata);
+        }
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        for (int i = 0; i < 2; ++i) {
+            for (Pint m = PMODEL_RGB; m <= PMODEL_HLS && p[i].rgb; ++m) {
+                const double x = 0.15 + 0.24 * (m - 1);
+                CHECK(picture_shows(&p[i], x, 0.2, rgb[m - 1], m, "interior colour"));
+                CHECK(picture_shows(&p[i], x, 0.5, rgb[m - 1], m, "polyline colour"));
+                CHECK(picture_shows(&p[i], x, 0.72, rgb[m - 1], m, "vertex colours"));
+            }
+            free(p[i].rgb);
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512], svg[512];
@@ -531,6 +613,7 @@ int main(int argc, char** argv) {
     EXPECT_NO_ERROR(pclose_ws(1));
     picture(dir);
     mapping_picture(dir, store);
+    every_model_drawn(dir, store);
     pdel_store(store);
     pclose_phigs();
     return finish("test_colour_models");

@@ -2,9 +2,11 @@
  * and the PDF type (rasterised by pdftoppm at 144 dpi):
  * seeded random triangles, front or back facing, under every face distinguishing mode, face
  * culling mode and front and back interior style, show at their centre the front colour, the back colour
- * or the background exactly as the rules say; and a polyline set with data whose two vertex
- * colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its first
- * vertex's colour with PSD_NONE. argv[1]: a directory for the files. */
+ * or the background exactly as the rules say; seeded random squares wound either way under random
+ * front and back styles, face distinguishing and culling show a HOLLOW side's outline, in that
+ * side's colour, exactly when that side faces the viewer and is not culled; and a polyline set with data
+ * whose two vertex colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its
+ * first vertex's colour with PSD_NONE. argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -108,6 +110,98 @@ static void back_faces(void) {
     CHECK(filledBackUnderOpenFront >= 2); /* the sequence reaches the case */
 }
 
+/* The colour nearest `rgb` among the pixels within 3 of NPC (x, y) along the y axis: its largest
+ * channel difference, in 1/255. */
+static double nearest_along_y(const Picture* p, double x, double y, const double rgb[3]) {
+    double best = 1e9;
+    for (int d = -3; d <= 3; ++d) {
+        const unsigned char* c = pixel(p, x, y + d / p->side);
+        double worst = 0;
+        for (int k = 0; k < 3; ++k) worst = fmax(worst, fabs(c[k] - 255 * rgb[k]));
+        best = fmin(best, worst);
+    }
+    return best;
+}
+
+static void hollow_outlines(void) {
+    int backOutlines = 0, hiddenFrontOutlines = 0;
+    for (int round = 0; round < 16; ++round) {
+        double front[3], back[3];
+        /* Every fourth round a HOLLOW front seen from the back, every fourth a HOLLOW back shown. */
+        const int hollowFront = round % 4 == 1, hollowBack = round % 4 == 2;
+        const int backFacing = hollowFront || hollowBack || (int)(next_random() % 2);
+        const int distinguish = hollowFront || hollowBack || round % 3 != 0;
+        const Pcull_mode cull =
+            (Pcull_mode)(next_random() % 4 == 0 && !hollowFront && !hollowBack ? 1 + next_random() % 2
+                                                                               : PCULL_NONE);
+        const Pint_style styles[3] = {PSTYLE_HOLLOW, PSTYLE_SOLID, PSTYLE_EMPTY};
+        const Pint_style frontStyle = hollowFront ? PSTYLE_HOLLOW : styles[next_random() % 3];
+        const Pint_style backStyle = hollowBack    ? PSTYLE_HOLLOW
+                                     : hollowFront ? styles[1 + next_random() % 2]
+                                                   : styles[next_random() % 3];
+        const double x0 = random_real(0.2, 0.4), y0 = random_real(0.2, 0.4), side = random_real(0.2, 0.4);
+        /* Counter-clockwise seen from +z (front facing) or clockwise. */
+        Ppoint3 corners[4] = {{(Pfloat)x0, (Pfloat)y0, 0},
+                              {(Pfloat)(x0 + side), (Pfloat)y0, 0},
+                              {(Pfloat)(x0 + side), (Pfloat)(y0 + side), 0},
+                              {(Pfloat)x0, (Pfloat)(y0 + side), 0}};
+        Ppoint_list3 square = {4, corners};
+        Pgcolr f, b;
+        Picture p[2];
+        if (backFacing) {
+            const Ppoint3 t = corners[1];
+            corners[1] = corners[3], corners[3] = t;
+        }
+        /* Bright, far from the black background and from each other. */
+        do {
+            for (int k = 0; k < 3; ++k)
+                front[k] = (double)(128 + next_random() % 128u) / 255.0,
+                back[k] = (double)(next_random() % 256u) / 255.0;
+        } while (fabs(front[0] - back[0]) + fabs(front[1] - back[1]) + fabs(front[2] - back[2]) < 0.6 ||
+                 back[0] + back[1] + back[2] < 0.8);
+        f = direct(front), b = direct(back);
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(frontStyle);
+        pset_int_colr(&f);
+        pset_back_int_colr(&b);
+        pset_back_int_style(backStyle);
+        pset_face_disting_mode(distinguish ? PDISTING_YES : PDISTING_NO);
+        pset_face_cull_mode(cull);
+        pfill_area3(&square);
+        pclose_struct();
+        const int culled = (backFacing && cull == PCULL_BACKFACE) || (!backFacing && cull == PCULL_FRONTFACE);
+        const int useBack = backFacing && distinguish;
+        const Pint_style shown = useBack ? backStyle : frontStyle;
+        const double* colour = useBack ? back : front;
+        const int outline = !culled && shown == PSTYLE_HOLLOW;
+        backOutlines += outline && useBack;
+        hiddenFrontOutlines += !outline && backFacing && frontStyle == PSTYLE_HOLLOW;
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        for (int i = 0; i < 2; ++i) {
+            if (!p[i].rgb) continue;
+            /* The bottom edge's middle, and the middle of the square (a SOLID side covers both). */
+            const double x = x0 + side / 2;
+            if (shown == PSTYLE_SOLID && !culled) continue;
+            const double onEdge = nearest_along_y(&p[i], x, y0, colour);
+            const double otherSide = nearest_along_y(&p[i], x, y0, useBack ? front : back);
+            if (outline ? onEdge > 24 : onEdge < 48 || otherSide < 48) {
+                fprintf(
+                    stderr,
+                    "  %s: square %s, distinguishing %d, cull %d, styles %d / %d: outline %s (nearest %.0f, "
+                    "the other side's %.0f)\n",
+                    p[i].name, backFacing ? "back" : "front", distinguish, (int)cull, (int)frontStyle,
+                    (int)backStyle, outline ? "missing" : "drawn", onEdge, otherSide);
+                CHECK(0);
+            }
+            CHECK(pixel_is(&p[i], x, y0 + side / 2, NULL, "the middle of a square with an open side"));
+        }
+        for (int i = 0; i < 2; ++i) free(p[i].rgb);
+    }
+    CHECK(backOutlines >= 2); /* the sequence reaches the cases */
+    CHECK(hiddenFrontOutlines >= 2);
+}
+
 static void line_shading(void) {
     for (int round = 0; round < 12; ++round) {
         double c0[3], c1[3], mid[3];
@@ -153,6 +247,7 @@ int main(int argc, char** argv) {
     snprintf(errors, sizeof errors, "%s/plus_shading_errors.txt", dir);
     open_with_handler(errors);
     back_faces();
+    hollow_outlines();
     line_shading();
     pclose_phigs();
     return finish("test_plus_shading");

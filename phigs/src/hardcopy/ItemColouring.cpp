@@ -111,6 +111,20 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
     return lit(interior, useBack, backBase, centre, facetNormal);
 }
 
+ItemColouring::CellLighting ItemColouring::patternLighting(const InteriorStyleSet& interior,
+                                                           std::vector<FacetVertex> vertices,
+                                                           bool vertexNormals, bool back) const {
+    // The side's base colour is the cell's whichever side shows (front, back, vertex colours).
+    auto litWith = [&](float base) {
+        InteriorStyleSet in = interior;
+        in.colour = in.backColour = glm::vec3(base);
+        for (FacetVertex& v : vertices) v.colour = glm::vec3(base);
+        return facet(in, vertices, vertexNormals, back);
+    };
+    const glm::vec3 offset = litWith(0.0f);
+    return {litWith(1.0f) - offset, offset};
+}
+
 glm::vec3 ItemColouring::finish(glm::vec3 colour, double npcZ) const {
     if (cue_) {
         const double range = std::max(cue_->frontPlane - cue_->backPlane, 1e-9);

@@ -32,6 +32,13 @@ void FacetPaint::styleFor(const InteriorStyleSet& in, int facing) {
     backPattern = back && in.distinguishBackFaces;
 }
 
+void FacetPaint::paintFor(const ItemColouring& colouring, const InteriorStyleSet& in,
+                          const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing) {
+    colour = colouring.facet(in, vertices, vertexNormals, facing < 0);
+    styleFor(in, facing);
+    if (pattern) cells = colouring.patternLighting(in, vertices, vertexNormals, facing < 0);
+}
+
 bool FacetPaint::unfilled(const InteriorStyleSet& in, int facing) {
     return facing < 0 ? !in.fillsBackFaces() : facing > 0 && !in.fillsFrontFaces();
 }
@@ -63,7 +70,8 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
 }
 
 std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
-    const std::vector<std::vector<glm::dvec3>>& world, double depth, int side) const {
+    const std::vector<std::vector<glm::dvec3>>& world, double depth, int side,
+    const ItemColouring::CellLighting& lighting) const {
     // Three well spread points of the facet: the first, the farthest from it, and the one
     // farthest from the line through those two.
     std::vector<glm::dvec3> points;
@@ -97,7 +105,8 @@ std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
     const glm::dvec2 c0 = map.at(points[0]), c1 = map.at(x1), c2 = map.at(x2);
     auto result = std::make_shared<PagePattern>();
     result->cells = *pattern_[side];
-    for (glm::vec3& colour : result->cells.colours) colour = colouring_.finish(colour, depth);
+    for (glm::vec3& colour : result->cells.colours)
+        colour = colouring_.finish(colour * lighting.gain + lighting.offset, depth);
     result->u = inverse * glm::dvec3(c0.x, c1.x, c2.x);
     result->v = inverse * glm::dvec3(c0.y, c1.y, c2.y);
     return result;
@@ -235,7 +244,7 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     f.hatch = paint.hatch;
     f.hatchIndex = paint.hatchIndex;
     if (const int side = paint.backPattern ? 1 : 0; paint.pattern && !paint.coverOnly && patternMap_[side])
-        f.pattern = pagePattern(world, depth / double(count), side);
+        f.pattern = pagePattern(world, depth / double(count), side, paint.cells);
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;

@@ -60,9 +60,14 @@ void ItemProjector::operator()(const DrawFillArea& fill) {
     std::vector<std::vector<glm::dvec3>> world;
     for (const auto& contour : fill.contours) world.push_back(toWorld(contour));
     const InteriorStyleSet& in = fill.interior;
-    // A HOLLOW front draws the boundary; each side fills by its own style (ItemGeometry does so).
-    if (in.style == InteriorStyle::Hollow)
-        for (const auto& contour : world) pipeline_.line(contour, true, in.colour, LineType::Solid, 1.0f);
+    // Each HOLLOW side draws the boundary in its colour when it shows; each side fills by its own
+    // style (ItemGeometry and the renderer do so).
+    glm::vec3 outline;
+    if (render::hollowOutline(in, 0, outline) ||
+        render::hollowOutline(
+            in, pipeline_.sideShown(render::fillAreaPlane(fill, pipeline_.item().modelTransform.get())),
+            outline))
+        for (const auto& contour : world) pipeline_.line(contour, true, outline, LineType::Solid, 1.0f);
     if (in.fillsFrontFaces() || in.fillsBackFaces()) {
         if (fill.vertexColours.empty() && fill.vertexNormals.empty())
             fillInterior(fill, world);
@@ -105,9 +110,8 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     const InteriorStyleSet& in = fill.interior;
     if (FacetPaint::unfilled(in, facing)) return;
     FacetPaint paint;
-    paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
+    paint.paintFor(pipeline_.colouring(), in, vertices, true, facing);
     paint.opacity = opacityOf(in, facing < 0);
-    paint.styleFor(in, facing);
     pipeline_.facet(world, paint);
 }
 
@@ -129,9 +133,8 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
             const int facing = pipeline_.facing(triangle[0], triangle[1], triangle[2]);
             if (FacetPaint::unfilled(in, facing)) continue;
             FacetPaint paint;
-            paint.colour = pipeline_.colouring().facet(in, vertices, true, facing < 0);
+            paint.paintFor(pipeline_.colouring(), in, vertices, true, facing);
             paint.opacity = opacityOf(in, facing < 0);
-            paint.styleFor(in, facing);
             paint.seam = true;
             pipeline_.facet({triangle}, paint);
         }

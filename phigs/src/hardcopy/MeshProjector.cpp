@@ -68,10 +68,9 @@ void MeshProjector::facets(bool coverOnly) {
         paint.seam = true;
         if (!coverOnly) {
             const bool back = facing < 0;
-            paint.colour = pipeline_.colouring().facet(in, vertices, normals, back);
+            paint.paintFor(pipeline_.colouring(), in, vertices, normals, facing);
             const Reflectance& r = back && in.distinguishBackFaces ? in.backProperties : in.properties;
             paint.opacity = 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
-            paint.styleFor(in, facing);
         }
         for (int k = 0; k < 3; ++k) triangle[0][std::size_t(k)] = vertices[std::size_t(k)].position;
         pipeline_.facet(triangle, paint);

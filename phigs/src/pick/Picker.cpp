@@ -3,6 +3,7 @@
 #include "geom/Evaluate.h"
 
 #include "geom/SurfaceIntersector.h"
+#include "phigs/render/ItemGeometry.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -182,6 +183,25 @@ std::optional<double> regionHit(const Aperture& ap, const std::vector<std::vecto
     return best;
 }
 
+/// A fill area under the aperture: the side the view shows by its own interior style (its back's
+/// with face distinguishing on), a culled side not at all: the interior counts for SOLID, HATCH and
+/// PATTERN, the boundary for a HOLLOW side (render::hollowOutline, as drawn) and for
+/// visible edges (drawn whichever side shows).
+std::optional<double> fillAreaHit(const Aperture& ap, const DrawItem& item, const DrawView& view,
+                                  const DrawFillArea& f,
+                                  const std::vector<std::vector<Projected>>& contours) {
+    const InteriorStyleSet& in = *f.interior;
+    const int side = render::sideShown(render::fillAreaPlane(f, item.modelTransform.get()),
+                                       view.mapping * view.orientation);
+    const bool culled =
+        (side > 0 && in.cull == CullMode::FrontFaces) || (side < 0 && in.cull == CullMode::BackFaces);
+    const InteriorStyle s = in.styleOf(side < 0);
+    const bool interior = !culled && s != InteriorStyle::Hollow && s != InteriorStyle::Empty;
+    glm::vec3 colour;
+    const bool outline = render::hollowOutline(in, 0, colour) || render::hollowOutline(in, side, colour);
+    return regionHit(ap, contours, interior, outline || f.edges->visible);
+}
+
 /// Nearest triangle of a mesh overlapping the aperture.
 std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& pts,
                               const std::vector<std::uint32_t>& triangles) {
@@ -357,9 +377,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
             } else if constexpr (std::is_same_v<T, DrawFillArea>) {
                 std::vector<std::vector<Projected>> contours;
                 for (const auto& c : p.contours) contours.push_back(projectAll(m, c));
-                const InteriorStyle s = p.interior->style;
-                const bool interior = s != InteriorStyle::Hollow && s != InteriorStyle::Empty;
-                z = regionHit(ap, contours, interior, s == InteriorStyle::Hollow || p.edges->visible);
+                z = fillAreaHit(ap, item, view, p, contours);
             } else if constexpr (std::is_same_v<T, DrawText>) {
                 std::vector<std::vector<Projected>> box(1);
                 const glm::dvec2 up =

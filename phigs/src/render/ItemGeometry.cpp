@@ -6,6 +6,7 @@
 #include "phigs/render/Triangulation.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -91,10 +92,9 @@ public:
             for (const auto& p : c) contours.back().push_back(apply(model_, p));
         }
         const InteriorStyleSet& in = f.interior;
-        // A HOLLOW front draws the boundary; the triangles go when either side fills (a distinguished
-        // back may fill under a HOLLOW or EMPTY front), each side culled by its own style.
-        if (in.style == InteriorStyle::Hollow)
-            lineStrips(contours, true, PartRole::Edge, in.colour, LineType::Solid, 1.0f);
+        outlines(f, contours);
+        // The triangles go when either side fills (a distinguished back may fill under a HOLLOW or
+        // EMPTY front), each side culled by its own style.
         if (in.fillsFrontFaces() || in.fillsBackFaces()) interior(f, contours);
         if (f.edges->visible)
             lineStrips(contours, true, PartRole::Edge, f.edges->colour, f.edges->type, f.edges->width);
@@ -148,28 +148,32 @@ private:
         geometry.vertices.push_back({glm::vec3(p), normal, colour, offset, pattern});
     }
 
+    /// Each HOLLOW side draws the boundary in its own colour when it shows (a culled side never): one
+    /// part for both sides when they draw alike, else a part per side for the renderer to choose.
+    void outlines(const DrawFillArea& f, const std::vector<std::vector<glm::dvec3>>& contours) {
+        const InteriorStyleSet& in = f.interior;
+        glm::vec3 colour;
+        if (hollowOutline(in, 0, colour)) {
+            lineStrips(contours, true, PartRole::Edge, colour, LineType::Solid, 1.0f);
+            return;
+        }
+        const glm::dvec4 plane = fillAreaPlane(f, model_);
+        for (const int side : {1, -1}) {
+            if (!hollowOutline(in, side, colour)) continue;
+            lineStrips(contours, true, PartRole::Edge, colour, LineType::Solid, 1.0f);
+            geometry.parts.back().side = side;
+            geometry.parts.back().sidePlane = plane;
+        }
+    }
+
     void interior(const DrawFillArea& f, const std::vector<std::vector<glm::dvec3>>& contours) {
-        // Newell's normal of all contours gives the plane even for concave outlines.
-        glm::dvec3 normal(0.0), centre(0.0);
-        std::size_t count = 0;
+        const glm::dvec3 normal(fillAreaPlane(f, model_));
+        if (glm::length(normal) == 0.0) return;
+        glm::dvec3 centre(0.0);
         std::vector<glm::dvec3> flat;
         for (const auto& c : contours)
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                const glm::dvec3 &a = c[i], &b = c[(i + 1) % c.size()];
-                normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                     (a.x - b.x) * (a.y + b.y));
-                centre += a;
-                ++count;
-                flat.push_back(a);
-            }
-        if (count < 3 || glm::length(normal) == 0.0) return;
-        normal = glm::normalize(normal);
-        if (glm::length(f.facetNormal) > 0.0) {
-            const glm::dvec3 given = glm::normalize(
-                glm::dvec3(glm::transpose(glm::inverse(model_)) * glm::dvec4(f.facetNormal, 0.0)));
-            if (glm::dot(given, normal) < 0.0) normal = -normal;
-        }
-        centre /= double(count);
+            for (const glm::dvec3& p : c) centre += p, flat.push_back(p);
+        centre /= double(flat.size());
         const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
         const glm::dvec3 u = glm::normalize(glm::cross(helper, normal)), v = glm::cross(normal, u);
         std::vector<std::vector<glm::dvec2>> plane;
@@ -275,6 +279,44 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
         },
         item.primitive);
     return std::move(b.geometry);
+}
+
+glm::dvec4 fillAreaPlane(const DrawFillArea& fill, const glm::dmat4& model) {
+    glm::dvec3 normal(0.0), centre(0.0);
+    std::size_t count = 0;
+    for (const auto& contour : fill.contours)
+        for (std::size_t i = 0; i < contour.size(); ++i) {
+            const glm::dvec3 a = apply(model, contour[i]),
+                             b = apply(model, contour[(i + 1) % contour.size()]);
+            normal +=
+                glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+            centre += a;
+            ++count;
+        }
+    if (count < 3 || !(glm::length(normal) > 0.0)) return glm::dvec4(0.0);
+    normal = glm::normalize(normal);
+    if (glm::length(fill.facetNormal) > 0.0) {
+        const glm::dvec3 given =
+            glm::dvec3(glm::transpose(glm::inverse(model)) * glm::dvec4(fill.facetNormal, 0.0));
+        if (glm::dot(given, normal) < 0.0) normal = -normal;
+    }
+    return glm::dvec4(normal, -glm::dot(normal, centre / double(count)));
+}
+
+bool hollowOutline(const InteriorStyleSet& in, int side, glm::vec3& colour) {
+    const bool front = in.style == InteriorStyle::Hollow && in.cull != CullMode::FrontFaces;
+    const bool back = in.styleOf(true) == InteriorStyle::Hollow && in.cull != CullMode::BackFaces;
+    const bool alike = front && back && (!in.distinguishBackFaces || in.backColour == in.colour);
+    if (!(side > 0 ? front : side < 0 ? back : alike)) return false;
+    colour = side < 0 && in.distinguishBackFaces ? in.backColour : in.colour;
+    return true;
+}
+
+int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc) {
+    // The viewer in world coordinates: NPC's point at infinity toward +z brought back (a direction
+    // for a parallel view, the eye point with w > 0 for a perspective one).
+    const double s = glm::dot(plane, glm::inverse(worldToNpc) * glm::dvec4(0, 0, 1, 0));
+    return s > 0.0 ? 1 : s < 0.0 ? -1 : 0;
 }
 
 std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels) {

@@ -688,8 +688,10 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         if (!it->second.vertices) continue;
         const InteriorStyleSet* interior = nullptr;
         if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
+        const glm::dmat4 worldToNpc = view.mapping * view.orientation;
         for (const auto& part : it->second.parts)
-            addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
+            if (part.side == 0 || render::sideShown(part.sidePlane, worldToNpc) == part.side)
+                addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
     }
 
     // Free what this frame no longer draws (the previous frame has finished with it).

@@ -22,6 +22,13 @@ struct FacetVertex {
 /// (at its centroid, Gouraud as the mean of its vertices) rather than per fragment.
 class ItemColouring {
 public:
+    /// How a PATTERN facet's cells are lit: the reflectance equations are affine in the base
+    /// colour, so a cell of colour c shows c * gain + offset (then depth cued and highlighted).
+    struct CellLighting {
+        glm::vec3 gain{1.0f};
+        glm::vec3 offset{0.0f};
+    };
+
     ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec3& eye,
                   const glm::vec4& highlight);
 
@@ -29,6 +36,9 @@ public:
     /// normals that drive the shading method (else the facet is flat shaded).
     glm::vec3 facet(const InteriorStyleSet& interior, const std::vector<FacetVertex>& vertices,
                     bool vertexNormals, bool back) const;
+    /// The lighting of a PATTERN facet's cells: facet() with the pattern cell as the base colour.
+    CellLighting patternLighting(const InteriorStyleSet& interior, std::vector<FacetVertex> vertices,
+                                 bool vertexNormals, bool back) const;
     /// Depth cueing at NPC z, then highlighting, clamped: what every colour goes through last.
     glm::vec3 finish(glm::vec3 colour, double npcZ) const;
     /// Whether the item is depth cued (its lines then change colour along their length).

@@ -5,6 +5,7 @@
 #include "phigs/hardcopy/PageMapping.h"
 #include "phigs/hardcopy/ProjectedScene.h"
 #include "phigs/hardcopy/VectorOptions.h"
+#include "phigs/render/ItemGeometry.h"
 #include "phigs/render/PatternMapping.h"
 #include "phigs/traverse/DrawList.h"
 
@@ -24,11 +25,16 @@ struct FacetPaint {
     int hatchIndex = 1;
     bool pattern = false;      ///< a PATTERN interior: the item's pattern, when it has one, not `colour`
     bool backPattern = false;  ///< the pattern is the distinguished back style's, not the front's
+    ItemColouring::CellLighting cells;  ///< a PATTERN interior: how its cells are lit
     bool coverOnly = false;
     bool seam = false;
     /// The hatch or pattern of the side a facet shows (facing < 0: its back; the back style when
     /// face distinguishing is on).
     void styleFor(const InteriorStyleSet& in, int facing);
+    /// The colour of a facet facing that way (ItemColouring::facet), its style (styleFor), and
+    /// for a PATTERN side the lighting of its cells.
+    void paintFor(const ItemColouring& colouring, const InteriorStyleSet& in,
+                  const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing);
     /// Whether a facet facing that way is not filled: its side culled, or of a HOLLOW or EMPTY style.
     static bool unfilled(const InteriorStyleSet& in, int facing);
 };
@@ -56,6 +62,8 @@ public:
     /// +1 when the world triangle a, b, c is counter-clockwise on screen (its front), -1 when
     /// clockwise, 0 when it cannot tell (edge on, or reaching behind the eye).
     int facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) const;
+    /// The side of a world plane (positive on its front) the item's view shows: +1, -1, 0 edge on.
+    int sideShown(const glm::dvec4& plane) const { return render::sideShown(plane, worldToNpc_); }
     /// Homogeneous NPC of a world point.
     glm::dvec4 toNpc(const glm::dvec3& world) const { return worldToNpc_ * glm::dvec4(world, 1.0); }
     /// Whether a world point survives the model clipping volume.
@@ -70,9 +78,11 @@ public:
 
 private:
     /// The page pattern of a facet given by its world contours (the item's map at three of its
-    /// points; exact under parallel projection, fitted at those points under perspective).
+    /// points; exact under parallel projection, fitted at those points under perspective), its
+    /// cells lit by `lighting`.
     std::shared_ptr<const PagePattern> pagePattern(const std::vector<std::vector<glm::dvec3>>& world,
-                                                   double depth, int side) const;
+                                                   double depth, int side,
+                                                   const ItemColouring::CellLighting& lighting) const;
     void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
     /// A view-clipped run of a line with vertex colours (see line()), as pieces of one colour.
     void colouredRun(const std::vector<ClipVertex>& run, std::span<const glm::vec3> colours,

@@ -38,6 +38,10 @@ struct GeometryPart {
     bool offsetInNpc = false;    ///< offsets are NPC units (annotation text), else pixels
     /// `pattern` is a length in modelling units (mesh iso-lines), else pixels on screen.
     bool patternInModelUnits = false;
+    /// The outline of a HOLLOW side of a fill area: +1 of its front, -1 of its back (drawn only
+    /// when sideShown(sidePlane, view) says that side shows), 0 of whichever side shows.
+    int side = 0;
+    glm::dvec4 sidePlane{0.0};  ///< the fill area's world plane, positive on its front side
 };
 
 /// The CPU-side geometry of one non-mesh draw item (the "describe" step): world coordinates, the
@@ -63,6 +67,20 @@ MeshIndices meshIndices(const MeshData& mesh);
 /// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero), then a
 /// copy of each iso-line's vertices whose `pattern` is the length along that line.
 std::vector<RenderVertex> meshVertices(const MeshData& mesh);
+
+/// A fill area's world plane (unit normal, -normal . point), positive on its front: the side
+/// Newell's normal of the world contours points to (even for concave outlines), turned to the
+/// given facet normal; zero when the contours span no plane. The renderers wind its triangles
+/// counter-clockwise about that normal.
+glm::dvec4 fillAreaPlane(const DrawFillArea& fill, const glm::dmat4& model);
+/// The side of a world plane (positive on its front) a view shows: +1 the front, -1 the back, 0
+/// edge on. worldToNpc: the view's mapping times its orientation (the viewer is at NPC z = +inf).
+int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc);
+
+/// Whether a fill area's side draws its boundary (a HOLLOW style, not culled), and in which colour:
+/// side +1 the front, -1 the back (its own colour with face distinguishing on), 0 seen edge on
+/// (drawn only when both sides draw it alike). False leaves `colour` alone.
+bool hollowOutline(const InteriorStyleSet& in, int side, glm::vec3& colour);
 
 /// A content hash of a non-mesh item and the transforms its geometry depends on, to key caches.
 std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels);
