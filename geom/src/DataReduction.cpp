@@ -422,10 +422,8 @@ public:
             // Every knot left failed against the accumulated local fits. A global best fit to the
             // original on the knots now left usually lowers the error everywhere; if it keeps the
             // tolerance, the knots that failed get another chance. Not where the loop started from
-            // the linear stage's state (refitRounds false), itself a global best fit: there the
-            // refit and the second round are fits for nothing (on 10 random members of each
-            // generated class of degrees 3-7, the long curve and noisy data, the second round
-            // removed one knot in all; the refit and its check cost 2-10% of the time).
+            // the linear stage's state (refitRounds false), itself a global best fit: there a
+            // second round almost never removes a knot (see geom/ALGORITHMS.md).
             if (!measuring_ || !refitRounds_ || removed_ == removedBefore || removed_ >= o_.maxRemovals ||
                 round >= 4)
                 break;
@@ -1496,10 +1494,10 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
     // On a refined curve the removal loop runs too (from the linear stage's state) and runs
     // first: the search looks only below the count it reached, where on refined curves it
     // rarely has anything to find (probes above it were fits and measurements for nothing).
-    // Where every knot the loop left weighs more than the cutoff, no fit with fewer points keeps
-    // the tolerance either (see everyKnotPastCutoff): on the refined classes of degrees 2-7 and
-    // the long curve the loop recovers the simpler curve's knots, the search below it found
-    // nothing on 20 random members of each, and its probe cost 10-20% of the time.
+    // Where every knot the loop left weighs more than the cutoff, the search below it is not run
+    // (see everyKnotPastCutoff): on refined curves the loop recovers the simpler curve's knots,
+    // and a probe below them is a fit and a measurement that rarely finds anything. This trades
+    // a rare point for time; the error bound is unchanged (geom/ALGORITHMS.md).
     auto belowLoop = [&] {
         const Curve& left = loopCurve();
         ceiling = std::min(ceiling, left.points.size());

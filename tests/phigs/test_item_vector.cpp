@@ -75,6 +75,14 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
                         model[at] = step;
                     }
                     break;
+                case 8:
+                    // Appending one of its own items, whether or not the storage must grow.
+                    if (!items.empty()) {
+                        const auto at = static_cast<std::size_t>(pick(0, int(items.size()) - 1));
+                        items.push_back(std::as_const(items)[at]), model.push_back(model[at]);
+                        break;
+                    }
+                    [[fallthrough]];
                 case 3: {
                     DrawItem copy = item(step);
                     const bool owns = ItemVector::ownsSomething(copy);

@@ -191,6 +191,8 @@ double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
                 mesh(m, p, model);
             else if constexpr (std::is_same_v<T, DrawText>)
                 text(m, item, p);
+            else
+                static_assert(kUnhandledPrimitive<T>);
         },
         item.primitive);
     return m.best;

@@ -105,10 +105,12 @@ bool PickBoundsTree::modellingBox(const DrawItem& item, glm::dvec3& lo, glm::dve
                     grow(lo, hi, it->second.lo);
                     grow(lo, hi, it->second.hi);
                 }
-            } else {
+            } else if constexpr (std::is_same_v<T, DrawPolymarker> || std::is_same_v<T, DrawText>) {
                 // Markers grow with the marker size and the surface's pixels, annotation text lives
                 // in NPC: such items are tested at every pick.
                 bounded = false;
+            } else {
+                static_assert(kUnhandledPrimitive<T>);
             }
         },
         item.primitive);

@@ -429,6 +429,8 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                         if (const auto e = polylineHit(ap, pts, false); e && (!z || *e > *z)) z = e;
                     }
                 }
+            } else {
+                static_assert(kUnhandledPrimitive<T>);
             }
             if (z) hit = PickHit{0, *z, std::nullopt};
         },

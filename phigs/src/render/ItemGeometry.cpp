@@ -276,6 +276,8 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
                 b.fillArea(p);
             else if constexpr (std::is_same_v<T, DrawText>)
                 b.text(p);
+            else if constexpr (!std::is_same_v<T, DrawMesh>)  // meshes are drawn from their own buffers
+                static_assert(kUnhandledPrimitive<T>);
         },
         item.primitive);
     return std::move(b.geometry);
@@ -315,7 +317,9 @@ bool hollowOutline(const InteriorStyleSet& in, int side, glm::vec3& colour) {
 int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc) {
     // The viewer in world coordinates: NPC's point at infinity toward +z brought back (a direction
     // for a parallel view, the eye point with w > 0 for a perspective one).
-    const double s = glm::dot(plane, glm::inverse(worldToNpc) * glm::dvec4(0, 0, 1, 0));
+    const glm::dvec4 viewer = glm::inverse(worldToNpc) * glm::dvec4(0, 0, 1, 0);
+    // A point with w < 0 is the same point with every coordinate negated.
+    const double s = glm::dot(plane, viewer) * (viewer.w < 0.0 ? -1.0 : 1.0);
     return s > 0.0 ? 1 : s < 0.0 ? -1 : 0;
 }
 
@@ -350,6 +354,8 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
                 h.value(p.annotation);
                 h.value(p.annotationOffset);
                 h.value(p.style);
+            } else if constexpr (!std::is_same_v<T, DrawMesh>) {  // meshes: keyed by their own buffers
+                static_assert(kUnhandledPrimitive<T>);
             }
         },
         item.primitive);

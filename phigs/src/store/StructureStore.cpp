@@ -330,6 +330,7 @@ void StructureStore::copyAllElementsFromStructure(int id) {
         copies.push_back(source->elements.element(i));
         checkElement(copies.back(), *open_, function);
     }
+    checkSerials(copies.size());
     Structure& s = *openStructure_;
     if (anyExecute(*source, 0, source->elements.size())) executesChanged();
     for (auto& e : copies)
@@ -490,6 +491,9 @@ void StructureStore::changeStructureReferences(int original, int result) {
         raise(log_, errors::StructureCycle, function,
               "references to " + std::to_string(original) + " redirected to " + std::to_string(result));
     if (!referenced(original) && !postedAnywhere(original)) return;
+    std::size_t elements = 0;  // at most this many executes are replaced
+    for (const auto& entry : structures_) elements += entry.second.elements.size();
+    checkSerials(elements);
     executesChanged();
     createIfMissing(result);
     for (auto& [id, s] : structures_) {
@@ -654,6 +658,9 @@ void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>
     }
     if (hasCycle(graph))
         raise(log_, errors::StructureCycle, function, "the retrieved network would be cyclic");
+    std::size_t retrieved = 0;
+    for (const auto& entry : contents) retrieved += entry.second.size();
+    checkSerials(retrieved);
     executesChanged();
     for (const auto& [id, elements] : contents) {
         Structure& s = createIfMissing(id);

@@ -23,7 +23,8 @@ struct PrimitiveOwns {
 
 bool ItemVector::ownsSomething(const DrawItem& item) {
     // Every member of DrawItem that may own is asked: a new one must be added here.
-    static_assert(sizeof(DrawItem) <= 136, "a new DrawItem member: is it asked below?");
+    static_assert(sizeof(DrawItem) == 136 && sizeof(DrawPolyline) == 48 && sizeof(DrawPolymarker) == 24,
+                  "DrawItem or a primitive changed: is every member that may own asked below?");
     return item.modelTransform.owned() || item.source.path.ownsPrefix() || item.modelClipPlanes.owned() ||
            ownsSomething(item.primitive);
 }
@@ -32,15 +33,22 @@ bool ItemVector::ownsSomething(const DrawPrimitive& primitive) {
     return std::visit(PrimitiveOwns{}, primitive);
 }
 
-void ItemVector::grow(std::size_t count) {
-    static_assert(std::is_nothrow_move_constructible_v<DrawItem>);
-    auto* fresh = static_cast<DrawItem*>(
+DrawItem* ItemVector::allocate(std::size_t count) {
+    return static_cast<DrawItem*>(
         ::operator new (count * sizeof(DrawItem), std::align_val_t{alignof(DrawItem)}));
+}
+
+void ItemVector::deallocate(DrawItem* items) {
+    ::operator delete (items, std::align_val_t{alignof(DrawItem)});
+}
+
+void ItemVector::relocate(DrawItem* fresh, std::size_t count) {
+    static_assert(std::is_nothrow_move_constructible_v<DrawItem>);
     for (std::size_t i = 0; i < size_; ++i) {
         ::new (static_cast<void*>(fresh + i)) DrawItem(std::move(data_[i]));
         data_[i].~DrawItem();
     }
-    ::operator delete (data_, std::align_val_t{alignof(DrawItem)});
+    deallocate(data_);
     data_ = fresh;
     capacity_ = count;
 }

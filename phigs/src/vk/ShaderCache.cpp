@@ -90,7 +90,8 @@ std::filesystem::path ShaderCache::fileFor(std::span<const std::uint32_t> input,
 std::optional<ShaderCache::Pair> ShaderCache::load(std::span<const std::uint32_t> input,
                                                    std::string_view tag) const {
     if (!enabled()) return std::nullopt;
-    std::ifstream in(fileFor(input, tag), std::ios::binary);
+    const std::filesystem::path path = fileFor(input, tag);
+    std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::uint32_t header[kHeaderWords];
     if (!in.read(reinterpret_cast<char*>(header), sizeof header)) return std::nullopt;
@@ -99,6 +100,10 @@ std::optional<ShaderCache::Pair> ShaderCache::load(std::span<const std::uint32_t
         getHash(header + 4) != h[1] || header[6] != std::uint32_t(input.size()) ||
         header[7] > kMaxModuleWords || header[8] > kMaxModuleWords)
         return std::nullopt;
+    // The file must hold exactly what its header says before anything is allocated for it.
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error || size != (kHeaderWords + std::uintmax_t(header[7]) + header[8]) * 4) return std::nullopt;
     Pair pair;
     pair.vertex.resize(header[7]);
     pair.fragment.resize(header[8]);

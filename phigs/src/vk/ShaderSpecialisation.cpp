@@ -83,6 +83,22 @@ void freezeConstants(spvtools::Optimizer& optimizer, std::span<const Specialisat
         .RegisterPerformancePasses();
 }
 
+void registerFragmentPasses(spvtools::Optimizer& optimizer, std::span<const SpecialisationValue> values) {
+    freezeConstants(optimizer, values);
+    optimizer.RegisterPass(spvtools::CreateRemoveUnusedInterfaceVariablesPass());
+}
+
+/// The passes for the vertex stage, keeping only the outputs in the two sets (they are read when
+/// the optimizer runs, not now).
+void registerVertexPasses(spvtools::Optimizer& optimizer, std::span<const SpecialisationValue> values,
+                          std::unordered_set<std::uint32_t>& liveLocations,
+                          std::unordered_set<std::uint32_t>& liveBuiltins) {
+    freezeConstants(optimizer, values);
+    optimizer.RegisterPass(spvtools::CreateEliminateDeadOutputStoresPass(&liveLocations, &liveBuiltins))
+        .RegisterPass(spvtools::CreateAggressiveDCEPass())
+        .RegisterPass(spvtools::CreateRemoveUnusedInterfaceVariablesPass());
+}
+
 }  // namespace
 
 SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
@@ -91,10 +107,20 @@ SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
 
 namespace {
 
-/// What the passes below make of their input depends on SPIRV-Tools' version and on them: a
-/// change to either (bump the number) makes the files of the disk cache misses.
+/// What the passes make of their input depends on SPIRV-Tools' version and on the passes: the
+/// tag names both (the list of passes as registered), so a change to either turns the disk
+/// cache's files into misses. The format number covers changes to the words of cacheInput.
 std::string cacheTag() {
-    return std::string("phigs specialise 1; ") + spvSoftwareVersionDetailsString();
+    std::string tag = std::string("phigs specialise 1; ") + spvSoftwareVersionDetailsString();
+    std::unordered_set<std::uint32_t> noLocations, noBuiltins;
+    spvtools::Optimizer fragment(SPV_ENV_VULKAN_1_1), vertex(SPV_ENV_VULKAN_1_1);
+    registerFragmentPasses(fragment, {});
+    registerVertexPasses(vertex, {}, noLocations, noBuiltins);
+    for (const spvtools::Optimizer* optimizer : {&fragment, &vertex}) {
+        tag += ";";
+        for (const char* name : optimizer->GetPassNames()) tag += std::string(" ") + name;
+    }
+    return tag;
 }
 
 /// The inputs as one word sequence for the disk cache: each part's length, then the part.
@@ -169,8 +195,7 @@ SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
     std::unordered_set<std::uint32_t> liveLocations, liveBuiltins;
     {
         spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
-        freezeConstants(optimizer, values);
-        optimizer.RegisterPass(spvtools::CreateRemoveUnusedInterfaceVariablesPass());
+        registerFragmentPasses(optimizer, values);
         out.fragment = run(optimizer, fragment, "fragment");
     }
     {
@@ -179,10 +204,7 @@ SpecialisedStages specialiseUncached(std::span<const std::uint32_t> vertex,
         // The rasteriser, not the fragment shader, reads these.
         liveBuiltins.insert({kBuiltInPosition, kBuiltInPointSize});
         spvtools::Optimizer optimizer(SPV_ENV_VULKAN_1_1);
-        freezeConstants(optimizer, values);
-        optimizer.RegisterPass(spvtools::CreateEliminateDeadOutputStoresPass(&liveLocations, &liveBuiltins))
-            .RegisterPass(spvtools::CreateAggressiveDCEPass())
-            .RegisterPass(spvtools::CreateRemoveUnusedInterfaceVariablesPass());
+        registerVertexPasses(optimizer, values, liveLocations, liveBuiltins);
         out.vertex = run(optimizer, vertex, "vertex");
     }
     out.vertexInputLocations = inputLocations(out.vertex);

@@ -76,6 +76,9 @@ using StoredPayload = std::conditional_t<BoxedPayload<T>, std::shared_ptr<const 
 /// element for them), and one 12-byte slot (serial, place, payload family) per element.
 class ElementArena {
 public:
+    /// Throws when `serial` does not fit a slot; an edit of many elements asks for its last
+    /// serial before it changes anything.
+    static void checkSerial(std::uint64_t serial);
     ElementArena() = default;
     ElementArena(ElementArena&& other) noexcept { swap(other); }
     ElementArena& operator=(ElementArena&& other) noexcept {
@@ -172,8 +175,6 @@ private:
         }
     };
     static_assert(sizeof(Slot) == 12);
-    /// Throws when `serial` does not fit a slot (before anything changes).
-    static void checkSerial(std::uint64_t serial);
 
     template <class T>
     const T* object(std::uint32_t offset) const {

@@ -164,6 +164,8 @@ private:
     void settleVersions() const;
     void forgetVersions(int id) { subtreeVersions_.erase(id); }
     std::uint64_t nextSerial() { return ++serial_; }
+    /// Throws, before anything changes, when `count` more serials would not fit an element slot.
+    void checkSerials(std::size_t count) const { ElementArena::checkSerial(serial_ + count); }
     void requireOpen(const char* function) const;
     void checkElement(const Element& e, int into, const char* function) const;
     void removeReferencesTo(int id);

@@ -128,6 +128,11 @@ using HeldAs =
     std::conditional_t<std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText>, ItemRef<T>, T>;
 }  // namespace detail
 
+/// False for every T: a visitor's last `else static_assert(kUnhandledPrimitive<T>)` fails to
+/// compile when a new kind of primitive is not answered.
+template <class T>
+inline constexpr bool kUnhandledPrimitive = false;
+
 /// Calls f with the primitive as its own type (DrawPolyline, ..., DrawFillArea, DrawText, ...).
 template <class F>
 decltype(auto) visitPrimitive(F&& f, const DrawPrimitive& primitive) {

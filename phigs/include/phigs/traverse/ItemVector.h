@@ -38,7 +38,7 @@ public:
     }
     ~ItemVector() {
         destroyAll();
-        ::operator delete (data_, std::align_val_t{alignof(DrawItem)});
+        deallocate(data_);
     }
 
     std::size_t size() const { return size_; }
@@ -87,12 +87,32 @@ public:
 private:
     template <class... Fields>
     DrawItem& construct(Fields&&... fields) {
-        if (size_ == capacity_) grow(capacity_ ? 2 * capacity_ : 4);
-        DrawItem* item = ::new (static_cast<void*>(data_ + size_)) DrawItem{std::forward<Fields>(fields)...};
+        if (size_ < capacity_) {
+            DrawItem* item =
+                ::new (static_cast<void*>(data_ + size_)) DrawItem{std::forward<Fields>(fields)...};
+            ++size_;
+            return *item;
+        }
+        // The new item is built before the old ones move, as the fields may refer to one of them
+        // (v.push_back(v[i])).
+        const std::size_t count = capacity_ ? 2 * capacity_ : 4;
+        DrawItem* fresh = allocate(count);
+        DrawItem* item = nullptr;
+        try {
+            item = ::new (static_cast<void*>(fresh + size_)) DrawItem{std::forward<Fields>(fields)...};
+        } catch (...) {
+            deallocate(fresh);
+            throw;
+        }
+        relocate(fresh, count);
         ++size_;
         return *item;
     }
-    void grow(std::size_t count);
+    static DrawItem* allocate(std::size_t count);
+    static void deallocate(DrawItem* items);
+    /// Moves the items into `fresh` (room for `count`) and frees the old storage.
+    void relocate(DrawItem* fresh, std::size_t count);
+    void grow(std::size_t count) { relocate(allocate(count), count); }
     void destroyAll() {
         for (std::size_t i = 0; i < size_; ++i) data_[i].~DrawItem();
     }
