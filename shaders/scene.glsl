@@ -142,6 +142,21 @@ layout(constant_id = 13) const bool PREMULTIPLIED_LIGHTS = false;
 // the draw record (lavapipe gathers such reads lane by lane).
 layout(constant_id = 14) const bool MODEL_IDENTITY = false;
 
+// A positional (type 3) or spot (type 4) light at `position` seen from `world`: the unit
+// direction to it in l, and its attenuation (the caller reads the light's fields only for these
+// types, so directional lights load nothing more).
+float positionalLight(int type, vec3 position, vec4 coefficients, vec4 direction, vec3 world, out vec3 l) {
+    vec3 toLight = position - world;
+    float distance = length(toLight);
+    l = toLight / max(distance, 1e-9);
+    float attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
+    if (type == 4) {
+        float c = dot(-l, direction.xyz);
+        attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
+    }
+    return attenuation;
+}
+
 vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world, vec3 n, vec3 eye) {
     vec4 colour = frame.lights[i].colour;
     if (type == 1) return k.x * colour.rgb * base;
@@ -152,15 +167,8 @@ vec3 oneLight(int type, int i, int model, vec4 k, vec4 sc, vec3 base, vec3 world
     if (type == 2) {
         l = -direction.xyz;  // normalised when uploaded
     } else {
-        vec4 coefficients = frame.lights[i].attenuation;
-        vec3 toLight = frame.lights[i].position.xyz - world;
-        float distance = length(toLight);
-        l = toLight / max(distance, 1e-9);
-        attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
-        if (type == 4) {
-            float c = dot(-l, direction.xyz);
-            attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
-        }
+        attenuation = positionalLight(type, frame.lights[i].position.xyz, frame.lights[i].attenuation, direction,
+                                      world, l);
     }
     // No branch on the facing: light from behind adds nothing, diffuse or specular.
     float nl = dot(n, l);
@@ -188,15 +196,8 @@ void premultipliedLight(int type, int i, vec3 world, vec3 n, vec3 eye, inout vec
     if (type == 2) {
         l = -direction.xyz;
     } else {
-        vec4 coefficients = litLights[i].attenuation;
-        vec3 toLight = litLights[i].position.xyz - world;
-        float distance = length(toLight);
-        l = toLight / max(distance, 1e-9);
-        attenuation = 1.0 / max(coefficients.x + coefficients.y * distance, 1e-9);
-        if (type == 4) {
-            float c = dot(-l, direction.xyz);
-            attenuation *= c >= coefficients.z ? pow(max(c, 0.0), direction.w) : 0.0;
-        }
+        attenuation = positionalLight(type, litLights[i].position.xyz, litLights[i].attenuation, direction, world,
+                                      l);
     }
     float nl = dot(n, l);
     diffuse += litLights[i].diffuse.rgb * (max(nl, 0.0) * attenuation);
