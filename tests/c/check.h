@@ -32,6 +32,27 @@ static inline unsigned next_random(void) {
     return (unsigned)(random_state >> 33);
 }
 
+/* A random number in [lo, hi] from the same sequence (100,001 steps). */
+static inline double random_real(double lo, double hi) {
+    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
+}
+
+/* A random axis-aligned square in z = 0 with its lower left corner in [0.2, 0.4]^2 and its side in
+ * [0.2, 0.4] (given back in x0, y0, side), wound counter-clockwise seen from +z (front facing) or,
+ * when backFacing, clockwise. */
+static inline void random_square(Ppoint3 corners[4], int backFacing, double* x0, double* y0, double* side) {
+    *x0 = random_real(0.2, 0.4), *y0 = random_real(0.2, 0.4), *side = random_real(0.2, 0.4);
+    corners[0].x = (Pfloat)*x0, corners[0].y = (Pfloat)*y0;
+    corners[1].x = (Pfloat)(*x0 + *side), corners[1].y = (Pfloat)*y0;
+    corners[2].x = (Pfloat)(*x0 + *side), corners[2].y = (Pfloat)(*y0 + *side);
+    corners[3].x = (Pfloat)*x0, corners[3].y = (Pfloat)(*y0 + *side);
+    for (int k = 0; k < 4; ++k) corners[k].z = 0;
+    if (backFacing) {
+        const Ppoint3 t = corners[1];
+        corners[1] = corners[3], corners[3] = t;
+    }
+}
+
 /* Every call of the error handler, in order; each is passed on to perr_hand (the error file). */
 #define MAX_ERRORS 32
 static Pint error_numbers[MAX_ERRORS];

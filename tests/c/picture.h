@@ -19,6 +19,12 @@ typedef struct {
     const char* name;   /* for messages */
 } Picture;
 
+/* The RGB of the pixel at NPC (x, y) of the picture (x, y in [0, 1], scaled by its side). */
+static inline const unsigned char* picture_pixel(const Picture* p, double x, double y) {
+    const int i = (int)(x * p->side), j = (int)(p->height - y * p->side);
+    return p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
+}
+
 /* Reads a PNG file as RGB into `out` (its rgb to be freed); 0 when it cannot. */
 static inline int read_png(const char* path, Picture* out) {
     png_image image;

@@ -15,10 +15,6 @@
 
 #include "picture.h"
 
-static double random_real(double lo, double hi) {
-    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
-}
-
 static double clamp01(double v) {
     return v < 0 ? 0 : v > 1 ? 1 : v;
 }

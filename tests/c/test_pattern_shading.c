@@ -11,15 +11,6 @@
 
 #include "picture.h"
 
-static double random_real(double lo, double hi) {
-    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
-}
-
-static const unsigned char* pixel(const Picture* p, double x, double y) {
-    const int i = (int)(x * p->side), j = (int)(p->height - y * p->side);
-    return p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
-}
-
 static Pgcolr direct(const double c[3]) {
     Pgcolr g;
     g.type = PMODEL_RGB;
@@ -123,7 +114,7 @@ static void draw_on(const Scene* s, Pint ws, const char* file, Pint type) {
 }
 
 static int shows(const Picture* p, double x, double y, const double rgb[3], const Scene* s) {
-    const unsigned char* c = pixel(p, x, y);
+    const unsigned char* c = picture_pixel(p, x, y);
     int ok = 1;
     for (int k = 0; k < 3; ++k) ok = ok && fabs(c[k] - 255 * rgb[k]) <= 3.5;
     if (!ok)

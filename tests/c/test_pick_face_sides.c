@@ -11,10 +11,6 @@
 
 #define WS 1
 
-static double random_real(double lo, double hi) {
-    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
-}
-
 /* Whether REQUEST PICK at NPC (x, y) finds the square (pick id 7). */
 static int picked_at(double x, double y) {
     char script[64];
@@ -61,16 +57,10 @@ int main(int argc, char** argv) {
         const Pcull_mode cull =
             (Pcull_mode)(!hollowBack && next_random() % 5 == 0 ? 1 + next_random() % 2 : PCULL_NONE);
         const int edges = next_random() % 5 == 0;
-        const double x0 = random_real(0.2, 0.4), y0 = random_real(0.2, 0.4), side = random_real(0.2, 0.4);
-        Ppoint3 corners[4] = {{(Pfloat)x0, (Pfloat)y0, 0},
-                              {(Pfloat)(x0 + side), (Pfloat)y0, 0},
-                              {(Pfloat)(x0 + side), (Pfloat)(y0 + side), 0},
-                              {(Pfloat)x0, (Pfloat)(y0 + side), 0}};
+        double x0, y0, side;
+        Ppoint3 corners[4];
         Ppoint_list3 square = {4, corners};
-        if (backFacing) { /* clockwise seen from +z */
-            const Ppoint3 t = corners[1];
-            corners[1] = corners[3], corners[3] = t;
-        }
+        random_square(corners, backFacing, &x0, &y0, &side);
         EXPECT_NO_ERROR(pdel_struct(1));
         EXPECT_NO_ERROR(popen_struct(1));
         padd_names_set(&names);

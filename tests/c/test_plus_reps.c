@@ -15,10 +15,6 @@ static int random_int(int lo, int hi) {
     return lo + (int)(next_random() % (unsigned)(hi - lo + 1));
 }
 
-static Pfloat random_real(double lo, double hi) {
-    return (Pfloat)(lo + (hi - lo) * (next_random() % 100001u) / 100000.0);
-}
-
 /* An index (0 .. 20: 0 .. 7 are defined) or a direct RGB colour. */
 static Pgcolr random_colour(void) {
     Pgcolr c;

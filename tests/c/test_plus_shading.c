@@ -12,20 +12,11 @@
 
 #include "picture.h"
 
-static double random_real(double lo, double hi) {
-    return lo + (hi - lo) * (next_random() % 100001u) / 100000.0;
-}
-
-static const unsigned char* pixel(const Picture* p, double x, double y) {
-    const int i = (int)(x * p->side), j = (int)(p->height - y * p->side);
-    return p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
-}
-
 /* Whether the pixel at NPC (x, y) is `rgb` (NULL: the background, the pixel at NPC (0.02, 0.02)),
  * within 2/255. */
 static int pixel_is(const Picture* p, double x, double y, const double* rgb, const char* what) {
-    const unsigned char* c = pixel(p, x, y);
-    const unsigned char* background = pixel(p, 0.02, 0.02);
+    const unsigned char* c = picture_pixel(p, x, y);
+    const unsigned char* background = picture_pixel(p, 0.02, 0.02);
     double expected[3];
     int ok = 1;
     for (int k = 0; k < 3; ++k) expected[k] = rgb ? 255 * rgb[k] : background[k];
@@ -49,6 +40,22 @@ static void random_rgb(double c[3]) {
 }
 
 static PictureFiles files;
+
+/* Structure 1 anew: `area` under the given front and back interior styles and colours, face
+ * distinguishing and culling. */
+static void fill_with_sides(const Ppoint_list3* area, Pint_style frontStyle, Pint_style backStyle,
+                            const Pgcolr* f, const Pgcolr* b, int distinguish, Pcull_mode cull) {
+    pdel_struct(1);
+    popen_struct(1);
+    pset_int_style(frontStyle);
+    pset_int_colr(f);
+    pset_back_int_colr(b);
+    pset_back_int_style(backStyle);
+    pset_face_disting_mode(distinguish ? PDISTING_YES : PDISTING_NO);
+    pset_face_cull_mode(cull);
+    pfill_area3(area);
+    pclose_struct();
+}
 
 static void back_faces(void) {
     int filledBackUnderOpenFront = 0;
@@ -79,16 +86,7 @@ static void back_faces(void) {
             corners[k].x = (Pfloat)(cx + r * cos(a)), corners[k].y = (Pfloat)(cy + r * sin(a)),
             corners[k].z = 0;
         }
-        pdel_struct(1);
-        popen_struct(1);
-        pset_int_style(frontStyle);
-        pset_int_colr(&f);
-        pset_back_int_colr(&b);
-        pset_back_int_style(backStyle);
-        pset_face_disting_mode(distinguish ? PDISTING_YES : PDISTING_NO);
-        pset_face_cull_mode(cull);
-        pfill_area3(&triangle);
-        pclose_struct();
+        fill_with_sides(&triangle, frontStyle, backStyle, &f, &b, distinguish, cull);
         /* Each side by its own style: a SOLID back shows under a HOLLOW or EMPTY front too; a
          * HOLLOW side shows its outline only, away from the centre. */
         if ((backFacing && cull == PCULL_BACKFACE) || (!backFacing && cull == PCULL_FRONTFACE))
@@ -115,7 +113,7 @@ static void back_faces(void) {
 static double nearest_along_y(const Picture* p, double x, double y, const double rgb[3]) {
     double best = 1e9;
     for (int d = -3; d <= 3; ++d) {
-        const unsigned char* c = pixel(p, x, y + d / p->side);
+        const unsigned char* c = picture_pixel(p, x, y + d / p->side);
         double worst = 0;
         for (int k = 0; k < 3; ++k) worst = fmax(worst, fabs(c[k] - 255 * rgb[k]));
         best = fmin(best, worst);
@@ -139,19 +137,12 @@ static void hollow_outlines(void) {
         const Pint_style backStyle = hollowBack    ? PSTYLE_HOLLOW
                                      : hollowFront ? styles[1 + next_random() % 2]
                                                    : styles[next_random() % 3];
-        const double x0 = random_real(0.2, 0.4), y0 = random_real(0.2, 0.4), side = random_real(0.2, 0.4);
-        /* Counter-clockwise seen from +z (front facing) or clockwise. */
-        Ppoint3 corners[4] = {{(Pfloat)x0, (Pfloat)y0, 0},
-                              {(Pfloat)(x0 + side), (Pfloat)y0, 0},
-                              {(Pfloat)(x0 + side), (Pfloat)(y0 + side), 0},
-                              {(Pfloat)x0, (Pfloat)(y0 + side), 0}};
+        double x0, y0, side;
+        Ppoint3 corners[4];
         Ppoint_list3 square = {4, corners};
         Pgcolr f, b;
         Picture p[2];
-        if (backFacing) {
-            const Ppoint3 t = corners[1];
-            corners[1] = corners[3], corners[3] = t;
-        }
+        random_square(corners, backFacing, &x0, &y0, &side);
         /* Bright, far from the black background and from each other. */
         do {
             for (int k = 0; k < 3; ++k)
@@ -160,16 +151,7 @@ static void hollow_outlines(void) {
         } while (fabs(front[0] - back[0]) + fabs(front[1] - back[1]) + fabs(front[2] - back[2]) < 0.6 ||
                  back[0] + back[1] + back[2] < 0.8);
         f = direct(front), b = direct(back);
-        pdel_struct(1);
-        popen_struct(1);
-        pset_int_style(frontStyle);
-        pset_int_colr(&f);
-        pset_back_int_colr(&b);
-        pset_back_int_style(backStyle);
-        pset_face_disting_mode(distinguish ? PDISTING_YES : PDISTING_NO);
-        pset_face_cull_mode(cull);
-        pfill_area3(&square);
-        pclose_struct();
+        fill_with_sides(&square, frontStyle, backStyle, &f, &b, distinguish, cull);
         const int culled = (backFacing && cull == PCULL_BACKFACE) || (!backFacing && cull == PCULL_FRONTFACE);
         const int useBack = backFacing && distinguish;
         const Pint_style shown = useBack ? backStyle : frontStyle;
