@@ -46,6 +46,28 @@ constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
 // The draws' modelling transformation is the identity (no matrix read per vertex).
 constexpr std::uint64_t kIdentityModel = 1ull << 38;
 
+// The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
+constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+constexpr VkAccessFlags kAttachmentAccess =
+    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+// lavapipe bins a render pass's draws into one scene before it rasterises them: up to 36 MB of
+// triangle setup (several hundred bytes a triangle) held at once. A barrier makes it rasterise
+// what it holds; one every this many vertices keeps a scene to a few megabytes.
+constexpr std::uint64_t kVerticesPerScene = 30000;
+
+/// Makes lavapipe rasterise the draws binned so far (a barrier flushes its scene).
+void binningFlush(VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = kAttachmentAccess;
+    barrier.dstAccessMask = kAttachmentAccess;
+    vkCmdPipelineBarrier(cmd, kAttachmentStages, kAttachmentStages, VK_DEPENDENCY_BY_REGION_BIT, 1, &barrier,
+                         0, nullptr, 0, nullptr);
+}
+
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -128,7 +150,7 @@ Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalL
         subpass.colorAttachmentCount = 1;
         subpass.pColorAttachments = &colourRef;
         subpass.pDepthStencilAttachment = &depthRef;
-        VkSubpassDependency dependencies[2]{};
+        VkSubpassDependency dependencies[3]{};
         // Wait for the previous use of the attachments (an acquired swapchain image, or last frame).
         dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
         dependencies[0].dstSubpass = 0;
@@ -147,13 +169,21 @@ Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalL
         dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
         dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
         dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        // Within the pass, attachment writes before later ones: the barrier record() places to
+        // hand lavapipe's binned draws to its rasteriser (binningFlush).
+        dependencies[2].srcSubpass = dependencies[2].dstSubpass = 0;
+        dependencies[2].srcStageMask = kAttachmentStages;
+        dependencies[2].dstStageMask = kAttachmentStages;
+        dependencies[2].srcAccessMask = kAttachmentAccess;
+        dependencies[2].dstAccessMask = kAttachmentAccess;
+        dependencies[2].dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
         VkRenderPassCreateInfo rpInfo{};
         rpInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
         rpInfo.attachmentCount = 2;
         rpInfo.pAttachments = attachments;
         rpInfo.subpassCount = 1;
         rpInfo.pSubpasses = &subpass;
-        rpInfo.dependencyCount = 2;
+        rpInfo.dependencyCount = 3;
         rpInfo.pDependencies = dependencies;
         check(vkCreateRenderPass(device, &rpInfo, nullptr, &renderPass_), "vkCreateRenderPass");
 
@@ -924,7 +954,11 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     VkRect2D scissor{};
     float lineWidth = 0.0f;
     bool first = true;
+    const bool flushScenes = context_.isLavapipe();
+    std::uint64_t binned = 0;
     for (const Command& c : commands_) {
+        if (flushScenes && binned >= kVerticesPerScene) binningFlush(cmd), binned = 0;
+        binned += c.count;
         if (c.pipeline != bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.at(c.pipeline));
             bound = c.pipeline;
