@@ -957,7 +957,10 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     const bool flushScenes = context_.isLavapipe();
     std::uint64_t binned = 0;
     for (const Command& c : commands_) {
-        if (flushScenes && binned >= kVerticesPerScene) binningFlush(cmd), binned = 0;
+        if (flushScenes && binned >= kVerticesPerScene) {
+            binningFlush(cmd);
+            binned = 0;
+        }
         binned += c.count;
         if (c.pipeline != bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.at(c.pipeline));
