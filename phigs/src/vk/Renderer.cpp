@@ -53,9 +53,8 @@ constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGM
 constexpr VkAccessFlags kAttachmentAccess =
     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-// lavapipe bins a render pass's draws into one scene before it rasterises them: up to 36 MB of
-// triangle setup (several hundred bytes a triangle) held at once. A barrier makes it rasterise
-// what it holds; one every this many vertices keeps a scene to a few megabytes.
+// lavapipe bins a render pass's draws into one scene, held whole, before it rasterises them; a
+// barrier makes it rasterise what it holds, so one every this many vertices bounds the scene.
 constexpr std::uint64_t kVerticesPerScene = 30000;
 
 /// Makes lavapipe rasterise the draws binned so far (a barrier flushes its scene).

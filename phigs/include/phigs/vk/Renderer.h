@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 #include <glm/vec4.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -84,6 +85,7 @@ private:
             glm::vec4 backReflectance{0.0f};
             glm::vec4 backSpecularColour{0.0f};
         } push;
+        static_assert(offsetof(Push, colour) == 16, "shaders/scene.glsl reads the colours from byte 16");
         float lineWidth = 1.0f;
         VkRect2D scissor{};
         /// Its run's dynamic offset in the run buffer (its view's, or its lit run's), and its view:
