@@ -323,44 +323,75 @@ private:
 // each generated class, separation 2 kept the same points as 3 (within 1% on every class, after the
 // loop) in 5-15% less time; 1 kept up to 4% more on degrees 2-5 and the long curve.
 constexpr std::size_t kLinearSeparation = 2;
+
+/// A knot of the linear stage's state whose own removal stays within the tolerance: its last
+/// occurrence, its place among the distinct interior values, its removal weight.
+struct LinearCandidate {
+    std::size_t index, place;
+    double weight;
+};
+
+/// The knots of s whose removal weight is within the tolerance, lightest first (ties in knot
+/// order, as rankKnots has them), and the number of distinct interior values. Knots past the
+/// tolerance are not sorted: every one of them ranks after every candidate, so they can neither
+/// be taken nor keep a candidate out. ranking, where given, is rankKnots of s.
+std::vector<LinearCandidate> linearCandidates(const Spline& s, double tolerance,
+                                              const std::vector<KnotSignificance>* ranking,
+                                              std::size_t& places) {
+    const std::size_t p = static_cast<std::size_t>(s.degree), count = s.points.size();
+    std::vector<LinearCandidate> out;
+    std::vector<std::size_t> placeOf(ranking ? s.knots.size() : 0);
+    places = 0;
+    for (std::size_t i = p + 1; i < count; ++i) {
+        if (s.knots[i] == s.knots[i + 1] || !(s.knots[i] > s.knots[p]) || !(s.knots[i] < s.knots[count]))
+            continue;
+        if (ranking) {
+            placeOf[i] = places++;
+            continue;
+        }
+        const double w = knotRemovalWeight(s.degree, s.knots, s.points, 1, i);
+        if (w <= tolerance) out.push_back({i, places, w});
+        ++places;
+    }
+    if (ranking) {
+        for (const KnotSignificance& k : *ranking)
+            if (k.weight <= tolerance) out.push_back({k.index, placeOf[k.index], k.weight});
+        return out;  // rankKnots' order already
+    }
+    std::sort(out.begin(), out.end(), [](const LinearCandidate& a, const LinearCandidate& b) {
+        return a.weight < b.weight || (a.weight == b.weight && a.place < b.place);
+    });
+    return out;
+}
+
 Spline linearRemoval(const Curve& curve, double tolerance, int passes,
                      const std::vector<KnotSignificance>& firstRanking) {
     const std::size_t p = static_cast<std::size_t>(curve.degree);
     Spline s{curve.degree, curve.knots, curve.points, 1};
     LinearFit fit(curve);
-    auto without = [&](const std::vector<KnotSignificance>& ranked, std::size_t m, Spline& out) {
-        std::vector<double> gone;
-        for (std::size_t i = 0; i < m; ++i) gone.push_back(ranked[i].value);
-        std::sort(gone.begin(), gone.end());
+    std::vector<char> gone;
+    // s without the knots at the first m candidates' indices (one copy of each value), refitted.
+    auto without = [&](const std::vector<LinearCandidate>& ranked, std::size_t m, Spline& out) {
+        gone.assign(s.knots.size(), 0);
+        for (std::size_t i = 0; i < m; ++i) gone[ranked[i].index] = 1;
         out.degree = s.degree;
         out.sequences = 1;
         out.knots.clear();
-        std::size_t g = 0;
-        for (std::size_t i = 0; i < s.knots.size(); ++i) {
-            if (g < gone.size() && s.knots[i] == gone[g]) {
-                ++g;  // one copy of each value goes
-                continue;
-            }
-            out.knots.push_back(s.knots[i]);
-        }
+        for (std::size_t i = 0; i < s.knots.size(); ++i)
+            if (!gone[i]) out.knots.push_back(s.knots[i]);
         if (out.knots.size() < p + 3) return false;
         return fit.run(out.knots, out.points, tolerance);
     };
     Spline trial, best;
     for (int pass = 0; pass < passes; ++pass) {
-        std::vector<KnotSignificance> all =
-            pass == 0 && !firstRanking.empty() ? firstRanking : rankKnots(s.degree, s.knots, s.points, 1);
-        // Positions among the distinct interior values; the ranking stays in order.
-        std::vector<double> values;
-        for (const KnotSignificance& k : all) values.push_back(k.value);
-        std::sort(values.begin(), values.end());
-        std::vector<char> taken(values.size() + 2 * kLinearSeparation, 0);
-        std::vector<KnotSignificance> ranked;
-        for (const KnotSignificance& k : all) {
-            const std::size_t at =
-                static_cast<std::size_t>(std::lower_bound(values.begin(), values.end(), k.value) -
-                                         values.begin()) +
-                kLinearSeparation;
+        std::size_t places = 0;
+        const std::vector<LinearCandidate> all = linearCandidates(
+            s, tolerance, pass == 0 && !firstRanking.empty() ? &firstRanking : nullptr, places);
+        // No two knots within kLinearSeparation places of each other; the ranking stays in order.
+        std::vector<char> taken(places + 2 * kLinearSeparation, 0);
+        std::vector<LinearCandidate> ranked;
+        for (const LinearCandidate& k : all) {
+            const std::size_t at = k.place + kLinearSeparation;
             bool free = true;
             for (std::size_t d = 1; d <= kLinearSeparation; ++d)
                 free = free && !taken[at - d] && !taken[at + d];
@@ -368,13 +399,11 @@ Spline linearRemoval(const Curve& curve, double tolerance, int passes,
             taken[at] = 1;
             ranked.push_back(k);
         }
-        std::size_t hi = 0;  // candidates: knots whose own removal stays within the tolerance
-        while (hi < ranked.size() && ranked[hi].weight <= tolerance) ++hi;
         bool found = false;
         // Try all first (refined curves), then halve until one passes: the next pass ranks again
         // and takes what this one left (bisection upwards cost the smooth curves twice the
         // trials for the same counts).
-        for (std::size_t m = hi; m > 0; m /= 2)
+        for (std::size_t m = ranked.size(); m > 0; m /= 2)
             if (without(ranked, m, trial)) {
                 best = std::move(trial);
                 found = true;
@@ -438,24 +467,29 @@ private:
         double value, score;
     };
 
-    /// The best ranked knots not blocked, up to the partition size and below the weight cutoff.
+    /// The best ranked knots not blocked, up to the partition size and below the weight cutoff
+    /// (ties in knot order). Only those few are sorted.
     std::vector<KnotSignificance> nextPartition() {
         const std::size_t want =
             std::min(static_cast<std::size_t>(o_.partitionSize), o_.maxRemovals - removed_);
         std::vector<KnotSignificance> partition;
-        const std::vector<KnotSignificance> ranked = rank();  // by score
-        for (const KnotSignificance& k : ranked) {
-            if (blocked_.contains(k.value)) continue;
-            if (measuring_ && o_.weightCutoff > 0.0 && k.weight > o_.weightCutoff * o_.tolerance) break;
-            partition.push_back(k);
-            if (partition.size() == want) break;
-        }
+        const bool cutoff = measuring_ && o_.weightCutoff > 0.0;
+        for (const KnotSignificance& k : rank())
+            if (!blocked_.contains(k.value) && !(cutoff && k.weight > o_.weightCutoff * o_.tolerance))
+                partition.push_back(k);
+        auto before = [](const KnotSignificance& a, const KnotSignificance& b) {
+            return a.weight < b.weight || (a.weight == b.weight && a.index < b.index);
+        };
+        const std::size_t kept = std::min(want, partition.size());
+        std::partial_sort(partition.begin(), partition.begin() + static_cast<std::ptrdiff_t>(kept),
+                          partition.end(), before);
+        partition.resize(kept);
         return partition;
     }
 
-    /// rankKnots, with the weights of knots whose local data no accepted fit touched kept from
-    /// before (the same numbers, computed once): a knot's weight depends only on the knots and
-    /// coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
+    /// Every knot with its score (in knot order), with the weights of knots whose local data no
+    /// accepted fit touched kept from before (the same numbers, computed once): a knot's weight
+    /// depends only on the knots and coefficients whose supports meet [knots[r-p-1], knots[r+p+1]].
     /// A knot's score is its weight plus, when measuring, the error already spent near it (vs
     /// the original): removing a knot moves the curve by about its weight on top of what is
     /// there, so this spreads the tolerance over the curve instead of exhausting it in one place.
@@ -474,9 +508,6 @@ private:
             next.push_back({s_.knots[i], score});
         }
         cache_ = std::move(next);
-        std::stable_sort(out.begin(), out.end(), [](const KnotSignificance& a, const KnotSignificance& b) {
-            return a.weight < b.weight;
-        });
         return out;
     }
 
@@ -1101,17 +1132,29 @@ CurveReduction exactRemovals(const Curve& curve, const ReductionOptions& o,
     return out;
 }
 
+/// True where some interior knot of the spline (degree, knots, points) has a removal weight within
+/// limit: the first one found ends the search (no ranking, no sort).
+bool someKnotWithin(int degree, const std::vector<double>& knots, const std::vector<glm::dvec3>& points,
+                    double limit) {
+    const std::size_t p = static_cast<std::size_t>(degree), count = points.size();
+    for (std::size_t i = p + 1; i < count; ++i) {
+        if (knots[i] == knots[i + 1] || !(knots[i] > knots[p]) || !(knots[i] < knots[count])) continue;
+        if (knotRemovalWeight(degree, knots, points, 1, i) <= limit) return true;
+    }
+    return false;
+}
+
 /// True where every knot left would move the curve by more than weightCutoff times the tolerance
 /// (the cutoff the removal loop trusts): no fit with fewer points keeps it either, and the search
 /// would only confirm that, probe by probe.
 bool everyKnotPastCutoff(const Curve& original, const Curve& left, const ReductionOptions& o,
                          const std::vector<KnotSignificance>& ranked) {
+    const double limit = o.weightCutoff * o.tolerance;
+    if (left.points.size() != original.points.size())
+        return !someKnotWithin(left.degree, left.knots, left.points, limit);
     double smallest = std::numeric_limits<double>::infinity();
-    std::vector<KnotSignificance> reranked;
-    const std::vector<KnotSignificance>& knots =
-        left.points.size() == original.points.size() ? ranked : (reranked = rankKnots(left));
-    for (const KnotSignificance& s : knots) smallest = std::min(smallest, s.weight);
-    return smallest > o.weightCutoff * o.tolerance;
+    for (const KnotSignificance& s : ranked) smallest = std::min(smallest, s.weight);
+    return smallest > limit;
 }
 
 /// The smallest control point count the end conditions and maxRemovals allow.
@@ -1829,10 +1872,7 @@ private:
 bool loopTriesNone(const ReductionOptions& options, const Spline& s, std::size_t n) {
     const bool measuring = std::isfinite(options.tolerance);
     if (!(measuring && !options.batch && options.weightCutoff > 0.0 && s.points.size() < n)) return false;
-    bool none = true;
-    for (const KnotSignificance& k : rankKnots(s.degree, s.knots, s.points, 1))
-        none = none && k.weight > options.weightCutoff * options.tolerance;
-    return none;
+    return !someKnotWithin(s.degree, s.knots, s.points, options.weightCutoff * options.tolerance);
 }
 
 /// The loop result's final measurement, seeded by the loop's witnesses where it has samples.
