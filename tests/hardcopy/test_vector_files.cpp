@@ -75,7 +75,8 @@ TEST_CASE("vector hardcopy: PDF, SVG and EPS files hold vector paths and no rast
             VectorWorkstation ws(file, format, squarePage(200));
             ws.update(list);
             CHECK(ws.pages() == 1);
-            CHECK(!ws.lastPicture().ops.empty());
+            CHECK(ws.lastOperations() > 0);
+            CHECK(ws.lastPicture().ops.empty());  // given back once cairo recorded them
         }
         REQUIRE(std::filesystem::exists(file));
         CHECK_FALSE(std::filesystem::exists(file.string() + ".tmp"));

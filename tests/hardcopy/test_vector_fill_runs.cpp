@@ -7,6 +7,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <array>
 #include <random>
 
 using namespace phigs;
@@ -95,5 +97,93 @@ TEST_CASE("vector hardcopy: runs of one colour show the union of their fills, in
             }
         CHECK(checked > int(kSize * kSize / 2));
         CHECK(overlapped > 100);
+    }
+}
+
+namespace {
+
+/// Distance from p to a convex polygon, 0 inside.
+double distanceOutside(const std::vector<glm::dvec2>& c, glm::dvec2 p) {
+    double area = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i)
+        area += c[i].x * c[(i + 1) % c.size()].y - c[(i + 1) % c.size()].x * c[i].y;
+    bool in = true;
+    double outside = 1e300;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const glm::dvec2 a = c[i], e = c[(i + 1) % c.size()] - a;
+        in = in && (area > 0 ? 1.0 : -1.0) * (e.x * (p.y - a.y) - e.y * (p.x - a.x)) >= 0.0;
+        const double s = std::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0, 1.0);
+        outside = std::min(outside, glm::length(p - (a + s * e)));
+    }
+    return in ? 0.0 : outside;
+}
+
+}  // namespace
+
+TEST_CASE("vector hardcopy: a seamed facet covers what its fill and outline stroke cover", "[hardcopy]") {
+    const auto dir = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy";
+    std::filesystem::create_directories(dir);
+    constexpr std::uint32_t kSize = 200;
+    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> at(0.1, 0.9);
+        std::uniform_real_distribution<float> channel(0.0f, 1.0f);
+        // Mesh triangles of colours of their own (no runs), each facet seamed; overlapping.
+        auto mesh = std::make_shared<MeshData>();
+        for (std::uint32_t t = 0; t < 12; ++t) {
+            std::array<glm::vec3, 3> p;
+            for (auto& q : p) q = glm::vec3(at(random), at(random), 0.5);
+            if (glm::cross(p[1] - p[0], p[2] - p[0]).z < 0.0f) std::swap(p[1], p[2]);
+            const glm::vec3 colour(channel(random), channel(random), channel(random));
+            for (const auto& q : p) mesh->positions.push_back(q), mesh->colours.push_back(colour);
+            mesh->triangles.insert(mesh->triangles.end(), {3 * t, 3 * t + 1, 3 * t + 2});
+        }
+        DrawList list;
+        list.views.push_back(DrawView{});
+        DrawMesh m;
+        m.mesh = mesh;
+        m.interior.edit().style = InteriorStyle::Solid;
+        DrawItem item;
+        item.primitive = std::move(m);
+        list.items.push_back(std::move(item));
+        PageSetup page;
+        page.paper = {double(kSize), double(kSize)};
+        page.nominalPixel = 8.0;  // seams 4 points wide: far wider than the raster's pixels
+        const VectorPicture picture = describePicture(list, page);
+        const auto file = dir / ("seamed_facets_" + std::to_string(seed) + ".pdf");
+        {
+            VectorWorkstation ws(file, VectorFormat::Pdf, page);
+            ws.update(list);
+        }
+        const Image image = vector_test::rasterisePdf(file, kSize, kSize);
+        // Page points are pixels here. Each pixel away from every seam's outer edge and from every
+        // corner (where the stroke's round join and a grown outline part) shows the last facet
+        // within half a seam of it.
+        int checked = 0, seamed = 0;
+        for (std::uint32_t y = 0; y < kSize; ++y)
+            for (std::uint32_t x = 0; x < kSize; ++x) {
+                const glm::dvec2 p(x + 0.5, y + 0.5);
+                glm::vec3 expected = list.background;
+                bool clear = true, inSeam = false;
+                for (const VectorOp& op : picture.ops) {
+                    const auto* fill = std::get_if<VectorFill>(&op);
+                    if (!fill) continue;
+                    REQUIRE(fill->seamWidth > 0.0);
+                    const auto& c = fill->contours.at(0);
+                    const double half = 0.5 * fill->seamWidth, d = distanceOutside(c, p);
+                    clear = clear && std::abs(d - half) >= 1.5;
+                    for (const glm::dvec2& corner : c) clear = clear && glm::length(p - corner) >= 3.0 * half;
+                    if (d < half) expected = fill->colour, inSeam = d > 0.0;
+                }
+                if (!clear) continue;
+                ++checked;
+                seamed += inSeam;
+                const std::uint8_t* pixel = image.pixel(x, y);
+                INFO("seed " << seed << " pixel " << x << ", " << y);
+                for (int c = 0; c < 3; ++c)
+                    CHECK(std::abs(int(pixel[c]) - int(expected[c] * 255.0f + 0.5f)) <= 3);
+            }
+        CHECK(checked > int(kSize * kSize / 2));
+        CHECK(seamed > 100);
     }
 }

@@ -15,7 +15,9 @@ class CairoPainter {
 public:
     CairoPainter(cairo_t* cairo, bool opaque) : cr_(cairo), opaque_(opaque) {}
 
-    void paint(const VectorPicture& picture);
+    /// Paints the picture and empties `picture.ops`, each operation's points given back as soon as
+    /// cairo has recorded it.
+    void paint(VectorPicture& picture);
 
     void operator()(const VectorFill& fill);
     void operator()(const VectorHatch& hatch);

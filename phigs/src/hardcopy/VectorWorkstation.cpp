@@ -111,6 +111,7 @@ void VectorWorkstation::update(const DrawList& list) {
         single = std::make_unique<Surface>(file_, format_, size);
         target = single.get();
     }
+    operations_ = picture_.ops.size();
     CairoPainter(target->cairo, format_ == VectorFormat::Eps).paint(picture_);
     target->check("cannot be drawn");
     ++pages_;

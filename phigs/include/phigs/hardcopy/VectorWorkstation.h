@@ -38,8 +38,10 @@ public:
     const std::filesystem::path& file() const { return file_; }
     VectorFormat format() const { return format_; }
     int pages() const { return pages_; }
-    /// The page of the last update.
+    /// The page of the last update, without its operations: cairo holds them once painted.
     const VectorPicture& lastPicture() const { return picture_; }
+    /// How many paint operations the last update made.
+    std::size_t lastOperations() const { return operations_; }
     const DescribeStats& lastStats() const { return stats_; }
 
 private:
@@ -54,6 +56,7 @@ private:
     int pages_ = 0;
     bool closed_ = false;
     VectorPicture picture_;
+    std::size_t operations_ = 0;
     DescribeStats stats_;
 };
 
