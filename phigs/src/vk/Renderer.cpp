@@ -45,9 +45,6 @@ constexpr std::uint64_t kPatterned = 1ull << 36;
 constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
 // The draws' modelling transformation is the identity (no matrix read per vertex).
 constexpr std::uint64_t kIdentityModel = 1ull << 38;
-// The rendering colour model less one (0 RGB .. 3 HLS) in bits 39..40, where it changes the
-// picture: interpolated vertex colours, Gouraud or depth cueing.
-constexpr int kColourModelShift = 39;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -270,7 +267,6 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {12, flag(kPatterned)},
         {13, flag(kPremultipliedLights)},
         {14, flag(kIdentityModel)},
-        {15, std::int32_t((key >> kColourModelShift) & 3) + 1},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -572,9 +568,6 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 }
             }
             if (!cued) c.pipeline |= kNoDepthCue;
-            if (interior && part.role == render::PartRole::Interior &&
-                (cued || part.vertexColours || (c.pipeline & kVertexLighting)))
-                c.pipeline |= std::uint64_t(int(interior->renderingModel) - 1) << kColourModelShift;
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
             if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
