@@ -1,8 +1,10 @@
 #version 450
 // The one fragment shader (specialised per pipeline, see scene.glsl): NPC z and model clipping, hatch and line patterns, pattern interiors, flat / Gouraud / Phong
-// lighting with distinct back faces, depth cueing and highlighting.
+// lighting with distinct back faces, depth cueing and highlighting; interpolated colours and depth
+// cueing in the rendering colour model (colour_models.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
+#include "colour_models.glsl"
 
 layout(location = 0) in vec3 vWorld;
 layout(location = 1) in vec3 vNormal;
@@ -81,7 +83,7 @@ void main() {
 
     bool back = TRIANGLES && !gl_FrontFacing;
     bool useBack = DISTINGUISH_BACK && back;
-    vec3 base = PATTERNED ? patternColour(vWorld) : USE_VERTEX_COLOURS ? vColour : push.colour.rgb;
+    vec3 base = PATTERNED ? patternColour(vWorld) : USE_VERTEX_COLOURS ? fromRenderingModel(vColour) : push.colour.rgb;
     // The side's own colour: the back colour, unless the back's style is PATTERN (a draw fills
     // one style; phigs/src/vk/Renderer.cpp draws differing sides as two draws, each culling the other).
     vec3 side = useBack && !PATTERNED ? push.backColour.rgb : base;
@@ -90,7 +92,7 @@ void main() {
         // Gouraud on a pattern: the cell lit by the interpolated gain and specular term.
         colour = back ? base * vLitBack + vSpecularBack : base * vLitFront + vSpecularFront;
     } else if (VERTEX_LIGHTING) {
-        colour = back ? vLitBack : vLitFront;
+        colour = fromRenderingModel(back ? vLitBack : vLitFront);
     } else if (FRAGMENT_SHADING != 0) {
         vec3 n;
         if (FRAGMENT_SHADING == SHADE_PHONG) {
@@ -117,7 +119,8 @@ void main() {
         DepthCue cue = frame.cues[push.depthCue];
         float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);
         float s = mix(cue.planes.w, cue.planes.z, t);
-        colour = s * colour + (1.0 - s) * cue.colour.rgb;
+        // Mixed in the rendering colour model.
+        colour = fromRenderingModel(s * toRenderingModel(colour) + (1.0 - s) * toRenderingModel(cue.colour.rgb));
     }
     if (HIGHLIGHTED) colour = mix(colour, frame.highlight.rgb, frame.highlight.w);
     // Opacity (1 - PHIGS PLUS transparency) rides in the colours' alpha; only transparent

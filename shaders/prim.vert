@@ -5,6 +5,7 @@
 // gain and specular term the fragment shader applies to the pattern cell).
 #extension GL_GOOGLE_include_directive : require
 #include "scene.glsl"
+#include "colour_models.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -32,7 +33,8 @@ void main() {
     vec3 colour = USE_VERTEX_COLOURS ? inColour : push.colour.rgb;
     vWorld = worldPoint;
     vNormal = normal;
-    vColour = colour;
+    // Interpolated in the rendering colour model (fragment shader: back to RGB).
+    vColour = toRenderingModel(colour);
     vPattern = inPattern;
     vec4 npc = runView.worldToNpc * world;
     vNpcZ = npc.z / npc.w;
@@ -57,7 +59,8 @@ void main() {
         vLitBack = lit(DISTINGUISH_BACK, vec3(1.0), worldPoint, -normal, eye) - vSpecularBack;
     } else if (VERTEX_LIGHTING) {
         vec3 eye = runView.eye.xyz;
-        vLitFront = lit(false, colour, worldPoint, normal, eye);
-        vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye);
+        vLitFront = toRenderingModel(lit(false, colour, worldPoint, normal, eye));
+        vLitBack = toRenderingModel(
+            lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye));
     }
 }

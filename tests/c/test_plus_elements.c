@@ -267,7 +267,10 @@ static void representations(const char* pdf) {
     CHECK(err == 0 && total == 1);
     inds.ints = buffer;
     pinq_rendering_colr_model_facs(PWST_PNG, 8, 0, &err, &inds, &total);
-    CHECK(err == 0 && total == 1 && buffer[0] == PMODEL_RGB);
+    CHECK(err == 0 && total == 4 && inds.num_ints == 4 && buffer[0] == PRCM_RGB && buffer[1] == PRCM_CIE &&
+          buffer[2] == PRCM_HSV && buffer[3] == PRCM_HLS);
+    pinq_rendering_colr_model_facs(PWST_PNG, 1, 2, &err, &inds, &total);
+    CHECK(err == 0 && total == 4 && inds.num_ints == 1 && buffer[0] == PRCM_HSV);
     buffer[0] = 0;
     pinq_direct_colr_model_facs(PWST_PNG, 8, 0, &err, &total, &inds);
     CHECK(err == 0 && total == 4 && inds.num_ints == 4 && buffer[0] == PMODEL_RGB && buffer[3] == PMODEL_HLS);

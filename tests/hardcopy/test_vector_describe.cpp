@@ -285,6 +285,53 @@ TEST_CASE("vector describe: shaded facets take the raster path's reflectance", "
     CHECK(fill.seamWidth == 0.0);  // one whole area: nothing to seam
 }
 
+TEST_CASE(
+    "vector describe: a facet shows its vertex colours' mean and its depth cue in the rendering colour model",
+    "[hardcopy][colour]") {
+    std::mt19937 rng(20261205);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const ColourModel models[] = {ColourModel::Rgb, ColourModel::Cieluv, ColourModel::Hsv, ColourModel::Hls};
+    auto inModel = [](ColourModel m, glm::vec3 c) { return fromRgb(m, glm::dvec3(c)); };
+    double rgbHsvApart = 0.0;
+    for (int round = 0; round < 40; ++round) {
+        const ColourModel model = models[round % 4];
+        const bool cued = round % 8 >= 4;
+        DrawList list = identityList();
+        DrawFillArea f = solid({{0.2, 0.2, 0.5}, {0.8, 0.3, 0.5}, {0.4, 0.8, 0.5}}, glm::vec3(1.0f));
+        f.vertexColours = {{}};
+        glm::dvec3 sum(0.0), rgbSum(0.0), hsvSum(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const glm::vec3 c{unit(rng), unit(rng), unit(rng)};
+            f.vertexColours[0].push_back(c);
+            sum += inModel(model, c) / 3.0, rgbSum += glm::dvec3(c) / 3.0;
+            hsvSum += inModel(ColourModel::Hsv, c) / 3.0;
+        }
+        f.interior.edit().renderingModel = model;
+        DrawItem i = item(f);
+        glm::dvec3 expected = toRgb(model, sum);
+        if (cued) {
+            // A constant scale s: s C + (1 - s) cue colour, in the model.
+            DepthCue cue;
+            cue.enabled = true;
+            cue.frontScale = cue.backScale = unit(rng);
+            cue.colour = {unit(rng), unit(rng), unit(rng)};
+            list.depthCues.push_back(cue);
+            i.depthCue = 0;
+            const double s = cue.frontScale;
+            const glm::vec3 shown = glm::clamp(glm::vec3(expected), glm::vec3(0.0f), glm::vec3(1.0f));
+            expected = toRgb(model, s * inModel(model, shown) + (1.0 - s) * inModel(model, cue.colour));
+        }
+        list.items.push_back(i);
+        const VectorPicture picture = describePicture(list, squarePage());
+        REQUIRE(picture.ops.size() == 1);
+        const auto& fill = std::get<VectorFill>(picture.ops[0]);
+        const glm::vec3 clamped = glm::clamp(glm::vec3(expected), glm::vec3(0.0f), glm::vec3(1.0f));
+        CHECK(glm::length(fill.colour - clamped) < 1e-5f);
+        rgbHsvApart = std::max(rgbHsvApart, glm::length(rgbSum - toRgb(ColourModel::Hsv, hsvSum)));
+    }
+    CHECK(rgbHsvApart > 0.2);  // the models' means differ: the check tells them apart
+}
+
 TEST_CASE("vector describe: under hidden-surface removal lines and markers behind a facet are hidden",
           "[hardcopy]") {
     DrawList list = identityList();

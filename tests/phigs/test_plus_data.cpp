@@ -178,6 +178,35 @@ TEST_CASE("random sets of fill area sets draw one fill area per set with a conto
     }
 }
 
+TEST_CASE("the rendering colour model in force is resolved into each area's interior style",
+          "[plus][traverse][colour]") {
+    std::mt19937 rng(20261204);
+    Scene s;
+    SetOfFillAreaSetsElement e;
+    e.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    e.sets = {{{0, 1, 2}}};
+    for (int round = 0; round < 20; ++round) {
+        // Models set between the areas, some outside 1 .. 4 (0, workstation dependent, and
+        // unknown ones are drawn as RGB).
+        std::vector<Element> elements;
+        std::vector<ColourModel> expected;
+        int current = 0;
+        for (int k = randomInt(rng, 1, 6); k > 0; --k) {
+            if (randomInt(rng, 0, 1)) {
+                current = randomInt(rng, -1, 6);
+                elements.push_back(IndexAttribute{ElementType::RenderingColourModel, current});
+            }
+            elements.push_back(e);
+            expected.push_back(current >= 1 && current <= 4 ? static_cast<ColourModel>(current)
+                                                            : ColourModel::Rgb);
+        }
+        const auto areas = itemsOf<DrawFillArea>(s.draw(elements));
+        REQUIRE(areas.size() == expected.size());
+        for (std::size_t i = 0; i < areas.size(); ++i)
+            CHECK(areas[i]->interior->renderingModel == expected[i]);
+    }
+}
+
 TEST_CASE("a PSEUDO colour mapping changes the drawn colours, TRUE leaves them", "[plus][traverse][colour]") {
     Scene s;
     s.ws->setColourMappingRepresentation(

@@ -1,6 +1,7 @@
 // GPU-free pieces of the renderer: triangulation with holes, line patterns, marker shapes,
-// stroke-font layout, describe-step geometry (vertex-coloured patterned lines included) and cache
-// keys.
+// stroke-font layout, describe-step geometry (vertex-coloured patterned lines and areas included)
+// and cache keys.
+#include "phigs/core/ColourModels.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
@@ -60,6 +61,65 @@ TEST_CASE("triangulation: convex, concave, holes and self-intersection by the ev
         CHECK(p.x == Approx(v.point.x).margin(1e-12));
         CHECK(p.y == Approx(v.point.y).margin(1e-12));
     }
+}
+
+TEST_CASE("triangulation: a lone triangle is its own triangle, counter-clockwise", "[render][unit]") {
+    std::mt19937 rng(20261204);
+    std::uniform_real_distribution<double> coordinate(-5.0, 5.0);
+    for (int round = 0; round < 50; ++round) {
+        std::vector<glm::dvec2> c(3);
+        for (auto& p : c) p = {coordinate(rng), coordinate(rng)};
+        const double area =
+            0.5 * ((c[1].x - c[0].x) * (c[2].y - c[0].y) - (c[1].y - c[0].y) * (c[2].x - c[0].x));
+        const Triangulation t = triangulateEvenOdd({c});
+        REQUIRE(t.triangles.size() == 3);
+        CHECK(triangulatedArea(t) == Approx(std::abs(area)));
+        for (const std::uint32_t i : t.triangles) {
+            CHECK(t.vertices[i].from == i);
+            CHECK(t.vertices[i].t == 0.0);
+            CHECK(t.vertices[i].point == c[i]);
+        }
+    }
+    CHECK(triangulateEvenOdd({{{0, 0}, {1, 1}, {2, 2}}}).triangles.empty());  // no area
+}
+
+TEST_CASE("describe: vertices cut on an area's edges carry the colour mixed in its rendering colour model",
+          "[render][unit][colour]") {
+    std::mt19937 rng(20261205);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const ColourModel models[] = {ColourModel::Rgb, ColourModel::Cieluv, ColourModel::Hsv, ColourModel::Hls};
+    int cut = 0;
+    for (int round = 0; round < 40; ++round) {
+        const ColourModel model = models[round % 4];
+        // A convex quadrilateral, corners at distinct x and y: the slabs cut its edges.
+        DrawFillArea fill;
+        fill.contours = {
+            {{0, 0, 0}, {1, 0.1 + 0.3 * unit(rng), 0}, {0.9, 1.2, 0}, {-0.1, 0.6 + 0.3 * unit(rng), 0}}};
+        fill.vertexColours = {{}};
+        for (int k = 0; k < 4; ++k)
+            fill.vertexColours[0].push_back(glm::vec3(glm::dvec3(unit(rng), unit(rng), unit(rng))));
+        fill.interior.edit().style = InteriorStyle::Solid;
+        fill.interior.edit().renderingModel = model;
+        DrawItem item;
+        item.primitive = fill;
+        const ItemGeometry g = describeItem(item, glm::dmat4(1.0));
+        REQUIRE_FALSE(g.parts.empty());
+        const auto& corners = fill.contours[0];
+        for (std::uint32_t i = g.parts[0].first; i < g.parts[0].first + g.parts[0].count; ++i) {
+            const glm::dvec3 p(g.vertices[i].position);
+            for (std::size_t e = 0; e < 4; ++e) {
+                const glm::dvec3 a = corners[e], b = corners[(e + 1) % 4];
+                const double t = glm::dot(p - a, b - a) / glm::dot(b - a, b - a);
+                if (!(t > 1e-6 && t < 1 - 1e-6) || glm::length(a + t * (b - a) - p) > 1e-6) continue;
+                const glm::dvec3 ca(fill.vertexColours[0][e]), cb(fill.vertexColours[0][(e + 1) % 4]);
+                const glm::dvec3 expected =
+                    toRgb(model, (1 - t) * fromRgb(model, ca) + t * fromRgb(model, cb));
+                CHECK(glm::length(glm::dvec3(g.vertices[i].colour) - expected) < 1e-4);
+                ++cut;
+            }
+        }
+    }
+    CHECK(cut >= 40);  // every quadrilateral has cut vertices
 }
 
 TEST_CASE("line patterns: solid, dashed, dotted and dash-dotted scale with the width", "[render][unit]") {

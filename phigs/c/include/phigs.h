@@ -1993,8 +1993,8 @@ void pinq_pred_dcue_rep(Pint ws_type, Pint dcue_ind, Pint* err_ind, Pdcue_bundle
 void pinq_light_src_facs(Pint ws_type, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                          Plight_src_facs* facs, Pint* num_elems_impl_list);
 /* More facilities of every type: the predefined depth cue entries (1), the rendering colour
- * models (PMODEL_RGB), and the curve and surface facilities: the approximation criteria drawn
- * (workstation dependent, constant subdivision between knots, chordal deviation), trimming curves
+ * models (PRCM_RGB .. PRCM_HLS, each drawn), and the curve and surface facilities: the approximation criteria
+ * drawn (workstation dependent, constant subdivision between knots, chordal deviation), trimming curves
  * workstation dependent, surface characteristics PSC_NONE .. PSC_LEVEL_CURVES_WC, and no
  * limit on B-spline orders (INT_MAX). */
 typedef struct {
@@ -2043,7 +2043,15 @@ void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type
 void pset_of_fill_area_set3_data(Pint fflag, Pint eflag, Pint vflag, Pint colr_type, Pint num_sets,
                                  const Pfacet_data_arr3* fdata, const Pedge_data_list_list* edata,
                                  const Pint_list_list* vlist, const Pfacet_vdata_list3* vdata);
-/* SET RENDERING COLOUR MODEL: stored and inquired; the workstations render in RGB whatever it is. */
+/* SET RENDERING COLOUR MODEL: the colour space area primitives' colours are interpolated and depth
+ * cued in, on every workstation type. Vertex colours, and with PSD_COLOUR shading the vertex
+ * colours lit, are converted into the model (CIE: u', v', Y; HSV; HLS; components as for
+ * pset_colr_model, the colour clamped to [0, 1] first), interpolated across the facet component
+ * by component (hue linearly, without wrapping), depth cued there and converted back to RGB. The
+ * reflectance equations sum in RGB (a product of hues has no meaning). The hardcopy types shade
+ * per triangle of the area (a triangle is one): each shows its vertices' mean in the model, the
+ * colour the raster shows at its centroid. PRCM_WS_DEP and any other value draw
+ * as PRCM_RGB. Polylines, edges, markers and text are drawn in RGB. */
 #define PRCM_WS_DEP 0
 #define PRCM_RGB 1
 #define PRCM_CIE 2

@@ -269,7 +269,8 @@ void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* e
                                     Pint* total) {
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
-        c::answerList({PMODEL_RGB}, appl, start, models, total);
+        // Every type draws in each (0, workstation dependent, is drawn as RGB).
+        c::answerList({PRCM_RGB, PRCM_CIE, PRCM_HSV, PRCM_HLS}, appl, start, models, total);
     });
 }
 

@@ -1,5 +1,7 @@
 #include "phigs/hardcopy/ItemColouring.h"
 
+#include "phigs/core/ColourModels.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -43,6 +45,13 @@ glm::dvec3 oneLight(const Light& light, int model, const Reflectance& k, glm::dv
     return sum;
 }
 
+/// The components of `rgb` in the rendering colour model `m`, as the raster's shaders take them
+/// (shaders/colour_models.glsl): other models than RGB see the colour clamped to [0, 1].
+glm::dvec3 inModel(ColourModel m, glm::dvec3 rgb) {
+    if (m == ColourModel::Rgb) return rgb;
+    return fromRgb(m, glm::clamp(rgb, glm::dvec3(0.0), glm::dvec3(1.0)));
+}
+
 glm::dvec3 unit(const glm::dvec3& v) {
     const double length = glm::length(v);
     return length > 0.0 ? v / length : glm::dvec3(0.0);
@@ -77,10 +86,12 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
     if (vertices.empty()) return interior.colour;
     const bool useBack = interior.distinguishBackFaces && back;
     glm::dvec3 centre(0.0), normal(0.0), base(0.0);
+    // A facet shows the mean of its vertices' colours, taken in the rendering colour model.
+    const ColourModel space = interior.renderingModel;
     for (const FacetVertex& v : vertices)
-        centre += v.position, normal += v.normal, base += glm::dvec3(v.colour);
+        centre += v.position, normal += v.normal, base += inModel(space, glm::dvec3(v.colour));
     const double n = double(vertices.size());
-    centre /= n, base /= n;
+    centre /= n, base = toRgb(space, base / n);
     const glm::vec3 front = glm::vec3(base), backBase = useBack ? interior.backColour : front;
     const ReflectanceModel model = useBack ? interior.back.reflectance : interior.reflectance;
     const bool lighting = model != ReflectanceModel::None && lights_;
@@ -91,9 +102,10 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
         glm::dvec3 sum(0.0);
         for (const FacetVertex& v : vertices) {
             const glm::vec3 b = useBack ? interior.backColour : v.colour;
-            sum += glm::dvec3(lit(interior, useBack, b, v.position, back ? -unit(v.normal) : unit(v.normal)));
+            sum += inModel(space, glm::dvec3(lit(interior, useBack, b, v.position,
+                                                 back ? -unit(v.normal) : unit(v.normal))));
         }
-        return glm::vec3(sum / n);
+        return glm::vec3(toRgb(space, sum / n));
     }
     glm::dvec3 facetNormal(0.0);
     if (method == ShadingMethod::Normal) {
@@ -125,12 +137,18 @@ ItemColouring::CellLighting ItemColouring::patternLighting(const InteriorStyleSe
     return {litWith(1.0f) - offset, offset};
 }
 
-glm::vec3 ItemColouring::finish(glm::vec3 colour, double npcZ) const {
+glm::vec3 ItemColouring::finish(glm::vec3 colour, double npcZ, ColourModel model) const {
     if (cue_) {
         const double range = std::max(cue_->frontPlane - cue_->backPlane, 1e-9);
         const float t = float(std::clamp((npcZ - cue_->backPlane) / range, 0.0, 1.0));
         const float s = cue_->backScale + (cue_->frontScale - cue_->backScale) * t;
-        colour = s * colour + (1.0f - s) * cue_->colour;
+        if (model == ColourModel::Rgb) {
+            colour = s * colour + (1.0f - s) * cue_->colour;
+        } else {
+            const glm::dvec3 mixed = double(s) * inModel(model, glm::dvec3(colour)) +
+                                     double(1.0f - s) * inModel(model, glm::dvec3(cue_->colour));
+            colour = glm::vec3(toRgb(model, mixed));
+        }
     }
     colour = glm::mix(colour, glm::vec3(highlight_), highlight_.w);
     return glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));

@@ -30,6 +30,7 @@ void FacetPaint::styleFor(const InteriorStyleSet& in, int facing) {
     hatchIndex = in.styleIndexOf(back);
     pattern = style == InteriorStyle::Pattern;
     backPattern = back && in.distinguishBackFaces;
+    model = in.renderingModel;
 }
 
 void FacetPaint::paintFor(const ItemColouring& colouring, const InteriorStyleSet& in,
@@ -71,7 +72,7 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
 
 std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
     const std::vector<std::vector<glm::dvec3>>& world, double depth, int side,
-    const ItemColouring::CellLighting& lighting) const {
+    const ItemColouring::CellLighting& lighting, ColourModel model) const {
     // Three well spread points of the facet: the first, the farthest from it, and the one
     // farthest from the line through those two.
     std::vector<glm::dvec3> points;
@@ -106,7 +107,7 @@ std::shared_ptr<const PagePattern> ItemPipeline::pagePattern(
     auto result = std::make_shared<PagePattern>();
     result->cells = *pattern_[side];
     for (glm::vec3& colour : result->cells.colours)
-        colour = colouring_.finish(colour * lighting.gain + lighting.offset, depth);
+        colour = colouring_.finish(colour * lighting.gain + lighting.offset, depth, model);
     result->u = inverse * glm::dvec3(c0.x, c1.x, c2.x);
     result->v = inverse * glm::dvec3(c0.y, c1.y, c2.y);
     return result;
@@ -239,12 +240,13 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
         }
     }
     if (f.contours.empty()) return;
-    f.colour = paint.coverOnly ? list_.background : colouring_.finish(paint.colour, depth / double(count));
+    f.colour = paint.coverOnly ? list_.background
+                               : colouring_.finish(paint.colour, depth / double(count), paint.model);
     f.opacity = paint.opacity;
     f.hatch = paint.hatch;
     f.hatchIndex = paint.hatchIndex;
     if (const int side = paint.backPattern ? 1 : 0; paint.pattern && !paint.coverOnly && patternMap_[side])
-        f.pattern = pagePattern(world, depth / double(count), side, paint.cells);
+        f.pattern = pagePattern(world, depth / double(count), side, paint.cells, paint.model);
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;

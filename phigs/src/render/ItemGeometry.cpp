@@ -1,10 +1,12 @@
 #include "phigs/render/ItemGeometry.h"
 
+#include "phigs/core/ColourModels.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
 #include "phigs/render/StrokeFont.h"
 #include "phigs/render/Triangulation.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -21,6 +23,17 @@ namespace {
 glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
     const glm::dvec4 q = m * glm::dvec4(p, 1.0);
     return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
+}
+
+/// The colour at `t` from `a` to `b` mixed in the rendering colour model, as the renderer
+/// interpolates (clamped to [0, 1] first outside RGB, shaders/colour_models.glsl), so a vertex the
+/// triangulation cuts on an edge carries the colour the edge has there.
+glm::vec3 mixIn(ColourModel model, glm::vec3 a, glm::vec3 b, double t) {
+    if (model == ColourModel::Rgb) return glm::mix(a, b, float(t));
+    if (t == 0.0 || t == 1.0) return t == 0.0 ? a : b;
+    const glm::dvec3 from = fromRgb(model, glm::clamp(glm::dvec3(a), 0.0, 1.0));
+    const glm::dvec3 to = fromRgb(model, glm::clamp(glm::dvec3(b), 0.0, 1.0));
+    return glm::vec3(toRgb(model, from * (1.0 - t) + to * t));
 }
 
 class Builder {
@@ -208,7 +221,8 @@ private:
             const double t = tv.t;
             const glm::dvec3 p = flat[tv.from] * (1.0 - t) + flat[tv.to] * t;
             const glm::vec3 colour =
-                haveColours ? glm::mix(colours[tv.from], colours[tv.to], float(t)) : f.interior->colour;
+                haveColours ? mixIn(f.interior->renderingModel, colours[tv.from], colours[tv.to], t)
+                            : f.interior->colour;
             glm::dvec3 n = haveNormals ? normals[tv.from] * (1.0 - t) + normals[tv.to] * t : normal;
             if (glm::length(n) > 0.0) n = glm::normalize(n);
             push(p, glm::vec3(n), colour, {}, 0.0f);

@@ -20,6 +20,18 @@ double xAt(const Edge& e, double y) {
 }  // namespace
 
 Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& contours) {
+    // A lone triangle is its own triangulation: no slab cut, so vertex data interpolate across it
+    // from its corners alone (a cut vertex would carry a value mixed in one colour space).
+    if (contours.size() == 1 && contours[0].size() == 3) {
+        const auto& c = contours[0];
+        const double area = (c[1].x - c[0].x) * (c[2].y - c[0].y) - (c[1].y - c[0].y) * (c[2].x - c[0].x);
+        Triangulation out;
+        if (!(area != 0.0)) return out;
+        for (std::uint32_t i = 0; i < 3; ++i) out.vertices.push_back({c[i], i, i, 0.0});
+        out.triangles =
+            area > 0.0 ? std::vector<std::uint32_t>{0, 1, 2} : std::vector<std::uint32_t>{0, 2, 1};
+        return out;
+    }
     std::vector<Edge> edges;
     std::vector<double> ys;
     std::uint32_t base = 0;

@@ -67,7 +67,7 @@ struct State {
     std::set<int> lights;
     int depthCueIndex = 0;
     int colourMapIndex = 0;        ///< the colour mapping table entry colours are drawn through
-    int renderingColourModel = 0;  ///< kept for inquiry: the workstations render in RGB only
+    int renderingColourModel = 0;  ///< PRCM_WS_DEP (0, drawn as RGB) .. PRCM_HLS (4)
     int viewIndex = 0, pickId = 0, hlhsrId = 0;
     std::set<int> names;
     glm::dmat4 local{1.0}, global{1.0};
@@ -471,6 +471,11 @@ struct Resolver {
             reflectance(s.ind(AspectId::BackAreaProperties) ? s.backProperties : b.backProperties);
         out.cull = static_cast<CullMode>(s.faceCulling);
         out.distinguishBackFaces = s.faceDistinguishing != 0;
+        // Workstation dependent (0) and models no workstation has are drawn in RGB, as the
+        // standard asks for a model that is not available.
+        out.renderingModel = isColourModel(s.renderingColourModel)
+                                 ? static_cast<ColourModel>(s.renderingColourModel)
+                                 : ColourModel::Rgb;
         out.back = {s.ind(AspectId::BackInteriorStyle) ? s.backStyle : b.backStyle,
                     s.ind(AspectId::BackInteriorStyleIndex) ? s.backStyleIndex : b.backStyleIndex,
                     s.ind(AspectId::BackInteriorShading) ? s.backShading : b.backShading,

@@ -45,6 +45,9 @@ constexpr std::uint64_t kPatterned = 1ull << 36;
 constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
 // The draws' modelling transformation is the identity (no matrix read per vertex).
 constexpr std::uint64_t kIdentityModel = 1ull << 38;
+// The rendering colour model less one (0 RGB .. 3 HLS) in bits 39..40, where it changes the
+// picture: interpolated vertex colours, Gouraud or depth cueing.
+constexpr int kColourModelShift = 39;
 
 // The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
 constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -296,6 +299,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {12, flag(kPatterned)},
         {13, flag(kPremultipliedLights)},
         {14, flag(kIdentityModel)},
+        {15, std::int32_t((key >> kColourModelShift) & 3) + 1},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -598,6 +602,9 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 }
             }
             if (!cued) c.pipeline |= kNoDepthCue;
+            if (interior && part.role == render::PartRole::Interior &&
+                (cued || part.vertexColours || (c.pipeline & kVertexLighting)))
+                c.pipeline |= std::uint64_t(int(interior->renderingModel) - 1) << kColourModelShift;
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
             if (flags & gpu::Highlight) c.pipeline |= kHighlighted;

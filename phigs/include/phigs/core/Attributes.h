@@ -4,6 +4,8 @@
 // the enumerations of ISO 9592 / 9592-4 and the resolved styles, lights and depth cues. At
 // the bottom of phigs (core), so the tables, traversal and its consumers share them.
 
+#include "phigs/core/ColourModels.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -87,6 +89,9 @@ struct InteriorStyleSet {
     CullMode cull = CullMode::None;
     bool distinguishBackFaces = false;  ///< back faces use backColour / backProperties / back
     BackFaceStyle back;
+    /// PHIGS PLUS rendering colour model: the space the vertex colours, the lit vertex colours
+    /// (Gouraud) and depth cueing are interpolated and mixed in (lighting itself sums in RGB).
+    ColourModel renderingModel = ColourModel::Rgb;
     /// The style, style index and shading method a side's faces are drawn with: the back ones for
     /// back faces with face distinguishing on, else the front ones.
     InteriorStyle styleOf(bool backFace) const { return backSide(backFace) ? back.style : style; }

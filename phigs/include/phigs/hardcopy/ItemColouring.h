@@ -39,8 +39,9 @@ public:
     /// The lighting of a PATTERN facet's cells: facet() with the pattern cell as the base colour.
     CellLighting patternLighting(const InteriorStyleSet& interior, std::vector<FacetVertex> vertices,
                                  bool vertexNormals, bool back) const;
-    /// Depth cueing at NPC z, then highlighting, clamped: what every colour goes through last.
-    glm::vec3 finish(glm::vec3 colour, double npcZ) const;
+    /// Depth cueing at NPC z (mixed in the rendering colour model `model`: interiors give
+    /// theirs), then highlighting, clamped: what every colour goes through last.
+    glm::vec3 finish(glm::vec3 colour, double npcZ, ColourModel model = ColourModel::Rgb) const;
     /// Whether the item is depth cued (its lines then change colour along their length).
     bool cued() const { return cue_ != nullptr; }
 

@@ -25,7 +25,8 @@ struct FacetPaint {
     int hatchIndex = 1;
     bool pattern = false;      ///< a PATTERN interior: the item's pattern, when it has one, not `colour`
     bool backPattern = false;  ///< the pattern is the distinguished back style's, not the front's
-    ItemColouring::CellLighting cells;  ///< a PATTERN interior: how its cells are lit
+    ItemColouring::CellLighting cells;     ///< a PATTERN interior: how its cells are lit
+    ColourModel model = ColourModel::Rgb;  ///< the rendering colour model depth cueing mixes in
     bool coverOnly = false;
     bool seam = false;
     /// The hatch or pattern of the side a facet shows (facing < 0: its back; the back style when
@@ -79,10 +80,11 @@ public:
 private:
     /// The page pattern of a facet given by its world contours (the item's map at three of its
     /// points; exact under parallel projection, fitted at those points under perspective), its
-    /// cells lit by `lighting`.
+    /// cells lit by `lighting` and depth cued in `model`.
     std::shared_ptr<const PagePattern> pagePattern(const std::vector<std::vector<glm::dvec3>>& world,
                                                    double depth, int side,
-                                                   const ItemColouring::CellLighting& lighting) const;
+                                                   const ItemColouring::CellLighting& lighting,
+                                                   ColourModel model) const;
     void emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour, LineType type, float width);
     /// A view-clipped run of a line with vertex colours (see line()), as pieces of one colour.
     void colouredRun(const std::vector<ClipVertex>& run, std::span<const glm::vec3> colours,

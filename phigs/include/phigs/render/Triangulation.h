@@ -24,7 +24,8 @@ struct Triangulation {
 
 /// Triangulates closed contours (concave, with holes, even self-intersecting) by the even-odd rule:
 /// the plane is cut into horizontal slabs at every vertex and crossing, and each slab's inside
-/// spans become trapezoids. Degenerate contours (fewer than 3 points) are ignored.
+/// spans become trapezoids. Degenerate contours (fewer than 3 points) are ignored. A lone triangle
+/// (one contour of 3 points) is returned as it is, its corners as the vertices.
 Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& contours);
 
 /// Total area of a triangulation (used by tests and to detect empty fills).
