@@ -24,16 +24,14 @@ inline DrawList unitList() {
     return list;
 }
 
-inline DrawSource sourceOf(std::vector<DrawPathLevel> path) {
-    DrawSource s;
-    s.path = std::move(path);
-    return s;
+inline DrawSource sourceOf(const std::vector<DrawPathLevel>& path) {
+    return DrawSource(path);
 }
 
 inline DrawItem item(DrawPrimitive primitive, std::vector<DrawPathLevel> path) {
     DrawItem i;
     i.primitive = std::move(primitive);
-    i.source = sourceOf(std::move(path));
+    i.source = sourceOf(path);
     return i;
 }
 

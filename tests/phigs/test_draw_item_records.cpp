@@ -151,7 +151,7 @@ TEST_CASE("a segment's shared transform is the item's composite transform", "[tr
             const glm::dmat4* last = nullptr;
             for (const DrawItem& item : segment->items) {
                 REQUIRE_FALSE(item.modelTransform.owned());
-                CHECK(item.modelTransform.get() == pathTransform(store, item.source.path));
+                CHECK(item.modelTransform.get() == pathTransform(store, item.source.path()));
                 // One record per run of equal transforms: a new record only where it changed.
                 const glm::dmat4* at = &item.modelTransform.get();
                 if (last && at != last) CHECK(*at != *last);

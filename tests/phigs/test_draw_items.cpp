@@ -102,8 +102,10 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
         // Items as traversal makes them: points and the path above them are views of the
         // segment's own storage.
         auto segment = std::make_shared<DrawSegment>();
-        for (int k = pick(1, 3); k > 0; --k)
-            segment->pathPrefix.push_back({pick(1, 9), pick(1, 9), pick(0, 9)});
+        std::vector<DrawPathLevel> prefix;
+        for (int k = pick(1, 3); k > 0; --k) prefix.push_back({pick(1, 9), pick(1, 9), pick(0, 9)});
+        const int structureId = pick(1, 9);
+        segment->source.set(prefix, structureId, 1);
         std::vector<std::vector<glm::dvec3>> points;
         std::vector<std::vector<DrawPathLevel>> paths;
         for (int n = pick(1, 40); n > 0; --n) {
@@ -116,12 +118,11 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
                              {},
                              {},
                              false};
-            const DrawPathLevel own{pick(1, 9), pick(1, 99), pick(0, 9)};
-            item.source.path = DrawPath::below(
-                ItemArray<DrawPathLevel>::view(segment->pathPrefix.data(), segment->pathPrefix.size()), own);
+            const DrawPathLevel own{structureId, pick(1, 99), pick(0, 9)};
+            item.source = DrawSource::view(&segment->source, own.elementNumber, own.pickId);
             segment->items.push_back(std::move(item));
             points.push_back(p);
-            paths.push_back(segment->pathPrefix);
+            paths.push_back(prefix);
             paths.back().push_back(own);
         }
         DrawItems shared, writer;
@@ -137,10 +138,10 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
         for (std::size_t i = 0; i < points.size(); ++i) {
             INFO("seed " << seed << " item " << i);
             REQUIRE(std::get<DrawPolyline>(writer[i].primitive).points == points[i]);
-            REQUIRE(writer[i].source.path == paths[i]);
-            REQUIRE(std::vector<DrawPathLevel>(writer[i].source.path) == paths[i]);
+            REQUIRE(writer[i].source.path() == paths[i]);
+            REQUIRE(std::vector<DrawPathLevel>(writer[i].source.path()) == paths[i]);
         }
         REQUIRE(std::get<DrawPolyline>(copied.primitive).points == points[at]);
-        REQUIRE(copied.source.path == paths[at]);
+        REQUIRE(copied.source.path() == paths[at]);
     }
 }

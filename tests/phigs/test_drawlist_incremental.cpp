@@ -40,8 +40,8 @@ struct ItemView {
 
 ItemView view(const DrawList& list, const DrawItem& item) {
     ItemView v{item.primitive.index(),
-               item.source.path,
-               item.source.structureVersion,
+               item.source.path(),
+               item.source.structureVersion(),
                item.modelTransform.get(),
                item.viewIndex,
                item.highlighted,

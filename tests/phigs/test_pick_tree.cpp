@@ -204,7 +204,7 @@ TEST_CASE("pick tree: an unchanged list costs no update; an item edited in place
     list.items[0] = item(square(0.4, 0.6, 0.5), {{1, 1, 2}});
     const auto hit = picker.nearest(list, {0.5, 0.5}, 0.001);
     REQUIRE(hit);
-    CHECK(list.items[hit->item].source.path.back().pickId == 2);
+    CHECK(list.items[hit->item].source.path().back().pickId == 2);
 }
 
 TEST_CASE("pick tree: a workstation's pick device traverses again only when something changed",

@@ -38,7 +38,7 @@ struct Drawn {
 std::vector<Drawn> drawn(const DrawList& list) {
     std::vector<Drawn> out;
     for (const DrawItem& item : list.items) {
-        Drawn d{item.primitive.index(), item.source.path, {}};
+        Drawn d{item.primitive.index(), item.source.path(), {}};
         if (auto* p = std::get_if<DrawPolyline>(&item.primitive)) d.points = p->points;
         out.push_back(std::move(d));
     }

@@ -50,9 +50,9 @@ TEST_CASE("attributes are inherited by executed structures and restored on retur
     CHECK(polylineOf(list.items[1]).style->colour == glm::vec3(0, 1, 0));  // set in the child
     CHECK(polylineOf(list.items[2]).style->colour == glm::vec3(1, 0, 0));  // restored after return
     // the paths: structure, 1-based element number, pick id per level
-    CHECK(list.items[1].source.path == std::vector<DrawPathLevel>{{1, 3, 0}, {2, 3, 0}});
-    CHECK(list.items[2].source.path == std::vector<DrawPathLevel>{{1, 4, 0}});
-    CHECK(list.items[1].source.structureVersion == s.store->structure(2).version);
+    CHECK(list.items[1].source.path() == std::vector<DrawPathLevel>{{1, 3, 0}, {2, 3, 0}});
+    CHECK(list.items[2].source.path() == std::vector<DrawPathLevel>{{1, 4, 0}});
+    CHECK(list.items[1].source.structureVersion() == s.store->structure(2).version);
 }
 
 TEST_CASE("bundled attributes through the aspect source flags", "[traverse]") {
@@ -119,7 +119,7 @@ TEST_CASE("name sets: invisibility, highlighting and pick filters", "[traverse]"
     REQUIRE(list.items.size() == 3);
     CHECK(list.items[0].highlighted);
     CHECK(list.items[0].pickable);
-    CHECK(list.items[1].source.path.back().elementNumber == 4);
+    CHECK(list.items[1].source.path().back().elementNumber == 4);
     CHECK(list.items[2].highlighted);
     CHECK_FALSE(list.items[2].pickable);  // names {1}: not in the pick filter
     // a pick traversal with its own filters leaves the display alone
@@ -142,7 +142,7 @@ TEST_CASE("posted networks are drawn in priority order, ties in posting order", 
     s.ws->postStructure(3, 0.9);
     const DrawList& list = s.ws->display();
     std::vector<int> order;
-    for (const auto& item : list.items) order.push_back(item.source.path.back().pickId);
+    for (const auto& item : list.items) order.push_back(item.source.path().back().pickId);
     CHECK(order == std::vector<int>{2, 1, 3});
     CHECK(s.ws->postedStructures() == std::vector<PostedStructure>{{2, 0.1}, {1, 0.9}, {3, 0.9}});
     s.ws->postStructure(1, 0.95);  // reposting changes the priority
@@ -256,7 +256,7 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     CHECK(counters.curvesTessellated == 2);
     CHECK(std::get<DrawMesh>(second.items[0].primitive).mesh == mesh.mesh);  // the same pointer
     CHECK(std::get<DrawMesh>(second.items[1].primitive).mesh == cut.mesh);
-    CHECK(second.items[1].source.structureVersion != first.items[1].source.structureVersion);
+    CHECK(second.items[1].source.structureVersion() != first.items[1].source.structureVersion());
     CHECK(second.generation != first.generation);
     // changing the approximation criteria re-tessellates that surface
     s.store->openStructure(3);
@@ -282,7 +282,7 @@ TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full tra
     auto summary = [](const DrawList& list) {
         std::vector<std::tuple<std::vector<DrawPathLevel>, glm::dmat4, bool, int, std::size_t>> out;
         for (const auto& item : list.items)
-            out.emplace_back(item.source.path, item.modelTransform.get(), item.highlighted, item.lightSet,
+            out.emplace_back(item.source.path(), item.modelTransform.get(), item.highlighted, item.lightSet,
                              item.primitive.index());
         return out;
     };
@@ -392,7 +392,7 @@ TEST_CASE("an edit replaces only its structure's segments of the draw list; the 
     REQUIRE(after.items.size() == before.items.size() + 1);
     CHECK(s.ws->traverser().elementsTraversed() == 6 + 6);  // the root and the edited leaf
     auto owner = [](const DrawItems::SegmentPtr& segment) {
-        return segment->items.front().source.path.back().structureId;
+        return segment->items.front().source.path().back().structureId;
     };
     int shared = 0, fresh = 0;
     for (const auto& segment : after.items.segments()) {

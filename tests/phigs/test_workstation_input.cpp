@@ -159,7 +159,7 @@ TEST_CASE("workstation output seam: the picture with the echo, input through the
     REQUIRE(ws.present());
     REQUIRE(out.last.items.size() == 2);
     CHECK_FALSE(out.last.items[1].highlighted);
-    ws.setEcho({out.last.items[1].source.path});
+    ws.setEcho({out.last.items[1].source.path()});
     REQUIRE(ws.present());
     CHECK(out.presents == 2);
     CHECK_FALSE(out.last.items[0].highlighted);

@@ -23,8 +23,7 @@ DrawList editableScene(std::shared_ptr<const MeshData> mesh) {
         l.style.edit().colour = {1, 1, 0};
         l.style.edit().type = k == 2 ? LineType::Dashed : LineType::Solid;
         DrawItem i = item(l);
-        i.source.path = {{1, k + 1, 0}};
-        i.source.structureVersion = 1;
+        i.source = DrawSource({{1, k + 1, 0}}, 1);
         list.items.push_back(i);
     }
     DrawMesh m;
@@ -58,7 +57,7 @@ std::map<int, std::shared_ptr<const MeshData>> meshesByStructure(const DrawList&
     std::map<int, std::shared_ptr<const MeshData>> meshes;
     for (const DrawItem& item : picture.items)
         if (const auto* m = std::get_if<DrawMesh>(&item.primitive))
-            meshes[item.source.path.back().structureId] = m->mesh;
+            meshes[item.source.path().back().structureId] = m->mesh;
     return meshes;
 }
 
@@ -101,7 +100,7 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             std::vector<glm::dvec3> points = moved;
             points[1].y += 0.1;
             moved = points;
-            list.items[1].source.structureVersion = 2;
+            list.items[1].source = DrawSource(list.items[1].source.path(), 2);
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 1);
             CHECK(renderer.lastFrame().uploadedBytes == 2 * sizeof(render::RenderVertex));

@@ -40,7 +40,7 @@ DrawList squareScene() {
     f.interior.edit().style = InteriorStyle::Solid;
     DrawItem item;
     item.primitive = f;
-    item.source.path = {{3, 2, 1}, {4, 6, 8}};
+    item.source = DrawSource({{3, 2, 1}, {4, 6, 8}});
     list.items.push_back(item);
     return list;
 }

@@ -42,7 +42,7 @@ TEST_CASE("window: real X pointer and button events reach the pick device", "[wi
     marker.points = {{0.25, 0.75, 0.5}};  // pixel (25, 25)
     DrawItem item;
     item.primitive = marker;
-    item.source.path = {{9, 4, 2}};
+    item.source = DrawSource({{9, 4, 2}});
     list.items.push_back(item);
     DrawListMeasurer measurer(list);
     {

@@ -545,7 +545,7 @@ PickMeasure Picker::pick(const DrawList& list, glm::dvec2 npc, const PickOptions
 
 std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, int depth) {
     std::vector<PickPathItem> path;
-    for (const DrawPathLevel& l : source.path) path.push_back({l.structureId, l.elementNumber, l.pickId});
+    for (const DrawPathLevel& l : source.path()) path.push_back({l.structureId, l.elementNumber, l.pickId});
     if (order == PathOrder::BottomFirst) std::reverse(path.begin(), path.end());
     if (depth > 0 && static_cast<std::size_t>(depth) < path.size())
         path.resize(static_cast<std::size_t>(depth));
@@ -555,12 +555,12 @@ std::vector<PickPathItem> pickPath(const DrawSource& source, PathOrder order, in
 std::vector<std::size_t> echoItems(const DrawList& list, const PickHit& hit, bool wholeStructure) {
     std::vector<std::size_t> out;
     if (hit.item >= list.items.size()) return out;
-    const auto& path = list.items[hit.item].source.path;
+    const auto& path = list.items[hit.item].source.path();
     if (path.empty()) return {hit.item};
     // The structure instance: the levels above the primitive, and the structure it sits in.
     const std::size_t prefix = path.size() - 1;
     for (std::size_t i = 0; i < list.items.size(); ++i) {
-        const auto& other = list.items[i].source.path;
+        const auto& other = list.items[i].source.path();
         const bool same = wholeStructure
                               ? other.size() == path.size() &&
                                     std::equal(path.begin(), path.begin() + prefix, other.begin()) &&

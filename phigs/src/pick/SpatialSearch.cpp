@@ -81,7 +81,7 @@ StructurePath incrementalSpatialSearch(const StructureStore& store, const Spatia
     const DrawList list = traverser.traverse(store, {query.start.front().structureId}, WorkstationTables{});
     const double reach = std::max(query.distance, 0.0);
     for (const DrawItem& item : list.items) {
-        const auto& path = item.source.path;
+        const auto& path = item.source.path();
         if (!searched(path, query) || !(locusDistance(item, query.point, query.modelClip) <= reach)) continue;
         if (!passes(namesAt(store, path), query)) continue;
         StructurePath found;

@@ -15,7 +15,7 @@ constexpr std::size_t kKeepPoints = 1 << 16;
 void empty(DrawSegment& segment) {
     segment.items.clear();
     segment.styles.reset();
-    segment.pathPrefix.clear();
+    segment.source.prefix.clear();
     segment.points.clear();
     segment.transforms.clear();
     segment.clipPlanes.clear();

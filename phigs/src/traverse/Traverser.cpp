@@ -674,7 +674,7 @@ private:
         auto segment = segmentPool_.take();
         segment->items.reserve(primitives);
         segment->points.reserve(copying * 4);
-        segment->pathPrefix = path_;
+        segment->source.set(path_, s.id, s.version);
         segment->styles = itemTables_.styles;
         segment->storePoints = s.elements.pointPool();  // a segment's items are one structure's
         return segment;
@@ -814,19 +814,16 @@ private:
     }
 
     template <class Primitive>
-    DrawItem* emit(const Structure& s, int number, const State& state, Primitive&& primitive) {
+    DrawItem* emit(const Structure& /*the segment's*/, int number, const State& state,
+                   Primitive&& primitive) {
         const ItemFields& f = itemFields(state);
         if (f.invisible) return nullptr;
         // Built in place (the storage may hold a cold item of an earlier traversal: written once).
-        const std::vector<DrawPathLevel>& prefix = segment_->pathPrefix;
         DrawPrimitive p = held(std::forward<Primitive>(primitive));
         const bool owns = ItemVector::ownsSomething(p);  // the other fields view the segment
         DrawItem& item = segment_->items.emplaceKnown(
             owns, std::move(p), transform(state), f.viewIndex, f.lightSet, f.depthCue, f.highlighted,
-            f.pickable,
-            DrawSource{DrawPath::below(ItemArray<DrawPathLevel>::view(prefix.data(), prefix.size()),
-                                       {s.id, number, state.pickId}),
-                       s.version},
+            f.pickable, DrawSource::view(&segment_->source, number, state.pickId),
             state.modelClip ? clipPlanes(state) : ItemArray<glm::dvec4>{});
         return &item;
     }

@@ -483,7 +483,7 @@ const DrawList& Workstation::shownPicture() {
     if (echo_.empty()) return picture;
     echoed_ = picture;
     for (DrawItem& item : echoed_.items)
-        if (std::find(echo_.begin(), echo_.end(), item.source.path) != echo_.end()) item.highlighted = true;
+        if (std::find(echo_.begin(), echo_.end(), item.source.path()) != echo_.end()) item.highlighted = true;
     return echoed_;
 }
 
@@ -519,7 +519,7 @@ const DrawList& Workstation::pickList(const InputDevice& device) {
 std::vector<std::vector<DrawPathLevel>> Workstation::lastPickEcho() const {
     std::vector<std::vector<DrawPathLevel>> paths;
     if (!lastPickList_) return paths;
-    for (std::size_t i : measurer_.lastEcho()) paths.push_back(lastPickList_->items.at(i).source.path);
+    for (std::size_t i : measurer_.lastEcho()) paths.push_back(lastPickList_->items.at(i).source.path());
     return paths;
 }
 

@@ -4,6 +4,7 @@
 
 #include "phigs/core/Attributes.h"
 #include "phigs/traverse/DrawPath.h"
+#include "phigs/traverse/DrawSource.h"
 #include "phigs/traverse/ItemArray.h"
 #include "phigs/traverse/ItemRef.h"
 #include "phigs/traverse/SharedIndexList.h"
@@ -24,13 +25,6 @@
 #include <vector>
 
 namespace phigs {
-
-/// Where a draw item came from: the whole path from the posted root (top first), and the
-/// version of the primitive's own structure (a renderer may cache per element and version).
-struct DrawSource {
-    DrawPath path;  ///< path.back() is the primitive's own element
-    std::uint64_t structureVersion = 0;
-};
 
 /// A polyline: one connected strip of points in modelling coordinates. With vertex colours
 /// (one per point, else `style->colour`) segment i takes colours[i], or with `interpolated` goes

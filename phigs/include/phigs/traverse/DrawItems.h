@@ -9,10 +9,10 @@
 #include "phigs/traverse/BlockPool.h"
 #include "phigs/traverse/DrawItem.h"
 #include "phigs/traverse/ItemVector.h"
+#include "phigs/traverse/StableList.h"
 #include "phigs/traverse/StylePool.h"
 
 #include <cstddef>
-#include <deque>
 #include <initializer_list>
 #include <iterator>
 #include <memory>
@@ -29,9 +29,9 @@ struct DrawSegment {
     BlockPool<glm::dvec3> points;             ///< what the items' point views show
     BlockPool<glm::dmat4> transforms;         ///< one per run of items that share a transform
     BlockPool<glm::dvec4> clipPlanes;         ///< one volume per run of items that share it
-    std::deque<DrawFillArea> fillAreas;       ///< what the items' fill area views show
-    std::deque<DrawText> texts;               ///< what the items' text views show
-    std::vector<DrawPathLevel> pathPrefix;    ///< the levels above the items' own (set before any item)
+    StableList<DrawFillArea> fillAreas;       ///< what the items' fill area views show
+    StableList<DrawText> texts;               ///< what the items' text views show
+    DrawSource::Shared source;                ///< what the items' sources view (set before any item)
     std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
     /// The point pool of the items' structure, which polyline and marker points view (not copied).
     std::shared_ptr<const void> storePoints;
