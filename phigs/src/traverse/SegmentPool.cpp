@@ -54,7 +54,10 @@ std::shared_ptr<DrawSegment> SegmentPool::take() {
     {
         std::lock_guard lock(mutex_);
         ++taken_;
-        if (!free_.empty()) {
+        if (!given_.empty()) {
+            slot = std::move(given_.front());
+            given_.pop_front();
+        } else if (!free_.empty()) {
             slot = std::move(free_.back());
             free_.pop_back();
         }
@@ -73,12 +76,14 @@ void SegmentPool::give(Slot* slot) {
     const DrawSegment& segment = owned->segment;
     if (segment.items.capacity() > kKeepItems || segment.points.capacity() > kKeepPoints) return;
     std::lock_guard lock(mutex_);
-    if (!closed_) free_.push_back(std::move(owned));
+    if (!closed_) given_.push_back(std::move(owned));
 }
 
 void SegmentPool::settle(std::size_t count) {
     std::vector<std::unique_ptr<Slot>> dropped;
     std::lock_guard lock(mutex_);
+    for (auto& slot : given_) free_.push_back(std::move(slot));
+    given_.clear();
     if (free_.size() > count) {
         dropped.assign(std::make_move_iterator(free_.begin() + static_cast<std::ptrdiff_t>(count)),
                        std::make_move_iterator(free_.end()));
@@ -92,6 +97,8 @@ void SegmentPool::close() {
     std::lock_guard lock(mutex_);
     closed_ = true;
     dropped.swap(free_);
+    for (auto& slot : given_) dropped.push_back(std::move(slot));
+    given_.clear();
 }
 
 std::size_t SegmentPool::takenSince() {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -44,7 +45,12 @@ private:
     void give(Slot* slot);
 
     std::mutex mutex_;  ///< a draw list may be dropped on another thread
-    std::vector<std::unique_ptr<Slot>> free_;
+    /// Given back since the last settle, in the order given: a list drops its segments in
+    /// drawing order, and the next traversal taking them in that order mostly gets a segment
+    /// whose old items hold the meshes it is about to draw again (their counts then touch
+    /// memory just read, not another structure's).
+    std::deque<std::unique_ptr<Slot>> given_;
+    std::vector<std::unique_ptr<Slot>> free_;  ///< emptied by a settle, taken when given_ is
     std::size_t taken_ = 0;
     bool closed_ = false;
 };

@@ -710,12 +710,14 @@ private:
 
     /// The segment's record of the current transform: a new one only when it changed.
     ItemRef<glm::dmat4> transform(const State& state) {
-        if (!transform_ || transformEpoch_ != epoch_) {  // the state may have changed: compare
-            if (!transform_ || *transform_ != state.composite)
-                transform_ = segment_->transforms.add(&state.composite, 1);
-            transformEpoch_ = epoch_;
-        }
+        // The state may have changed: compare (out of line, so the common case inlines).
+        if (!transform_ || transformEpoch_ != epoch_) newTransform(state);
         return ItemRef<glm::dmat4>::view(transform_);
+    }
+    [[gnu::noinline]] void newTransform(const State& state) {
+        if (!transform_ || *transform_ != state.composite)
+            transform_ = segment_->transforms.add(&state.composite, 1);
+        transformEpoch_ = epoch_;
     }
     /// The segment's copy of the current model clipping volume, shared by the items it holds for.
     ItemArray<glm::dvec4> clipPlanes(const State& state) {
@@ -752,7 +754,10 @@ private:
     /// A line style per state, resolved and interned once per distinct inputs: a scene switches
     /// among few line styles, and most states repeat one seen before.
     ItemRef<LineStyle> line(const State& s) {
-        if (line_.epoch == epoch_) return viewOf(line_.record);
+        if (line_.epoch != epoch_) newLine(s);  // out of line, so the common case inlines
+        return viewOf(line_.record);
+    }
+    [[gnu::noinline]] void newLine(const State& s) {
         const LineInputs in{s.polylineIndex,
                             s.colourMapIndex,
                             unsigned(s.ind(AspectId::PolylineColour)) |
@@ -770,7 +775,6 @@ private:
         LineMemo& memo = lineMemo_[(h ^ (h >> 29)) % lineMemo_.size()];
         if (!memo.record || !(memo.key == in)) memo = {in, intern(resolve_.line(s)).operator->()};
         line_ = {epoch_, memo.record};
-        return viewOf(memo.record);
     }
     ItemRef<MarkerStyle> marker(const State& s) {
         return resolved(marker_, [&] { return resolve_.marker(s); });
@@ -789,16 +793,18 @@ private:
         std::int32_t viewIndex = 0, lightSet = -1, depthCue = -1;
     };
     const ItemFields& itemFields(const State& state) {
-        if (fields_.epoch == epoch_) return fields_;
+        if (fields_.epoch != epoch_) newItemFields(state);  // out of line, so the common case inlines
+        return fields_;
+    }
+    [[gnu::noinline]] void newItemFields(const State& state) {
         fields_.epoch = epoch_;
         fields_.invisible = filters_.invisibility && filters_.invisibility->accepts(state.names);
-        if (fields_.invisible) return fields_;  // no item: nothing else is asked for
+        if (fields_.invisible) return;  // no item: nothing else is asked for
         fields_.highlighted = filters_.highlight && filters_.highlight->accepts(state.names);
         fields_.pickable = !filters_.pick || filters_.pick->accepts(state.names);
         fields_.viewIndex = tables_.views.defined(state.viewIndex) ? state.viewIndex : 0;
         fields_.lightSet = lightSet(state.lights);
         fields_.depthCue = depthCue(state.depthCueIndex);
-        return fields_;
     }
 
     /// A primitive as its item holds it: fill areas and text in the segment, viewed.
