@@ -350,7 +350,7 @@ phigs::DrawList tubeList(std::vector<std::vector<geom::BezierSurfacePiece>>& pie
         item.primitive = mesh;
         item.modelTransform = glm::translate(
             glm::dmat4(1.0), glm::dvec3(-4.0 + 0.3 * (k % 3), -4.5 + 1.0 * k, -2.0 + 0.4 * (k % 4)));
-        item.source = DrawSource({{1, k + 1, k}});
+        item.source = phigs::DrawSource({{1, k + 1, k}});
         list.items.push_back(item);
         pieces.push_back(geom::extractBezier(*mesh.surface));
     }

@@ -92,7 +92,7 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
 /// where no bound settles them): below it a Newton basin is smaller than a region. Small weights
 /// can squeeze much of a patch's shape into a tiny corner of its parameters; there a region
 /// still larger than kLargeRegion of the surface goes on being halved, down to kHardDepth.
-constexpr int kMaxDepth = 8;
+constexpr int kMaxProjectionDepth = 8;
 constexpr int kHardDepth = 24;
 constexpr double kLargeRegion = 1e-3;
 
@@ -293,7 +293,7 @@ private:
 
     /// Whether a region may be halved again (points_ holds its net's points).
     bool mayHalve(const Region& region) const {
-        if (region.depth < kMaxDepth) return true;
+        if (region.depth < kMaxProjectionDepth) return true;
         if (region.depth >= kHardDepth) return false;
         BoundingBox box;
         for (const glm::dvec3& q : points_) box.add(q);

@@ -1,6 +1,7 @@
 #include "geom/exchange/CadFile.h"
 
 #include "CadDocument.h"
+#include "FailureText.h"
 #include "OcctSession.h"
 #include "ShapeBuild.h"
 #include "Units.h"
@@ -33,11 +34,6 @@
 namespace geom::exchange {
 
 namespace {
-
-std::string failureText(const Standard_Failure& e) {
-    const char* text = e.GetMessageString();
-    return text && *text ? text : e.DynamicType()->Name();
-}
 
 /// The parts a model is written as: each surface's patch faces, then its curve sets' faces.
 std::vector<NamedShape> modelParts(const CadModel& model, const std::string& file) {

@@ -1,5 +1,6 @@
 // readCadFile: an IGES or STEP file's faces back to named B-spline surfaces and curve sets.
 #include "CadDocument.h"
+#include "FailureText.h"
 #include "ImportCodec.h"
 #include "Isolated.h"
 #include "MessageCollector.h"
@@ -34,11 +35,6 @@
 namespace geom::exchange {
 
 namespace {
-
-std::string failureText(const Standard_Failure& e) {
-    const char* text = e.GetMessageString();
-    return text && *text ? text : e.DynamicType()->Name();
-}
 
 /// Refuses, before OpenCASCADE sees it, a path that is not a readable, non-empty file within the limit.
 void checkFile(const std::filesystem::path& path, const CadReadOptions& options) {

@@ -1,4 +1,5 @@
 #include "ShapeRead.h"
+#include "FailureText.h"
 
 #include "geom/GeometryError.h"
 #include "geom/Reparameterize.h"
@@ -32,11 +33,6 @@ namespace {
 std::string typeName(const opencascade::handle<Standard_Transient>& object) {
     const std::string name = object->DynamicType()->Name();
     return name.rfind("Geom_", 0) == 0 ? name.substr(5) : name;
-}
-
-std::string failureText(const Standard_Failure& e) {
-    const char* text = e.GetMessageString();
-    return text && *text ? text : e.DynamicType()->Name();
 }
 
 /// Every edge's curve on the face runs along the sides of the (u, v) box.

@@ -16,7 +16,7 @@ namespace {
 enum class Side { On, Front, Back, Both };
 
 /// A colour channel at the 8 bits of the raster (and of the painter's colours).
-int channel8(float c) {
+int channelByte(float c) {
     return int(std::lround(std::clamp(double(c), 0.0, 1.0) * 255.0));
 }
 
@@ -249,7 +249,8 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
     std::stable_sort(alone.begin(), alone.end(), [&](std::size_t a, std::size_t b) {
         const ProjectedFacet &p = facets[a], &q = facets[b];
         const auto key = [](const ProjectedFacet& f) {
-            return std::tuple(f.clip, channel8(f.colour.x), channel8(f.colour.y), channel8(f.colour.z));
+            return std::tuple(f.clip, channelByte(f.colour.x), channelByte(f.colour.y),
+                              channelByte(f.colour.z));
         };
         return key(p) < key(q);
     });

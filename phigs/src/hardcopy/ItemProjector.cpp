@@ -1,5 +1,6 @@
 #include "phigs/hardcopy/ItemProjector.h"
 
+#include "phigs/core/TransformUtilities.h"
 #include "phigs/hardcopy/CurveRefinement.h"
 #include "phigs/hardcopy/MeshProjector.h"
 #include "phigs/render/ItemGeometry.h"
@@ -15,11 +16,6 @@
 namespace phigs::hardcopy {
 namespace {
 
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
-}
-
 /// The raster's opacity of a facet: 1 - transparency of the side's reflectance.
 float opacityOf(const InteriorStyleSet& interior, bool back) {
     const Reflectance& r =
@@ -32,7 +28,8 @@ float opacityOf(const InteriorStyleSet& interior, bool back) {
 std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> points) const {
     std::vector<glm::dvec3> world;
     world.reserve(points.size());
-    for (const glm::dvec3& p : points) world.push_back(apply(pipeline_.item().modelTransform.get(), p));
+    for (const glm::dvec3& p : points)
+        world.push_back(projectPoint3(pipeline_.item().modelTransform.get(), p));
     return world;
 }
 
@@ -53,7 +50,7 @@ void ItemProjector::operator()(const DrawCurve& curve) {
 
 void ItemProjector::operator()(const DrawPolymarker& markers) {
     for (const glm::dvec3& p : markers.points)
-        pipeline_.marker(apply(pipeline_.item().modelTransform.get(), p), markers.style);
+        pipeline_.marker(projectPoint3(pipeline_.item().modelTransform.get(), p), markers.style);
 }
 
 void ItemProjector::operator()(const DrawFillArea& fill) {
@@ -148,7 +145,7 @@ void ItemProjector::operator()(const DrawText& text) {
     const glm::dmat4& model = pipeline_.item().modelTransform.get();
     if (text.annotation) {
         // Laid out in NPC at the projected reference point plus the offset, at its depth.
-        const glm::dvec3 reference = apply(model, text.position);
+        const glm::dvec3 reference = projectPoint3(model, text.position);
         if (!pipeline_.modelClipKeeps(reference)) return;
         const glm::dvec4 h = pipeline_.toNpc(reference);
         if (!(h.w > 0.0)) return;
@@ -169,7 +166,8 @@ void ItemProjector::operator()(const DrawText& text) {
     y = glm::length(y) > 0.0 ? glm::normalize(y) : glm::dvec3(0, 1, 0);
     for (const auto& strip : strips) {
         std::vector<glm::dvec3> world;
-        for (const glm::dvec2& q : strip) world.push_back(apply(model, text.position + x * q.x + y * q.y));
+        for (const glm::dvec2& q : strip)
+            world.push_back(projectPoint3(model, text.position + x * q.x + y * q.y));
         pipeline_.line(world, false, colour, LineType::Solid, 1.0f);
     }
 }

@@ -7,7 +7,7 @@
 namespace phigs::hardcopy {
 namespace {
 
-std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+std::uint64_t undirectedEdgeKey(std::uint32_t a, std::uint32_t b) {
     if (a > b) std::swap(a, b);
     return (std::uint64_t(a) << 32) | b;
 }
@@ -21,7 +21,7 @@ std::vector<std::pair<MeshEdge, std::vector<std::uint32_t>>> edgeTriangles(const
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = mesh.triangles[t + e], b = mesh.triangles[t + (e + 1) % 3];
             if (a >= count || b >= count || a == b) continue;
-            auto [it, added] = index.emplace(edgeKey(a, b), edges.size());
+            auto [it, added] = index.emplace(undirectedEdgeKey(a, b), edges.size());
             if (added) edges.push_back({{std::min(a, b), std::max(a, b)}, {}});
             edges[it->second].second.push_back(std::uint32_t(t / 3));
         }

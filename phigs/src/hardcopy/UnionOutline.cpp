@@ -8,7 +8,7 @@ namespace phigs::hardcopy {
 namespace {
 
 /// A directed edge between two point numbers, as one key.
-std::uint64_t edgeKey(std::uint32_t from, std::uint32_t to) {
+std::uint64_t directedEdgeKey(std::uint32_t from, std::uint32_t to) {
     return std::uint64_t(from) << 32 | to;
 }
 
@@ -37,10 +37,10 @@ std::vector<std::vector<glm::dvec2>> unionOutline(
         for (std::size_t i = 0; i < numbers.size(); ++i) {
             const std::uint32_t a = numbers[i], b = numbers[(i + 1) % numbers.size()];
             if (a == b) continue;
-            if (auto it = count.find(edgeKey(b, a)); it != count.end() && it->second > 0)
+            if (auto it = count.find(directedEdgeKey(b, a)); it != count.end() && it->second > 0)
                 --it->second;
             else
-                ++count[edgeKey(a, b)];
+                ++count[directedEdgeKey(a, b)];
         }
     }
     // What is left balances at every point (each contour enters a point as often as it leaves

@@ -1,5 +1,6 @@
 #include "phigs/pick/LocusDistance.h"
 
+#include "phigs/core/TransformUtilities.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/render/Triangulation.h"
 
@@ -14,11 +15,6 @@
 namespace phigs {
 
 namespace {
-
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
-}
 
 double side(const glm::dvec4& plane, const glm::dvec3& p) {
     return glm::dot(glm::dvec3(plane), p) + plane.w;
@@ -47,9 +43,10 @@ glm::dvec3 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm
 }
 
 /// The smallest distance from a point to the parts of a locus the clipping planes keep.
-class Measure {
+class LocusMeasure {
 public:
-    Measure(const glm::dvec3& point, const ItemArray<glm::dvec4>* planes) : point_(point), planes_(planes) {}
+    LocusMeasure(const glm::dvec3& point, const ItemArray<glm::dvec4>* planes)
+        : point_(point), planes_(planes) {}
 
     double best = std::numeric_limits<double>::infinity();
 
@@ -111,21 +108,22 @@ private:
     const ItemArray<glm::dvec4>* planes_;
 };
 
-void strip(Measure& m, std::span<const glm::dvec3> points, const glm::dmat4& model, bool closed) {
-    if (points.size() == 1) m.at(apply(model, points[0]));
+void strip(LocusMeasure& m, std::span<const glm::dvec3> points, const glm::dmat4& model, bool closed) {
+    if (points.size() == 1) m.at(projectPoint3(model, points[0]));
     for (std::size_t i = 0; i + 1 < points.size(); ++i)
-        m.segment(apply(model, points[i]), apply(model, points[i + 1]));
-    if (closed && points.size() > 2) m.segment(apply(model, points.back()), apply(model, points.front()));
+        m.segment(projectPoint3(model, points[i]), projectPoint3(model, points[i + 1]));
+    if (closed && points.size() > 2)
+        m.segment(projectPoint3(model, points.back()), projectPoint3(model, points.front()));
 }
 
 // The even-odd interior in the contours' plane (Newell's normal), and the boundary.
-void fillArea(Measure& m, const DrawFillArea& f, const glm::dmat4& model) {
+void fillArea(LocusMeasure& m, const DrawFillArea& f, const glm::dmat4& model) {
     std::vector<glm::dvec3> flat;
     glm::dvec3 normal(0.0);
     for (const auto& contour : f.contours) {
         for (std::size_t i = 0; i < contour.size(); ++i) {
-            const glm::dvec3 p = apply(model, contour[i]),
-                             q = apply(model, contour[(i + 1) % contour.size()]);
+            const glm::dvec3 p = projectPoint3(model, contour[i]),
+                             q = projectPoint3(model, contour[(i + 1) % contour.size()]);
             normal +=
                 glm::dvec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
         }
@@ -140,7 +138,7 @@ void fillArea(Measure& m, const DrawFillArea& f, const glm::dmat4& model) {
     for (const auto& contour : f.contours) {
         plane.emplace_back();
         for (const auto& p : contour) {
-            flat.push_back(apply(model, p));
+            flat.push_back(projectPoint3(model, p));
             plane.back().push_back({glm::dot(flat.back(), u), glm::dot(flat.back(), v)});
         }
     }
@@ -153,18 +151,18 @@ void fillArea(Measure& m, const DrawFillArea& f, const glm::dmat4& model) {
         m.triangle(vertex(t.triangles[i]), vertex(t.triangles[i + 1]), vertex(t.triangles[i + 2]));
 }
 
-void mesh(Measure& m, const DrawMesh& d, const glm::dmat4& model) {
+void mesh(LocusMeasure& m, const DrawMesh& d, const glm::dmat4& model) {
     if (!d.mesh) return;
     const MeshData& data = *d.mesh;
-    auto at = [&](std::uint32_t i) { return apply(model, glm::dvec3(data.positions[i])); };
+    auto at = [&](std::uint32_t i) { return projectPoint3(model, glm::dvec3(data.positions[i])); };
     for (std::size_t i = 0; i + 2 < data.triangles.size(); i += 3)
         m.triangle(at(data.triangles[i]), at(data.triangles[i + 1]), at(data.triangles[i + 2]));
 }
 
 // Text strokes as the renderer lays them out (world coordinates).
-void text(Measure& m, const DrawItem& item, const DrawText& t) {
+void text(LocusMeasure& m, const DrawItem& item, const DrawText& t) {
     if (t.annotation) {
-        m.at(apply(item.modelTransform.get(), t.position));
+        m.at(projectPoint3(item.modelTransform.get(), t.position));
         return;
     }
     const render::ItemGeometry g = render::describeItem(item, glm::dmat4(1.0));
@@ -176,7 +174,7 @@ void text(Measure& m, const DrawItem& item, const DrawText& t) {
 }  // namespace
 
 double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
-    Measure m(point, clip && !item.modelClipPlanes.empty() ? &item.modelClipPlanes : nullptr);
+    LocusMeasure m(point, clip && !item.modelClipPlanes.empty() ? &item.modelClipPlanes : nullptr);
     const glm::dmat4& model = item.modelTransform.get();
     visitPrimitive(
         [&](const auto& p) {
@@ -184,7 +182,7 @@ double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
                 strip(m, p.points, model, false);
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
-                for (const auto& q : p.points) m.at(apply(model, q));
+                for (const auto& q : p.points) m.at(projectPoint3(model, q));
             else if constexpr (std::is_same_v<T, DrawFillArea>)
                 fillArea(m, p, model);
             else if constexpr (std::is_same_v<T, DrawMesh>)

@@ -1,6 +1,7 @@
 #include "phigs/render/ItemGeometry.h"
 
 #include "phigs/core/ColourModels.h"
+#include "phigs/core/TransformUtilities.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
 #include "phigs/render/StrokeFont.h"
@@ -19,11 +20,6 @@
 
 namespace phigs::render {
 namespace {
-
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
-}
 
 /// The colour at `t` from `a` to `b` mixed in the rendering colour model, as the renderer
 /// interpolates (clamped to [0, 1] first outside RGB, shaders/colour_models.glsl), so a vertex the
@@ -63,7 +59,7 @@ public:
                 const glm::dvec3 a = strip[i], b = strip[(i + 1) % n];
                 double length = 0.0;
                 if (patterned) {
-                    const glm::dvec3 pa = apply(toPixels_, a), pb = apply(toPixels_, b);
+                    const glm::dvec3 pa = projectPoint3(toPixels_, a), pb = projectPoint3(toPixels_, b);
                     length = glm::length(glm::dvec2(pb) - glm::dvec2(pa));
                 }
                 const glm::vec3 ca = i < colours.size() ? colours[i] : colour;
@@ -80,7 +76,7 @@ public:
                   std::span<const glm::vec3> colours = {}, bool interpolated = false) {
         std::vector<glm::dvec3> world;
         world.reserve(points.size());
-        for (const auto& p : points) world.push_back(apply(model_, p));
+        for (const auto& p : points) world.push_back(projectPoint3(model_, p));
         if (colours.size() != points.size()) colours = {};
         lineStrips({world}, false, PartRole::Line, style.colour, style.type, style.width, colours,
                    interpolated);
@@ -92,7 +88,7 @@ public:
         GeometryPart part = begin(!triangles, PartRole::Marker, m.style->colour);
         const auto& offsets = triangles ? shape.triangles : shape.segments;
         for (const auto& p : m.points) {
-            const glm::dvec3 w = apply(model_, p);
+            const glm::dvec3 w = projectPoint3(model_, p);
             for (const glm::vec2& o : offsets) push(w, {}, m.style->colour, o, 0.0f);
         }
         end(part);
@@ -102,7 +98,7 @@ public:
         std::vector<std::vector<glm::dvec3>> contours;
         for (const auto& c : f.contours) {
             contours.emplace_back();
-            for (const auto& p : c) contours.back().push_back(apply(model_, p));
+            for (const auto& p : c) contours.back().push_back(projectPoint3(model_, p));
         }
         const InteriorStyleSet& in = f.interior;
         outlines(f, contours);
@@ -118,7 +114,7 @@ public:
         const auto strips = layoutText(font, t.text, t.style);
         const glm::vec3 colour = t.style->colour;
         if (t.annotation) {
-            const glm::dvec3 reference = apply(model_, t.position);
+            const glm::dvec3 reference = projectPoint3(model_, t.position);
             GeometryPart part = begin(true, PartRole::Text, colour);
             part.offsetInNpc = true;
             const glm::dvec2 offset(t.annotationOffset);
@@ -139,7 +135,8 @@ public:
         std::vector<std::vector<glm::dvec3>> world;
         for (const auto& strip : strips) {
             world.emplace_back();
-            for (const auto& q : strip) world.back().push_back(apply(model_, t.position + x * q.x + y * q.y));
+            for (const auto& q : strip)
+                world.back().push_back(projectPoint3(model_, t.position + x * q.x + y * q.y));
         }
         lineStrips(world, false, PartRole::Text, colour, LineType::Solid, 1.0f);
     }
@@ -302,8 +299,8 @@ glm::dvec4 fillAreaPlane(const DrawFillArea& fill, const glm::dmat4& model) {
     std::size_t count = 0;
     for (const auto& contour : fill.contours)
         for (std::size_t i = 0; i < contour.size(); ++i) {
-            const glm::dvec3 a = apply(model, contour[i]),
-                             b = apply(model, contour[(i + 1) % contour.size()]);
+            const glm::dvec3 a = projectPoint3(model, contour[i]),
+                             b = projectPoint3(model, contour[(i + 1) % contour.size()]);
             normal +=
                 glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
             centre += a;

@@ -1,5 +1,7 @@
 #include "phigs/render/PatternMapping.h"
 
+#include "phigs/core/TransformUtilities.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -9,11 +11,6 @@
 
 namespace phigs::render {
 namespace {
-
-glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
-    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
-    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
-}
 
 struct Plane {
     glm::dvec3 point{0.0}, normal{0.0};
@@ -30,8 +27,8 @@ std::optional<Plane> fillPlane(const DrawFillArea& fill, const glm::dmat4& model
     bool first = true;
     for (const auto& contour : fill.contours)
         for (std::size_t i = 0; i < contour.size(); ++i) {
-            const glm::dvec3 a = apply(model, contour[i]),
-                             b = apply(model, contour[(i + 1) % contour.size()]);
+            const glm::dvec3 a = projectPoint3(model, contour[i]),
+                             b = projectPoint3(model, contour[(i + 1) % contour.size()]);
             if (first) plane.point = a, first = false;
             plane.normal +=
                 glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
@@ -49,7 +46,7 @@ std::optional<Plane> meshPlane(const MeshData& mesh, const glm::dmat4& model) {
     world.reserve(mesh.positions.size());
     glm::dvec3 low(1e300), high(-1e300);
     for (const glm::vec3& p : mesh.positions) {
-        world.push_back(apply(model, glm::dvec3(p)));
+        world.push_back(projectPoint3(model, glm::dvec3(p)));
         low = glm::min(low, world.back());
         high = glm::max(high, world.back());
     }
@@ -83,11 +80,11 @@ std::optional<PatternMap> patternMap(const PatternPlacement& placement, const gl
     const double lx = glm::length(placement.vectorX), ly = glm::length(placement.vectorY);
     if (lx <= 0.0 || ly <= 0.0 || glm::length(planeNormal) <= 0.0) return std::nullopt;
     // The pattern box's corner and edges in world coordinates.
-    const glm::dvec3 origin = apply(model, placement.referencePoint);
+    const glm::dvec3 origin = projectPoint3(model, placement.referencePoint);
     glm::dvec3 a =
-        apply(model, placement.referencePoint + placement.vectorX * (placement.size.x / lx)) - origin;
+        projectPoint3(model, placement.referencePoint + placement.vectorX * (placement.size.x / lx)) - origin;
     glm::dvec3 b =
-        apply(model, placement.referencePoint + placement.vectorY * (placement.size.y / ly)) - origin;
+        projectPoint3(model, placement.referencePoint + placement.vectorY * (placement.size.y / ly)) - origin;
     // Projected orthogonally onto the primitive's plane.
     const glm::dvec3 n = glm::normalize(planeNormal);
     const glm::dvec3 corner = origin - glm::dot(origin - planePoint, n) * n;
@@ -118,9 +115,9 @@ std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern
             return patternMap(mesh->interior->pattern, model, pattern, plane->point, plane->normal);
         // A curved surface: its points take the cell of their projection onto the pattern's plane.
         const PatternPlacement& p = mesh->interior->pattern;
-        const glm::dvec3 origin = apply(model, p.referencePoint);
-        const glm::dvec3 normal = glm::cross(apply(model, p.referencePoint + p.vectorX) - origin,
-                                             apply(model, p.referencePoint + p.vectorY) - origin);
+        const glm::dvec3 origin = projectPoint3(model, p.referencePoint);
+        const glm::dvec3 normal = glm::cross(projectPoint3(model, p.referencePoint + p.vectorX) - origin,
+                                             projectPoint3(model, p.referencePoint + p.vectorY) - origin);
         return patternMap(p, model, pattern, origin, normal);
     }
     return std::nullopt;

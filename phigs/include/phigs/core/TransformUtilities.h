@@ -4,6 +4,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <optional>
 
@@ -43,5 +44,11 @@ glm::dmat3 composeTransformationMatrix2(const glm::dmat3& m, const glm::dvec2& f
 /// is 0 or the result is not finite (the C binding answers error 908 then).
 std::optional<glm::dvec3> transformPoint3(const glm::dmat4& m, const glm::dvec3& p);
 std::optional<glm::dvec2> transformPoint2(const glm::dmat3& m, const glm::dvec2& p);
+/// The homogeneous product divided by w, or by 1 where w is 0: the drawing and picking paths'
+/// point transform, which never refuses a point.
+inline glm::dvec3 projectPoint3(const glm::dmat4& m, const glm::dvec3& p) {
+    const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+    return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
+}
 
 }  // namespace phigs
