@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <numbers>
 #include <random>
 
 using namespace phigs;
@@ -186,4 +188,50 @@ TEST_CASE("vector hardcopy: a seamed facet covers what its fill and outline stro
         CHECK(checked > int(kSize * kSize / 2));
         CHECK(seamed > 100);
     }
+}
+
+TEST_CASE("vector hardcopy: a star in a run of one colour keeps its even-odd hole", "[hardcopy]") {
+    // A pentagram turns one way only, through 4 pi: it is not convex, and its centre is outside
+    // under the even-odd rule however many fills of its colour come before or after it.
+    const auto dir = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy";
+    std::filesystem::create_directories(dir);
+    constexpr std::uint32_t kSize = 200;
+    const glm::vec3 colour(0.2f, 0.8f, 0.3f);
+    const glm::dvec2 centre(0.5, 0.5);
+    DrawList list;
+    list.views.push_back(DrawView{});
+    auto addFill = [&](std::vector<glm::dvec3> contour) {
+        DrawFillArea fill;
+        fill.contours = {std::move(contour)};
+        fill.interior.edit().style = InteriorStyle::Solid;
+        fill.interior.edit().colour = colour;
+        DrawItem item;
+        item.primitive = std::move(fill);
+        list.items.push_back(std::move(item));
+    };
+    addFill({{0.02, 0.02, 0.5}, {0.12, 0.02, 0.5}, {0.12, 0.12, 0.5}});
+    std::vector<glm::dvec3> star;
+    for (int i = 0; i < 5; ++i) {
+        const double a = 2.0 * std::numbers::pi * (2 * i) / 5.0 + std::numbers::pi / 2.0;
+        star.emplace_back(centre.x + 0.4 * std::cos(a), centre.y + 0.4 * std::sin(a), 0.5);
+    }
+    addFill(star);
+    addFill({{0.88, 0.02, 0.5}, {0.98, 0.02, 0.5}, {0.98, 0.12, 0.5}});
+    const auto file = dir / "fill_runs_star.pdf";
+    {
+        PageSetup page;
+        page.paper = {double(kSize), double(kSize)};
+        page.nominalPixel = 1.0;
+        VectorWorkstation ws(file, VectorFormat::Pdf, page);
+        ws.update(list);
+    }
+    const Image image = vector_test::rasterisePdf(file, kSize, kSize);
+    auto at = [&](glm::dvec2 p) {
+        return image.pixel(std::uint32_t(p.x * kSize), std::uint32_t((1.0 - p.y) * kSize));
+    };
+    const std::uint8_t* hole = at(centre);
+    for (int c = 0; c < 3; ++c) CHECK(int(hole[c]) <= 3);
+    // A star point is filled.
+    const std::uint8_t* tip = at(centre + glm::dvec2(0.0, 0.33));
+    CHECK(std::abs(int(tip[1]) - int(colour.y * 255.0f + 0.5f)) <= 3);
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numbers>
 #include <variant>
 
 namespace phigs::hardcopy {
@@ -31,25 +32,32 @@ bool convexOpaque(const VectorFill& fill, bool opaque) {
     const auto& c = fill.contours[0];
     if (c.size() < 3) return false;
     int sign = 0;
+    double turning = 0.0;
     for (std::size_t i = 0; i < c.size(); ++i) {
         const glm::dvec2 a = c[(i + 1) % c.size()] - c[i], b = c[(i + 2) % c.size()] - c[(i + 1) % c.size()];
         const double turn = a.x * b.y - a.y * b.x;
         const int s = turn > 0.0 ? 1 : turn < 0.0 ? -1 : 0;
         if (s != 0 && sign != 0 && s != sign) return false;
         if (s != 0) sign = s;
+        if (s == 0 && glm::dot(a, b) < 0.0) return false;  // a spike: the outline turns back
+        turning += std::atan2(turn, glm::dot(a, b));
     }
-    return sign != 0;
+    // Turning one way only is not enough: a star turns one way through 4 pi or more.
+    return sign != 0 && std::abs(turning) < 3.0 * std::numbers::pi;
 }
 
 /// A convex contour grown outward by `d`: what filling it and stroking its outline `2 d` wide
 /// cover (the stroke's round joins as mitres, bevelled where sharp; sub-pixel apart), as one fill,
 /// which cairo records, analyses and writes at half the cost of a fill and a stroke.
 std::vector<glm::dvec2> grownConvex(const std::vector<glm::dvec2>& contour, double d) {
+    // Points too close for an edge direction (its squared length 0 in doubles) count as one.
+    auto apart = [](glm::dvec2 a, glm::dvec2 b) { return glm::dot(a - b, a - b) > 0.0; };
     std::vector<glm::dvec2> c;
     c.reserve(contour.size());
     for (const glm::dvec2& p : contour)
-        if (c.empty() || p != c.back()) c.push_back(p);
-    while (c.size() > 1 && c.back() == c.front()) c.pop_back();
+        if (c.empty() || apart(p, c.back())) c.push_back(p);
+    while (c.size() > 1 && !apart(c.back(), c.front())) c.pop_back();
+    if (c.size() < 3) return contour;
     const double side = signedArea(c) >= 0.0 ? 1.0 : -1.0;
     // The outward unit normal of the edge from c[i] to c[i + 1].
     auto normal = [&](std::size_t i) {

@@ -26,7 +26,7 @@ Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& con
         const auto& c = contours[0];
         const double area = (c[1].x - c[0].x) * (c[2].y - c[0].y) - (c[1].y - c[0].y) * (c[2].x - c[0].x);
         Triangulation out;
-        if (!(area != 0.0)) return out;
+        if (!(std::abs(area) > 0.0)) return out;  // also NaN: no triangle
         for (std::uint32_t i = 0; i < 3; ++i) out.vertices.push_back({c[i], i, i, 0.0});
         out.triangles =
             area > 0.0 ? std::vector<std::uint32_t>{0, 1, 2} : std::vector<std::uint32_t>{0, 2, 1};

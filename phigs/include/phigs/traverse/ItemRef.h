@@ -7,7 +7,8 @@ namespace phigs {
 
 /// One read-only value of a draw item: a view of a record shared by many items (a segment's
 /// transform, an interned style; what traversal makes), or a copy of its own (any other
-/// construction, and every copy). One pointer wide: the low bit says whether it owns.
+/// construction, and every copy but one of the default). One pointer wide: the low bit says
+/// whether it owns.
 template <class T>
 class ItemRef {
     static_assert(alignof(T) >= 2, "the low bit of the pointer tells an owned copy");
@@ -15,7 +16,7 @@ class ItemRef {
 public:
     /// A view of one default value, shared by every default reference.
     ItemRef() : bits_(reinterpret_cast<std::uintptr_t>(&defaultValue())) {}
-    ItemRef(const T& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(value)) | 1u) {}        // NOLINT
+    ItemRef(const T& value) : bits_(ownedCopy(value)) {}                                           // NOLINT
     ItemRef(T&& value) : bits_(reinterpret_cast<std::uintptr_t>(new T(std::move(value))) | 1u) {}  // NOLINT
     /// A view of `record`, which must outlive it (segment storage, an interned style).
     static ItemRef view(const T* record) {
@@ -23,7 +24,11 @@ public:
         r.bits_ = reinterpret_cast<std::uintptr_t>(record);
         return r;
     }
-    ItemRef(const ItemRef& other) : ItemRef(other.get()) {}
+    /// A copy of its own, except that a copy of the default view stays that view (it lives
+    /// for the program, and default items are copied often).
+    ItemRef(const ItemRef& other)
+        : bits_(other.bits_ == reinterpret_cast<std::uintptr_t>(&defaultValue()) ? other.bits_
+                                                                                 : ownedCopy(other.get())) {}
     ItemRef(ItemRef&& other) noexcept : bits_(std::exchange(other.bits_, 0)) {}
     ItemRef& operator=(ItemRef other) noexcept {
         std::swap(bits_, other.bits_);
@@ -53,6 +58,9 @@ private:
     static const T& defaultValue() {
         static const T value{};
         return value;
+    }
+    static std::uintptr_t ownedCopy(const T& value) {
+        return reinterpret_cast<std::uintptr_t>(new T(value)) | 1u;
     }
     struct Empty {};
     explicit ItemRef(Empty) {}
