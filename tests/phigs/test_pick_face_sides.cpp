@@ -147,3 +147,38 @@ TEST_CASE("pick face sides: the side a view shows is the side the projection win
     CHECK(fronts > checked / 4);
     CHECK(fronts < 3 * checked / 4);
 }
+
+TEST_CASE("pick face sides: a surface is hit exactly where the side it shows is filled", "[pick]") {
+    // The cylinder's normal Su x Sv points inward: its near wall shows the back, its far wall the
+    // front. The line through the aperture passes a side that is HOLLOW, EMPTY or culled.
+    const double r = 0.3;
+    const InteriorStyle styles[] = {InteriorStyle::Hollow, InteriorStyle::Solid, InteriorStyle::Empty,
+                                    InteriorStyle::Hatch};
+    int nearHits = 0, farHits = 0;
+    for (const InteriorStyle front : styles)
+        for (const InteriorStyle back : styles)
+            for (const CullMode cull : {CullMode::None, CullMode::BackFaces, CullMode::FrontFaces}) {
+                DrawList list = unitList();
+                DrawItem i = test::surfaceItem(test::cylinder(r), {{1, 2, 3}});
+                i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
+                InteriorStyleSet& in = editPrimitive<DrawMesh>(i.primitive).interior.edit();
+                in.style = front;
+                in.back.style = back;
+                in.distinguishBackFaces = true;
+                in.cull = cull;
+                list.items.push_back(i);
+                const Picker picker;
+                const auto hit = picker.nearest(list, {0.55, 0.4}, 0.001);
+                const bool nearFilled = filled(back) && cull != CullMode::BackFaces;
+                const bool farFilled = filled(front) && cull != CullMode::FrontFaces;
+                CHECK(hit.has_value() == (nearFilled || farFilled));
+                if (!hit) continue;
+                REQUIRE(hit->surface);  // exact, (u, v) and all
+                const double z = std::sqrt(r * r - 0.05 * 0.05);
+                CHECK(hit->surface->point.z == Approx(nearFilled ? z : -z).margin(1e-9));
+                CHECK(glm::dot(hit->surface->normal, glm::dvec3(0, 0, 1)) * (nearFilled ? -1 : 1) > 0.0);
+                nearHits += nearFilled, farHits += !nearFilled;
+            }
+    CHECK(nearHits > 0);
+    CHECK(farHits > 0);
+}

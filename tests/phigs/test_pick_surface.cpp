@@ -170,6 +170,7 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
     mesh->triangles = {0, 1, 2, 0, 2, 3};
     DrawMesh m;
     m.mesh = mesh;
+    m.interior.edit().style = InteriorStyle::Solid;
     // An exact plane z = 0.5 over [0.2, 0.8]^2, bilinear.
     m.surface = std::make_shared<const geom::Surface>(
         1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,

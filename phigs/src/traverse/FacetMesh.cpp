@@ -23,10 +23,28 @@ MeshData sharedMesh(const FacetMeshInput& in) {
 
 }  // namespace
 
+void setFacets(MeshData& mesh, const std::vector<std::uint32_t>& facetOf) {
+    std::vector<std::uint32_t> ends;
+    for (std::size_t t = 1; t <= facetOf.size(); ++t)
+        if (t == facetOf.size() || facetOf[t] != facetOf[t - 1]) ends.push_back(std::uint32_t(t));
+    mesh.facetEnds.clear();
+    mesh.trianglesPerFacet = ends.empty() ? 1 : ends[0];
+    for (std::size_t k = 0; k < ends.size(); ++k)
+        if (ends[k] != (k + 1) * mesh.trianglesPerFacet) {
+            mesh.facetEnds = std::move(ends);
+            mesh.trianglesPerFacet = 1;
+            return;
+        }
+}
+
 MeshData facetMesh(const FacetMeshInput& in) {
     const bool facetColours = in.vertexColours.empty() && !in.facetColours.empty();
     const bool facetNormals = in.vertexNormals.empty() && !in.facetNormals.empty();
-    if (!facetColours && !facetNormals) return sharedMesh(in);
+    if (!facetColours && !facetNormals) {
+        MeshData m = sharedMesh(in);
+        setFacets(m, in.facetOf);
+        return m;
+    }
     MeshData m;
     const std::size_t corners = in.triangles.size() / 3 * 3;
     m.positions.reserve(corners);
@@ -46,6 +64,7 @@ MeshData facetMesh(const FacetMeshInput& in) {
             if (facetNormals) m.normals.push_back(unit(in.facetNormals[f]));
         }
     }
+    setFacets(m, in.facetOf);
     return m;
 }
 

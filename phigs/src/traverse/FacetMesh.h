@@ -29,6 +29,10 @@ struct FacetMeshInput {
 /// front (lighting and culling). Without facet data in use the points are shared.
 MeshData facetMesh(const FacetMeshInput& in);
 
+/// Sets the mesh's facets (MeshData::trianglesPerFacet, facetEnds) from the facet of each of its
+/// triangles, whose equal neighbours make one facet.
+void setFacets(MeshData& mesh, const std::vector<std::uint32_t>& facetOf);
+
 /// The triangles of a strip of `points` points: triangle k is k, k + 1, k + 2, every other one
 /// turned so they all wind alike; facet k is triangle k.
 FacetMeshInput stripTriangles(FacetMeshInput in);

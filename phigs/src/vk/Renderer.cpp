@@ -2,6 +2,7 @@
 
 #include "GpuLayout.h"
 #include "ShaderSpecialisation.h"
+#include "phigs/render/MeshEdges.h"
 #include "phigs/render/PatternMapping.h"
 #include "phigs/traverse/WorkstationMapping.h"
 #include "shaders/Spirv.h"
@@ -45,6 +46,8 @@ constexpr std::uint64_t kPatterned = 1ull << 36;
 constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
 // The draws' modelling transformation is the identity (no matrix read per vertex).
 constexpr std::uint64_t kIdentityModel = 1ull << 38;
+// A mesh's facet edges of one HOLLOW side: the vertex shader drops those whose triangle shows the other.
+constexpr std::uint64_t kSidedEdges = 1ull << 40;
 
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
@@ -267,6 +270,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {12, flag(kPatterned)},
         {13, flag(kPremultipliedLights)},
         {14, flag(kIdentityModel)},
+        {16, flag(kSidedEdges)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -420,6 +424,24 @@ Renderer::CachedMesh& Renderer::compileMesh(const std::shared_ptr<const MeshData
     return meshes_[mesh.get()] = std::move(cached);
 }
 
+void Renderer::compileSidedEdges(CachedMesh& cached) {
+    if (cached.sidedVertices) return;
+    const auto data = cached.data.lock();
+    const std::vector<render::RenderVertex> vertices = render::meshSidedEdges(*data);
+    if (vertices.empty()) return;
+    std::vector<std::uint32_t> indices(vertices.size());
+    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = std::uint32_t(i);
+    const VkDeviceSize vbytes = vertices.size() * sizeof(render::RenderVertex);
+    cached.sidedVertices =
+        std::make_unique<GpuBuffer>(context_, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
+    cached.sidedVertices->write(vertices.data(), vbytes);
+    const VkDeviceSize ibytes = indices.size() * sizeof(std::uint32_t);
+    cached.sidedIndices =
+        std::make_unique<GpuBuffer>(context_, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, frame_);
+    cached.sidedIndices->write(indices.data(), ibytes);
+    cached.sidedCount = std::uint32_t(indices.size());
+}
+
 void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     ++frameNumber_;
     frame_ = {};
@@ -567,6 +589,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     fragmentNeedsWorld = fragmentNeedsWorld || local;
                 }
             }
+            if (part.lines && part.side != 0 && indices) {
+                // A mesh's facet edges of one side (render::meshVertices): the viewer in modelling
+                // coordinates, signed by the side, rides where lines read no reflectance.
+                c.pipeline |= kSidedEdges;
+                push.backReflectance =
+                    glm::vec4(double(part.side) * render::meshViewer(view.mapping * view.orientation *
+                                                                     item.modelTransform.get()));
+            }
             if (!cued) c.pipeline |= kNoDepthCue;
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
             if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
@@ -621,21 +651,37 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
 
         if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
             if (!mesh->mesh) continue;
+            const InteriorStyleSet& s = mesh->interior;
+            // HOLLOW sides outline their facets: all alike in one colour, else each side's facet
+            // edges only while their triangle shows that side (the vertex shader decides).
+            glm::vec3 colour;
+            const bool alike = render::hollowOutline(s, 0, colour);
+            const bool sided =
+                !alike && (render::hollowOutline(s, 1, colour) || render::hollowOutline(s, -1, colour));
             CachedMesh& cached = compileMesh(mesh->mesh);
             if (!cached.vertices) continue;
+            if (sided) compileSidedEdges(cached);
             base.model = toFloat(item.modelTransform.get());
             base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
-            const InteriorStyleSet& s = mesh->interior;
             render::GeometryPart part;
             part.vertexNormals = cached.hasNormals;
-            if (s.style == InteriorStyle::Hollow && cached.counts.edgeCount) {
-                part.lines = true;
-                part.role = render::PartRole::Edge;
-                part.colour = s.colour;
+            part.lines = true;
+            part.role = render::PartRole::Edge;
+            if (alike && cached.counts.edgeCount) {
+                part.colour = colour;
                 part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
                 part.count = cached.counts.edgeCount;
                 addPart(part, nullptr, false, cached.vertices->handle(), cached.indices->handle());
             }
+            for (const int side : {1, -1}) {
+                if (!sided || !cached.sidedCount || !render::hollowOutline(s, side, colour)) continue;
+                part.colour = colour;
+                part.side = side;
+                part.first = 0;
+                part.count = cached.sidedCount;
+                addPart(part, nullptr, false, cached.sidedVertices->handle(), cached.sidedIndices->handle());
+            }
+            part.side = 0;
             if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
                 part.lines = false;
                 part.role = render::PartRole::Interior;

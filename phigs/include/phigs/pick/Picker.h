@@ -78,10 +78,12 @@ private:
     std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
                                 const WorkstationMapping& mapping, SurfaceTest surfaceTest,
                                 const PickItemBounds* bounds = nullptr) const;
-    /// The exact line through `npc` against the surface; `toNpc`, `fromNpc`: the item's
-    /// transform to NPC and its inverse.
+    /// The exact line through `npc` against the surface: its nearest point whose side shown is
+    /// filled (not culled, not HOLLOW or EMPTY); `toNpc`, `fromNpc`: the item's transform to NPC
+    /// and its inverse.
     std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
-                                       const std::shared_ptr<const geom::Surface>& surface, glm::dvec2 npc,
+                                       const std::shared_ptr<const geom::Surface>& surface,
+                                       const InteriorStyleSet& interior, glm::dvec2 npc,
                                        const glm::dmat4& toNpc, const glm::dmat4& fromNpc,
                                        const PickItemBounds* bounds) const;
     /// nearest() on the tree: candidates by their boxes' nearest depth, stopping once no box can
@@ -97,9 +99,12 @@ private:
     struct CachedBounds {
         std::shared_ptr<const MeshData> mesh;  ///< keeps the key alive
         glm::dvec3 min{0.0}, max{0.0};
+        std::vector<std::uint8_t> facetEdges;  ///< render::meshFacetEdges, once an outline needs them
     };
     /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
     const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
+    /// The mesh's render::meshFacetEdges, kept with its box.
+    const std::vector<std::uint8_t>& facetEdgesOf(const std::shared_ptr<const MeshData>& mesh) const;
     mutable std::unordered_map<const MeshData*, CachedBounds> bounds_;
     /// Drops cached entries nobody else holds any more, once per new draw list generation.
     void prune(const DrawList& list) const;
