@@ -189,6 +189,7 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
 
     // An exact hit anywhere (here a plane behind) beats a tessellation under the aperture.
     DrawMesh back;
+    back.interior.edit().style = InteriorStyle::Solid;
     back.surface = std::make_shared<const geom::Surface>(
         1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
         std::vector<glm::dvec3>{{0, 0, 0.1}, {0, 1, 0.1}, {1, 0, 0.1}, {1, 1, 0.1}});

@@ -266,9 +266,9 @@ TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by position; si
     CHECK(int(meshFacetEdges(mesh)[2]) == 3);
     mesh.facetEnds.clear();
     mesh.trianglesPerFacet = 2;
-    // Unique facet edges: 3 x 4 + 4 x 3 grid lines, the second quadrilateral's 4 again (own corners).
+    // Unique facet edges: 17 grid lines, the second quadrilateral's 3 it shares again (own corners).
     const MeshIndices m = meshIndices(mesh);
-    CHECK(m.edgeCount == 2 * (3 * 3 + 4 * 2 + 4));
+    CHECK(m.edgeCount == 2 * (3 * 3 + 4 * 2 + 3));
     const auto sided = meshSidedEdges(mesh);
     REQUIRE(sided.size() == 2 * 2 * 12);
     for (const RenderVertex& v : sided) {
