@@ -1,7 +1,7 @@
 /* Meshes drawn by the side each facet shows, on the offscreen type (lavapipe, validation layer on)
  * and the PDF type (rasterised by pdftoppm at 144 dpi): seeded random quadrilateral meshes and
- * triangle strips in z = 0, their facets turned either way by random facet normals, under random
- * front and back interior styles (SOLID over HOLLOW and HOLLOW over SOLID mostly), face
+ * triangle strips in z = 0.5 (inside the view volume), their facets turned either way by random facet
+ * normals, under random front and back interior styles (SOLID over HOLLOW and HOLLOW over SOLID mostly), face
  * distinguishing and culling, seen from the front or (turned or mirrored about x = 0.5) from the
  * back. Each facet fills by the style of the side it shows; a HOLLOW side draws the facet's own
  * edges in that side's colour and nothing inside (no quadrilateral diagonals); an EMPTY or culled
@@ -110,7 +110,7 @@ static void open_mesh_structure(const Sides* s) {
     popen_struct(1);
     if (s->flip) {
         /* Turned half way about the vertical line x = 0.5, or mirrored in it: x to 1 - x either way. */
-        const Ppoint3 centre = {0.5f, 0.5f, 0.0f};
+        const Ppoint3 centre = {0.5f, 0.5f, 0.5f};
         const Pvec3 none = {0, 0, 0}, unit = {1, 1, 1}, mirror = {-1, 1, 1};
         Pmatrix3 m;
         Pint err = 0;
@@ -181,7 +181,7 @@ static void quad_meshes(void) {
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i)
                 points[j * nx + i].x = (Pfloat)xs[i], points[j * nx + i].y = (Pfloat)ys[j],
-                                points[j * nx + i].z = 0;
+                                points[j * nx + i].z = 0.5f;
         for (int q = 0; q < (nx - 1) * (ny - 1); ++q) {
             facetSide[q] = normals && next_random() % 2 == 0 ? -1 : 1;
             norms[q].delta_x = norms[q].delta_y = 0, norms[q].delta_z = (Pfloat)facetSide[q];
@@ -241,7 +241,7 @@ static void triangle_strips(void) {
         random_sides(&s, round);
         for (int k = 0; k < n; ++k)
             points[k].x = (Pfloat)(x0 + k * d), points[k].y = (Pfloat)((k % 2 == 0) != upFirst ? y0 : y0 + h),
-            points[k].z = 0;
+            points[k].z = 0.5f;
         for (int k = 0; k + 2 < n; ++k) {
             /* Triangle k is k, k + 1, k + 2 wound as the first: counter-clockwise when it starts up. */
             const int wound = upFirst ? 1 : -1;
