@@ -421,10 +421,10 @@ TEST_CASE("mesh outline: patch boundaries on knot lines, borders, silhouettes an
     // Cells of two triangles: no diagonals; the cells of the first column only, by their facing.
     mesh.trianglesPerFacet = 2;
     CHECK(facetEdges(mesh).size() == 2 * n * (n + 1));
-    std::vector<int> facing(2 * n * n, -1);
-    for (int t = 0; t < 2 * n; ++t) facing[std::size_t(t)] = 1;
-    CHECK(facetEdges(mesh, facing, 1).size() == 3 * n + 1);
-    CHECK(facetEdges(mesh, facing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
+    std::vector<int> cellFacing(2 * n * n, -1);
+    for (int t = 0; t < 2 * n; ++t) cellFacing[std::size_t(t)] = 1;
+    CHECK(facetEdges(mesh, cellFacing, 1).size() == 3 * n + 1);
+    CHECK(facetEdges(mesh, cellFacing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
     mesh.trianglesPerFacet = 1;
     CHECK(patchBoundaryEdges(mesh, nullptr).size() == 4 * n);  // the border only
     std::vector<double> knots{0, 0, 0, 0, 0.5, 1, 1, 1, 1};
