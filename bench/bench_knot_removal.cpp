@@ -238,11 +238,13 @@ int main(int argc, char** argv) {
         std::printf("{%s}\n", json.c_str());
         return 0;
     };
-    // --profile CLASS N: geom's reduction of one generated class (or "rational", or "ibeam" /
+    // --profile CLASS N [SEED]: geom's reduction of one generated class (or "rational", or "ibeam" /
     // "airfoil" at 1e-4) N times, nothing else (for a profiler); prints the control points left and a digest
-    // of the result's bits (a change meant to leave results alone must leave it alone).
+    // of the result's bits (a change meant to leave results alone must leave it alone). SEED picks the
+    // member as --seeds does (the table's by default), so the worst member of a class can be profiled.
     if (argc > 3 && std::string(argv[1]) == "--profile") {
-        std::vector<CurveCase> cases = generatedCases();
+        std::vector<CurveCase> cases =
+            argc > 4 ? generatedCases(static_cast<unsigned>(std::stoul(argv[4]))) : generatedCases();
         cases.push_back(rationalCase());
         cases.push_back({"ibeam", geom::iBeamCurve(), 1e-4});
         cases.push_back({"airfoil", geom::nacaAirfoilCurve(), 1e-4});

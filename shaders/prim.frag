@@ -60,7 +60,6 @@ vec3 patternColour(vec3 world) {
 }
 
 void main() {
-    int viewIndex = push.viewIndex;
     if (MAY_DISCARD) {
         int flags = DRAW.indices.w;
         // A pattern length in modelling units (mesh iso-lines) becomes pixels by its rate along
@@ -69,7 +68,7 @@ void main() {
         float patternPixels = (flags & FLAG_PATTERN_IN_MODEL_UNITS) != 0
                                   ? vPattern / max(length(patternRate), 1e-9)
                                   : vPattern;
-        vec4 clip = frame.views[viewIndex].clip;
+        vec4 clip = runView.clip;
         if ((clip.z > 0.0 && vNpcZ < clip.x) || (clip.w > 0.0 && vNpcZ > clip.y)) discard;
         if ((flags & FLAG_HATCH) != 0 && !hatchOn(DRAW.style.y, gl_FragCoord.xy)) discard;
         if ((flags & FLAG_PATTERN) != 0 && !patternOn(DRAW.style.z, DRAW.misc.x, patternPixels)) discard;
@@ -104,13 +103,13 @@ void main() {
                 if (dot(n, vNormal) < 0.0) n = -n;
             } else {
                 // No normals given: the front side is the one the winding shows the viewer.
-                if (dot(n, frame.views[viewIndex].eye.xyz) < 0.0) n = -n;
+                if (dot(n, runView.eye.xyz) < 0.0) n = -n;
                 if (!gl_FrontFacing) n = -n;
             }
         }
         if (back) n = -n;
         vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
-        colour = lit(useBack, side, world, n, frame.views[viewIndex].eye.xyz);
+        colour = lit(useBack, side, world, n, runView.eye.xyz);
     } else {
         colour = side;
     }

@@ -25,7 +25,6 @@ layout(location = 8) out vec3 vSpecularBack;
 void main() {
     // Outputs are written, never read back: the renderer removes the stores the fragment shader
     // does not need (phigs/src/vk/ShaderSpecialisation.cpp), which a read-back would then miss.
-    int viewIndex = push.viewIndex;
     vec4 world = MODEL_IDENTITY ? vec4(inPosition, 1.0) : DRAW.model * vec4(inPosition, 1.0);
     vec3 worldPoint = MODEL_IDENTITY ? inPosition : world.xyz / world.w;
     vec3 normal = MODEL_IDENTITY ? inNormal : mat3(DRAW.normalMatrix) * inNormal;
@@ -35,9 +34,9 @@ void main() {
     vNormal = normal;
     vColour = colour;
     vPattern = inPattern;
-    vec4 npc = frame.views[viewIndex].worldToNpc * world;
+    vec4 npc = runView.worldToNpc * world;
     vNpcZ = npc.z / npc.w;
-    vec4 clip = frame.views[viewIndex].worldToClip * world;
+    vec4 clip = runView.worldToClip * world;
     if (SCREEN_OFFSETS != 0) {
         float offsetScale = SCREEN_OFFSETS == 2 ? frame.pixelScale.z : 1.0;
         clip.xy += inOffset * offsetScale * frame.pixelScale.xy * clip.w;
@@ -54,13 +53,13 @@ void main() {
         // The pattern cell is the colour lit, known only per fragment. The reflectance equations
         // are affine in the base colour, lit(c) = c * gain + specular: the vertices carry the gain
         // and the specular term, and the fragment shader applies them to its cell.
-        vec3 eye = frame.views[viewIndex].eye.xyz;
+        vec3 eye = runView.eye.xyz;
         vSpecularFront = lit(false, vec3(0.0), worldPoint, normal, eye);
         vSpecularBack = lit(DISTINGUISH_BACK, vec3(0.0), worldPoint, -normal, eye);
         vLitFront = lit(false, vec3(1.0), worldPoint, normal, eye) - vSpecularFront;
         vLitBack = lit(DISTINGUISH_BACK, vec3(1.0), worldPoint, -normal, eye) - vSpecularBack;
     } else if (VERTEX_LIGHTING) {
-        vec3 eye = frame.views[viewIndex].eye.xyz;
+        vec3 eye = runView.eye.xyz;
         vLitFront = lit(false, colour, worldPoint, normal, eye);
         vLitBack = lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye);
     }

@@ -10,7 +10,6 @@ const int SHADE_FLAT = 1;
 const int SHADE_GOURAUD = 2;
 const int SHADE_PHONG = 4;
 
-const int MAX_VIEWS = 16;
 const int MAX_LIGHTS = 64;
 const int MAX_LIGHT_SETS = 16;
 const int MAX_CUES = 16;
@@ -36,7 +35,6 @@ struct DepthCue {
 };
 
 layout(std140, set = 0, binding = 0) uniform Frame {
-    View views[MAX_VIEWS];
     Light lights[MAX_LIGHTS];
     ivec4 lightSets[MAX_LIGHT_SETS];  // first light, count
     DepthCue cues[MAX_CUES];
@@ -64,14 +62,14 @@ layout(std430, set = 0, binding = 2) readonly buffer Patterns {
     vec4 patternData[];
 };
 
-// Lights with a draw's reflectance folded in (Renderer.cpp fills a run for the pipelines of
-// PREMULTIPLIED_LIGHTS per view, light set, reflectance and colour of the frame): the view's eye
-// direction, then per light the ambient or diffuse coefficient times its colour (and times the
-// draw's colour when that is uniform: no vertex colours, no pattern), the specular coefficient
-// times its colour and the specular colour (w: the exponent), and its position, direction and
-// attenuation as in Light. The run is bound at a dynamic offset, so the shaders read it at
-// constant offsets: lavapipe loads an array element at an index from push constants lane by
-// lane, and redoes uniform arithmetic for every block of fragments.
+// The draw's run (Renderer.cpp fills one per view, then one per view, light set, reflectance and
+// colour of the frame that PREMULTIPLIED_LIGHTS pipelines draw): the view, then per light the
+// ambient or diffuse coefficient times its colour (and times the draw's colour when that is
+// uniform: no vertex colours, no pattern), the specular coefficient times its colour and the
+// specular colour (w: the exponent), and its position, direction and attenuation as in Light.
+// The run is bound at a dynamic offset, so the shaders read it at constant offsets: lavapipe
+// loads an array element at an index from push constants lane by lane, and redoes uniform
+// arithmetic for every block of vertices or fragments.
 struct LitLight {
     vec4 diffuse;
     vec4 specular;
@@ -81,7 +79,7 @@ struct LitLight {
 };
 
 layout(std140, set = 0, binding = 3) uniform LitRun {
-    vec4 litEye;
+    View runView;
     LitLight litLights[4];
 };
 
@@ -91,9 +89,9 @@ layout(std140, set = 0, binding = 3) uniform LitRun {
 // per-fragment gather; push constants are uniform by rule.
 layout(push_constant) uniform Push {
     uint drawIndex;
-    int viewIndex;
     int firstLight;  // the light set's first light in frame.lights
     int depthCue;
+    int unused;      // keeps the colours 16-byte aligned
     vec4 colour;
     vec4 backColour;
     vec4 reflectance;      // ambient, diffuse, specular, exponent
@@ -216,7 +214,7 @@ void premultipliedLight(int type, int i, vec3 world, vec3 n, vec3 eye, inout vec
 // lit() for PREMULTIPLIED_LIGHTS: the light set's lights from the lit run, unrolled as in lit().
 vec3 litPremultiplied(vec3 base, vec3 world, vec3 n) {
     const int first = 0;
-    vec3 eye = litEye.xyz;
+    vec3 eye = runView.eye.xyz;
     int count = LIGHT_SIGNATURE & 7;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
     if (count > 0) premultipliedLight((LIGHT_SIGNATURE >> 3) & 7, first, world, n, eye, diffuse, specular);

@@ -42,7 +42,11 @@ public:
         for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
         if (!all.empty()) build(std::move(all));
         std::vector<ProjectedFacet> out;
+        std::size_t count = 0;
+        for (const Node& node : nodes_) count += node.on.size();
+        out.reserve(count);
         walk(out);
+        pool_ = {};
         stats.output = out.size();
         return out;
     }
@@ -249,17 +253,28 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
         };
         return key(p) < key(q);
     });
-    out.reserve(facets.size());
-    for (std::size_t i : alone) out.push_back(std::move(facets[i]));
+    // The clusters' orders first, then one list of the size they make (splits add facets): a
+    // growing list would hold its old and new room at once, the describe step's largest need.
+    std::vector<std::vector<ProjectedFacet>> ordered;
+    std::size_t count = alone.size();
     for (const auto& cluster : clusters) {
         if (cluster.size() == 1) continue;
         std::vector<ProjectedFacet> group;
+        group.reserve(cluster.size());
         for (std::size_t i : cluster) group.push_back(std::move(facets[i]));
         Bsp bsp(std::move(group), pointsPerDepth);
-        for (ProjectedFacet& f : bsp.backToFront()) out.push_back(std::move(f));
+        ordered.push_back(bsp.backToFront());
+        count += ordered.back().size();
         ++total.clusters;
         total.splits += bsp.stats.splits;
         total.fellBack = total.fellBack || bsp.stats.fellBack;
+    }
+    out.reserve(count);
+    for (std::size_t i : alone) out.push_back(std::move(facets[i]));
+    facets = {};
+    for (auto& group : ordered) {
+        for (ProjectedFacet& f : group) out.push_back(std::move(f));
+        group = {};
     }
     total.output = out.size();
     if (stats) *stats = total;

@@ -28,6 +28,36 @@ bool coversArea(const ProjectedFacet& f) {
     return area > 1e-12;
 }
 
+/// Drops the facets hidden whole and gives back the visible runs of the scene's lines and its
+/// visible markers, in order. The occlusion index lives only in here: it is gone before the facets
+/// are ordered, the describe step's largest need for room.
+std::vector<ProjectedPart> cullHidden(std::vector<ProjectedFacet>& facets, const ProjectedScene& scene,
+                                      const PageMapping& mapping, DescribeStats& stats) {
+    const OcclusionIndex occlusion(facets, mapping.nominalPixel);
+    stats.occluders = occlusion.triangleCount();
+    // Hidden-line surfaces need painting only where other facets could show through them; facets
+    // hidden whole need no painting (most back faces, and the far sides of things).
+    const bool paintCovers =
+        std::any_of(facets.begin(), facets.end(), [](const ProjectedFacet& f) { return !f.coverOnly; });
+    if (!paintCovers) facets.clear();
+    const std::size_t before = facets.size();
+    std::erase_if(facets, [&](const ProjectedFacet& f) {
+        return occlusion.hidden(f, kHiddenMargin * mapping.nominalPixel);
+    });
+    stats.hiddenFacets = before - facets.size();
+    std::vector<ProjectedPart> shown;
+    // About one run a line or marker (a line hidden in places makes more): room for them at once.
+    shown.reserve(scene.parts.size() + scene.parts.size() / 2);
+    for (const ProjectedPart& part : scene.parts) {
+        if (const auto* line = std::get_if<ProjectedLine>(&part))
+            for (ProjectedLine& run : occlusion.visibleRuns(*line)) shown.push_back(std::move(run));
+        if (const auto* marker = std::get_if<ProjectedMarker>(&part);
+            marker && occlusion.visible(marker->position))
+            shown.push_back(*marker);
+    }
+    return shown;
+}
+
 void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuilder& paint,
                     DescribeStats& stats) {
     // The facets move out of the scene: only its lines and markers are read after this.
@@ -44,33 +74,17 @@ void describeHidden(ProjectedScene& scene, const PageMapping& mapping, PaintBuil
     std::erase_if(scene.parts,
                   [](const ProjectedPart& p) { return std::holds_alternative<ProjectedFacet>(p); });
     scene.parts.shrink_to_fit();
-    const OcclusionIndex occlusion(facets, mapping.nominalPixel);
-    stats.occluders = occlusion.triangleCount();
-    // Hidden-line surfaces need painting only where other facets could show through them; facets
-    // hidden whole need no painting (most back faces, and the far sides of things).
-    const bool paintCovers =
-        std::any_of(facets.begin(), facets.end(), [](const ProjectedFacet& f) { return !f.coverOnly; });
-    if (!paintCovers) facets.clear();
-    const std::size_t before = facets.size();
-    std::erase_if(facets, [&](const ProjectedFacet& f) {
-        return occlusion.hidden(f, kHiddenMargin * mapping.nominalPixel);
-    });
-    stats.hiddenFacets = before - facets.size();
+    std::vector<ProjectedPart> shown = cullHidden(facets, scene, mapping, stats);
+    scene.parts = {};
     std::vector<ProjectedFacet> ordered =
         orderBackToFront(std::move(facets), mapping.pointsPerNpc, &stats.facets);
-    // One operation a facet and about one a line or marker (a line hidden in places makes more):
-    // room for them at once, not a doubling vector's spare half.
-    paint.reserve(ordered.size() + scene.parts.size() + scene.parts.size() / 2);
+    // One operation a facet, line run or marker: room for them at once, not a doubling vector's
+    // spare half.
+    paint.reserve(ordered.size() + shown.size());
     // Each facet's points go once painted: the page holds them from then on.
     for (ProjectedFacet& f : ordered) paint(f), f.contours = {};
     ordered = {};
-    for (const ProjectedPart& part : scene.parts) {
-        if (const auto* line = std::get_if<ProjectedLine>(&part))
-            for (const ProjectedLine& run : occlusion.visibleRuns(*line)) paint(run);
-        if (const auto* marker = std::get_if<ProjectedMarker>(&part);
-            marker && occlusion.visible(marker->position))
-            paint(*marker);
-    }
+    for (const ProjectedPart& part : shown) std::visit(paint, part);
 }
 
 }  // namespace

@@ -116,18 +116,29 @@ void StructureStore::requireOpen(const char* function) const {
     if (!open_) raise(log_, errors::NotStructureOpen, function);
 }
 
-Structure& StructureStore::createIfMissing(int id) {
+std::pair<Structure*, bool> StructureStore::emplaceStructure(int id) {
     auto [it, inserted] = structures_.try_emplace(id);
+    if (inserted) byId_[id] = &it->second;
+    return {&it->second, inserted};
+}
+
+void StructureStore::eraseStructure(int id) {
+    structures_.erase(id);
+    byId_.erase(id);
+}
+
+Structure& StructureStore::createIfMissing(int id) {
+    auto [s, inserted] = emplaceStructure(id);
     if (inserted) {
-        it->second.id = id;
-        touch(it->second);
+        s->id = id;
+        touch(*s);
     }
-    return it->second;
+    return *s;
 }
 
 const Structure* StructureStore::find(int id) const {
-    auto it = structures_.find(id);
-    return it == structures_.end() ? nullptr : &it->second;
+    Structure* const* s = byId_.find(id);
+    return s ? *s : nullptr;
 }
 
 const Structure& StructureStore::structure(int id) const {
@@ -339,14 +350,14 @@ void StructureStore::copyAllElementsFromStructure(int id) {
 }
 
 void StructureStore::emptyStructure(int id) {
-    auto [it, created] = structures_.try_emplace(id);
+    auto [s, created] = emplaceStructure(id);
     if (created) {
-        it->second.id = id;
-        touch(it->second);
-    } else if (!it->second.elements.empty()) {
+        s->id = id;
+        touch(*s);
+    } else if (!s->elements.empty()) {
         executesChanged();
-        it->second.elements.clear();
-        touch(it->second);
+        s->elements.clear();
+        touch(*s);
     }
     if (open_ == id) pointer_ = 0;
 }
@@ -391,7 +402,7 @@ void StructureStore::deleteStructure(int id) {
         emptyStructure(id);
         touch(structures_.at(id));
     } else {
-        structures_.erase(id);
+        eraseStructure(id);
         executed_.erase(id);
         forgetVersions(id);
     }
@@ -432,6 +443,7 @@ void StructureStore::deleteAllStructures() {
     std::vector<int> ids = structureIds();
     for (int id : ids) notifyDeleted(id);
     structures_.clear();
+    byId_.clear();
     executed_.clear();
     executesChanged();
     subtreeVersions_.clear();
@@ -473,7 +485,7 @@ void StructureStore::changeStructureIdentifier(int original, int result) {
     if (open_ == result) pointer_ = static_cast<int>(to.elements.size());
     if (open_ == original) pointer_ = 0;
     if (exists(original) && open_ != original && !referenced(original) && !postedAnywhere(original)) {
-        structures_.erase(original);
+        eraseStructure(original);
         forgetVersions(original);
     }
 }
@@ -527,7 +539,7 @@ void StructureStore::changeStructureIdentifierAndReferences(int original, int re
     changeStructureIdentifier(original, result);
     changeStructureReferences(original, result);
     if (open_ != original) {
-        structures_.erase(original);
+        eraseStructure(original);
         forgetVersions(original);
     }
 }

@@ -15,6 +15,8 @@ inline constexpr int kMaxClipPlanes = 64;  ///< model clipping half spaces of al
 /// Lit runs of a frame (a light set of up to 4 lights premultiplied by a material, seen from a
 /// view); draws beyond them light the general way.
 inline constexpr int kMaxLitRuns = 256;
+/// The run buffer: one run per view (the view alone), then the lit runs.
+inline constexpr int kMaxRuns = kMaxViews + kMaxLitRuns;
 
 /// The draw record's flags: the shaders test Hatch, Pattern and PatternInModelUnits; the others
 /// decide the pipeline's specialisation (shaders/scene.glsl) and are kept for inspection.
@@ -62,7 +64,6 @@ struct DepthCue {
 };
 
 struct Frame {
-    View views[kMaxViews];
     Light lights[kMaxLights];
     glm::ivec4 lightSets[kMaxLightSets];
     DepthCue cues[kMaxCues];
@@ -84,12 +85,12 @@ struct DrawParams {
     glm::vec4 misc{0.0f};
 };
 static_assert(sizeof(DrawParams) == 176);
-/// What a PREMULTIPLIED_LIGHTS draw reads, at its own dynamic offset of the lit buffer: the
-/// view's eye direction and the light set's lights with the material folded in.
+/// What a draw reads at its dynamic offset of the run buffer: its view, and for a
+/// PREMULTIPLIED_LIGHTS draw its light set's lights with the material folded in.
 struct LitRun {
-    glm::vec4 eye{0.0f};
+    View view;
     LitLight lights[4];
 };
-static_assert(sizeof(LitRun) == 336);
+static_assert(sizeof(LitRun) == 480);
 
 }  // namespace phigs::vk::gpu

@@ -49,6 +49,27 @@ constexpr std::uint64_t kIdentityModel = 1ull << 38;
 // A mesh's facet edges of one HOLLOW side: the vertex shader drops those whose triangle shows the other.
 constexpr std::uint64_t kSidedEdges = 1ull << 40;
 
+// The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
+constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                                                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+constexpr VkAccessFlags kAttachmentAccess =
+    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+// lavapipe bins a render pass's draws into one scene, held whole, before it rasterises them; a
+// barrier makes it rasterise what it holds, so one every this many vertices bounds the scene.
+constexpr std::uint64_t kVerticesPerScene = 30000;
+
+/// Makes lavapipe rasterise the draws binned so far (a barrier flushes its scene).
+void binningFlush(VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = kAttachmentAccess;
+    barrier.dstAccessMask = kAttachmentAccess;
+    vkCmdPipelineBarrier(cmd, kAttachmentStages, kAttachmentStages, VK_DEPENDENCY_BY_REGION_BIT, 1, &barrier,
+                         0, nullptr, 0, nullptr);
+}
+
 VkShaderModule createShader(VkDevice device, const std::vector<std::uint32_t>& words) {
     VkShaderModuleCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -131,7 +152,7 @@ Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalL
         subpass.colorAttachmentCount = 1;
         subpass.pColorAttachments = &colourRef;
         subpass.pDepthStencilAttachment = &depthRef;
-        VkSubpassDependency dependencies[2]{};
+        VkSubpassDependency dependencies[3]{};
         // Wait for the previous use of the attachments (an acquired swapchain image, or last frame).
         dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
         dependencies[0].dstSubpass = 0;
@@ -150,13 +171,21 @@ Renderer::Renderer(Context& context, VkFormat colourFormat, VkImageLayout finalL
         dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
         dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
         dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        // Within the pass, attachment writes before later ones: the barrier record() places to
+        // hand lavapipe's binned draws to its rasteriser (binningFlush).
+        dependencies[2].srcSubpass = dependencies[2].dstSubpass = 0;
+        dependencies[2].srcStageMask = kAttachmentStages;
+        dependencies[2].dstStageMask = kAttachmentStages;
+        dependencies[2].srcAccessMask = kAttachmentAccess;
+        dependencies[2].dstAccessMask = kAttachmentAccess;
+        dependencies[2].dependencyFlags = VK_DEPENDENCY_BY_REGION_BIT;
         VkRenderPassCreateInfo rpInfo{};
         rpInfo.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
         rpInfo.attachmentCount = 2;
         rpInfo.pAttachments = attachments;
         rpInfo.subpassCount = 1;
         rpInfo.pSubpasses = &subpass;
-        rpInfo.dependencyCount = 2;
+        rpInfo.dependencyCount = 3;
         rpInfo.pDependencies = dependencies;
         check(vkCreateRenderPass(device, &rpInfo, nullptr, &renderPass_), "vkCreateRenderPass");
 
@@ -460,6 +489,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                                     std::to_string(gpu::kMaxViews) + " are supported");
 
     const WorkstationMapping mapping(list, extent.width, extent.height);
+    addViewRuns(list, mapping);
     const glm::dmat4 npcToPixels =
         glm::dmat4(glm::dvec4(0.5 * extent.width, 0, 0, 0), glm::dvec4(0, 0.5 * extent.height, 0, 0),
                    glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
@@ -611,7 +641,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             c.first = part.first;
             c.count = part.count;
             c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
-            c.push.viewIndex = item.viewIndex;
+            c.view = item.viewIndex;
+            c.runOffset = std::uint32_t(std::size_t(item.viewIndex) * litStride_);
             c.push.firstLight = item.lightSet >= 0 ? firstLights[std::size_t(item.lightSet)] : 0;
             if ((flags & gpu::Lit) && !(flags & gpu::DistinguishBack) &&
                 ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
@@ -622,7 +653,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                                                     uniformColour ? glm::vec3(push.colour) : glm::vec3(1.0f));
                 if (run >= 0) {
                     c.pipeline |= kPremultipliedLights;
-                    c.litOffset = std::uint32_t(std::size_t(run) * litStride_);
+                    c.runOffset = std::uint32_t(std::size_t(run) * litStride_);
                 }
             }
             c.push.depthCue = item.depthCue;
@@ -780,16 +811,34 @@ bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, int patte
     return true;
 }
 
+void Renderer::addViewRuns(const DrawList& list, const WorkstationMapping& mapping) {
+    const DrawView defaultView;
+    const std::size_t viewCount = std::max<std::size_t>(1, list.views.size());
+    litBytes_.assign(viewCount * litStride_, 0);
+    for (std::size_t v = 0; v < viewCount; ++v) {
+        const DrawView& view = list.views.empty() ? defaultView : list.views[v];
+        const glm::dmat4 worldToNpc = view.mapping * view.orientation;
+        gpu::LitRun run;
+        run.view.worldToNpc = toFloat(worldToNpc);
+        run.view.worldToClip = toFloat(mapping.npcToClip * worldToNpc);
+        run.view.eye = glm::vec4(eyeOf(view), 0.0f);
+        run.view.clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
+                                  view.clipFront ? 1.0f : 0.0f);
+        std::memcpy(&litBytes_[v * litStride_], &run, sizeof run);
+        litKeys_.push_back(LitKey{int(v), -1, glm::vec4(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)});
+    }
+}
+
 int Renderer::premultipliedLights(const DrawList& list, int viewIndex, int lightSet, glm::vec4 reflectance,
                                   glm::vec4 specularColour, glm::vec3 colour) {
     const LitKey key{viewIndex, lightSet, reflectance, glm::vec3(specularColour), colour};
     if (const auto it = std::find(litKeys_.begin(), litKeys_.end(), key); it != litKeys_.end())
         return int(it - litKeys_.begin());
     const auto& lights = list.lightSets[std::size_t(lightSet)];
-    if (litKeys_.size() >= std::size_t(gpu::kMaxLitRuns) || lights.size() > 4) return -1;
+    if (litKeys_.size() >= std::size_t(gpu::kMaxRuns) || lights.size() > 4) return -1;
     gpu::LitRun run;
-    const DrawView defaultView;
-    run.eye = glm::vec4(eyeOf(list.views.empty() ? defaultView : list.views[std::size_t(viewIndex)]), 0.0f);
+    // The view as its own run holds it (addViewRuns).
+    std::memcpy(&run.view, &litBytes_[std::size_t(viewIndex) * litStride_], sizeof run.view);
     const glm::vec3 specular = reflectance.z * glm::vec3(specularColour);
     for (std::size_t j = 0; j < lights.size(); ++j) {
         const gpu::Light g = gpuLight(lights[j]);
@@ -810,7 +859,7 @@ int Renderer::premultipliedLights(const DrawList& list, int viewIndex, int light
 }
 
 void Renderer::uploadLitRuns() {
-    const std::size_t bytes = litStride_ * std::size_t(gpu::kMaxLitRuns);
+    const std::size_t bytes = litStride_ * std::size_t(gpu::kMaxRuns);
     if (!litBuffer_) {
         litBuffer_ = std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, frame_);
         lastLitBytes_.clear();
@@ -871,17 +920,6 @@ glm::vec2 Renderer::clipPlaneRange(const DrawItem& item, std::size_t index) {
 void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights) {
     const WorkstationMapping mapping(list, extent.width, extent.height);
     gpu::Frame f{};
-    const DrawView defaultView;
-    const std::size_t viewCount = std::max<std::size_t>(1, list.views.size());
-    for (std::size_t v = 0; v < viewCount; ++v) {
-        const DrawView& view = list.views.empty() ? defaultView : list.views[v];
-        const glm::dmat4 worldToNpc = view.mapping * view.orientation;
-        f.views[v].worldToNpc = toFloat(worldToNpc);
-        f.views[v].worldToClip = toFloat(mapping.npcToClip * worldToNpc);
-        f.views[v].eye = glm::vec4(eyeOf(view), 0.0f);
-        f.views[v].clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
-                                    view.clipFront ? 1.0f : 0.0f);
-    }
     for (std::size_t s = 0; s < list.lightSets.size() && s < std::size_t(gpu::kMaxLightSets); ++s) {
         const int first = firstLights[s];
         int next = first;
@@ -962,15 +1000,24 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
     const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    // The lit run is the set's one dynamic offset: rebound only where it changes.
-    std::uint32_t litOffset = 0;
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1, &litOffset);
+    // The run is the set's one dynamic offset: rebound only where a draw needs another (run 0
+    // is view 0 alone).
+    std::uint32_t runOffset = 0;
+    int runView = 0;
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1, &runOffset);
     std::uint64_t bound = ~0ull;
     VkBuffer boundVertices = VK_NULL_HANDLE, boundIndices = VK_NULL_HANDLE;
     VkRect2D scissor{};
     float lineWidth = 0.0f;
     bool first = true;
+    const bool flushScenes = context_.isLavapipe();
+    std::uint64_t binned = 0;
     for (const Command& c : commands_) {
+        if (flushScenes && binned >= kVerticesPerScene) {
+            binningFlush(cmd);
+            binned = 0;
+        }
+        binned += c.count;
         if (c.pipeline != bound) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.at(c.pipeline));
             bound = c.pipeline;
@@ -989,10 +1036,11 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer framebuffer, VkExtent2D
             vkCmdSetLineWidth(cmd, c.lineWidth);
             lineWidth = c.lineWidth;
         }
-        if ((c.pipeline & kPremultipliedLights) && c.litOffset != litOffset) {
-            litOffset = c.litOffset;
+        if ((c.pipeline & kPremultipliedLights) ? c.runOffset != runOffset : c.view != runView) {
+            runOffset = c.runOffset;
+            runView = c.view;
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 1,
-                                    &litOffset);
+                                    &runOffset);
         }
         first = false;
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

@@ -157,6 +157,10 @@ public:
 
 private:
     Structure& createIfMissing(int id);
+    /// structures_.try_emplace(id) with byId_ kept in step; true when it was made.
+    std::pair<Structure*, bool> emplaceStructure(int id);
+    /// Removes `id` from structures_ and byId_.
+    void eraseStructure(int id);
     void touch(Structure& s);
     /// An execute may have been removed or moved: the executing-structure index is rebuilt.
     void executesChanged() { parentsStale_ = true; }
@@ -180,6 +184,9 @@ private:
 
     ErrorLog* log_ = nullptr;
     std::map<int, Structure> structures_;
+    /// structures_ by id (map nodes stay put): one array access per find, the hot path of
+    /// traversal. Kept in step by every insertion into and removal from structures_.
+    IdTable<Structure*> byId_;
     std::optional<int> open_;
     Structure* openStructure_ = nullptr;  ///< open_'s node (map nodes stay put), for each insert
     int pointer_ = 0;

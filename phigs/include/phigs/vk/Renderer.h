@@ -8,11 +8,16 @@
 #include <vulkan/vulkan.h>
 #include <glm/vec4.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <unordered_map>
 #include <vector>
+
+namespace phigs {
+struct WorkstationMapping;
+}
 
 namespace phigs::vk {
 
@@ -75,7 +80,8 @@ private:
         /// indices, and what the fragment shader reads per draw (faster there than a buffer).
         struct Push {
             std::uint32_t drawIndex = 0;
-            std::int32_t viewIndex = 0, firstLight = 0, depthCue = -1;
+            std::int32_t firstLight = 0, depthCue = -1;
+            std::int32_t unused = 0;  ///< keeps the colours 16-byte aligned
             glm::vec4 colour{0.0f};
             glm::vec4 backColour{0.0f};
             glm::vec4 reflectance{0.0f};     ///< ambient, diffuse, specular, exponent
@@ -83,9 +89,14 @@ private:
             glm::vec4 backReflectance{0.0f};
             glm::vec4 backSpecularColour{0.0f};
         } push;
+        static_assert(offsetof(Push, colour) == 16, "shaders/scene.glsl reads the colours from byte 16");
         float lineWidth = 1.0f;
         VkRect2D scissor{};
-        std::uint32_t litOffset = 0;  ///< its lit run's dynamic offset in the lit buffer
+        /// Its run's dynamic offset in the run buffer (its view's, or its lit run's), and its view:
+        /// a draw that is not PREMULTIPLIED_LIGHTS reads only the view, which every run of that
+        /// view holds.
+        std::uint32_t runOffset = 0;
+        int view = 0;
     };
 
     VkPipeline pipeline(std::uint64_t key);
@@ -101,6 +112,8 @@ private:
     /// drawable pattern and draws solid.
     bool patternDraw(const DrawList& list, const DrawItem& item, int patternIndex, gpu::DrawParams& d);
     void uploadPatterns();
+    /// The runs of the list's views (run v: view v alone), the first of a frame.
+    void addViewRuns(const DrawList& list, const WorkstationMapping& mapping);
     /// The index of the lit run of view `viewIndex` and light set `lightSet` with this reflectance
     /// (ambient, diffuse, specular, exponent), specular colour and colour (white when it varies
     /// per fragment) folded in, added once a frame; -1 when the buffer is full (the draw then
@@ -134,7 +147,8 @@ private:
     std::unique_ptr<GpuBuffer> patternBuffer_;
     std::vector<glm::vec4> patternCells_, lastPatternCells_;  // this frame's records and cells, the buffer's
     std::map<const DrawPattern*, int> patternFirst_;          // this frame's patterns' first cells
-    /// What a lit run premultiplies: a view's eye, a light set, a material.
+    /// What a run holds: a view, and a light set premultiplied by a material (light set -1: the
+    /// view alone).
     struct LitKey {
         int viewIndex = 0, lightSet = 0;
         glm::vec4 reflectance{0.0f};
