@@ -203,25 +203,26 @@ std::optional<double> fillAreaHit(const Aperture& ap, const DrawItem& item, cons
     return regionHit(ap, contours, interior, outline || f.edges->visible);
 }
 
-/// What a mesh shows each side of its triangles as: filled (SOLID, HATCH, PATTERN, not culled),
-/// outlined (a HOLLOW side, render::hollowOutline, as drawn) or neither; edges show either way.
+/// What a mesh shows each side of its triangles as, by side (0 back, 1 front; an edge-on triangle
+/// counts as front, as the renderers draw it): filled (SOLID, HATCH, PATTERN, not culled), outlined
+/// (a HOLLOW side, render::hollowOutline, as drawn) or neither; edges show either way. A NURBS
+/// surface's EMPTY side counts as filled: PHIGS keeps an EMPTY interior detectable, and a wireframe
+/// picks points inside a surface's patches, with their (u, v).
 struct MeshSides {
-    bool filled[3] = {false, false, false};    ///< by side + 1: back, edge on, front
-    bool outlined[3] = {false, false, false};  ///< by side + 1; every side when the edges show
+    bool filled[2] = {false, false};
+    bool outlined[2] = {false, false};
 
-    MeshSides(const InteriorStyleSet& in, bool edges) {
-        for (const int side : {-1, 0, 1}) {
-            const bool culled =
-                (side > 0 && in.cull == CullMode::FrontFaces) || (side < 0 && in.cull == CullMode::BackFaces);
-            const InteriorStyle s = in.styleOf(side < 0);
-            filled[side + 1] =
-                side != 0 && !culled && s != InteriorStyle::Hollow && s != InteriorStyle::Empty;
-            glm::vec3 colour;
-            outlined[side + 1] =
-                edges || render::hollowOutline(in, 0, colour) || render::hollowOutline(in, side, colour);
-        }
+    MeshSides(const InteriorStyleSet& in, bool edges, bool surface) {
+        filled[1] = in.fillsFrontFaces() ||
+                    (surface && in.style == InteriorStyle::Empty && in.cull != CullMode::FrontFaces);
+        filled[0] = in.fillsBackFaces() ||
+                    (surface && in.styleOf(true) == InteriorStyle::Empty && in.cull != CullMode::BackFaces);
+        glm::vec3 colour;
+        const bool alike = render::hollowOutline(in, 0, colour);
+        outlined[1] = edges || alike || render::hollowOutline(in, 1, colour);
+        outlined[0] = edges || alike || render::hollowOutline(in, -1, colour);
     }
-    bool anyOutline() const { return outlined[0] || outlined[1] || outlined[2]; }
+    bool anyOutline() const { return outlined[0] || outlined[1]; }
 };
 
 /// Nearest triangle of a mesh under the aperture, each by the side it shows (its NPC winding): a
@@ -245,11 +246,11 @@ std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& 
         // Barycentric coordinates of the centre; den is twice the signed area (> 0: the front).
         const glm::dvec2 v0(b.npc - a.npc), v1(c.npc - a.npc), v2(ap.centre - glm::dvec2(a.npc));
         const double den = v0.x * v1.y - v1.x * v0.y;
-        const int side = den > 0.0 ? 1 : den < 0.0 ? -1 : 0;
-        const bool filled = filledToo && sides.filled[side + 1];
-        if (!filled && !sides.outlined[side + 1]) continue;
+        const int side = den >= 0.0 ? 1 : 0;
+        const bool filled = filledToo && sides.filled[side];
+        if (!filled && !sides.outlined[side]) continue;
         std::optional<double> z;
-        if (filled) {
+        if (filled && den != 0.0) {
             const double s = (v2.x * v1.y - v1.x * v2.y) / den;
             const double r = (v0.x * v2.y - v2.x * v0.y) / den;
             if (s >= 0 && r >= 0 && s + r <= 1)
@@ -279,6 +280,22 @@ bool insideClip(const DrawView& view, const glm::dvec3& npc) {
     if (view.clipBack && npc.z < view.clipMin.z - eps) return false;
     if (view.clipFront && npc.z > view.clipMax.z + eps) return false;
     return true;
+}
+
+/// Whether the box lo..hi (modelling coordinates) may meet the aperture once projected by `m`:
+/// false only when all its corners project and their NPC box misses the aperture.
+bool boxNearAperture(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dmat4& m, const Aperture& ap) {
+    glm::dvec2 min(std::numeric_limits<double>::max()), max(std::numeric_limits<double>::lowest());
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                           (corner & 4) ? hi.z : lo.z);
+        const Projected q = project(m, c);
+        if (!q.valid) return true;
+        min = glm::min(min, glm::dvec2(q.npc));
+        max = glm::max(max, glm::dvec2(q.npc));
+    }
+    return !(ap.centre.x + ap.half < min.x || ap.centre.x - ap.half > max.x ||
+             ap.centre.y + ap.half < min.y || ap.centre.y - ap.half > max.y);
 }
 
 template <typename Points>
@@ -359,8 +376,8 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
                                            const InteriorStyleSet& interior, glm::dvec2 npc,
                                            const glm::dmat4& m, const glm::dmat4& inverse,
                                            const PickItemBounds* bounds) const {
-    const MeshSides sides(interior, false);
-    if (!sides.filled[0] && !sides.filled[2]) return std::nullopt;
+    const MeshSides sides(interior, false, true);
+    if (!sides.filled[0] && !sides.filled[1]) return std::nullopt;
     const glm::dvec4 front = inverse * glm::dvec4(npc, 1.0, 1.0);
     const glm::dvec4 back = inverse * glm::dvec4(npc, 0.0, 1.0);
     if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
@@ -382,11 +399,11 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
     for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
         const Projected p = project(m, h.point);
         if (!p.valid || !insideClip(view, p.npc) || !insideModelClip(item, toWorld(item, h.point))) continue;
-        // The side shown there (the tangent plane against the viewer, as the triangles are drawn):
-        // a HOLLOW, EMPTY or culled one lets the line on through to the next hit.
+        // The side shown there (the tangent plane against the viewer, as the triangles are drawn;
+        // edge on is the front): a HOLLOW or culled one lets the line on through to the next hit.
         const glm::dvec3 normal = geom::normal(*surface, h.uv.x, h.uv.y);
         const double s = glm::dot(normal, glm::dvec3(viewer)) - viewer.w * glm::dot(normal, h.point);
-        if (!sides.filled[(s > 0.0 ? 1 : s < 0.0 ? -1 : 0) + 1]) continue;
+        if (!sides.filled[s >= 0.0 ? 1 : 0]) continue;
         SurfacePickDetail detail{h.point, normal, h.uv, h.piece};
         return PickHit{0, p.npc.z, detail};
     }
@@ -453,43 +470,33 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 z = regionHit(ap, box, true, true);
             } else if constexpr (std::is_same_v<T, DrawMesh>) {
                 // Each triangle by the side it shows; a surface's filled sides exactly, its outlines
-                // (HOLLOW sides, edges) by the tessellation, the nearer winning.
-                const MeshSides sides(*p.interior, p.edges->visible);
+                // (HOLLOW sides, edges) and iso-lines by the tessellation. An exact hit keeps its
+                // (u, v): a nearer outline or iso-line only brings the hit's depth forward.
+                const MeshSides sides(*p.interior, p.edges->visible, p.surface != nullptr);
                 const bool exact = p.surface && surfaceTest == SurfaceTest::Exact;
+                const bool lines = sides.anyOutline() || (p.mesh && !p.mesh->isoLines.empty());
                 if (exact) {
                     hit = testSurface(item, view, p.surface, *p.interior, npc, m,
                                       bounds ? bounds->fromNpc : glm::inverse(m), bounds);
-                    if (!sides.anyOutline()) return;
+                    if (!lines) return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {
                     // Reject by the projected box first: most meshes lie far from the aperture.
                     const CachedBounds& b = boundsOf(p.mesh);
-                    glm::dvec2 lo(std::numeric_limits<double>::max()),
-                        hi(std::numeric_limits<double>::lowest());
-                    bool allValid = true;
-                    for (int corner = 0; corner < 8; ++corner) {
-                        const glm::dvec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                                           (corner & 4) ? b.max.z : b.min.z);
-                        const Projected q = project(m, c);
-                        allValid = allValid && q.valid;
-                        lo = glm::min(lo, glm::dvec2(q.npc));
-                        hi = glm::max(hi, glm::dvec2(q.npc));
-                    }
-                    if (allValid && (npc.x + aperture < lo.x || npc.x - aperture > hi.x ||
-                                     npc.y + aperture < lo.y || npc.y - aperture > hi.y))
-                        return;
+                    if (!boxNearAperture(b.min, b.max, m, ap)) return;
                     const auto projected = projectAll(m, p.mesh->positions);
                     const std::vector<std::uint8_t> none;
-                    z = meshHit(ap, projected, p.mesh->triangles, sides,
-                                sides.anyOutline() ? facetEdgesOf(p.mesh) : none, !exact);
-                    if (exact) {
-                        if (z && (!hit || *z > hit->depth)) hit = PickHit{0, *z, std::nullopt};
-                        return;
-                    }
+                    if (!exact || sides.anyOutline())
+                        z = meshHit(ap, projected, p.mesh->triangles, sides,
+                                    sides.anyOutline() ? facetEdgesOf(p.mesh) : none, !exact);
                     for (const auto& line : p.mesh->isoLines) {
                         std::vector<Projected> pts;
                         for (std::uint32_t i : line) pts.push_back(projected[i]);
                         if (const auto e = polylineHit(ap, pts, false); e && (!z || *e > *z)) z = e;
+                    }
+                    if (exact && z && hit) {
+                        hit->depth = std::max(hit->depth, *z);
+                        return;
                     }
                 }
             } else {
