@@ -43,7 +43,10 @@ void main() {
     }
     // Both ends of a facet edge decide alike (the same plane against the same viewer): a line
     // whose triangle shows the other side goes wholly outside the clip volume.
-    if (SIDED_EDGES && dot(vec4(inNormal, inPattern), push.backReflectance) <= 0.0) clip = vec4(4.0, 4.0, 4.0, 1.0);
+    if (SIDED_EDGES != 0) {
+        bool front = dot(vec4(inNormal, inPattern), push.backReflectance) >= 0.0;
+        if (front != (SIDED_EDGES > 0)) clip = vec4(4.0, 4.0, 4.0, 1.0);
+    }
     gl_Position = clip;
     vLitFront = vec3(0.0);
     vLitBack = vec3(0.0);

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <random>
 
 using namespace phigs;
@@ -237,10 +238,9 @@ TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cann
     for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < meshVertices(mesh).size());
 }
 
-TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by position; sided copies",
-          "[render][unit]") {
+TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by index; sided copies", "[render][unit]") {
     // A 3 x 2 grid of quadrilaterals, two triangles each, the second quadrilateral with corners of
-    // its own (as facet data makes them).
+    // its own, which its two triangles share (as facet data makes them).
     MeshData mesh;
     for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 4; ++i) mesh.positions.push_back({float(i), float(j), 0.0f});
@@ -250,9 +250,14 @@ TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by position; si
             mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
                                                          at(i + 1, j + 1), at(i, j + 1)});
     std::vector<std::uint32_t> triangles = mesh.triangles;
+    std::map<std::uint32_t, std::uint32_t> own;
     for (int k = 6; k < 12; ++k) {
-        mesh.positions.push_back(mesh.positions[triangles[std::size_t(k)]]);
-        triangles[std::size_t(k)] = std::uint32_t(mesh.positions.size() - 1);
+        const std::uint32_t i = triangles[std::size_t(k)];
+        if (!own.count(i)) {
+            own[i] = std::uint32_t(mesh.positions.size());
+            mesh.positions.push_back(mesh.positions[i]);
+        }
+        triangles[std::size_t(k)] = own[i];
     }
     mesh.triangles = triangles;
     CHECK(meshFacetEdges(mesh) == std::vector<std::uint8_t>(12, 7));  // one triangle per facet
@@ -282,6 +287,27 @@ TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by position; si
     CHECK(sided[7].position == mesh.positions[0]);
     const auto vertices = meshVertices(mesh);
     for (std::uint32_t i : m.indices) CHECK(i < vertices.size());
+}
+
+TEST_CASE("mesh facet edges: a pole cell keeps its edge from the pole, whose corners coincide",
+          "[render][unit]") {
+    // A surface grid cell at a pole: corners 0 and 1 lie at one point, distinct vertices. Its
+    // diagonal 0-3 goes; 1-3, at the same place but a grid line, stays.
+    MeshData mesh;
+    mesh.positions = {{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.triangles = {0, 1, 3, 0, 3, 2};
+    mesh.trianglesPerFacet = 2;
+    CHECK(meshFacetEdges(mesh) == std::vector<std::uint8_t>{3, 6});
+    CHECK(meshIndices(mesh).edgeCount == 2 * 4);
+}
+
+TEST_CASE("mesh viewer: an edge-on or degenerate triangle shows its front", "[render][unit]") {
+    // Seen along z, the triangles in the plane x = 0 are edge on; a degenerate one has no plane.
+    const glm::dvec4 viewer = meshViewer(glm::dmat4(1.0));
+    CHECK(triangleSide({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {0, 1, 0}, {1, 0, 0}, viewer) == -1);
 }
 
 TEST_CASE("mesh viewer: the triangle side it sees is the NPC winding, mirrors included", "[render][unit]") {

@@ -53,7 +53,8 @@ std::vector<MeshEdge> facetEdges(const MeshData& mesh, const std::vector<int>& f
     std::unordered_set<std::uint64_t> seen;
     std::vector<MeshEdge> out;
     for (std::size_t t = 0; t < masks.size(); ++t) {
-        if (side != 0 && (t < facing.size() ? facing[t] : 0) != side) continue;
+        // Edge on (facing 0) shows the front, as the raster and the picker take it.
+        if (side != 0 && ((t < facing.size() ? facing[t] : 0) >= 0 ? 1 : -1) != side) continue;
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = mesh.triangles[3 * t + e], b = mesh.triangles[3 * t + (e + 1) % 3];
             if ((masks[t] >> e & 1) && a < count && b < count && a != b && seen.insert(edgeKey(a, b)).second)

@@ -8,17 +8,14 @@
 namespace phigs::render {
 
 std::vector<std::uint8_t> meshFacetEdges(const MeshData& mesh) {
-    const std::size_t triangles = mesh.triangles.size() / 3, count = mesh.positions.size();
+    const std::size_t triangles = mesh.triangles.size() / 3;
     std::vector<std::uint8_t> masks(triangles, 7);
     auto corner = [&](std::size_t t, int k) { return mesh.triangles[3 * t + std::size_t(k % 3)]; };
-    auto same = [&](std::uint32_t a, std::uint32_t b) {
-        return a == b || (a < count && b < count && mesh.positions[a] == mesh.positions[b]);
-    };
     auto shares = [&](std::size_t t, int e, std::size_t u) {
         const std::uint32_t a = corner(t, e), b = corner(t, e + 1);
         for (int f = 0; f < 3; ++f) {
             const std::uint32_t c = corner(u, f), d = corner(u, f + 1);
-            if ((same(a, c) && same(b, d)) || (same(a, d) && same(b, c))) return true;
+            if ((a == c && b == d) || (a == d && b == c)) return true;
         }
         return false;
     };
@@ -78,7 +75,7 @@ glm::dvec4 meshViewer(const glm::dmat4& toNpc) {
 int triangleSide(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec4& viewer) {
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double s = glm::dot(n, glm::dvec3(viewer)) - viewer.w * glm::dot(n, a);
-    return s > 0.0 ? 1 : s < 0.0 ? -1 : 0;
+    return s >= 0.0 ? 1 : -1;
 }
 
 }  // namespace phigs::render

@@ -2,6 +2,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <utility>
+
 namespace phigs::detail {
 
 namespace {
@@ -48,14 +51,25 @@ MeshData facetMesh(const FacetMeshInput& in) {
     MeshData m;
     const std::size_t corners = in.triangles.size() / 3 * 3;
     m.positions.reserve(corners);
+    // The facet's points so far and their vertices: a facet's triangles share their corners (its
+    // data is alike at a point), so its diagonals are found by index (render::meshFacetEdges).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> facetVertices;
     for (std::size_t t = 0; t < corners; t += 3) {
         const std::uint32_t f = in.facetOf[t / 3];
+        if (t == 0 || f != in.facetOf[t / 3 - 1]) facetVertices.clear();
         std::uint32_t a = in.triangles[t], b = in.triangles[t + 1], c = in.triangles[t + 2];
         if (facetNormals) {
             const glm::dvec3 winding = glm::cross(in.points[b] - in.points[a], in.points[c] - in.points[a]);
             if (glm::dot(winding, in.facetNormals[f]) < 0.0) std::swap(b, c);
         }
         for (std::uint32_t i : {a, b, c}) {
+            const auto shared = std::find_if(facetVertices.begin(), facetVertices.end(),
+                                             [&](const auto& pv) { return pv.first == i; });
+            if (shared != facetVertices.end()) {
+                m.triangles.push_back(shared->second);
+                continue;
+            }
+            facetVertices.push_back({i, static_cast<std::uint32_t>(m.positions.size())});
             m.triangles.push_back(static_cast<std::uint32_t>(m.positions.size()));
             m.positions.push_back(glm::vec3(in.points[i]));
             if (!in.vertexColours.empty()) m.colours.push_back(in.vertexColours[i]);

@@ -46,8 +46,10 @@ constexpr std::uint64_t kPatterned = 1ull << 36;
 constexpr std::uint64_t kPremultipliedLights = 1ull << 37;
 // The draws' modelling transformation is the identity (no matrix read per vertex).
 constexpr std::uint64_t kIdentityModel = 1ull << 38;
-// A mesh's facet edges of one HOLLOW side: the vertex shader drops those whose triangle shows the other.
-constexpr std::uint64_t kSidedEdges = 1ull << 40;
+// A mesh's facet edges of one HOLLOW side, the front (bit 40) or the back (bit 41): the vertex
+// shader drops those whose triangle shows the other.
+constexpr std::uint64_t kSidedFront = 1ull << 40;
+constexpr std::uint64_t kSidedBack = 1ull << 41;
 
 // The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
 constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -299,7 +301,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {12, flag(kPatterned)},
         {13, flag(kPremultipliedLights)},
         {14, flag(kIdentityModel)},
-        {16, flag(kSidedEdges)},
+        {16, flag(kSidedFront) - flag(kSidedBack)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -471,6 +473,69 @@ void Renderer::compileSidedEdges(CachedMesh& cached) {
     cached.sidedCount = std::uint32_t(indices.size());
 }
 
+template <typename AddPart>
+void Renderer::addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddPart& addPart) {
+    const InteriorStyleSet& s = mesh.interior;
+    const VkBuffer vertices = cached.vertices->handle(), indices = cached.indices->handle();
+    // HOLLOW sides outline their facets: all alike in one colour, else each side's facet edges
+    // only while their triangle shows that side (the vertex shader decides).
+    glm::vec3 colour;
+    const bool alike = render::hollowOutline(s, 0, colour);
+    const bool sided =
+        !alike && (render::hollowOutline(s, 1, colour) || render::hollowOutline(s, -1, colour));
+    if (sided) compileSidedEdges(cached);
+    render::GeometryPart part;
+    part.vertexNormals = cached.hasNormals;
+    part.lines = true;
+    part.role = render::PartRole::Edge;
+    if (alike && cached.counts.edgeCount) {
+        part.colour = colour;
+        part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+        part.count = cached.counts.edgeCount;
+        addPart(part, nullptr, false, vertices, indices);
+    }
+    for (const int side : {1, -1}) {
+        if (!sided || !cached.sidedCount || !render::hollowOutline(s, side, colour)) continue;
+        part.colour = colour;
+        part.side = side;
+        part.first = 0;
+        part.count = cached.sidedCount;
+        addPart(part, nullptr, false, cached.sidedVertices->handle(), cached.sidedIndices->handle());
+    }
+    part.side = 0;
+    if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
+        part.lines = false;
+        part.role = render::PartRole::Interior;
+        part.colour = s.colour;
+        part.vertexColours = cached.hasColours;
+        part.first = 0;
+        part.count = cached.counts.triangleCount;
+        addPart(part, &s, cached.hasNormals, vertices, indices);
+    }
+    if (cached.counts.isoLineCount) {
+        render::GeometryPart iso;
+        iso.lines = true;
+        iso.role = render::PartRole::IsoLine;
+        iso.colour = mesh.isoLineStyle->colour;
+        iso.lineType = mesh.isoLineStyle->type;
+        iso.lineWidth = mesh.isoLineStyle->width;
+        iso.first = cached.counts.triangleCount;
+        iso.count = cached.counts.isoLineCount;
+        iso.patternInModelUnits = true;
+        addPart(iso, nullptr, false, vertices, indices);
+    }
+    if (mesh.edges->visible && cached.counts.edgeCount) {
+        render::GeometryPart edge;
+        edge.lines = true;
+        edge.role = render::PartRole::Edge;
+        edge.colour = mesh.edges->colour;
+        edge.lineWidth = mesh.edges->width;
+        edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+        edge.count = cached.counts.edgeCount;
+        addPart(edge, nullptr, false, vertices, indices);
+    }
+}
+
 void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     ++frameNumber_;
     frame_ = {};
@@ -620,12 +685,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 }
             }
             if (part.lines && part.side != 0 && indices) {
-                // A mesh's facet edges of one side (render::meshVertices): the viewer in modelling
-                // coordinates, signed by the side, rides where lines read no reflectance.
-                c.pipeline |= kSidedEdges;
-                push.backReflectance =
-                    glm::vec4(double(part.side) * render::meshViewer(view.mapping * view.orientation *
-                                                                     item.modelTransform.get()));
+                // A mesh's facet edges of one side (render::meshSidedEdges): the viewer in modelling
+                // coordinates rides where lines read no reflectance.
+                c.pipeline |= part.side > 0 ? kSidedFront : kSidedBack;
+                push.backReflectance = glm::vec4(
+                    render::meshViewer(view.mapping * view.orientation * item.modelTransform.get()));
             }
             if (!cued) c.pipeline |= kNoDepthCue;
             if (!part.vertexColours) c.pipeline |= kNoVertexColours;
@@ -682,68 +746,11 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
 
         if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
             if (!mesh->mesh) continue;
-            const InteriorStyleSet& s = mesh->interior;
-            // HOLLOW sides outline their facets: all alike in one colour, else each side's facet
-            // edges only while their triangle shows that side (the vertex shader decides).
-            glm::vec3 colour;
-            const bool alike = render::hollowOutline(s, 0, colour);
-            const bool sided =
-                !alike && (render::hollowOutline(s, 1, colour) || render::hollowOutline(s, -1, colour));
             CachedMesh& cached = compileMesh(mesh->mesh);
             if (!cached.vertices) continue;
-            if (sided) compileSidedEdges(cached);
             base.model = toFloat(item.modelTransform.get());
             base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
-            render::GeometryPart part;
-            part.vertexNormals = cached.hasNormals;
-            part.lines = true;
-            part.role = render::PartRole::Edge;
-            if (alike && cached.counts.edgeCount) {
-                part.colour = colour;
-                part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
-                part.count = cached.counts.edgeCount;
-                addPart(part, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
-            for (const int side : {1, -1}) {
-                if (!sided || !cached.sidedCount || !render::hollowOutline(s, side, colour)) continue;
-                part.colour = colour;
-                part.side = side;
-                part.first = 0;
-                part.count = cached.sidedCount;
-                addPart(part, nullptr, false, cached.sidedVertices->handle(), cached.sidedIndices->handle());
-            }
-            part.side = 0;
-            if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
-                part.lines = false;
-                part.role = render::PartRole::Interior;
-                part.colour = s.colour;
-                part.vertexColours = cached.hasColours;
-                part.first = 0;
-                part.count = cached.counts.triangleCount;
-                addPart(part, &s, cached.hasNormals, cached.vertices->handle(), cached.indices->handle());
-            }
-            if (cached.counts.isoLineCount) {
-                render::GeometryPart iso;
-                iso.lines = true;
-                iso.role = render::PartRole::IsoLine;
-                iso.colour = mesh->isoLineStyle->colour;
-                iso.lineType = mesh->isoLineStyle->type;
-                iso.lineWidth = mesh->isoLineStyle->width;
-                iso.first = cached.counts.triangleCount;
-                iso.count = cached.counts.isoLineCount;
-                iso.patternInModelUnits = true;
-                addPart(iso, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
-            if (mesh->edges->visible && cached.counts.edgeCount) {
-                render::GeometryPart edge;
-                edge.lines = true;
-                edge.role = render::PartRole::Edge;
-                edge.colour = mesh->edges->colour;
-                edge.lineWidth = mesh->edges->width;
-                edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
-                edge.count = cached.counts.edgeCount;
-                addPart(edge, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
+            addMeshParts(*mesh, cached, addPart);
             continue;
         }
 

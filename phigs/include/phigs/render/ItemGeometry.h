@@ -40,7 +40,7 @@ struct GeometryPart {
     bool patternInModelUnits = false;
     /// The outline of a HOLLOW side of a fill area: +1 of its front, -1 of its back (drawn only
     /// when sideShown(sidePlane, view) says that side shows), 0 of whichever side shows. Of a mesh:
-    /// its triangles' facet edges, each drawn while its triangle shows that side (meshVertices).
+    /// its triangles' facet edges, each drawn while its triangle shows that side (meshSidedEdges).
     int side = 0;
     glm::dvec4 sidePlane{0.0};  ///< the fill area's world plane, positive on its front side
 };

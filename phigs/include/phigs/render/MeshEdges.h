@@ -16,8 +16,8 @@ namespace phigs::render {
 
 /// Which edges of each triangle are edges of the primitive's facets (bit e: from corner e to corner
 /// e + 1 mod 3): all but those another triangle of its facet shares (MeshData::facetEnds: a
-/// quadrilateral's or grid cell's diagonal), matched by position, since facet data gives each
-/// triangle corners of its own.
+/// quadrilateral's or grid cell's diagonal), matched by vertex index: a facet's triangles share
+/// their corners' vertices, and a pole's distinct vertices at one position stay apart.
 std::vector<std::uint8_t> meshFacetEdges(const MeshData& mesh);
 
 /// Each triangle's facet edges as a line list in modelling coordinates (vertex data as
@@ -27,13 +27,14 @@ std::vector<RenderVertex> meshSidedEdges(const MeshData& mesh);
 
 /// The viewer of a mesh for the side test of its triangles: NPC's point at infinity toward +z
 /// brought back to modelling coordinates, signed so that the plane (n, -n . a) of a triangle a, b,
-/// c (n = (b - a) x (c - a)) shows its front, counter-clockwise in NPC, exactly when
-/// dot(plane, viewer) > 0; a mirroring transform turns the sign. toNpc: the view's mapping times
-/// its orientation times the item's modelling transform.
+/// c (n = (b - a) x (c - a)) is counter-clockwise in NPC exactly when dot(plane, viewer) > 0; a
+/// mirroring transform turns the sign. The renderers, picker and hardcopy take >= 0 as the front:
+/// an edge-on triangle shows its front. toNpc: the view's mapping times its orientation times the
+/// item's modelling transform.
 glm::dvec4 meshViewer(const glm::dmat4& toNpc);
 
 /// The side of the triangle a, b, c (modelling coordinates) that `viewer` (meshViewer) sees: +1
-/// its front, -1 its back, 0 edge on or degenerate.
+/// its front (edge on or degenerate too), -1 its back.
 int triangleSide(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec4& viewer);
 
 }  // namespace phigs::render

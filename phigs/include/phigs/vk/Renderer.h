@@ -127,6 +127,10 @@ private:
     CachedMesh& compileMesh(const std::shared_ptr<const MeshData>& mesh);
     /// Makes the mesh's sided edge buffers once (CachedMesh::sidedVertices).
     void compileSidedEdges(CachedMesh& cached);
+    /// Hands a mesh's parts to prepare's `addPart` (part, interior, mesh normals, vertex and index
+    /// buffers): its HOLLOW sides' outlines, filled interior, iso-lines and edges.
+    template <typename AddPart>
+    void addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddPart& addPart);
     void release();
 
     Context& context_;
