@@ -57,6 +57,22 @@ static double nearest_along(const Picture* p, double x, double y, double dx, dou
     return best;
 }
 
+/* nearest_along for a line crossed along (dx, dy): besides single pixels, the sum of two
+ * neighbours over the background, since an anti-aliased hairline of the PDF raster that falls
+ * between two pixel rows lights each in part, neither in its full colour. */
+static double line_along(const Picture* p, double x, double y, double dx, double dy, const double* rgb) {
+    const unsigned char* background = picture_pixel(p, 0.02, 0.02);
+    double best = nearest_along(p, x, y, dx, dy, rgb);
+    for (int d = -3; d < 3; ++d) {
+        const unsigned char* c = picture_pixel(p, x + d * dx / p->side, y + d * dy / p->side);
+        const unsigned char* e = picture_pixel(p, x + (d + 1) * dx / p->side, y + (d + 1) * dy / p->side);
+        double worst = 0;
+        for (int k = 0; k < 3; ++k) worst = fmax(worst, fabs(c[k] + e[k] - background[k] - 255 * rgb[k]));
+        best = fmin(best, worst);
+    }
+    return best;
+}
+
 /* The worst channel difference from the background among those pixels. */
 static double farthest_from_background(const Picture* p, double x, double y, double dx, double dy) {
     const unsigned char* background = picture_pixel(p, 0.02, 0.02);
@@ -87,10 +103,9 @@ static void check_edge(const Picture* p, double x, double y, double dx, double d
     if (!a->outlined && !(b && b->outlined))
         ok = farthest_from_background(p, x, y, dx, dy) <= 24;
     else if (a->outlined && b && b->outlined)
-        ok = nearest_along(p, x, y, dx, dy, a->colour) <= 24 ||
-             nearest_along(p, x, y, dx, dy, b->colour) <= 24;
+        ok = line_along(p, x, y, dx, dy, a->colour) <= 24 || line_along(p, x, y, dx, dy, b->colour) <= 24;
     else
-        ok = nearest_along(p, x, y, dx, dy, a->outlined ? a->colour : b->colour) <= 24;
+        ok = line_along(p, x, y, dx, dy, a->outlined ? a->colour : b->colour) <= 24;
     if (!ok) {
         fprintf(stderr, "  %s: edge at NPC (%.3f, %.3f): %s\n", p->name, x, y,
                 a->outlined || (b && b->outlined) ? "outline missing" : "a line drawn");
