@@ -425,6 +425,10 @@ TEST_CASE("mesh outline: patch boundaries on knot lines, borders, silhouettes an
     for (int t = 0; t < 2 * n; ++t) cellFacing[std::size_t(t)] = 1;
     CHECK(facetEdges(mesh, cellFacing, 1).size() == 3 * n + 1);
     CHECK(facetEdges(mesh, cellFacing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
+    // An edge-on cell (facing 0) shows its front, as the raster and the picker take it.
+    for (int t = 0; t < 2 * n; ++t) cellFacing[std::size_t(t)] = 0;
+    CHECK(facetEdges(mesh, cellFacing, 1).size() == 3 * n + 1);
+    CHECK(facetEdges(mesh, cellFacing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
     mesh.trianglesPerFacet = 1;
     CHECK(patchBoundaryEdges(mesh, nullptr).size() == 4 * n);  // the border only
     std::vector<double> knots{0, 0, 0, 0, 0.5, 1, 1, 1, 1};
