@@ -252,6 +252,51 @@ TEST_CASE("pick surface: a wireframe (EMPTY, iso-lines) is hit inside its patche
     }
 }
 
+TEST_CASE("pick surface: a nearer wireframe's iso-line beside the point leaves the exact hit behind",
+          "[pick]") {
+    // Two wireframe planes (EMPTY, iso-lines): far, z = 0.5 over [0.2, 0.8]^2; near, z = 0.7 over
+    // x in [0.2, e], its iso-line along its edge x = e. Picked just right of e, the line misses the
+    // near plane: the far one is hit exactly, with (u, v), though the near iso-line lies in the
+    // aperture; alone, the near plane is hit by its line, without (u, v).
+    auto plane = [](double x1, double z, bool isoAtEdge) {
+        auto mesh = std::make_shared<MeshData>();
+        const float fx = float(x1), fz = float(z);
+        mesh->positions = {{0.2f, 0.2f, fz}, {fx, 0.2f, fz}, {fx, 0.8f, fz}, {0.2f, 0.8f, fz}};
+        mesh->triangles = {0, 1, 2, 0, 2, 3};
+        mesh->trianglesPerFacet = 2;
+        if (isoAtEdge) mesh->isoLines = {{1, 2}};
+        DrawMesh m;
+        m.mesh = mesh;
+        m.interior.edit().style = InteriorStyle::Empty;
+        m.surface = std::make_shared<const geom::Surface>(
+            1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
+            std::vector<glm::dvec3>{{0.2, 0.2, z}, {0.2, 0.8, z}, {x1, 0.2, z}, {x1, 0.8, z}});
+        return m;
+    };
+    std::mt19937 rng(0x5eed);
+    std::uniform_real_distribution<double> edge(0.3, 0.7), along(0.25, 0.75), off(0.0005, 0.004);
+    for (int round = 0; round < 50; ++round) {
+        const double e = edge(rng);
+        const glm::dvec2 at(e + off(rng), along(rng));
+        DrawList both = unitList();
+        both.items.push_back(item(plane(0.8, 0.5, false), {{1, 1, 0}}));
+        both.items.push_back(item(plane(e, 0.7, true), {{2, 1, 0}}));
+        const Picker picker;
+        const auto hit = picker.nearest(both, at, 0.005);
+        REQUIRE(hit);
+        CHECK(hit->item == 0);
+        REQUIRE(hit->surface);
+        CHECK(hit->surface->uv.x == Approx((at.x - 0.2) / 0.6).margin(1e-9));
+        CHECK(hit->depth == Approx(0.5).margin(1e-6));
+        DrawList nearOnly = unitList();
+        nearOnly.items.push_back(item(plane(e, 0.7, true), {{2, 1, 0}}));
+        const auto line = Picker().nearest(nearOnly, at, 0.005);
+        REQUIRE(line);
+        CHECK_FALSE(line->surface);
+        CHECK(line->depth == Approx(0.7).margin(1e-6));
+    }
+}
+
 TEST_CASE("pick surface: under a perspective view the hit projects onto the pick point", "[pick]") {
     DrawList list = unitList();
     const glm::dmat4 proj = glm::perspective(glm::radians(50.0), 1.0, 0.5, 10.0);

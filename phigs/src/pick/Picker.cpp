@@ -489,7 +489,11 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                     if (!exact || sides.anyOutline())
                         z = meshHit(ap, projected, p.mesh->triangles, sides,
                                     sides.anyOutline() ? facetEdgesOf(p.mesh) : none, !exact);
+                    // Iso-lines are the tessellation's: in the exact pass they only bring the
+                    // surface's own exact hit forward, else a nearer iso-line of a patch beside
+                    // would win over the exact hit under the centre, without (u, v).
                     for (const auto& line : p.mesh->isoLines) {
+                        if (exact && !hit) break;
                         std::vector<Projected> pts;
                         for (std::uint32_t i : line) pts.push_back(projected[i]);
                         if (const auto e = polylineHit(ap, pts, false); e && (!z || *e > *z)) z = e;
