@@ -43,6 +43,12 @@ void main() {
         float offsetScale = SCREEN_OFFSETS == 2 ? frame.pixelScale.z : 1.0;
         clip.xy += inOffset * offsetScale * frame.pixelScale.xy * clip.w;
     }
+    // Both ends of a facet edge decide alike (the same plane against the same viewer): a line
+    // whose triangle shows the other side goes wholly outside the clip volume.
+    if (SIDED_EDGES != 0) {
+        bool front = dot(vec4(inNormal, inPattern), push.backReflectance) >= 0.0;
+        if (front != (SIDED_EDGES > 0)) clip = vec4(4.0, 4.0, 4.0, 1.0);
+    }
     gl_Position = clip;
     vLitFront = vec3(0.0);
     vLitBack = vec3(0.0);

@@ -139,6 +139,12 @@ layout(constant_id = 13) const bool PREMULTIPLIED_LIGHTS = false;
 // The draws' modelling transformation is the identity: the vertex shader reads no matrix from
 // the draw record (lavapipe gathers such reads lane by lane).
 layout(constant_id = 14) const bool MODEL_IDENTITY = false;
+// The draws are a mesh's facet edges of one HOLLOW side (1 front, -1 back, 0 none): each line
+// carries its triangle's plane (normal, offset in the pattern input) and is kept while that
+// triangle shows the side: the front while dot(plane, push.backReflectance) >= 0 (edge on counts
+// as front), the back while it is < 0 (the viewer in modelling coordinates; lines read no
+// reflectance).
+layout(constant_id = 16) const int SIDED_EDGES = 0;
 
 // A positional (type 3) or spot (type 4) light at `position` seen from `world`: the unit
 // direction to it in l, and its attenuation (the caller reads the light's fields only for these

@@ -464,7 +464,19 @@ TEST_CASE("mesh outline: patch boundaries on knot lines, borders, silhouettes an
         for (int j = 0; j < n; ++j)
             mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
                                                          at(i + 1, j + 1), at(i, j + 1)});
-    CHECK(uniqueEdges(mesh).size() == 2 * n * (n + 1) + n * n);
+    CHECK(facetEdges(mesh).size() == 2 * n * (n + 1) + n * n);
+    // Cells of two triangles: no diagonals; the cells of the first column only, by their facing.
+    mesh.trianglesPerFacet = 2;
+    CHECK(facetEdges(mesh).size() == 2 * n * (n + 1));
+    std::vector<int> cellFacing(2 * n * n, -1);
+    for (int t = 0; t < 2 * n; ++t) cellFacing[std::size_t(t)] = 1;
+    CHECK(facetEdges(mesh, cellFacing, 1).size() == 3 * n + 1);
+    CHECK(facetEdges(mesh, cellFacing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
+    // An edge-on cell (facing 0) shows its front, as the raster and the picker take it.
+    for (int t = 0; t < 2 * n; ++t) cellFacing[std::size_t(t)] = 0;
+    CHECK(facetEdges(mesh, cellFacing, 1).size() == 3 * n + 1);
+    CHECK(facetEdges(mesh, cellFacing, -1).size() == 2 * n * (n + 1) - 2 * n - 1);
+    mesh.trianglesPerFacet = 1;
     CHECK(patchBoundaryEdges(mesh, nullptr).size() == 4 * n);  // the border only
     std::vector<double> knots{0, 0, 0, 0, 0.5, 1, 1, 1, 1};
     const geom::Surface surface(3, 3, knots, {0, 0, 0, 0, 1, 1, 1, 1}, 5, 4, std::vector<glm::dvec3>(20));

@@ -61,9 +61,11 @@ inline std::shared_ptr<const geom::Surface> cylinder(double r) {
         std::vector<double>{0, 0, 1, 1}, 9, 2, points, weights);
 }
 
+/// A NURBS surface item, SOLID (a HOLLOW or EMPTY side is hit on its edges only).
 inline DrawItem surfaceItem(std::shared_ptr<const geom::Surface> surface, std::vector<DrawPathLevel> path) {
     DrawMesh m;
     m.surface = std::move(surface);
+    m.interior.edit().style = InteriorStyle::Solid;
     return item(m, std::move(path));
 }
 

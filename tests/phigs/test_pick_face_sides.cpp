@@ -147,3 +147,79 @@ TEST_CASE("pick face sides: the side a view shows is the side the projection win
     CHECK(fronts > checked / 4);
     CHECK(fronts < 3 * checked / 4);
 }
+
+TEST_CASE("pick face sides: a surface is hit exactly where the side it shows is detectable", "[pick]") {
+    // The cylinder's normal Su x Sv points inward: its near wall shows the back, its far wall the
+    // front. The line through the aperture passes a side that is HOLLOW or culled; an EMPTY side
+    // of a surface stays detectable (a wireframe picks inside its patches).
+    const double r = 0.3;
+    const InteriorStyle styles[] = {InteriorStyle::Hollow, InteriorStyle::Solid, InteriorStyle::Empty,
+                                    InteriorStyle::Hatch};
+    int nearHits = 0, farHits = 0;
+    for (const InteriorStyle front : styles)
+        for (const InteriorStyle back : styles)
+            for (const CullMode cull : {CullMode::None, CullMode::BackFaces, CullMode::FrontFaces}) {
+                DrawList list = unitList();
+                DrawItem i = test::surfaceItem(test::cylinder(r), {{1, 2, 3}});
+                i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
+                InteriorStyleSet& in = editPrimitive<DrawMesh>(i.primitive).interior.edit();
+                in.style = front;
+                in.back.style = back;
+                in.distinguishBackFaces = true;
+                in.cull = cull;
+                list.items.push_back(i);
+                const Picker picker;
+                const auto hit = picker.nearest(list, {0.55, 0.4}, 0.001);
+                const bool nearFilled = back != InteriorStyle::Hollow && cull != CullMode::BackFaces;
+                const bool farFilled = front != InteriorStyle::Hollow && cull != CullMode::FrontFaces;
+                CHECK(hit.has_value() == (nearFilled || farFilled));
+                if (!hit) continue;
+                REQUIRE(hit->surface);  // exact, (u, v) and all
+                const double z = std::sqrt(r * r - 0.05 * 0.05);
+                CHECK(hit->surface->point.z == Approx(nearFilled ? z : -z).margin(1e-9));
+                CHECK(glm::dot(hit->surface->normal, glm::dvec3(0, 0, 1)) * (nearFilled ? -1 : 1) > 0.0);
+                nearHits += nearFilled, farHits += !nearFilled;
+            }
+    CHECK(nearHits > 0);
+    CHECK(farHits > 0);
+}
+
+TEST_CASE("pick face sides: an edge-on mesh triangle shows its front", "[pick]") {
+    // Triangles in planes through the view axis: each projects to a segment through (0.5, 0.5),
+    // hit on its edges when its front is outlined or filled, whichever way it is wound. Their
+    // directions keep the projected winding exactly zero (x or y alike, or x = y).
+    std::mt19937 rng(0xed9e);
+    std::uniform_real_distribution<double> apex(0.2, 0.45);
+    const glm::dvec3 directions[] = {{1, 0, 0},  {0, 1, 0},     {-1, 0, 0},
+                                     {0, -1, 0}, {0.7, 0.7, 0}, {-0.7, -0.7, 0}};
+    const InteriorStyle styles[] = {InteriorStyle::Hollow, InteriorStyle::Solid, InteriorStyle::Empty};
+    int hits = 0;
+    for (int round = 0; round < 60; ++round) {
+        const double r = apex(rng);
+        const glm::dvec3 d = directions[round % 6];
+        auto mesh = std::make_shared<MeshData>();
+        for (const glm::dvec3& p : {glm::dvec3(0.5, 0.5, 0.2) - r * d, glm::dvec3(0.5, 0.5, 0.2) + r * d,
+                                    glm::dvec3(0.5, 0.5, 0.8) + 0.3 * r * d})
+            mesh->positions.push_back(glm::vec3(p));
+        mesh->triangles =
+            round / 6 % 2 ? std::vector<std::uint32_t>{0, 1, 2} : std::vector<std::uint32_t>{0, 2, 1};
+        for (const InteriorStyle front : styles)
+            for (const InteriorStyle back : styles) {
+                DrawList list = unitList();
+                DrawMesh m;
+                m.mesh = mesh;
+                InteriorStyleSet& in = m.interior.edit();
+                in.style = front;
+                in.back.style = back;
+                in.distinguishBackFaces = true;
+                in.backColour = glm::vec3(0.2f);  // HOLLOW sides of their own colours: outlined per side
+                list.items.push_back(item(m, {{1, 2, 3}}));
+                const Picker picker;
+                const bool hit =
+                    picker.nearest(list, glm::dvec2(0.5, 0.5) + 0.05 * glm::dvec2(d), 0.002).has_value();
+                CHECK(hit == (front != InteriorStyle::Empty));
+                hits += hit;
+            }
+    }
+    CHECK(hits == 60 * 6);
+}

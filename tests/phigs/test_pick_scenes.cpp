@@ -189,6 +189,7 @@ TEST_CASE("pick: meshes are picked by their triangles with interpolated depth", 
     mesh->triangles = {0, 1, 2};
     DrawMesh m;
     m.mesh = mesh;
+    m.interior.edit().style = InteriorStyle::Solid;
     list.items.push_back(item(m, {{3, 2, 5}}));
     const Picker picker;
     const auto hits = picker.hits(list, {0.2, 0.5}, 0.001);

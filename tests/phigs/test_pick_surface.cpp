@@ -170,6 +170,7 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
     mesh->triangles = {0, 1, 2, 0, 2, 3};
     DrawMesh m;
     m.mesh = mesh;
+    m.interior.edit().style = InteriorStyle::Solid;
     // An exact plane z = 0.5 over [0.2, 0.8]^2, bilinear.
     m.surface = std::make_shared<const geom::Surface>(
         1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
@@ -188,6 +189,7 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
 
     // An exact hit anywhere (here a plane behind) beats a tessellation under the aperture.
     DrawMesh back;
+    back.interior.edit().style = InteriorStyle::Solid;
     back.surface = std::make_shared<const geom::Surface>(
         1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
         std::vector<glm::dvec3>{{0, 0, 0.1}, {0, 1, 0.1}, {1, 0, 0.1}, {1, 1, 0.1}});
@@ -197,6 +199,102 @@ TEST_CASE("pick surface: a surface with a mesh falls back to the mesh at its sil
     CHECK(hit->item == 1);
     REQUIRE(hit->surface);
     CHECK(hit->surface->point.z == Approx(0.1).margin(1e-12));
+}
+
+TEST_CASE("pick surface: a wireframe (EMPTY, iso-lines) is hit inside its patches with (u, v)", "[pick]") {
+    // The plane z = 0.5 over [0.2, 0.8]^2, u along x and v along y, its front toward the viewer,
+    // tessellated as two triangles with the iso-line u = 0.5.
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {{0.2f, 0.2f, 0.5f}, {0.8f, 0.2f, 0.5f}, {0.8f, 0.8f, 0.5f},
+                       {0.2f, 0.8f, 0.5f}, {0.5f, 0.2f, 0.5f}, {0.5f, 0.8f, 0.5f}};
+    mesh->triangles = {0, 1, 2, 0, 2, 3};
+    mesh->trianglesPerFacet = 2;  // one grid cell: its diagonal is no edge
+    mesh->isoLines = {{4, 5}};
+    auto listOf = [&](InteriorStyle style, CullMode cull, bool exact) {
+        DrawList list = unitList();
+        DrawMesh m;
+        m.mesh = mesh;
+        m.interior.edit().style = style;
+        m.interior.edit().cull = cull;
+        if (exact)
+            m.surface = std::make_shared<const geom::Surface>(
+                1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
+                std::vector<glm::dvec3>{{0.2, 0.2, 0.5}, {0.2, 0.8, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}});
+        list.items.push_back(item(m, {{1, 1, 0}}));
+        return list;
+    };
+    std::mt19937 rng(0x31e7);
+    std::uniform_real_distribution<double> inside(0.25, 0.75), offLine(0.0005, 0.004);
+    for (int round = 0; round < 50; ++round) {
+        const Picker picker;
+        // Inside a patch, away from the iso-line, and beside the iso-line within the aperture.
+        glm::dvec2 p(inside(rng), inside(rng));
+        if (std::abs(p.x - 0.5) < 0.02) p.x += 0.05;
+        const glm::dvec2 q(0.5 + (round % 2 ? 1 : -1) * offLine(rng), inside(rng));
+        for (const glm::dvec2 at : {p, q}) {
+            const DrawList list = listOf(InteriorStyle::Empty, CullMode::None, true);
+            const auto hit = picker.nearest(list, at, 0.005);
+            REQUIRE(hit);
+            REQUIRE(hit->surface);
+            CHECK(hit->surface->uv.x == Approx((at.x - 0.2) / 0.6).margin(1e-9));
+            CHECK(hit->surface->uv.y == Approx((at.y - 0.2) / 0.6).margin(1e-9));
+            CHECK(hit->depth == Approx(0.5).margin(1e-6));
+        }
+        // A culled EMPTY side is not hit, nor an EMPTY mesh without its surface; a HOLLOW side
+        // only on its lines, without (u, v).
+        CHECK_FALSE(picker.nearest(listOf(InteriorStyle::Empty, CullMode::FrontFaces, true), p, 0.005));
+        CHECK(picker.nearest(listOf(InteriorStyle::Empty, CullMode::BackFaces, true), p, 0.005));
+        CHECK_FALSE(picker.nearest(listOf(InteriorStyle::Empty, CullMode::None, false), p, 0.005));
+        CHECK_FALSE(picker.nearest(listOf(InteriorStyle::Hollow, CullMode::None, true), p, 0.005));
+        const auto line = picker.nearest(listOf(InteriorStyle::Hollow, CullMode::None, true), q, 0.005);
+        REQUIRE(line);
+        CHECK_FALSE(line->surface);
+    }
+}
+
+TEST_CASE("pick surface: a nearer wireframe's iso-line beside the point leaves the exact hit behind",
+          "[pick]") {
+    // Two wireframe planes (EMPTY, iso-lines): far, z = 0.5 over [0.2, 0.8]^2; near, z = 0.7 over
+    // x in [0.2, e], its iso-line along its edge x = e. Picked just right of e, the line misses the
+    // near plane: the far one is hit exactly, with (u, v), though the near iso-line lies in the
+    // aperture; alone, the near plane is hit by its line, without (u, v).
+    auto plane = [](double x1, double z, bool isoAtEdge) {
+        auto mesh = std::make_shared<MeshData>();
+        const float fx = float(x1), fz = float(z);
+        mesh->positions = {{0.2f, 0.2f, fz}, {fx, 0.2f, fz}, {fx, 0.8f, fz}, {0.2f, 0.8f, fz}};
+        mesh->triangles = {0, 1, 2, 0, 2, 3};
+        mesh->trianglesPerFacet = 2;
+        if (isoAtEdge) mesh->isoLines = {{1, 2}};
+        DrawMesh m;
+        m.mesh = mesh;
+        m.interior.edit().style = InteriorStyle::Empty;
+        m.surface = std::make_shared<const geom::Surface>(
+            1, 1, std::vector<double>{0, 0, 1, 1}, std::vector<double>{0, 0, 1, 1}, 2, 2,
+            std::vector<glm::dvec3>{{0.2, 0.2, z}, {0.2, 0.8, z}, {x1, 0.2, z}, {x1, 0.8, z}});
+        return m;
+    };
+    std::mt19937 rng(0x5eed);
+    std::uniform_real_distribution<double> edge(0.3, 0.7), along(0.25, 0.75), off(0.0005, 0.004);
+    for (int round = 0; round < 50; ++round) {
+        const double e = edge(rng);
+        const glm::dvec2 at(e + off(rng), along(rng));
+        DrawList both = unitList();
+        both.items.push_back(item(plane(0.8, 0.5, false), {{1, 1, 0}}));
+        both.items.push_back(item(plane(e, 0.7, true), {{2, 1, 0}}));
+        const Picker picker;
+        const auto hit = picker.nearest(both, at, 0.005);
+        REQUIRE(hit);
+        CHECK(hit->item == 0);
+        REQUIRE(hit->surface);
+        CHECK(hit->surface->uv.x == Approx((at.x - 0.2) / 0.6).margin(1e-9));
+        CHECK(hit->depth == Approx(0.5).margin(1e-6));
+        DrawList nearOnly = unitList();
+        nearOnly.items.push_back(item(plane(e, 0.7, true), {{2, 1, 0}}));
+        const auto line = Picker().nearest(nearOnly, at, 0.005);
+        REQUIRE(line);
+        CHECK_FALSE(line->surface);
+        CHECK(line->depth == Approx(0.7).margin(1e-6));
+    }
 }
 
 TEST_CASE("pick surface: under a perspective view the hit projects onto the pick point", "[pick]") {

@@ -89,6 +89,7 @@ DrawItem randomItem(std::mt19937& rng, int index) {
             break;
         default: {
             DrawMesh mesh;
+            mesh.interior.edit().style = InteriorStyle::Solid;
             mesh.surface = randomSurface(rng, c);
             if (rng() % 2) mesh.mesh = meshOf(*mesh.surface);
             primitive = mesh;

@@ -5,14 +5,17 @@
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
+#include "phigs/render/MeshEdges.h"
 #include "phigs/render/StrokeFont.h"
 #include "phigs/render/Triangulation.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <random>
 
 using namespace phigs;
@@ -293,4 +296,110 @@ TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cann
     mesh.triangles = {0, 1, 99};
     mesh.isoLines = {{0, 42}};
     for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < meshVertices(mesh).size());
+}
+
+TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by index; sided copies", "[render][unit]") {
+    // A 3 x 2 grid of quadrilaterals, two triangles each, the second quadrilateral with corners of
+    // its own, which its two triangles share (as facet data makes them).
+    MeshData mesh;
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 4; ++i) mesh.positions.push_back({float(i), float(j), 0.0f});
+    auto at = [](int i, int j) { return std::uint32_t(j * 4 + i); };
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 3; ++i)
+            mesh.triangles.insert(mesh.triangles.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j),
+                                                         at(i + 1, j + 1), at(i, j + 1)});
+    std::vector<std::uint32_t> triangles = mesh.triangles;
+    std::map<std::uint32_t, std::uint32_t> own;
+    for (int k = 6; k < 12; ++k) {
+        const std::uint32_t i = triangles[std::size_t(k)];
+        if (!own.count(i)) {
+            own[i] = std::uint32_t(mesh.positions.size());
+            mesh.positions.push_back(mesh.positions[i]);
+        }
+        triangles[std::size_t(k)] = own[i];
+    }
+    mesh.triangles = triangles;
+    CHECK(meshFacetEdges(mesh) == std::vector<std::uint8_t>(12, 7));  // one triangle per facet
+    mesh.trianglesPerFacet = 2;
+    const std::vector<std::uint8_t> masks = meshFacetEdges(mesh);
+    for (std::size_t t = 0; t < masks.size(); ++t) CHECK(int(masks[t]) == (t % 2 ? 6 : 3));
+    // The facets as runs of their own: the first quadrilateral split into two facets.
+    mesh.trianglesPerFacet = 1;
+    mesh.facetEnds = {1, 2, 4, 6, 8, 10, 12};
+    CHECK(int(meshFacetEdges(mesh)[0]) == 7);
+    CHECK(int(meshFacetEdges(mesh)[2]) == 3);
+    mesh.facetEnds.clear();
+    mesh.trianglesPerFacet = 2;
+    // Unique facet edges: 17 grid lines, the second quadrilateral's 3 it shares again (own corners).
+    const MeshIndices m = meshIndices(mesh);
+    CHECK(m.edgeCount == 2 * (3 * 3 + 4 * 2 + 3));
+    const auto sided = meshSidedEdges(mesh);
+    REQUIRE(sided.size() == 2 * 2 * 12);
+    for (const RenderVertex& v : sided) {
+        CHECK(v.normal == glm::vec3(0, 0, 1));  // each triangle's plane z = 0
+        CHECK(v.pattern == 0.0f);
+    }
+    // Triangle 1 (0, 5, 4): its edges 5-4 and 4-0, not the diagonal 0-5.
+    CHECK(sided[4].position == mesh.positions[5]);
+    CHECK(sided[5].position == mesh.positions[4]);
+    CHECK(sided[6].position == mesh.positions[4]);
+    CHECK(sided[7].position == mesh.positions[0]);
+    const auto vertices = meshVertices(mesh);
+    for (std::uint32_t i : m.indices) CHECK(i < vertices.size());
+}
+
+TEST_CASE("mesh facet edges: a pole cell keeps its edge from the pole, whose corners coincide",
+          "[render][unit]") {
+    // A surface grid cell at a pole: corners 0 and 1 lie at one point, distinct vertices. Its
+    // diagonal 0-3 goes; 1-3, at the same place but a grid line, stays.
+    MeshData mesh;
+    mesh.positions = {{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    mesh.triangles = {0, 1, 3, 0, 3, 2};
+    mesh.trianglesPerFacet = 2;
+    CHECK(meshFacetEdges(mesh) == std::vector<std::uint8_t>{3, 6});
+    CHECK(meshIndices(mesh).edgeCount == 2 * 4);
+}
+
+TEST_CASE("mesh viewer: an edge-on or degenerate triangle shows its front", "[render][unit]") {
+    // Seen along z, the triangles in the plane x = 0 are edge on; a degenerate one has no plane.
+    const glm::dvec4 viewer = meshViewer(glm::dmat4(1.0));
+    CHECK(triangleSide({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, viewer) == 1);
+    CHECK(triangleSide({0, 0, 0}, {0, 1, 0}, {1, 0, 0}, viewer) == -1);
+}
+
+TEST_CASE("mesh viewer: the triangle side it sees is the NPC winding, mirrors included", "[render][unit]") {
+    std::mt19937 rng(0x7e11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    int checked = 0, fronts = 0;
+    for (int round = 0; round < 2000; ++round) {
+        glm::dmat4 view(1.0);
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) view[c][r] = unit(rng);
+        if (round % 2) view[2][3] = -0.3 + 0.1 * unit(rng);  // a perspective divide (w = 1 - 0.3 z)
+        glm::dmat4 model =
+            glm::rotate(glm::dmat4(1.0), 3.0 * unit(rng), glm::dvec3(unit(rng), unit(rng), 1.0));
+        if (round % 3 == 0) model = glm::scale(model, glm::dvec3(-1.0, 1.0, 1.0));
+        const glm::dmat4 toNpc = view * model;
+        const glm::dvec3 a(unit(rng), unit(rng), unit(rng)), b(unit(rng), unit(rng), unit(rng)),
+            c(unit(rng), unit(rng), unit(rng));
+        glm::dvec2 q[3];
+        bool valid = true;
+        const glm::dvec3 corners[3] = {a, b, c};
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec4 h = toNpc * glm::dvec4(corners[k], 1.0);
+            valid = valid && h.w > 0.0;
+            q[k] = glm::dvec2(h) / h.w;
+        }
+        const double winding = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
+        if (!valid || std::abs(winding) < 1e-6) continue;
+        ++checked;
+        fronts += winding > 0;
+        CHECK(triangleSide(a, b, c, meshViewer(toNpc)) == (winding > 0 ? 1 : -1));
+    }
+    CHECK(checked > 1000);
+    CHECK(fronts > checked / 4);
+    CHECK(fronts < 3 * checked / 4);
 }

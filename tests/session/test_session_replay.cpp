@@ -1,10 +1,12 @@
-// The shipped demo session replayed from its file (two of its pictures against references), picking a known
-// surface point, bad input that leaves the session going, and a recorded session that replays to the same
-// result.
+// The shipped demo session replayed from its file (two of its pictures against references), picking known
+// surface points shaded and in the wireframe, bad input that leaves the session going, and a recorded session
+// that replays to the same result.
 #include "SessionTestSupport.h"
 
 #include "../support/VectorRaster.h"
 #include "geom/Evaluate.h"
+
+#include <glm/geometric.hpp>
 
 #include <fstream>
 #include <sstream>
@@ -101,10 +103,10 @@ TEST_CASE("the shipped demo session replays headless: logo and circle mapped, fu
                      "13 x 19 = 247 -> ") != std::string::npos);
 }
 
-TEST_CASE("picking the screen position of a known surface point returns its component, patch and (u, w)") {
-    Driver d("pick");
-    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
-           "choice FOUR_VIEWS", "choice RETURN"});
+namespace {
+
+/// Picks known surface points where they show and checks the component, patch, (u, w) and point.
+void pickKnownPoints(Driver& d) {
     struct Probe {
         std::string component;
         double u, w;
@@ -121,7 +123,8 @@ TEST_CASE("picking the screen position of a known surface point returns its comp
             if (components[i].name == probe.component) index = int(i);
         REQUIRE(index >= 0);
         const acsynt::Component& c = components[std::size_t(index)];
-        d.pickAt(geom::evaluate(c.surface, probe.u, probe.w), probe.view);
+        const glm::dvec3 point = geom::evaluate(c.surface, probe.u, probe.w);
+        d.pickAt(point, probe.view);
         INFO(probe.component << " at (" << probe.u << ", " << probe.w << ") in view " << probe.view);
         REQUIRE(d.session.lastPick());
         REQUIRE(d.session.lastPickDetail());
@@ -129,11 +132,46 @@ TEST_CASE("picking the screen position of a known surface point returns its comp
         CHECK(d.session.lastPick()->patch == c.patches.find(probe.u, probe.w)->number);
         CHECK(std::abs(d.session.lastPickDetail()->uv.x - probe.u) < 1e-6);
         CHECK(std::abs(d.session.lastPickDetail()->uv.y - probe.w) < 1e-6);
+        CHECK(glm::distance(d.session.lastPickDetail()->point, point) < 1e-5);
         CHECK(d.session.message().rfind("PICKED " + probe.component + " PATCH ", 0) == 0);
+        CHECK(logContains(d.session, "picked " + probe.component + " PATCH " +
+                                         std::to_string(c.patches.find(probe.u, probe.w)->number) +
+                                         " AT U = "));
     }
     // Outside the aircraft: nothing.
     d.run({"pick 5 5"});
     CHECK(d.session.message().rfind("PICKED right_htail", 0) == 0);  // unchanged: the last pick's message
+}
+
+}  // namespace
+
+TEST_CASE("picking the screen position of a known surface point returns its component, patch and (u, w)") {
+    Driver d("pick");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN"});
+    pickKnownPoints(d);
+}
+
+TEST_CASE("picking in the WIREFRAME view: inside a patch (EMPTY interior) gives its (u, w) and point") {
+    Driver d("pick_wireframe");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice WIREFRAME", "choice RETURN"});
+    REQUIRE_FALSE(d.session.style().shaded);
+    pickKnownPoints(d);
+    // DEFINE POINT in the wireframe: the component, then the patch under the same point.
+    const auto& wing = d.session.models()
+                           .current()
+                           .components[std::size_t(session_test::componentIndex(d.session, "right_wing"))];
+    const glm::dvec3 p = geom::evaluate(wing.surface, 0.5, 0.38);
+    d.run({"choice CURVE_MAP", "choice DEFINE_POINT"});
+    d.pickAt(p, 1);
+    CHECK(d.session.message() == "SELECT REFERENCE PATCH TO MAP");
+    d.pickAt(p, 1);
+    CHECK(d.session.message() == "ACCEPT OR REJECT PATCH");
+    d.run({"choice ACCEPT"});
+    REQUIRE(d.session.reference());
+    CHECK(d.session.reference()->patch == wing.patches.find(0.5, 0.38)->number);
+    CHECK_FALSE(d.logHasError());
 }
 
 TEST_CASE("bad input: a wrong section count, a curve that does not close, an unknown menu choice") {

@@ -1,8 +1,11 @@
 #include "phigs/hardcopy/MeshOutline.h"
 
+#include "phigs/render/MeshEdges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace phigs::hardcopy {
 namespace {
@@ -44,9 +47,20 @@ bool onLine(const std::vector<double>& lines, double a, double b, double toleran
 
 }  // namespace
 
-std::vector<MeshEdge> uniqueEdges(const MeshData& mesh) {
+std::vector<MeshEdge> facetEdges(const MeshData& mesh, const std::vector<int>& facing, int side) {
+    const std::vector<std::uint8_t> masks = render::meshFacetEdges(mesh);
+    const auto count = std::uint32_t(mesh.positions.size());
+    std::unordered_set<std::uint64_t> seen;
     std::vector<MeshEdge> out;
-    for (const auto& [edge, triangles] : edgeTriangles(mesh)) out.push_back(edge);
+    for (std::size_t t = 0; t < masks.size(); ++t) {
+        // Edge on (facing 0) shows the front, as the raster and the picker take it.
+        if (side != 0 && ((t < facing.size() ? facing[t] : 0) >= 0 ? 1 : -1) != side) continue;
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = mesh.triangles[3 * t + e], b = mesh.triangles[3 * t + (e + 1) % 3];
+            if ((masks[t] >> e & 1) && a < count && b < count && a != b && seen.insert(edgeKey(a, b)).second)
+                out.push_back({std::min(a, b), std::max(a, b)});
+        }
+    }
     return out;
 }
 

@@ -31,15 +31,27 @@ void MeshProjector::project() {
         outline();
         isoLines();
     } else {
-        // A HOLLOW front draws the edges; each side fills by its own style (as the raster does).
-        if (in.style == InteriorStyle::Hollow)
-            edgeLines(chainEdges(uniqueEdges(data_)), in.colour, LineType::Solid, 1.0f);
+        // Each side by its own style, as the raster draws it: a HOLLOW one outlines the facets
+        // showing it, a filled one fills them.
+        hollowEdges();
         if (in.fillsFrontFaces() || in.fillsBackFaces()) facets(false);
         isoLines();
     }
     // Mesh edges are solid, as the raster draws them.
     if (mesh_.edges->visible)
-        edgeLines(chainEdges(uniqueEdges(data_)), mesh_.edges->colour, LineType::Solid, mesh_.edges->width);
+        edgeLines(chainEdges(facetEdges(data_)), mesh_.edges->colour, LineType::Solid, mesh_.edges->width);
+}
+
+void MeshProjector::hollowEdges() {
+    const InteriorStyleSet& in = mesh_.interior;
+    glm::vec3 colour;
+    if (render::hollowOutline(in, 0, colour)) {
+        edgeLines(chainEdges(facetEdges(data_)), colour, LineType::Solid, 1.0f);
+        return;
+    }
+    for (const int side : {1, -1})
+        if (render::hollowOutline(in, side, colour))
+            edgeLines(chainEdges(facetEdges(data_, facing_, side)), colour, LineType::Solid, 1.0f);
 }
 
 void MeshProjector::facets(bool coverOnly) {

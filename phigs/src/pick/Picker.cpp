@@ -4,6 +4,7 @@
 
 #include "geom/SurfaceIntersector.h"
 #include "phigs/render/ItemGeometry.h"
+#include "phigs/render/MeshEdges.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -202,9 +203,34 @@ std::optional<double> fillAreaHit(const Aperture& ap, const DrawItem& item, cons
     return regionHit(ap, contours, interior, outline || f.edges->visible);
 }
 
-/// Nearest triangle of a mesh overlapping the aperture.
+/// What a mesh shows each side of its triangles as, by side (0 back, 1 front; an edge-on triangle
+/// counts as front, as the renderers draw it): filled (SOLID, HATCH, PATTERN, not culled), outlined
+/// (a HOLLOW side, render::hollowOutline, as drawn) or neither; edges show either way. A NURBS
+/// surface's EMPTY side counts as filled: PHIGS keeps an EMPTY interior detectable, and a wireframe
+/// picks points inside a surface's patches, with their (u, v).
+struct MeshSides {
+    bool filled[2] = {false, false};
+    bool outlined[2] = {false, false};
+
+    MeshSides(const InteriorStyleSet& in, bool edges, bool surface) {
+        filled[1] = in.fillsFrontFaces() ||
+                    (surface && in.style == InteriorStyle::Empty && in.cull != CullMode::FrontFaces);
+        filled[0] = in.fillsBackFaces() ||
+                    (surface && in.styleOf(true) == InteriorStyle::Empty && in.cull != CullMode::BackFaces);
+        glm::vec3 colour;
+        const bool alike = render::hollowOutline(in, 0, colour);
+        outlined[1] = edges || alike || render::hollowOutline(in, 1, colour);
+        outlined[0] = edges || alike || render::hollowOutline(in, -1, colour);
+    }
+    bool anyOutline() const { return outlined[0] || outlined[1]; }
+};
+
+/// Nearest triangle of a mesh under the aperture, each by the side it shows (its NPC winding): a
+/// filled side anywhere it overlaps the aperture, an outlined one by its facet edges (`facetEdges`,
+/// render::meshFacetEdges), the others not at all; `filledToo` false leaves filled sides out.
 std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& pts,
-                              const std::vector<std::uint32_t>& triangles) {
+                              const std::vector<std::uint32_t>& triangles, const MeshSides& sides,
+                              const std::vector<std::uint8_t>& facetEdges, bool filledToo = true) {
     std::optional<double> best;
     for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
         const Projected& a = pts[triangles[t]];
@@ -217,19 +243,29 @@ std::optional<double> meshHit(const Aperture& ap, const std::vector<Projected>& 
         if (std::max({a.npc.x, b.npc.x, c.npc.x}) < x0 || std::min({a.npc.x, b.npc.x, c.npc.x}) > x1 ||
             std::max({a.npc.y, b.npc.y, c.npc.y}) < y0 || std::min({a.npc.y, b.npc.y, c.npc.y}) > y1)
             continue;
-        // Barycentric coordinates of the centre.
+        // Barycentric coordinates of the centre; den is twice the signed area (> 0: the front).
         const glm::dvec2 v0(b.npc - a.npc), v1(c.npc - a.npc), v2(ap.centre - glm::dvec2(a.npc));
         const double den = v0.x * v1.y - v1.x * v0.y;
+        const int side = den >= 0.0 ? 1 : 0;
+        const bool filled = filledToo && sides.filled[side];
+        if (!filled && !sides.outlined[side]) continue;
         std::optional<double> z;
-        if (den != 0.0) {
+        if (filled && den != 0.0) {
             const double s = (v2.x * v1.y - v1.x * v2.y) / den;
             const double r = (v0.x * v2.y - v2.x * v0.y) / den;
             if (s >= 0 && r >= 0 && s + r <= 1)
                 z = a.npc.z + s * (b.npc.z - a.npc.z) + r * (c.npc.z - a.npc.z);
         }
         if (!z) {
-            for (const auto& [p, q] : {std::pair{&a, &b}, std::pair{&b, &c}, std::pair{&c, &a}})
-                if (const auto e = segmentHit(ap, p->npc, q->npc); e && (!z || *e > *z)) z = e;
+            // A filled side overlapping the aperture meets it with an edge, diagonals too; an
+            // outline is its facet edges only.
+            const std::uint8_t edges = filled ? 7 : t / 3 < facetEdges.size() ? facetEdges[t / 3] : 7;
+            const Projected* corner[3] = {&a, &b, &c};
+            for (int e = 0; e < 3; ++e)
+                if (edges >> e & 1)
+                    if (const auto h = segmentHit(ap, corner[e]->npc, corner[(e + 1) % 3]->npc);
+                        h && (!z || *h > *z))
+                        z = h;
         }
         if (z && (!best || *z > *best)) best = z;
     }
@@ -244,6 +280,22 @@ bool insideClip(const DrawView& view, const glm::dvec3& npc) {
     if (view.clipBack && npc.z < view.clipMin.z - eps) return false;
     if (view.clipFront && npc.z > view.clipMax.z + eps) return false;
     return true;
+}
+
+/// Whether the box lo..hi (modelling coordinates) may meet the aperture once projected by `m`:
+/// false only when all its corners project and their NPC box misses the aperture.
+bool boxNearAperture(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dmat4& m, const Aperture& ap) {
+    glm::dvec2 min(std::numeric_limits<double>::max()), max(std::numeric_limits<double>::lowest());
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                           (corner & 4) ? hi.z : lo.z);
+        const Projected q = project(m, c);
+        if (!q.valid) return true;
+        min = glm::min(min, glm::dvec2(q.npc));
+        max = glm::max(max, glm::dvec2(q.npc));
+    }
+    return !(ap.centre.x + ap.half < min.x || ap.centre.x - ap.half > max.x ||
+             ap.centre.y + ap.half < min.y || ap.centre.y - ap.half > max.y);
 }
 
 template <typename Points>
@@ -301,8 +353,10 @@ void Picker::prune(const DrawList& list) const {
 const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshData>& mesh) const {
     auto it = bounds_.find(mesh.get());
     if (it != bounds_.end()) return it->second;
-    CachedBounds b{mesh, glm::dvec3(std::numeric_limits<double>::max()),
-                   glm::dvec3(std::numeric_limits<double>::lowest())};
+    CachedBounds b{mesh,
+                   glm::dvec3(std::numeric_limits<double>::max()),
+                   glm::dvec3(std::numeric_limits<double>::lowest()),
+                   {}};
     for (const glm::vec3& p : mesh->positions) {
         b.min = glm::min(b.min, glm::dvec3(p));
         b.max = glm::max(b.max, glm::dvec3(p));
@@ -310,10 +364,20 @@ const Picker::CachedBounds& Picker::boundsOf(const std::shared_ptr<const MeshDat
     return bounds_.emplace(mesh.get(), std::move(b)).first->second;
 }
 
+const std::vector<std::uint8_t>& Picker::facetEdgesOf(const std::shared_ptr<const MeshData>& mesh) const {
+    boundsOf(mesh);
+    CachedBounds& b = bounds_.find(mesh.get())->second;
+    if (b.facetEdges.size() != mesh->triangles.size() / 3) b.facetEdges = render::meshFacetEdges(*mesh);
+    return b.facetEdges;
+}
+
 std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView& view,
                                            const std::shared_ptr<const geom::Surface>& surface,
-                                           glm::dvec2 npc, const glm::dmat4& m, const glm::dmat4& inverse,
+                                           const InteriorStyleSet& interior, glm::dvec2 npc,
+                                           const glm::dmat4& m, const glm::dmat4& inverse,
                                            const PickItemBounds* bounds) const {
+    const MeshSides sides(interior, false, true);
+    if (!sides.filled[0] && !sides.filled[1]) return std::nullopt;
     const glm::dvec4 front = inverse * glm::dvec4(npc, 1.0, 1.0);
     const glm::dvec4 back = inverse * glm::dvec4(npc, 0.0, 1.0);
     if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
@@ -331,10 +395,16 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
                  .emplace(surface.get(),
                           CachedSurface{surface, std::make_unique<geom::SurfaceIntersector>(*surface)})
                  .first;
+    const glm::dvec4 viewer = render::meshViewer(m);
     for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
         const Projected p = project(m, h.point);
         if (!p.valid || !insideClip(view, p.npc) || !insideModelClip(item, toWorld(item, h.point))) continue;
-        SurfacePickDetail detail{h.point, geom::normal(*surface, h.uv.x, h.uv.y), h.uv, h.piece};
+        // The side shown there (the tangent plane against the viewer, as the triangles are drawn;
+        // edge on is the front): a HOLLOW or culled one lets the line on through to the next hit.
+        const glm::dvec3 normal = geom::normal(*surface, h.uv.x, h.uv.y);
+        const double s = glm::dot(normal, glm::dvec3(viewer)) - viewer.w * glm::dot(normal, h.point);
+        if (!sides.filled[s >= 0.0 ? 1 : 0]) continue;
+        SurfacePickDetail detail{h.point, normal, h.uv, h.piece};
         return PickHit{0, p.npc.z, detail};
     }
     return std::nullopt;
@@ -399,34 +469,38 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 }
                 z = regionHit(ap, box, true, true);
             } else if constexpr (std::is_same_v<T, DrawMesh>) {
-                if (p.surface && surfaceTest == SurfaceTest::Exact) {
-                    hit = testSurface(item, view, p.surface, npc, m,
+                // Each triangle by the side it shows; a surface's filled sides exactly, its outlines
+                // (HOLLOW sides, edges) and iso-lines by the tessellation. An exact hit keeps its
+                // (u, v): a nearer outline or iso-line only brings the hit's depth forward.
+                const MeshSides sides(*p.interior, p.edges->visible, p.surface != nullptr);
+                const bool exact = p.surface && surfaceTest == SurfaceTest::Exact;
+                const bool lines = sides.anyOutline() || (p.mesh && !p.mesh->isoLines.empty());
+                if (exact) {
+                    hit = testSurface(item, view, p.surface, *p.interior, npc, m,
                                       bounds ? bounds->fromNpc : glm::inverse(m), bounds);
-                    return;
+                    if (!lines) return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {
                     // Reject by the projected box first: most meshes lie far from the aperture.
                     const CachedBounds& b = boundsOf(p.mesh);
-                    glm::dvec2 lo(std::numeric_limits<double>::max()),
-                        hi(std::numeric_limits<double>::lowest());
-                    bool allValid = true;
-                    for (int corner = 0; corner < 8; ++corner) {
-                        const glm::dvec3 c((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                                           (corner & 4) ? b.max.z : b.min.z);
-                        const Projected q = project(m, c);
-                        allValid = allValid && q.valid;
-                        lo = glm::min(lo, glm::dvec2(q.npc));
-                        hi = glm::max(hi, glm::dvec2(q.npc));
-                    }
-                    if (allValid && (npc.x + aperture < lo.x || npc.x - aperture > hi.x ||
-                                     npc.y + aperture < lo.y || npc.y - aperture > hi.y))
-                        return;
+                    if (!boxNearAperture(b.min, b.max, m, ap)) return;
                     const auto projected = projectAll(m, p.mesh->positions);
-                    z = meshHit(ap, projected, p.mesh->triangles);
+                    const std::vector<std::uint8_t> none;
+                    if (!exact || sides.anyOutline())
+                        z = meshHit(ap, projected, p.mesh->triangles, sides,
+                                    sides.anyOutline() ? facetEdgesOf(p.mesh) : none, !exact);
+                    // Iso-lines are the tessellation's: in the exact pass they only bring the
+                    // surface's own exact hit forward, else a nearer iso-line of a patch beside
+                    // would win over the exact hit under the centre, without (u, v).
                     for (const auto& line : p.mesh->isoLines) {
+                        if (exact && !hit) break;
                         std::vector<Projected> pts;
                         for (std::uint32_t i : line) pts.push_back(projected[i]);
                         if (const auto e = polylineHit(ap, pts, false); e && (!z || *e > *z)) z = e;
+                    }
+                    if (exact && z && hit) {
+                        hit->depth = std::max(hit->depth, *z);
+                        return;
                     }
                 }
             } else {

@@ -4,6 +4,7 @@
 #include "phigs/core/TransformUtilities.h"
 #include "phigs/render/LinePattern.h"
 #include "phigs/render/MarkerShape.h"
+#include "phigs/render/MeshEdges.h"
 #include "phigs/render/StrokeFont.h"
 #include "phigs/render/Triangulation.h"
 
@@ -387,12 +388,13 @@ MeshIndices meshIndices(const MeshData& mesh) {
         copy += static_cast<std::uint32_t>(line.size());
     }
     out.isoLineCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount;
+    const std::vector<std::uint8_t> masks = meshFacetEdges(mesh);
     std::unordered_set<std::uint64_t> seen;
-    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3)
+    for (std::size_t t = 0; t < masks.size(); ++t)
         for (int e = 0; e < 3; ++e) {
-            std::uint32_t a = mesh.triangles[t + e], b = mesh.triangles[t + (e + 1) % 3];
+            std::uint32_t a = mesh.triangles[3 * t + e], b = mesh.triangles[3 * t + (e + 1) % 3];
             if (a > b) std::swap(a, b);
-            if (seen.insert((std::uint64_t(a) << 32) | b).second)
+            if ((masks[t] >> e & 1) && seen.insert((std::uint64_t(a) << 32) | b).second)
                 out.indices.insert(out.indices.end(), {a, b});
         }
     out.edgeCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount - out.isoLineCount;
@@ -409,14 +411,15 @@ std::vector<RenderVertex> meshVertices(const MeshData& mesh) {
         if (i < mesh.normals.size()) v[i].normal = mesh.normals[i];
         if (i < mesh.colours.size()) v[i].colour = mesh.colours[i];
     }
+    const std::size_t count = v.size();
     // The iso-lines' own vertices, in meshIndices' order: `pattern` is the length along the line in
     // modelling coordinates; the fragment shader turns it into pixels by its screen derivative, so
     // the mesh buffer need not change with the view.
     for (const auto& line : mesh.isoLines) {
         float length = 0.0f;
         for (std::size_t i = 0; i < line.size(); ++i) {
-            RenderVertex r = line[i] < v.size() ? v[line[i]] : RenderVertex{};
-            if (i > 0 && line[i] < v.size() && line[i - 1] < v.size())
+            RenderVertex r = line[i] < count ? v[line[i]] : RenderVertex{};
+            if (i > 0 && line[i] < count && line[i - 1] < count)
                 length += glm::distance(v[line[i]].position, v[line[i - 1]].position);
             r.pattern = length;
             v.push_back(r);

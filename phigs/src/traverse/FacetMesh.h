@@ -1,7 +1,7 @@
 #pragma once
 
 // Private: triangle strips and quadrilateral meshes with facet data as draw meshes. Facet data is
-// expanded to the triangles' corners, so the renderers draw it through their vertex data.
+// expanded to the facets' corners, so the renderers draw it through their vertex data.
 
 #include "phigs/traverse/DrawList.h"
 
@@ -24,10 +24,14 @@ struct FacetMeshInput {
 
 /// The mesh of `in` under the PHIGS PLUS precedence: vertex colours over facet colours over the
 /// interior colour (mesh colours left empty), vertex normals over facet normals. When facet data
-/// is used each triangle gets corners of its own carrying it (flat per facet), and a triangle
+/// is used each facet gets corners of its own carrying it (flat per facet), and a triangle
 /// whose winding disagrees with its facet normal is turned, so the facet normal decides its
 /// front (lighting and culling). Without facet data in use the points are shared.
 MeshData facetMesh(const FacetMeshInput& in);
+
+/// Sets the mesh's facets (MeshData::trianglesPerFacet, facetEnds) from the facet of each of its
+/// triangles, whose equal neighbours make one facet.
+void setFacets(MeshData& mesh, const std::vector<std::uint32_t>& facetOf);
 
 /// The triangles of a strip of `points` points: triangle k is k, k + 1, k + 2, every other one
 /// turned so they all wind alike; facet k is triangle k.

@@ -1,5 +1,7 @@
 #include "Tessellation.h"
 
+#include "FacetMesh.h"
+
 #include "phigs/traverse/TessellationCache.h"
 
 #include "geom/Evaluate.h"
@@ -122,6 +124,7 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
     }
     std::vector<std::vector<glm::dvec2>> loops;
     for (const TrimLoop& loop : element.trimLoops) loops.push_back(loopPolygon(loop));
+    std::vector<std::uint32_t> cellOf;  // the grid cell (two triangles) of each triangle kept
     for (std::size_t t = 0; t + 2 < adaptive.triangles.size(); t += 3) {
         glm::dvec2 centre = (adaptive.uv[adaptive.triangles[t]] + adaptive.uv[adaptive.triangles[t + 1]] +
                              adaptive.uv[adaptive.triangles[t + 2]]) /
@@ -129,7 +132,9 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
         if (!loops.empty() && !insideTrim(loops, centre)) continue;
         mesh.triangles.insert(mesh.triangles.end(), adaptive.triangles.begin() + static_cast<long>(t),
                               adaptive.triangles.begin() + static_cast<long>(t + 3));
+        cellOf.push_back(static_cast<std::uint32_t>(t / 6));
     }
+    setFacets(mesh, cellOf);
     return mesh;
 }
 
@@ -180,6 +185,7 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
     // Untrimmed grids of one size have the same triangles: the cache shares them.
     mesh.triangles = grids && loops.empty() ? SharedIndexList::shared(grids->gridTriangles(nu, nv, cells))
                                             : SharedIndexList(cells());
+    mesh.trianglesPerFacet = 2;  // trimming keeps or drops whole cells
     if (characteristics.style == 3) {
         // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
         auto lines = [&](int count, std::uint32_t along, bool constantU) {

@@ -1148,6 +1148,7 @@ private:
                                          m.triangles.insert(m.triangles.end(), {base, base + 1, base + 2,
                                                                                 base, base + 2, base + 3});
                                      }
+                                 m.trianglesPerFacet = 2;  // a cell's diagonal is no edge
                                  TessellationCache::Entry entry;
                                  entry.mesh = std::make_shared<const MeshData>(std::move(m));
                                  return entry;

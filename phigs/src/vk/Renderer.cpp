@@ -2,6 +2,7 @@
 
 #include "GpuLayout.h"
 #include "ShaderSpecialisation.h"
+#include "phigs/render/MeshEdges.h"
 #include "phigs/render/PatternMapping.h"
 #include "phigs/traverse/WorkstationMapping.h"
 #include "shaders/Spirv.h"
@@ -48,6 +49,10 @@ constexpr std::uint64_t kIdentityModel = 1ull << 38;
 // The rendering colour model less one (0 RGB .. 3 HLS) in bits 39..40, where it changes the
 // picture: interpolated vertex colours, Gouraud or depth cueing.
 constexpr int kColourModelShift = 39;
+// A mesh's facet edges of one HOLLOW side, the front (bit 41) or the back (bit 42): the vertex
+// shader drops those whose triangle shows the other.
+constexpr std::uint64_t kSidedFront = 1ull << 41;
+constexpr std::uint64_t kSidedBack = 1ull << 42;
 
 // The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
 constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -300,6 +305,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {13, flag(kPremultipliedLights)},
         {14, flag(kIdentityModel)},
         {15, std::int32_t((key >> kColourModelShift) & 3) + 1},
+        {16, flag(kSidedFront) - flag(kSidedBack)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -453,6 +459,87 @@ Renderer::CachedMesh& Renderer::compileMesh(const std::shared_ptr<const MeshData
     return meshes_[mesh.get()] = std::move(cached);
 }
 
+void Renderer::compileSidedEdges(CachedMesh& cached) {
+    if (cached.sidedVertices) return;
+    const auto data = cached.data.lock();
+    const std::vector<render::RenderVertex> vertices = render::meshSidedEdges(*data);
+    if (vertices.empty()) return;
+    std::vector<std::uint32_t> indices(vertices.size());
+    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = std::uint32_t(i);
+    const VkDeviceSize vbytes = vertices.size() * sizeof(render::RenderVertex);
+    cached.sidedVertices =
+        std::make_unique<GpuBuffer>(context_, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
+    cached.sidedVertices->write(vertices.data(), vbytes);
+    const VkDeviceSize ibytes = indices.size() * sizeof(std::uint32_t);
+    cached.sidedIndices =
+        std::make_unique<GpuBuffer>(context_, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, frame_);
+    cached.sidedIndices->write(indices.data(), ibytes);
+    cached.sidedCount = std::uint32_t(indices.size());
+}
+
+template <typename AddPart>
+void Renderer::addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddPart& addPart) {
+    const InteriorStyleSet& s = mesh.interior;
+    const VkBuffer vertices = cached.vertices->handle(), indices = cached.indices->handle();
+    // HOLLOW sides outline their facets: all alike in one colour, else each side's facet edges
+    // only while their triangle shows that side (the vertex shader decides).
+    glm::vec3 colour;
+    const bool alike = render::hollowOutline(s, 0, colour);
+    const bool sided =
+        !alike && (render::hollowOutline(s, 1, colour) || render::hollowOutline(s, -1, colour));
+    if (sided) compileSidedEdges(cached);
+    render::GeometryPart part;
+    part.vertexNormals = cached.hasNormals;
+    part.lines = true;
+    part.role = render::PartRole::Edge;
+    if (alike && cached.counts.edgeCount) {
+        part.colour = colour;
+        part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+        part.count = cached.counts.edgeCount;
+        addPart(part, nullptr, false, vertices, indices);
+    }
+    for (const int side : {1, -1}) {
+        if (!sided || !cached.sidedCount || !render::hollowOutline(s, side, colour)) continue;
+        part.colour = colour;
+        part.side = side;
+        part.first = 0;
+        part.count = cached.sidedCount;
+        addPart(part, nullptr, false, cached.sidedVertices->handle(), cached.sidedIndices->handle());
+    }
+    part.side = 0;
+    if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
+        part.lines = false;
+        part.role = render::PartRole::Interior;
+        part.colour = s.colour;
+        part.vertexColours = cached.hasColours;
+        part.first = 0;
+        part.count = cached.counts.triangleCount;
+        addPart(part, &s, cached.hasNormals, vertices, indices);
+    }
+    if (cached.counts.isoLineCount) {
+        render::GeometryPart iso;
+        iso.lines = true;
+        iso.role = render::PartRole::IsoLine;
+        iso.colour = mesh.isoLineStyle->colour;
+        iso.lineType = mesh.isoLineStyle->type;
+        iso.lineWidth = mesh.isoLineStyle->width;
+        iso.first = cached.counts.triangleCount;
+        iso.count = cached.counts.isoLineCount;
+        iso.patternInModelUnits = true;
+        addPart(iso, nullptr, false, vertices, indices);
+    }
+    if (mesh.edges->visible && cached.counts.edgeCount) {
+        render::GeometryPart edge;
+        edge.lines = true;
+        edge.role = render::PartRole::Edge;
+        edge.colour = mesh.edges->colour;
+        edge.lineWidth = mesh.edges->width;
+        edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
+        edge.count = cached.counts.edgeCount;
+        addPart(edge, nullptr, false, vertices, indices);
+    }
+}
+
 void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     ++frameNumber_;
     frame_ = {};
@@ -601,6 +688,13 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     fragmentNeedsWorld = fragmentNeedsWorld || local;
                 }
             }
+            if (part.lines && part.side != 0 && indices) {
+                // A mesh's facet edges of one side (render::meshSidedEdges): the viewer in modelling
+                // coordinates rides where lines read no reflectance.
+                c.pipeline |= part.side > 0 ? kSidedFront : kSidedBack;
+                push.backReflectance = glm::vec4(
+                    render::meshViewer(view.mapping * view.orientation * item.modelTransform.get()));
+            }
             if (!cued) c.pipeline |= kNoDepthCue;
             if (interior && part.role == render::PartRole::Interior &&
                 (cued || part.vertexColours || (c.pipeline & kVertexLighting)))
@@ -663,48 +757,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!cached.vertices) continue;
             base.model = toFloat(item.modelTransform.get());
             base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
-            const InteriorStyleSet& s = mesh->interior;
-            render::GeometryPart part;
-            part.vertexNormals = cached.hasNormals;
-            if (s.style == InteriorStyle::Hollow && cached.counts.edgeCount) {
-                part.lines = true;
-                part.role = render::PartRole::Edge;
-                part.colour = s.colour;
-                part.first = cached.counts.triangleCount + cached.counts.isoLineCount;
-                part.count = cached.counts.edgeCount;
-                addPart(part, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
-            if ((s.fillsFrontFaces() || s.fillsBackFaces()) && cached.counts.triangleCount) {
-                part.lines = false;
-                part.role = render::PartRole::Interior;
-                part.colour = s.colour;
-                part.vertexColours = cached.hasColours;
-                part.first = 0;
-                part.count = cached.counts.triangleCount;
-                addPart(part, &s, cached.hasNormals, cached.vertices->handle(), cached.indices->handle());
-            }
-            if (cached.counts.isoLineCount) {
-                render::GeometryPart iso;
-                iso.lines = true;
-                iso.role = render::PartRole::IsoLine;
-                iso.colour = mesh->isoLineStyle->colour;
-                iso.lineType = mesh->isoLineStyle->type;
-                iso.lineWidth = mesh->isoLineStyle->width;
-                iso.first = cached.counts.triangleCount;
-                iso.count = cached.counts.isoLineCount;
-                iso.patternInModelUnits = true;
-                addPart(iso, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
-            if (mesh->edges->visible && cached.counts.edgeCount) {
-                render::GeometryPart edge;
-                edge.lines = true;
-                edge.role = render::PartRole::Edge;
-                edge.colour = mesh->edges->colour;
-                edge.lineWidth = mesh->edges->width;
-                edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
-                edge.count = cached.counts.edgeCount;
-                addPart(edge, nullptr, false, cached.vertices->handle(), cached.indices->handle());
-            }
+            addMeshParts(*mesh, cached, addPart);
             continue;
         }
 

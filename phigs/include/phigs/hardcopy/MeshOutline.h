@@ -14,8 +14,10 @@ namespace phigs::hardcopy {
 
 using MeshEdge = std::pair<std::uint32_t, std::uint32_t>;
 
-/// Every edge of the triangles once (what the raster draws for hollow meshes and mesh edges).
-std::vector<MeshEdge> uniqueEdges(const MeshData& mesh);
+/// The facets' edges (render::meshFacetEdges: no diagonals) of the triangles showing `side`
+/// (`facing[t]` as in silhouetteEdges, edge on showing the front; side 0: of every triangle),
+/// each once: what the raster draws for a mesh's HOLLOW sides and its edges.
+std::vector<MeshEdge> facetEdges(const MeshData& mesh, const std::vector<int>& facing = {}, int side = 0);
 
 /// The patch boundaries: edges whose ends lie on the same knot line of `surface` (u or v at a
 /// knot value, the domain ends included; needs the mesh's uv), and the mesh's border edges (used

@@ -17,6 +17,8 @@ public:
 
 private:
     void facets(bool coverOnly);
+    /// The outline of each HOLLOW side: the facet edges of the triangles showing it, in its colour.
+    void hollowEdges();
     void edgeLines(const std::vector<std::vector<std::uint32_t>>& chains, glm::vec3 colour, LineType type,
                    float width);
     void isoLines();

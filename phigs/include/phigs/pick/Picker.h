@@ -46,9 +46,13 @@ public:
     Picker(const Picker&) = delete;
     Picker& operator=(const Picker&) = delete;
 
-    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later. NURBS
-    /// surfaces are hit by the exact line through `npc`; their tessellations count only when
-    /// nothing is hit at all (the aperture catching a silhouette), without surface detail.
+    /// Every hit at `npc` (x, y in NPC), nearest first; ties go to the item drawn later. Meshes
+    /// are hit by the side each triangle shows (edge on: the front): a filled side over its area, a
+    /// HOLLOW one on its facet edges, an EMPTY or culled one not at all. NURBS surfaces are hit by
+    /// the exact line through `npc`, their EMPTY sides too (PHIGS keeps an EMPTY interior
+    /// detectable: a wireframe picks points inside patches), with (u, v); outlines and iso-lines
+    /// by the tessellation. Tessellations count only when nothing is hit at all exactly (the
+    /// aperture catching a silhouette), without surface detail.
     /// Marker sizes (in pixels) are measured on a surface whose pixels are device coordinates.
     std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
     /// The same on the surface `mapping` describes.
@@ -78,10 +82,12 @@ private:
     std::optional<PickHit> test(const DrawList& list, std::size_t index, glm::dvec2 npc, double aperture,
                                 const WorkstationMapping& mapping, SurfaceTest surfaceTest,
                                 const PickItemBounds* bounds = nullptr) const;
-    /// The exact line through `npc` against the surface; `toNpc`, `fromNpc`: the item's
-    /// transform to NPC and its inverse.
+    /// The exact line through `npc` against the surface: its nearest point whose side shown is
+    /// detectable (not culled, not HOLLOW); `toNpc`, `fromNpc`: the item's transform to NPC and
+    /// its inverse.
     std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
-                                       const std::shared_ptr<const geom::Surface>& surface, glm::dvec2 npc,
+                                       const std::shared_ptr<const geom::Surface>& surface,
+                                       const InteriorStyleSet& interior, glm::dvec2 npc,
                                        const glm::dmat4& toNpc, const glm::dmat4& fromNpc,
                                        const PickItemBounds* bounds) const;
     /// nearest() on the tree: candidates by their boxes' nearest depth, stopping once no box can
@@ -97,9 +103,12 @@ private:
     struct CachedBounds {
         std::shared_ptr<const MeshData> mesh;  ///< keeps the key alive
         glm::dvec3 min{0.0}, max{0.0};
+        std::vector<std::uint8_t> facetEdges;  ///< render::meshFacetEdges, once an outline needs them
     };
     /// Modelling-coordinate box of a mesh, so meshes far from the aperture cost eight projections.
     const CachedBounds& boundsOf(const std::shared_ptr<const MeshData>& mesh) const;
+    /// The mesh's render::meshFacetEdges, kept with its box.
+    const std::vector<std::uint8_t>& facetEdgesOf(const std::shared_ptr<const MeshData>& mesh) const;
     mutable std::unordered_map<const MeshData*, CachedBounds> bounds_;
     /// Drops cached entries nobody else holds any more, once per new draw list generation.
     void prune(const DrawList& list) const;

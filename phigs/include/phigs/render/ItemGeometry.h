@@ -39,7 +39,8 @@ struct GeometryPart {
     /// `pattern` is a length in modelling units (mesh iso-lines), else pixels on screen.
     bool patternInModelUnits = false;
     /// The outline of a HOLLOW side of a fill area: +1 of its front, -1 of its back (drawn only
-    /// when sideShown(sidePlane, view) says that side shows), 0 of whichever side shows.
+    /// when sideShown(sidePlane, view) says that side shows), 0 of whichever side shows. Of a mesh:
+    /// its triangles' facet edges, each drawn while its triangle shows that side (meshSidedEdges).
     int side = 0;
     glm::dvec4 sidePlane{0.0};  ///< the fill area's world plane, positive on its front side
 };
@@ -56,12 +57,13 @@ struct ItemGeometry {
 /// A DrawMesh item gives empty geometry (meshes are uploaded as they are, see MeshGeometry).
 ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels);
 
-/// Index lists of a mesh: triangles, then iso-lines and triangle edges as line-list pairs.
+/// Index lists of a mesh: triangles, then iso-lines and the facets' edges (render/MeshEdges.h: no
+/// diagonals) as line-list pairs.
 struct MeshIndices {
     std::vector<std::uint32_t> indices;
     std::uint32_t triangleCount = 0;  ///< index count of the triangles (first)
     std::uint32_t isoLineCount = 0;   ///< index count of the iso-line pairs (next)
-    std::uint32_t edgeCount = 0;      ///< index count of the unique triangle edges (last)
+    std::uint32_t edgeCount = 0;      ///< index count of the facets' edges, each once (last)
 };
 MeshIndices meshIndices(const MeshData& mesh);
 /// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero), then a

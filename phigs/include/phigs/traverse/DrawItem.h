@@ -76,6 +76,12 @@ struct MeshData {
     SharedIndexList triangles;         ///< three indices per triangle, counter-clockwise = front
     std::vector<std::vector<std::uint32_t>>
         isoLines;  ///< polylines through positions (iso-parametric curves)
+    /// The primitive's facets (a strip's triangle, a quadrilateral, a surface's grid cell) as runs
+    /// of consecutive triangles: an edge two triangles of one facet share (a diagonal) is no edge
+    /// of the primitive. facetEnds: each facet's end (one past its last triangle), ascending;
+    /// empty: facets of trianglesPerFacet triangles each.
+    std::uint32_t trianglesPerFacet = 1;
+    std::vector<std::uint32_t> facetEnds;
 };
 
 /// A mesh with its attributes; `surface` is set for NURBS surfaces so picking can intersect the

@@ -65,6 +65,10 @@ private:
         std::unique_ptr<GpuBuffer> indices;
         render::MeshIndices counts;
         bool hasNormals = false, hasColours = false;
+        /// Each triangle's facet edges with its plane (render::meshSidedEdges), made when a
+        /// HOLLOW side first needs them, and their indices (0, 1, 2, ...).
+        std::unique_ptr<GpuBuffer> sidedVertices, sidedIndices;
+        std::uint32_t sidedCount = 0;
         std::uint64_t lastUsed = 0;
     };
     struct Command {
@@ -121,6 +125,12 @@ private:
     /// plane sets share one run.
     glm::vec2 clipPlaneRange(const DrawItem& item, std::size_t index);
     CachedMesh& compileMesh(const std::shared_ptr<const MeshData>& mesh);
+    /// Makes the mesh's sided edge buffers once (CachedMesh::sidedVertices).
+    void compileSidedEdges(CachedMesh& cached);
+    /// Hands a mesh's parts to prepare's `addPart` (part, interior, mesh normals, vertex and index
+    /// buffers): its HOLLOW sides' outlines, filled interior, iso-lines and edges.
+    template <typename AddPart>
+    void addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddPart& addPart);
     void release();
 
     Context& context_;
