@@ -106,3 +106,27 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
               })));
     }
 }
+
+TEST_CASE("item refs: a copy of a view owns its value, a copy of a permanent view shares it", "[traverse]") {
+    glm::dmat4 record(2.0);
+    const auto view = ItemRef<glm::dmat4>::view(&record);
+    const ItemRef<glm::dmat4> copied = view;
+    CHECK(copied.owned());
+    CHECK(!copied.sameRecord(view));
+    CHECK(copied.get() == record);
+
+    const auto permanent = ItemRef<glm::dmat4>::permanent(&record);
+    ItemRef<glm::dmat4> shared = permanent;
+    CHECK(!shared.owned());
+    CHECK(shared.sameRecord(permanent));
+    shared.edit()[0][0] = 5.0;  // an edit makes a copy of its own first
+    CHECK(shared.owned());
+    CHECK(record[0][0] == 2.0);
+
+    // Default items copy without allocating: their transform and source stay shared.
+    const DrawItem item;
+    const DrawItem copy = item;  // NOLINT: the copy is what is tested
+    CHECK(!copy.modelTransform.owned());
+    CHECK(copy.modelTransform.sameRecord(item.modelTransform));
+    CHECK(!copy.source.owned());
+}

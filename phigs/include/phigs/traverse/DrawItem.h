@@ -175,7 +175,7 @@ inline const glm::dmat4& identityTransform() {
 struct DrawItem {
     DrawPrimitive primitive;
     /// Composite modelling transform (global * local), to world.
-    ItemRef<glm::dmat4> modelTransform = ItemRef<glm::dmat4>::view(&identityTransform());
+    ItemRef<glm::dmat4> modelTransform = ItemRef<glm::dmat4>::permanent(&identityTransform());
     std::int32_t viewIndex = 0;  ///< index into DrawList::views
     std::int32_t lightSet = -1;  ///< index into DrawList::lightSets, -1: no lights
     std::int32_t depthCue = -1;  ///< index into DrawList::depthCues, -1: none
