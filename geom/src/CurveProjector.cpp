@@ -28,7 +28,7 @@ struct Segment {
 };
 
 /// Segments are halved at most this often: below it a Newton basin is smaller than a segment.
-constexpr int kMaxDepth = 10;
+constexpr int kMaxSegmentDepth = 10;
 
 }  // namespace
 
@@ -206,7 +206,7 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
             take(polishOnPiece(segment.piece, p, start), segment.piece);
             if (segment.depth == 0) take(polishOnPiece(segment.piece, p, 0.5 * (ua + ub)), segment.piece);
         }
-        if (segment.depth < kMaxDepth && bound < best.distance - tolerance) split(segment);
+        if (segment.depth < kMaxSegmentDepth && bound < best.distance - tolerance) split(segment);
     }
     return best;
 }

@@ -33,17 +33,17 @@ int polynomialGradientSign(const std::vector<glm::dvec3>& c, std::size_t pu, std
 }
 
 /// A closed interval of reals, for bounding a rational piece's derivative.
-struct Interval {
+struct ValueRange {
     double lo, hi;
 };
-Interval operator*(Interval a, Interval b) {
+ValueRange operator*(ValueRange a, ValueRange b) {
     const double x = a.lo * b.lo, y = a.lo * b.hi, z = a.hi * b.lo, w = a.hi * b.hi;
     return {std::min({x, y, z, w}), std::max({x, y, z, w})};
 }
-Interval operator-(Interval a, Interval b) {
+ValueRange operator-(ValueRange a, ValueRange b) {
     return {a.lo - b.hi, a.hi - b.lo};
 }
-Interval operator+(Interval a, Interval b) {
+ValueRange operator+(ValueRange a, ValueRange b) {
     return {a.lo + b.lo, a.hi + b.hi};
 }
 
@@ -58,7 +58,7 @@ int rationalGradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, 
         return glm::dvec4(glm::dvec3(x) - origin * x.w, x.w);
     };
     const double inf = std::numeric_limits<double>::infinity();
-    Interval x[4], dx[4];
+    ValueRange x[4], dx[4];
     for (int m = 0; m < 4; ++m) x[m] = dx[m] = {inf, -inf};
     for (std::size_t i = 0; i < lines; ++i)
         for (std::size_t k = 0; k < across; ++k) {
@@ -69,36 +69,36 @@ int rationalGradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, 
                 if (i + 1 < lines) dx[m] = {std::min(dx[m].lo, d[m]), std::max(dx[m].hi, d[m])};
             }
         }
-    Interval g{0.0, 0.0};
+    ValueRange g{0.0, 0.0};
     for (int m = 0; m < 3; ++m) {
         // The sign of S_u is that of X_u w - X w_u (w > 0); scale does not matter.
-        const Interval derivative = dx[m] * x[3] - x[m] * dx[3];
+        const ValueRange derivative = dx[m] * x[3] - x[m] * dx[3];
         double lo = inf, hi = -inf;
         for (const glm::dvec3& q : c) {
             lo = std::min(lo, q[m] - p[m]);
             hi = std::max(hi, q[m] - p[m]);
         }
-        g = g + derivative * Interval{lo, hi};
+        g = g + derivative * ValueRange{lo, hi};
     }
     return g.lo > 0.0 ? 1 : (g.hi < 0.0 ? -1 : 0);
 }
 
-Interval operator/(Interval a, Interval positive) {
-    return a * Interval{1.0 / positive.hi, 1.0 / positive.lo};
+ValueRange operator/(ValueRange a, ValueRange positive) {
+    return a * ValueRange{1.0 / positive.hi, 1.0 / positive.lo};
 }
-Interval operator*(double k, Interval a) {
-    return k >= 0.0 ? Interval{k * a.lo, k * a.hi} : Interval{k * a.hi, k * a.lo};
+ValueRange operator*(double k, ValueRange a) {
+    return k >= 0.0 ? ValueRange{k * a.lo, k * a.hi} : ValueRange{k * a.hi, k * a.lo};
 }
-Interval square(Interval a) {
+ValueRange square(ValueRange a) {
     const double lo = a.lo > 0.0 ? a.lo * a.lo : (a.hi < 0.0 ? a.hi * a.hi : 0.0);
     return {lo, std::max(a.lo * a.lo, a.hi * a.hi)};
 }
 
 /// The range of each homogeneous coordinate of a net's (i, j) -> value(i, j) over the net.
 template <class F>
-std::array<Interval, 4> range(std::size_t rows, std::size_t columns, F&& value) {
+std::array<ValueRange, 4> range(std::size_t rows, std::size_t columns, F&& value) {
     const double inf = std::numeric_limits<double>::infinity();
-    std::array<Interval, 4> r;
+    std::array<ValueRange, 4> r;
     r.fill({inf, -inf});
     if (rows == 0 || columns == 0) r.fill({0.0, 0.0});
     for (std::size_t i = 0; i < rows; ++i)
@@ -179,20 +179,20 @@ bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::
     const auto xuv = range(pu - 1, qv - 1, [&](std::size_t i, std::size_t j) {
         return nu * nv * (at(i + 1, j + 1) - at(i + 1, j) - at(i, j + 1) + at(i, j));
     });
-    const Interval w = x[3];
+    const ValueRange w = x[3];
     if (!(w.lo > 0.0)) return false;
-    Interval huu{0.0, 0.0}, huv{0.0, 0.0}, hvv{0.0, 0.0};
+    ValueRange huu{0.0, 0.0}, huv{0.0, 0.0}, hvv{0.0, 0.0};
     for (int m = 0; m < 3; ++m) {
         const double inf = std::numeric_limits<double>::infinity();
-        Interval point{inf, -inf};
+        ValueRange point{inf, -inf};
         for (const glm::dvec3& q : c)
             point = {std::min(point.lo, q[m] - origin[m]), std::max(point.hi, q[m] - origin[m])};
-        const Interval su = (xu[m] - xu[3] * point) / w;
-        const Interval sv = (xv[m] - xv[3] * point) / w;
-        const Interval suu = (xuu[m] - 2.0 * (xu[3] * su) - xuu[3] * point) / w;
-        const Interval svv = (xvv[m] - 2.0 * (xv[3] * sv) - xvv[3] * point) / w;
-        const Interval suv = (xuv[m] - xu[3] * sv - xv[3] * su - xuv[3] * point) / w;
-        const Interval r{point.lo - (p[m] - origin[m]), point.hi - (p[m] - origin[m])};
+        const ValueRange su = (xu[m] - xu[3] * point) / w;
+        const ValueRange sv = (xv[m] - xv[3] * point) / w;
+        const ValueRange suu = (xuu[m] - 2.0 * (xu[3] * su) - xuu[3] * point) / w;
+        const ValueRange svv = (xvv[m] - 2.0 * (xv[3] * sv) - xvv[3] * point) / w;
+        const ValueRange suv = (xuv[m] - xu[3] * sv - xv[3] * su - xuv[3] * point) / w;
+        const ValueRange r{point.lo - (p[m] - origin[m]), point.hi - (p[m] - origin[m])};
         huu = huu + square(su) + r * suu;
         hvv = hvv + square(sv) + r * svv;
         huv = huv + su * sv + r * suv;

@@ -13,7 +13,7 @@
 namespace geom {
 namespace {
 
-constexpr int kMaxDepth = 40;
+constexpr int kMaxSubdivisionDepth = 40;
 constexpr std::size_t kNodeBudget = 3000;
 
 /// G(s, t) = sum B_i(s) B_j(t) c_ij of a 2D Bézier patch with its first partials.
@@ -82,10 +82,10 @@ bool excludedAcross(const glm::dvec2* c, std::size_t size, const glm::dvec2& axi
     return allAbove || allBelow;
 }
 
-struct Interval {
+struct SpanBounds {
     double lo, hi;
 };
-Interval mul(Interval a, Interval b) {
+SpanBounds mul(SpanBounds a, SpanBounds b) {
     const double x1 = a.lo * b.lo, x2 = a.lo * b.hi, x3 = a.hi * b.lo, x4 = a.hi * b.hi;
     return {std::min(std::min(x1, x2), std::min(x3, x4)), std::max(std::max(x1, x2), std::max(x3, x4))};
 }
@@ -94,7 +94,7 @@ Interval mul(Interval a, Interval b) {
 /// derivative nets): then the projected map is locally one-to-one and Newton finds its root.
 bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
     if (pu < 2 || qv < 2) return false;
-    Interval sx{1e300, -1e300}, sy{1e300, -1e300}, tx{1e300, -1e300}, ty{1e300, -1e300};
+    SpanBounds sx{1e300, -1e300}, sy{1e300, -1e300}, tx{1e300, -1e300}, ty{1e300, -1e300};
     for (std::size_t i = 0; i + 1 < pu; ++i)
         for (std::size_t j = 0; j < qv; ++j) {
             const glm::dvec2 d = c[(i + 1) * qv + j] - c[i * qv + j];
@@ -107,7 +107,7 @@ bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
             tx = {std::min(tx.lo, d.x), std::max(tx.hi, d.x)};
             ty = {std::min(ty.lo, d.y), std::max(ty.hi, d.y)};
         }
-    const Interval a = mul(sx, ty), b = mul(sy, tx);
+    const SpanBounds a = mul(sx, ty), b = mul(sy, tx);
     const double lo = a.lo - b.hi, hi = a.hi - b.lo;
     return lo > 0.0 || hi < 0.0;
 }
@@ -230,7 +230,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
 
         ++visited;
         const bool unique = jacobianKeepsSign(c, pu, qv);
-        const bool last = sub.depth >= kMaxDepth || visited > kNodeBudget;
+        const bool last = sub.depth >= kMaxSubdivisionDepth || visited > kNodeBudget;
         // A root on the sub-patch's edge is found from the patches on both sides; a small margin
         // lets Newton reach it, and the merge in intersect() keeps one.
         const double ms = 1e-6 * (sub.s1 - sub.s0), mt = 1e-6 * (sub.t1 - sub.t0);

@@ -13,7 +13,6 @@ namespace {
 
 using namespace phigs;
 
-constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation
 constexpr Pint kTrueColours = 1 << 24;
 
 int checkedMethod(Pint method, const char* name) {
@@ -136,7 +135,9 @@ void pinq_pred_colr_map_rep(Pint ws_type, Pint index, Pstore store, Pint* err, P
         if (index < 0) throw Error(errors::ColourMappingIndexBelowZero, "inquiry");
         const ColourMappingTable initial;
         const ColourMapping* m = initial.find(index);
-        if (!m) throw Error(kNotPredefined, "inquiry", "colour mapping " + std::to_string(index));
+        if (!m)
+            throw Error(errors::RepresentationNotPredefined, "inquiry",
+                        "colour mapping " + std::to_string(index));
         answer(*m, c::storeOf(store), map_method, map_data);
     });
 }

@@ -19,12 +19,6 @@ WorkstationDescription described(Pint ws_type) {
     return c::describedType(ws_type, "inquiry");
 }
 
-std::vector<int> oneTo(int n) {
-    std::vector<int> v(static_cast<std::size_t>(std::max(n, 0)));
-    std::iota(v.begin(), v.end(), 1);
-    return v;
-}
-
 /// Answers the predefined bundle `index` (from 1) of `ws_type`'s table `table` into `rep`.
 template <class T, class Bundle>
 void answerPredefinedBundle(Pint ws_type, std::vector<T> PredefinedRepresentations::*table, Pint index,
@@ -34,10 +28,6 @@ void answerPredefinedBundle(Pint ws_type, std::vector<T> PredefinedRepresentatio
             c::predefinedEntry(c::predefinedOf(ws_type).*table, index, 1, errors::BundleIndexBelowOne);
         if (rep) *rep = c::cBundle(b);
     });
-}
-
-Pint count(std::size_t n) {
-    return static_cast<Pint>(n);
 }
 
 Pfloat real(double v) {
@@ -109,26 +99,26 @@ void pinq_dyns_structs(Pint ws_type, Pint* err, Pdyns_structs* dyns) {
 void pinq_line_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pline_facs* facs, Pint* total) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
         if (!facs) return;
         facs->num_widths = 0;
         facs->nom_width = real(d.nominalLineWidth);
         facs->min_width = real(d.minLineWidth);
         facs->max_width = real(d.maxLineWidth);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).polylines.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polylines.size());
     });
 }
 
 void pinq_marker_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pmarker_facs* facs, Pint* total) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(oneTo(d.markerTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.markerTypes), length, start, facs ? &facs->types : nullptr, total);
         if (!facs) return;
         facs->num_sizes = 0;
         facs->nom_size = real(d.nominalMarkerSize);
         facs->min_size = real(d.minMarkerSize);
         facs->max_size = real(d.maxMarkerSize);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).polymarkers.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polymarkers.size());
     });
 }
 
@@ -138,7 +128,8 @@ void pinq_text_facs(Pint ws_type, Pint length, Pint start, Pint* err, Ptext_facs
         // Every font in every precision: pair i is font i / 3 + 1 in precision i % 3.
         std::vector<int> pairs(static_cast<std::size_t>(d.textFonts) * 3);
         std::iota(pairs.begin(), pairs.end(), 0);
-        std::vector<Pint> room(static_cast<std::size_t>(std::clamp<Pint>(length, 0, count(pairs.size()))));
+        std::vector<Pint> room(
+            static_cast<std::size_t>(std::clamp<Pint>(length, 0, c::countOf(pairs.size()))));
         Pint_list positions{0, room.data()};
         c::answerList(pairs, length, start, facs ? &positions : nullptr, total);
         if (!facs) return;
@@ -152,7 +143,7 @@ void pinq_text_facs(Pint ws_type, Pint length, Pint start, Pint* err, Ptext_facs
         facs->max_char_ht = real(d.maxCharHeight);
         facs->min_char_expan = real(d.minCharExpansion);
         facs->max_char_expan = real(d.maxCharExpansion);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).texts.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).texts.size());
     });
 }
 
@@ -163,34 +154,34 @@ void pinq_int_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_facs* 
         if (!facs) return;
         facs->num_int_styles = std::min(d.interiorStyles, 5);
         for (int i = 0; i < facs->num_int_styles; ++i) facs->int_styles[i] = static_cast<Pint_style>(i);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).interiors.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).interiors.size());
     });
 }
 
 void pinq_edge_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pedge_facs* facs, Pint* total) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
         if (!facs) return;
         facs->num_widths = 0;
         facs->nom_width = real(d.nominalLineWidth);
         facs->min_width = real(d.minLineWidth);
         facs->max_width = real(d.maxLineWidth);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).edges.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).edges.size());
     });
 }
 
 void pinq_pat_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        if (num_pred_inds) *num_pred_inds = count(predefinedRepresentations(d.type).patterns.size());
+        if (num_pred_inds) *num_pred_inds = c::countOf(predefinedRepresentations(d.type).patterns.size());
     });
 }
 
 void pinq_colr_facs(Pint ws_type, Pint* err, Pcolr_facs* facs) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        if (facs) *facs = {0, PAVAIL_COLR, count(predefinedRepresentations(d.type).colours.size())};
+        if (facs) *facs = {0, PAVAIL_COLR, c::countOf(predefinedRepresentations(d.type).colours.size())};
     });
 }
 
@@ -206,7 +197,7 @@ void pinq_colr_model_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint
 void pinq_view_facs(Pint ws_type, Pint* err, Pint* num_pred_views) {
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        if (num_pred_views) *num_pred_views = count(predefinedRepresentations(d.type).views.size());
+        if (num_pred_views) *num_pred_views = c::countOf(predefinedRepresentations(d.type).views.size());
     });
 }
 

@@ -12,31 +12,14 @@
 using namespace phigs;
 using phigs::c::inquire;
 
-namespace {
-
-WorkstationDescription described(Pint ws_type) {
-    return describeWorkstationType(c::workstationTypeOf(ws_type, "inquiry"));
-}
-
-std::vector<int> oneTo(int n) {
-    std::vector<int> v(static_cast<std::size_t>(std::max(n, 0)));
-    std::iota(v.begin(), v.end(), 1);
-    return v;
-}
-
-Pint count(std::size_t n) {
-    return static_cast<Pint>(n);
-}
-
-}  // namespace
-
 extern "C" {
 
 void pinq_line_facs_plus(Pint ws_type, Pint lt_length, Pint lt_start, Pint sm_length, Pint sm_start,
                          Pint* err, Pint* tot_lt_length, Pint* tot_sm_length, Pline_facs_plus* facs) {
     inquire(err, [&](Phigs&) {
-        const WorkstationDescription d = described(ws_type);
-        c::answerList(oneTo(d.lineTypes), lt_length, lt_start, facs ? &facs->types : nullptr, tot_lt_length);
+        const WorkstationDescription d = c::describedType(ws_type, "inquiry");
+        c::answerList(c::oneTo(d.lineTypes), lt_length, lt_start, facs ? &facs->types : nullptr,
+                      tot_lt_length);
         c::answerList(d.polylineShadingMethods, sm_length, sm_start, facs ? &facs->shads : nullptr,
                       tot_sm_length);
         if (!facs) return;
@@ -44,7 +27,7 @@ void pinq_line_facs_plus(Pint ws_type, Pint lt_length, Pint lt_start, Pint sm_le
         facs->nom_width = static_cast<Pfloat>(d.nominalLineWidth);
         facs->min_width = static_cast<Pfloat>(d.minLineWidth);
         facs->max_width = static_cast<Pfloat>(d.maxLineWidth);
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).polylines.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polylines.size());
     });
 }
 
@@ -53,12 +36,12 @@ void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_len
                         Pint_facs_plus* facs, Pint* tot_is_length, Pint* tot_hs_length, Pint* tot_re_length,
                         Pint* tot_sh_length) {
     inquire(err, [&](Phigs&) {
-        const WorkstationDescription d = described(ws_type);
+        const WorkstationDescription d = c::describedType(ws_type, "inquiry");
         std::vector<int> styles(static_cast<std::size_t>(std::max(d.interiorStyles, 0)));
         std::iota(styles.begin(), styles.end(), static_cast<int>(PSTYLE_HOLLOW));
         // The styles are Pint_style: answered through a list of ints, then copied.
         std::vector<Pint> room(
-            static_cast<std::size_t>(std::clamp<Pint>(is_length, 0, count(styles.size()))));
+            static_cast<std::size_t>(std::clamp<Pint>(is_length, 0, c::countOf(styles.size()))));
         Pint_list positions{0, room.data()};
         c::answerList(styles, is_length, is_start, facs ? &positions : nullptr, tot_is_length);
         c::answerList(d.hatchStyles, hs_length, hs_start, facs ? &facs->hatch_styles : nullptr,
@@ -72,13 +55,13 @@ void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_len
         for (Pint i = 0; i < positions.num_ints; ++i)
             facs->int_styles[i] = static_cast<Pint_style>(room[static_cast<std::size_t>(i)]);
         facs->num_int_styles = positions.num_ints;
-        facs->num_pred_inds = count(predefinedRepresentations(d.type).interiors.size());
+        facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).interiors.size());
     });
 }
 
 void pinq_ws_st_table_plus(Pint ws_type, Pint* err, Pws_tables_plus* lengths) {
     inquire(err, [&](Phigs&) {
-        const WorkstationDescription d = described(ws_type);
+        const WorkstationDescription d = c::describedType(ws_type, "inquiry");
         if (!lengths) return;
         const Pint b = d.bundleTableSize;
         *lengths = {b,
@@ -97,7 +80,7 @@ void pinq_ws_st_table_plus(Pint ws_type, Pint* err, Pws_tables_plus* lengths) {
 
 void pinq_dyns_ws_attrs_plus(Pint ws_type, Pint* err, Pdyns_ws_attrs_plus* attrs) {
     inquire(err, [&](Phigs&) {
-        const Pdyn_mod m = static_cast<Pdyn_mod>(described(ws_type).attributeDynamics);
+        const Pdyn_mod m = static_cast<Pdyn_mod>(c::describedType(ws_type, "inquiry").attributeDynamics);
         if (attrs) *attrs = {m, m, m};
     });
 }

@@ -134,8 +134,6 @@ WorkstationDescription description(Pint type) {
     return c::describedType(type, "inquiry");
 }
 
-constexpr int kNotPredefined = 102;  // the representation has not been predefined on this workstation
-
 template <class Map>
 std::vector<int> keys(const Map& map) {
     std::vector<int> out;
@@ -228,7 +226,7 @@ void pinq_pred_light_src_rep(Pint ws_type, Pint index, Pint* err, Plight_src_bun
         if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry");
         const WorkstationTables initial;
         const auto found = initial.lights.find(index);
-        if (found == initial.lights.end()) throw Error(kNotPredefined, "inquiry");
+        if (found == initial.lights.end()) throw Error(errors::RepresentationNotPredefined, "inquiry");
         c::require(rep, "inquiry");
         *rep = bundle(found->second);
     });
@@ -240,7 +238,7 @@ void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) 
         if (index < 0) throw Error(errors::BundleIndexBelowOne, "inquiry");
         const WorkstationTables initial;
         const auto found = initial.depthCues.find(index);
-        if (found == initial.depthCues.end()) throw Error(kNotPredefined, "inquiry");
+        if (found == initial.depthCues.end()) throw Error(errors::RepresentationNotPredefined, "inquiry");
         c::require(rep, "inquiry");
         *rep = bundle(found->second);
     });

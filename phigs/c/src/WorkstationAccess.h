@@ -14,6 +14,10 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
 namespace phigs::c {
 
 /// The core type of a generic PWST_* number or of an open workstation's specific type: error 52
@@ -23,6 +27,18 @@ WorkstationType workstationTypeOf(Pint type, const char* function);
 /// The description table of `type`: a generic type's as built, a specific type's as its open
 /// workstation has it now (a resized window's display size); error 52 for another number.
 WorkstationDescription describedType(Pint type, const char* function);
+
+/// 1, 2, .., n (empty when n < 1): the indices of a table of n entries.
+inline std::vector<int> oneTo(int n) {
+    std::vector<int> v(static_cast<std::size_t>(std::max(n, 0)));
+    std::iota(v.begin(), v.end(), 1);
+    return v;
+}
+
+/// A count as the binding's Pint.
+inline Pint countOf(std::size_t n) {
+    return static_cast<Pint>(n);
+}
 
 /// The open workstation an inquiry asks about: errors 3 (none open), 54 (this one not open).
 Workstation& inquiredWorkstation(Phigs& p, Pint id);

@@ -10,7 +10,7 @@
 namespace phigs::hardcopy {
 namespace {
 
-constexpr int kMaxCells = 1024;
+constexpr int kMaxClusterCells = 1024;
 
 double cross(glm::dvec2 o, glm::dvec2 a, glm::dvec2 b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -81,7 +81,7 @@ std::vector<std::vector<std::size_t>> overlapClusters(const std::vector<Projecte
     std::iota(parent.begin(), parent.end(), std::size_t(0));
     if (n > 1) {
         const double epsilon = 1e-9 * std::max(1.0, glm::length(high - low));
-        const int cells = std::clamp(int(std::ceil(std::sqrt(double(n)))), 1, kMaxCells);
+        const int cells = std::clamp(int(std::ceil(std::sqrt(double(n)))), 1, kMaxClusterCells);
         const glm::dvec2 size = glm::max((high - low) / double(cells), glm::dvec2(1e-9));
         std::vector<std::vector<std::size_t>> grid(std::size_t(cells) * std::size_t(cells));
         std::vector<std::size_t> seen(n, ~std::size_t(0));

@@ -14,7 +14,7 @@ namespace {
 /// Depth bias of the raster path (Renderer: slope factor 1.5 pixels), and a floor for flat facets.
 constexpr double kSlopePixels = 1.5;
 constexpr double kMinTolerance = 1e-7;
-constexpr int kMaxCells = 512;
+constexpr int kMaxOcclusionCells = 512;
 
 /// Where f(t) = fa + t (fb - fa) >= c for t in [lo, hi]; narrows [lo, hi], false when empty.
 bool atLeast(double fa, double fb, double c, double& lo, double& hi) {
@@ -87,7 +87,7 @@ void OcclusionIndex::bin() {
     for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo()), hi = glm::max(hi, t.hi());
     // About four cells per triangle: the model covers a part of the page only, and a query then
     // meets few triangles that its cells hold but its segment misses.
-    const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxCells);
+    const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxOcclusionCells);
     columns_ = rows_ = n;
     lo_ = lo;
     cell_ = glm::max((hi - lo) / double(n), glm::dvec2(1e-9));

@@ -1,5 +1,7 @@
 #include "phigs/pick/PickBoundsTree.h"
 
+#include "phigs/core/TransformUtilities.h"
+
 #include <glm/matrix.hpp>
 
 #include <algorithm>
@@ -21,10 +23,6 @@ void grow(glm::dvec3& lo, glm::dvec3& hi, const glm::dvec3& p) {
 template <typename Points>
 void growAll(glm::dvec3& lo, glm::dvec3& hi, const Points& points) {
     for (const auto& p : points) grow(lo, hi, glm::dvec3(p));
-}
-
-bool finite(const glm::dvec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
 }  // namespace
@@ -149,7 +147,7 @@ PickItemBounds PickBoundsTree::boundsOf(const DrawList& list, const DrawItem& it
         if (!(h.w > 1e-300)) return b;
         grow(nlo, nhi, glm::dvec3(h) / h.w);
     }
-    if (!finite(nlo) || !finite(nhi)) return b;
+    if (!allFinite(nlo) || !allFinite(nhi)) return b;
     // Rounding of the projection: a hit point on the surface may land a few ulps outside.
     const glm::dvec3 pad = 1e-9 * (glm::dvec3(1.0) + glm::abs(nlo) + glm::abs(nhi) + (nhi - nlo));
     b.lo = nlo - pad;

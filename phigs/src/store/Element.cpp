@@ -1,6 +1,7 @@
 #include "phigs/store/Element.h"
 
 #include "ElementFields.h"
+#include "phigs/core/TransformUtilities.h"
 #include "phigs/store/Gdp.h"
 
 #include <glm/geometric.hpp>
@@ -130,16 +131,13 @@ bool sameCurve(const geom::Curve& a, const geom::Curve& b) {
     return a.degree == b.degree && a.knots == b.knots && a.points == b.points && a.weights == b.weights;
 }
 
-bool finite(const glm::dvec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 std::string checkPoints(std::span<const glm::dvec3> points, std::size_t minimum, const char* what) {
     if (points.size() < minimum)
         return std::string(what) + " needs at least " + std::to_string(minimum) + " points, has " +
                std::to_string(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-        if (!finite(points[i])) return std::string(what) + " point " + std::to_string(i) + " is not finite";
+        if (!allFinite(points[i]))
+            return std::string(what) + " point " + std::to_string(i) + " is not finite";
     return {};
 }
 

@@ -1,5 +1,7 @@
 #include "phigs/view/ColourMappingTable.h"
 
+#include "phigs/core/TransformUtilities.h"
+
 #include "phigs/view/WorkstationTables.h"
 
 #include <algorithm>
@@ -13,16 +15,13 @@ namespace {
 // ISO 9592-1 error 110 (errors::ColourModelNotAvailable lives in ws/, which includes view/).
 constexpr int kColourModelNotAvailable = 110;
 
-bool finite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 void checkData(const ColourMapping& m, ErrorLog* log, const char* function) {
     if (m.method != ColourMappingMethod::True && !isColourModel(static_cast<int>(m.model)))
         raise(log, kColourModelNotAvailable, function,
               "colour model " + std::to_string(static_cast<int>(m.model)));
     if (m.method == ColourMappingMethod::Pseudo) {
-        if (!finite(m.weights)) raise(log, errors::BadColourMappingData, function, "a weight is not finite");
+        if (!allFinite(m.weights))
+            raise(log, errors::BadColourMappingData, function, "a weight is not finite");
         if (m.colours.empty()) raise(log, errors::BadColourMappingData, function, "PSEUDO without colours");
         for (std::size_t i = 0; i < m.colours.size(); ++i)
             for (int k = 0; k < 3; ++k)

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cmath>
 #include <optional>
 
 namespace phigs {
@@ -49,6 +50,11 @@ std::optional<glm::dvec2> transformPoint2(const glm::dmat3& m, const glm::dvec2&
 inline glm::dvec3 projectPoint3(const glm::dmat4& m, const glm::dvec3& p) {
     const glm::dvec4 q = m * glm::dvec4(p, 1.0);
     return glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0);
+}
+
+/// Whether every coordinate is finite (no NaN, no infinity).
+inline bool allFinite(const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
 }  // namespace phigs
