@@ -5,7 +5,8 @@
  * distinguishing and culling, seen from the front or (turned or mirrored about x = 0.5) from the
  * back. Each facet fills by the style of the side it shows; a HOLLOW side draws the facet's own
  * edges in that side's colour and nothing inside (no quadrilateral diagonals); an EMPTY or culled
- * side draws nothing. argv[1]: a directory for the files. */
+ * side draws nothing; an edge-on facet (in a plane through the view direction) shows its front.
+ * argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -288,6 +289,68 @@ static void triangle_strips(void) {
     }
 }
 
+static int edgeOnOutlined = 0, edgeOnBlank = 0;
+
+/* Quadrilateral meshes in a plane x = c through the view direction: every facet edge-on (its
+ * projected winding exactly zero) shows its front, whichever way its vertices or its facet normal
+ * turn it: a HOLLOW front draws the facets' edges as one vertical line in the front colour, any
+ * other front (SOLID fills no area) or a culled front nothing. */
+static void edge_on(void) {
+    for (int round = 0; round < 10; ++round) {
+        Sides s;
+        double ys[4], zs[3];
+        const int ny = 2 + (int)(next_random() % 3), nz = 2 + (int)(next_random() % 2);
+        const int normals = round % 2 == 0, reversed = (int)(next_random() % 2);
+        const double c = random_real(0.3, 0.7);
+        Ppoint3 points[12];
+        Pvec3 norms[6];
+        Pint_size dim;
+        Pfacet_data_arr3 fdata;
+        Pfacet_vdata_arr3 vdata;
+        Picture p[2];
+        random_sides(&s, round);
+        s.flip = 0;
+        if (round % 3 != 2) { /* HOLLOW over SOLID, either way round: the side shown decides */
+            s.front = round % 3 == 0 ? PSTYLE_HOLLOW : PSTYLE_SOLID;
+            s.back = round % 3 == 0 ? PSTYLE_SOLID : PSTYLE_HOLLOW;
+            s.distinguish = 1;
+        }
+        grid_lines(ys, ny, random_real(0.15, 0.2));
+        grid_lines(zs, nz, random_real(0.3, 0.4));
+        /* u runs along y (or against it, reversing the winding), v along z. */
+        for (int j = 0; j < nz; ++j)
+            for (int i = 0; i < ny; ++i)
+                points[j * ny + i].x = (Pfloat)c,
+                                points[j * ny + i].y = (Pfloat)ys[reversed ? ny - 1 - i : i],
+                                points[j * ny + i].z = (Pfloat)zs[j];
+        for (int q = 0; q < (ny - 1) * (nz - 1); ++q)
+            norms[q].delta_x = next_random() % 2 ? 1.0f : -1.0f, norms[q].delta_y = norms[q].delta_z = 0;
+        const Shown front = shown_side(&s, 1);
+        open_mesh_structure(&s);
+        dim.size_x = ny, dim.size_y = nz;
+        fdata.norms = norms;
+        vdata.points = points;
+        pquad_mesh3_data(normals ? PFACET_NORMAL : PFACET_NONE, PVERT_COORD, PMODEL_RGB, &dim, &fdata,
+                         &vdata);
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        edgeOnOutlined += front.outlined, edgeOnBlank += !front.outlined;
+        for (int i = 0; i < 2; ++i) {
+            if (!p[i].rgb) continue;
+            for (int k = 1; k < 8; ++k) {
+                const double y = ys[0] + (ys[ny - 1] - ys[0]) * k / 8.0;
+                const int ok = front.outlined ? line_along(&p[i], c, y, 1, 0, front.colour) <= 24
+                                              : farthest_from_background(&p[i], c, y, 1, 0) <= 24;
+                if (!ok)
+                    fprintf(stderr, "  %s: edge-on mesh at NPC (%.3f, %.3f): %s (round %d)\n", p[i].name, c,
+                            y, front.outlined ? "front outline missing" : "something drawn", round);
+                CHECK(ok);
+            }
+        }
+        for (int i = 0; i < 2; ++i) free(p[i].rgb);
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -297,10 +360,12 @@ int main(int argc, char** argv) {
     open_with_handler(errors);
     quad_meshes();
     triangle_strips();
+    edge_on();
     /* The sequence reaches the cases: HOLLOW quadrilaterals, filled ones beside them, facets turned. */
     CHECK(hollowQuads >= 8);
     CHECK(filledQuadsBesideHollow >= 2);
     CHECK(turnedFacets >= 8);
+    CHECK(edgeOnOutlined >= 3 && edgeOnBlank >= 2);
     pclose_phigs();
     return finish("test_mesh_sides");
 }

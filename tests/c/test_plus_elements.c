@@ -127,6 +127,19 @@ static void nurbs(void) {
                    Pfn_nuni_bsp_curv);
     EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, NULL, 0, NULL), -204,
                    Pfn_nuni_bsp_surf);
+    /* A trim curve trims over [tmin, tmax] only: the part from t = 1 to 2 is the edge
+     * (0.9, 0.1) - (0.5, 0.9); a range outside the knots' domain or reversed is refused. */
+    trim.tmin = 1, trim.tmax = 2;
+    EXPECT_NO_ERROR(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop));
+    trim.tmin = 2, trim.tmax = 1;
+    EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop), -202,
+                   Pfn_nuni_bsp_surf);
+    trim.tmin = -1, trim.tmax = 2;
+    EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop), -202,
+                   Pfn_nuni_bsp_surf);
+    trim.tmin = 0, trim.tmax = 3.5f;
+    EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop), -202,
+                   Pfn_nuni_bsp_surf);
     pclose_struct();
 
     if ((d = content(1, PELEM_NUNI_BSP_CURVE))) {
@@ -147,6 +160,18 @@ static void nurbs(void) {
             const Ptrimcurve* t = &d->nuni_bsp_surf.trim_loops[0].curves[0];
             CHECK(t->order == 2 && t->rationality == PNON_RATIONAL && t->knots.num_floats == 6);
             CHECK(t->cpts.point2d.num_points == 4 && near(t->cpts.point2d.points[2].y, 0.9));
+            CHECK(t->tmin == 0 && t->tmax == 3); /* tmin == tmax: the whole domain */
+        }
+    }
+    d = content(3, PELEM_NUNI_BSP_SURF);
+    CHECK(d && d->nuni_bsp_surf.num_trim_loops == 1 && d->nuni_bsp_surf.trim_loops[0].num_curves == 1);
+    if (d && d->nuni_bsp_surf.num_trim_loops == 1 && d->nuni_bsp_surf.trim_loops[0].num_curves == 1) {
+        const Ptrimcurve* t = &d->nuni_bsp_surf.trim_loops[0].curves[0];
+        CHECK(t->order == 2 && t->tmin == 1 && t->tmax == 2 && t->cpts.point2d.num_points == 2);
+        CHECK(t->knots.num_floats == 4 && t->knots.floats[0] == 1 && t->knots.floats[3] == 2);
+        if (t->cpts.point2d.num_points == 2) {
+            CHECK(near(t->cpts.point2d.points[0].x, 0.9) && near(t->cpts.point2d.points[0].y, 0.1));
+            CHECK(near(t->cpts.point2d.points[1].x, 0.5) && near(t->cpts.point2d.points[1].y, 0.9));
         }
     }
 }

@@ -1,10 +1,12 @@
 /* A PHIGS PLUS NURBS surface drawn on the headless offscreen type (lavapipe) and compared with a
  * reference image computed from its geometry: a rational quadratic-by-linear surface whose
  * control points are evenly spaced, so it maps (u, v) affinely onto NPC [0.2, 0.8]^2, trimmed
- * to a triangle in (u, v). Every pixel more than six pixels (a tessellation cell's diagonal and a
- * pixel: the core keeps or drops whole cells) from the triangle's edges must have
- * the reference's colour (the surface's red inside, the background outside); the reference is
- * written beside the picture. Links libpng besides libphigs. argv[1]: a directory for the files. */
+ * to a triangle in (u, v) by a trim curve whose range [tmin, tmax] leaves out a detour at each
+ * end of its control polygon (the whole curve would trim away a different region). Every pixel more than six
+ * pixels (a tessellation cell's diagonal and a pixel: the core keeps or drops whole cells) from the
+ * triangle's edges must have the reference's colour (the surface's red inside, the background outside); the
+ * reference is written beside the picture. Links libpng besides libphigs. argv[1]: a directory for the files.
+ */
 #include "check.h"
 
 #include <png.h>
@@ -41,20 +43,21 @@ static void build_surface(void) {
     /* Homogeneous points, weight 2: (2x, 2y, 0, 2); u fastest (3 along u, 2 along v). */
     Ppoint4 grid_points[6] = {{0.4f, 0.4f, 0, 2}, {1.0f, 0.4f, 0, 2}, {1.6f, 0.4f, 0, 2},
                               {0.4f, 1.6f, 0, 2}, {1.0f, 1.6f, 0, 2}, {1.6f, 1.6f, 0, 2}};
-    Pfloat uk[6] = {0, 0, 0, 1, 1, 1}, vk[4] = {0, 0, 1, 1}, tk[6] = {0, 0, 1, 2, 3, 3};
+    Pfloat uk[6] = {0, 0, 0, 1, 1, 1}, vk[4] = {0, 0, 1, 1}, tk[8] = {0, 0, 1, 2, 3, 4, 5, 5};
     Pfloat_list uknots = {6, uk}, vknots = {4, vk};
     Ppoint_grid34 grid;
-    Ppoint loop_points[4];
+    /* Linear: t = 1 .. 4 runs round the triangle; t in [0, 1] and [4, 5] are the detours. */
+    Ppoint loop_points[6] = {{0.95f, 0.95f}, {0, 0}, {0, 0}, {0, 0}, {0, 0}, {0.05f, 0.95f}};
     Ptrimcurve trim;
     Ptrimcurve_list loop = {1, &trim};
     Pgcolr red = {PMODEL_RGB, {0}};
     grid.num_points.size_x = 3, grid.num_points.size_y = 2, grid.points.point4d = grid_points;
     for (int i = 0; i < 4; ++i)
-        loop_points[i].x = (Pfloat)tri[i % 3][0], loop_points[i].y = (Pfloat)tri[i % 3][1];
+        loop_points[i + 1].x = (Pfloat)tri[i % 3][0], loop_points[i + 1].y = (Pfloat)tri[i % 3][1];
     memset(&trim, 0, sizeof trim);
     trim.visible = PEDGE_OFF, trim.rationality = PNON_RATIONAL, trim.order = 2;
-    trim.knots.num_floats = 6, trim.knots.floats = tk;
-    trim.cpts.point2d.num_points = 4, trim.cpts.point2d.points = loop_points;
+    trim.knots.num_floats = 8, trim.knots.floats = tk, trim.tmin = 1, trim.tmax = 4;
+    trim.cpts.point2d.num_points = 6, trim.cpts.point2d.points = loop_points;
     red.val.direct.x = 1;
     popen_struct(1);
     pset_int_style(PSTYLE_SOLID);

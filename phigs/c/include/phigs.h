@@ -1890,9 +1890,10 @@ void pset_para_surf_characs(Pint psc_type, const Ppara_surf_characs* data);
 /* ---- PHIGS PLUS NURBS primitives. A rational control point is homogeneous (w x, w y, w z, w),
  * w > 0. Knots: order + number of control points, non-decreasing. A surface's grid holds
  * num_points.size_x (u) x num_points.size_y (v) points, u running fastest. Trimming curves are
- * closed loops in (u, v) (rational: (w u, w v, w)); their order, knots and points are kept, their
- * visibility, approximation and range are not (answered PEDGE_OFF, PCURV_WS_DEP, 0 and the
- * knot domain). Bad data is refused with -202 naming the rule. */
+ * closed loops in (u, v) (rational: (w u, w v, w)); a curve trims over [tmin, tmax], within its
+ * knots' domain (tmin == tmax: the whole domain), and is kept as that part (answered with its own
+ * knots, points and range); its visibility and approximation are not kept (answered PEDGE_OFF,
+ * PCURV_WS_DEP, 0). Bad data is refused with -202 naming the rule. */
 /* NON-UNIFORM B-SPLINE CURVE drawn over [min, max] (min == max: the whole domain). */
 void pnuni_bsp_curv(Pint order, const Pfloat_list* knots, Prational rationality, const Ppoint_list34* cpts,
                     Pfloat min, Pfloat max);

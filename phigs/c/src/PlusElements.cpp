@@ -6,6 +6,8 @@
 #include "Insert.h"
 #include "phigs.h"
 
+#include "geom/Split.h"
+
 using namespace phigs;
 using phigs::c::insertElement;
 
@@ -70,6 +72,22 @@ void dehomogenize(const Ppoint4& p, std::vector<glm::dvec3>& points, std::vector
     weights.push_back(p.w);
 }
 
+/// The part of a trim curve over [tmin, tmax] that trims (tmin == tmax: the whole curve, as for
+/// NON-UNIFORM B-SPLINE CURVE); a range outside the knots' domain is -202.
+geom::Curve trimRange(const geom::Curve& curve, double tmin, double tmax, const char* name) {
+    if (tmin == tmax) return curve;
+    const double start = curve.domainStart(), end = curve.domainEnd();
+    if (!(tmin < tmax) || tmin < start || tmax > end)
+        throw Error(errors::InvalidElementData, name,
+                    "a trim curve's range [" + std::to_string(tmin) + ", " + std::to_string(tmax) +
+                        "] is not within its knots' domain [" + std::to_string(start) + ", " +
+                        std::to_string(end) + "]");
+    geom::Curve part = curve;
+    if (tmin > start) part = geom::split(part, tmin).second;
+    if (tmax < end) part = geom::split(part, tmax).first;
+    return part;
+}
+
 geom::Curve trimCurve(const Ptrimcurve& t, const char* name) {
     const bool rat = rational(t.rationality, name);
     std::vector<glm::dvec3> points;
@@ -88,7 +106,8 @@ geom::Curve trimCurve(const Ptrimcurve& t, const char* name) {
             points.push_back({t.cpts.point2d.points[i].x, t.cpts.point2d.points[i].y, 0});
     }
     const std::vector<double> knots = floats(&t.knots, name);
-    return checked(name, [&] { return geom::Curve(t.order - 1, knots, points, weights); });
+    const geom::Curve whole = checked(name, [&] { return geom::Curve(t.order - 1, knots, points, weights); });
+    return trimRange(whole, t.tmin, t.tmax, name);
 }
 
 /// Level curves (types 4 and 5; psc_4 and psc_5 have one layout): origin, direction and the
