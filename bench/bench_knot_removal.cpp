@@ -13,13 +13,16 @@
 #include "geom/ReferenceShapes.h"
 
 #include <sisl.h>
+#include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -163,6 +166,89 @@ CurveCase rationalCase() {
     return {"rational", refinedAndJittered(rng, base, 80, 1e-5), 1e-3};
 }
 
+/// A lower bound on the control points of any degree-1 curve within Hausdorff distance `eps` of
+/// the degree-1 curve `c` with the same end points (both reductions keep them): the number of
+/// disjoint balls B(v, rho) around corners v of c that must each hold a vertex of such a curve,
+/// plus its two end points. A corner v with legs along unit rays a, b (c within delta of them
+/// inside radius rho + eps, nothing else of c there) certifies at rho when
+/// (rho - eta) |a + b| / 2 > eps + eta, eta = eps + delta: a segment of the approximation that
+/// passes within eps of v and crosses the ball has, along the bisector m = (a + b) / |a + b|, the
+/// affine height m . (x - v) at most eps there but more than it at both crossings of the sphere,
+/// each within eta of a leg at distance rho - eta or more from v; so a vertex lies inside.
+std::size_t polylineVertexLowerBound(const geom::Curve& c, double eps) {
+    const std::vector<glm::dvec3>& v = c.points;
+    const std::size_t n = v.size();
+    if (c.degree != 1 || n < 3) return std::min<std::size_t>(n, 2);
+    auto segmentDistance = [](const glm::dvec3& q, const glm::dvec3& a, const glm::dvec3& b) {
+        const glm::dvec3 d = b - a;
+        const double dd = glm::dot(d, d);
+        const double t = dd > 0.0 ? std::clamp(glm::dot(q - a, d) / dd, 0.0, 1.0) : 0.0;
+        return glm::length(q - (a + t * d));
+    };
+    auto rayDistance = [](const glm::dvec3& q, const glm::dvec3& o, const glm::dvec3& u) {
+        const double t = std::max(0.0, glm::dot(q - o, u));
+        return glm::length(q - (o + t * u));
+    };
+    // The leg from corner i towards step (-1 or +1) leaving the ball of radius r: its unit ray,
+    // the largest distance of the chain inside from it, and the last vertex inside; none where
+    // the chain ends inside.
+    struct Leg {
+        glm::dvec3 ray;
+        double delta;
+        std::size_t last;
+    };
+    auto leg = [&](std::size_t i, int step, double r) -> std::optional<Leg> {
+        std::size_t k = i;
+        for (;;) {
+            if ((step < 0 && k == 0) || (step > 0 && k + 1 == n)) return std::nullopt;
+            const std::size_t next = step < 0 ? k - 1 : k + 1;
+            if (glm::length(v[next] - v[i]) >= r) break;
+            k = next;
+        }
+        const glm::dvec3 a = v[k] - v[i], d = v[step < 0 ? k - 1 : k + 1] - v[k];
+        // |a + s d| = r for s in [0, 1]: the exit from the ball.
+        const double qa = glm::dot(d, d), qb = 2.0 * glm::dot(a, d), qc = glm::dot(a, a) - r * r;
+        const double s = (-qb + std::sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa);
+        const glm::dvec3 ray = glm::normalize(a + s * d);
+        double delta = 0.0;
+        for (std::size_t j = std::min(i, k); j <= std::max(i, k); ++j)
+            delta = std::max(delta, rayDistance(v[j], v[i], ray));
+        return Leg{ray, delta, k};
+    };
+    auto certifies = [&](std::size_t i, double rho) {
+        const double r = rho + eps;
+        if (glm::length(v.front() - v[i]) < rho || glm::length(v.back() - v[i]) < rho) return false;
+        const auto back = leg(i, -1, r), ahead = leg(i, 1, r);
+        if (!back || !ahead) return false;
+        // Nothing of the curve but the two legs within r of the corner.
+        for (std::size_t j = 0; j + 1 < n; ++j)
+            if ((j + 1 < back->last || j > ahead->last) && !(segmentDistance(v[i], v[j], v[j + 1]) > r))
+                return false;
+        const double eta = eps + std::max(back->delta, ahead->delta);
+        return rho > eta && (rho - eta) * glm::length(back->ray + ahead->ray) / 2.0 > eps + eta;
+    };
+    struct Ball {
+        std::size_t corner;
+        double rho;
+    };
+    std::vector<Ball> balls;
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        for (double rho = 4.0 * eps; rho < 1e6 * eps; rho *= 1.25)
+            if (certifies(i, rho)) {
+                balls.push_back({i, rho});
+                break;
+            }
+    // The smallest balls first, each kept where it is disjoint from those kept.
+    std::sort(balls.begin(), balls.end(), [](const Ball& x, const Ball& y) { return x.rho < y.rho; });
+    std::vector<Ball> kept;
+    for (const Ball& b : balls)
+        if (std::all_of(kept.begin(), kept.end(), [&](const Ball& k) {
+                return glm::length(v[b.corner] - v[k.corner]) >= b.rho + k.rho;
+            }))
+            kept.push_back(b);
+    return kept.size() + 2;
+}
+
 std::string json;
 void figure(const std::string& name, double value) {
     char buf[128];
@@ -176,7 +262,7 @@ void runClasses(const std::string& only = {}) {
     std::printf("\nGenerated classes: control points left, measured error / tolerance, best of 9 runs\n");
     std::printf("%-16s %6s %8s | %6s %7s %9s | %6s %7s %9s | %6s %6s\n", "class", "poles", "tol", "geom",
                 "err/tol", "ms", "sisl", "err/tol", "ms", "time", "cps");
-    double worstTime = 0, worstCps = 0, worstError = 0;
+    double worstTime = 0, worstCps = 0, worstError = 0, worstCpsOpen = 0;
     for (const CurveCase& c : generatedCases()) {
         if (!only.empty() && c.name != only) continue;
         geom::ReductionOptions o;
@@ -199,6 +285,15 @@ void runClasses(const std::string& only = {}) {
         worstTime = std::max(worstTime, timeRatio);
         worstCps = std::max(worstCps, cpRatio);
         worstError = std::max(worstError, gerr);
+        // Where a lower bound proves SISL's count minimal, no curve keeps fewer points.
+        const std::size_t bound = c.curve.degree == 1 ? polylineVertexLowerBound(c.curve, c.tolerance) : 0;
+        if (bound > 0) {
+            std::printf(
+                "%-16s any curve of degree 1 within the tolerance keeps at least %zu control points\n", "",
+                bound);
+            figure(c.name + "_control_points_lower_bound", double(bound));
+        }
+        if (bound < s.points.size()) worstCpsOpen = std::max(worstCpsOpen, cpRatio);
         figure(c.name + "_geom_control_points", double(r.curve.points.size()));
         figure(c.name + "_sisl_control_points", double(s.points.size()));
         figure(c.name + "_geom_ms", ms);
@@ -222,6 +317,7 @@ void runClasses(const std::string& only = {}) {
     }
     figure("worst_time_ratio_vs_sisl", worstTime);
     figure("worst_cp_ratio_vs_sisl", worstCps);
+    figure("worst_cp_ratio_vs_sisl_not_proven_minimal", worstCpsOpen);
     figure("worst_error_over_tolerance", worstError);
 }
 
@@ -297,6 +393,9 @@ int main(int argc, char** argv) {
                     "%s seed %u: geom %zu (err/tol %.3f, %.3f ms), sisl %zu (%.3f ms): time %.2f cps %.2f\n",
                     c.name.c_str(), seed, r.curve.points.size(), gerr, ms, s.points.size(), sms, ms / sms,
                     cps);
+                if (c.curve.degree == 1)
+                    std::printf("%s seed %u: at least %zu control points (lower bound)\n", c.name.c_str(),
+                                seed, polylineVertexLowerBound(c.curve, c.tolerance));
                 worstTime = std::max(worstTime, ms / sms);
                 worstCps = std::max(worstCps, cps);
                 worstError = std::max(worstError, gerr);

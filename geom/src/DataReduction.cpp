@@ -20,6 +20,19 @@
 #include <unordered_set>
 
 namespace geom {
+namespace detail {
+
+/// CurveDeviationMeter from the original's power forms and, where they are there, its samples
+/// and points, made by the reduction already (the same arrays the meter would make).
+struct MeterFromSamples {
+    static CurveDeviationMeter make(const Curve& original, int samplesPerSpan, std::vector<glm::dvec3> forms,
+                                    std::vector<double> params, std::vector<glm::dvec3> points) {
+        return CurveDeviationMeter(original, samplesPerSpan, std::move(forms), std::move(params),
+                                   std::move(points));
+    }
+};
+
+}  // namespace detail
 namespace {
 
 // A spline with `sequences` coefficient sequences sharing one knot vector: a curve, or the
@@ -676,14 +689,6 @@ std::size_t reduceLoop(Spline& s, const ReductionOptions& o, std::size_t& fits, 
     return RemovalLoop<A, P>(s, o, fits, accept, presentError, history, originalSpline, refitRounds).run();
 }
 
-Curve unchecked(int degree, std::vector<double> knots, std::vector<glm::dvec3> points) {
-    Curve c;
-    c.degree = degree;
-    c.knots = std::move(knots);
-    c.points = std::move(points);
-    return c;
-}
-
 Surface transposed(const Surface& s) {
     Surface t;
     t.degreeU = s.degreeV;
@@ -1200,6 +1205,7 @@ public:
         return params_;
     }
     const std::vector<glm::dvec3>& values() { return valuesBefore(params().size()); }
+    int samplesPerSpan() const { return samplesPerSpan_; }
     /// The values, made up to sample `end` at least (a caller that may stop early makes no more).
     const std::vector<glm::dvec3>& valuesBefore(std::size_t end) {
         const std::vector<double>& at = params();
@@ -1307,10 +1313,11 @@ class CountSearch {
 public:
     /// Counts from `ceiling` up are left to the removal loop; a result found goes to out.
     CountSearch(const Curve& curve, const ReductionOptions& o, const FreeKnotFitter& fitter,
-                std::size_t lowest, std::size_t ceiling, CurveReduction& out)
+                OriginalSamples& samples, std::size_t lowest, std::size_t ceiling, CurveReduction& out)
         : curve_(curve),
           o_(o),
           fitter_(fitter),
+          samples_(samples),
           out_(out),
           p_(static_cast<std::size_t>(curve.degree)),
           lowest_(lowest),
@@ -1425,8 +1432,14 @@ private:
         if (!meter_) {
             const std::size_t wanted = 4 * static_cast<std::size_t>(measureDensity_) * spanCount(candidate);
             const std::size_t spans = spanCount(curve_);
-            meter_.emplace(curve_, static_cast<int>(std::clamp<std::size_t>((wanted + spans - 1) / spans, 2,
-                                                                            std::size_t(measureDensity_))));
+            const int density = static_cast<int>(
+                std::clamp<std::size_t>((wanted + spans - 1) / spans, 2, std::size_t(measureDensity_)));
+            // The original's power forms, and at the loop's density its samples and points, are
+            // the ones the reduction made already.
+            const bool same = density == samples_.samplesPerSpan();
+            meter_.emplace(detail::MeterFromSamples::make(
+                curve_, density, samples_.forms(), same ? samples_.params() : std::vector<double>{},
+                same ? samples_.values() : std::vector<glm::dvec3>{}));
         }
         return *meter_;
     }
@@ -1443,6 +1456,7 @@ private:
     const Curve& curve_;
     const ReductionOptions& o_;
     const FreeKnotFitter& fitter_;
+    OriginalSamples& samples_;
     CurveReduction& out_;
     const std::size_t p_, lowest_, none_;  // none_: no fit at or above it is needed
     const int measureDensity_;
@@ -1566,7 +1580,8 @@ CurveReduction reduceCurveByFreeKnots(const Curve& curve, const ReductionOptions
         // Measure before searching (see searchIsFutile).
         if (refined && searchIsFutile(moved, p, first, ceiling, o.tolerance)) ceiling = lowest;
     }
-    if (ceiling > lowest) CountSearch(curve, o, fitter, lowest, ceiling, out).run(first, std::move(moved));
+    if (ceiling > lowest)
+        CountSearch(curve, o, fitter, samples, lowest, ceiling, out).run(first, std::move(moved));
     out.removed = n0 - out.curve.points.size();
     return out;
 }
@@ -1712,7 +1727,9 @@ public:
 
     /// True where the fit keeps the tolerance at every sample near its change; then records it.
     bool accept(int degree, const LeastSquaresRemoval& fit) {
-        const Curve g = unchecked(degree, fit.knots, fit.points);
+        // The candidate is read where the fit left it (no copy of its knots and points).
+        const std::vector<double>& knots = fit.knots;
+        const std::vector<glm::dvec3>& points = fit.points;
         // The curve changed on [changedFrom, changedTo]; a sample just outside may have its
         // nearest point inside, so one original span more is measured on each side.
         const std::size_t lo = static_cast<std::size_t>(
@@ -1721,10 +1738,12 @@ public:
             std::upper_bound(params_.begin(), params_.end(), fit.changedTo) - params_.begin());
         const std::size_t first = lo > pad_ ? lo - pad_ : 0;
         const std::size_t last = std::min(params_.size(), hi + pad_);
-        detail::SplineSampler candidate(g.degree, g.knots, g.points.data(), g.points.size());
-        if (failures_ > accepted_ && !sparseSampleKeeps(g, candidate, first, last)) return rejected();
-        std::vector<glm::dvec3> onCandidate(last - first);
-        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(),
+        detail::SplineSampler candidate(degree, knots, points.data(), points.size());
+        if (failures_ > accepted_ && !sparseSampleKeeps(degree, knots, points, candidate, first, last))
+            return rejected();
+        std::vector<glm::dvec3>& onCandidate = window_;
+        onCandidate.resize(last - first);
+        detail::evaluateAscending(degree, knots, points.data(), points.size(),
                                   std::span(params_).subspan(first, last - first), onCandidate.data());
         // The sample farthest from the candidate in parameter first: most candidates that fail,
         // fail there, before any other sample is inverted.
@@ -1770,13 +1789,14 @@ private:
     /// the results are the same either way; accept runs it once more candidates have failed than
     /// passed (noisy data: three of four fail), not where most pass (higher degrees: most do,
     /// and it would cost them a quarter of the evaluations more).
-    bool sparseSampleKeeps(const Curve& g, detail::SplineSampler& candidate, std::size_t first,
-                           std::size_t last) {
+    bool sparseSampleKeeps(int degree, const std::vector<double>& knots,
+                           const std::vector<glm::dvec3>& points, detail::SplineSampler& candidate,
+                           std::size_t first, std::size_t last) {
         if (last - first < 8 * kSparseStride) return true;
         sparseParams_.clear();
         for (std::size_t i = first; i < last; i += kSparseStride) sparseParams_.push_back(params_[i]);
         sparseValues_.resize(sparseParams_.size());
-        detail::evaluateAscending(g.degree, g.knots, g.points.data(), g.points.size(), sparseParams_,
+        detail::evaluateAscending(degree, knots, points.data(), points.size(), sparseParams_,
                                   sparseValues_.data());
         const std::size_t farthest = farthestOf(sparseValues_, first, kSparseStride);
         return sampleKeeps(candidate, sparseValues_[farthest], first + farthest * kSparseStride);
@@ -1860,8 +1880,8 @@ private:
     std::vector<double> params_;
     std::vector<glm::dvec3> samples_;
     std::vector<double> witness_, trial_, error_, trialError_, blockError_, sparseParams_;
-    std::vector<glm::dvec3> sparseValues_;
-    std::size_t accepted_ = 0, failures_ = 0;  // the candidates judged so far
+    std::vector<glm::dvec3> sparseValues_, window_;  // window_: the candidate at accept's samples
+    std::size_t accepted_ = 0, failures_ = 0;        // the candidates judged so far
     std::size_t pad_;
     double tol_;
     detail::SplineSampler originalSampler_;

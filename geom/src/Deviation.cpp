@@ -301,13 +301,22 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
 }
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
+    : CurveDeviationMeter(original, samplesPerSpan, {}, {}, {}) {
+}
+
+CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan,
+                                         std::vector<glm::dvec3> forms, std::vector<double> params,
+                                         std::vector<glm::dvec3> points)
     : original_(original), samplesPerSpan_(samplesPerSpan) {
     validate(original, "measureDeviation: original");
     if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
-    params_ = spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
-    originalForms_ = detail::powerForms(original.degree, original_.knots, original_.points.data(),
-                                        original_.points.size());
-    points_ = valuesAt(original_, params_, &originalForms_);
+    params_ = points.empty()
+                  ? spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan)
+                  : std::move(params);
+    originalForms_ = forms.empty() ? detail::powerForms(original.degree, original_.knots,
+                                                        original_.points.data(), original_.points.size())
+                                   : std::move(forms);
+    points_ = points.empty() ? valuesAt(original_, params_, &originalForms_) : std::move(points);
     boxes_ = spanBoxes(original, params_);
 }
 

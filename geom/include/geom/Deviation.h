@@ -47,6 +47,10 @@ struct ParameterMap {
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
                                 const ParameterMap& map, int reducedSamplesPerSpan = 0);
 
+namespace detail {
+struct MeterFromSamples;
+}
+
 /// measureDeviation with a parameter map against one original, many times: the original's
 /// samples and span boxes are made once (a search measures every candidate).
 class CurveDeviationMeter {
@@ -70,6 +74,13 @@ public:
     static SpanBoxes spanBoxes(const Curve& curve, const std::vector<double>& params);
 
 private:
+    friend struct detail::MeterFromSamples;
+    /// The meter from what a caller inside geom made already: the original's span power forms
+    /// (private to geom), and where `points` is not empty, its samples (spanSamples at
+    /// samplesPerSpan) and its points there, made from those forms.
+    CurveDeviationMeter(const Curve& original, int samplesPerSpan, std::vector<glm::dvec3> forms,
+                        std::vector<double> params, std::vector<glm::dvec3> points);
+
     Curve original_;
     int samplesPerSpan_;
     std::vector<double> params_;
