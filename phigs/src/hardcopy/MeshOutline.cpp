@@ -57,7 +57,8 @@ std::vector<MeshEdge> facetEdges(const MeshData& mesh, const std::vector<int>& f
         if (side != 0 && ((t < facing.size() ? facing[t] : 0) >= 0 ? 1 : -1) != side) continue;
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t a = mesh.triangles[3 * t + e], b = mesh.triangles[3 * t + (e + 1) % 3];
-            if ((masks[t] >> e & 1) && a < count && b < count && a != b && seen.insert(edgeKey(a, b)).second)
+            if ((masks[t] >> e & 1) && a < count && b < count && a != b &&
+                seen.insert(undirectedEdgeKey(a, b)).second)
                 out.push_back({std::min(a, b), std::max(a, b)});
         }
     }
