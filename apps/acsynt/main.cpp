@@ -386,6 +386,9 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     acsynt::Session session(settings, *source);
     phigs::vk::WorkstationDisplay& display = phigs::vk::WorkstationDisplay::of(session.workstation());
     session.setSnapshot([&](const std::filesystem::path& file) { phigs::writePng(display.capture(), file); });
+    // A script draws only for its snapshots: a vector hardcopy's describe step gets the images'
+    // room (about 12.6 MB at 1024 x 768); the next snapshot makes them again.
+    if (!options.window) session.setBeforeHardcopy([&] { display.releaseImages(); });
     if (!importFirst(session, options)) return kExitFatal;
     if (!options.window) {
         session.run();

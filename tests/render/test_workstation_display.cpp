@@ -227,6 +227,12 @@ TEST_CASE("workstation display: an unchanged workstation uploads nothing, an edi
         CHECK(display.renderer().lastFrame().uploads == 0);
         CHECK(display.renderer().lastFrame().buffersCreated == 0);
         CHECK(display.image().rgba == first.rgba);
+        // Freed images come back at the next picture: the same pixels, the buffers kept.
+        display.releaseImages();
+        CHECK(display.image().rgba.empty());
+        display.update();
+        CHECK(display.renderer().lastFrame().uploads == 0);
+        CHECK(display.image().rgba == first.rgba);
         // Recolour the square (element 4 of structure 1): the patch's mesh stays on the GPU.
         auto& store = scene.phigs.store();
         store.openStructure(1);

@@ -110,3 +110,24 @@ TEST_CASE("the hardcopy directive writes PDF, SVG and EPS of one view; bad names
     CHECK_FALSE(std::filesystem::exists(out.parent_path() / "outside.pdf"));
     CHECK(d.session.hardcopies().size() == 4);
 }
+
+TEST_CASE("a hardcopy runs the program's hook before writing; freed screen images come back") {
+    Driver d("hardcopy_hook");
+    const auto out = session_test::outputDirectory("hardcopy_hook");
+    std::filesystem::remove_all(out);
+    d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN"});
+    const phigs::Image before = d.picture();
+    int calls = 0;
+    bool writtenBefore = true;
+    d.session.setBeforeHardcopy([&] {
+        ++calls;
+        writtenBefore = std::filesystem::exists(out / "one.pdf");
+        d.display->releaseImages();
+    });
+    d.run({"hardcopy one.pdf"});
+    CHECK(d.session.failedLines() == 0);
+    CHECK(calls == 1);
+    CHECK_FALSE(writtenBefore);
+    CHECK(std::filesystem::exists(out / "one.pdf"));
+    CHECK(d.picture().rgba == before.rgba);
+}

@@ -116,6 +116,12 @@ void WorkstationDisplay::close(const DrawList& picture) {
     }
 }
 
+void WorkstationDisplay::releaseImages() {
+    if (!offscreen_) return;
+    offscreen_->releaseImages();
+    image_ = Image{};
+}
+
 const Image& WorkstationDisplay::capture() {
     if (!window_ || readBack_) {
         update();

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 namespace phigs::vk {
 
@@ -23,15 +24,21 @@ public:
     Image draw(const DrawList& list);
     /// Draws the list and writes the picture as a PNG file.
     void drawToPng(const DrawList& list, const std::filesystem::path& file);
+    /// Frees the colour, depth and readback images (the renderer keeps its pipelines and
+    /// buffers); the next draw makes them again.
+    void releaseImages();
 
     Renderer& renderer() { return renderer_; }
-    std::uint32_t width() const { return target_.width(); }
-    std::uint32_t height() const { return target_.height(); }
+    std::uint32_t width() const { return width_; }
+    std::uint32_t height() const { return height_; }
 
 private:
+    void makeImages();
+
     Context& context_;
-    OffscreenTarget target_;
+    std::uint32_t width_, height_;
     Renderer renderer_;
+    std::optional<OffscreenTarget> target_;  ///< empty while released
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
 };
 

@@ -62,6 +62,9 @@ public:
     const EchoState& echo() const { return echo_; }
     /// CLOSE WORKSTATION: the files (an offscreen PNG, the hardcopy) get `picture`.
     void close(const DrawList& picture) override;
+    /// Frees an offscreen image's colour, depth and readback images and image() until the next
+    /// present makes them again (a script that draws only for its snapshots holds them only then).
+    void releaseImages();
     /// Draws what the workstation shows now and returns the picture (a window reads the
     /// presented image back), for snapshots.
     const Image& capture();

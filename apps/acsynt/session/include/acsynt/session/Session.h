@@ -61,6 +61,9 @@ public:
     /// How to show the picture now, before a long computation (MAP CURVE's "PLEASE WAIT"): the
     /// program's one present function. Otherwise the program presents after each step().
     void setShowNow(std::function<void()> show) { showNow_ = std::move(show); }
+    /// What to do before a vector hardcopy is described (a script gives back its screen's images,
+    /// whose room the hardcopy then uses).
+    void setBeforeHardcopy(std::function<void()> hook) { beforeHardcopy_ = std::move(hook); }
     bool finished() const { return core_.finished; }
     /// Input lines (script lines, window actions) that failed: each gave one or more `ERROR:`s.
     std::size_t failedLines() const { return core_.failedLines; }
@@ -218,6 +221,7 @@ private:
     phigs::InputSource& source_;
     PictureSink snapshot_;
     std::function<void()> showNow_;
+    std::function<void()> beforeHardcopy_;
 
     phigs::Phigs phigs_;
     std::optional<phigs::WorkstationMapping> mapping_;
