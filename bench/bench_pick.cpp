@@ -96,8 +96,8 @@ std::optional<BruteHit> bruteForce(const phigs::DrawList& list,
     std::optional<BruteHit> best;
     for (std::size_t i = 0; i < list.items.size(); ++i) {
         const auto& item = list.items[i];
-        const auto& view = list.views[static_cast<std::size_t>(item.viewIndex)];
-        const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform.get();
+        const auto& view = list.views[static_cast<std::size_t>(item.viewIndex())];
+        const glm::dmat4 m = view.mapping * view.orientation * item.modelTransform().get();
         const glm::dmat4 inv = glm::inverse(m);
         const glm::dvec4 f = inv * glm::dvec4(npc, 1.0, 1.0), b = inv * glm::dvec4(npc, 0.0, 1.0);
         const glm::dvec3 origin = glm::dvec3(f) / f.w;
@@ -348,7 +348,7 @@ phigs::DrawList tubeList(std::vector<std::vector<geom::BezierSurfacePiece>>& pie
         mesh.surface = tube(0.6 + 0.05 * k, 8.0, 0.7 * k);
         phigs::DrawItem item;
         item.primitive = mesh;
-        item.modelTransform = glm::translate(
+        item.context.edit().modelTransform = glm::translate(
             glm::dmat4(1.0), glm::dvec3(-4.0 + 0.3 * (k % 3), -4.5 + 1.0 * k, -2.0 + 0.4 * (k % 4)));
         item.source = phigs::DrawSource({{1, k + 1, k}});
         list.items.push_back(item);

@@ -57,9 +57,10 @@ void describe(const phigs::DrawList& list) {
             continue;
         }
         // The renderer refuses an item whose view the list does not have; so does this.
-        if (item.viewIndex < 0 || (item.viewIndex >= int(list.views.size()) && !list.views.empty())) continue;
+        if (item.viewIndex() < 0 || (item.viewIndex() >= int(list.views.size()) && !list.views.empty()))
+            continue;
         const phigs::DrawView& view =
-            list.views.empty() ? defaultView : list.views[std::size_t(item.viewIndex)];
+            list.views.empty() ? defaultView : list.views[std::size_t(item.viewIndex())];
         phigs::render::describeItem(item, npcToPixels * view.mapping * view.orientation);
     }
 }

@@ -40,7 +40,7 @@ template <class P>
 DrawItem item(P primitive, int view = 0) {
     DrawItem i;
     i.primitive = std::move(primitive);
-    i.viewIndex = view;
+    i.context.edit().viewIndex = view;
     return i;
 }
 
@@ -98,7 +98,7 @@ TEST_CASE("vector describe: lines are cut at the view's clip limits, its depth l
     cut.points = {{0.0, 0.9, 0.5}, {1.0, 0.9, 0.5}};
     cut.style.edit().colour = {0, 0, 1};
     DrawItem modelClipped = item(cut);
-    modelClipped.modelClipPlanes = {{-1, 0, 0, 0.6}};
+    modelClipped.context.edit().modelClipPlanes = {{-1, 0, 0, 0.6}};
     list.items.push_back(modelClipped);
 
     const VectorPicture picture = describePicture(list, squarePage());
@@ -273,7 +273,7 @@ TEST_CASE("vector describe: shaded facets take the raster path's reflectance", "
     f.interior.edit().properties.ambient = 0.3f;
     f.interior.edit().properties.diffuse = 0.7f;
     DrawItem lit = item(f);
-    lit.lightSet = 0;
+    lit.context.edit().lightSet = 0;
     list.items.push_back(lit);
     const VectorPicture picture = describePicture(list, squarePage());
     REQUIRE(picture.ops.size() == 1);
@@ -316,7 +316,7 @@ TEST_CASE(
             cue.frontScale = cue.backScale = unit(rng);
             cue.colour = {unit(rng), unit(rng), unit(rng)};
             list.depthCues.push_back(cue);
-            i.depthCue = 0;
+            i.context.edit().depthCue = 0;
             const double s = cue.frontScale;
             const glm::vec3 shown = glm::clamp(glm::vec3(expected), glm::vec3(0.0f), glm::vec3(1.0f));
             expected = toRgb(model, s * inModel(model, shown) + (1.0 - s) * inModel(model, cue.colour));

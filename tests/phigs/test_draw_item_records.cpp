@@ -150,10 +150,10 @@ TEST_CASE("a segment's shared transform is the item's composite transform", "[tr
         for (const auto& segment : list.items.segments()) {
             const glm::dmat4* last = nullptr;
             for (const DrawItem& item : segment->items) {
-                REQUIRE_FALSE(item.modelTransform.owned());
-                CHECK(item.modelTransform.get() == pathTransform(store, item.source.path()));
+                REQUIRE_FALSE(item.modelTransform().owned());
+                CHECK(item.modelTransform().get() == pathTransform(store, item.source.path()));
                 // One record per run of equal transforms: a new record only where it changed.
-                const glm::dmat4* at = &item.modelTransform.get();
+                const glm::dmat4* at = &item.modelTransform().get();
                 if (last && at != last) CHECK(*at != *last);
                 runs += at != last;
                 last = at;
@@ -163,4 +163,46 @@ TEST_CASE("a segment's shared transform is the item's composite transform", "[tr
     }
     CHECK(items > 0);
     CHECK(runs < items);  // runs of items share one transform
+}
+
+TEST_CASE("a segment's items share one context per run of one state", "[traverse][random]") {
+    std::size_t items = 0, runs = 0;
+    for (unsigned seed : {31u, 32u, 33u, 34u, 35u, 36u}) {
+        INFO("seed " << seed);
+        std::mt19937 rng(seed);
+        Phigs phigs;
+        phigs.open();
+        Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+        StructureStore& store = phigs.store();
+        for (int id = kStructures; id >= 1; --id) insertSome(store, rng, id, testing::randomInt(rng, 10, 40));
+        ws.postStructure(1, 0.5), ws.postStructure(2, 0.25);
+        const DrawList& list = ws.display();
+        for (const auto& segment : list.items.segments()) {
+            const DrawContext* last = nullptr;
+            for (const DrawItem& item : segment->items) {
+                REQUIRE_FALSE(item.context.owned());
+                CHECK(item.modelTransform().get() == pathTransform(store, item.source.path()));
+                const DrawContext* at = &*item.context;
+                if (last && at != last) {  // a new record only where something in it changed
+                    const bool same =
+                        at->modelTransform.get() == last->modelTransform.get() &&
+                        at->viewIndex == last->viewIndex && at->lightSet == last->lightSet &&
+                        at->depthCue == last->depthCue && at->highlighted == last->highlighted &&
+                        at->pickable == last->pickable && at->modelClipPlanes == last->modelClipPlanes;
+                    CHECK_FALSE(same);
+                }
+                runs += at != last;
+                last = at;
+                ++items;
+                // A copy holds its own context, equal to the one it viewed.
+                const DrawItem copy = item;
+                CHECK(copy.context.owned());
+                CHECK(copy.modelTransform().get() == item.modelTransform().get());
+                CHECK(copy.viewIndex() == item.viewIndex());
+                CHECK(copy.modelClipPlanes() == item.modelClipPlanes());
+            }
+        }
+    }
+    CHECK(items > 0);
+    CHECK(runs < items);  // runs of items share one context
 }

@@ -15,13 +15,13 @@ namespace {
 
 DrawItem numbered(int n) {
     DrawItem item;
-    item.viewIndex = n;
+    item.context.edit().viewIndex = n;
     return item;
 }
 
 std::vector<int> numbers(const DrawItems& items) {
     std::vector<int> out;
-    for (const DrawItem& item : items) out.push_back(item.viewIndex);
+    for (const DrawItem& item : items) out.push_back(item.viewIndex());
     return out;
 }
 
@@ -44,12 +44,12 @@ TEST_CASE("draw items read like a vector over random edits", "[traverse][random]
                     items.appendSegment(segment);
                     other.appendSegment(segment);
                     for (const DrawItem& item : segment->items) {
-                        model.push_back(item.viewIndex);
-                        otherModel.push_back(item.viewIndex);
+                        model.push_back(item.viewIndex());
+                        otherModel.push_back(item.viewIndex());
                     }
                     if (!other.empty()) {
                         const std::size_t at = other.size() - 1;
-                        other[at].viewIndex = -next, otherModel[at] = -next;
+                        other[at].context.edit().viewIndex = -next, otherModel[at] = -next;
                         ++next;
                     }
                     break;
@@ -68,28 +68,28 @@ TEST_CASE("draw items read like a vector over random edits", "[traverse][random]
                 case 4:
                     // Writes through an iterator: every other item.
                     for (auto it = items.begin(); it < items.end(); it += 2) {
-                        it->viewIndex += 1000;
+                        it->context.edit().viewIndex += 1000;
                         model[static_cast<std::size_t>(it - items.begin())] += 1000;
                     }
                     break;
                 default:
                     if (!model.empty()) {
                         const auto at = static_cast<std::size_t>(pick(0, static_cast<int>(model.size()) - 1));
-                        items.at(at).viewIndex = next, model[at] = next++;
+                        items.at(at).context.edit().viewIndex = next, model[at] = next++;
                     }
             }
             REQUIRE(items.size() == model.size());
             REQUIRE(numbers(items) == model);
             REQUIRE(numbers(other) == otherModel);
             std::vector<int> backwards;
-            for (auto it = items.end(); it != items.begin();) backwards.push_back((--it)->viewIndex);
+            for (auto it = items.end(); it != items.begin();) backwards.push_back((--it)->viewIndex());
             std::reverse(backwards.begin(), backwards.end());
             REQUIRE(backwards == model);
             for (int probe = 0; probe < 3 && !model.empty(); ++probe) {
                 const auto at = static_cast<std::ptrdiff_t>(pick(0, static_cast<int>(model.size()) - 1));
                 const DrawItems& view = items;
-                REQUIRE((view.begin() + at)->viewIndex == model[static_cast<std::size_t>(at)]);
-                REQUIRE(view.begin()[at].viewIndex == model[static_cast<std::size_t>(at)]);
+                REQUIRE((view.begin() + at)->viewIndex() == model[static_cast<std::size_t>(at)]);
+                REQUIRE(view.begin()[at].viewIndex() == model[static_cast<std::size_t>(at)]);
             }
         }
     }
@@ -129,7 +129,7 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
         shared.appendSegment(segment);
         writer.appendSegment(segment);
         const std::size_t at = static_cast<std::size_t>(pick(0, static_cast<int>(points.size()) - 1));
-        writer[at].viewIndex = 7;  // writing copies the shared segment first
+        writer[at].context.edit().viewIndex = 7;  // writing copies the shared segment first
         DrawItem copied = shared[at];
         REQUIRE(std::get<DrawPolyline>(copied.primitive).points.owned() == !points[at].empty());
         segment.reset();

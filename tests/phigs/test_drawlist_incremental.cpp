@@ -42,19 +42,19 @@ ItemView view(const DrawList& list, const DrawItem& item) {
     ItemView v{item.primitive.index(),
                item.source.path(),
                item.source.structureVersion(),
-               item.modelTransform.get(),
-               item.viewIndex,
-               item.highlighted,
-               item.pickable,
+               item.modelTransform().get(),
+               item.viewIndex(),
+               item.highlighted(),
+               item.pickable(),
                {},
                {},
-               item.depthCue >= 0,
-               item.modelClipPlanes,
+               item.depthCue() >= 0,
+               item.modelClipPlanes(),
                {},
                0,
                0};
-    if (item.lightSet >= 0) v.lights = list.lightSets.at(static_cast<std::size_t>(item.lightSet));
-    if (item.depthCue >= 0) v.cue = list.depthCues.at(static_cast<std::size_t>(item.depthCue));
+    if (item.lightSet() >= 0) v.lights = list.lightSets.at(static_cast<std::size_t>(item.lightSet()));
+    if (item.depthCue() >= 0) v.cue = list.depthCues.at(static_cast<std::size_t>(item.depthCue()));
     if (auto p = std::get_if<DrawPolyline>(&item.primitive)) v.points = p->points;
     if (auto p = std::get_if<DrawPolymarker>(&item.primitive)) v.points = p->points;
     if (auto c = std::get_if<DrawCurve>(&item.primitive)) v.points = c->points;

@@ -129,7 +129,7 @@ TEST_CASE("input pick: a pick device can see its own filtered draw list", "[inpu
     DrawList display = unitList();
     display.items.push_back(item(square(0.2, 0.8, 0.5), {{1, 1, 1}}));
     DrawList filtered = display;
-    filtered.items[0].pickable = false;
+    filtered.items[0].context.edit().pickable = false;
     DrawListMeasurer measurer(display);
     measurer.setPickListProvider([&](const InputDevice& d) -> const DrawList& {
         return d.pickExclusion.count(1) ? filtered : display;

@@ -44,7 +44,7 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
         std::vector<int> model;
         auto item = [&](int n) {
             DrawItem i;
-            i.viewIndex = n;
+            i.context.edit().viewIndex = n;
             switch (pick(0, 6)) {
                 case 0:
                     i.primitive = DrawPolyline{ItemArray<glm::dvec3>::view(points.data(), 3), {}, {}, false};
@@ -68,7 +68,7 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
                     i.primitive = text;
                     break;
             }
-            if (pick(0, 3) == 0) i.modelTransform = ItemRef<glm::dmat4>(transform);
+            if (pick(0, 3) == 0) i.context.edit().modelTransform = ItemRef<glm::dmat4>(transform);
             return i;
         };
         for (int step = 0; step < 600; ++step) {
@@ -110,7 +110,7 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
             }
             REQUIRE(items.size() == model.size());
             for (std::size_t i = 0; i < model.size(); ++i)
-                REQUIRE(std::as_const(items)[i].viewIndex == model[i]);
+                REQUIRE(std::as_const(items)[i].viewIndex() == model[i]);
         }
         const ItemVector copy(items);
         // A copy holds its own of whatever the original owned or viewed in transient storage
@@ -147,7 +147,7 @@ TEST_CASE("item refs: a copy of a view owns its value, a copy of a permanent vie
     // Default items copy without allocating: their transform and source stay shared.
     const DrawItem item;
     const DrawItem copy = item;  // NOLINT: the copy is what is tested
-    CHECK(!copy.modelTransform.owned());
-    CHECK(copy.modelTransform.sameRecord(item.modelTransform));
+    CHECK(!copy.modelTransform().owned());
+    CHECK(copy.modelTransform().sameRecord(item.modelTransform()));
     CHECK(!copy.source.owned());
 }

@@ -71,7 +71,7 @@ TEST_CASE("pick face sides: each side of a fill area is hit by its own style", "
             glm::translate(glm::dmat4(1.0), glm::dvec3(-0.5, -0.5, -0.5));
         if (mirror)
             m = m * glm::scale(glm::translate(glm::dmat4(1.0), glm::dvec3(1, 0, 0)), glm::dvec3(-1, 1, 1));
-        i.modelTransform = m;
+        i.context.edit().modelTransform = m;
         DrawList list = unitList();
         list.items.push_back(i);
 
@@ -161,7 +161,7 @@ TEST_CASE("pick face sides: a surface is hit exactly where the side it shows is 
             for (const CullMode cull : {CullMode::None, CullMode::BackFaces, CullMode::FrontFaces}) {
                 DrawList list = unitList();
                 DrawItem i = test::surfaceItem(test::cylinder(r), {{1, 2, 3}});
-                i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
+                i.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
                 InteriorStyleSet& in = editPrimitive<DrawMesh>(i.primitive).interior.edit();
                 in.style = front;
                 in.back.style = back;

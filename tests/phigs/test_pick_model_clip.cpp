@@ -18,7 +18,7 @@ TEST_CASE("pick model clip: a clipped-away part of a fill area is not hit and hi
     DrawList list = unitList();
     list.items.push_back(item(square(0.1, 0.9, 0.2), {{1, 1, 1}}));  // behind, unclipped
     DrawItem front = item(square(0.2, 0.8, 0.6), {{2, 1, 2}});
-    front.modelClipPlanes = {{1, 0, 0, -0.5}};  // keep x >= 0.5
+    front.context.edit().modelClipPlanes = {{1, 0, 0, -0.5}};  // keep x >= 0.5
     list.items.push_back(front);
     const Picker picker;
     const auto kept = picker.nearest(list, {0.7, 0.5}, 0.001);
@@ -29,9 +29,9 @@ TEST_CASE("pick model clip: a clipped-away part of a fill area is not hit and hi
     CHECK(through->item == 0);  // the front square is clipped here: the one behind is picked
     // A second half space intersects: keep x >= 0.5 and y <= 0.4.
     {
-        std::vector<glm::dvec4> planes = list.items[1].modelClipPlanes;
+        std::vector<glm::dvec4> planes = list.items[1].modelClipPlanes();
         planes.push_back({0, -1, 0, 0.4});
-        list.items[1].modelClipPlanes = planes;
+        list.items[1].context.edit().modelClipPlanes = planes;
     }
     CHECK(picker.nearest(list, {0.7, 0.5}, 0.001)->item == 0);
     CHECK(picker.nearest(list, {0.7, 0.3}, 0.001)->item == 1);
@@ -42,7 +42,7 @@ TEST_CASE("pick model clip: markers are clipped by their positions", "[pick]") {
     DrawPolymarker m;
     m.points = {{0.3, 0.3, 0.5}, {0.7, 0.7, 0.5}};
     DrawItem markers = item(m, {{3, 1, 0}});
-    markers.modelClipPlanes = {{1, 1, 0, -1.0}};  // keep x + y >= 1
+    markers.context.edit().modelClipPlanes = {{1, 1, 0, -1.0}};  // keep x + y >= 1
     list.items.push_back(markers);
     const Picker picker;
     CHECK_FALSE(picker.nearest(list, {0.3, 0.3}, 0.001));
@@ -53,7 +53,7 @@ TEST_CASE("pick model clip: an exact surface pick goes on to the first kept inte
     DrawList list = unitList();
     const double r = 0.3;
     DrawItem i = surfaceItem(cylinder(r), {{1, 2, 3}});
-    i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
+    i.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
     const Picker picker;
     list.items.push_back(i);
     const auto near = picker.nearest(list, {0.6, 0.4}, 0.001);
@@ -61,13 +61,13 @@ TEST_CASE("pick model clip: an exact surface pick goes on to the first kept inte
     REQUIRE(near->surface);
     CHECK(near->surface->point.z > 0);  // the near side
     // Keep world z <= 0.5: the near half of the cylinder is gone, the far side is picked.
-    list.items[0].modelClipPlanes = {{0, 0, -1, 0.5}};
+    list.items[0].context.edit().modelClipPlanes = {{0, 0, -1, 0.5}};
     const auto far = picker.nearest(list, {0.6, 0.4}, 0.001);
     REQUIRE(far);
     REQUIRE(far->surface);
     CHECK(far->surface->point.z == Approx(-std::sqrt(r * r - 0.01)).margin(1e-9));
     CHECK(far->depth == Approx(0.5 + far->surface->point.z).margin(1e-9));
     // Keep world x <= 0.4: the pick at x = 0.6 misses the cylinder altogether.
-    list.items[0].modelClipPlanes = {{-1, 0, 0, 0.4}};
+    list.items[0].context.edit().modelClipPlanes = {{-1, 0, 0, 0.4}};
     CHECK_FALSE(picker.nearest(list, {0.6, 0.4}, 0.001));
 }

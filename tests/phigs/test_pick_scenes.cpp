@@ -86,10 +86,10 @@ TEST_CASE("pick: items the pick filter excludes are not picked and do not hide o
     DrawList list = unitList();
     list.items.push_back(item(square(0.2, 0.8, 0.3), {{1, 1, 1}}));
     list.items.push_back(item(square(0.2, 0.8, 0.9), {{1, 2, 2}}));
-    list.items[1].pickable = false;
+    list.items[1].context.edit().pickable = false;
     const Picker picker;
     CHECK(picker.pick(list, {0.5, 0.5}, {0.001}).path.back().pickId == 1);
-    list.items[0].pickable = false;
+    list.items[0].context.edit().pickable = false;
     CHECK(picker.pick(list, {0.5, 0.5}, {0.001}).status == InputStatus::None);
 }
 
@@ -203,7 +203,7 @@ TEST_CASE("pick: meshes are picked by their triangles with interpolated depth", 
 TEST_CASE("pick: modelling and viewing transformations are applied", "[pick]") {
     DrawList list = unitList();
     DrawItem i = item(square(0.0, 0.2, 0.0), {{1, 1, 0}});
-    i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.0, 0.5));
+    i.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.0, 0.5));
     list.items.push_back(i);
     list.views[0].orientation = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.5, 0.0));
     const Picker picker;
@@ -239,7 +239,7 @@ TEST_CASE("pick: each item is picked in its own view", "[pick]") {
     shifted.orientation = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.0, 0.0));
     list.views.push_back(shifted);
     DrawItem i = item(square(0.0, 0.2, 0.5), {{1, 1, 0}});
-    i.viewIndex = 1;
+    i.context.edit().viewIndex = 1;
     list.items.push_back(i);
     const Picker picker;
     CHECK(picker.pick(list, {0.6, 0.1}, {0.001}).status == InputStatus::Ok);

@@ -100,7 +100,7 @@ TEST_CASE("pick surface: a rational cylinder is hit on its near side, exactly", 
     DrawList list = unitList();
     const double r = 0.3;
     DrawItem i = surfaceItem(cylinder(r), {{1, 2, 3}});
-    i.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
+    i.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.5));
     list.items.push_back(i);
     const Picker picker;
     for (double x : {0.3, 0.45, 0.5, 0.62, 0.79}) {
@@ -126,11 +126,11 @@ TEST_CASE("pick surface: rotated and clipped surfaces, nearest of several, path 
     const double r = 0.3;
     // The big cylinder tilted about x, so the line crosses it obliquely.
     DrawItem tilted = surfaceItem(cylinder(r), {{1, 1, 1}});
-    tilted.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.4)) *
-                            glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(1, 0, 0));
+    tilted.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.4)) *
+                                           glm::rotate(glm::dmat4(1.0), 0.3, glm::dvec3(1, 0, 0));
     list.items.push_back(tilted);
     DrawItem front = surfaceItem(cylinder(0.1), {{2, 5, 9}});
-    front.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.75));
+    front.context.edit().modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.5, 0.5, 0.75));
     list.items.push_back(front);
     const Picker picker;
 
@@ -143,7 +143,7 @@ TEST_CASE("pick surface: rotated and clipped surfaces, nearest of several, path 
         const auto& surface = *std::get<DrawMesh>(item.primitive).surface;
         const glm::dvec3 p = h.surface->point;
         CHECK(glm::length(p - geom::evaluate(surface, h.surface->uv.x, h.surface->uv.y)) < 1e-9);
-        const glm::dvec3 world = glm::dvec3(item.modelTransform.get() * glm::dvec4(p, 1.0));
+        const glm::dvec3 world = glm::dvec3(item.modelTransform().get() * glm::dvec4(p, 1.0));
         CHECK(world.x == Approx(0.52).margin(1e-9));
         CHECK(world.y == Approx(0.5).margin(1e-9));
         CHECK(std::hypot(p.x, p.z) == Approx(h.item == 0 ? r : 0.1).margin(1e-9));

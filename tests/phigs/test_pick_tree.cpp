@@ -96,14 +96,14 @@ DrawItem randomItem(std::mt19937& rng, int index) {
         }
     }
     DrawItem item = test::item(std::move(primitive), {{1, index + 1, index}});
-    item.pickable = rng() % 10 != 0;
+    item.context.edit().pickable = rng() % 10 != 0;
     if (rng() % 3 == 0)  // a small rotation about the scene centre and a shift
-        item.modelTransform =
+        item.context.edit().modelTransform =
             glm::translate(glm::dmat4(1.0),
                            glm::dvec3(0.5, 0.5, 0.5) + 0.05 * glm::dvec3(small(rng), small(rng), 0)) *
             glm::rotate(glm::dmat4(1.0), small(rng), glm::dvec3(0, 0, 1)) *
             glm::translate(glm::dmat4(1.0), glm::dvec3(-0.5, -0.5, -0.5));
-    item.viewIndex = int(rng() % 2);
+    item.context.edit().viewIndex = int(rng() % 2);
     return item;
 }
 
@@ -159,8 +159,9 @@ TEST_CASE("pick tree: random picks hit what testing every item hits", "[pick][tr
         // A few items move or change (a new generation): refitted, not rebuilt, and still exact.
         for (int k = 0; k < 3; ++k) {
             DrawItem& item = list.items[rng() % list.items.size()];
-            item.modelTransform = glm::translate(glm::dmat4(1.0), glm::dvec3(0.05 * k, -0.03, 0.02)) *
-                                  item.modelTransform.get();
+            item.context.edit().modelTransform =
+                glm::translate(glm::dmat4(1.0), glm::dvec3(0.05 * k, -0.03, 0.02)) *
+                item.modelTransform().get();
         }
         list.items[rng() % list.items.size()] = randomItem(rng, 999);
         list.generation = 2;

@@ -258,12 +258,12 @@ TEST_CASE("light and depth cue colours in a model draw as RGB, an index through 
                 s.draw({LightSourceStateAttribute{{2, 3}, {}}, IndexAttribute{ElementType::DepthCueIndex, 1},
                         polyline3({{0, 0, 0}, {1, 0, 0}})});
             REQUIRE(list.items.size() == 1);
-            const std::vector<Light>& lights = list.lightSets.at(std::size_t(list.items[0].lightSet));
+            const std::vector<Light>& lights = list.lightSets.at(std::size_t(list.items[0].lightSet()));
             REQUIRE(lights.size() == 2);
             const glm::vec3 sunRgb(clampedRgb(model, c));
             CHECK(glm::length(lights[0].colour - sunRgb) < 1e-5f);
             CHECK(lights[1].colour == glm::vec3(entry));
-            CHECK(list.depthCues.at(std::size_t(list.items[0].depthCue)).colour == glm::vec3(entry));
+            CHECK(list.depthCues.at(std::size_t(list.items[0].depthCue())).colour == glm::vec3(entry));
         }
     }
     Scene s;

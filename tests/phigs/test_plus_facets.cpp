@@ -256,7 +256,7 @@ TEST_CASE("level curves lie on the surface and on their planes, in modelling and
         const auto meshes = itemsOf<DrawMesh>(list);
         REQUIRE(meshes.size() == 1);
         const MeshData& m = *meshes[0].first->mesh;
-        const glm::dmat4& toWorld = *meshes[0].second->modelTransform;
+        const glm::dmat4& toWorld = *meshes[0].second->modelTransform();
         // Each plane that cuts the surface (its values on a fine grid change sign) has a curve.
         std::size_t expected = 0;
         for (double t : c.levels) {

@@ -198,7 +198,7 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     fill.interior.edit().style = InteriorStyle::Solid;
     fill.edges.edit().visible = true;
     item.primitive = fill;
-    item.modelTransform.edit()[3] = glm::dvec4(10, 0, 0, 1);  // translate by 10 in x
+    item.context.edit().modelTransform.edit()[3] = glm::dvec4(10, 0, 0, 1);  // translate by 10 in x
     const ItemGeometry g = describeItem(item, glm::dmat4(1.0));
     REQUIRE(g.parts.size() == 2);
     CHECK_FALSE(g.parts[0].lines);
@@ -218,7 +218,7 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     dashed.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
     dashed.style.edit().type = LineType::Dashed;
     item.primitive = dashed;
-    item.modelTransform = glm::dmat4(1.0);
+    item.context.edit().modelTransform = glm::dmat4(1.0);
     const glm::dmat4 toPixels = glm::dmat4(100.0);
     const ItemGeometry lines =
         describeItem(item, glm::dmat4(glm::dvec4(100, 0, 0, 0), glm::dvec4(0, 100, 0, 0),

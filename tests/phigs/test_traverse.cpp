@@ -99,11 +99,11 @@ TEST_CASE("modelling transforms: composition order, global and inheritance", "[t
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 4);
-    CHECK(list.items[0].modelTransform.get() == r * t);  // preconcatenate: R applied after T
-    CHECK(list.items[1].modelTransform.get() == t * r);
+    CHECK(list.items[0].modelTransform().get() == r * t);  // preconcatenate: R applied after T
+    CHECK(list.items[1].modelTransform().get() == t * r);
     // the child's global is the parent's composite (G * (T * R)), its local starts as identity
-    CHECK(list.items[2].modelTransform.get() == (g * (t * r)) * t);
-    CHECK(list.items[3].modelTransform.get() == g * (t * r));  // restored
+    CHECK(list.items[2].modelTransform().get() == (g * (t * r)) * t);
+    CHECK(list.items[3].modelTransform().get() == g * (t * r));  // restored
 }
 
 TEST_CASE("name sets: invisibility, highlighting and pick filters", "[traverse]") {
@@ -117,19 +117,19 @@ TEST_CASE("name sets: invisibility, highlighting and pick filters", "[traverse]"
     const DrawList& list = s.ws->display();
     // child: names {2} -> invisible; parent line after return {1,2}; last line {1}
     REQUIRE(list.items.size() == 3);
-    CHECK(list.items[0].highlighted);
-    CHECK(list.items[0].pickable);
+    CHECK(list.items[0].highlighted());
+    CHECK(list.items[0].pickable());
     CHECK(list.items[1].source.path().back().elementNumber == 4);
-    CHECK(list.items[2].highlighted);
-    CHECK_FALSE(list.items[2].pickable);  // names {1}: not in the pick filter
+    CHECK(list.items[2].highlighted());
+    CHECK_FALSE(list.items[2].pickable());  // names {1}: not in the pick filter
     // a pick traversal with its own filters leaves the display alone
     TraversalFilters pickOnly;
     pickOnly.pick = NameSetFilter{{1}, {2}};
     DrawList picked = s.ws->traverse(pickOnly);
     REQUIRE(picked.items.size() == 4);
-    CHECK_FALSE(picked.items[0].pickable);
-    CHECK(picked.items[3].pickable);
-    CHECK_FALSE(picked.items[1].pickable);  // child {2}
+    CHECK_FALSE(picked.items[0].pickable());
+    CHECK(picked.items[3].pickable());
+    CHECK_FALSE(picked.items[1].pickable());  // child {2}
 }
 
 TEST_CASE("posted networks are drawn in priority order, ties in posting order", "[traverse]") {
@@ -179,14 +179,14 @@ TEST_CASE("draw list content for a small network: views, lights, depth cue, prim
     REQUIRE(list.views.size() == 3);
     CHECK(list.views[2].orientation == view.orientation);
     CHECK(list.views[2].clipMax.z == 0.5);
-    CHECK(list.items[0].viewIndex == 2);
-    CHECK(list.items[4].viewIndex == 0);  // undefined view 7 uses view 0
+    CHECK(list.items[0].viewIndex() == 2);
+    CHECK(list.items[4].viewIndex() == 0);  // undefined view 7 uses view 0
     REQUIRE(list.lightSets.size() == 1);
     CHECK(list.lightSets[0].size() == 2);
     CHECK(list.lightSets[0][1].type == LightType::Directional);
-    CHECK(list.items[0].lightSet == 0);
+    CHECK(list.items[0].lightSet() == 0);
     REQUIRE(list.depthCues.size() == 1);
-    CHECK(list.items[0].depthCue == 0);
+    CHECK(list.items[0].depthCue() == 0);
     CHECK(list.hiddenSurfaceRemoval);
     const auto& fill = primitiveAs<DrawFillArea>(list.items[0].primitive);
     CHECK(fill.interior->style == InteriorStyle::Solid);
@@ -282,8 +282,8 @@ TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full tra
     auto summary = [](const DrawList& list) {
         std::vector<std::tuple<std::vector<DrawPathLevel>, glm::dmat4, bool, int, std::size_t>> out;
         for (const auto& item : list.items)
-            out.emplace_back(item.source.path(), item.modelTransform.get(), item.highlighted, item.lightSet,
-                             item.primitive.index());
+            out.emplace_back(item.source.path(), item.modelTransform().get(), item.highlighted(),
+                             item.lightSet(), item.primitive.index());
         return out;
     };
     Traverser& traverser = s.ws->traverser();
@@ -349,13 +349,13 @@ TEST_CASE("model clipping volume: world half spaces, indicator, intersect, resto
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 5);
-    CHECK(list.items[0].modelClipPlanes.empty());  // indicator off
+    CHECK(list.items[0].modelClipPlanes().empty());  // indicator off
     // z <= 1 in modelling coordinates, shifted by 5: keep z <= 6 in the world
-    CHECK(list.items[1].modelClipPlanes == std::vector<glm::dvec4>{{0, 0, -1, 6}});
-    CHECK(list.items[2].modelClipPlanes == std::vector<glm::dvec4>{{0, 0, -1, 6}});  // inherited
-    CHECK(list.items[3].modelClipPlanes.size() == 2);  // intersected in the child
-    CHECK(list.items[3].modelClipPlanes[1] == glm::dvec4(1, 0, 0, 0));
-    CHECK(list.items[4].modelClipPlanes ==
+    CHECK(list.items[1].modelClipPlanes() == std::vector<glm::dvec4>{{0, 0, -1, 6}});
+    CHECK(list.items[2].modelClipPlanes() == std::vector<glm::dvec4>{{0, 0, -1, 6}});  // inherited
+    CHECK(list.items[3].modelClipPlanes().size() == 2);  // intersected in the child
+    CHECK(list.items[3].modelClipPlanes()[1] == glm::dvec4(1, 0, 0, 0));
+    CHECK(list.items[4].modelClipPlanes() ==
           std::vector<glm::dvec4>{{0, 0, -1, 6}});  // restored to the inherited one
 }
 
@@ -410,7 +410,7 @@ TEST_CASE("an edit replaces only its structure's segments of the draw list; the 
     CHECK(fresh == 2);
     // the draw list still reads like a vector, and writing copies a shared segment first
     DrawList copy = after;
-    copy.items[0].highlighted = true;
-    CHECK(!after.items[0].highlighted);
+    copy.items[0].context.edit().highlighted = true;
+    CHECK(!after.items[0].highlighted());
     CHECK(std::distance(after.items.begin(), after.items.end()) == static_cast<long>(after.items.size()));
 }

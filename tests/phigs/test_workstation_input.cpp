@@ -158,13 +158,13 @@ TEST_CASE("workstation output seam: the picture with the echo, input through the
     ws.attachOutput(&out);
     REQUIRE(ws.present());
     REQUIRE(out.last.items.size() == 2);
-    CHECK_FALSE(out.last.items[1].highlighted);
+    CHECK_FALSE(out.last.items[1].highlighted());
     ws.setEcho({out.last.items[1].source.path()});
     REQUIRE(ws.present());
     CHECK(out.presents == 2);
-    CHECK_FALSE(out.last.items[0].highlighted);
-    CHECK(out.last.items[1].highlighted);
-    CHECK_FALSE(ws.display().items[1].highlighted);  // the workstation's own picture is untouched
+    CHECK_FALSE(out.last.items[0].highlighted());
+    CHECK(out.last.items[1].highlighted());
+    CHECK_FALSE(ws.display().items[1].highlighted());  // the workstation's own picture is untouched
     // Input maps through the output's drawable: 512 x 384 pixels, half a pixel per device unit.
     test::IdleSource source;
     InputQueue queue;
@@ -377,6 +377,6 @@ TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the pi
         CHECK(at.y == Approx((area.ymin + area.ymax) / 2));
         CHECK(mapping.pixelsPerNpc * text->style->height == Approx(0.45 * (area.ymax - area.ymin)));
         for (std::size_t k = picture.items.size(); k < shown.items.size(); ++k)
-            CHECK_FALSE(shown.items[k].pickable);
+            CHECK_FALSE(shown.items[k].pickable());
     }
 }

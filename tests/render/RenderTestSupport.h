@@ -52,7 +52,7 @@ template <class Primitive>
 phigs::DrawItem item(Primitive primitive, int view = 0) {
     phigs::DrawItem i;
     i.primitive = std::move(primitive);
-    i.viewIndex = view;
+    i.context.edit().viewIndex = view;
     return i;
 }
 

@@ -286,7 +286,7 @@ DrawItem shadedSquare(int k, const Turn& turn, ShadingMethod front, ShadingMetho
     in.back.reflectance = ReflectanceModel::Diffuse;
     in.backProperties = in.properties;
     DrawItem i = item(m);
-    i.lightSet = 0;
+    i.context.edit().lightSet = 0;
     return i;
 }
 

@@ -19,7 +19,7 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         ball.interior.edit().style = InteriorStyle::Solid;
         ball.interior.edit().colour = {0.2f, 0.5f, 1.0f};
         DrawItem clippedBall = item(ball);
-        clippedBall.modelClipPlanes = {{-1, 0, 0, 0.3}};
+        clippedBall.context.edit().modelClipPlanes = {{-1, 0, 0, 0.3}};
         list.items.push_back(clippedBall);
         // A square cut by two half spaces: x + y <= 1.5 and y >= 0.6.
         DrawFillArea square;
@@ -27,7 +27,7 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         square.interior.edit().style = InteriorStyle::Solid;
         square.interior.edit().colour = {1.0f, 0.3f, 0.1f};
         DrawItem clippedSquare = item(square);
-        clippedSquare.modelClipPlanes = {{-1, -1, 0, 1.5}, {0, 1, 0, -0.6}};
+        clippedSquare.context.edit().modelClipPlanes = {{-1, -1, 0, 1.5}, {0, 1, 0, -0.6}};
         list.items.push_back(clippedSquare);
         // A wide line kept between x = 0.2 and x = 0.8, under a modelling transform (the planes
         // are in world coordinates).
@@ -36,9 +36,9 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         line.style.edit().colour = {1.0f, 1.0f, 0.2f};
         line.style.edit().width = 5.0f;
         DrawItem clippedLine = item(line);
-        clippedLine.modelTransform = glm::dmat4(1.0);
-        clippedLine.modelTransform.edit()[3] = glm::dvec4(0.0, 0.3, 0.0, 1.0);
-        clippedLine.modelClipPlanes = {{1, 0, 0, -0.2}, {-1, 0, 0, 0.8}};
+        clippedLine.context.edit().modelTransform = glm::dmat4(1.0);
+        clippedLine.context.edit().modelTransform.edit()[3] = glm::dvec4(0.0, 0.3, 0.0, 1.0);
+        clippedLine.context.edit().modelClipPlanes = {{1, 0, 0, -0.2}, {-1, 0, 0, 0.8}};
         list.items.push_back(clippedLine);
         // Markers at x = 0.1 .. 0.9, kept where x <= 0.5 (a marker is clipped by its position).
         DrawPolymarker markers;
@@ -49,7 +49,7 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         markers.style.edit().scale = 2.0f;
         markers.style.edit().colour = {0.3f, 1.0f, 0.3f};
         DrawItem clippedMarkers = item(markers);
-        clippedMarkers.modelClipPlanes = {{-1, 0, 0, 0.5}};
+        clippedMarkers.context.edit().modelClipPlanes = {{-1, 0, 0, 0.5}};
         list.items.push_back(clippedMarkers);
         const Image image = ws.draw(list);
         auto px = [&](double x, double y) {
@@ -71,7 +71,7 @@ TEST_CASE("model clipping: meshes, fill areas, polylines and markers keep only t
         // Unchanged planes upload nothing; moving one changes the frame block only.
         ws.draw(list);
         CHECK(ws.renderer().lastFrame().uploads == 0);
-        list.items[0].modelClipPlanes = {{-1, 0, 0, 0.35}};
+        list.items[0].context.edit().modelClipPlanes = {{-1, 0, 0, 0.35}};
         ws.draw(list);
         CHECK(ws.renderer().lastFrame().buffersCreated == 0);
         CHECK(ws.renderer().lastFrame().uploads == 1);
@@ -89,7 +89,7 @@ TEST_CASE("model clipping: more distinct planes than the frame holds are refused
             DrawPolymarker m;
             m.points = {{0.5, 0.5, 0.5}};
             DrawItem it = item(m);
-            it.modelClipPlanes = {{1, 0, 0, -0.001 * i}};
+            it.context.edit().modelClipPlanes = {{1, 0, 0, -0.001 * i}};
             list.items.push_back(it);
         }
         CHECK_THROWS_WITH(ws.draw(list), Catch::Matchers::Contains("model clipping planes"));

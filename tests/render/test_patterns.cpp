@@ -113,7 +113,7 @@ TEST_CASE("patterns: pixels take the colour of the pattern cell the placement pu
                 m.interior = interior;
                 drawn = item(m);
             }
-            drawn.modelTransform = model;
+            drawn.context.edit().modelTransform = model;
             list.items.push_back(drawn);
             const Image image = ws.draw(list);
             const glm::dmat4 toModel = glm::inverse(model);

@@ -80,8 +80,8 @@ TEST_CASE("mesh iso-lines take the PHIGS line types, their dashes measured in pi
             m.isoLineStyle.edit().colour = {1, 1, 0};
             m.isoLineStyle.edit().type = type;
             DrawItem i = item(m);
-            i.modelTransform = glm::dmat4(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
-                                          glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0, 0, 0, 1));
+            i.context.edit().modelTransform = glm::dmat4(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
+                                                         glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0, 0, 0, 1));
             list.items.push_back(i);
             list.hiddenSurfaceRemoval = true;
             return ws.draw(list);

@@ -50,7 +50,7 @@ TEST_CASE("surfaces: flat, Gouraud and Phong shading with specular reflectance",
         for (int k = 0; k < 3; ++k) {
             DrawItem i = item(shaded(sphere({0.18f + 0.32f * k, 0.5f, 0.5f}, 0.14f, 12, 8), methods[k],
                                      {0.2f, 0.5f, 1.0f}));
-            i.lightSet = 0;
+            i.context.edit().lightSet = 0;
             list.items.push_back(i);
         }
         const Image image = ws.draw(list);
@@ -97,7 +97,7 @@ TEST_CASE("lights: ambient, directional, positional and spot light on four grids
             m.interior.edit().properties.ambient = 1.0f;
             m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
-            i.lightSet = k;
+            i.context.edit().lightSet = k;
             list.items.push_back(i);
         }
         const Image image = ws.draw(list);
@@ -170,7 +170,7 @@ TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surfa
             shaded(sphere({0.7f, 0.35f, 0.5f}, 0.25f, 32, 16, 4), ShadingMethod::Normal, {0.9f, 0.9f, 0.9f});
         globe.isoLineStyle.edit().colour = {1, 1, 0};
         DrawItem g = item(globe);
-        g.lightSet = 0;
+        g.context.edit().lightSet = 0;
         list.items.push_back(g);
 
         list.hiddenSurfaceRemoval = false;
@@ -215,7 +215,7 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
         for (int k = 0; k < 5; ++k) {
             const double x = 0.05 + 0.18 * k, z = 1.0 - 0.2 * k;
             DrawItem i = item(solidRectangle(x, 0.55, x + 0.15, 0.95, z, {1, 1, 1}));
-            i.depthCue = 0;
+            i.context.edit().depthCue = 0;
             list.items.push_back(i);
         }
         for (int k = 0; k < 2; ++k) {
@@ -224,7 +224,7 @@ TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting mar
             l.style.edit().colour = {0.2f, 0.4f, 1.0f};
             l.style.edit().width = 5.0f;
             DrawItem i = item(l);
-            i.highlighted = k == 1;
+            i.context.edit().highlighted = k == 1;
             list.items.push_back(i);
         }
         const Image image = ws.draw(list);
@@ -263,7 +263,7 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
             m.interior.edit().reflectance = ReflectanceModel::Diffuse;
             m.interior.edit().properties.diffuse = 1.0f;
             DrawItem i = item(m);
-            i.lightSet = 0;
+            i.context.edit().lightSet = 0;
             list.items.push_back(i);
         }
         const Image image = ws.draw(list);
@@ -386,10 +386,10 @@ TEST_CASE("lit surfaces of more materials than the lit runs hold light as the eq
             p.specularExponent = 1.0f + 20.0f * unit(random);
             p.specularColour = {unit(random), unit(random), unit(random)};
             DrawItem i = item(m);
-            i.lightSet = 0;
+            i.context.edit().lightSet = 0;
             if (k % 3 == 0) {
-                i.modelTransform = glm::dmat4(1.0);
-                i.modelTransform.edit()[3] = glm::dvec4(0.0, 0.0, 0.1, 1.0);
+                i.context.edit().modelTransform = glm::dmat4(1.0);
+                i.context.edit().modelTransform.edit()[3] = glm::dvec4(0.0, 0.0, 0.1, 1.0);
             }
             list.items.push_back(i);
             const glm::vec3 l = -glm::vec3(key.direction);  // toward the light; n = eye = +z

@@ -125,7 +125,7 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(at(first, 64, 64).g > 100);  // white before
         }
         SECTION("moving the mesh uploads its draw records only (the modelling matrix)") {
-            list.items[3].modelTransform.edit()[3][0] = 0.1;
+            list.items[3].context.edit().modelTransform.edit()[3][0] = 0.1;
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 1);
             CHECK(renderer.lastFrame().uploadedBytes == 2 * 176);  // interior and iso-lines, adjacent

@@ -290,7 +290,7 @@ TEST_CASE("vector hardcopy against lavapipe: four views, one in perspective, wit
         m.interior.edit().reflectance = ReflectanceModel::Diffuse;
         m.isoLineStyle = LineStyle{{1, 1, 0}, LineType::Dashed, 1.0f};
         DrawItem i = item(m, v);
-        i.lightSet = 0;
+        i.context.edit().lightSet = 0;
         list.items.push_back(i);
         list.items.push_back(item(line({{-5, -5, -5}, {5, 5, 5}}, {1, 0.5f, 0}, LineType::Solid, 1.0f), v));
     }

@@ -58,7 +58,7 @@ void addAxesAndBody(DrawList& list, int view, std::shared_ptr<const MeshData> bo
     m.interior.edit().shading = ShadingMethod::Normal;
     m.interior.edit().reflectance = ReflectanceModel::Diffuse;
     DrawItem i = item(m, view);
-    i.lightSet = 0;
+    i.context.edit().lightSet = 0;
     list.items.push_back(i);
 }
 
@@ -185,10 +185,10 @@ TEST_CASE("renderer: a draw item naming a missing view or light set is refused w
         list.items.push_back(item(l));
         list.items.push_back(item(l, 3));
         CHECK_THROWS_WITH(ws.draw(list), Catch::Contains("draw item 1") && Catch::Contains("view 3"));
-        list.items.back().viewIndex = 0;
-        list.items.back().lightSet = 2;
+        list.items.back().context.edit().viewIndex = 0;
+        list.items.back().context.edit().lightSet = 2;
         CHECK_THROWS_WITH(ws.draw(list), Catch::Contains("draw item 1") && Catch::Contains("light set 2"));
-        list.items.back().lightSet = -1;
+        list.items.back().context.edit().lightSet = -1;
         CHECK_NOTHROW(ws.draw(list));
     }
     requireNoValidationMessages(context);

@@ -61,12 +61,12 @@ glm::dvec3 unit(const glm::dvec3& v) {
 
 ItemColouring::ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec3& eye,
                              const glm::vec4& highlight)
-    : eye_(eye), highlight_(item.highlighted ? highlight : glm::vec4(0.0f)) {
-    if (item.lightSet >= 0 && item.lightSet < int(list.lightSets.size()))
-        lights_ = &list.lightSets[std::size_t(item.lightSet)];
-    if (item.depthCue >= 0 && item.depthCue < int(list.depthCues.size()) &&
-        list.depthCues[std::size_t(item.depthCue)].enabled)
-        cue_ = &list.depthCues[std::size_t(item.depthCue)];
+    : eye_(eye), highlight_(item.highlighted() ? highlight : glm::vec4(0.0f)) {
+    if (item.lightSet() >= 0 && item.lightSet() < int(list.lightSets.size()))
+        lights_ = &list.lightSets[std::size_t(item.lightSet())];
+    if (item.depthCue() >= 0 && item.depthCue() < int(list.depthCues.size()) &&
+        list.depthCues[std::size_t(item.depthCue())].enabled)
+        cue_ = &list.depthCues[std::size_t(item.depthCue())];
 }
 
 glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::vec3 base,

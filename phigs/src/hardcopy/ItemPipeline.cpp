@@ -12,7 +12,7 @@ namespace {
 
 const DrawView& viewOf(const DrawList& list, const DrawItem& item) {
     static const DrawView identity;
-    return list.views.empty() ? identity : list.views[std::size_t(item.viewIndex)];
+    return list.views.empty() ? identity : list.views[std::size_t(item.viewIndex())];
 }
 
 /// The direction toward the viewer in world coordinates (the raster's frame.views[v].eye).
@@ -53,7 +53,7 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
       out_(out),
       worldToNpc_(viewOf(list, item).mapping * viewOf(list, item).orientation),
       view_(viewVolume(viewOf(list, item), list)),
-      model_(modelVolume(item.modelClipPlanes)),
+      model_(modelVolume(item.modelClipPlanes())),
       colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
     const InteriorStyleSet* interior = nullptr;
     if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
@@ -193,7 +193,7 @@ void ItemPipeline::emitRun(const std::vector<ClipVertex>& run, glm::vec3 colour,
     ProjectedLine line;
     line.type = type;
     line.width = width;
-    line.clip = item_.viewIndex;
+    line.clip = item_.viewIndex();
     for (const ClipVertex& v : run) {
         line.points.push_back(mapping_.toPage(glm::dvec3(v.h) / v.h.w));
         line.distances.push_back(v.distance);
@@ -250,7 +250,7 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
     f.occludes = !paint.hatch && paint.opacity >= 1.0f;
     f.coverOnly = paint.coverOnly;
     f.seam = paint.seam;
-    f.clip = item_.viewIndex;
+    f.clip = item_.viewIndex();
     out_.parts.push_back(std::move(f));
 }
 
@@ -262,7 +262,7 @@ void ItemPipeline::marker(const glm::dvec3& world, const MarkerStyle& style) {
     m.position = mapping_.toPage(glm::dvec3(h) / h.w);
     m.style = style;
     m.style.colour = colouring_.finish(style.colour, m.position.z);
-    m.clip = item_.viewIndex;
+    m.clip = item_.viewIndex();
     out_.parts.push_back(m);
 }
 

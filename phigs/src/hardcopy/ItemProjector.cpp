@@ -29,7 +29,7 @@ std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> point
     std::vector<glm::dvec3> world;
     world.reserve(points.size());
     for (const glm::dvec3& p : points)
-        world.push_back(projectPoint3(pipeline_.item().modelTransform.get(), p));
+        world.push_back(projectPoint3(pipeline_.item().modelTransform().get(), p));
     return world;
 }
 
@@ -43,14 +43,14 @@ void ItemProjector::operator()(const DrawCurve& curve) {
     std::vector<glm::dvec3> points = curve.points;
     if (curve.curve)
         points = refineCurve(*curve.curve, curve.rangeStart, curve.rangeEnd,
-                             pipeline_.worldToPage() * pipeline_.item().modelTransform.get(),
+                             pipeline_.worldToPage() * pipeline_.item().modelTransform().get(),
                              pipeline_.options().curveTolerance);
     pipeline_.line(toWorld(points), false, curve.style->colour, curve.style->type, curve.style->width);
 }
 
 void ItemProjector::operator()(const DrawPolymarker& markers) {
     for (const glm::dvec3& p : markers.points)
-        pipeline_.marker(projectPoint3(pipeline_.item().modelTransform.get(), p), markers.style);
+        pipeline_.marker(projectPoint3(pipeline_.item().modelTransform().get(), p), markers.style);
 }
 
 void ItemProjector::operator()(const DrawFillArea& fill) {
@@ -62,7 +62,7 @@ void ItemProjector::operator()(const DrawFillArea& fill) {
     glm::vec3 outline;
     if (render::hollowOutline(in, 0, outline) ||
         render::hollowOutline(
-            in, pipeline_.sideShown(render::fillAreaPlane(fill, pipeline_.item().modelTransform.get())),
+            in, pipeline_.sideShown(render::fillAreaPlane(fill, pipeline_.item().modelTransform().get())),
             outline))
         for (const auto& contour : world) pipeline_.line(contour, true, outline, LineType::Solid, 1.0f);
     if (in.fillsFrontFaces() || in.fillsBackFaces()) {
@@ -93,7 +93,7 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     normal = glm::normalize(normal);
     if (glm::length(fill.facetNormal) > 0.0) {
         const glm::dvec3 given =
-            glm::dvec3(glm::transpose(glm::inverse(pipeline_.item().modelTransform.get())) *
+            glm::dvec3(glm::transpose(glm::inverse(pipeline_.item().modelTransform().get())) *
                        glm::dvec4(fill.facetNormal, 0.0));
         if (glm::dot(given, normal) < 0.0) normal = -normal;
     }
@@ -142,7 +142,7 @@ void ItemProjector::operator()(const DrawText& text) {
     const auto strips =
         render::layoutText(render::StrokeFont::forIndex(text.style->font), text.text, text.style);
     const glm::vec3 colour = text.style->colour;
-    const glm::dmat4& model = pipeline_.item().modelTransform.get();
+    const glm::dmat4& model = pipeline_.item().modelTransform().get();
     if (text.annotation) {
         // Laid out in NPC at the projected reference point plus the offset, at its depth.
         const glm::dvec3 reference = projectPoint3(model, text.position);
@@ -181,9 +181,9 @@ ProjectedScene projectScene(const DrawList& list, const PageMapping& mapping, co
     for (std::size_t i = 0; i < list.items.size(); ++i) {
         const DrawItem& item = list.items[i];
         const int views = std::max<int>(1, int(list.views.size()));
-        if (item.viewIndex < 0 || item.viewIndex >= views)
+        if (item.viewIndex() < 0 || item.viewIndex() >= views)
             throw std::invalid_argument("vector hardcopy: draw item " + std::to_string(i) + " uses view " +
-                                        std::to_string(item.viewIndex) + " but the list has " +
+                                        std::to_string(item.viewIndex()) + " but the list has " +
                                         std::to_string(list.views.size()));
         ItemPipeline pipeline(list, item, mapping, options, scene);
         ItemProjector projector(pipeline);

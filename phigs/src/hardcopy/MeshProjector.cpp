@@ -10,7 +10,7 @@ namespace phigs::hardcopy {
 
 MeshProjector::MeshProjector(ItemPipeline& pipeline, const DrawMesh& mesh)
     : pipeline_(pipeline), mesh_(mesh), data_(*mesh.mesh) {
-    const glm::dmat4& model = pipeline_.item().modelTransform.get();
+    const glm::dmat4& model = pipeline_.item().modelTransform().get();
     world_.reserve(data_.positions.size());
     for (const glm::vec3& p : data_.positions) {
         const glm::dvec4 q = model * glm::dvec4(glm::dvec3(p), 1.0);
@@ -60,7 +60,7 @@ void MeshProjector::facets(bool coverOnly) {
     const bool normals = data_.normals.size() == count && count > 0;
     const bool colours = data_.colours.size() == count && count > 0;
     const glm::dmat3 normalMatrix =
-        glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform.get())));
+        glm::transpose(glm::inverse(glm::dmat3(pipeline_.item().modelTransform().get())));
     std::vector<FacetVertex> vertices(3);
     std::vector<std::vector<glm::dvec3>> triangle{std::vector<glm::dvec3>(3)};  // one allocation for all
     for (std::size_t t = 0; t < facing_.size(); ++t) {

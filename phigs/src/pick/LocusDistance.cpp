@@ -162,7 +162,7 @@ void mesh(LocusMeasure& m, const DrawMesh& d, const glm::dmat4& model) {
 // Text strokes as the renderer lays them out (world coordinates).
 void text(LocusMeasure& m, const DrawItem& item, const DrawText& t) {
     if (t.annotation) {
-        m.at(projectPoint3(item.modelTransform.get(), t.position));
+        m.at(projectPoint3(item.modelTransform().get(), t.position));
         return;
     }
     const render::ItemGeometry g = render::describeItem(item, glm::dmat4(1.0));
@@ -174,8 +174,8 @@ void text(LocusMeasure& m, const DrawItem& item, const DrawText& t) {
 }  // namespace
 
 double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
-    LocusMeasure m(point, clip && !item.modelClipPlanes.empty() ? &item.modelClipPlanes : nullptr);
-    const glm::dmat4& model = item.modelTransform.get();
+    LocusMeasure m(point, clip && !item.modelClipPlanes().empty() ? &item.modelClipPlanes() : nullptr);
+    const glm::dmat4& model = item.modelTransform().get();
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;

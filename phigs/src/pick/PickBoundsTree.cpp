@@ -52,10 +52,10 @@ bool PickBoundsTree::unchanged(const DrawList& list) const {
 
 PickBoundsTree::Key PickBoundsTree::keyOf(const DrawItem& item) const {
     Key key;
-    key.pickable = item.pickable;
-    if (!item.pickable) return key;
-    key.view = item.viewIndex;
-    key.transform = item.modelTransform.get();
+    key.pickable = item.pickable();
+    if (!item.pickable()) return key;
+    key.view = item.viewIndex();
+    key.transform = item.modelTransform().get();
     if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
         key.geometry = mesh->surface.get();
         key.mesh = mesh->mesh.get();
@@ -117,10 +117,11 @@ bool PickBoundsTree::modellingBox(const DrawItem& item, glm::dvec3& lo, glm::dve
 
 PickItemBounds PickBoundsTree::boundsOf(const DrawList& list, const DrawItem& item) {
     PickItemBounds b;
-    if (!item.pickable || item.viewIndex < 0 || static_cast<std::size_t>(item.viewIndex) >= list.views.size())
+    if (!item.pickable() || item.viewIndex() < 0 ||
+        static_cast<std::size_t>(item.viewIndex()) >= list.views.size())
         return b;
     b.tested = true;
-    b.toNpc = views_[static_cast<std::size_t>(item.viewIndex)] * item.modelTransform.get();
+    b.toNpc = views_[static_cast<std::size_t>(item.viewIndex())] * item.modelTransform().get();
     b.fromNpc = glm::inverse(b.toNpc);
     b.lo = glm::dvec3(-infinity);
     b.hi = glm::dvec3(infinity);

@@ -31,13 +31,13 @@ Projected project(const glm::dmat4& m, const glm::dvec3& p) {
 
 /// Whether a world point lies inside the item's model clipping volume (every half space).
 bool insideModelClip(const DrawItem& item, const glm::dvec3& world) {
-    for (const glm::dvec4& plane : item.modelClipPlanes)
+    for (const glm::dvec4& plane : item.modelClipPlanes())
         if (glm::dot(glm::dvec3(plane), world) + plane.w < 0.0) return false;
     return true;
 }
 
 glm::dvec3 toWorld(const DrawItem& item, const glm::dvec3& modelling) {
-    const glm::dvec4 h = item.modelTransform.get() * glm::dvec4(modelling, 1.0);
+    const glm::dvec4 h = item.modelTransform().get() * glm::dvec4(modelling, 1.0);
     return glm::dvec3(h) / h.w;
 }
 
@@ -192,7 +192,7 @@ std::optional<double> fillAreaHit(const Aperture& ap, const DrawItem& item, cons
                                   const DrawFillArea& f,
                                   const std::vector<std::vector<Projected>>& contours) {
     const InteriorStyleSet& in = *f.interior;
-    const int side = render::sideShown(render::fillAreaPlane(f, item.modelTransform.get()),
+    const int side = render::sideShown(render::fillAreaPlane(f, item.modelTransform().get()),
                                        view.mapping * view.orientation);
     const bool culled =
         (side > 0 && in.cull == CullMode::FrontFaces) || (side < 0 && in.cull == CullMode::BackFaces);
@@ -414,17 +414,18 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                                     const WorkstationMapping& mapping, SurfaceTest surfaceTest,
                                     const PickItemBounds* bounds) const {
     const DrawItem& item = list.items[index];
-    if (!item.pickable) return std::nullopt;
+    if (!item.pickable()) return std::nullopt;
     const auto* drawMesh = std::get_if<DrawMesh>(&item.primitive);
     const bool exactSurface = drawMesh && drawMesh->surface;
     if (surfaceTest == SurfaceTest::Tessellation && !exactSurface) return std::nullopt;
-    if (item.viewIndex < 0 || static_cast<std::size_t>(item.viewIndex) >= list.views.size())
+    if (item.viewIndex() < 0 || static_cast<std::size_t>(item.viewIndex()) >= list.views.size())
         return std::nullopt;
-    const DrawView& view = list.views[static_cast<std::size_t>(item.viewIndex)];
+    const DrawView& view = list.views[static_cast<std::size_t>(item.viewIndex())];
     if (view.clipXY && (npc.x < view.clipMin.x || npc.x > view.clipMax.x || npc.y < view.clipMin.y ||
                         npc.y > view.clipMax.y))
         return std::nullopt;
-    const glm::dmat4 m = bounds ? bounds->toNpc : view.mapping * view.orientation * item.modelTransform.get();
+    const glm::dmat4 m =
+        bounds ? bounds->toNpc : view.mapping * view.orientation * item.modelTransform().get();
     const Aperture ap{npc, aperture};
 
     std::optional<PickHit> hit;
@@ -513,7 +514,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
     hit->item = index;
     // Model clipping: the point under the aperture centre at the hit's depth must be kept
     // (markers and surfaces were tested at their own points above).
-    if (!item.modelClipPlanes.empty() && !hit->surface &&
+    if (!item.modelClipPlanes().empty() && !hit->surface &&
         !std::holds_alternative<DrawPolymarker>(item.primitive)) {
         const glm::dvec4 h = glm::inverse(view.mapping * view.orientation) * glm::dvec4(npc, hit->depth, 1.0);
         if (h.w == 0.0 || !insideModelClip(item, glm::dvec3(h) / h.w)) return std::nullopt;

@@ -36,7 +36,7 @@ glm::vec3 mixIn(ColourModel model, glm::vec3 a, glm::vec3 b, double t) {
 class Builder {
 public:
     Builder(const DrawItem& item, const glm::dmat4& worldToPixels)
-        : model_(item.modelTransform.get()), toPixels_(worldToPixels) {}
+        : model_(item.modelTransform().get()), toPixels_(worldToPixels) {}
 
     ItemGeometry geometry;
 
@@ -338,7 +338,7 @@ int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc) {
 std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels) {
     Hasher h;
     h.value(item.primitive.index());
-    h.value(item.modelTransform.get());
+    h.value(item.modelTransform().get());
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;

@@ -102,7 +102,7 @@ std::optional<PatternMap> patternMap(const PatternPlacement& placement, const gl
 }
 
 std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern& pattern) {
-    const glm::dmat4& model = item.modelTransform.get();
+    const glm::dmat4& model = item.modelTransform().get();
     if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) {
         if (!patterned(fill->interior)) return std::nullopt;
         const std::optional<Plane> plane = fillPlane(*fill, model);

@@ -23,10 +23,9 @@ struct PrimitiveOwns {
 
 bool ItemVector::ownsSomething(const DrawItem& item) {
     // Every member of DrawItem that may own is asked: a new one must be added here.
-    static_assert(sizeof(DrawItem) == 120 && sizeof(DrawPolyline) == 48 && sizeof(DrawPolymarker) == 24,
+    static_assert(sizeof(DrawItem) == 88 && sizeof(DrawPolyline) == 48 && sizeof(DrawPolymarker) == 24,
                   "DrawItem or a primitive changed: is every member that may own asked below?");
-    return item.modelTransform.owned() || item.source.owned() || item.modelClipPlanes.owned() ||
-           ownsSomething(item.primitive);
+    return item.context.owned() || item.source.owned() || ownsSomething(item.primitive);
 }
 
 bool ItemVector::ownsSomething(const DrawPrimitive& primitive) {

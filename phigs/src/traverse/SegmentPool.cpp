@@ -19,6 +19,7 @@ void empty(DrawSegment& segment) {
     segment.points.clear();
     segment.transforms.clear();
     segment.clipPlanes.clear();
+    segment.contexts.clear();
     segment.fillAreas.clear();
     segment.texts.clear();
     segment.storePoints.reset();

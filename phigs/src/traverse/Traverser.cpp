@@ -706,6 +706,8 @@ private:
         segment_.reset();
         transform_ = nullptr;
         clip_ = {};
+        context_ = lastContext_ = nullptr;
+        contextEpoch_ = 0;
     }
 
     /// The segment's record of the current transform: a new one only when it changed.
@@ -819,18 +821,42 @@ private:
             return DrawPrimitive(std::forward<Primitive>(primitive));
     }
 
+    /// The segment's context for the items of the current state (null: they are invisible),
+    /// a new record only when the state changed what it holds.
+    const DrawContext* context(const State& state) {
+        if (contextEpoch_ != epoch_) newContext(state);  // out of line, so the common case inlines
+        return context_;
+    }
+    [[gnu::noinline]] void newContext(const State& state) {
+        contextEpoch_ = epoch_;
+        const ItemFields& f = itemFields(state);
+        context_ = nullptr;
+        if (f.invisible) return;
+        ItemRef<glm::dmat4> t = transform(state);
+        ItemArray<glm::dvec4> clip = state.modelClip ? clipPlanes(state) : ItemArray<glm::dvec4>{};
+        const DrawContext* last = lastContext_;
+        if (last && last->modelTransform.sameRecord(t) && last->viewIndex == f.viewIndex &&
+            last->lightSet == f.lightSet && last->depthCue == f.depthCue &&
+            last->highlighted == f.highlighted && last->pickable == f.pickable &&
+            last->modelClipPlanes.data() == clip.data() && last->modelClipPlanes.size() == clip.size()) {
+            context_ = last;  // an attribute of the primitives changed, not their context
+            return;
+        }
+        context_ = lastContext_ = &segment_->contexts.emplace_back(DrawContext{
+            std::move(t), f.viewIndex, f.lightSet, f.depthCue, f.highlighted, f.pickable, std::move(clip)});
+    }
+
     template <class Primitive>
     DrawItem* emit(const Structure& /*the segment's*/, int number, const State& state,
                    Primitive&& primitive) {
-        const ItemFields& f = itemFields(state);
-        if (f.invisible) return nullptr;
+        const DrawContext* shared = context(state);
+        if (!shared) return nullptr;
         // Built in place (the storage may hold a cold item of an earlier traversal: written once).
         DrawPrimitive p = held(std::forward<Primitive>(primitive));
         const bool owns = ItemVector::ownsSomething(p);  // the other fields view the segment
-        DrawItem& item = segment_->items.emplaceKnown(
-            owns, std::move(p), transform(state), f.viewIndex, f.lightSet, f.depthCue, f.highlighted,
-            f.pickable, DrawSource::view(&segment_->source, number, state.pickId),
-            state.modelClip ? clipPlanes(state) : ItemArray<glm::dvec4>{});
+        DrawItem& item =
+            segment_->items.emplaceKnown(owns, std::move(p), ItemRef<DrawContext>::view(shared),
+                                         DrawSource::view(&segment_->source, number, state.pickId));
         return &item;
     }
 
@@ -1272,10 +1298,13 @@ private:
     Resolved<MarkerStyle> marker_;
     Resolved<InteriorStyleSet> interior_;
     Resolved<EdgeStyle> edge_;
-    const glm::dmat4* transform_ = nullptr;  ///< the segment's record of the last transform
-    std::uint64_t transformEpoch_ = 0;       ///< the state transform_ was last compared with
-    ItemFields fields_;                      ///< the last state's item fields
-    std::span<const glm::dvec4> clip_;       ///< the segment's copy of the last clipping volume
+    const glm::dmat4* transform_ = nullptr;     ///< the segment's record of the last transform
+    std::uint64_t transformEpoch_ = 0;          ///< the state transform_ was last compared with
+    ItemFields fields_;                         ///< the last state's item fields
+    std::span<const glm::dvec4> clip_;          ///< the segment's copy of the last clipping volume
+    const DrawContext* context_ = nullptr;      ///< the current state's context (null: invisible)
+    const DrawContext* lastContext_ = nullptr;  ///< the segment's last context record
+    std::uint64_t contextEpoch_ = 0;            ///< the state context_ was made for
 };
 
 }  // namespace

@@ -582,20 +582,20 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
 
     for (std::size_t i = 0; i < list.items.size(); ++i) {
         const DrawItem& item = list.items[i];
-        if (item.viewIndex < 0 ||
-            (item.viewIndex >= int(list.views.size()) && !(list.views.empty() && item.viewIndex == 0)))
+        if (item.viewIndex() < 0 ||
+            (item.viewIndex() >= int(list.views.size()) && !(list.views.empty() && item.viewIndex() == 0)))
             throw std::invalid_argument("Renderer: " + itemName(i) + " uses view " +
-                                        std::to_string(item.viewIndex) + " but the list has " +
+                                        std::to_string(item.viewIndex()) + " but the list has " +
                                         std::to_string(list.views.size()));
-        if (item.lightSet >= int(list.lightSets.size()) || item.lightSet >= gpu::kMaxLightSets)
+        if (item.lightSet() >= int(list.lightSets.size()) || item.lightSet() >= gpu::kMaxLightSets)
             throw std::invalid_argument("Renderer: " + itemName(i) + " uses light set " +
-                                        std::to_string(item.lightSet) + " but the list has " +
+                                        std::to_string(item.lightSet()) + " but the list has " +
                                         std::to_string(list.lightSets.size()));
-        if (item.depthCue >= int(list.depthCues.size()) || item.depthCue >= gpu::kMaxCues)
+        if (item.depthCue() >= int(list.depthCues.size()) || item.depthCue() >= gpu::kMaxCues)
             throw std::invalid_argument("Renderer: " + itemName(i) + " uses depth cue " +
-                                        std::to_string(item.depthCue) + " but the list has " +
+                                        std::to_string(item.depthCue()) + " but the list has " +
                                         std::to_string(list.depthCues.size()));
-        const DrawView& view = list.views.empty() ? defaultView : list.views[item.viewIndex];
+        const DrawView& view = list.views.empty() ? defaultView : list.views[item.viewIndex()];
         const glm::dmat4 worldToPixels = npcToPixels * view.mapping * view.orientation;
         VkRect2D scissor{};
         {
@@ -605,15 +605,15 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             scissor = {{r.x, r.y}, {r.width, r.height}};
         }
         if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
-        const bool cued = item.depthCue >= 0 && list.depthCues[std::size_t(item.depthCue)].enabled;
+        const bool cued = item.depthCue() >= 0 && list.depthCues[std::size_t(item.depthCue())].enabled;
         const bool clipsDepth =
             (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
         const glm::vec2 modelClip = clipPlaneRange(item, i);
 
         // The attributes every part of this item shares.
         gpu::DrawParams base;
-        base.indices =
-            glm::ivec4(item.viewIndex, item.lightSet, item.depthCue, item.highlighted ? gpu::Highlight : 0);
+        base.indices = glm::ivec4(item.viewIndex(), item.lightSet(), item.depthCue(),
+                                  item.highlighted() ? gpu::Highlight : 0);
         // One draw: an interior part's faces of one side's style (backSide), the culled sides in cull.
         auto addDraw = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
                            bool meshNormals, VkBuffer vertices, VkBuffer indices, bool backSide, int cull) {
@@ -640,7 +640,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 const ReflectanceModel backModel =
                     s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
                 if ((s.reflectance != ReflectanceModel::None || backModel != ReflectanceModel::None) &&
-                    item.lightSet >= 0)
+                    item.lightSet() >= 0)
                     flags |= gpu::Lit;
                 if (s.distinguishBackFaces) {
                     flags |= gpu::DistinguishBack;
@@ -676,7 +676,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     interior->distinguishBackFaces ? interior->back.reflectance : interior->reflectance;
                 c.pipeline |= (backModel == interior->reflectance ? int(interior->reflectance) : 0)
                               << kReflectanceShift;
-                const int signature = signatures[std::size_t(item.lightSet)];
+                const int signature = signatures[std::size_t(item.lightSet())];
                 c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
                 if (shade == gpu::Gouraud) {
                     c.pipeline |= kVertexLighting;
@@ -693,7 +693,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 // coordinates rides where lines read no reflectance.
                 c.pipeline |= part.side > 0 ? kSidedFront : kSidedBack;
                 push.backReflectance = glm::vec4(
-                    render::meshViewer(view.mapping * view.orientation * item.modelTransform.get()));
+                    render::meshViewer(view.mapping * view.orientation * item.modelTransform().get()));
             }
             if (!cued) c.pipeline |= kNoDepthCue;
             if (interior && part.role == render::PartRole::Interior &&
@@ -712,14 +712,14 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             c.first = part.first;
             c.count = part.count;
             c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
-            c.view = item.viewIndex;
-            c.runOffset = std::uint32_t(std::size_t(item.viewIndex) * litStride_);
-            c.push.firstLight = item.lightSet >= 0 ? firstLights[std::size_t(item.lightSet)] : 0;
+            c.view = item.viewIndex();
+            c.runOffset = std::uint32_t(std::size_t(item.viewIndex()) * litStride_);
+            c.push.firstLight = item.lightSet() >= 0 ? firstLights[std::size_t(item.lightSet())] : 0;
             if ((flags & gpu::Lit) && !(flags & gpu::DistinguishBack) &&
                 ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
                 // A uniform colour is folded in too (shaders/scene.glsl, litPremultiplied).
                 const bool uniformColour = !part.vertexColours && !patterned;
-                const int run = premultipliedLights(list, item.viewIndex, item.lightSet, push.reflectance,
+                const int run = premultipliedLights(list, item.viewIndex(), item.lightSet(), push.reflectance,
                                                     push.specularColour,
                                                     uniformColour ? glm::vec3(push.colour) : glm::vec3(1.0f));
                 if (run >= 0) {
@@ -727,7 +727,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                     c.runOffset = std::uint32_t(std::size_t(run) * litStride_);
                 }
             }
-            c.push.depthCue = item.depthCue;
+            c.push.depthCue = item.depthCue();
             c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
             c.scissor = scissor;
             pipeline(c.pipeline);
@@ -755,7 +755,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             if (!mesh->mesh) continue;
             CachedMesh& cached = compileMesh(mesh->mesh);
             if (!cached.vertices) continue;
-            base.model = toFloat(item.modelTransform.get());
+            base.model = toFloat(item.modelTransform().get());
             base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
             addMeshParts(*mesh, cached, addPart);
             continue;
@@ -918,17 +918,17 @@ void Renderer::uploadPatterns() {
 }
 
 glm::vec2 Renderer::clipPlaneRange(const DrawItem& item, std::size_t index) {
-    if (item.modelClipPlanes.empty()) return glm::vec2(0.0f);
+    if (item.modelClipPlanes().empty()) return glm::vec2(0.0f);
     for (const auto& [planes, first] : clipPlaneSets_)
-        if (planes == item.modelClipPlanes) return glm::vec2(float(first), float(planes.size()));
+        if (planes == item.modelClipPlanes()) return glm::vec2(float(first), float(planes.size()));
     const int first = int(clipPlanes_.size());
-    if (clipPlanes_.size() + item.modelClipPlanes.size() > std::size_t(gpu::kMaxClipPlanes))
+    if (clipPlanes_.size() + item.modelClipPlanes().size() > std::size_t(gpu::kMaxClipPlanes))
         throw std::invalid_argument("Renderer: " + itemName(index) + " brings the model clipping planes to " +
-                                    std::to_string(clipPlanes_.size() + item.modelClipPlanes.size()) +
+                                    std::to_string(clipPlanes_.size() + item.modelClipPlanes().size()) +
                                     ", at most " + std::to_string(gpu::kMaxClipPlanes) + " distinct ones");
-    for (const glm::dvec4& plane : item.modelClipPlanes) clipPlanes_.push_back(glm::vec4(plane));
-    clipPlaneSets_.emplace_back(item.modelClipPlanes, first);
-    return glm::vec2(float(first), float(item.modelClipPlanes.size()));
+    for (const glm::dvec4& plane : item.modelClipPlanes()) clipPlanes_.push_back(glm::vec4(plane));
+    clipPlaneSets_.emplace_back(item.modelClipPlanes(), first);
+    return glm::vec2(float(first), float(item.modelClipPlanes().size()));
 }
 
 void Renderer::uploadFrame(const DrawList& list, VkExtent2D extent, const std::vector<int>& firstLights) {

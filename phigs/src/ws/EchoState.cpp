@@ -9,8 +9,8 @@ namespace {
 DrawItem echoItem(DrawPrimitive primitive) {
     DrawItem item;
     item.primitive = std::move(primitive);
-    item.viewIndex = 0;  // world = NPC: the items are placed in NPC already
-    item.pickable = false;
+    item.context.edit().viewIndex = 0;  // world = NPC: the items are placed in NPC already
+    item.context.edit().pickable = false;
     return item;
 }
 

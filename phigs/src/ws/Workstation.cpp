@@ -483,7 +483,8 @@ const DrawList& Workstation::shownPicture() {
     if (echo_.empty()) return picture;
     echoed_ = picture;
     for (DrawItem& item : echoed_.items)
-        if (std::find(echo_.begin(), echo_.end(), item.source.path()) != echo_.end()) item.highlighted = true;
+        if (std::find(echo_.begin(), echo_.end(), item.source.path()) != echo_.end())
+            item.context.edit().highlighted = true;
     return echoed_;
 }
 

@@ -3,6 +3,7 @@
 // One primitive of a draw list with every attribute resolved (see DrawList.h).
 
 #include "phigs/core/Attributes.h"
+#include "phigs/traverse/DrawContext.h"
 #include "phigs/traverse/DrawPath.h"
 #include "phigs/traverse/DrawSource.h"
 #include "phigs/traverse/ItemArray.h"
@@ -163,28 +164,26 @@ bool holdsPrimitive(const DrawPrimitive& primitive) {
     return std::holds_alternative<detail::HeldAs<T>>(primitive);
 }
 
-/// The identity transform, shared by the items that have no modelling transform of their own.
-inline const glm::dmat4& identityTransform() {
-    static const glm::dmat4 identity(1.0);
-    return identity;
-}
-
-/// One primitive with everything a consumer needs to draw or pick it. The transform and the
-/// styles are views of records shared by many items (one transform per run of items of a
-/// segment, one interned record per distinct style); assigning a value gives an item its own.
+/// One primitive with everything a consumer needs to draw or pick it. The context (placement,
+/// view, lights, depth cue, highlighting, pickability, clipping) and the styles are views of
+/// records shared by many items (one context per run of items of a segment in one state, one
+/// interned record per distinct style); `context.edit()` gives an item a context of its own.
 struct DrawItem {
     DrawPrimitive primitive;
-    /// Composite modelling transform (global * local), to world.
-    ItemRef<glm::dmat4> modelTransform = ItemRef<glm::dmat4>::permanent(&identityTransform());
-    std::int32_t viewIndex = 0;  ///< index into DrawList::views
-    std::int32_t lightSet = -1;  ///< index into DrawList::lightSets, -1: no lights
-    std::int32_t depthCue = -1;  ///< index into DrawList::depthCues, -1: none
-    bool highlighted = false;
-    bool pickable = true;  ///< false when the pick filter or detectability excludes it
+    ItemRef<DrawContext> context;
     DrawSource source;
-    /// Model clipping volume in world coordinates: keep x where dot(plane.xyz, x) + plane.w >= 0
-    /// for every plane; empty when the model clipping indicator is off.
-    ItemArray<glm::dvec4> modelClipPlanes;
+
+    /// Composite modelling transform (global * local), to world.
+    const ItemRef<glm::dmat4>& modelTransform() const { return context->modelTransform; }
+    std::int32_t viewIndex() const { return context->viewIndex; }  ///< index into DrawList::views
+    /// Index into DrawList::lightSets, -1: no lights.
+    std::int32_t lightSet() const { return context->lightSet; }
+    std::int32_t depthCue() const { return context->depthCue; }  ///< into DrawList::depthCues, -1: none
+    bool highlighted() const { return context->highlighted; }
+    /// False when the pick filter or detectability excludes it.
+    bool pickable() const { return context->pickable; }
+    /// Model clipping volume in world coordinates (see DrawContext); empty when off.
+    const ItemArray<glm::dvec4>& modelClipPlanes() const { return context->modelClipPlanes; }
 };
 
 }  // namespace phigs

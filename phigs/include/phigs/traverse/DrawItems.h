@@ -21,7 +21,7 @@
 namespace phigs {
 
 /// Consecutive draw items produced together (one structure's elements between two executes),
-/// with the storage their views refer to (points, transforms, clipping volumes, the path above
+/// with the storage their views refer to (points, transforms, clipping volumes, contexts, the path above
 /// the structure, the interned styles). A copy copies the items only: each copied item holds
 /// its own values.
 struct DrawSegment {
@@ -29,6 +29,7 @@ struct DrawSegment {
     BlockPool<glm::dvec3> points;             ///< what the items' point views show
     BlockPool<glm::dmat4> transforms;         ///< one per run of items that share a transform
     BlockPool<glm::dvec4> clipPlanes;         ///< one volume per run of items that share it
+    StableList<DrawContext> contexts;         ///< one per run of items in one state
     StableList<DrawFillArea> fillAreas;       ///< what the items' fill area views show
     StableList<DrawText> texts;               ///< what the items' text views show
     DrawSource::Shared source;                ///< what the items' sources view (set before any item)
