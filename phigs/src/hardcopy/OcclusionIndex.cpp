@@ -87,7 +87,8 @@ void OcclusionIndex::bin() {
     for (const Triangle& t : triangles_) lo = glm::min(lo, t.lo()), hi = glm::max(hi, t.hi());
     // About four cells per triangle: the model covers a part of the page only, and a query then
     // meets few triangles that its cells hold but its segment misses.
-    const int n = std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxOcclusionCells);
+    const int n =
+        std::clamp(int(std::ceil(2.0 * std::sqrt(double(triangles_.size())))), 1, kMaxOcclusionCells);
     columns_ = rows_ = n;
     lo_ = lo;
     cell_ = glm::max((hi - lo) / double(n), glm::dvec2(1e-9));
