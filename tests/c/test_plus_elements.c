@@ -110,6 +110,7 @@ static void nurbs(void) {
     grid.num_points.size_x = 3, grid.num_points.size_y = 2, grid.points.point3d = grid_points;
     memset(&trim, 0, sizeof trim);
     trim.visible = PEDGE_ON, trim.rationality = PNON_RATIONAL, trim.order = 2;
+    trim.approx_type = PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS, trim.approx_val = 5;
     trim.knots.num_floats = 6, trim.knots.floats = tk;
     trim.cpts.point2d.num_points = 4, trim.cpts.point2d.points = trim_points;
 
@@ -127,6 +128,15 @@ static void nurbs(void) {
                    Pfn_nuni_bsp_curv);
     EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, NULL, 0, NULL), -204,
                    Pfn_nuni_bsp_surf);
+    /* A visibility other than PEDGE_OFF / PEDGE_ON, or an approximation value that is not
+     * finite, is refused; PCURV_WS_DEP keeps no value (answered 1). */
+    trim.visible = (Pedge_flag)3;
+    EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop), PE_ENUM_TYPE_INVAL,
+                   Pfn_nuni_bsp_surf);
+    trim.visible = PEDGE_OFF, trim.approx_val = (Pfloat)NAN;
+    EXPECT_REFUSED(pnuni_bsp_surf(2, 2, &uknots, &vknots, PNON_RATIONAL, &grid, 1, &loop), -202,
+                   Pfn_nuni_bsp_surf);
+    trim.approx_type = PCURV_WS_DEP, trim.approx_val = 3;
     /* A trim curve trims over [tmin, tmax] only: the part from t = 1 to 2 is the edge
      * (0.9, 0.1) - (0.5, 0.9); a range outside the knots' domain or reversed is refused. */
     trim.tmin = 1, trim.tmax = 2;
@@ -161,6 +171,8 @@ static void nurbs(void) {
             CHECK(t->order == 2 && t->rationality == PNON_RATIONAL && t->knots.num_floats == 6);
             CHECK(t->cpts.point2d.num_points == 4 && near(t->cpts.point2d.points[2].y, 0.9));
             CHECK(t->tmin == 0 && t->tmax == 3); /* tmin == tmax: the whole domain */
+            CHECK(t->visible == PEDGE_ON && t->approx_type == PCURV_CONST_PARAM_SUBDIV_BETWEEN_KNOTS &&
+                  t->approx_val == 5);
         }
     }
     d = content(3, PELEM_NUNI_BSP_SURF);
@@ -168,6 +180,7 @@ static void nurbs(void) {
     if (d && d->nuni_bsp_surf.num_trim_loops == 1 && d->nuni_bsp_surf.trim_loops[0].num_curves == 1) {
         const Ptrimcurve* t = &d->nuni_bsp_surf.trim_loops[0].curves[0];
         CHECK(t->order == 2 && t->tmin == 1 && t->tmax == 2 && t->cpts.point2d.num_points == 2);
+        CHECK(t->visible == PEDGE_OFF && t->approx_type == PCURV_WS_DEP && t->approx_val == 1);
         CHECK(t->knots.num_floats == 4 && t->knots.floats[0] == 1 && t->knots.floats[3] == 2);
         if (t->cpts.point2d.num_points == 2) {
             CHECK(near(t->cpts.point2d.points[0].x, 0.9) && near(t->cpts.point2d.points[0].y, 0.1));

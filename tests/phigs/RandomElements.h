@@ -92,6 +92,9 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
         case 8: {
             NurbsSurfaceElement s{randomSurface(rng), {}};
             if (randomInt(rng, 0, 1)) s.trimLoops.push_back({randomCurve(rng, false)});
+            if (!s.trimLoops.empty() && randomInt(rng, 0, 1))
+                s.trimDisplay = {
+                    {randomInt(rng, 0, 1) == 1, randomInt(rng, 1, 8), randomInt(rng, 1, 40) / 4.0}};
             return s;
         }
         case 9: {

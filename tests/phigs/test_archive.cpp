@@ -86,7 +86,7 @@ TEST_CASE("encoding is exact: reals and strings survive bit for bit", "[archive]
                    ApplicationDataElement{std::string("a\0b c\nd", 7)},
                    TextElement{{}, {1, 0, 0}, {0, 1, 0}, "", true}};
     std::string text = ArchiveFile::encode(contents);
-    CHECK(text.starts_with("PHIGS-ARCHIVE 2\nSTRUCTURE 3 3\nPOLYLINE_3 2 0.1 1e-300"));
+    CHECK(text.starts_with("PHIGS-ARCHIVE 3\nSTRUCTURE 3 3\nPOLYLINE_3 2 0.1 1e-300"));
     CHECK(ArchiveFile::decode(text, "memory", nullptr) == contents);
 }
 

@@ -1,9 +1,11 @@
 #include "ArchiveV1Elements.h"
+#include "RandomElements.h"
 #include "phigs/core/Error.h"
 #include "phigs/store/ArchiveFile.h"
 
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -118,7 +120,7 @@ TEST_CASE("version-1 archives written before version 2 read back exactly, versio
         records += count.records;
 
         // Opened as an archive file it reads the same and stays as it was; written again it is
-        // version 2 and reads back equal.
+        // the current version and reads back equal.
         const auto copy = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / path.filename();
         std::filesystem::copy_file(path, copy, std::filesystem::copy_options::overwrite_existing);
         ErrorLog log;
@@ -126,7 +128,7 @@ TEST_CASE("version-1 archives written before version 2 read back exactly, versio
         CHECK(archive.contents() == expected);
         CHECK(readFile(copy) == text);
         const std::string rewritten = ArchiveFile::encode(read);
-        CHECK(rewritten.starts_with("PHIGS-ARCHIVE 2\n"));
+        CHECK(rewritten.starts_with("PHIGS-ARCHIVE " + std::to_string(ArchiveFile::kFormatVersion) + "\n"));
         CHECK(ArchiveFile::decode(rewritten, "memory", nullptr) == expected);
     }
     CHECK(records >= 16);
@@ -168,12 +170,50 @@ TEST_CASE("version-2 data round-trips: cut or missing, it is refused naming the 
     }
 }
 
-TEST_CASE("archive versions other than 1 and 2 are refused by number", "[archive][errors]") {
-    const std::string body = ArchiveFile::encode({}).substr(std::string("PHIGS-ARCHIVE 2").size());
-    CHECK(ArchiveFile::decode("PHIGS-ARCHIVE 2" + body, "memory", nullptr).empty());
-    for (const char* version : {"0", "3", "-1", "12"})
-        CHECK(refusal("PHIGS-ARCHIVE " + std::string(version) + body) ==
-              "memory: line 1: unsupported archive version " + std::string(version) +
-                  " (this reader reads 1 to 2)");
+TEST_CASE("version-2 archives read back with every trimming curve hidden and workstation dependent",
+          "[archive]") {
+    std::mt19937 rng(7);
+    NurbsSurfaceElement surface{testing::randomSurface(rng), {}};
+    surface.trimLoops = {{testing::randomCurve(rng, false)}, {testing::randomCurve(rng, true)}};
+    const std::map<int, std::vector<Element>> contents{{4, {surface, label(3)}}};
+    // Version 3 adds the display list (here empty, " 0") at the end of the surface's record.
+    const std::string v3 = ArchiveFile::encode(contents);
+    REQUIRE(v3.starts_with("PHIGS-ARCHIVE 3\n"));
+    const std::size_t record = v3.find("\nLABEL");
+    REQUIRE(record != std::string::npos);
+    REQUIRE(v3.compare(record - 2, 2, " 0") == 0);
+    std::string v2 = v3;
+    v2.erase(record - 2, 2);
+    v2.replace(0, v2.find('\n'), "PHIGS-ARCHIVE 2");
+    // The checksum covers every byte before END: write it again for the edited text.
+    const std::size_t end = v2.rfind("END ");
+    std::uint64_t hash = 1469598103934665603ull;  // the format's FNV-1a offset basis
+    for (std::size_t i = 0; i < end; ++i)
+        hash = (hash ^ static_cast<unsigned char>(v2[i])) * 1099511628211ull;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    const std::size_t checksum = v2.rfind(' ');
+    v2 = v2.substr(0, checksum + 1) + hex + "\n";
+    CHECK(ArchiveFile::decode(v2, "memory", nullptr) == contents);
+
+    // With a display list, the version-3 record under a version-2 header is refused by line.
+    NurbsSurfaceElement shown = surface;
+    shown.trimDisplay = {{true, 2, 5.0}, {false, 6, 0.25}};
+    std::string misread = ArchiveFile::encode({{4, {shown, label(3)}}});
+    CHECK(ArchiveFile::decode(misread, "memory", nullptr).at(4).front() == Element(shown));
+    misread.replace(0, misread.find('\n'), "PHIGS-ARCHIVE 2");
+    CHECK(refusal(misread).starts_with("memory: line "));
+}
+
+TEST_CASE("archive versions other than 1 to the current one are refused by number", "[archive][errors]") {
+    const std::string current = std::to_string(ArchiveFile::kFormatVersion);
+    const std::string body =
+        ArchiveFile::encode({}).substr(std::string("PHIGS-ARCHIVE ").size() + current.size());
+    CHECK(ArchiveFile::decode("PHIGS-ARCHIVE " + current + body, "memory", nullptr).empty());
+    const std::string next = std::to_string(ArchiveFile::kFormatVersion + 1);
+    for (const std::string& version : {std::string("0"), next, std::string("-1"), std::string("12")})
+        CHECK(refusal("PHIGS-ARCHIVE " + version + body) == "memory: line 1: unsupported archive version " +
+                                                                version + " (this reader reads 1 to " +
+                                                                current + ")");
     CHECK(refusal("PHIGS-ARCHIVE x" + body) == "memory: line 1: bad version 'x'");
 }

@@ -1892,8 +1892,10 @@ void pset_para_surf_characs(Pint psc_type, const Ppara_surf_characs* data);
  * num_points.size_x (u) x num_points.size_y (v) points, u running fastest. Trimming curves are
  * closed loops in (u, v) (rational: (w u, w v, w)); a curve trims over [tmin, tmax], within its
  * knots' domain (tmin == tmax: the whole domain), and is kept as that part (answered with its own
- * knots, points and range); its visibility and approximation are not kept (answered PEDGE_OFF,
- * PCURV_WS_DEP, 0). Bad data is refused with -202 naming the rule. */
+ * knots, points and range). A visible (PEDGE_ON) trimming curve is drawn along the surface in
+ * the edge colour and width while the edge flag is on; its approximation (PCURV_*, chordal values
+ * in (u, v)) says how finely it is followed, for trimming and for drawing. Bad data is refused
+ * with -202 naming the rule. */
 /* NON-UNIFORM B-SPLINE CURVE drawn over [min, max] (min == max: the whole domain). */
 void pnuni_bsp_curv(Pint order, const Pfloat_list* knots, Prational rationality, const Ppoint_list34* cpts,
                     Pfloat min, Pfloat max);

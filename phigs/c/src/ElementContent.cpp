@@ -226,7 +226,8 @@ void curveContent(const NurbsCurveElement& e, Phigs_store& s) {
     d.min = static_cast<Pfloat>(e.rangeStart), d.max = static_cast<Pfloat>(e.rangeEnd);
 }
 
-void trimContent(const std::vector<TrimLoop>& loops, Phigs_store& s) {
+void trimContent(const NurbsSurfaceElement& e, Phigs_store& s) {
+    const std::vector<TrimLoop>& loops = e.trimLoops;
     std::size_t points = 0, curves = 0;
     for (const auto& loop : loops)
         for (const auto& c : loop) points += c.points.size(), curves += 1;
@@ -236,10 +237,12 @@ void trimContent(const std::vector<TrimLoop>& loops, Phigs_store& s) {
     for (const auto& loop : loops)
         for (const auto& c : loop) {
             Ptrimcurve t{};
-            t.visible = PEDGE_OFF;
+            const TrimCurveDisplay display = e.displayOf(s.trimCurves.size());
+            t.visible = display.visible ? PEDGE_ON : PEDGE_OFF;
             t.rationality = c.rational() ? PRATIONAL : PNON_RATIONAL;
             t.order = c.degree + 1;
-            t.approx_type = PCURV_WS_DEP;
+            t.approx_type = display.approximation;
+            t.approx_val = static_cast<Pfloat>(display.approximationValue);
             t.knots = knotList(c.knots, s);
             t.tmin = static_cast<Pfloat>(c.domainStart()), t.tmax = static_cast<Pfloat>(c.domainEnd());
             for (std::size_t i = 0; i < c.points.size(); ++i) {
@@ -284,7 +287,7 @@ void surfaceContent(const NurbsSurfaceElement& e, Phigs_store& s) {
         d.grid.points.point4d = s.points4.data();
     else
         d.grid.points.point3d = s.points3.data();
-    trimContent(e.trimLoops, s);
+    trimContent(e, s);
     if (!f.rational()) d.grid.points.point3d = s.points3.data();  // trimContent may have grown it
     d.num_trim_loops = static_cast<Pint>(s.trimLoops.size());
     d.trim_loops = s.trimLoops.empty() ? nullptr : s.trimLoops.data();

@@ -8,6 +8,8 @@
 
 #include "geom/Split.h"
 
+#include <algorithm>
+
 using namespace phigs;
 using phigs::c::insertElement;
 
@@ -108,6 +110,17 @@ geom::Curve trimCurve(const Ptrimcurve& t, const char* name) {
     const std::vector<double> knots = floats(&t.knots, name);
     const geom::Curve whole = checked(name, [&] { return geom::Curve(t.order - 1, knots, points, weights); });
     return trimRange(whole, t.tmin, t.tmax, name);
+}
+
+/// A trimming curve's visibility and approximation criteria (the store refuses a value that is
+/// not finite).
+TrimCurveDisplay trimDisplay(const Ptrimcurve& t, const char* name) {
+    const int visible = c::raw(t.visible);
+    if (visible != PEDGE_OFF && visible != PEDGE_ON)
+        throw Error(PE_ENUM_TYPE_INVAL, name, "trim curve visibility");
+    // PCURV_WS_DEP ignores its value: keep the default so equal elements compare equal.
+    if (t.approx_type == PCURV_WS_DEP) return {visible == PEDGE_ON, PCURV_WS_DEP, 1.0};
+    return {visible == PEDGE_ON, t.approx_type, t.approx_val};
 }
 
 /// Level curves (types 4 and 5; psc_4 and psc_5 have one layout): origin, direction and the
@@ -274,9 +287,17 @@ void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const P
             const std::size_t curves = c::count(trim_loops[l].num_curves, n);
             if (curves) c::require(trim_loops[l].curves, n);
             TrimLoop loop;
-            for (std::size_t k = 0; k < curves; ++k) loop.push_back(trimCurve(trim_loops[l].curves[k], n));
+            for (std::size_t k = 0; k < curves; ++k) {
+                const Ptrimcurve& t = trim_loops[l].curves[k];
+                loop.push_back(trimCurve(t, n));
+                e.trimDisplay.push_back(trimDisplay(t, n));
+            }
             e.trimLoops.push_back(std::move(loop));
         }
+        // Every curve hidden and workstation dependent is what an empty list says.
+        if (std::all_of(e.trimDisplay.begin(), e.trimDisplay.end(),
+                        [](const TrimCurveDisplay& d) { return d == TrimCurveDisplay{}; }))
+            e.trimDisplay.clear();
         return e;
     });
 }

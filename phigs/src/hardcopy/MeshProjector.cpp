@@ -37,9 +37,11 @@ void MeshProjector::project() {
         if (in.fillsFrontFaces() || in.fillsBackFaces()) facets(false);
         isoLines();
     }
-    // Mesh edges are solid, as the raster draws them.
-    if (mesh_.edges->visible)
+    // Mesh edges (with the visible trimming curves) are solid, as the raster draws them.
+    if (mesh_.edges->visible) {
         edgeLines(chainEdges(facetEdges(data_)), mesh_.edges->colour, LineType::Solid, mesh_.edges->width);
+        edgeLines(data_.trimEdges, mesh_.edges->colour, LineType::Solid, mesh_.edges->width);
+    }
 }
 
 void MeshProjector::hollowEdges() {

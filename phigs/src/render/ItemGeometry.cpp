@@ -398,6 +398,11 @@ MeshIndices meshIndices(const MeshData& mesh) {
                 out.indices.insert(out.indices.end(), {a, b});
         }
     out.edgeCount = static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount - out.isoLineCount;
+    for (const auto& line : mesh.trimEdges)
+        for (std::size_t i = 0; i + 1 < line.size(); ++i)
+            out.indices.insert(out.indices.end(), {line[i], line[i + 1]});
+    out.trimEdgeCount =
+        static_cast<std::uint32_t>(out.indices.size()) - out.triangleCount - out.isoLineCount - out.edgeCount;
     const auto limit = copy;
     for (std::uint32_t& i : out.indices)
         if (i >= limit) i = 0;  // a bad index must not read past the vertex buffer

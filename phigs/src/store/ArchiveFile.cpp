@@ -65,6 +65,9 @@ struct Writer {
         (*this)(s.degreeU), (*this)(s.degreeV), (*this)(s.knotsU), (*this)(s.knotsV), (*this)(s.countU),
             (*this)(s.countV), (*this)(s.points), (*this)(s.weights);
     }
+    void operator()(const TrimCurveDisplay& d) {
+        (*this)(d.visible), (*this)(d.approximation), (*this)(d.approximationValue);
+    }
     template <class A, class B>
     void operator()(const std::pair<A, B>& p) {
         (*this)(p.first), (*this)(p.second);
@@ -122,6 +125,10 @@ struct MinText<std::pair<A, B>> {
 template <>
 struct MinText<geom::Curve> {
     static constexpr std::size_t value = 4 * 2;  // degree and three empty lists
+};
+template <>
+struct MinText<TrimCurveDisplay> {
+    static constexpr std::size_t value = 3 * 2;
 };
 template <>
 struct MinText<geom::Surface> {
@@ -258,6 +265,9 @@ struct Reader {
     void operator()(geom::Surface& s) {
         (*this)(s.degreeU), (*this)(s.degreeV), (*this)(s.knotsU), (*this)(s.knotsV), (*this)(s.countU),
             (*this)(s.countV), (*this)(s.points), (*this)(s.weights);
+    }
+    void operator()(TrimCurveDisplay& d) {
+        (*this)(d.visible), (*this)(d.approximation), (*this)(d.approximationValue);
     }
     template <class A, class B>
     void operator()(std::pair<A, B>& p) {

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <span>
@@ -181,6 +182,7 @@ struct FiniteCheck {
     /// Point lists are left to validatePayload: every family holding one runs checkPoints on it,
     /// which names the point that is not finite (a second pass here would only cost inserts).
     void operator()(const PointList&) {}
+    void operator()(const TrimCurveDisplay& d) { (*this)(d.approximationValue); }
     template <class T>
     void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces
 };
@@ -326,9 +328,15 @@ std::string validatePayload(const Element& element) {
                 } catch (const std::exception& x) {
                     return x.what();
                 }
+                std::size_t curves = 0;
                 for (const auto& loop : e.trimLoops)
-                    for (const auto& c : loop)
+                    for (const auto& c : loop) {
                         if (auto r = checkCurve(c); !r.empty()) return "trimming curve: " + r;
+                        ++curves;
+                    }
+                if (!e.trimDisplay.empty() && e.trimDisplay.size() != curves)
+                    return "trimming curve display is given for " + std::to_string(e.trimDisplay.size()) +
+                           " curves, not for each of the " + std::to_string(curves);
                 return {};
             } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
                 if (!e.vertexColours.empty() && e.vertexColours.size() != e.contours.size())
@@ -412,6 +420,9 @@ bool NurbsSurfaceElement::operator==(const NurbsSurfaceElement& o) const {
         for (std::size_t j = 0; j < trimLoops[i].size(); ++j)
             if (!sameCurve(trimLoops[i][j], o.trimLoops[i][j])) return false;
     }
+    // An empty display list reads as every curve's default.
+    for (std::size_t k = 0; k < std::max(trimDisplay.size(), o.trimDisplay.size()); ++k)
+        if (!(displayOf(k) == o.displayOf(k))) return false;
     return true;
 }
 
@@ -654,6 +665,7 @@ std::size_t elementSize(const Element& element) {
                          e.surface.points.size() * sizeof(glm::dvec3);
                 for (const auto& loop : e.trimLoops)
                     for (const auto& c : loop) bytes += curveBytes(c);
+                bytes += e.trimDisplay.size() * sizeof(TrimCurveDisplay);
             }
             return bytes;
         },

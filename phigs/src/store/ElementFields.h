@@ -55,6 +55,7 @@ void fields(V& v, NurbsCurveElement& e) {
 template <class V>
 void fields(V& v, NurbsSurfaceElement& e) {
     v(e.surface), v(e.trimLoops);
+    if (since(v, 3)) v(e.trimDisplay);
 }
 template <class V>
 void fields(V& v, FillAreaSetWithDataElement& e) {

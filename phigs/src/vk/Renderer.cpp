@@ -528,14 +528,15 @@ void Renderer::addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddP
         iso.patternInModelUnits = true;
         addPart(iso, nullptr, false, vertices, indices);
     }
-    if (mesh.edges->visible && cached.counts.edgeCount) {
+    // The edge flag draws the facets' edges and the visible trimming curves, which follow them.
+    if (mesh.edges->visible && cached.counts.edgeCount + cached.counts.trimEdgeCount) {
         render::GeometryPart edge;
         edge.lines = true;
         edge.role = render::PartRole::Edge;
         edge.colour = mesh.edges->colour;
         edge.lineWidth = mesh.edges->width;
         edge.first = cached.counts.triangleCount + cached.counts.isoLineCount;
-        edge.count = cached.counts.edgeCount;
+        edge.count = cached.counts.edgeCount + cached.counts.trimEdgeCount;
         addPart(edge, nullptr, false, vertices, indices);
     }
 }

@@ -63,7 +63,8 @@ struct MeshIndices {
     std::vector<std::uint32_t> indices;
     std::uint32_t triangleCount = 0;  ///< index count of the triangles (first)
     std::uint32_t isoLineCount = 0;   ///< index count of the iso-line pairs (next)
-    std::uint32_t edgeCount = 0;      ///< index count of the facets' edges, each once (last)
+    std::uint32_t edgeCount = 0;      ///< index count of the facets' edges, each once (next)
+    std::uint32_t trimEdgeCount = 0;  ///< index count of the trim edges' pairs (last)
 };
 MeshIndices meshIndices(const MeshData& mesh);
 /// The vertices of a mesh in modelling coordinates (missing normals or colours stay zero), then a

@@ -16,9 +16,9 @@ namespace phigs {
 /// complete archive, and a change that returned survives a crash. A `<name>.tmp` left by a killed
 /// write is removed when the archive is opened.
 ///
-/// Format (version 2, text, UTF-8, tokens separated by white space):
+/// Format (version 3, text, UTF-8, tokens separated by white space):
 /// @verbatim
-///   PHIGS-ARCHIVE 2
+///   PHIGS-ARCHIVE 3
 ///   STRUCTURE <id> <element count>        one per structure, ascending id
 ///   <ELEMENT_TYPE_NAME> <fields...>       one line per element (names as in ISO 9592,
 ///                                         spaces written as '_', e.g. POLYLINE_3)
@@ -31,10 +31,12 @@ namespace phigs {
 /// points, weights. A file that does not parse, misses its END line or fails its checksum is
 /// refused with error 403 naming the file and the line.
 ///
-/// Versions: files are written at version 2, versions 1 and 2 are read. Version 2 added, after
+/// Versions: files are written at version 3, versions 1 to 3 are read. Version 2 added, after
 /// the fields of version 1, the facet colours and normals of triangle strips and quadrilateral
 /// meshes, the edge flags of fill area set 3 with data, and the level-curve origin, direction and
-/// levels of parametric surface characteristics; read from version 1 they are empty or default.
+/// levels of parametric surface characteristics. Version 3 added each trimming curve's
+/// visibility and approximation (after a NURBS surface's loops). Fields a file's version lacks
+/// read as empty or default.
 ///
 /// Limits: a file of more than maxFileBytes (default kMaxFileBytes) is refused before it is
 /// read (403) and never written (903). Every count is checked against the bytes left in the
@@ -46,7 +48,7 @@ public:
     /// The largest archive file read or written by default (64 MiB).
     static constexpr std::size_t kMaxFileBytes = std::size_t{64} << 20;
     /// The format version written; every version from 1 up to it is read.
-    static constexpr int kFormatVersion = 2;
+    static constexpr int kFormatVersion = 3;
 
     /// Opens (creating when missing) the archive at `path`; error 400 / 403 on failure.
     ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t maxFileBytes = kMaxFileBytes);

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -206,10 +207,32 @@ struct NurbsCurveElement {
 };
 /// One trimming curve of a NURBS surface, in (u, v) parameter space (z ignored).
 using TrimLoop = std::vector<geom::Curve>;
+/// How one trimming curve shows (PHIGS PLUS): a visible one is drawn along the surface as an
+/// edge while the edge flag is on; its approximation criteria (as SET CURVE APPROXIMATION
+/// CRITERIA's, chordal values measured in (u, v)) say how finely it is followed, for trimming
+/// and for drawing.
+struct TrimCurveDisplay {
+    bool visible = false;
+    int approximation = 1;  ///< 1 workstation dependent, 2 constant between knots, 3..8 chordal
+    double approximationValue = 1.0;
+    bool operator==(const TrimCurveDisplay&) const = default;
+};
 /// NON-UNIFORM B-SPLINE SURFACE with trimming loops (PHIGS PLUS).
 struct NurbsSurfaceElement {
+    NurbsSurfaceElement() = default;
+    NurbsSurfaceElement(geom::Surface surface, std::vector<TrimLoop> trimLoops = {},
+                        std::vector<TrimCurveDisplay> trimDisplay = {})
+        : surface(std::move(surface)), trimLoops(std::move(trimLoops)), trimDisplay(std::move(trimDisplay)) {}
+
     geom::Surface surface;
     std::vector<TrimLoop> trimLoops;  ///< closed loops; the even-odd rule decides what is kept
+    /// Empty (every trimming curve hidden, workstation dependent), or one per trimming curve,
+    /// loop by loop.
+    std::vector<TrimCurveDisplay> trimDisplay;
+    /// How trimming curve `curve` (counted loop by loop) shows.
+    TrimCurveDisplay displayOf(std::size_t curve) const {
+        return curve < trimDisplay.size() ? trimDisplay[curve] : TrimCurveDisplay{};
+    }
     bool operator==(const NurbsSurfaceElement& o) const;
 };
 /// FILL AREA SET 3 WITH DATA (PHIGS PLUS): optional facet colour and normal, per-vertex colours and normals.

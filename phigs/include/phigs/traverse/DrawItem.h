@@ -77,6 +77,9 @@ struct MeshData {
     SharedIndexList triangles;         ///< three indices per triangle, counter-clockwise = front
     std::vector<std::vector<std::uint32_t>>
         isoLines;  ///< polylines through positions (iso-parametric curves)
+    /// Polylines through positions drawn as edges while the edge flag is on (a NURBS surface's
+    /// visible trimming curves); their positions belong to no triangle.
+    std::vector<std::vector<std::uint32_t>> trimEdges;
     /// The primitive's facets (a strip's triangle, a quadrilateral, a surface's grid cell) as runs
     /// of consecutive triangles: an edge two triangles of one facet share (a diagonal) is no edge
     /// of the primitive. facetEnds: each facet's end (one past its last triangle), ascending;
