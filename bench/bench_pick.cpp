@@ -332,7 +332,8 @@ TubeRun pickTubes(const phigs::DrawList& list,
     return r;
 }
 
-/// Ten tubes of 10 x 10 bicubic pieces each, seen from above and to the side.
+/// Ten tubes of 10 x 10 bicubic pieces each, seen from above and to the side, SOLID (a HOLLOW
+/// surface, the default, is detectable on its outline only).
 phigs::DrawList tubeList(std::vector<std::vector<geom::BezierSurfacePiece>>& pieces) {
     phigs::DrawList list;
     phigs::DrawView view;
@@ -346,6 +347,9 @@ phigs::DrawList tubeList(std::vector<std::vector<geom::BezierSurfacePiece>>& pie
     for (int k = 0; k < 10; ++k) {
         phigs::DrawMesh mesh;
         mesh.surface = tube(0.6 + 0.05 * k, 8.0, 0.7 * k);
+        phigs::InteriorStyleSet solid;
+        solid.style = phigs::InteriorStyle::Solid;
+        mesh.interior = solid;
         phigs::DrawItem item;
         item.primitive = mesh;
         item.context.edit().modelTransform = glm::translate(
