@@ -62,46 +62,51 @@ std::vector<double> samples(const std::vector<double>& breaks, int perSpan) {
     return out;
 }
 
-/// A trimming curve's (u, v) points (z ignored), followed as its approximation criteria ask.
-std::vector<glm::dvec3> trimCurvePoints(const geom::Curve& curve, const TrimCurveDisplay& display) {
-    return tessellateCurve(curve, curve.domainStart(), curve.domainEnd(), display.approximation,
-                           display.approximationValue);
+/// Each trimming curve's (u, v) points (z ignored), loop by loop, followed as its approximation
+/// criteria ask: made once for both the trimming polygons and the drawn trim edges.
+std::vector<std::vector<glm::dvec3>> trimCurveSamples(const NurbsSurfaceElement& element) {
+    std::vector<std::vector<glm::dvec3>> curves;
+    for (const TrimLoop& loop : element.trimLoops)
+        for (const geom::Curve& c : loop) {
+            const TrimCurveDisplay display = element.displayOf(curves.size());
+            curves.push_back(tessellateCurve(c, c.domainStart(), c.domainEnd(), display.approximation,
+                                             display.approximationValue));
+        }
+    return curves;
 }
 
-/// Each trimming loop as a polygon in (u, v).
-std::vector<std::vector<glm::dvec2>> trimPolygons(const NurbsSurfaceElement& element) {
+/// Each trimming loop as a polygon in (u, v), from its curves' samples.
+std::vector<std::vector<glm::dvec2>> trimPolygons(const NurbsSurfaceElement& element,
+                                                  const std::vector<std::vector<glm::dvec3>>& curves) {
     std::vector<std::vector<glm::dvec2>> loops;
     std::size_t curve = 0;
     for (const TrimLoop& loop : element.trimLoops) {
         std::vector<glm::dvec2>& polygon = loops.emplace_back();
-        for (const geom::Curve& c : loop)
-            for (const glm::dvec3& p : trimCurvePoints(c, element.displayOf(curve++)))
-                polygon.push_back({p.x, p.y});
+        for (std::size_t k = 0; k < loop.size(); ++k)
+            for (const glm::dvec3& p : curves[curve++]) polygon.push_back({p.x, p.y});
     }
     return loops;
 }
 
-/// The visible trimming curves on the surface: their points appended to the mesh (with normals,
-/// and (u, v) when the mesh keeps them), one polyline each in `trimEdges`. (u, v) outside the
-/// domain is brought to its nearest border.
-void addTrimEdges(MeshData& mesh, const NurbsSurfaceElement& element, bool withUv) {
+/// The visible trimming curves on the surface: their samples' points appended to the mesh (with
+/// normals, and (u, v) when the mesh keeps them), one polyline each in `trimEdges`. (u, v)
+/// outside the domain is brought to its nearest border.
+void addTrimEdges(MeshData& mesh, const NurbsSurfaceElement& element,
+                  const std::vector<std::vector<glm::dvec3>>& curves, bool withUv) {
     const geom::Surface& s = element.surface;
-    std::size_t curve = 0;
-    for (const TrimLoop& loop : element.trimLoops)
-        for (const geom::Curve& c : loop) {
-            const TrimCurveDisplay display = element.displayOf(curve++);
-            if (!display.visible) continue;
-            std::vector<std::uint32_t> line;
-            for (const glm::dvec3& p : trimCurvePoints(c, display)) {
-                const double u = std::clamp(p.x, s.domainStartU(), s.domainEndU());
-                const double v = std::clamp(p.y, s.domainStartV(), s.domainEndV());
-                line.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
-                mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
-                mesh.normals.push_back(glm::vec3(geom::normal(s, u, v)));
-                if (withUv) mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
-            }
-            if (line.size() >= 2) mesh.trimEdges.push_back(std::move(line));
+    for (std::size_t curve = 0; curve < curves.size(); ++curve) {
+        if (!element.displayOf(curve).visible) continue;
+        std::vector<std::uint32_t> line;
+        for (const glm::dvec3& p : curves[curve]) {
+            const double u = std::clamp(p.x, s.domainStartU(), s.domainEndU());
+            const double v = std::clamp(p.y, s.domainStartV(), s.domainEndV());
+            line.push_back(static_cast<std::uint32_t>(mesh.positions.size()));
+            mesh.positions.push_back(glm::vec3(geom::evaluate(s, u, v)));
+            mesh.normals.push_back(glm::vec3(geom::normal(s, u, v)));
+            if (withUv) mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
         }
+        if (line.size() >= 2) mesh.trimEdges.push_back(std::move(line));
+    }
 }
 
 bool insideTrim(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p) {
@@ -156,7 +161,8 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
         mesh.normals.push_back(glm::vec3(adaptive.normals[i]));
         if (withUv) mesh.uv.push_back(glm::vec2(adaptive.uv[i]));
     }
-    const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element);
+    const std::vector<std::vector<glm::dvec3>> trimCurves = trimCurveSamples(element);
+    const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element, trimCurves);
     std::vector<std::uint32_t> cellOf;  // the grid cell (two triangles) of each triangle kept
     for (std::size_t t = 0; t + 2 < adaptive.triangles.size(); t += 3) {
         glm::dvec2 centre = (adaptive.uv[adaptive.triangles[t]] + adaptive.uv[adaptive.triangles[t + 1]] +
@@ -168,7 +174,7 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
         cellOf.push_back(static_cast<std::uint32_t>(t / 6));
     }
     setFacets(mesh, cellOf);
-    addTrimEdges(mesh, element, withUv);
+    addTrimEdges(mesh, element, trimCurves, withUv);
     return mesh;
 }
 
@@ -199,7 +205,8 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
             mesh.normals.push_back(glm::vec3(geom::normal(s, u, v)));
             if (withUv) mesh.uv.push_back(glm::vec2(static_cast<float>(u), static_cast<float>(v)));
         }
-    const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element);
+    const std::vector<std::vector<glm::dvec3>> trimCurves = trimCurveSamples(element);
+    const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element, trimCurves);
     auto at = [nv](std::uint32_t i, std::uint32_t j) { return i * nv + j; };
     auto cells = [&] {
         std::vector<std::uint32_t> triangles;
@@ -233,7 +240,7 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
         lines(characteristics.curvesU, nu, true);
         lines(characteristics.curvesV, nv, false);
     }
-    addTrimEdges(mesh, element, withUv);
+    addTrimEdges(mesh, element, trimCurves, withUv);
     return mesh;
 }
 
