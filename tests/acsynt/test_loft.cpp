@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+namespace test_loft {
+
 using namespace acsynt;
 
 namespace {
@@ -186,3 +188,5 @@ TEST_CASE("a patch list skips empty knot spans and refuses non-bicubic surfaces"
                                   std::vector<glm::dvec3>(points.begin(), points.begin() + 16));
     REQUIRE_THROWS_AS(buildPatches(quadratic), geom::GeometryError);
 }
+
+}  // namespace test_loft

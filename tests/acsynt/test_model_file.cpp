@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_model_file {
+
 using namespace acsynt;
 
 namespace {
@@ -213,3 +215,5 @@ TEST_CASE("damaged files give a ModelFileError or a whole model, never anything 
     REQUIRE(errors > static_cast<int>(lines.size()));
     REQUIRE(models > 0);
 }
+
+}  // namespace test_model_file

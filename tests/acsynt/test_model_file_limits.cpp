@@ -15,6 +15,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_model_file_limits {
+
 using namespace acsynt;
 
 namespace {
@@ -133,3 +135,5 @@ TEST_CASE("model file: components, bytes, lines, control characters and director
     });
     CHECK(cost.peakBytes < (16u << 20));
 }
+
+}  // namespace test_model_file_limits

@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace test_models {
+
 using namespace acsynt;
 
 namespace {
@@ -152,3 +154,5 @@ TEST_CASE("a model that cannot be lofted is an error at its component line", "[a
         REQUIRE(e.reason().find("'needle' cannot be lofted") != std::string::npos);
     }
 }
+
+}  // namespace test_models

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+namespace test_naca4 {
+
 using namespace acsynt;
 
 TEST_CASE("NACA 4-digit codes are read and bad ones refused", "[acsynt][naca]") {
@@ -57,3 +59,5 @@ TEST_CASE("an airfoil contour runs from the trailing edge over the top and back 
     REQUIRE_THROWS_AS(naca4Contour(parseNaca4("0012"), 20), std::invalid_argument);
     REQUIRE_THROWS_AS(naca4Contour(parseNaca4("0012"), 3), std::invalid_argument);
 }
+
+}  // namespace test_naca4

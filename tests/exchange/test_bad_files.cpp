@@ -16,6 +16,8 @@
 #include <iterator>
 #include <random>
 
+namespace test_bad_files {
+
 using namespace geom::exchange;
 
 namespace {
@@ -176,3 +178,5 @@ TEST_CASE("bad models: the writer names the surface, the curves and the cause", 
     for (const char* name : {"a.step", "b.igs", "c.step", "d.step"})
         CHECK_FALSE(std::filesystem::exists(dir / name));
 }
+
+}  // namespace test_bad_files

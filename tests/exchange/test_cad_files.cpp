@@ -19,6 +19,8 @@
 #include <cmath>
 #include <map>
 
+namespace test_cad_files {
+
 // OpenCASCADE's data exchange allocates some tables once and never frees them (IFSelect
 // editors, XCAF driver tables): not this program's leaks, for LeakSanitizer in sanitizer builds.
 extern "C" const char* __lsan_default_suppressions() {
@@ -127,3 +129,5 @@ TEST_CASE("files: lengths are written in the model's unit and converted on read"
     CHECK_FALSE(std::filesystem::exists(dir / "f.step"));
     CHECK_THROWS_WITH(writeCadFile(metres, dir / "model.dxf"), Catch::Contains("unknown extension '.dxf'"));
 }
+
+}  // namespace test_cad_files

@@ -12,6 +12,8 @@
 
 #include <random>
 
+namespace test_occt_conversion {
+
 using namespace geom::exchange;
 using exchange_test::requireSameSurface;
 
@@ -177,3 +179,5 @@ TEST_CASE("conversion: invalid B-splines are refused with geom's message", "[exc
     CHECK_THROWS_WITH(toOcct(c), Catch::Contains("weight"));
     CHECK_THROWS_AS(polylineToOcct({{0, 0}}), geom::GeometryError);
 }
+
+}  // namespace test_occt_conversion

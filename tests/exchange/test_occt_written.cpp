@@ -21,6 +21,8 @@
 
 #include <set>
 
+namespace test_occt_written {
+
 using namespace geom::exchange;
 
 namespace {
@@ -134,3 +136,5 @@ TEST_CASE("OpenCASCADE's files: curves only, no surface", "[exchange][occt]") {
                           Catch::Contains((dir / name).string()) && Catch::Contains("no surfaces in it"));
     }
 }
+
+}  // namespace test_occt_written

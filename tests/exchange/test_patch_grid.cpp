@@ -9,6 +9,8 @@
 
 #include <random>
 
+namespace test_patch_grid {
+
 using namespace geom::exchange;
 using exchange_test::requireSameSurface;
 
@@ -103,3 +105,5 @@ TEST_CASE("patch grid: makePeriodic needs a clamped direction that closes smooth
     const geom::Surface& fuselage = exchange_test::transport().components[0].surface;
     CHECK_FALSE(makePeriodic(fuselage, true, 1e-9));  // already unclamped
 }
+
+}  // namespace test_patch_grid

@@ -30,6 +30,8 @@
 #include <map>
 #include <set>
 
+namespace test_transport_occt {
+
 using namespace geom::exchange;
 
 namespace {
@@ -194,3 +196,5 @@ TEST_CASE("transport: our reader gives back its 8 components and 376 patches fro
         CHECK(patches == 376);
     }
 }
+
+}  // namespace test_transport_occt

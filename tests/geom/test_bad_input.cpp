@@ -39,6 +39,8 @@
 #include <string>
 #include <vector>
 
+namespace test_bad_input {
+
 using namespace geom;
 using namespace geom::curvemap;
 
@@ -254,3 +256,5 @@ TEST_CASE("a staircase refuses non-finite loop points and unbounded work", "[geo
     REQUIRE_THROWS_WITH(staircaseApproximation(lastNaN, 0.1), Catch::Contains("loop point 4"));
     REQUIRE_THROWS_WITH(staircaseApproximation(square, 1e-12), Catch::Contains("tolerances long"));
 }
+
+}  // namespace test_bad_input

@@ -21,6 +21,8 @@
 #include <random>
 #include <vector>
 
+namespace test_closest_point_classes {
+
 using namespace geom;
 
 namespace {
@@ -409,3 +411,5 @@ TEST_CASE("local closest point on a curve goes on past a corner", "[geom][invers
     CHECK(q.u > 0.5);
     CHECK(q.distance == Approx(std::abs(0.8 + 0.6 - 1.0) / std::sqrt(2.0)).margin(1e-12));
 }
+
+}  // namespace test_closest_point_classes

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_curve_file {
+
 using namespace geom;
 
 namespace {
@@ -128,3 +130,5 @@ TEST_CASE("bad curve files give errors naming the file, the line and the cause",
         CHECK(e.line() == 4);
     }
 }
+
+}  // namespace test_curve_file

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+namespace test_curve_file_limits {
+
 namespace {
 
 /// One closed part of `count` points on a circle (the last repeats the first), all C2.
@@ -98,3 +100,5 @@ TEST_CASE("curve file: points too far apart for a double chord are refused, not 
                           Catch::Contains("not a finite number above the one before"));
     }
 }
+
+}  // namespace test_curve_file_limits

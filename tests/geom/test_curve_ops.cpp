@@ -13,6 +13,8 @@
 
 #include <random>
 
+namespace test_curve_ops {
+
 using namespace geom;
 using geomtest::randomCurve;
 using geomtest::randomSurface;
@@ -215,3 +217,5 @@ TEST_CASE("knot and Bezier operations refuse bad input and leave it unchanged", 
     REQUIRE(c.points == copy.points);
     REQUIRE(c.weights == copy.weights);
 }
+
+}  // namespace test_curve_ops

@@ -10,6 +10,8 @@
 #include <numbers>
 #include <random>
 
+namespace test_curvemap_mapping {
+
 using namespace geom;
 using namespace geom::curvemap;
 using namespace curvemap_test;
@@ -517,3 +519,5 @@ TEST_CASE("curves of every degree and rational circles map validly, whatever the
         }
     }
 }
+
+}  // namespace test_curvemap_mapping

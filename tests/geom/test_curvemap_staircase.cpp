@@ -6,6 +6,8 @@
 
 #include <numbers>
 
+namespace test_curvemap_staircase {
+
 using namespace geom;
 using namespace geom::curvemap;
 using namespace curvemap_test;
@@ -83,3 +85,5 @@ TEST_CASE("staircase rejects bad input", "[geom][curvemap][staircase]") {
     CHECK_THROWS_WITH(staircaseApproximation({{0, 0}, {std::nan(""), 0}, {1, 1}, {0, 0}}, 0.1),
                       Catch::Contains("not finite"));
 }
+
+}  // namespace test_curvemap_staircase

@@ -11,6 +11,8 @@
 #include <numbers>
 #include <random>
 
+namespace test_evaluate {
+
 using namespace geom;
 
 namespace {
@@ -160,3 +162,5 @@ TEST_CASE("the grid evaluator agrees with the plain de Boor path", "[geom][evalu
     for (std::size_t k = 0; k < us.size(); ++k)
         REQUIRE(glm::length(points[k] - evaluate(circle, us[k])) < 1e-15);
 }
+
+}  // namespace test_evaluate

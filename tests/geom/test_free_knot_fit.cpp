@@ -15,6 +15,8 @@
 #include <cmath>
 #include <limits>
 
+namespace test_free_knot_fit {
+
 using namespace geom;
 
 namespace {
@@ -456,3 +458,5 @@ TEST_CASE("on a refined curve the default does at least as well as the removal l
             REQUIRE(measureDeviation(c, best.curve, 64).maxError <= 1e-3 * 1.001);
         }
 }
+
+}  // namespace test_free_knot_fit

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <vector>
 
+namespace test_global_interpolation {
+
 using namespace geom;
 
 namespace {
@@ -163,3 +165,5 @@ TEST_CASE("a surface periodic in both directions closes smoothly both ways", "[g
             }
     }
 }
+
+}  // namespace test_global_interpolation

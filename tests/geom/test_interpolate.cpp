@@ -9,6 +9,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_interpolate {
+
 using namespace geom;
 
 namespace {
@@ -157,3 +159,5 @@ TEST_CASE("interpolation rejects bad data with the reason", "[geom][interpolate]
     one.points = {{0, 0, 0}};
     CHECK_THROWS_WITH(interpolateCubic(one), Catch::Contains("at least 2 data points"));
 }
+
+}  // namespace test_interpolate

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_intersect {
+
 using namespace geom;
 
 namespace {
@@ -194,3 +196,5 @@ TEST_CASE("lines hit a Bezier patch of bidegree 99 x 10 (Molt 1994's size)", "[g
         requireHitsValid(blade, hits, p - 0.3 * d, d);
     }
 }
+
+}  // namespace test_intersect

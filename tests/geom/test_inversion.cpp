@@ -12,6 +12,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_inversion {
+
 using namespace geom;
 
 TEST_CASE("closest points on a sphere and a circle are exact", "[geom][inversion]") {
@@ -91,3 +93,5 @@ TEST_CASE("point inversion refuses non-finite input", "[geom][inversion]") {
     REQUIRE_THROWS_AS(closestPoint(circle, glm::dvec3(0, INFINITY, 0)), GeometryError);
     REQUIRE_THROWS_WITH(closestPoint(circle, glm::dvec3(0, 1, 0), std::nan("")), Catch::Contains("guess"));
 }
+
+}  // namespace test_inversion

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+namespace test_knot_insertion {
+
 using namespace geom;
 using geomtest::randomCurve;
 using geomtest::randomSurface;
@@ -199,3 +201,5 @@ TEST_CASE("bad knot insertions are refused", "[geom][knots]") {
     const Surface s = randomSurface(rng, 2, 2, 4, 4, false, true);
     REQUIRE_THROWS_WITH(insertKnotV(s, 2.0), Catch::Contains("insertKnotV"));
 }
+
+}  // namespace test_knot_insertion

@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace test_knot_reduction {
+
 using namespace geom;
 
 namespace {
@@ -623,3 +625,5 @@ TEST_CASE("a long, densely refined curve reduces to about its simpler curve", "[
     }
     REQUIRE(nearSimple >= 5);
 }
+
+}  // namespace test_knot_reduction

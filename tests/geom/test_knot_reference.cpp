@@ -12,6 +12,8 @@
 #include <numbers>
 #include <random>
 
+namespace test_knot_reference {
+
 using namespace geom;
 
 TEST_CASE("reference generators: I-beam, airfoil, paraboloid and wing have the thesis's sizes",
@@ -102,3 +104,5 @@ TEST_CASE("paraboloid 75x75 and wing 25x100 reduce at least as far as the thesis
     REQUIRE(wing.surface.countV <= 50);
     REQUIRE(wing.deviation.maxError <= 1e-2);
 }
+
+}  // namespace test_knot_reference

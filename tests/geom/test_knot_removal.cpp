@@ -12,6 +12,8 @@
 
 #include <algorithm>
 
+namespace test_knot_removal {
+
 using namespace geom;
 using geomtest::randomCurve;
 
@@ -234,3 +236,5 @@ TEST_CASE("least-squares removal keeps end conditions and reports its window", "
     REQUIRE_THROWS_WITH(removeKnotsLeastSquares(rational, std::vector<double>{c.knots[5]}),
                         Catch::Contains("rational"));
 }
+
+}  // namespace test_knot_removal

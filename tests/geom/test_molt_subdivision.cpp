@@ -11,6 +11,8 @@
 #include <random>
 #include <tuple>
 
+namespace test_molt_subdivision {
+
 using namespace geom;
 
 namespace {
@@ -123,3 +125,5 @@ TEST_CASE("fixed-depth subdivision gives the quadtree's leaves in its order", "[
         }
     }
 }
+
+}  // namespace test_molt_subdivision

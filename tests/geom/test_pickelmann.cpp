@@ -10,6 +10,8 @@
 #include <array>
 #include <cmath>
 
+namespace test_pickelmann {
+
 using namespace geom;
 
 namespace {
@@ -104,3 +106,5 @@ TEST_CASE("Pickelmann 1985 Appendix E: Bezier form of the non-uniform curve", "[
     REQUIRE(distinct.size() == 13);
     for (std::size_t k = 0; k < 13; ++k) REQUIRE(glm::length(distinct[k] - expected[k]) < 1e-7);
 }
+
+}  // namespace test_pickelmann

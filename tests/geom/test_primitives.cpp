@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+namespace test_primitives {
+
 using namespace geom;
 
 namespace {
@@ -96,3 +98,5 @@ TEST_CASE("primitive constructors refuse bad sizes", "[geom][exact]") {
     REQUIRE_THROWS_WITH(makeTorus(1.0, 2.0), Catch::Contains("minor radius"));
     REQUIRE_THROWS_AS(makeCylinder(1.0, std::nan("")), GeometryError);
 }
+
+}  // namespace test_primitives

@@ -11,6 +11,8 @@
 #include <map>
 #include <random>
 
+namespace test_tessellate {
+
 using namespace geom;
 
 namespace {
@@ -130,3 +132,5 @@ TEST_CASE("curve tessellation keeps chords within the tolerance", "[geom][tessel
     REQUIRE(tessellate(polyline, 1e-3).size() == 3);
     REQUIRE_THROWS_WITH(tessellate(circle, -1.0), Catch::Contains("tolerance"));
 }
+
+}  // namespace test_tessellate

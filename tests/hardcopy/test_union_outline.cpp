@@ -10,6 +10,8 @@
 #include <array>
 #include <random>
 
+namespace test_union_outline {
+
 using namespace phigs::hardcopy;
 
 namespace {
@@ -116,3 +118,5 @@ TEST_CASE("union outline: a whole mesh is one loop round its border", "[hardcopy
     REQUIRE(loops.size() == 1);
     CHECK(loops[0].size() == std::size_t(2 * (columns + rows)));
 }
+
+}  // namespace test_union_outline

@@ -16,6 +16,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_vector_describe {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 
@@ -495,3 +497,5 @@ TEST_CASE("mesh outline: patch boundaries on knot lines, borders, silhouettes an
     CHECK(silhouette.size() == std::size_t(n));
     for (const MeshEdge& e : silhouette) CHECK(mesh.uv[e.first].x == 0.5f);
 }
+
+}  // namespace test_vector_describe

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+namespace test_vector_facets {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 
@@ -83,3 +85,5 @@ TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is
     CHECK(std::abs(low - left) < 1e-6);
     CHECK(std::abs(high - right) < 1e-6);
 }
+
+}  // namespace test_vector_facets

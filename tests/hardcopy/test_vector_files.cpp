@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 
+namespace test_vector_files {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 
@@ -186,3 +188,5 @@ TEST_CASE("vector hardcopy: formats by name and type, errors name the file", "[h
     closed.close();
     CHECK_THROWS_AS(closed.update(sampleScene()), std::logic_error);
 }
+
+}  // namespace test_vector_files

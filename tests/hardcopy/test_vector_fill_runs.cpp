@@ -13,6 +13,8 @@
 #include <numbers>
 #include <random>
 
+namespace test_vector_fill_runs {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 
@@ -235,3 +237,5 @@ TEST_CASE("vector hardcopy: a star in a run of one colour keeps its even-odd hol
     const std::uint8_t* tip = at(centre + glm::dvec2(0.0, 0.33));
     CHECK(std::abs(int(tip[1]) - int(colour.y * 255.0f + 0.5f)) <= 3);
 }
+
+}  // namespace test_vector_fill_runs

@@ -10,6 +10,8 @@
 #include <iterator>
 #include <random>
 
+namespace test_vector_patterns {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 
@@ -169,3 +171,5 @@ TEST_CASE("vector hardcopy: a transparent surface blends over the opaque one beh
         CHECK(near(image.pixel(100, 10), glm::vec3(0.1f), 4));
     }
 }
+
+}  // namespace test_vector_patterns

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace test_archive {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -314,3 +316,5 @@ TEST_CASE("retrieve paths to ancestors and descendants read the archive's networ
           errors::StructureCycle);
     phigs.closeArchiveFile(2);
 }
+
+}  // namespace test_archive

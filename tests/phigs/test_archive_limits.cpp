@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace test_archive_limits {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -369,3 +371,5 @@ TEST_CASE("a temporary file left by a killed write is removed when the archive i
     }
     std::filesystem::remove(path);
 }
+
+}  // namespace test_archive_limits

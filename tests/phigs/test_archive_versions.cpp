@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace test_archive_versions {
+
 using namespace phigs;
 
 namespace {
@@ -217,3 +219,5 @@ TEST_CASE("archive versions other than 1 to the current one are refused by numbe
                                                                 current + ")");
     CHECK(refusal("PHIGS-ARCHIVE x" + body) == "memory: line 1: bad version 'x'");
 }
+
+}  // namespace test_archive_versions

@@ -10,6 +10,8 @@
 
 #include <random>
 
+namespace test_bundles {
+
 using namespace phigs;
 
 namespace {
@@ -250,3 +252,5 @@ TEST_CASE("bundle colours are general colours: an index >= 0 or RGB within [0, 1
     CHECK(drawn.colours[0] == pattern.colours[0]);  // direct colours as given
     CHECK(drawn.colours[1] == Colour::indexed(1));  // an undefined index as 1
 }
+
+}  // namespace test_bundles

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_colour_models {
+
 using namespace phigs;
 
 namespace {
@@ -188,3 +190,5 @@ TEST_CASE("realized lights and depth cues differ from the set values exactly whe
         CHECK(c.colour == glm::clamp(d.colour, 0.0f, 1.0f));
     }
 }
+
+}  // namespace test_colour_models

@@ -13,6 +13,8 @@
 #include <random>
 #include <set>
 
+namespace test_draw_item_records {
+
 using namespace phigs;
 
 namespace {
@@ -206,3 +208,5 @@ TEST_CASE("a segment's items share one context per run of one state", "[traverse
     CHECK(items > 0);
     CHECK(runs < items);  // runs of items share one context
 }
+
+}  // namespace test_draw_item_records

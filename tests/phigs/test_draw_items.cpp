@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <random>
 
+namespace test_draw_items {
+
 using namespace phigs;
 
 namespace {
@@ -145,3 +147,5 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
         REQUIRE(copied.source.path() == paths[at]);
     }
 }
+
+}  // namespace test_draw_items

@@ -13,6 +13,8 @@
 #include <random>
 #include <string>
 
+namespace test_drawlist_incremental {
+
 using namespace phigs;
 
 namespace {
@@ -185,3 +187,5 @@ TEST_CASE("incremental draw lists equal full traversals over random edits", "[tr
         CHECK(reused > 0);  // the edits left subtrees to reuse
     }
 }
+
+}  // namespace test_drawlist_incremental

@@ -27,6 +27,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_element_arena {
+
 using namespace phigs;
 using phigs::testing::randomElement;
 using phigs::testing::randomInt;
@@ -463,3 +465,5 @@ TEST_CASE("element arena: a serial past 48 bits is refused, the arena unchanged"
     CHECK(arena.get<LabelElement>(0)->label == 1);
     CHECK(arena.checkLayout() == "");
 }
+
+}  // namespace test_element_arena

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_gdp {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -109,3 +111,5 @@ TEST_CASE("a registered GDP with points it cannot use is refused and changes not
     // A 2D circle needs only its centre and a point.
     CHECK(checkGdp({gdp::Circle, {{0, 0, 0}, {1, 0, 0}}, "", true}).empty());
 }
+
+}  // namespace test_gdp

@@ -9,6 +9,8 @@
 #include <map>
 #include <random>
 
+namespace test_id_table {
+
 using phigs::IdTable;
 
 TEST_CASE("id tables read like a map over random edits", "[store][random]") {
@@ -70,3 +72,5 @@ TEST_CASE("an id table treats an empty value as absent", "[store]") {
     CHECK(table.find(3) == nullptr);
     CHECK(table.find(-4) != nullptr);
 }
+
+}  // namespace test_id_table

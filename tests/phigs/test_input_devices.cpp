@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace test_input_devices {
+
 using namespace phigs;
 using phigs::test::errorOf;
 using namespace std::chrono_literals;
@@ -316,3 +318,5 @@ TEST_CASE("input devices: pointer motion moves a sampled locator and triggers no
     r.input.setMode(InputClass::Locator, 1, OperatingMode::Event);
     CHECK(r.queue.awaitEvent(0ms)->inputClass == InputClass::Locator);  // the locator line triggers
 }
+
+}  // namespace test_input_devices

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace test_input_echo_layout {
+
 using namespace phigs;
 using namespace phigs::window_event;
 using phigs::test::FakeMeasurer;
@@ -118,3 +120,5 @@ TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses 
     CHECK(e->inputClass == InputClass::Pick);
     CHECK(e->moreSimultaneous);
 }
+
+}  // namespace test_input_echo_layout

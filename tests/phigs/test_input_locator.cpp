@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+namespace test_input_locator {
+
 using namespace phigs;
 using phigs::test::item;
 using phigs::test::square;
@@ -156,3 +158,5 @@ TEST_CASE("input locator: a perspective view maps back to the point under the cu
     CHECK(back.y / back.w == Approx(0.4).margin(1e-12));
     CHECK(back.z / back.w == Approx(0.7).margin(1e-12));
 }
+
+}  // namespace test_input_locator

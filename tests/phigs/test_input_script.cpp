@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace test_input_script {
+
 using namespace phigs;
 using Catch::Matchers::Contains;
 
@@ -104,3 +106,5 @@ TEST_CASE("input script: format writes lines the parser reads back to the same a
     for (const auto& a : s.actions()) again += ScriptInputSource::format(a) + "\n";
     CHECK(again == text);
 }
+
+}  // namespace test_input_script

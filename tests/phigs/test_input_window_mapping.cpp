@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace test_input_window_mapping {
+
 using namespace phigs;
 using namespace phigs::window_event;
 
@@ -66,3 +68,5 @@ TEST_CASE("input window: Escape breaks, function keys choose", "[input]") {
     CHECK(std::get<action::Choice>(a->what).choice == 3);
     CHECK_FALSE(m.handle(KeyPress{Key::Function, 0}));
 }
+
+}  // namespace test_input_window_mapping

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_item_vector {
+
 using namespace phigs;
 
 namespace {
@@ -151,3 +153,5 @@ TEST_CASE("item refs: a copy of a view owns its value, a copy of a permanent vie
     CHECK(copy.modelTransform().sameRecord(item.modelTransform()));
     CHECK(!copy.source.owned());
 }
+
+}  // namespace test_item_vector

@@ -8,6 +8,8 @@
 
 #include <random>
 
+namespace test_pattern_traverse {
+
 using namespace phigs;
 
 namespace {
@@ -150,3 +152,5 @@ TEST_CASE("pattern map: cell coordinates follow the box projected onto the primi
         CHECK(glm::length(map->at(corner + s * a + t * b + 0.3 * normal) - cell) < 1e-9);
     }
 }
+
+}  // namespace test_pattern_traverse

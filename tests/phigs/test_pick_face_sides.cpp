@@ -14,6 +14,8 @@
 
 #include <random>
 
+namespace test_pick_face_sides {
+
 using namespace phigs;
 using phigs::test::item;
 using phigs::test::unitList;
@@ -223,3 +225,5 @@ TEST_CASE("pick face sides: an edge-on mesh triangle shows its front", "[pick]")
     }
     CHECK(hits == 60 * 6);
 }
+
+}  // namespace test_pick_face_sides

@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+namespace test_pick_model_clip {
+
 using namespace phigs;
 using phigs::test::cylinder;
 using phigs::test::item;
@@ -71,3 +73,5 @@ TEST_CASE("pick model clip: an exact surface pick goes on to the first kept inte
     list.items[0].context.edit().modelClipPlanes = {{-1, 0, 0, 0.4}};
     CHECK_FALSE(picker.nearest(list, {0.6, 0.4}, 0.001));
 }
+
+}  // namespace test_pick_model_clip

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+namespace test_pick_scenes {
+
 using namespace phigs;
 using phigs::test::item;
 using phigs::test::square;
@@ -279,3 +281,5 @@ TEST_CASE("pick: a perspective view picks what lies under the point on screen", 
     CHECK(picker.pick(list, {0.74, 0.5}, {0.001}).path.back().pickId == 2);
     CHECK(picker.pick(list, {0.8, 0.5}, {0.001}).status == InputStatus::None);
 }
+
+}  // namespace test_pick_scenes

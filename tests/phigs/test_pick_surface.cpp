@@ -10,6 +10,8 @@
 #include <cmath>
 #include <random>
 
+namespace test_pick_surface {
+
 using namespace phigs;
 using phigs::test::cylinder;
 using phigs::test::item;
@@ -340,3 +342,5 @@ TEST_CASE("pick surface: the intersector cache lets go of surfaces the draw list
     picker.clearCache();
     CHECK(picker.cachedSurfaces() == 0);
 }
+
+}  // namespace test_pick_surface

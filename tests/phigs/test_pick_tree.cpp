@@ -12,6 +12,8 @@
 
 #include <random>
 
+namespace test_pick_tree {
+
 using namespace phigs;
 using namespace phigs::test;
 
@@ -242,3 +244,5 @@ TEST_CASE("pick tree: a workstation's pick device traverses again only when some
     CHECK(pick().status == InputStatus::Ok);
     CHECK(ws.pickTraversals() == 2);
 }
+
+}  // namespace test_pick_tree

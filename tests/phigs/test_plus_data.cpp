@@ -16,6 +16,8 @@
 
 #include <glm/geometric.hpp>
 
+namespace test_plus_data {
+
 using namespace phigs;
 using phigs::test::errorOf;
 using phigs::testing::randomColour;
@@ -405,3 +407,5 @@ TEST_CASE("corrupt PHIGS PLUS archive data is rejected with the reason", "[plus]
     lines.replace(dims, 5, " 2 1 ");
     CHECK(errorOf([&] { ArchiveFile::decode(lines, "cells.phar", nullptr); }) == 403);
 }
+
+}  // namespace test_plus_data

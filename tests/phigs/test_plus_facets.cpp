@@ -19,6 +19,8 @@
 #include <cmath>
 #include <set>
 
+namespace test_plus_facets {
+
 using namespace phigs;
 using phigs::test::errorOf;
 using phigs::testing::randomInt;
@@ -328,3 +330,5 @@ TEST_CASE("surface meshes keep (u, v) where read and share the stored surface", 
         CHECK(d.surface.get() == &stored->surface);
     }
 }
+
+}  // namespace test_plus_facets

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <random>
 
+namespace test_png {
+
 using namespace phigs;
 
 namespace {
@@ -63,3 +65,5 @@ TEST_CASE("png: bad input and unwritable places are errors naming the file", "[p
     CHECK_THROWS_WITH(writePng(Image(0, 0), scratch("empty.png")), Catch::Contains("empty"));
     CHECK_THROWS_WITH(writePng(Image(2, 2), scratch("no_such_dir") / "x.png"), Catch::Contains("x.png"));
 }
+
+}  // namespace test_png

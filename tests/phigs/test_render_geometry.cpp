@@ -18,6 +18,8 @@
 #include <map>
 #include <random>
 
+namespace test_render_geometry {
+
 using namespace phigs;
 using namespace phigs::render;
 
@@ -403,3 +405,5 @@ TEST_CASE("mesh viewer: the triangle side it sees is the NPC winding, mirrors in
     CHECK(fronts > checked / 4);
     CHECK(fronts < 3 * checked / 4);
 }
+
+}  // namespace test_render_geometry

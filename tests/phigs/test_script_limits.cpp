@@ -12,6 +12,8 @@
 #include <functional>
 #include <string>
 
+namespace test_script_limits {
+
 using namespace phigs;
 
 namespace {
@@ -73,3 +75,5 @@ TEST_CASE("input script: files up to the size limit read, larger ones and direct
     std::filesystem::create_directories(folder);
     CHECK(refusal([&] { ScriptInputSource::fromFile(folder); }).find("is a directory") != std::string::npos);
 }
+
+}  // namespace test_script_limits

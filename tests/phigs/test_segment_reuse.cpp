@@ -6,6 +6,8 @@
 #include <random>
 #include <vector>
 
+namespace test_segment_reuse {
+
 using namespace phigs;
 
 namespace {
@@ -113,3 +115,5 @@ TEST_CASE("a draw list keeps its items while later traversals reuse segments", "
         CHECK(drawn(kept) == before);
     }
 }
+
+}  // namespace test_segment_reuse

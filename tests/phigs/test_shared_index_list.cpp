@@ -14,6 +14,8 @@
 #include <random>
 #include <vector>
 
+namespace test_shared_index_list {
+
 using namespace phigs;
 using phigs::testing::randomInt;
 
@@ -122,3 +124,5 @@ TEST_CASE("shared index lists: surfaces on grids of one size share their triangl
     CHECK(std::get<DrawMesh>(twice.items[0].primitive)
               .mesh->triangles.sharesWith(std::get<DrawMesh>(twice.items[1].primitive).mesh->triangles));
 }
+
+}  // namespace test_shared_index_list

@@ -10,6 +10,8 @@
 #include <optional>
 #include <random>
 
+namespace test_spatial_search {
+
 using namespace phigs;
 
 namespace {
@@ -329,3 +331,5 @@ TEST_CASE("spatial search: random networks agree with a brute-force traversal",
     }
     CHECK(found > 100);  // the random queries find something often enough to mean something
 }
+
+}  // namespace test_spatial_search

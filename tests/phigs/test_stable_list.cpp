@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_stable_list {
+
 using namespace phigs;
 
 namespace {
@@ -73,3 +75,5 @@ TEST_CASE("StableList keeps its values in place until cleared", "[traverse][stab
         REQUIRE(live == 0);  // the list's destructor destroyed what it held
     }
 }
+
+}  // namespace test_stable_list

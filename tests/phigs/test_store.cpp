@@ -7,6 +7,8 @@
 
 #include <random>
 
+namespace test_store {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -459,3 +461,5 @@ TEST_CASE("PHIGS operating states: errors 1, 2, 3, 4, 7, 53, 54", "[errors]") {
     CHECK(log[5].function == "OPEN WORKSTATION");
     CHECK(errorMessage(201) == "Ignoring function, the specified structure does not exist");
 }
+
+}  // namespace test_store

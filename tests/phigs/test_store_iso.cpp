@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <limits>
 
+namespace test_store_iso {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -324,3 +326,5 @@ TEST_CASE("retrieve of a structure the archive lacks creates it empty, warning 4
     phigs.closeArchiveFile(1);
     std::filesystem::remove(file);
 }
+
+}  // namespace test_store_iso

@@ -33,6 +33,8 @@
 #include <random>
 #include <unordered_map>
 
+namespace test_store_random {
+
 using namespace phigs;
 using phigs::test::errorOf;
 using test::ArchiveModel;
@@ -595,3 +597,5 @@ TEST_CASE("random store, posting and archive operations agree with a reference m
         Runner(seed, scratchArchive(seed)).run(operations);
     }
 }
+
+}  // namespace test_store_random

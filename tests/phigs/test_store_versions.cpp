@@ -12,6 +12,8 @@
 #include <map>
 #include <random>
 
+namespace test_store_versions {
+
 using namespace phigs;
 
 namespace {
@@ -172,3 +174,5 @@ TEST_CASE("subtree versions survive more edits than the store carries one by one
     CHECK(store.subtreeVersion(3) == other);
     CHECK(store.subtreeVersion(1) == store.subtreeVersion(1));
 }
+
+}  // namespace test_store_versions

@@ -6,6 +6,8 @@
 
 #include <numbers>
 
+namespace test_transform_utilities {
+
 using namespace phigs;
 
 namespace {
@@ -58,3 +60,5 @@ TEST_CASE("transform point refuses w = 0", "[transform]") {
     CHECK_FALSE(transformPoint3(glm::dmat4(0.0), {1, 1, 1}));
     CHECK_FALSE(transformPoint2(glm::dmat3(0.0), {1, 1}));
 }
+
+}  // namespace test_transform_utilities

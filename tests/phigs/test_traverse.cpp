@@ -4,6 +4,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+namespace test_traverse {
+
 using namespace phigs;
 
 namespace {
@@ -414,3 +416,5 @@ TEST_CASE("an edit replaces only its structure's segments of the draw list; the 
     CHECK(!after.items[0].highlighted());
     CHECK(std::distance(after.items.begin(), after.items.end()) == static_cast<long>(after.items.size()));
 }
+
+}  // namespace test_traverse

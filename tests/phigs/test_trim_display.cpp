@@ -14,6 +14,8 @@
 
 #include <algorithm>
 
+namespace test_trim_display {
+
 using namespace phigs;
 using phigs::testing::randomInt;
 
@@ -233,3 +235,5 @@ TEST_CASE("a finer trim approximation follows a curved trimming loop more closel
     CHECK(points[2] < points[3]);
     CHECK(triangles[0] != triangles[1]);  // the chord cuts off cells the curve keeps
 }
+
+}  // namespace test_trim_display

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+namespace test_view_ws {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -251,3 +253,5 @@ TEST_CASE("workstation types and their descriptions", "[ws]") {
     CHECK(phigs.openWorkstationIds() == std::vector<int>{1, 3});
     CHECK(errorOf([&] { phigs.closeWorkstation(2); }) == errors::WorkstationNotOpen);
 }
+
+}  // namespace test_view_ws

@@ -12,6 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
+namespace test_workstation_input {
+
 using namespace phigs;
 
 namespace {
@@ -380,3 +382,5 @@ TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the pi
             CHECK_FALSE(shown.items[k].pickable());
     }
 }
+
+}  // namespace test_workstation_input

@@ -7,6 +7,8 @@
 
 #include <stdexcept>
 
+namespace test_ws_outputs {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -114,3 +116,5 @@ TEST_CASE("open workstation makes the output of the type's factory", "[ws][outpu
         phigs.closeWorkstation(4);
     }
 }
+
+}  // namespace test_ws_outputs

@@ -8,6 +8,8 @@
 
 #include <random>
 
+namespace test_ws_state {
+
 using namespace phigs;
 using phigs::test::errorOf;
 
@@ -226,3 +228,5 @@ TEST_CASE("a pick traversal in a deferred state reads the views of the picture s
     CHECK(viewOf(ws.display()) == 0.5);
     CHECK(viewOf(ws.traverse({})) == 0.5);
 }
+
+}  // namespace test_ws_state

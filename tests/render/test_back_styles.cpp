@@ -14,6 +14,8 @@
 #include <random>
 #include <string>
 
+namespace test_back_styles {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -353,3 +355,5 @@ TEST_CASE("back faces: each side by its own shading method, on lavapipe and in P
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_back_styles

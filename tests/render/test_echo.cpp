@@ -7,6 +7,8 @@
 #include "phigs/vk/WorkstationDisplay.h"
 #include "phigs/ws/EchoStructures.h"
 
+namespace test_echo {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -101,3 +103,5 @@ TEST_CASE("echo structures: a menu panel and a slider are drawn by the toolkit a
     CHECK(display.image().rgba == after.rgba);
     requireNoValidationMessages(display.context());
 }
+
+}  // namespace test_echo

@@ -19,6 +19,8 @@
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
 
+namespace test_echo_window {
+
 using namespace phigs;
 using namespace render_test;
 using namespace std::chrono_literals;
@@ -125,3 +127,5 @@ TEST_CASE("echo window: real clicks on the toolkit's panel and slider deliver ch
     requireNoValidationMessages(display.context());
 }
 #endif
+
+}  // namespace test_echo_window

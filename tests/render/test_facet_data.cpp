@@ -5,6 +5,8 @@
 #include "phigs/Phigs.h"
 #include "phigs/vk/ImageTarget.h"
 
+namespace test_facet_data {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -113,3 +115,5 @@ TEST_CASE("level curves of a NURBS surface are drawn in the polyline attributes"
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_facet_data

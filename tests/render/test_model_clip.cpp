@@ -4,6 +4,8 @@
 #include "SceneMeshes.h"
 #include "phigs/vk/ImageTarget.h"
 
+namespace test_model_clip {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -98,3 +100,5 @@ TEST_CASE("model clipping: more distinct planes than the frame holds are refused
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_model_clip

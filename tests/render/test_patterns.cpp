@@ -7,6 +7,8 @@
 
 #include <random>
 
+namespace test_patterns {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -163,3 +165,5 @@ TEST_CASE("patterns: an undefined pattern index draws pattern 1, no pattern tabl
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_patterns

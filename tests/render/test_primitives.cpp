@@ -3,6 +3,8 @@
 #include "SceneMeshes.h"
 #include "phigs/vk/ImageTarget.h"
 
+namespace test_primitives {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -265,3 +267,5 @@ TEST_CASE("text: stroke text with height, up vector, path, alignment and expansi
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_primitives

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <random>
 
+namespace test_shader_cache {
+
 using phigs::vk::ShaderCache;
 
 namespace {
@@ -140,3 +142,5 @@ TEST_CASE("shader cache: off stores and finds nothing; the environment chooses t
         unsetenv("XDG_CACHE_HOME");
     setenv("PHIGS_SHADER_CACHE", saved ? savedValue.c_str() : "off", 1);
 }
+
+}  // namespace test_shader_cache

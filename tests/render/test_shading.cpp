@@ -8,6 +8,8 @@
 
 #include <random>
 
+namespace test_shading {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -407,3 +409,5 @@ TEST_CASE("lit surfaces of more materials than the lit runs hold light as the eq
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_shading

@@ -4,6 +4,8 @@
 #include "phigs/vk/HardcopyTarget.h"
 #include "phigs/vk/ImageTarget.h"
 
+namespace test_shutdown {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -46,3 +48,5 @@ TEST_CASE("shutdown: a leaked buffer is reported when the device is destroyed", 
     REQUIRE_FALSE(log.empty());
     CHECK(log.front().find("VkBuffer") != std::string::npos);
 }
+
+}  // namespace test_shutdown

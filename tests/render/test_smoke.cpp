@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <string>
 
+namespace test_smoke {
+
 using namespace phigs;
 
 namespace {
@@ -118,3 +120,5 @@ TEST_CASE("smoke: PNG reading names the file when it is not a PNG", "[render][sm
     }
     REQUIRE_THROWS_WITH(readPng(bad), Catch::Contains("not_a_png.png"));
 }
+
+}  // namespace test_smoke

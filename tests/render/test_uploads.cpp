@@ -9,6 +9,8 @@
 
 #include <random>
 
+namespace test_uploads {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -208,3 +210,5 @@ TEST_CASE("uploads: through the store, an unchanged frame uploads nothing and an
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_uploads

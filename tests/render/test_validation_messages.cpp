@@ -6,6 +6,8 @@
 #include <iostream>
 #include <sstream>
 
+namespace test_validation_messages {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -75,3 +77,5 @@ TEST_CASE("validation: PHIGS_VK_VALIDATION turns the layer on or off over a prog
     else
         unsetenv("PHIGS_VK_VALIDATION");
 }
+
+}  // namespace test_validation_messages

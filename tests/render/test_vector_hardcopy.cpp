@@ -16,6 +16,8 @@
 #include <cstdio>
 #include <fstream>
 
+namespace test_vector_hardcopy {
+
 using namespace phigs;
 using namespace phigs::hardcopy;
 using namespace render_test;
@@ -296,3 +298,5 @@ TEST_CASE("vector hardcopy against lavapipe: four views, one in perspective, wit
     }
     compareWithLavapipe("four_views", list, 256, 256);
 }
+
+}  // namespace test_vector_hardcopy

@@ -5,6 +5,8 @@
 #include "phigs/Phigs.h"
 #include "phigs/vk/ImageTarget.h"
 
+namespace test_vertex_data {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -142,3 +144,5 @@ TEST_CASE("triangle strip, quadrilateral mesh and cell array from the store, thr
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_vertex_data

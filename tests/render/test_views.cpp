@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+namespace test_views {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -193,3 +195,5 @@ TEST_CASE("renderer: a draw item naming a missing view or light set is refused w
     }
     requireNoValidationMessages(context);
 }
+
+}  // namespace test_views

@@ -9,6 +9,8 @@
 
 #include <unistd.h>
 
+namespace test_window {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -84,3 +86,5 @@ TEST_CASE("window: a window target presents the same picture as the offscreen on
     for (const auto& message : shutdownLog) UNSCOPED_INFO(message);
     CHECK(shutdownLog.empty());
 }
+
+}  // namespace test_window

@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <optional>
 
+namespace test_workstation_display {
+
 using namespace phigs;
 using namespace render_test;
 
@@ -268,3 +270,5 @@ TEST_CASE("workstation display: a hardcopy workstation writes its picture on upd
                       Catch::Matchers::Contains("needs a file"));
     requireNoValidationMessages(display.context());
 }
+
+}  // namespace test_workstation_display

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <limits>
 
+namespace test_session_bounds {
+
 using session_test::Driver;
 
 namespace {
@@ -123,3 +125,5 @@ TEST_CASE("files a script names stay inside the output directory") {
     CHECK(d.session.message().find("is a directory") != std::string::npos);
     CHECK(d.session.failedLines() == 5);
 }
+
+}  // namespace test_session_bounds

@@ -4,6 +4,8 @@
 
 #include "acsynt/session/ModelPicture.h"
 
+namespace test_session_error_map {
+
 using session_test::Driver;
 
 namespace {
@@ -166,3 +168,5 @@ TEST_CASE("bad numbers in every prompt are refused with a message and change not
     REQUIRE(d.session.reductions().size() == 1);
     CHECK(d.session.reductions()[0].count == 2);
 }
+
+}  // namespace test_session_error_map

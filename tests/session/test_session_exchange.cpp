@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 
+namespace test_session_exchange {
+
 using session_test::Driver;
 
 namespace {
@@ -160,3 +162,5 @@ TEST_CASE("FILE menu: bad EXPORT and IMPORT names and files leave the models as 
     d.run({"string missing.igs", "choice 10"});
     CHECK(d.session.finished());
 }
+
+}  // namespace test_session_exchange

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 
+namespace test_session_hardcopy {
+
 using session_test::Driver;
 
 namespace {
@@ -131,3 +133,5 @@ TEST_CASE("a hardcopy runs the program's hook before writing; freed screen image
     CHECK(std::filesystem::exists(out / "one.pdf"));
     CHECK(d.picture().rgba == before.rgba);
 }
+
+}  // namespace test_session_hardcopy

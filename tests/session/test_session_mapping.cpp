@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+namespace test_session_mapping {
+
 using session_test::Driver;
 
 using session_test::componentIndex;
@@ -159,3 +161,5 @@ TEST_CASE("MAP CURVE: the logo at scale 2 over the transport's wing edges, clipp
     d.run({"choice RETURN", "choice VIEW", "choice CENTRE_ON_MARKER", "valuator 4 2", "choice RETURN"});
     session_test::compareWithReference(d.picture(), "curve_map_clipped_logo");
 }
+
+}  // namespace test_session_mapping

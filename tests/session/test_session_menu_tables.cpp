@@ -16,6 +16,8 @@
 #include <set>
 #include <sstream>
 
+namespace test_session_menu_tables {
+
 namespace {
 
 std::string trimmed(const std::string& s) {
@@ -214,3 +216,5 @@ TEST_CASE("menu tables: every command of every menu answers when chosen from the
     }
     CHECK(commands == 51);
 }
+
+}  // namespace test_session_menu_tables

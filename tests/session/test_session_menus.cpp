@@ -7,6 +7,8 @@
 #include <fstream>
 #include <map>
 
+namespace test_session_menus {
+
 using session_test::Driver;
 
 using session_test::componentIndex;
@@ -382,3 +384,5 @@ TEST_CASE("a pick on a row of the menu panel chooses that item, as a click in a 
     CHECK(d.session.menuTitle() == "MAIN");
     session_test::compareWithReference(d.picture(), "menu_main_empty");
 }
+
+}  // namespace test_session_menus

@@ -4,6 +4,8 @@
 
 #include "geom/Evaluate.h"
 
+namespace test_session_modes {
+
 using session_test::Driver;
 
 TEST_CASE("the pointer pad turns off after DONE: pad buttons and marker valuators are refused") {
@@ -37,3 +39,5 @@ TEST_CASE("the pointer pad turns off after DONE: pad buttons and marker valuator
     REQUIRE(d.session.mappings().size() == 1);
     CHECK(d.session.mappings()[0].reference.u == placed.u);
 }
+
+}  // namespace test_session_modes

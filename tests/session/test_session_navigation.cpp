@@ -5,6 +5,8 @@
 #include "acsynt/session/ModelPicture.h"
 #include "acsynt/session/ViewNavigation.h"
 
+namespace test_session_navigation {
+
 using session_test::Driver;
 using namespace phigs::window_event;
 using phigs::WindowEvent;
@@ -153,3 +155,5 @@ TEST_CASE("navigation and undo keys are recorded and replay to the same views an
     CHECK(again.x == Approx(shown.x));
     CHECK(again.y == Approx(shown.y));
 }
+
+}  // namespace test_session_navigation

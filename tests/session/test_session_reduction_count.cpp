@@ -3,6 +3,8 @@
 
 #include "geom/Evaluate.h"
 
+namespace test_session_reduction_count {
+
 using session_test::Driver;
 
 TEST_CASE("SURF_REDN BY COUNT: asking more knots than the wing's span has says how many and why") {
@@ -29,3 +31,5 @@ TEST_CASE("SURF_REDN BY COUNT: asking more knots than the wing's span has says h
     d.run({"string 1"});
     CHECK(d.session.message().find("ONLY") == std::string::npos);
 }
+
+}  // namespace test_session_reduction_count

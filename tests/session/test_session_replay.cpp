@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace test_session_replay {
+
 using session_test::Driver;
 
 namespace {
@@ -316,3 +318,5 @@ TEST_CASE("a recorded surface pick that no longer shows there is refused by name
     CHECK(d.session.message() == "RECORDED PICK: MODEL fighter HAS NO COMPONENT no_such_part");
     CHECK(d.session.failedLines() == failed + 3);
 }
+
+}  // namespace test_session_replay

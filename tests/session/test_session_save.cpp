@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace test_session_save {
+
 using session_test::Driver;
 
 using session_test::componentIndex;
@@ -144,3 +146,5 @@ TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the mo
         CHECK(d.session.models().size() == 1);
     }
 }
+
+}  // namespace test_session_save

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 
+namespace test_session_undo {
+
 using session_test::Driver;
 
 using session_test::componentIndex;
@@ -127,3 +129,5 @@ TEST_CASE("a reduction of the mapped component moves its mapped curves onto the 
                   std::max(2 * maxError, 2e-3));
         }
 }
+
+}  // namespace test_session_undo

@@ -19,6 +19,8 @@
 // Last: Xlib defines macros (None, True, Status) that would break the headers above.
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
+
+namespace test_session_window {
 // Xlib's event-type macros share names with phigs::window_event types.
 #undef KeyPress
 #undef ButtonPress
@@ -168,3 +170,5 @@ TEST_CASE("interactive session in a window: menu clicks, surface clicks, pad and
 }
 
 #endif
+
+}  // namespace test_session_window

@@ -9,6 +9,8 @@
 #include <GLFW/glfw3.h>
 #include <catch2/catch.hpp>
 
+namespace test_window_input {
+
 using namespace phigs;
 using namespace std::chrono_literals;
 
@@ -165,3 +167,5 @@ TEST_CASE("window: a click in a choice device's menu panel chooses its alternati
     CHECK(status == InputStatus::Ok);
     CHECK(std::get<ChoiceMeasure>(measure).choice == 3);
 }
+
+}  // namespace test_window_input

@@ -14,6 +14,8 @@
 #include <X11/Xlib.h>
 #include <X11/extensions/XTest.h>
 
+namespace test_window_xtest {
+
 using namespace phigs;
 using namespace std::chrono_literals;
 
@@ -70,3 +72,5 @@ TEST_CASE("window: real X pointer and button events reach the pick device", "[wi
     glfwDestroyWindow(window);
     glfwTerminate();
 }
+
+}  // namespace test_window_xtest
