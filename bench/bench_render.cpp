@@ -397,7 +397,7 @@ Options parse(int argc, char** argv) {
 std::vector<std::shared_ptr<const MeshData>> meshesOf(const DrawList& picture) {
     std::vector<std::shared_ptr<const MeshData>> meshes;
     for (const DrawItem& item : picture.items)
-        if (const auto* m = std::get_if<DrawMesh>(&item.primitive); m && m->mesh) meshes.push_back(m->mesh);
+        if (const auto* m = primitiveIf<DrawMesh>(item.primitive); m && m->mesh) meshes.push_back(m->mesh);
     return meshes;
 }
 

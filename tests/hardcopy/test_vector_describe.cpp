@@ -171,8 +171,7 @@ TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash pha
             colours.push_back({unit(rng), unit(rng), unit(rng)});
         }
         line.points = points;
-        line.colours = colours;
-        line.interpolated = rng() % 2 == 0;
+        line.colours = VertexColours{colours, rng() % 2 == 0};
         line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
         DrawList list = identityList();
         list.items.push_back(item(line));
@@ -199,13 +198,13 @@ TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash pha
             while (k + 2 < along.size() && along[k + 1] <= middle) ++k;
             const float t = float((middle - along[k]) / std::max(along[k + 1] - along[k], 1e-12));
             const glm::vec3 expected =
-                line.interpolated ? glm::mix(colours[k], colours[k + 1], t) : colours[k];
-            CHECK(glm::length(stroke->colour - expected) < (line.interpolated ? 2.0f / 255 : 1e-5f));
+                line.colours->interpolated ? glm::mix(colours[k], colours[k + 1], t) : colours[k];
+            CHECK(glm::length(stroke->colour - expected) < (line.colours->interpolated ? 2.0f / 255 : 1e-5f));
             phase += length;
         }
         CHECK(phase == Approx(along.back()).epsilon(1e-6));
         CHECK(pieces >= 1);
-        if (!line.interpolated) CHECK(pieces <= std::size_t(n - 1));
+        if (!line.colours->interpolated) CHECK(pieces <= std::size_t(n - 1));
     }
 }
 

@@ -204,8 +204,8 @@ TEST_CASE("polyline bundle (PHIGS PLUS): a direct colour and the curve approxima
             line,
         });
         REQUIRE(list.items.size() == 3);
-        const DrawCurve& first = std::get<DrawCurve>(list.items[0].primitive);
-        const DrawCurve& second = std::get<DrawCurve>(list.items[1].primitive);
+        const DrawCurve& first = primitiveAs<DrawCurve>(list.items[0].primitive);
+        const DrawCurve& second = primitiveAs<DrawCurve>(list.items[1].primitive);
         INFO("segments " << individualSegments << " and " << bundledSegments);
         CHECK(first.points.size() == std::size_t(individualSegments) + 1);  // one span
         CHECK(first.style->colour == glm::vec3(1.0f));

@@ -59,12 +59,12 @@ ItemView view(const DrawList& list, const DrawItem& item) {
     if (item.depthCue() >= 0) v.cue = list.depthCues.at(static_cast<std::size_t>(item.depthCue()));
     if (auto p = std::get_if<DrawPolyline>(&item.primitive)) v.points = p->points;
     if (auto p = std::get_if<DrawPolymarker>(&item.primitive)) v.points = p->points;
-    if (auto c = std::get_if<DrawCurve>(&item.primitive)) v.points = c->points;
+    if (auto c = primitiveIf<DrawCurve>(item.primitive)) v.points = c->points;
     if (auto f = primitiveIf<DrawFillArea>(item.primitive))
         for (const auto& contour : f->contours)
             v.points.insert(v.points.end(), contour.begin(), contour.end());
     if (auto t = primitiveIf<DrawText>(item.primitive)) v.text = t->text;
-    if (auto m = std::get_if<DrawMesh>(&item.primitive))
+    if (auto m = primitiveIf<DrawMesh>(item.primitive))
         v.meshPositions = m->mesh->positions.size(), v.meshTriangles = m->mesh->triangles.size();
     return v;
 }

@@ -40,7 +40,7 @@ TEST_CASE("GDP circles: every drawn point on the circle, in the plane of the thr
         if (!checkGdp(circle).empty()) continue;  // collinear by chance: refused, tested below
         const DrawList& list = s.draw({circle});
         REQUIRE(list.items.size() == 1);
-        const auto& drawn = std::get<DrawCurve>(list.items[0].primitive);
+        const auto& drawn = primitiveAs<DrawCurve>(list.items[0].primitive);
         REQUIRE(drawn.curve);
         const double radius = glm::length(p - c);
         const glm::dvec3 normal = glm::normalize(glm::cross(p - c, q - c));
@@ -64,7 +64,7 @@ TEST_CASE("GDP arcs: from the first point through the second to the third, on th
         if (!checkGdp(arc).empty()) continue;
         const DrawList& list = s.draw({arc});
         REQUIRE(list.items.size() == 1);
-        const auto& drawn = std::get<DrawCurve>(list.items[0].primitive);
+        const auto& drawn = primitiveAs<DrawCurve>(list.items[0].primitive);
         const double size = glm::length(b - a) + glm::length(c - a) + 1.0;
         CHECK(glm::length(drawn.points.front() - a) <= 1e-9 * size);
         CHECK(glm::length(drawn.points.back() - c) <= 1e-9 * size);

@@ -142,7 +142,7 @@ TEST_CASE("pick surface: rotated and clipped surfaces, nearest of several, path 
     CHECK(hits[1].item == 0);
     for (const auto& h : hits) {
         const auto& item = list.items[h.item];
-        const auto& surface = *std::get<DrawMesh>(item.primitive).surface;
+        const auto& surface = *primitiveAs<DrawMesh>(item.primitive).surface;
         const glm::dvec3 p = h.surface->point;
         CHECK(glm::length(p - geom::evaluate(surface, h.surface->uv.x, h.surface->uv.y)) < 1e-9);
         const glm::dvec3 world = glm::dvec3(item.modelTransform().get() * glm::dvec4(p, 1.0));

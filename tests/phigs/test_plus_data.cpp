@@ -111,11 +111,11 @@ TEST_CASE("polyline set with data: a segment takes its first vertex's colour", "
     // colours[i] under polyline shading NONE); the set without colours in the polyline colour
     REQUIRE(lines.size() == 3);
     CHECK(lines[0]->points.size() == 4);
-    CHECK(lines[0]->colours == std::vector<glm::vec3>{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
-    CHECK_FALSE(lines[0]->interpolated);
-    CHECK(lines[1]->colours == std::vector<glm::vec3>{{0.5f, 0.25f, 1}, {1, 0, 0}});
+    CHECK(lines[0]->colours->values == std::vector<glm::vec3>{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    CHECK_FALSE(lines[0]->colours->interpolated);
+    CHECK(lines[1]->colours->values == std::vector<glm::vec3>{{0.5f, 0.25f, 1}, {1, 0, 0}});
     CHECK(lines[2]->points.size() == 4);
-    CHECK(lines[2]->colours.empty());
+    CHECK(lines[2]->colours->values.empty());
     CHECK(lines[2]->style->colour == glm::vec3(0, 1, 1));
 }
 

@@ -229,7 +229,7 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     CHECK(lines.vertices[3].pattern == Approx(200.0f));  // measured on screen: two 100-pixel segments
     // The cache key follows the content, and for patterned lines the view too.
     CHECK(geometryKey(item, glm::dmat4(1.0)) != geometryKey(item, toPixels));
-    item.primitive = DrawPolyline{dashed.points, {}, {}, false};
+    item.primitive = DrawPolyline{dashed.points, {}, {}};
     CHECK(geometryKey(item, glm::dmat4(1.0)) == geometryKey(item, toPixels));
 }
 
@@ -248,8 +248,7 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
             colours.push_back({unit(rng), unit(rng), unit(rng)});
         }
         line.points = points;
-        line.colours = colours;
-        line.interpolated = rng() % 2 == 0;
+        line.colours = VertexColours{colours, rng() % 2 == 0};
         line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
         DrawItem item;
         item.primitive = line;
@@ -267,11 +266,11 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
             distance += scale * glm::length(glm::dvec2(points[std::size_t(i + 1)] - points[std::size_t(i)]));
             CHECK(b.pattern == Approx(distance).epsilon(1e-5));
             CHECK(a.colour == colours[std::size_t(i)]);
-            CHECK(b.colour == colours[std::size_t(line.interpolated ? i + 1 : i)]);
+            CHECK(b.colour == colours[std::size_t(line.colours->interpolated ? i + 1 : i)]);
         }
         // Colours and shading belong to the cache key.
         const std::uint64_t key = geometryKey(item, toPixels);
-        std::get<DrawPolyline>(item.primitive).interpolated = !line.interpolated;
+        std::get<DrawPolyline>(item.primitive).colours.edit().interpolated = !line.colours->interpolated;
         CHECK(geometryKey(item, toPixels) != key);
     }
 }

@@ -64,7 +64,7 @@ TEST_CASE("reused draw segments let go of the meshes they drew", "[traverse]") {
     {
         DrawList list = s.ws->traverse({});
         REQUIRE(list.items.size() == 2);
-        old = std::get<DrawMesh>(list.items[0].primitive).mesh;
+        old = primitiveAs<DrawMesh>(list.items[0].primitive).mesh;
     }
     // The surface replaced, and the list that drew it gone (its segments wait for reuse).
     s.store->openStructure(2);

@@ -98,7 +98,7 @@ TEST_CASE("shared index lists: surfaces on grids of one size share their triangl
     std::vector<std::pair<const MeshData*, bool>> meshes;
     const ElementArena& stored = scene.store->structure(1).elements;
     for (const DrawItem& item : list.items)
-        if (const auto* m = std::get_if<DrawMesh>(&item.primitive))
+        if (const auto* m = primitiveIf<DrawMesh>(item.primitive))
             for (std::size_t i = 0; i < stored.size(); ++i)
                 if (const auto* e = stored.get<NurbsSurfaceElement>(i); e && &e->surface == m->surface.get())
                     meshes.push_back({m->mesh.get(), !e->trimLoops.empty()});
@@ -121,8 +121,8 @@ TEST_CASE("shared index lists: surfaces on grids of one size share their triangl
     // The same surface twice: one grid, so the triangles are shared at least there.
     const DrawList& twice = scene.draw({elements[0], elements[1], elements[1]});
     REQUIRE(twice.items.size() == 2);
-    CHECK(std::get<DrawMesh>(twice.items[0].primitive)
-              .mesh->triangles.sharesWith(std::get<DrawMesh>(twice.items[1].primitive).mesh->triangles));
+    CHECK(primitiveAs<DrawMesh>(twice.items[0].primitive)
+              .mesh->triangles.sharesWith(primitiveAs<DrawMesh>(twice.items[1].primitive).mesh->triangles));
 }
 
 }  // namespace test_shared_index_list

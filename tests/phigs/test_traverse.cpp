@@ -209,11 +209,11 @@ TEST_CASE("meshes: triangle strip, quadrilateral mesh and cell array", "[travers
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 3);
-    const MeshData& strip = *std::get<DrawMesh>(list.items[0].primitive).mesh;
+    const MeshData& strip = *primitiveAs<DrawMesh>(list.items[0].primitive).mesh;
     CHECK(strip.triangles ==
           std::vector<std::uint32_t>{0, 1, 2, 2, 1, 3});  // alternate winding kept counter-clockwise
-    CHECK(std::get<DrawMesh>(list.items[1].primitive).mesh->triangles.size() == 12);
-    const MeshData& cells = *std::get<DrawMesh>(list.items[2].primitive).mesh;
+    CHECK(primitiveAs<DrawMesh>(list.items[1].primitive).mesh->triangles.size() == 12);
+    const MeshData& cells = *primitiveAs<DrawMesh>(list.items[2].primitive).mesh;
     CHECK(cells.triangles.size() == 12);
     CHECK(cells.colours[0] == glm::vec3(1, 0, 0));
     CHECK(cells.colours[4] == glm::vec3(0, 1, 0));
@@ -232,15 +232,15 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     s.ws->postStructure(1, 0);
     DrawList first = s.ws->display();
     REQUIRE(first.items.size() == 3);
-    const auto& mesh = std::get<DrawMesh>(first.items[0].primitive);
+    const auto& mesh = primitiveAs<DrawMesh>(first.items[0].primitive);
     REQUIRE(mesh.surface);
     CHECK(mesh.mesh->positions.size() == 81);  // workstation dependent: 8 segments per span
     CHECK(mesh.mesh->triangles.size() == 8 * 8 * 2 * 3);
     CHECK(mesh.mesh->normals[0] == glm::vec3(0, 0, 1));  // Su x Sv for this patch
-    const auto& cut = std::get<DrawMesh>(first.items[1].primitive);
+    const auto& cut = primitiveAs<DrawMesh>(first.items[1].primitive);
     CHECK(cut.mesh->triangles.size() ==
           4 * 3 * 3);  // of 32 triangles of a 4 x 4 grid, the 12 below the diagonal
-    const auto& drawnCurve = std::get<DrawCurve>(first.items[2].primitive);
+    const auto& drawnCurve = primitiveAs<DrawCurve>(first.items[2].primitive);
     CHECK(drawnCurve.points.size() == 9);
     CHECK(drawnCurve.points[4] == glm::dvec3(1, 0.5, 0));
 
@@ -256,8 +256,8 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     DrawList second = s.ws->display();
     CHECK(counters.surfacesTessellated == 2);
     CHECK(counters.curvesTessellated == 2);
-    CHECK(std::get<DrawMesh>(second.items[0].primitive).mesh == mesh.mesh);  // the same pointer
-    CHECK(std::get<DrawMesh>(second.items[1].primitive).mesh == cut.mesh);
+    CHECK(primitiveAs<DrawMesh>(second.items[0].primitive).mesh == mesh.mesh);  // the same pointer
+    CHECK(primitiveAs<DrawMesh>(second.items[1].primitive).mesh == cut.mesh);
     CHECK(second.items[1].source.structureVersion() != first.items[1].source.structureVersion());
     CHECK(second.generation != first.generation);
     // changing the approximation criteria re-tessellates that surface
@@ -267,7 +267,7 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     s.store->closeStructure();
     DrawList third = s.ws->display();
     CHECK(counters.surfacesTessellated == 3);
-    CHECK(std::get<DrawMesh>(third.items[1].primitive).mesh->triangles.size() == 2 * 3);
+    CHECK(primitiveAs<DrawMesh>(third.items[1].primitive).mesh->triangles.size() == 2 * 3);
 }
 
 TEST_CASE("incremental traversal reuses unchanged subtrees and equals a full traversal", "[traverse]") {
@@ -323,7 +323,7 @@ TEST_CASE("chordal deviation criteria tessellate adaptively through geom, within
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 2);
-    const MeshData& mesh = *std::get<DrawMesh>(list.items[0].primitive).mesh;
+    const MeshData& mesh = *primitiveAs<DrawMesh>(list.items[0].primitive).mesh;
     REQUIRE(mesh.triangles.size() >= 3);
     for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
         glm::dvec3 centre = (glm::dvec3(mesh.positions[mesh.triangles[t]]) +
@@ -332,7 +332,7 @@ TEST_CASE("chordal deviation criteria tessellate adaptively through geom, within
                             3.0;
         CHECK(std::abs(std::hypot(centre.x, centre.y) - 1.0) < 1.5e-3);
     }
-    const auto& points = std::get<DrawCurve>(list.items[1].primitive).points;
+    const auto& points = primitiveAs<DrawCurve>(list.items[1].primitive).points;
     REQUIRE(points.size() >= 3);
     for (std::size_t i = 0; i + 1 < points.size(); ++i) {
         glm::dvec3 mid = (points[i] + points[i + 1]) / 2.0;

@@ -100,7 +100,7 @@ std::shared_ptr<const MeshData> meshOf(const NurbsSurfaceElement& element) {
     ws.postStructure(1, 0);
     const DrawList& list = ws.display();
     REQUIRE(list.items.size() == 1);
-    return std::get<DrawMesh>(list.items[0].primitive).mesh;
+    return primitiveAs<DrawMesh>(list.items[0].primitive).mesh;
 }
 
 bool insideEvenOdd(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p) {

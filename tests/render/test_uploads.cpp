@@ -58,7 +58,7 @@ NurbsSurfaceElement dome(int k, int count, double lift) {
 std::map<int, std::shared_ptr<const MeshData>> meshesByStructure(const DrawList& picture) {
     std::map<int, std::shared_ptr<const MeshData>> meshes;
     for (const DrawItem& item : picture.items)
-        if (const auto* m = std::get_if<DrawMesh>(&item.primitive))
+        if (const auto* m = primitiveIf<DrawMesh>(item.primitive))
             meshes[item.source.path().back().structureId] = m->mesh;
     return meshes;
 }
@@ -116,7 +116,7 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(renderer.lastFrame().uploads == 1);         // that buffer; colours are push constants
         }
         SECTION("changing the mesh's interior colour uploads nothing and draws the new colour") {
-            std::get<DrawMesh>(list.items[3].primitive).interior.edit().colour = {1, 0, 0};
+            editPrimitive<DrawMesh>(list.items[3].primitive).interior.edit().colour = {1, 0, 0};
             const Image red = ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 0);
             CHECK(renderer.lastFrame().uploadedBytes == 0);
@@ -134,7 +134,8 @@ TEST_CASE("uploads: unchanged frames upload nothing, edits upload only what chan
             CHECK(renderer.lastFrame().buffersCreated == 0);
         }
         SECTION("a new mesh pointer uploads its vertices and indices, and the old buffers are freed") {
-            std::get<DrawMesh>(list.items[3].primitive).mesh = sphere({0.5f, 0.5f, 0.5f}, 0.25f, 16, 8, 2);
+            editPrimitive<DrawMesh>(list.items[3].primitive).mesh =
+                sphere({0.5f, 0.5f, 0.5f}, 0.25f, 16, 8, 2);
             mesh.reset();
             ws.draw(list);
             CHECK(renderer.lastFrame().uploads == 2);

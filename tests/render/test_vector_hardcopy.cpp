@@ -100,7 +100,7 @@ std::vector<glm::dvec3> rectangle(double x0, double y0, double x1, double y1) {
 DrawList hiddenLineReference(const DrawList& list) {
     DrawList reference = list;
     for (const DrawItem& item : list.items) {
-        const auto* mesh = std::get_if<DrawMesh>(&item.primitive);
+        const auto* mesh = primitiveIf<DrawMesh>(item.primitive);
         if (!mesh) continue;
         for (const auto& chain : chainEdges(patchBoundaryEdges(*mesh->mesh, mesh->surface.get()))) {
             DrawPolyline boundary;
@@ -114,9 +114,10 @@ DrawList hiddenLineReference(const DrawList& list) {
         }
     }
     for (DrawItem& item : reference.items)
-        if (auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
-            mesh->interior.edit().colour = reference.background;
-            mesh->interior.edit().reflectance = ReflectanceModel::None;
+        if (holdsPrimitive<DrawMesh>(item.primitive)) {
+            DrawMesh& mesh = editPrimitive<DrawMesh>(item.primitive);
+            mesh.interior.edit().colour = reference.background;
+            mesh.interior.edit().reflectance = ReflectanceModel::None;
         }
     return reference;
 }

@@ -57,7 +57,7 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
       colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
     const InteriorStyleSet* interior = nullptr;
     if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) interior = &mesh->interior.get();
+    if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) interior = &mesh->interior.get();
     if (!interior) return;
     for (int side = 0; side < 2; ++side) {
         if (interior->styleOf(side == 1) != InteriorStyle::Pattern) continue;

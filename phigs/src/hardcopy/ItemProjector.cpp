@@ -35,7 +35,7 @@ std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> point
 
 void ItemProjector::operator()(const DrawPolyline& polyline) {
     pipeline_.line(toWorld(polyline.points), false, polyline.style->colour, polyline.style->type,
-                   polyline.style->width, polyline.colours, polyline.interpolated);
+                   polyline.style->width, polyline.colours->values, polyline.colours->interpolated);
 }
 
 void ItemProjector::operator()(const DrawCurve& curve) {

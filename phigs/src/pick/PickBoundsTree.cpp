@@ -56,7 +56,7 @@ PickBoundsTree::Key PickBoundsTree::keyOf(const DrawItem& item) const {
     if (!item.pickable()) return key;
     key.view = item.viewIndex();
     key.transform = item.modelTransform().get();
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
+    if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) {
         key.geometry = mesh->surface.get();
         key.mesh = mesh->mesh.get();
     }

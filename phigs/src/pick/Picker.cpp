@@ -415,7 +415,7 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                                     const PickItemBounds* bounds) const {
     const DrawItem& item = list.items[index];
     if (!item.pickable()) return std::nullopt;
-    const auto* drawMesh = std::get_if<DrawMesh>(&item.primitive);
+    const auto* drawMesh = primitiveIf<DrawMesh>(item.primitive);
     const bool exactSurface = drawMesh && drawMesh->surface;
     if (surfaceTest == SurfaceTest::Tessellation && !exactSurface) return std::nullopt;
     if (item.viewIndex() < 0 || static_cast<std::size_t>(item.viewIndex()) >= list.views.size())

@@ -279,7 +279,7 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawPolyline>)
-                b.polyline(p.points, p.style, p.colours, p.interpolated);
+                b.polyline(p.points, p.style, p.colours->values, p.colours->interpolated);
             else if constexpr (std::is_same_v<T, DrawCurve>)
                 b.polyline(p.points, p.style);
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
@@ -345,7 +345,8 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
             if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
                 h.values(p.points);
                 h.value(p.style);
-                if constexpr (std::is_same_v<T, DrawPolyline>) h.values(p.colours), h.value(p.interpolated);
+                if constexpr (std::is_same_v<T, DrawPolyline>)
+                    h.values(p.colours->values), h.value(p.colours->interpolated);
                 if (p.style->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 h.values(p.points);

@@ -109,7 +109,7 @@ std::optional<PatternMap> itemPatternMap(const DrawItem& item, const DrawPattern
         if (!plane) return std::nullopt;
         return patternMap(fill->interior->pattern, model, pattern, plane->point, plane->normal);
     }
-    if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
+    if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) {
         if (!patterned(mesh->interior) || !mesh->mesh) return std::nullopt;
         if (const std::optional<Plane> plane = meshPlane(*mesh->mesh, model))
             return patternMap(mesh->interior->pattern, model, pattern, plane->point, plane->normal);

@@ -15,15 +15,15 @@ struct PrimitiveOwns {
     bool operator()(const DrawPolymarker& p) const { return p.points.owned() || p.style.owned(); }
     bool operator()(const ItemRef<DrawFillArea>& p) const { return p.owned(); }
     bool operator()(const ItemRef<DrawText>& p) const { return p.owned(); }
-    bool operator()(const DrawMesh&) const { return true; }   // shared meshes and surfaces
-    bool operator()(const DrawCurve&) const { return true; }  // a shared curve
+    bool operator()(const ItemRef<DrawMesh>& p) const { return p.owned(); }
+    bool operator()(const ItemRef<DrawCurve>& p) const { return p.owned(); }
 };
 
 }  // namespace
 
 bool ItemVector::ownsSomething(const DrawItem& item) {
     // Every member of DrawItem that may own is asked: a new one must be added here.
-    static_assert(sizeof(DrawItem) == 88 && sizeof(DrawPolyline) == 48 && sizeof(DrawPolymarker) == 24,
+    static_assert(sizeof(DrawItem) == 64 && sizeof(DrawPolyline) == 32 && sizeof(DrawPolymarker) == 24,
                   "DrawItem or a primitive changed: is every member that may own asked below?");
     return item.context.owned() || item.source.owned() || ownsSomething(item.primitive);
 }

@@ -22,6 +22,8 @@ void empty(DrawSegment& segment) {
     segment.contexts.clear();
     segment.fillAreas.clear();
     segment.texts.clear();
+    segment.meshes.clear();
+    segment.curves.clear();
     segment.storePoints.reset();
 }
 

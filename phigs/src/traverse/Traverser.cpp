@@ -809,7 +809,7 @@ private:
         fields_.depthCue = depthCue(state.depthCueIndex);
     }
 
-    /// A primitive as its item holds it: fill areas and text in the segment, viewed.
+    /// A primitive as its item holds it: fill areas, text, meshes and curves in the segment, viewed.
     template <class Primitive>
     DrawPrimitive held(Primitive&& primitive) {
         using P = std::decay_t<Primitive>;
@@ -817,6 +817,10 @@ private:
             return ItemRef<P>::view(&segment_->fillAreas.emplace_back(std::forward<Primitive>(primitive)));
         else if constexpr (std::is_same_v<P, DrawText>)
             return ItemRef<P>::view(&segment_->texts.emplace_back(std::forward<Primitive>(primitive)));
+        else if constexpr (std::is_same_v<P, DrawMesh>)
+            return ItemRef<P>::view(&segment_->meshes.emplace_back(std::forward<Primitive>(primitive)));
+        else if constexpr (std::is_same_v<P, DrawCurve>)
+            return ItemRef<P>::view(&segment_->curves.emplace_back(std::forward<Primitive>(primitive)));
         else
             return DrawPrimitive(std::forward<Primitive>(primitive));
     }
@@ -896,7 +900,7 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{storedPoints(e.points), line(state), {}, false});
+                        emit(s, number, state, DrawPolyline{storedPoints(e.points), line(state), {}});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
                         emit(s, number, state, DrawPolymarker{storedPoints(e.points), marker(state)});
@@ -1196,11 +1200,9 @@ private:
         for (std::size_t i = 0; i < e.polylines.size(); ++i) {
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
-            DrawPolyline p{segmentPoints(points), style, {}, false};
-            if (!e.vertexColours.empty()) {
-                p.colours = resolveColours(e.vertexColours[i], state);
-                p.interpolated = shaded;
-            }
+            DrawPolyline p{segmentPoints(points), style, {}};
+            if (!e.vertexColours.empty())
+                p.colours = VertexColours{resolveColours(e.vertexColours[i], state), shaded};
             emit(s, number, state, std::move(p));
         }
     }
@@ -1248,8 +1250,7 @@ private:
             emit(s, number, state,
                  DrawPolyline{segmentPoints(line),
                               intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width}),
-                              {},
-                              false});
+                              {}});
     }
 
     /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from

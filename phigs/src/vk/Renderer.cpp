@@ -752,7 +752,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             }
         };
 
-        if (const auto* mesh = std::get_if<DrawMesh>(&item.primitive)) {
+        if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) {
             if (!mesh->mesh) continue;
             CachedMesh& cached = compileMesh(mesh->mesh);
             if (!cached.vertices) continue;

@@ -27,14 +27,19 @@
 
 namespace phigs {
 
-/// A polyline: one connected strip of points in modelling coordinates. With vertex colours
-/// (one per point, else `style->colour`) segment i takes colours[i], or with `interpolated` goes
-/// linearly from colours[i] to colours[i + 1]; its line type runs on along the whole strip.
+/// A polyline's vertex colours (one per point): segment i takes values[i], or with `interpolated`
+/// goes linearly from values[i] to values[i + 1].
+struct VertexColours {
+    ItemArray<glm::vec3> values;
+    bool interpolated = false;
+};
+
+/// A polyline: one connected strip of points in modelling coordinates, coloured by its vertex
+/// colours, or when there are none by `style->colour`; its line type runs on along the whole strip.
 struct DrawPolyline {
     ItemArray<glm::dvec3> points;
     ItemRef<LineStyle> style;
-    ItemArray<glm::vec3> colours;
-    bool interpolated = false;
+    ItemRef<VertexColours> colours;  ///< out of line: rare, and an item stays small without them
 };
 
 /// A set of markers at points in modelling coordinates.
@@ -107,11 +112,12 @@ struct DrawCurve {
     double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
 };
 
-/// The closed family of primitives a draw list holds. Fill areas and text, large and rare, are held
-/// out of line (a view of their draw segment's record, or a copy of their own) so that every item
-/// stays small; read through visitPrimitive and primitiveIf, which hand them out as themselves.
-using DrawPrimitive =
-    std::variant<DrawPolyline, DrawPolymarker, ItemRef<DrawFillArea>, ItemRef<DrawText>, DrawMesh, DrawCurve>;
+/// The closed family of primitives a draw list holds. Fill areas, text, meshes and curves, larger
+/// and fewer than polylines, are held out of line (a view of their draw segment's record, or a copy
+/// of their own) so that every item stays 64 bytes; read through visitPrimitive and primitiveIf,
+/// which hand them out as themselves.
+using DrawPrimitive = std::variant<DrawPolyline, DrawPolymarker, ItemRef<DrawFillArea>, ItemRef<DrawText>,
+                                   ItemRef<DrawMesh>, ItemRef<DrawCurve>>;
 
 namespace detail {
 /// A primitive as the variant holds it: T itself, or ItemRef<T> for the out-of-line ones.
@@ -128,8 +134,10 @@ struct HeldPrimitive<ItemRef<T>> {
     static T& edit(ItemRef<T>& held) { return held.edit(); }
 };
 template <class T>
-using HeldAs =
-    std::conditional_t<std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText>, ItemRef<T>, T>;
+inline constexpr bool kHeldOutOfLine = std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText> ||
+                                       std::is_same_v<T, DrawMesh> || std::is_same_v<T, DrawCurve>;
+template <class T>
+using HeldAs = std::conditional_t<kHeldOutOfLine<T>, ItemRef<T>, T>;
 }  // namespace detail
 
 /// False for every T: a visitor's last `else static_assert(kUnhandledPrimitive<T>)` fails to

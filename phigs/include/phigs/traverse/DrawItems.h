@@ -32,6 +32,8 @@ struct DrawSegment {
     StableList<DrawContext> contexts;         ///< one per run of items in one state
     StableList<DrawFillArea> fillAreas;       ///< what the items' fill area views show
     StableList<DrawText> texts;               ///< what the items' text views show
+    StableList<DrawMesh> meshes;              ///< what the items' mesh views show
+    StableList<DrawCurve> curves;             ///< what the items' curve views show
     DrawSource::Shared source;                ///< what the items' sources view (set before any item)
     std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
     /// The point pool of the items' structure, which polyline and marker points view (not copied).
