@@ -6,17 +6,12 @@ namespace phigs {
 
 namespace {
 
-/// Whether a primitive holds anything of its own; one overload per kind, so that a new kind
-/// does not compile until it is answered here.
+/// Whether a primitive holds anything of its own, asked of the alternative the variant holds.
 struct PrimitiveOwns {
-    bool operator()(const DrawPolyline& p) const {
-        return p.points.owned() || p.colours.owned() || p.style.owned();
+    template <class Held>
+    bool operator()(const Held& held) const {
+        return ItemVector::ownsSomething(held);
     }
-    bool operator()(const DrawPolymarker& p) const { return p.points.owned() || p.style.owned(); }
-    bool operator()(const ItemRef<DrawFillArea>& p) const { return p.owned(); }
-    bool operator()(const ItemRef<DrawText>& p) const { return p.owned(); }
-    bool operator()(const ItemRef<DrawMesh>& p) const { return p.owned(); }
-    bool operator()(const ItemRef<DrawCurve>& p) const { return p.owned(); }
 };
 
 }  // namespace

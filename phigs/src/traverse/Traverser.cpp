@@ -856,8 +856,11 @@ private:
         const DrawContext* shared = context(state);
         if (!shared) return nullptr;
         // Built in place (the storage may hold a cold item of an earlier traversal: written once).
+        // Out-of-line primitives become views of the segment's records, which own nothing.
+        bool owns = false;  // nor do the other fields: they view the segment too
+        if constexpr (!detail::kHeldOutOfLine<std::decay_t<Primitive>>)
+            owns = ItemVector::ownsSomething(primitive);
         DrawPrimitive p = held(std::forward<Primitive>(primitive));
-        const bool owns = ItemVector::ownsSomething(p);  // the other fields view the segment
         DrawItem& item =
             segment_->items.emplaceKnown(owns, std::move(p), ItemRef<DrawContext>::view(shared),
                                          DrawSource::view(&segment_->source, number, state.pickId));

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -64,7 +65,9 @@ private:
         blocks_.push_back({std::allocator<T>().allocate(capacity), capacity});
     }
 
-    static constexpr std::size_t kFirstBlock = 4;
+    /// About 128 bytes: most segments hold one or two records of a kind (a context, a mesh), and
+    /// a draw list has one segment per structure, so a first block of large records costs much.
+    static constexpr std::size_t kFirstBlock = std::max<std::size_t>(1, 128 / sizeof(T));
     std::vector<Block> blocks_;
     std::size_t current_ = 0, used_ = 0;  ///< the block being filled and the values it holds
     std::size_t size_ = 0;
