@@ -116,4 +116,100 @@ TEST_CASE("a draw list keeps its items while later traversals reuse segments", "
     }
 }
 
+TEST_CASE("meshes, curves and vertex colours held out of line keep their values in copies",
+          "[traverse][random]") {
+    for (unsigned seed : {11u, 12u, 13u, 14u}) {
+        std::mt19937 rng(seed);
+        auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+        Scene s;
+        s.ws->traverser().setIncremental(false);
+        // A structure of surfaces, curves and coloured polyline sets in random order.
+        s.store->openStructure(2);
+        for (int n = pick(3, 12); n > 0; --n) {
+            const double at = pick(-9, 9);
+            switch (pick(0, 2)) {
+                case 0:
+                    s.store->insert(patch(at));
+                    break;
+                case 1:
+                    s.store->insert(NurbsCurveElement{
+                        geom::Curve(2, {0, 0, 0, 1, 1, 1}, {{at, 0, 0}, {at + 1, 2, 0}, {at + 2, 0, 1}}), 0.0,
+                        0.0});
+                    break;
+                default: {
+                    PolylineSetWithDataElement e;
+                    e.polylines = {{{at, 0, 0}, {at, 1, 0}, {at, 1, 1}}};
+                    e.vertexColours = {{Colour::fromRgb({0.25, 0.5, 1}), Colour::indexed(pick(1, 7)),
+                                        Colour::fromRgb({1, 0, at / 9})}};
+                    s.store->insert(e);
+                }
+            }
+        }
+        s.store->closeStructure();
+        s.store->openStructure(1);
+        s.store->insert(executeStructure(2));
+        s.store->closeStructure();
+        s.ws->postStructure(1, 0.5);
+
+        DrawList original = s.ws->traverse({});
+        REQUIRE_FALSE(original.items.empty());
+        DrawList copy = original;
+        // Writing the copy copies its segment: out-of-line records become values of its own.
+        const std::size_t written = static_cast<std::size_t>(pick(0, int(copy.items.size()) - 1));
+        copy.items[written].context.edit().viewIndex = 0;
+        for (std::size_t i = 0; i < copy.items.size(); ++i) {
+            INFO("seed " << seed << " item " << i);
+            const DrawPrimitive& a = original.items[i].primitive;
+            const DrawPrimitive& b = copy.items[i].primitive;
+            REQUIRE(a.index() == b.index());
+            // Traversal's meshes and curves view their segment's records (a polyline holds its
+            // resolved colours); the copy's items hold their own.
+            CHECK(ItemVector::ownsSomething(a) == holdsPrimitive<DrawPolyline>(a));
+            CHECK(ItemVector::ownsSomething(b));
+            if (const DrawMesh* mesh = primitiveIf<DrawMesh>(a)) {
+                // The same shared mesh: a renderer keys its buffers on the pointer.
+                CHECK(primitiveAs<DrawMesh>(b).mesh == mesh->mesh);
+                CHECK(primitiveAs<DrawMesh>(b).surface == mesh->surface);
+                CHECK(primitiveAs<DrawMesh>(b).interior.get() == mesh->interior.get());
+            } else if (const DrawCurve* curve = primitiveIf<DrawCurve>(a)) {
+                CHECK(primitiveAs<DrawCurve>(b).curve == curve->curve);
+                CHECK(primitiveAs<DrawCurve>(b).points == curve->points);
+            } else if (const DrawPolyline* line = primitiveIf<DrawPolyline>(a)) {
+                REQUIRE(line->colours->values.size() == 3);
+                CHECK(primitiveAs<DrawPolyline>(b).colours->values == line->colours->values);
+            }
+        }
+        // An edit of the copy's record leaves the original's alone.
+        for (std::size_t i = 0; i < copy.items.size(); ++i) {
+            DrawPrimitive& b = copy.items[i].primitive;
+            if (holdsPrimitive<DrawMesh>(b)) editPrimitive<DrawMesh>(b).interior.edit().colour = {1, 0, 0};
+            if (holdsPrimitive<DrawCurve>(b)) editPrimitive<DrawCurve>(b).style.edit().colour = {1, 0, 0};
+            if (holdsPrimitive<DrawPolyline>(b))
+                std::get<DrawPolyline>(b).colours.edit().values = std::vector<glm::vec3>{{1, 0, 0}};
+        }
+        const std::vector<Drawn> before = drawn(original);
+        for (std::size_t i = 0; i < original.items.size(); ++i) {
+            const DrawPrimitive& a = original.items[i].primitive;
+            if (const DrawMesh* mesh = primitiveIf<DrawMesh>(a))
+                CHECK(mesh->interior->colour != glm::vec3(1, 0, 0));
+            if (const DrawCurve* curve = primitiveIf<DrawCurve>(a))
+                CHECK(curve->style->colour != glm::vec3(1, 0, 0));
+            if (const DrawPolyline* line = primitiveIf<DrawPolyline>(a))
+                CHECK(line->colours->values.size() == 3);
+        }
+        // The original gone and its segments filled again by another traversal: the copy's
+        // records are its own, and read the same.
+        const std::vector<Drawn> copied = drawn(copy);
+        original = DrawList{};
+        const DrawList again = s.ws->traverse({});
+        CHECK(drawn(again) == before);
+        CHECK(drawn(copy) == copied);
+        for (const DrawItem& item : copy.items)
+            if (const DrawMesh* mesh = primitiveIf<DrawMesh>(item.primitive)) {
+                CHECK(mesh->interior->colour == glm::vec3(1, 0, 0));
+                CHECK(mesh->mesh->positions.size() > 0);
+            }
+    }
+}
+
 }  // namespace test_segment_reuse
