@@ -50,7 +50,7 @@ void describe(const phigs::DrawList& list) {
                                    mapping.npcToClip;
     const phigs::DrawView defaultView;
     for (const phigs::DrawItem& item : list.items) {
-        if (const auto* mesh = std::get_if<phigs::DrawMesh>(&item.primitive)) {
+        if (const auto* mesh = phigs::primitiveIf<phigs::DrawMesh>(item.primitive)) {
             if (!mesh->mesh) continue;
             phigs::render::meshVertices(*mesh->mesh);
             phigs::render::meshIndices(*mesh->mesh);
