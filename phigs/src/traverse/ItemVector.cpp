@@ -6,11 +6,15 @@ namespace phigs {
 
 namespace {
 
-/// Whether a primitive holds anything of its own, asked of the alternative the variant holds.
+/// Whether a primitive holds anything of its own, asked of the alternative the variant holds:
+/// one overload per kind held in place, so that a new one does not compile until answered here
+/// and in ItemVector.h (an out-of-line kind owns exactly when its reference does).
 struct PrimitiveOwns {
-    template <class Held>
-    bool operator()(const Held& held) const {
-        return ItemVector::ownsSomething(held);
+    bool operator()(const DrawPolyline& p) const { return ItemVector::ownsSomething(p); }
+    bool operator()(const DrawPolymarker& p) const { return ItemVector::ownsSomething(p); }
+    template <class T>
+    bool operator()(const ItemRef<T>& held) const {
+        return held.owned();
     }
 };
 
