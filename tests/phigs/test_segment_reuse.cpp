@@ -175,6 +175,7 @@ TEST_CASE("meshes, curves and vertex colours held out of line keep their values 
                 CHECK(primitiveAs<DrawCurve>(b).curve == curve->curve);
                 CHECK(primitiveAs<DrawCurve>(b).points == curve->points);
             } else if (const DrawPolyline* line = primitiveIf<DrawPolyline>(a)) {
+                CHECK_FALSE(line->style.owned());  // each member views the interned style
                 REQUIRE(line->colours->values.size() == 3);
                 CHECK(primitiveAs<DrawPolyline>(b).colours->values == line->colours->values);
             }

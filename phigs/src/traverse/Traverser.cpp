@@ -853,6 +853,9 @@ private:
     template <class Primitive>
     DrawItem* emit(const Structure& /*the segment's*/, int number, const State& state,
                    Primitive&& primitive) {
+        // Whether the item owns something is asked of the primitive before it is moved in: a
+        // copy made from an lvalue would own what the answer did not count.
+        static_assert(!std::is_lvalue_reference_v<Primitive>, "emit takes its primitive by move");
         const DrawContext* shared = context(state);
         if (!shared) return nullptr;
         // Built in place (the storage may hold a cold item of an earlier traversal: written once).
@@ -1198,12 +1201,12 @@ private:
     /// its line type runs on along the whole polyline.
     void polylineSet(const Structure& s, int number, const State& state,
                      const PolylineSetWithDataElement& e) {
-        const ItemRef<LineStyle> style = line(state);
         const bool shaded = resolve_.lineShaded(state);
         for (std::size_t i = 0; i < e.polylines.size(); ++i) {
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
-            DrawPolyline p{segmentPoints(points), style, {}};
+            // A view of the interned style each (a copy of one view would be a copy of its own).
+            DrawPolyline p{segmentPoints(points), line(state), {}};
             if (!e.vertexColours.empty())
                 p.colours = VertexColours{resolveColours(e.vertexColours[i], state), shaded};
             emit(s, number, state, std::move(p));
