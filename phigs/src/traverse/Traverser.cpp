@@ -809,18 +809,24 @@ private:
         fields_.depthCue = depthCue(state.depthCueIndex);
     }
 
-    /// A primitive as its item holds it: fill areas, text, meshes and curves in the segment, viewed.
+    /// The segment's records of an out-of-line kind of primitive.
+    template <class P>
+    static StableList<P>& records(DrawSegment& segment) {
+        if constexpr (std::is_same_v<P, DrawFillArea>)
+            return segment.fillAreas;
+        else if constexpr (std::is_same_v<P, DrawText>)
+            return segment.texts;
+        else if constexpr (std::is_same_v<P, DrawMesh>)
+            return segment.meshes;
+        else
+            return segment.curves;
+    }
+    /// A primitive as its item holds it: an out-of-line one in the segment, viewed.
     template <class Primitive>
     DrawPrimitive held(Primitive&& primitive) {
         using P = std::decay_t<Primitive>;
-        if constexpr (std::is_same_v<P, DrawFillArea>)
-            return ItemRef<P>::view(&segment_->fillAreas.emplace_back(std::forward<Primitive>(primitive)));
-        else if constexpr (std::is_same_v<P, DrawText>)
-            return ItemRef<P>::view(&segment_->texts.emplace_back(std::forward<Primitive>(primitive)));
-        else if constexpr (std::is_same_v<P, DrawMesh>)
-            return ItemRef<P>::view(&segment_->meshes.emplace_back(std::forward<Primitive>(primitive)));
-        else if constexpr (std::is_same_v<P, DrawCurve>)
-            return ItemRef<P>::view(&segment_->curves.emplace_back(std::forward<Primitive>(primitive)));
+        if constexpr (detail::kHeldOutOfLine<P>)
+            return ItemRef<P>::view(&records<P>(*segment_).emplace_back(std::forward<Primitive>(primitive)));
         else
             return DrawPrimitive(std::forward<Primitive>(primitive));
     }

@@ -83,16 +83,12 @@ public:
     /// Whether `item` holds anything of its own that its destructor must let go of.
     static bool ownsSomething(const DrawItem& item);
     static bool ownsSomething(const DrawPrimitive& primitive);
-    /// The same of a primitive as its own type, before it is held (inline: traversal asks it of
-    /// every item). One overload per kind, so that a new kind does not compile until answered.
+    /// The same of a primitive held in place, as its own type before it is held (inline:
+    /// traversal asks it of every item).
     static bool ownsSomething(const DrawPolyline& p) {
         return p.points.owned() || p.colours.owned() || p.style.owned();
     }
     static bool ownsSomething(const DrawPolymarker& p) { return p.points.owned() || p.style.owned(); }
-    template <class T>
-    static bool ownsSomething(const ItemRef<T>& held) {
-        return held.owned();
-    }
 
 private:
     template <class... Fields>
