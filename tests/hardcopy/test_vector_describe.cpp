@@ -162,7 +162,7 @@ TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash pha
     std::uniform_real_distribution<double> at(0.05, 0.95);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int round = 0; round < 60; ++round) {
-        DrawPolyline line;
+        DrawColouredPolyline line;
         std::vector<glm::dvec3> points;
         std::vector<glm::vec3> colours;
         const int n = 2 + int(rng() % 6);
@@ -170,9 +170,9 @@ TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash pha
             points.push_back({at(rng), at(rng), 0.5});
             colours.push_back({unit(rng), unit(rng), unit(rng)});
         }
-        line.points = points;
+        line.line.points = points;
         line.colours = VertexColours{colours, rng() % 2 == 0};
-        line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
+        line.line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
         DrawList list = identityList();
         list.items.push_back(item(line));
         const VectorPicture picture = describePicture(list, squarePage());
@@ -198,13 +198,13 @@ TEST_CASE("vector describe: a vertex-coloured dashed polyline keeps its dash pha
             while (k + 2 < along.size() && along[k + 1] <= middle) ++k;
             const float t = float((middle - along[k]) / std::max(along[k + 1] - along[k], 1e-12));
             const glm::vec3 expected =
-                line.colours->interpolated ? glm::mix(colours[k], colours[k + 1], t) : colours[k];
-            CHECK(glm::length(stroke->colour - expected) < (line.colours->interpolated ? 2.0f / 255 : 1e-5f));
+                line.colours.interpolated ? glm::mix(colours[k], colours[k + 1], t) : colours[k];
+            CHECK(glm::length(stroke->colour - expected) < (line.colours.interpolated ? 2.0f / 255 : 1e-5f));
             phase += length;
         }
         CHECK(phase == Approx(along.back()).epsilon(1e-6));
         CHECK(pieces >= 1);
-        if (!line.colours->interpolated) CHECK(pieces <= std::size_t(n - 1));
+        if (!line.colours.interpolated) CHECK(pieces <= std::size_t(n - 1));
     }
 }
 

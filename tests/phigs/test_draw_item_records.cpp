@@ -54,6 +54,8 @@ struct AllRecords {
                 using P = std::decay_t<decltype(p)>;
                 if constexpr (std::is_same_v<P, DrawPolyline> || std::is_same_v<P, DrawCurve>) {
                     lines.add(p.style);
+                } else if constexpr (std::is_same_v<P, DrawColouredPolyline>) {
+                    lines.add(p.line.style);
                 } else if constexpr (std::is_same_v<P, DrawPolymarker>) {
                     markers.add(p.style);
                 } else if constexpr (std::is_same_v<P, DrawText>) {

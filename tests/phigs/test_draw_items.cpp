@@ -116,7 +116,7 @@ TEST_CASE("items viewing a segment's storage keep their values once copied", "[t
                 p.push_back(glm::dvec3(pick(-9, 9), pick(-9, 9), pick(-9, 9)));
             DrawItem item;
             item.primitive = DrawPolyline{
-                ItemArray<glm::dvec3>::view(segment->points.add(p.data(), p.size()), p.size()), {}, {}};
+                ItemArray<glm::dvec3>::view(segment->points.add(p.data(), p.size()), p.size()), {}};
             const DrawPathLevel own{structureId, pick(1, 99), pick(0, 9)};
             item.source = DrawSource::view(&segment->source, own.elementNumber, own.pickId);
             segment->items.push_back(std::move(item));

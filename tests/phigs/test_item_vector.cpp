@@ -49,10 +49,10 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
             i.context.edit().viewIndex = n;
             switch (pick(0, 6)) {
                 case 0:
-                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>::view(points.data(), 3), {}, {}};
+                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>::view(points.data(), 3), {}};
                     break;
                 case 1:
-                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>(points), {}, {}};
+                    i.primitive = DrawPolyline{ItemArray<glm::dvec3>(points), {}};
                     break;
                 case 2:
                     i.primitive = DrawMesh{mesh, nullptr, {}, {}, {}};

@@ -105,18 +105,20 @@ TEST_CASE("polyline set with data: a segment takes its first vertex's colour", "
     e.vertexColours = {{Colour::indexed(2), Colour::indexed(2), Colour::indexed(3), Colour::indexed(4)},
                        {Colour::fromRgb({0.5, 0.25, 1}), Colour::indexed(2)},
                        {Colour::indexed(5)}};
-    const auto lines = itemsOf<DrawPolyline>(
-        s.draw({e, polylineColourIndex(6), PolylineSetWithDataElement{{e.polylines[0]}, {}}}));
+    const DrawList list =
+        s.draw({e, polylineColourIndex(6), PolylineSetWithDataElement{{e.polylines[0]}, {}}});
+    const auto lines = itemsOf<DrawColouredPolyline>(list);
+    const auto plain = itemsOf<DrawPolyline>(list);
     // one item per polyline of two points or more, its vertex colours resolved (segment i takes
     // colours[i] under polyline shading NONE); the set without colours in the polyline colour
-    REQUIRE(lines.size() == 3);
-    CHECK(lines[0]->points.size() == 4);
-    CHECK(lines[0]->colours->values == std::vector<glm::vec3>{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
-    CHECK_FALSE(lines[0]->colours->interpolated);
-    CHECK(lines[1]->colours->values == std::vector<glm::vec3>{{0.5f, 0.25f, 1}, {1, 0, 0}});
-    CHECK(lines[2]->points.size() == 4);
-    CHECK(lines[2]->colours->values.empty());
-    CHECK(lines[2]->style->colour == glm::vec3(0, 1, 1));
+    REQUIRE(lines.size() == 2);
+    REQUIRE(plain.size() == 1);
+    CHECK(lines[0]->line.points.size() == 4);
+    CHECK(lines[0]->colours.values == std::vector<glm::vec3>{{1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    CHECK_FALSE(lines[0]->colours.interpolated);
+    CHECK(lines[1]->colours.values == std::vector<glm::vec3>{{0.5f, 0.25f, 1}, {1, 0, 0}});
+    CHECK(plain[0]->points.size() == 4);
+    CHECK(plain[0]->style->colour == glm::vec3(0, 1, 1));
 }
 
 TEST_CASE("cell array plus draws its general colours as a mesh", "[plus][traverse]") {

@@ -50,8 +50,9 @@ std::vector<Colour> rgbs(std::mt19937& rng, std::size_t n) {
 glm::vec3 unit(const glm::dvec3& n) {
     return glm::vec3(glm::normalize(n));
 }
-bool near(const glm::vec3& a, const glm::vec3& b) {
-    return glm::length(a - b) <= 1e-5f * (1.0f + glm::length(b));
+/// A mesh's normal against the unit direction given: packed, within 1e-4 radians.
+bool nearDirection(const PackedNormal& a, const glm::vec3& b) {
+    return glm::length(a.unpacked() - b) <= 1e-4f;
 }
 
 /// Random facet and vertex data (each list present or not) for `points` points and `facets` facets.
@@ -92,9 +93,9 @@ void checkFacets(const MeshData& m, const Mesh& e, std::size_t facets, std::size
             else if (facetColours)
                 CHECK(m.colours[i] == glm::vec3(e.facetColours[f].rgb));
             if (!e.vertexNormals.empty())
-                CHECK(near(m.normals[i], unit(e.vertexNormals[v])));
+                CHECK(nearDirection(m.normals[i], unit(e.vertexNormals[v])));
             else if (facetNormals)
-                CHECK(near(m.normals[i], unit(e.facetNormals[f])));
+                CHECK(nearDirection(m.normals[i], unit(e.facetNormals[f])));
         }
         if (facetNormals) {  // the facet normal gives the front: counter-clockwise seen from it
             const glm::dvec3 winding = glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0]));

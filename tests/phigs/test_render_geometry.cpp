@@ -229,7 +229,7 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     CHECK(lines.vertices[3].pattern == Approx(200.0f));  // measured on screen: two 100-pixel segments
     // The cache key follows the content, and for patterned lines the view too.
     CHECK(geometryKey(item, glm::dmat4(1.0)) != geometryKey(item, toPixels));
-    item.primitive = DrawPolyline{dashed.points, {}, {}};
+    item.primitive = DrawPolyline{dashed.points, {}};
     CHECK(geometryKey(item, glm::dmat4(1.0)) == geometryKey(item, toPixels));
 }
 
@@ -239,7 +239,7 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
     std::uniform_real_distribution<double> real(-1.0, 1.0);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int round = 0; round < 100; ++round) {
-        DrawPolyline line;
+        DrawColouredPolyline line;
         std::vector<glm::dvec3> points;
         std::vector<glm::vec3> colours;
         const int n = 2 + int(rng() % 9);
@@ -247,9 +247,9 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
             points.push_back({real(rng), real(rng), real(rng)});
             colours.push_back({unit(rng), unit(rng), unit(rng)});
         }
-        line.points = points;
+        line.line.points = points;
         line.colours = VertexColours{colours, rng() % 2 == 0};
-        line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
+        line.line.style.edit().type = static_cast<LineType>(2 + rng() % 3);
         DrawItem item;
         item.primitive = line;
         const double scale = 50.0 + 200.0 * unit(rng);
@@ -266,11 +266,11 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
             distance += scale * glm::length(glm::dvec2(points[std::size_t(i + 1)] - points[std::size_t(i)]));
             CHECK(b.pattern == Approx(distance).epsilon(1e-5));
             CHECK(a.colour == colours[std::size_t(i)]);
-            CHECK(b.colour == colours[std::size_t(line.colours->interpolated ? i + 1 : i)]);
+            CHECK(b.colour == colours[std::size_t(line.colours.interpolated ? i + 1 : i)]);
         }
         // Colours and shading belong to the cache key.
         const std::uint64_t key = geometryKey(item, toPixels);
-        std::get<DrawPolyline>(item.primitive).colours.edit().interpolated = !line.colours->interpolated;
+        editPrimitive<DrawColouredPolyline>(item.primitive).colours.interpolated = !line.colours.interpolated;
         CHECK(geometryKey(item, toPixels) != key);
     }
 }

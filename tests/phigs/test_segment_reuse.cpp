@@ -41,7 +41,8 @@ std::vector<Drawn> drawn(const DrawList& list) {
     std::vector<Drawn> out;
     for (const DrawItem& item : list.items) {
         Drawn d{item.primitive.index(), item.source.path(), {}};
-        if (auto* p = std::get_if<DrawPolyline>(&item.primitive)) d.points = p->points;
+        if (const auto* p = primitiveIf<DrawPolyline>(item.primitive)) d.points = p->points;
+        if (const auto* p = primitiveIf<DrawColouredPolyline>(item.primitive)) d.points = p->line.points;
         out.push_back(std::move(d));
     }
     return out;
@@ -162,9 +163,9 @@ TEST_CASE("meshes, curves and vertex colours held out of line keep their values 
             const DrawPrimitive& a = original.items[i].primitive;
             const DrawPrimitive& b = copy.items[i].primitive;
             REQUIRE(a.index() == b.index());
-            // Traversal's meshes and curves view their segment's records (a polyline holds its
-            // resolved colours); the copy's items hold their own.
-            CHECK(ItemVector::ownsSomething(a) == holdsPrimitive<DrawPolyline>(a));
+            // Traversal's meshes, curves and coloured polylines view their segment's records; the
+            // copy's items hold their own.
+            CHECK_FALSE(ItemVector::ownsSomething(a));
             CHECK(ItemVector::ownsSomething(b));
             if (const DrawMesh* mesh = primitiveIf<DrawMesh>(a)) {
                 // The same shared mesh: a renderer keys its buffers on the pointer.
@@ -174,10 +175,11 @@ TEST_CASE("meshes, curves and vertex colours held out of line keep their values 
             } else if (const DrawCurve* curve = primitiveIf<DrawCurve>(a)) {
                 CHECK(primitiveAs<DrawCurve>(b).curve == curve->curve);
                 CHECK(primitiveAs<DrawCurve>(b).points == curve->points);
-            } else if (const DrawPolyline* line = primitiveIf<DrawPolyline>(a)) {
-                CHECK_FALSE(line->style.owned());  // each member views the interned style
-                REQUIRE(line->colours->values.size() == 3);
-                CHECK(primitiveAs<DrawPolyline>(b).colours->values == line->colours->values);
+            } else if (const DrawColouredPolyline* line = primitiveIf<DrawColouredPolyline>(a)) {
+                CHECK_FALSE(line->line.style.owned());  // each member views the interned style
+                REQUIRE(line->colours.values.size() == 3);
+                CHECK(primitiveAs<DrawColouredPolyline>(b).colours.values == line->colours.values);
+                CHECK(primitiveAs<DrawColouredPolyline>(b).line.points == line->line.points);
             }
         }
         // An edit of the copy's record leaves the original's alone.
@@ -185,8 +187,8 @@ TEST_CASE("meshes, curves and vertex colours held out of line keep their values 
             DrawPrimitive& b = copy.items[i].primitive;
             if (holdsPrimitive<DrawMesh>(b)) editPrimitive<DrawMesh>(b).interior.edit().colour = {1, 0, 0};
             if (holdsPrimitive<DrawCurve>(b)) editPrimitive<DrawCurve>(b).style.edit().colour = {1, 0, 0};
-            if (holdsPrimitive<DrawPolyline>(b))
-                std::get<DrawPolyline>(b).colours.edit().values = std::vector<glm::vec3>{{1, 0, 0}};
+            if (holdsPrimitive<DrawColouredPolyline>(b))
+                editPrimitive<DrawColouredPolyline>(b).colours.values = std::vector<glm::vec3>{{1, 0, 0}};
         }
         const std::vector<Drawn> before = drawn(original);
         for (std::size_t i = 0; i < original.items.size(); ++i) {
@@ -195,8 +197,8 @@ TEST_CASE("meshes, curves and vertex colours held out of line keep their values 
                 CHECK(mesh->interior->colour != glm::vec3(1, 0, 0));
             if (const DrawCurve* curve = primitiveIf<DrawCurve>(a))
                 CHECK(curve->style->colour != glm::vec3(1, 0, 0));
-            if (const DrawPolyline* line = primitiveIf<DrawPolyline>(a))
-                CHECK(line->colours->values.size() == 3);
+            if (const DrawColouredPolyline* line = primitiveIf<DrawColouredPolyline>(a))
+                CHECK(line->colours.values.size() == 3);
         }
         // The original gone and its segments filled again by another traversal: the copy's
         // records are its own, and read the same.

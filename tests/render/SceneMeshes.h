@@ -51,7 +51,7 @@ inline std::shared_ptr<phigs::MeshData> grid(double x0, double y0, double x1, do
         for (int i = 0; i <= n; ++i) {
             mesh->positions.push_back(
                 glm::vec3(float(x0 + (x1 - x0) * i / n), float(y0 + (y1 - y0) * j / n), float(z)));
-            mesh->normals.push_back({0, 0, 1});
+            mesh->normals.push_back(glm::vec3(0, 0, 1));
         }
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {

@@ -35,7 +35,13 @@ std::vector<glm::dvec3> ItemProjector::toWorld(std::span<const glm::dvec3> point
 
 void ItemProjector::operator()(const DrawPolyline& polyline) {
     pipeline_.line(toWorld(polyline.points), false, polyline.style->colour, polyline.style->type,
-                   polyline.style->width, polyline.colours->values, polyline.colours->interpolated);
+                   polyline.style->width);
+}
+
+void ItemProjector::operator()(const DrawColouredPolyline& polyline) {
+    const DrawPolyline& line = polyline.line;
+    pipeline_.line(toWorld(line.points), false, line.style->colour, line.style->type, line.style->width,
+                   polyline.colours.values, polyline.colours.interpolated);
 }
 
 void ItemProjector::operator()(const DrawCurve& curve) {

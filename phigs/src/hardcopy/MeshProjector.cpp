@@ -74,7 +74,7 @@ void MeshProjector::facets(bool coverOnly) {
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t i = index[k];
             vertices[std::size_t(k)] = {
-                world_[i], normals ? normalMatrix * glm::dvec3(data_.normals[i]) : glm::dvec3(0.0),
+                world_[i], normals ? normalMatrix * glm::dvec3(data_.normals[i].unpacked()) : glm::dvec3(0.0),
                 colours ? data_.colours[i] : in.colour};
         }
         FacetPaint paint;

@@ -179,8 +179,8 @@ double locusDistance(const DrawItem& item, const glm::dvec3& point, bool clip) {
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
-            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
-                strip(m, p.points, model, false);
+            if constexpr (kDrawsStrip<T>)
+                strip(m, stripPoints(p), model, false);
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
                 for (const auto& q : p.points) m.at(projectPoint3(model, q));
             else if constexpr (std::is_same_v<T, DrawFillArea>)

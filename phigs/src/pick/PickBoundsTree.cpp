@@ -80,8 +80,8 @@ bool PickBoundsTree::modellingBox(const DrawItem& item, glm::dvec3& lo, glm::dve
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
-            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
-                growAll(lo, hi, p.points);
+            if constexpr (kDrawsStrip<T>) {
+                growAll(lo, hi, stripPoints(p));
             } else if constexpr (std::is_same_v<T, DrawFillArea>) {
                 for (const auto& contour : p.contours) growAll(lo, hi, contour);
             } else if constexpr (std::is_same_v<T, DrawMesh>) {

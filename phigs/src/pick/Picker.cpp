@@ -433,8 +433,8 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             std::optional<double> z;
-            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
-                z = polylineHit(ap, projectAll(m, p.points), false);
+            if constexpr (kDrawsStrip<T>) {
+                z = polylineHit(ap, projectAll(m, stripPoints(p)), false);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 // The marker's own size widens the aperture (nominal 7 pixels times the scale).
                 const double grow = mapping.npcLength(3.5 * p.style->scale);

@@ -278,9 +278,9 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
-            if constexpr (std::is_same_v<T, DrawPolyline>)
-                b.polyline(p.points, p.style, p.colours->values, p.colours->interpolated);
-            else if constexpr (std::is_same_v<T, DrawCurve>)
+            if constexpr (std::is_same_v<T, DrawColouredPolyline>)
+                b.polyline(p.line.points, p.line.style, p.colours.values, p.colours.interpolated);
+            else if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
                 b.polyline(p.points, p.style);
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
                 b.polymarker(p);
@@ -342,12 +342,19 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
-            if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>) {
-                h.values(p.points);
-                h.value(p.style);
-                if constexpr (std::is_same_v<T, DrawPolyline>)
-                    h.values(p.colours->values), h.value(p.colours->interpolated);
-                if (p.style->type != LineType::Solid) h.value(worldToPixels);
+            if constexpr (kDrawsStrip<T>) {
+                const auto& line = [&]() -> const auto& {
+                    if constexpr (std::is_same_v<T, DrawColouredPolyline>)
+                        return p.line;
+                    else
+                        return p;
+                }
+                ();
+                h.values(line.points);
+                h.value(line.style);
+                if constexpr (std::is_same_v<T, DrawColouredPolyline>)
+                    h.values(p.colours.values), h.value(p.colours.interpolated);
+                if (line.style->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 h.values(p.points);
                 h.value(p.style);
@@ -414,7 +421,7 @@ std::vector<RenderVertex> meshVertices(const MeshData& mesh) {
     std::vector<RenderVertex> v(mesh.positions.size());
     for (std::size_t i = 0; i < v.size(); ++i) {
         v[i].position = mesh.positions[i];
-        if (i < mesh.normals.size()) v[i].normal = mesh.normals[i];
+        if (i < mesh.normals.size()) v[i].normal = mesh.normals[i].unpacked();
         if (i < mesh.colours.size()) v[i].colour = mesh.colours[i];
     }
     const std::size_t count = v.size();

@@ -22,7 +22,7 @@ struct PrimitiveOwns {
 
 bool ItemVector::ownsSomething(const DrawItem& item) {
     // Every member of DrawItem that may own is asked: a new one must be added here.
-    static_assert(sizeof(DrawItem) == 64 && sizeof(DrawPolyline) == 32 && sizeof(DrawPolymarker) == 24,
+    static_assert(sizeof(DrawItem) == 56 && sizeof(DrawPolyline) == 24 && sizeof(DrawPolymarker) == 24,
                   "DrawItem or a primitive changed: is every member that may own asked below?");
     return item.context.owned() || item.source.owned() || ownsSomething(item.primitive);
 }

@@ -60,9 +60,9 @@ private:
         glm::dvec3 p = glm::mix(glm::dvec3(mesh_.positions[a]), glm::dvec3(mesh_.positions[b]), t);
         mix(mesh_.colours);
         mix(mesh_.uv);
-        glm::dvec3 n = mesh_.normals.empty()
-                           ? glm::dvec3(0.0)
-                           : glm::mix(glm::dvec3(mesh_.normals[a]), glm::dvec3(mesh_.normals[b]), t);
+        glm::dvec3 n = mesh_.normals.empty() ? glm::dvec3(0.0)
+                                             : glm::mix(glm::dvec3(mesh_.normals[a].unpacked()),
+                                                        glm::dvec3(mesh_.normals[b].unpacked()), t);
         if (surface_ && !mesh_.uv.empty()) onSurface(mesh_.uv[a], mesh_.uv[b], mesh_.uv.back(), p, n);
         if (!mesh_.normals.empty())
             mesh_.normals.push_back(glm::vec3(glm::length(n) > 0.0 ? glm::normalize(n) : n));

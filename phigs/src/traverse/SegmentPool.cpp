@@ -18,12 +18,15 @@ void empty(DrawSegment& segment) {
     segment.source.prefix.clear();
     segment.points.clear();
     segment.transforms.clear();
-    segment.clipPlanes.clear();
     segment.contexts.clear();
-    segment.fillAreas.clear();
-    segment.texts.clear();
     segment.meshes.clear();
-    segment.curves.clear();
+    if (DrawSegment::Rare* rare = segment.rare.get()) {
+        rare->clipPlanes.clear();
+        rare->fillAreas.clear();
+        rare->texts.clear();
+        rare->curves.clear();
+        rare->colouredPolylines.clear();
+    }
     segment.storePoints.reset();
 }
 

@@ -725,7 +725,8 @@ private:
     ItemArray<glm::dvec4> clipPlanes(const State& state) {
         const std::vector<glm::dvec4>& v = state.clipVolume;
         if (clip_.size() != v.size() || !std::equal(v.begin(), v.end(), clip_.begin()))
-            clip_ = std::span<const glm::dvec4>(segment_->clipPlanes.add(v.data(), v.size()), v.size());
+            clip_ = std::span<const glm::dvec4>(segment_->rareRecords().clipPlanes.add(v.data(), v.size()),
+                                                v.size());
         return ItemArray<glm::dvec4>::view(clip_.data(), clip_.size());
     }
 
@@ -812,14 +813,18 @@ private:
     /// The segment's records of an out-of-line kind of primitive.
     template <class P>
     static StableList<P>& records(DrawSegment& segment) {
-        if constexpr (std::is_same_v<P, DrawFillArea>)
-            return segment.fillAreas;
-        else if constexpr (std::is_same_v<P, DrawText>)
-            return segment.texts;
-        else if constexpr (std::is_same_v<P, DrawMesh>)
+        if constexpr (std::is_same_v<P, DrawMesh>)
             return segment.meshes;
+        else if constexpr (std::is_same_v<P, DrawFillArea>)
+            return segment.rareRecords().fillAreas;
+        else if constexpr (std::is_same_v<P, DrawText>)
+            return segment.rareRecords().texts;
+        else if constexpr (std::is_same_v<P, DrawCurve>)
+            return segment.rareRecords().curves;
+        else if constexpr (std::is_same_v<P, DrawColouredPolyline>)
+            return segment.rareRecords().colouredPolylines;
         else
-            return segment.curves;
+            static_assert(kUnhandledPrimitive<P>);
     }
     /// A primitive as its item holds it: an out-of-line one in the segment, viewed.
     template <class Primitive>
@@ -912,7 +917,7 @@ private:
                 using E = std::decay_t<decltype(e)>;
                 if constexpr (std::is_same_v<E, PolylineElement>) {
                     if (e.points.size() >= 2)
-                        emit(s, number, state, DrawPolyline{storedPoints(e.points), line(state), {}});
+                        emit(s, number, state, DrawPolyline{storedPoints(e.points), line(state)});
                 } else if constexpr (std::is_same_v<E, PolymarkerElement>) {
                     if (!e.points.empty())
                         emit(s, number, state, DrawPolymarker{storedPoints(e.points), marker(state)});
@@ -1212,10 +1217,13 @@ private:
             const auto& points = e.polylines[i];
             if (points.size() < 2) continue;
             // A view of the interned style each (a copy of one view would be a copy of its own).
-            DrawPolyline p{segmentPoints(points), line(state), {}};
-            if (!e.vertexColours.empty())
-                p.colours = VertexColours{resolveColours(e.vertexColours[i], state), shaded};
-            emit(s, number, state, std::move(p));
+            DrawPolyline p{segmentPoints(points), line(state)};
+            if (e.vertexColours.empty())
+                emit(s, number, state, std::move(p));
+            else
+                emit(s, number, state,
+                     DrawColouredPolyline{std::move(p),
+                                          VertexColours{resolveColours(e.vertexColours[i], state), shaded}});
         }
     }
 
@@ -1261,8 +1269,7 @@ private:
         for (const auto& line : edges)
             emit(s, number, state,
                  DrawPolyline{segmentPoints(line),
-                              intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width}),
-                              {}});
+                              intern(LineStyle{edgeStyle.colour, edgeStyle.type, edgeStyle.width})});
     }
 
     /// The runs of edges of a closed contour whose flag is on, as open polylines (edge j runs from

@@ -17,6 +17,7 @@ public:
     explicit ItemProjector(ItemPipeline& pipeline) : pipeline_(pipeline) {}
 
     void operator()(const DrawPolyline& polyline);
+    void operator()(const DrawColouredPolyline& polyline);
     void operator()(const DrawCurve& curve);
     void operator()(const DrawPolymarker& markers);
     void operator()(const DrawFillArea& fill);

@@ -67,7 +67,9 @@ private:
 
     void grow(std::size_t size) {
         const std::size_t from = dense_.size();
-        dense_.resize(std::max(size, std::min(2 * from, static_cast<std::size_t>(kDenseLimit))));
+        // Exactly to `size`: the vector's own growth keeps this amortized, and the room it keeps
+        // past the last id is never written (so never resident).
+        dense_.resize(size);
         // Values kept in the map for ids the vector now covers move into it.
         for (auto it = sparse_.begin(); it != sparse_.end();) {
             if (it->first >= 0 && static_cast<std::size_t>(it->first) >= from && dense(it->first)) {

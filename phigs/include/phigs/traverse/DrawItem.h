@@ -8,6 +8,7 @@
 #include "phigs/traverse/DrawSource.h"
 #include "phigs/traverse/ItemArray.h"
 #include "phigs/traverse/ItemRef.h"
+#include "phigs/traverse/PackedNormal.h"
 #include "phigs/traverse/SharedIndexList.h"
 
 #include "geom/Curve.h"
@@ -34,12 +35,18 @@ struct VertexColours {
     bool interpolated = false;
 };
 
-/// A polyline: one connected strip of points in modelling coordinates, coloured by its vertex
-/// colours, or when there are none by `style->colour`; its line type runs on along the whole strip.
+/// A polyline: one connected strip of points in modelling coordinates in `style->colour`; its
+/// line type runs on along the whole strip.
 struct DrawPolyline {
     ItemArray<glm::dvec3> points;
     ItemRef<LineStyle> style;
-    ItemRef<VertexColours> colours;  ///< out of line: rare, and an item stays small without them
+};
+
+/// A polyline coloured by its vertices (POLYLINE SET 3 WITH DATA with colours): `line` as
+/// above, its colour taken from `colours` instead of the style.
+struct DrawColouredPolyline {
+    DrawPolyline line;
+    VertexColours colours;
 };
 
 /// A set of markers at points in modelling coordinates.
@@ -75,11 +82,11 @@ struct DrawText {
 /// with data become. Shared and immutable: the same pointer comes back while its element and
 /// structure are unchanged, so a renderer may key its GPU buffers on it.
 struct MeshData {
-    std::vector<glm::vec3> positions;  ///< modelling coordinates
-    std::vector<glm::vec3> normals;    ///< one per position (unit), or empty (facet normals)
-    std::vector<glm::vec3> colours;    ///< one per position, or empty (interior colour)
-    std::vector<glm::vec2> uv;         ///< surface parameters per position, or empty
-    SharedIndexList triangles;         ///< three indices per triangle, counter-clockwise = front
+    std::vector<glm::vec3> positions;   ///< modelling coordinates
+    std::vector<PackedNormal> normals;  ///< one per position (unit), or empty (facet normals)
+    std::vector<glm::vec3> colours;     ///< one per position, or empty (interior colour)
+    std::vector<glm::vec2> uv;          ///< surface parameters per position, or empty
+    SharedIndexList triangles;          ///< three indices per triangle, counter-clockwise = front
     std::vector<std::vector<std::uint32_t>>
         isoLines;  ///< polylines through positions (iso-parametric curves)
     /// Polylines through positions drawn as edges while the edge flag is on (a NURBS surface's
@@ -112,12 +119,12 @@ struct DrawCurve {
     double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
 };
 
-/// The closed family of primitives a draw list holds. Fill areas, text, meshes and curves, larger
-/// and fewer than polylines, are held out of line (a view of their draw segment's record, or a copy
-/// of their own) so that every item stays 64 bytes; read through visitPrimitive and primitiveIf,
-/// which hand them out as themselves.
+/// The closed family of primitives a draw list holds. Fill areas, text, meshes, curves and coloured
+/// polylines, larger and fewer than polylines, are held out of line (a view of their draw segment's
+/// record, or a copy of their own) so that every item stays 56 bytes; read through visitPrimitive and
+/// primitiveIf, which hand them out as themselves.
 using DrawPrimitive = std::variant<DrawPolyline, DrawPolymarker, ItemRef<DrawFillArea>, ItemRef<DrawText>,
-                                   ItemRef<DrawMesh>, ItemRef<DrawCurve>>;
+                                   ItemRef<DrawMesh>, ItemRef<DrawCurve>, ItemRef<DrawColouredPolyline>>;
 
 namespace detail {
 /// A primitive as the variant holds it: T itself, or ItemRef<T> for the out-of-line ones.
@@ -134,11 +141,27 @@ struct HeldPrimitive<ItemRef<T>> {
     static T& edit(ItemRef<T>& held) { return held.edit(); }
 };
 template <class T>
-inline constexpr bool kHeldOutOfLine = std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText> ||
-                                       std::is_same_v<T, DrawMesh> || std::is_same_v<T, DrawCurve>;
+inline constexpr bool kHeldOutOfLine =
+    std::is_same_v<T, DrawFillArea> || std::is_same_v<T, DrawText> || std::is_same_v<T, DrawMesh> ||
+    std::is_same_v<T, DrawCurve> || std::is_same_v<T, DrawColouredPolyline>;
 template <class T>
 using HeldAs = std::conditional_t<kHeldOutOfLine<T>, ItemRef<T>, T>;
 }  // namespace detail
+
+/// Whether a T draws as one strip of points: a polyline, coloured or not, or a curve's polyline.
+template <class T>
+inline constexpr bool kDrawsStrip = std::is_same_v<T, DrawPolyline> ||
+                                    std::is_same_v<T, DrawColouredPolyline> || std::is_same_v<T, DrawCurve>;
+/// The points of a strip (see kDrawsStrip).
+inline const ItemArray<glm::dvec3>& stripPoints(const DrawPolyline& p) {
+    return p.points;
+}
+inline const ItemArray<glm::dvec3>& stripPoints(const DrawColouredPolyline& p) {
+    return p.line.points;
+}
+inline const ItemArray<glm::dvec3>& stripPoints(const DrawCurve& p) {
+    return p.points;
+}
 
 /// False for every T: a visitor's last `else static_assert(kUnhandledPrimitive<T>)` fails to
 /// compile when a new kind of primitive is not answered.

@@ -25,23 +25,36 @@ namespace phigs {
 /// the structure, the interned styles). A copy copies the items only: each copied item holds
 /// its own values.
 struct DrawSegment {
+    /// The records fewer segments hold, made with the first of them: a draw list has a segment per
+    /// structure, most of which hold polylines, markers and at most a mesh.
+    struct Rare {
+        BlockPool<glm::dvec4> clipPlanes;                    ///< one volume per run of items that share it
+        StableList<DrawFillArea> fillAreas;                  ///< what the items' fill area views show
+        StableList<DrawText> texts;                          ///< what the items' text views show
+        StableList<DrawCurve> curves;                        ///< what the items' curve views show
+        StableList<DrawColouredPolyline> colouredPolylines;  ///< what their views show
+    };
+
     ItemVector items;
     BlockPool<glm::dvec3> points;             ///< what the items' point views show
     BlockPool<glm::dmat4> transforms;         ///< one per run of items that share a transform
-    BlockPool<glm::dvec4> clipPlanes;         ///< one volume per run of items that share it
     StableList<DrawContext> contexts;         ///< one per run of items in one state
-    StableList<DrawFillArea> fillAreas;       ///< what the items' fill area views show
-    StableList<DrawText> texts;               ///< what the items' text views show
     StableList<DrawMesh> meshes;              ///< what the items' mesh views show
-    StableList<DrawCurve> curves;             ///< what the items' curve views show
     DrawSource::Shared source;                ///< what the items' sources view (set before any item)
     std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
     /// The point pool of the items' structure, which polyline and marker points view (not copied).
     std::shared_ptr<const void> storePoints;
+    std::unique_ptr<Rare> rare;  ///< null until the first rare record
 
     DrawSegment() = default;
     DrawSegment(const DrawSegment& other) : items(other.items) {}
     DrawSegment& operator=(const DrawSegment&) = delete;
+
+    /// The rare records, made when first asked for.
+    Rare& rareRecords() {
+        if (!rare) rare = std::make_unique<Rare>();
+        return *rare;
+    }
 };
 
 /// A draw list's items: shared segments read as one sequence.

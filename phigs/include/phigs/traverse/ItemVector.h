@@ -85,9 +85,7 @@ public:
     static bool ownsSomething(const DrawPrimitive& primitive);
     /// The same of a primitive held in place, as its own type before it is held (inline:
     /// traversal asks it of every item).
-    static bool ownsSomething(const DrawPolyline& p) {
-        return p.points.owned() || p.colours.owned() || p.style.owned();
-    }
+    static bool ownsSomething(const DrawPolyline& p) { return p.points.owned() || p.style.owned(); }
     static bool ownsSomething(const DrawPolymarker& p) { return p.points.owned() || p.style.owned(); }
 
 private:
