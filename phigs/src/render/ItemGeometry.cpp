@@ -279,9 +279,9 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels)
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (std::is_same_v<T, DrawColouredPolyline>)
-                b.polyline(p.line.points, p.line.style, p.colours.values, p.colours.interpolated);
-            else if constexpr (std::is_same_v<T, DrawPolyline> || std::is_same_v<T, DrawCurve>)
-                b.polyline(p.points, p.style);
+                b.polyline(stripPoints(p), stripStyle(p), p.colours.values, p.colours.interpolated);
+            else if constexpr (kDrawsStrip<T>)
+                b.polyline(stripPoints(p), stripStyle(p));
             else if constexpr (std::is_same_v<T, DrawPolymarker>)
                 b.polymarker(p);
             else if constexpr (std::is_same_v<T, DrawFillArea>)
@@ -343,18 +343,11 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
             if constexpr (kDrawsStrip<T>) {
-                const auto& line = [&]() -> const auto& {
-                    if constexpr (std::is_same_v<T, DrawColouredPolyline>)
-                        return p.line;
-                    else
-                        return p;
-                }
-                ();
-                h.values(line.points);
-                h.value(line.style);
+                h.values(stripPoints(p));
+                h.value(stripStyle(p));
                 if constexpr (std::is_same_v<T, DrawColouredPolyline>)
                     h.values(p.colours.values), h.value(p.colours.interpolated);
-                if (line.style->type != LineType::Solid) h.value(worldToPixels);
+                if (stripStyle(p)->type != LineType::Solid) h.value(worldToPixels);
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 h.values(p.points);
                 h.value(p.style);

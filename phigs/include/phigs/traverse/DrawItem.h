@@ -162,6 +162,16 @@ inline const ItemArray<glm::dvec3>& stripPoints(const DrawColouredPolyline& p) {
 inline const ItemArray<glm::dvec3>& stripPoints(const DrawCurve& p) {
     return p.points;
 }
+/// The line style of a strip (see kDrawsStrip).
+inline const ItemRef<LineStyle>& stripStyle(const DrawPolyline& p) {
+    return p.style;
+}
+inline const ItemRef<LineStyle>& stripStyle(const DrawColouredPolyline& p) {
+    return p.line.style;
+}
+inline const ItemRef<LineStyle>& stripStyle(const DrawCurve& p) {
+    return p.style;
+}
 
 /// False for every T: a visitor's last `else static_assert(kUnhandledPrimitive<T>)` fails to
 /// compile when a new kind of primitive is not answered.

@@ -42,7 +42,6 @@ public:
         }
         return glm::normalize(glm::vec3(x, y, z));
     }
-    operator glm::vec3() const { return unpacked(); }  // NOLINT(google-explicit-constructor): reads as one
 
     friend bool operator==(PackedNormal a, PackedNormal b) { return a.x_ == b.x_ && a.y_ == b.y_; }
 
