@@ -77,7 +77,10 @@ DrawItem randomItem(std::mt19937& rng, int index) {
             std::vector<glm::dvec3> points;
             for (int k = 0; k < 4; ++k) points.push_back(c + glm::dvec3(small(rng), small(rng), small(rng)));
             line.points = points;
-            primitive = line;
+            if (rng() % 2)  // with vertex colours: a kind of its own, held out of line
+                primitive = DrawColouredPolyline{line, {std::vector<glm::vec3>(4, glm::vec3(1, 0, 0)), true}};
+            else
+                primitive = line;
             break;
         }
         case 1: {
