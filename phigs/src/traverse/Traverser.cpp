@@ -826,14 +826,15 @@ private:
         else
             static_assert(kUnhandledPrimitive<P>);
     }
-    /// A primitive as its item holds it: an out-of-line one in the segment, viewed.
+    /// A primitive as its item holds it: an out-of-line one in the segment, viewed; one held in
+    /// place as itself, so that the item's variant is made from it directly.
     template <class Primitive>
-    DrawPrimitive held(Primitive&& primitive) {
+    detail::HeldAs<std::decay_t<Primitive>> held(Primitive&& primitive) {
         using P = std::decay_t<Primitive>;
         if constexpr (detail::kHeldOutOfLine<P>)
             return ItemRef<P>::view(&records<P>(*segment_).emplace_back(std::forward<Primitive>(primitive)));
         else
-            return DrawPrimitive(std::forward<Primitive>(primitive));
+            return std::forward<Primitive>(primitive);
     }
 
     /// The segment's context for the items of the current state (null: they are invisible),
@@ -874,10 +875,9 @@ private:
         bool owns = false;  // nor do the other fields: they view the segment too
         if constexpr (!detail::kHeldOutOfLine<std::decay_t<Primitive>>)
             owns = ItemVector::ownsSomething(primitive);
-        DrawPrimitive p = held(std::forward<Primitive>(primitive));
-        DrawItem& item =
-            segment_->items.emplaceKnown(owns, std::move(p), ItemRef<DrawContext>::view(shared),
-                                         DrawSource::view(&segment_->source, number, state.pickId));
+        DrawItem& item = segment_->items.emplaceKnown(
+            owns, held(std::forward<Primitive>(primitive)), ItemRef<DrawContext>::view(shared),
+            DrawSource::view(&segment_->source, number, state.pickId));
         return &item;
     }
 
