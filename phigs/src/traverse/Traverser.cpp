@@ -197,6 +197,18 @@ struct Traverser::SubtreeCache {
 /// Light sets and depth cues as draw items index them, kept across traversals so that an item
 /// reused from an earlier traversal keeps valid indices: an index is only ever added, and a
 /// lookup compares the resolved values, so a changed table gets new entries.
+/// What a structure's elements before its first execute make (items, and items that copy their
+/// points), by structure version: the segment for them is sized without reading every element's
+/// family once more before the walk reads it (a hint: a stale entry only sizes a segment wrong).
+struct Traverser::RunSizes {
+    struct Sizes {
+        std::uint64_t version = 0;  ///< 0: none (a structure's version is never 0 once edited)
+        std::uint32_t primitives = 0, copying = 0;
+        bool operator==(const Sizes&) const = default;
+    };
+    IdTable<Sizes> byId;
+};
+
 struct Traverser::ItemTables {
     std::map<std::set<int>, std::vector<int>> lightIndices;
     std::vector<std::vector<Light>> lightSets;
@@ -524,7 +536,7 @@ class Walk {
 public:
     Walk(const StructureStore& store, const WorkstationTables& tables, const TraversalFilters& filters,
          TessellationCache& cache, Traverser::SubtreeCache* subtrees, Traverser::ItemTables& itemTables,
-         detail::SegmentPool& segmentPool, DrawList& out)
+         Traverser::RunSizes& runSizes, detail::SegmentPool& segmentPool, DrawList& out)
         : store_(store),
           tables_(tables),
           filters_(filters),
@@ -533,6 +545,7 @@ public:
           resolve_{tables},
           subtrees_(subtrees),
           itemTables_(itemTables),
+          runSizes_(runSizes),
           segmentPool_(segmentPool),
           baseStamp_(baseStamp(tables, filters)) {}
 
@@ -552,11 +565,13 @@ private:
         if (!s) return;
         // What the executes here hand down, made once until an element may change the state.
         std::shared_ptr<const State> child;
-        ++epoch_;  // another state: the styles resolved so far are not its
+        ++epoch_;              // another state: the styles resolved so far are not its
+        bool firstRun = true;  // no execute passed yet
         for (std::size_t i = 0; i < s->elements.size(); ++i) {
             ++visited;
             const int number = static_cast<int>(i) + 1;
             if (auto x = s->elements.get<ExecuteStructureElement>(i)) {
+                firstRun = false;
                 if (!child) child = inherited(state);
                 path_.push_back({id, number, state.pickId});
                 execute(x->structureId, child);
@@ -569,7 +584,7 @@ private:
             if (!primitive)
                 ++epoch_;  // the state may change
             else if (!segment_)
-                segment_ = newSegment(*s, i);
+                segment_ = newSegment(*s, i, firstRun);
             apply(*s, i, number, state);
         }
     }
@@ -663,13 +678,22 @@ private:
     /// A segment with room for every primitive up to the next execute (one item each: only a
     /// polyline set, a set of fill area sets or edge data makes more, and the segment grows for
     /// those).
-    std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from) const {
+    /// firstRun: `from` lies before the structure's first execute (its sizes are kept by version).
+    std::shared_ptr<DrawSegment> newSegment(const Structure& s, std::size_t from, bool firstRun) const {
         std::size_t primitives = 0, copying = 0;
-        for (std::size_t i = from; i < s.elements.size(); ++i) {
-            if (s.elements.get<ExecuteStructureElement>(i)) break;
-            const std::size_t family = s.elements.family(i);
-            primitives += mayDraw(family);
-            copying += mayDraw(family) && !viewsStoredPoints(family);
+        Traverser::RunSizes::Sizes* kept = firstRun && s.version != 0 ? &runSizes_.byId[s.id] : nullptr;
+        if (kept && kept->version == s.version) {
+            primitives = kept->primitives, copying = kept->copying;
+        } else {
+            for (std::size_t i = from; i < s.elements.size(); ++i) {
+                if (s.elements.get<ExecuteStructureElement>(i)) break;
+                const std::size_t family = s.elements.family(i);
+                primitives += mayDraw(family);
+                copying += mayDraw(family) && !viewsStoredPoints(family);
+            }
+            if (kept)
+                *kept = {s.version, static_cast<std::uint32_t>(primitives),
+                         static_cast<std::uint32_t>(copying)};
         }
         auto segment = segmentPool_.take();
         segment->items.reserve(primitives);
@@ -1308,6 +1332,7 @@ private:
     std::pair<int, int> lastCue_{INT_MIN, -1};  ///< depth cue index and its answer, this traversal
     Traverser::SubtreeCache* subtrees_;
     Traverser::ItemTables& itemTables_;
+    Traverser::RunSizes& runSizes_;
     detail::SegmentPool& segmentPool_;
     std::uint64_t baseStamp_;
     std::shared_ptr<DrawSegment> segment_;  ///< the segment being built
@@ -1332,6 +1357,7 @@ private:
 Traverser::Traverser()
     : subtrees_(std::make_unique<SubtreeCache>()),
       itemTables_(std::make_unique<ItemTables>()),
+      runSizes_(std::make_unique<RunSizes>()),
       segmentPool_(std::make_shared<detail::SegmentPool>()) {
 }
 
@@ -1362,7 +1388,7 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
         *itemTables_ = {};
         if (subtrees_) subtrees_->clear();
     }
-    Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, *segmentPool_, out);
+    Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, *runSizes_, *segmentPool_, out);
     for (int root : roots) walk.root(root);
     out.lightSets = itemTables_->lightSets;
     out.depthCues = itemTables_->depthCues;

@@ -56,11 +56,13 @@ public:
 
     struct SubtreeCache;
     struct ItemTables;
+    struct RunSizes;
 
 private:
     TessellationCache cache_;
     std::unique_ptr<SubtreeCache> subtrees_;
     std::unique_ptr<ItemTables> itemTables_;
+    std::unique_ptr<RunSizes> runSizes_;
     std::shared_ptr<detail::SegmentPool> segmentPool_;  ///< the draw segments made, kept for reuse
     std::uint64_t elementsTraversed_ = 0;
     std::uint64_t elementsReused_ = 0;
