@@ -3,8 +3,11 @@
 namespace phigs {
 
 const TessellationCache::Entry* TessellationCache::find(const Key& key) {
-    auto it = entries_.find(key);
+    // A traversal asks in about serial order: the entry after the last one is tried first.
+    auto it = last_ != entries_.end() ? std::next(last_) : entries_.end();
+    if (it == entries_.end() || !(it->first == key)) it = entries_.find(key);
     if (it == entries_.end()) return nullptr;
+    last_ = it;
     ++counters_.hits;
     it->second.used = true;
     return &it->second.entry;
@@ -23,12 +26,14 @@ const TessellationCache::Entry& TessellationCache::add(const Key& key, Kind kind
             ++counters_.meshesBuilt;
             break;
     }
-    return entries_.emplace(key, Slot{std::move(entry), true}).first->second.entry;
+    last_ = entries_.emplace(key, Slot{std::move(entry), true}).first;
+    return last_->second.entry;
 }
 
 void TessellationCache::prune() {
     if (++prunesSinceSweep_ < kSweepEvery && builtSinceSweep_ * 8 <= keptBySweep_ + 64) return;
     builtSinceSweep_ = prunesSinceSweep_ = 0;
+    last_ = entries_.end();  // it may go below
     for (auto it = entries_.begin(); it != entries_.end();) {
         const Entry& e = it->second.entry;
         // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid

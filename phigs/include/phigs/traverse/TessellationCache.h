@@ -15,6 +15,10 @@ namespace phigs {
 /// key gives back the same shared pointers, so an edit re-tessellates only the elements it touched.
 class TessellationCache {
 public:
+    TessellationCache() = default;
+    TessellationCache(const TessellationCache&) = delete;  // last_ points into its own map
+    TessellationCache& operator=(const TessellationCache&) = delete;
+
     struct Key {
         std::uint64_t serial = 0;
         int criteria = 0;
@@ -51,6 +55,7 @@ public:
     void prune();
     void clear() {
         entries_.clear();
+        last_ = entries_.end();
         grids_.clear();
         builtSinceSweep_ = keptBySweep_ = prunesSinceSweep_ = 0;
     }
@@ -79,6 +84,8 @@ private:
         bool used = true;
     };
     std::map<Key, Slot> entries_;  ///< ordered: a traversal asks in about serial order
+    /// The entry found or added last (end: none): the next one asked for is mostly the one after.
+    std::map<Key, Slot>::iterator last_ = entries_.end();
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::weak_ptr<const std::vector<std::uint32_t>>> grids_;
     Counters counters_;
     std::size_t builtSinceSweep_ = 0, keptBySweep_ = 0, prunesSinceSweep_ = 0;
