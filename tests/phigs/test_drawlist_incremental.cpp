@@ -35,6 +35,7 @@ struct ItemView {
     bool cued;
     std::vector<glm::dvec4> clip;
     std::vector<glm::dvec3> points;
+    std::vector<glm::vec3> colours;
     std::size_t meshPositions, meshTriangles;
     std::string text{};
     bool operator==(const ItemView&) const = default;
@@ -53,11 +54,17 @@ ItemView view(const DrawList& list, const DrawItem& item) {
                item.depthCue() >= 0,
                item.modelClipPlanes(),
                {},
+               {},
                0,
                0};
     if (item.lightSet() >= 0) v.lights = list.lightSets.at(static_cast<std::size_t>(item.lightSet()));
     if (item.depthCue() >= 0) v.cue = list.depthCues.at(static_cast<std::size_t>(item.depthCue()));
     if (auto p = std::get_if<DrawPolyline>(&item.primitive)) v.points = p->points;
+    if (auto p = primitiveIf<DrawColouredPolyline>(item.primitive)) {
+        v.points = p->line.points;
+        v.colours = p->colours.values;
+        v.colours.push_back(glm::vec3(p->colours.interpolated ? 1.0f : 0.0f));
+    }
     if (auto p = std::get_if<DrawPolymarker>(&item.primitive)) v.points = p->points;
     if (auto c = primitiveIf<DrawCurve>(item.primitive)) v.points = c->points;
     if (auto f = primitiveIf<DrawFillArea>(item.primitive))
@@ -85,11 +92,22 @@ struct Twin {
     }
 };
 
+/// A random element, now and then a polyline set with vertex colours (coloured polylines are
+/// held out of line, in their segment).
+Element randomElement(std::mt19937& rng, int id) {
+    if (testing::randomInt(rng, 0, 15) > 0) return testing::randomElement(rng, id, kStructures);
+    PolylineSetWithDataElement e;
+    e.polylines = {testing::randomPoints(rng, 3), testing::randomPoints(rng, 2)};
+    e.vertexColours = {{Colour::indexed(1), Colour::fromRgb({0.5, 0.25, 1}), Colour::indexed(3)},
+                       {Colour::indexed(2), Colour::indexed(4)}};
+    return e;
+}
+
 void insertSome(StructureStore& store, std::mt19937& rng, int id, int count) {
     store.openStructure(id);
     for (int k = 0; k < count; ++k) {
         try {
-            store.insert(testing::randomElement(rng, id, kStructures));
+            store.insert(randomElement(rng, id));
         } catch (const Error&) {
             // a refused element (a cycle) changes nothing
         }
@@ -143,7 +161,7 @@ void editOnce(Twin& t, std::mt19937& rng) {
             store.setEditMode(EditMode::Replace);
             store.setElementPointer(testing::randomInt(rng, 1, std::max(1, store.elementPointer())));
             try {
-                store.insert(testing::randomElement(rng, id, kStructures));
+                store.insert(randomElement(rng, id));
             } catch (const Error&) {
             }
             store.setEditMode(EditMode::Insert);

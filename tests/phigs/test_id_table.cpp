@@ -62,6 +62,26 @@ TEST_CASE("id tables read like a map over random edits", "[store][random]") {
     }
 }
 
+TEST_CASE("an id table growing an id at a time takes over the ids it kept aside", "[store]") {
+    // Negative ids stay aside for good; ids far past the dense part wait there until the dense
+    // part grows over them, one id at a time (each growth looks up only the ids it adds).
+    IdTable<std::uint64_t> table;
+    for (int id = -1; id >= -300; --id) table[id] = std::uint64_t(1000 - id);
+    for (int id : {5000, 5001, 7777, 9000}) table[id] = std::uint64_t(id) * 3;
+    for (int id = 0; id < 10000; ++id)
+        if (id != 5000 && id != 5001 && id != 7777 && id != 9000) table[id] = std::uint64_t(id) + 1;
+    for (int id = 0; id < 10000; ++id) {
+        const std::uint64_t* v = table.find(id);
+        REQUIRE(v != nullptr);
+        const bool aside = id == 5000 || id == 5001 || id == 7777 || id == 9000;
+        REQUIRE(*v == (aside ? std::uint64_t(id) * 3 : std::uint64_t(id) + 1));
+    }
+    for (int id = -1; id >= -300; --id) REQUIRE(*table.find(id) == std::uint64_t(1000 - id));
+    std::size_t listed = 0;
+    table.forEach([&](int, std::uint64_t) { ++listed; });
+    CHECK(listed == 10300);
+}
+
 TEST_CASE("an id table treats an empty value as absent", "[store]") {
     IdTable<std::vector<int>> table;
     table[3].push_back(7);

@@ -37,6 +37,8 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
     fill.contours = {points};
     DrawText text;
     text.text = "T";
+    const DrawColouredPolyline coloured{DrawPolyline{ItemArray<glm::dvec3>(points), {}},
+                                        {std::vector<glm::vec3>(3, glm::vec3(0, 1, 0)), true}};
     const glm::dmat4 transform(2.0);
     for (unsigned seed : {1u, 2u, 3u, 4u}) {
         std::mt19937 rng(seed);
@@ -47,7 +49,7 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
         auto item = [&](int n) {
             DrawItem i;
             i.context.edit().viewIndex = n;
-            switch (pick(0, 6)) {
+            switch (pick(0, 8)) {
                 case 0:
                     i.primitive = DrawPolyline{ItemArray<glm::dvec3>::view(points.data(), 3), {}};
                     break;
@@ -65,6 +67,12 @@ TEST_CASE("item vector: clearing lets go of exactly what the items own", "[trave
                     break;
                 case 5:
                     i.primitive = ItemRef<DrawText>::view(&text);
+                    break;
+                case 6:
+                    i.primitive = ItemRef<DrawColouredPolyline>::view(&coloured);
+                    break;
+                case 7:
+                    i.primitive = coloured;  // a copy of its own, colours and points included
                     break;
                 default:
                     i.primitive = text;

@@ -59,6 +59,19 @@ TEST_CASE("packed normals give axes and zero back exactly", "[phigs][mesh]") {
     CHECK(PackedNormal(glm::vec3(0.0f)).unpacked() == glm::vec3(0.0f));
     CHECK(PackedNormal().unpacked() == glm::vec3(0.0f));
     CHECK(PackedNormal(glm::vec3(NAN, 0.0f, 1.0f)).unpacked() == glm::vec3(0.0f));
+    CHECK(PackedNormal(glm::vec3(INFINITY, 0.0f, 0.0f)).unpacked() == glm::vec3(0.0f));
+}
+
+TEST_CASE("packed normals keep the direction of huge and tiny vectors", "[phigs][mesh]") {
+    // The largest component scales the vector first: a sum of 3e38s would overflow.
+    const glm::vec3 huge = PackedNormal(glm::vec3(3e38f, 3e38f, -3e38f)).unpacked();
+    CHECK(glm::length(huge - glm::normalize(glm::vec3(1, 1, -1))) < 1e-4f);
+    // Subnormal components: the direction compared is the one the floats hold (1e-42f is not
+    // exactly half of 2e-42f), normalised in double.
+    const glm::vec3 small(1e-42f, -2e-42f, 0.0f);
+    const glm::vec3 tiny = PackedNormal(small).unpacked();
+    const glm::dvec3 expected = glm::normalize(glm::dvec3(small) * 1e42);
+    CHECK(glm::length(glm::dvec3(tiny) - expected) < 1e-4);
 }
 
 }  // namespace test_packed_normal

@@ -41,7 +41,7 @@ public:
     ItemGeometry geometry;
 
     /// Line strips in world coordinates as a line list, with the screen distance for patterns.
-    /// `colours` (when given, one per point of the one strip) colour the segments as DrawPolyline
+    /// `colours` (when given, one per point of the one strip) colour the segments as DrawColouredPolyline
     /// says; the pattern distance runs on along each whole strip.
     void lineStrips(const std::vector<std::vector<glm::dvec3>>& strips, bool closed, PartRole role,
                     glm::vec3 colour, LineType type, float width, std::span<const glm::vec3> colours = {},

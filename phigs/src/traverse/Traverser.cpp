@@ -194,9 +194,6 @@ struct Traverser::SubtreeCache {
     static constexpr std::size_t kSweepEvery = 16;
 };
 
-/// Light sets and depth cues as draw items index them, kept across traversals so that an item
-/// reused from an earlier traversal keeps valid indices: an index is only ever added, and a
-/// lookup compares the resolved values, so a changed table gets new entries.
 /// What a structure's elements before its first execute make (items, and items that copy their
 /// points), by structure version: the segment for them is sized without reading every element's
 /// family once more before the walk reads it (a hint: a stale entry only sizes a segment wrong).
@@ -209,6 +206,9 @@ struct Traverser::RunSizes {
     IdTable<Sizes> byId;
 };
 
+/// Light sets and depth cues as draw items index them, kept across traversals so that an item
+/// reused from an earlier traversal keeps valid indices: an index is only ever added, and a
+/// lookup compares the resolved values, so a changed table gets new entries.
 struct Traverser::ItemTables {
     std::map<std::set<int>, std::vector<int>> lightIndices;
     std::vector<std::vector<Light>> lightSets;

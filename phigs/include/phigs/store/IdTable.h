@@ -70,7 +70,17 @@ private:
         // Exactly to `size`: the vector's own growth keeps this amortized, and the room it keeps
         // past the last id is never written (so never resident).
         dense_.resize(size);
-        // Values kept in the map for ids the vector now covers move into it.
+        // Values kept in the map for ids the vector now covers move into it: looked up one by one
+        // where fewer ids were added than the map holds (the vector grows an id at a time), else
+        // by one pass over the map.
+        if (size - from < sparse_.size()) {
+            for (std::size_t id = from; id < size; ++id)
+                if (auto it = sparse_.find(static_cast<int>(id)); it != sparse_.end()) {
+                    dense_[id] = std::move(it->second);
+                    sparse_.erase(it);
+                }
+            return;
+        }
         for (auto it = sparse_.begin(); it != sparse_.end();) {
             if (it->first >= 0 && static_cast<std::size_t>(it->first) >= from && dense(it->first)) {
                 dense_[static_cast<std::size_t>(it->first)] = std::move(it->second);

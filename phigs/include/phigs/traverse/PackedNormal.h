@@ -16,14 +16,19 @@ namespace phigs {
 class PackedNormal {
 public:
     PackedNormal() = default;
-    /// Packs `n` (of any length; its direction is kept, and a zero vector stays zero).
+    /// Packs the direction of `n`, of any finite length; zero, or a NaN or infinite component,
+    /// packs as zero.
     PackedNormal(const glm::vec3& n) {  // NOLINT(google-explicit-constructor): stored as one
-        const float l1 = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
-        if (!(l1 > 0.0f) || !std::isfinite(l1)) {
+        const float largest = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+        if (!(largest > 0.0f) || !std::isfinite(largest) || std::isnan(n.x) || std::isnan(n.y) ||
+            std::isnan(n.z)) {
             x_ = y_ = kZero;
             return;
         }
-        float x = n.x / l1, y = n.y / l1;
+        // Scaled by the largest component first, so that the sum below cannot overflow.
+        const glm::vec3 m = n / largest;
+        const float l1 = std::abs(m.x) + std::abs(m.y) + std::abs(m.z);
+        float x = m.x / l1, y = m.y / l1;
         if (n.z < 0.0f) {
             const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
             x = fx, y = fy;
