@@ -29,10 +29,7 @@ public:
         const glm::vec3 m = n / largest;
         const float l1 = std::abs(m.x) + std::abs(m.y) + std::abs(m.z);
         float x = m.x / l1, y = m.y / l1;
-        if (n.z < 0.0f) {
-            const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
-            x = fx, y = fy;
-        }
+        if (n.z < 0.0f) fold(x, y);
         x_ = quantize(x), y_ = quantize(y);
     }
 
@@ -41,10 +38,7 @@ public:
         if (x_ == kZero) return glm::vec3(0.0f);
         float x = float(x_) / kScale, y = float(y_) / kScale;
         const float z = 1.0f - std::abs(x) - std::abs(y);
-        if (z < 0.0f) {
-            const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
-            x = fx, y = fy;
-        }
+        if (z < 0.0f) fold(x, y);
         return glm::normalize(glm::vec3(x, y, z));
     }
 
@@ -55,6 +49,11 @@ private:
     /// Below every quantized value: marks the zero vector.
     static constexpr std::int16_t kZero = std::numeric_limits<std::int16_t>::min();
     static float signOf(float v) { return v < 0.0f ? -1.0f : 1.0f; }
+    /// The octahedron's lower half folded over its upper one (its own inverse).
+    static void fold(float& x, float& y) {
+        const float fx = (1.0f - std::abs(y)) * signOf(x), fy = (1.0f - std::abs(x)) * signOf(y);
+        x = fx, y = fy;
+    }
     static std::int16_t quantize(float v) {
         return static_cast<std::int16_t>(std::lround(std::clamp(v, -1.0f, 1.0f) * kScale));
     }
