@@ -4,7 +4,10 @@
 // mesh outlines.
 #include "VectorRaster.h"
 #include "VectorScenes.h"
+#include "phigs/hardcopy/HomogeneousClipper.h"
+#include "phigs/hardcopy/ItemProjector.h"
 #include "phigs/hardcopy/MeshOutline.h"
+#include "phigs/hardcopy/PageMapping.h"
 #include "phigs/hardcopy/VectorDescriber.h"
 #include "phigs/hardcopy/VectorWorkstation.h"
 
@@ -449,6 +452,70 @@ TEST_CASE(
         }
     CHECK(backInside == 0);
     CHECK(backOutside > 500);
+}
+
+TEST_CASE("vector describe: a mesh's triangles outside its view give nothing, every other one a facet",
+          "[hardcopy]") {
+    // Random triangle soups around a view with clip limits on all six sides, under random model
+    // transforms: the facets are exactly the triangles whose clipped polygon is not empty, and a
+    // mesh wholly outside the view (edges on) puts nothing on the page.
+    for (std::uint32_t seed = 1; seed <= 20; ++seed) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> coordinate(-0.3, 1.3), offset(-0.5, 0.5), scale(0.7, 1.3);
+        DrawList list = identityList();
+        DrawView clipped;
+        clipped.clipMin = {0.25, 0.3, 0.2};
+        clipped.clipMax = {0.75, 0.7, 0.9};
+        list.views[0] = clipped;
+        glm::dmat4 model(1.0);
+        model[0][0] = scale(random), model[1][1] = scale(random), model[2][2] = scale(random);
+        model[0][1] = 0.3 * offset(random);
+        model[3] = glm::dvec4(0.3 * glm::dvec3(offset(random), offset(random), offset(random)), 1.0);
+        auto mesh = std::make_shared<MeshData>();
+        for (std::uint32_t t = 0; t < 300; ++t) {
+            const glm::dvec3 corner(coordinate(random), coordinate(random), coordinate(random));
+            for (int k = 0; k < 3; ++k)
+                mesh->positions.push_back(
+                    glm::vec3(corner + 0.4 * glm::dvec3(offset(random), offset(random), offset(random))));
+            mesh->triangles.insert(mesh->triangles.end(), {3 * t, 3 * t + 1, 3 * t + 2});
+        }
+        auto outside = std::make_shared<MeshData>(*mesh);
+        for (glm::vec3& p : outside->positions) p.x += 10.0f;  // right of the view, whatever the model
+        for (const auto& data : {mesh, outside}) {
+            DrawMesh m;
+            m.mesh = data;
+            m.interior.edit().style = InteriorStyle::Solid;
+            m.edges.edit().visible = data == outside;
+            DrawItem drawn = item(m);
+            drawn.context.edit().modelTransform = ItemRef<glm::dmat4>(model);
+            list.items.push_back(std::move(drawn));
+        }
+        std::size_t expected = 0;
+        const std::vector<HalfSpace> volume = viewVolume(clipped, list);
+        for (std::size_t t = 0; t < mesh->triangles.size(); t += 3) {
+            std::vector<ClipVertex> polygon;
+            for (std::size_t k = 0; k < 3; ++k)
+                polygon.push_back(
+                    {model * glm::dvec4(glm::dvec3(mesh->positions[mesh->triangles[t + k]]), 1.0)});
+            expected += clipPolygon(polygon, volume).empty() ? 0 : 1;
+        }
+        const PageMapping mapping(list, squarePage());
+        const ProjectedScene scene = projectScene(list, mapping, VectorOptions{});
+        REQUIRE(expected > 10);
+        CHECK(scene.parts.size() == expected);
+        for (const ProjectedPart& part : scene.parts) {
+            const auto* facet = std::get_if<ProjectedFacet>(&part);
+            REQUIRE(facet);
+            for (const auto& contour : facet->contours)
+                for (const PagePoint& p : contour) {
+                    // NPC x in [0.25, 0.75] and y in [0.3, 0.7] on a 100-point page with y down.
+                    CHECK(p.x >= 25.0 - 1e-9);
+                    CHECK(p.x <= 75.0 + 1e-9);
+                    CHECK(p.y >= 30.0 - 1e-9);
+                    CHECK(p.y <= 70.0 + 1e-9);
+                }
+        }
+    }
 }
 
 TEST_CASE("mesh outline: patch boundaries on knot lines, borders, silhouettes and chains", "[hardcopy]") {

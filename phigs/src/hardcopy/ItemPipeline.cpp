@@ -266,8 +266,18 @@ void ItemPipeline::marker(const glm::dvec3& world, const MarkerStyle& style) {
     out_.parts.push_back(m);
 }
 
+std::uint32_t ItemPipeline::outsideView(const glm::dvec4& npc) const {
+    std::uint32_t bits = 0;
+    for (std::size_t i = 0; i < view_.size() && i < 32; ++i)
+        if (!(glm::dot(view_[i].plane, npc) - view_[i].offset >= 0.0)) bits |= std::uint32_t(1) << i;
+    return bits;
+}
+
 int ItemPipeline::facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) const {
-    const glm::dvec4 ha = toNpc(a), hb = toNpc(b), hc = toNpc(c);
+    return facingNpc(toNpc(a), toNpc(b), toNpc(c));
+}
+
+int ItemPipeline::facingNpc(const glm::dvec4& ha, const glm::dvec4& hb, const glm::dvec4& hc) {
     if (!(ha.w > 0.0 && hb.w > 0.0 && hc.w > 0.0)) return 0;
     const glm::dvec2 pa = glm::dvec2(ha) / ha.w, pb = glm::dvec2(hb) / hb.w, pc = glm::dvec2(hc) / hc.w;
     // NPC has y up: counter-clockwise there is the front, as the raster's winding test says.

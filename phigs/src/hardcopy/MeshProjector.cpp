@@ -12,19 +12,31 @@ MeshProjector::MeshProjector(ItemPipeline& pipeline, const DrawMesh& mesh)
     : pipeline_(pipeline), mesh_(mesh), data_(*mesh.mesh) {
     const glm::dmat4& model = pipeline_.item().modelTransform().get();
     world_.reserve(data_.positions.size());
+    std::vector<glm::dvec4> npc;
+    npc.reserve(data_.positions.size());
+    outside_.reserve(data_.positions.size());
+    std::uint32_t shared = ~std::uint32_t(0);
     for (const glm::vec3& p : data_.positions) {
         const glm::dvec4 q = model * glm::dvec4(glm::dvec3(p), 1.0);
         world_.push_back(glm::dvec3(q) / (q.w != 0.0 ? q.w : 1.0));
+        npc.push_back(pipeline_.toNpc(world_.back()));
+        outside_.push_back(pipeline_.outsideView(npc.back()));
+        shared &= outside_.back();
     }
+    // Everything the mesh draws (facets, edges, iso-lines, outlines) joins its vertices.
+    allOutside_ = shared != 0 && !world_.empty();
+    if (allOutside_) return;
     const std::size_t count = world_.size();
+    facing_.reserve(data_.triangles.size() / 3);
     for (std::size_t t = 0; t + 2 < data_.triangles.size(); t += 3) {
         const std::uint32_t a = data_.triangles[t], b = data_.triangles[t + 1], c = data_.triangles[t + 2];
         facing_.push_back(
-            a < count && b < count && c < count ? pipeline_.facing(world_[a], world_[b], world_[c]) : 0);
+            a < count && b < count && c < count ? ItemPipeline::facingNpc(npc[a], npc[b], npc[c]) : 0);
     }
 }
 
 void MeshProjector::project() {
+    if (allOutside_) return;
     const InteriorStyleSet& in = mesh_.interior;
     if (pipeline_.options().surfaces == SurfaceDrawing::HiddenLine && in.style != InteriorStyle::Empty) {
         facets(true);
@@ -68,6 +80,8 @@ void MeshProjector::facets(bool coverOnly) {
     for (std::size_t t = 0; t < facing_.size(); ++t) {
         const std::uint32_t* index = &data_.triangles[3 * t];
         if (index[0] >= count || index[1] >= count || index[2] >= count) continue;
+        // Outside the view whole: clipping would leave nothing, so it is neither lit nor clipped.
+        if ((outside_[index[0]] & outside_[index[1]] & outside_[index[2]]) != 0) continue;
         const int facing = facing_[t];
         // A hidden-line surface hides with both sides; a shaded one is culled as the raster culls.
         if (!coverOnly && FacetPaint::unfilled(in, facing)) continue;

@@ -11,6 +11,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -65,8 +66,14 @@ public:
     int facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) const;
     /// The side of a world plane (positive on its front) the item's view shows: +1, -1, 0 edge on.
     int sideShown(const glm::dvec4& plane) const { return render::sideShown(plane, worldToNpc_); }
+    /// facing() of a triangle given by its homogeneous NPC points.
+    static int facingNpc(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
     /// Homogeneous NPC of a world point.
     glm::dvec4 toNpc(const glm::dvec3& world) const { return worldToNpc_ * glm::dvec4(world, 1.0); }
+    /// One bit for each half space of the view's volume that a homogeneous NPC point lies outside:
+    /// a polygon or line whose points share a bit lies outside the view whole, and clipping it
+    /// leaves nothing.
+    std::uint32_t outsideView(const glm::dvec4& npc) const;
     /// Whether a world point survives the model clipping volume.
     bool modelClipKeeps(const glm::dvec3& world) const;
 

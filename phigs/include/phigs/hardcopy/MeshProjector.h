@@ -2,6 +2,7 @@
 
 #include "phigs/hardcopy/ItemPipeline.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace phigs::hardcopy {
@@ -29,6 +30,9 @@ private:
     const MeshData& data_;
     std::vector<glm::dvec3> world_;
     std::vector<int> facing_;  ///< per triangle, ItemPipeline::facing
+    /// Per vertex, ItemPipeline::outsideView: a triangle whose corners share a bit shows nothing.
+    std::vector<std::uint32_t> outside_;
+    bool allOutside_ = false;  ///< every vertex outside one half space: nothing of the mesh shows
 };
 
 }  // namespace phigs::hardcopy
