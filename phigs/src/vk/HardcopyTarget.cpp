@@ -19,7 +19,11 @@ HardcopyTarget::~HardcopyTarget() {
 
 void HardcopyTarget::update(const DrawList& list) {
     if (closed_) throw std::logic_error("HardcopyTarget::update: " + file_.string() + " is closed");
-    image_ = target_.draw(list);
+    // The last picture's room is reused; a first draw that fails leaves no picture for close().
+    if (image_)
+        target_.draw(list, *image_);
+    else
+        image_ = target_.draw(list);
     if (file_.has_parent_path()) std::filesystem::create_directories(file_.parent_path());
     writePng(*image_, file_);
 }

@@ -42,6 +42,12 @@ void ImageTarget::releaseImages() {
 }
 
 Image ImageTarget::draw(const DrawList& list) {
+    Image picture;
+    draw(list, picture);
+    return picture;
+}
+
+void ImageTarget::draw(const DrawList& list, Image& picture) {
     if (!target_) makeImages();
     const VkExtent2D extent{width_, height_};
     renderer_.prepare(list, extent);
@@ -49,7 +55,7 @@ Image ImageTarget::draw(const DrawList& list) {
         renderer_.record(cmd, framebuffer_, extent);
         target_->recordReadback(cmd);
     });
-    return target_->readbackPixels();
+    target_->readbackPixels(picture);
 }
 
 void ImageTarget::drawToPng(const DrawList& list, const std::filesystem::path& file) {

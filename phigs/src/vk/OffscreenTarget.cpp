@@ -49,12 +49,19 @@ void OffscreenTarget::recordReadback(VkCommandBuffer cmd) const {
 }
 
 Image OffscreenTarget::readbackPixels() const {
-    Image image(width_, height_);
+    Image image;
+    readbackPixels(image);
+    return image;
+}
+
+void OffscreenTarget::readbackPixels(Image& into) const {
+    into.width = width_;
+    into.height = height_;
+    into.rgba.resize(std::size_t{width_} * height_ * 4);
     void* mapped = nullptr;
     check(vkMapMemory(context_.device(), readback_.memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
-    std::memcpy(image.rgba.data(), mapped, image.rgba.size());
+    std::memcpy(into.rgba.data(), mapped, into.rgba.size());
     vkUnmapMemory(context_.device(), readback_.memory);
-    return image;
 }
 
 }  // namespace phigs::vk

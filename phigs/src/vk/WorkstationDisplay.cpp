@@ -96,7 +96,7 @@ const DrawList& WorkstationDisplay::withEcho(const DrawList& picture) {
 bool WorkstationDisplay::present(const DrawList& shown) {
     const DrawList& picture = withEcho(shown);
     if (offscreen_) {
-        image_ = offscreen_->draw(picture);
+        offscreen_->draw(picture, image_);
         if (!offscreenFile_.empty()) writePng(image_, offscreenFile_);
         return true;
     }

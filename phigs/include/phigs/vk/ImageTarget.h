@@ -22,6 +22,8 @@ public:
 
     /// Draws the list and returns the picture (rows top to bottom).
     Image draw(const DrawList& list);
+    /// Draws the list into `picture`, reusing its room (a workstation redraws into one image).
+    void draw(const DrawList& list, Image& picture);
     /// Draws the list and writes the picture as a PNG file.
     void drawToPng(const DrawList& list, const std::filesystem::path& file);
     /// Frees the colour, depth and readback images (the renderer keeps its pipelines and

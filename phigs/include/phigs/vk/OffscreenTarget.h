@@ -33,6 +33,9 @@ public:
     void recordReadback(VkCommandBuffer cmd) const;
     /// The pixels last copied by recordReadback (after the submission has completed).
     Image readbackPixels() const;
+    /// The same into `into`, reusing its pixels' room when the size is the same: no fresh pages to
+    /// clear and fault in for every frame read back.
+    void readbackPixels(Image& into) const;
 
 private:
     void release();
