@@ -189,16 +189,29 @@ bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
     // mostly behind the same few. Their intervals are some of all the triangles' intervals, so
     // when they cover the segment all of them do, and the answer is the full query's.
     scratch_.clear();
-    for (std::uint32_t i : hints_) {
+    for (std::size_t k = 0; k < hints_.size(); ++k) {
         glm::dvec2 interval;
-        if (hides(triangles_[i], a, b, interval)) scratch_.push_back(interval);
+        if (hides(triangles_[hints_[k]], a, b, interval)) scratch_.push_back(interval), hintUsed_[k] = 1;
     }
-    if (!scratch_.empty() && coverWhole(scratch_)) return true;
+    // Only the parts the hints leave open are queried: their boxes meet fewer cells than the
+    // whole segment's. Triangles whose boxes miss a part cannot hide any of it.
+    gaps_.clear();
+    std::sort(scratch_.begin(), scratch_.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+    double from = 0.0;
+    for (const glm::dvec2& h : scratch_) {
+        if (h.x > from + 1e-9) gaps_.push_back({from, h.x});
+        from = std::max(from, h.y);
+    }
+    if (from < 1.0 - 1e-9) gaps_.push_back({from, 1.0});
+    if (gaps_.empty()) return true;
     found_.clear();
-    hiddenIntervals(a, b, scratch_, &found_);
-    if (!coverWhole(scratch_)) return false;
+    for (const glm::dvec2& gap : gaps_) {
+        hiddenIntervals(a + (b - a) * gap.x, a + (b - a) * gap.y, scratch_, &found_);
+        if (!coverWhole(scratch_)) return false;
+    }
     for (std::uint32_t i : found_)
-        if (std::find(hints_.begin(), hints_.end(), i) == hints_.end()) hints_.push_back(i);
+        if (std::find(hints_.begin(), hints_.end(), i) == hints_.end())
+            hints_.push_back(i), hintUsed_.push_back(1);
     return true;
 }
 
@@ -230,17 +243,32 @@ bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
         for (const PagePoint& p : c) centre += p, ++count;
     if (count == 0) return false;
     centre /= double(count);
+    // The centre must lie behind some triangle. The last facet's hiders are tried first; where
+    // one hides the centre they are the hints (they only shorten the edges' queries, so the
+    // answer is the same), else the centre's own hiders are, and with none the facet shows.
     hints_.clear();
-    hidersOf(centre, hints_);
+    for (std::uint32_t i : carried_) {
+        glm::dvec2 interval;
+        if (hides(triangles_[i], centre, centre, interval)) {
+            hints_ = carried_;
+            break;
+        }
+    }
+    if (hints_.empty()) hidersOf(centre, hints_);
     if (hints_.empty()) return false;
+    hintUsed_.assign(hints_.size(), 0);
     auto inside = [&](const PagePoint& p) {
         const double distance = glm::length(glm::dvec2(centre - p));
         return distance > 0.0 ? p + (centre - p) * std::min(0.1, margin / distance) : p;
     };
+    bool whole = true;
     for (const auto& c : facet.contours)
-        for (std::size_t i = 0; i < c.size(); ++i)
-            if (!hiddenWhole(inside(c[i]), inside(c[(i + 1) % c.size()]))) return false;
-    return true;
+        for (std::size_t i = 0; whole && i < c.size(); ++i)
+            whole = hiddenWhole(inside(c[i]), inside(c[(i + 1) % c.size()]));
+    carried_.clear();
+    for (std::size_t k = 0; k < hints_.size(); ++k)
+        if (hintUsed_[k]) carried_.push_back(hints_[k]);
+    return whole;
 }
 
 std::vector<ProjectedLine> OcclusionIndex::visibleRuns(const ProjectedLine& line) const {

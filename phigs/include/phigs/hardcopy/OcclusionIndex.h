@@ -73,8 +73,14 @@ private:
     mutable std::vector<std::uint32_t> stamp_;
     mutable std::uint32_t query_ = 0;
     mutable std::vector<glm::dvec2> scratch_;  ///< hiddenWhole's intervals, kept between calls
-    /// hidden()'s triangles known to hide the facet's centre or edges, tried first on each edge.
+    mutable std::vector<glm::dvec2> gaps_;     ///< and the parts of its segment the hints leave open
+    /// hidden()'s triangles known to hide the facet's centre or edges, tried first on each edge,
+    /// and whether each hid some of this facet.
     mutable std::vector<std::uint32_t> hints_, found_;
+    mutable std::vector<std::uint8_t> hintUsed_;
+    /// The hints that hid some of the last facet tested: a mesh's facets come in order, and
+    /// neighbours mostly lie behind the same few triangles.
+    mutable std::vector<std::uint32_t> carried_;
 };
 
 }  // namespace phigs::hardcopy
