@@ -144,13 +144,15 @@ void CairoPainter::useClip(int clip) {
     cairo_clip(cr_);
 }
 
-void CairoPainter::contours(const std::vector<std::vector<glm::dvec2>>& contours) {
+void CairoPainter::contours(const std::vector<std::vector<glm::dvec2>>& contours, bool stroked) {
     cairo_new_path(cr_);
     for (const auto& c : contours) {
         if (c.size() < 2) continue;
         cairo_move_to(cr_, c[0].x, c[0].y);
         for (std::size_t i = 1; i < c.size(); ++i) cairo_line_to(cr_, c[i].x, c[i].y);
-        cairo_close_path(cr_);
+        // A fill closes every contour itself; closing one costs a "close" and, after the last, a
+        // move back to its start in the file. Only an outline that is stroked must be closed.
+        if (stroked) cairo_close_path(cr_);
     }
 }
 
@@ -171,12 +173,7 @@ void CairoPainter::fillRun(const std::vector<VectorOp>& ops, std::size_t begin, 
             run.push_back(&reversed.back());
         }
     }
-    cairo_new_path(cr_);
-    for (const auto& loop : unionOutline(run)) {
-        cairo_move_to(cr_, loop[0].x, loop[0].y);
-        for (std::size_t k = 1; k < loop.size(); ++k) cairo_line_to(cr_, loop[k].x, loop[k].y);
-        cairo_close_path(cr_);
-    }
+    contours(unionOutline(run), style.seamWidth > 0.0);
     colour(style.colour);
     cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
     if (style.seamWidth > 0.0) {
@@ -236,13 +233,13 @@ void CairoPainter::patternSource(const PagePattern& pattern, float opacity) {
 void CairoPainter::operator()(const VectorFill& fill) {
     useClip(fill.clip);
     if (fill.seamWidth > 0.0 && convexOpaque(fill, opaque_)) {
-        contours({grownConvex(fill.contours[0], 0.5 * fill.seamWidth)});
+        contours({grownConvex(fill.contours[0], 0.5 * fill.seamWidth)}, false);
         colour(fill.colour);
         cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
         cairo_fill(cr_);
         return;
     }
-    contours(fill.contours);
+    contours(fill.contours, fill.seamWidth > 0.0);
     if (fill.pattern)
         patternSource(*fill.pattern, fill.opacity);
     else
@@ -261,7 +258,7 @@ void CairoPainter::operator()(const VectorFill& fill) {
 void CairoPainter::operator()(const VectorHatch& hatch) {
     useClip(hatch.clip);
     cairo_save(cr_);
-    contours(hatch.contours);
+    contours(hatch.contours, false);  // a clip closes its contours as a fill does
     cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
     double x0, y0, x1, y1;
     cairo_path_extents(cr_, &x0, &y0, &x1, &y1);

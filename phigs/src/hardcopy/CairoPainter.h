@@ -26,7 +26,8 @@ public:
 
 private:
     void useClip(int clip);
-    void contours(const std::vector<std::vector<glm::dvec2>>& contours);
+    /// The contours as the current path, each closed only where the path is `stroked`.
+    void contours(const std::vector<std::vector<glm::dvec2>>& contours, bool stroked);
     /// Fills [begin, end) of `ops`, opaque convex VectorFills of one style, as one path.
     void fillRun(const std::vector<VectorOp>& ops, std::size_t begin, std::size_t end);
     void colour(glm::vec3 rgb, float opacity = 1.0f);
