@@ -32,6 +32,17 @@ double cross(glm::dvec2 a, glm::dvec2 b) {
     return a.x * b.y - a.y * b.x;
 }
 
+/// The parts of [0, 1] outside every interval (sorted by their start), ignoring gaps of 1e-9.
+void openParts(const std::vector<glm::dvec2>& sorted, std::vector<glm::dvec2>& open) {
+    open.clear();
+    double from = 0.0;
+    for (const glm::dvec2& h : sorted) {
+        if (h.x > from + 1e-9) open.push_back({from, h.x});
+        from = std::max(from, h.y);
+    }
+    if (from < 1.0 - 1e-9) open.push_back({from, 1.0});
+}
+
 }  // namespace
 
 OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) {
@@ -172,15 +183,9 @@ bool OcclusionIndex::coverWhole(std::vector<glm::dvec2>& intervals) {
 }
 
 std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
-    std::vector<glm::dvec2> hidden;
+    std::vector<glm::dvec2> hidden, visible;
     hiddenIntervals(a, b, hidden);
-    std::vector<glm::dvec2> visible;
-    double from = 0.0;
-    for (const glm::dvec2& h : hidden) {
-        if (h.x > from + 1e-9) visible.push_back({from, h.x});
-        from = std::max(from, h.y);
-    }
-    if (from < 1.0 - 1e-9) visible.push_back({from, 1.0});
+    openParts(hidden, visible);
     return visible;
 }
 
@@ -195,14 +200,8 @@ bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
     }
     // Only the parts the hints leave open are queried: their boxes meet fewer cells than the
     // whole segment's. Triangles whose boxes miss a part cannot hide any of it.
-    gaps_.clear();
     std::sort(scratch_.begin(), scratch_.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
-    double from = 0.0;
-    for (const glm::dvec2& h : scratch_) {
-        if (h.x > from + 1e-9) gaps_.push_back({from, h.x});
-        from = std::max(from, h.y);
-    }
-    if (from < 1.0 - 1e-9) gaps_.push_back({from, 1.0});
+    openParts(scratch_, gaps_);
     if (gaps_.empty()) return true;
     found_.clear();
     for (const glm::dvec2& gap : gaps_) {
