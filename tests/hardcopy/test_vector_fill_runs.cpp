@@ -106,6 +106,19 @@ TEST_CASE("vector hardcopy: runs of one colour show the union of their fills, in
 
 namespace {
 
+/// A draw list of one SOLID mesh in the identity view.
+DrawList solidMesh(std::shared_ptr<const MeshData> mesh) {
+    DrawList list;
+    list.views.push_back(DrawView{});
+    DrawMesh m;
+    m.mesh = std::move(mesh);
+    m.interior.edit().style = InteriorStyle::Solid;
+    DrawItem item;
+    item.primitive = std::move(m);
+    list.items.push_back(std::move(item));
+    return list;
+}
+
 /// Distance from p to a convex polygon, 0 inside.
 double distanceOutside(const std::vector<glm::dvec2>& c, glm::dvec2 p) {
     double area = 0.0;
@@ -142,14 +155,7 @@ TEST_CASE("vector hardcopy: a seamed facet covers what its fill and outline stro
             for (const auto& q : p) mesh->positions.push_back(q), mesh->colours.push_back(colour);
             mesh->triangles.insert(mesh->triangles.end(), {3 * t, 3 * t + 1, 3 * t + 2});
         }
-        DrawList list;
-        list.views.push_back(DrawView{});
-        DrawMesh m;
-        m.mesh = mesh;
-        m.interior.edit().style = InteriorStyle::Solid;
-        DrawItem item;
-        item.primitive = std::move(m);
-        list.items.push_back(std::move(item));
+        const DrawList list = solidMesh(mesh);
         PageSetup page;
         page.paper = {double(kSize), double(kSize)};
         page.nominalPixel = 8.0;  // seams 4 points wide: far wider than the raster's pixels
@@ -256,14 +262,7 @@ TEST_CASE("vector hardcopy: the seam of a run's outline runs along every edge, t
         mesh->positions = corners;
         mesh->colours.assign(4, colour);
         mesh->triangles = {0, 1, 2, 0, 2, 3};
-        DrawList list;
-        list.views.push_back(DrawView{});
-        DrawMesh m;
-        m.mesh = mesh;
-        m.interior.edit().style = InteriorStyle::Solid;
-        DrawItem item;
-        item.primitive = std::move(m);
-        list.items.push_back(std::move(item));
+        const DrawList list = solidMesh(mesh);
         PageSetup page;
         page.paper = {double(kSize), double(kSize)};
         page.nominalPixel = 8.0;  // seams 4 points wide
