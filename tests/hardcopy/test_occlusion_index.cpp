@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 namespace test_occlusion_index {
@@ -117,6 +118,36 @@ TEST_CASE("occlusion index: a facet seen through a hole in what hides its outlin
     CHECK_FALSE(index.hidden(large, margin));
     CHECK_FALSE(hiddenByDefinition(index, large, margin));
     CHECK(index.visibleParts({15, 70, 0.2}, {85, 70, 0.2}).empty());  // its outline is hidden
+}
+
+TEST_CASE("occlusion index: hidden facets keep the full query's answer where hiders nearly meet",
+          "[hardcopy]") {
+    // Two rectangles in front, each of two triangles, leave a slit 8e-9 points wide across the
+    // bottom edge of a facet behind them: 8e-10 of the edge, inside the cover test's 1e-9 slack,
+    // so the full query calls the edge hidden. The centre's hiders cover the edge's left half; the
+    // rest is queried alone and must be judged on the whole edge's parameter as well.
+    auto flat = [](std::vector<glm::dvec2> corners, double depth) {
+        ProjectedFacet f;
+        f.contours = {{}};
+        for (glm::dvec2 c : corners) f.contours[0].push_back(PagePoint(c, depth));
+        return f;
+    };
+    auto rectangle = [&](std::vector<ProjectedFacet>& out, glm::dvec2 lo, glm::dvec2 hi) {
+        out.push_back(flat({lo, {hi.x, lo.y}, hi}, 1.0));
+        out.push_back(flat({lo, hi, {lo.x, hi.y}}, 1.0));
+    };
+    std::vector<ProjectedFacet> facets;
+    rectangle(facets, {-100, -100}, {5, 100});
+    rectangle(facets, {5 + 8e-9, -100}, {100, 100});
+    const ProjectedFacet behind = flat({{0, 0}, {10, 0}, {0, 10}}, 0.0);
+    facets.push_back(behind);
+    const OcclusionIndex index(facets, 1.0);
+    REQUIRE(hiddenByDefinition(index, behind, 0.0));
+    CHECK(index.hidden(behind, 0.0));
+    // A facet with a point off the page is not known to be hidden (and is no trouble to test).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    CHECK_FALSE(index.hidden(flat({{1, 1}, {2, 1}, {nan, 2}}, 0.0), 0.0));
+    CHECK_FALSE(index.hidden(flat({{1, 1}, {2, 1}, {1e300, 2}}, 0.0), 0.0));
 }
 
 }  // namespace test_occlusion_index

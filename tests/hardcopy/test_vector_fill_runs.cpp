@@ -1,6 +1,7 @@
 // Consecutive opaque fills of one colour are written as one path (CairoPainter): the page must
 // show what painting them one by one shows, whatever their orientation and overlaps.
 #include "VectorRaster.h"
+#include "phigs/hardcopy/VectorDescriber.h"
 #include "phigs/hardcopy/VectorWorkstation.h"
 
 #include <catch2/catch.hpp>
@@ -244,49 +245,51 @@ TEST_CASE("vector hardcopy: a star in a run of one colour keeps its even-odd hol
     CHECK(std::abs(int(tip[1]) - int(colour.y * 255.0f + 0.5f)) <= 3);
 }
 
-TEST_CASE("vector hardcopy: the seam of a run's outline runs along every edge, the closing one too",
+TEST_CASE("vector hardcopy: the seam of a run's outline runs along every side, the closing one too",
           "[hardcopy]") {
-    // Two mesh triangles of one colour make a square, painted as one outline with a seam
-    // stroke; a fill closes its outline itself, a stroke only when told. Just outside the middle
-    // of each side, within half a seam, the square's colour shows; a little farther, the background.
+    // Two mesh triangles of one colour make a square, painted as a run: one outline with a seam
+    // stroke. A fill closes its outline itself, a stroke only when told. Just outside the middle of
+    // each side (whichever the outline closes on), within half a seam, the square's colour shows; a
+    // little farther, the background.
     const auto dir = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy";
     std::filesystem::create_directories(dir);
     constexpr std::uint32_t kSize = 200;
     const glm::vec3 colour(0.8f, 0.3f, 0.1f);
-    for (int turn = 0; turn < 4; ++turn) {
-        // The square's corners from a different one each time: each side is the closing one once.
-        std::vector<glm::vec3> corners{
-            {0.3f, 0.3f, 0.5f}, {0.7f, 0.3f, 0.5f}, {0.7f, 0.7f, 0.5f}, {0.3f, 0.7f, 0.5f}};
-        std::rotate(corners.begin(), corners.begin() + turn, corners.end());
-        auto mesh = std::make_shared<MeshData>();
-        mesh->positions = corners;
-        mesh->colours.assign(4, colour);
-        mesh->triangles = {0, 1, 2, 0, 2, 3};
-        const DrawList list = solidMesh(mesh);
-        PageSetup page;
-        page.paper = {double(kSize), double(kSize)};
-        page.nominalPixel = 8.0;  // seams 4 points wide
-        const auto file = dir / ("seamed_square_" + std::to_string(turn) + ".pdf");
-        {
-            VectorWorkstation ws(file, VectorFormat::Pdf, page);
-            ws.update(list);
-        }
-        const Image image = vector_test::rasterisePdf(file, kSize, kSize);
-        // The square covers page points 60..140 each way; pixel (x, y) covers [x, x + 1) points.
-        const int middle = 100;
-        const std::array<std::array<int, 2>, 4> seam{
-            {{middle, 58}, {141, middle}, {middle, 141}, {58, middle}}};
-        const std::array<std::array<int, 2>, 4> beyond{
-            {{middle, 55}, {144, middle}, {middle, 144}, {55, middle}}};
-        for (int side = 0; side < 4; ++side) {
-            INFO("turn " << turn << " side " << side);
-            const std::uint8_t* in = image.pixel(std::uint32_t(seam[side][0]), std::uint32_t(seam[side][1]));
-            const std::uint8_t* out =
-                image.pixel(std::uint32_t(beyond[side][0]), std::uint32_t(beyond[side][1]));
-            for (int c = 0; c < 3; ++c) {
-                CHECK(std::abs(int(in[c]) - int(colour[c] * 255.0f + 0.5f)) <= 3);
-                CHECK(int(out[c]) <= 3);  // the black background
-            }
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = {{0.3f, 0.3f, 0.5f}, {0.7f, 0.3f, 0.5f}, {0.7f, 0.7f, 0.5f}, {0.3f, 0.7f, 0.5f}};
+    mesh->colours.assign(4, colour);
+    mesh->triangles = {0, 1, 2, 0, 2, 3};
+    const DrawList list = solidMesh(mesh);
+    PageSetup page;
+    page.paper = {double(kSize), double(kSize)};
+    page.nominalPixel = 8.0;  // seams 4 points wide
+    // A run: two seamed fills of the colour, one after the other.
+    const VectorPicture picture = describePicture(list, page);
+    REQUIRE(picture.ops.size() == 2);
+    for (const VectorOp& op : picture.ops) {
+        const auto* fill = std::get_if<VectorFill>(&op);
+        REQUIRE(fill);
+        CHECK(fill->colour == colour);
+        CHECK(fill->seamWidth > 0.0);
+    }
+    const auto file = dir / "seamed_square.pdf";
+    {
+        VectorWorkstation ws(file, VectorFormat::Pdf, page);
+        ws.update(list);
+    }
+    const Image image = vector_test::rasterisePdf(file, kSize, kSize);
+    // The square covers page points 60..140 each way; pixel (x, y) covers [x, x + 1) points.
+    const int middle = 100;
+    const std::array<std::array<int, 2>, 4> seam{{{middle, 58}, {141, middle}, {middle, 141}, {58, middle}}};
+    const std::array<std::array<int, 2>, 4> beyond{
+        {{middle, 55}, {144, middle}, {middle, 144}, {55, middle}}};
+    for (int side = 0; side < 4; ++side) {
+        INFO("side " << side);
+        const std::uint8_t* in = image.pixel(std::uint32_t(seam[side][0]), std::uint32_t(seam[side][1]));
+        const std::uint8_t* out = image.pixel(std::uint32_t(beyond[side][0]), std::uint32_t(beyond[side][1]));
+        for (int c = 0; c < 3; ++c) {
+            CHECK(std::abs(int(in[c]) - int(colour[c] * 255.0f + 0.5f)) <= 3);
+            CHECK(int(out[c]) <= 3);  // the black background
         }
     }
 }

@@ -32,6 +32,13 @@ double cross(glm::dvec2 a, glm::dvec2 b) {
     return a.x * b.y - a.y * b.x;
 }
 
+/// The cell of a coordinate among `count` of size `step` from `origin`, clamped in floating point
+/// (a coordinate far off, infinite or NaN gives an end cell, never an out-of-range conversion).
+int cellIndex(double v, double origin, double step, int count) {
+    const double c = std::floor((v - origin) / step);
+    return c >= double(count - 1) ? count - 1 : c >= 0.0 ? int(c) : 0;
+}
+
 /// The parts of [0, 1] outside every interval (sorted by their start), ignoring gaps of 1e-9.
 void openParts(const std::vector<glm::dvec2>& sorted, std::vector<glm::dvec2>& open) {
     open.clear();
@@ -119,10 +126,8 @@ void OcclusionIndex::bin() {
 template <class F>
 void OcclusionIndex::forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const {
     if (cellStart_.empty()) return;
-    const int x0 = std::clamp(int(std::floor((lo.x - lo_.x) / cell_.x)), 0, columns_ - 1);
-    const int x1 = std::clamp(int(std::floor((hi.x - lo_.x) / cell_.x)), 0, columns_ - 1);
-    const int y0 = std::clamp(int(std::floor((lo.y - lo_.y) / cell_.y)), 0, rows_ - 1);
-    const int y1 = std::clamp(int(std::floor((hi.y - lo_.y) / cell_.y)), 0, rows_ - 1);
+    const int x0 = cellIndex(lo.x, lo_.x, cell_.x, columns_), x1 = cellIndex(hi.x, lo_.x, cell_.x, columns_);
+    const int y0 = cellIndex(lo.y, lo_.y, cell_.y, rows_), y1 = cellIndex(hi.y, lo_.y, cell_.y, rows_);
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) f(std::size_t(y) * std::size_t(columns_) + std::size_t(x));
 }
@@ -172,6 +177,24 @@ void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b, std
     std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
 }
 
+void OcclusionIndex::hiddenIntervalsOver(const PagePoint& a, const PagePoint& b, glm::dvec2 part,
+                                         std::vector<glm::dvec2>& hidden,
+                                         std::vector<std::uint32_t>& hiders) const {
+    if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
+    const glm::dvec2 from = glm::dvec2(a) + (glm::dvec2(b) - glm::dvec2(a)) * part.x;
+    const glm::dvec2 to = glm::dvec2(a) + (glm::dvec2(b) - glm::dvec2(a)) * part.y;
+    // Widened by a hair, so that rounding in the part's ends loses no triangle that touches it.
+    const glm::dvec2 hair = 1e-9 * (glm::abs(glm::dvec2(b) - glm::dvec2(a)) + 1.0);
+    forCells(glm::min(from, to) - hair, glm::max(from, to) + hair, [&](std::size_t cell) {
+        for (std::uint32_t i : items(cell)) {
+            if (stamp_[i] == query_) continue;
+            stamp_[i] = query_;
+            glm::dvec2 interval;
+            if (hides(triangles_[i], a, b, interval)) hidden.push_back(interval), hiders.push_back(i);
+        }
+    });
+}
+
 bool OcclusionIndex::coverWhole(std::vector<glm::dvec2>& intervals) {
     std::sort(intervals.begin(), intervals.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
     double from = 0.0;
@@ -198,16 +221,15 @@ bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
         glm::dvec2 interval;
         if (hides(triangles_[hints_[k]], a, b, interval)) scratch_.push_back(interval), hintUsed_[k] = 1;
     }
-    // Only the parts the hints leave open are queried: their boxes meet fewer cells than the
-    // whole segment's. Triangles whose boxes miss a part cannot hide any of it.
+    // Only the triangles over the parts the hints leave open are tested (their boxes meet fewer
+    // cells than the whole segment's), on the whole segment: the intervals and the cover test are
+    // the full query's, less triangles that can hide nothing the hints leave open.
     std::sort(scratch_.begin(), scratch_.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
     openParts(scratch_, gaps_);
     if (gaps_.empty()) return true;
     found_.clear();
-    for (const glm::dvec2& gap : gaps_) {
-        hiddenIntervals(a + (b - a) * gap.x, a + (b - a) * gap.y, scratch_, &found_);
-        if (!coverWhole(scratch_)) return false;
-    }
+    for (const glm::dvec2& gap : gaps_) hiddenIntervalsOver(a, b, gap, scratch_, found_);
+    if (!coverWhole(scratch_)) return false;
     for (std::uint32_t i : found_)
         if (std::find(hints_.begin(), hints_.end(), i) == hints_.end())
             hints_.push_back(i), hintUsed_.push_back(1);
@@ -242,6 +264,8 @@ bool OcclusionIndex::hidden(const ProjectedFacet& facet, double margin) const {
         for (const PagePoint& p : c) centre += p, ++count;
     if (count == 0) return false;
     centre /= double(count);
+    // A facet with a point not on the page (NaN, infinite) is not known to be hidden.
+    if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(centre.z)) return false;
     // The centre must lie behind some triangle. The last facet's hiders are tried first; where
     // one hides the centre they are the hints (they only shorten the edges' queries, so the
     // answer is the same), else the centre's own hiders are, and with none the facet shows.

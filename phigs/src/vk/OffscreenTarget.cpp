@@ -55,13 +55,19 @@ Image OffscreenTarget::readbackPixels() const {
 }
 
 void OffscreenTarget::readbackPixels(Image& into) const {
-    into.width = width_;
-    into.height = height_;
-    into.rgba.resize(std::size_t{width_} * height_ * 4);
+    // The size changes only with the pixels: a failure leaves `into` as it was.
     void* mapped = nullptr;
     check(vkMapMemory(context_.device(), readback_.memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+    try {
+        into.rgba.resize(std::size_t{width_} * height_ * 4);
+    } catch (...) {
+        vkUnmapMemory(context_.device(), readback_.memory);
+        throw;
+    }
     std::memcpy(into.rgba.data(), mapped, into.rgba.size());
     vkUnmapMemory(context_.device(), readback_.memory);
+    into.width = width_;
+    into.height = height_;
 }
 
 }  // namespace phigs::vk
