@@ -39,6 +39,11 @@ int cellIndex(double v, double origin, double step, int count) {
     return c >= double(count - 1) ? count - 1 : c >= 0.0 ? int(c) : 0;
 }
 
+/// Intervals in order of their start.
+void sortByStart(std::vector<glm::dvec2>& intervals) {
+    std::sort(intervals.begin(), intervals.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+}
+
 /// The parts of [0, 1] outside every interval (sorted by their start), ignoring gaps of 1e-9.
 void openParts(const std::vector<glm::dvec2>& sorted, std::vector<glm::dvec2>& open) {
     open.clear();
@@ -158,11 +163,10 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     return true;
 }
 
-void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
-                                     std::vector<std::uint32_t>* hiders) const {
-    hidden.clear();
+void OcclusionIndex::collectHidden(const PagePoint& a, const PagePoint& b, glm::dvec2 lo, glm::dvec2 hi,
+                                   std::vector<glm::dvec2>& hidden,
+                                   std::vector<std::uint32_t>* hiders) const {
     if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
-    const glm::dvec2 lo = glm::min(glm::dvec2(a), glm::dvec2(b)), hi = glm::max(glm::dvec2(a), glm::dvec2(b));
     forCells(lo, hi, [&](std::size_t cell) {
         for (std::uint32_t i : items(cell)) {
             if (stamp_[i] == query_) continue;
@@ -174,35 +178,14 @@ void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b, std
             }
         }
     });
-    std::sort(hidden.begin(), hidden.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
 }
 
-void OcclusionIndex::hiddenIntervalsOver(const PagePoint& a, const PagePoint& b, glm::dvec2 part,
-                                         std::vector<glm::dvec2>& hidden,
-                                         std::vector<std::uint32_t>& hiders) const {
-    if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
-    const glm::dvec2 from = glm::dvec2(a) + (glm::dvec2(b) - glm::dvec2(a)) * part.x;
-    const glm::dvec2 to = glm::dvec2(a) + (glm::dvec2(b) - glm::dvec2(a)) * part.y;
-    // Widened by a hair, so that rounding in the part's ends loses no triangle that touches it.
-    const glm::dvec2 hair = 1e-9 * (glm::abs(glm::dvec2(b) - glm::dvec2(a)) + 1.0);
-    forCells(glm::min(from, to) - hair, glm::max(from, to) + hair, [&](std::size_t cell) {
-        for (std::uint32_t i : items(cell)) {
-            if (stamp_[i] == query_) continue;
-            stamp_[i] = query_;
-            glm::dvec2 interval;
-            if (hides(triangles_[i], a, b, interval)) hidden.push_back(interval), hiders.push_back(i);
-        }
-    });
-}
-
-bool OcclusionIndex::coverWhole(std::vector<glm::dvec2>& intervals) {
-    std::sort(intervals.begin(), intervals.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
-    double from = 0.0;
-    for (const glm::dvec2& h : intervals) {
-        if (h.x > from + 1e-9) return false;
-        from = std::max(from, h.y);
-    }
-    return from >= 1.0 - 1e-9;
+void OcclusionIndex::hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
+                                     std::vector<std::uint32_t>* hiders) const {
+    hidden.clear();
+    collectHidden(a, b, glm::min(glm::dvec2(a), glm::dvec2(b)), glm::max(glm::dvec2(a), glm::dvec2(b)),
+                  hidden, hiders);
+    sortByStart(hidden);
 }
 
 std::vector<glm::dvec2> OcclusionIndex::visibleParts(const PagePoint& a, const PagePoint& b) const {
@@ -224,12 +207,20 @@ bool OcclusionIndex::hiddenWhole(const PagePoint& a, const PagePoint& b) const {
     // Only the triangles over the parts the hints leave open are tested (their boxes meet fewer
     // cells than the whole segment's), on the whole segment: the intervals and the cover test are
     // the full query's, less triangles that can hide nothing the hints leave open.
-    std::sort(scratch_.begin(), scratch_.end(), [](glm::dvec2 p, glm::dvec2 q) { return p.x < q.x; });
+    sortByStart(scratch_);
     openParts(scratch_, gaps_);
     if (gaps_.empty()) return true;
     found_.clear();
-    for (const glm::dvec2& gap : gaps_) hiddenIntervalsOver(a, b, gap, scratch_, found_);
-    if (!coverWhole(scratch_)) return false;
+    const glm::dvec2 from(a), along = glm::dvec2(b) - from;
+    // Each part's box widened by a hair, so that rounding in its ends loses no triangle touching it.
+    const glm::dvec2 hair = 1e-9 * (glm::abs(along) + 1.0);
+    for (const glm::dvec2& gap : gaps_) {
+        const glm::dvec2 p = from + along * gap.x, q = from + along * gap.y;
+        collectHidden(a, b, glm::min(p, q) - hair, glm::max(p, q) + hair, scratch_, &found_);
+    }
+    sortByStart(scratch_);
+    openParts(scratch_, gaps_);
+    if (!gaps_.empty()) return false;
     for (std::uint32_t i : found_)
         if (std::find(hints_.begin(), hints_.end(), i) == hints_.end())
             hints_.push_back(i), hintUsed_.push_back(1);

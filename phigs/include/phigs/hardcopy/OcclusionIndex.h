@@ -54,13 +54,10 @@ private:
     /// that hide some of it are added to `hiders` when given.
     void hiddenIntervals(const PagePoint& a, const PagePoint& b, std::vector<glm::dvec2>& hidden,
                          std::vector<std::uint32_t>* hiders = nullptr) const;
-    /// Appends the intervals (in the whole segment's parameter) of the triangles over the part
-    /// [part.x, part.y] of the segment: those whose boxes meet the part's, the only ones that can
-    /// hide any of it. The triangles are added to `hiders`.
-    void hiddenIntervalsOver(const PagePoint& a, const PagePoint& b, glm::dvec2 part,
-                             std::vector<glm::dvec2>& hidden, std::vector<std::uint32_t>& hiders) const;
-    /// Whether intervals of [0, 1] cover it (sorts them).
-    static bool coverWhole(std::vector<glm::dvec2>& intervals);
+    /// Appends the intervals of the segment hidden by the triangles over the cells the box
+    /// [lo, hi] meets (each triangle tested once), adding those triangles to `hiders` when given.
+    void collectHidden(const PagePoint& a, const PagePoint& b, glm::dvec2 lo, glm::dvec2 hi,
+                       std::vector<glm::dvec2>& hidden, std::vector<std::uint32_t>* hiders) const;
     /// Whether no part of the segment is visible (hidden()'s edges: tries its hints first).
     bool hiddenWhole(const PagePoint& a, const PagePoint& b) const;
     /// Adds the triangles that hide a point.
