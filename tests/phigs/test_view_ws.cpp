@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <limits>
 
 namespace test_view_ws {
 
@@ -149,6 +150,87 @@ TEST_CASE("workstation tables, window, viewport and HLHSR mode with their errors
     CHECK(list.windowMax == glm::dvec3(0.5, 0.5, 1));
     CHECK(list.viewportMax == glm::dvec3(100, 100, 1));
     CHECK(list.background == glm::vec3(0.2f));
+}
+
+TEST_CASE("NaN and infinite reals in the workstation's tables are refused, the tables unchanged",
+          "[ws][errors][bad-input]") {
+    Phigs phigs;
+    phigs.open();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    const double nan = std::numeric_limits<double>::quiet_NaN(),
+                 inf = std::numeric_limits<double>::infinity();
+    const WorkstationTables before = ws.tables();
+    // Every bound of the window and viewport, NaN: its own error, as a reversed pair is.
+    for (int i = 0; i < 6; ++i) {
+        glm::dvec3 lo(0.0), hi(1.0), vlo(0.0), vhi(100.0, 100.0, 1.0);
+        (i < 3 ? lo : hi)[i % 3] = nan;
+        (i < 3 ? vlo : vhi)[i % 3] = nan;
+        INFO("bound " << i);
+        CHECK(errorOf([&] { ws.setWorkstationWindow(lo, hi); }) == errors::InvalidWindow);
+        CHECK(errorOf([&] { ws.setWorkstationViewport(vlo, vhi); }) == errors::InvalidViewport);
+    }
+    CHECK(errorOf([&] {
+              ws.setWorkstationWindow({0, 0, 0}, {inf, 1, 1});
+          }) == errors::WorkstationWindowOutsideNpc);
+    // Views: NaN clip limits are 153, a NaN or infinite matrix entry -208.
+    for (int i = 0; i < 6; ++i) {
+        ViewRepresentation v;
+        (i < 3 ? v.clipMin : v.clipMax)[i % 3] = nan;
+        CHECK(errorOf([&] { ws.setViewRepresentation(1, v); }) == errors::InvalidClipLimits);
+    }
+    for (int entry = 0; entry < 32; ++entry) {
+        ViewRepresentation v;
+        (entry < 16 ? v.orientation : v.mapping)[entry % 4][(entry / 4) % 4] = entry % 2 ? nan : -inf;
+        CHECK(errorOf([&] { ws.setViewRepresentation(1, v); }) == errors::NonFiniteValue);
+    }
+    // Bundles: widths, scales, spacings, area properties, approximation values.
+    PolylineBundle line;
+    line.width = nan;
+    CHECK(errorOf([&] { ws.setPolylineRepresentation(2, line); }) == errors::NonFiniteValue);
+    line = {};
+    line.approximation.valueU = inf;
+    CHECK(errorOf([&] { ws.setPolylineRepresentation(2, line); }) == errors::NonFiniteValue);
+    PolymarkerBundle marker;
+    marker.scale = nan;
+    CHECK(errorOf([&] { ws.setPolymarkerRepresentation(2, marker); }) == errors::NonFiniteValue);
+    TextBundle text;
+    text.spacing = nan;
+    CHECK(errorOf([&] { ws.setTextRepresentation(2, text); }) == errors::NonFiniteValue);
+    EdgeBundle edge;
+    edge.width = inf;
+    CHECK(errorOf([&] { ws.setEdgeRepresentation(2, edge); }) == errors::NonFiniteValue);
+    InteriorBundle interior;
+    interior.backProperties.specularExponent = nan;
+    CHECK(errorOf([&] { ws.setInteriorRepresentation(2, interior); }) == errors::NonFiniteValue);
+    // Lights and depth cues: a NaN colour component is 136, any other NaN real -208.
+    Light light;
+    light.colour = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+    CHECK(errorOf([&] { ws.setLightSourceRepresentation(1, light); }) == errors::BadDirectColour);
+    light = {};
+    light.direction.y = nan;
+    CHECK(errorOf([&] { ws.setLightSourceRepresentation(1, light); }) == errors::NonFiniteValue);
+    light = {};
+    light.spreadAngle = std::numeric_limits<float>::infinity();
+    CHECK(errorOf([&] { ws.setLightSourceRepresentation(1, light); }) == errors::NonFiniteValue);
+    DepthCue cue;
+    cue.backPlane = nan;
+    CHECK(errorOf([&] { ws.setDepthCueRepresentation(1, cue); }) == errors::NonFiniteValue);
+    cue = {};
+    CHECK(errorOf([&] {
+              ws.setDepthCueRepresentation(1, cue, Colour::fromRgb({0.0, nan, 0.0}));
+          }) == errors::BadDirectColour);
+    // Nothing refused reached a table.
+    CHECK(ws.tables().windowMin == before.windowMin);
+    CHECK(ws.tables().windowMax == before.windowMax);
+    CHECK(ws.tables().viewportMin == before.viewportMin);
+    CHECK(ws.tables().viewportMax == before.viewportMax);
+    CHECK(ws.tables().views.definedIndices() == before.views.definedIndices());
+    CHECK(ws.tables().polylines.definedIndices() == before.polylines.definedIndices());
+    CHECK(ws.tables().lights == before.lights);
+    CHECK(ws.tables().depthCues == before.depthCues);
+    // A finite entry still goes in.
+    ws.setWorkstationWindow({0, 0, 0}, {0.5, 0.5, 1});
+    CHECK(ws.tables().windowMax == glm::dvec3(0.5, 0.5, 1));
 }
 
 TEST_CASE("a window's display surface follows its drawable; the whole-surface viewport with it", "[ws]") {

@@ -1112,8 +1112,8 @@ void pset_ws_win3(Pint ws_id, const Plimit3* ws_win_lim);
 void pset_ws_win(Pint ws_id, const Plimit* ws_win_lim);
 void pset_ws_vp3(Pint ws_id, const Plimit3* ws_vp_lim);
 void pset_ws_vp(Pint ws_id, const Plimit* ws_vp_lim);
-/* SET VIEW REPRESENTATION: index >= 1 (115), table size 32 (150); the 2D form clips z to
- * [0, 1] with front and back clipping off. */
+/* SET VIEW REPRESENTATION: index >= 1 (115), table size 32 (150), NaN clip limits 153, a NaN
+ * or infinite matrix entry -208; the 2D form clips z to [0, 1] with front and back clipping off. */
 void pset_view_rep3(Pint ws_id, Pint view_ind, const Pview_rep3* view_rep);
 void pset_view_rep(Pint ws_id, Pint view_ind, const Pview_rep* view_rep);
 
@@ -1969,7 +1969,8 @@ typedef struct {
     Pgcolr colr;
 } Pdcue_bundle;
 /* Light sources: index >= 1 (100), table full 103, type outside 1..4 (2202). Depth cue: index
- * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. PINQ_SET answers the
+ * >= 1 (100; index 0 is the predefined suppressed entry), table full 103. A NaN or infinite
+ * direct colour component is 136, any other NaN or infinite real -208. PINQ_SET answers the
  * values set (colours as given: PINDIRECT with the index, drawn through the colour table as it is
  * when drawn, or direct in their model; a colour type outside PINDIRECT .. PMODEL_HLS is 2202, an
  * index below 0 is 113); PINQ_REALIZED what is drawn: colours as PMODEL_RGB clamped to [0, 1],

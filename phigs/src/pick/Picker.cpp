@@ -30,6 +30,23 @@ Projected project(const glm::dmat4& m, const glm::dvec3& p) {
 }
 
 /// Whether a world point lies inside the item's model clipping volume (every half space).
+/// True where `toNpc` and its inverse `fromNpc` can carry the pick line back into the surface's
+/// own coordinates: the inverse is finite and the pair well conditioned. A modelling transform
+/// that flattens (a scale of 0, or of 1e-300) makes that line a plane or an overflow; such a
+/// surface is picked by its tessellation, as drawn.
+bool lineMapsBack(const glm::dmat4& toNpc, const glm::dmat4& fromNpc) {
+    double to = 0.0, from = 0.0;  // row-sum norms
+    for (int r = 0; r < 4; ++r) {
+        double a = 0.0, b = 0.0;
+        for (int c = 0; c < 4; ++c) {
+            if (!std::isfinite(fromNpc[c][r])) return false;
+            a += std::abs(toNpc[c][r]), b += std::abs(fromNpc[c][r]);
+        }
+        to = std::max(to, a), from = std::max(from, b);
+    }
+    return to * from <= 1e10;
+}
+
 bool insideModelClip(const DrawItem& item, const glm::dvec3& world) {
     for (const glm::dvec4& plane : item.modelClipPlanes())
         if (glm::dot(glm::dvec3(plane), world) + plane.w < 0.0) return false;
@@ -383,6 +400,9 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
     if (front.w == 0.0 || back.w == 0.0) return std::nullopt;
     const glm::dvec3 origin = glm::dvec3(front) / front.w;
     const glm::dvec3 direction = glm::dvec3(back) / back.w - origin;
+    const double span = glm::dot(direction, direction);
+    if (!std::isfinite(glm::dot(origin, origin)) || !std::isfinite(span) || !(span > 0.0))
+        return std::nullopt;
     // The surface lies in its control net's box: a line that misses the box misses the surface.
     if (bounds && bounds->surfaceLo.x <= bounds->surfaceHi.x &&
         !lineMeetsBox(origin, direction, bounds->surfaceLo, bounds->surfaceHi))
@@ -474,11 +494,11 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 // (HOLLOW sides, edges) and iso-lines by the tessellation. An exact hit keeps its
                 // (u, v): a nearer outline or iso-line only brings the hit's depth forward.
                 const MeshSides sides(*p.interior, p.edges->visible, p.surface != nullptr);
-                const bool exact = p.surface && surfaceTest == SurfaceTest::Exact;
+                const glm::dmat4 fromNpc = p.surface ? (bounds ? bounds->fromNpc : glm::inverse(m)) : m;
+                const bool exact = p.surface && surfaceTest == SurfaceTest::Exact && lineMapsBack(m, fromNpc);
                 const bool lines = sides.anyOutline() || (p.mesh && !p.mesh->isoLines.empty());
                 if (exact) {
-                    hit = testSurface(item, view, p.surface, *p.interior, npc, m,
-                                      bounds ? bounds->fromNpc : glm::inverse(m), bounds);
+                    hit = testSurface(item, view, p.surface, *p.interior, npc, m, fromNpc, bounds);
                     if (!lines) return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {
@@ -533,6 +553,7 @@ std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double a
 std::vector<PickHit> Picker::hits(const DrawList& list, const WorkstationMapping& mapping, glm::dvec2 npc,
                                   double aperture) const {
     std::vector<PickHit> out;
+    if (!std::isfinite(npc.x) || !std::isfinite(npc.y) || !(aperture >= 0.0)) return out;
     // The workstation window clips everything.
     if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
         npc.y > list.windowMax.y)
@@ -579,6 +600,7 @@ std::optional<PickHit> Picker::nearest(const DrawList& list, const WorkstationMa
 
 std::optional<PickHit> Picker::nearestAccelerated(const DrawList& list, const WorkstationMapping& mapping,
                                                   glm::dvec2 npc, double aperture) const {
+    if (!std::isfinite(npc.x) || !std::isfinite(npc.y) || !(aperture >= 0.0)) return std::nullopt;
     if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
         npc.y > list.windowMax.y)
         return std::nullopt;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace phigs::detail {
 
@@ -227,10 +228,16 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
                                             : SharedIndexList(cells());
     mesh.trianglesPerFacet = 2;  // trimming keeps or drops whole cells
     if (characteristics.style == 3) {
-        // Iso-curves through grid rows and columns nearest to evenly spaced parameters.
+        // Iso-curves through grid rows and columns nearest to evenly spaced parameters, each row
+        // once. From 2 * along curves on, every row is one (the parameters lie under half a row
+        // apart, the first within half a row of row 0): a larger count draws the same lines.
         auto lines = [&](int count, std::uint32_t along, bool constantU) {
+            count = static_cast<int>(std::min<std::int64_t>(count, 2 * std::int64_t{along}));
+            std::int64_t previous = -1;
             for (int c = 0; c < count; ++c) {
                 auto k = static_cast<std::uint32_t>(std::lround((along - 1) * (c + 1.0) / (count + 1.0)));
+                if (k == previous) continue;
+                previous = k;
                 std::vector<std::uint32_t> line;
                 for (std::uint32_t t = 0; t < (constantU ? nv : nu); ++t)
                     line.push_back(constantU ? at(k, t) : at(t, k));

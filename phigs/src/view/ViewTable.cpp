@@ -1,6 +1,7 @@
 #include "phigs/view/ViewTable.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phigs {
 
@@ -12,12 +13,18 @@ void ViewTable::set(int index, const ViewRepresentation& view, ErrorLog* log) {
     if (index < 1) raise(log, errors::ViewIndexBelowOne, function, "view index " + std::to_string(index));
     if (index >= capacity_)
         raise(log, errors::ViewTableFull, function, "view index " + std::to_string(index));
+    // Written so that a NaN fails them too.
     for (int i = 0; i < 3; ++i) {
-        if (view.clipMin[i] > view.clipMax[i] || (i < 2 && view.clipMin[i] == view.clipMax[i]))
+        if (!(view.clipMin[i] <= view.clipMax[i]) || (i < 2 && view.clipMin[i] == view.clipMax[i]))
             raise(log, errors::InvalidClipLimits, function);
-        if (view.clipMin[i] < 0.0 || view.clipMax[i] > 1.0)
+        if (!(view.clipMin[i] >= 0.0) || !(view.clipMax[i] <= 1.0))
             raise(log, errors::ClipLimitsOutsideNpc, function);
     }
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(view.orientation[c][r]) || !std::isfinite(view.mapping[c][r]))
+                raise(log, errors::NonFiniteValue, function,
+                      "a view orientation or mapping entry is not finite");
     auto slot = static_cast<std::size_t>(index);
     if (views_.size() <= slot) {
         views_.resize(slot + 1);

@@ -274,6 +274,24 @@ void Workstation::setColourRepresentation(int index, const glm::dvec3& component
 
 namespace {
 
+/// Error -208 naming `what` unless every value is finite (a NaN passes every ordered comparison
+/// the standard's checks make, and an infinity reaches the transforms).
+void checkFinite(std::initializer_list<double> values, ErrorLog* log, const char* function,
+                 const char* what) {
+    for (double v : values)
+        if (!std::isfinite(v))
+            raise(log, errors::NonFiniteValue, function, std::string(what) + " is not finite");
+}
+
+/// Error 136 for a direct colour with a component that is NaN or infinite (a range it may leave:
+/// light and depth cue colours are clamped when drawn).
+void checkFiniteColour(const Colour& colour, ErrorLog* log, const char* function) {
+    if (colour.direct)
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(colour.rgb[i]))
+                raise(log, errors::BadDirectColour, function, "direct colour component " + std::to_string(i));
+}
+
 void checkLineType(LineType t, ErrorLog* log, const char* function, int error = errors::BadLineType) {
     if (static_cast<int>(t) < 1 || static_cast<int>(t) > 4)
         raise(log, error, function, "type " + std::to_string(static_cast<int>(t)));
@@ -304,6 +322,8 @@ void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bun
     const char* function = "SET POLYLINE REPRESENTATION";
     checkBundle(tables_.polylines, index, {bundle.colour}, function);
     checkLineType(bundle.type, log_, function);
+    checkFinite({bundle.width, bundle.approximation.valueU, bundle.approximation.valueV}, log_, function,
+                "the width or approximation value");
     checkAvailable(description_.polylineShadingMethods, static_cast<int>(bundle.shading),
                    errors::PolylineShadingNotAvailable, function);
     tables_.polylines.set(index, bundle, log_, function);
@@ -315,6 +335,7 @@ void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle&
     checkBundle(tables_.polymarkers, index, {bundle.colour}, function);
     if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > description_.markerTypes)
         raise(log_, errors::BadMarkerType, function, "type " + std::to_string(static_cast<int>(bundle.type)));
+    checkFinite({bundle.scale}, log_, function, "the marker size scale factor");
     tables_.polymarkers.set(index, bundle, log_, function);
     changed();
 }
@@ -326,6 +347,7 @@ void Workstation::setTextRepresentation(int index, const TextBundle& bundle) {
         bundle.precision > 2)
         raise(log_, errors::TextFontNotAvailable, function,
               "font " + std::to_string(bundle.font) + " precision " + std::to_string(bundle.precision));
+    checkFinite({bundle.expansion, bundle.spacing}, log_, function, "the expansion factor or spacing");
     tables_.texts.set(index, bundle, log_, function);
     changed();
 }
@@ -349,6 +371,11 @@ void Workstation::setInteriorRepresentation(int index, const InteriorBundle& bun
     for (ReflectanceModel reflectance : {bundle.reflectance, bundle.backReflectance})
         checkAvailable(description_.reflectanceEquations, static_cast<int>(reflectance),
                        errors::ReflectanceNotAvailable, function);
+    for (const AreaPropertiesAttribute& p : {bundle.properties, bundle.backProperties})
+        checkFinite({p.ambient, p.diffuse, p.specular, p.specularExponent, p.transparency}, log_, function,
+                    "an area property");
+    checkFinite({bundle.approximation.valueU, bundle.approximation.valueV}, log_, function,
+                "the approximation value");
     tables_.interiors.set(index, bundle, log_, function);
     changed();
 }
@@ -357,6 +384,7 @@ void Workstation::setEdgeRepresentation(int index, const EdgeBundle& bundle) {
     const char* function = "SET EDGE REPRESENTATION";
     checkBundle(tables_.edges, index, {bundle.colour}, function);
     checkLineType(bundle.type, log_, function, errors::EdgeTypeNotAvailable);
+    checkFinite({bundle.width}, log_, function, "the edge width scale factor");
     tables_.edges.set(index, bundle, log_, function);
     changed();
 }
@@ -392,6 +420,11 @@ void Workstation::setLightSourceRepresentation(int index, const Light& light, co
     if (!tables_.lights.contains(index) &&
         static_cast<int>(tables_.lights.size()) >= description_.lightTableSize)
         raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
+    checkFiniteColour(colour, log_, function);
+    checkFinite(
+        {light.position.x, light.position.y, light.position.z, light.direction.x, light.direction.y,
+         light.direction.z, light.attenuation.x, light.attenuation.y, light.concentration, light.spreadAngle},
+        log_, function, "a light source position, direction, coefficient or angle");
     Light kept = light;
     kept.colour = generalColourRgb(colour, function);
     tables_.lights[index] = kept;
@@ -409,6 +442,9 @@ void Workstation::setDepthCueRepresentation(int index, const DepthCue& cue, cons
     if (!tables_.depthCues.contains(index) &&
         static_cast<int>(tables_.depthCues.size()) >= description_.depthCueTableSize)
         raise(log_, errors::BundleTableFull, function, "index " + std::to_string(index));
+    checkFiniteColour(colour, log_, function);
+    checkFinite({cue.frontPlane, cue.backPlane, cue.frontScale, cue.backScale}, log_, function,
+                "a depth cue reference plane or scale factor");
     DepthCue kept = cue;
     kept.colour = generalColourRgb(colour, function);
     tables_.depthCues[index] = kept;
@@ -444,9 +480,11 @@ void Workstation::setHlhsrMode(int mode) {
 
 void Workstation::setWorkstationWindow(const glm::dvec3& min, const glm::dvec3& max) {
     const char* function = "SET WORKSTATION WINDOW 3";
-    if (min.x >= max.x || min.y >= max.y || min.z > max.z) raise(log_, errors::InvalidWindow, function);
+    // Written so that a NaN fails them too.
+    if (!(min.x < max.x) || !(min.y < max.y) || !(min.z <= max.z))
+        raise(log_, errors::InvalidWindow, function);
     for (int i = 0; i < 3; ++i)
-        if (min[i] < 0.0 || max[i] > 1.0) raise(log_, errors::WorkstationWindowOutsideNpc, function);
+        if (!(min[i] >= 0.0) || !(max[i] <= 1.0)) raise(log_, errors::WorkstationWindowOutsideNpc, function);
     tables_.windowMin = min;
     tables_.windowMax = max;
     changed();
@@ -454,10 +492,12 @@ void Workstation::setWorkstationWindow(const glm::dvec3& min, const glm::dvec3& 
 
 void Workstation::setWorkstationViewport(const glm::dvec3& min, const glm::dvec3& max) {
     const char* function = "SET WORKSTATION VIEWPORT 3";
-    if (min.x >= max.x || min.y >= max.y || min.z > max.z) raise(log_, errors::InvalidViewport, function);
+    // Written so that a NaN fails them too.
+    if (!(min.x < max.x) || !(min.y < max.y) || !(min.z <= max.z))
+        raise(log_, errors::InvalidViewport, function);
     glm::dvec3 limit{description_.displaySize.x, description_.displaySize.y, 1.0};
     for (int i = 0; i < 3; ++i)
-        if (min[i] < 0.0 || max[i] > limit[i])
+        if (!(min[i] >= 0.0) || !(max[i] <= limit[i]))
             raise(log_, errors::WorkstationViewportOutsideDisplay, function);
     tables_.viewportMin = min;
     tables_.viewportMax = max;

@@ -108,6 +108,7 @@ inline constexpr int StructureCycle = -201;        ///< execute structure would 
 inline constexpr int InvalidElementData = -202;    ///< element contents break the primitive's rules
 inline constexpr int NetworkTooDeep = -203;        ///< more nested executes than kMaxNetworkDepth
 inline constexpr int BadColourMappingData = -207;  ///< a colour mapping data record breaks its method's rules
+inline constexpr int NonFiniteValue = -208;  ///< a real in a representation or view matrix is NaN or infinite
 }  // namespace errors
 
 }  // namespace phigs

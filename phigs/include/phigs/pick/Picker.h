@@ -52,7 +52,10 @@ public:
     /// the exact line through `npc`, their EMPTY sides too (PHIGS keeps an EMPTY interior
     /// detectable: a wireframe picks points inside patches), with (u, v); outlines and iso-lines
     /// by the tessellation. Tessellations count only when nothing is hit at all exactly (the
-    /// aperture catching a silhouette), without surface detail.
+    /// aperture catching a silhouette), without surface detail. A surface whose modelling
+    /// transform flattens it (singular, or too ill-conditioned to carry the line back) is hit by
+    /// its tessellation, as a mesh. A NaN or infinite `npc`, or an aperture that is NaN or
+    /// negative, hits nothing.
     /// Marker sizes (in pixels) are measured on a surface whose pixels are device coordinates.
     std::vector<PickHit> hits(const DrawList& list, glm::dvec2 npc, double aperture) const;
     /// The same on the surface `mapping` describes.

@@ -24,7 +24,8 @@ public:
     explicit ViewTable(int capacity = 32);
 
     int capacity() const { return capacity_; }
-    /// SET VIEW REPRESENTATION 3: errors 115 (index < 1), 150 (beyond capacity), 153, 154.
+    /// SET VIEW REPRESENTATION 3: errors 115 (index < 1), 150 (beyond capacity), 153, 154 (NaN
+    /// clip limits too), -208 (a matrix entry NaN or infinite).
     void set(int index, const ViewRepresentation& view, ErrorLog* log);
     /// The entry, or entry 0 when `index` is not defined (as traversal must use it).
     const ViewRepresentation& get(int index) const;

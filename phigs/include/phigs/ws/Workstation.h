@@ -107,7 +107,8 @@ public:
     std::uint64_t contentStamp() const;
 
     // ---- tables (each change counts as a change of the picture). A bundle's colours are general
-    // colours (PHIGS PLUS); errors 100, 103, 113, 136, then the entries' own (104 .. 124).
+    // colours (PHIGS PLUS); errors 100, 103, 113, 136, then the entries' own (104 .. 124), and -208
+    // for a width, scale, spacing, area property or approximation value that is NaN or infinite.
     /// SET COLOUR REPRESENTATION: `components` in the workstation's colour model (colourModel()).
     void setColourRepresentation(int index, const glm::dvec3& components);
     void setPolylineRepresentation(int index, const PolylineBundle& bundle);
@@ -128,7 +129,9 @@ public:
     void setLightSourceRepresentation(int index, const Light& light);
     /// SET LIGHT SOURCE REPRESENTATION with a general colour (an index, drawn through the colour
     /// table as it is when drawn, or direct in its model), kept as given for PINQ_SET; 113 for an
-    /// index below 0, 110 for a direct colour of no model.
+    /// index below 0, 110 for a direct colour of no model, 136 for a NaN or infinite component,
+    /// -208 for a NaN or infinite position, direction, coefficient or angle (depth cue: plane or
+    /// scale factor).
     void setLightSourceRepresentation(int index, const Light& light, const Colour& colour);
     void setDepthCueRepresentation(int index, const DepthCue& cue);
     /// SET DEPTH CUE REPRESENTATION with a general colour, as setLightSourceRepresentation.
@@ -138,7 +141,8 @@ public:
     void setColourMappingRepresentation(int index, const ColourMapping& mapping);
     /// SET HLHSR MODE: 0 none, 1 z-buffer (error 111 for others).
     void setHlhsrMode(int mode);
-    /// SET WORKSTATION WINDOW 3 (NPC; errors 151, 156) and VIEWPORT 3 (device coordinates; 152, 157).
+    /// SET WORKSTATION WINDOW 3 (NPC; errors 151, 156) and VIEWPORT 3 (device coordinates; 152, 157);
+    /// a NaN bound is 151 / 152.
     void setWorkstationWindow(const glm::dvec3& min, const glm::dvec3& max);
     void setWorkstationViewport(const glm::dvec3& min, const glm::dvec3& max);
     /// The display surface follows the drawable of a target that can change size (a window

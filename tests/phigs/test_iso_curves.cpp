@@ -1,0 +1,77 @@
+// Iso-parametric curves of a surface (SET PARAMETRIC SURFACE CHARACTERISTICS, style 3): over
+// random surfaces and counts, each curve runs along a row or column of the tessellation grid,
+// no row is drawn twice, a count below the rows gives that many curves, and a count beyond them
+// (up to INT_MAX, accepted at insert) gives every row once, in bounded time and memory.
+
+#include "RandomElements.h"
+
+#include "phigs/Phigs.h"
+
+#include <catch2/catch.hpp>
+
+#include <climits>
+#include <set>
+#include <vector>
+
+namespace test_iso_curves {
+
+using namespace phigs;
+
+namespace {
+
+/// The iso-lines (grid index lists) of one surface drawn with `curvesU` iso-curves of constant u
+/// and none of constant v, and the number of grid positions.
+std::vector<std::vector<std::uint32_t>> isoLinesOf(const geom::Surface& surface, int curvesU,
+                                                   std::size_t& positions) {
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    store.insert(SurfaceCharacteristicsAttribute{3, 0, curvesU, 0});
+    store.insert(NurbsSurfaceElement{surface, {}});
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    ws.postStructure(1, 0.5);
+    const DrawList& list = ws.display();
+    REQUIRE(list.items.size() == 1);
+    const auto* mesh = primitiveIf<DrawMesh>(list.items[0].primitive);
+    REQUIRE(mesh);
+    REQUIRE(mesh->mesh);
+    positions = mesh->mesh->positions.size();
+    return {mesh->mesh->isoLines.begin(), mesh->mesh->isoLines.end()};
+}
+
+}  // namespace
+
+TEST_CASE("iso-curves: one per row at most, every row once for any larger count",
+          "[traverse][iso][bad-input]") {
+    std::mt19937 rng(31);
+    for (int trial = 0; trial < 40; ++trial) {
+        const geom::Surface surface = phigs::testing::randomSurface(rng);
+        // Every curve of constant u runs along the grid's other direction: nv positions; the
+        // untrimmed grid is nu x nv.
+        std::size_t positions = 0;
+        const auto every = isoLinesOf(surface, INT_MAX, positions);
+        REQUIRE_FALSE(every.empty());
+        const std::size_t nv = every.front().size(), nu = positions / nv;
+        INFO("trial " << trial << ": grid " << nu << " x " << nv);
+        REQUIRE(nu * nv == positions);
+        CHECK(every.size() == nu);
+        for (int count :
+             {0, 1, 2, 3, int(nu) - 2, int(nu) - 1, int(nu), int(2 * nu), int(2 * nu) + 1, 100000}) {
+            if (count < 0) continue;
+            const auto lines = isoLinesOf(surface, count, positions);
+            INFO("count " << count);
+            const std::set<std::vector<std::uint32_t>> distinct(lines.begin(), lines.end());
+            CHECK(distinct.size() == lines.size());  // no row twice
+            for (const auto& line : lines) CHECK(line.size() == nv);
+            // Curves at least a row apart are all distinct rows; no more rows can be drawn than
+            // there are, and from 2 x rows on every row is.
+            if (count <= int(nu) - 2) CHECK(lines.size() == std::size_t(count));
+            CHECK(lines.size() <= nu);
+            if (count >= int(2 * nu)) CHECK(lines.size() == nu);
+        }
+    }
+}
+
+}  // namespace test_iso_curves
