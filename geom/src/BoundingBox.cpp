@@ -58,10 +58,12 @@ BoundingBox boundingBox(std::span<const glm::dvec3> points) {
 }
 
 BoundingBox boundingBox(const Curve& curve) {
+    validate(curve, "boundingBox");
     return boundingBox(std::span<const glm::dvec3>(curve.points));
 }
 
 BoundingBox boundingBox(const Surface& surface) {
+    validate(surface, "boundingBox");
     return boundingBox(std::span<const glm::dvec3>(surface.points));
 }
 

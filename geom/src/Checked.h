@@ -1,13 +1,16 @@
 #pragma once
 
 #include "geom/Curve.h"
+#include "geom/GeometryError.h"
 #include "geom/Surface.h"
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 // Private to geom: the checks a per-point entry (evaluate, derivatives, normal, curvature) makes
@@ -72,6 +75,15 @@ inline void checkSpan(std::span<const double> knots, std::size_t span, int degre
 /// All three coordinates finite.
 inline bool finite(const glm::dvec3& value) {
     return std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z);
+}
+
+/// A closest-point query must be finite, and no farther out than 1e150: beyond it squared
+/// distances overflow, and the answer would be wrong without a sign.
+inline void checkQueryPoint(const glm::dvec3& p, const char* where) {
+    if (!finite(p)) throw GeometryError(std::string(where) + ": the query point has a non-finite coordinate");
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > 1e150)
+        throw GeometryError(std::string(where) +
+                            ": the query point lies beyond 1e150, where squared distances overflow");
 }
 
 /// Throws when a computed point or vector is not finite: the data it came from is not (a point

@@ -27,8 +27,13 @@ struct Segment {
     int depth = 0;
 };
 
-/// Segments are halved at most this often: below it a Newton basin is smaller than a segment.
+/// Segments are halved at most this often (1/1024 of a piece, where no bound settles them):
+/// below it a Newton basin is smaller than a segment. Weights spanning decades can squeeze much
+/// of a piece's shape into a tiny end of its parameters; there a segment still larger than
+/// kLargeSegment of the curve goes on being halved, down to kHardDepth.
 constexpr int kMaxSegmentDepth = 10;
+constexpr int kHardDepth = 40;
+constexpr double kLargeSegment = 1e-3;
 
 }  // namespace
 
@@ -107,7 +112,7 @@ CurvePoint CurveProjector::polishIn(std::size_t index, const glm::dvec3& p, doub
 }
 
 CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const {
-    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    detail::checkQueryPoint(p, "closestPoint");
     if (!std::isfinite(u)) throw GeometryError("closestPoint: the start guess is not finite");
     u = std::clamp(u, pieces_.front().start, pieces_.back().end);
     auto it = std::upper_bound(pieces_.begin(), pieces_.end(), u,
@@ -132,8 +137,16 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
     return best;
 }
 
+bool CurveProjector::mayHalve(int depth, const std::vector<glm::dvec3>& polygon) const {
+    if (depth < kMaxSegmentDepth) return true;
+    if (depth >= kHardDepth) return false;
+    BoundingBox box;
+    for (const glm::dvec3& q : polygon) box.add(q);
+    return box.diagonal() > kLargeSegment * scale_;
+}
+
 CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
-    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    detail::checkQueryPoint(p, "closestPoint");
     const std::size_t n = static_cast<std::size_t>(degree_) + 1;
     thread_local std::vector<Segment> segments;
     thread_local std::vector<glm::dvec4> pool, work;
@@ -206,7 +219,7 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
             take(polishOnPiece(segment.piece, p, start), segment.piece);
             if (segment.depth == 0) take(polishOnPiece(segment.piece, p, 0.5 * (ua + ub)), segment.piece);
         }
-        if (segment.depth < kMaxSegmentDepth && bound < best.distance - tolerance) split(segment);
+        if (bound < best.distance - tolerance && mayHalve(segment.depth, points)) split(segment);
     }
     return best;
 }

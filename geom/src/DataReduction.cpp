@@ -81,9 +81,13 @@ void checkOptions(const ReductionOptions& o, const char* where) {
         throw GeometryError(w + ": rounds must be at least 1 and lawsonSteps non-negative");
     if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
     if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
-    if (o.samplesPerSpan < 1) throw GeometryError(w + ": samplesPerSpan must be at least 1");
+    if (o.samplesPerSpan < 1 || o.samplesPerSpan > 4096)
+        throw GeometryError(w + ": samplesPerSpan must be from 1 to 4096");
     if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
-    if (o.freeKnotIterations < 1) throw GeometryError(w + ": freeKnotIterations must be at least 1");
+    if (o.freeKnotIterations < 1 || o.freeKnotIterations > 1000)
+        throw GeometryError(w + ": freeKnotIterations must be from 1 to 1000");
+    if (o.rounds > 1000 || o.lawsonSteps > 1000)
+        throw GeometryError(w + ": rounds and lawsonSteps must be at most 1000");
 }
 
 // refitToOriginal with the degree fixed at compile time where P > 0 (the loops over a row's p+1

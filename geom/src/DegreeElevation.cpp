@@ -1,6 +1,5 @@
 #include "geom/DegreeElevation.h"
 
-#include "DenseLu.h"
 #include "geom/Basis.h"
 #include "geom/ControlNet.h"
 #include "geom/GeometryError.h"
@@ -41,20 +40,45 @@ void clampNet(int degree, std::vector<double>& knots, ControlNet& net) {
     }
 }
 
-/// Solves A X = B in place; A is n x n, B is n rows of m doubles, solved one column at a time.
-void solveDense(std::vector<double>& A, std::vector<double>& B, std::size_t n, std::size_t m) {
-    const detail::DenseLu lu(std::move(A), n, 0.0);
-    if (lu.singular()) throw GeometryError("elevateDegree: the collocation system is singular");
-    std::vector<double> column(n);
-    for (std::size_t j = 0; j < m; ++j) {
-        for (std::size_t i = 0; i < n; ++i) column[i] = B[i * m + j];
-        column = lu.solve(std::move(column));
-        for (std::size_t i = 0; i < n; ++i) B[i * m + j] = column[i];
+/// The highest degree elevateDegree makes: beyond it the Bernstein and B-spline arithmetic loses
+/// the digits a shape needs (and a count near INT_MAX overflows).
+constexpr int kMaxElevatedDegree = 64;
+
+/// Solves A X = B in place for A of band w (a(i, j) = 0 for |i - j| > w), held as n rows of
+/// 2w + 1 (column j of row i at j - i + w); B is n rows of m doubles. Gaussian elimination without
+/// pivoting: a B-spline collocation matrix at points meeting the Schoenberg-Whitney condition is
+/// totally positive, for which that is stable (de Boor and Pinkus, 1977); fill-in stays in the
+/// band. O(n w^2) where a dense solve was O(n^3).
+void solveBanded(std::vector<double>& A, std::vector<double>& B, std::size_t n, std::size_t w,
+                 std::size_t m) {
+    const std::size_t width = 2 * w + 1;
+    auto a = [&](std::size_t i, std::size_t j) -> double& { return A[i * width + j + w - i]; };
+    for (std::size_t k = 0; k < n; ++k) {
+        const double pivot = a(k, k);
+        double scale = 0.0;
+        for (std::size_t j = k; j < std::min(n, k + w + 1); ++j) scale = std::max(scale, std::abs(a(k, j)));
+        if (!(std::abs(pivot) > 1e-14 * scale))
+            throw GeometryError("elevateDegree: the collocation system is singular");
+        for (std::size_t i = k + 1; i < std::min(n, k + w + 1); ++i) {
+            const double l = a(i, k) / pivot;
+            if (l == 0.0) continue;
+            for (std::size_t j = k; j < std::min(n, k + w + 1); ++j) a(i, j) -= l * a(k, j);
+            for (std::size_t c = 0; c < m; ++c) B[i * m + c] -= l * B[k * m + c];
+        }
+    }
+    for (std::size_t i = n; i-- > 0;) {
+        for (std::size_t j = i + 1; j < std::min(n, i + w + 1); ++j)
+            for (std::size_t c = 0; c < m; ++c) B[i * m + c] -= a(i, j) * B[j * m + c];
+        for (std::size_t c = 0; c < m; ++c) B[i * m + c] /= a(i, i);
     }
 }
 
 void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int times) {
     if (times < 0) throw GeometryError("elevateDegree: cannot elevate by " + std::to_string(times));
+    if (times > kMaxElevatedDegree - degree)
+        throw GeometryError("elevateDegree: degree " + std::to_string(degree) + " raised by " +
+                            std::to_string(times) + " is above " + std::to_string(kMaxElevatedDegree) +
+                            ", the highest made");
     if (times == 0) return;
     clampNet(degree, knots, net);
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -73,7 +97,8 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
     }
     const std::size_t n = raised.size() - static_cast<std::size_t>(P) - 1;
     const std::size_t m = 4 * net.stride;
-    std::vector<double> A(n * n, 0.0), B(n * m, 0.0);
+    const std::size_t w = static_cast<std::size_t>(P);  // row i's entries lie in columns i - P .. i + P
+    std::vector<double> A(n * (2 * w + 1), 0.0), B(n * m, 0.0);
     std::vector<double> oldBasis(p + 1), newBasis(static_cast<std::size_t>(P) + 1);
     for (std::size_t i = 0; i < n; ++i) {
         double tau = 0.0;
@@ -81,8 +106,12 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
         tau /= P;
         const std::size_t ns = findSpan(P, raised, n, tau);
         basisFunctions(ns, tau, P, raised, newBasis);
-        for (std::size_t k = 0; k <= static_cast<std::size_t>(P); ++k)
-            A[i * n + ns - static_cast<std::size_t>(P) + k] = newBasis[k];
+        for (std::size_t k = 0; k <= static_cast<std::size_t>(P); ++k) {
+            const std::size_t j = ns - static_cast<std::size_t>(P) + k;
+            if (j + w < i || j > i + w)
+                throw GeometryError("elevateDegree: a collocation row leaves the band");
+            A[i * (2 * w + 1) + j + w - i] = newBasis[k];
+        }
         const std::size_t os = findSpan(degree, knots, count, tau);
         basisFunctions(os, tau, degree, knots, oldBasis);
         for (std::size_t k = 0; k <= p; ++k) {
@@ -92,7 +121,7 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
                     B[i * m + c * 4 + static_cast<std::size_t>(d)] += oldBasis[k] * block[c][d];
         }
     }
-    solveDense(A, B, n, m);
+    solveBanded(A, B, n, w, m);
     net.data.resize(n * net.stride);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t c = 0; c < net.stride; ++c)

@@ -104,6 +104,9 @@ void checkFinite(std::span<const glm::dvec3> points) {
 std::vector<double> uniformParameters(std::size_t count) {
     if (count < 2)
         throw GeometryError("uniformParameters: need at least 2 points, got " + std::to_string(count));
+    if (count > kMaxSamplePoints)
+        throw GeometryError("uniformParameters: " + std::to_string(count) + " points are more than " +
+                            std::to_string(kMaxSamplePoints));
     std::vector<double> t(count);
     for (std::size_t i = 0; i < count; ++i) t[i] = static_cast<double>(i) / static_cast<double>(count - 1);
     return t;

@@ -2,6 +2,8 @@
 
 #include "geom/GeometryError.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -24,10 +26,19 @@ void checkPositive(double x, const char* what, const char* where) {
         throw GeometryError(std::string(where) + ": " + what + " " + std::to_string(x) + " must be positive");
 }
 
+/// The plane axes of a circle or arc: finite and spanning a plane (neither zero nor parallel),
+/// or the "circle" is a segment or a point.
+void checkAxes(const glm::dvec3& xAxis, const glm::dvec3& yAxis, const char* where) {
+    const double span = glm::length(glm::cross(xAxis, yAxis));
+    if (!std::isfinite(span) || !(span > 1e-12 * glm::length(xAxis) * glm::length(yAxis)))
+        throw GeometryError(std::string(where) + ": the axes must be finite, non-zero and not parallel");
+}
+
 }  // namespace
 
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius) {
     checkPositive(radius, "radius", "makeCircle");
+    checkAxes(xAxis, yAxis, "makeCircle");
     std::vector<glm::dvec3> points;
     std::vector<double> weights;
     for (std::size_t j = 0; j < 9; ++j) {
@@ -40,6 +51,7 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
 Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
               double startAngle, double endAngle) {
     checkPositive(radius, "radius", "makeArc");
+    checkAxes(xAxis, yAxis, "makeArc");
     const double sweep = endAngle - startAngle;
     if (!std::isfinite(startAngle) || !std::isfinite(sweep) || !(sweep > 0.0) ||
         sweep > 2.0 * std::numbers::pi + 1e-12)

@@ -3,6 +3,7 @@
 #include "geom/GeometryError.h"
 #include "geom/GlobalInterpolation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -10,7 +11,8 @@
 namespace geom {
 
 Curve iBeamCurve(std::size_t controlPoints) {
-    if (controlPoints < 4) throw GeometryError("iBeamCurve: need at least 4 control points");
+    if (controlPoints < 4 || controlPoints > kMaxSamplePoints)
+        throw GeometryError("iBeamCurve: need 4 to " + std::to_string(kMaxSamplePoints) + " control points");
     std::vector<glm::dvec3> points(controlPoints);
     for (std::size_t i = 0; i < controlPoints; ++i) {
         const double x = -180.0 + 360.0 * static_cast<double>(i) / static_cast<double>(controlPoints - 1);
@@ -21,7 +23,8 @@ Curve iBeamCurve(std::size_t controlPoints) {
 }
 
 std::vector<glm::dvec3> nacaSymmetricPoints(std::size_t count, double chord, double thickness) {
-    if (count < 5) throw GeometryError("nacaSymmetricPoints: need at least 5 points");
+    if (count < 5 || count > kMaxSamplePoints)
+        throw GeometryError("nacaSymmetricPoints: need 5 to " + std::to_string(kMaxSamplePoints) + " points");
     if (!(chord > 0.0) || !(thickness > 0.0))
         throw GeometryError("nacaSymmetricPoints: chord and thickness must be positive");
     std::vector<glm::dvec3> points(count);
@@ -45,7 +48,8 @@ Curve nacaAirfoilCurve(double chord, std::size_t controlPoints, double thickness
 }
 
 Surface paraboloidSurface(std::size_t count) {
-    if (count < 4) throw GeometryError("paraboloidSurface: need at least 4 control points each way");
+    if (count < 4 || count > 1024)
+        throw GeometryError("paraboloidSurface: need 4 to 1024 control points each way");
     std::vector<glm::dvec3> grid(count * count);
     const std::vector<double> params = uniformParameters(count);
     for (std::size_t i = 0; i < count; ++i)
@@ -60,6 +64,10 @@ Surface paraboloidSurface(std::size_t count) {
 
 Surface wingSurface(std::size_t sections, std::size_t pointsPerSection) {
     if (sections < 4) throw GeometryError("wingSurface: need at least 4 sections");
+    if (sections > kMaxSamplePoints / std::max<std::size_t>(pointsPerSection, 1))
+        throw GeometryError("wingSurface: " + std::to_string(sections) + " x " +
+                            std::to_string(pointsPerSection) + " points are more than " +
+                            std::to_string(kMaxSamplePoints));
     const double rootChord = 192.0, semiSpan = 480.0;
     const double sweep = std::tan(30.0 * std::numbers::pi / 180.0);
     const double dihedral = std::tan(3.0 * std::numbers::pi / 180.0);

@@ -68,6 +68,7 @@ Curve reparameterize(const Curve& curve, double start, double end) {
     Curve out = curve;
     out.knots =
         mappedKnots(curve.knots, curve.domainStart(), curve.domainEnd(), start, end, "reparameterize");
+    validate(out, "reparameterize (the mapped knots)");  // a span beyond the doubles overflows them
     return out;
 }
 
@@ -78,6 +79,7 @@ Surface reparameterize(const Surface& surface, double u0, double u1, double v0, 
         mappedKnots(surface.knotsU, surface.domainStartU(), surface.domainEndU(), u0, u1, "reparameterize");
     out.knotsV =
         mappedKnots(surface.knotsV, surface.domainStartV(), surface.domainEndV(), v0, v1, "reparameterize");
+    validate(out, "reparameterize (the mapped knots)");
     return out;
 }
 

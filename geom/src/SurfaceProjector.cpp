@@ -144,7 +144,7 @@ SurfacePoint SurfaceProjector::polish(const glm::dvec3& p, glm::dvec2 uv) const 
 }
 
 SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::dvec2& guess) const {
-    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    detail::checkQueryPoint(p, "closestPoint");
     if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
         throw GeometryError("closestPoint: the start guess is not finite");
     return polish(p, guess);
@@ -352,7 +352,7 @@ thread_local std::vector<glm::dvec4> SurfaceProjector::Search::pool_, SurfacePro
 thread_local std::vector<glm::dvec3> SurfaceProjector::Search::points_;
 
 SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
-    if (!detail::finite(p)) throw GeometryError("closestPoint: the query point has a non-finite coordinate");
+    detail::checkQueryPoint(p, "closestPoint");
     return Search(*this, p).run();
 }
 

@@ -72,7 +72,7 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
     if (segmentsU < 1 || segmentsV < 1)
         throw GeometryError("tessellateUniform: segment counts " + std::to_string(segmentsU) + " x " +
                             std::to_string(segmentsV) + " must both be at least 1");
-    if (static_cast<double>(segmentsU + 1) * static_cast<double>(segmentsV + 1) >
+    if ((static_cast<double>(segmentsU) + 1.0) * (static_cast<double>(segmentsV) + 1.0) >
         static_cast<double>(kMaxVertices))
         throw GeometryError("tessellateUniform: " + std::to_string(segmentsU) + " x " +
                             std::to_string(segmentsV) + " segments are too many");

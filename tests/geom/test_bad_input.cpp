@@ -5,6 +5,7 @@
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
 #include "geom/BezierPatchTree.h"
+#include "geom/BoundingBox.h"
 #include "geom/ControlNet.h"
 #include "geom/Curvature.h"
 #include "geom/CurveProjector.h"
@@ -14,6 +15,7 @@
 #include "geom/Evaluate.h"
 #include "geom/FreeKnotFit.h"
 #include "geom/GeometryError.h"
+#include "geom/GlobalInterpolation.h"
 #include "geom/GridEvaluator.h"
 #include "geom/Intersect.h"
 #include "geom/Inversion.h"
@@ -21,6 +23,7 @@
 #include "geom/KnotRemoval.h"
 #include "geom/KnotSignificance.h"
 #include "geom/Primitives.h"
+#include "geom/ReferenceShapes.h"
 #include "geom/Reparameterize.h"
 #include "geom/Split.h"
 #include "geom/SurfaceIntersector.h"
@@ -161,6 +164,7 @@ TEST_CASE("every curve entry point refuses a hand-broken curve", "[geom][bad-inp
     requireAllThrow("measureDeviation reduced", [&](const Curve& c) { measureDeviation(good, c); });
     requireAllThrow("FreeKnotFitter", [](const Curve& c) { FreeKnotFitter fitter(c, FreeKnotOptions{}); });
     requireAllThrow("makeRevolution", [](const Curve& c) { makeRevolution(c); });
+    requireAllThrow("boundingBox", [](const Curve& c) { boundingBox(c); });
 }
 
 TEST_CASE("every surface entry point refuses a hand-broken surface", "[geom][bad-input]") {
@@ -188,6 +192,7 @@ TEST_CASE("every surface entry point refuses a hand-broken surface", "[geom][bad
     requireAllThrow("reverse", [](const Surface& s) { reverse(s, true); });
     requireAllThrow("reparameterize", [](const Surface& s) { reparameterize(s, 0, 2, 0, 2); });
     requireAllThrow("elevateDegree", [](const Surface& s) { elevateDegree(s, 1, false); });
+    requireAllThrow("boundingBox", [](const Surface& s) { boundingBox(s); });
     requireAllThrow("reduceSurface", [](const Surface& s) {
         ReductionOptions options;
         options.tolerance = 1e-3;
@@ -235,6 +240,54 @@ TEST_CASE("parameters that are not finite or lie outside the domain are refused 
     REQUIRE_THROWS_WITH(derivatives(c, 0.5, -1), Catch::Contains("order"));
     REQUIRE_THROWS_AS(closestPoint(s, {kNaN, 0, 0}), GeometryError);
     REQUIRE_THROWS_AS(intersectLine(s, {0, 0, kNaN}, {0, 0, 1}), GeometryError);
+}
+
+TEST_CASE("huge counts, far query points and degenerate axes are refused by name, in bounded time",
+          "[geom][bad-input]") {
+    const Curve c = validCurve(false);
+    const Surface s = validSurface(true);
+    // Counts whose + 1 or + degree overflowed an int passed the size checks.
+    REQUIRE_THROWS_WITH(tessellateUniform(s, std::numeric_limits<int>::max(), 1),
+                        Catch::Contains("too many"));
+    for (int times : {65, 1 << 20, std::numeric_limits<int>::max()}) {
+        REQUIRE_THROWS_WITH(elevateDegree(c, times),
+                            Catch::Contains("elevateDegree") && Catch::Contains("64"));
+        REQUIRE_THROWS_AS(elevateDegree(s, times, true), GeometryError);
+    }
+    REQUIRE(elevateDegree(c, 64 - c.degree).degree == 64);
+    // A query so far out that its squared distance overflows: refused, not a wrong answer.
+    for (double far : {1e151, 1e200, -1e300}) {
+        REQUIRE_THROWS_WITH(closestPoint(c, {far, 0, 0}), Catch::Contains("1e150"));
+        REQUIRE_THROWS_WITH(closestPoint(s, {0, far, 0}), Catch::Contains("1e150"));
+        REQUIRE_THROWS_AS(closestPoint(c, {0, 0, far}, 0.5), GeometryError);
+        REQUIRE_THROWS_AS(closestPoint(s, {0, 0, far}, {0.5, 0.5}), GeometryError);
+    }
+    // Up to it, the answer is right: the nearest end of a segment, at the full distance.
+    const Curve segment(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 0, 0}});
+    const CurvePoint end = closestPoint(segment, {1e149, 0, 0});
+    REQUIRE(end.u == 1.0);
+    REQUIRE(end.distance == Approx(1e149));
+    // Knots mapped past the largest double.
+    REQUIRE_THROWS_WITH(reparameterize(c, -1e308, 1e308), Catch::Contains("reparameterize"));
+    REQUIRE_THROWS_AS(reparameterize(s, -1e308, 1e308, 0, 1), GeometryError);
+    // Options and generated shapes whose size would exhaust memory.
+    ReductionOptions options;
+    options.tolerance = 1e-3;
+    options.samplesPerSpan = 1000000000;
+    REQUIRE_THROWS_WITH(reduceCurve(c, options), Catch::Contains("samplesPerSpan"));
+    options.samplesPerSpan = 8;
+    options.freeKnotIterations = 1 << 30;
+    REQUIRE_THROWS_WITH(reduceCurve(c, options), Catch::Contains("freeKnotIterations"));
+    REQUIRE_THROWS_AS(uniformParameters(std::size_t{1} << 62), GeometryError);
+    REQUIRE_THROWS_AS(iBeamCurve(std::size_t{1} << 40), GeometryError);
+    REQUIRE_THROWS_AS(paraboloidSurface(std::size_t{1} << 33), GeometryError);
+    REQUIRE_THROWS_AS(wingSurface(std::size_t{1} << 32, std::size_t{1} << 32), GeometryError);
+    // A circle or arc needs two axes that span a plane.
+    for (const auto& [x, y] : std::vector<std::pair<glm::dvec3, glm::dvec3>>{
+             {{0, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}}, {{1, 0, 0}, {kNaN, 1, 0}}}) {
+        REQUIRE_THROWS_WITH(makeCircle({0, 0, 0}, x, y, 1.0), Catch::Contains("axes"));
+        REQUIRE_THROWS_AS(makeArc({0, 0, 0}, x, y, 1.0, 0.0, 1.0), GeometryError);
+    }
 }
 
 TEST_CASE("a broken object's message names the entry point and the rule", "[geom][bad-input]") {

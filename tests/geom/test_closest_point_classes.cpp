@@ -147,11 +147,17 @@ double referenceDistance(const Curve& c, const glm::dvec3& p) {
     std::vector<Sample> samples;
     constexpr int kGrid = 40;
     auto distance = [&](double u) { return glm::length(evaluate(c, u) - p); };
-    for (std::size_t i = 0; i + 1 < b.size(); ++i)
+    for (std::size_t i = 0; i + 1 < b.size(); ++i) {
         for (int a = 0; a <= kGrid; ++a) {
             const double u = b[i] + (b[i + 1] - b[i]) * a / kGrid;
             samples.push_back({distance(u), u, i});
         }
+        // Weights over decades can race a span through most of its shape in a sliver at one end.
+        for (int k = 6; k <= 40; ++k)
+            for (double u : {b[i] + (b[i + 1] - b[i]) * std::ldexp(1.0, -k),
+                             b[i + 1] - (b[i + 1] - b[i]) * std::ldexp(1.0, -k)})
+                samples.push_back({distance(u), u, i});
+    }
     const std::size_t keep = std::min<std::size_t>(4, samples.size());
     std::partial_sort(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep), samples.end(),
                       [](const Sample& x, const Sample& y) { return x.d < y.d; });
@@ -400,6 +406,58 @@ TEST_CASE("closest point on curves of degree 1 to 7, with corners, wide weights,
         }
     }
     CHECK(queriesRun == 42 * kTrials);
+    CHECK(failures == 0);
+}
+
+TEST_CASE("closest point on rational curves whose weights jump by four decades",
+          "[geom][inversion][classes]") {
+    // A quintic whose weight jumps from about 0.02 to 54 at a piece end: the curve runs through
+    // much of its shape in the first 1/1700 of the piece, where the nearest point lies.
+    const Curve racing(
+        5,
+        {0, 0, 0, 0, 0, 0, 0.88393121658363372, 0.88393121658363372, 0.88393121658363372, 1, 1, 1, 1, 1, 1},
+        {{-0.14800742080479268, -0.97572658202326434, 0.24624196729746761},
+         {-0.99465248962140107, -0.15999656252335492, 0.39279662601165222},
+         {0.68093455848123252, 0.72316217191597354, -0.33205285872591384},
+         {-0.47894401943324638, -0.43746644460069806, 0.037305238436701194},
+         {-0.09461321187417826, -0.95164351522435986, 0.048451931861085207},
+         {-0.94907208716219837, -0.99321995468545421, 0.38258754211552271},
+         {0.03335982762082712, -0.89655636226048796, -0.37639079157094801},
+         {0.38042960607132681, -0.39781509108794832, -0.60933986766289339},
+         {-0.47168186767028175, 0.54786727409363567, 0.73744793520330965}},
+        {0.011261402022066956, 0.021610717502001827, 53.973308101252265, 1.6500767895415775,
+         0.011766319297335131, 0.024977851511561747, 0.30016148740234189, 0.087569912877496894,
+         46.77831151851683});
+    const glm::dvec3 p{-0.10620471261134225, -0.95263604538236013, 0.21826909916434878};
+    const CurvePoint q = closestPoint(racing, p);
+    CHECK(q.distance == Approx(0.0384020806).margin(1e-9));
+    CHECK(q.u == Approx(0.000586).margin(1e-5));
+    CHECK(q.distance <= referenceDistance(racing, p) + 1e-9);
+    // The class: weights of 1e-2 or 1e2 at random, degrees 2 to 5, queries near and far.
+    std::mt19937 rng(607);
+    std::uniform_real_distribution<double> c(-1.0, 1.0), unit(0.0, 1.0);
+    int failures = 0;
+    for (int k = 0; k < 40; ++k) {
+        const int degree = 2 + k % 4;
+        const std::size_t count = static_cast<std::size_t>(degree) + 4;
+        std::vector<glm::dvec3> pts;
+        std::vector<double> weights;
+        for (std::size_t i = 0; i < count; ++i) {
+            pts.push_back({c(rng), c(rng), c(rng)});
+            weights.push_back(rng() % 2 ? 1e-2 : 1e2);
+        }
+        const Curve curve(degree, knotsWith(rng, degree, count, degree, 1), pts, weights);
+        const CurveProjector projector(curve);
+        for (int trial = 0; trial < membersForBuild(60); ++trial) {
+            glm::dvec3 query{1.2 * c(rng), 1.2 * c(rng), 1.2 * c(rng)};
+            if (trial % 2 == 1)
+                query = evaluate(curve, curve.domainStart() +
+                                            unit(rng) * (curve.domainEnd() - curve.domainStart())) +
+                        0.1 * glm::dvec3{c(rng), c(rng), c(rng)};
+            const double reference = referenceDistance(curve, query);
+            if (projector.closestPoint(query).distance > reference + 1e-9) ++failures;
+        }
+    }
     CHECK(failures == 0);
 }
 

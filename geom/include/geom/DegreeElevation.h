@@ -7,7 +7,8 @@ namespace geom {
 
 /// The same curve of degree + times: every distinct knot's multiplicity rises by times, so
 /// the continuity at each knot is kept, and the control points are found by collocation at the
-/// Greville abscissae (exact: the old spline lies in the new spline space).
+/// Greville abscissae (exact: the old spline lies in the new spline space), one banded solve.
+/// GeometryError for times < 0 or a degree above 64.
 Curve elevateDegree(const Curve& curve, int times = 1);
 
 /// Degree elevation of a surface in u (alongV false) or in v.

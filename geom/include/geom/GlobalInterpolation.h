@@ -15,7 +15,10 @@ namespace geom {
 /// Periodic closes the curve with C^(degree-1) continuity across the seam.
 enum class Closure { Open, Periodic };
 
-/// Parameters spaced evenly on [0, 1], one per point (count >= 2), for Open data.
+/// The most points uniformParameters and the reference shapes (ReferenceShapes.h) make at once.
+inline constexpr std::size_t kMaxSamplePoints = std::size_t{1} << 20;
+
+/// Parameters spaced evenly on [0, 1], one per point (2 <= count <= kMaxSamplePoints), for Open data.
 std::vector<double> uniformParameters(std::size_t count);
 
 /// Chord-length parameters of a polyline, normalized to [0, 1]. Open: one value per point, 0

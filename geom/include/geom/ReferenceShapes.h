@@ -10,6 +10,9 @@
 
 namespace geom {
 
+// Counts above kMaxSamplePoints (GlobalInterpolation.h) are refused, the paraboloid's above 1024
+// a side.
+
 /// The thesis's "I-beam" test curve (Marcaly 1991, chapter 7): y = 5 + (x^3 - x) sin(pi x / 180) / 7500
 /// sampled at controlPoints evenly spaced x from -180 to 180 and interpolated by a clamped cubic
 /// with uniform parameters (controlPoints control points, 401 in the thesis), in the z = 0 plane.
