@@ -47,6 +47,14 @@ bool lineMapsBack(const glm::dmat4& toNpc, const glm::dmat4& fromNpc) {
     return to * from <= 1e10;
 }
 
+/// Whether a pick at `npc` can hit anything: a finite position inside the workstation window
+/// (which clips everything) and an aperture that is not NaN or negative.
+bool pickReaches(const DrawList& list, glm::dvec2 npc, double aperture) {
+    return std::isfinite(npc.x) && std::isfinite(npc.y) && aperture >= 0.0 &&
+           !(npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
+             npc.y > list.windowMax.y);
+}
+
 bool insideModelClip(const DrawItem& item, const glm::dvec3& world) {
     for (const glm::dvec4& plane : item.modelClipPlanes())
         if (glm::dot(glm::dvec3(plane), world) + plane.w < 0.0) return false;
@@ -553,11 +561,7 @@ std::vector<PickHit> Picker::hits(const DrawList& list, glm::dvec2 npc, double a
 std::vector<PickHit> Picker::hits(const DrawList& list, const WorkstationMapping& mapping, glm::dvec2 npc,
                                   double aperture) const {
     std::vector<PickHit> out;
-    if (!std::isfinite(npc.x) || !std::isfinite(npc.y) || !(aperture >= 0.0)) return out;
-    // The workstation window clips everything.
-    if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
-        npc.y > list.windowMax.y)
-        return out;
+    if (!pickReaches(list, npc, aperture)) return out;
     if (accelerated_) tree_.update(list);  // first: it lets go of surfaces the list dropped
     prune(list);
     if (accelerated_) {
@@ -600,10 +604,7 @@ std::optional<PickHit> Picker::nearest(const DrawList& list, const WorkstationMa
 
 std::optional<PickHit> Picker::nearestAccelerated(const DrawList& list, const WorkstationMapping& mapping,
                                                   glm::dvec2 npc, double aperture) const {
-    if (!std::isfinite(npc.x) || !std::isfinite(npc.y) || !(aperture >= 0.0)) return std::nullopt;
-    if (npc.x < list.windowMin.x || npc.x > list.windowMax.x || npc.y < list.windowMin.y ||
-        npc.y > list.windowMax.y)
-        return std::nullopt;
+    if (!pickReaches(list, npc, aperture)) return std::nullopt;
     tree_.update(list);  // first: it lets go of surfaces the list dropped
     prune(list);
     candidates_.clear();
