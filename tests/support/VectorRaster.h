@@ -14,10 +14,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #ifndef PHIGS_PDFTOPPM
 #define PHIGS_PDFTOPPM "pdftoppm"
@@ -38,6 +40,14 @@ inline std::string quoted(const std::filesystem::path& p) {
 }
 
 /// The standard output of a command; throws when it fails.
+/// A command line from its parts, appended in place (GCC 12 warns falsely, -Warray-bounds, on
+/// chains of string temporaries).
+inline std::string commandLine(std::initializer_list<std::string_view> parts) {
+    std::string line;
+    for (std::string_view part : parts) line += part;
+    return line;
+}
+
 inline std::string output(const std::string& command) {
     std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
     if (!pipe) throw std::runtime_error("cannot run " + command);
@@ -54,9 +64,9 @@ inline std::string output(const std::string& command) {
 inline phigs::Image rasterisePdf(const std::filesystem::path& pdf, std::uint32_t width, std::uint32_t height,
                                  int page = 1) {
     const std::filesystem::path prefix = pdf.string() + ".raster" + std::to_string(page);
-    output(std::string(PHIGS_PDFTOPPM) + " -png -singlefile -f " + std::to_string(page) + " -l " +
-           std::to_string(page) + " -scale-to-x " + std::to_string(width) + " -scale-to-y " +
-           std::to_string(height) + " " + quoted(pdf) + " " + quoted(prefix));
+    output(commandLine({PHIGS_PDFTOPPM, " -png -singlefile -f ", std::to_string(page), " -l ",
+                        std::to_string(page), " -scale-to-x ", std::to_string(width), " -scale-to-y ",
+                        std::to_string(height), " ", quoted(pdf), " ", quoted(prefix)}));
     return phigs::readPng(prefix.string() + ".png");
 }
 
@@ -64,14 +74,14 @@ inline phigs::Image rasterisePdf(const std::filesystem::path& pdf, std::uint32_t
 inline phigs::Image rasteriseSvg(const std::filesystem::path& svg, std::uint32_t width,
                                  std::uint32_t height) {
     const std::filesystem::path png = svg.string() + ".raster.png";
-    output(std::string(PHIGS_RSVG_CONVERT) + " -w " + std::to_string(width) + " -h " +
-           std::to_string(height) + " -o " + quoted(png) + " " + quoted(svg));
+    output(commandLine({PHIGS_RSVG_CONVERT, " -w ", std::to_string(width), " -h ", std::to_string(height),
+                        " -o ", quoted(png), " ", quoted(svg)}));
     return phigs::readPng(png);
 }
 
 /// The raster images a PDF holds, as `pdfimages -list` counts them (its two header lines aside).
 inline int pdfImageCount(const std::filesystem::path& pdf) {
-    std::istringstream lines(output(std::string(PHIGS_PDFIMAGES) + " -list " + quoted(pdf)));
+    std::istringstream lines(output(commandLine({PHIGS_PDFIMAGES, " -list ", quoted(pdf)})));
     int count = 0;
     for (std::string line; std::getline(lines, line);) count += !line.empty();
     return std::max(0, count - 2);
