@@ -91,6 +91,11 @@ int main(int argc, char** argv) {
     pcreate_store(&err, &store);
 
     EXPECT_ERROR(par_structs(1, &list_one), 7, Pfn_ar_structs);
+    /* a file that cannot be created is error 400 alone, and no archive is open */
+    EXPECT_ERROR(popen_ar_file(1, "/nonexistent-directory/x.phar"), 400, Pfn_open_ar_file);
+    EXPECT_ERROR(popen_ar_file(1, ""), 400, Pfn_open_ar_file);
+    pinq_ar_st(&st);
+    CHECK(st == PAR_ST_CL);
     popen_ar_file(1, archive);
     pinq_ar_st(&st);
     CHECK(st == PAR_ST_OP);

@@ -265,6 +265,44 @@ static void transforms_and_clipping(void) {
     last(PELEM_RESTORE_MODEL_CLIP_VOL);
 }
 
+/* Index attributes below their ISO range are refused with the standard's error and store
+ * nothing: bundle indices from 1 (100), pattern indices from 1 (112), colour indices from 0 (113),
+ * view indices from 0 (114), depth cue (119) and colour mapping indices (121) from 0. */
+static void index_ranges(void) {
+    static const struct {
+        void (*set)(Pint);
+        Pint fn, lowest, error;
+    } kinds[] = {
+        {pset_line_ind, Pfn_set_line_ind, 1, 100},
+        {pset_marker_ind, Pfn_set_marker_ind, 1, 100},
+        {pset_text_ind, Pfn_set_text_ind, 1, 100},
+        {pset_int_ind, Pfn_set_int_ind, 1, 100},
+        {pset_edge_ind, Pfn_set_edge_ind, 1, 100},
+        {pset_int_style_ind, Pfn_set_int_style_ind, 1, 112},
+        {pset_back_int_style_ind, Pfn_set_back_int_style_ind, 1, 112},
+        {pset_line_colr_ind, Pfn_set_line_colr_ind, 0, 113},
+        {pset_marker_colr_ind, Pfn_set_marker_colr_ind, 0, 113},
+        {pset_text_colr_ind, Pfn_set_text_colr_ind, 0, 113},
+        {pset_int_colr_ind, Pfn_set_int_colr_ind, 0, 113},
+        {pset_edge_colr_ind, Pfn_set_edge_colr_ind, 0, 113},
+        {pset_view_ind, Pfn_set_view_ind, 0, 114},
+        {pset_dcue_ind, Pfn_set_dcue_ind, 0, 119},
+        {pset_colr_map_ind, Pfn_set_colr_map_ind, 0, 121},
+    };
+    seed_random(20261205);
+    for (int round = 0; round < 200; ++round) {
+        const int k = (int)(next_random() % (sizeof kinds / sizeof kinds[0]));
+        const Pint value = (Pint)(next_random() % 7) - 3 + kinds[k].lowest;
+        if (value >= kinds[k].lowest) {
+            EXPECT_NO_ERROR(kinds[k].set(value));
+            ++n_elem;
+        } else {
+            EXPECT_REFUSED(kinds[k].set(value), kinds[k].error, kinds[k].fn);
+        }
+    }
+    EXPECT_REFUSED(pset_int_colr(&(Pgcolr){PINDIRECT, {.ind = -1}}), 113, Pfn_set_int_colr);
+}
+
 static void refusals(void) {
     Ppoint3 p3[2] = {{0, 0, 0}, {1, 1, 1}};
     Ppoint_list3 negative = {-1, p3};
@@ -297,6 +335,7 @@ static void refusals(void) {
                    Pfn_gdp);
     EXPECT_REFUSED(pgdp3(NULL, 5, NULL), -204, Pfn_gdp3);
     EXPECT_REFUSED(pgse(1, &(Pgse_data){.unsupp = {-1, NULL}}), -204, Pfn_gse);
+    index_ranges();
     pclose_struct();
     /* with no structure open the state error comes first, whatever the arguments */
     EXPECT_REFUSED(ppolyline3(NULL), 5, Pfn_polyline3);

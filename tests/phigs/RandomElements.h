@@ -4,6 +4,7 @@
 
 #include "phigs/store/Element.h"
 
+#include <algorithm>
 #include <random>
 
 namespace phigs::testing {
@@ -123,7 +124,12 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
                                       T::TextFont,      T::InteriorStyle,   T::EdgeFlag,
                                       T::ViewIndex,     T::PickId,          T::HlhsrIdentifier,
                                       T::DepthCueIndex, T::FaceCullingMode, T::InteriorShadingMethod};
-            return IndexAttribute{types[randomInt(rng, 0, 11)], randomInt(rng, -3, 9)};
+            const T type = types[randomInt(rng, 0, 11)];
+            // Bundle indices start at 1, view and depth cue indices at 0 (ISO 9592 refuses less).
+            const int lowest = type == T::PolylineIndex                           ? 1
+                               : type == T::ViewIndex || type == T::DepthCueIndex ? 0
+                                                                                  : -3;
+            return IndexAttribute{type, std::max(lowest, randomInt(rng, -3, 9))};
         }
         case 13:
             return RealAttribute{randomInt(rng, 0, 1) ? T::CharacterHeight : T::LinewidthScaleFactor,

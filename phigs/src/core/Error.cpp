@@ -49,6 +49,7 @@ const std::map<int, const char*>& messages() {
         {115, "Ignoring function, the view index value is less than one"},
         {116, "Ignoring function, one of the dimensions of pattern colour index array is less than one"},
         {118, "Ignoring function, one of the components of the colour specification is out of range"},
+        {119, "Ignoring function, the depth cue index value is less than zero"},
         {121, "Ignoring function, the colour mapping index value is less than zero"},
         {126, "Ignoring function, the specified colour mapping method is not available on the workstation"},
         {122, "Ignoring function, the specified polyline shading method is not available on the workstation"},
@@ -108,6 +109,7 @@ const std::map<int, const char*>& messages() {
         {257,
          "Ignoring function, input queue has not overflowed since PHIGS was opened or the last invocation "
          "of INQUIRE INPUT QUEUE OVERFLOW"},
+        {258, "Ignoring function, input queue has overflowed, but associated workstation has been closed"},
         {259,
          "Ignoring function, the input device class of the current input report does not match the class "
          "being requested"},

@@ -13,6 +13,7 @@
 #include <limits>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 namespace phigs {
 
@@ -421,9 +422,13 @@ ArchiveFile::ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t 
     if (leftover == std::filesystem::file_type::regular || leftover == std::filesystem::file_type::symlink)
         std::filesystem::remove(temporary, ec);
     if (std::filesystem::status(path_, ec).type() == std::filesystem::file_type::not_found) {
+        // A failed creation is error 400 alone: the write's own error (903) stays out of the log.
+        ErrorLog* const kept = std::exchange(log_, nullptr);
         try {
             write({}, function);
+            log_ = kept;
         } catch (const Error& e) {
+            log_ = kept;
             raise(log_, errors::ArchiveCannotOpen, function,
                   path_.string() + ": cannot be created: " + e.detail());
         }

@@ -9,7 +9,6 @@ inline constexpr int RepresentationNotPredefined = 102;  ///< no such predefined
 inline constexpr int TextFontNotAvailable = 106;         ///< font and precision pair not available
 inline constexpr int EdgeTypeNotAvailable = 107;
 inline constexpr int ColourModelNotAvailable = 110;
-inline constexpr int PatternIndexBelowOne = 112;
 inline constexpr int BadPatternDimensions = 116;         ///< a dimension of the colour index array below one
 inline constexpr int PolylineShadingNotAvailable = 122;  ///< PHIGS PLUS
 inline constexpr int InteriorShadingNotAvailable = 123;
