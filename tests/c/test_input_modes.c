@@ -228,7 +228,8 @@ static void events(void) {
 }
 
 /* 70 valuator events queued without AWAIT EVENT (each SAMPLE delivers one line): the queue
- * holds 64, then overflows (warning 256) and INQUIRE INPUT QUEUE OVERFLOW names the device. */
+ * holds 64, then overflows (warning 256, once: it takes nothing more until AWAIT EVENT finds it
+ * empty) and INQUIRE INPUT QUEUE OVERFLOW names the device. */
 static void overflow(void) {
     static char script[70 * 20 + 1];
     script[0] = '\0';
@@ -242,7 +243,7 @@ static void overflow(void) {
         psample_val(WS, 2, &value);
         warnings += error_count == 1 && error_numbers[0] == 256 && error_functions[0] == Pfn_sample_val;
     }
-    CHECK(warnings == 6);
+    CHECK(warnings == 1);
     Pint err = -1, ws = -1, number = -1;
     Pin_class in_class = PIN_NONE;
     pinq_in_overf(&err, &ws, &in_class, &number);

@@ -7,6 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <deque>
+#include <random>
+#include <string>
+
 namespace test_input_devices {
 
 using namespace phigs;
@@ -221,8 +225,77 @@ TEST_CASE("input devices: a full queue overflows, loses the trigger's events and
     CHECK(o.device == 1);
     CHECK(errorOf([&] { r.queue.inquireOverflow(); }) == 257);  // cleared by the inquiry
     r.input.pump(0ms);
-    CHECK(r.queue.size() == 3);  // choice 3 still fits
+    CHECK(r.queue.size() == 2);  // choice 3 would fit, but the queue is closed until emptied
+    CHECK(warnings == std::vector<int>{256});
     CHECK_THROWS_AS(InputQueue(0), std::invalid_argument);
+}
+
+TEST_CASE("input devices: an overflowed queue takes events again once AWAIT EVENT finds it empty",
+          "[input]") {
+    // Random event streams against a model of the rule: full -> closed; AWAIT on empty -> open.
+    std::mt19937 rng(20261205);
+    for (int round = 0; round < 200; ++round) {
+        const std::size_t capacity = 1 + rng() % 5;
+        std::string script;
+        std::vector<std::string> lines;
+        for (int i = 0; i < 40; ++i) script += "choice " + std::to_string(1 + i % 9) + "\n";
+        Rig r(script, capacity);
+        int warnings = 0;
+        r.queue.setWarningSink([&](const Error&) { ++warnings; });
+        r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);
+        std::deque<int> model;
+        bool closed = false;
+        int expectedWarnings = 0, next = 0;
+        for (int step = 0; step < 40; ++step) {
+            if (rng() % 3 == 0) {
+                const bool wasEmpty = model.empty();
+                const auto event = r.queue.awaitEvent(0ms);
+                // With the queue empty, AWAIT EVENT opens it and pumps the script: one line.
+                if (wasEmpty) {
+                    closed = false;
+                    if (next < 40) {
+                        ++next;
+                        REQUIRE(event);
+                        CHECK(std::get<ChoiceMeasure>(event->measure).choice == 1 + (next - 1) % 9);
+                    }
+                    continue;
+                }
+                REQUIRE(event);
+                CHECK(std::get<ChoiceMeasure>(event->measure).choice == model.front());
+                model.pop_front();
+            } else if (next < 40) {
+                r.input.pump(0ms);
+                const int choice = 1 + next % 9;
+                ++next;
+                if (closed) continue;
+                if (model.size() == capacity) {
+                    closed = true;
+                    ++expectedWarnings;
+                    continue;
+                }
+                model.push_back(choice);
+            }
+            REQUIRE(r.queue.size() == model.size());
+        }
+        CHECK(warnings == expectedWarnings);
+    }
+}
+
+TEST_CASE("input devices: the overflow of a workstation closed since is error 258", "[input]") {
+    FakeMeasurer measurer;
+    InputQueue queue(1);
+    ScriptInputSource first("choice 1\nchoice 2\n", "a.txt"), second("choice 5\n", "b.txt");
+    WorkstationInput kept(2, second, measurer, queue);
+    {
+        WorkstationInput closing(1, first, measurer, queue);
+        closing.setMode(InputClass::Choice, 1, OperatingMode::Event);
+        closing.pump(0ms);
+        closing.pump(0ms);  // overflows: the queue holds one
+        CHECK(queue.size() == 1);
+    }  // workstation 1 closes: its events go, the overflow record stays
+    CHECK(queue.size() == 0);
+    CHECK(errorOf([&] { queue.inquireOverflow(); }) == 258);
+    CHECK(errorOf([&] { queue.inquireOverflow(); }) == 257);  // 258 cleared it
 }
 
 TEST_CASE("input devices: FLUSH DEVICE EVENTS removes one device's reports", "[input]") {

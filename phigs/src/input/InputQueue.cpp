@@ -14,9 +14,16 @@ InputQueue::InputQueue(std::size_t capacity) : capacity_(capacity) {
 
 void InputQueue::enqueue(std::vector<EventReport> reports) {
     if (reports.empty()) return;
+    // After an overflow the queue takes nothing until AWAIT EVENT finds it empty (ISO 9592's
+    // overflow condition): the lost reports are those of later triggers too.
+    if (closedByOverflow_) return;
     if (events_.size() + reports.size() > capacity_) {
         const EventReport& first = reports.front();
-        if (!overflow_) overflow_ = QueueOverflow{first.workstation, first.inputClass, first.device};
+        closedByOverflow_ = true;
+        if (!overflow_) {
+            overflow_ = QueueOverflow{first.workstation, first.inputClass, first.device};
+            overflowWorkstationClosed_ = false;
+        }
         if (warningSink_)
             warningSink_(Error(errors::InputQueueOverflowed, "AWAIT EVENT",
                                std::string("input queue overflowed; the ") + nameOf(first.inputClass) + " " +
@@ -43,6 +50,7 @@ std::optional<EventReport> InputQueue::awaitEvent(std::chrono::milliseconds time
     current_.reset();
     currentTrigger_ = 0;
     if (!events_.empty()) return takeFront();
+    closedByOverflow_ = false;  // emptied: the queue takes events again
     if (inputs_.empty()) return std::nullopt;
 
     // One source may wait the whole timeout; several share it in short slices.
@@ -93,6 +101,10 @@ QueueOverflow InputQueue::inquireOverflow() {
                     "the input queue has not overflowed since the last inquiry");
     const QueueOverflow o = *overflow_;
     overflow_.reset();
+    if (overflowWorkstationClosed_)
+        throw Error(errors::OverflowWorkstationClosed, "INQUIRE INPUT QUEUE OVERFLOW",
+                    "the input queue overflowed with an event of workstation " +
+                        std::to_string(o.workstation) + ", which has been closed since");
     return o;
 }
 
@@ -107,6 +119,7 @@ void InputQueue::attach(WorkstationInput& input) {
 void InputQueue::detach(WorkstationInput& input) {
     std::erase(inputs_, &input);
     flushWorkstation(input.workstation());
+    if (overflow_ && overflow_->workstation == input.workstation()) overflowWorkstationClosed_ = true;
 }
 
 }  // namespace phigs

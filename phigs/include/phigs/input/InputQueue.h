@@ -53,14 +53,16 @@ public:
     void flushWorkstation(int workstation);
 
     /// INQUIRE INPUT QUEUE OVERFLOW: the device that overflowed, and the condition is cleared;
-    /// error 257 when the queue has not overflowed.
+    /// error 257 when the queue has not overflowed, 258 (also clearing it) when that device's
+    /// workstation has been closed since.
     QueueOverflow inquireOverflow();
 
     std::size_t size() const { return events_.size(); }
     std::size_t capacity() const { return capacity_; }
 
     /// Appends the reports one trigger produced, marked as simultaneous; all or none are queued
-    /// (none when they do not fit: the overflow condition is set and warning 256 reported).
+    /// (none when they do not fit: the overflow condition is set and warning 256 reported). After
+    /// an overflow it takes none until AWAIT EVENT is called with the queue empty.
     void enqueue(std::vector<EventReport> reports);
 
     void attach(WorkstationInput& input);
@@ -77,6 +79,8 @@ private:
     std::uint64_t currentTrigger_ = 0;
     std::optional<EventReport> current_;
     std::optional<QueueOverflow> overflow_;
+    bool overflowWorkstationClosed_ = false;  ///< overflow_'s workstation has closed since
+    bool closedByOverflow_ = false;           ///< overflowed and not yet emptied by AWAIT EVENT
     std::function<void(const Error&)> warningSink_;
     std::vector<WorkstationInput*> inputs_;
 };
