@@ -12,6 +12,12 @@
 #include <Interface_Static.hxx>
 #include <TCollection_HAsciiString.hxx>
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -112,6 +118,70 @@ TEST_CASE("bad files: truncated and corrupt STEP and IGES files", "[exchange][ba
         write(dir / ("noise" + ext), noise);
         requireRefused(dir / ("noise" + ext));
     }
+}
+
+TEST_CASE("bad files: a STEP real beyond 1e100 is refused at once, naming its line", "[exchange][bad]") {
+    // OpenCASCADE's shape healing searched without end on such a coordinate (until the time limit).
+    const auto dir = exchange_test::scratch("bad_reals");
+    CadModel model = wingModel();
+    model.name = "named 1.0E+400 in a string";  // a real in a string is text, not a number
+    writeCadFile(model, dir / "wing.step");
+    const std::string whole = contents(dir / "wing.step");
+    CHECK(readCadFile(dir / "wing.step").model.surfaces.size() == 1);
+    std::mt19937 rng(11);
+    std::vector<std::size_t> points;
+    for (std::size_t at = 0; (at = whole.find("CARTESIAN_POINT('',(", at)) != std::string::npos; ++at)
+        points.push_back(at + 20);
+    REQUIRE(points.size() > 10);
+    CadReadOptions quick;
+    quick.maxSeconds = 30;
+    for (const char* huge : {"1.0E+400", "-1.E+308", "2.5E+101", "1.E+99999"}) {
+        const std::size_t at = points[rng() % points.size()];
+        const std::size_t end = whole.find_first_of(",)", at);
+        const std::string spoilt = whole.substr(0, at) + huge + whole.substr(end);
+        const std::size_t line =
+            1 + std::size_t(std::count(whole.begin(), whole.begin() + std::ptrdiff_t(at), '\n'));
+        write(dir / "huge.step", spoilt);
+        requireRefused(dir / "huge.step",
+                       "line " + std::to_string(line) + ": the real " + huge + " is out of range", quick);
+    }
+}
+
+TEST_CASE("bad files: reading prints nothing the caller printed before", "[exchange][bad]") {
+    // The reading child inherits the stdio buffers, and OpenCASCADE's first use in a process
+    // flushes them: unflushed, the caller's text came out twice. The files are written in a child
+    // process so that the reader's is OpenCASCADE's first use (ctest runs each case alone).
+    const auto dir = exchange_test::scratch("stdout_once");
+    std::fflush(stdout);
+    const pid_t writer = fork();
+    REQUIRE(writer >= 0);
+    if (writer == 0) {
+        writeCadFile(wingModel(), dir / "wing.step");
+        writeCadFile(wingModel(), dir / "wing.igs");
+        std::fflush(nullptr);
+        _exit(0);
+    }
+    int status = -1;
+    REQUIRE(waitpid(writer, &status, 0) == writer);
+    REQUIRE((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    const std::filesystem::path captured = dir / "stdout.txt";
+    std::fflush(stdout);
+    const int saved = dup(1);
+    const int fd = open(captured.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    REQUIRE(saved >= 0);
+    REQUIRE(fd >= 0);
+    dup2(fd, 1);
+    close(fd);
+    std::printf("marker-before-read");  // no newline: held in the stdio buffer
+    readCadFile(dir / "wing.step");
+    readCadFile(dir / "wing.igs");
+    std::fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    const std::string text = contents(captured);
+    std::size_t markers = 0;
+    for (std::size_t at = 0; (at = text.find("marker-before-read", at)) != std::string::npos; ++at) ++markers;
+    CHECK(markers == 1);
 }
 
 TEST_CASE("bad files: a cut IGES file on which OpenCASCADE's reader crashes is refused", "[exchange][bad]") {

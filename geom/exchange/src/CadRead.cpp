@@ -6,6 +6,7 @@
 #include "MessageCollector.h"
 #include "OcctSession.h"
 #include "ShapeRead.h"
+#include "StepReals.h"
 #include "Units.h"
 
 #include "geom/exchange/CadFile.h"
@@ -49,6 +50,11 @@ void checkFile(const std::filesystem::path& path, const CadReadOptions& options)
     if (size > options.maxFileBytes)
         throw ExchangeError(file, std::to_string(size) + " bytes: larger than the limit of " +
                                       std::to_string(options.maxFileBytes));
+    if (cadFormatOf(path) == CadFormat::Step) {
+        std::ifstream in(path, std::ios::binary);
+        if (const std::optional<std::string> bad = firstOutOfRangeStepReal(in))
+            throw ExchangeError(file, *bad);
+    }
 }
 
 /// Refuses a file whose loading failed (truncated, corrupt): the first failure OpenCASCADE noted.

@@ -11,6 +11,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -86,6 +87,9 @@ bool collect(int fd, std::string& text, std::chrono::steady_clock::time_point de
 
 std::string runIsolated(const std::function<std::string()>& work, const std::string& file,
                         std::size_t memoryBytes, int seconds) {
+    // The child inherits the stdio buffers: flushed now, what the caller printed is not printed
+    // again when the reader writes and flushes its own messages.
+    std::fflush(nullptr);
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0)
         throw ExchangeError(file, std::string("cannot start its reader: ") + std::strerror(errno));

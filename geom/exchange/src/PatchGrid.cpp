@@ -4,11 +4,13 @@
 #include "geom/Curve.h"
 #include "geom/KnotRemoval.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace geom::exchange {
 
@@ -180,7 +182,7 @@ std::optional<Surface> makePeriodic(const Surface& surface, bool alongV, double 
     const std::size_t count = alongV ? surface.countV : surface.countU,
                       other = alongV ? surface.countU : surface.countV;
     const std::size_t period = count - std::size_t(degree);
-    if (!clamped(knots, degree) || period < std::size_t(degree) + 1) return std::nullopt;
+    if (!clamped(knots, degree) || period < std::size_t(degree)) return std::nullopt;
     std::vector<Curve> lines;
     std::vector<double> unclamped;
     for (std::size_t l = 0; l < other; ++l) {
@@ -209,14 +211,47 @@ std::optional<Surface> makePeriodic(const Surface& surface, bool alongV, double 
     return fromLines(surface, lines, alongV);
 }
 
+namespace {
+
+/// The affine map taking the pieces' poles into the unit box about the origin, and back. Knot
+/// removal's rational error bound divides the tolerance by 1 + |P|max (The NURBS Book A5.8), which
+/// far from the origin or at large sizes asks for less than the rounding of the poles; the join is
+/// affine invariant, so it runs on the normalised poles.
+struct UnitFrame {
+    glm::dvec3 centre{0.0};
+    double size = 1.0;
+
+    explicit UnitFrame(const std::vector<Surface>& pieces) {
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (const Surface& s : pieces)
+            for (const glm::dvec3& p : s.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        centre = 0.5 * (lo + hi);
+        const glm::dvec3 extent = hi - lo;
+        size = std::max({extent.x, extent.y, extent.z});
+        if (!(size > 0.0) || !std::isfinite(size)) size = 1.0;
+    }
+    Surface into(Surface s) const {
+        for (glm::dvec3& p : s.points) p = (p - centre) / size;
+        return s;
+    }
+    Surface outOf(Surface s) const {
+        for (glm::dvec3& p : s.points) p = p * size + centre;
+        return s;
+    }
+};
+
+}  // namespace
+
 std::optional<Surface> joinPatches(const std::vector<Surface>& pieces, double tolerance) {
     if (pieces.empty()) return std::nullopt;
+    const UnitFrame frame(pieces);
+    tolerance /= frame.size;
     std::vector<BezierSurfacePiece> cells;
     for (const Surface& s : pieces) {
         const Surface& first = pieces.front();
         if (s.degreeU != first.degreeU || s.degreeV != first.degreeV || s.rational() != first.rational())
             return std::nullopt;
-        for (auto& c : extractBezier(s)) cells.push_back(std::move(c));
+        for (auto& c : extractBezier(frame.into(s))) cells.push_back(std::move(c));
     }
     std::optional<Surface> joined = assemble(cells, tolerance);
     if (!joined) return std::nullopt;
@@ -229,7 +264,7 @@ std::optional<Surface> joinPatches(const std::vector<Surface>& pieces, double to
     }
     for (const bool alongV : {false, true})
         if (auto periodic = makePeriodic(s, alongV, tolerance)) s = std::move(*periodic);
-    return s;
+    return frame.outOf(std::move(s));
 }
 
 }  // namespace geom::exchange

@@ -1,0 +1,67 @@
+#include "StepReals.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace geom::exchange {
+
+namespace {
+
+bool wordCharacter(int c) {
+    return std::isalnum(c) != 0 || c == '_';
+}
+
+bool numberCharacter(int c) {
+    return std::isdigit(c) != 0 || c == '.' || c == '+' || c == '-' || c == 'E' || c == 'e';
+}
+
+/// Whether `token` (a run of number characters) is a real beyond the limit.
+bool outOfRange(const std::string& token) {
+    if (token.find('.') == std::string::npos || token.find_first_of("0123456789") == std::string::npos)
+        return false;  // an integer, or an enumeration's dots
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (end == token.c_str()) return false;
+    return errno == ERANGE ? std::abs(value) > 1.0 : !(std::abs(value) <= kStepRealLimit);
+}
+
+}  // namespace
+
+std::optional<std::string> firstOutOfRangeStepReal(std::istream& in) {
+    enum class State { Text, String, Comment } state = State::Text;
+    std::size_t line = 1;
+    int previous = ' ';
+    std::string token;
+    for (int c = in.get(); c != std::char_traits<char>::eof(); previous = c, c = in.get()) {
+        if (c == '\n') ++line;
+        if (state == State::String) {
+            if (c == '\'') state = State::Text;  // a doubled quote reopens at once
+            continue;
+        }
+        if (state == State::Comment) {
+            if (previous == '*' && c == '/') state = State::Text, c = ' ';
+            continue;
+        }
+        if (c == '\'') {
+            state = State::String;
+            continue;
+        }
+        if (previous == '/' && c == '*') {
+            state = State::Comment, c = ' ';
+            continue;
+        }
+        if (!numberCharacter(c) || wordCharacter(previous)) continue;
+        token.assign(1, char(c));
+        while (numberCharacter(in.peek()) && token.size() < 400) token += char(in.get());
+        if (outOfRange(token))
+            return "line " + std::to_string(line) + ": the real " + token.substr(0, 40) +
+                   " is out of range (beyond 1e100, which OpenCASCADE treats as infinite)";
+        c = token.back();
+    }
+    return std::nullopt;
+}
+
+}  // namespace geom::exchange

@@ -1,0 +1,19 @@
+#pragma once
+// The reals of a STEP file (ISO 10303-21) checked before OpenCASCADE reads it.
+
+#include <istream>
+#include <optional>
+#include <string>
+
+namespace geom::exchange {
+
+/// Reals beyond this are infinite to OpenCASCADE (Precision::Infinite is 2e100); a coordinate
+/// that large sends its shape healing into searches that do not end.
+inline constexpr double kStepRealLimit = 1e100;
+
+/// The first real of a STEP file's text beyond +-kStepRealLimit or out of double's range, as
+/// "line N: ..." naming it; nullopt when every real is within. Strings and comments are skipped;
+/// one pass, constant memory.
+std::optional<std::string> firstOutOfRangeStepReal(std::istream& in);
+
+}  // namespace geom::exchange
