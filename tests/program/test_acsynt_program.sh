@@ -39,6 +39,14 @@ run keepgoing 3 --script bad.session --keep-going --output out_keep --size 320x2
 last_line_is keepgoing.out "2 errors in bad.session"
 [ -f out_keep/after.txt ] || fail "keep-going: the run stopped early"
 
+# Lines no menu or device takes are errors too, each naming its line in the log.
+printf 'choice 0\nchoice FILE device 7\nstring hello\nchoice FILE\n' >ignored.session
+run ignored 3 --script ignored.session --keep-going --output out_ignored --size 320x240
+last_line_is ignored.out "3 errors in ignored.session"
+expect_in out_ignored/acsynt.log "ERROR: NO MENU ITEM CHOSEN (CHOICE 0): THE ITEMS ARE 1..8 (ignored.session line 1)"
+expect_in out_ignored/acsynt.log "ignored.session line 2: 'choice FILE device 7' reached no device"
+expect_in out_ignored/acsynt.log "ERROR: NO TEXT EXPECTED: 'hello' (ignored.session line 3)"
+
 # Files a script names stay inside --output.
 printf 'summary ../escaped\nsummary /tmp/acsynt_escaped_%s\nsummary inside\n' "$$" >escape.session
 run escape 3 --script escape.session --keep-going --output out_escape --size 320x240

@@ -365,6 +365,31 @@ TEST_CASE("numbered choices: `choice N` takes the Nth item of the menu shown") {
     CHECK(d.session.finished());
 }
 
+TEST_CASE("lines no menu or device takes are refused and counted, naming the line") {
+    // Choice 0 (PHIGS's NOCHOICE) chooses no item, and a device the workstation lacks reaches no
+    // device: each is an error of its own line, and the menu stays.
+    struct Case {
+        std::string line, says;
+    };
+    const std::vector<Case> cases{{"choice 0", "NO MENU ITEM CHOSEN (CHOICE 0): THE ITEMS ARE 1..8"},
+                                  {"choice FILE device 7", "reached no device"},
+                                  {"valuator 9 0.5", "reached no device"},
+                                  {"break", "'break' with no request pending"}};
+    for (const Case& c : cases) {
+        Driver d("refused_lines");
+        INFO(c.line);
+        d.run({c.line});
+        CHECK(d.session.failedLines() == 1);
+        CHECK(d.session.message().find(c.says) != std::string::npos);
+        CHECK(d.session.menuTitle() == "MAIN");
+        REQUIRE_FALSE(d.session.log().empty());
+        CHECK(d.session.log().back().rfind("ERROR: ", 0) == 0);
+        d.run({"choice FILE"});  // the session goes on
+        CHECK(d.session.menuTitle() == "FILE");
+        CHECK(d.session.failedLines() == 1);
+    }
+}
+
 TEST_CASE("a pick on a row of the menu panel chooses that item, as a click in a window does") {
     Driver d("menu_pick");
     auto pickItem = [&](const std::string& item) {

@@ -192,6 +192,11 @@ const Measure& WorkstationInput::sample(InputClass inputClass, int device) const
     return d.current;
 }
 
+void WorkstationInput::ignore(std::string message) {
+    ignored_.push_back(std::move(message));
+    if (ignoredHandler_) ignoredHandler_(ignored_.back());
+}
+
 Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) {
     const auto fail = [&](const std::string& reason) -> void {
         throw ScriptError(position() + ": '" + a.text + "': " + reason);
@@ -305,7 +310,7 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
             *result = {InputStatus::None, pending->current};
             return Pumped::Broke;
         }
-        ignored_.push_back(position() + ": 'break' with no request pending");
+        ignore(position() + ": 'break' with no request pending");
         return Pumped::Nothing;
     }
 
@@ -340,9 +345,8 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
         return Pumped::Nothing;
     }
     if (!reached)
-        ignored_.push_back(
-            position() + ": '" + a->text +
-            "' reached no device (none of its class waits in a request, sample or event mode)");
+        ignore(position() + ": '" + a->text +
+               "' reached no device (none of its class waits in a request, sample or event mode)");
     if (satisfied) return Pumped::Satisfied;
     return reached ? Pumped::Delivered : Pumped::Nothing;
 }

@@ -130,6 +130,9 @@ void Session::setupDevices() {
     core_.input = &core_.workstation->input();
     core_.input->setDirectiveHandler(
         [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
+    // A line no device takes (a device the workstation lacks, a break with nothing requested) is
+    // refused like any other, as it is read, naming its line; not dropped in silence.
+    core_.input->setIgnoredHandler([this](const std::string& message) { fail(message); });
 
     DeviceInitialisation pickSetup;
     pickSetup.initial = PickMeasure{};
@@ -265,7 +268,12 @@ std::string Session::messageLine() const {
 void Session::handle(const EventReport& report) {
     try {
         if (const auto* c = std::get_if<ChoiceMeasure>(&report.measure)) {
-            if (c->status != InputStatus::Ok) return;
+            if (c->status != InputStatus::Ok) {
+                fail(report.device == 1 ? "NO MENU ITEM CHOSEN (CHOICE 0): THE ITEMS ARE 1.." +
+                                              std::to_string(menuItems_.size())
+                                        : "NO PAD BUTTON CHOSEN (CHOICE 0)");
+                return;
+            }
             if (report.device == 1)
                 choose(menuItems_.at(std::size_t(c->choice - 1)));
             else if (report.device == 2)

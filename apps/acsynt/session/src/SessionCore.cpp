@@ -32,7 +32,11 @@ void SessionCore::fail(const std::string& text) {
     if (failedLines == 0 || action != lastFailedAction) ++failedLines;
     lastFailedAction = action;
     message = text;
-    log.push_back("ERROR: " + text);
+    // The log names the script line of every error (the input's own errors name it already).
+    const std::string where = input ? input->position() : "";
+    const bool scriptLine = where.find(" line ") != std::string::npos;
+    log.push_back("ERROR: " + text +
+                  (scriptLine && text.find(where) == std::string::npos ? " (" + where + ")" : ""));
 }
 
 double SessionCore::errorMapTop() const {

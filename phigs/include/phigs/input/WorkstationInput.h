@@ -76,8 +76,14 @@ public:
     }
     /// Actions that reached no device (no device of their class was waiting), as messages.
     const std::vector<std::string>& ignoredActions() const { return ignored_; }
+    /// Called with each such message as the action is taken (before the next one is read).
+    void setIgnoredHandler(std::function<void(const std::string&)> handler) {
+        ignoredHandler_ = std::move(handler);
+    }
     /// Every action taken from the source, in order (for recording a session).
     const std::vector<InputAction>& history() const { return history_; }
+    /// Where the source is (a script's "NAME line N"), for messages.
+    std::string position() const { return source_ ? source_->position() : "no source"; }
 
     /// Takes one action from the source (waiting at most `timeout`) and delivers it: sample
     /// devices take the new measure, event devices queue a report, a pending request of the
@@ -94,8 +100,7 @@ private:
     InputAction throughEcho(const InputAction& action) const;
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
-
-    std::string position() const { return source_ ? source_->position() : "no source"; }
+    void ignore(std::string message);
 
     int workstation_;
     InputSource* source_ = nullptr;
@@ -108,6 +113,7 @@ private:
     std::map<std::pair<InputClass, int>, InputDevice> devices_;
     std::function<void(const action::Directive&, const InputAction&)> directiveHandler_;
     std::vector<std::string> ignored_;
+    std::function<void(const std::string&)> ignoredHandler_;
     std::vector<InputAction> history_;
 };
 
