@@ -2070,6 +2070,10 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
     validate(surface, "reduceSurface");
     if (surface.rational())
         throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
+    if (direction != ReductionDirection::U && direction != ReductionDirection::V &&
+        direction != ReductionDirection::Both)
+        throw GeometryError("reduceSurface: direction " + std::to_string(static_cast<int>(direction)) +
+                            " is not U, V or Both");
     SurfaceReduction out;
     const Surface across = transposed(surface);
     SurfaceGrid grid;

@@ -278,6 +278,9 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
     options.samplesPerSpan = 8;
     options.freeKnotIterations = 1 << 30;
     REQUIRE_THROWS_WITH(reduceCurve(c, options), Catch::Contains("freeKnotIterations"));
+    options.freeKnotIterations = 16;
+    REQUIRE_THROWS_WITH(reduceSurface(validSurface(false), static_cast<ReductionDirection>(7), options),
+                        Catch::Contains("direction 7"));
     REQUIRE_THROWS_AS(uniformParameters(std::size_t{1} << 62), GeometryError);
     REQUIRE_THROWS_AS(iBeamCurve(std::size_t{1} << 40), GeometryError);
     REQUIRE_THROWS_AS(paraboloidSurface(std::size_t{1} << 33), GeometryError);
