@@ -477,6 +477,53 @@ TEST_CASE("a placed curve far larger than the surface is refused before any proj
     }
 }
 
+TEST_CASE("a straight side that cuts off a corner of the surface between samples is mapped",
+          "[geom][curvemap]") {
+    // Both ends of the side and its inner samples miss the surface; only the lines in between
+    // cross a corner. The chord's strip of lines meets a patch's box there, so it is refined.
+    const CurveMapper& mapper = wave();
+    Placement placement;
+    placement.reference = {5.0, 4.0};
+    const PlacementFrame frame = placementFrame(mapper.surface(), placement);
+    std::mt19937 rng(20261205);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int mapped = 0;
+    for (int member = 0; member < 40; ++member) {
+        // A corner of the wave (model x, y in [-5, 5]), the side cutting legs of length d off it,
+        // the third corner far outside.
+        const glm::dvec2 corner(unit(rng) < 0.5 ? -5.0 : 5.0, unit(rng) < 0.5 ? -5.0 : 5.0);
+        const glm::dvec2 inward = -glm::sign(corner);
+        const double d = 0.05 + 0.55 * unit(rng);
+        auto local = [&](glm::dvec2 xy) {
+            const glm::dvec3 c = frame.toCurve({xy.x, xy.y, 0.6});
+            return glm::dvec3(c.x, c.y, 0.0);
+        };
+        // pa and pb lie on the line through (d, 0) and (0, d) from the corner (inward axes), past
+        // the surface by random lengths, so that the samples fall anywhere along the side.
+        const double beyondA = 1.0 + 5.0 * unit(rng), beyondB = 1.0 + 5.0 * unit(rng);
+        const glm::dvec2 pa = corner + inward * glm::dvec2(d + beyondA, -beyondA);
+        const glm::dvec2 pb = corner + inward * glm::dvec2(-beyondB, d + beyondB);
+        const Curve triangle = polygonCurve({local(pa), local(pb), local(corner - 8.0 * inward)});
+        int hits = 0;
+        for (int k = 0; k < 4000; ++k) {
+            const double s =
+                triangle.domainStart() + (triangle.domainEnd() - triangle.domainStart()) * k / 4000.0;
+            if (!intersectLine(mapper.surface(), frame.toModel(evaluate(triangle, s)), frame.z).empty())
+                ++hits;
+        }
+        const MapResult r = mapper.map({triangle}, placement, {1e-3});
+        INFO("member " << member << ": corner " << corner.x << " " << corner.y << ", d " << d << ", hits "
+                       << hits);
+        REQUIRE(r.parts.size() == 1);
+        CHECK((hits > 0) == !r.parts[0].loops.empty());
+        if (hits > 0) {
+            ++mapped;
+            CHECK(std::abs(totalArea(r.parts[0])) > 0.0);
+        }
+    }
+    CHECK(mapped > 20);
+}
+
 TEST_CASE("refinement stops at the projection budget and says so", "[geom][curvemap][limits]") {
     const std::vector<Curve> logo = loadCurves("acslogo.crv");
     MapOptions options{1e-9};

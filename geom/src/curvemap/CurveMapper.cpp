@@ -1,5 +1,7 @@
 #include "geom/curvemap/CurveMapper.h"
 
+#include "ProjectedBoxes.h"
+
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 
@@ -158,7 +160,8 @@ public:
           curve_(curve),
           options_(options),
           out_(out),
-          boundary_(domain) {}
+          boundary_(domain),
+          boxes_(intersector.tree(), frame) {}
 
     void run();
 
@@ -189,6 +192,7 @@ private:
     const MapOptions& options_;
     MappedPart& out_;
     Boundary boundary_;
+    ProjectedBoxes boxes_;
     bool budgetSpent_ = false;  ///< refinement stopped at options_.maxProjections
 };
 
@@ -216,7 +220,12 @@ bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b, d
     const double tol = options_.tolerance;
     if (distanceToSegment(m.local, a.local, b.local) > tol) return true;  // the plane curve's own bend
     if (a.hit != b.hit) return glm::length(a.from - b.from) > tol;        // bracket the crossing tightly
-    if (!a.hit) return m.hit;
+    if (!a.hit) {
+        // Both ends and the inner samples miss; the lines between may still cut a corner of the
+        // surface's outline: split while the chord's strip of lines meets a patch's box.
+        const glm::dvec2 p(a.local), q(b.local);
+        return m.hit || (glm::length(q - p) > tol && boxes_.mayMeet(p, q, tol));
+    }
     if (!m.hit) return true;
     if (distanceToSegment(m.point, a.point, b.point) > tol) return true;  // the mapped curve's bend
     // A jump to another sheet (the nearest hit switching surfaces) puts the inner sample near one
