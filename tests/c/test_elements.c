@@ -266,8 +266,9 @@ static void transforms_and_clipping(void) {
 }
 
 /* Index attributes below their ISO range are refused with the standard's error and store
- * nothing: bundle indices from 1 (100), pattern indices from 1 (112), colour indices from 0 (113),
- * view indices from 0 (114), depth cue (119) and colour mapping indices (121) from 0. */
+ * nothing: bundle indices from 1 (100), colour indices from 0 (113), view indices from 0 (114),
+ * depth cue (119) and colour mapping indices (121) from 0. Interior style indices, hatch indices
+ * too, may be anything (checked when drawn). */
 static void index_ranges(void) {
     static const struct {
         void (*set)(Pint);
@@ -278,8 +279,6 @@ static void index_ranges(void) {
         {pset_text_ind, Pfn_set_text_ind, 1, 100},
         {pset_int_ind, Pfn_set_int_ind, 1, 100},
         {pset_edge_ind, Pfn_set_edge_ind, 1, 100},
-        {pset_int_style_ind, Pfn_set_int_style_ind, 1, 112},
-        {pset_back_int_style_ind, Pfn_set_back_int_style_ind, 1, 112},
         {pset_line_colr_ind, Pfn_set_line_colr_ind, 0, 113},
         {pset_marker_colr_ind, Pfn_set_marker_colr_ind, 0, 113},
         {pset_text_colr_ind, Pfn_set_text_colr_ind, 0, 113},
@@ -301,6 +300,9 @@ static void index_ranges(void) {
         }
     }
     EXPECT_REFUSED(pset_int_colr(&(Pgcolr){PINDIRECT, {.ind = -1}}), 113, Pfn_set_int_colr);
+    EXPECT_NO_ERROR(pset_int_style_ind(-2));
+    EXPECT_NO_ERROR(pset_back_int_style_ind(0));
+    n_elem += 2;
 }
 
 static void refusals(void) {

@@ -4,7 +4,6 @@
 
 #include "phigs/store/Element.h"
 
-#include <algorithm>
 #include <random>
 
 namespace phigs::testing {
@@ -129,7 +128,7 @@ inline Element randomElement(std::mt19937& rng, int self, int maxId) {
             const int lowest = type == T::PolylineIndex                           ? 1
                                : type == T::ViewIndex || type == T::DepthCueIndex ? 0
                                                                                   : -3;
-            return IndexAttribute{type, std::max(lowest, randomInt(rng, -3, 9))};
+            return IndexAttribute{type, randomInt(rng, lowest, 9)};
         }
         case 13:
             return RealAttribute{randomInt(rng, 0, 1) ? T::CharacterHeight : T::LinewidthScaleFactor,

@@ -284,8 +284,7 @@ TEST_CASE("input devices: an overflowed queue takes events again once AWAIT EVEN
 TEST_CASE("input devices: the overflow of a workstation closed since is error 258", "[input]") {
     FakeMeasurer measurer;
     InputQueue queue(1);
-    ScriptInputSource first("choice 1\nchoice 2\n", "a.txt"), second("choice 5\n", "b.txt");
-    WorkstationInput kept(2, second, measurer, queue);
+    ScriptInputSource first("choice 1\nchoice 2\n", "a.txt");
     {
         WorkstationInput closing(1, first, measurer, queue);
         closing.setMode(InputClass::Choice, 1, OperatingMode::Event);

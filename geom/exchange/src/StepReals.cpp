@@ -17,10 +17,12 @@ bool numberCharacter(int c) {
     return std::isdigit(c) != 0 || c == '.' || c == '+' || c == '-' || c == 'E' || c == 'e';
 }
 
-/// Whether `token` (a run of number characters) is a real beyond the limit.
+/// Longer numbers are refused outright (OpenCASCADE reads integers as reals too).
+constexpr std::size_t kMaxNumberLength = 1 << 12;
+
+/// Whether `token` (a run of number characters) is a number beyond the limit.
 bool outOfRange(const std::string& token) {
-    if (token.find('.') == std::string::npos || token.find_first_of("0123456789") == std::string::npos)
-        return false;  // an integer, or an enumeration's dots
+    if (token.find_first_of("0123456789") == std::string::npos) return false;  // an enumeration's dots
     errno = 0;
     char* end = nullptr;
     const double value = std::strtod(token.c_str(), &end);
@@ -55,7 +57,10 @@ std::optional<std::string> firstOutOfRangeStepReal(std::istream& in) {
         }
         if (!numberCharacter(c) || wordCharacter(previous)) continue;
         token.assign(1, char(c));
-        while (numberCharacter(in.peek()) && token.size() < 400) token += char(in.get());
+        while (numberCharacter(in.peek()) && token.size() <= kMaxNumberLength) token += char(in.get());
+        if (token.size() > kMaxNumberLength)
+            return "line " + std::to_string(line) + ": a number of more than " +
+                   std::to_string(kMaxNumberLength) + " characters";
         if (outOfRange(token))
             return "line " + std::to_string(line) + ": the real " + token.substr(0, 40) +
                    " is out of range (beyond 1e100, which OpenCASCADE treats as infinite)";

@@ -11,9 +11,10 @@ namespace geom::exchange {
 /// that large sends its shape healing into searches that do not end.
 inline constexpr double kStepRealLimit = 1e100;
 
-/// The first real of a STEP file's text beyond +-kStepRealLimit or out of double's range, as
-/// "line N: ..." naming it; nullopt when every real is within. Strings and comments are skipped;
-/// one pass, constant memory.
+/// The first number of a STEP file's text (a real, or an integer, which OpenCASCADE also reads
+/// as a real) beyond +-kStepRealLimit or out of double's range, or longer than 4096 characters,
+/// as "line N: ..." naming it; nullopt when every number is within. Strings and comments are
+/// skipped; one pass, bounded memory.
 std::optional<std::string> firstOutOfRangeStepReal(std::istream& in);
 
 }  // namespace geom::exchange

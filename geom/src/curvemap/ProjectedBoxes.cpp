@@ -47,6 +47,7 @@ bool ProjectedBoxes::mayMeet(const glm::dvec2& p, const glm::dvec2& q, double pa
 bool ProjectedBoxes::meets(int node, const glm::dvec2& p, const glm::dvec2& q, double pad) const {
     // Slabs: the parameter interval of the segment inside the widened box, axis by axis.
     const Box& b = boxes_[std::size_t(node)];
+    if (!(b.lo.x <= b.hi.x && b.lo.y <= b.hi.y)) return false;  // no patch under it
     double t0 = 0.0, t1 = 1.0;
     for (int axis = 0; axis < 2; ++axis) {
         const double lo = b.lo[axis] - pad, hi = b.hi[axis] + pad, d = q[axis] - p[axis];

@@ -310,7 +310,8 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
             *result = {InputStatus::None, pending->current};
             return Pumped::Broke;
         }
-        ignore(position() + ": 'break' with no request pending");
+        // Not handed to the ignored handler: Escape in a window is a break, and cancels quietly.
+        ignored_.push_back(position() + ": 'break' with no request pending");
         return Pumped::Nothing;
     }
 

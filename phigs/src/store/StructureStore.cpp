@@ -15,9 +15,10 @@ struct IndexRange {
     int value = 0;
 };
 
-/// Bundle indices from 1 (error 100), pattern indices from 1 (112), colour indices from 0 (113),
-/// view indices from 0 (114), depth cue indices from 0 (119) and colour mapping indices from 0
-/// (121). Other indices (linetype, font, ...) are checked against the workstation when drawn.
+/// Bundle indices from 1 (error 100), colour indices from 0 (113), view indices from 0 (114),
+/// depth cue indices from 0 (119) and colour mapping indices from 0 (121). Other indices
+/// (linetype, font, the interior style index, which is also a hatch index, ...) are checked
+/// against the workstation when drawn.
 IndexRange indexRangeError(const Element& e) {
     if (const auto* c = std::get_if<ColourAttribute>(&e))
         return !c->colour.direct && c->colour.index < 0
@@ -33,9 +34,6 @@ IndexRange indexRangeError(const Element& e) {
         case T::InteriorIndex:
         case T::EdgeIndex:
             return a->value < 1 ? IndexRange{errors::BundleIndexBelowOne, a->value} : IndexRange{};
-        case T::InteriorStyleIndex:
-        case T::BackInteriorStyleIndex:
-            return a->value < 1 ? IndexRange{errors::PatternIndexBelowOne, a->value} : IndexRange{};
         case T::ViewIndex:
             return a->value < 0 ? IndexRange{errors::ViewIndexBelowZero, a->value} : IndexRange{};
         case T::DepthCueIndex:

@@ -130,8 +130,8 @@ void Session::setupDevices() {
     core_.input = &core_.workstation->input();
     core_.input->setDirectiveHandler(
         [this](const action::Directive& d, const InputAction& a) { directive(d, a); });
-    // A line no device takes (a device the workstation lacks, a break with nothing requested) is
-    // refused like any other, as it is read, naming its line; not dropped in silence.
+    // A line no device takes (a device the workstation lacks) is refused like any other, as it is
+    // read, naming its line; not dropped in silence.
     core_.input->setIgnoredHandler([this](const std::string& message) { fail(message); });
 
     DeviceInitialisation pickSetup;

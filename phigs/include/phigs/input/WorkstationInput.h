@@ -76,7 +76,8 @@ public:
     }
     /// Actions that reached no device (no device of their class was waiting), as messages.
     const std::vector<std::string>& ignoredActions() const { return ignored_; }
-    /// Called with each such message as the action is taken (before the next one is read).
+    /// Called with each such message as the action is taken (before the next one is read); a
+    /// break with no request pending is noted but not handed to it.
     void setIgnoredHandler(std::function<void(const std::string&)> handler) {
         ignoredHandler_ = std::move(handler);
     }
