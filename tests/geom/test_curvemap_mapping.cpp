@@ -567,4 +567,37 @@ TEST_CASE("curves of every degree and rational circles map validly, whatever the
     }
 }
 
+TEST_CASE("a closed curve that starts next to the boundary crosses it inside its own domain",
+          "[geom][curvemap]") {
+    // The exact boundary crossing is a Newton search in the curve parameter too; near the curve's
+    // first (and last) parameter a step must not leave the curve's domain.
+    std::mt19937 rng(5122026);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const SurfaceDomain& d = wave().domain();
+    int crossed = 0;
+    for (int member = 0; member < 60; ++member) {
+        // A circle whose start point (parameter 0 and 1) lies within 1e-3 of the placement's
+        // reference, which sits on one of the four edges.
+        const double radius = 0.3 + 3.0 * unit(rng), offset = 2e-3 * (unit(rng) - 0.5);
+        const double angle = 2.0 * std::numbers::pi * unit(rng);
+        const glm::dvec3 toCentre(std::cos(angle), std::sin(angle), 0.0);
+        const glm::dvec3 start(offset, 0.0, 0.0);
+        const glm::dvec3 side(-toCentre.y, toCentre.x, 0.0);
+        const Curve circle = makeCircle(start + radius * toCentre, -toCentre, side, radius);
+        const double along = unit(rng);
+        const glm::dvec2 edge[4] = {{d.u0, d.w0 + along * (d.w1 - d.w0)},
+                                    {d.u1, d.w0 + along * (d.w1 - d.w0)},
+                                    {d.u0 + along * (d.u1 - d.u0), d.w0},
+                                    {d.u0 + along * (d.u1 - d.u0), d.w1}};
+        const glm::dvec2 reference = edge[rng() % 4];
+        const Placement p = at(reference.x, reference.y, static_cast<int>(rng() % 4), rng() % 2 == 1);
+        INFO("member " << member << ": radius " << radius << ", angle " << angle << ", offset " << offset);
+        MapResult r;
+        REQUIRE_NOTHROW(r = wave().map({circle}, p, {1e-3}));
+        checkMapping(wave(), r, {circle});
+        if (r.parts[0].exits > 0) ++crossed;
+    }
+    CHECK(crossed > 30);
+}
+
 }  // namespace test_curvemap_mapping

@@ -1,5 +1,6 @@
 #include "geom/curvemap/CurveMapper.h"
 
+#include "Creases.h"
 #include "ProjectedBoxes.h"
 
 #include "geom/Evaluate.h"
@@ -9,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -161,7 +163,8 @@ public:
           options_(options),
           out_(out),
           boundary_(domain),
-          boxes_(intersector.tree(), frame) {}
+          boxes_(intersector.tree(), frame),
+          creases_(surface, domain) {}
 
     void run();
 
@@ -170,6 +173,8 @@ private:
     bool needsSplit(const Sample& a, const Sample& m, const Sample& b, double fraction) const;
     bool jumps(const Sample& a, const Sample& b) const;
     void refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples);
+    bool foldsBetween(const Sample& a, const Sample& b) const;
+    bool subChordStrays(const std::array<Sample, 4>& q, int piece) const;
     bool crossing(const Sample& inside, const Sample& outside, Vertex& vertex, BoundaryPosition& where);
     std::vector<Vertex> boundaryWalk(int component, double from, double length) const;
     void densifyWalk(int component, double a, double b, int depth, std::vector<Vertex>& out) const;
@@ -193,6 +198,7 @@ private:
     MappedPart& out_;
     Boundary boundary_;
     ProjectedBoxes boxes_;
+    Creases creases_;
     bool budgetSpent_ = false;  ///< refinement stopped at options_.maxProjections
 };
 
@@ -247,6 +253,42 @@ bool PartMapper::jumps(const Sample& a, const Sample& b) const {
     return a.hit && b.hit && step > 10.0 * options_.tolerance && step > 100.0 * glm::length(b.from - a.from);
 }
 
+bool PartMapper::foldsBetween(const Sample& a, const Sample& b) const {
+    // Across a crease the mapped curve may kink anywhere between two samples, where neither
+    // inner sample need see it: such a pair is kept shorter than a quarter of the tolerance.
+    return a.hit && b.hit && glm::length(b.point - a.point) > 0.25 * options_.tolerance &&
+           creases_.crossed(a.uv, domain_.unwrapNear(b.uv, a.uv));
+}
+
+bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const {
+    // The cubic through the four samples (at thirds of the interval) predicts the mapped point and
+    // its (u, w) halfway along one of the three sub-chords; the sub-chord and the surface image of
+    // its straight (u, w) segment must both stay within the tolerance of the prediction.
+    const double x = (piece + 0.5) / 3.0;
+    const std::array<double, 4> nodes{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
+    glm::dvec3 point(0.0);
+    glm::dvec2 uv(0.0);
+    for (std::size_t i = 0; i < 4; ++i) {
+        double weight = 1.0;
+        for (std::size_t j = 0; j < 4; ++j)
+            if (j != i) weight *= (x - nodes[j]) / (nodes[i] - nodes[j]);
+        point += weight * q[i].point;
+        uv += weight * domain_.unwrapNear(q[i].uv, q[0].uv);
+    }
+    const Sample &a = q[static_cast<std::size_t>(piece)], &b = q[static_cast<std::size_t>(piece) + 1];
+    const double tol = options_.tolerance;
+    if (distanceToSegment(point, a.point, b.point) > tol) return true;
+    const glm::dvec2 ua = domain_.unwrapNear(a.uv, q[0].uv), d = domain_.unwrapNear(b.uv, ua) - ua;
+    const double len2 = glm::dot(d, d);
+    const double lambda = len2 > 0.0 ? std::clamp(glm::dot(uv - ua, d) / len2, 0.0, 1.0) : 0.0;
+    if (glm::length(pointAt(ua + lambda * d) - point) > tol) return true;
+    // Across a knot line a steep parametrisation (wide weights) bends the image away from the
+    // chord between the predicted points too; surface points cost far less than projections.
+    for (int k = 1; k < 4; ++k)
+        if (distanceToSegment(pointAt(ua + (k / 4.0) * d), a.point, b.point) > tol) return true;
+    return false;
+}
+
 void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector<Sample>& samples) {
     // Two inner samples at the thirds: one midpoint alone misses an S-bend (an inflection
     // between the ends puts the middle back on the chord).
@@ -255,17 +297,24 @@ void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector
         samples.push_back(b);
         return;
     }
-    const Sample m1 = project(a.s + (b.s - a.s) / 3.0);
-    const Sample m2 = project(a.s + 2.0 * (b.s - a.s) / 3.0);
-    if (depth < options_.maxDepth && (needsSplit(a, m1, b, 1.0 / 3.0) || needsSplit(a, m2, b, 2.0 / 3.0))) {
-        refine(a, m1, depth + 1, samples);
-        refine(m1, m2, depth + 1, samples);
-        refine(m2, b, depth + 1, samples);
+    const std::array<Sample, 4> q{a, project(a.s + (b.s - a.s) / 3.0), project(a.s + 2.0 * (b.s - a.s) / 3.0),
+                                  b};
+    const bool deeper = depth < options_.maxDepth;
+    if (deeper && (needsSplit(a, q[1], b, 1.0 / 3.0) || needsSplit(a, q[2], b, 2.0 / 3.0) ||
+                   foldsBetween(a, q[1]) || foldsBetween(q[1], q[2]) || foldsBetween(q[2], b))) {
+        for (std::size_t i = 0; i < 3; ++i) refine(q[i], q[i + 1], depth + 1, samples);
         return;
     }
-    samples.push_back(m1);
-    samples.push_back(m2);
-    samples.push_back(b);
+    // The sub-chords are what is emitted: one the prediction says strays is refined on its own.
+    const bool smooth = deeper && std::all_of(q.begin(), q.end(), [](const Sample& x) { return x.hit; }) &&
+                        !creases_.crossed(a.uv, domain_.unwrapNear(b.uv, a.uv));
+    for (int piece = 0; piece < 3; ++piece) {
+        const auto i = static_cast<std::size_t>(piece);
+        if (smooth && subChordStrays(q, piece))
+            refine(q[i], q[i + 1], depth + 1, samples);
+        else
+            samples.push_back(q[i + 1]);
+    }
 }
 
 bool PartMapper::crossing(const Sample& inside, const Sample& outside, Vertex& vertex,
@@ -292,7 +341,8 @@ bool PartMapper::crossing(const Sample& inside, const Sample& outside, Vertex& v
             const glm::dmat3 jac(-dp, stau, -frame_.z);
             if (std::abs(glm::determinant(jac)) < 1e-300) break;
             const glm::dvec3 step = glm::inverse(jac) * (-f);
-            s = std::clamp(s + step.x, sLo - 0.5 * (sHi - sLo), sHi + 0.5 * (sHi - sLo));
+            s = std::clamp(s + step.x, std::max(sLo - 0.5 * (sHi - sLo), curve_.domainStart()),
+                           std::min(sHi + 0.5 * (sHi - sLo), curve_.domainEnd()));
             tau += step.y;
             const bool closedTau = e.constantU ? domain_.closedW : domain_.closedU;
             if (!closedTau) tau = std::clamp(tau, e.tau0, e.tau1);
