@@ -277,15 +277,18 @@ bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const
     }
     const Sample &a = q[static_cast<std::size_t>(piece)], &b = q[static_cast<std::size_t>(piece) + 1];
     const double tol = options_.tolerance;
-    if (distanceToSegment(point, a.point, b.point) > tol) return true;
+    const double bow = distanceToSegment(point, a.point, b.point);  // of the mapped curve from the chord
+    if (bow > tol) return true;
     const glm::dvec2 ua = domain_.unwrapNear(a.uv, q[0].uv), d = domain_.unwrapNear(b.uv, ua) - ua;
     const double len2 = glm::dot(d, d);
     const double lambda = len2 > 0.0 ? std::clamp(glm::dot(uv - ua, d) / len2, 0.0, 1.0) : 0.0;
     if (glm::length(pointAt(ua + lambda * d) - point) > tol) return true;
     // Across a knot line a steep parametrisation (wide weights) bends the image away from the
     // chord between the predicted points too; surface points cost far less than projections.
-    for (int k = 1; k < 4; ++k)
-        if (distanceToSegment(pointAt(ua + (k / 4.0) * d), a.point, b.point) > tol) return true;
+    // The image's distance from the mapped curve is at most its distance from the chord plus the
+    // curve's bow.
+    for (int k = 1; k < 8; ++k)
+        if (distanceToSegment(pointAt(ua + (k / 8.0) * d), a.point, b.point) + bow > tol) return true;
     return false;
 }
 
