@@ -229,7 +229,8 @@ static void events(void) {
 
 /* 70 valuator events queued without AWAIT EVENT (each SAMPLE delivers one line): the queue
  * holds 64, then overflows (warning 256, once: it takes nothing more until AWAIT EVENT finds it
- * empty) and INQUIRE INPUT QUEUE OVERFLOW names the device. */
+ * empty) and INQUIRE INPUT QUEUE OVERFLOW names the device, also after another script is
+ * attached (only closing the workstation removes its events). */
 static void overflow(void) {
     static char script[70 * 20 + 1];
     script[0] = '\0';
@@ -244,12 +245,16 @@ static void overflow(void) {
         warnings += error_count == 1 && error_numbers[0] == 256 && error_functions[0] == Pfn_sample_val;
     }
     CHECK(warnings == 1);
+    /* Another script on the open workstation keeps its queued events and the overflow. */
+    attach("wait\n");
     Pint err = -1, ws = -1, number = -1;
     Pin_class in_class = PIN_NONE;
     pinq_in_overf(&err, &ws, &in_class, &number);
     CHECK(err == 0 && ws == WS && in_class == PIN_VAL && number == 4);
     pinq_in_overf(&err, &ws, &in_class, &number);
     CHECK(err == 257);
+    EXPECT_NO_ERROR(pawait_event(0, &ws, &in_class, &number));
+    CHECK(in_class == PIN_VAL && number == 4);
     EXPECT_NO_ERROR(pflush_events(WS, PIN_VAL, 4));
 }
 

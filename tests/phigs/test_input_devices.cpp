@@ -297,6 +297,63 @@ TEST_CASE("input devices: the overflow of a workstation closed since is error 25
     CHECK(errorOf([&] { queue.inquireOverflow(); }) == 257);  // 258 cleared it
 }
 
+TEST_CASE("input devices: every choice device refuses choices beyond its alternatives", "[input]") {
+    // Numbered alternatives (no strings) end at the workstation's most, named ones at their count;
+    // both for INITIALIZE (261) and for what the source sends (the action's error).
+    std::mt19937 rng(5122026);
+    for (int round = 0; round < 40; ++round) {
+        const int named = static_cast<int>(rng() % 4) == 0 ? 0 : 1 + static_cast<int>(rng() % 70);
+        DeviceInitialisation c;
+        for (int i = 0; i < named; ++i) c.choiceStrings.push_back("alternative " + std::to_string(i + 1));
+        const int count = named == 0 ? kMaxChoiceAlternatives : named;
+        const int beyond = count + 1 + static_cast<int>(rng() % 1000);
+        INFO("round " << round << ": " << count << " alternatives, choice " << beyond);
+        Rig r("choice " + std::to_string(count) + "\nchoice " + std::to_string(beyond) + "\n");
+        c.initial = ChoiceMeasure{InputStatus::Ok, beyond};
+        CHECK(errorOf([&] { r.input.initialise(InputClass::Choice, 1, c); }) == 261);
+        c.initial = ChoiceMeasure{InputStatus::Ok, count};
+        r.input.initialise(InputClass::Choice, 1, c);
+        CHECK(std::get<ChoiceMeasure>(r.input.request(InputClass::Choice, 1).second).choice == count);
+        CHECK_THROWS_WITH(r.input.request(InputClass::Choice, 1),
+                          Contains("line 2") && Contains("alternatives 1.." + std::to_string(count)));
+    }
+}
+
+TEST_CASE("input devices: a new source on the same queue keeps the queued events and overflow", "[input]") {
+    // Only leaving the queue (closing the workstation) removes its events; attaching another
+    // script to an open workstation must not.
+    std::mt19937 rng(20261205);
+    for (int round = 0; round < 60; ++round) {
+        const std::size_t capacity = 1 + rng() % 8;
+        const int lines = static_cast<int>(rng() % 12);
+        std::string script;
+        for (int i = 0; i < lines; ++i) script += "choice " + std::to_string(1 + i) + "\n";
+        Rig r(script, capacity);
+        r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);
+        for (int i = 0; i < lines; ++i) r.input.pump(0ms);
+        const std::size_t queued = r.queue.size();
+        INFO("round " << round << ": capacity " << capacity << ", " << lines << " events");
+        REQUIRE(queued == std::min<std::size_t>(capacity, std::size_t(lines)));
+        ScriptInputSource next("choice 50\n", "next.txt");
+        r.input.connect(next, r.queue);
+        CHECK(r.queue.size() == queued);
+        if (std::size_t(lines) > capacity) {
+            const QueueOverflow o = r.queue.inquireOverflow();  // not 258: the workstation is open
+            CHECK(o.workstation == 1);
+            CHECK(o.device == 1);
+        }
+        for (std::size_t i = 0; i < queued; ++i) {
+            const auto event = r.queue.awaitEvent(0ms);
+            REQUIRE(event);
+            CHECK(std::get<ChoiceMeasure>(event->measure).choice == int(i) + 1);
+        }
+        // Then the new source's line.
+        const auto last = r.queue.awaitEvent(0ms);
+        REQUIRE(last);
+        CHECK(std::get<ChoiceMeasure>(last->measure).choice == 50);
+    }
+}
+
 TEST_CASE("input devices: FLUSH DEVICE EVENTS removes one device's reports", "[input]") {
     Rig r("choice 1\nvaluator 1 0.5\nchoice 2 device 2\nchoice 3\n");
     r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);

@@ -6,6 +6,7 @@
 
 #include "Binding.h"
 #include "phigs.h"
+#include "phigs/input/InputDevice.h"
 #include "phigs/input/ScriptInputSource.h"
 
 #include <map>
@@ -28,7 +29,7 @@ inline constexpr int kEchoAreaOutside = 255;                ///< echo area/volum
 inline constexpr int kBadViewIndex = 114;                   ///< view index less than zero
 /// The largest stroke and string buffers and the most choice alternatives a device takes.
 inline constexpr int kMaxBuffer = 4096;
-inline constexpr int kMaxChoices = 64;
+inline constexpr int kMaxChoices = kMaxChoiceAlternatives;
 
 /// One device's C data record as INITIALIZE gave it (what the core does not keep itself).
 struct DeviceRecord {

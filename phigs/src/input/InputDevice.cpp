@@ -54,9 +54,7 @@ int validateInitialisation(InputClass inputClass, const DeviceInitialisation& se
         }
         case InputClass::Choice: {
             const auto& c = std::get<ChoiceMeasure>(setup.initial);
-            if (c.status == InputStatus::Ok &&
-                (c.choice < 1 ||
-                 (!setup.choiceStrings.empty() && c.choice > static_cast<int>(setup.choiceStrings.size())))) {
+            if (c.status == InputStatus::Ok && (c.choice < 1 || c.choice > choiceAlternatives(setup))) {
                 reason = "initial choice " + std::to_string(c.choice) + " is not one of the alternatives";
                 return 261;
             }

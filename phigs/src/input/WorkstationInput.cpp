@@ -61,10 +61,14 @@ WorkstationInput::~WorkstationInput() {
 }
 
 void WorkstationInput::connect(InputSource& source, InputQueue& queue) {
-    disconnect();
+    // A new source on the same queue leaves the queued events and any overflow as they are: only
+    // leaving the queue (closing the workstation) removes them.
+    if (queue_ != &queue) {
+        disconnect();
+        queue_ = &queue;
+        queue_->attach(*this);
+    }
     source_ = &source;
-    queue_ = &queue;
-    queue_->attach(*this);
     echoEdits_ = source_->stringEcho().edits;
     source_->setEchoLayout(echoLayout());
 }
@@ -230,9 +234,9 @@ Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) 
                     choice = static_cast<int>(it - names.begin()) + 1;
                 }
                 if (choice == 0) return ChoiceMeasure{InputStatus::None, 0};
-                if (choice < 0 || (!names.empty() && choice > static_cast<int>(names.size())))
+                if (choice < 0 || choice > choiceAlternatives(device.setup))
                     fail("CHOICE " + std::to_string(device.number) + " has alternatives 1.." +
-                         std::to_string(names.size()));
+                         std::to_string(choiceAlternatives(device.setup)));
                 return ChoiceMeasure{InputStatus::Ok, choice};
             } else if constexpr (std::is_same_v<T, action::String>) {
                 std::string text = w.text;

@@ -14,13 +14,23 @@ struct DeviceInitialisation {
     Measure initial;
     int promptEchoType = 1;
     EchoVolume echoVolume{0, 1, 0, 1, 0, 1};
-    double valuatorLow = 0.0;                   ///< valuator data record
-    double valuatorHigh = 1.0;                  ///< valuator data record
-    std::vector<std::string> choiceStrings;     ///< choice alternatives, 1-based in measures
+    double valuatorLow = 0.0;   ///< valuator data record
+    double valuatorHigh = 1.0;  ///< valuator data record
+    /// Choice alternatives, 1-based in measures; empty: kMaxChoiceAlternatives numbered ones.
+    std::vector<std::string> choiceStrings;
     std::size_t bufferSize = 256;               ///< stroke: points; string: characters
     PathOrder pathOrder = PathOrder::TopFirst;  ///< pick
     double pickAperture = 0.01;                 ///< pick: half-size of the aperture in NPC
 };
+
+/// The most alternatives a choice device has (its workstation description's maximum).
+inline constexpr int kMaxChoiceAlternatives = 64;
+
+/// The number of alternatives a choice device initialised with `setup` offers.
+inline int choiceAlternatives(const DeviceInitialisation& setup) {
+    return setup.choiceStrings.empty() ? kMaxChoiceAlternatives
+                                       : static_cast<int>(setup.choiceStrings.size());
+}
 
 /// The state of one logical input device: its class and number, mode, echo switch and what it
 /// was initialised with, its pick filter, and its current measure (for SAMPLE).

@@ -35,7 +35,8 @@ public:
     const DeviceCounts& counts() const { return counts_; }
 
     /// Actions now come from `source` (it gets the echo layout) and event reports go to `queue`;
-    /// both outlive the connection (a queue that goes first disconnects it).
+    /// both outlive the connection (a queue that goes first disconnects it). A new source on the
+    /// same queue keeps this workstation's queued events and overflow; another queue drops them.
     void connect(InputSource& source, InputQueue& queue);
     /// Drops the connection; the devices keep their modes and measures.
     void disconnect();
