@@ -249,6 +249,60 @@ TEST_CASE("pick tree: a workstation's pick device traverses again only when some
     CHECK(ws.pickTraversals() == 2);
 }
 
+TEST_CASE("pick tree: a deferred view change is picked as shown, before and after it is shown",
+          "[pick][tree][wiring]") {
+    // While a change waits (ASTI or WAIT, NIVE), pick sees the picture on the display; once UPDATE
+    // WORKSTATION, REDRAW or the switch to ASAP shows it, pick sees the new picture.
+    std::mt19937 rng(5122026);
+    std::uniform_real_distribution<double> corner(0.05, 0.35), shift(0.3, 0.5);
+    for (int round = 0; round < 30; ++round) {
+        Phigs phigs;
+        phigs.open();
+        auto& store = phigs.store();
+        const double a = corner(rng), b = a + 0.2;
+        store.openStructure(1);
+        store.insert(viewIndex(1));
+        store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
+        store.insert(addNamesToSet({1}));
+        store.insert(pickId(5));
+        store.insert(fillArea3({{a, a, 0}, {b, a, 0}, {b, b, 0}, {a, b, 0}}));
+        store.closeStructure();
+        Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+        ws.setViewRepresentation(1, ViewRepresentation{});
+        ws.postStructure(1, 0.5);
+        ws.setDeferralState(rng() % 2 == 0 ? DeferralMode::Asti : DeferralMode::Wait, ModificationMode::Nive);
+        ws.display();
+        ws.input().setPickFilter(1, {1}, {});
+        const glm::dvec2 t(shift(rng), shift(rng));
+        // The centres of the square before and after the move, as pixels of the 1024 x 768 display
+        // (768 per NPC unit, y down).
+        auto pixel = [](glm::dvec2 npc) {
+            return std::to_string(npc.x * 768.0) + " " + std::to_string(768.0 - npc.y * 768.0);
+        };
+        const std::string before = "pick " + pixel(glm::dvec2(a + 0.1)) + "\n";
+        const std::string after = "pick " + pixel(glm::dvec2(a + 0.1) + t) + "\n";
+        ScriptInputSource script(before + before + after + before + after, "picks");
+        InputQueue queue;
+        ws.connectInput(script, queue);
+        auto picked = [&] { return ws.input().request(InputClass::Pick, 1).first == InputStatus::Ok; };
+        const int show = static_cast<int>(rng() % 3);
+        INFO("round " << round << ": corner " << a << ", move " << t.x << " " << t.y << ", shown by "
+                      << show);
+        CHECK(picked());
+        ViewRepresentation moved;
+        moved.orientation = glm::translate(glm::dmat4(1.0), glm::dvec3(t, 0.0));
+        ws.setViewRepresentation(1, moved);
+        CHECK(picked());  // the old picture is still shown
+        CHECK_FALSE(picked());
+        if (show == 0) ws.update(Regeneration::Perform);
+        if (show == 1) ws.redrawAllStructures();
+        if (show == 2) ws.setDeferralState(DeferralMode::Asap, ModificationMode::Nive);
+        ws.display();
+        CHECK_FALSE(picked());
+        CHECK(picked());
+    }
+}
+
 TEST_CASE(
     "pick: surfaces under flattening transforms are hit by their tessellation, tree and every item alike",
     "[pick][tree][bad-input]") {

@@ -259,12 +259,15 @@ const DrawList& Workstation::display() {
     return picture_;
 }
 
+bool Workstation::picksShownTables() const {
+    // A deferred change is not on the display yet: pick what is shown.
+    return !changesTakeEffectAtOnce() && pictured_;
+}
+
 DrawList Workstation::traverse(const TraversalFilters& filters) {
     std::vector<int> roots;
     for (const PostedStructure& p : postedStructures()) roots.push_back(p.structureId);
-    // A deferred change is not on the display yet: pick what is shown.
-    const bool shown = changesTakeEffectAtOnce() || !pictured_;
-    return traverser_.traverse(store_, roots, shown ? tables_ : pictureTables_, filters);
+    return traverser_.traverse(store_, roots, picksShownTables() ? pictureTables_ : tables_, filters);
 }
 
 void Workstation::setColourRepresentation(int index, const glm::dvec3& components) {
@@ -546,13 +549,18 @@ const DrawList& Workstation::pickList(const InputDevice& device) {
     PickList& cached = pickLists_[device.number];
     lastPickList_ = &cached.list;
     const std::uint64_t stamp = contentStamp();
+    // The tables of the picture shown change only when it is regenerated (a deferred change
+    // shown by UPDATE, or the switch to ASAP), without changing the stamp.
+    const std::uint64_t picture = picksShownTables() ? regenerations_ + 1 : 0;
     // Nothing the traversal reads changed: the list, its generation and the Picker's tree stay.
-    if (cached.made && cached.stamp == stamp && cached.filters == filters) return cached.list;
+    if (cached.made && cached.stamp == stamp && cached.picture == picture && cached.filters == filters)
+        return cached.list;
     cached.list = traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
     cached.list.generation = ++pickTraversals_;
     cached.filters = std::move(filters);
     cached.stamp = stamp;
+    cached.picture = picture;
     cached.made = true;
     return cached.list;
 }

@@ -268,6 +268,8 @@ private:
     EchoState shownEcho_;  ///< the echo state last handed to the output
 
     const DrawList& pickList(const InputDevice& device);
+    /// Whether pick traverses with the tables of the picture shown (a change is deferred).
+    bool picksShownTables() const;
     void echoMoved();
 
     DrawListMeasurer measurer_;
@@ -275,7 +277,8 @@ private:
     struct PickList {
         DrawList list;
         TraversalFilters filters;
-        std::uint64_t stamp = 0;  ///< contentStamp() when traversed
+        std::uint64_t stamp = 0;    ///< contentStamp() when traversed
+        std::uint64_t picture = 0;  ///< 0: the requested tables; else 1 + the regeneration shown
         bool made = false;
     };
     std::map<int, PickList> pickLists_;  ///< by pick device number
