@@ -507,10 +507,11 @@ TEST_CASE("batch reduction recovers the simpler curve and keeps fixed end deriva
     REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("rounds"));
 }
 
-TEST_CASE("the curve deviation's maximum is that of the closest points of every sample",
+TEST_CASE("the curve deviation's maximum is that of every sample's closest point and of the peaks",
           "[geom][knots][reduction]") {
     // measureDeviation inverts only the samples whose parametric distance could hold the
-    // maximum; inverting every sample globally must give the same maxima.
+    // maximum, then follows the peaks between samples: at least the maxima of inverting every
+    // sample globally, and those of inverting 256 times as many (or a hair more).
     std::mt19937 rng(63);
     for (int p = 2; p <= 5; ++p) {
         const Curve c = noisyRefinedCurve(rng, p, 30, 1e-3);
@@ -519,16 +520,22 @@ TEST_CASE("the curve deviation's maximum is that of the closest points of every 
         o.report = false;
         const Curve reduced = reduceCurve(c, o).curve;
         const CurveDeviation d = measureDeviation(c, reduced, 8);
-        auto bruteForce = [](const Curve& from, const Curve& to) {
+        auto bruteForce = [](const Curve& from, const Curve& to, int density) {
             const CurveProjector projector(to);
             double worst = 0.0;
-            for (double u : spanSamples(from.knots, from.degree, from.points.size(), 8))
+            for (double u : spanSamples(from.knots, from.degree, from.points.size(), density))
                 worst = std::max(worst, projector.closestPoint(evaluate(from, u)).distance);
             return worst;
         };
         INFO("degree " << p);
-        REQUIRE(d.maxOriginalToReduced == Approx(bruteForce(c, reduced)).epsilon(1e-9));
-        REQUIRE(d.maxReducedToOriginal == Approx(bruteForce(reduced, c)).epsilon(1e-9));
+        REQUIRE(d.maxOriginalToReduced >= bruteForce(c, reduced, 8) * (1.0 - 1e-12));
+        REQUIRE(d.maxReducedToOriginal >= bruteForce(reduced, c, 8) * (1.0 - 1e-12));
+        // Between the dense samples' largest and a hair above it (a peak between them).
+        const double denseA = bruteForce(c, reduced, 2048), denseB = bruteForce(reduced, c, 2048);
+        REQUIRE(d.maxOriginalToReduced >= denseA * (1.0 - 1e-6));
+        REQUIRE(d.maxOriginalToReduced <= denseA * (1.0 + 1e-4));
+        REQUIRE(d.maxReducedToOriginal >= denseB * (1.0 - 1e-6));
+        REQUIRE(d.maxReducedToOriginal <= denseB * (1.0 + 1e-4));
         REQUIRE(d.meanError <= d.maxError);
         REQUIRE(d.maxError > 0.0);
     }
@@ -560,6 +567,43 @@ TEST_CASE("a surface made by inserting knot rows reduces back to the simpler sur
     }
 }
 
+TEST_CASE("the curve deviation follows a peak between its samples", "[geom][knots][reduction]") {
+    // One control point moved: the two curves part in a bump over degree + 1 spans whose top
+    // lies anywhere between the samples. The measured maxima must be at least those of sampling
+    // 512 times per span, and not far above (where the nearest point switches from one piece to
+    // another the peak is a ridge, which dense samples meet only to 1e-3 of it), by the plain
+    // measurement and by the meter's.
+    std::mt19937 rng(5122026);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int member = 0; member < 40; ++member) {
+        const int p = 1 + member % 7;
+        const Curve c =
+            geomtest::randomCurve(rng, p, static_cast<std::size_t>(p) + 2 + rng() % 6, false, true);
+        Curve moved = c;
+        const std::size_t i = rng() % c.points.size();
+        moved.points[i] += 1e-3 * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        auto dense = [](const Curve& from, const Curve& to) {
+            const CurveProjector projector(to);
+            double worst = 0.0;
+            for (double u : spanSamples(from.knots, from.degree, from.points.size(), 512))
+                worst = std::max(worst, projector.closestPoint(evaluate(from, u)).distance);
+            return worst;
+        };
+        const double there = dense(c, moved), back = dense(moved, c);
+        const std::size_t n = c.points.size();
+        const ParameterMap identity{{c.knots[std::size_t(p)], c.knots[n]},
+                                    {c.knots[std::size_t(p)], c.knots[n]}};
+        INFO("member " << member << ", degree " << p << ", point " << i << " of " << n);
+        for (const CurveDeviation& d :
+             {measureDeviation(c, moved, 8), measureDeviation(c, moved, 8, identity)}) {
+            CHECK(d.maxOriginalToReduced >= there * (1.0 - 1e-6));
+            CHECK(d.maxOriginalToReduced <= there * (1.0 + 5e-3));
+            CHECK(d.maxReducedToOriginal >= back * (1.0 - 1e-6));
+            CHECK(d.maxReducedToOriginal <= back * (1.0 + 5e-3));
+        }
+    }
+}
+
 TEST_CASE("curve reduction and deviation above the power-form degree limit", "[geom][knots][reduction]") {
     // Degrees above 7 take Cox-de Boor instead of the span power form in sampling and Newton.
     std::mt19937 rng(65);
@@ -582,7 +626,8 @@ TEST_CASE("curve reduction and deviation above the power-form degree limit", "[g
             const int density = r.freeKnotFit ? 64 : 16;
             for (double u : spanSamples(r.curve.knots, r.curve.degree, r.curve.points.size(), density))
                 worst = std::max(worst, projector.closestPoint(evaluate(r.curve, u)).distance);
-            REQUIRE(r.deviation.maxReducedToOriginal == Approx(worst).epsilon(1e-9));
+            // At least the samples' largest: the peaks between them are followed too.
+            REQUIRE(r.deviation.maxReducedToOriginal >= worst * (1.0 - 1e-12));
         }
     }
 }
