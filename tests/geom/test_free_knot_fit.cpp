@@ -143,8 +143,8 @@ TEST_CASE("a free-knot fit keeps the end points and, when asked, the end derivat
             // Densely measured, the closest distances stay near it (the samples are dense; where
             // Lawson's rounds end early on a fit as poor as 12 points for these 45, degree 4, the
             // parameters are still a few rounds from their foot points: 0.27 of it). The
-            // measurement follows each peak between samples too, which on that poor fit lies a
-            // third above the samples' largest.
+            // measurement follows each peak between samples too, which on so poor a fit may lie
+            // well above the samples' largest.
             const CurveDeviation d = measureDeviation(c, g, 16, f.map);
             REQUIRE(d.maxOriginalToReduced <= 1.5 * f.sampleError);
             REQUIRE(d.maxOriginalToReduced >= 0.25 * f.sampleError);

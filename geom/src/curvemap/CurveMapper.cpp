@@ -1,6 +1,6 @@
 #include "geom/curvemap/CurveMapper.h"
 
-#include "Creases.h"
+#include "KnotLines.h"
 #include "ProjectedBoxes.h"
 
 #include "geom/Evaluate.h"
@@ -164,7 +164,7 @@ public:
           out_(out),
           boundary_(domain),
           boxes_(intersector.tree(), frame),
-          creases_(surface, domain) {}
+          knotLines_(surface, domain) {}
 
     void run();
 
@@ -198,7 +198,7 @@ private:
     MappedPart& out_;
     Boundary boundary_;
     ProjectedBoxes boxes_;
-    Creases creases_;
+    KnotLines knotLines_;
     bool budgetSpent_ = false;  ///< refinement stopped at options_.maxProjections
 };
 
@@ -257,7 +257,7 @@ bool PartMapper::foldsBetween(const Sample& a, const Sample& b) const {
     // Across a crease the mapped curve may kink anywhere between two samples, where neither
     // inner sample need see it: such a pair is kept shorter than a quarter of the tolerance.
     return a.hit && b.hit && glm::length(b.point - a.point) > 0.25 * options_.tolerance &&
-           creases_.crossed(a.uv, domain_.unwrapNear(b.uv, a.uv));
+           knotLines_.crossesCrease(a.uv, domain_.unwrapNear(b.uv, a.uv));
 }
 
 bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const {
@@ -287,6 +287,7 @@ bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const
     // chord between the predicted points too; surface points cost far less than projections.
     // The image's distance from the mapped curve is at most its distance from the chord plus the
     // curve's bow.
+    if (!knotLines_.crossesKnot(ua, ua + d)) return false;
     for (int k = 1; k < 8; ++k)
         if (distanceToSegment(pointAt(ua + (k / 8.0) * d), a.point, b.point) + bow > tol) return true;
     return false;
@@ -309,11 +310,17 @@ void PartMapper::refine(const Sample& a, const Sample& b, int depth, std::vector
         return;
     }
     // The sub-chords are what is emitted: one the prediction says strays is refined on its own.
-    const bool smooth = deeper && std::all_of(q.begin(), q.end(), [](const Sample& x) { return x.hit; }) &&
-                        !creases_.crossed(a.uv, domain_.unwrapNear(b.uv, a.uv));
+    // Across a crease (within a quarter of the tolerance, by the test above) the cubic cannot
+    // predict: there the pieces beside the crossing are refined on their own instead.
+    const bool hits = std::all_of(q.begin(), q.end(), [](const Sample& x) { return x.hit; });
+    const bool folded = hits && knotLines_.crossesCrease(a.uv, domain_.unwrapNear(b.uv, a.uv));
     for (int piece = 0; piece < 3; ++piece) {
         const auto i = static_cast<std::size_t>(piece);
-        if (smooth && subChordStrays(q, piece))
+        const bool strays =
+            deeper && hits &&
+            (folded ? !knotLines_.crossesCrease(q[i].uv, domain_.unwrapNear(q[i + 1].uv, q[i].uv))
+                    : subChordStrays(q, piece));
+        if (strays)
             refine(q[i], q[i + 1], depth + 1, samples);
         else
             samples.push_back(q[i + 1]);

@@ -101,7 +101,7 @@ InputSession& InputSession::of() {
 }
 
 void InputSession::attachScript(Workstation& ws, std::unique_ptr<ScriptInputSource> script) {
-    ws.connectInput(*script, *queue_);  // drops the connection to the old script first
+    ws.connectInput(*script, *queue_);  // the queued events stay; then the old script goes
     scripts_[ws.id()] = std::move(script);
 }
 
