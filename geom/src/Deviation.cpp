@@ -169,8 +169,9 @@ double peakDistance(const Curve& from, const std::vector<double>& params, const 
     double best = 0.0;
     for (double x : d) best = std::max(best, x);
     if (n < 2 || !(best > 0.0)) return best;
-    std::optional<detail::SplineSampler> sampler;
+    std::optional<detail::SplineSampler> sampler, fromSampler;
     emplaceSampler(sampler, to, toForms);
+    emplaceSampler(fromSampler, from, nullptr);
     const double threshold = 0.9 * best;
     for (std::size_t i = 0; i < n; ++i) {
         if (d[i] < threshold || (i > 0 && d[i - 1] > d[i]) || (i + 1 < n && d[i + 1] > d[i])) continue;
@@ -179,8 +180,8 @@ double peakDistance(const Curve& from, const std::vector<double>& params, const 
         if (!(hi > lo)) continue;
         auto distanceAt = [&](double t) {
             const double seed = seeds[l] + (t - lo) / (hi - lo) * (seeds[r] - seeds[l]);
-            const glm::dvec3 p = evaluate(from, t);
-            const double bound = glm::length(p - evaluate(to, seed));
+            const glm::dvec3 p = fromSampler->value(t);
+            const double bound = glm::length(p - sampler->value(seed));
             double e = detail::newtonDistance(*sampler, p, seed, bound);
             if (e > best) e = std::min(e, global(p, e));
             best = std::max(best, e);

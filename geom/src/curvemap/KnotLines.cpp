@@ -21,28 +21,25 @@ std::vector<double> interiorKnots(const std::vector<double>& knots, int degree, 
 
 }  // namespace
 
+KnotLines::Lines KnotLines::Lines::of(const std::vector<double>& knots, int degree, std::size_t count,
+                                      std::size_t least, bool closed, double start, double period) {
+    Lines lines{interiorKnots(knots, degree, count, least), closed, start, period};
+    // A closed direction meets itself at the seam, which need not be smooth.
+    if (closed) lines.at.insert(lines.at.begin(), start);
+    return lines;
+}
+
 KnotLines::KnotLines(const Surface& surface, const SurfaceDomain& domain) {
-    const auto degreeU = static_cast<std::size_t>(surface.degreeU);
-    const auto degreeW = static_cast<std::size_t>(surface.degreeV);
-    creaseU_.at =
-        interiorKnots(surface.knotsU, surface.degreeU, surface.countU, std::max<std::size_t>(degreeU, 1));
-    creaseW_.at =
-        interiorKnots(surface.knotsV, surface.degreeV, surface.countV, std::max<std::size_t>(degreeW, 1));
-    knotU_.at = interiorKnots(surface.knotsU, surface.degreeU, surface.countU, 1);
-    knotW_.at = interiorKnots(surface.knotsV, surface.degreeV, surface.countV, 1);
-    for (Lines* u : {&creaseU_, &knotU_}) {
-        u->closed = domain.closedU;
-        u->start = domain.u0;
-        u->period = domain.periodU();
-        // A closed direction meets itself at the seam, which need not be smooth.
-        if (u->closed) u->at.insert(u->at.begin(), domain.u0);
-    }
-    for (Lines* w : {&creaseW_, &knotW_}) {
-        w->closed = domain.closedW;
-        w->start = domain.w0;
-        w->period = domain.periodW();
-        if (w->closed) w->at.insert(w->at.begin(), domain.w0);
-    }
+    const auto foldU = static_cast<std::size_t>(std::max(surface.degreeU, 1));
+    const auto foldW = static_cast<std::size_t>(std::max(surface.degreeV, 1));
+    creaseU_ = Lines::of(surface.knotsU, surface.degreeU, surface.countU, foldU, domain.closedU, domain.u0,
+                         domain.periodU());
+    creaseW_ = Lines::of(surface.knotsV, surface.degreeV, surface.countV, foldW, domain.closedW, domain.w0,
+                         domain.periodW());
+    knotU_ = Lines::of(surface.knotsU, surface.degreeU, surface.countU, 1, domain.closedU, domain.u0,
+                       domain.periodU());
+    knotW_ = Lines::of(surface.knotsV, surface.degreeV, surface.countV, 1, domain.closedW, domain.w0,
+                       domain.periodW());
 }
 
 bool KnotLines::crossesCrease(const glm::dvec2& a, const glm::dvec2& b) const {

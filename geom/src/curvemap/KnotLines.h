@@ -30,6 +30,9 @@ private:
         std::vector<double> at;  ///< sorted parameters in the domain
         bool closed = false;
         double start = 0.0, period = 0.0;
+        /// The interior knots occurring at least `least` times, and the seam where closed.
+        static Lines of(const std::vector<double>& knots, int degree, std::size_t count, std::size_t least,
+                        bool closed, double start, double period);
         bool crossed(double a, double b) const;
     };
     Lines creaseU_, creaseW_, knotU_, knotW_;
