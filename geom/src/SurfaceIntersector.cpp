@@ -33,6 +33,9 @@ Projected evaluateProjected(const glm::dvec2* c, int p, int q, double s, double 
     w.dbt.resize(qv);
     bernsteinBasis(p, s, w.bs, w.dbs);
     bernsteinBasis(q, t, w.bt, w.dbt);
+    // Degree 0 (an edge divided out of a degree-1 direction): constant, so its derivative is 0.
+    if (p == 0) w.dbs[0] = 0.0;
+    if (q == 0) w.dbt[0] = 0.0;
     Projected r{glm::dvec2(0.0), glm::dvec2(0.0), glm::dvec2(0.0)};
     for (std::size_t i = 0; i < pu; ++i) {
         glm::dvec2 row(0.0), rowd(0.0);
@@ -112,6 +115,91 @@ bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
     return lo > 0.0 || hi < 0.0;
 }
 
+/// Krawczyk's test of G on the sub-net c over its own unit square X: true when X holds no root.
+/// With Y the inverse Jacobian at the centre x0 and J(X) the bounds of the derivative nets, every
+/// root in X lies in K = x0 - Y G(x0) + (I - Y J(X)) (X - x0), so K apart from X proves there is
+/// none. `error` bounds the rounding in G: no root hidden by it is excluded.
+bool krawczykExcludes(const glm::dvec2* c, int p, int q, double error, Scratch& w) {
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    if (pu < 2 || qv < 2) return false;
+    // j[row][column]: the Jacobian's entries, columns d/ds and d/dt.
+    SpanBounds j[2][2] = {{{1e300, -1e300}, {1e300, -1e300}}, {{1e300, -1e300}, {1e300, -1e300}}};
+    auto widen = [](SpanBounds& b, double x) { b = {std::min(b.lo, x), std::max(b.hi, x)}; };
+    for (std::size_t i = 0; i + 1 < pu; ++i)
+        for (std::size_t k = 0; k < qv; ++k) {
+            const glm::dvec2 d = double(p) * (c[(i + 1) * qv + k] - c[i * qv + k]);
+            widen(j[0][0], d.x), widen(j[1][0], d.y);
+        }
+    for (std::size_t i = 0; i < pu; ++i)
+        for (std::size_t k = 0; k + 1 < qv; ++k) {
+            const glm::dvec2 d = double(q) * (c[i * qv + k + 1] - c[i * qv + k]);
+            widen(j[0][1], d.x), widen(j[1][1], d.y);
+        }
+    const Projected e = evaluateProjected(c, p, q, 0.5, 0.5, w);
+    const double det = e.gs.x * e.gt.y - e.gs.y * e.gt.x;
+    const double y[2][2] = {{e.gt.y / det, -e.gt.x / det}, {-e.gs.y / det, e.gs.x / det}};
+    for (int r = 0; r < 2; ++r) {
+        const double centre = 0.5 - (y[r][0] * e.g.x + y[r][1] * e.g.y);
+        double radius = (std::abs(y[r][0]) + std::abs(y[r][1])) * error;
+        for (int col = 0; col < 2; ++col) {
+            SpanBounds m{r == col ? 1.0 : 0.0, r == col ? 1.0 : 0.0};
+            for (int k = 0; k < 2; ++k) {
+                const SpanBounds t = mul({y[r][k], y[r][k]}, j[k][col]);
+                m = {m.lo - t.hi, m.hi - t.lo};
+            }
+            radius += 0.5 * std::max(std::abs(m.lo), std::abs(m.hi));
+        }
+        // A little more for the rounding of these sums themselves.
+        radius = radius * (1.0 + 1e-9) + 1e-12;
+        if (std::isfinite(centre) && std::isfinite(radius) &&
+            (centre + radius < 0.0 || centre - radius > 1.0))
+            return true;
+    }
+    return false;
+}
+
+/// The four edges of a patch, as net rows (s = 0, s = 1) or columns (t = 0, t = 1).
+enum class Edge { S0, S1, T0, T1 };
+constexpr Edge kEdges[] = {Edge::S0, Edge::S1, Edge::T0, Edge::T1};
+
+/// Index of the k-th net point along `edge` of a (p+1) x (q+1) net.
+std::size_t edgePoint(Edge edge, std::size_t k, int p, int q) {
+    const std::size_t qv = static_cast<std::size_t>(q) + 1;
+    switch (edge) {
+        case Edge::S0:
+            return k;
+        case Edge::S1:
+            return static_cast<std::size_t>(p) * qv + k;
+        case Edge::T0:
+            return k * qv;
+        case Edge::T1:
+            break;
+    }
+    return k * qv + static_cast<std::size_t>(q);
+}
+
+/// G with the factor s, 1 - s, t or 1 - t of a vanishing edge divided out (its degree one less
+/// that way): B^p_i(s) = (p / i) s B^(p-1)_(i-1)(s) and (p / (p - i)) (1 - s) B^(p-1)_i(s). The
+/// edge's own coefficients, zero within the tolerance, are dropped.
+std::vector<glm::dvec2> divideEdge(const std::vector<glm::dvec2>& c, int& p, int& q, Edge edge) {
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    const bool alongS = edge == Edge::S0 || edge == Edge::S1;
+    const bool start = edge == Edge::S0 || edge == Edge::T0;
+    const int n = alongS ? p : q;
+    const std::size_t newPu = alongS ? pu - 1 : pu, newQv = alongS ? qv : qv - 1;
+    std::vector<glm::dvec2> out(newPu * newQv);
+    for (std::size_t i = 0; i < newPu; ++i)
+        for (std::size_t k = 0; k < newQv; ++k) {
+            const std::size_t a = alongS ? i : k;  // index along the divided direction, new net
+            const std::size_t from = start ? a + 1 : a;
+            const double factor = start ? double(n) / double(from) : double(n) / double(n - int(from));
+            const std::size_t src = alongS ? from * qv + k : i * qv + from;
+            out[i * newQv + k] = factor * c[src];
+        }
+    (alongS ? p : q) -= 1;
+    return out;
+}
+
 struct NewtonResult {
     bool converged = false;
     double s = 0.0, t = 0.0;
@@ -150,6 +238,87 @@ NewtonResult newton(const glm::dvec2* c, int p, int q, double s0, double s1, dou
     return {residual <= tolerance, s, t};
 }
 
+/// How near zero G must come, in its own units.
+struct Tolerances {
+    double box;     ///< a cell whose box is farther from the origin holds no root
+    double newton;  ///< Newton's residual at a root
+    double error;   ///< the rounding in G, for Krawczyk's test
+};
+
+/// The roots of G on the net (degrees p, q) over the unit square, each handed to found(s, t). A
+/// cell far from the origin by its box or two diagonal axes goes; one whose Jacobian keeps its
+/// sign hands over Newton's root, or, when Newton reaches none, goes if Krawczyk's test excludes
+/// it; the rest split four ways, breadth first. So when the budget runs out (a tangent contact, a
+/// line lying in the surface) every region has been searched as deeply as the others, and what is
+/// left gets several Newton starts.
+template <class Found>
+void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerances& tol, Found&& found) {
+    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
+    const std::size_t size = pu * qv;
+    struct Cell {
+        std::size_t offset;
+        double s0, s1, t0, t1;
+        int depth;
+    };
+    thread_local std::vector<glm::dvec2> pool, work;
+    thread_local std::vector<Cell> queue;
+    thread_local Scratch scratch;
+    pool.assign(net.begin(), net.end());
+    queue.assign(1, Cell{0, 0.0, 1.0, 0.0, 1.0, 0});
+    std::size_t visited = 0;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const Cell cell = queue[head];
+        const glm::dvec2* c = pool.data() + cell.offset;
+        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (std::size_t k = 0; k < size; ++k) lo = glm::min(lo, c[k]), hi = glm::max(hi, c[k]);
+        if (lo.x > tol.box || lo.y > tol.box || hi.x < -tol.box || hi.y < -tol.box) continue;
+        // Two more separating axes, across the net's diagonals: a patch seen nearly edge-on (a
+        // line close to tangent) is a thin sliver whose axis-aligned box is much too large.
+        if (excludedAcross(c, size, c[size - 1] - c[0], tol.box) ||
+            excludedAcross(c, size, c[(pu - 1) * qv] - c[qv - 1], tol.box))
+            continue;
+        ++visited;
+        const bool last = cell.depth >= kMaxSubdivisionDepth || visited > kNodeBudget;
+        // A root on the cell's edge is found from the cells on both sides; a small margin lets
+        // Newton reach it, and the merge in intersect() keeps one.
+        const double ms = 1e-6 * (cell.s1 - cell.s0), mt = 1e-6 * (cell.t1 - cell.t0);
+        const double a0 = std::max(0.0, cell.s0 - ms), a1 = std::min(1.0, cell.s1 + ms);
+        const double b0 = std::max(0.0, cell.t0 - mt), b1 = std::min(1.0, cell.t1 + mt);
+        auto newtonFinds = [&](double fs, double ft) {
+            const NewtonResult r = newton(pool.data(), p, q, a0, a1, b0, b1, tol.newton, scratch, fs, ft);
+            if (r.converged) found(r.s, r.t);
+            return r.converged;
+        };
+        if (!last && jacobianKeepsSign(c, pu, qv)) {
+            if (newtonFinds(0.5, 0.5)) continue;
+            // No root reached: a cell beside one, kept by the box test's tolerance. Where the
+            // Jacobian varies this little, Krawczyk's test tells such a cell apart.
+            if (krawczykExcludes(c, p, q, tol.error, scratch)) continue;
+        }
+        if (last) {
+            // Several starts, so that close roots are not lost.
+            for (const auto& f : {glm::dvec2(0.5, 0.5), glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25),
+                                  glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)})
+                newtonFinds(f.x, f.y);
+            continue;
+        }
+        const std::size_t o = pool.size();
+        pool.resize(o + 6 * size);
+        c = pool.data() + cell.offset;
+        glm::dvec2* left = pool.data() + o;
+        glm::dvec2* right = left + size;
+        splitHalf(c, left, right, pu, qv, false, work);
+        splitHalf(left, right + size, right + 2 * size, pu, qv, true, work);
+        splitHalf(right, right + 3 * size, right + 4 * size, pu, qv, true, work);
+        const double sm = 0.5 * (cell.s0 + cell.s1), tm = 0.5 * (cell.t0 + cell.t1);
+        const int d = cell.depth + 1;
+        queue.push_back({o + 2 * size, cell.s0, sm, cell.t0, tm, d});
+        queue.push_back({o + 3 * size, cell.s0, sm, tm, cell.t1, d});
+        queue.push_back({o + 4 * size, sm, cell.s1, cell.t0, tm, d});
+        queue.push_back({o + 5 * size, sm, cell.s1, tm, cell.t1, d});
+    }
+}
+
 }  // namespace
 
 SurfaceIntersector::SurfaceIntersector(const Surface& surface) : tree_(surface) {
@@ -160,44 +329,27 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
                                         const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const {
     const BezierPatchTree::Patch& patch = tree_.patches()[index];
     const int p = tree_.degreeU(), q = tree_.degreeV();
-    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
-    const std::size_t size = pu * qv;
+    const std::size_t size = (static_cast<std::size_t>(p) + 1) * (static_cast<std::size_t>(q) + 1);
 
     // Project the homogeneous net across the line: G(s,t) = 0 exactly where S(s,t) is on the line
     // (weights are positive, so the division by w changes no zero).
-    thread_local std::vector<glm::dvec2> pool;
-    thread_local std::vector<glm::dvec2> work;
+    thread_local std::vector<glm::dvec2> projected;
     thread_local Scratch scratch;
-    struct Sub {
-        std::size_t offset;
-        double s0, s1, t0, t1;
-        int depth;
-    };
-    thread_local std::vector<Sub> stack;
-    pool.resize(size);
-    double magnitude = 0.0;
+    projected.resize(size);
+    // `terms` bounds the size of what each projection sums (in the 1-norm), for its rounding.
+    const double originSize = std::abs(origin.x) + std::abs(origin.y) + std::abs(origin.z);
+    double magnitude = 0.0, terms = 0.0;
     for (std::size_t k = 0; k < size; ++k) {
         const glm::dvec4& h = patch.net[k];
         const glm::dvec3 rel = glm::dvec3(h) - origin * h.w;
-        pool[k] = glm::dvec2(glm::dot(rel, n1), glm::dot(rel, n2));
+        projected[k] = glm::dvec2(glm::dot(rel, n1), glm::dot(rel, n2));
         magnitude = std::max(magnitude, h.w);
+        terms = std::max(terms, std::abs(h.x) + std::abs(h.y) + std::abs(h.z) + originSize * h.w);
     }
     const double lengthScale = tree_.scale() * magnitude;
-    const double boxTolerance = 1e-12 * lengthScale;
-    const double newtonTolerance = 1e-13 * lengthScale;
+    const Tolerances tolerances{1e-12 * lengthScale, 1e-13 * lengthScale, 1e-14 * terms};
 
-    stack.clear();
-    stack.push_back({0, 0.0, 1.0, 0.0, 1.0, 0});
-    std::size_t visited = 0;
-    auto record = [&](double s, double t) {
-        // Polish on the whole patch: near a tangent contact a root found inside a sub-patch may
-        // sit on its edge, short of the double root.
-        const NewtonResult polished =
-            newton(pool.data(), p, q, 0.0, 1.0, 0.0, 1.0, newtonTolerance, scratch, s, t);
-        if (polished.converged) {
-            s = polished.s;
-            t = polished.t;
-        }
+    auto accept = [&](double s, double t) {
         const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);
         const BezierPatchTree::PatchPoint e = tree_.evaluate(index, u, v, 0);
         // t is measured from `origin` (near the surface, see intersect()); the caller shifts it.
@@ -211,69 +363,35 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         hit.piece = index;
         hits.push_back(hit);
     };
-    while (!stack.empty()) {
-        const Sub sub = stack.back();
-        stack.pop_back();
-        const glm::dvec2* c = pool.data() + sub.offset;
-        glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-        for (std::size_t k = 0; k < size; ++k) {
-            lo = glm::min(lo, c[k]);
-            hi = glm::max(hi, c[k]);
-        }
-        if (lo.x > boxTolerance || lo.y > boxTolerance || hi.x < -boxTolerance || hi.y < -boxTolerance)
-            continue;
-        // Two more separating axes, across the net's diagonals: a patch seen nearly edge-on (a
-        // line close to tangent) is a thin sliver whose axis-aligned box is much too large.
-        if (excludedAcross(c, size, c[size - 1] - c[0], boxTolerance) ||
-            excludedAcross(c, size, c[(pu - 1) * qv] - c[qv - 1], boxTolerance))
-            continue;
+    auto record = [&](double s, double t) {
+        // Polish on the whole patch's own G: near a tangent contact a root found inside a cell may
+        // sit on its edge, short of the double root, and a divided net is only G's factor.
+        const NewtonResult polished =
+            newton(projected.data(), p, q, 0.0, 1.0, 0.0, 1.0, tolerances.newton, scratch, s, t);
+        if (polished.converged) s = polished.s, t = polished.t;
+        accept(s, t);
+    };
 
-        ++visited;
-        const bool unique = jacobianKeepsSign(c, pu, qv);
-        const bool last = sub.depth >= kMaxSubdivisionDepth || visited > kNodeBudget;
-        // A root on the sub-patch's edge is found from the patches on both sides; a small margin
-        // lets Newton reach it, and the merge in intersect() keeps one.
-        const double ms = 1e-6 * (sub.s1 - sub.s0), mt = 1e-6 * (sub.t1 - sub.t0);
-        const double a0 = std::max(0.0, sub.s0 - ms), a1 = std::min(1.0, sub.s1 + ms);
-        const double b0 = std::max(0.0, sub.t0 - mt), b1 = std::min(1.0, sub.t1 + mt);
-        if (last) {
-            // Out of depth or budget (a tangent contact, a line along the surface): several
-            // starts, so that close roots are not lost.
-            for (const auto& f : {glm::dvec2(0.5, 0.5), glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25),
-                                  glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)}) {
-                const NewtonResult r =
-                    newton(pool.data(), p, q, a0, a1, b0, b1, newtonTolerance, scratch, f.x, f.y);
-                if (r.converged) record(r.s, r.t);
-            }
-            continue;
+    // An edge on the line (a pole on it: the apex of a cone, the nose of a fuselage) makes G vanish
+    // along the whole edge, and no test could ever part its cells from the root. Its middle is one
+    // hit, and the other roots are those of G with the edge's factor divided out.
+    thread_local std::vector<glm::dvec2> net;
+    net = projected;
+    int np = p, nq = q;
+    for (const Edge edge : kEdges) {
+        const bool alongS = edge == Edge::S0 || edge == Edge::S1;
+        if ((alongS ? np : nq) < 1) continue;
+        bool onLine = true;
+        for (std::size_t k = 0; k <= static_cast<std::size_t>(alongS ? q : p) && onLine; ++k) {
+            const std::size_t at = edgePoint(edge, k, p, q);
+            const double near = 1e-11 * tree_.scale() * patch.net[at].w;
+            onLine = glm::dot(projected[at], projected[at]) <= near * near;
         }
-        if (unique) {
-            const NewtonResult r = newton(pool.data(), p, q, a0, a1, b0, b1, newtonTolerance, scratch);
-            if (r.converged) {
-                record(r.s, r.t);
-                continue;
-            }
-        }
-        // Four children: split in s, then each half in t.
-        const std::size_t o = pool.size();
-        pool.resize(o + 6 * size);
-        c = pool.data() + sub.offset;
-        glm::dvec2* left = pool.data() + o;
-        glm::dvec2* right = left + size;
-        splitHalf(c, left, right, pu, qv, false, work);
-        glm::dvec2* ll = right + size;
-        glm::dvec2* lr = ll + size;
-        glm::dvec2* rl = lr + size;
-        glm::dvec2* rr = rl + size;
-        splitHalf(left, ll, lr, pu, qv, true, work);
-        splitHalf(right, rl, rr, pu, qv, true, work);
-        const double sm = 0.5 * (sub.s0 + sub.s1), tm = 0.5 * (sub.t0 + sub.t1);
-        const int d = sub.depth + 1;
-        stack.push_back({o + 2 * size, sub.s0, sm, sub.t0, tm, d});
-        stack.push_back({o + 3 * size, sub.s0, sm, tm, sub.t1, d});
-        stack.push_back({o + 4 * size, sm, sub.s1, sub.t0, tm, d});
-        stack.push_back({o + 5 * size, sm, sub.s1, tm, sub.t1, d});
+        if (!onLine) continue;
+        accept(edge == Edge::S1 ? 1.0 : alongS ? 0.0 : 0.5, edge == Edge::T1 ? 1.0 : alongS ? 0.5 : 0.0);
+        net = divideEdge(net, np, nq, edge);
     }
+    findRoots(net, np, nq, tolerances, record);
 }
 
 std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& origin,
