@@ -86,6 +86,15 @@ inline void checkQueryPoint(const glm::dvec3& p, const char* where) {
                             ": the query point lies beyond 1e150, where squared distances overflow");
 }
 
+/// A closest point's distance must be finite: it overflows only where the object's own control
+/// points lie near 1e300, beyond what squared distances can hold.
+inline void checkDistance(double distance, const char* where) {
+    if (!std::isfinite(distance))
+        throw GeometryError(std::string(where) +
+                            ": the distance overflows: control points lie too far out (near 1e300) for "
+                            "squared distances");
+}
+
 /// Throws when a computed point or vector is not finite: the data it came from is not (a point
 /// that is not finite, or a weight that is not positive).
 inline void checkResult(const glm::dvec3& value, const char* where) {

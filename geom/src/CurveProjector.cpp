@@ -134,6 +134,9 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
         best = there;
         index = next;
     }
+    // Near a control point of 1e300 the squared distance overflows and Newton has nothing to go
+    // by: the global search, whose bounds still hold, answers instead.
+    if (!std::isfinite(best.distance)) return closestPoint(p);
     return best;
 }
 
@@ -221,6 +224,7 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
         }
         if (bound < best.distance - tolerance && mayHalve(segment.depth, points)) split(segment);
     }
+    detail::checkDistance(best.distance, "closestPoint");
     return best;
 }
 

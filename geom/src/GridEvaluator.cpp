@@ -1,5 +1,7 @@
 #include "geom/GridEvaluator.h"
 
+#include "Checked.h"
+
 #include "geom/Basis.h"
 #include "geom/ControlNet.h"
 #include "geom/Evaluate.h"
@@ -178,13 +180,20 @@ std::vector<glm::dvec3> evaluateMany(const Curve& curve, std::span<const double>
     std::vector<glm::dvec3> out;
     out.reserve(us.size());
     const ControlNet net = homogeneousNet(curve);
-    for (double u : us) {
-        u = std::clamp(u, curve.domainStart(), curve.domainEnd());
+    std::string name;
+    for (std::size_t i = 0; i < us.size(); ++i) {
+        double u = us[i];
+        if (u < curve.domainStart() || u > curve.domainEnd()) {
+            name = "us[" + std::to_string(i) + "]";
+            u = detail::checkedParameter(u, curve.domainStart(), curve.domainEnd(), "evaluateMany",
+                                         name.c_str());
+        }
         const std::size_t span = findSpan(curve.degree, curve.knots, curve.points.size(), u);
         basisFunctions(span, u, curve.degree, curve.knots, basis);
         glm::dvec4 h(0.0);
         for (std::size_t k = 0; k < w; ++k) h += basis[k] * net.data[span - w + 1 + k];
         out.push_back(glm::dvec3(h) / h.w);
+        detail::checkResult(out.back(), "evaluateMany");
     }
     return out;
 }

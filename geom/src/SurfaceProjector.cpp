@@ -147,7 +147,9 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
     detail::checkQueryPoint(p, "closestPoint");
     if (!std::isfinite(guess.x) || !std::isfinite(guess.y))
         throw GeometryError("closestPoint: the start guess is not finite");
-    return polish(p, guess);
+    const SurfacePoint local = polish(p, guess);
+    // An overflowing distance (control points near 1e300) gives Newton nothing to go by.
+    return std::isfinite(local.distance) ? local : closestPoint(p);
 }
 
 glm::dvec2 SurfaceProjector::patchStart(std::size_t index, const glm::dvec3& p, glm::dvec2 start) const {
@@ -353,7 +355,9 @@ thread_local std::vector<glm::dvec3> SurfaceProjector::Search::points_;
 
 SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
     detail::checkQueryPoint(p, "closestPoint");
-    return Search(*this, p).run();
+    const SurfacePoint best = Search(*this, p).run();
+    detail::checkDistance(best.distance, "closestPoint");
+    return best;
 }
 
 SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p) {

@@ -3,6 +3,7 @@
 #include "geom/Surface.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -25,6 +26,10 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
         if (i > 0 && knots[i] < knots[i - 1])
             throw GeometryError(where + ": knots decrease at index " + std::to_string(i) + " (" +
                                 std::to_string(knots[i - 1]) + " then " + std::to_string(knots[i]) + ")");
+        // The basis functions divide by knot differences: a subnormal one overflows them.
+        if (i > 0 && knots[i] > knots[i - 1] && knots[i] - knots[i - 1] < std::numeric_limits<double>::min())
+            throw GeometryError(where + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) +
+                                " differ by less than the smallest normal double (2.2e-308)");
     }
     std::size_t run = 1;
     for (std::size_t i = 1; i < knots.size(); ++i) {

@@ -293,6 +293,57 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
     }
 }
 
+TEST_CASE("control points near 1e300 and subnormal knot spacing: an answer or a named refusal",
+          "[geom][bad-input]") {
+    // A control point so far out that squared distances near it overflow: a search started there
+    // has nothing to go by. The answer is finite, or a refusal that says why, never infinite.
+    const glm::dvec3 query(1, 2, 3);
+    auto answersOrRefuses = [](auto&& search) {
+        try {
+            return std::isfinite(search().distance);
+        } catch (const GeometryError& e) {
+            return std::string(e.what()).find("overflows") != std::string::npos;
+        }
+    };
+    for (std::size_t far = 1; far < 6; ++far) {
+        Curve c = validCurve(true);
+        c.points[far] = {1e300, -1e300, 1e300};
+        REQUIRE(answersOrRefuses([&] { return closestPoint(c, query); }));
+        for (double guess : {0.0, 0.3, 0.5, 0.7, 1.0})
+            REQUIRE(answersOrRefuses([&] { return closestPoint(c, query, guess); }));
+        Surface s = validSurface(true);
+        s.points[far * 3] = {1e300, 1e300, -1e300};
+        REQUIRE(answersOrRefuses([&] { return closestPoint(s, query); }));
+        for (const glm::dvec2 guess : {glm::dvec2(0.5, 0.5), glm::dvec2(0.3, 0.6), glm::dvec2(0, 1)})
+            REQUIRE(answersOrRefuses([&] { return closestPoint(s, query, guess); }));
+    }
+    // Near the start, where the curve stays in range, a search from far out falls back
+    // on the global one, which answers: the start point.
+    Curve c = validCurve(true);
+    c.points[1] = {1e300, -1e300, 1e300};
+    const CurvePoint fromMiddle = closestPoint(c, query, 0.2);
+    REQUIRE(fromMiddle.u == 0.0);
+    REQUIRE(fromMiddle.distance == Approx(std::sqrt(14.0)));
+    // Knots a subnormal amount apart: the basis functions would divide by it and overflow.
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    REQUIRE_THROWS_WITH(Curve(3, {0, 0, 0, 0, tiny, 2 * tiny, 2 * tiny, 2 * tiny, 2 * tiny},
+                              std::vector<glm::dvec3>(5, glm::dvec3(1, 2, 3))),
+                        Catch::Contains("smallest normal"));
+    REQUIRE_THROWS_WITH(Curve(1, {0, 0, 1e-310, 1e-310}, {{0, 0, 0}, {1, 0, 0}}),
+                        Catch::Contains("knots 1 and 2"));
+    REQUIRE(Curve(1, {0, 0, 1e-300, 1e-300}, {{0, 0, 0}, {1, 0, 0}}).domainEnd() == 1e-300);
+    Surface narrow = validSurface(false);
+    narrow.knotsV = {0, 0, 0, tiny, 2 * tiny, 2 * tiny, 2 * tiny};
+    REQUIRE_THROWS_WITH(validate(narrow),
+                        Catch::Contains("v direction") && Catch::Contains("smallest normal"));
+    // A batch refuses a parameter outside the domain by its place, as evaluate() refuses it.
+    const Curve plain = validCurve(false);
+    REQUIRE_THROWS_WITH(evaluateMany(plain, std::vector<double>{0.5, 1.5}), Catch::Contains("us[1]"));
+    REQUIRE_THROWS_WITH(evaluateMany(plain, std::vector<double>{-0.25}),
+                        Catch::Contains("outside the domain"));
+    REQUIRE(evaluateMany(plain, std::vector<double>{1.0 + 1e-12})[0] == evaluate(plain, 1.0));
+}
+
 TEST_CASE("a broken object's message names the entry point and the rule", "[geom][bad-input]") {
     Curve c = validCurve(false);
     c.knots.clear();

@@ -37,6 +37,8 @@ private:
 };
 
 /// Points of a curve at many parameters (basis values per parameter, no allocation per point).
+/// Each parameter is checked as evaluate() checks it: GeometryError names the one outside the
+/// domain (beyond rounding) or a point that is not finite.
 std::vector<glm::dvec3> evaluateMany(const Curve& curve, std::span<const double> us);
 
 }  // namespace geom
