@@ -15,6 +15,10 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
     if (count < static_cast<std::size_t>(degree) + 1)
         throw GeometryError(where + ": " + std::to_string(count) + " control points are too few for degree " +
                             std::to_string(degree) + " (need at least degree + 1)");
+    // A count near SIZE_MAX would wrap the sum below to a small number that an empty knot list
+    // then matches: no curve has that many points.
+    if (count > std::numeric_limits<std::size_t>::max() / 2)
+        throw GeometryError(where + ": " + std::to_string(count) + " control points are too many");
     const std::size_t expected = count + static_cast<std::size_t>(degree) + 1;
     if (knots.size() != expected)
         throw GeometryError(where + ": " + std::to_string(knots.size()) + " knots given, but " +

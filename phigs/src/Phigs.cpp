@@ -4,6 +4,20 @@
 
 namespace phigs {
 
+namespace {
+
+/// Whether two paths name one file: the same file on disk, or (not made yet) one normal path.
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code error;
+    if (std::filesystem::equivalent(a, b, error)) return true;
+    std::error_code errorA, errorB;
+    const auto normalA = std::filesystem::weakly_canonical(a, errorA);
+    const auto normalB = std::filesystem::weakly_canonical(b, errorB);
+    return !errorA && !errorB && normalA == normalB;
+}
+
+}  // namespace
+
 void Phigs::requireOpen(const char* function) const {
     if (!open_) raise(const_cast<ErrorLog*>(&log_), errors::NotPhigsOpen, function);
 }
@@ -113,6 +127,12 @@ void Phigs::openArchiveFile(int archiveId, const std::filesystem::path& path) {
     requireOpen(function);
     if (archives_.contains(archiveId))
         raise(&log_, errors::ArchiveIdInUse, function, "archive " + std::to_string(archiveId));
+    // Each open archive keeps the file's contents and writes them back whole: a second one on the
+    // same file would overwrite what the first wrote.
+    for (const auto& [id, file] : archives_)
+        if (file && sameFile(file->path(), path))
+            raise(&log_, errors::ArchiveCannotOpen, function,
+                  path.string() + " is already open as archive " + std::to_string(id));
     archives_[archiveId] = nullptr;
     try {
         archives_[archiveId] = std::make_unique<ArchiveFile>(path, &log_);

@@ -267,6 +267,14 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
     const CurvePoint end = closestPoint(segment, {1e149, 0, 0});
     REQUIRE(end.u == 1.0);
     REQUIRE(end.distance == Approx(1e149));
+    // A count so large that count + degree + 1 wraps: an empty knot list matched it (a crash).
+    for (int degree : {1, 2, 3}) {
+        Surface wrapped = validSurface(false);
+        wrapped.degreeU = degree;
+        wrapped.countU = std::numeric_limits<std::size_t>::max() - std::size_t(degree);
+        wrapped.knotsU.clear();
+        REQUIRE_THROWS_WITH(validate(wrapped), Catch::Contains("too many"));
+    }
     // Knots mapped past the largest double.
     REQUIRE_THROWS_WITH(reparameterize(c, -1e308, 1e308), Catch::Contains("reparameterize"));
     REQUIRE_THROWS_AS(reparameterize(s, -1e308, 1e308, 0, 1), GeometryError);

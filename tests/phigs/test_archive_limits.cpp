@@ -256,6 +256,66 @@ TEST_CASE("the file size limit: a file of the limit opens, one byte more is refu
     std::filesystem::remove(path);
 }
 
+TEST_CASE("an archive holding what INSERT refuses is refused naming the line", "[archive][errors]") {
+    // Files written elsewhere: indices out of their ISO range (INSERT gives 100, 113, 114, 119,
+    // 121) and a NURBS surface whose count wraps the kernel's size arithmetic (it crashed).
+    const std::vector<std::string> lines{
+        "SET_POLYLINE_INDEX 0",
+        "SET_INTERIOR_INDEX -2147483648",
+        "SET_VIEW_INDEX -1",
+        "SET_DEPTH_CUE_INDEX -7",
+        "SET_COLOUR_MAPPING_INDEX -2",
+        "NON-UNIFORM_B-SPLINE_SURFACE 1 1 0 4 0 0 1 1 18446744073709551614 2 0 0 0 0",
+        "NON-UNIFORM_B-SPLINE_SURFACE 2 1 0 4 0 0 1 1 18446744073709551613 2 0 0 0 0",
+    };
+    auto path = outputFile("refused_content.phar");
+    Phigs phigs;
+    phigs.open();
+    const StoreState before = stateOf(phigs.store());
+    for (const std::string& line : lines) {
+        INFO(line);
+        writeFile(path, kHeader + line + "\n");
+        const Refusal r = openRefused(phigs, path);
+        CHECK(r.number == errors::NotAnArchive);
+        CHECK(r.detail.find(path.string() + ": line 3: ") == 0);
+    }
+    CHECK(stateOf(phigs.store()) == before);
+    std::filesystem::remove(path);
+}
+
+TEST_CASE("one file is open under one archive id at a time", "[archive][errors]") {
+    // Each archive writes its whole contents back: a second id on the file would overwrite what
+    // the first one wrote.
+    auto path = outputFile("twice.phar");
+    Phigs phigs;
+    phigs.open();
+    for (int id : {10, 20}) {
+        phigs.store().openStructure(id);
+        phigs.store().insert(label(id));
+        phigs.store().closeStructure();
+    }
+    phigs.openArchiveFile(1, path);
+    const std::filesystem::path sameFile = path.parent_path() / "." / path.filename();
+    for (const auto& spelling : {path, sameFile}) {
+        try {
+            phigs.openArchiveFile(2, spelling);
+            FAIL("the second open was accepted");
+        } catch (const Error& e) {
+            CHECK(e.number() == errors::ArchiveCannotOpen);
+            CHECK(e.detail().find("already open as archive 1") != std::string::npos);
+        }
+    }
+    CHECK(phigs.openArchiveIds() == std::vector<int>{1});
+    phigs.archiveStructures(1, {10});
+    phigs.archiveStructures(1, {20});
+    phigs.closeArchiveFile(1);
+    // Closed, the file opens again, under any id, and holds both.
+    phigs.openArchiveFile(2, sameFile);
+    CHECK(phigs.archiveContents(2) == std::vector<int>{10, 20});
+    phigs.closeArchiveFile(2);
+    std::filesystem::remove(path);
+}
+
 TEST_CASE("a refused retrieval changes nothing: contents, versions, serials, postings", "[archive][errors]") {
     auto path = outputFile("refused_retrieval.phar");
     // A hand-made archive (this toolkit never writes one) whose structure 7 executes 8 and 8

@@ -1,6 +1,7 @@
 #include "phigs/store/ArchiveFile.h"
 
 #include "ElementFields.h"
+#include "phigs/store/IndexRange.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -324,6 +325,10 @@ Element decodeElement(Reader& in) {
         element);
     if (elementType(element) != type) in.fail("element type '" + name + "' is not consistent");
     if (std::string reason = validateElement(element); !reason.empty()) in.fail(name + ": " + reason);
+    // No archive written by PHIGS holds an index INSERT refuses: the file was made elsewhere.
+    if (const IndexRange range = indexRangeError(element); range.error != 0)
+        in.fail(name + ": index " + std::to_string(range.value) + " is out of range (error " +
+                std::to_string(range.error) + " when inserted)");
     return element;
 }
 

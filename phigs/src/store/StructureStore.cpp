@@ -1,5 +1,7 @@
 #include "phigs/store/StructureStore.h"
 
+#include "phigs/store/IndexRange.h"
+
 #include "phigs/store/StructurePaths.h"
 
 #include <algorithm>
@@ -8,42 +10,6 @@
 namespace phigs {
 
 namespace {
-
-/// An attribute index ISO 9592 refuses when the element is made, and the error it names.
-struct IndexRange {
-    int error = 0;
-    int value = 0;
-};
-
-/// Bundle indices from 1 (error 100), colour indices from 0 (113), view indices from 0 (114),
-/// depth cue indices from 0 (119) and colour mapping indices from 0 (121). Other indices
-/// (linetype, font, the interior style index, which is also a hatch index, ...) are checked
-/// against the workstation when drawn.
-IndexRange indexRangeError(const Element& e) {
-    if (const auto* c = std::get_if<ColourAttribute>(&e))
-        return !c->colour.direct && c->colour.index < 0
-                   ? IndexRange{errors::ColourIndexBelowZero, c->colour.index}
-                   : IndexRange{};
-    const auto* a = std::get_if<IndexAttribute>(&e);
-    if (a == nullptr) return {};
-    using T = ElementType;
-    switch (a->type) {
-        case T::PolylineIndex:
-        case T::PolymarkerIndex:
-        case T::TextIndex:
-        case T::InteriorIndex:
-        case T::EdgeIndex:
-            return a->value < 1 ? IndexRange{errors::BundleIndexBelowOne, a->value} : IndexRange{};
-        case T::ViewIndex:
-            return a->value < 0 ? IndexRange{errors::ViewIndexBelowZero, a->value} : IndexRange{};
-        case T::DepthCueIndex:
-            return a->value < 0 ? IndexRange{errors::DepthCueIndexBelowZero, a->value} : IndexRange{};
-        case T::ColourMappingIndex:
-            return a->value < 0 ? IndexRange{errors::ColourMappingIndexBelowZero, a->value} : IndexRange{};
-        default:
-            return {};
-    }
-}
 
 bool hasCycle(const std::map<int, std::set<int>>& graph) {
     // Colours: 0 unvisited, 1 on the stack, 2 done; iterative to survive deep networks.
@@ -704,6 +670,11 @@ void StructureStore::replaceStructures(const std::map<int, std::vector<Element>>
             if (std::string reason = validateElement(e); !reason.empty())
                 raise(log_, errors::InvalidElementData, function,
                       "structure " + std::to_string(id) + ": " + reason);
+            // What INSERT refuses, a retrieve refuses too (an archive written by hand, say).
+            if (const IndexRange range = indexRangeError(e); range.error != 0)
+                raise(log_, range.error, function,
+                      "structure " + std::to_string(id) + ": " +
+                          std::string(elementTypeName(elementType(e))) + " " + std::to_string(range.value));
             if (auto x = asExecute(e)) children.insert(x->structureId);
         }
     }
