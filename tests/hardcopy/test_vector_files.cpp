@@ -6,8 +6,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <random>
 
 namespace test_vector_files {
 
@@ -187,6 +190,146 @@ TEST_CASE("vector hardcopy: formats by name and type, errors name the file", "[h
     VectorWorkstation closed(dir / "closed.svg", VectorFormat::Svg);
     closed.close();
     CHECK_THROWS_AS(closed.update(sampleScene()), std::logic_error);
+}
+
+TEST_CASE("vector hardcopy: hatched holes stay empty in PDF and SVG, whichever way they wind", "[hardcopy]") {
+    // Random fill area sets: a star-shaped outline and a diamond hole wound either way, hatch
+    // styles 1-6. Even-odd leaves the hole empty; SVG readers took the hatch's clip path by the
+    // non-zero rule (cairo writes the rule elsewhere), and hatched a hole wound like its outline.
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto dir = outputDir();
+    for (int trial = 0; trial < 8; ++trial) {
+        DrawList list;
+        list.views.push_back(DrawView{});
+        list.background = {0.1f, 0.1f, 0.1f};
+        DrawFillArea set;
+        std::vector<glm::dvec3> outline, hole;
+        const int points = 5 + trial % 4;
+        for (int k = 0; k < 2 * points; ++k) {
+            const double a = 6.283185307179586 * k / (2 * points), r = k % 2 ? 0.3 + 0.05 * unit(rng) : 0.45;
+            outline.push_back({0.5 + r * std::cos(a), 0.5 + r * std::sin(a), 0.5});
+        }
+        const double h = 0.15 + 0.05 * unit(rng);
+        hole = {{0.5, 0.5 - h, 0.5}, {0.5 + h, 0.5, 0.5}, {0.5, 0.5 + h, 0.5}, {0.5 - h, 0.5, 0.5}};
+        if (trial % 2) std::reverse(hole.begin(), hole.end());
+        set.contours = {outline, hole};
+        set.interior.edit().style = InteriorStyle::Hatch;
+        set.interior.edit().styleIndex = 1 + trial % 6;
+        set.interior.edit().colour = {1, 1, 1};
+        DrawItem item;
+        item.primitive = DrawPrimitive(set);
+        list.items.push_back(std::move(item));
+        for (const VectorFormat format : {VectorFormat::Pdf, VectorFormat::Svg}) {
+            const auto file = dir / ("hatched_hole." + std::string(vectorFormatName(format)));
+            VectorWorkstation ws(file, format, squarePage(200));
+            ws.update(list);
+            ws.close();
+            const Image picture = format == VectorFormat::Pdf ? vector_test::rasterisePdf(file, 200, 200)
+                                                              : vector_test::rasteriseSvg(file, 200, 200);
+            int inHole = 0, inRing = 0;
+            for (std::uint32_t y = 0; y < 200; ++y)
+                for (std::uint32_t x = 0; x < 200; ++x) {
+                    // Page y is down; the scene is symmetric about y = 0.5, so the same test.
+                    const double px = (x + 0.5) / 200.0 - 0.5, py = (y + 0.5) / 200.0 - 0.5;
+                    const bool drawn = vector_test::drawn(picture, x, y, list.background, 40);
+                    if (std::abs(px) + std::abs(py) < h - 0.02) inHole += drawn;
+                    if (std::hypot(px, py) < 0.28 && std::abs(px) + std::abs(py) > h + 0.02) inRing += drawn;
+                }
+            INFO("trial " << trial << " " << vectorFormatName(format));
+            CHECK(inHole == 0);
+            CHECK(inRing > 100);
+        }
+    }
+}
+
+TEST_CASE("vector hardcopy: a transparent hatch blends as the raster's does", "[hardcopy]") {
+    DrawList list;
+    list.views.push_back(DrawView{});
+    list.background = {0.1f, 0.1f, 0.1f};
+    DrawFillArea square;
+    square.contours = {{{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}};
+    square.interior.edit().style = InteriorStyle::Hatch;
+    square.interior.edit().styleIndex = 1;
+    square.interior.edit().colour = {1, 1, 1};
+    square.interior.edit().properties.transparency = 0.7f;
+    DrawItem item;
+    item.primitive = DrawPrimitive(square);
+    list.items.push_back(std::move(item));
+    const auto file = outputDir() / "transparent_hatch.pdf";
+    VectorWorkstation ws(file, VectorFormat::Pdf, squarePage(200));
+    ws.update(list);
+    ws.close();
+    const Image picture = vector_test::rasterisePdf(file, 200, 200);
+    int brightest = 0;
+    for (std::uint32_t y = 0; y < 200; ++y)
+        for (std::uint32_t x = 0; x < 200; ++x) brightest = std::max<int>(brightest, picture.pixel(x, y)[0]);
+    // 0.3 of white over 0.7 of the background's 0.1: 94 of 255 (it was 255, opaque).
+    CHECK(std::abs(brightest - 94) <= 6);
+}
+
+TEST_CASE("vector hardcopy: sizes no file can hold: no hang, no NaN in the file, a named error",
+          "[hardcopy][errors]") {
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+    const auto dir = outputDir();
+    // Markers of an infinite scale (a circle hung cairo cutting an endless arc), lines of an
+    // infinite or NaN width, and a dashed line whose length along itself overflows.
+    DrawList list;
+    list.views.push_back(DrawView{});
+    for (const MarkerType type :
+         {MarkerType::Dot, MarkerType::Plus, MarkerType::Asterisk, MarkerType::Circle, MarkerType::Cross}) {
+        for (const double scale : {inf, nan, 1e300, -2.0}) {
+            DrawPolymarker marker;
+            marker.points = {{0.5, 0.5, 0.5}};
+            marker.style.edit().type = type;
+            marker.style.edit().scale = float(scale);
+            DrawItem item;
+            item.primitive = DrawPrimitive(marker);
+            list.items.push_back(std::move(item));
+        }
+    }
+    for (const double width : {inf, nan}) {
+        DrawPolyline line;
+        line.points = {{0.1, 0.2, 0.5}, {0.9, 0.2, 0.5}};
+        line.style.edit().type = LineType::Dashed;
+        line.style.edit().width = float(width);
+        DrawItem item;
+        item.primitive = DrawPrimitive(line);
+        list.items.push_back(std::move(item));
+    }
+    DrawPolyline far;
+    far.points = {{-1e300, 0.5, 0.5}, {1e300, 0.5, 0.5}};
+    far.style.edit().type = LineType::Dashed;
+    DrawItem farItem;
+    farItem.primitive = DrawPrimitive(far);
+    list.items.push_back(std::move(farItem));
+    for (const VectorFormat format : {VectorFormat::Pdf, VectorFormat::Svg, VectorFormat::Eps}) {
+        const auto file = dir / ("unbounded." + std::string(vectorFormatName(format)));
+        VectorWorkstation ws(file, format, squarePage(200));
+        ws.update(list);
+        ws.close();
+        if (format == VectorFormat::Svg) {
+            const std::string text = contents(file);
+            CHECK(text.find("nan") == std::string::npos);
+            CHECK(text.find("inf") == std::string::npos);
+            vector_test::rasteriseSvg(file, 100, 100);  // it opens
+        }
+    }
+    // Paper no format can hold is refused by name before a file is made.
+    for (const glm::dvec2 paper :
+         {glm::dvec2(0, 0), glm::dvec2(nan, 100), glm::dvec2(-100, 100), glm::dvec2(inf, 1)}) {
+        PageSetup page;
+        page.paper = paper;
+        const auto file = dir / "no_paper.svg";
+        std::filesystem::remove(file);
+        VectorWorkstation ws(file, VectorFormat::Svg, page);
+        REQUIRE_THROWS_WITH(ws.update(sampleScene()), Catch::Contains("paper"));
+        CHECK_FALSE(std::filesystem::exists(file));
+    }
+    PageSetup page;
+    page.nominalPixel = nan;
+    VectorWorkstation ws(dir / "no_pixel.svg", VectorFormat::Svg, page);
+    REQUIRE_THROWS_WITH(ws.update(sampleScene()), Catch::Contains("nominal pixel"));
 }
 
 }  // namespace test_vector_files

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <variant>
 
@@ -91,6 +92,49 @@ bool sameColour(glm::vec3 a, glm::vec3 b) {
 
 bool sameFillStyle(const VectorFill& a, const VectorFill& b) {
     return sameColour(a.colour, b.colour) && a.seamWidth == b.seamWidth && a.clip == b.clip;
+}
+
+/// A piece of one hatch line inside the region.
+struct HatchRun {
+    glm::dvec2 from, to;
+};
+
+/// The pieces of the lines across . p = k spacing (every integer k) inside the contours by the
+/// even-odd rule. An edge crosses line c when c lies in (lower end, upper end] across, so a
+/// vertex on a line counts once and every line meets each closed contour an even number of times.
+std::vector<HatchRun> hatchRuns(const std::vector<std::vector<glm::dvec2>>& contours, glm::dvec2 along,
+                                glm::dvec2 across, double spacing) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& c : contours)
+        for (const glm::dvec2& p : c)
+            lo = std::min(lo, glm::dot(across, p)), hi = std::max(hi, glm::dot(across, p));
+    if (!(hi > lo)) return {};
+    const double first = std::floor(lo / spacing), lines = std::floor(hi / spacing) - first + 1.0;
+    // Lines a pixel apart over a page: a bound against a region whose size is not a page's.
+    if (!(lines < 1e7)) return {};
+    std::vector<std::vector<double>> crossings(static_cast<std::size_t>(lines));
+    for (const auto& c : contours)
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const glm::dvec2 p = c[i], q = c[(i + 1) % c.size()];
+            const double dp = glm::dot(across, p), dq = glm::dot(across, q);
+            const double low = std::min(dp, dq), high = std::max(dp, dq);
+            for (double k = std::floor(low / spacing); k * spacing <= high; k += 1.0) {
+                const double line = k * spacing;
+                const double index = k - first;
+                if (!(line > low) || index >= lines) continue;
+                const glm::dvec2 at = p + (q - p) * ((line - dp) / (dq - dp));
+                crossings[static_cast<std::size_t>(index)].push_back(glm::dot(along, at));
+            }
+        }
+    std::vector<HatchRun> runs;
+    for (std::size_t k = 0; k < crossings.size(); ++k) {
+        auto& ts = crossings[k];
+        std::sort(ts.begin(), ts.end());
+        const glm::dvec2 base = across * ((first + double(k)) * spacing);
+        for (std::size_t i = 0; i + 1 < ts.size(); i += 2)
+            if (ts[i + 1] > ts[i]) runs.push_back({base + along * ts[i], base + along * ts[i + 1]});
+    }
+    return runs;
 }
 
 }  // namespace
@@ -257,34 +301,23 @@ void CairoPainter::operator()(const VectorFill& fill) {
 
 void CairoPainter::operator()(const VectorHatch& hatch) {
     useClip(hatch.clip);
-    cairo_save(cr_);
-    contours(hatch.contours, false);  // a clip closes its contours as a fill does
-    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_EVEN_ODD);
-    double x0, y0, x1, y1;
-    cairo_path_extents(cr_, &x0, &y0, &x1, &y1);
-    cairo_clip(cr_);
-    colour(hatch.colour);
+    colour(hatch.colour, hatch.opacity);
     cairo_set_line_width(cr_, hatch.width);
     cairo_set_dash(cr_, nullptr, 0, 0.0);
     const double spacing = std::max(hatch.spacing, 1e-3);
-    const glm::dvec2 corners[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
     for (double degrees : hatch.angles) {
-        // Lines n . p = k spacing with n across them; y is down on the page, angles count up.
-        const double a = degrees * 3.14159265358979323846 / 180.0;
+        // Lines across . p = k spacing; y is down on the page, angles count up. Each line's runs
+        // inside the region are worked out here, even-odd, rather than left to a clip path: SVG
+        // readers take a clip path's own rule, which cairo does not write.
+        const double a = degrees * std::numbers::pi / 180.0;
         const glm::dvec2 along(std::cos(a), -std::sin(a)), across(std::sin(a), std::cos(a));
-        double lo = 1e300, hi = -1e300, far = 0.0;
-        for (const glm::dvec2& c : corners) {
-            lo = std::min(lo, glm::dot(across, c)), hi = std::max(hi, glm::dot(across, c));
-            far = std::max(far, std::abs(glm::dot(along, c)));
-        }
-        for (double k = std::ceil(lo / spacing); k * spacing <= hi; k += 1.0) {
-            const glm::dvec2 base = across * (k * spacing);
-            cairo_move_to(cr_, base.x - along.x * far, base.y - along.y * far);
-            cairo_line_to(cr_, base.x + along.x * far, base.y + along.y * far);
+        cairo_new_path(cr_);
+        for (const HatchRun& run : hatchRuns(hatch.contours, along, across, spacing)) {
+            cairo_move_to(cr_, run.from.x, run.from.y);
+            cairo_line_to(cr_, run.to.x, run.to.y);
         }
         cairo_stroke(cr_);
     }
-    cairo_restore(cr_);  // back to the view's clip, which useClip set
 }
 
 void CairoPainter::operator()(const VectorStroke& stroke) {
@@ -303,7 +336,10 @@ void CairoPainter::operator()(const VectorStroke& stroke) {
 void CairoPainter::operator()(const VectorCircle& circle) {
     useClip(circle.clip);
     cairo_new_path(cr_);
-    cairo_arc(cr_, circle.centre.x, circle.centre.y, circle.radius, 0.0, 2.0 * 3.14159265358979323846);
+    // cairo cuts a circle into pieces by its size: one far larger than the page would never end.
+    const double radius = std::min(circle.radius, 2.0 * glm::length(picture_->pageSize));
+    if (!(radius > 0.0) || !std::isfinite(circle.centre.x) || !std::isfinite(circle.centre.y)) return;
+    cairo_arc(cr_, circle.centre.x, circle.centre.y, radius, 0.0, 2.0 * std::numbers::pi);
     cairo_close_path(cr_);
     colour(circle.colour);
     cairo_set_line_width(cr_, circle.width);

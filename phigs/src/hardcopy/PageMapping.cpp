@@ -1,11 +1,35 @@
 #include "phigs/hardcopy/PageMapping.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace phigs::hardcopy {
 
+namespace {
+
+bool positive(double x) {
+    return x > 0.0 && std::isfinite(x);
+}
+
+/// Paper no file can hold: every format needs a page of some size, and sizes in nominal pixels.
+void checkPage(const PageSetup& page) {
+    if (!positive(page.paper.x) || !positive(page.paper.y))
+        throw std::invalid_argument("vector hardcopy: the paper (" + std::to_string(page.paper.x) + " x " +
+                                    std::to_string(page.paper.y) + " points) must be finite and positive");
+    if (!std::isfinite(page.margin))
+        throw std::invalid_argument("vector hardcopy: the page margin is not a finite number");
+    if (!positive(page.nominalPixel))
+        throw std::invalid_argument("vector hardcopy: the nominal pixel (" +
+                                    std::to_string(page.nominalPixel) +
+                                    " points) must be finite and positive");
+}
+
+}  // namespace
+
 PageMapping::PageMapping(const DrawList& list, const PageSetup& page)
-    : workstation(list), pageSize(page.pageSize()), nominalPixel(page.nominalPixel) {
+    : workstation(list), pageSize((checkPage(page), page.pageSize())), nominalPixel(page.nominalPixel) {
     const glm::dvec2 area = glm::max(pageSize - 2.0 * page.margin, glm::dvec2(1e-9));
     const glm::dvec2 surface = glm::max(list.displaySize, glm::dvec2(1e-300));
     pointsPerDevice = std::min(area.x / surface.x, area.y / surface.y);

@@ -4,6 +4,7 @@
 #include "phigs/render/MarkerShape.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace phigs::hardcopy {
 namespace {
@@ -28,6 +29,15 @@ std::vector<double> hatchAngles(int index) {
     }
 }
 
+bool finite(const PagePoint& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+bool allFinite(const std::vector<std::vector<PagePoint>>& contours) {
+    return std::all_of(contours.begin(), contours.end(),
+                       [](const auto& c) { return std::all_of(c.begin(), c.end(), finite); });
+}
+
 std::vector<std::vector<glm::dvec2>> flatten(const std::vector<std::vector<PagePoint>>& contours) {
     std::vector<std::vector<glm::dvec2>> out;
     for (const auto& c : contours) {
@@ -40,10 +50,12 @@ std::vector<std::vector<glm::dvec2>> flatten(const std::vector<std::vector<PageP
 }  // namespace
 
 void PaintBuilder::operator()(const ProjectedFacet& facet) {
+    if (!allFinite(facet.contours)) return;
     if (facet.hatch) {
         VectorHatch h;
         h.contours = flatten(facet.contours);
         h.colour = facet.colour;
+        h.opacity = facet.opacity;
         h.angles = hatchAngles(facet.hatchIndex);
         h.spacing = kHatchSpacing * pixel_;
         h.width = pixel_;
@@ -63,36 +75,44 @@ void PaintBuilder::operator()(const ProjectedFacet& facet) {
 }
 
 void PaintBuilder::operator()(const ProjectedLine& line) {
-    if (line.points.size() < 2) return;
+    if (line.points.size() < 2 || !std::all_of(line.points.begin(), line.points.end(), finite)) return;
     VectorStroke s;
     for (const PagePoint& p : line.points) s.points.push_back(glm::dvec2(p));
     s.colour = line.colour;
-    const double scale = std::max(1.0, double(line.width));
+    // NaN goes to the thinnest line, infinity to the widest.
+    const double scale = std::isnan(line.width) ? 1.0 : std::clamp(double(line.width), 1.0, kMaxLineScale);
     s.width = scale * pixel_;
     const render::LinePattern pattern = render::linePattern(line.type);
     if (pattern.period > 0.0f) {
         for (float length : pattern.lengths) s.dashes.push_back(double(length) * scale * pixel_);
-        s.dashOffset = line.distances.front() * pixel_;
+        // A distance along a line far out can overflow; the phase then starts afresh.
+        const double offset = line.distances.empty() ? 0.0 : line.distances.front() * pixel_;
+        s.dashOffset = std::isfinite(offset) ? offset : 0.0;
     }
     s.clip = line.clip;
     picture_.ops.push_back(std::move(s));
 }
 
 void PaintBuilder::operator()(const ProjectedMarker& marker) {
+    const double nominalSize = render::kNominalMarkerPixels * double(marker.style.scale) * pixel_;
+    if (!finite(marker.position) || !(nominalSize > 0.0)) return;
+    // Larger than the page it is only a colour over all of it: cairo would cut an endless circle.
+    const float scale = nominalSize > largest_ ? float(largest_ / (render::kNominalMarkerPixels * pixel_))
+                                               : marker.style.scale;
     const glm::dvec2 at(marker.position);
     // Marker shapes are in pixels with y up; the page has y down.
     auto place = [&](glm::vec2 offset) { return at + glm::dvec2(offset.x, -offset.y) * pixel_; };
     if (marker.style.type == MarkerType::Circle) {
         VectorCircle c;
         c.centre = at;
-        c.radius = 0.5 * render::kNominalMarkerPixels * std::max(marker.style.scale, 0.0f) * pixel_;
+        c.radius = 0.5 * render::kNominalMarkerPixels * double(scale) * pixel_;
         c.colour = marker.style.colour;
         c.width = pixel_;
         c.clip = marker.clip;
         picture_.ops.push_back(c);
         return;
     }
-    const render::MarkerShape shape = render::markerShape(marker.style.type, marker.style.scale);
+    const render::MarkerShape shape = render::markerShape(marker.style.type, scale);
     if (!shape.triangles.empty()) {
         glm::dvec2 lo(1e300), hi(-1e300);
         for (glm::vec2 o : shape.triangles) lo = glm::min(lo, place(o)), hi = glm::max(hi, place(o));

@@ -7,7 +7,8 @@ namespace phigs::hardcopy {
 enum class PageOrientation { Portrait, Landscape };
 
 /// The paper of a vector hardcopy and how the picture sits on it: the display surface is fitted
-/// isotropically into the page less its margins and centred there.
+/// isotropically into the page less its margins and centred there. Paper and nominal pixel must
+/// be finite and positive, the margin finite (std::invalid_argument when the picture is described).
 struct PageSetup {
     static constexpr glm::dvec2 kA4{595.2756, 841.8898};  ///< portrait, points (1/72 inch)
     static constexpr glm::dvec2 kA3{841.8898, 1190.5512};

@@ -31,6 +31,7 @@ struct VectorFill {
 struct VectorHatch {
     std::vector<std::vector<glm::dvec2>> contours;
     glm::vec3 colour{1.0f};
+    float opacity = 1.0f;
     std::vector<double> angles;
     double spacing = 4.0, width = 0.5;
     int clip = -1;
