@@ -43,6 +43,36 @@ Halves splitNet(int degree, std::vector<double> knots, ControlNet net, double t,
 
 }  // namespace
 
+std::vector<Curve> splitAtBreaks(const Curve& curve) {
+    validate(curve, "splitAtBreaks");
+    const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
+    std::vector<Curve> pieces;
+    std::size_t first = 0;  // the current piece's first control point (and knot)
+    for (std::size_t i = p + 1; i < n; ++i) {
+        // knots[i .. i + p] equal and inside the domain: points before i and from i on part.
+        if (!(curve.knots[i] == curve.knots[i + p] && curve.knots[i] > curve.knots[p] &&
+              curve.knots[i] < curve.knots[n]))
+            continue;
+        pieces.push_back(Curve(
+            curve.degree,
+            std::vector<double>(curve.knots.begin() + long(first), curve.knots.begin() + long(i + p + 1)),
+            std::vector<glm::dvec3>(curve.points.begin() + long(first), curve.points.begin() + long(i)),
+            curve.weights.empty()
+                ? std::vector<double>{}
+                : std::vector<double>(curve.weights.begin() + long(first), curve.weights.begin() + long(i))));
+        first = i;
+        i += p;
+    }
+    if (first == 0) return {curve};
+    pieces.push_back(
+        Curve(curve.degree, std::vector<double>(curve.knots.begin() + long(first), curve.knots.end()),
+              std::vector<glm::dvec3>(curve.points.begin() + long(first), curve.points.end()),
+              curve.weights.empty()
+                  ? std::vector<double>{}
+                  : std::vector<double>(curve.weights.begin() + long(first), curve.weights.end())));
+    return pieces;
+}
+
 std::pair<Curve, Curve> split(const Curve& curve, double u) {
     validate(curve, "split");
     Halves h = splitNet(curve.degree, curve.knots, homogeneousNet(curve), u, "split");

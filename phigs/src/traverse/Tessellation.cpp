@@ -5,6 +5,7 @@
 #include "phigs/traverse/TessellationCache.h"
 
 #include "geom/Evaluate.h"
+#include "geom/Split.h"
 #include "geom/Tessellate.h"
 
 #include <glm/common.hpp>
@@ -146,6 +147,27 @@ std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, 
     for (double u : samples(spanBreaks(curve.knots, start, end), perSpan))
         points.push_back(geom::evaluate(curve, u));
     return points;
+}
+
+std::vector<TessellationCache::CurveRun> curveRuns(geom::Curve curve, double start, double end, int criteria,
+                                                   double value) {
+    std::vector<geom::Curve> pieces = geom::splitAtBreaks(curve);
+    std::vector<TessellationCache::CurveRun> runs;
+    if (pieces.size() == 1) {
+        std::vector<glm::dvec3> points = tessellateCurve(curve, start, end, criteria, value);
+        runs.push_back(
+            {std::make_shared<const geom::Curve>(std::move(curve)), std::move(points), start, end});
+        return runs;
+    }
+    const bool whole = !(end > start);
+    for (geom::Curve& piece : pieces) {
+        const double a = whole ? piece.domainStart() : std::max(start, piece.domainStart());
+        const double b = whole ? piece.domainEnd() : std::min(end, piece.domainEnd());
+        if (!(b > a)) continue;
+        std::vector<glm::dvec3> points = tessellateCurve(piece, a, b, criteria, value);
+        runs.push_back({std::make_shared<const geom::Curve>(std::move(piece)), std::move(points), a, b});
+    }
+    return runs;
 }
 
 namespace {

@@ -5,12 +5,11 @@
 
 #include "phigs/store/Element.h"
 #include "phigs/traverse/DrawList.h"
+#include "phigs/traverse/TessellationCache.h"
 
 #include <vector>
 
-namespace phigs {
-class TessellationCache;
-}
+namespace phigs {}
 
 namespace phigs::detail {
 
@@ -24,6 +23,11 @@ std::vector<double> spanBreaks(const std::vector<double>& knots, double start, d
 
 std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, double end, int criteria,
                                         double value);
+
+/// A curve element's runs over [start, end] (equal: the whole curve): the curve alone, or its
+/// pieces between breaks (geom::splitAtBreaks) each over its part of the range, each tessellated.
+std::vector<TessellationCache::CurveRun> curveRuns(geom::Curve curve, double start, double end, int criteria,
+                                                   double value);
 
 /// A grid over the surface (positions, unit normals, triangles counter-clockwise seen along the
 /// normal, uv where read: knot lines inside the domain or level curves, styles 4 and 5), with triangles

@@ -1,5 +1,7 @@
 #include "phigs/traverse/TessellationCache.h"
 
+#include <algorithm>
+
 namespace phigs {
 
 const TessellationCache::Entry* TessellationCache::find(const Key& key) {
@@ -38,7 +40,9 @@ void TessellationCache::prune() {
         const Entry& e = it->second.entry;
         // Entries still held by a draw list or a reused subtree stay, so their pointers stay valid
         // keys. A surface is the store's own (held by its element too): its mesh tells.
-        bool held = e.mesh.use_count() > 1 || e.curve.use_count() > 1;
+        bool held = e.mesh.use_count() > 1 ||
+                    std::any_of(e.curveRuns.begin(), e.curveRuns.end(),
+                                [](const CurveRun& run) { return run.curve.use_count() > 1; });
         if (!it->second.used && !held) {
             it = entries_.erase(it);
         } else {

@@ -1112,13 +1112,12 @@ private:
         TessellationCache::Key key{serial, a.criteria, a.valueU, 0, 0, 0, 0, 0};
         const auto& entry = cache_.get(key, TessellationCache::Kind::Curve, [&] {
             TessellationCache::Entry built;
-            built.curve = std::make_shared<const geom::Curve>(build());
-            built.curvePoints =
-                detail::tessellateCurve(*built.curve, rangeStart, rangeEnd, a.criteria, a.valueU);
+            built.curveRuns = detail::curveRuns(build(), rangeStart, rangeEnd, a.criteria, a.valueU);
             return built;
         });
-        emit(s, number, state,
-             DrawCurve{segmentPoints(entry.curvePoints), entry.curve, line(state), rangeStart, rangeEnd});
+        for (const TessellationCache::CurveRun& run : entry.curveRuns)
+            emit(s, number, state,
+                 DrawCurve{segmentPoints(run.points), run.curve, line(state), run.start, run.end});
     }
 
     // A zero size component, a zero vector or parallel vectors leave the placement as it was:

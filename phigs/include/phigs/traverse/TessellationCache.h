@@ -29,11 +29,19 @@ public:
         std::vector<double> levelPlanes{};  ///< level curves: their planes in modelling coordinates
         auto operator<=>(const Key&) const = default;
     };
+    /// One continuous piece of a curve element as drawn: its exact curve, its polyline and the
+    /// range drawn (equal ends: the whole curve).
+    struct CurveRun {
+        std::shared_ptr<const geom::Curve> curve;
+        std::vector<glm::dvec3> points;
+        double start = 0.0, end = 0.0;
+    };
     struct Entry {
         std::shared_ptr<const MeshData> mesh;
         std::shared_ptr<const geom::Surface> surface;
-        std::shared_ptr<const geom::Curve> curve;
-        std::vector<glm::dvec3> curvePoints;
+        /// A curve's runs: one, or one per piece between the knots it breaks at (multiplicity
+        /// degree + 1), so that no chord joins the ends of a jump.
+        std::vector<CurveRun> curveRuns;
     };
     struct Counters {
         std::uint64_t surfacesTessellated = 0;
