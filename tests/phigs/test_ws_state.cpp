@@ -88,6 +88,68 @@ TEST_CASE("requested and current values follow the deferral and modification mod
     }
 }
 
+TEST_CASE("the visual state and the empty surface say what the display shows, drawn or not", "[ws][state]") {
+    // Random mode switches, changes, postings and updates with no picture drawn between them: a
+    // change made where changes show at once is on the display although the picture is only made
+    // when drawn, so a later switch to a deferring mode has nothing deferred (it said DEFERRED).
+    std::mt19937 random(20261205);
+    for (int run = 0; run < 30; ++run) {
+        Phigs phigs;
+        phigs.open();
+        Workstation& ws = phigs.openWorkstation(1, WorkstationType::Hardcopy);
+        DeferralMode deferral = DeferralMode::Asap;
+        ModificationMode modification = ModificationMode::Nive;
+        bool deferred = false, simulated = false, posted = false, shownPosted = false;
+        std::string trace;
+        for (int step = 0; step < 40; ++step) {
+            const bool atOnceNow = atOnce(deferral);
+            auto change = [&] {
+                if (atOnceNow) return;
+                (modification == ModificationMode::Uqum ? simulated : deferred) = true;
+            };
+            const unsigned what = random() % 6;
+            trace += " " + std::to_string(what);
+            if (what == 0) {
+                deferral = static_cast<DeferralMode>(random() % 5);
+                modification = static_cast<ModificationMode>(random() % 3);
+                ws.setDeferralState(deferral, modification);
+                trace += "(" + std::to_string(int(deferral)) + std::to_string(int(modification)) + ")";
+                if (atOnce(deferral)) deferred = simulated = false;
+                // Quick update methods show what was deferred too, as a simulation.
+                if (modification == ModificationMode::Uqum && deferred) deferred = false, simulated = true;
+            } else if (what == 1) {
+                ws.setWorkstationWindow({0, 0, 0}, {0.5 + 0.25 * double(random() % 3), 1, 1});
+                change();
+            } else if (what == 2) {
+                posted = !posted;
+                if (posted)
+                    ws.postStructure(1, 0.5);
+                else
+                    ws.unpostAllStructures();
+                change();
+            } else if (what == 3) {
+                const bool perform = random() % 2;
+                ws.update(perform ? Regeneration::Perform : Regeneration::Postpone);
+                if (perform) deferred = simulated = false;
+            } else if (what == 4) {
+                ws.redrawAllStructures();
+                deferred = simulated = false;
+            }
+            // Shown at once, simulated at once, or (nothing deferred) shown already.
+            if (atOnce(deferral) || modification == ModificationMode::Uqum || !deferred) shownPosted = posted;
+            VisualState expected = VisualState::Correct;
+            if (!atOnce(deferral) && deferred)
+                expected =
+                    modification == ModificationMode::Uqum ? VisualState::Simulated : VisualState::Deferred;
+            else if (!atOnce(deferral) && simulated)
+                expected = VisualState::Simulated;
+            INFO("run " << run << " step " << step << trace);
+            CHECK(ws.visualState() == expected);
+            CHECK(ws.surfaceEmpty() == !shownPosted);
+        }
+    }
+}
+
 TEST_CASE("WAIT with NIVE or UWOR defers a change; UQUM simulates it; UPDATE performs it", "[ws][state]") {
     for (ModificationMode mode : {ModificationMode::Nive, ModificationMode::Uwor, ModificationMode::Uqum}) {
         Phigs phigs;

@@ -128,6 +128,11 @@ void Workstation::referencesChanged(int from, int to) {
 }
 
 void Workstation::setDeferralState(DeferralMode deferral, ModificationMode modification) {
+    // What the old mode showed at once (ASAP, BNIG, BNIL) or simulated at once (UQUM) is on the
+    // display; the picture, made lazily when drawn, catches up before a mode that defers reads it
+    // as what the display shows.
+    if (changesTakeEffectAtOnce() && contentStamp() != pictureStamp_)
+        regenerate(showsChangesAtOnce() ? VisualState::Correct : VisualState::Simulated);
     deferral_ = deferral;
     modification_ = modification;
     if (changesTakeEffectAtOnce()) commitCurrent();  // the deferred actions are performed now
@@ -166,7 +171,8 @@ bool Workstation::hlhsrUpdatePending() const {
 }
 
 bool Workstation::surfaceEmpty() const {
-    return changesTakeEffectAtOnce() || !pictured_ ? posted_.empty() : picturedEmpty_;
+    // Deferring, the display shows the last picture made (at first the empty surface).
+    return changesTakeEffectAtOnce() ? posted_.empty() : picturedEmpty_;
 }
 
 bool Workstation::showsChangesAtOnce() const {
