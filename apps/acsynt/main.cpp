@@ -92,15 +92,21 @@ bool parseSize(const char* text, int& width, int& height) {
            height <= 4096;
 }
 
-/// Why a file cannot be written at `path` (empty when it can): a directory, or a folder that
-/// is missing or not writable.
+/// Why a file cannot be written at `path` (empty when it can): a directory, a folder that is
+/// missing, or a file that does not open for writing. It is opened to find out (permissions
+/// alone say yes to root, even under /proc), and removed again when this made it.
 std::string unwritable(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return "is a directory";
-    if (std::filesystem::exists(path, ec)) return access(path.c_str(), W_OK) == 0 ? "" : "is not writable";
-    const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
-    if (!std::filesystem::is_directory(folder, ec)) return "is in a folder that does not exist";
-    return access(folder.c_str(), W_OK) == 0 ? "" : "is in a folder that is not writable";
+    const bool existed = std::filesystem::exists(path, ec);
+    if (!existed) {
+        const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+        if (!std::filesystem::is_directory(folder, ec)) return "is in a folder that does not exist";
+    }
+    const bool opens = static_cast<bool>(std::ofstream(path, std::ios::app));
+    if (!existed) std::filesystem::remove(path, ec);
+    if (!opens) return existed ? "is not writable" : "cannot be written in its folder";
+    return "";
 }
 
 /// A file to read as given, else (a relative name) from the shipped data folder, as the
@@ -260,11 +266,12 @@ int finish(acsynt::Session& session, const Options& o) {
     std::string logText;
     for (const auto& line : session.log()) logText += line + "\n";
     bool written = writeFile(summary, session.summary()) && writeFile(log, logText);
-    if (!o.record.empty()) written = writeFile(o.record, session.recording()) && written;
+    const bool recorded = !o.record.empty() && writeFile(o.record, session.recording());
+    if (!o.record.empty()) written = recorded && written;
     for (const auto& p : session.pictures()) std::cout << p.string() << "\n";
     for (const auto& p : session.hardcopies()) std::cout << p.string() << "\n";
     std::cout << summary.string() << "\n" << log.string() << "\n";
-    if (!o.record.empty()) std::cout << o.record << "\n";
+    if (recorded) std::cout << o.record << "\n";  // only what was written
     if (!written) return kExitFatal;
     if (session.failedLines() == 0) return 0;
     const std::string source = o.window ? std::string("the window session") : o.script;

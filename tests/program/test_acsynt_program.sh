@@ -38,6 +38,13 @@ expect_in out_stop/acsynt.log "ERROR:"
 run keepgoing 3 --script bad.session --keep-going --output out_keep --size 320x240
 last_line_is keepgoing.out "2 errors in bad.session"
 [ -f out_keep/after.txt ] || fail "keep-going: the run stopped early"
+# Directives stop the run too: a failing view does not let the summary after it run.
+printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice RETURN\nview 0 30 0.1\nsummary after\n' >badview.session
+run badview 3 --script badview.session --output out_badview --size 320x240
+last_line_is badview.out "1 error in badview.session"
+[ -f out_badview/after.txt ] && fail "badview: the summary after a failing view ran"
+run badview_keep 3 --script badview.session --keep-going --output out_badview_keep --size 320x240
+[ -f out_badview_keep/after.txt ] || fail "badview keep-going: the run stopped early"
 
 # Lines no menu or device takes are errors too, each naming its line in the log.
 printf 'choice 0\nchoice FILE device 7\nstring hello\nchoice FILE\n' >ignored.session
@@ -66,6 +73,12 @@ run record_dir 2 --script good.session --record somedir --output out_r1 --size 3
 expect_in record_dir.err "--record somedir is a directory"
 run record_missing 2 --script good.session --record no/such/folder/x.session --output out_r2
 expect_in record_missing.err "folder that does not exist"
+# A file that does not open for writing, where permissions alone say yes (root under /proc).
+if [ -d /proc/self ]; then
+  run record_proc 2 --script good.session --record /proc/acsynt_no.session --output out_r3 --size 320x240
+  expect_in record_proc.err "--record /proc/acsynt_no.session cannot be written"
+  [ -d out_r3 ] && [ -n "$(ls out_r3)" ] && fail "record_proc: the session ran"
+fi
 run script_dir 2 --script somedir --output out_s
 expect_in script_dir.err "--script somedir is a directory"
 run script_missing 2 --script nothing.session --output out_m

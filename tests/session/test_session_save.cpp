@@ -2,9 +2,11 @@
 // gives it back bit for bit; a name already loaded is read under a new name, said on the line.
 #include "SessionTestSupport.h"
 
+#include "acsynt/ModelFile.h"
 #include "acsynt/session/ModelStateFile.h"
 #include "geom/Evaluate.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -145,6 +147,40 @@ TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the mo
         CHECK(d.session.message().find(file.string() + ":") != std::string::npos);
         CHECK(d.session.models().size() == 1);
     }
+}
+
+TEST_CASE("READ MODEL: a saved model over the patch limit is refused at the component that passes it") {
+    // One bicubic component of 94 x 94 points is 91 x 91 = 8,281 patches, over 8,192: refused
+    // before its patches are made (a 2048 x 2048 net took 7.7 GB and 49 s before the total was
+    // looked at), naming the component's last line, not a line after every component was read.
+    auto component = [](const std::string& name, std::size_t n) {
+        std::ostringstream out;
+        out << "component " << name << " wing 0 0\ncolour 0x1p-1 0x1p-1 0x1p-1\nsurface 3 3 " << n << " " << n
+            << " 0\n";
+        for (const char* key : {"knots_u", "knots_w"}) {
+            out << key << " " << n + 4;
+            for (std::size_t k = 0; k < n + 4; ++k)
+                out << " " << (k < 4 ? 0.0 : k >= n ? double(n - 3) : double(k - 3));
+            out << "\n";
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) out << "p " << i << " " << j << " " << (i * j) % 7 << "\n";
+        return out.str();
+    };
+    const std::string big = component("big", 94), small = component("small", 5);
+    const std::string text = "acsynt-surfaces 1\nmodel m 2\n" + big + small + "end\n";
+    const int bigLastLine = 2 + int(std::count(big.begin(), big.end(), '\n'));
+    std::istringstream in(text);
+    try {
+        acsynt::parseModelState(in, "big.acs");
+        FAIL("a model of 8,306 patches was read");
+    } catch (const acsynt::ModelFileError& e) {
+        CHECK(e.reason().find("more than 8192 patches") != std::string::npos);
+        CHECK(e.line() == bigLastLine);
+    }
+    // Within the limit (86 x 86 = 7,396 patches, and 4 more) it reads.
+    std::istringstream fits("acsynt-surfaces 1\nmodel m 2\n" + component("big", 89) + small + "end\n");
+    CHECK(acsynt::parseModelState(fits, "fits.acs").model.patchCount() == 86 * 86 + 4);
 }
 
 }  // namespace test_session_save

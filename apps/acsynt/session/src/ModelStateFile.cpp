@@ -96,7 +96,14 @@ ComponentKind kindOf(Reader& r, const std::string& word) {
     r.fail("unknown component kind '" + word + "'");
 }
 
-Component readComponent(Reader& r, std::size_t& points) {
+/// The non-empty knot spans of a direction's domain: the patches it is cut into that way.
+std::size_t spans(const std::vector<double>& knots, int degree, std::size_t count) {
+    std::size_t n = 0;
+    for (std::size_t i = static_cast<std::size_t>(degree); i < count; ++i) n += knots[i] < knots[i + 1];
+    return n;
+}
+
+Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     const auto head = r.line("component", 5);
     Component c;
     c.name = r.name(head[1]);
@@ -126,6 +133,15 @@ Component readComponent(Reader& r, std::size_t& points) {
     try {
         c.surface = geom::Surface(degreeU, degreeV, std::move(knotsU), std::move(knotsV), countU, countV,
                                   std::move(net), std::move(weights));
+    } catch (const geom::GeometryError& e) {
+        r.fail(std::string("component ") + c.name + ": " + e.what());
+    }
+    // The patch limit is checked before the patches are made: a 2048 x 2048 net within the point
+    // limit cuts into four million of them, gigabytes before the model's total was looked at.
+    if ((patches += spans(c.surface.knotsU, c.surface.degreeU, c.surface.countU) *
+                    spans(c.surface.knotsV, c.surface.degreeV, c.surface.countV)) > kModelMaxPatches)
+        r.fail("more than " + std::to_string(kModelMaxPatches) + " patches");
+    try {
         c.updatePatches();
     } catch (const geom::GeometryError& e) {
         r.fail(std::string("component ") + c.name + ": " + e.what());
@@ -257,9 +273,9 @@ ModelState parseModelState(std::istream& in, const std::string& fileName) {
     state.model.name = r.name(model[1]);
     state.model.sourceFile = fileName;
     const std::size_t components = r.count(model[2], kModelMaxComponents * 2);
-    std::size_t points = 0, vertices = 0;
+    std::size_t points = 0, patches = 0, vertices = 0;
     for (std::size_t i = 0; i < components; ++i) {
-        Component c = readComponent(r, points);
+        Component c = readComponent(r, points, patches);
         if (state.model.find(c.name)) r.fail("a second component named " + c.name);
         state.model.components.push_back(std::move(c));
     }

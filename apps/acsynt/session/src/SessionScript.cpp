@@ -19,6 +19,14 @@ using namespace phigs;
 using namespace session_detail;
 
 void Session::directive(const action::Directive& d, const InputAction& a) {
+    applyDirective(d, a);
+    // Directives run inside one wait for input, several in a row: a script run stops at its first
+    // failing line here too, before the next one runs (--keep-going carries on).
+    if (core_.settings.stopAtFirstError && core_.failedLines > 0)
+        throw InputExhausted(source_.position() + ": stopped at the first failing line");
+}
+
+void Session::applyDirective(const action::Directive& d, const InputAction& a) {
     const std::string where = source_.position();
     if (d.name == "pick_surface") {
         if (d.arguments.size() != 5) {

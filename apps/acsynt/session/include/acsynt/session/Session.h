@@ -150,7 +150,10 @@ private:
     void initialiseString();  ///< string 1, echoed on the right of the message line
     void followStringEcho();
     void handle(const phigs::EventReport& report);
+    /// A script directive (snapshot, view, pick_surface, ...): applyDirective, and the end of a
+    /// run that stops at its first failing line when this one failed.
     void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
+    void applyDirective(const phigs::action::Directive& d, const phigs::InputAction& a);
     void writeDirective(const phigs::action::Directive& d);
     /// pick_surface: a pick at the screen position of a component's surface point in a view,
     /// which must find that component and patch; the pick reports the recorded (u, w).
