@@ -137,6 +137,15 @@ CurvePoint CurveProjector::closestPointFrom(const glm::dvec3& p, double u) const
     // Near a control point of 1e300 the squared distance overflows and Newton has nothing to go
     // by: the global search, whose bounds still hold, answers instead.
     if (!std::isfinite(best.distance)) return closestPoint(p);
+    return beforeJump(best, index);
+}
+
+CurvePoint CurveProjector::beforeJump(CurvePoint best, std::size_t piece) const {
+    // At a knot of multiplicity degree + 1 the curve jumps, and evaluate() gives the point after
+    // it: the end of the piece before is reached from just below the knot.
+    if (piece + 1 < pieces_.size() && best.u >= pieces_[piece].end &&
+        glm::length(evaluate(piece + 1, best.u).c - best.point) > 1e-9 * scale_)
+        best.u = std::nextafter(best.u, -std::numeric_limits<double>::infinity());
     return best;
 }
 
@@ -225,7 +234,7 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
         if (bound < best.distance - tolerance && mayHalve(segment.depth, points)) split(segment);
     }
     detail::checkDistance(best.distance, "closestPoint");
-    return best;
+    return beforeJump(best, bestPiece);
 }
 
 CurvePoint closestPoint(const Curve& curve, const glm::dvec3& p) {

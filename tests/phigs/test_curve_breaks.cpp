@@ -4,6 +4,7 @@
 #include "phigs/Phigs.h"
 
 #include "geom/Evaluate.h"
+#include "geom/Inversion.h"
 #include "geom/Split.h"
 
 #include <catch2/catch.hpp>
@@ -78,6 +79,25 @@ TEST_CASE("splitAtBreaks gives each continuous piece, equal to the curve inside 
                     (0.02 + 0.96 * unit(rng)) * (pieces[k].domainEnd() - pieces[k].domainStart());
                 CHECK(glm::length(geom::evaluate(pieces[k], u) - geom::evaluate(c, u)) < 1e-9);
             }
+        }
+    }
+}
+
+TEST_CASE("the closest point on a curve that jumps is a point evaluate() gives", "[geom][curve]") {
+    // Near the end of the piece before a jump, the answer's u lies just below the knot (evaluate
+    // at the knot gives the piece after it); near the start of the piece after, at the knot.
+    std::mt19937 rng(17);
+    for (int trial = 0; trial < 60; ++trial) {
+        const geom::Curve c = curveWithBreaks(rng, 1 + trial % 4, 1, trial % 2 == 1, true);
+        const std::vector<geom::Curve> pieces = geom::splitAtBreaks(c);
+        const double knot = pieces[0].domainEnd();
+        for (const glm::dvec3 query : {geom::evaluate(pieces[0], knot) + glm::dvec3(0, -0.01, 0),
+                                       geom::evaluate(pieces[1], knot) + glm::dvec3(0, 0.01, 0)}) {
+            const geom::CurvePoint global = geom::closestPoint(c, query);
+            const geom::CurvePoint local = geom::closestPoint(c, query, knot);
+            INFO("trial " << trial);
+            for (const geom::CurvePoint& found : {global, local})
+                CHECK(glm::length(geom::evaluate(c, found.u) - found.point) < 1e-9);
         }
     }
 }

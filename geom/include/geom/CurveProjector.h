@@ -35,6 +35,8 @@ private:
     Point evaluate(std::size_t piece, double u) const;
     /// Newton from u on piece `index`, held inside [a, b] (a part of the piece).
     CurvePoint polishIn(std::size_t index, const glm::dvec3& p, double u, double a, double b) const;
+    /// `best` found on `piece`: at the piece's end, where the curve jumps, u just below the knot.
+    CurvePoint beforeJump(CurvePoint best, std::size_t piece) const;
     /// Whether a segment at `depth` with this control polygon may be halved again.
     bool mayHalve(int depth, const std::vector<glm::dvec3>& polygon) const;
     /// Newton from u held inside piece `index` (a local minimum of the distance on it).

@@ -31,7 +31,8 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
 
 /// A polyline through the curve whose chords stay within tolerance of it (checked at the
-/// quarter points of every chord), from the domain start to its end.
+/// quarter points of every chord), from the domain start to its end. One polyline joins the ends
+/// of a jump (a knot of multiplicity degree + 1): draw splitAtBreaks' pieces instead.
 std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance);
 
 }  // namespace geom
