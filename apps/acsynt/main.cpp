@@ -16,11 +16,13 @@
 #include "phigs/window/GlfwWindow.h"
 #endif
 
+#include <fcntl.h>
 #include <getopt.h>
 #include <malloc.h>
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -93,19 +95,28 @@ bool parseSize(const char* text, int& width, int& height) {
 }
 
 /// Why a file cannot be written at `path` (empty when it can): a directory, a folder that is
-/// missing, or a file that does not open for writing. It is opened to find out (permissions
-/// alone say yes to root, even under /proc), and removed again when this made it.
+/// missing, or a file that does not open for writing. Permissions alone say yes to root, even
+/// under /proc, so a new file is made to find out (exclusively, never through a link, and
+/// removed again) and an existing regular file opened without a change; a pipe or a device is
+/// only asked for permission (opening one could block).
 std::string unwritable(const std::filesystem::path& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return "is a directory";
-    const bool existed = std::filesystem::exists(path, ec);
-    if (!existed) {
-        const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
-        if (!std::filesystem::is_directory(folder, ec)) return "is in a folder that does not exist";
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status)) return "is a directory";
+    if (std::filesystem::exists(status)) {
+        if (!std::filesystem::is_regular_file(status))
+            return access(path.c_str(), W_OK) == 0 ? "" : "is not writable";
+        const int fd = open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) return "is not writable";
+        close(fd);
+        return "";
     }
-    const bool opens = static_cast<bool>(std::ofstream(path, std::ios::app));
-    if (!existed) std::filesystem::remove(path, ec);
-    if (!opens) return existed ? "is not writable" : "cannot be written in its folder";
+    const std::filesystem::path folder = path.parent_path().empty() ? "." : path.parent_path();
+    if (!std::filesystem::is_directory(folder, ec)) return "is in a folder that does not exist";
+    const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0) return errno == EEXIST ? "" : "cannot be written in its folder";  // EEXIST: a link
+    close(fd);
+    unlink(path.c_str());
     return "";
 }
 

@@ -296,10 +296,13 @@ void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerance
             if (krawczykExcludes(c, p, q, tol.error, scratch)) continue;
         }
         if (last) {
-            // Several starts, so that close roots are not lost.
-            for (const auto& f : {glm::dvec2(0.5, 0.5), glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25),
-                                  glm::dvec2(0.25, 0.75), glm::dvec2(0.75, 0.75)})
-                newtonFinds(f.x, f.y);
+            // At full depth several starts, so that close roots are not lost; out of budget (a
+            // line lying in the surface leaves thousands of cells queued) one from the centre.
+            newtonFinds(0.5, 0.5);
+            if (visited <= kNodeBudget)
+                for (const auto& f : {glm::dvec2(0.25, 0.25), glm::dvec2(0.75, 0.25), glm::dvec2(0.25, 0.75),
+                                      glm::dvec2(0.75, 0.75)})
+                    newtonFinds(f.x, f.y);
             continue;
         }
         const std::size_t o = pool.size();
@@ -347,7 +350,9 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         terms = std::max(terms, std::abs(h.x) + std::abs(h.y) + std::abs(h.z) + originSize * h.w);
     }
     const double lengthScale = tree_.scale() * magnitude;
-    const Tolerances tolerances{1e-12 * lengthScale, 1e-13 * lengthScale, 1e-14 * terms};
+    // The rounding bound covers the projection and 40 levels of halving (each adds at most an
+    // epsilon of the net's size), times the factor p an edge division can bring.
+    const Tolerances tolerances{1e-12 * lengthScale, 1e-13 * lengthScale, 1e-13 * terms};
 
     auto accept = [&](double s, double t) {
         const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);

@@ -14,7 +14,7 @@ namespace geom {
 /// box tree are built once. Each query projects candidate patches onto the plane across the
 /// line, subdivides while the projected box holds the origin (Krawczyk's test parts the cells
 /// beside a root from it), and polishes each root by Newton. A patch edge lying on the line (a
-/// pole) is one hit, its factor divided out of the search.
+/// pole, or a straight edge along it) is one hit at its middle, its factor divided out of the search.
 class SurfaceIntersector {
 public:
     explicit SurfaceIntersector(const Surface& surface);

@@ -108,22 +108,28 @@ std::vector<HatchRun> hatchRuns(const std::vector<std::vector<glm::dvec2>>& cont
     for (const auto& c : contours)
         for (const glm::dvec2& p : c)
             lo = std::min(lo, glm::dot(across, p)), hi = std::max(hi, glm::dot(across, p));
-    if (!(hi > lo)) return {};
-    const double first = std::floor(lo / spacing), lines = std::floor(hi / spacing) - first + 1.0;
-    // Lines a pixel apart over a page: a bound against a region whose size is not a page's.
-    if (!(lines < 1e7)) return {};
+    // Lines a pixel apart over a page: a bound against a region whose size is not a page's (and
+    // line numbers beyond 2^53, which doubles cannot count one by one).
+    if (!(hi > lo) || !(std::max(std::abs(lo), std::abs(hi)) / spacing < 1e15)) return {};
+    const double first = std::floor(lo / spacing);
+    const double count = std::floor(hi / spacing) - first + 1.0;
+    if (!(count < 1e6)) return {};
+    const auto lines = static_cast<std::int64_t>(count);
     std::vector<std::vector<double>> crossings(static_cast<std::size_t>(lines));
     for (const auto& c : contours)
         for (std::size_t i = 0; i < c.size(); ++i) {
             const glm::dvec2 p = c[i], q = c[(i + 1) % c.size()];
             const double dp = glm::dot(across, p), dq = glm::dot(across, q);
             const double low = std::min(dp, dq), high = std::max(dp, dq);
-            for (double k = std::floor(low / spacing); k * spacing <= high; k += 1.0) {
-                const double line = k * spacing;
-                const double index = k - first;
-                if (!(line > low) || index >= lines) continue;
+            const auto from =
+                std::max<std::int64_t>(0, static_cast<std::int64_t>(std::floor(low / spacing) - first));
+            const auto to = std::min<std::int64_t>(
+                lines - 1, static_cast<std::int64_t>(std::floor(high / spacing) - first));
+            for (std::int64_t k = from; k <= to; ++k) {
+                const double line = (first + double(k)) * spacing;
+                if (!(line > low && line <= high)) continue;
                 const glm::dvec2 at = p + (q - p) * ((line - dp) / (dq - dp));
-                crossings[static_cast<std::size_t>(index)].push_back(glm::dot(along, at));
+                crossings[static_cast<std::size_t>(k)].push_back(glm::dot(along, at));
             }
         }
     std::vector<HatchRun> runs;

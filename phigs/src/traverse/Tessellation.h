@@ -9,8 +9,6 @@
 
 #include <vector>
 
-namespace phigs {}
-
 namespace phigs::detail {
 
 /// Segments per knot span for an approximation criteria attribute: 1 (workstation dependent)

@@ -131,8 +131,14 @@ void Workstation::setDeferralState(DeferralMode deferral, ModificationMode modif
     // What the old mode showed at once (ASAP, BNIG, BNIL) or simulated at once (UQUM) is on the
     // display; the picture, made lazily when drawn, catches up before a mode that defers reads it
     // as what the display shows.
-    if (changesTakeEffectAtOnce() && contentStamp() != pictureStamp_)
-        regenerate(showsChangesAtOnce() ? VisualState::Correct : VisualState::Simulated);
+    if (changesTakeEffectAtOnce() && contentStamp() != pictureStamp_) {
+        try {
+            regenerate(showsChangesAtOnce() ? VisualState::Correct : VisualState::Simulated);
+        } catch (const Error&) {
+            // A network the traversal refuses (too deep) is reported when it is drawn, not here:
+            // SET DISPLAY UPDATE STATE has no such error.
+        }
+    }
     deferral_ = deferral;
     modification_ = modification;
     if (changesTakeEffectAtOnce()) commitCurrent();  // the deferred actions are performed now
