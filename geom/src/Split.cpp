@@ -46,6 +46,14 @@ Halves splitNet(int degree, std::vector<double> knots, ControlNet net, double t,
 std::vector<Curve> splitAtBreaks(const Curve& curve) {
     validate(curve, "splitAtBreaks");
     const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
+    // Control points [first, last) with knots [first, last + p + 1): one piece.
+    auto piece = [&](std::size_t first, std::size_t last) {
+        auto slice = [&](const auto& v, std::size_t from, std::size_t to) {
+            return std::vector(v.begin() + long(from), v.begin() + long(to));
+        };
+        return Curve(curve.degree, slice(curve.knots, first, last + p + 1), slice(curve.points, first, last),
+                     curve.weights.empty() ? std::vector<double>{} : slice(curve.weights, first, last));
+    };
     std::vector<Curve> pieces;
     std::size_t first = 0;  // the current piece's first control point (and knot)
     for (std::size_t i = p + 1; i < n; ++i) {
@@ -53,23 +61,12 @@ std::vector<Curve> splitAtBreaks(const Curve& curve) {
         if (!(curve.knots[i] == curve.knots[i + p] && curve.knots[i] > curve.knots[p] &&
               curve.knots[i] < curve.knots[n]))
             continue;
-        pieces.push_back(Curve(
-            curve.degree,
-            std::vector<double>(curve.knots.begin() + long(first), curve.knots.begin() + long(i + p + 1)),
-            std::vector<glm::dvec3>(curve.points.begin() + long(first), curve.points.begin() + long(i)),
-            curve.weights.empty()
-                ? std::vector<double>{}
-                : std::vector<double>(curve.weights.begin() + long(first), curve.weights.begin() + long(i))));
+        pieces.push_back(piece(first, i));
         first = i;
         i += p;
     }
     if (first == 0) return {curve};
-    pieces.push_back(
-        Curve(curve.degree, std::vector<double>(curve.knots.begin() + long(first), curve.knots.end()),
-              std::vector<glm::dvec3>(curve.points.begin() + long(first), curve.points.end()),
-              curve.weights.empty()
-                  ? std::vector<double>{}
-                  : std::vector<double>(curve.weights.begin() + long(first), curve.weights.end())));
+    pieces.push_back(piece(first, n));
     return pieces;
 }
 

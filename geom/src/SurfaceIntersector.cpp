@@ -93,24 +93,32 @@ SpanBounds mul(SpanBounds a, SpanBounds b) {
     return {std::min(std::min(x1, x2), std::min(x3, x4)), std::max(std::max(x1, x2), std::max(x3, x4))};
 }
 
-/// True when det [G_s G_t] keeps one strict sign over the whole sub-patch (interval bound on the
-/// derivative nets): then the projected map is locally one-to-one and Newton finds its root.
-bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
-    if (pu < 2 || qv < 2) return false;
-    SpanBounds sx{1e300, -1e300}, sy{1e300, -1e300}, tx{1e300, -1e300}, ty{1e300, -1e300};
+/// Bounds of a net's differences along s and along t (the derivative nets over p and q):
+/// slope[row][column], rows the x and y of G, columns s and t.
+struct NetSlopes {
+    SpanBounds slope[2][2] = {{{1e300, -1e300}, {1e300, -1e300}}, {{1e300, -1e300}, {1e300, -1e300}}};
+};
+
+NetSlopes netSlopes(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
+    NetSlopes n;
+    auto widen = [](SpanBounds& b, double x) { b = {std::min(b.lo, x), std::max(b.hi, x)}; };
     for (std::size_t i = 0; i + 1 < pu; ++i)
         for (std::size_t j = 0; j < qv; ++j) {
             const glm::dvec2 d = c[(i + 1) * qv + j] - c[i * qv + j];
-            sx = {std::min(sx.lo, d.x), std::max(sx.hi, d.x)};
-            sy = {std::min(sy.lo, d.y), std::max(sy.hi, d.y)};
+            widen(n.slope[0][0], d.x), widen(n.slope[1][0], d.y);
         }
     for (std::size_t i = 0; i < pu; ++i)
         for (std::size_t j = 0; j + 1 < qv; ++j) {
             const glm::dvec2 d = c[i * qv + j + 1] - c[i * qv + j];
-            tx = {std::min(tx.lo, d.x), std::max(tx.hi, d.x)};
-            ty = {std::min(ty.lo, d.y), std::max(ty.hi, d.y)};
+            widen(n.slope[0][1], d.x), widen(n.slope[1][1], d.y);
         }
-    const SpanBounds a = mul(sx, ty), b = mul(sy, tx);
+    return n;
+}
+
+/// True when det [G_s G_t] keeps one strict sign over the whole sub-patch (interval bound on the
+/// derivative nets): then the projected map is locally one-to-one and Newton finds its root.
+bool jacobianKeepsSign(const NetSlopes& n) {
+    const SpanBounds a = mul(n.slope[0][0], n.slope[1][1]), b = mul(n.slope[1][0], n.slope[0][1]);
     const double lo = a.lo - b.hi, hi = a.hi - b.lo;
     return lo > 0.0 || hi < 0.0;
 }
@@ -118,23 +126,15 @@ bool jacobianKeepsSign(const glm::dvec2* c, std::size_t pu, std::size_t qv) {
 /// Krawczyk's test of G on the sub-net c over its own unit square X: true when X holds no root.
 /// With Y the inverse Jacobian at the centre x0 and J(X) the bounds of the derivative nets, every
 /// root in X lies in K = x0 - Y G(x0) + (I - Y J(X)) (X - x0), so K apart from X proves there is
-/// none. `error` bounds the rounding in G: no root hidden by it is excluded.
-bool krawczykExcludes(const glm::dvec2* c, int p, int q, double error, Scratch& w) {
-    const std::size_t pu = static_cast<std::size_t>(p) + 1, qv = static_cast<std::size_t>(q) + 1;
-    if (pu < 2 || qv < 2) return false;
-    // j[row][column]: the Jacobian's entries, columns d/ds and d/dt.
-    SpanBounds j[2][2] = {{{1e300, -1e300}, {1e300, -1e300}}, {{1e300, -1e300}, {1e300, -1e300}}};
-    auto widen = [](SpanBounds& b, double x) { b = {std::min(b.lo, x), std::max(b.hi, x)}; };
-    for (std::size_t i = 0; i + 1 < pu; ++i)
-        for (std::size_t k = 0; k < qv; ++k) {
-            const glm::dvec2 d = double(p) * (c[(i + 1) * qv + k] - c[i * qv + k]);
-            widen(j[0][0], d.x), widen(j[1][0], d.y);
-        }
-    for (std::size_t i = 0; i < pu; ++i)
-        for (std::size_t k = 0; k + 1 < qv; ++k) {
-            const glm::dvec2 d = double(q) * (c[i * qv + k + 1] - c[i * qv + k]);
-            widen(j[0][1], d.x), widen(j[1][1], d.y);
-        }
+/// none. `error` bounds the rounding in G: no root hidden by it is excluded. Degrees p, q >= 1;
+/// `slopes` are the net's own (netSlopes).
+bool krawczykExcludes(const glm::dvec2* c, int p, int q, const NetSlopes& slopes, double error, Scratch& w) {
+    // j[row][column]: the Jacobian's entries, columns d/ds and d/dt (the slopes times p and q).
+    SpanBounds j[2][2];
+    for (int r = 0; r < 2; ++r) {
+        j[r][0] = {double(p) * slopes.slope[r][0].lo, double(p) * slopes.slope[r][0].hi};
+        j[r][1] = {double(q) * slopes.slope[r][1].lo, double(q) * slopes.slope[r][1].hi};
+    }
     const Projected e = evaluateProjected(c, p, q, 0.5, 0.5, w);
     const double det = e.gs.x * e.gt.y - e.gs.y * e.gt.x;
     const double y[2][2] = {{e.gt.y / det, -e.gt.x / det}, {-e.gs.y / det, e.gs.x / det}};
@@ -289,11 +289,14 @@ void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerance
             if (r.converged) found(r.s, r.t);
             return r.converged;
         };
-        if (!last && jacobianKeepsSign(c, pu, qv)) {
-            if (newtonFinds(0.5, 0.5)) continue;
-            // No root reached: a cell beside one, kept by the box test's tolerance. Where the
-            // Jacobian varies this little, Krawczyk's test tells such a cell apart.
-            if (krawczykExcludes(c, p, q, tol.error, scratch)) continue;
+        if (!last && pu > 1 && qv > 1) {
+            const NetSlopes slopes = netSlopes(c, pu, qv);
+            if (jacobianKeepsSign(slopes)) {
+                if (newtonFinds(0.5, 0.5)) continue;
+                // No root reached: a cell beside one, kept by the box test's tolerance. Where the
+                // Jacobian varies this little, Krawczyk's test tells such a cell apart.
+                if (krawczykExcludes(c, p, q, slopes, tol.error, scratch)) continue;
+            }
         }
         if (last) {
             // At full depth several starts, so that close roots are not lost; out of budget (a
