@@ -30,11 +30,21 @@ std::string contents(const std::filesystem::path& file) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-/// A line, a marker, a filled square and a word over a dark background, world = NPC.
-DrawList sampleScene(glm::vec3 squareColour = {0, 0.8f, 1}) {
+/// One view, world = NPC, over a dark background, the primitives drawn in order.
+DrawList sceneOf(std::initializer_list<DrawPrimitive> primitives) {
     DrawList list;
     list.views.push_back(DrawView{});
     list.background = {0.1f, 0.1f, 0.1f};
+    for (const DrawPrimitive& p : primitives) {
+        DrawItem item;
+        item.primitive = p;
+        list.items.push_back(std::move(item));
+    }
+    return list;
+}
+
+/// A line, a marker, a filled square and a word over a dark background, world = NPC.
+DrawList sampleScene(glm::vec3 squareColour = {0, 0.8f, 1}) {
     DrawFillArea square;
     square.contours = {{{0.1, 0.1, 0.5}, {0.5, 0.1, 0.5}, {0.5, 0.5, 0.5}, {0.1, 0.5, 0.5}}};
     square.interior.edit().style = InteriorStyle::Solid;
@@ -51,13 +61,7 @@ DrawList sampleScene(glm::vec3 squareColour = {0, 0.8f, 1}) {
     text.text = "PHIGS";
     text.position = {0.55, 0.6, 0.5};
     text.style.edit().height = 0.08;
-    for (DrawPrimitive p :
-         {DrawPrimitive(square), DrawPrimitive(line), DrawPrimitive(marker), DrawPrimitive(text)}) {
-        DrawItem item;
-        item.primitive = std::move(p);
-        list.items.push_back(std::move(item));
-    }
-    return list;
+    return sceneOf({DrawPrimitive(square), DrawPrimitive(line), DrawPrimitive(marker), DrawPrimitive(text)});
 }
 
 PageSetup squarePage(double size) {
@@ -200,9 +204,6 @@ TEST_CASE("vector hardcopy: hatched holes stay empty in PDF and SVG, whichever w
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     const auto dir = outputDir();
     for (int trial = 0; trial < 8; ++trial) {
-        DrawList list;
-        list.views.push_back(DrawView{});
-        list.background = {0.1f, 0.1f, 0.1f};
         DrawFillArea set;
         std::vector<glm::dvec3> outline, hole;
         const int points = 5 + trial % 4;
@@ -217,9 +218,7 @@ TEST_CASE("vector hardcopy: hatched holes stay empty in PDF and SVG, whichever w
         set.interior.edit().style = InteriorStyle::Hatch;
         set.interior.edit().styleIndex = 1 + trial % 6;
         set.interior.edit().colour = {1, 1, 1};
-        DrawItem item;
-        item.primitive = DrawPrimitive(set);
-        list.items.push_back(std::move(item));
+        const DrawList list = sceneOf({DrawPrimitive(set)});
         for (const VectorFormat format : {VectorFormat::Pdf, VectorFormat::Svg}) {
             const auto file = dir / ("hatched_hole." + std::string(vectorFormatName(format)));
             VectorWorkstation ws(file, format, squarePage(200));
@@ -244,18 +243,13 @@ TEST_CASE("vector hardcopy: hatched holes stay empty in PDF and SVG, whichever w
 }
 
 TEST_CASE("vector hardcopy: a transparent hatch blends as the raster's does", "[hardcopy]") {
-    DrawList list;
-    list.views.push_back(DrawView{});
-    list.background = {0.1f, 0.1f, 0.1f};
     DrawFillArea square;
     square.contours = {{{0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.8, 0.8, 0.5}, {0.2, 0.8, 0.5}}};
     square.interior.edit().style = InteriorStyle::Hatch;
     square.interior.edit().styleIndex = 1;
     square.interior.edit().colour = {1, 1, 1};
     square.interior.edit().properties.transparency = 0.7f;
-    DrawItem item;
-    item.primitive = DrawPrimitive(square);
-    list.items.push_back(std::move(item));
+    const DrawList list = sceneOf({DrawPrimitive(square)});
     const auto file = outputDir() / "transparent_hatch.pdf";
     VectorWorkstation ws(file, VectorFormat::Pdf, squarePage(200));
     ws.update(list);
