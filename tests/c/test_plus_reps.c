@@ -457,6 +457,7 @@ static void errors(Pstore store) {
     Ptext_bundle_plus text = {7, PPREC_STROKE, 1.0f, 0.0f, {PINDIRECT, {1}}};
     Pedge_bundle_plus edge = {PEDGE_ON, 8, 1.0f, {PINDIRECT, {1}}};
     Pint_bundle_plus interior = random_interior(), int_got;
+    Pedge_bundle_plus edge_got;
     Pcoval cells[4];
     Ppat_rep_plus pattern = {{2, 2}, PINDIRECT, cells}, *pattern_got = NULL;
     EXPECT_NO_ERROR(pset_line_rep_plus(1, 5, &line));
@@ -565,8 +566,10 @@ static void errors(Pstore store) {
     pinq_int_rep_plus(1, 31, PINQ_REALIZED, &err, &int_got);
     CHECK(err == 0 && int_got.style == PSTYLE_HOLLOW && int_got.colr.type == PINDIRECT &&
           int_got.colr.val.ind == 1);
-    pinq_edge_rep_plus(2, 1, PINQ_SET, &err, NULL);
+    pinq_edge_rep_plus(2, 1, PINQ_SET, &err, &edge_got);
     CHECK(err == 54);
+    pinq_edge_rep_plus(2, 1, PINQ_SET, &err, NULL); /* the binding checks before the core */
+    CHECK(err == -204);
     pinq_pat_rep_plus(1, 0, PINQ_SET, store, &err, &pattern_got);
     CHECK(err == 112);
     pinq_pat_rep_plus(1, 30, PINQ_SET, store, &err, &pattern_got);

@@ -114,6 +114,7 @@ void pset_colr_map_rep(Pint ws_id, Pint index, Pint map_method, const Pcolr_map_
 
 void pinq_colr_map_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err, Pint* map_method,
                        Pcolr_map_data** map_data) {
+    if (!c::somewhereToAnswer(err, map_method, map_data)) return;
     const int t = c::raw(type);
     c::inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
@@ -130,6 +131,7 @@ void pinq_colr_map_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pin
 
 void pinq_pred_colr_map_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Pint* map_method,
                             Pcolr_map_data** map_data) {
+    if (!c::somewhereToAnswer(err, map_method, map_data)) return;
     c::inquire(err, [&](Phigs&) {
         c::workstationTypeOf(ws_type, "inquiry");
         if (index < 0) throw Error(errors::ColourMappingIndexBelowZero, "inquiry");
@@ -143,6 +145,7 @@ void pinq_pred_colr_map_rep(Pint ws_type, Pint index, Pstore store, Pint* err, P
 }
 
 void pinq_list_colr_map_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     c::inquire(err, [&](Phigs& p) {
         c::answerList(c::inquiredWorkstation(p, ws_id).tables().colourMappings.definedIndices(), appl, start,
                       inds, total);
@@ -150,6 +153,7 @@ void pinq_list_colr_map_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_
 }
 
 void pinq_colr_map_st(Pint ws_id, Pint map_method, Pint* err, Pcolr_map_st* map_st) {
+    if (!c::somewhereToAnswer(err, map_st)) return;
     c::inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         const Pint n = available(map_method, ws.description(), "inquiry");
@@ -159,6 +163,7 @@ void pinq_colr_map_st(Pint ws_id, Pint map_method, Pint* err, Pcolr_map_st* map_
 }
 
 void pinq_colr_map_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pcolr_map_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     c::inquire(err, [&](Phigs&) {
         c::workstationTypeOf(ws_type, "inquiry");
         c::require(facs, "inquiry");
@@ -169,6 +174,7 @@ void pinq_colr_map_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pcolr_ma
 }
 
 void pinq_colr_map_method_facs(Pint ws_type, Pint map_method, Pint* err, Pcolr_map_st* map_st) {
+    if (!c::somewhereToAnswer(err, map_st)) return;
     c::inquire(err, [&](Phigs&) {
         const Pint n = available(
             map_method, describeWorkstationType(c::workstationTypeOf(ws_type, "inquiry")), "inquiry");

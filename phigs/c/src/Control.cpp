@@ -51,6 +51,9 @@ void pescape(Pint func_id, const Pescape_in_data* in_data, Pstore /*store*/, Pes
 
 void pinq_phigs_facs(Pint appl, Pint start, Pint* err, Pint* max_open_ws, Pint* max_open_ar, Pint* num_names,
                      Pint_list* char_sets, Pint* total, Pint* max_norm_filter, Pint* max_inv_filter) {
+    if (!phigs::c::somewhereToAnswer(err, max_open_ws, max_open_ar, num_names, char_sets, total,
+                                     max_norm_filter, max_inv_filter))
+        return;
     phigs::c::inquire(err, [&](phigs::Phigs&) {
         for (Pint* unlimited : {max_open_ws, max_open_ar, num_names, max_norm_filter, max_inv_filter})
             if (unlimited) *unlimited = std::numeric_limits<Pint>::max();
@@ -86,6 +89,7 @@ void pset_err_hand_mode(Perr_mode value) {
 }
 
 void pinq_err_hand_mode(Pint* err_ind, Perr_mode* mode) {
+    if (!phigs::c::somewhereToAnswer(err_ind, mode)) return;
     if (!err_ind) return;
     Binding& b = Binding::instance();
     *err_ind = b.system() ? 0 : phigs::errors::NotPhigsOpen;

@@ -39,6 +39,7 @@ Pfloat real(double v) {
 extern "C" {
 
 void pinq_ws_class(Pint ws_type, Pint* err, Pws_class* ws_class) {
+    if (!c::somewhereToAnswer(err, ws_class)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (ws_class) *ws_class = static_cast<Pws_class>(d.workstationClass);
@@ -46,6 +47,7 @@ void pinq_ws_class(Pint ws_type, Pint* err, Pws_class* ws_class) {
 }
 
 void pinq_disp_space_size3(Pint ws_type, Pint* err, Pdisp_space_size3* size) {
+    if (!c::somewhereToAnswer(err, size)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (!size) return;
@@ -58,6 +60,7 @@ void pinq_disp_space_size3(Pint ws_type, Pint* err, Pdisp_space_size3* size) {
 }
 
 void pinq_disp_space_size(Pint ws_type, Pint* err, Pdisp_space_size* size) {
+    if (!c::somewhereToAnswer(err, size)) return;
     Pdisp_space_size3 size3{};
     pinq_disp_space_size3(ws_type, err, &size3);
     if (err && *err == 0 && size)
@@ -67,6 +70,7 @@ void pinq_disp_space_size(Pint ws_type, Pint* err, Pdisp_space_size* size) {
 }
 
 void pinq_ws_st_table(Pint ws_type, Pint* err, Pws_tables* lengths) {
+    if (!c::somewhereToAnswer(err, lengths)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (!lengths) return;
@@ -76,6 +80,7 @@ void pinq_ws_st_table(Pint ws_type, Pint* err, Pws_tables* lengths) {
 }
 
 void pinq_num_disp_pris(Pint ws_type, Pint* err, Pint* num_pris) {
+    if (!c::somewhereToAnswer(err, num_pris)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (num_pris) *num_pris = d.displayPriorities;
@@ -83,6 +88,7 @@ void pinq_num_disp_pris(Pint ws_type, Pint* err, Pint* num_pris) {
 }
 
 void pinq_dyns_ws_attrs(Pint ws_type, Pint* err, Pdyns_ws_attrs* attrs) {
+    if (!c::somewhereToAnswer(err, attrs)) return;
     inquire(err, [&](Phigs&) {
         const Pdyn_mod m = static_cast<Pdyn_mod>(described(ws_type).attributeDynamics);
         if (attrs) *attrs = {m, m, m, m, m, m, m, m, m, m, m, m};
@@ -90,6 +96,7 @@ void pinq_dyns_ws_attrs(Pint ws_type, Pint* err, Pdyns_ws_attrs* attrs) {
 }
 
 void pinq_dyns_structs(Pint ws_type, Pint* err, Pdyns_structs* dyns) {
+    if (!c::somewhereToAnswer(err, dyns)) return;
     inquire(err, [&](Phigs&) {
         const Pdyn_mod m = static_cast<Pdyn_mod>(described(ws_type).structureDynamics);
         if (dyns) *dyns = {m, m, m, m, m};
@@ -97,6 +104,7 @@ void pinq_dyns_structs(Pint ws_type, Pint* err, Pdyns_structs* dyns) {
 }
 
 void pinq_line_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pline_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
@@ -110,6 +118,7 @@ void pinq_line_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pline_facs
 }
 
 void pinq_marker_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pmarker_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList(c::oneTo(d.markerTypes), length, start, facs ? &facs->types : nullptr, total);
@@ -123,6 +132,7 @@ void pinq_marker_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pmarker_
 }
 
 void pinq_text_facs(Pint ws_type, Pint length, Pint start, Pint* err, Ptext_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         // Every font in every precision: pair i is font i / 3 + 1 in precision i % 3.
@@ -148,6 +158,7 @@ void pinq_text_facs(Pint ws_type, Pint length, Pint start, Pint* err, Ptext_facs
 }
 
 void pinq_int_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList(d.hatchStyles, length, start, facs ? &facs->hatch_styles : nullptr, total);
@@ -159,6 +170,7 @@ void pinq_int_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_facs* 
 }
 
 void pinq_edge_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pedge_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
@@ -172,6 +184,7 @@ void pinq_edge_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pedge_facs
 }
 
 void pinq_pat_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
+    if (!c::somewhereToAnswer(err, num_pred_inds)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (num_pred_inds) *num_pred_inds = c::countOf(predefinedRepresentations(d.type).patterns.size());
@@ -179,6 +192,7 @@ void pinq_pat_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
 }
 
 void pinq_colr_facs(Pint ws_type, Pint* err, Pcolr_facs* facs) {
+    if (!c::somewhereToAnswer(err, facs)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (facs) *facs = {0, PAVAIL_COLR, c::countOf(predefinedRepresentations(d.type).colours.size())};
@@ -187,6 +201,7 @@ void pinq_colr_facs(Pint ws_type, Pint* err, Pcolr_facs* facs) {
 
 void pinq_colr_model_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_list* models, Pint* total,
                           Pint* def_model) {
+    if (!c::somewhereToAnswer(err, models, total, def_model)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList(d.colourModels, length, start, models, total);
@@ -195,6 +210,7 @@ void pinq_colr_model_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint
 }
 
 void pinq_view_facs(Pint ws_type, Pint* err, Pint* num_pred_views) {
+    if (!c::somewhereToAnswer(err, num_pred_views)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         if (num_pred_views) *num_pred_views = c::countOf(predefinedRepresentations(d.type).views.size());
@@ -202,6 +218,7 @@ void pinq_view_facs(Pint ws_type, Pint* err, Pint* num_pred_views) {
 }
 
 void pinq_hlhsr_id_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_list* ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ids, total)) return;
     inquire(err, [&](Phigs&) {
         described(ws_type);
         c::answerList({0, 1}, length, start, ids, total);  // 0 disables, 1 enables hidden-surface removal
@@ -209,11 +226,13 @@ void pinq_hlhsr_id_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_l
 }
 
 void pinq_hlhsr_mode_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_list* modes, Pint* total) {
+    if (!c::somewhereToAnswer(err, modes, total)) return;
     inquire(err, [&](Phigs&) { c::answerList(described(ws_type).hlhsrModes, length, start, modes, total); });
 }
 
 void pinq_anno_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_list* styles, Pint* total,
                     Pint* num_char_hts, Pfloat* min_char_ht, Pfloat* max_char_ht) {
+    if (!c::somewhereToAnswer(err, styles, total, num_char_hts, min_char_ht, max_char_ht)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
         c::answerList({PANNO_STYLE_UNCONNECTED, PANNO_STYLE_LEAD_LINE}, length, start, styles, total);
@@ -224,6 +243,7 @@ void pinq_anno_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_list*
 }
 
 void pinq_model_clip_facs(Pint length, Pint start, Pint* err, Pint* num_planes, Pint_list* ops, Pint* total) {
+    if (!c::somewhereToAnswer(err, num_planes, ops, total)) return;
     inquire(err, [&](Phigs&) {
         c::answerList({PMC_REPLACE, PMC_INTERSECT}, length, start, ops, total);
         if (num_planes) *num_planes = 64;  // the raster types' limit of distinct half-spaces in a picture
@@ -231,26 +251,32 @@ void pinq_model_clip_facs(Pint length, Pint start, Pint* err, Pint* num_planes, 
 }
 
 void pinq_pred_line_rep(Pint ws_type, Pint index, Pint* err, Pline_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedBundle(ws_type, &PredefinedRepresentations::polylines, index, err, rep);
 }
 
 void pinq_pred_marker_rep(Pint ws_type, Pint index, Pint* err, Pmarker_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedBundle(ws_type, &PredefinedRepresentations::polymarkers, index, err, rep);
 }
 
 void pinq_pred_text_rep(Pint ws_type, Pint index, Pint* err, Ptext_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedBundle(ws_type, &PredefinedRepresentations::texts, index, err, rep);
 }
 
 void pinq_pred_int_rep(Pint ws_type, Pint index, Pint* err, Pint_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedBundle(ws_type, &PredefinedRepresentations::interiors, index, err, rep);
 }
 
 void pinq_pred_edge_rep(Pint ws_type, Pint index, Pint* err, Pedge_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedBundle(ws_type, &PredefinedRepresentations::edges, index, err, rep);
 }
 
 void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_rep** rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs&) {
         const auto& p =
             c::predefinedEntry(c::predefinedOf(ws_type).patterns, index, 1, errors::PatternIndexBelowOne);
@@ -261,6 +287,7 @@ void pinq_pred_pat_rep(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_r
 }
 
 void pinq_pred_colr_rep(Pint ws_type, Pint index, Pint* err, Pcolr_rep* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs&) {
         const auto& rgb =
             c::predefinedEntry(c::predefinedOf(ws_type).colours, index, 0, errors::ColourIndexBelowZero);
@@ -269,6 +296,7 @@ void pinq_pred_colr_rep(Pint ws_type, Pint index, Pint* err, Pcolr_rep* rep) {
 }
 
 void pinq_pred_view_rep(Pint ws_type, Pint index, Pint* err, Pview_rep3* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs&) {
         const auto& v =
             c::predefinedEntry(c::predefinedOf(ws_type).views, index, 0, errors::ViewIndexBelowZero);

@@ -143,6 +143,9 @@ extern "C" {
 void pinq_loc_st3(Pint ws_id, Pint loc_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                   Pecho_switch* echo_switch, Pint* init_view_ind, Ppoint3* init_loc_pos, Pint* prompt_echo,
                   Plimit3* echo_vol, Ploc_data3** loc_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_view_ind, init_loc_pos, prompt_echo,
+                              echo_vol, loc_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Locator, loc_num, &type, store, op_mode, echo_switch, prompt_echo,
                 [&](const DeviceState& s) {
                     const auto& l = std::get<LocatorMeasure>(s.device.setup.initial);
@@ -157,6 +160,9 @@ void pinq_loc_st3(Pint ws_id, Pint loc_num, Pinq_type type, Pstore store, Pint* 
 void pinq_loc_st(Pint ws_id, Pint loc_num, Pinq_type type, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                  Pecho_switch* echo_switch, Pint* init_view_ind, Ppoint* init_loc_pos, Pint* prompt_echo,
                  Plimit* echo_area, Ploc_data** loc_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_view_ind, init_loc_pos, prompt_echo,
+                              echo_area, loc_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Locator, loc_num, &type, store, op_mode, echo_switch, prompt_echo,
                 [&](const DeviceState& s) {
                     const auto& l = std::get<LocatorMeasure>(s.device.setup.initial);
@@ -171,6 +177,9 @@ void pinq_stroke_st3(Pint ws_id, Pint stroke_num, Pinq_type type, Pstore store, 
                      Pop_mode* op_mode, Pecho_switch* echo_switch, Pint* init_view_ind,
                      Ppoint_list3** init_stroke, Pint* prompt_echo, Plimit3* echo_vol,
                      Pstroke_data3** stroke_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_view_ind, init_stroke, prompt_echo,
+                              echo_vol, stroke_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Stroke, stroke_num, &type, store, op_mode, echo_switch,
                 prompt_echo, [&](const DeviceState& s) {
                     put(init_view_ind, std::get<StrokeMeasure>(s.device.setup.initial).viewIndex);
@@ -186,6 +195,9 @@ void pinq_stroke_st(Pint ws_id, Pint stroke_num, Pinq_type type, Pstore store, P
                     Pop_mode* op_mode, Pecho_switch* echo_switch, Pint* init_view_ind,
                     Ppoint_list** init_stroke, Pint* prompt_echo, Plimit* echo_area,
                     Pstroke_data** stroke_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_view_ind, init_stroke, prompt_echo,
+                              echo_area, stroke_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Stroke, stroke_num, &type, store, op_mode, echo_switch,
                 prompt_echo, [&](const DeviceState& s) {
                     put(init_view_ind, std::get<StrokeMeasure>(s.device.setup.initial).viewIndex);
@@ -202,6 +214,8 @@ void pinq_stroke_st(Pint ws_id, Pint stroke_num, Pinq_type type, Pstore store, P
 void pinq_val_st3(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                   Pecho_switch* echo_switch, Pfloat* init_value, Pint* prompt_echo, Plimit3* echo_vol,
                   Pval_data3** val_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_value, prompt_echo, echo_vol, val_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Valuator, val_num, nullptr, store, op_mode, echo_switch,
                 prompt_echo, [&](const DeviceState& s) {
                     put(init_value,
@@ -217,6 +231,8 @@ void pinq_val_st3(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mod
 void pinq_val_st(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                  Pecho_switch* echo_switch, Pfloat* init_value, Pint* prompt_echo, Plimit* echo_area,
                  Pval_data** val_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_value, prompt_echo, echo_area, val_data))
+        return;
     Plimit3 volume{};
     pinq_val_st3(ws_id, val_num, store, err_ind, op_mode, echo_switch, init_value, prompt_echo, &volume,
                  val_data);
@@ -226,6 +242,9 @@ void pinq_val_st(Pint ws_id, Pint val_num, Pstore store, Pint* err_ind, Pop_mode
 void pinq_choice_st3(Pint ws_id, Pint choice_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                      Pecho_switch* echo_switch, Pin_status* init_status, Pint* init_choice, Pint* prompt_echo,
                      Plimit3* echo_vol, Pchoice_data3** choice_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_status, init_choice, prompt_echo, echo_vol,
+                              choice_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::Choice, choice_num, nullptr, store, op_mode, echo_switch,
                 prompt_echo, [&](const DeviceState& s) {
                     const auto& ch = std::get<ChoiceMeasure>(s.device.setup.initial);
@@ -239,6 +258,9 @@ void pinq_choice_st3(Pint ws_id, Pint choice_num, Pstore store, Pint* err_ind, P
 void pinq_choice_st(Pint ws_id, Pint choice_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                     Pecho_switch* echo_switch, Pin_status* init_status, Pint* init_choice, Pint* prompt_echo,
                     Plimit* echo_area, Pchoice_data** choice_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_status, init_choice, prompt_echo, echo_area,
+                              choice_data))
+        return;
     Plimit3 volume{};
     pinq_choice_st3(ws_id, choice_num, store, err_ind, op_mode, echo_switch, init_status, init_choice,
                     prompt_echo, &volume, choice_data);
@@ -249,6 +271,9 @@ void pinq_pick_st3(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint
                    Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
                    Ppick_path** init_pick, Pint* prompt_echo, Plimit3* echo_vol, Ppick_data3** pick_data,
                    Ppath_order* order) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, pick_filter, init_status, init_pick, prompt_echo,
+                              echo_vol, pick_data, order))
+        return;
     pickState(ws_id, pick_num, &type, store, err_ind, op_mode, echo_switch, pick_filter, init_status,
               init_pick, prompt_echo, echo_vol, pick_data, order);
 }
@@ -257,6 +282,9 @@ void pinq_pick_st(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint*
                   Pecho_switch* echo_switch, Pfilter** pick_filter, Pin_status* init_status,
                   Ppick_path** init_pick, Pint* prompt_echo, Plimit* echo_area, Ppick_data** pick_data,
                   Ppath_order* order) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, pick_filter, init_status, init_pick, prompt_echo,
+                              echo_area, pick_data, order))
+        return;
     Plimit3 volume{};
     pickState(ws_id, pick_num, &type, store, err_ind, op_mode, echo_switch, pick_filter, init_status,
               init_pick, prompt_echo, &volume, pick_data, order);
@@ -266,6 +294,8 @@ void pinq_pick_st(Pint ws_id, Pint pick_num, Pinq_type type, Pstore store, Pint*
 void pinq_string_st3(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                      Pecho_switch* echo_switch, char** init_string, Pint* prompt_echo, Plimit3* echo_vol,
                      Pstring_data3** string_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_string, prompt_echo, echo_vol, string_data))
+        return;
     deviceState(err_ind, ws_id, InputClass::String, string_num, nullptr, store, op_mode, echo_switch,
                 prompt_echo, [&](const DeviceState& s) {
                     s.answer.text = std::get<StringMeasure>(s.device.setup.initial).text;
@@ -280,6 +310,9 @@ void pinq_string_st3(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, P
 void pinq_string_st(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, Pop_mode* op_mode,
                     Pecho_switch* echo_switch, char** init_string, Pint* prompt_echo, Plimit* echo_area,
                     Pstring_data** string_data) {
+    if (!c::somewhereToAnswer(err_ind, op_mode, echo_switch, init_string, prompt_echo, echo_area,
+                              string_data))
+        return;
     Plimit3 volume{};
     pinq_string_st3(ws_id, string_num, store, err_ind, op_mode, echo_switch, init_string, prompt_echo,
                     &volume, string_data);
@@ -288,6 +321,7 @@ void pinq_string_st(Pint ws_id, Pint string_num, Pstore store, Pint* err_ind, Po
 
 void pinq_def_loc_data3(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind, Ppoint3* loc_pos,
                         Pint_list** pet_list, Plimit3* echo_vol, Ploc_data3** loc_data) {
+    if (!c::somewhereToAnswer(err_ind, loc_pos, pet_list, echo_vol, loc_data)) return;
     defaultData(err_ind, ws_type, InputClass::Locator, loc_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(loc_pos, Ppoint3{0, 0, 0});
@@ -298,6 +332,7 @@ void pinq_def_loc_data3(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind,
 
 void pinq_def_loc_data(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind, Ppoint* loc_pos,
                        Pint_list** pet_list, Plimit* echo_area, Ploc_data** loc_data) {
+    if (!c::somewhereToAnswer(err_ind, loc_pos, pet_list, echo_area, loc_data)) return;
     defaultData(err_ind, ws_type, InputClass::Locator, loc_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(loc_pos, Ppoint{0, 0});
@@ -308,6 +343,7 @@ void pinq_def_loc_data(Pint ws_type, Pint loc_num, Pstore store, Pint* err_ind, 
 
 void pinq_def_stroke_data3(Pint ws_type, Pint stroke_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
                            Pint_list** pet_list, Plimit3* echo_vol, Pstroke_data3** stroke_data) {
+    if (!c::somewhereToAnswer(err_ind, max_buf_size, pet_list, echo_vol, stroke_data)) return;
     defaultData(err_ind, ws_type, InputClass::Stroke, stroke_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(max_buf_size, c::kMaxBuffer);
@@ -319,6 +355,7 @@ void pinq_def_stroke_data3(Pint ws_type, Pint stroke_num, Pstore store, Pint* er
 
 void pinq_def_stroke_data(Pint ws_type, Pint stroke_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
                           Pint_list** pet_list, Plimit* echo_area, Pstroke_data** stroke_data) {
+    if (!c::somewhereToAnswer(err_ind, max_buf_size, pet_list, echo_area, stroke_data)) return;
     defaultData(err_ind, ws_type, InputClass::Stroke, stroke_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(max_buf_size, c::kMaxBuffer);
@@ -330,6 +367,7 @@ void pinq_def_stroke_data(Pint ws_type, Pint stroke_num, Pstore store, Pint* err
 
 void pinq_def_val_data3(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind, Pfloat* def_value,
                         Pint_list** pet_list, Plimit3* echo_vol, Pval_data3** val_data) {
+    if (!c::somewhereToAnswer(err_ind, def_value, pet_list, echo_vol, val_data)) return;
     defaultData(err_ind, ws_type, InputClass::Valuator, val_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(def_value, Pfloat{0});
@@ -341,6 +379,7 @@ void pinq_def_val_data3(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind,
 
 void pinq_def_val_data(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind, Pfloat* def_value,
                        Pint_list** pet_list, Plimit* echo_area, Pval_data** val_data) {
+    if (!c::somewhereToAnswer(err_ind, def_value, pet_list, echo_area, val_data)) return;
     Plimit3 volume{};
     pinq_def_val_data3(ws_type, val_num, store, err_ind, def_value, pet_list, &volume, val_data);
     if (err_ind && *err_ind == 0) put(echo_area, c::lower(volume));
@@ -348,6 +387,7 @@ void pinq_def_val_data(Pint ws_type, Pint val_num, Pstore store, Pint* err_ind, 
 
 void pinq_def_choice_data3(Pint ws_type, Pint choice_num, Pstore store, Pint* err_ind, Pint* max_choices,
                            Pint_list** pet_list, Plimit3* echo_vol, Pchoice_data3** choice_data) {
+    if (!c::somewhereToAnswer(err_ind, max_choices, pet_list, echo_vol, choice_data)) return;
     defaultData(err_ind, ws_type, InputClass::Choice, choice_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(max_choices, c::kMaxChoices);
@@ -358,6 +398,7 @@ void pinq_def_choice_data3(Pint ws_type, Pint choice_num, Pstore store, Pint* er
 
 void pinq_def_choice_data(Pint ws_type, Pint choice_num, Pstore store, Pint* err_ind, Pint* max_choices,
                           Pint_list** pet_list, Plimit* echo_area, Pchoice_data** choice_data) {
+    if (!c::somewhereToAnswer(err_ind, max_choices, pet_list, echo_area, choice_data)) return;
     Plimit3 volume{};
     pinq_def_choice_data3(ws_type, choice_num, store, err_ind, max_choices, pet_list, &volume, choice_data);
     if (err_ind && *err_ind == 0) put(echo_area, c::lower(volume));
@@ -365,6 +406,7 @@ void pinq_def_choice_data(Pint ws_type, Pint choice_num, Pstore store, Pint* err
 
 void pinq_def_pick_data3(Pint ws_type, Pint pick_num, Pstore store, Pint* err_ind, Pint_list** pet_list,
                          Plimit3* echo_vol, Ppick_data3** pick_data) {
+    if (!c::somewhereToAnswer(err_ind, pet_list, echo_vol, pick_data)) return;
     defaultData(err_ind, ws_type, InputClass::Pick, pick_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(echo_vol, c::wholeDisplay(d.displaySize));
@@ -374,6 +416,7 @@ void pinq_def_pick_data3(Pint ws_type, Pint pick_num, Pstore store, Pint* err_in
 
 void pinq_def_pick_data(Pint ws_type, Pint pick_num, Pstore store, Pint* err_ind, Pint_list** pet_list,
                         Plimit* echo_area, Ppick_data** pick_data) {
+    if (!c::somewhereToAnswer(err_ind, pet_list, echo_area, pick_data)) return;
     Plimit3 volume{};
     pinq_def_pick_data3(ws_type, pick_num, store, err_ind, pet_list, &volume, pick_data);
     if (err_ind && *err_ind == 0) put(echo_area, c::lower(volume));
@@ -381,6 +424,7 @@ void pinq_def_pick_data(Pint ws_type, Pint pick_num, Pstore store, Pint* err_ind
 
 void pinq_def_string_data3(Pint ws_type, Pint string_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
                            Pint_list** pet_list, Plimit3* echo_vol, Pstring_data3** string_data) {
+    if (!c::somewhereToAnswer(err_ind, max_buf_size, pet_list, echo_vol, string_data)) return;
     defaultData(err_ind, ws_type, InputClass::String, string_num, store, pet_list,
                 [&](const WorkstationDescription& d, InputAnswer& a) {
                     put(max_buf_size, c::kMaxBuffer);
@@ -392,12 +436,14 @@ void pinq_def_string_data3(Pint ws_type, Pint string_num, Pstore store, Pint* er
 
 void pinq_def_string_data(Pint ws_type, Pint string_num, Pstore store, Pint* err_ind, Pint* max_buf_size,
                           Pint_list** pet_list, Plimit* echo_area, Pstring_data** string_data) {
+    if (!c::somewhereToAnswer(err_ind, max_buf_size, pet_list, echo_area, string_data)) return;
     Plimit3 volume{};
     pinq_def_string_data3(ws_type, string_num, store, err_ind, max_buf_size, pet_list, &volume, string_data);
     if (err_ind && *err_ind == 0) put(echo_area, c::lower(volume));
 }
 
 void pinq_num_avail_in(Pint ws_type, Pint* err_ind, Pnum_in* num_in) {
+    if (!c::somewhereToAnswer(err_ind, num_in)) return;
     c::inquire(err_ind, [&](Phigs&) {
         const DeviceCounts n = c::inputType(ws_type, InputClass::Locator, 1).inputDevices;
         put(num_in, Pnum_in{n.locator, n.stroke, n.valuator, n.choice, n.pick, n.string});
@@ -405,6 +451,7 @@ void pinq_num_avail_in(Pint ws_type, Pint* err_ind, Pnum_in* num_in) {
 }
 
 void pinq_in_overf(Pint* err_ind, Pint* ws_id, Pin_class* in_class, Pint* in_num) {
+    if (!c::somewhereToAnswer(err_ind, ws_id, in_class, in_num)) return;
     c::inquire(err_ind, [&](Phigs& p) {
         if (!p.anyWorkstationOpen()) throw Error(errors::NoWorkstationOpen, "inquiry");
         const QueueOverflow o = c::InputSession::of().queue().inquireOverflow();
@@ -415,6 +462,7 @@ void pinq_in_overf(Pint* err_ind, Pint* ws_id, Pin_class* in_class, Pint* in_num
 }
 
 void pinq_more_simult_events(Pint* err_ind, Pmore_simult_events* simult_events) {
+    if (!c::somewhereToAnswer(err_ind, simult_events)) return;
     c::inquire(err_ind, [&](Phigs&) {
         put(simult_events,
             c::InputSession::of().queue().moreSimultaneousEvents() ? PSIMULT_MORE : PSIMULT_NO_MORE);

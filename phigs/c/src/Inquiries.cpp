@@ -60,6 +60,7 @@ void pinq_ar_st(Par_st* st) {
 }
 
 void pinq_open_struct(Pint* err, Popen_struct_status* status, Pint* id) {
+    if (!c::somewhereToAnswer(err, status, id)) return;
     inquire(err, [&](Phigs& p) {
         c::require(status, "INQUIRE OPEN STRUCTURE");
         const StructureStore& s = p.store();
@@ -69,6 +70,7 @@ void pinq_open_struct(Pint* err, Popen_struct_status* status, Pint* id) {
 }
 
 void pinq_elem_ptr(Pint* err, Pint* value) {
+    if (!c::somewhereToAnswer(err, value)) return;
     inquire(err, [&](Phigs& p) {
         const int pointer = p.store().elementPointer();
         c::require(value, "INQUIRE ELEMENT POINTER");
@@ -77,6 +79,7 @@ void pinq_elem_ptr(Pint* err, Pint* value) {
 }
 
 void pinq_edit_mode(Pint* err, Pedit_mode* mode) {
+    if (!c::somewhereToAnswer(err, mode)) return;
     inquire(err, [&](Phigs& p) {
         c::require(mode, "INQUIRE EDIT MODE");
         *mode = p.store().editMode() == EditMode::Insert ? PEDIT_INSERT : PEDIT_REPLACE;
@@ -85,6 +88,7 @@ void pinq_edit_mode(Pint* err, Pedit_mode* mode) {
 
 // ISO 9592: at element pointer 0 the current element is NIL, of size 0.
 void pinq_cur_elem_type_size(Pint* err, Pelem_type* type, size_t* size) {
+    if (!c::somewhereToAnswer(err, type, size)) return;
     inquire(err, [&](Phigs& p) {
         const StructureStore& s = p.store();
         const int pointer = s.elementPointer();
@@ -96,10 +100,12 @@ void pinq_cur_elem_type_size(Pint* err, Pelem_type* type, size_t* size) {
 }
 
 void pinq_cur_elem_content(Pstore store, Pint* err, Pelem_data** data) {
+    if (!c::somewhereToAnswer(err, data)) return;
     inquire(err, [&](Phigs& p) { answerContent(p.store().currentElement(), store, err, data); });
 }
 
 void pinq_elem_type_size(Pint id, Pint n, Pint* err, Pelem_type* type, size_t* size) {
+    if (!c::somewhereToAnswer(err, type, size)) return;
     inquire(err, [&](Phigs& p) {
         const StructureStore& s = p.store();
         const std::size_t bytes = s.elementSizeAt(id, n);
@@ -111,10 +117,12 @@ void pinq_elem_type_size(Pint id, Pint n, Pint* err, Pelem_type* type, size_t* s
 }
 
 void pinq_elem_content(Pint id, Pint n, Pstore store, Pint* err, Pelem_data** data) {
+    if (!c::somewhereToAnswer(err, data)) return;
     inquire(err, [&](Phigs& p) { answerContent(p.store().elementAt(id, n), store, err, data); });
 }
 
 void pinq_struct_status(Pint id, Pint* err, Pstruct_status* status) {
+    if (!c::somewhereToAnswer(err, status)) return;
     inquire(err, [&](Phigs& p) {
         c::require(status, "INQUIRE STRUCTURE STATUS");
         switch (p.store().structureStatus(id)) {
@@ -132,11 +140,13 @@ void pinq_struct_status(Pint id, Pint* err, Pstruct_status* status) {
 }
 
 void pinq_struct_ids(Pint appl, Pint start, Pint* err, Pint_list* ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ids, total)) return;
     inquire(err, [&](Phigs& p) { c::answerList(p.store().structureIds(), appl, start, ids, total); });
 }
 
 void pinq_paths_ances(Pint id, Ppath_order o, Pint depth, Pstore store, Pint* err,
                       Pelem_ref_list_list** paths) {
+    if (!c::somewhereToAnswer(err, paths)) return;
     inquire(err, [&](Phigs& p) {
         Phigs_store& s = c::storeOf(store);
         c::require(paths, "INQUIRE PATHS TO ANCESTORS");
@@ -146,6 +156,7 @@ void pinq_paths_ances(Pint id, Ppath_order o, Pint depth, Pstore store, Pint* er
 
 void pinq_paths_descs(Pint id, Ppath_order o, Pint depth, Pstore store, Pint* err,
                       Pelem_ref_list_list** paths) {
+    if (!c::somewhereToAnswer(err, paths)) return;
     inquire(err, [&](Phigs& p) {
         Phigs_store& s = c::storeOf(store);
         c::require(paths, "INQUIRE PATHS TO DESCENDANTS");
@@ -172,6 +183,7 @@ void pelem_search(Pint id, Pint start, Psearch_dir direction, const Pelem_type_l
 }
 
 void pinq_ar_files(Pstore store, Pint* err, Par_file_list** files) {
+    if (!c::somewhereToAnswer(err, files)) return;
     inquire(err, [&](Phigs& p) {
         Phigs_store& s = c::storeOf(store);
         c::require(files, "INQUIRE ARCHIVE FILES");
@@ -185,6 +197,7 @@ void pinq_ar_files(Pstore store, Pint* err, Par_file_list** files) {
 }
 
 void pinq_conf_res(Pint* err, Pconf_res* archive_res, Pconf_res* retrieve_res) {
+    if (!c::somewhereToAnswer(err, archive_res, retrieve_res)) return;
     inquire(err, [&](Phigs& p) {
         c::require(archive_res, "INQUIRE CONFLICT RESOLUTION");
         c::require(retrieve_res, "INQUIRE CONFLICT RESOLUTION");
@@ -194,11 +207,13 @@ void pinq_conf_res(Pint* err, Pconf_res* archive_res, Pconf_res* retrieve_res) {
 }
 
 void pinq_all_conf_structs(Pint ar_id, Pint appl, Pint start, Pint* err, Pint_list* ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ids, total)) return;
     inquire(err, [&](Phigs& p) { c::answerList(p.conflictingStructures(ar_id), appl, start, ids, total); });
 }
 
 void pinq_conf_structs_net(Pint ar_id, Pint id, Pstruct_net_source net, Pint appl, Pint start, Pint* err,
                            Pint_list* ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ids, total)) return;
     const int source = c::raw(net);
     inquire(err, [&](Phigs& p) {
         if (source != PNET_CSS && source != PNET_AR) throw Error(PE_ENUM_TYPE_INVAL, "inquiry");

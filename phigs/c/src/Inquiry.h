@@ -29,6 +29,16 @@ void inquire(Pint* err, Body&& body) {
     }
 }
 
+/// Whether an inquiry has somewhere to answer. With every result pointer NULL it answers -204
+/// (after the state check, before any other) and the caller returns; any one of several may be
+/// NULL to skip that answer unless the inquiry needs it (it then answers -204 too).
+template <class... Results>
+bool somewhereToAnswer(Pint* err, const Results*... results) {
+    if ((... || (results != nullptr))) return true;
+    inquire(err, [](Phigs&) { throw Error(kBadArgument, "inquiry", "every result pointer is NULL"); });
+    return false;
+}
+
 /// The C binding's simple list answer: `appl` items from `start` copied to out->ints, the whole
 /// length in *total; 2201 for a negative `appl`, 2200 for a start outside the list.
 void answerList(const std::vector<int>& all, Pint appl, Pint start, Pint_list* out, Pint* total);

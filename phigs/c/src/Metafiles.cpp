@@ -65,6 +65,7 @@ void pinterpret_item(Pint type, Pint item_data_length, const Pitem_data* item_da
 void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_space, Pfloat char_ht,
                       Ptext_path text_path, Phor_text_align hor_align, Pvert_text_align vert_align,
                       const char* str, Pint* err_ind, Prect* rect, Ppoint* offset) {
+    if (!c::somewhereToAnswer(err_ind, rect, offset)) return;
     const int path = c::raw(text_path), hor = c::raw(hor_align), vert = c::raw(vert_align);
     c::inquire(err_ind, [&](Phigs&) {
         constexpr const char* kName = "INQUIRE TEXT EXTENT";

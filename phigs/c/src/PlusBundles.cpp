@@ -88,26 +88,32 @@ void pset_pat_rep_plus(Pint ws_id, Pint index, const Ppat_rep_plus* rep) {
 }
 
 void pinq_line_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pline_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPlus(ws_id, index, type, err, rep, &WorkstationTables::polylines);
 }
 
 void pinq_marker_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pmarker_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPlus(ws_id, index, type, err, rep, &WorkstationTables::polymarkers);
 }
 
 void pinq_text_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pint* err, Ptext_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPlus(ws_id, index, type, err, rep, &WorkstationTables::texts);
 }
 
 void pinq_int_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pint_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPlus(ws_id, index, type, err, rep, &WorkstationTables::interiors);
 }
 
 void pinq_edge_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pedge_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPlus(ws_id, index, type, err, rep, &WorkstationTables::edges);
 }
 
 void pinq_pat_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err, Ppat_rep_plus** rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs& p) {
         const PatternRepresentation pattern = c::inquiredPattern(p, ws_id, index, type);
         Phigs_store& s = c::storeOf(store);
@@ -117,26 +123,32 @@ void pinq_pat_rep_plus(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pin
 }
 
 void pinq_pred_line_rep_plus(Pint ws_type, Pint index, Pint* err, Pline_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedPlus(ws_type, index, err, rep, &PredefinedRepresentations::polylines);
 }
 
 void pinq_pred_marker_rep_plus(Pint ws_type, Pint index, Pint* err, Pmarker_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedPlus(ws_type, index, err, rep, &PredefinedRepresentations::polymarkers);
 }
 
 void pinq_pred_text_rep_plus(Pint ws_type, Pint index, Pint* err, Ptext_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedPlus(ws_type, index, err, rep, &PredefinedRepresentations::texts);
 }
 
 void pinq_pred_int_rep_plus(Pint ws_type, Pint index, Pint* err, Pint_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedPlus(ws_type, index, err, rep, &PredefinedRepresentations::interiors);
 }
 
 void pinq_pred_edge_rep_plus(Pint ws_type, Pint index, Pint* err, Pedge_bundle_plus* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerPredefinedPlus(ws_type, index, err, rep, &PredefinedRepresentations::edges);
 }
 
 void pinq_pred_pat_rep_plus(Pint ws_type, Pint index, Pstore store, Pint* err, Ppat_rep_plus** rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs&) {
         const PatternRepresentation& pattern =
             c::predefinedEntry(c::predefinedOf(ws_type).patterns, index, 1, errors::PatternIndexBelowOne);

@@ -16,6 +16,7 @@ extern "C" {
 
 void pinq_line_facs_plus(Pint ws_type, Pint lt_length, Pint lt_start, Pint sm_length, Pint sm_start,
                          Pint* err, Pint* tot_lt_length, Pint* tot_sm_length, Pline_facs_plus* facs) {
+    if (!c::somewhereToAnswer(err, tot_lt_length, tot_sm_length, facs)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "inquiry");
         c::answerList(c::oneTo(d.lineTypes), lt_length, lt_start, facs ? &facs->types : nullptr,
@@ -35,6 +36,7 @@ void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_len
                         Pint re_length, Pint re_start, Pint sh_length, Pint sh_start, Pint* err,
                         Pint_facs_plus* facs, Pint* tot_is_length, Pint* tot_hs_length, Pint* tot_re_length,
                         Pint* tot_sh_length) {
+    if (!c::somewhereToAnswer(err, facs, tot_is_length, tot_hs_length, tot_re_length, tot_sh_length)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "inquiry");
         std::vector<int> styles(static_cast<std::size_t>(std::max(d.interiorStyles, 0)));
@@ -60,6 +62,7 @@ void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_len
 }
 
 void pinq_ws_st_table_plus(Pint ws_type, Pint* err, Pws_tables_plus* lengths) {
+    if (!c::somewhereToAnswer(err, lengths)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "inquiry");
         if (!lengths) return;
@@ -79,6 +82,7 @@ void pinq_ws_st_table_plus(Pint ws_type, Pint* err, Pws_tables_plus* lengths) {
 }
 
 void pinq_dyns_ws_attrs_plus(Pint ws_type, Pint* err, Pdyns_ws_attrs_plus* attrs) {
+    if (!c::somewhereToAnswer(err, attrs)) return;
     inquire(err, [&](Phigs&) {
         const Pdyn_mod m = static_cast<Pdyn_mod>(c::describedType(ws_type, "inquiry").attributeDynamics);
         if (attrs) *attrs = {m, m, m};

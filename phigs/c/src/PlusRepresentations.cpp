@@ -156,6 +156,7 @@ void pset_light_src_rep(Pint ws_id, Pint index, const Plight_src_bundle* rep) {
 }
 
 void pinq_light_src_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Plight_src_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     const int t = c::raw(type);
     c::inquire(err, [&](Phigs& p) {
         const Workstation& ws = inquired(p, ws_id);
@@ -174,6 +175,7 @@ void pinq_light_src_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pligh
 }
 
 void pinq_list_light_src_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     c::inquire(err, [&](Phigs& p) {
         c::answerList(keys(inquired(p, ws_id).tables().lights), appl, start, inds, total);
     });
@@ -195,6 +197,7 @@ void pset_dcue_rep(Pint ws_id, Pint index, const Pdcue_bundle* rep) {
 }
 
 void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     const int t = c::raw(type);
     c::inquire(err, [&](Phigs& p) {
         const Workstation& ws = inquired(p, ws_id);
@@ -213,6 +216,7 @@ void pinq_dcue_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pdcue_bund
 }
 
 void pinq_list_dcue_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     c::inquire(err, [&](Phigs& p) {
         c::answerList(keys(inquired(p, ws_id).tables().depthCues), appl, start, inds, total);
     });
@@ -221,6 +225,7 @@ void pinq_list_dcue_inds(Pint ws_id, Pint appl, Pint start, Pint* err, Pint_list
 // Every type starts with the same predefined tables: light 1 (white ambient), depth cue 0
 // (suppressed).
 void pinq_pred_light_src_rep(Pint ws_type, Pint index, Pint* err, Plight_src_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
         if (index < 1) throw Error(errors::BundleIndexBelowOne, "inquiry");
@@ -233,6 +238,7 @@ void pinq_pred_light_src_rep(Pint ws_type, Pint index, Pint* err, Plight_src_bun
 }
 
 void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
         if (index < 0) throw Error(errors::BundleIndexBelowOne, "inquiry");
@@ -245,6 +251,7 @@ void pinq_pred_dcue_rep(Pint ws_type, Pint index, Pint* err, Pdcue_bundle* rep) 
 }
 
 void pinq_light_src_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Plight_src_facs* facs, Pint* total) {
+    if (!c::somewhereToAnswer(err, facs, total)) return;
     c::inquire(err, [&](Phigs&) {
         const WorkstationDescription d = description(ws_type);
         c::require(facs, "inquiry");
@@ -256,6 +263,7 @@ void pinq_light_src_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Plight_
 }
 
 void pinq_dcue_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
+    if (!c::somewhereToAnswer(err, num_pred_inds)) return;
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
         c::require(num_pred_inds, "inquiry");
@@ -265,6 +273,7 @@ void pinq_dcue_facs(Pint ws_type, Pint* err, Pint* num_pred_inds) {
 
 void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* models,
                                     Pint* total) {
+    if (!c::somewhereToAnswer(err, models, total)) return;
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
         // Every type draws in each (0, workstation dependent, is drawn as RGB).
@@ -275,6 +284,7 @@ void pinq_rendering_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* e
 // The PHIGS PLUS binding puts the total before the list here.
 void pinq_direct_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pint* total,
                                  Pint_list* models) {
+    if (!c::somewhereToAnswer(err, total, models)) return;
     c::inquire(err,
                [&](Phigs&) { c::answerList(description(ws_type).colourModels, appl, start, models, total); });
 }
@@ -282,6 +292,7 @@ void pinq_direct_colr_model_facs(Pint ws_type, Pint appl, Pint start, Pint* err,
 void pinq_curv_surf_facs(Pint ws_type, Pint cat_len, Pint cat_st, Pint sat_len, Pint sat_st, Pint tcat_len,
                          Pint tcat_st, Pint psc_len, Pint psc_st, Pint* err, Pcurvsurf_facs* facs,
                          Pint* tot_cat_len, Pint* tot_sat_len, Pint* tot_tcat_len, Pint* tot_psc_len) {
+    if (!c::somewhereToAnswer(err, facs, tot_cat_len, tot_sat_len, tot_tcat_len, tot_psc_len)) return;
     c::inquire(err, [&](Phigs&) {
         description(ws_type);
         c::require(facs, "inquiry");

@@ -95,26 +95,32 @@ void pset_colr_model(Pint ws_id, Pint model) {
 }
 
 void pinq_line_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pline_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerBundle(ws_id, index, type, err, rep, &WorkstationTables::polylines);
 }
 
 void pinq_marker_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pmarker_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerBundle(ws_id, index, type, err, rep, &WorkstationTables::polymarkers);
 }
 
 void pinq_text_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Ptext_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerBundle(ws_id, index, type, err, rep, &WorkstationTables::texts);
 }
 
 void pinq_int_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pint_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerBundle(ws_id, index, type, err, rep, &WorkstationTables::interiors);
 }
 
 void pinq_edge_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pedge_bundle* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     answerBundle(ws_id, index, type, err, rep, &WorkstationTables::edges);
 }
 
 void pinq_pat_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* err, Ppat_rep** rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs& p) {
         const PatternRepresentation pattern = c::inquiredPattern(p, ws_id, index, type);
         Phigs_store& s = c::storeOf(store);
@@ -124,6 +130,7 @@ void pinq_pat_rep(Pint ws_id, Pint index, Pinq_type type, Pstore store, Pint* er
 }
 
 void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pcolr_rep* rep) {
+    if (!c::somewhereToAnswer(err, rep)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         if (index < 0) throw Error(errors::ColourIndexBelowZero, "inquiry", "index " + std::to_string(index));
@@ -143,6 +150,7 @@ void pinq_colr_rep(Pint ws_id, Pint index, Pinq_type type, Pint* err, Pcolr_rep*
 }
 
 void pinq_colr_model(Pint ws_id, Pint* err, Pint* model) {
+    if (!c::somewhereToAnswer(err, model)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         if (model) *model = ws.colourModel();
@@ -150,36 +158,43 @@ void pinq_colr_model(Pint ws_id, Pint* err, Pint* model) {
 }
 
 void pinq_list_line_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().polylines.definedIndices(); });
 }
 
 void pinq_list_marker_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().polymarkers.definedIndices(); });
 }
 
 void pinq_list_text_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().texts.definedIndices(); });
 }
 
 void pinq_list_int_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().interiors.definedIndices(); });
 }
 
 void pinq_list_edge_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().edges.definedIndices(); });
 }
 
 void pinq_list_pat_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.patterns().definedIndices(); });
 }
 
 void pinq_list_colr_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     answerIndices(ws_id, length, start, err, inds, total,
                   [](const Workstation& ws) { return ws.tables().colours.definedIndices(); });
 }

@@ -51,6 +51,7 @@ void pset_disp_upd_st(Pint ws_id, Pdefer_mode def_mode, Pmod_mode mod_mode) {
 
 void pinq_disp_upd_st(Pint ws_id, Pint* err, Pdefer_mode* def_mode, Pmod_mode* mod_mode,
                       Pdisp_surf_empty* disp_empty, Pvisual_st* state) {
+    if (!c::somewhereToAnswer(err, def_mode, mod_mode, disp_empty, state)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         if (def_mode) *def_mode = static_cast<Pdefer_mode>(ws.deferralMode());
@@ -61,6 +62,7 @@ void pinq_disp_upd_st(Pint ws_id, Pint* err, Pdefer_mode* def_mode, Pmod_mode* m
 }
 
 void pinq_def_disp_upd_st(Pint ws_type, Pint* err, Pdefer_mode* def_mode, Pmod_mode* mod_mode) {
+    if (!c::somewhereToAnswer(err, def_mode, mod_mode)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "INQUIRE DEFAULT DISPLAY UPDATE STATE");
         if (def_mode) *def_mode = static_cast<Pdefer_mode>(d.defaultDeferral);
@@ -70,6 +72,7 @@ void pinq_def_disp_upd_st(Pint ws_type, Pint* err, Pdefer_mode* def_mode, Pmod_m
 
 void pinq_view_rep(Pint ws_id, Pint view_ind, Pint* err, Pupd_st* upd_st, Pview_rep3* cur_rep,
                    Pview_rep3* req_rep) {
+    if (!c::somewhereToAnswer(err, upd_st, cur_rep, req_rep)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         const char* function = "INQUIRE VIEW REPRESENTATION";
@@ -86,6 +89,7 @@ void pinq_view_rep(Pint ws_id, Pint view_ind, Pint* err, Pupd_st* upd_st, Pview_
 
 void pinq_ws_tran3(Pint ws_id, Pint* err, Pupd_st* upd_st, Plimit3* req_win, Plimit3* cur_win,
                    Plimit3* req_vp, Plimit3* cur_vp) {
+    if (!c::somewhereToAnswer(err, upd_st, req_win, cur_win, req_vp, cur_vp)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         const WorkstationTables& r = ws.tables();
@@ -100,6 +104,7 @@ void pinq_ws_tran3(Pint ws_id, Pint* err, Pupd_st* upd_st, Plimit3* req_win, Pli
 
 void pinq_ws_tran(Pint ws_id, Pint* err, Pupd_st* upd_st, Plimit* req_win, Plimit* cur_win, Plimit* req_vp,
                   Plimit* cur_vp) {
+    if (!c::somewhereToAnswer(err, upd_st, req_win, cur_win, req_vp, cur_vp)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         const WorkstationTables& r = ws.tables();
@@ -117,6 +122,7 @@ void pset_hlhsr_mode(Pint ws_id, Pint hlhsr_mode) {
 }
 
 void pinq_hlhsr_mode(Pint ws_id, Pint* err, Pupd_st* upd_st, Pint* cur_mode, Pint* req_mode) {
+    if (!c::somewhereToAnswer(err, upd_st, cur_mode, req_mode)) return;
     inquire(err, [&](Phigs& p) {
         const Workstation& ws = c::inquiredWorkstation(p, ws_id);
         if (upd_st) *upd_st = updateState(ws.hlhsrUpdatePending());
@@ -135,6 +141,7 @@ void pset_view_tran_in_pri(Pint ws_id, Pint view_ind, Pint ref_view_ind, Prel_pr
 }
 
 void pinq_list_view_inds(Pint ws_id, Pint length, Pint start, Pint* err, Pint_list* inds, Pint* total) {
+    if (!c::somewhereToAnswer(err, inds, total)) return;
     inquire(err, [&](Phigs& p) {
         c::answerList(c::inquiredWorkstation(p, ws_id).tables().views.inputPriority(), length, start, inds,
                       total);
@@ -154,18 +161,21 @@ void pset_invis_filter(Pint ws_id, const Pfilter* filter) {
 }
 
 void pinq_highl_filter(Pint ws_id, Pstore store, Pint* err, Pfilter** filter) {
+    if (!c::somewhereToAnswer(err, filter)) return;
     inquire(err, [&](Phigs& p) {
         answerFilter(c::inquiredWorkstation(p, ws_id).filters().highlight, store, filter);
     });
 }
 
 void pinq_invis_filter(Pint ws_id, Pstore store, Pint* err, Pfilter** filter) {
+    if (!c::somewhereToAnswer(err, filter)) return;
     inquire(err, [&](Phigs& p) {
         answerFilter(c::inquiredWorkstation(p, ws_id).filters().invisibility, store, filter);
     });
 }
 
 void pinq_wss_posted(Pint struct_id, Pint length, Pint start, Pint* err, Pint_list* ws_ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ws_ids, total)) return;
     inquire(err, [&](Phigs& p) {
         c::answerList(p.workstationsPostedTo(struct_id), length, start, ws_ids, total);
     });

@@ -195,10 +195,12 @@ void pinq_ws_st(Pws_st* ws_state) {
 }
 
 void pinq_open_wss(Pint appl, Pint start, Pint* err, Pint_list* ids, Pint* total) {
+    if (!c::somewhereToAnswer(err, ids, total)) return;
     c::inquire(err, [&](Phigs& p) { c::answerList(p.openWorkstationIds(), appl, start, ids, total); });
 }
 
 void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err, const char** conn_id, Pint* ws_type) {
+    if (!c::somewhereToAnswer(err, conn_id, ws_type)) return;
     c::inquire(err, [&](Phigs& p) {
         Workstation& ws = c::inquiredWorkstation(p, ws_id);
         Phigs_store& s = c::storeOf(store);
@@ -212,6 +214,7 @@ void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err, const char** conn_id
 
 void pinq_posted_structs(Pint ws_id, Pint appl, Pint start, Pint* err, Pposted_struct_list* out,
                          Pint* total) {
+    if (!c::somewhereToAnswer(err, out, total)) return;
     c::inquire(err, [&](Phigs& p) {
         const std::vector<PostedStructure> posted = c::inquiredWorkstation(p, ws_id).postedStructures();
         std::vector<int> order(posted.size());
@@ -232,6 +235,7 @@ void pinq_posted_structs(Pint ws_id, Pint appl, Pint start, Pint* err, Pposted_s
 }
 
 void pinq_list_avail_ws_types(Pint appl, Pint start, Pint* err, Pint_list* types, Pint* total) {
+    if (!c::somewhereToAnswer(err, types, total)) return;
     c::inquire(err, [&](Phigs& p) {
         std::vector<int> available;
         for (WorkstationType type : p.outputs().types()) available.push_back(cType(type));
@@ -240,6 +244,7 @@ void pinq_list_avail_ws_types(Pint appl, Pint start, Pint* err, Pint_list* types
 }
 
 void pinq_list_avail_gdp3(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
+    if (!c::somewhereToAnswer(err, gdps, total)) return;
     c::inquire(err, [&](Phigs&) {
         const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GDP 3");
         c::answerList(d.gdps3, appl, start, gdps, total);
@@ -247,6 +252,7 @@ void pinq_list_avail_gdp3(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_l
 }
 
 void pinq_list_avail_gdp(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gdps, Pint* total) {
+    if (!c::somewhereToAnswer(err, gdps, total)) return;
     c::inquire(err, [&](Phigs&) {
         const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GDP");
         c::answerList(d.gdps, appl, start, gdps, total);
@@ -254,18 +260,21 @@ void pinq_list_avail_gdp(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_li
 }
 
 void pinq_gdp3(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
+    if (!c::somewhereToAnswer(err, num_attrs, attrs)) return;
     c::inquire(err, [&](Phigs&) {
         answerGdpAttributes(c::describedType(ws_type, "INQUIRE GDP 3").gdps3, gdp, num_attrs, attrs);
     });
 }
 
 void pinq_gdp(Pint ws_type, Pint gdp, Pint* err, Pint* num_attrs, Pattrs attrs[5]) {
+    if (!c::somewhereToAnswer(err, num_attrs, attrs)) return;
     c::inquire(err, [&](Phigs&) {
         answerGdpAttributes(c::describedType(ws_type, "INQUIRE GDP").gdps, gdp, num_attrs, attrs);
     });
 }
 
 void pinq_list_avail_gse(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_list* gses, Pint* total) {
+    if (!c::somewhereToAnswer(err, gses, total)) return;
     c::inquire(err, [&](Phigs&) {
         const auto d = c::describedType(ws_type, "INQUIRE LIST OF AVAILABLE GSE");
         c::answerList(d.gses, appl, start, gses, total);
@@ -273,6 +282,7 @@ void pinq_list_avail_gse(Pint ws_type, Pint appl, Pint start, Pint* err, Pint_li
 }
 
 void pinq_gse_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pgse_id_dep_list* gses, Pint* total) {
+    if (!c::somewhereToAnswer(err, gses, total)) return;
     c::inquire(err, [&](Phigs&) {
         const auto d = c::describedType(ws_type, "INQUIRE GSE FACILITIES");
         std::vector<Pint> buffer(std::min(d.gses.size(), static_cast<std::size_t>(std::max<Pint>(appl, 0))));
@@ -286,6 +296,7 @@ void pinq_gse_facs(Pint ws_type, Pint appl, Pint start, Pint* err, Pgse_id_dep_l
 }
 
 void pinq_ws_cat(Pint ws_type, Pint* err, Pws_cat* ws_cat) {
+    if (!c::somewhereToAnswer(err, ws_cat)) return;
     c::inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "INQUIRE WORKSTATION CATEGORY");
         if (ws_cat) *ws_cat = d.category == WorkstationCategory::OutIn ? PCAT_OUTIN : PCAT_OUT;
