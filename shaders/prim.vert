@@ -43,6 +43,13 @@ void main() {
         float offsetScale = SCREEN_OFFSETS == 2 ? frame.pixelScale.z : 1.0;
         clip.xy += inOffset * offsetScale * frame.pixelScale.xy * clip.w;
     }
+    // A marker is clipped by its position (ISO 9592): one outside the view's clip rectangle draws
+    // nothing, though its glyph would reach inside (the scissor alone would keep that part).
+    if (SCREEN_OFFSETS == 1) {
+        vec2 at = npc.xy / npc.w;
+        if (!(npc.w > 0.0) || any(lessThan(at, runView.clipXY.xy)) || any(greaterThan(at, runView.clipXY.zw)))
+            clip = vec4(4.0, 4.0, 4.0, 1.0);
+    }
     // Both ends of a facet edge decide alike (the same plane against the same viewer): a line
     // whose triangle shows the other side goes wholly outside the clip volume.
     if (SIDED_EDGES != 0) {

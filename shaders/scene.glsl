@@ -20,6 +20,7 @@ struct View {
     mat4 worldToNpc;
     vec4 eye;   // unit direction toward the viewer, world coordinates
     vec4 clip;  // NPC z min, z max, clip back (1/0), clip front (1/0)
+    vec4 clipXY;  // NPC x min, y min, x max, y max: the workstation window within the view's clip limits
 };
 
 struct Light {

@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <random>
+
 namespace test_pick_model_clip {
 
 using namespace phigs;
@@ -49,6 +51,40 @@ TEST_CASE("pick model clip: markers are clipped by their positions", "[pick]") {
     const Picker picker;
     CHECK_FALSE(picker.nearest(list, {0.3, 0.3}, 0.001));
     CHECK(picker.nearest(list, {0.7, 0.7}, 0.001));
+}
+
+TEST_CASE("pick: a marker outside the view's clip limits or the window is not hit", "[pick]") {
+    // Drawn, such a marker shows nothing (clipped by its position); a pick inside the clip
+    // rectangle within its glyph's reach must not find it either.
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const Picker picker;
+    for (int trial = 0; trial < 200; ++trial) {
+        DrawList list = unitList();
+        const bool byWindow = trial % 2 == 1;
+        const double lo = 0.2 + 0.1 * unit(random), hi = 0.7 + 0.1 * unit(random);
+        if (byWindow) {
+            list.windowMin = {lo, lo, 0.0};
+            list.windowMax = {hi, hi, 1.0};
+        } else {
+            list.views[0].clipMin = {lo, lo, 0.0};
+            list.views[0].clipMax = {hi, hi, 1.0};
+        }
+        // 0.001 to 0.009 outside the left edge; the pick 0.001 inside it, within the marker's reach.
+        const double y = 0.4 + 0.2 * unit(random);
+        const double off = 0.001 + 0.008 * unit(random);
+        const auto marker = [&](double x) {
+            DrawPolymarker m;
+            m.points = {{x, y, 0.5}};
+            m.style.edit().scale = 4.0f;
+            return item(m, {{1, 1, 0}});
+        };
+        list.items.push_back(marker(lo - off));
+        CHECK_FALSE(picker.nearest(list, {lo + 0.001, y}, 0.001));
+        // Just inside instead, it is hit there.
+        list.items[0] = marker(lo + off);
+        CHECK(picker.nearest(list, {lo + 0.001, y}, 0.001));
+    }
 }
 
 TEST_CASE("pick model clip: an exact surface pick goes on to the first kept intersection", "[pick]") {

@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <random>
+
 namespace test_views {
 
 using namespace phigs;
@@ -150,6 +152,74 @@ TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically"
         CHECK(near(at(image, 48, 208), 0, 0, 255));
         CHECK(near(at(image, 56, 200), 25, 25, 25));
         compareWithReference(image, "workstation_window");
+    }
+    requireNoValidationMessages(context);
+}
+
+namespace {
+
+/// Pixels of the marker colour (pure green), all of them or those inside `rect`.
+std::size_t markerPixels(const Image& image, const PixelRect* rect = nullptr) {
+    std::size_t n = 0;
+    for (std::uint32_t y = 0; y < image.height; ++y)
+        for (std::uint32_t x = 0; x < image.width; ++x) {
+            const bool in = !rect || (std::int64_t(x) >= rect->x && std::int64_t(x) < rect->x + rect->width &&
+                                      std::int64_t(y) >= rect->y && std::int64_t(y) < rect->y + rect->height);
+            if (in && at(image, x, y).g > 128 && at(image, x, y).r < 64) ++n;
+        }
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("views: a marker is clipped by its position, not by its glyph", "[render][views]") {
+    // ISO 9592 clips a marker by its position: one just outside a view's clip rectangle draws
+    // nothing even where its glyph reaches inside; one just inside draws what the scissor keeps.
+    vk::Context context(lavapipeWithValidation());
+    {
+        constexpr std::uint32_t size = 128;
+        vk::ImageTarget ws(context, size, size);
+        std::mt19937 random(20261205);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        int outside = 0, inside = 0;
+        for (int trial = 0; trial < 40; ++trial) {
+            DrawList list = emptyScene();
+            DrawView& view = list.views[0];
+            view.clipMin = {0.2 + 0.2 * unit(random), 0.2 + 0.2 * unit(random), 0.0};
+            view.clipMax = {0.6 + 0.2 * unit(random), 0.6 + 0.2 * unit(random), 1.0};
+            // A point 0.5 to 4 pixels off one edge, outside or inside, somewhere along it.
+            const int edge = int(random() % 4), axis = edge % 2;
+            const bool out = trial % 2 == 0;
+            const double offset = (0.5 + 3.5 * unit(random)) / size * (out ? 1.0 : -1.0);
+            glm::dvec3 p(0.0, 0.0, 0.5);
+            p[axis] = edge < 2 ? view.clipMin[axis] - offset : view.clipMax[axis] + offset;
+            p[1 - axis] = glm::mix(view.clipMin[1 - axis], view.clipMax[1 - axis], 0.2 + 0.6 * unit(random));
+            DrawPolymarker m;
+            m.points = {p};
+            m.style.edit().type = random() % 2 ? MarkerType::Plus : MarkerType::Asterisk;
+            m.style.edit().scale = 4.0f;
+            m.style.edit().colour = {0, 1, 0};
+            list.items.push_back(item(m));
+            const PixelRect rect = WorkstationMapping(list, size, size)
+                                       .scissor(glm::dvec2(view.clipMin), glm::dvec2(view.clipMax));
+            view.clipXY = false;
+            const Image whole = ws.draw(list);
+            // The glyph reaches across the edge: the test means something either way.
+            REQUIRE(markerPixels(whole, &rect) > 0);
+            REQUIRE(markerPixels(whole) > markerPixels(whole, &rect));
+            view.clipXY = true;
+            const Image clipped = ws.draw(list);
+            if (out) {
+                CHECK(markerPixels(clipped) == 0);
+                ++outside;
+            } else {
+                CHECK(markerPixels(clipped) == markerPixels(whole, &rect));
+                CHECK(markerPixels(clipped, &rect) == markerPixels(clipped));
+                ++inside;
+            }
+        }
+        CHECK(outside == 20);
+        CHECK(inside == 20);
     }
     requireNoValidationMessages(context);
 }

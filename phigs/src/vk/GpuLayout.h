@@ -38,6 +38,8 @@ struct View {
     glm::mat4 worldToNpc{1.0f};
     glm::vec4 eye{0, 0, 1, 0};
     glm::vec4 clip{0, 1, 0, 0};
+    glm::vec4 clipXY{0, 0, 1,
+                     1};  // the NPC rectangle a marker's position must lie in: lo x, lo y, hi x, hi y
 };
 
 struct Light {
@@ -91,6 +93,6 @@ struct LitRun {
     View view;
     LitLight lights[4];
 };
-static_assert(sizeof(LitRun) == 480);
+static_assert(sizeof(LitRun) == 496);
 
 }  // namespace phigs::vk::gpu

@@ -839,6 +839,12 @@ void Renderer::addViewRuns(const DrawList& list, const WorkstationMapping& mappi
         run.view.eye = glm::vec4(eyeOf(view), 0.0f);
         run.view.clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
                                   view.clipFront ? 1.0f : 0.0f);
+        // What the scissor keeps (WorkstationMapping::scissor): the workstation window, within
+        // the view's clip limits when it clips in x and y.
+        glm::dvec2 lo(list.windowMin), hi(list.windowMax);
+        if (view.clipXY)
+            lo = glm::max(lo, glm::dvec2(view.clipMin)), hi = glm::min(hi, glm::dvec2(view.clipMax));
+        run.view.clipXY = glm::vec4(float(lo.x), float(lo.y), float(hi.x), float(hi.y));
         std::memcpy(&litBytes_[v * litStride_], &run, sizeof run);
         litKeys_.push_back(LitKey{int(v), -1, glm::vec4(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)});
     }
