@@ -436,6 +436,32 @@ TEST_CASE("input devices: strings and strokes are cut to the buffer size", "[inp
     CHECK(std::get<StrokeMeasure>(r.input.request(InputClass::Stroke, 1).second).points.size() == 2);
 }
 
+TEST_CASE("input devices: a string is cut between UTF-8 characters, never through one", "[input]") {
+    // Characters of 1 to 4 bytes in random strings and buffer sizes: the measure is the longest
+    // start of the text within the buffer that ends on a character boundary.
+    const std::string characters[] = {"a", "\xC3\xA9", "\xE2\x82\xAC",
+                                      "\xF0\x9F\x98\x80"};  // a e-acute euro emoji
+    std::mt19937 random(7);
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<std::size_t> ends;  // byte offsets where a character ends
+        std::string text;
+        for (int n = 1 + int(random() % 8); n > 0; --n) {
+            text += characters[random() % 4];
+            ends.push_back(text.size());
+        }
+        Rig r("string " + text + "\n");
+        DeviceInitialisation s;
+        s.initial = StringMeasure{};
+        s.bufferSize = 1 + random() % (text.size() + 2);
+        r.input.initialise(InputClass::String, 1, s);
+        const std::string got = std::get<StringMeasure>(r.input.request(InputClass::String, 1).second).text;
+        std::size_t want = 0;
+        for (std::size_t e : ends)
+            if (e <= s.bufferSize) want = e;
+        CHECK(got == text.substr(0, want));
+    }
+}
+
 TEST_CASE("input devices: pointer motion moves a sampled locator and triggers nothing", "[input]") {
     Rig r("move 3 4\nmove 5 6\nlocator 7 8\n");
     CHECK(r.input.pump(0ms) == WorkstationInput::Pumped::Nothing);  // nobody samples: dropped

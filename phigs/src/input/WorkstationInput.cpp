@@ -34,6 +34,14 @@ std::string deviceName(InputClass inputClass, int device) {
     return std::string(nameOf(inputClass)) + " " + std::to_string(device);
 }
 
+/// The longest start of `text` of at most `bytes` bytes that cuts no UTF-8 character in two.
+std::string utf8Prefix(const std::string& text, std::size_t bytes) {
+    if (text.size() <= bytes) return text;
+    std::size_t n = bytes;
+    while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;  // a continuation byte
+    return text.substr(0, n);
+}
+
 }  // namespace
 
 WorkstationInput::WorkstationInput(int workstation, const InputMeasurer& measurer, DeviceCounts counts)
@@ -239,9 +247,7 @@ Measure WorkstationInput::measureFor(InputDevice& device, const InputAction& a) 
                          std::to_string(choiceAlternatives(device.setup)));
                 return ChoiceMeasure{InputStatus::Ok, choice};
             } else if constexpr (std::is_same_v<T, action::String>) {
-                std::string text = w.text;
-                if (text.size() > device.setup.bufferSize) text.resize(device.setup.bufferSize);
-                return StringMeasure{text};
+                return StringMeasure{utf8Prefix(w.text, device.setup.bufferSize)};
             } else {
                 return device.current;
             }
@@ -290,6 +296,11 @@ std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(cons
 WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeout, const InputDevice* pending,
                                                 std::pair<InputStatus, Measure>* result) {
     if (!source_) return Pumped::Nothing;
+    // A window its user closed gives no more input: a pending request ends as a break ends it.
+    if (pending && result && source_->closed()) {
+        *result = {InputStatus::None, pending->current};
+        return Pumped::Broke;
+    }
     std::optional<InputAction> a = source_->next(timeout);
     if (echoListener_) {
         // Typing moves the echo without completing an action: the echo areas show it now.
@@ -319,6 +330,11 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
         return Pumped::Nothing;
     }
 
+    measuredSurface_ = a->surface;
+    struct Forget {
+        std::optional<glm::uvec2>& surface;
+        ~Forget() { surface.reset(); }
+    } forget{measuredSurface_};
     auto measures = measuresFor(throughEcho(*a));
     std::vector<EventReport> reports;
     bool satisfied = false;

@@ -79,13 +79,18 @@ void WindowTarget::createSwapchain() {
     VkSurfaceCapabilitiesKHR caps{};
     check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(context_.physicalDevice(), surface_, &caps),
           "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
-    if (caps.currentExtent.width != UINT32_MAX) {
-        extent_ = caps.currentExtent;
-    } else {
-        const VkExtent2D size = window_.drawableSize();
-        extent_ = {std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width),
-                   std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
-    }
+    drawableAtCreation_ = window_.drawableSize();
+    const VkExtent2D size = caps.currentExtent.width != UINT32_MAX ? caps.currentExtent : drawableAtCreation_;
+    extent_ = {std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width),
+               std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+    // A window its user made larger than the device can draw (X surfaces want exactly the
+    // window's size): no swapchain, as while minimised, until it is made smaller again.
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(context_.physicalDevice(), &properties);
+    const VkPhysicalDeviceLimits& limits = properties.limits;
+    if (extent_.width > std::min(limits.maxImageDimension2D, limits.maxFramebufferWidth) ||
+        extent_.height > std::min(limits.maxImageDimension2D, limits.maxFramebufferHeight))
+        extent_ = {0, 0};
     if (extent_.width == 0 || extent_.height == 0) return;  // minimised: wait for a size
     VkSwapchainCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR;
@@ -165,7 +170,8 @@ bool WindowTarget::draw(const DrawList& list, Image* readback) {
     VkDevice device = context_.device();
     const VkExtent2D drawable = window_.drawableSize();
     if (drawable.width == 0 || drawable.height == 0) return false;  // minimised: nothing to show
-    if (!swapchain_ || drawable.width != extent_.width || drawable.height != extent_.height) {
+    if (!swapchain_ || drawable.width != drawableAtCreation_.width ||
+        drawable.height != drawableAtCreation_.height) {
         recreateSwapchain();
         if (!swapchain_) return false;
     }

@@ -32,19 +32,13 @@ glm::dvec2 pixels(GLFWwindow* window, double x, double y) {
     return {x * sx, y * sy};
 }
 
-glm::dvec2 cursor(GLFWwindow* window) {
-    double x = 0, y = 0;
-    glfwGetCursorPos(window, &x, &y);
-    return pixels(window, x, y);
-}
-
 void onButton(GLFWwindow* window, int button, int action, int mods) {
     GlfwInputSource* source = sourceOf(window);
     if (!source) return;
     window_event::Button b = window_event::Button::Left;
     if (button == GLFW_MOUSE_BUTTON_RIGHT) b = window_event::Button::Right;
     if (button == GLFW_MOUSE_BUTTON_MIDDLE) b = window_event::Button::Middle;
-    const glm::dvec2 at = cursor(window);
+    const glm::dvec2 at = source->pointerAsOfEvents();
     if (action == GLFW_PRESS)
         source->post(window_event::ButtonPress{b, at, (mods & GLFW_MOD_SHIFT) != 0});
     else if (action == GLFW_RELEASE)
@@ -52,8 +46,10 @@ void onButton(GLFWwindow* window, int button, int action, int mods) {
 }
 
 void onCursor(GLFWwindow* window, double x, double y) {
-    if (GlfwInputSource* source = sourceOf(window))
+    if (GlfwInputSource* source = sourceOf(window)) {
+        source->pointerMoved({x, y});
         source->post(window_event::CursorMove{pixels(window, x, y)});
+    }
 }
 
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
@@ -70,7 +66,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
 }
 
 void onScroll(GLFWwindow* window, double, double y) {
-    if (GlfwInputSource* source = sourceOf(window)) source->post(window_event::Scroll{cursor(window), y});
+    if (GlfwInputSource* source = sourceOf(window))
+        source->post(window_event::Scroll{source->pointerAsOfEvents(), y});
 }
 
 void onCharacter(GLFWwindow* window, unsigned int codepoint) {
@@ -114,7 +111,25 @@ void GlfwInputSource::post(const WindowEvent& event) {
 }
 
 void GlfwInputSource::deliver(const WindowEvent& event) {
-    if (auto a = mapper_.handle(event)) pending_.push_back(std::move(*a));
+    if (auto a = mapper_.handle(event)) {
+        // The picture the operator acted on: its size as the resize events so far left it.
+        if (owner_) {
+            const VkExtent2D size = owner_->drawableSizeAsOfEvents();
+            if (size.width > 0 && size.height > 0) a->surface = glm::uvec2(size.width, size.height);
+        }
+        pending_.push_back(std::move(*a));
+    }
+}
+
+glm::dvec2 GlfwInputSource::pointerAsOfEvents() const {
+    if (pointer_) return pixels(window_, pointer_->x, pointer_->y);
+    double x = 0, y = 0;
+    glfwGetCursorPos(window_, &x, &y);
+    return pixels(window_, x, y);
+}
+
+bool GlfwInputSource::closed() const {
+    return glfwWindowShouldClose(window_) == GLFW_TRUE;
 }
 
 std::optional<InputAction> GlfwInputSource::next(std::chrono::milliseconds timeout) {

@@ -54,9 +54,10 @@ void releaseGlfw() {
 
 GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::string& title,
                        const std::string& display) {
-    if (width == 0 || height == 0 || width > 16384 || height > 16384)
+    if (width == 0 || height == 0 || width > kMaxSide || height > kMaxSide)
         throw std::invalid_argument("GlfwWindow: a window of " + std::to_string(width) + " x " +
-                                    std::to_string(height) + " pixels (1..16384 each)");
+                                    std::to_string(height) + " pixels (1.." + std::to_string(kMaxSide) +
+                                    " each)");
     acquireGlfw(display);
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
@@ -66,6 +67,7 @@ GlfwWindow::GlfwWindow(std::uint32_t width, std::uint32_t height, const std::str
         throw std::runtime_error("GLFW: cannot create the window '" + title + "'");
     }
     glfwSetWindowUserPointer(window_, this);
+    glfwGetFramebufferSize(window_, &eventWidth_, &eventHeight_);
     glfwSetFramebufferSizeCallback(window_, onResize);
     glfwSetWindowRefreshCallback(window_, onDamage);
     glfwSetWindowIconifyCallback(window_, onIconify);
@@ -80,7 +82,9 @@ void GlfwWindow::onDamage(GLFWwindow* window) {
     if (auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window))) ++self->damage_;
 }
 
-void GlfwWindow::onResize(GLFWwindow* window, int, int) {
+void GlfwWindow::onResize(GLFWwindow* window, int width, int height) {
+    if (auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window)))
+        self->eventWidth_ = width, self->eventHeight_ = height;
     onDamage(window);
 }
 
@@ -111,6 +115,11 @@ VkExtent2D GlfwWindow::drawableSize() const {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
     return {std::uint32_t(std::max(w, 0)), std::uint32_t(std::max(h, 0))};
+}
+
+VkExtent2D GlfwWindow::drawableSizeAsOfEvents() const {
+    if (iconified()) return {0, 0};
+    return {std::uint32_t(std::max(eventWidth_, 0)), std::uint32_t(std::max(eventHeight_, 0))};
 }
 
 bool GlfwWindow::shouldClose() const {

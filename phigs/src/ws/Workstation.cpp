@@ -53,6 +53,9 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
     modification_ = description_.defaultModification;
     commitCurrent();
     measurer_.setSurfaceSize([this] {
+        // An operator's action maps through the picture it was made on (a window resized since).
+        if (const auto& at = input_->measuredActionSurface())
+            return DrawListMeasurer::SurfaceSize{at->x, at->y};
         const DrawableSize size = drawableSize();
         if (size.width > 0 && size.height > 0) return DrawListMeasurer::SurfaceSize{size.width, size.height};
         const glm::dvec2 display = description_.displaySize;  // minimised: no pixels to map

@@ -90,6 +90,33 @@ public:
             key(symbol);
         }
     }
+    /// Moves to each point and clicks there, all sent before the client reads any of them.
+    void clickBurst(GLFWwindow* window, const std::vector<glm::dvec2>& points) {
+        int x = 0, y = 0;
+        glfwGetWindowPos(window, &x, &y);
+        for (const glm::dvec2& p : points) {
+            XTestFakeMotionEvent(display_, -1, x + int(std::lround(p.x)), y + int(std::lround(p.y)), 0);
+            XTestFakeButtonEvent(display_, 1, 1, 0);
+            XTestFakeButtonEvent(display_, 1, 0, 0);
+        }
+        XSync(display_, False);
+    }
+    /// The user (the window manager) resizes the window.
+    void resize(unsigned width, unsigned height) {
+        XResizeWindow(display_, window(), width, height), XSync(display_, False);
+    }
+    /// The user closes the window from the window manager (ICCCM WM_DELETE_WINDOW).
+    void close() {
+        XEvent e{};
+        e.xclient.type = ClientMessage;
+        e.xclient.window = window();
+        e.xclient.message_type = XInternAtom(display_, "WM_PROTOCOLS", False);
+        e.xclient.format = 32;
+        e.xclient.data.l[0] = long(XInternAtom(display_, "WM_DELETE_WINDOW", False));
+        e.xclient.data.l[1] = CurrentTime;
+        XSendEvent(display_, e.xclient.window, False, NoEventMask, &e);
+        XSync(display_, False);
+    }
     void iconify() { setState(IconicState), XUnmapWindow(display_, window()), XFlush(display_); }
     void restore() { XMapWindow(display_, window()), setState(NormalState), XFlush(display_); }
 
@@ -307,6 +334,61 @@ TEST_CASE("window workstation: minimised and restored, it keeps its devices and 
         }
     CHECK(std::get<ValuatorMeasure>(rig.ws->input().sample(InputClass::Valuator, 1)).value == 3.0);
     render_test::requireNoValidationMessages(rig.display->context());
+}
+
+TEST_CASE("window workstation: input maps through the picture it was made on, a closed window ends requests",
+          "[window][resize]") {
+    WindowRig rig;  // 480 x 320 pixels, the workstation window 1 x 2/3 of NPC over all of it
+    rig.ws->input().setMode(InputClass::Locator, 1, OperatingMode::Event);
+    // NPC of a pixel as the rig's workstation transformation maps it on a surface `height` high.
+    const auto npc = [](glm::dvec2 pixel, double height) {
+        return glm::dvec2(pixel.x / 480.0, (height - pixel.y) / 480.0);
+    };
+    const auto locatorReports = [&] {
+        std::vector<glm::dvec2> out;
+        for (const EventReport& r : rig.reports)
+            if (r.inputClass == InputClass::Locator)
+                out.push_back(glm::dvec2(std::get<LocatorMeasure>(r.measure).position));
+        return out;
+    };
+    // A burst of clicks read at once: each is reported where it was made, not where the
+    // pointer is when the client reads it.
+    std::mt19937 random(12);
+    std::vector<glm::dvec2> clicks;
+    for (int i = 0; i < 6; ++i)
+        clicks.push_back({std::uniform_int_distribution<int>(20, 460)(random),
+                          std::uniform_int_distribution<int>(20, 300)(random)});
+    rig.x.clickBurst(rig.window.handle(), clicks);
+    REQUIRE(rig.pumpUntil([&] { return locatorReports().size() == clicks.size(); }));
+    for (std::size_t i = 0; i < clicks.size(); ++i) {
+        CHECK(std::abs(locatorReports()[i].x - npc(clicks[i], 320).x) < 2.0 / 480);
+        CHECK(std::abs(locatorReports()[i].y - npc(clicks[i], 320).y) < 2.0 / 480);
+    }
+    // A click, then a resize before the client reads either: the click belongs to the 480 x 320
+    // picture it was made on, not to the 320 x 480 window the resize leaves.
+    rig.reports.clear();
+    const glm::dvec2 at{300, 200};
+    rig.x.clickBurst(rig.window.handle(), {at});
+    rig.x.resize(320, 480);
+    REQUIRE(rig.pumpUntil([&] { return locatorReports().size() == 1; }));
+    CHECK(std::abs(locatorReports()[0].x - npc(at, 320).x) < 2.0 / 480);
+    CHECK(std::abs(locatorReports()[0].y - npc(at, 320).y) < 2.0 / 480);
+    // Made wider by its user than the device can draw, the window shows no picture (no Vulkan
+    // object past the device's limits) until it is made smaller again.
+    rig.x.resize(GlfwWindow::kMaxSide + 600, 100);
+    REQUIRE(rig.pumpUntil([&] { return rig.window.drawableSize().width == GlfwWindow::kMaxSide + 600; }));
+    rig.ws->redrawAllStructures();
+    CHECK_FALSE(rig.display->update());
+    rig.x.resize(400, 300);
+    REQUIRE(rig.pumpUntil([&] { return rig.window.drawableSize().width == 400; }));
+    CHECK(rig.display->update());
+    render_test::requireNoValidationMessages(rig.display->context());
+    // Closed by its user, the window ends a pending REQUEST (status NONE), and any made later.
+    rig.ws->input().setMode(InputClass::Locator, 1, OperatingMode::Request);
+    rig.x.close();
+    CHECK(rig.ws->input().request(InputClass::Locator, 1).first != InputStatus::Ok);  // NONE (X defines None)
+    CHECK(rig.window.shouldClose());
+    CHECK(rig.ws->input().request(InputClass::Locator, 1).first != InputStatus::Ok);  // NONE (X defines None)
 }
 
 TEST_CASE("window workstation: a window it opened itself gives each new size to the display surface",

@@ -2,6 +2,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -62,6 +63,10 @@ struct InputAction {
         what;
     int line = 0;
     std::string text;  ///< the action as written, for messages
+    /// The drawable's size in pixels when the operator acted (a window), which the positions map
+    /// through: a click taken off the queue after a resize belongs to the picture it was made on.
+    /// Empty (a script): the size when the action is measured.
+    std::optional<glm::uvec2> surface;
 };
 
 }  // namespace phigs

@@ -18,7 +18,7 @@ struct DeviceInitialisation {
     double valuatorHigh = 1.0;  ///< valuator data record
     /// Choice alternatives, 1-based in measures; empty: kMaxChoiceAlternatives numbered ones.
     std::vector<std::string> choiceStrings;
-    std::size_t bufferSize = 256;               ///< stroke: points; string: characters
+    std::size_t bufferSize = 256;               ///< stroke: points; string: bytes (whole UTF-8 characters)
     PathOrder pathOrder = PathOrder::TopFirst;  ///< pick
     double pickAperture = 0.01;                 ///< pick: half-size of the aperture in NPC
 };

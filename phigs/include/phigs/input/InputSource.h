@@ -43,6 +43,9 @@ public:
     virtual void setEchoLayout(const EchoLayout&) {}
     /// The string echo now (typed text not yet accepted).
     virtual StringEcho stringEcho() const { return {}; }
+    /// True once the operator closed the source (a window closed by its user): a REQUEST pending
+    /// or made after it ends with status NONE, as a break does.
+    virtual bool closed() const { return false; }
 };
 
 }  // namespace phigs

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -86,6 +87,9 @@ public:
     const std::vector<InputAction>& history() const { return history_; }
     /// Where the source is (a script's "NAME line N"), for messages.
     std::string position() const { return source_ ? source_->position() : "no source"; }
+    /// While an action is measured, the drawable size it was made on (InputAction::surface), which
+    /// the measurer maps its positions through; empty otherwise.
+    const std::optional<glm::uvec2>& measuredActionSurface() const { return measuredSurface_; }
 
     /// Takes one action from the source (waiting at most `timeout`) and delivers it: sample
     /// devices take the new measure, event devices queue a report, a pending request of the
@@ -117,6 +121,7 @@ private:
     std::vector<std::string> ignored_;
     std::function<void(const std::string&)> ignoredHandler_;
     std::vector<InputAction> history_;
+    std::optional<glm::uvec2> measuredSurface_;
 };
 
 }  // namespace phigs

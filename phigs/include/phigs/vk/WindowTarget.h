@@ -50,6 +50,7 @@ private:
     VkSurfaceFormatKHR format_{};
     VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
     VkExtent2D extent_{};
+    VkExtent2D drawableAtCreation_{};  // the window's drawable when the swapchain was made
     std::vector<VkImage> images_;
     std::vector<VkImageView> views_;
     std::vector<VkFramebuffer> framebuffers_;

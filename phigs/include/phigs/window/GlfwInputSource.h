@@ -6,6 +6,7 @@
 
 #include <deque>
 #include <functional>
+#include <optional>
 
 struct GLFWwindow;
 
@@ -30,6 +31,8 @@ public:
     std::string position() const override { return "window"; }
     void setEchoLayout(const EchoLayout& layout) override { mapper_.setLayout(layout); }
     StringEcho stringEcho() const override { return mapper_.stringEcho(); }
+    /// True once the window's user (or requestClose) asked to close it.
+    bool closed() const override;
 
     /// Delivers an event as the window's callbacks do: to the event filter, then (unless the
     /// filter took it) to the mapper.
@@ -41,6 +44,12 @@ public:
     /// Delivers an event to the mapper alone (what a filter hands back after holding it).
     void deliver(const WindowEvent& event);
     const WindowEventMapper& mapper() const { return mapper_; }
+    /// The pointer in framebuffer pixels as of the events processed so far (a click is where it
+    /// was made, though the pointer has moved on since); asked of the window system before the
+    /// first motion.
+    glm::dvec2 pointerAsOfEvents() const;
+    /// Records a motion event's position (window coordinates), as the cursor callback does.
+    void pointerMoved(glm::dvec2 windowCoordinates) { pointer_ = windowCoordinates; }
 
 private:
     GLFWwindow* window_;
@@ -49,6 +58,7 @@ private:
     WindowEventMapper mapper_;
     std::deque<InputAction> pending_;
     std::function<bool(const WindowEvent&)> filter_;
+    std::optional<glm::dvec2> pointer_;  ///< window coordinates, from the last motion event
 };
 
 }  // namespace phigs

@@ -15,6 +15,10 @@ namespace phigs {
 /// vk::WindowTarget draws on. The only code besides GlfwInputSource that includes GLFW.
 class GlfwWindow : public vk::WindowSurface {
 public:
+    /// The largest side of a window it opens (the Vulkan limit of the drivers here); a window its
+    /// user makes larger shows no picture until it is made smaller again (vk::WindowTarget).
+    static constexpr std::uint32_t kMaxSide = 16384;
+
     /// Opens a resizable window on `display` (an X display name; empty: $DISPLAY); throws
     /// std::runtime_error naming the reason when GLFW cannot start (no display) or the window
     /// cannot be made, std::invalid_argument for a second display in one process.
@@ -29,6 +33,9 @@ public:
     /// The framebuffer in pixels; 0 x 0 while the window is minimised (iconified), on every
     /// window system (X keeps an iconified window's size).
     VkExtent2D drawableSize() const override;
+    /// drawableSize() as of the events processed so far (the resizes delivered in order with the
+    /// clicks), where drawableSize() asks the window system now.
+    VkExtent2D drawableSizeAsOfEvents() const;
     /// True while the window is minimised.
     bool iconified() const;
 
@@ -52,6 +59,7 @@ private:
 
     GLFWwindow* window_ = nullptr;
     std::uint64_t damage_ = 0;
+    int eventWidth_ = 0, eventHeight_ = 0;  // the framebuffer as the last resize event gave it
 };
 
 }  // namespace phigs
