@@ -17,8 +17,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 
@@ -259,6 +261,32 @@ TEST_CASE("bad models: the writer names the surface, the curves and the cause", 
                       Catch::Contains("cannot be written"));
     for (const char* name : {"a.step", "b.igs", "c.step", "d.step"})
         CHECK_FALSE(std::filesystem::exists(dir / name));
+}
+
+TEST_CASE("bad models: what a reader would not give back is refused before anything is written",
+          "[exchange][bad]") {
+    // Each written, then read, would come back changed or not at all: a NaN colour (invalid STEP),
+    // a newline in a name (an IGES file its reader refuses), UTF-8 (read back as Latin-1), spaces
+    // at an end (trimmed), a real beyond 1e100 (infinite to the reader).
+    const auto dir = exchange_test::scratch("unwritable_models");
+    const std::vector<std::pair<std::function<void(CadModel&)>, std::string>> cases = {
+        {[](CadModel& m) { m.surfaces[0].colour = glm::dvec3(std::nan(""), 0.5, 0.5); }, "colour"},
+        {[](CadModel& m) { m.surfaces[0].colour = glm::dvec3(0.5, 1.5, 0.5); }, "colour"},
+        {[](CadModel& m) { m.surfaces[0].name = "right\nwing"; }, "control character"},
+        {[](CadModel& m) { m.surfaces[0].curves[0].name = "Fl\xC3\xBCgel"; }, "outside printable ASCII"},
+        {[](CadModel& m) { m.name = "transport "; }, "space at an end"},
+        {[](CadModel& m) { m.surfaces[0].surface.points[3].y = 1e150; }, "beyond 1e100"},
+        {[](CadModel& m) { m.surfaces[0].curves[0].loops[0].points[0].x = -2e100; }, "beyond 1e100"},
+    };
+    int k = 0;
+    for (const auto& [spoil, why] : cases)
+        for (const char* extension : {".step", ".igs"}) {
+            CadModel m = wingModel();
+            spoil(m);
+            const auto file = dir / ("m" + std::to_string(k++) + extension);
+            CHECK_THROWS_WITH(writeCadFile(m, file), Catch::Contains(file.string()) && Catch::Contains(why));
+            CHECK_FALSE(std::filesystem::exists(file));
+        }
 }
 
 }  // namespace test_bad_files

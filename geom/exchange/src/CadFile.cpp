@@ -4,6 +4,7 @@
 #include "FailureText.h"
 #include "OcctSession.h"
 #include "ShapeBuild.h"
+#include "StepReals.h"
 #include "Units.h"
 
 #include "geom/GeometryError.h"
@@ -25,8 +26,11 @@
 #include <TCollection_HAsciiString.hxx>
 #include <XSControl_WorkSession.hxx>
 
+#include <glm/vector_relational.hpp>
+
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -35,8 +39,44 @@ namespace geom::exchange {
 
 namespace {
 
+/// Why a name would not come back as written, or empty: the readers give back printable ASCII
+/// only (STEP's reads UTF-8 as Latin-1; a control character breaks an IGES file), and trim spaces
+/// at either end.
+std::string unwritableName(const std::string& name) {
+    for (unsigned char c : name) {
+        if (c < 0x20 || c == 0x7F) return "a control character";
+        if (c >= 0x80) return "a character outside printable ASCII";
+    }
+    if (!name.empty() && (name.front() == ' ' || name.back() == ' ')) return "a space at an end";
+    return {};
+}
+
+/// Refuses what a reader would not give back: a real beyond the STEP reader's limit (1e100, which
+/// OpenCASCADE takes for infinite; the geometry's own validation refuses NaN) and a colour that is
+/// not RGB in [0, 1].
+void checkWritable(const CadSurface& s) {
+    const auto large = [](double v) { return std::abs(v) > kStepRealLimit; };
+    const auto point = [&](const glm::dvec3& p) { return large(p.x) || large(p.y) || large(p.z); };
+    const Surface& g = s.surface;
+    if (std::any_of(g.knotsU.begin(), g.knotsU.end(), large) ||
+        std::any_of(g.knotsV.begin(), g.knotsV.end(), large) ||
+        std::any_of(g.points.begin(), g.points.end(), point) ||
+        std::any_of(g.weights.begin(), g.weights.end(), large))
+        throw GeometryError("a knot, control point or weight beyond 1e100, which no reader gives back");
+    for (const SurfaceCurves& c : s.curves)
+        for (const SurfaceLoop& l : c.loops)
+            if (std::any_of(l.points.begin(), l.points.end(), point))
+                throw GeometryError("curves '" + c.name +
+                                    "': a point beyond 1e100, which no reader gives back");
+    if (s.colour && !(glm::all(glm::greaterThanEqual(*s.colour, glm::dvec3(0.0))) &&
+                      glm::all(glm::lessThanEqual(*s.colour, glm::dvec3(1.0)))))
+        throw GeometryError("its colour is not RGB within [0, 1]");
+}
+
 /// The parts a model is written as: each surface's patch faces, then its curve sets' faces.
 std::vector<NamedShape> modelParts(const CadModel& model, const std::string& file) {
+    if (const std::string why = unwritableName(model.name); !why.empty())
+        throw ExchangeError(file, "the model's name '" + model.name + "' has " + why);
     std::vector<NamedShape> parts;
     std::set<std::string> names;
     for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
@@ -44,7 +84,14 @@ std::vector<NamedShape> modelParts(const CadModel& model, const std::string& fil
         if (s.name.empty() || s.name.find('/') != std::string::npos || !names.insert(s.name).second)
             throw ExchangeError(file, "surface " + std::to_string(i + 1) + " is named '" + s.name +
                                           "': names must be unique, not empty and without '/'");
+        const auto checkName = [&](const std::string& name) {
+            if (const std::string why = unwritableName(name); !why.empty())
+                throw ExchangeError(file, "surface '" + s.name + "': the name '" + name + "' has " + why);
+        };
+        checkName(s.name);
+        for (const SurfaceCurves& c : s.curves) checkName(c.name);
         try {
+            checkWritable(s);
             parts.push_back({s.name, patchFaces(s.surface), s.colour});
             if (s.curves.empty()) continue;
             const opencascade::handle<Geom_BSplineSurface> support = toOcct(s.surface);
