@@ -249,6 +249,41 @@ TEST_CASE("pick tree: a workstation's pick device traverses again only when some
     CHECK(ws.pickTraversals() == 2);
 }
 
+TEST_CASE("pick tree: two workstations' pictures copied over one list are never taken for each other",
+          "[pick][tree][wiring]") {
+    // A list assigned another workstation's picture keeps its storage and count; the two pictures
+    // must still differ in generation, or the tree kept per list would answer from stale boxes.
+    std::mt19937 rng(20261205);
+    std::uniform_real_distribution<double> corner(0.05, 0.7);
+    for (int round = 0; round < 20; ++round) {
+        Phigs phigs;
+        phigs.open();
+        auto& store = phigs.store();
+        std::vector<glm::dvec2> centres;
+        for (int id = 1; id <= 2; ++id) {
+            const double x = corner(rng), y = corner(rng);
+            centres.push_back({x + 0.1, y + 0.1});
+            store.openStructure(id);
+            store.insert(IndexAttribute{ElementType::InteriorStyle, 1});
+            store.insert(fillArea3({{x, y, 0}, {x + 0.2, y, 0}, {x + 0.2, y + 0.2, 0}, {x, y + 0.2, 0}}));
+            store.closeStructure();
+            Workstation& ws = phigs.openWorkstation(id, WorkstationType::Window);
+            ws.postStructure(id, 0.5);
+        }
+        const Picker picker;
+        Picker every;
+        every.setAccelerated(false);
+        DrawList x;
+        for (int k = 0; k < 4; ++k) {
+            const int id = 1 + k % 2;
+            x = phigs.workstation(id).display();
+            const glm::dvec2 at = centres[std::size_t(id - 1)];
+            CHECK(picker.hits(x, at, 0.001).size() == every.hits(x, at, 0.001).size());
+            CHECK(picker.nearest(x, at, 0.001).has_value());
+        }
+    }
+}
+
 TEST_CASE("pick tree: a deferred view change is picked as shown, before and after it is shown",
           "[pick][tree][wiring]") {
     // While a change waits (ASTI or WAIT, NIVE), pick sees the picture on the display; once UPDATE

@@ -4,6 +4,7 @@
 #include "phigs/ws/WorkstationErrors.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace phigs {
@@ -213,6 +214,18 @@ VisualState Workstation::visualState() const {
     return pictureState_;
 }
 
+namespace {
+
+/// A draw list generation no other list a workstation made in this process has: a picker keeps
+/// its bounds tree per list and generation, and two workstations' lists (or one list copied over
+/// another, which keeps its storage) must never look alike.
+std::uint64_t newGeneration() {
+    static std::atomic<std::uint64_t> last{0};
+    return ++last;
+}
+
+}  // namespace
+
 void Workstation::regenerate(VisualState after) {
     std::uint64_t stamp = contentStamp();
     std::vector<int> roots;
@@ -222,11 +235,11 @@ void Workstation::regenerate(VisualState after) {
     // The old items go first, so a regeneration never holds two pictures (the traverser keeps
     // what it reuses); a traversal that throws leaves no picture and a new generation.
     picture_.items.clear();
-    picture_.generation = generation + 1;
+    picture_.generation = newGeneration();
     pictured_ = false;
     picture_ = traverser_.traverse(store_, roots, tables_, filters_);
     picture_.patterns = resolvedPatterns();
-    picture_.generation = same ? generation : generation + 1;
+    picture_.generation = same ? generation : newGeneration();
     pictureStamp_ = stamp;
     pictured_ = true;
     picturedEmpty_ = roots.empty();
@@ -572,7 +585,8 @@ const DrawList& Workstation::pickList(const InputDevice& device) {
         return cached.list;
     cached.list = traverse(filters);
     // A new generation per traversal lets the Picker drop intersectors of deleted surfaces.
-    cached.list.generation = ++pickTraversals_;
+    ++pickTraversals_;
+    cached.list.generation = newGeneration();
     cached.filters = std::move(filters);
     cached.stamp = stamp;
     cached.picture = picture;
