@@ -1,5 +1,7 @@
 #include "phigs/hardcopy/HomogeneousClipper.h"
 
+#include "phigs/traverse/ViewClipRectangle.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -31,8 +33,8 @@ std::vector<HalfSpace> viewVolume(const DrawView& view, const DrawList& list) {
     if (view.clipFront) zHi = std::min(zHi, view.clipMax.z);
     volume.push_back({{0, 0, 1, -zLo}, 0.0});
     volume.push_back({{0, 0, -1, zHi}, 0.0});
-    glm::dvec2 lo(list.windowMin), hi(list.windowMax);
-    if (view.clipXY) lo = glm::max(lo, glm::dvec2(view.clipMin)), hi = glm::min(hi, glm::dvec2(view.clipMax));
+    const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
+    const glm::dvec2 lo = kept.min, hi = kept.max;
     volume.push_back({{1, 0, 0, -lo.x}, 0.0});
     volume.push_back({{-1, 0, 0, hi.x}, 0.0});
     volume.push_back({{0, 1, 0, -lo.y}, 0.0});

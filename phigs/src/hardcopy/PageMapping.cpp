@@ -1,5 +1,7 @@
 #include "phigs/hardcopy/PageMapping.h"
 
+#include "phigs/traverse/ViewClipRectangle.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -53,8 +55,8 @@ glm::dvec3 PageMapping::toPage(const glm::dvec3& npc) const {
 }
 
 PageRect PageMapping::clipRect(const DrawView& view) const {
-    glm::dvec2 lo(workstation.windowMin), hi(workstation.windowMax);
-    if (view.clipXY) lo = glm::max(lo, glm::dvec2(view.clipMin)), hi = glm::min(hi, glm::dvec2(view.clipMax));
+    const ViewClipRectangle kept(view, workstation.windowMin, workstation.windowMax);
+    const glm::dvec2 lo = kept.min, hi = kept.max;
     if (!(hi.x > lo.x && hi.y > lo.y)) return {};
     const glm::dvec3 a = toPage({lo, 0.0}), b = toPage({hi, 0.0});
     PageRect r;

@@ -5,6 +5,7 @@
 #include "geom/SurfaceIntersector.h"
 #include "phigs/render/ItemGeometry.h"
 #include "phigs/render/MeshEdges.h"
+#include "phigs/traverse/ViewClipRectangle.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -307,12 +308,6 @@ bool insideClip(const DrawView& view, const glm::dvec3& npc) {
     return true;
 }
 
-/// Whether an NPC point lies in the workstation window (which always clips).
-bool insideWindow(const DrawList& list, const glm::dvec3& npc) {
-    return npc.x >= list.windowMin.x && npc.x <= list.windowMax.x && npc.y >= list.windowMin.y &&
-           npc.y <= list.windowMax.y;
-}
-
 /// Whether the box lo..hi (modelling coordinates) may meet the aperture once projected by `m`:
 /// false only when all its corners project and their NPC box misses the aperture.
 bool boxNearAperture(const glm::dvec3& lo, const glm::dvec3& hi, const glm::dmat4& m, const Aperture& ap) {
@@ -472,12 +467,13 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
             } else if constexpr (std::is_same_v<T, DrawPolymarker>) {
                 // The marker's own size widens the aperture (nominal 7 pixels times the scale).
                 const double grow = mapping.npcLength(3.5 * p.style->scale);
+                const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
                 // A marker is clipped by its position, as drawn: one outside the view's clip
                 // limits or the workstation window is not hit where its glyph would reach in.
                 for (const glm::dvec3& point : p.points) {
                     const Projected q = project(m, point);
                     if (q.valid && ap.contains(glm::dvec2(q.npc), grow) && (!z || q.npc.z > *z) &&
-                        insideClip(view, q.npc) && insideWindow(list, q.npc) &&
+                        insideClip(view, q.npc) && kept.contains(glm::dvec2(q.npc)) &&
                         insideModelClip(item, toWorld(item, point)))
                         z = q.npc.z;
                 }

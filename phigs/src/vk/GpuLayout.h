@@ -38,8 +38,9 @@ struct View {
     glm::mat4 worldToNpc{1.0f};
     glm::vec4 eye{0, 0, 1, 0};
     glm::vec4 clip{0, 1, 0, 0};
-    glm::vec4 clipXY{0, 0, 1,
-                     1};  // the NPC rectangle a marker's position must lie in: lo x, lo y, hi x, hi y
+    // The NPC rectangle the scissor keeps and a marker's position must lie in (ViewClipRectangle):
+    // lo x, lo y, hi x, hi y.
+    glm::vec4 clipXY{0, 0, 1, 1};
 };
 
 struct Light {

@@ -4,6 +4,7 @@
 #include "ShaderSpecialisation.h"
 #include "phigs/render/MeshEdges.h"
 #include "phigs/render/PatternMapping.h"
+#include "phigs/traverse/ViewClipRectangle.h"
 #include "phigs/traverse/WorkstationMapping.h"
 #include "shaders/Spirv.h"
 
@@ -600,9 +601,8 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
         const glm::dmat4 worldToPixels = npcToPixels * view.mapping * view.orientation;
         VkRect2D scissor{};
         {
-            const glm::dvec2 lo = view.clipXY ? glm::dvec2(view.clipMin) : glm::dvec2(-1e30);
-            const glm::dvec2 hi = view.clipXY ? glm::dvec2(view.clipMax) : glm::dvec2(1e30);
-            const PixelRect r = mapping.scissor(lo, hi);
+            const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
+            const PixelRect r = mapping.scissor(kept.min, kept.max);
             scissor = {{r.x, r.y}, {r.width, r.height}};
         }
         if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
@@ -839,12 +839,9 @@ void Renderer::addViewRuns(const DrawList& list, const WorkstationMapping& mappi
         run.view.eye = glm::vec4(eyeOf(view), 0.0f);
         run.view.clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
                                   view.clipFront ? 1.0f : 0.0f);
-        // What the scissor keeps (WorkstationMapping::scissor): the workstation window, within
-        // the view's clip limits when it clips in x and y.
-        glm::dvec2 lo(list.windowMin), hi(list.windowMax);
-        if (view.clipXY)
-            lo = glm::max(lo, glm::dvec2(view.clipMin)), hi = glm::min(hi, glm::dvec2(view.clipMax));
-        run.view.clipXY = glm::vec4(float(lo.x), float(lo.y), float(hi.x), float(hi.y));
+        // What the scissor keeps, where a marker's position must lie.
+        const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
+        run.view.clipXY = glm::vec4(glm::vec2(kept.min), glm::vec2(kept.max));
         std::memcpy(&litBytes_[v * litStride_], &run, sizeof run);
         litKeys_.push_back(LitKey{int(v), -1, glm::vec4(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)});
     }
