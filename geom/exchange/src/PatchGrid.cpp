@@ -2,6 +2,8 @@
 
 #include "geom/BezierExtraction.h"
 #include "geom/Curve.h"
+#include "geom/GeometryError.h"
+#include "geom/KnotInsertion.h"
 #include "geom/KnotRemoval.h"
 
 #include <glm/common.hpp>
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace geom::exchange {
 
@@ -68,24 +71,55 @@ Surface fromLines(const Surface& shape, const std::vector<Curve>& lines, bool al
                    std::move(weights));
 }
 
+/// How far the curve `changed` can be from `original` (same knots): by the poles' distances and
+/// the weights' relative differences. Each point of either is a convex combination of its poles
+/// with coefficients N_i w_i / sum N_k w_k; weights off by a factor within 1 +- d move those
+/// coefficients by at most 2 d / (1 - d) of themselves, and so the point by that much of the
+/// poles' spread. Unlike the homogeneous bound (The NURBS Book eq. 5.30), nothing here divides by
+/// the smallest weight, which with weights over 1e-2..1e2 asks for less than rounding.
+double euclideanDeviation(const Curve& original, const Curve& changed) {
+    double poles = 0.0, weights = 0.0;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (std::size_t k = 0; k < original.points.size(); ++k) {
+        poles = std::max(poles, glm::length(changed.points[k] - original.points[k]));
+        weights = std::max(weights, std::abs(changed.weight(k) / original.weight(k) - 1.0));
+        lo = glm::min(lo, original.points[k]), hi = glm::max(hi, original.points[k]);
+    }
+    if (!(weights < 0.5)) return std::numeric_limits<double>::infinity();
+    return poles + 2.0 * weights / (1.0 - weights) * glm::length(hi - lo);
+}
+
+/// The line with the interior knot `value` removed `times` times where that moves it by at most
+/// `tolerance`, measured by putting the knot back (euclideanDeviation); nullopt otherwise.
+std::optional<Curve> removedWithin(const Curve& line, double value, int times, double tolerance) {
+    ExactKnotRemoval r;
+    try {
+        r = removeKnot(line, value, times, std::numeric_limits<double>::infinity());
+    } catch (const GeometryError&) {
+        return std::nullopt;  // a forced removal far from exact: a weight at or below zero
+    }
+    if (r.removed != times) return std::nullopt;
+    const Curve back = insertKnot(r.curve, value, times);
+    if (back.knots != line.knots || !(euclideanDeviation(line, back) <= tolerance)) return std::nullopt;
+    return std::move(r.curve);
+}
+
 /// Removes the interior knot `value` from every line along u or v as often as all of them allow,
 /// but keeps it once: each patch edge was a knot.
 Surface removeKnotEverywhere(const Surface& s, double value, bool alongV, double tolerance) {
     const std::size_t other = alongV ? s.countU : s.countV;
-    std::vector<Curve> lines;
-    int times = (alongV ? s.degreeV : s.degreeU) - 1;
-    for (std::size_t l = 0; l < other && times > 0; ++l) {
-        ExactKnotRemoval r = removeKnot(lineCurve(s, l, alongV), value, times, tolerance);
-        times = std::min(times, r.removed);
-        lines.push_back(std::move(r.curve));
+    std::vector<Curve> original;
+    for (std::size_t l = 0; l < other; ++l) original.push_back(lineCurve(s, l, alongV));
+    for (int times = (alongV ? s.degreeV : s.degreeU) - 1; times > 0; --times) {
+        std::vector<Curve> lines;
+        for (const Curve& line : original) {
+            std::optional<Curve> removed = removedWithin(line, value, times, tolerance);
+            if (!removed) break;
+            lines.push_back(std::move(*removed));
+        }
+        if (lines.size() == other) return fromLines(s, lines, alongV);
     }
-    if (times == 0) return s;
-    for (std::size_t l = 0; l < other; ++l) {
-        const std::size_t before = lines[l].points.size(),
-                          after = (alongV ? s.countV : s.countU) - std::size_t(times);
-        if (before != after) lines[l] = removeKnot(lineCurve(s, l, alongV), value, times, tolerance).curve;
-    }
-    return fromLines(s, lines, alongV);
+    return s;
 }
 
 bool near(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
@@ -173,6 +207,94 @@ bool clamped(const std::vector<double>& knots, int degree) {
     return knots[0] == knots[p] && knots[m] == knots[m - p];
 }
 
+/// The poles (homogeneous) of the spline clamped on `knots` unclamped at both ends, and in
+/// `unclamped` its knots: the periodic extension's.
+std::vector<glm::dvec4> unclampedPoles(int degree, const std::vector<double>& knots,
+                                       std::vector<glm::dvec4> poles, std::vector<double>& unclamped) {
+    unclamped = knots;
+    unclampStart(degree, unclamped, poles);
+    mirror(unclamped, poles);
+    unclampStart(degree, unclamped, poles);
+    mirror(unclamped, poles);
+    return poles;
+}
+
+/// The last `degree` of the poles made the same as the first `degree`: each pair from the copy
+/// the fewer unclamping steps made (the start's recurrence ends at pole 0, the end's at the last).
+void wrap(std::vector<glm::dvec4>& poles, std::size_t period) {
+    const std::size_t degree = poles.size() - period;
+    for (std::size_t k = 0; k < degree; ++k) {
+        if (2 * k + 1 < degree)
+            poles[k] = poles[k + period];
+        else
+            poles[k + period] = poles[k];
+    }
+}
+
+/// How many times `value` is a knot.
+int multiplicity(const std::vector<double>& knots, double value) {
+    return int(std::count(knots.begin(), knots.end(), value));
+}
+
+/// The spline on `unclamped` clamped again at the ends of its domain (knot insertion: as stable
+/// as evaluation), its poles on the clamped knot vector.
+std::vector<glm::dvec4> clampedPoles(int degree, const std::vector<double>& unclamped,
+                                     const std::vector<glm::dvec4>& poles) {
+    const std::size_t count = poles.size();
+    std::vector<glm::dvec3> xyz(count), w(count);
+    for (std::size_t k = 0; k < count; ++k)
+        xyz[k] = glm::dvec3(poles[k]), w[k] = glm::dvec3(poles[k].w, 0, 0);
+    std::vector<glm::dvec4> out(count);
+    for (const bool weights : {false, true}) {
+        Curve c(degree, unclamped, weights ? w : xyz);
+        const double start = c.domainStart(), end = c.domainEnd();
+        c = insertKnot(c, start, std::max(0, degree - multiplicity(c.knots, start)));
+        c = insertKnot(c, end, std::max(0, degree - multiplicity(c.knots, end)));
+        // The clamped spline's poles start one before the first knot at the domain's start.
+        const auto first = std::size_t(std::find(c.knots.begin(), c.knots.end(), start) - c.knots.begin());
+        for (std::size_t k = 0; k < count; ++k) {
+            const glm::dvec3& q = c.points[k + first - 1];
+            if (weights)
+                out[k].w = q.x;
+            else
+                out[k] = glm::dvec4(q, out[k].w);
+        }
+    }
+    return out;
+}
+
+/// The clamped line as a periodic spline where it closes within `tolerance`: unclamped, wrapped,
+/// and measured by clamping it again (euclideanDeviation). The unclamping recurrences lose digits
+/// at degree 6 and 7 (the two copies of a wrapped pole can differ by 1e-9 of the size), clamping
+/// again (knot insertion) none: the measure is the curve's, not the copies'.
+std::optional<Curve> periodicLine(const Curve& line, std::size_t period, double tolerance) {
+    const std::size_t count = line.points.size();
+    std::vector<glm::dvec4> clampedNet(count);
+    for (std::size_t k = 0; k < count; ++k)
+        clampedNet[k] = glm::dvec4(line.points[k] * line.weight(k), line.weight(k));
+    std::vector<double> unclamped;
+    std::vector<glm::dvec4> poles = unclampedPoles(line.degree, line.knots, clampedNet, unclamped);
+    wrap(poles, period);
+    auto curveOf = [&](const std::vector<glm::dvec4>& net,
+                       const std::vector<double>& knots) -> std::optional<Curve> {
+        std::vector<glm::dvec3> points(count);
+        std::vector<double> weights(count);
+        for (std::size_t k = 0; k < count; ++k) {
+            weights[k] = net[k].w;
+            if (!(weights[k] > 0.0) || !std::isfinite(weights[k])) return std::nullopt;
+            points[k] = glm::dvec3(net[k]) / weights[k];
+            if (!std::isfinite(points[k].x + points[k].y + points[k].z)) return std::nullopt;
+        }
+        if (!line.rational()) weights.clear();
+        return Curve(line.degree, knots, std::move(points), std::move(weights));
+    };
+    std::optional<Curve> periodic = curveOf(poles, unclamped);
+    if (!periodic) return std::nullopt;
+    std::optional<Curve> again = curveOf(clampedPoles(line.degree, unclamped, poles), line.knots);
+    if (!again || !(euclideanDeviation(line, *again) <= tolerance)) return std::nullopt;
+    return periodic;  // its wrapped poles the same bits (wrap), as periodicByConstruction asks
+}
+
 }  // namespace
 
 std::optional<Surface> makePeriodic(const Surface& surface, bool alongV, double tolerance) {
@@ -184,29 +306,10 @@ std::optional<Surface> makePeriodic(const Surface& surface, bool alongV, double 
     const std::size_t period = count - std::size_t(degree);
     if (!clamped(knots, degree) || period < std::size_t(degree)) return std::nullopt;
     std::vector<Curve> lines;
-    std::vector<double> unclamped;
     for (std::size_t l = 0; l < other; ++l) {
-        Curve c = lineCurve(surface, l, alongV);
-        std::vector<glm::dvec4> poles;
-        for (std::size_t k = 0; k < count; ++k) poles.emplace_back(c.points[k] * c.weight(k), c.weight(k));
-        unclamped = knots;
-        unclampStart(degree, unclamped, poles);
-        mirror(unclamped, poles);
-        unclampStart(degree, unclamped, poles);
-        mirror(unclamped, poles);
-        for (std::size_t k = 0; k < count; ++k) {
-            c.points[k] = glm::dvec3(poles[k]) / poles[k].w;
-            if (c.rational()) c.weights[k] = poles[k].w;
-        }
-        for (std::size_t k = period; k < count; ++k) {
-            if (!near(c.points[k], c.points[k - period], tolerance) ||
-                (c.rational() && std::abs(c.weights[k] - c.weights[k - period]) > tolerance * c.weights[k]))
-                return std::nullopt;
-            c.points[k] = c.points[k - period];
-            if (c.rational()) c.weights[k] = c.weights[k - period];
-        }
-        c.knots = unclamped;
-        lines.push_back(std::move(c));
+        std::optional<Curve> periodic = periodicLine(lineCurve(surface, l, alongV), period, tolerance);
+        if (!periodic) return std::nullopt;
+        lines.push_back(std::move(*periodic));
     }
     return fromLines(surface, lines, alongV);
 }
@@ -242,10 +345,26 @@ struct UnitFrame {
 
 }  // namespace
 
+/// What rounding can leave in the poles of Bézier patches cut from a rational surface: knot
+/// insertion works on w P, so a pole whose weight is r times below its neighbours' takes their
+/// rounding (|P| w eps) magnified r times, |P| measured from the origin the patches were cut at.
+/// Past degree 4 with weights over 1e-2..1e2 that is more than 1e-11 of the size.
+double roundingFloor(const std::vector<Surface>& pieces) {
+    double reach = 0.0, wmin = std::numeric_limits<double>::infinity(), wmax = 0.0;
+    for (const Surface& s : pieces) {
+        for (const glm::dvec3& p : s.points) reach = std::max(reach, glm::length(p));
+        for (std::size_t k = 0; k < s.points.size(); ++k) {
+            const double w = s.weight(k / s.countV, k % s.countV);
+            wmin = std::min(wmin, w), wmax = std::max(wmax, w);
+        }
+    }
+    return 64.0 * std::numeric_limits<double>::epsilon() * reach * (wmax / wmin);
+}
+
 std::optional<Surface> joinPatches(const std::vector<Surface>& pieces, double tolerance) {
     if (pieces.empty()) return std::nullopt;
     const UnitFrame frame(pieces);
-    tolerance /= frame.size;
+    tolerance = std::max(tolerance, roundingFloor(pieces)) / frame.size;
     std::vector<BezierSurfacePiece> cells;
     for (const Surface& s : pieces) {
         const Surface& first = pieces.front();
