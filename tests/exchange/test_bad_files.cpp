@@ -153,6 +153,68 @@ TEST_CASE("bad files: a STEP real beyond 1e100 is refused at once, naming its li
     }
 }
 
+TEST_CASE("bad files: an IGES parameter that is no number is refused, naming its line", "[exchange][bad]") {
+    // OpenCASCADE's IGES reader took "nan" for 0 and "1.0E" for 1 without a word.
+    const auto dir = exchange_test::scratch("bad_iges_parameters");
+    writeCadFile(wingModel(), dir / "wing.igs");
+    const std::string whole = contents(dir / "wing.igs");
+    std::vector<std::string> lines;
+    for (std::size_t at = 0, end; at < whole.size(); at = end + 1) {
+        end = whole.find('\n', at);
+        if (end == std::string::npos) end = whole.size();
+        lines.push_back(whole.substr(at, end - at));
+    }
+    auto join = [](const std::vector<std::string>& ls) {
+        std::string text;
+        for (const std::string& l : ls) text += l + "\n";
+        return text;
+    };
+    // Reals of the parameter section in lines with room to spare, as (line, start, length).
+    struct Place {
+        std::size_t line, start, length;
+    };
+    std::vector<Place> reals;
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        const std::string& line = lines[l];
+        if (line.size() != 80 || line[72] != 'P' || line.find_last_not_of(' ', 63) > 40) continue;
+        for (std::size_t at = 0; at < 64;) {
+            const std::size_t end = std::min(line.find_first_of(",;", at), std::size_t(64));
+            if (line.find('E', at) < end && line.find('.', at) < end) reals.push_back({l, at, end - at});
+            at = end + 1;
+        }
+    }
+    REQUIRE(reals.size() > 10);
+    // The same reals with the exponent letter D, as some writers have it: read as before.
+    std::vector<std::string> withD = lines;
+    for (const Place& r : reals)
+        std::replace(withD[r.line].begin() + std::ptrdiff_t(r.start),
+                     withD[r.line].begin() + std::ptrdiff_t(r.start + r.length), 'E', 'D');
+    write(dir / "exponent_d.igs", join(withD));
+    const CadImport plain = readCadFile(dir / "wing.igs"), d = readCadFile(dir / "exponent_d.igs");
+    REQUIRE(d.model.surfaces.size() == 1);
+    CHECK(d.model.surfaces[0].surface.points == plain.model.surfaces[0].surface.points);
+    std::mt19937 rng(23);
+    const std::vector<std::pair<std::string, std::string>> spoilers{
+        {"nan", "is not a number"},      {"-inf", "is not a number"},
+        {"NaN", "is not a number"},      {"1.0E", "is not a number"},
+        {"+-1", "is not a number"},      {".", "is not a number"},
+        {"E5", "is not a number"},       {"'", "is not a number"},
+        {"#0", "is not a number"},       {"1.#INF", "is not a number"},
+        {"1.5E+3x", "is not a number"},  {"1E999", "is out of range"},
+        {"2.5E+101", "is out of range"}, {"99999999999", "is an integer beyond 32 bits"}};
+    for (const auto& [spoiler, cause] : spoilers) {
+        const Place r = reals[rng() % reals.size()];
+        std::vector<std::string> spoilt = lines;
+        std::string data = spoilt[r.line].substr(0, 64);
+        data = data.substr(0, r.start) + spoiler + data.substr(r.start + r.length);
+        data.resize(64, ' ');
+        spoilt[r.line] = data + spoilt[r.line].substr(64);
+        write(dir / "spoilt.igs", join(spoilt));
+        requireRefused(dir / "spoilt.igs",
+                       "line " + std::to_string(r.line + 1) + ": the parameter '" + spoiler + "' " + cause);
+    }
+}
+
 TEST_CASE("bad files: reading prints nothing the caller printed before", "[exchange][bad]") {
     // The reading child inherits the stdio buffers, and OpenCASCADE's first use in a process
     // flushes them: unflushed, the caller's text came out twice. The files are written in a child
@@ -205,7 +267,13 @@ TEST_CASE("bad files: a cut IGES file on which OpenCASCADE's reader crashes is r
     const auto dir = exchange_test::scratch("bad_crash");
     writeCadFile(exchange_test::loopModel(), dir / "model.igs");
     const std::string whole = contents(dir / "model.igs");
-    write(dir / "cut.igs", whole.substr(0, whole.size() * 990 / 1000));
+    // Cut after a whole record, its parameter list ended there: the parameters read as numbers
+    // (no earlier check refuses them), the entity misses the rest.
+    std::string cut = whole.substr(0, whole.rfind('\n', whole.size() * 990 / 1000) + 1);
+    const std::size_t last = cut.rfind(',', cut.size() - 17);
+    REQUIRE(last != std::string::npos);
+    cut[last] = ';';
+    write(dir / "cut.igs", cut);
     requireRefused(dir / "cut.igs", "the file is corrupt");
 }
 

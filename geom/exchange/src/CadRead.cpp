@@ -1,6 +1,7 @@
 // readCadFile: an IGES or STEP file's faces back to named B-spline surfaces and curve sets.
 #include "CadDocument.h"
 #include "FailureText.h"
+#include "IgesParameters.h"
 #include "ImportCodec.h"
 #include "Isolated.h"
 #include "MessageCollector.h"
@@ -50,11 +51,10 @@ void checkFile(const std::filesystem::path& path, const CadReadOptions& options)
     if (size > options.maxFileBytes)
         throw ExchangeError(file, std::to_string(size) + " bytes: larger than the limit of " +
                                       std::to_string(options.maxFileBytes));
-    if (cadFormatOf(path) == CadFormat::Step) {
-        std::ifstream in(path, std::ios::binary);
-        if (const std::optional<std::string> bad = firstOutOfRangeStepReal(in))
-            throw ExchangeError(file, *bad);
-    }
+    std::ifstream in(path, std::ios::binary);
+    const std::optional<std::string> bad =
+        cadFormatOf(path) == CadFormat::Step ? firstOutOfRangeStepReal(in) : firstBadIgesParameter(in);
+    if (bad) throw ExchangeError(file, *bad);
 }
 
 /// Refuses a file whose loading failed (truncated, corrupt): the first failure OpenCASCADE noted.
