@@ -27,6 +27,8 @@
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
@@ -74,6 +76,26 @@ void checkLoad(const opencascade::handle<XSControl_WorkSession>& session, const 
     }
 }
 
+/// What OpenCASCADE's shape healing left out while transferring (a wire it took for one of null
+/// area, a small edge, wire or face), a warning each by entity: a mapped curve's hole can go so,
+/// and the caller must hear of it.
+void addHealingWarnings(const opencascade::handle<XSControl_WorkSession>& session, CadImport& result) {
+    const opencascade::handle<Transfer_TransientProcess> process =
+        session->TransferReader()->TransientProcess();
+    if (process.IsNull()) return;
+    const Interface_CheckIterator checks = process->CheckList(false);
+    for (checks.Start(); checks.More(); checks.Next()) {
+        const opencascade::handle<Interface_Check>& check = checks.Value();
+        for (int i = 1; i <= check->NbWarnings(); ++i) {
+            const std::string text = check->CWarning(i);
+            if (text.find("removed") == std::string::npos && text.find("skipped") == std::string::npos)
+                continue;
+            result.warnings.push_back("entity " + std::to_string(checks.Number()) +
+                                      ": OpenCASCADE's healing left something out: " + text);
+        }
+    }
+}
+
 void checkUnit(const std::string& unit, const std::string& file) {
     static const char* known = " (m, mm, cm, km, um, in, ft, mi, mil, uin)";
     if (unit.empty())
@@ -105,6 +127,7 @@ void readStep(const std::string& file, opencascade::handle<TDocStd_Document> doc
     else
         result.fileUnit = lengths.First().ToCString();
     if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+    addHealingWarnings(reader.Reader().WS(), result);
 }
 
 std::string readIges(const std::string& file, opencascade::handle<TDocStd_Document> document,
@@ -125,6 +148,7 @@ std::string readIges(const std::string& file, opencascade::handle<TDocStd_Docume
                             "unit flag " + std::to_string(flag) + " is not an IGES length unit (1 to 11)");
     result.fileUnit = unit;
     if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+    addHealingWarnings(reader.WS(), result);
     return header.SendName().IsNull() ? "" : header.SendName()->ToCString();
 }
 
