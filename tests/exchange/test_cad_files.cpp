@@ -135,15 +135,16 @@ TEST_CASE("files: lengths are written in the model's unit and converted on read"
 
 namespace test_cad_files {
 
-TEST_CASE("files: a hole OpenCASCADE's healing leaves out of a face is reported, never lost silently",
+TEST_CASE("files: a loop OpenCASCADE leaves out of a face is reported, never lost silently",
           "[exchange][files]") {
-    // On wavy rational surfaces OpenCASCADE's IGES reader takes some holes for wires of null area
-    // (ShapeFix_Face::FixSmallAreaWire) and skips them: 38 of these 120.
+    // On wavy rational surfaces OpenCASCADE's shape healing takes some holes for wires of null
+    // area (ShapeFix_Face::FixSmallAreaWire) and skips them, in IGES about one face in three of
+    // these, in STEP rarely; not always with a message of its own.
     const auto dir = exchange_test::scratch("healed_holes");
     std::mt19937 rng(8);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int lost = 0;
-    for (int member = 0; member < 120; ++member) {
+    for (int member = 0; member < 60; ++member) {
         const int p = 1 + int(rng() % 7), q = 1 + int(rng() % 2);
         const std::size_t nu = std::size_t(p) + 1 + rng() % 5, nv = std::size_t(q) + 1 + rng() % 5;
         auto knots = [](int degree, std::size_t count) {
@@ -176,23 +177,25 @@ TEST_CASE("files: a hole OpenCASCADE's healing leaves out of a face is reported,
         };
         const CadModel model{
             "m", "M", {{"s", s, glm::dvec3(0.4), {{"crv", {loop(0.3, 20, 1.0), loop(0.08, 8, -1.0)}}}}}};
-        writeCadFile(model, dir / "holes.igs");
-        const CadImport read = readCadFile(dir / "holes.igs");
-        INFO("member " << member << ": degrees " << p << " x " << q);
-        REQUIRE(read.model.surfaces.size() == 1);
-        auto warned = [&](const std::string& what) {
-            return std::any_of(read.warnings.begin(), read.warnings.end(),
-                               [&](const std::string& w) { return w.find(what) != std::string::npos; });
-        };
-        const auto& curves = read.model.surfaces[0].curves;
-        const std::size_t loops = curves.empty() ? 0 : curves[0].loops.size();
-        CHECK(curves.size() <= 1);
-        CHECK(loops <= 2);
-        if (loops < 2) {
-            ++lost;
-            // The hole skipped, and the outer loop with it where healing made its edges curves.
-            CHECK(warned("healing left something out: Null area wire"));
-            if (curves.empty()) CHECK(warned("s/crv: left out"));
+        for (const char* name : {"holes.igs", "holes.step"}) {
+            writeCadFile(model, dir / name);
+            const CadImport read = readCadFile(dir / name);
+            INFO(name << ", member " << member << ": degrees " << p << " x " << q);
+            REQUIRE(read.model.surfaces.size() == 1);
+            auto warned = [&](const std::string& what) {
+                return std::any_of(read.warnings.begin(), read.warnings.end(),
+                                   [&](const std::string& w) { return w.find(what) != std::string::npos; });
+            };
+            const auto& curves = read.model.surfaces[0].curves;
+            const std::size_t loops = curves.empty() ? 0 : curves[0].loops.size();
+            CHECK(curves.size() <= 1);
+            CHECK(loops <= 2);
+            if (loops < 2) {
+                ++lost;
+                // A loop skipped, and the whole set where healing made the other's edges curves.
+                CHECK((warned("came back from OpenCASCADE with") || curves.empty()));
+                if (curves.empty()) CHECK(warned("s/crv: left out"));
+            }
         }
     }
     CHECK(lost > 0);  // the case the test is for happened

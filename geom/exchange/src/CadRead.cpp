@@ -17,16 +17,20 @@
 #include <IGESCAFControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
+#include <IGESGeom_TrimmedSurface.hxx>
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <StepShape_Face.hxx>
 #include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TransferBRep.hxx>
 #include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
@@ -96,6 +100,41 @@ void addHealingWarnings(const opencascade::handle<XSControl_WorkSession>& sessio
     }
 }
 
+/// The loops the file gives a trimmed face (an IGES 144's outer and inner contours, a STEP face's
+/// bounds), or 0 for any other entity (an IGES face on its natural bounds counts 0 too).
+int boundsInFile(const opencascade::handle<Standard_Transient>& entity) {
+    if (const auto trimmed = opencascade::handle<IGESGeom_TrimmedSurface>::DownCast(entity))
+        return (trimmed->HasOuterContour() ? 1 : 0) + trimmed->NbInnerContours();
+    if (const auto face = opencascade::handle<StepShape_Face>::DownCast(entity)) return face->NbBounds();
+    return 0;
+}
+
+/// A warning for every trimmed face of the file that came back with fewer loops than the file
+/// gives it: OpenCASCADE's healing skips some holes (and with them at times the outer loop), not
+/// always with a message (addHealingWarnings).
+void addLostBoundWarnings(const opencascade::handle<XSControl_WorkSession>& session, CadImport& result) {
+    const opencascade::handle<Interface_InterfaceModel> model = session->Model();
+    const opencascade::handle<XSControl_TransferReader> transfer = session->TransferReader();
+    if (model.IsNull() || transfer.IsNull()) return;
+    const opencascade::handle<Transfer_TransientProcess> process = transfer->TransientProcess();
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const opencascade::handle<Standard_Transient> entity = model->Value(i);
+        const int expected = boundsInFile(entity);
+        if (expected <= 0) continue;
+        TopoDS_Shape shape = transfer->ShapeResult(entity);
+        if (shape.IsNull() && !process.IsNull()) shape = TransferBRep::ShapeResult(process->Find(entity));
+        if (shape.IsNull()) continue;  // a face not transferred at all is warned of where it is read
+        int wires = 0;
+        for (TopExp_Explorer w(shape, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+        if (wires < expected)
+            result.warnings.push_back("entity " + std::to_string(i) + ": a face with " +
+                                      std::to_string(expected) +
+                                      " loops in the file came back from OpenCASCADE with " +
+                                      std::to_string(wires) + ": " + std::to_string(expected - wires) +
+                                      (expected - wires == 1 ? " loop" : " loops") + " left out");
+    }
+}
+
 void checkUnit(const std::string& unit, const std::string& file) {
     static const char* known = " (m, mm, cm, km, um, in, ft, mi, mil, uin)";
     if (unit.empty())
@@ -128,6 +167,7 @@ void readStep(const std::string& file, opencascade::handle<TDocStd_Document> doc
         result.fileUnit = lengths.First().ToCString();
     if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
     addHealingWarnings(reader.Reader().WS(), result);
+    addLostBoundWarnings(reader.Reader().WS(), result);
 }
 
 std::string readIges(const std::string& file, opencascade::handle<TDocStd_Document> document,
@@ -149,6 +189,7 @@ std::string readIges(const std::string& file, opencascade::handle<TDocStd_Docume
     result.fileUnit = unit;
     if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
     addHealingWarnings(reader.WS(), result);
+    addLostBoundWarnings(reader.WS(), result);
     return header.SendName().IsNull() ? "" : header.SendName()->ToCString();
 }
 
