@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     pinq_sys_st(&st);
     CHECK(st == PSYS_ST_PHCL);
     pset_err_hand(recording_handler, NULL);
-    EXPECT_ERROR(popen_struct(1), 2, Pfn_open_struct); /* PHIGS closed: on stderr */
+    EXPECT_ERROR(popen_struct(1), 6, Pfn_open_struct); /* PHIGS closed: its state error, on stderr */
     pinq_struct_status(1, &err, &status);
     CHECK(err == 2);
 

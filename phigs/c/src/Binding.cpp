@@ -219,18 +219,17 @@ void Binding::open(const char* errorFile) {
 void Binding::close() {
     call(Pfn_close_phigs, [](Phigs& p) { p.close(); });
     if (phigs_ && phigs_->isOpen()) return;
-    phigs_.reset();
-    specificTypes_.clear();
-    if (stream_) std::fclose(stream_);
-    stream_ = nullptr;
+    emergencyClose();
 }
 
 void Binding::emergencyClose() {
     // EMERGENCY CLOSE PHIGS: whatever is open is closed; archives are always complete on disk.
+    // Errors while PHIGS is closed go to the handler with no file name (so to stderr).
     phigs_.reset();
     specificTypes_.clear();
     if (stream_) std::fclose(stream_);
     stream_ = nullptr;
+    errorFile_.clear();
 }
 
 Pint Binding::specificType(Pint id) {

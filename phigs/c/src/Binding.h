@@ -26,6 +26,14 @@ inline constexpr int kBadArgument = -204;  ///< a NULL pointer or a negative cou
 /// message is printed to stderr).
 void registerOutputs(OutputRegistry& registry);
 
+/// The state error function `function` reports while PHIGS is closed: the one for the operating
+/// state it requires (2 for (PHOP, *, *, *), 3 WSOP, 5 STOP, 6 STCL, 7 AROP), as ISO 9592 lists it.
+int closedStateError(int function);
+
+/// An open system with nothing in it (no workstation, structure or archive open), its error log
+/// empty: what an inquiry asked while PHIGS is closed runs on to find the state it requires.
+Phigs& closedStateProbe();
+
 /// The ISO name of a function identifier ("OPEN STRUCTURE"), or "function <n>".
 std::string functionName(int function);
 /// The ISO name of an input function's identifier (Input.cpp), or nullptr.
@@ -67,13 +75,14 @@ public:
     /// CLOSE WORKSTATION: its specific type names nothing from now on.
     void forgetSpecificType(Pint id) { specificTypes_.erase(id); }
 
-    /// Runs `body` on the open system as function `function`: error 2 while PHIGS is closed; every
-    /// error and warning the core raised or logged goes to the handler, in order.
+    /// Runs `body` on the open system as function `function`: while PHIGS is closed the state
+    /// error the function lists (closedStateError); every error and warning the core raised or
+    /// logged goes to the handler, in order.
     template <class Body>
     void call(int function, Body&& body) {
         Phigs* p = system();
         if (!p) {
-            report(errors::NotPhigsOpen, function);
+            report(closedStateError(function), function);
             return;
         }
         const std::size_t before = p->errorLog().size();

@@ -9,14 +9,31 @@
 
 namespace phigs::c {
 
-/// Runs `body` on the open system with *err set to 0, or to the error number it throws (2 while
-/// PHIGS is closed). Without err_ind there is nowhere to answer, so nothing happens.
+/// The error an inquiry answers while PHIGS is closed: the state error for the operating state
+/// it requires (3 WSOP, 5 STOP, 7 AROP, as ISO 9592 lists them), which its own state check
+/// raises on a system with nothing open (an inquiry changes nothing), else 2 (PHOP).
+template <class Body>
+int closedInquiryError(Body& body) {
+    try {
+        body(closedStateProbe());
+    } catch (const Error& e) {
+        const int n = e.number();
+        if (n == errors::NoWorkstationOpen || n == errors::NotStructureOpen || n == errors::NoArchiveOpen)
+            return n;
+    } catch (...) {
+    }
+    return errors::NotPhigsOpen;
+}
+
+/// Runs `body` on the open system with *err set to 0, or to the error number it throws (while
+/// PHIGS is closed, closedInquiryError). Without err_ind there is nowhere to answer, so nothing
+/// happens.
 template <class Body>
 void inquire(Pint* err, Body&& body) {
     if (!err) return;
     Phigs* p = Binding::instance().system();
     if (!p) {
-        *err = errors::NotPhigsOpen;
+        *err = closedInquiryError(body);
         return;
     }
     *err = 0;
