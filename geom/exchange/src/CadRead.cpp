@@ -240,9 +240,10 @@ void addCurves(const NamedShape& part, CadSurface& surface, CadImport& result) {
             result.warnings.push_back(part.name + ": left out: " + problem);
             return;
         }
+        unwrapLoops(*loops, surface.surface);
+        outerLoopsFirst(*loops);
         for (auto& loop : *loops) curves.loops.push_back(std::move(loop));
     }
-    unwrapLoops(curves.loops, surface.surface);
     surface.curves.push_back(std::move(curves));
 }
 

@@ -126,14 +126,27 @@ TopoDS_Compound loopFaces(const opencascade::handle<Geom_BSplineSurface>& suppor
         checkLoop(loops[i], i);
         area[i] = signedArea(loops[i].uv);
     }
-    // Each clockwise loop is a hole of the smallest counter-clockwise loop around it.
+    // Each clockwise loop is a hole of the smallest counter-clockwise loop around it, a period
+    // along a periodic direction counting as none: a loop across the seam has its middle in the
+    // domain, and a hole in it may lie a period away (it is moved there).
+    const glm::dvec2 period(support->IsUPeriodic() ? support->UPeriod() : 0.0,
+                            support->IsVPeriodic() ? support->VPeriod() : 0.0);
     std::vector<int> holeOf(loops.size(), -1);
+    std::vector<glm::dvec2> shiftOf(loops.size(), glm::dvec2(0.0));
     for (std::size_t h = 0; h < loops.size(); ++h) {
         if (area[h] >= 0) continue;
-        for (std::size_t o = 0; o < loops.size(); ++o)
-            if (area[o] > 0 && inside(loops[h].uv.front(), loops[o].uv) &&
-                (holeOf[h] < 0 || area[o] < area[std::size_t(holeOf[h])]))
-                holeOf[h] = int(o);
+        for (std::size_t o = 0; o < loops.size(); ++o) {
+            if (!(area[o] > 0) || (holeOf[h] >= 0 && area[o] >= area[std::size_t(holeOf[h])])) continue;
+            for (const int i : {0, -1, 1})
+                for (const int j : {0, -1, 1}) {
+                    const glm::dvec2 shift(i * period.x, j * period.y);
+                    if ((i != 0 && period.x == 0) || (j != 0 && period.y == 0) || holeOf[h] == int(o) ||
+                        !inside(loops[h].uv.front() + shift, loops[o].uv))
+                        continue;
+                    holeOf[h] = int(o);
+                    shiftOf[h] = shift;
+                }
+        }
     }
     BRep_Builder b;
     TopoDS_Compound faces;
@@ -144,8 +157,12 @@ TopoDS_Compound loopFaces(const opencascade::handle<Geom_BSplineSurface>& suppor
         b.MakeFace(face, support, Precision::Confusion());
         const TopoDS_Edge outer = loopEdge(loops[o], face, support);
         b.Add(face, wireOf(area[o] < 0 ? TopoDS::Edge(outer.Reversed()) : outer));
-        for (std::size_t h = 0; h < loops.size(); ++h)
-            if (holeOf[h] == int(o)) b.Add(face, wireOf(loopEdge(loops[h], face, support)));
+        for (std::size_t h = 0; h < loops.size(); ++h) {
+            if (holeOf[h] != int(o)) continue;
+            SurfaceLoop hole = loops[h];
+            for (glm::dvec2& uv : hole.uv) uv += shiftOf[h];
+            b.Add(face, wireOf(loopEdge(hole, face, support)));
+        }
         b.Add(faces, face);
     }
     return faces;

@@ -3,6 +3,7 @@
 
 #include "geom/GeometryError.h"
 #include "geom/Reparameterize.h"
+#include "geom/SurfaceProjector.h"
 #include "geom/exchange/OcctConversion.h"
 
 #include <BRepAdaptor_Surface.hxx>
@@ -12,6 +13,7 @@
 #include <Geom2d_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
@@ -25,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace geom::exchange {
 
@@ -72,13 +75,20 @@ opencascade::handle<Geom_BSplineSurface> bsplineOn(opencascade::handle<Geom_Surf
     return b;
 }
 
-/// Gauss-Newton from `guess` to the (u, v) where the surface passes through x.
+/// Gauss-Newton from `guess` to the (u, v) where the surface passes through x, each step halved
+/// until it brings the point nearer (on a rational surface with weights far apart a full step
+/// can run off to 1e100) and kept inside the surface's bounds where it is not periodic: the
+/// answer is never farther from x than the guess.
 gp_Pnt2d refine(const BRepAdaptor_Surface& surface, const gp_Pnt& x, gp_Pnt2d guess) {
     double u = guess.X(), v = guess.Y();
     gp_Pnt p;
     gp_Vec su, sv;
     surface.D0(u, v, p);
-    if (p.Distance(x) <= 1e-12 * (1.0 + gp_Vec(x.XYZ()).Magnitude())) return guess;  // exact already
+    double best = p.Distance(x);
+    if (best <= 1e-12 * (1.0 + gp_Vec(x.XYZ()).Magnitude())) return guess;  // exact already
+    auto inside = [&](double t, double first, double last, bool periodic) {
+        return periodic ? t : std::clamp(t, first, last);
+    };
     for (int k = 0; k < 30; ++k) {
         surface.D1(u, v, p, su, sv);
         const gp_Vec r(p, x);
@@ -86,15 +96,59 @@ gp_Pnt2d refine(const BRepAdaptor_Surface& surface, const gp_Pnt& x, gp_Pnt2d gu
         const double det = a * c - b * b;
         if (!(det > 0)) break;
         const double du = (c * ru - b * rv) / det, dv = (a * rv - b * ru) / det;
-        u += du;
-        v += dv;
-        if (std::abs(du) + std::abs(dv) <= 1e-15 * (1.0 + std::abs(u) + std::abs(v))) break;
+        bool nearer = false;
+        for (double t = 1.0; t > 1e-6 && !nearer; t *= 0.5) {
+            const double un = inside(u + t * du, surface.FirstUParameter(), surface.LastUParameter(),
+                                     surface.IsUPeriodic());
+            const double vn = inside(v + t * dv, surface.FirstVParameter(), surface.LastVParameter(),
+                                     surface.IsVPeriodic());
+            gp_Pnt q;
+            surface.D0(un, vn, q);
+            if (const double d = q.Distance(x); d < best) u = un, v = vn, best = d, nearer = true;
+        }
+        if (!nearer || std::abs(du) + std::abs(dv) <= 1e-15 * (1.0 + std::abs(u) + std::abs(v))) break;
     }
     return gp_Pnt2d(u, v);
 }
 
+/// The (u, v) of points on a face's surface: Gauss-Newton from the reader's pcurve (refine),
+/// and where that ends off the surface (OpenCASCADE's refitted pcurves can be far off on a
+/// rational surface with weights far apart), the global closest point on the B-spline surface.
+class FaceParameters {
+public:
+    explicit FaceParameters(const TopoDS_Face& face) : face_(face), surface_(face, false) {}
+
+    gp_Pnt2d at(const gp_Pnt& x, const gp_Pnt2d& guess) {
+        const gp_Pnt2d local = refine(surface_, x, guess);
+        const double off = surface_.Value(local.X(), local.Y()).Distance(x);
+        if (off <= 1e-9 * (1.0 + gp_Vec(x.XYZ()).Magnitude()) || !projector()) return local;
+        const SurfacePoint global = projector_->closestPoint(glm::dvec3(x.X(), x.Y(), x.Z()));
+        return global.distance < off ? gp_Pnt2d(global.uv.x, global.uv.y) : local;
+    }
+
+private:
+    /// The face's B-spline surface's projector, made when first needed; nullptr for another kind.
+    const SurfaceProjector* projector() {
+        if (!tried_) {
+            tried_ = true;
+            const auto b = opencascade::handle<Geom_BSplineSurface>::DownCast(BRep_Tool::Surface(face_));
+            if (!b.IsNull()) {
+                spline_ = fromOcct(*b);
+                projector_.emplace(*spline_);
+            }
+        }
+        return projector_ ? &*projector_ : nullptr;
+    }
+
+    TopoDS_Face face_;
+    BRepAdaptor_Surface surface_;
+    bool tried_ = false;
+    std::optional<Surface> spline_;
+    std::optional<SurfaceProjector> projector_;
+};
+
 /// Appends an edge's poles (in the wire's direction) and their (u, v) to the loop.
-bool appendEdge(const TopoDS_Edge& edge, const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
+bool appendEdge(const TopoDS_Edge& edge, const TopoDS_Face& face, FaceParameters& parameters,
                 SurfaceLoop& loop, std::string& problem) {
     double f = 0, l = 0;
     opencascade::handle<Geom_Curve> curve = BRep_Tool::Curve(edge, f, l);
@@ -117,7 +171,7 @@ bool appendEdge(const TopoDS_Edge& edge, const TopoDS_Face& face, const BRepAdap
     for (int i = 1; i <= b->NbPoles(); ++i) {
         const gp_Pnt& p = b->Pole(i);
         points.emplace_back(p.X(), p.Y(), p.Z());
-        const gp_Pnt2d w = refine(surface, p, pcurve->Value(flat(i + 1)));  // a pole's parameter: its knot
+        const gp_Pnt2d w = parameters.at(p, pcurve->Value(flat(i + 1)));  // a pole's parameter: its knot
         uv.emplace_back(w.X(), w.Y());
     }
     if (edge.Orientation() == TopAbs_REVERSED) {
@@ -176,7 +230,7 @@ FaceSurface faceSurface(const TopoDS_Face& face) {
 }
 
 std::optional<std::vector<SurfaceLoop>> faceLoops(const TopoDS_Face& face, std::string& problem) {
-    const BRepAdaptor_Surface surface(face, false);
+    FaceParameters parameters(face);
     std::vector<TopoDS_Wire> wires{BRepTools::OuterWire(face)};
     for (TopExp_Explorer e(face, TopAbs_WIRE); e.More(); e.Next())
         if (!e.Current().IsSame(wires.front())) wires.push_back(TopoDS::Wire(e.Current()));
@@ -186,7 +240,7 @@ std::optional<std::vector<SurfaceLoop>> faceLoops(const TopoDS_Face& face, std::
             if (wire.IsNull()) continue;
             SurfaceLoop loop;
             for (BRepTools_WireExplorer ex(wire, face); ex.More(); ex.Next())
-                if (!appendEdge(ex.Current(), face, surface, loop, problem)) return std::nullopt;
+                if (!appendEdge(ex.Current(), face, parameters, loop, problem)) return std::nullopt;
             if (loop.points.size() < 4 || glm::length(loop.points.front() - loop.points.back()) >
                                               1e-9 * (1.0 + glm::length(loop.points.front()))) {
                 problem = "a wire that is not a closed loop";
@@ -213,6 +267,27 @@ void unwrapLoops(std::vector<SurfaceLoop>& loops, const Surface& surface) {
             const double start = axis == 0 ? surface.domainStartU() : surface.domainStartV();
             const double end = axis == 0 ? surface.domainEndU() : surface.domainEndV();
             for (SurfaceLoop& loop : loops) unwrap(loop.uv, axis, start, end - start);
+        }
+}
+
+void outerLoopsFirst(std::vector<SurfaceLoop>& loops) {
+    auto area = [](const SurfaceLoop& loop) {
+        double twice = 0.0;
+        for (std::size_t k = 0; k + 1 < loop.uv.size(); ++k)
+            twice += loop.uv[k].x * loop.uv[k + 1].y - loop.uv[k + 1].x * loop.uv[k].y;
+        return twice;
+    };
+    if (loops.empty()) return;
+    // The outer loop holds the holes: the largest, turned counter-clockwise; every other loop is
+    // a hole, turned clockwise (a confused reader can turn any of them round).
+    const auto outer = std::max_element(loops.begin(), loops.end(), [&](const auto& a, const auto& b) {
+        return std::abs(area(a)) < std::abs(area(b));
+    });
+    std::iter_swap(loops.begin(), outer);
+    for (std::size_t k = 0; k < loops.size(); ++k)
+        if ((area(loops[k]) > 0.0) != (k == 0)) {
+            std::reverse(loops[k].points.begin(), loops[k].points.end());
+            std::reverse(loops[k].uv.begin(), loops[k].uv.end());
         }
 }
 

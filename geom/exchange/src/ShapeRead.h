@@ -36,4 +36,9 @@ std::optional<std::vector<SurfaceLoop>> faceLoops(const TopoDS_Face& face, std::
 /// leaves its loops.
 void unwrapLoops(std::vector<SurfaceLoop>& loops, const Surface& surface);
 
+/// One face's loops (unwrapped) as the files promise them: the outer loop (the largest)
+/// counter-clockwise and first, then the holes clockwise. BRepTools::OuterWire can take a hole
+/// for the outer wire, and healing can turn wires round, where the outer loop crosses a seam.
+void outerLoopsFirst(std::vector<SurfaceLoop>& loops);
+
 }  // namespace geom::exchange
