@@ -24,6 +24,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -250,8 +251,15 @@ std::optional<Options> parse(int argc, char** argv) {
         if (!checkExport(o)) return std::nullopt;
         return o;
     }
+    if (optind < argc) std::cerr << "acsynt: unexpected argument '" << argv[optind] << "'\n";
     if (optind < argc || (o.script.empty() && !o.window) || (!o.script.empty() && o.window)) {
         usage(std::cerr);
+        return std::nullopt;
+    }
+    // A script's screen has the display surface's 4:3 shape, within a pixel (Session's rule).
+    if (!o.window && std::abs(4.0 * o.height - 3.0 * o.width) > 4.0) {
+        std::cerr << "acsynt: --size " << o.width << "x" << o.height
+                  << ": a script's screen is 4:3 like the display surface (1024x768, 800x600, ...)\n";
         return std::nullopt;
     }
     if (!checkPaths(o)) return std::nullopt;

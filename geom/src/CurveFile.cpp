@@ -48,6 +48,8 @@ public:
         return line;
     }
     [[noreturn]] void fail(const std::string& reason) const { throw CurveFileError(source_, line_, reason); }
+    /// The number of the line read last.
+    std::size_t lineNumber() const { return line_; }
 
 private:
     bool readLine(std::string& raw) {
@@ -144,6 +146,7 @@ CurveModel parseCurveFile(std::istream& in, const std::string& source) {
             reader.fail("the parts so far declare " + std::to_string(totalPoints) +
                         " data points; the limit is " + std::to_string(kCurveFileMaxPoints) + " per file");
         CurvePart part;
+        part.line = reader.lineNumber();
         part.name = reader.require("the part name");
         expectHeading(reader, kPointsHeading, part.name);
         for (long i = 0; i < count; ++i) {

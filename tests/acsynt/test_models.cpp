@@ -105,9 +105,18 @@ TEST_CASE("the model list steps, lists, renames, copies and deletes", "[acsynt][
     REQUIRE_FALSE(list.rename("").done);
     REQUIRE_FALSE(list.rename("a_name_that_is_too_long").done);
     REQUIRE(list.current().name == "transport");
+    // Names are unique: another model's is refused (its own is no change).
+    o = list.rename("fighter");
+    REQUIRE_FALSE(o.done);
+    REQUIRE(o.message == "BAD INPUT IN MODELS: A MODEL NAMED fighter IS LOADED (NAMES ARE UNIQUE)");
+    REQUIRE(list.current().name == "transport");
+    REQUIRE(list.rename("transport").done);
+    REQUIRE(list.contains("fighter"));
+    REQUIRE_FALSE(list.contains("airliner"));
     o = list.rename("airliner");
     REQUIRE(o.done);
     REQUIRE(o.message == "CURRENT MODEL NAMED airliner");
+    REQUIRE_FALSE(list.copyCurrent("fighter").done);
 
     // A copy for a reduced version: appended, current, independent of the original.
     o = list.copyCurrent("airliner_r");

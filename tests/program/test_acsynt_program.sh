@@ -89,6 +89,10 @@ expect_in output_file.err "is not a directory"
 run size_junk 2 --script good.session --size 1024x768junk
 expect_in size_junk.err "--size wants WxH"
 run size_sign 2 --script good.session --size +320x240
+run size_shape 2 --script good.session --size 1024x700
+expect_in size_shape.err "a script's screen is 4:3"
+run extra_argument 2 --script good.session extra
+expect_in extra_argument.err "unexpected argument 'extra'"
 run both_modes 2 --script good.session --window
 
 # A script with a NUL byte is refused whole, naming the byte (the message is not cut at it).

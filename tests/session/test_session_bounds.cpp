@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 namespace test_session_bounds {
@@ -79,6 +80,15 @@ TEST_CASE("curve scales that overflow or dwarf the surface fail their line quick
     d.run({"choice LOAD_CURVE", "string acslogo.crv 0.45 abc"});
     CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
     CHECK(d.session.failedLines() == 3);
+    // Points no curve passes through (two the same): the file and the part's line, as for the
+    // file's other faults (it named only the part).
+    const auto twice = session_test::outputDirectory("bounds_scale_files") / "twice.crv";
+    std::filesystem::create_directories(twice.parent_path());
+    std::ofstream(twice) << "CURVE INPUT FILE\n5\nP\nData-Points:\n0 0 0\n0 0 0\n1 0 0\n1 1 0\n0 0 0\n"
+                            "Continuities:\n2\n2\n2\n2\n2\nConstraints:\nNone\n";
+    d.run({"choice LOAD_CURVE", "string " + twice.string()});
+    CHECK(d.session.message().rfind(twice.string() + ":2: curve part 'P': ", 0) == 0);
+    CHECK(d.session.failedLines() == 4);
 
     for (const char* scale : {"1e150", "1e30"}) {
         Driver big(std::string("bounds_scale_") + scale);

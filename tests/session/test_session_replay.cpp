@@ -310,13 +310,21 @@ TEST_CASE("a recorded surface pick that no longer shows there is refused by name
     CHECK(d.session.message().rfind("RECORDED PICK OF right_wing PATCH ", 0) == 0);
     CHECK(d.session.message().find("IS NOT WHAT SHOWS AT PIXEL") != std::string::npos);
     CHECK(d.session.lastPickDetail()->uv == glm::dvec2(0.4, 0.25));
+    // (u, w) outside the surface's domain: this line fails, the session goes on (it ended with
+    // exit 1, evaluate's message and no log).
+    const std::size_t before = d.session.failedLines();
+    d.run({"pick_surface right_wing 1 2 0.5 1"});
+    CHECK(d.session.message() ==
+          "BAD RECORDED PICK 'pick_surface right_wing 1 2 0.5 1': U AND W OF right_wing LIE IN [0, 1] AND "
+          "[0, 1]");
+    CHECK(d.session.failedLines() == before + 1);
     d.run({"choice VIEW", "choice ONE_VIEW", "choice RETURN", "pick_surface right_wing 1 0.5 0.5 4"});
     CHECK(d.session.message() ==
           "BAD RECORDED PICK 'pick_surface right_wing 1 0.5 0.5 4': expected COMPONENT PATCH U W VIEW, VIEW "
           "1..1");
     d.run({"pick_surface no_such_part 1 0.5 0.5 1"});
     CHECK(d.session.message() == "RECORDED PICK: MODEL fighter HAS NO COMPONENT no_such_part");
-    CHECK(d.session.failedLines() == failed + 3);
+    CHECK(d.session.failedLines() == failed + 4);
 }
 
 }  // namespace test_session_replay

@@ -149,6 +149,44 @@ TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the mo
     }
 }
 
+TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line; the models stay") {
+    // A pole at 2^1000 loaded and made every view fail; a loop vertex or reference point outside
+    // the surface's domain, or a patch it does not have, were taken and failed later (a reduction
+    // then made its model and dropped the curves).
+    Driver d("save_model_range");
+    const auto out = session_test::outputDirectory("save_model_range");
+    std::filesystem::remove_all(out);
+    reduceAndMap(d);
+    d.run({"choice FILE", "choice SAVE_MODEL", "string good.acs"});
+    std::ostringstream text;
+    text << std::ifstream(out / "good.acs").rdbuf();
+    const std::string good = text.str();
+    auto replaceWord = [&](const std::string& lineStart, std::size_t word, const std::string& value) {
+        std::string t = good;
+        const std::size_t line = t.find("\n" + lineStart) + 1;
+        std::size_t at = line;
+        for (std::size_t k = 0; k < word; ++k) at = t.find(' ', at) + 1;
+        t.replace(at, t.find_first_of(" \n", at) - at, value);
+        return t;
+    };
+    const std::size_t models = d.session.models().size();
+    const std::vector<std::pair<std::string, std::string>> bad{
+        {replaceWord("p ", 1, "0x1p+1000"), "is beyond 1000000000"},
+        {replaceWord("v ", 1, "0x1p+3"), "is outside right_wing's parameter domain"},
+        {replaceWord("reference ", 2, "99999"), "is not a count from 0 to"},
+        {replaceWord("reference ", 3, "0x1.8p+1"), "the reference point"},
+    };
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+        const auto file = out / ("range" + std::to_string(i) + ".acs");
+        std::ofstream(file) << bad[i].first;
+        d.run({"choice READ_MODEL", "string " + file.string()});
+        INFO("file " << i << ": " << d.session.message());
+        CHECK(d.session.message().find(file.string() + ":") != std::string::npos);
+        CHECK(d.session.message().find(bad[i].second) != std::string::npos);
+        CHECK(d.session.models().size() == models);
+    }
+}
+
 TEST_CASE("READ MODEL: a saved model over the patch limit is refused at the component that passes it") {
     // One bicubic component of 94 x 94 points is 91 x 91 = 8,281 patches, over 8,192: refused
     // before its patches are made (a 2048 x 2048 net took 7.7 GB and 49 s before the total was

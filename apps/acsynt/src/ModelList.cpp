@@ -55,9 +55,17 @@ std::vector<std::string> ModelList::names() const {
     return out;
 }
 
+std::string ModelList::nameTaken(const std::string& name, std::size_t except) const {
+    for (std::size_t i = 0; i < models_.size(); ++i)
+        if (i != except && models_[i].name == name)
+            return "BAD INPUT IN MODELS: A MODEL NAMED " + name + " IS LOADED (NAMES ARE UNIQUE)";
+    return {};
+}
+
 ModelList::Outcome ModelList::rename(const std::string& name) {
     if (models_.empty()) return {false, "NO GEOMETRY FILE FOUND!"};
     if (!isValidName(name)) return {false, "BAD INPUT IN MODELS"};
+    if (const std::string taken = nameTaken(name, current_); !taken.empty()) return {false, taken};
     models_[current_].name = name;
     return {true, "CURRENT MODEL NAMED " + name};
 }
@@ -77,6 +85,7 @@ ModelList::Outcome ModelList::removeCurrent() {
 ModelList::Outcome ModelList::copyCurrent(const std::string& name) {
     if (models_.empty()) return {false, "NO GEOMETRY FILE FOUND!"};
     if (!isValidName(name)) return {false, "BAD INPUT IN MODELS"};
+    if (const std::string taken = nameTaken(name, models_.size()); !taken.empty()) return {false, taken};
     Model copy = models_[current_];
     copy.name = name;
     copy.sourceFile.clear();

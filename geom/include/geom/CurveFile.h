@@ -20,6 +20,7 @@ struct CurvePart {
     std::vector<glm::dvec3> points;
     std::vector<Continuity> continuities;
     std::vector<glm::dvec3> constraints;  ///< 2 per C0 point, 1 per C1 point, in point order
+    std::size_t line = 0;                 ///< the file line of its point count (0: not from a file)
 };
 
 /// A `.crv` curve model (the ACSYNT curve-mapping thesis, §7.2, Table 1): every part of one file, mapped

@@ -35,15 +35,21 @@ public:
     Outcome select(std::size_t index);
     /// LIST: the names in order.
     std::vector<std::string> names() const;
-    /// NAME MODEL: 1 to 20 letters, digits, '_', '-', '.'; anything else leaves the name unchanged.
+    /// Whether a loaded model is named `name`.
+    bool contains(const std::string& name) const { return nameTaken(name, models_.size()).size() > 0; }
+    /// NAME MODEL: 1 to 20 letters, digits, '_', '-', '.', not another loaded model's name;
+    /// anything else leaves the name unchanged.
     Outcome rename(const std::string& name);
     /// Deletes the current model; its predecessor becomes current (its successor if it was first).
     Outcome removeCurrent();
     /// Appends a copy of the current model under `name` and makes the copy current, for a
-    /// reduced version to be worked on while the original stays in the list.
+    /// reduced version to be worked on while the original stays in the list (a name not loaded).
     Outcome copyCurrent(const std::string& name);
 
 private:
+    /// The refusal when a model other than the one at `except` is named `name`, else empty.
+    std::string nameTaken(const std::string& name, std::size_t except) const;
+
     std::vector<Model> models_;
     std::size_t current_ = 0;
 };

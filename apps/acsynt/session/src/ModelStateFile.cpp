@@ -64,6 +64,14 @@ public:
             fail("'" + word + "' is not a finite number");
         return v;
     }
+    /// A coordinate: a finite number within kModelStateMaxCoordinate (one beyond it, 1e301 say,
+    /// made the view's bounds infinite).
+    double coordinate(const std::string& word) {
+        const double v = real(word);
+        if (!(std::abs(v) <= kModelStateMaxCoordinate))
+            fail("the coordinate '" + word + "' is beyond " + std::to_string(int(kModelStateMaxCoordinate)));
+        return v;
+    }
     std::size_t count(const std::string& word, std::size_t limit) {
         const double v = real(word);
         if (!(v >= 0) || v != std::floor(v) || v > double(limit))
@@ -127,7 +135,7 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
         const auto p = r.line("p", rational ? 5 : 4);
         if (p.size() != (rational ? 5u : 4u))
             r.fail("a control point has x y z" + std::string(rational ? " w" : ""));
-        net.push_back({r.real(p[1]), r.real(p[2]), r.real(p[3])});
+        net.push_back({r.coordinate(p[1]), r.coordinate(p[2]), r.coordinate(p[3])});
         if (rational) weights.push_back(r.real(p[4]));
     }
     try {
@@ -149,6 +157,19 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     return c;
 }
 
+/// Whether (u, w) lies in the component's parameter domain (within rounding); a loop's vertices
+/// may go on a period past it along a closed direction, where loops cross the seam.
+bool inDomain(const Component& c, glm::dvec2 uw, bool acrossSeams) {
+    const geom::Surface& s = c.surface;
+    auto within = [&](double t, double start, double end, bool closed) {
+        const double period = end - start, slack = 1e-9 * (1.0 + std::abs(period));
+        const double reach = acrossSeams && closed ? period : 0.0;
+        return t >= start - reach - slack && t <= end + reach + slack;
+    };
+    return within(uw.x, s.domainStartU(), s.domainEndU(), c.closedU) &&
+           within(uw.y, s.domainStartV(), s.domainEndV(), c.closedW);
+}
+
 MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const Model& model,
                           std::size_t& vertices) {
     MappingRecord m;
@@ -158,9 +179,15 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
     if (!model.find(m.component)) r.fail("no component " + m.component + " in the model");
     const auto ref = r.line("reference", 5);
     m.reference.component = int(r.count(ref[1], model.components.size() - 1));
-    m.reference.patch = int(r.count(ref[2], 1u << 20));
+    const Component& referenced = model.components[std::size_t(m.reference.component)];
+    m.reference.patch = int(r.count(ref[2], referenced.patches.size()));  // 1-based
+    if (m.reference.patch < 1) r.fail("patch 0: patches are numbered from 1");
     m.reference.u = r.real(ref[3]);
     m.reference.w = r.real(ref[4]);
+    if (!inDomain(referenced, {m.reference.u, m.reference.w}, false))
+        r.fail("the reference point (" + ref[3] + ", " + ref[4] + ") is outside " + referenced.name +
+               "'s parameter domain");
+    const Component& mapped = *model.find(m.component);
     const auto parts = r.line("parts", 2);
     m.parts = r.count(parts[1], 1u << 16);
     for (std::size_t i = 0; i < m.parts; ++i) {
@@ -194,7 +221,10 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
             const auto v = r.line("v", 6);
             if (v.size() != 6) r.fail("a loop vertex has u w x y z");
             uv.push_back({r.real(v[1]), r.real(v[2])});
-            xyz.push_back({r.real(v[3]), r.real(v[4]), r.real(v[5])});
+            if (!inDomain(mapped, uv.back(), true))
+                r.fail("the loop vertex (" + v[1] + ", " + v[2] + ") is outside " + mapped.name +
+                       "'s parameter domain");
+            xyz.push_back({r.coordinate(v[3]), r.coordinate(v[4]), r.coordinate(v[5])});
         }
         m.uvPolylines.push_back(std::move(uv));
         m.polylines.push_back(std::move(xyz));

@@ -266,7 +266,7 @@ std::string Session::messageLine() const {
 }
 
 void Session::handle(const EventReport& report) {
-    try {
+    reportingFailures([&] {
         if (const auto* c = std::get_if<ChoiceMeasure>(&report.measure)) {
             if (c->status != InputStatus::Ok) {
                 fail(report.device == 1 ? "NO MENU ITEM CHOSEN (CHOICE 0): THE ITEMS ARE 1.." +
@@ -285,6 +285,12 @@ void Session::handle(const EventReport& report) {
         } else if (const auto* s = std::get_if<StringMeasure>(&report.measure)) {
             text(s->text);
         }
+    });
+}
+
+void Session::reportingFailures(const std::function<void()>& command) {
+    try {
+        command();
     } catch (const ModelFileError& e) {
         fail(e.what());
     } catch (const geom::GeometryError& e) {

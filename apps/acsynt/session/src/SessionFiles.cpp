@@ -106,8 +106,20 @@ void Session::readCurve(const std::string& input) {
         fail("BAD INPUT IN CURVE MAP: '" + input + "': expected FILE [SCALE], SCALE a positive number");
         return;
     }
-    geom::CurveModel model = geom::readCurveFile(findInput(name));
-    std::vector<geom::Curve> curves = geom::interpolateModel(model);
+    const std::filesystem::path path = findInput(name);
+    geom::CurveModel model = geom::readCurveFile(path);
+    std::vector<geom::Curve> curves;
+    for (const geom::CurvePart& part : model.parts) {
+        try {
+            curves.push_back(geom::interpolatePart(part));
+        } catch (const geom::CurveFileError&) {
+            throw;
+        } catch (const geom::GeometryError& e) {
+            // Points the reader took that no curve passes through (two the same, 1e300): the
+            // file and the part's line named, as for its other faults.
+            throw geom::CurveFileError(path.string(), part.line, e.what());
+        }
+    }
     for (auto& c : curves)
         for (auto& p : c.points) {
             p *= scale;

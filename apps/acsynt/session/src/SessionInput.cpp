@@ -132,15 +132,15 @@ void Session::renameModel(const std::string& input) {
 
 void Session::reductionAnswer(const std::string& input, bool count) {
     const auto value = parseNumber(input);
-    if (!value || !(*value > 0) || (count && *value != std::floor(*value))) {
+    if (!value || !(*value > 0) || (count && (*value != std::floor(*value) || *value > 1e9))) {
         fail("BAD INPUT IN SRF_REDUCTION: '" + input + "': expected " +
-             (count ? "a whole number of knots, 1 or more" : "a positive length"));
+             (count ? "a whole number of knots, 1 to 1000000000" : "a positive length"));
         return;
     }
     if (!count)
         reduce(core_.reductionComponent, *value, 0);
     else
-        reduce(core_.reductionComponent, 0, std::size_t(std::min(*value, 1e9)));
+        reduce(core_.reductionComponent, 0, std::size_t(*value));
 }
 
 void Session::pick(const PickMeasure& measure) {

@@ -204,8 +204,13 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
     record.deviation = reduced.deviation;
 
     // The reduced version is a new model; the original stays in the list (MODELS).
-    std::string name = original.name + "_R" + std::to_string(core_.reductions.size() + 1);
-    if (name.size() > 20) name = "REDUCED_" + std::to_string(core_.reductions.size() + 1);
+    // Its name: NAME_Rn (REDUCED_n past 20 characters), n counting the reductions, or the next
+    // one free (a model read back from a saved file may hold the name).
+    std::string name;
+    for (std::size_t n = core_.reductions.size() + 1; name.empty() || core_.models.contains(name); ++n) {
+        name = original.name + "_R" + std::to_string(n);
+        if (name.size() > 20) name = "REDUCED_" + std::to_string(n);
+    }
     const auto copied = core_.models.copyCurrent(name);
     if (!copied.done) {
         fail(copied.message);

@@ -19,7 +19,8 @@ using namespace phigs;
 using namespace session_detail;
 
 void Session::directive(const action::Directive& d, const InputAction& a) {
-    applyDirective(d, a);
+    // A directive fails as a menu command does: its line named, the session going on.
+    reportingFailures([&] { applyDirective(d, a); });
     // Directives run inside one wait for input, several in a row: a script run stops at its first
     // failing line here too, before the next one runs (--keep-going carries on).
     if (core_.settings.stopAtFirstError && core_.failedLines > 0)
@@ -191,7 +192,15 @@ void Session::pickSurface(const std::vector<std::string>& a) {
         fail("RECORDED PICK: MODEL " + model.name + " HAS NO COMPONENT " + a[0]);
         return;
     }
-    const glm::dvec2 pixel = pixelOf(geom::evaluate(comp->surface, *u, *w), int(*view));
+    const geom::Surface& surface = comp->surface;
+    if (!(*u >= surface.domainStartU() && *u <= surface.domainEndU() && *w >= surface.domainStartV() &&
+          *w <= surface.domainEndV())) {
+        fail("BAD RECORDED PICK '" + line + "': U AND W OF " + a[0] + " LIE IN [" +
+             number(surface.domainStartU(), 6) + ", " + number(surface.domainEndU(), 6) + "] AND [" +
+             number(surface.domainStartV(), 6) + ", " + number(surface.domainEndV(), 6) + "]");
+        return;
+    }
+    const glm::dvec2 pixel = pixelOf(geom::evaluate(surface, *u, *w), int(*view));
     picture();
     PickMeasure measure = core_.workstation->measurer().pick(pixel, core_.input->device(InputClass::Pick, 1));
     const auto picked = ModelPicture::fromPath(measure.path);

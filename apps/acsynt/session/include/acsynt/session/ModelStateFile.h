@@ -23,6 +23,7 @@ inline constexpr int modelStateVersion = 1;
 /// Limits of a model state file (each a ModelFileError at the line that breaks it).
 inline constexpr std::size_t kModelStateMaxPoints = 1u << 22;    ///< control points, all components
 inline constexpr std::size_t kModelStateMaxVertices = 1u << 22;  ///< mapped loop vertices, all mappings
+inline constexpr double kModelStateMaxCoordinate = 1e9;          ///< largest coordinate, in model units
 
 /// Writes `model` and those of `mappings` made on it (MappingRecord::model == model.name):
 /// every number in hexadecimal floating point, so reading back gives the same bits.

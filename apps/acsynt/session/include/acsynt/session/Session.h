@@ -150,6 +150,8 @@ private:
     void initialiseString();  ///< string 1, echoed on the right of the message line
     void followStringEcho();
     void handle(const phigs::EventReport& report);
+    /// Runs a command; bad input it throws (a model file's, geometry's, PHIGS's) fails its line.
+    void reportingFailures(const std::function<void()>& command);
     /// A script directive (snapshot, view, pick_surface, ...): applyDirective, and the end of a
     /// run that stops at its first failing line when this one failed.
     void directive(const phigs::action::Directive& d, const phigs::InputAction& a);
