@@ -70,7 +70,9 @@ struct CurveReduction {
     CurveDeviation deviation;  ///< measureDeviation(original, curve) where measured (see report)
 };
 
-/// Data reduction of a polynomial curve. In tolerance mode with options.freeKnots (the default)
+/// Data reduction of a curve. An unclamped curve (a closed, periodic one too) is reduced as its
+/// clamped form (the same curve), so its end points stay and a closed curve stays closed; the
+/// original stands where that keeps as many points. In tolerance mode with options.freeKnots (the default)
 /// and clamped ends: the knots that go exactly, then a search over the control point count with
 /// free-knot fits, each kept only if measureDeviation's parameter-map form finds the Hausdorff
 /// distance within the tolerance (see ReductionOptions::freeKnots for when the removal loop runs
