@@ -133,8 +133,12 @@ private:
             tried_ = true;
             const auto b = opencascade::handle<Geom_BSplineSurface>::DownCast(BRep_Tool::Surface(face_));
             if (!b.IsNull()) {
-                spline_ = fromOcct(*b);
-                projector_.emplace(*spline_);
+                try {
+                    spline_ = fromOcct(*b);
+                    projector_.emplace(*spline_);
+                } catch (const GeometryError&) {
+                    // a surface geom refuses: the reader's own (u, v), refined, stand
+                }
             }
         }
         return projector_ ? &*projector_ : nullptr;
