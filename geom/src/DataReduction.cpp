@@ -1998,62 +1998,11 @@ private:
     CurveReduction out_;
 };
 
-/// Whether the curve's first and last p + 1 knots are each one value (its ends are poles).
-bool clampedAtBothEnds(const Curve& c) {
-    const std::size_t p = static_cast<std::size_t>(c.degree), m = c.knots.size();
-    return std::all_of(c.knots.begin(), c.knots.begin() + std::ptrdiff_t(p) + 1,
-                       [&](double k) { return k == c.knots.front(); }) &&
-           std::all_of(c.knots.end() - std::ptrdiff_t(p) - 1, c.knots.end(),
-                       [&](double k) { return k == c.knots[m - 1]; });
-}
-
-/// The same curve on its domain with clamped ends: the domain's ends inserted until they are
-/// knots of multiplicity p, and the knots and poles beyond them dropped.
-Curve clampedForm(const Curve& curve) {
-    const int p = curve.degree;
-    const double start = curve.domainStart(), end = curve.domainEnd();
-    auto multiplicity = [](const Curve& c, double t) {
-        return int(std::count(c.knots.begin(), c.knots.end(), t));
-    };
-    Curve c = curve;
-    for (const double t : {start, end})
-        if (const int times = p - multiplicity(c, t); times > 0) c = insertKnot(c, t, times);
-    // p + 1 knots at each end: the last p + 1 up to the last copy of the start, the first p + 1
-    // from the first copy of the end (the outer one set to the end's value where it was beyond).
-    const auto begin = std::find(c.knots.begin(), c.knots.end(), start) + multiplicity(c, start) - 1 - p;
-    const auto finish = std::find(c.knots.begin(), c.knots.end(), end) + p + 1;
-    std::vector<double> knots(begin, finish);
-    knots.front() = start, knots.back() = end;
-    const std::size_t from = std::size_t(begin - c.knots.begin()), count = knots.size() - std::size_t(p) - 1;
-    std::vector<glm::dvec3> points(c.points.begin() + std::ptrdiff_t(from),
-                                   c.points.begin() + std::ptrdiff_t(from + count));
-    std::vector<double> weights;
-    if (c.rational())
-        weights.assign(c.weights.begin() + std::ptrdiff_t(from),
-                       c.weights.begin() + std::ptrdiff_t(from + count));
-    return Curve(p, std::move(knots), std::move(points), std::move(weights));
-}
-
 }  // namespace
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
     checkOptions(options, "reduceCurve");
     validate(curve, "reduceCurve");
-    // The ends stay where the curve has them: an unclamped one (a periodic, closed one too) is
-    // reduced as its clamped form, the same curve, so it keeps its end points (a closed curve
-    // stays closed). Where that keeps more points than the original had, the original stands.
-    if (!clampedAtBothEnds(curve)) {
-        CurveReduction r = reduceCurve(clampedForm(curve), options);
-        if (r.curve.points.size() >= curve.points.size()) {
-            CurveReduction unchanged;
-            unchanged.curve = curve;
-            unchanged.fits = r.fits;
-            return unchanged;
-        }
-        r.removed = curve.points.size() - r.curve.points.size();
-        return r;
-    }
-    if (curve.rational()) return reduceRationalCurve(curve, options);
     const bool measuring = std::isfinite(options.tolerance);
     const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
     const bool clamped =
@@ -2061,6 +2010,21 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
                    curve.knots.begin() + 1) &&
         std::equal(curve.knots.begin() + static_cast<std::ptrdiff_t>(n), curve.knots.end() - 1,
                    curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
+    // The ends stay where the curve has them: an unclamped one (a periodic, closed one too) is
+    // reduced as its clamped form, the same curve, so it keeps its end points (a closed curve
+    // stays closed). Where that keeps more points than the original had, the original stands.
+    if (!clamped) {
+        CurveReduction r = reduceCurve(clampEnds(curve), options);
+        if (r.curve.points.size() >= n) {
+            CurveReduction unchanged;
+            unchanged.curve = curve;
+            unchanged.fits = r.fits;
+            return unchanged;
+        }
+        r.removed = n - r.curve.points.size();
+        return r;
+    }
+    if (curve.rational()) return reduceRationalCurve(curve, options);
     // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
     // final measurement below has the last word.
     const double tol = options.tolerance * 0.99;
@@ -2072,8 +2036,8 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     // curves: it would cost them a third more time for nothing). With freeKnots off the loop runs
     // from the original as before (on the reference curves the linear stage's state costs it
     // 0-9 points: I-beam 27 / 50 / 48 / 92 against 25 / 43 / 44 / 83).
-    const bool linear = measuring && options.freeKnots && !batch && clamped &&
-                        options.ends.fixedDerivatives == 0 && n > p + 1 && options.maxRemovals >= n;
+    const bool linear = measuring && options.freeKnots && !batch && options.ends.fixedDerivatives == 0 &&
+                        n > p + 1 && options.maxRemovals >= n;
     const Spline originalSpline{curve.degree, curve.knots, curve.points, 1};
     OriginalSamples originalSamples(curve, options.samplesPerSpan);
     std::optional<Spline> linearState;
@@ -2089,7 +2053,7 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
         return *loop;
     };
     std::optional<CurveReduction> fitted;
-    if (measuring && options.freeKnots && clamped) {
+    if (measuring && options.freeKnots) {
         bool refined = false, settled = false;
         fitted = reduceCurveByFreeKnots(
             curve, options, originalSamples, [&]() -> const Curve& { return runLoop().curve(); }, refined,

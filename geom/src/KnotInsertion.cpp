@@ -2,6 +2,8 @@
 
 #include "geom/ControlNet.h"
 
+#include <algorithm>
+
 namespace geom {
 
 Curve insertKnot(const Curve& curve, double u, int times) {
@@ -20,6 +22,32 @@ Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert) {
     refineNet(curve.degree, out.knots, net, {knotsToInsert.begin(), knotsToInsert.end()}, "refineKnots");
     setFromNet(out, net, curve.rational());
     return out;
+}
+
+Curve clampEnds(const Curve& curve) {
+    validate(curve, "clampEnds");
+    const int p = curve.degree;
+    const double start = curve.domainStart(), end = curve.domainEnd();
+    auto multiplicity = [](const Curve& c, double t) {
+        return int(std::count(c.knots.begin(), c.knots.end(), t));
+    };
+    Curve c = curve;
+    for (const double t : {start, end})
+        if (const int times = p - multiplicity(c, t); times > 0) c = insertKnot(c, t, times);
+    // p + 1 knots at each end: the last p + 1 up to the last copy of the start, the first p + 1
+    // from the first copy of the end (the outer one set to the end's value where it was beyond).
+    const auto begin = std::find(c.knots.begin(), c.knots.end(), start) + multiplicity(c, start) - 1 - p;
+    const auto finish = std::find(c.knots.begin(), c.knots.end(), end) + p + 1;
+    std::vector<double> knots(begin, finish);
+    knots.front() = start, knots.back() = end;
+    const std::size_t from = std::size_t(begin - c.knots.begin()), count = knots.size() - std::size_t(p) - 1;
+    std::vector<glm::dvec3> points(c.points.begin() + std::ptrdiff_t(from),
+                                   c.points.begin() + std::ptrdiff_t(from + count));
+    std::vector<double> weights;
+    if (c.rational())
+        weights.assign(c.weights.begin() + std::ptrdiff_t(from),
+                       c.weights.begin() + std::ptrdiff_t(from + count));
+    return Curve(p, std::move(knots), std::move(points), std::move(weights));
 }
 
 Surface insertKnotU(const Surface& surface, double u, int times) {

@@ -231,38 +231,6 @@ void wrap(std::vector<glm::dvec4>& poles, std::size_t period) {
     }
 }
 
-/// How many times `value` is a knot.
-int multiplicity(const std::vector<double>& knots, double value) {
-    return int(std::count(knots.begin(), knots.end(), value));
-}
-
-/// The spline on `unclamped` clamped again at the ends of its domain (knot insertion: as stable
-/// as evaluation), its poles on the clamped knot vector.
-std::vector<glm::dvec4> clampedPoles(int degree, const std::vector<double>& unclamped,
-                                     const std::vector<glm::dvec4>& poles) {
-    const std::size_t count = poles.size();
-    std::vector<glm::dvec3> xyz(count), w(count);
-    for (std::size_t k = 0; k < count; ++k)
-        xyz[k] = glm::dvec3(poles[k]), w[k] = glm::dvec3(poles[k].w, 0, 0);
-    std::vector<glm::dvec4> out(count);
-    for (const bool weights : {false, true}) {
-        Curve c(degree, unclamped, weights ? w : xyz);
-        const double start = c.domainStart(), end = c.domainEnd();
-        c = insertKnot(c, start, std::max(0, degree - multiplicity(c.knots, start)));
-        c = insertKnot(c, end, std::max(0, degree - multiplicity(c.knots, end)));
-        // The clamped spline's poles start one before the first knot at the domain's start.
-        const auto first = std::size_t(std::find(c.knots.begin(), c.knots.end(), start) - c.knots.begin());
-        for (std::size_t k = 0; k < count; ++k) {
-            const glm::dvec3& q = c.points[k + first - 1];
-            if (weights)
-                out[k].w = q.x;
-            else
-                out[k] = glm::dvec4(q, out[k].w);
-        }
-    }
-    return out;
-}
-
 /// The clamped line as a periodic spline where it closes within `tolerance`: unclamped, wrapped,
 /// and measured by clamping it again (euclideanDeviation). The unclamping recurrences lose digits
 /// at degree 6 and 7 (the two copies of a wrapped pole can differ by 1e-9 of the size), clamping
@@ -275,23 +243,18 @@ std::optional<Curve> periodicLine(const Curve& line, std::size_t period, double 
     std::vector<double> unclamped;
     std::vector<glm::dvec4> poles = unclampedPoles(line.degree, line.knots, clampedNet, unclamped);
     wrap(poles, period);
-    auto curveOf = [&](const std::vector<glm::dvec4>& net,
-                       const std::vector<double>& knots) -> std::optional<Curve> {
-        std::vector<glm::dvec3> points(count);
-        std::vector<double> weights(count);
-        for (std::size_t k = 0; k < count; ++k) {
-            weights[k] = net[k].w;
-            if (!(weights[k] > 0.0) || !std::isfinite(weights[k])) return std::nullopt;
-            points[k] = glm::dvec3(net[k]) / weights[k];
-            if (!std::isfinite(points[k].x + points[k].y + points[k].z)) return std::nullopt;
-        }
-        if (!line.rational()) weights.clear();
-        return Curve(line.degree, knots, std::move(points), std::move(weights));
-    };
-    std::optional<Curve> periodic = curveOf(poles, unclamped);
-    if (!periodic) return std::nullopt;
-    std::optional<Curve> again = curveOf(clampedPoles(line.degree, unclamped, poles), line.knots);
-    if (!again || !(euclideanDeviation(line, *again) <= tolerance)) return std::nullopt;
+    std::vector<glm::dvec3> points(count);
+    std::vector<double> weights(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        weights[k] = poles[k].w;
+        if (!(weights[k] > 0.0) || !std::isfinite(weights[k])) return std::nullopt;
+        points[k] = glm::dvec3(poles[k]) / weights[k];
+        if (!std::isfinite(points[k].x + points[k].y + points[k].z)) return std::nullopt;
+    }
+    if (!line.rational()) weights.clear();
+    Curve periodic(line.degree, std::move(unclamped), std::move(points), std::move(weights));
+    const Curve again = clampEnds(periodic);
+    if (again.knots != line.knots || !(euclideanDeviation(line, again) <= tolerance)) return std::nullopt;
     return periodic;  // its wrapped poles the same bits (wrap), as periodicByConstruction asks
 }
 

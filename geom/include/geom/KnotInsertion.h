@@ -15,6 +15,10 @@ Curve insertKnot(const Curve& curve, double u, int times = 1);
 /// repeat values. Every value must lie in the domain and no multiplicity may exceed the degree.
 Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert);
 
+/// The same curve on its domain with clamped ends: each end of the domain inserted until it is a
+/// knot of multiplicity p, and the knots and poles beyond it dropped (a clamped end stays).
+Curve clampEnds(const Curve& curve);
+
 /// Knot insertion in the u direction of a surface (every column of the net at once).
 Surface insertKnotU(const Surface& surface, double u, int times = 1);
 
