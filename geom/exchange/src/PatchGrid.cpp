@@ -311,8 +311,8 @@ struct UnitFrame {
 /// What rounding can leave in the poles of Bézier patches cut from a rational surface: knot
 /// insertion works on w P, so a pole whose weight is r times below its neighbours' takes their
 /// rounding (|P| w eps) magnified r times, |P| measured from the origin the patches were cut at,
-/// and more with the degree (16 (p + 1)^2 eps: a degree-7 surface read from IGES missed by 2.4
-/// times 64 eps). Past degree 4 with weights over 1e-2..1e2 that is more than 1e-11 of the size.
+/// and more with the degree: 16 (p + 1)^2 eps. Past degree 4 with weights over 1e-2..1e2 that is
+/// more than 1e-11 of the size.
 double roundingFloor(const std::vector<Surface>& pieces) {
     double reach = 0.0, wmin = std::numeric_limits<double>::infinity(), wmax = 0.0;
     int degree = 1;
