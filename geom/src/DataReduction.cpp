@@ -1998,6 +1998,13 @@ private:
     CurveReduction out_;
 };
 
+/// Whether the knots repeat p + 1 times at each end (n poles).
+bool hasClampedEnds(const std::vector<double>& knots, int degree, std::size_t n) {
+    const auto p = static_cast<std::ptrdiff_t>(degree), last = static_cast<std::ptrdiff_t>(n);
+    return std::equal(knots.begin(), knots.begin() + p, knots.begin() + 1) &&
+           std::equal(knots.begin() + last, knots.end() - 1, knots.begin() + last + 1);
+}
+
 }  // namespace
 
 CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
@@ -2005,15 +2012,10 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     validate(curve, "reduceCurve");
     const bool measuring = std::isfinite(options.tolerance);
     const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
-    const bool clamped =
-        std::equal(curve.knots.begin(), curve.knots.begin() + static_cast<std::ptrdiff_t>(p),
-                   curve.knots.begin() + 1) &&
-        std::equal(curve.knots.begin() + static_cast<std::ptrdiff_t>(n), curve.knots.end() - 1,
-                   curve.knots.begin() + static_cast<std::ptrdiff_t>(n) + 1);
     // The ends stay where the curve has them: an unclamped one (a periodic, closed one too) is
     // reduced as its clamped form, the same curve, so it keeps its end points (a closed curve
     // stays closed). Where that keeps more points than the original had, the original stands.
-    if (!clamped) {
+    if (!hasClampedEnds(curve.knots, curve.degree, n)) {
         CurveReduction r = reduceCurve(clampEnds(curve), options);
         if (r.curve.points.size() >= n) {
             CurveReduction unchanged;
@@ -2079,16 +2081,10 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     return out;
 }
 
-SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
-                               const ReductionOptions& options) {
-    checkOptions(options, "reduceSurface");
-    validate(surface, "reduceSurface");
-    if (surface.rational())
-        throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
-    if (direction != ReductionDirection::U && direction != ReductionDirection::V &&
-        direction != ReductionDirection::Both)
-        throw GeometryError("reduceSurface: direction " + std::to_string(static_cast<int>(direction)) +
-                            " is not U, V or Both");
+namespace {
+
+SurfaceReduction reduceClampedSurface(const Surface& surface, ReductionDirection direction,
+                                      const ReductionOptions& options) {
     SurfaceReduction out;
     const Surface across = transposed(surface);
     SurfaceGrid grid;
@@ -2135,6 +2131,37 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
         if (!measuring || out.deviation.maxError <= options.tolerance) break;
     }
     return out;
+}
+
+}  // namespace
+
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options) {
+    checkOptions(options, "reduceSurface");
+    validate(surface, "reduceSurface");
+    if (surface.rational())
+        throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
+    if (direction != ReductionDirection::U && direction != ReductionDirection::V &&
+        direction != ReductionDirection::Both)
+        throw GeometryError("reduceSurface: direction " + std::to_string(static_cast<int>(direction)) +
+                            " is not U, V or Both");
+    // As for curves: unclamped edges (a periodic direction's seam too) are reduced on the clamped
+    // form, the same surface, whose edge curves knot removal keeps, so a closed seam stays closed.
+    if (!hasClampedEnds(surface.knotsU, surface.degreeU, surface.countU) ||
+        !hasClampedEnds(surface.knotsV, surface.degreeV, surface.countV)) {
+        SurfaceReduction r = reduceClampedSurface(clampEnds(surface), direction, options);
+        if (r.surface.points.size() >= surface.points.size()) {
+            SurfaceReduction unchanged;
+            unchanged.surface = surface;
+            unchanged.fits = r.fits;
+            if (options.report || std::isfinite(options.tolerance))
+                unchanged.deviation =
+                    measureDeviation(surface, surface, std::max(2, options.samplesPerSpan / 2));
+            return unchanged;
+        }
+        return r;
+    }
+    return reduceClampedSurface(surface, direction, options);
 }
 
 }  // namespace geom

@@ -24,30 +24,70 @@ Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert) {
     return out;
 }
 
+namespace {
+
+int multiplicity(const std::vector<double>& knots, double t) {
+    return int(std::count(knots.begin(), knots.end(), t));
+}
+
+/// Which knots and poles a clamped form keeps, once each end of the domain has multiplicity p.
+struct ClampedRange {
+    std::vector<double> knots;
+    std::size_t from = 0;   ///< index of the first pole kept
+    std::size_t count = 0;  ///< poles kept
+};
+
+// p + 1 knots at each end: the last p + 1 up to the last copy of the start, the first p + 1 from
+// the first copy of the end (the outer one set to the end's value where it was beyond).
+ClampedRange clampedRange(const std::vector<double>& knots, int p, double start, double end) {
+    const auto begin = std::find(knots.begin(), knots.end(), start) + multiplicity(knots, start) - 1 - p;
+    const auto finish = std::find(knots.begin(), knots.end(), end) + p + 1;
+    ClampedRange r;
+    r.knots.assign(begin, finish);
+    r.knots.front() = start, r.knots.back() = end;
+    r.from = std::size_t(begin - knots.begin());
+    r.count = r.knots.size() - std::size_t(p) - 1;
+    return r;
+}
+
+}  // namespace
+
 Curve clampEnds(const Curve& curve) {
     validate(curve, "clampEnds");
     const int p = curve.degree;
     const double start = curve.domainStart(), end = curve.domainEnd();
-    auto multiplicity = [](const Curve& c, double t) {
-        return int(std::count(c.knots.begin(), c.knots.end(), t));
-    };
     Curve c = curve;
     for (const double t : {start, end})
-        if (const int times = p - multiplicity(c, t); times > 0) c = insertKnot(c, t, times);
-    // p + 1 knots at each end: the last p + 1 up to the last copy of the start, the first p + 1
-    // from the first copy of the end (the outer one set to the end's value where it was beyond).
-    const auto begin = std::find(c.knots.begin(), c.knots.end(), start) + multiplicity(c, start) - 1 - p;
-    const auto finish = std::find(c.knots.begin(), c.knots.end(), end) + p + 1;
-    std::vector<double> knots(begin, finish);
-    knots.front() = start, knots.back() = end;
-    const std::size_t from = std::size_t(begin - c.knots.begin()), count = knots.size() - std::size_t(p) - 1;
-    std::vector<glm::dvec3> points(c.points.begin() + std::ptrdiff_t(from),
-                                   c.points.begin() + std::ptrdiff_t(from + count));
+        if (const int times = p - multiplicity(c.knots, t); times > 0) c = insertKnot(c, t, times);
+    const ClampedRange r = clampedRange(c.knots, p, start, end);
+    const auto first = std::ptrdiff_t(r.from), last = std::ptrdiff_t(r.from + r.count);
+    std::vector<glm::dvec3> points(c.points.begin() + first, c.points.begin() + last);
     std::vector<double> weights;
-    if (c.rational())
-        weights.assign(c.weights.begin() + std::ptrdiff_t(from),
-                       c.weights.begin() + std::ptrdiff_t(from + count));
-    return Curve(p, std::move(knots), std::move(points), std::move(weights));
+    if (c.rational()) weights.assign(c.weights.begin() + first, c.weights.begin() + last);
+    return Curve(p, r.knots, std::move(points), std::move(weights));
+}
+
+Surface clampEnds(const Surface& surface) {
+    validate(surface, "clampEnds");
+    Surface s = surface;
+    const double startU = s.domainStartU(), endU = s.domainEndU();
+    const double startV = s.domainStartV(), endV = s.domainEndV();
+    for (const double u : {startU, endU})
+        if (const int times = s.degreeU - multiplicity(s.knotsU, u); times > 0) s = insertKnotU(s, u, times);
+    for (const double v : {startV, endV})
+        if (const int times = s.degreeV - multiplicity(s.knotsV, v); times > 0) s = insertKnotV(s, v, times);
+    const ClampedRange ru = clampedRange(s.knotsU, s.degreeU, startU, endU);
+    const ClampedRange rv = clampedRange(s.knotsV, s.degreeV, startV, endV);
+    std::vector<glm::dvec3> points;
+    std::vector<double> weights;
+    points.reserve(ru.count * rv.count);
+    for (std::size_t i = ru.from; i < ru.from + ru.count; ++i)
+        for (std::size_t j = rv.from; j < rv.from + rv.count; ++j) {
+            points.push_back(s.point(i, j));
+            if (s.rational()) weights.push_back(s.weight(i, j));
+        }
+    return Surface(s.degreeU, s.degreeV, ru.knots, rv.knots, ru.count, rv.count, std::move(points),
+                   std::move(weights));
 }
 
 Surface insertKnotU(const Surface& surface, double u, int times) {

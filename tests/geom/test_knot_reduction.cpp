@@ -9,6 +9,7 @@
 #include "geom/KnotInsertion.h"
 #include "geom/KnotSignificance.h"
 #include "geom/Primitives.h"
+#include "geom/SurfaceProjector.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -365,9 +366,10 @@ TEST_CASE("surface reduction keeps the measured distance within the tolerance, d
             REQUIRE(r.deviation.maxError <= o.tolerance);
             const SurfaceDeviation dense = measureDeviation(s, r.surface, 6);
             REQUIRE(dense.maxError <= o.tolerance * 1.001);
-            // The error field: one value per grid vertex of the reduced surface.
+            // The error field: one value per grid vertex of the reduced surface; the maximum is at
+            // least the field's (a peak between its vertices can be higher).
             REQUIRE(r.deviation.error.size() == r.deviation.u.size() * r.deviation.v.size());
-            REQUIRE(*std::max_element(r.deviation.error.begin(), r.deviation.error.end()) ==
+            REQUIRE(*std::max_element(r.deviation.error.begin(), r.deviation.error.end()) <=
                     r.deviation.maxReducedToOriginal);
             REQUIRE(r.deviation.meanError <= r.deviation.maxReducedToOriginal);
         }
@@ -602,6 +604,39 @@ TEST_CASE("the curve deviation follows a peak between its samples", "[geom][knot
     }
 }
 
+TEST_CASE("the surface deviation follows a peak between its grid vertices", "[geom][knots][reduction]") {
+    // One control point moved: the surfaces part in a bump whose top lies anywhere between the
+    // grid's vertices, where the grid alone reported up to a sixth less. The measured maxima must
+    // reach those of a grid 8 times as dense (each vertex's global closest point) and not exceed
+    // them by more than the dense grid misses (at a crease the peak is a ridge, which the dense
+    // grid meets only to 3%).
+    std::mt19937 rng(6122026);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int member = 0; member < 24; ++member) {
+        const int p = 1 + member % 5, q = 1 + (member / 5) % 5;
+        const Surface s = geomtest::bumpySurface(rng, p, q, std::size_t(p) + 2 + rng() % 4,
+                                                 std::size_t(q) + 2 + rng() % 4, false);
+        Surface moved = s;
+        const std::size_t k = rng() % s.points.size();
+        moved.points[k] += 1e-3 * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        auto dense = [](const Surface& from, const Surface& to) {
+            const SurfaceProjector projector(to);
+            double worst = 0.0;
+            for (double u : spanSamples(from.knotsU, from.degreeU, from.countU, 32))
+                for (double v : spanSamples(from.knotsV, from.degreeV, from.countV, 32))
+                    worst = std::max(worst, projector.closestPoint(evaluate(from, u, v)).distance);
+            return worst;
+        };
+        const double there = dense(s, moved), back = dense(moved, s);
+        INFO("member " << member << ", degrees " << p << ", " << q << ", point " << k);
+        const SurfaceDeviation d = measureDeviation(s, moved, 4);
+        CHECK(d.maxOriginalToReduced >= there * (1.0 - 1e-4));
+        CHECK(d.maxOriginalToReduced <= there * 1.05);
+        CHECK(d.maxReducedToOriginal >= back * (1.0 - 1e-4));
+        CHECK(d.maxReducedToOriginal <= back * 1.05);
+    }
+}
+
 TEST_CASE("curve reduction and deviation above the power-form degree limit", "[geom][knots][reduction]") {
     // Degrees above 7 take Cox-de Boor instead of the span power form in sampling and Newton.
     std::mt19937 rng(65);
@@ -708,6 +743,60 @@ TEST_CASE("reduceCurve keeps the end points of unclamped and closed curves; clos
         CHECK(r.curve.points.size() <= c.points.size());
         CHECK(r.removed == c.points.size() - r.curve.points.size());
         CHECK(measureDeviation(c, r.curve).maxError <= o.tolerance);
+    }
+}
+
+TEST_CASE("reduceSurface keeps the edges of periodic surfaces and a closed seam closed",
+          "[geom][reduction]") {
+    // A surface periodic in one direction was reduced as it was: a V reduction moved its corners
+    // and opened its seam by up to 0.7 of the tolerance (a tester's 5 of 18).
+    std::mt19937 rng(1234);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const ReductionDirection directions[] = {ReductionDirection::U, ReductionDirection::V,
+                                             ReductionDirection::Both};
+    for (int member = 0; member < 36; ++member) {
+        const bool periodicU = member % 2 == 1;
+        const std::size_t along = 6 + rng() % 12, around = 8 + rng() % 12;
+        const int p = 1 + int(rng() % 5), q = 1 + 2 * int(rng() % 3);  // q odd: a periodic degree
+        std::vector<glm::dvec3> grid;
+        for (std::size_t i = 0; i < along; ++i)
+            for (std::size_t j = 0; j < around; ++j) {
+                const double a = 2.0 * M_PI * double(j) / double(around),
+                             r = 1.0 + 0.3 * std::sin(0.8 * double(i)) + 1e-3 * unit(rng);
+                grid.push_back({r * std::cos(a), r * std::sin(a), 0.5 * double(i)});
+            }
+        Surface s = interpolateSurface(grid, along, around, p, q, Closure::Open, Closure::Periodic);
+        if (periodicU)
+            s = Surface(s.degreeV, s.degreeU, s.knotsV, s.knotsU, s.countV, s.countU, [&] {
+                std::vector<glm::dvec3> t;
+                for (std::size_t j = 0; j < s.countV; ++j)
+                    for (std::size_t i = 0; i < s.countU; ++i) t.push_back(s.point(i, j));
+                return t;
+            }());
+        ReductionOptions o;
+        o.tolerance = 0.002 * std::pow(10.0, 1.5 * unit(rng));
+        const ReductionDirection direction = directions[member % 3];
+        const SurfaceReduction r = reduceSurface(s, direction, o);
+        INFO("member " << member << ": degrees " << s.degreeU << ", " << s.degreeV << ", periodic in "
+                       << (periodicU ? "u" : "v") << ", direction " << int(direction));
+        CHECK(r.surface.points.size() <= s.points.size());
+        CHECK(measureDeviation(s, r.surface).maxError <= o.tolerance);
+        double seam = 0.0, corner = 0.0;
+        for (int k = 0; k <= 40; ++k) {
+            const double t = double(k) / 40.0;
+            const auto at = [&](const Surface& x, double w, bool end) {
+                return periodicU ? evaluate(x, end ? x.domainEndU() : x.domainStartU(),
+                                            x.domainStartV() + w * (x.domainEndV() - x.domainStartV()))
+                                 : evaluate(x, x.domainStartU() + w * (x.domainEndU() - x.domainStartU()),
+                                            end ? x.domainEndV() : x.domainStartV());
+            };
+            seam = std::max(seam, glm::length(at(r.surface, t, false) - at(r.surface, t, true)));
+            for (const bool end : {false, true})
+                corner = std::max(
+                    corner, glm::length(at(r.surface, t, end) - at(s, t, end)) * double(k == 0 || k == 40));
+        }
+        CHECK(seam <= 1e-12);
+        CHECK(corner <= 1e-12);
     }
 }
 

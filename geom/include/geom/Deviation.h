@@ -94,8 +94,8 @@ private:
 struct SurfaceDeviation {
     double maxError = 0.0;              ///< the larger of the two maxima below
     double meanError = 0.0;             ///< mean of the error field
-    double maxOriginalToReduced = 0.0;  ///< over the same grid on the original surface
-    double maxReducedToOriginal = 0.0;  ///< max of the error field
+    double maxOriginalToReduced = 0.0;  ///< over the same grid on the original surface, and its peaks
+    double maxReducedToOriginal = 0.0;  ///< max of the error field, or of a peak between its vertices
     std::vector<double> u;      ///< grid parameters in u (samplesPerSpan per span of the reduced surface)
     std::vector<double> v;      ///< grid parameters in v
     std::vector<double> error;  ///< error[i * v.size() + j]: distance from S'(u[i], v[j]) to the original
@@ -107,7 +107,9 @@ struct SurfaceDeviation {
 /// until no Newton value left exceeds the largest result), then the maximum from the original's
 /// grid to the reduced surface: |S(u,v) - S'(u,v)| bounds each vertex's distance, and the
 /// vertices are inverted largest bound first until no bound left exceeds the largest distance
-/// found. Both surfaces must share the parameter domain (as knot removal keeps it).
+/// found. Each direction's local maxima within a tenth of its largest are then followed between
+/// the vertices by a compass search. Both surfaces must share the parameter domain (as knot
+/// removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
 /// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.

@@ -19,6 +19,9 @@ Curve refineKnots(const Curve& curve, std::span<const double> knotsToInsert);
 /// knot of multiplicity p, and the knots and poles beyond it dropped (a clamped end stays).
 Curve clampEnds(const Curve& curve);
 
+/// The same surface on its domain with clamped ends in both directions (clampEnds per direction).
+Surface clampEnds(const Surface& surface);
+
 /// Knot insertion in the u direction of a surface (every column of the net at once).
 Surface insertKnotU(const Surface& surface, double u, int times = 1);
 
