@@ -16,10 +16,25 @@ double signedDistance(const HalfSpace& s, const ClipVertex& v) {
     return glm::dot(s.plane, v.h) - s.offset;
 }
 
-ClipVertex between(const ClipVertex& a, const ClipVertex& b, double da, double db) {
-    const double t = da / (da - db);
-    return {a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance),
-            a.along + t * (b.along - a.along)};
+/// A place on a -> b as its fraction from a and the rest (1 - t), each computed directly.
+struct Fraction {
+    double t = 0.0;
+    double rest = 1.0;
+};
+
+/// Where the segment meets a plane, from the signed distances of its ends (of opposite sides).
+Fraction crossing(double da, double db) {
+    return {da / (da - db), db / (db - da)};
+}
+
+/// The point at a fraction, built from the nearer end: a far vertex (1e20 and beyond) swamps
+/// the other's coordinates in b - a, and 1 - t near 1 keeps none of the rest's digits.
+ClipVertex at(const ClipVertex& a, const ClipVertex& b, Fraction f) {
+    if (f.t <= f.rest)
+        return {a.h + f.t * (b.h - a.h), a.distance + f.t * (b.distance - a.distance),
+                a.along + f.t * (b.along - a.along)};
+    return {b.h + f.rest * (a.h - b.h), b.distance + f.rest * (a.distance - b.distance),
+            b.along + f.rest * (a.along - b.along)};
 }
 
 }  // namespace
@@ -63,7 +78,7 @@ std::vector<ClipVertex> clipPolygon(std::vector<ClipVertex> polygon, const std::
             const ClipVertex& b = polygon[(i + 1) % polygon.size()];
             const double da = signedDistance(s, a), db = signedDistance(s, b);
             if (da >= 0.0) next.push_back(a);
-            if ((da >= 0.0) != (db >= 0.0)) next.push_back(between(a, b, da, db));
+            if ((da >= 0.0) != (db >= 0.0)) next.push_back(at(a, b, crossing(da, db)));
         }
         polygon.swap(next);
     }
@@ -75,34 +90,35 @@ std::vector<std::vector<ClipVertex>> clipPolyline(const std::vector<ClipVertex>&
                                                   const std::vector<HalfSpace>& volume) {
     std::vector<std::vector<ClipVertex>> runs;
     std::vector<ClipVertex> run;
+    // Ordered by t where both are near a, by the rest elsewhere (t rounds to 1 near b, where
+    // several planes' crossings by a far vertex's segment would tie).
+    const auto byT = [](const Fraction& x, const Fraction& y) {
+        return x.t <= x.rest && y.t <= y.rest ? x.t < y.t : x.rest > y.rest;
+    };
     auto finish = [&] {
         if (run.size() >= 2) runs.push_back(run);
         run.clear();
     };
     for (std::size_t i = 0; i + 1 < line.size(); ++i) {
         // The segment's part inside every half space: [t0, t1] of a + t (b - a).
-        double t0 = 0.0, t1 = 1.0;
+        Fraction t0{0.0, 1.0}, t1{1.0, 0.0};
         for (const HalfSpace& s : volume) {
             const double da = signedDistance(s, line[i]), db = signedDistance(s, line[i + 1]);
-            if (da < 0.0 && db < 0.0) t0 = 1.0, t1 = 0.0;
-            if (da < 0.0 && db >= 0.0) t0 = std::max(t0, da / (da - db));
-            if (da >= 0.0 && db < 0.0) t1 = std::min(t1, da / (da - db));
+            if (da < 0.0 && db < 0.0) t0 = {1.0, 0.0}, t1 = {0.0, 1.0};
+            if (da < 0.0 && db >= 0.0) t0 = std::max(t0, crossing(da, db), byT);
+            if (da >= 0.0 && db < 0.0) t1 = std::min(t1, crossing(da, db), byT);
         }
-        if (t0 > t1) {
+        if (t0.t > t1.t) {
             finish();
             continue;
         }
         const ClipVertex &a = line[i], &b = line[i + 1];
-        auto at = [&](double t) {
-            return ClipVertex{a.h + t * (b.h - a.h), a.distance + t * (b.distance - a.distance),
-                              a.along + t * (b.along - a.along)};
-        };
-        if (t0 > 0.0 || run.empty()) {
+        if (t0.t > 0.0 || run.empty()) {
             finish();
-            run.push_back(at(t0));
+            run.push_back(at(a, b, t0));
         }
-        run.push_back(at(t1));
-        if (t1 < 1.0) finish();
+        run.push_back(at(a, b, t1));
+        if (t1.t < 1.0) finish();
     }
     finish();
     return runs;
