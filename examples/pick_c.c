@@ -49,7 +49,7 @@ static int request_pick(int press) {
         return 1;
     }
     printf("pick path (structure, element, pick id):");
-    for (Pint i = 0; i < path.depth; ++i)
+    for (Pint i = 0; i < path.depth && i < 8; ++i) /* depth is the path's own: it can be more */
         printf(" (%d, %d, %d)", (int)items[i].struct_id, (int)items[i].elem_pos, (int)items[i].pick_id);
     printf("\n");
     return 1;

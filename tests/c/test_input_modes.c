@@ -69,6 +69,29 @@ static void pick_filter_starts_empty(void) {
     CHECK(status == PIN_STATUS_OK && path.depth == 1 && items[0].pick_id == 7);
 }
 
+/* The SI's REQUEST PICK: path->depth is the path's real depth and only the first `depth` items are
+ * written, so an application can tell that its path was cut. */
+static void pick_path_depth_is_real(void) {
+    popen_struct(2);
+    pexec_struct(1); /* element 1 */
+    pclose_struct();
+    EXPECT_NO_ERROR(punpost_struct(WS, 1));
+    EXPECT_NO_ERROR(ppost_struct(WS, 2, 0.5f));
+    attach("pick 384 384\npick 384 384\n");
+    Ppick_path_elem items[3] = {{-1, -1, -1}, {-1, -1, -1}, {-1, -1, -1}};
+    Ppick_path path = {0, items};
+    Pin_status status = PIN_STATUS_NONE;
+    EXPECT_NO_ERROR(preq_pick(WS, 1, 1, &status, &path));
+    CHECK(status == PIN_STATUS_OK && path.depth == 2);
+    CHECK(items[0].struct_id == 2 && items[0].elem_pos == 1 && items[1].struct_id == -1);
+    EXPECT_NO_ERROR(preq_pick(WS, 1, 3, &status, &path));
+    CHECK(status == PIN_STATUS_OK && path.depth == 2);
+    CHECK(items[1].struct_id == 1 && items[1].elem_pos == 4 && items[1].pick_id == 7 &&
+          items[2].struct_id == -1);
+    EXPECT_NO_ERROR(punpost_struct(WS, 2));
+    EXPECT_NO_ERROR(ppost_struct(WS, 1, 0.5f));
+}
+
 static void request_each_class(void) {
     attach(
         "locator 192 192\nlocator 384 384\nstroke 0 768 384 384\nvaluator 1 0.75\nchoice 3\n"
@@ -265,6 +288,7 @@ int main(int argc, char** argv) {
     open_with_handler(errors);
     build_picture();
     pick_filter_starts_empty();
+    pick_path_depth_is_real();
     request_each_class();
     sample_each_class();
     events();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <random>
 
 namespace test_view_ws {
 
@@ -93,6 +94,82 @@ TEST_CASE("view mapping errors 151-164", "[view][errors]") {
               p.projectionReferencePoint.z = 0.5;
           }) == errors::PrpBetweenPlanes);
     CHECK(with([](ViewMapping&) {}) == 0);
+}
+
+TEST_CASE("perspective mappings give w > 0 in the view volume, the view plane on either side of the PRP",
+          "[view]") {
+    // With the view plane beyond the PRP (an inverted image, which the standard allows) w was
+    // negative throughout the volume, so clipping dropped everything (a tester's 732 of 5,000).
+    std::mt19937 rng(6122026);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int member = 0; member < 2000; ++member) {
+        ViewMapping p;
+        p.projection = ProjectionType::Perspective;
+        p.windowMin = {-1.0 - unit(rng), -1.0 - unit(rng)};
+        p.windowMax = {1.0 + unit(rng), 1.0 + unit(rng)};
+        p.backPlaneDistance = -1.0 - 2.0 * unit(rng);
+        p.frontPlaneDistance = 1.0 + 2.0 * unit(rng);
+        const bool above = member % 2 == 0;  // the PRP in front of the front plane, or behind the back
+        const double prpZ = above ? p.frontPlaneDistance + 0.5 + 4.0 * unit(rng)
+                                  : p.backPlaneDistance - 0.5 - 4.0 * unit(rng);
+        p.projectionReferencePoint = {unit(rng) - 0.5, unit(rng) - 0.5, prpZ};
+        p.viewPlaneDistance = -8.0 + 16.0 * unit(rng);  // either side of the PRP
+        if (std::abs(p.viewPlaneDistance - prpZ) < 1e-3) continue;
+        const glm::dmat4 m = evaluateViewMappingMatrix(p);
+        INFO("member " << member << ": PRP z " << prpZ << ", view plane " << p.viewPlaneDistance);
+        for (int k = 0; k < 8; ++k) {
+            const glm::dvec3 q(
+                4.0 * unit(rng) - 2.0, 4.0 * unit(rng) - 2.0,
+                p.backPlaneDistance + unit(rng) * (p.frontPlaneDistance - p.backPlaneDistance));
+            const glm::dvec4 h = m * glm::dvec4(q, 1.0);
+            CHECK(h.w > 0.0);
+            // The projector from the PRP through q meets the view plane at (x, y): the window's
+            // place of it is the viewport's place of (x/w, y/w).
+            const glm::dvec3 prp = p.projectionReferencePoint;
+            const double t = (p.viewPlaneDistance - prp.z) / (q.z - prp.z);
+            const glm::dvec2 onPlane = glm::dvec2(prp) + t * (glm::dvec2(q) - glm::dvec2(prp));
+            const glm::dvec2 expected = (onPlane - p.windowMin) / (p.windowMax - p.windowMin);
+            CHECK(std::abs(h.x / h.w - expected.x) < 1e-9);
+            CHECK(std::abs(h.y / h.w - expected.y) < 1e-9);
+            CHECK((h.z / h.w >= -1e-12 && h.z / h.w <= 1.0 + 1e-12));
+        }
+    }
+}
+
+TEST_CASE("view utilities refuse an input that is not finite, naming it", "[view][errors]") {
+    const double nan = std::numeric_limits<double>::quiet_NaN(),
+                 inf = std::numeric_limits<double>::infinity();
+    CHECK(errorOf([&] {
+              evaluateViewOrientationMatrix({0, 0, 0}, {0, 0, nan}, {0, 1, 0});
+          }) == errors::NonFiniteValue);
+    CHECK(errorOf([&] {
+              evaluateViewOrientationMatrix({inf, 0, 0}, {0, 0, 1}, {0, 1, 0});
+          }) == errors::NonFiniteValue);
+    CHECK(errorOf([&] {
+              evaluateViewOrientationMatrix({0, 0, 0}, {0, 0, 1}, {nan, 1, 0});
+          }) == errors::NonFiniteValue);
+    auto with = [](auto change) {
+        ViewMapping p;
+        p.backPlaneDistance = -1;
+        p.frontPlaneDistance = 1;
+        p.projectionReferencePoint = {0, 0, 5};
+        change(p);
+        return errorOf([&] { evaluateViewMappingMatrix(p); });
+    };
+    CHECK(with([&](ViewMapping& p) { p.windowMin.x = nan; }) == errors::NonFiniteValue);
+    CHECK(with([&](ViewMapping& p) { p.viewportMax.y = nan; }) == errors::NonFiniteValue);
+    CHECK(with([&](ViewMapping& p) { p.projectionReferencePoint.z = nan; }) == errors::NonFiniteValue);
+    CHECK(with([&](ViewMapping& p) { p.viewPlaneDistance = inf; }) == errors::NonFiniteValue);
+    CHECK(with([&](ViewMapping& p) { p.backPlaneDistance = -inf; }) == errors::NonFiniteValue);
+    ErrorLog log;
+    try {
+        ViewMapping p;
+        p.projectionReferencePoint.x = nan;
+        evaluateViewMappingMatrix(p, &log);
+    } catch (const Error&) {
+    }
+    REQUIRE(!log.entries().empty());
+    CHECK(log.entries().back().detail.find("projection reference point") != std::string::npos);
 }
 
 TEST_CASE("view table: entry 0 fixed, capacity, clip limits, input priority", "[view][ws]") {

@@ -1669,7 +1669,8 @@ void pset_string_mode(Pint ws_id, Pint string_num, Pop_mode op_mode, Pecho_switc
 void pset_pick_filter(Pint ws_id, Pint pick_num, const Pfilter* filter);
 
 /* REQUEST: stroke->points must hold the device's buffer size, string the buffer size + 1 chars;
- * a pick path is cut to `depth` items (pick->path_list holds them). A pick that hits nothing
+ * pick->path_list gets the pick path's first `depth` items and pick->depth the path's real
+ * depth, which can be more (as the sample implementation). A pick that hits nothing
  * is PIN_STATUS_NO_IN, a break PIN_STATUS_NONE. */
 void preq_loc3(Pint ws_id, Pint loc_num, Pin_status* in_status, Pint* view_ind, Ppoint3* loc_pos);
 void preq_loc(Pint ws_id, Pint loc_num, Pin_status* in_status, Pint* view_ind, Ppoint* loc_pos);

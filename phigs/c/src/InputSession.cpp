@@ -287,13 +287,15 @@ Measure sampleMeasure(Workstation& ws, InputClass inputClass, Pint number, const
 void answerPickPath(const PickMeasure& m, Pint depth, Ppick_path* out, const char* function) {
     if (depth < 0) throw Error(kBadArgument, function, "negative pick path depth");
     require(out, function);
-    const Pint n = std::min(depth, static_cast<Pint>(m.path.size()));
+    // As the sample implementation: the path's real depth, and its first `depth` items (so an
+    // application can tell a path was cut).
+    const Pint real = static_cast<Pint>(m.path.size()), n = std::min(depth, real);
     if (n > 0) require(out->path_list, function);
     for (Pint i = 0; i < n; ++i) {
         const PickPathItem& item = m.path[static_cast<std::size_t>(i)];
         out->path_list[i] = {item.structureId, item.pickId, item.elementNumber};
     }
-    out->depth = n;
+    out->depth = real;
 }
 
 void answerStroke(const StrokeMeasure& m, Pint* view, Ppoint_list3* out, const char* function) {

@@ -3,13 +3,27 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace phigs {
+namespace {
+
+template <class Vector>
+void requireFinite(const Vector& value, const char* name, ErrorLog* log, const char* function) {
+    for (int i = 0; i < Vector::length(); ++i)
+        if (!std::isfinite(value[i]))
+            raise(log, errors::NonFiniteValue, function, std::string(name) + " is not finite");
+}
+
+}  // namespace
 
 glm::dmat4 evaluateViewOrientationMatrix(const glm::dvec3& viewReferencePoint,
                                          const glm::dvec3& viewPlaneNormal, const glm::dvec3& viewUp,
                                          ErrorLog* log) {
     const char* function = "EVALUATE VIEW ORIENTATION MATRIX 3";
+    requireFinite(viewReferencePoint, "the view reference point", log, function);
+    requireFinite(viewPlaneNormal, "the view plane normal", log, function);
+    requireFinite(viewUp, "the view up vector", log, function);
     if (glm::length(viewPlaneNormal) == 0.0) raise(log, errors::ZeroViewPlaneNormal, function);
     if (glm::length(viewUp) == 0.0) raise(log, errors::ZeroViewUp, function);
     glm::dvec3 n = glm::normalize(viewPlaneNormal);
@@ -32,6 +46,12 @@ glm::dmat4 evaluateViewOrientationMatrix(const glm::dvec3& viewReferencePoint,
 
 glm::dmat4 evaluateViewMappingMatrix(const ViewMapping& p, ErrorLog* log) {
     const char* function = "EVALUATE VIEW MAPPING MATRIX 3";
+    requireFinite(glm::dvec4(p.windowMin, p.windowMax), "the window", log, function);
+    requireFinite(p.viewportMin, "the projection viewport", log, function);
+    requireFinite(p.viewportMax, "the projection viewport", log, function);
+    requireFinite(p.projectionReferencePoint, "the projection reference point", log, function);
+    requireFinite(glm::dvec3(p.viewPlaneDistance, p.backPlaneDistance, p.frontPlaneDistance),
+                  "a plane distance", log, function);
     if (p.windowMin.x >= p.windowMax.x || p.windowMin.y >= p.windowMax.y)
         raise(log, errors::InvalidWindow, function);
     if (p.viewportMin.x >= p.viewportMax.x || p.viewportMin.y >= p.viewportMax.y ||
@@ -94,7 +114,10 @@ glm::dmat4 evaluateViewMappingMatrix(const ViewMapping& p, ErrorLog* log) {
     rows[2][3] = 1.0 / d;
     glm::dmat4 toPrp(1.0);
     toPrp[3] = glm::dvec4(-prp, 1.0);
-    return rows * toPrp;
+    // w = n1 / d is negative throughout the view volume where the view plane lies beyond the
+    // PRP (an inverted image, which the standard allows); the same matrix negated keeps x/w, y/w
+    // and z/w and gives w > 0 there, which clipping requires.
+    return nBack / d > 0.0 ? rows * toPrp : -(rows * toPrp);
 }
 
 }  // namespace phigs

@@ -111,7 +111,8 @@ inline constexpr int StructureCycle = -201;        ///< execute structure would 
 inline constexpr int InvalidElementData = -202;    ///< element contents break the primitive's rules
 inline constexpr int NetworkTooDeep = -203;        ///< more nested executes than kMaxNetworkDepth
 inline constexpr int BadColourMappingData = -207;  ///< a colour mapping data record breaks its method's rules
-inline constexpr int NonFiniteValue = -208;  ///< a real in a representation or view matrix is NaN or infinite
+inline constexpr int NonFiniteValue =
+    -208;  ///< a real in a representation, view matrix or view utility's input is NaN or infinite
 }  // namespace errors
 
 }  // namespace phigs

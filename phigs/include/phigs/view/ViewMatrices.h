@@ -24,14 +24,16 @@ struct ViewMapping {
 };
 
 /// EVALUATE VIEW ORIENTATION MATRIX 3: world -> VRC, the view reference point to the origin, n
-/// along the view plane normal, v the projection of the view up vector. Errors 159, 160, 161.
+/// along the view plane normal, v the projection of the view up vector. Errors 159, 160, 161, and
+/// -208 for an input that is not finite.
 glm::dmat4 evaluateViewOrientationMatrix(const glm::dvec3& viewReferencePoint,
                                          const glm::dvec3& viewPlaneNormal, const glm::dvec3& viewUp,
                                          ErrorLog* log = nullptr);
 
 /// EVALUATE VIEW MAPPING MATRIX 3: VRC -> NPC (homogeneous for perspective), the window onto the
 /// projection viewport, the back plane to viewportMin.z and the front plane to viewportMax.z.
-/// Errors 151, 152, 155, 158, 162, 163, 164.
+/// A perspective matrix gives w > 0 in the view volume, also where the view plane lies beyond the
+/// PRP. Errors 151, 152, 155, 158, 162, 163, 164, and -208 for an input that is not finite.
 glm::dmat4 evaluateViewMappingMatrix(const ViewMapping& mapping, ErrorLog* log = nullptr);
 
 }  // namespace phigs
