@@ -25,6 +25,17 @@ bool near(glm::dvec3 a, glm::dvec3 b) {
     return glm::length(a - b) < 1e-12;
 }
 
+/// The error EVALUATE VIEW MAPPING MATRIX 3 gives for a valid mapping that `change` alters.
+template <class Change>
+int mappingError(Change change) {
+    ViewMapping p;
+    p.backPlaneDistance = -1;
+    p.frontPlaneDistance = 1;
+    p.projectionReferencePoint = {0, 0, 5};
+    change(p);
+    return errorOf([&] { evaluateViewMappingMatrix(p); });
+}
+
 }  // namespace
 
 TEST_CASE("evaluate view orientation matrix", "[view]") {
@@ -74,14 +85,7 @@ TEST_CASE("evaluate view mapping matrix: parallel and perspective", "[view]") {
 }
 
 TEST_CASE("view mapping errors 151-164", "[view][errors]") {
-    auto with = [](auto change) {
-        ViewMapping p;
-        p.backPlaneDistance = -1;
-        p.frontPlaneDistance = 1;
-        p.projectionReferencePoint = {0, 0, 5};
-        change(p);
-        return errorOf([&] { evaluateViewMappingMatrix(p); });
-    };
+    auto with = [](auto change) { return mappingError(change); };
     CHECK(with([](ViewMapping& p) { p.windowMax.x = -1; }) == errors::InvalidWindow);
     CHECK(with([](ViewMapping& p) { p.viewportMin.z = 0.5, p.viewportMax.z = 0.2; }) ==
           errors::InvalidViewport);
@@ -148,14 +152,7 @@ TEST_CASE("view utilities refuse an input that is not finite, naming it", "[view
     CHECK(errorOf([&] {
               evaluateViewOrientationMatrix({0, 0, 0}, {0, 0, 1}, {nan, 1, 0});
           }) == errors::NonFiniteValue);
-    auto with = [](auto change) {
-        ViewMapping p;
-        p.backPlaneDistance = -1;
-        p.frontPlaneDistance = 1;
-        p.projectionReferencePoint = {0, 0, 5};
-        change(p);
-        return errorOf([&] { evaluateViewMappingMatrix(p); });
-    };
+    auto with = [](auto change) { return mappingError(change); };
     CHECK(with([&](ViewMapping& p) { p.windowMin.x = nan; }) == errors::NonFiniteValue);
     CHECK(with([&](ViewMapping& p) { p.viewportMax.y = nan; }) == errors::NonFiniteValue);
     CHECK(with([&](ViewMapping& p) { p.projectionReferencePoint.z = nan; }) == errors::NonFiniteValue);

@@ -69,8 +69,7 @@ std::string numberProblem(const std::string& token) {
         return {};
     }
     const double value = std::strtod(plain.c_str(), nullptr);
-    if ((errno == ERANGE && std::abs(value) > 1.0) || !(std::abs(value) <= kStepRealLimit))
-        return "is out of range (beyond 1e100, which OpenCASCADE treats as infinite)";
+    if (beyondRealLimit(value, errno == ERANGE)) return kBeyondRealLimit;
     return {};
 }
 

@@ -1,5 +1,6 @@
 #include "ShapeBuild.h"
 
+#include "UvPolygon.h"
 #include "geom/BezierExtraction.h"
 #include "geom/GeometryError.h"
 #include "geom/exchange/OcctConversion.h"
@@ -24,13 +25,6 @@
 namespace geom::exchange {
 
 namespace {
-
-/// Twice the signed area of a closed polygon in (u, v): positive counter-clockwise.
-double signedArea(const std::vector<glm::dvec2>& uv) {
-    double a = 0;
-    for (std::size_t i = 0; i + 1 < uv.size(); ++i) a += uv[i].x * uv[i + 1].y - uv[i + 1].x * uv[i].y;
-    return a;
-}
 
 bool inside(const glm::dvec2& p, const std::vector<glm::dvec2>& polygon) {
     bool in = false;
@@ -124,7 +118,7 @@ TopoDS_Compound loopFaces(const opencascade::handle<Geom_BSplineSurface>& suppor
     std::vector<double> area(loops.size());
     for (std::size_t i = 0; i < loops.size(); ++i) {
         checkLoop(loops[i], i);
-        area[i] = signedArea(loops[i].uv);
+        area[i] = twiceSignedArea(loops[i].uv);
     }
     // Each clockwise loop is a hole of the smallest counter-clockwise loop around it, a period
     // along a periodic direction counting as none: a loop across the seam has its middle in the

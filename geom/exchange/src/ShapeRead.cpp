@@ -1,5 +1,6 @@
 #include "ShapeRead.h"
 #include "FailureText.h"
+#include "UvPolygon.h"
 
 #include "geom/GeometryError.h"
 #include "geom/Reparameterize.h"
@@ -275,12 +276,7 @@ void unwrapLoops(std::vector<SurfaceLoop>& loops, const Surface& surface) {
 }
 
 void outerLoopsFirst(std::vector<SurfaceLoop>& loops) {
-    auto area = [](const SurfaceLoop& loop) {
-        double twice = 0.0;
-        for (std::size_t k = 0; k + 1 < loop.uv.size(); ++k)
-            twice += loop.uv[k].x * loop.uv[k + 1].y - loop.uv[k + 1].x * loop.uv[k].y;
-        return twice;
-    };
+    auto area = [](const SurfaceLoop& loop) { return twiceSignedArea(loop.uv); };
     if (loops.empty()) return;
     // The outer loop holds the holes: the largest, turned counter-clockwise; every other loop is
     // a hole, turned clockwise (a confused reader can turn any of them round).

@@ -27,7 +27,7 @@ bool outOfRange(const std::string& token) {
     char* end = nullptr;
     const double value = std::strtod(token.c_str(), &end);
     if (end == token.c_str()) return false;
-    return errno == ERANGE ? std::abs(value) > 1.0 : !(std::abs(value) <= kStepRealLimit);
+    return beyondRealLimit(value, errno == ERANGE);
 }
 
 }  // namespace
@@ -62,8 +62,8 @@ std::optional<std::string> firstOutOfRangeStepReal(std::istream& in) {
             return "line " + std::to_string(line) + ": a number of more than " +
                    std::to_string(kMaxNumberLength) + " characters";
         if (outOfRange(token))
-            return "line " + std::to_string(line) + ": the real " + token.substr(0, 40) +
-                   " is out of range (beyond 1e100, which OpenCASCADE treats as infinite)";
+            return "line " + std::to_string(line) + ": the real " + token.substr(0, 40) + " " +
+                   kBeyondRealLimit;
         c = token.back();
     }
     return std::nullopt;
