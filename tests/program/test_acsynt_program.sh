@@ -46,6 +46,12 @@ last_line_is badview.out "1 error in badview.session"
 run badview_keep 3 --script badview.session --keep-going --output out_badview_keep --size 320x240
 [ -f out_badview_keep/after.txt ] || fail "badview keep-going: the run stopped early"
 
+# A script that ends with a prompt open (READ MODEL's file name never given) left its command undone.
+printf 'choice FILE\nchoice READ_MODEL\n' >open.session
+run openprompt 3 --script open.session --output out_open --size 320x240
+last_line_is openprompt.out "1 error in open.session"
+expect_in out_open/acsynt.log "THE SCRIPT ENDED AT THE PROMPT"
+
 # Lines no menu or device takes are errors too, each naming its line in the log.
 printf 'choice 0\nchoice FILE device 7\nstring hello\nchoice FILE\n' >ignored.session
 run ignored 3 --script ignored.session --keep-going --output out_ignored --size 320x240

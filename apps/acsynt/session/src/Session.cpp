@@ -235,16 +235,25 @@ bool Session::step(std::chrono::milliseconds timeout) {
         std::optional<EventReport> report = queue_.awaitEvent(timeout);
         if (report) handle(*report);
     } catch (const InputExhausted&) {
-        core_.finished = true;
+        endOfInput();
     } catch (const phigs::Error& e) {
         fail(e.what());
     } catch (const ScriptError& e) {
         fail(e.what());
     }
-    if (!core_.finished && source_.exhausted() && queue_.size() == 0) core_.finished = true;
+    if (!core_.finished && source_.exhausted() && queue_.size() == 0) endOfInput();
     if (core_.settings.stopAtFirstError && core_.failedLines > 0) core_.finished = true;
     followStringEcho();
     return !core_.finished;
+}
+
+void Session::endOfInput() {
+    core_.finished = true;
+    // A script that ends with a prompt open leaves its last command undone: that fails (a window
+    // closed at a prompt is the user's choice).
+    if (core_.awaiting != Awaiting::Nothing &&
+        core_.settings.workstationType != phigs::WorkstationType::Window)
+        fail("THE SCRIPT ENDED AT THE PROMPT '" + core_.prompt + "' WITH NO ANSWER");
 }
 
 void Session::followStringEcho() {

@@ -38,6 +38,7 @@ void Session::choose(const std::string& item) {
 
 void Session::prompt(const std::string& s, Awaiting what) {
     core_.awaiting = what;
+    core_.prompt = s;
     say(s);
 }
 

@@ -149,6 +149,8 @@ private:
     glm::dvec2 sliderRange(int device) const;
     void initialiseString();  ///< string 1, echoed on the right of the message line
     void followStringEcho();
+    /// The input is exhausted: the session ends (a script's open prompt fails its line).
+    void endOfInput();
     void handle(const phigs::EventReport& report);
     /// Runs a command; bad input it throws (a model file's, geometry's, PHIGS's) fails its line.
     void reportingFailures(const std::function<void()>& command);

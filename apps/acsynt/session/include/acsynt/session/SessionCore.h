@@ -106,6 +106,7 @@ public:
     std::vector<std::string> log;
     Phase phase = Phase::None;
     Awaiting awaiting = Awaiting::Nothing;
+    std::string prompt;  ///< the open prompt's text
     bool finished = false;
     std::size_t failedLines = 0;
     std::size_t lastFailedAction = 0;
