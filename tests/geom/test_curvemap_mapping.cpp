@@ -600,4 +600,48 @@ TEST_CASE("a closed curve that starts next to the boundary crosses it inside its
     CHECK(crossed > 30);
 }
 
+TEST_CASE("a surface whose parameters lie far from zero maps as it does at zero", "[geom][curvemap]") {
+    // The exact boundary crossing asked its Newton residual for 1e-13 of the model, below what
+    // rounding a parameter near 1e4 leaves, and so found no crossing on a constant-w edge: the
+    // part was "not mapped" (a tester's 53 of 88 edge and corner placements with |u| > 4000).
+    const Surface base = makeWaveSurface();
+    const CurveMapper& near = wave();
+    const SurfaceDomain& d = near.domain();
+    const Curve circle = loadCurves("circle.crv").front();
+    std::mt19937 rng(6122026);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int member = 0; member < 16; ++member) {
+        const double offsetU = (member % 2 ? -1.0 : 1.0) * std::pow(10.0, 3.0 + 3.0 * unit(rng));
+        const double offsetW = member % 4 < 2 ? 0.0 : std::pow(10.0, 3.0 + 3.0 * unit(rng));
+        Surface shifted = base;
+        for (double& k : shifted.knotsU) k += offsetU;
+        for (double& k : shifted.knotsV) k += offsetW;
+        const CurveMapper far(shifted);
+        // On an edge or at a corner, where the circle crosses the boundary.
+        const glm::dvec2 reference{
+            member % 3 == 0 ? d.u0 : d.u0 + unit(rng) * (d.u1 - d.u0),
+            member % 3 == 1 ? d.w1 : d.w0 + (member % 3 == 0 ? 0.0 : unit(rng)) * (d.w1 - d.w0)};
+        const int turns = static_cast<int>(rng() % 4);
+        const MapResult atZero = near.map({circle}, at(reference.x, reference.y, turns, false), {1e-3});
+        const MapResult atOffset =
+            far.map({circle}, at(reference.x + offsetU, reference.y + offsetW, turns, false), {1e-3});
+        INFO("member " << member << ": offsets " << offsetU << ", " << offsetW << ", reference "
+                       << reference.x << ", " << reference.y);
+        checkMapping(far, atOffset, {circle});
+        const MappedPart &a = atZero.parts[0], &b = atOffset.parts[0];
+        CHECK(b.issues.size() == a.issues.size());
+        CHECK(b.loops.size() == a.loops.size());
+        CHECK(b.exits == a.exits);
+        CHECK(b.entries == a.entries);
+        double areaA = 0.0, areaB = 0.0;
+        for (const MappedLoop& loop : a.loops) areaA += signedArea(loop.uv);
+        for (const MappedLoop& loop : b.loops) {
+            std::vector<glm::dvec2> back = loop.uv;
+            for (glm::dvec2& uv : back) uv -= glm::dvec2(offsetU, offsetW);
+            areaB += signedArea(back);
+        }
+        CHECK(std::abs(areaB - areaA) <= 1e-6 * std::abs(areaA) + 1e-9);
+    }
+}
+
 }  // namespace test_curvemap_mapping

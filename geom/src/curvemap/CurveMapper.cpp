@@ -357,7 +357,11 @@ bool PartMapper::crossing(const Sample& inside, const Sample& outside, Vertex& v
             const bool closedTau = e.constantU ? domain_.closedW : domain_.closedU;
             if (!closedTau) tau = std::clamp(tau, e.tau0, e.tau1);
             t += step.z;
-            converged = glm::length(f) < 1e-13 * (1.0 + glm::length(p)) &&
+            // f cannot fall below what rounding the parameters leaves: a domain far from 0 (u near
+            // 1e4) moves S by |dS/dtau| eps |tau| per rounding.
+            const double rounding = 8.0 * std::numeric_limits<double>::epsilon() *
+                                    (std::abs(tau) * glm::length(stau) + std::abs(s) * glm::length(dp));
+            converged = glm::length(f) < 1e-13 * (1.0 + glm::length(p)) + rounding &&
                         std::abs(step.x) <= 1e-14 * (1.0 + std::abs(s)) + sSlack;
         }
         if (!converged || s < sLo - sSlack || s > sHi + sSlack) continue;
