@@ -231,7 +231,16 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
             take(polishOnPiece(segment.piece, p, start), segment.piece);
             if (segment.depth == 0) take(polishOnPiece(segment.piece, p, 0.5 * (ua + ub)), segment.piece);
         }
-        if (bound < best.distance - tolerance && mayHalve(segment.depth, points)) split(segment);
+        if (!(bound < best.distance - tolerance)) continue;
+        if (mayHalve(segment.depth, points)) {
+            split(segment);
+        } else if (!detail::provablyFarther(polygon, n, 1, p, best.distance - tolerance)) {
+            // A leaf that may still hold a nearer point (wide weights can fold a local maximum
+            // into a segment below the halving size): Newton from its Bezier abscissae.
+            for (int k = 0; k <= degree_; ++k)
+                take(polishIn(segment.piece, p, ua + (ub - ua) * k / std::max(degree_, 1), ua, ub),
+                     segment.piece);
+        }
     }
     detail::checkDistance(best.distance, "closestPoint");
     return beforeJump(best, bestPiece);

@@ -329,7 +329,33 @@ private:
         if (!holdsBest)
             take(projector_.polishIn(region.patch, p_, start, patch.u0, patch.u1, patch.v0, patch.v1),
                  region.patch);
-        if (bound < best_.distance - tolerance_ && mayHalve(region)) split(region);
+        if (!(bound < best_.distance - tolerance_)) return;
+        if (mayHalve(region))
+            split(region);
+        else if (!detail::provablyFarther(net, pu_, qv_, p_, best_.distance - tolerance_))
+            settleLeaf(region, ua, ub, va, vb);
+    }
+
+    /// A region too small to halve that may still hold a nearer point (wide weights can fold a
+    /// local maximum into it): Newton held inside it from its net's point nearest to p (points_
+    /// holds the region's net), and where the best so far sits on the region's edge (Newton stopped
+    /// there, the minimum just inside), also from its corners, edge middles and centre.
+    void settleLeaf(const Region& region, double ua, double ub, double va, double vb) {
+        const std::size_t nearest = detail::nearestPoint(points_, p_);
+        const glm::dvec2 start{
+            ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
+            va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
+        take(projector_.polishIn(region.patch, p_, start, ua, ub, va, vb), region.patch);
+        const glm::dvec2 uv = best_.uv;
+        const bool onEdge = bestPatch_ == region.patch && uv.x >= ua && uv.x <= ub && uv.y >= va &&
+                            uv.y <= vb && (uv.x == ua || uv.x == ub || uv.y == va || uv.y == vb);
+        if (!onEdge) return;
+        for (int i = 0; i <= 2; ++i)
+            for (int j = 0; j <= 2; ++j)
+                take(
+                    projector_.polishIn(region.patch, p_,
+                                        {ua + 0.5 * i * (ub - ua), va + 0.5 * j * (vb - va)}, ua, ub, va, vb),
+                    region.patch);
     }
 
     using Entry = std::pair<double, std::ptrdiff_t>;
