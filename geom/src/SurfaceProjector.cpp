@@ -95,6 +95,10 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
 constexpr int kMaxProjectionDepth = 8;
 constexpr int kHardDepth = 24;
 constexpr double kLargeRegion = 1e-3;
+/// Halvings one query may make. Near a pole or a collapsed edge every region touching it holds
+/// points at the best distance, which no bound separates: each halving there quadruples them,
+/// and one query took 32 s. Past the budget regions are settled as leaves.
+constexpr std::size_t kSplitBudget = std::size_t(1) << 13;
 
 }  // namespace
 
@@ -265,6 +269,7 @@ private:
     }
 
     void split(const Region& region) {
+        ++splits_;
         // Four quarter nets: halve along u into the pool, then each half along v.
         const std::size_t base = pool_.size();
         pool_.resize(base + 6 * netSize_);
@@ -295,6 +300,7 @@ private:
 
     /// Whether a region may be halved again (points_ holds its net's points).
     bool mayHalve(const Region& region) const {
+        if (splits_ >= kSplitBudget) return false;
         if (region.depth < kMaxProjectionDepth) return true;
         if (region.depth >= kHardDepth) return false;
         BoundingBox box;
@@ -367,6 +373,7 @@ private:
     const double tolerance_;
     SurfacePoint best_;
     std::size_t bestPatch_ = 0;
+    std::size_t splits_ = 0;
     glm::dvec3 toward_{0.0};
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
     // Scratch kept per thread between queries, so a query allocates nothing once warm.
