@@ -224,6 +224,13 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
         }
 }
 
+/// a over its largest coordinate: the cross product of two such neither overflows nor underflows
+/// (a surface of 1e200 or of 1e-200), and has the same direction.
+glm::dvec3 unitScaled(const glm::dvec3& a) {
+    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    return m > 0.0 && std::isfinite(m) ? a / m : a;
+}
+
 }  // namespace
 
 glm::dvec3 evaluate(const Curve& curve, double u) {
@@ -254,10 +261,15 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
 
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
-    const glm::dvec3 n = glm::cross(su, sv);
-    // |n| > 1e-12 |su| |sv|, compared squared: one square root a point instead of three.
-    const double len2 = glm::dot(n, n);
-    if (len2 > 1e-24 * glm::dot(su, su) * glm::dot(sv, sv) && len2 > 0.0) return n / std::sqrt(len2);
+    // |n| > 1e-12 |a| |b|, compared squared: one square root a point instead of three. Where the
+    // product overflows or underflows (derivatives of 1e150 or 1e-150), the scaled ones decide.
+    for (const bool scaled : {false, true}) {
+        const glm::dvec3 a = scaled ? unitScaled(su) : su, b = scaled ? unitScaled(sv) : sv;
+        const glm::dvec3 n = glm::cross(a, b);
+        const double len2 = glm::dot(n, n);
+        if (len2 > 1e-24 * glm::dot(a, a) * glm::dot(b, b) && len2 > 0.0 && std::isfinite(len2))
+            return n / std::sqrt(len2);
+    }
     // Only the degenerate case reads the surface.
     detail::checkShape(surface, "normalFromDerivatives");
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
@@ -275,9 +287,10 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
         const double uu = clampTo(u + dirU * t * (u1 - u0), u0, u1);
         const double vv = clampTo(v + dirV * t * (v1 - v0), v0, v1);
         const SurfaceDerivatives d = derivatives(surface, uu, vv, 1);
-        const glm::dvec3 m = glm::cross(d.at(1, 0), d.at(0, 1));
+        const glm::dvec3 du = unitScaled(d.at(1, 0)), dv = unitScaled(d.at(0, 1));
+        const glm::dvec3 m = glm::cross(du, dv);
         const double ml = glm::length(m);
-        if (ml > 1e-12 * glm::length(d.at(1, 0)) * glm::length(d.at(0, 1)) && ml > 0.0) return m / ml;
+        if (ml > 1e-12 * glm::length(du) * glm::length(dv) && ml > 0.0) return m / ml;
     }
     return glm::dvec3(0.0);
 }

@@ -120,7 +120,8 @@ std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Cl
     for (std::size_t k = 1; k < t.size(); ++k)
         if (!(t[k] > t[k - 1]))
             throw GeometryError("chord-length parameters: points " + std::to_string(k - 1) + " and " +
-                                std::to_string(k % points.size()) + " coincide");
+                                std::to_string(k % points.size()) +
+                                " coincide or lie too close to tell apart");
     return t;
 }
 

@@ -112,7 +112,7 @@ std::vector<double> interpolationParameters(const std::vector<glm::dvec3>& point
         if (kind == Parameterization::Centripetal) step = std::sqrt(d);
         if (kind != Parameterization::Uniform && !(step > 0.0))
             throw GeometryError("interpolateCubic: " + pointName(i - 1) + " and " + pointName(i) +
-                                " coincide, so they get the same parameter");
+                                " coincide (or lie too close to tell apart), so they get the same parameter");
         t[i] = t[i - 1] + step;
         // A chord too long for a double (coordinates past about 1e154), or one lost to rounding
         // next to a much longer sum, leaves no usable parameter.

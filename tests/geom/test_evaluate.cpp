@@ -2,6 +2,7 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "geom/GridEvaluator.h"
+#include "geom/Primitives.h"
 
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
@@ -106,6 +107,26 @@ TEST_CASE("normal at a collapsed edge is the limit from inside", "[geom][evaluat
     const glm::dvec3 n = normal(s, 0.0, 0.0);
     REQUIRE(glm::length(n) == Approx(1.0));
     REQUIRE(std::abs(n.z) == Approx(1.0).margin(1e-9));
+}
+
+TEST_CASE("normals of a surface scaled by 1e-150 to 1e200 are those of the surface", "[geom][evaluate]") {
+    // Su x Sv overflowed (or underflowed) there, and normal() gave (0, 0, 0) as for a degenerate
+    // surface.
+    const Surface sphere = makeSphere(1.0);
+    std::mt19937 rng(6122026);
+    std::uniform_real_distribution<double> unit(0.05, 0.95);
+    for (const double scale : {1e-150, 1e-100, 1e100, 1e150, 1e200}) {
+        Surface scaled = sphere;
+        for (glm::dvec3& q : scaled.points) q *= scale;
+        for (int k = 0; k < 50; ++k) {
+            const double u =
+                sphere.domainStartU() + unit(rng) * (sphere.domainEndU() - sphere.domainStartU());
+            const double v =
+                sphere.domainStartV() + unit(rng) * (sphere.domainEndV() - sphere.domainStartV());
+            INFO("scale " << scale << " at (" << u << ", " << v << ")");
+            CHECK(glm::length(normal(scaled, u, v) - normal(sphere, u, v)) < 1e-12);
+        }
+    }
 }
 
 TEST_CASE("bad curves and surfaces are refused with the rule they break", "[geom][validate]") {
