@@ -2159,6 +2159,8 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
                     measureDeviation(surface, surface, std::max(2, options.samplesPerSpan / 2));
             return unchanged;
         }
+        r.removedU = surface.countU - r.surface.countU;  // counted from the original's rows
+        r.removedV = surface.countV - r.surface.countV;
         return r;
     }
     return reduceClampedSurface(surface, direction, options);

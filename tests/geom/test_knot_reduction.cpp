@@ -780,6 +780,8 @@ TEST_CASE("reduceSurface keeps the edges of periodic surfaces and a closed seam 
         INFO("member " << member << ": degrees " << s.degreeU << ", " << s.degreeV << ", periodic in "
                        << (periodicU ? "u" : "v") << ", direction " << int(direction));
         CHECK(r.surface.points.size() <= s.points.size());
+        CHECK(r.removedU == s.countU - r.surface.countU);
+        CHECK(r.removedV == s.countV - r.surface.countV);
         CHECK(measureDeviation(s, r.surface).maxError <= o.tolerance);
         double seam = 0.0, corner = 0.0;
         for (int k = 0; k <= 40; ++k) {
