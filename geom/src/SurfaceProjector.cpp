@@ -316,15 +316,12 @@ private:
         const double ub = patch.u0 + region.s1 * (patch.u1 - patch.u0);
         const double va = patch.v0 + region.t0 * (patch.v1 - patch.v0);
         const double vb = patch.v0 + region.t1 * (patch.v1 - patch.v0);
-        const bool holdsBest = std::isfinite(best_.distance) && bestPatch_ == region.patch &&
-                               best_.uv.x >= ua && best_.uv.x <= ub && best_.uv.y >= va && best_.uv.y <= vb;
+        const bool holdsBest = std::isfinite(best_.distance) && bestIn(region, ua, ub, va, vb);
         const glm::dvec4* net = pool_.data() + region.net;
         detail::project(net, netSize_, points_);
         glm::dvec2 start = best_.uv;
         if (!holdsBest) {
-            const std::size_t nearest = detail::nearestPoint(points_, p_);
-            start = {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
-                     va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
+            start = nearestAbscissa(ua, ub, va, vb);
             if (region.depth == 0) start = projector_.patchStart(region.patch, p_, start);
         }
         if (detail::provablyConvex(net, points_, pu_, qv_, p_)) {
@@ -347,21 +344,31 @@ private:
     /// holds the region's net), and where the best so far sits on the region's edge (Newton stopped
     /// there, the minimum just inside), also from its corners, edge middles and centre.
     void settleLeaf(const Region& region, double ua, double ub, double va, double vb) {
-        const std::size_t nearest = detail::nearestPoint(points_, p_);
-        const glm::dvec2 start{
-            ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
-            va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
-        take(projector_.polishIn(region.patch, p_, start, ua, ub, va, vb), region.patch);
+        take(projector_.polishIn(region.patch, p_, nearestAbscissa(ua, ub, va, vb), ua, ub, va, vb),
+             region.patch);
         const glm::dvec2 uv = best_.uv;
-        const bool onEdge = bestPatch_ == region.patch && uv.x >= ua && uv.x <= ub && uv.y >= va &&
-                            uv.y <= vb && (uv.x == ua || uv.x == ub || uv.y == va || uv.y == vb);
-        if (!onEdge) return;
+        if (!bestIn(region, ua, ub, va, vb) || !(uv.x == ua || uv.x == ub || uv.y == va || uv.y == vb))
+            return;
         for (int i = 0; i <= 2; ++i)
             for (int j = 0; j <= 2; ++j)
                 take(
                     projector_.polishIn(region.patch, p_,
                                         {ua + 0.5 * i * (ub - ua), va + 0.5 * j * (vb - va)}, ua, ub, va, vb),
                     region.patch);
+    }
+
+    /// Whether the best so far lies in the region's parameters [ua, ub] x [va, vb].
+    bool bestIn(const Region& region, double ua, double ub, double va, double vb) const {
+        return bestPatch_ == region.patch && best_.uv.x >= ua && best_.uv.x <= ub && best_.uv.y >= va &&
+               best_.uv.y <= vb;
+    }
+
+    /// The Bezier abscissa in [ua, ub] x [va, vb] of the region's net point nearest to p (points_
+    /// holds the net's points).
+    glm::dvec2 nearestAbscissa(double ua, double ub, double va, double vb) const {
+        const std::size_t nearest = detail::nearestPoint(points_, p_);
+        return {ua + (ub - ua) * static_cast<double>(nearest / qv_) / static_cast<double>(pu_ - 1),
+                va + (vb - va) * static_cast<double>(nearest % qv_) / static_cast<double>(qv_ - 1)};
     }
 
     using Entry = std::pair<double, std::ptrdiff_t>;
