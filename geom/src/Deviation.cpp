@@ -283,10 +283,9 @@ std::vector<double> interpolate(const std::vector<double>& xs, const std::vector
     return out;
 }
 
-// A grid's maxima can sit between its vertices (by a sixth of the maximum, found on random
-// reductions). Each local maximum within a tenth of the largest is followed by a compass search
-// inside its neighbours' cell, to 5e-4 of the cell; distanceAt(u, v) measures as the vertices
-// are measured and gives a distance to a real point, so the result never overstates (a global
+// A grid's maxima can sit between its vertices. Each local maximum within a tenth of the largest is followed
+// by a compass search inside its neighbours' cell, to 5e-4 of the cell; distanceAt(u, v) measures as the
+// vertices are measured and gives a distance to a real point, so the result never overstates (a global
 // projection where the local one would raise the largest so far, passed as its third argument).
 template <class Distance>
 double followPeaks(const std::vector<double>& u, const std::vector<double>& v, const std::vector<double>& d,

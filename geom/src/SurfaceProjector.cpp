@@ -96,8 +96,8 @@ constexpr int kMaxProjectionDepth = 8;
 constexpr int kHardDepth = 24;
 constexpr double kLargeRegion = 1e-3;
 /// Halvings one query may make. Near a pole or a collapsed edge every region touching it holds
-/// points at the best distance, which no bound separates: each halving there quadruples them,
-/// and one query took 32 s. Past the budget regions are settled as leaves.
+/// points at the best distance, which no bound separates: each halving there quadruples them.
+/// Past the budget regions are settled as leaves.
 constexpr std::size_t kSplitBudget = std::size_t(1) << 13;
 
 }  // namespace
