@@ -222,7 +222,33 @@ std::uint64_t StructureStore::networkStamp(int id) const {
 }
 
 bool StructureStore::wouldCycle(int parent, int child) const {
-    return network(child).contains(parent);
+    if (parent == child) return true;
+    // A cycle closes where `parent` is among `child`'s descendants, that is where `child` is
+    // among `parent`'s ancestors. The two searches take a structure each in turn and the first
+    // to run out decides: a chain built from either end costs a step or two per execute rather
+    // than the chain's length. The upward one needs the executing-structure index up to date.
+    std::unordered_set<int> down{child}, up{parent};
+    std::vector<int> downTodo{child}, upTodo{parent};
+    const bool upward = !parentsStale_;
+    for (;;) {
+        if (downTodo.empty()) return false;
+        const int below = downTodo.back();
+        downTodo.pop_back();
+        if (const Structure* s = find(below))
+            for (int id : executedBy(*s)) {
+                if (id == parent) return true;
+                if (down.insert(id).second) downTodo.push_back(id);
+            }
+        if (!upward) continue;
+        if (upTodo.empty()) return false;
+        const int above = upTodo.back();
+        upTodo.pop_back();
+        if (const std::vector<int>* parents = parents_.find(above))
+            for (int id : *parents) {
+                if (id == child) return true;
+                if (up.insert(id).second) upTodo.push_back(id);
+            }
+    }
 }
 
 void StructureStore::checkElement(const Element& e, int into, const char* function) const {
