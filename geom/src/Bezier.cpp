@@ -1,4 +1,5 @@
 #include "geom/Bezier.h"
+#include "NumberText.h"
 
 #include "geom/ControlNet.h"
 #include "geom/GeometryError.h"
@@ -105,8 +106,8 @@ std::pair<Curve, Curve> subdivide(const Curve& bezier, double u) {
     if (!isBezier(bezier)) throw GeometryError("subdivide: the curve is not a single Bézier segment");
     const double a = bezier.domainStart(), b = bezier.domainEnd();
     if (!(u > a && u < b))
-        throw GeometryError("subdivide: parameter " + std::to_string(u) + " is not inside (" +
-                            std::to_string(a) + ", " + std::to_string(b) + ")");
+        throw GeometryError("subdivide: parameter " + detail::numberText(u) + " is not inside (" +
+                            detail::numberText(a) + ", " + detail::numberText(b) + ")");
     const ControlNet net = homogeneousNet(bezier);
     ControlNet left, right;
     left.data.resize(net.data.size());
@@ -126,8 +127,8 @@ std::pair<Surface, Surface> subdivide(const Surface& bezier, double t, bool alon
     const double a = alongV ? bezier.domainStartV() : bezier.domainStartU();
     const double b = alongV ? bezier.domainEndV() : bezier.domainEndU();
     if (!(t > a && t < b))
-        throw GeometryError("subdivide: parameter " + std::to_string(t) + " is not inside (" +
-                            std::to_string(a) + ", " + std::to_string(b) + ")");
+        throw GeometryError("subdivide: parameter " + detail::numberText(t) + " is not inside (" +
+                            detail::numberText(a) + ", " + detail::numberText(b) + ")");
     const ControlNet net = homogeneousNet(bezier, false);
     ControlNet first, second;
     first.stride = second.stride = bezier.countV;

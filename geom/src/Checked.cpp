@@ -1,4 +1,5 @@
 #include "Checked.h"
+#include "NumberText.h"
 
 #include "geom/GeometryError.h"
 
@@ -20,9 +21,9 @@ void explainShape(const Surface& surface, const char* where) {
 }
 
 void parameterOutside(double value, double start, double end, const char* where, const char* name) {
-    throw GeometryError(std::string(where) + ": parameter " + name + " = " + std::to_string(value) +
-                        " is outside the domain [" + std::to_string(start) + ", " + std::to_string(end) +
-                        "]");
+    throw GeometryError(std::string(where) + ": parameter " + name + " = " + detail::numberText(value) +
+                        " is outside the domain [" + detail::numberText(start) + ", " +
+                        detail::numberText(end) + "]");
 }
 
 void spanNotOrdered(std::size_t span, const char* where) {
@@ -33,7 +34,7 @@ void spanNotOrdered(std::size_t span, const char* where) {
 void resultNotFinite(const char* where) {
     throw GeometryError(std::string(where) +
                         ": the result is not finite (a control point that is not finite, or a weight "
-                        "that is not positive, near the parameter)");
+                        "that is not a positive normal number, near the parameter)");
 }
 
 }  // namespace geom::detail

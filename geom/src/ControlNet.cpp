@@ -1,4 +1,5 @@
 #include "geom/ControlNet.h"
+#include "NumberText.h"
 
 #include "geom/GeometryError.h"
 
@@ -74,9 +75,9 @@ void checkParameter(const std::vector<double>& knots, int degree, std::size_t co
     const double lo = knots[static_cast<std::size_t>(degree)];
     const double hi = knots[count];
     if (!std::isfinite(u) || u < lo || u > hi)
-        throw GeometryError(std::string(where) + ": knot value " + std::to_string(u) +
-                            " lies outside the domain [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                            "]");
+        throw GeometryError(std::string(where) + ": knot value " + detail::numberText(u) +
+                            " lies outside the domain [" + detail::numberText(lo) + ", " +
+                            detail::numberText(hi) + "]");
 }
 
 }  // namespace
@@ -91,7 +92,7 @@ void insertKnotInNet(int degree, std::vector<double>& knots, ControlNet& net, do
     if (times == 0) return;
     const int s = static_cast<int>(std::count(knots.begin(), knots.end(), u));
     if (s + times > degree)
-        throw GeometryError(std::string(where) + ": inserting knot " + std::to_string(u) + " " +
+        throw GeometryError(std::string(where) + ": inserting knot " + detail::numberText(u) + " " +
                             std::to_string(times) + " times would raise its multiplicity " +
                             std::to_string(s) + " above the degree " + std::to_string(degree));
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -147,7 +148,7 @@ void refineNet(int degree, std::vector<double>& knots, ControlNet& net, std::vec
             static_cast<std::size_t>(std::count(knots.begin(), knots.end(), inserted[i])) + (j - i);
         if (total > static_cast<std::size_t>(degree))
             throw GeometryError(std::string(where) + ": refinement would raise the multiplicity of knot " +
-                                std::to_string(inserted[i]) + " to " + std::to_string(total) +
+                                detail::numberText(inserted[i]) + " to " + std::to_string(total) +
                                 ", above the degree " + std::to_string(degree));
         i = j;
     }

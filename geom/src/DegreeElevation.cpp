@@ -1,4 +1,5 @@
 #include "geom/DegreeElevation.h"
+#include "NumberText.h"
 
 #include "geom/Basis.h"
 #include "geom/ControlNet.h"
@@ -85,7 +86,7 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
     const std::size_t count = net.blocks();
     for (std::size_t k = p + 1; k < count; ++k)
         if (std::count(knots.begin(), knots.end(), knots[k]) > degree)
-            throw GeometryError("elevateDegree: interior knot " + std::to_string(knots[k]) +
+            throw GeometryError("elevateDegree: interior knot " + detail::numberText(knots[k]) +
                                 " has multiplicity degree + 1 (a break); split the curve there first");
     const int P = degree + times;
     std::vector<double> raised;

@@ -1,4 +1,5 @@
 #include "geom/KnotRemoval.h"
+#include "NumberText.h"
 
 #include "RemovalDetail.h"
 #include "geom/GeometryError.h"
@@ -27,11 +28,11 @@ KnotPlace locateKnot(const Curve& curve, double u) {
     const int p = curve.degree;
     const int n = static_cast<int>(curve.points.size()) - 1;
     if (!(u > curve.domainStart() && u < curve.domainEnd()))
-        throw GeometryError("removeKnot: " + std::to_string(u) + " is not inside the curve's domain");
+        throw GeometryError("removeKnot: " + detail::numberText(u) + " is not inside the curve's domain");
     int r = -1;
     for (int i = 0; i <= n + p + 1; ++i)
         if (curve.knots[static_cast<std::size_t>(i)] == u) r = i;
-    if (r < 0) throw GeometryError("removeKnot: " + std::to_string(u) + " is not a knot of the curve");
+    if (r < 0) throw GeometryError("removeKnot: " + detail::numberText(u) + " is not a knot of the curve");
     int s = 0;
     for (int i = r; i >= 0 && curve.knots[static_cast<std::size_t>(i)] == u; --i) ++s;
     return {r, s};
@@ -172,13 +173,14 @@ std::vector<std::size_t> lastOccurrences(std::span<const double> knots, std::siz
     std::vector<std::size_t> removed;
     for (double v : values) {
         if (!(v > knots[p] && v < knots[count]))
-            throw GeometryError(std::string(where) + ": " + std::to_string(v) + " is not an interior knot");
+            throw GeometryError(std::string(where) + ": " + detail::numberText(v) +
+                                " is not an interior knot");
         const auto it = std::upper_bound(knots.begin(), knots.end(), v);
         const std::size_t r = static_cast<std::size_t>(it - knots.begin());
         if (r == 0 || knots[r - 1] != v)
-            throw GeometryError(std::string(where) + ": " + std::to_string(v) + " is not a knot");
+            throw GeometryError(std::string(where) + ": " + detail::numberText(v) + " is not a knot");
         if (std::find(removed.begin(), removed.end(), r - 1) != removed.end())
-            throw GeometryError(std::string(where) + ": value " + std::to_string(v) + " listed twice");
+            throw GeometryError(std::string(where) + ": value " + detail::numberText(v) + " listed twice");
         removed.push_back(r - 1);
     }
     std::sort(removed.begin(), removed.end());
@@ -279,7 +281,7 @@ LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::
     // keeps the first (and last) fixedDerivatives interior knots.
     const std::size_t keep = static_cast<std::size_t>(ends.fixedDerivatives);
     if (removed.front() <= p + keep || removed.back() + keep >= count)
-        throw GeometryError(std::string(where) + ": removing " + std::to_string(knots[removed.front()]) +
+        throw GeometryError(std::string(where) + ": removing " + detail::numberText(knots[removed.front()]) +
                             " would change the end derivatives the end conditions fix");
     if (count < nr + p + 1)
         throw GeometryError(std::string(where) + ": removing " + std::to_string(nr) +
@@ -294,7 +296,7 @@ LeastSquaresRemoval removeKnots(int degree, std::span<const double> knots, std::
                        nr};
     if (w.cL > w.cH)
         throw GeometryError(std::string(where) + ": the end conditions leave no coefficient free near " +
-                            std::to_string(knots[removed.front()]));
+                            detail::numberText(knots[removed.front()]));
 
     LeastSquaresRemoval out;
     out.firstChanged = static_cast<std::size_t>(w.cL);

@@ -1,5 +1,6 @@
 #include "geom/KnotSignificance.h"
 #include "Checked.h"
+#include "NumberText.h"
 
 #include "geom/GeometryError.h"
 
@@ -28,7 +29,7 @@ std::pair<std::size_t, int> interiorKnot(int degree, std::span<const double> kno
     const double z = knots[knotIndex];
     if (!(z > knots[p] && z < knots[count]))
         throw GeometryError(std::string(where) + ": knot " + std::to_string(knotIndex) + " (value " +
-                            std::to_string(z) + ") is not an interior knot");
+                            detail::numberText(z) + ") is not an interior knot");
     std::size_t r = knotIndex;
     while (r + 1 < knots.size() && knots[r + 1] == z) ++r;
     std::size_t first = knotIndex;
@@ -210,10 +211,10 @@ double knotRemovalWeight(const Curve& curve, std::size_t knotIndex) {
                                 " are not finite and non-decreasing");
     for (std::size_t i = from; i < std::min(knotIndex + 1, curve.points.size()); ++i) {
         const glm::dvec3& c = curve.points[i];
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !(curve.weight(i) > 0.0) ||
-            !std::isfinite(curve.weight(i)))
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
+            !(curve.weight(i) >= std::numeric_limits<double>::min()) || !std::isfinite(curve.weight(i)))
             throw GeometryError("knotRemovalWeight: control point " + std::to_string(i) +
-                                " is not finite or its weight is not positive");
+                                " is not finite or its weight is not a positive normal number");
     }
     double weight = 0.0;
     if (!curve.rational()) {

@@ -1,4 +1,5 @@
 #include "geom/Reparameterize.h"
+#include "NumberText.h"
 
 #include "geom/GeometryError.h"
 
@@ -25,8 +26,8 @@ std::vector<double> reversedKnots(const std::vector<double>& knots, double a, do
 std::vector<double> mappedKnots(const std::vector<double>& knots, double a, double b, double c, double d,
                                 const char* where) {
     if (!std::isfinite(c) || !std::isfinite(d) || !(c < d))
-        throw GeometryError(std::string(where) + ": the new domain [" + std::to_string(c) + ", " +
-                            std::to_string(d) + "] must be finite and non-empty");
+        throw GeometryError(std::string(where) + ": the new domain [" + detail::numberText(c) + ", " +
+                            detail::numberText(d) + "] must be finite and non-empty");
     std::vector<double> out(knots.size());
     for (std::size_t i = 0; i < knots.size(); ++i) {
         out[i] = knots[i] == a ? c : knots[i] == b ? d : c + (knots[i] - a) * ((d - c) / (b - a));

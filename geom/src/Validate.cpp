@@ -1,3 +1,4 @@
+#include "NumberText.h"
 #include "geom/Curve.h"
 #include "geom/GeometryError.h"
 #include "geom/Surface.h"
@@ -29,7 +30,8 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
             throw GeometryError(where + ": knot " + std::to_string(i) + " is not a finite number");
         if (i > 0 && knots[i] < knots[i - 1])
             throw GeometryError(where + ": knots decrease at index " + std::to_string(i) + " (" +
-                                std::to_string(knots[i - 1]) + " then " + std::to_string(knots[i]) + ")");
+                                detail::numberText(knots[i - 1]) + " then " + detail::numberText(knots[i]) +
+                                ")");
         // The basis functions divide by knot differences: a subnormal one overflows them.
         if (i > 0 && knots[i] > knots[i - 1] && knots[i] - knots[i - 1] < std::numeric_limits<double>::min())
             throw GeometryError(where + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) +
@@ -39,7 +41,7 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
     for (std::size_t i = 1; i < knots.size(); ++i) {
         run = knots[i] == knots[i - 1] ? run + 1 : 1;
         if (run > static_cast<std::size_t>(degree) + 1)
-            throw GeometryError(where + ": knot value " + std::to_string(knots[i]) + " at index " +
+            throw GeometryError(where + ": knot value " + detail::numberText(knots[i]) + " at index " +
                                 std::to_string(i) + " has multiplicity above degree + 1");
     }
     if (!(knots[static_cast<std::size_t>(degree)] < knots[count]))
@@ -57,9 +59,11 @@ void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vec
         throw GeometryError(where + ": " + std::to_string(weights.size()) + " weights for " +
                             std::to_string(points.size()) + " control points");
     for (std::size_t i = 0; i < weights.size(); ++i)
-        if (!std::isfinite(weights[i]) || !(weights[i] > 0.0))
-            throw GeometryError(where + ": weight " + std::to_string(i) + " is " +
-                                std::to_string(weights[i]) + ", weights must be positive and finite");
+        // A subnormal weight beside ordinary ones makes their ratio overflow a double.
+        if (!std::isfinite(weights[i]) || !(weights[i] >= std::numeric_limits<double>::min()))
+            throw GeometryError(
+                where + ": weight " + std::to_string(i) + " is " + detail::numberText(weights[i]) +
+                ", weights must be finite and at least the smallest normal double (2.2e-308)");
 }
 
 std::string prefixed(std::string_view where, const char* what) {

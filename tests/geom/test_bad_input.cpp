@@ -82,6 +82,7 @@ std::vector<std::pair<std::string, Curve>> brokenCurves() {
     add("infinite point", false, [](Curve& c) { c.points[2].y = kInf; });
     add("zero weight", true, [](Curve& c) { c.weights[3] = 0.0; });
     add("negative weight", true, [](Curve& c) { c.weights[2] = -1.0; });
+    add("subnormal weight", true, [](Curve& c) { c.weights[3] = 1e-310; });
     add("weights for too few points", true, [](Curve& c) { c.weights.resize(3); });
     return out;
 }
@@ -112,6 +113,7 @@ std::vector<std::pair<std::string, Surface>> brokenSurfaces() {
     add("NaN u knot", false, [](Surface& s) { s.knotsU[4] = kNaN; });
     add("NaN point", false, [](Surface& s) { s.points[2 * 4 + 1].z = kNaN; });
     add("zero weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = 0.0; });
+    add("subnormal weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = 1e-310; });
     add("weights for too few points", true, [](Surface& s) { s.weights.resize(5); });
     return out;
 }
@@ -361,6 +363,16 @@ TEST_CASE("a broken object's message names the entry point and the rule", "[geom
     s.knotsV[3] = -0.5;
     REQUIRE_THROWS_WITH(GridEvaluator(s), Catch::Contains("GridEvaluator") && Catch::Contains("decrease"));
     REQUIRE_THROWS_WITH(evaluate(s, 0.3, 0.3), Catch::Contains("evaluate") && Catch::Contains("knots"));
+    // Numbers are quoted with the digits that tell them apart, whatever their scale.
+    Curve small = validCurve(true);
+    small.knots = {0, 0, 0, 0, 2e-7, 1e-7, 3e-7, 4e-7, 4e-7, 4e-7, 4e-7};
+    REQUIRE_THROWS_WITH(validate(small), Catch::Contains("(2e-07 then 1e-07)"));
+    Curve light = validCurve(true);
+    light.weights[4] = 1e-310;
+    REQUIRE_THROWS_WITH(validate(light), Catch::Contains("weight 4 is 1e-310"));
+    REQUIRE_THROWS_WITH(evaluate(light, 0.6), Catch::Contains("weight 4"));
+    REQUIRE_THROWS_WITH(insertKnot(validCurve(false), 1.0 + 1e-15),
+                        Catch::Contains("1.000000000000001") && Catch::Contains("[0, 1]"));
 }
 
 TEST_CASE("a staircase refuses non-finite loop points and unbounded work", "[geom][bad-input]") {

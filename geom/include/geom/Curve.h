@@ -29,9 +29,10 @@ struct Curve {
 
 /// Checks every rule a curve must keep: degree >= 1, knots.size() == points.size() + degree + 1,
 /// non-decreasing knots with a non-empty domain, multiplicity <= degree + 1, finite numbers,
-/// weights absent or one positive weight per point. Throws GeometryError naming the rule and index,
-/// after `where` (the calling function's name) when given. Every geom entry point checks its
-/// curves so (per-point evaluation checks the sizes, the span it reads and its result instead).
+/// weights absent or one per point, each at least the smallest normal double (2.2e-308). Throws
+/// GeometryError naming the rule and index, after `where` (the calling function's name) when given.
+/// Every geom entry point checks its curves so (per-point evaluation checks the sizes, the span it
+/// reads and its result instead).
 void validate(const Curve& curve, std::string_view where = {});
 
 }  // namespace geom

@@ -1,4 +1,5 @@
 #include "geom/curvemap/CurveMapper.h"
+#include "../NumberText.h"
 
 #include "KnotLines.h"
 #include "ProjectedBoxes.h"
@@ -527,7 +528,7 @@ bool PartMapper::cutArcs(const std::vector<Sample>& samples, std::vector<Arc>& a
         out_.issues.push_back(
             "the nearest hit leaves a sheet of the surface away from its boundary (at a silhouette, or "
             "where another sheet comes in front, near curve parameter " +
-            std::to_string(a.s) + "); the part cannot be closed and is not mapped");
+            detail::numberText(a.s) + "); the part cannot be closed and is not mapped");
         return false;
     };
     // The pair (start, start + 1) is visited twice: first for an entry into the next sheet
@@ -680,9 +681,9 @@ MapResult CurveMapper::map(const std::vector<Curve>& curves, const Placement& pl
         const double extent = boxDiagonal(curves[i].points);
         if (!(extent <= options.maxExtentRatio * surfaceExtent))
             throw GeometryError("CurveMapper::map: curve part " + std::to_string(i + 1) + " is " +
-                                std::to_string(extent) + " across, more than " +
-                                std::to_string(options.maxExtentRatio) + " times the surface's " +
-                                std::to_string(surfaceExtent) + "; not mapped");
+                                detail::numberText(extent) + " across, more than " +
+                                detail::numberText(options.maxExtentRatio) + " times the surface's " +
+                                detail::numberText(surfaceExtent) + "; not mapped");
     }
     MapResult result;
     result.frame = placementFrame(surface_, placement);

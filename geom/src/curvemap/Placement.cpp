@@ -1,4 +1,5 @@
 #include "geom/curvemap/Placement.h"
+#include "../NumberText.h"
 
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -26,8 +27,8 @@ PlacementFrame placementFrame(const Surface& surface, const Placement& placement
                                   std::abs(surface.domainEndV() - surface.domainStartV()));
     if (!(u >= surface.domainStartU() - slack && u <= surface.domainEndU() + slack &&
           w >= surface.domainStartV() - slack && w <= surface.domainEndV() + slack))
-        throw GeometryError("placementFrame: reference point (" + std::to_string(u) + ", " +
-                            std::to_string(w) + ") lies outside the surface domain");
+        throw GeometryError("placementFrame: reference point (" + detail::numberText(u) + ", " +
+                            detail::numberText(w) + ") lies outside the surface domain");
     const SurfaceDerivatives d = derivatives(surface, u, w, 1);
     glm::dvec3 n = normalFromDerivatives(surface, u, w, d.at(1, 0), d.at(0, 1));
     if (glm::length(n) < 0.5)
