@@ -1,6 +1,6 @@
 #include "geom/GlobalInterpolation.h"
 
-#include "DenseLu.h"
+#include "SparseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -20,7 +20,7 @@ struct Interpolator {
     Closure closure;
     std::size_t dataCount;
     std::vector<double> knots;
-    detail::DenseLu lu;
+    detail::SparseLu lu;
 
     std::size_t controlCount() const {
         return closure == Closure::Periodic ? dataCount + static_cast<std::size_t>(degree) : dataCount;
@@ -61,19 +61,22 @@ Interpolator makeInterpolator(std::span<const double> parameters, std::size_t da
     std::vector<double> knots = interpolationKnots(parameters, degree, closure);
     const std::size_t p = static_cast<std::size_t>(degree);
     const std::size_t controls = closure == Closure::Periodic ? dataCount + p : dataCount;
-    std::vector<double> matrix(dataCount * dataCount, 0.0);
+    // Each row holds the degree + 1 basis functions that reach its parameter: the matrix is
+    // banded (with wrapped corners when periodic), solved in O(n p^2).
+    std::vector<detail::SparseLu::Row> rows(dataCount);
     std::vector<double> basis(p + 1);
     for (std::size_t k = 0; k < dataCount; ++k) {
         const double t = parameters[k];
         const std::size_t span = findSpan(degree, knots, controls, t);
         basisFunctions(span, t, degree, knots, basis);
+        detail::SparseLu::Row& row = rows[k];
         for (std::size_t j = 0; j <= p; ++j) {
             // Periodic: control point c and c + dataCount are the same unknown.
-            const std::size_t column = (span - p + j) % dataCount;
-            matrix[k * dataCount + column] += basis[j];
+            detail::SparseLu::add(row, (span - p + j) % dataCount, basis[j]);
         }
+        detail::SparseLu::finish(row);
     }
-    detail::DenseLu lu(std::move(matrix), dataCount, 1e-13);
+    detail::SparseLu lu(std::move(rows), 1e-13);
     if (lu.singular())
         throw GeometryError("interpolation: the collocation matrix is singular at column " +
                             std::to_string(lu.singularColumn()) + " (parameters too close together)");

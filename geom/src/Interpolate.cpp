@@ -1,6 +1,6 @@
 #include "geom/Interpolate.h"
 
-#include "DenseLu.h"
+#include "SparseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -24,24 +24,23 @@ std::string pointName(std::size_t i) {
     return "data point " + std::to_string(i + 1);
 }
 
-/// One equation of the interpolation system: sum_k coefficient[k] * X[k] = rhs.
+/// One equation of the interpolation system: sum_k coefficient[k] * X[k] = rhs, the
+/// coefficients that are not zero in column order.
 struct Row {
-    std::vector<double> coefficients;
+    detail::SparseLu::Row coefficients;
     glm::dvec3 rhs{0.0};
 };
 
-/// Solves the square system of the rows; they are few (one unknown per control point), so a
-/// dense solve is fine.
-std::vector<glm::dvec3> solve(const std::vector<Row>& rows) {
-    const std::size_t n = rows.size();
-    std::vector<double> matrix;
+/// Solves the square system of the rows (banded, with wrapped corners when periodic).
+std::vector<glm::dvec3> solve(std::vector<Row> rows) {
+    std::vector<detail::SparseLu::Row> matrix;
     std::vector<glm::dvec3> rhs;
-    matrix.reserve(n * n);
-    for (const Row& r : rows) {
-        matrix.insert(matrix.end(), r.coefficients.begin(), r.coefficients.end());
+    matrix.reserve(rows.size());
+    for (Row& r : rows) {
+        matrix.push_back(std::move(r.coefficients));
         rhs.push_back(r.rhs);
     }
-    const detail::DenseLu lu(std::move(matrix), n, 1e-13);
+    const detail::SparseLu lu(std::move(matrix), 1e-13);
     if (lu.singular())
         throw GeometryError("interpolateCubic: the interpolation system is singular (unknown " +
                             std::to_string(lu.singularColumn()) + "); check the continuities and tangents");
@@ -171,10 +170,12 @@ Curve interpolateCubic(const InterpolationData& data) {
             span =
                 static_cast<std::size_t>(std::upper_bound(knots.begin(), knots.end(), u) - knots.begin()) - 1;
         basisDerivatives(span, u, kDegree, knots, order, basis);
-        Row row{std::vector<double>(unknowns, 0.0), rhs};
-        for (int j = 0; j <= kDegree; ++j)
-            row.coefficients[(span - kDegree + static_cast<std::size_t>(j)) % unknowns] +=
-                basis[order * (kDegree + 1) + j];
+        Row row{{}, rhs};
+        for (int j = 0; j <= kDegree; ++j) {
+            const std::size_t column = (span - kDegree + static_cast<std::size_t>(j)) % unknowns;
+            detail::SparseLu::add(row.coefficients, column, basis[order * (kDegree + 1) + j]);
+        }
+        detail::SparseLu::finish(row.coefficients);
         rows.push_back(std::move(row));
     };
 
@@ -205,7 +206,7 @@ Curve interpolateCubic(const InterpolationData& data) {
         throw GeometryError("interpolateCubic: internal error, " + std::to_string(rows.size()) +
                             " equations for " + std::to_string(unknowns) + " unknowns");
 
-    const std::vector<glm::dvec3> x = solve(rows);
+    const std::vector<glm::dvec3> x = solve(std::move(rows));
     std::vector<glm::dvec3> control(controlCount);
     for (std::size_t c = 0; c < controlCount; ++c) control[c] = x[c % unknowns];
     return Curve(kDegree, std::move(knots), std::move(control));

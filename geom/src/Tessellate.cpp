@@ -1,6 +1,10 @@
 #include "geom/Tessellate.h"
+#include "NumberText.h"
 
+#include "geom/Bezier.h"
+#include "geom/BezierExtraction.h"
 #include "geom/BezierPatchTree.h"
+#include "geom/ControlNet.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 
@@ -8,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <string>
 
 namespace geom {
@@ -17,7 +23,7 @@ constexpr std::size_t kMaxVertices = 1u << 22;
 
 void checkTolerance(double tolerance, const char* where) {
     if (!std::isfinite(tolerance) || !(tolerance > 0.0))
-        throw GeometryError(std::string(where) + ": tolerance " + std::to_string(tolerance) +
+        throw GeometryError(std::string(where) + ": tolerance " + detail::numberText(tolerance) +
                             " must be a positive number");
 }
 
@@ -97,7 +103,7 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
         const std::vector<double> us = lines(breaksU, countsU);
         const std::vector<double> vs = lines(breaksV, countsV);
         if (us.size() * vs.size() > kMaxVertices)
-            throw GeometryError("tessellateAdaptive: tolerance " + std::to_string(tolerance) +
+            throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
                                 " needs more than " + std::to_string(kMaxVertices) + " vertices");
         const std::size_t nv = vs.size();
         std::vector<glm::dvec3> grid(us.size() * nv);
@@ -147,59 +153,77 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
         grow(breaksU, us, splitU, countsU);
         grow(breaksV, vs, splitV, countsV);
     }
-    throw GeometryError("tessellateAdaptive: tolerance " + std::to_string(tolerance) +
+    throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
                         " was not reached after 40 refinements");
 }
+
+namespace {
+
+double segmentDistance(const glm::dvec3& x, const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 ab = b - a;
+    const double len2 = glm::dot(ab, ab);
+    const double s = len2 > 0.0 ? std::clamp(glm::dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return glm::length(x - (a + s * ab));
+}
+
+/// The largest distance of a Bézier piece's control points (homogeneous, positive weights) from
+/// the chord between its end points: with positive weights the piece lies in the convex hull of
+/// its control points, and the distance to a segment is convex, so the piece lies within this
+/// distance of its chord.
+double hullDistance(std::span<const glm::dvec4> piece) {
+    const glm::dvec3 a = glm::dvec3(piece.front()) / piece.front().w;
+    const glm::dvec3 b = glm::dvec3(piece.back()) / piece.back().w;
+    double farthest = 0.0;
+    for (std::size_t i = 1; i + 1 < piece.size(); ++i)
+        farthest = std::max(farthest, segmentDistance(glm::dvec3(piece[i]) / piece[i].w, a, b));
+    return farthest;
+}
+
+/// Appends the far ends of the chords of one Bézier piece: halved (de Casteljau) until each
+/// part's control points lie within tolerance of its chord.
+void tessellatePiece(std::vector<glm::dvec4> piece, double tolerance, std::vector<glm::dvec3>& out) {
+    const std::size_t n = piece.size();
+    std::vector<std::vector<glm::dvec4>> stack;
+    stack.push_back(std::move(piece));
+    std::vector<glm::dvec4> left(n), right(n);
+    while (!stack.empty()) {
+        std::vector<glm::dvec4> part = std::move(stack.back());
+        stack.pop_back();
+        if (hullDistance(part) > tolerance && stack.size() < 60) {
+            subdivideBezier<glm::dvec4>(part, 0.5, left, right);
+            stack.push_back(right);
+            stack.push_back(left);
+            continue;
+        }
+        out.push_back(glm::dvec3(part.back()) / part.back().w);
+        if (out.size() > kMaxVertices)
+            throw GeometryError("tessellate: tolerance " + detail::numberText(tolerance) +
+                                " needs more than " + std::to_string(kMaxVertices) + " points");
+    }
+}
+
+}  // namespace
 
 std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
     checkTolerance(tolerance, "tessellate");
     validate(curve, "tessellate");
-    auto segmentDistance = [](const glm::dvec3& x, const glm::dvec3& a, const glm::dvec3& b) {
-        const glm::dvec3 ab = b - a;
-        const double len2 = glm::dot(ab, ab);
-        const double s = len2 > 0.0 ? std::clamp(glm::dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
-        return glm::length(x - (a + s * ab));
-    };
-    // Knot values are always vertices (corners of C0 curves stay sharp); each span starts with
-    // degree chords and bisects any chord whose quarter points lie farther than tolerance.
-    std::vector<double> breaks;
-    for (std::size_t k = static_cast<std::size_t>(curve.degree); k <= curve.points.size(); ++k)
-        if (breaks.empty() || curve.knots[k] > breaks.back()) breaks.push_back(curve.knots[k]);
-    std::vector<glm::dvec3> out{evaluate(curve, breaks.front())};
-    struct Piece {
-        double a, b;
-        glm::dvec3 pa, pb;
-        int depth;
-    };
-    std::vector<Piece> stack;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-        const int n = std::max(1, std::min(curve.degree, 16));
-        for (int i = n - 1; i >= 0; --i) {
-            const double a = breaks[k] + (breaks[k + 1] - breaks[k]) * i / n;
-            const double b =
-                i + 1 == n ? breaks[k + 1] : breaks[k] + (breaks[k + 1] - breaks[k]) * (i + 1) / n;
-            stack.push_back({a, b, evaluate(curve, a), evaluate(curve, b), 0});
-        }
-        while (!stack.empty()) {
-            const Piece piece = stack.back();
-            stack.pop_back();
-            double err = 0.0;
-            if (curve.degree > 1)
-                for (double f : {0.25, 0.5, 0.75})
-                    err = std::max(err, segmentDistance(evaluate(curve, piece.a + f * (piece.b - piece.a)),
-                                                        piece.pa, piece.pb));
-            if (err > tolerance && piece.depth < 30) {
-                const double m = 0.5 * (piece.a + piece.b);
-                const glm::dvec3 pm = evaluate(curve, m);
-                stack.push_back({m, piece.b, pm, piece.pb, piece.depth + 1});
-                stack.push_back({piece.a, m, piece.pa, pm, piece.depth + 1});
-                continue;
-            }
-            out.push_back(piece.pb);
-            if (out.size() > kMaxVertices)
-                throw GeometryError("tessellate: tolerance " + std::to_string(tolerance) +
-                                    " needs too many points");
-        }
+    // Below a few units in the last place of the coordinates no chord can be told from the
+    // curve: halving would go on until the vertex limit.
+    double extent = 0.0;
+    for (const glm::dvec3& p : curve.points)
+        extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    if (tolerance < 16.0 * std::numeric_limits<double>::epsilon() * extent)
+        throw GeometryError("tessellate: tolerance " + detail::numberText(tolerance) +
+                            " is below what coordinates of " + detail::numberText(extent) + " resolve");
+    // Knot values are always vertices (corners of C0 curves stay sharp): each Bézier piece is
+    // tessellated on its own, and where one starts away from where the last ended (a jump) the
+    // polyline joins the two.
+    std::vector<glm::dvec3> out;
+    for (const BezierCurvePiece& piece : extractBezier(curve)) {
+        std::vector<glm::dvec4> net = homogeneousNet(piece.curve).data;
+        const glm::dvec3 start = glm::dvec3(net.front()) / net.front().w;
+        if (out.empty() || out.back() != start) out.push_back(start);
+        tessellatePiece(std::move(net), tolerance, out);
     }
     return out;
 }

@@ -119,6 +119,27 @@ TEST_CASE("surface interpolation skips a collapsed row (a pole) in the parameter
         REQUIRE(par.v[j] == Approx(static_cast<double>(j) / nv).margin(1e-12));
 }
 
+TEST_CASE("interpolation through many points is banded: 20,000 points, open and periodic",
+          "[geom][interpolation]") {
+    // A dense solve would hold 20,000^2 doubles (3.2 GB); the banded one holds a few per point.
+    for (const Closure closure : {Closure::Open, Closure::Periodic}) {
+        const std::size_t n = 20000;
+        std::vector<glm::dvec3> data;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+            data.push_back(
+                {std::cos(a) * (1.0 + 0.1 * std::sin(37.0 * a)), std::sin(a), 0.05 * std::cos(11.0 * a)});
+        }
+        if (closure == Closure::Open) data.resize(n - 10);  // not closed
+        for (int degree : {1, 3, 5}) {
+            const std::vector<double> t = chordLengthParameters(data, closure);
+            const Curve c = interpolateCurve(data, t, degree, closure);
+            for (std::size_t i = 0; i < data.size(); i += 97)
+                REQUIRE(glm::distance(evaluate(c, t[i]), data[i]) < 1e-9);
+        }
+    }
+}
+
 TEST_CASE("interpolation rejects bad input with a GeometryError", "[geom][interpolation]") {
     const std::vector<glm::dvec3> three{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}};
     REQUIRE_THROWS_AS(interpolateCurve(three, 3, Closure::Open), GeometryError);

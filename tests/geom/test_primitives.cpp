@@ -79,6 +79,19 @@ TEST_CASE("normals and curvatures of the quadrics", "[geom][curvature]") {
     REQUIRE(glm::length(glm::cross(normal(sphere, 0.0, 0.3), glm::dvec3(0, 0, 1))) < 1e-6);
     REQUIRE(glm::length(glm::cross(normal(sphere, 1.0, 0.7), glm::dvec3(0, 0, 1))) < 1e-6);
     REQUIRE_THROWS_WITH(curvature(sphere, 0.0, 0.3), Catch::Contains("degenerate"));
+    // The same at every scale: rounding leaves a cross product of noise at a pole, whose size
+    // follows the sphere's; away from the poles the curvatures are 1 / r^2 and 1 / r.
+    for (double r : {1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6}) {
+        INFO("radius " << r);
+        const Surface scaled = makeSphere(r);
+        for (double v : {0.0, 0.3, 0.77}) {
+            REQUIRE_THROWS_WITH(curvature(scaled, scaled.domainStartU(), v), Catch::Contains("degenerate"));
+            REQUIRE_THROWS_WITH(curvature(scaled, scaled.domainEndU(), v), Catch::Contains("degenerate"));
+        }
+        const SurfaceCurvature c = curvature(scaled, 0.3, 0.4);
+        REQUIRE(c.gaussian * r * r == Approx(1.0).epsilon(1e-10));
+        REQUIRE(std::abs(c.mean) * r == Approx(1.0).epsilon(1e-10));
+    }
 
     const Surface cylinder = makeCylinder(1.5, 3.0);
     const SurfaceCurvature cc = curvature(cylinder, 0.4, 0.3);

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -131,6 +132,66 @@ TEST_CASE("curve tessellation keeps chords within the tolerance", "[geom][tessel
     const Curve polyline(1, {0, 0, 1, 2, 2}, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
     REQUIRE(tessellate(polyline, 1e-3).size() == 3);
     REQUIRE_THROWS_WITH(tessellate(circle, -1.0), Catch::Contains("tolerance"));
+}
+
+TEST_CASE("curve tessellation keeps its tolerance on every class, rational with wide weights too",
+          "[geom][tessellate]") {
+    // Degrees 1 to 9, random interior knots (some repeated), weights 1e-3..1e3 or none, scales
+    // 1e-3..1e3 and far offsets: every point of the curve lies within tolerance of the polyline.
+    std::mt19937 rng(20261206);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), coordinate(-1.0, 1.0);
+    auto polylineDistance = [](const std::vector<glm::dvec3>& line, const glm::dvec3& q) {
+        double best = 1e300;
+        for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+            const glm::dvec3 ab = line[j + 1] - line[j];
+            const double len2 = glm::dot(ab, ab);
+            const double s = len2 > 0.0 ? std::clamp(glm::dot(q - line[j], ab) / len2, 0.0, 1.0) : 0.0;
+            best = std::min(best, glm::length(line[j] + s * ab - q));
+        }
+        return best;
+    };
+    int exceeded = 0;
+    for (int member = 0; member < 300; ++member) {
+        const int p = 1 + member % 9;
+        const std::size_t n = static_cast<std::size_t>(p) + 1 + std::size_t(unit(rng) * 6.0);
+        std::vector<double> interior;
+        for (std::size_t i = 0; i + static_cast<std::size_t>(p) + 1 < n; ++i)
+            interior.push_back(interior.empty() || unit(rng) < 0.7 ? unit(rng) : interior.back());
+        std::sort(interior.begin(), interior.end());
+        std::vector<double> knots(static_cast<std::size_t>(p) + 1, 0.0);
+        knots.insert(knots.end(), interior.begin(), interior.end());
+        knots.insert(knots.end(), static_cast<std::size_t>(p) + 1, 1.0);
+        const double scale = std::pow(10.0, 6.0 * unit(rng) - 3.0);
+        const glm::dvec3 offset = member % 3 == 0 ? glm::dvec3(1e4 * scale) : glm::dvec3(0.0);
+        std::vector<glm::dvec3> points;
+        std::vector<double> weights;
+        const double spread = member % 2 == 0 ? 3.0 : 0.0;  // half rational, weights 10^[-3, 3]
+        for (std::size_t i = 0; i < n; ++i) {
+            points.push_back(offset + scale * glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)));
+            if (spread > 0.0) weights.push_back(std::pow(10.0, spread * coordinate(rng)));
+        }
+        Curve curve;
+        try {
+            curve = Curve(p, knots, points, weights);
+        } catch (const GeometryError&) {
+            continue;  // a knot repeated past the degree
+        }
+        const double tolerance = scale * std::pow(10.0, -1.0 - 2.0 * unit(rng));
+        const std::vector<glm::dvec3> line = tessellate(curve, tolerance);
+        REQUIRE(line.size() < 200000);
+        double worst = 0.0;
+        for (int k = 0; k <= 2000; ++k)
+            worst = std::max(worst, polylineDistance(line, evaluate(curve, k / 2000.0)));
+        INFO("member " << member << ", degree " << p << ", " << line.size() << " vertices");
+        CHECK(worst <= tolerance * (1.0 + 1e-9));
+        exceeded += worst > tolerance * (1.0 + 1e-9);
+    }
+    REQUIRE(exceeded == 0);
+    // Below what the coordinates resolve, a clear refusal at once rather than millions of halvings.
+    const Curve far(
+        3, {0, 0, 0, 0, 1, 1, 1, 1},
+        {{1e8, 1e8, 1e8}, {1e8 + 1e-6, 1e8, 1e8}, {1e8, 1e8 + 1e-6, 1e8}, {1e8, 1e8, 1e8 + 1e-6}});
+    REQUIRE_THROWS_WITH(tessellate(far, 1e-10), Catch::Contains("tolerance 1e-10 is below what coordinates"));
 }
 
 }  // namespace test_tessellate

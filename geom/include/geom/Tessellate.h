@@ -30,9 +30,11 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
 /// edge vertices and the mesh has no cracks or T-junctions.
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
 
-/// A polyline through the curve whose chords stay within tolerance of it (checked at the
-/// quarter points of every chord), from the domain start to its end. One polyline joins the ends
-/// of a jump (a knot of multiplicity degree + 1): draw splitAtBreaks' pieces instead.
+/// A polyline through the curve whose chords stay within tolerance of it, from the domain start
+/// to its end: each Bézier piece is halved until every part's control points lie within tolerance
+/// of its chord (the part lies in their convex hull, rational ones too). A tolerance below 16
+/// units in the last place of the largest coordinate is refused. One polyline joins the ends of a
+/// jump (a knot of multiplicity degree + 1): draw splitAtBreaks' pieces instead.
 std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance);
 
 }  // namespace geom
