@@ -177,6 +177,11 @@ bool checkPaths(const Options& o) {
                   << "\n";
         return false;
     }
+    // A device or a pipe (/dev/zero, a FIFO) could block the read or never end.
+    if (!o.script.empty() && !std::filesystem::is_regular_file(o.script, ec)) {
+        std::cerr << "acsynt: --script " << o.script << " is not a regular file\n";
+        return false;
+    }
     if (!o.record.empty())
         if (const std::string why = unwritable(o.record); !why.empty()) {
             std::cerr << "acsynt: --record " << o.record << " " << why << "\n";

@@ -76,6 +76,10 @@ TEST_CASE("input script: files up to the size limit read, larger ones and direct
     const auto folder = scratch("a_directory");
     std::filesystem::create_directories(folder);
     CHECK(refusal([&] { ScriptInputSource::fromFile(folder); }).find("is a directory") != std::string::npos);
+    // A device that never ends is refused before it is read.
+    if (std::filesystem::exists("/dev/zero"))
+        CHECK(refusal([&] { ScriptInputSource::fromFile("/dev/zero"); }).find("is not a regular file") !=
+              std::string::npos);
 }
 
 }  // namespace test_script_limits

@@ -89,6 +89,12 @@ run script_dir 2 --script somedir --output out_s
 expect_in script_dir.err "--script somedir is a directory"
 run script_missing 2 --script nothing.session --output out_m
 expect_in script_missing.err "cannot be read"
+# A device or a pipe where a file is expected is refused, not read for ever.
+run script_device 2 --script /dev/zero --output out_z
+expect_in script_device.err "--script /dev/zero is not a regular file"
+printf 'choice FILE\nchoice READ_MODEL\nstring /dev/zero\n' >devmodel.session
+run devmodel 3 --script devmodel.session --output out_dev --size 320x240
+expect_in out_dev/acsynt.log "/dev/zero:0: is not a regular file"
 touch plainfile
 run output_file 2 --script good.session --output plainfile
 expect_in output_file.err "is not a directory"

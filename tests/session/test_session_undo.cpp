@@ -32,6 +32,31 @@ void reduce(Driver& d, const std::string& component, const std::string& toleranc
 
 }  // namespace
 
+TEST_CASE("an UNDO from a model's menu that leaves no model goes back to MAIN and drops what was pending") {
+    Driver d("undo_menus");
+    // From CURVE MAP, taking back the only model: the menu has nothing to work on.
+    d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice CURVE_MAP",
+           "undo"});
+    CHECK(d.session.models().empty());
+    CHECK(d.session.menuTitle() == "MAIN");
+    CHECK(d.session.message() == "UNDONE: READ MODEL fighter");
+    d.run({"choice CURVE_MAP"});
+    CHECK(d.session.message() == "NO GEOMETRY FILE FOUND!");
+    // A reduction's tolerance prompt belongs to the state taken back: the typed answer reduces
+    // nothing (the pick was on the model that went).
+    d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice READ_MODEL",
+           "string transport.acm", "choice RETURN", "choice SURF_REDN", "choice BY_TOLERANCE",
+           "choice REDUCE_U&W"});
+    session_test::pickOn(d, "fuselage", 0.5, 0.3);
+    CHECK(d.session.typing());
+    d.run({"undo"});
+    CHECK_FALSE(d.session.typing());
+    CHECK(d.session.menuTitle() != "MAIN");  // fighter is still there
+    d.run({"string 0.01"});
+    CHECK(d.session.reductions().empty());
+    CHECK(d.session.models().size() == 1);
+}
+
 TEST_CASE("UNDO and REDO step through reading, mapping and reducing, and a new change clears REDO") {
     Driver d("undo");
     d.run({"choice UNDO"});

@@ -452,6 +452,9 @@ AircraftDescription readAircraftDescription(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw ModelFileError(path.string(), 0, "is a directory, not an aircraft description");
+    // A device or a pipe (/dev/zero, a FIFO) could block the open or never end.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw ModelFileError(path.string(), 0, "is not a regular file, not an aircraft description");
     std::ifstream in(path);
     if (!in) throw ModelFileError(path.string(), 0, "cannot open the file");
     if (const auto size = std::filesystem::file_size(path, ec); !ec && size > maxFileBytes)

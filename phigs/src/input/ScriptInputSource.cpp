@@ -168,16 +168,26 @@ ScriptInputSource ScriptInputSource::fromFile(const std::filesystem::path& path,
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw ScriptError(path.string() + ": is a directory, not a session script");
+    // A device or a pipe (/dev/zero, a FIFO) could block the open or never end.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw ScriptError(path.string() + ": is not a regular file, not a session script");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ScriptError(path.string() + ": cannot open the session script");
     const auto size = std::filesystem::file_size(path, ec);
     if (!ec && size > kMaxScriptBytes)
         throw ScriptError(path.string() + ": the script is " + std::to_string(size) +
                           " bytes; the limit is " + std::to_string(kMaxScriptBytes));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) throw ScriptError(path.string() + ": cannot read the session script");
-    return ScriptInputSource(text.str(), path.string(), std::move(directives));
+    // Read with the limit in hand too: a file that grows while it is read stops there.
+    std::string text;
+    char chunk[1 << 16];
+    while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxScriptBytes)
+            throw ScriptError(path.string() + ": the script is longer than the limit of " +
+                              std::to_string(kMaxScriptBytes) + " bytes");
+    }
+    if (in.bad()) throw ScriptError(path.string() + ": cannot read the session script");
+    return ScriptInputSource(text, path.string(), std::move(directives));
 }
 
 std::optional<InputAction> ScriptInputSource::next(std::chrono::milliseconds) {

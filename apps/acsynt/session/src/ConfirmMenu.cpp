@@ -51,6 +51,7 @@ const MenuTable& confirmMenuTable() {
                                      {"ACCEPT", "takes the picked patch: the marker goes on it", accept},
                                      {"REJECT", "back to picking a patch of the component", reject},
                                  },
+                                 true,
                                  true};
     return table;
 }

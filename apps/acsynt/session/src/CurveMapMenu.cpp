@@ -89,7 +89,9 @@ const MenuTable& curveMapMenuTable() {
             {"MAP_CURVE", "maps every part of the curve onto the component",
              [](MenuContext& s, const std::string&) { s.mapCurve(false); }},
             {"DISPLAY_ALL", "shows every curve mapped on the current model", displayAll},
-        }};
+        },
+        false,
+        true};
     return table;
 }
 

@@ -288,6 +288,8 @@ void writeModelState(std::ostream& out, const Model& model, const std::vector<Ma
 }
 
 bool isModelStateFile(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
     std::ifstream in(path);
     std::string first;
     return in && std::getline(in, first) && first.rfind("acsynt-surfaces", 0) == 0;
@@ -323,6 +325,9 @@ ModelState parseModelState(std::istream& in, const std::string& fileName) {
 ModelState readModelState(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw ModelFileError(path.string(), 0, "is a directory");
+    // A device or a pipe (/dev/zero, a FIFO) could block the open or never end.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw ModelFileError(path.string(), 0, "is not a regular file");
     std::ifstream in(path);
     if (!in) throw ModelFileError(path.string(), 0, "cannot be opened");
     return parseModelState(in, path.string());

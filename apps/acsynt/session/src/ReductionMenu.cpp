@@ -61,7 +61,9 @@ const MenuTable& reductionMenuTable() {
                  s.prompt("ENTER ERROR MAP SCALE: A LENGTH (RED AT IT, FIXED) OR RELATIVE",
                           SessionCore::Awaiting::ErrorScale);
              }},
-        }};
+        },
+        false,
+        true};
     return table;
 }
 

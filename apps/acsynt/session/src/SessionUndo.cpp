@@ -3,12 +3,18 @@
 #include "acsynt/session/Session.h"
 
 #include "SessionShared.h"
+#include "acsynt/session/MainMenu.h"
 
 namespace acsynt {
 
 using namespace session_detail;
 
 void Session::restore(SessionState s) {
+    // What was pending (a prompt, a pick for a reduction) belonged to the state left behind, and
+    // a menu that works on a model has nothing to work on when none is left.
+    core_.awaiting = Awaiting::Nothing;
+    core_.prompt.clear();
+    if (s.models.empty() && menu_->needsModel) returnToMain(*this);
     core_.models = std::move(s.models);
     core_.mappings = std::move(s.mappings);
     core_.reductions = std::move(s.reductions);

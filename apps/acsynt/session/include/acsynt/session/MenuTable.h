@@ -23,6 +23,8 @@ struct MenuTable {
     std::vector<MenuCommand> commands;
     /// Choosing here leaves an open prompt open (ACCEPT / REJECT); other menus withdraw it.
     bool keepsPrompt = false;
+    /// The menu works on the current model: an UNDO or REDO that leaves none goes back to MAIN.
+    bool needsModel = false;
 
     /// The command named `command`, or null.
     const MenuCommand* find(const std::string& command) const;
