@@ -115,6 +115,8 @@ void main() {
     } else {
         colour = side;
     }
+    // A colour, lit past 1 or not, is clamped before depth cueing blends it (ISO 9592-4).
+    colour = clamp(colour, 0.0, 1.0);
     if (USE_DEPTH_CUE) {
         DepthCue cue = frame.cues[push.depthCue];
         float t = clamp((vNpcZ - cue.planes.y) / max(cue.planes.x - cue.planes.y, 1e-9), 0.0, 1.0);

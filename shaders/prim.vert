@@ -72,8 +72,10 @@ void main() {
         vLitBack = lit(DISTINGUISH_BACK, vec3(1.0), worldPoint, -normal, eye) - vSpecularBack;
     } else if (VERTEX_LIGHTING) {
         vec3 eye = runView.eye.xyz;
-        vLitFront = toRenderingModel(lit(false, colour, worldPoint, normal, eye));
-        vLitBack = toRenderingModel(
-            lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye));
+        // Each vertex's colour is a colour: clamped before it is interpolated.
+        vLitFront = toRenderingModel(clamp(lit(false, colour, worldPoint, normal, eye), 0.0, 1.0));
+        vLitBack = toRenderingModel(clamp(
+            lit(DISTINGUISH_BACK, DISTINGUISH_BACK ? push.backColour.rgb : colour, worldPoint, -normal, eye), 0.0,
+            1.0));
     }
 }

@@ -70,13 +70,15 @@ static inline PictureFiles picture_files(const char* dir, const char* stem) {
 
 /* Draws structure 1 on a fresh offscreen workstation (1) and PDF workstation (2) and reads both
  * pictures: p[0] the offscreen one (NPC [0, 1]^2 on 768 x 768 pixels), p[1] the PDF page
- * rasterised by pdftoppm at 144 dpi. */
-static inline int draw_offscreen_and_pdf(const PictureFiles* files, Picture p[2]) {
+ * rasterised by pdftoppm at 144 dpi. `setup`, when given, sets each workstation's tables first. */
+static inline int draw_offscreen_and_pdf_with(const PictureFiles* files, Picture p[2],
+                                              void (*setup)(Pint ws)) {
     char command[2048], ppm[600];
     remove(files->png), remove(files->pdf);
     EXPECT_NO_ERROR(popen_ws(1, files->png, PWST_OFFSCREEN));
     EXPECT_NO_ERROR(popen_ws(2, files->pdf, PWST_PDF));
     for (Pint ws = 1; ws <= 2; ++ws) {
+        if (setup) setup(ws);
         EXPECT_NO_ERROR(ppost_struct(ws, 1, 0.5f));
         EXPECT_NO_ERROR(pupd_ws(ws, PFLAG_PERFORM));
         EXPECT_NO_ERROR(pclose_ws(ws));
@@ -87,6 +89,10 @@ static inline int draw_offscreen_and_pdf(const PictureFiles* files, Picture p[2]
     snprintf(command, sizeof command, "pdftoppm -r 144 -singlefile '%s' '%s'", files->pdf, files->ppm_root);
     snprintf(ppm, sizeof ppm, "%s.ppm", files->ppm_root);
     return read_png(files->png, &p[0]) && system(command) == 0 && read_ppm(ppm, &p[1]);
+}
+
+static inline int draw_offscreen_and_pdf(const PictureFiles* files, Picture p[2]) {
+    return draw_offscreen_and_pdf_with(files, p, NULL);
 }
 
 #endif

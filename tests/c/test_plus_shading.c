@@ -6,7 +6,8 @@
  * front and back styles, face distinguishing and culling show a HOLLOW side's outline, in that
  * side's colour, exactly when that side faces the viewer and is not culled; and a polyline set with data
  * whose two vertex colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its
- * first vertex's colour with PSD_NONE. argv[1]: a directory for the files. */
+ * first vertex's colour with PSD_NONE; and a lit square shows black with no light active, and its
+ * lit colour clamped to 1 before the depth cue scales it. argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -221,6 +222,78 @@ static void line_shading(void) {
     }
 }
 
+/* Light 1 ambient and light 2 directional along -z, both white; depth cue 2 halves every colour
+ * toward black. */
+static void lights_and_cue(Pint ws) {
+    const double white[3] = {1, 1, 1}, black[3] = {0, 0, 0};
+    Plight_src_bundle ambient, directional;
+    Pdcue_bundle cue;
+    ambient.type = PLIGHT_AMBIENT;
+    ambient.rec.ambient.colr = direct(white);
+    directional.type = PLIGHT_DIRECTIONAL;
+    directional.rec.directional.colr = direct(white);
+    directional.rec.directional.dir.delta_x = 0, directional.rec.directional.dir.delta_y = 0;
+    directional.rec.directional.dir.delta_z = -1;
+    EXPECT_NO_ERROR(pset_light_src_rep(ws, 1, &ambient));
+    EXPECT_NO_ERROR(pset_light_src_rep(ws, 2, &directional));
+    cue.mode = PALLOWED;
+    cue.ref_planes[0] = 1, cue.ref_planes[1] = 0;
+    cue.scaling[0] = cue.scaling[1] = 0.5f;
+    cue.colr = direct(black);
+    EXPECT_NO_ERROR(pset_dcue_rep(ws, 2, &cue));
+}
+
+/* A lit square facing the directional light: with no light active the reflectance sums over no
+ * lights and shows black; with both, (ka + kd) times the colour, clamped to 1 before the depth cue
+ * halves it, under every interior shading method. */
+static void lighting_sums(void) {
+    for (int round = 0; round < 8; ++round) {
+        double colour[3], expected[3];
+        const int lit = round % 2;
+        const Pint shading = PSD_NONE + (round / 2) % 4;
+        Prefl_props k = {0};
+        Pint active[2] = {1, 2};
+        Pint_list on = {lit ? 2 : 0, active}, off = {0, NULL};
+        Pptnorm3 v[4];
+        Pfacet_vdata_list3 vertices;
+        Pfacet_data3 facet;
+        Picture p[2];
+        random_rgb(colour);
+        k.ambient_coef = (Pfloat)random_real(0.2, 1.0), k.diffuse_coef = (Pfloat)random_real(0.5, 1.0);
+        k.specular_colr = direct(colour), k.specular_exp = 1;
+        for (int c = 0; c < 3; ++c) {
+            const double sum = (k.ambient_coef + k.diffuse_coef) * colour[c];
+            expected[c] = lit ? 0.5 * (sum > 1 ? 1 : sum) : 0;
+        }
+        for (int i = 0; i < 4; ++i) {
+            v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3),
+            v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
+            v[i].point.z = 0.5f;
+            v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
+        }
+        vertices.num_vertices = 4, vertices.vertex_data.ptnorms = v;
+        memset(&facet, 0, sizeof facet);
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(PSTYLE_SOLID);
+        pset_int_colr(&k.specular_colr);
+        pset_refl_props(&k);
+        pset_refl_eqn(PREFL_AMB_DIFF);
+        pset_int_shad_meth(shading);
+        pset_dcue_ind(2);
+        pset_light_src_state(&on, &off);
+        pfill_area_set3_data(PFACET_NONE, PEDGE_NONE, PVERT_COORD_NORMAL, PMODEL_RGB, &facet, 1, NULL,
+                             &vertices);
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf_with(&files, p, lights_and_cue));
+        for (int i = 0; i < 2; ++i) {
+            if (p[i].rgb)
+                CHECK(pixel_is(&p[i], 0.5, 0.5, expected, lit ? "lit, clamped, cued" : "no light active"));
+            free(p[i].rgb);
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -231,6 +304,7 @@ int main(int argc, char** argv) {
     back_faces();
     hollow_outlines();
     line_shading();
+    lighting_sums();
     pclose_phigs();
     return finish("test_plus_shading");
 }

@@ -102,8 +102,9 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
         glm::dvec3 sum(0.0);
         for (const FacetVertex& v : vertices) {
             const glm::vec3 b = useBack ? interior.backColour : v.colour;
-            sum += inModel(space, glm::dvec3(lit(interior, useBack, b, v.position,
-                                                 back ? -unit(v.normal) : unit(v.normal))));
+            const glm::vec3 vertex =
+                lit(interior, useBack, b, v.position, back ? -unit(v.normal) : unit(v.normal));
+            sum += inModel(space, glm::dvec3(glm::clamp(vertex, glm::vec3(0.0f), glm::vec3(1.0f))));
         }
         return glm::vec3(toRgb(space, sum / n));
     }
@@ -138,6 +139,8 @@ ItemColouring::CellLighting ItemColouring::patternLighting(const InteriorStyleSe
 }
 
 glm::vec3 ItemColouring::finish(glm::vec3 colour, double npcZ, ColourModel model) const {
+    // A lit colour past 1 is clamped before it is depth cued, as the raster does.
+    colour = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
     if (cue_) {
         const double range = std::max(cue_->frontPlane - cue_->backPlane, 1e-9);
         const float t = float(std::clamp((npcZ - cue_->backPlane) / range, 0.0, 1.0));

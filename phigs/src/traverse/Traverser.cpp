@@ -906,7 +906,7 @@ private:
     }
 
     int lightSet(const std::set<int>& active) {
-        if (active.empty()) return -1;
+        // No active light is a light set too: lit interiors sum over no lights and come out black.
         auto [it, fresh] = lightSets_.try_emplace(active, 0);
         if (fresh) {
             std::vector<Light> lights;

@@ -23,7 +23,7 @@ struct DrawContext {
     /// Composite modelling transform (global * local), to world.
     ItemRef<glm::dmat4> modelTransform = ItemRef<glm::dmat4>::permanent(&identityTransform());
     std::int32_t viewIndex = 0;  ///< index into DrawList::views
-    std::int32_t lightSet = -1;  ///< index into DrawList::lightSets, -1: no lights
+    std::int32_t lightSet = -1;  ///< index into DrawList::lightSets (the active lights, maybe none); -1 unset
     std::int32_t depthCue = -1;  ///< index into DrawList::depthCues, -1: none
     bool highlighted = false;
     bool pickable = true;  ///< false when the pick filter or detectability excludes it
