@@ -95,7 +95,7 @@ void main() {
         colour = fromRenderingModel(back ? vLitBack : vLitFront);
     } else if (FRAGMENT_SHADING != 0) {
         vec3 n;
-        if (FRAGMENT_SHADING == SHADE_PHONG) {
+        if (FRAGMENT_SHADING == SHADE_PHONG || FLAT_FACET_NORMALS) {
             n = normalize(vNormal);
         } else {
             // Flat: the facet normal from the screen-space derivatives of the world position,

@@ -146,6 +146,9 @@ layout(constant_id = 14) const bool MODEL_IDENTITY = false;
 // as front), the back while it is < 0 (the viewer in modelling coordinates; lines read no
 // reflectance).
 layout(constant_id = 16) const int SIDED_EDGES = 0;
+// Flat shading lights with the interpolated normal: each facet's given normal, alike at its
+// vertices (else the plane of the triangle, from the world position's derivatives).
+layout(constant_id = 17) const bool FLAT_FACET_NORMALS = false;
 
 // A positional (type 3) or spot (type 4) light at `position` seen from `world`: the unit
 // direction to it in l, and its attenuation (the caller reads the light's fields only for these

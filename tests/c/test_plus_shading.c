@@ -7,7 +7,8 @@
  * side's colour, exactly when that side faces the viewer and is not culled; and a polyline set with data
  * whose two vertex colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its
  * first vertex's colour with PSD_NONE; and a lit square shows black with no light active, and its
- * lit colour clamped to 1 before the depth cue scales it. argv[1]: a directory for the files. */
+ * lit colour clamped to 1 before the depth cue scales it; and a facet normal lights its facet.
+ * argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -294,6 +295,81 @@ static void lighting_sums(void) {
     }
 }
 
+static double facet_normal[3];
+
+/* Light 2 directional and white, shining against facet_normal (so N.L = 1 along it). */
+static void light_along_facet_normal(Pint ws) {
+    const double white[3] = {1, 1, 1};
+    Plight_src_bundle directional;
+    directional.type = PLIGHT_DIRECTIONAL;
+    directional.rec.directional.colr = direct(white);
+    directional.rec.directional.dir.delta_x = (Pfloat)-facet_normal[0];
+    directional.rec.directional.dir.delta_y = (Pfloat)-facet_normal[1];
+    directional.rec.directional.dir.delta_z = (Pfloat)-facet_normal[2];
+    EXPECT_NO_ERROR(pset_light_src_rep(ws, 2, &directional));
+}
+
+/* A square in a z plane with a random tilted facet normal, lit (diffuse only) by a light along
+ * that normal: without vertex normals every shading method lights it with the facet normal (full
+ * white); with vertex normals (0, 0, 1) flat shading still does, Gouraud and Phong use them
+ * (N.L = the facet normal's z). */
+static void facet_normals(void) {
+    for (int round = 0; round < 16; ++round) {
+        const int vertexNormals = round % 2;
+        const Pint shading = PSD_NONE + (round / 2) % 4;
+        const double white[3] = {1, 1, 1};
+        double expected[3], length = 0;
+        Prefl_props k = {0};
+        Pint active[1] = {2};
+        Pint_list on = {1, active}, off = {0, NULL};
+        Pptnorm3 v[4];
+        Ppoint3 points[4];
+        Pfacet_vdata_list3 vertices;
+        Pfacet_data3 facet;
+        Picture p[2];
+        facet_normal[0] = random_real(-0.6, 0.6), facet_normal[1] = random_real(-0.6, 0.6),
+        facet_normal[2] = 0.6;
+        for (int c = 0; c < 3; ++c) length += facet_normal[c] * facet_normal[c];
+        for (int c = 0; c < 3; ++c) facet_normal[c] /= sqrt(length);
+        for (int c = 0; c < 3; ++c)
+            expected[c] = vertexNormals && shading != PSD_NONE ? facet_normal[2] : 1.0;
+        k.diffuse_coef = 1, k.specular_colr = direct(white), k.specular_exp = 1;
+        for (int i = 0; i < 4; ++i) {
+            v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3),
+            v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
+            v[i].point.z = 0.5f;
+            v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
+        }
+        for (int i = 0; i < 4; ++i) points[i] = v[i].point;
+        vertices.num_vertices = 4;
+        if (vertexNormals)
+            vertices.vertex_data.ptnorms = v;
+        else
+            vertices.vertex_data.points = points;
+        memset(&facet, 0, sizeof facet);
+        facet.norm.delta_x = (Pfloat)facet_normal[0], facet.norm.delta_y = (Pfloat)facet_normal[1];
+        facet.norm.delta_z = (Pfloat)facet_normal[2];
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(PSTYLE_SOLID);
+        pset_int_colr(&k.specular_colr);
+        pset_refl_props(&k);
+        pset_refl_eqn(PREFL_AMB_DIFF);
+        pset_int_shad_meth(shading);
+        pset_light_src_state(&on, &off);
+        pfill_area_set3_data(PFACET_NORMAL, PEDGE_NONE, vertexNormals ? PVERT_COORD_NORMAL : PVERT_COORD,
+                             PMODEL_RGB, &facet, 1, NULL, &vertices);
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf_with(&files, p, light_along_facet_normal));
+        for (int i = 0; i < 2; ++i) {
+            if (p[i].rgb)
+                CHECK(pixel_is(&p[i], 0.5, 0.5, expected,
+                               vertexNormals ? "facet and vertex normals" : "facet normal"));
+            free(p[i].rgb);
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -305,6 +381,7 @@ int main(int argc, char** argv) {
     hollow_outlines();
     line_shading();
     lighting_sums();
+    facet_normals();
     pclose_phigs();
     return finish("test_plus_shading");
 }

@@ -82,7 +82,7 @@ glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::v
 }
 
 glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vector<FacetVertex>& vertices,
-                               bool vertexNormals, bool back) const {
+                               bool vertexNormals, bool back, bool facetNormals) const {
     if (vertices.empty()) return interior.colour;
     const bool useBack = interior.distinguishBackFaces && back;
     glm::dvec3 centre(0.0), normal(0.0), base(0.0);
@@ -109,7 +109,7 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
         return glm::vec3(toRgb(space, sum / n));
     }
     glm::dvec3 facetNormal(0.0);
-    if (method == ShadingMethod::Normal) {
+    if (method == ShadingMethod::Normal || facetNormals) {
         facetNormal = unit(normal);
     } else {
         // Flat: the plane's normal, turned the way the vertex normals point, else toward the viewer.
@@ -126,13 +126,14 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
 
 ItemColouring::CellLighting ItemColouring::patternLighting(const InteriorStyleSet& interior,
                                                            std::vector<FacetVertex> vertices,
-                                                           bool vertexNormals, bool back) const {
+                                                           bool vertexNormals, bool back,
+                                                           bool facetNormals) const {
     // The side's base colour is the cell's whichever side shows (front, back, vertex colours).
     auto litWith = [&](float base) {
         InteriorStyleSet in = interior;
         in.colour = in.backColour = glm::vec3(base);
         for (FacetVertex& v : vertices) v.colour = glm::vec3(base);
-        return facet(in, vertices, vertexNormals, back);
+        return facet(in, vertices, vertexNormals, back, facetNormals);
     };
     const glm::vec3 offset = litWith(0.0f);
     return {litWith(1.0f) - offset, offset};

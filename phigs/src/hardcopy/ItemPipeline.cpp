@@ -34,10 +34,11 @@ void FacetPaint::styleFor(const InteriorStyleSet& in, int facing) {
 }
 
 void FacetPaint::paintFor(const ItemColouring& colouring, const InteriorStyleSet& in,
-                          const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing) {
-    colour = colouring.facet(in, vertices, vertexNormals, facing < 0);
+                          const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing,
+                          bool facetNormals) {
+    colour = colouring.facet(in, vertices, vertexNormals, facing < 0, facetNormals);
     styleFor(in, facing);
-    if (pattern) cells = colouring.patternLighting(in, vertices, vertexNormals, facing < 0);
+    if (pattern) cells = colouring.patternLighting(in, vertices, vertexNormals, facing < 0, facetNormals);
 }
 
 bool FacetPaint::unfilled(const InteriorStyleSet& in, int facing) {

@@ -97,14 +97,19 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
         }
     if (vertices.size() < 3 || glm::length(normal) == 0.0) return;
     normal = glm::normalize(normal);
+    // A given facet normal turns the plane and lights the facet (ItemGeometry does the same).
+    glm::dvec3 lighting = normal;
+    bool given = false;
     if (glm::length(fill.facetNormal) > 0.0) {
-        const glm::dvec3 given =
+        const glm::dvec3 facet =
             glm::dvec3(glm::transpose(glm::inverse(pipeline_.item().modelTransform().get())) *
                        glm::dvec4(fill.facetNormal, 0.0));
-        if (glm::dot(given, normal) < 0.0) normal = -normal;
+        if (glm::dot(facet, normal) < 0.0) normal = -normal;
+        given = glm::length(facet) > 0.0;
+        lighting = given ? glm::normalize(facet) : normal;
     }
     centre /= double(vertices.size());
-    for (FacetVertex& v : vertices) v.normal = normal;
+    for (FacetVertex& v : vertices) v.normal = lighting;
     // The side shown: the winding on screen of a triangle counter-clockwise about the normal.
     const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const double size = std::max(glm::length(high - low), 1e-300);
@@ -113,7 +118,7 @@ void ItemProjector::fillInterior(const DrawFillArea& fill,
     const InteriorStyleSet& in = fill.interior;
     if (FacetPaint::unfilled(in, facing)) return;
     FacetPaint paint;
-    paint.paintFor(pipeline_.colouring(), in, vertices, true, facing);
+    paint.paintFor(pipeline_.colouring(), in, vertices, true, facing, given);
     paint.opacity = opacityOf(in, facing < 0);
     pipeline_.facet(world, paint);
 }
@@ -136,7 +141,7 @@ void ItemProjector::fillTriangles(const DrawFillArea& fill) {
             const int facing = pipeline_.facing(triangle[0], triangle[1], triangle[2]);
             if (FacetPaint::unfilled(in, facing)) continue;
             FacetPaint paint;
-            paint.paintFor(pipeline_.colouring(), in, vertices, true, facing);
+            paint.paintFor(pipeline_.colouring(), in, vertices, true, facing, part.facetNormals);
             paint.opacity = opacityOf(in, facing < 0);
             paint.seam = true;
             pipeline_.facet({triangle}, paint);

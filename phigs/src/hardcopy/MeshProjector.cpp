@@ -96,7 +96,8 @@ void MeshProjector::facets(bool coverOnly) {
         paint.seam = true;
         if (!coverOnly) {
             const bool back = facing < 0;
-            paint.paintFor(pipeline_.colouring(), in, vertices, normals, facing);
+            paint.paintFor(pipeline_.colouring(), in, vertices, normals, facing,
+                           normals && data_.normalsPerFacet);
             const Reflectance& r = back && in.distinguishBackFaces ? in.backProperties : in.properties;
             paint.opacity = 1.0f - std::clamp(r.transparency, 0.0f, 1.0f);
         }

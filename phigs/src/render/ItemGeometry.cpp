@@ -197,9 +197,18 @@ private:
 
         std::vector<glm::vec3> colours;
         std::vector<glm::dvec3> normals;
-        const bool haveColours = !f.vertexColours.empty();
-        const bool haveNormals = !f.vertexNormals.empty();
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(model_)));
+        // A given facet normal lights the facet where no vertex normals do, and where both sides
+        // are flat shaded (which lights a facet once, with its facet normal); it need not be the
+        // plane's normal: the plane is only turned to agree with it.
+        const InteriorStyleSet& style = f.interior;
+        const bool flatShaded =
+            style.shadingOf(false) == ShadingMethod::None && style.shadingOf(true) == ShadingMethod::None;
+        const bool given = (f.vertexNormals.empty() || flatShaded) && glm::length(f.facetNormal) > 0.0 &&
+                           glm::length(normalMatrix * f.facetNormal) > 0.0;
+        const bool haveColours = !f.vertexColours.empty();
+        const bool haveNormals = !f.vertexNormals.empty() && !given;
+        const glm::dvec3 lighting = given ? glm::normalize(normalMatrix * f.facetNormal) : normal;
         for (std::size_t c = 0; c < contours.size(); ++c)
             for (std::size_t i = 0; i < contours[c].size(); ++i) {
                 if (haveColours)
@@ -214,6 +223,7 @@ private:
         GeometryPart part = begin(false, PartRole::Interior, f.interior->colour);
         part.vertexColours = haveColours;
         part.vertexNormals = true;
+        part.facetNormals = given;
         for (std::uint32_t index : tri.triangles) {
             const TriangulationVertex& tv = tri.vertices[index];
             const double t = tv.t;
@@ -221,7 +231,7 @@ private:
             const glm::vec3 colour =
                 haveColours ? mixIn(f.interior->renderingModel, colours[tv.from], colours[tv.to], t)
                             : f.interior->colour;
-            glm::dvec3 n = haveNormals ? normals[tv.from] * (1.0 - t) + normals[tv.to] * t : normal;
+            glm::dvec3 n = haveNormals ? normals[tv.from] * (1.0 - t) + normals[tv.to] * t : lighting;
             if (glm::length(n) > 0.0) n = glm::normalize(n);
             push(p, glm::vec3(n), colour, {}, 0.0f);
         }

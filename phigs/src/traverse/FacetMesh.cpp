@@ -78,6 +78,7 @@ MeshData facetMesh(const FacetMeshInput& in) {
             if (facetNormals) m.normals.push_back(unit(in.facetNormals[f]));
         }
     }
+    m.normalsPerFacet = facetNormals;
     setFacets(m, in.facetOf);
     return m;
 }

@@ -54,6 +54,8 @@ constexpr int kColourModelShift = 39;
 // shader drops those whose triangle shows the other.
 constexpr std::uint64_t kSidedFront = 1ull << 41;
 constexpr std::uint64_t kSidedBack = 1ull << 42;
+// Flat shading lights with the vertices' normal, each facet's given normal alike at its vertices.
+constexpr std::uint64_t kFlatFacetNormals = 1ull << 43;
 
 // The subpass self-dependency of binningFlush: attachment writes, then later tests and writes.
 constexpr VkPipelineStageFlags kAttachmentStages = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -307,6 +309,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {14, flag(kIdentityModel)},
         {15, std::int32_t((key >> kColourModelShift) & 3) + 1},
         {16, flag(kSidedFront) - flag(kSidedBack)},
+        {17, flag(kFlatFacetNormals)},
     };
     const SpecialisedStages code =
         specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
@@ -442,6 +445,7 @@ Renderer::CachedMesh& Renderer::compileMesh(const std::shared_ptr<const MeshData
     cached.data = mesh;
     cached.lastUsed = frameNumber_;
     cached.hasNormals = mesh->normals.size() == mesh->positions.size() && !mesh->positions.empty();
+    cached.facetNormals = cached.hasNormals && mesh->normalsPerFacet;
     cached.hasColours = mesh->colours.size() == mesh->positions.size() && !mesh->positions.empty();
     const auto vertices = render::meshVertices(*mesh);
     cached.counts = render::meshIndices(*mesh);
@@ -491,6 +495,7 @@ void Renderer::addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddP
     if (sided) compileSidedEdges(cached);
     render::GeometryPart part;
     part.vertexNormals = cached.hasNormals;
+    part.facetNormals = cached.facetNormals;
     part.lines = true;
     part.role = render::PartRole::Edge;
     if (alike && cached.counts.edgeCount) {
@@ -682,6 +687,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 if (shade == gpu::Gouraud) {
                     c.pipeline |= kVertexLighting;
                 } else {
+                    if (shade == gpu::Flat && part.facetNormals) c.pipeline |= kFlatFacetNormals;
                     c.pipeline |= shade << kShadeShift;
                     bool local = signature < 0 || shade == gpu::Flat;
                     for (int j = 0; signature >= 0 && j < (signature & 7); ++j)

@@ -33,12 +33,13 @@ public:
                   const glm::vec4& highlight);
 
     /// The colour of a facet seen from its front or back. `vertexNormals`: the vertices carry
-    /// normals that drive the shading method (else the facet is flat shaded).
+    /// normals that drive the shading method (else the facet is flat shaded); `facetNormals`:
+    /// those normals are the facet's given normal, which flat shading then lights with.
     glm::vec3 facet(const InteriorStyleSet& interior, const std::vector<FacetVertex>& vertices,
-                    bool vertexNormals, bool back) const;
+                    bool vertexNormals, bool back, bool facetNormals = false) const;
     /// The lighting of a PATTERN facet's cells: facet() with the pattern cell as the base colour.
     CellLighting patternLighting(const InteriorStyleSet& interior, std::vector<FacetVertex> vertices,
-                                 bool vertexNormals, bool back) const;
+                                 bool vertexNormals, bool back, bool facetNormals = false) const;
     /// Depth cueing at NPC z (mixed in the rendering colour model `model`: interiors give
     /// theirs), then highlighting, clamped: what every colour goes through last.
     glm::vec3 finish(glm::vec3 colour, double npcZ, ColourModel model = ColourModel::Rgb) const;

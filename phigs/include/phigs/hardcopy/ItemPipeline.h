@@ -36,7 +36,8 @@ struct FacetPaint {
     /// The colour of a facet facing that way (ItemColouring::facet), its style (styleFor), and
     /// for a PATTERN side the lighting of its cells.
     void paintFor(const ItemColouring& colouring, const InteriorStyleSet& in,
-                  const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing);
+                  const std::vector<FacetVertex>& vertices, bool vertexNormals, int facing,
+                  bool facetNormals = false);
     /// Whether a facet facing that way is not filled: its side culled, or of a HOLLOW or EMPTY style.
     static bool unfilled(const InteriorStyleSet& in, int facing);
 };

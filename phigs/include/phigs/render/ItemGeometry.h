@@ -35,7 +35,9 @@ struct GeometryPart {
     float lineWidth = 1.0f;
     bool vertexColours = false;  ///< the vertices carry colours (else `colour`)
     bool vertexNormals = false;  ///< the vertices carry normals (else facet normals)
-    bool offsetInNpc = false;    ///< offsets are NPC units (annotation text), else pixels
+    /// The vertices' normals are their facet's given normal: flat shading lights with it.
+    bool facetNormals = false;
+    bool offsetInNpc = false;  ///< offsets are NPC units (annotation text), else pixels
     /// `pattern` is a length in modelling units (mesh iso-lines), else pixels on screen.
     bool patternInModelUnits = false;
     /// The outline of a HOLLOW side of a fill area: +1 of its front, -1 of its back (drawn only

@@ -84,9 +84,12 @@ struct DrawText {
 struct MeshData {
     std::vector<glm::vec3> positions;   ///< modelling coordinates
     std::vector<PackedNormal> normals;  ///< one per position (unit), or empty (facet normals)
-    std::vector<glm::vec3> colours;     ///< one per position, or empty (interior colour)
-    std::vector<glm::vec2> uv;          ///< surface parameters per position, or empty
-    SharedIndexList triangles;          ///< three indices per triangle, counter-clockwise = front
+    /// The normals are each facet's given normal, alike at its vertices: flat shading lights the
+    /// facet with it rather than with the plane of its triangles.
+    bool normalsPerFacet = false;
+    std::vector<glm::vec3> colours;  ///< one per position, or empty (interior colour)
+    std::vector<glm::vec2> uv;       ///< surface parameters per position, or empty
+    SharedIndexList triangles;       ///< three indices per triangle, counter-clockwise = front
     std::vector<std::vector<std::uint32_t>>
         isoLines;  ///< polylines through positions (iso-parametric curves)
     /// Polylines through positions drawn as edges while the edge flag is on (a NURBS surface's

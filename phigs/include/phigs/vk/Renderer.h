@@ -65,6 +65,7 @@ private:
         std::unique_ptr<GpuBuffer> indices;
         render::MeshIndices counts;
         bool hasNormals = false, hasColours = false;
+        bool facetNormals = false;  ///< the normals are each facet's given one (MeshData::normalsPerFacet)
         /// Each triangle's facet edges with its plane (render::meshSidedEdges), made when a
         /// HOLLOW side first needs them, and their indices (0, 1, 2, ...).
         std::unique_ptr<GpuBuffer> sidedVertices, sidedIndices;
