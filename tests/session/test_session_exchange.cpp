@@ -100,7 +100,22 @@ TEST_CASE("FILE menu: EXPORT the transport with a mapped logo to STEP and IGES, 
         // An imported model is saved as it is (its surfaces), as any other.
         d.run({"choice RETURN", "choice FILE", "choice SAVE_MODEL", "string imported.acs"});
         CHECK(d.session.message().rfind("MODEL transport SAVED TO ", 0) == 0);
-        d.run({"choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice RETURN"});
+        // ... and read back with its mapped loops (which came with no reference point).
+        std::vector<acsynt::MappingRecord> before;
+        for (const auto& m : d.session.mappings())
+            if (m.model == d.session.models().current().name) before.push_back(m);
+        REQUIRE(before.size() == 1);
+        const auto saved = session_test::outputDirectory("exchange") / "imported.acs";
+        d.run({"choice READ_MODEL", "string " + saved.string()});
+        REQUIRE(d.session.models().size() == 3);
+        std::vector<acsynt::MappingRecord> after;
+        for (const auto& m : d.session.mappings())
+            if (m.model == d.session.models().current().name) after.push_back(m);
+        REQUIRE(after.size() == 1);
+        CHECK(after[0].polylines == before[0].polylines);
+        CHECK(after[0].uvPolylines == before[0].uvPolylines);
+        d.run({"choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice DELETE_MODEL",
+               "choice RETURN"});
         CHECK(d.session.models().size() == 1);
     }
 }

@@ -75,6 +75,12 @@ MappingRecord mappingOf(const geom::exchange::SurfaceCurves& curves, const Model
     m.parts = 1;  // how the loops grouped into parts is not in the file
     m.loops = curves.loops.size();
     m.loopsPerPart = {m.loops};
+    // One part holding every loop, so that SAVE_MODEL writes (and READ_MODEL reads) them.
+    PartReport part;
+    part.name = curves.name.empty() ? "-" : curves.name;
+    part.outcome = PartOutcome::Mapped;
+    part.loops = m.loops;
+    m.partReports.push_back(std::move(part));
     for (const auto& loop : curves.loops) {
         m.polylines.push_back(loop.points);
         m.uvPolylines.push_back(loop.uv);

@@ -180,11 +180,12 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
     const auto ref = r.line("reference", 5);
     m.reference.component = int(r.count(ref[1], model.components.size() - 1));
     const Component& referenced = model.components[std::size_t(m.reference.component)];
-    m.reference.patch = int(r.count(ref[2], referenced.patches.size()));  // 1-based
-    if (m.reference.patch < 1) r.fail("patch 0: patches are numbered from 1");
+    // Patches count from 1; 0 is a mapping with no reference point (one an IGES or STEP file
+    // brought in: the loops, not how they were placed).
+    m.reference.patch = int(r.count(ref[2], referenced.patches.size()));
     m.reference.u = r.real(ref[3]);
     m.reference.w = r.real(ref[4]);
-    if (!inDomain(referenced, {m.reference.u, m.reference.w}, false))
+    if (m.reference.patch > 0 && !inDomain(referenced, {m.reference.u, m.reference.w}, false))
         r.fail("the reference point (" + ref[3] + ", " + ref[4] + ") is outside " + referenced.name +
                "'s parameter domain");
     const Component& mapped = *model.find(m.component);
@@ -262,8 +263,16 @@ void writeModelState(std::ostream& out, const Model& model, const std::vector<Ma
         out << "mapping " << (file.empty() ? "-" : file) << " " << m.component << "\n";
         out << "reference " << m.reference.component << " " << m.reference.patch << " " << hex(m.reference.u)
             << " " << hex(m.reference.w) << "\n";
-        out << "parts " << m.partReports.size() << "\n";
-        for (const PartReport& p : m.partReports) {
+        // Every loop is some part's in the file: loops that came with no part reports (an
+        // imported mapping's) are written as one mapped part.
+        std::vector<PartReport> parts = m.partReports;
+        if (parts.empty() && !m.polylines.empty()) {
+            parts.emplace_back();
+            parts.back().outcome = PartOutcome::Mapped;
+            parts.back().loops = m.polylines.size();
+        }
+        out << "parts " << parts.size() << "\n";
+        for (const PartReport& p : parts) {
             std::string reason = p.reason;
             for (char& ch : reason)
                 if (ch == '\n' || ch == '\r') ch = ' ';
