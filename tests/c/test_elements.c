@@ -180,6 +180,12 @@ static void attributes(void) {
     pset_indiv_asf(PASPECT_EDGE_FLAG, PASF_INDIV);
     d = last(PELEM_INDIV_ASF);
     CHECK(d->asf.id == PASPECT_EDGE_FLAG && d->asf.source == PASF_INDIV);
+    /* Every aspect, PHIGS PLUS's too (in the sample implementation's order), stores and reads back. */
+    for (int a = PASPECT_LINETYPE; a <= PASPECT_SURF_APPROX_CRIT; ++a) {
+        pset_indiv_asf((Paspect)a, a % 2 ? PASF_BUNDLED : PASF_INDIV);
+        d = last(PELEM_INDIV_ASF);
+        CHECK(d->asf.id == (Paspect)a && d->asf.source == (a % 2 ? PASF_BUNDLED : PASF_INDIV));
+    }
     padd_names_set(&name_list);
     d = last(PELEM_ADD_NAMES_SET);
     CHECK(d->names.num_ints == 3 && d->names.ints[2] == 6);

@@ -632,6 +632,16 @@ static void drawn_from_plus_bundles(void) {
     EXPECT_NO_ERROR(pset_line_rep(1, 3, &red));
     EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
     CHECK(svg_has_colour(100, 0, 0) && !svg_has_colour(0, 100, 0) && svg_has_colour(0, 0, 100));
+    /* The PHIGS PLUS aspects are bundled too: the entry's reflectance equation AMBIENT, taken from
+     * the bundle after the fill area's set, sums over no active light: no blue is drawn. */
+    interior.refl_eqn = PREFL_AMBIENT;
+    EXPECT_NO_ERROR(pset_int_rep_plus(1, 3, &interior));
+    popen_struct(1);
+    pset_elem_ptr(6);
+    pset_indiv_asf(PASPECT_INT_REFL_EQN, PASF_BUNDLED);
+    pclose_struct();
+    EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
+    CHECK(svg_has_colour(100, 0, 0) && !svg_has_colour(0, 0, 100));
 }
 
 int main(int argc, char** argv) {

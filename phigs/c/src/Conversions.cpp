@@ -1,6 +1,43 @@
 #include "Conversions.h"
 
+#include <array>
+
 namespace phigs::c {
+
+namespace {
+
+/// Paspect's order (the index) to the core's aspects.
+constexpr std::array<AspectId, 30> kAspects = {
+    AspectId::LineType,           AspectId::LinewidthScale,
+    AspectId::PolylineColour,     AspectId::MarkerType,
+    AspectId::MarkerSizeScale,    AspectId::PolymarkerColour,
+    AspectId::TextFont,           AspectId::TextPrecision,
+    AspectId::CharacterExpansion, AspectId::CharacterSpacing,
+    AspectId::TextColour,         AspectId::InteriorStyle,
+    AspectId::InteriorStyleIndex, AspectId::InteriorColour,
+    AspectId::EdgeFlag,           AspectId::EdgeType,
+    AspectId::EdgewidthScale,     AspectId::EdgeColour,
+    AspectId::PolylineShading,    AspectId::InteriorShading,
+    AspectId::AreaProperties,     AspectId::InteriorReflectance,
+    AspectId::BackInteriorStyle,  AspectId::BackInteriorStyleIndex,
+    AspectId::BackInteriorColour, AspectId::BackInteriorShading,
+    AspectId::BackAreaProperties, AspectId::BackInteriorReflectance,
+    AspectId::CurveApproximation, AspectId::SurfaceApproximation};
+static_assert(kAspects.size() == std::size_t(PASPECT_SURF_APPROX_CRIT) + 1);
+static_assert(kAspects.size() == std::size_t(AspectId::Count_));
+
+}  // namespace
+
+int aspectOf(int paspect) {
+    if (paspect < 0 || paspect >= int(kAspects.size())) return -1;
+    return int(kAspects[std::size_t(paspect)]);
+}
+
+Paspect paspectOf(AspectId aspect) {
+    for (std::size_t i = 0; i < kAspects.size(); ++i)
+        if (kAspects[i] == aspect) return static_cast<Paspect>(i);
+    return PASPECT_LINETYPE;
+}
 
 std::vector<glm::dvec3> points(const Ppoint_list3* list, const char* function) {
     require(list, function);

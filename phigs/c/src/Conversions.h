@@ -4,6 +4,7 @@
 
 #include "Binding.h"
 #include "phigs.h"
+#include "phigs/store/Element.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -23,6 +24,12 @@ int raw(const Enum& value) {
     std::memcpy(&v, &value, sizeof v);
     return v;
 }
+
+/// The core's aspect of an ASF, or -1 for a value that names none (phigs.h's Paspect puts the
+/// PHIGS PLUS aspects in the sample implementation's order, the core in its own).
+int aspectOf(int paspect);
+/// The Paspect of a core aspect.
+Paspect paspectOf(AspectId aspect);
 
 /// A count the application gives: negative is the binding's bad-argument error.
 inline std::size_t count(Pint n, const char* function) {

@@ -559,7 +559,7 @@ int fillContent(const Element& element, Phigs_store& s) {
                 s.data.text_align = {static_cast<Phor_text_align>(e.horizontal),
                                      static_cast<Pvert_text_align>(e.vertical)};
             else if constexpr (std::is_same_v<E, AsfAttribute>)
-                s.data.asf = {static_cast<Paspect>(e.aspect), e.individual ? PASF_INDIV : PASF_BUNDLED};
+                s.data.asf = {c::paspectOf(e.aspect), e.individual ? PASF_INDIV : PASF_BUNDLED};
             else if constexpr (std::is_same_v<E, NameSetElement>) {
                 s.ints.assign(e.names.begin(), e.names.end());
                 s.data.names = {static_cast<Pint>(s.ints.size()), s.ints.data()};

@@ -372,10 +372,10 @@ void pset_anno_align(const Ptext_align* a) {
 void pset_indiv_asf(Paspect aspect, Pasf asf) {
     const int id = c::raw(aspect), source = c::raw(asf);
     insertElement(Pfn_set_indiv_asf, [&](const char* n) -> Element {
-        if (id < PASPECT_LINETYPE || id > PASPECT_EDGE_COLR_IND ||
-            (source != PASF_BUNDLED && source != PASF_INDIV))
+        const int core = c::aspectOf(id);
+        if (core < 0 || (source != PASF_BUNDLED && source != PASF_INDIV))
             throw Error(PE_ENUM_TYPE_INVAL, n, "aspect or source");
-        return AsfAttribute{static_cast<AspectId>(id), source == PASF_INDIV};
+        return AsfAttribute{static_cast<AspectId>(core), source == PASF_INDIV};
     });
 }
 
