@@ -94,6 +94,12 @@ TEST_CASE("FILE menu: EXPORT the transport with a mapped logo to STEP and IGES, 
         CHECK(d.session.message() == "MODEL transport IMPORTED: 8 COMPONENTS, 376 PATCHES, 1 MAPPED CURVES");
         d.run({"choice RETURN"});
         REQUIRE(d.session.models().size() == 2);
+        // IMPORT is a change of its own: UNDO takes back the imported model alone.
+        d.run({"undo"});
+        CHECK(d.session.message() == "UNDONE: IMPORT transport");
+        CHECK(d.session.models().size() == 1);
+        d.run({"redo"});
+        REQUIRE(d.session.models().size() == 2);
         requireSameModel(d.session, original, true);
         d.run({"choice CURVE_MAP", "choice DISPLAY_ALL"});
         CHECK(d.session.message() == "DISPLAYING 1 MAPPED CURVES");

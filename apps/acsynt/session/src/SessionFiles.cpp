@@ -177,8 +177,10 @@ void Session::importModel(const std::string& name) {
     const std::string modelName = imported.model.name;
     const std::size_t patches = imported.model.patchCount(), components = imported.model.components.size();
     const std::size_t curves = imported.mappings.size();
+    SessionState before = core_.state();
     core_.models.add(std::move(imported.model));
     for (auto& m : imported.mappings) core_.mappings.push_back(std::move(m));
+    core_.remember(std::move(before), "IMPORT " + modelName);
     showModel();
     say("MODEL " + modelName + " IMPORTED: " + std::to_string(components) + " COMPONENTS, " +
         std::to_string(patches) + " PATCHES, " + std::to_string(curves) + " MAPPED CURVES" +
