@@ -1,5 +1,6 @@
 #include "geom/Tessellate.h"
 #include "NumberText.h"
+#include "SegmentDistance.h"
 
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
@@ -159,12 +160,7 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
 
 namespace {
 
-double segmentDistance(const glm::dvec3& x, const glm::dvec3& a, const glm::dvec3& b) {
-    const glm::dvec3 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double s = len2 > 0.0 ? std::clamp(glm::dot(x - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(x - (a + s * ab));
-}
+using detail::segmentDistance;
 
 /// The largest distance of a Bézier piece's control points (homogeneous, positive weights) from
 /// the chord between its end points: with positive weights the piece lies in the convex hull of

@@ -223,6 +223,15 @@ static void line_shading(void) {
     }
 }
 
+/* The square [0.3, 0.7]^2 in the plane z = 0.5, counter-clockwise, vertex normals (0, 0, 1). */
+static void square_facing_z(Pptnorm3 v[4]) {
+    for (int i = 0; i < 4; ++i) {
+        v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3), v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
+        v[i].point.z = 0.5f;
+        v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
+    }
+}
+
 /* Light 1 ambient and light 2 directional along -z, both white; depth cue 2 halves every colour
  * toward black. */
 static void lights_and_cue(Pint ws) {
@@ -266,12 +275,7 @@ static void lighting_sums(void) {
             const double sum = (k.ambient_coef + k.diffuse_coef) * colour[c];
             expected[c] = lit ? 0.5 * (sum > 1 ? 1 : sum) : 0;
         }
-        for (int i = 0; i < 4; ++i) {
-            v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3),
-            v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
-            v[i].point.z = 0.5f;
-            v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
-        }
+        square_facing_z(v);
         vertices.num_vertices = 4, vertices.vertex_data.ptnorms = v;
         memset(&facet, 0, sizeof facet);
         pdel_struct(1);
@@ -334,12 +338,7 @@ static void facet_normals(void) {
         for (int c = 0; c < 3; ++c)
             expected[c] = vertexNormals && shading != PSD_NONE ? facet_normal[2] : 1.0;
         k.diffuse_coef = 1, k.specular_colr = direct(white), k.specular_exp = 1;
-        for (int i = 0; i < 4; ++i) {
-            v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3),
-            v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
-            v[i].point.z = 0.5f;
-            v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
-        }
+        square_facing_z(v);
         for (int i = 0; i < 4; ++i) points[i] = v[i].point;
         vertices.num_vertices = 4;
         if (vertexNormals)

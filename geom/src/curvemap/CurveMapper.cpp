@@ -1,5 +1,6 @@
 #include "geom/curvemap/CurveMapper.h"
 #include "../NumberText.h"
+#include "../SegmentDistance.h"
 
 #include "KnotLines.h"
 #include "ProjectedBoxes.h"
@@ -23,12 +24,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double distanceToSegment(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
-    const glm::dvec3 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
+using detail::segmentDistance;
 
 /// One projection of a placed curve point along the normal.
 struct Sample {
@@ -225,8 +221,8 @@ Sample PartMapper::project(double s) {
 
 bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b, double fraction) const {
     const double tol = options_.tolerance;
-    if (distanceToSegment(m.local, a.local, b.local) > tol) return true;  // the plane curve's own bend
-    if (a.hit != b.hit) return glm::length(a.from - b.from) > tol;        // bracket the crossing tightly
+    if (segmentDistance(m.local, a.local, b.local) > tol) return true;  // the plane curve's own bend
+    if (a.hit != b.hit) return glm::length(a.from - b.from) > tol;      // bracket the crossing tightly
     if (!a.hit) {
         // Both ends and the inner samples miss; the lines between may still cut a corner of the
         // surface's outline: split while the chord's strip of lines meets a patch's box.
@@ -234,7 +230,7 @@ bool PartMapper::needsSplit(const Sample& a, const Sample& m, const Sample& b, d
         return m.hit || (glm::length(q - p) > tol && boxes_.mayMeet(p, q, tol));
     }
     if (!m.hit) return true;
-    if (distanceToSegment(m.point, a.point, b.point) > tol) return true;  // the mapped curve's bend
+    if (segmentDistance(m.point, a.point, b.point) > tol) return true;  // the mapped curve's bend
     // A jump to another sheet (the nearest hit switching surfaces) puts the inner sample near one
     // end instead of near its share of the chord; smooth curves stay far from this bound.
     const glm::dvec3 share = a.point + fraction * (b.point - a.point);
@@ -278,7 +274,7 @@ bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const
     }
     const Sample &a = q[static_cast<std::size_t>(piece)], &b = q[static_cast<std::size_t>(piece) + 1];
     const double tol = options_.tolerance;
-    const double bow = distanceToSegment(point, a.point, b.point);  // of the mapped curve from the chord
+    const double bow = segmentDistance(point, a.point, b.point);  // of the mapped curve from the chord
     if (bow > tol) return true;
     const glm::dvec2 ua = domain_.unwrapNear(a.uv, q[0].uv), d = domain_.unwrapNear(b.uv, ua) - ua;
     const double len2 = glm::dot(d, d);
@@ -290,7 +286,7 @@ bool PartMapper::subChordStrays(const std::array<Sample, 4>& q, int piece) const
     // curve's bow.
     if (!knotLines_.crossesKnot(ua, ua + d)) return false;
     for (int k = 1; k < 8; ++k)
-        if (distanceToSegment(pointAt(ua + (k / 8.0) * d), a.point, b.point) + bow > tol) return true;
+        if (segmentDistance(pointAt(ua + (k / 8.0) * d), a.point, b.point) + bow > tol) return true;
     return false;
 }
 
@@ -385,7 +381,7 @@ void PartMapper::densifyWalk(int component, double a, double b, int depth, std::
     const glm::dvec3 pa = pointAt(boundary_.uvAt(component, a)), pb = pointAt(boundary_.uvAt(component, b));
     const glm::dvec3 pm = pointAt(boundary_.uvAt(component, m));
     if (depth < options_.maxDepth &&
-        (depth < 2 || distanceToSegment(pm, pa, pb) > options_.tolerance ||
+        (depth < 2 || segmentDistance(pm, pa, pb) > options_.tolerance ||
          b - a > 0.25 * boundary_.lengths[static_cast<std::size_t>(component)])) {
         densifyWalk(component, a, m, depth + 1, out);
         densifyWalk(component, m, b, depth + 1, out);
@@ -466,7 +462,7 @@ std::vector<Sample> PartMapper::sampleCurve() {
         const glm::dvec3 first = curve_.points[i - degree], last = curve_.points[i];
         double bend = 0.0;
         for (std::size_t k = i - degree + 1; k < i; ++k)
-            bend = std::max(bend, distanceToSegment(curve_.points[k], first, last));
+            bend = std::max(bend, segmentDistance(curve_.points[k], first, last));
         const int pieces = bend <= 1e-12 * (1.0 + size) ? 2 : 4;
         for (int k = 0; k < pieces; ++k) params.push_back(a + (b - a) * k / pieces);
     }

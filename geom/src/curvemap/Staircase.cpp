@@ -1,4 +1,5 @@
 #include "geom/curvemap/Staircase.h"
+#include "../SegmentDistance.h"
 
 #include "geom/GeometryError.h"
 
@@ -11,19 +12,14 @@ namespace geom::curvemap {
 
 namespace {
 
-double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double len2 = glm::dot(ab, ab);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
+using detail::segmentDistance;
 
 /// Distance from p to the polyline points[first..last].
 double distanceToPolyline(const glm::dvec2& p, const std::vector<glm::dvec2>& points, std::size_t first,
                           std::size_t last) {
     double best = glm::length(p - points[first]);
     for (std::size_t k = first; k < last; ++k)
-        best = std::min(best, distanceToSegment(p, points[k], points[k + 1]));
+        best = std::min(best, segmentDistance(p, points[k], points[k + 1]));
     return best;
 }
 
@@ -33,7 +29,7 @@ double distanceToPolyline(const glm::dvec2& p, const std::vector<glm::dvec2>& po
 bool stepFits(const std::vector<glm::dvec2>& p, std::size_t i, std::size_t j, const glm::dvec2& corner,
               double tol) {
     for (std::size_t k = i + 1; k < j; ++k) {
-        if (std::min(distanceToSegment(p[k], p[i], corner), distanceToSegment(p[k], corner, p[j])) > tol)
+        if (std::min(segmentDistance(p[k], p[i], corner), segmentDistance(p[k], corner, p[j])) > tol)
             return false;
     }
     return distanceToPolyline(corner, p, i, j) <= tol &&
@@ -88,7 +84,7 @@ std::vector<glm::dvec2> staircaseApproximation(const std::vector<glm::dvec2>& lo
         }
         if (j == i + 1) {
             const glm::dvec2 c2(p[i].x, p[j].y);
-            if (distanceToSegment(c2, p[i], p[j]) < distanceToSegment(corner, p[i], p[j])) corner = c2;
+            if (segmentDistance(c2, p[i], p[j]) < segmentDistance(corner, p[i], p[j])) corner = c2;
         }
         out.push_back(corner);
         out.push_back(p[j]);
