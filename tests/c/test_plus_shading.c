@@ -232,6 +232,20 @@ static void square_facing_z(Pptnorm3 v[4]) {
     }
 }
 
+/* Opens structure 1 afresh with a SOLID interior in the reflectance's specular colour, lit
+ * (ambient and diffuse) with those properties, the shading method and light source state. */
+static void open_lit_structure(const Prefl_props* k, Pint shading, const Pint_list* on,
+                               const Pint_list* off) {
+    pdel_struct(1);
+    popen_struct(1);
+    pset_int_style(PSTYLE_SOLID);
+    pset_int_colr(&k->specular_colr);
+    pset_refl_props(k);
+    pset_refl_eqn(PREFL_AMB_DIFF);
+    pset_int_shad_meth(shading);
+    pset_light_src_state(on, off);
+}
+
 /* Light 1 ambient and light 2 directional along -z, both white; depth cue 2 halves every colour
  * toward black. */
 static void lights_and_cue(Pint ws) {
@@ -278,15 +292,8 @@ static void lighting_sums(void) {
         square_facing_z(v);
         vertices.num_vertices = 4, vertices.vertex_data.ptnorms = v;
         memset(&facet, 0, sizeof facet);
-        pdel_struct(1);
-        popen_struct(1);
-        pset_int_style(PSTYLE_SOLID);
-        pset_int_colr(&k.specular_colr);
-        pset_refl_props(&k);
-        pset_refl_eqn(PREFL_AMB_DIFF);
-        pset_int_shad_meth(shading);
+        open_lit_structure(&k, shading, &on, &off);
         pset_dcue_ind(2);
-        pset_light_src_state(&on, &off);
         pfill_area_set3_data(PFACET_NONE, PEDGE_NONE, PVERT_COORD_NORMAL, PMODEL_RGB, &facet, 1, NULL,
                              &vertices);
         pclose_struct();
@@ -348,14 +355,7 @@ static void facet_normals(void) {
         memset(&facet, 0, sizeof facet);
         facet.norm.delta_x = (Pfloat)facet_normal[0], facet.norm.delta_y = (Pfloat)facet_normal[1];
         facet.norm.delta_z = (Pfloat)facet_normal[2];
-        pdel_struct(1);
-        popen_struct(1);
-        pset_int_style(PSTYLE_SOLID);
-        pset_int_colr(&k.specular_colr);
-        pset_refl_props(&k);
-        pset_refl_eqn(PREFL_AMB_DIFF);
-        pset_int_shad_meth(shading);
-        pset_light_src_state(&on, &off);
+        open_lit_structure(&k, shading, &on, &off);
         pfill_area_set3_data(PFACET_NORMAL, PEDGE_NONE, vertexNormals ? PVERT_COORD_NORMAL : PVERT_COORD,
                              PMODEL_RGB, &facet, 1, NULL, &vertices);
         pclose_struct();
