@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -70,6 +71,12 @@ inline void checkSpan(std::span<const double> knots, std::size_t span, int degre
     bool ordered = span >= p && span + p + 1 < knots.size() && knots[span] < knots[span + 1];
     for (std::size_t i = span + 1 - p; ordered && i < span + p; ++i) ordered = knots[i] <= knots[i + 1];
     if (!ordered) spanNotOrdered(span, where);
+}
+
+/// A weight geom computes with: finite and at least the smallest normal double (a subnormal one
+/// beside ordinary weights makes their ratio overflow). validate() and the per-point checks share it.
+inline bool usableWeight(double w) {
+    return std::isfinite(w) && w >= std::numeric_limits<double>::min();
 }
 
 /// All three coordinates finite.

@@ -10,14 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 
 namespace geom {
 namespace {
-
-/// A subnormal weight beside ordinary ones makes their ratio overflow (validate() refuses it too).
-constexpr double kSmallestWeight = std::numeric_limits<double>::min();
 
 double binomial(int n, int k) {
     double r = 1.0;
@@ -76,7 +72,7 @@ void curveDerivatives(const Curve& curve, double u, int order, const char* where
         for (std::size_t j = 0; j < w; ++j) {
             const std::size_t idx = span - static_cast<std::size_t>(p) + j;
             const double wt = curve.weight(idx);
-            if (!(wt >= kSmallestWeight))
+            if (!detail::usableWeight(wt))
                 throw GeometryError(std::string(where) + ": weight " + std::to_string(idx) +
                                     " is not a positive normal number");
             hom[static_cast<std::size_t>(k)] +=
@@ -120,7 +116,7 @@ void firstOrder(const Surface& surface, double u, double v, std::size_t spanU, s
             for (std::size_t c = 0; c <= q; ++c) {
                 const std::size_t j = spanV - q + c;
                 const double wt = surface.weights[i * surface.countV + j];
-                if (!(wt >= kSmallestWeight)) weightNotNormal(where, i, j);
+                if (!detail::usableWeight(wt)) weightNotNormal(where, i, j);
                 const glm::dvec4 pw(surface.points[i * surface.countV + j] * wt, wt);
                 row += nv[c] * pw;
                 rowV += dnv[c] * pw;
@@ -189,7 +185,7 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
                 const std::size_t i = spanU - static_cast<std::size_t>(p) + r;
                 const std::size_t j = spanV - static_cast<std::size_t>(q) + s;
                 const double wt = surface.weight(i, j);
-                if (!(wt >= kSmallestWeight)) weightNotNormal(where, i, j);
+                if (!detail::usableWeight(wt)) weightNotNormal(where, i, j);
                 temp[s] +=
                     nu[static_cast<std::size_t>(k) * wu + r] * glm::dvec4(surface.point(i, j) * wt, wt);
             }

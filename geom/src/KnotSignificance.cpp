@@ -212,7 +212,7 @@ double knotRemovalWeight(const Curve& curve, std::size_t knotIndex) {
     for (std::size_t i = from; i < std::min(knotIndex + 1, curve.points.size()); ++i) {
         const glm::dvec3& c = curve.points[i];
         if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
-            !(curve.weight(i) >= std::numeric_limits<double>::min()) || !std::isfinite(curve.weight(i)))
+            !detail::usableWeight(curve.weight(i)))
             throw GeometryError("knotRemovalWeight: control point " + std::to_string(i) +
                                 " is not finite or its weight is not a positive normal number");
     }

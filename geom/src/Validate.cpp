@@ -1,3 +1,4 @@
+#include "Checked.h"
 #include "NumberText.h"
 #include "geom/Curve.h"
 #include "geom/GeometryError.h"
@@ -59,8 +60,7 @@ void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vec
         throw GeometryError(where + ": " + std::to_string(weights.size()) + " weights for " +
                             std::to_string(points.size()) + " control points");
     for (std::size_t i = 0; i < weights.size(); ++i)
-        // A subnormal weight beside ordinary ones makes their ratio overflow a double.
-        if (!std::isfinite(weights[i]) || !(weights[i] >= std::numeric_limits<double>::min()))
+        if (!detail::usableWeight(weights[i]))
             throw GeometryError(
                 where + ": weight " + std::to_string(i) + " is " + detail::numberText(weights[i]) +
                 ", weights must be finite and at least the smallest normal double (2.2e-308)");
