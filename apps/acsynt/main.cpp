@@ -136,7 +136,9 @@ std::string resolveInput(const std::string& name) {
 std::string unreadable(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return "is a directory";
-    return access(path.c_str(), R_OK) == 0 ? "" : "cannot be read";
+    if (access(path.c_str(), R_OK) != 0) return "cannot be read";
+    // A device or a pipe (/dev/zero, a FIFO) could block the read or never end.
+    return std::filesystem::is_regular_file(path, ec) ? "" : "is not a regular file";
 }
 
 /// --export OUT MODEL: OUT an IGES or STEP name that can be written, MODEL readable.
@@ -170,18 +172,11 @@ bool checkPaths(const Options& o) {
             std::cerr << "acsynt: --import " << o.importFile << " " << why << "\n";
             return false;
         }
-    if (!o.script.empty() &&
-        (std::filesystem::is_directory(o.script, ec) || access(o.script.c_str(), R_OK) != 0)) {
-        std::cerr << "acsynt: --script " << o.script
-                  << (std::filesystem::is_directory(o.script, ec) ? " is a directory" : " cannot be read")
-                  << "\n";
-        return false;
-    }
-    // A device or a pipe (/dev/zero, a FIFO) could block the read or never end.
-    if (!o.script.empty() && !std::filesystem::is_regular_file(o.script, ec)) {
-        std::cerr << "acsynt: --script " << o.script << " is not a regular file\n";
-        return false;
-    }
+    if (!o.script.empty())
+        if (const std::string why = unreadable(o.script); !why.empty()) {
+            std::cerr << "acsynt: --script " << o.script << " " << why << "\n";
+            return false;
+        }
     if (!o.record.empty())
         if (const std::string why = unwritable(o.record); !why.empty()) {
             std::cerr << "acsynt: --record " << o.record << " " << why << "\n";

@@ -92,6 +92,8 @@ expect_in script_missing.err "cannot be read"
 # A device or a pipe where a file is expected is refused, not read for ever.
 run script_device 2 --script /dev/zero --output out_z
 expect_in script_device.err "--script /dev/zero is not a regular file"
+run import_device 2 --import /dev/zero --script good.session --output out_zi
+expect_in import_device.err "--import /dev/zero is not a regular file"
 printf 'choice FILE\nchoice READ_MODEL\nstring /dev/zero\n' >devmodel.session
 run devmodel 3 --script devmodel.session --output out_dev --size 320x240
 expect_in out_dev/acsynt.log "/dev/zero:0: is not a regular file"

@@ -448,13 +448,17 @@ AircraftDescription parseAircraftDescription(std::istream& in, const std::string
     return Parser(in, fileName).parse();
 }
 
-AircraftDescription readAircraftDescription(const std::filesystem::path& path) {
+void requireRegularFile(const std::filesystem::path& path, const std::string& suffix) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
-        throw ModelFileError(path.string(), 0, "is a directory, not an aircraft description");
-    // A device or a pipe (/dev/zero, a FIFO) could block the open or never end.
+        throw ModelFileError(path.string(), 0, "is a directory" + suffix);
     if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-        throw ModelFileError(path.string(), 0, "is not a regular file, not an aircraft description");
+        throw ModelFileError(path.string(), 0, "is not a regular file" + suffix);
+}
+
+AircraftDescription readAircraftDescription(const std::filesystem::path& path) {
+    requireRegularFile(path, ", not an aircraft description");
+    std::error_code ec;
     std::ifstream in(path);
     if (!in) throw ModelFileError(path.string(), 0, "cannot open the file");
     if (const auto size = std::filesystem::file_size(path, ec); !ec && size > maxFileBytes)

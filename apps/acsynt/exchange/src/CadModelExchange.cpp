@@ -77,7 +77,7 @@ MappingRecord mappingOf(const geom::exchange::SurfaceCurves& curves, const Model
     m.loopsPerPart = {m.loops};
     // One part holding every loop, so that SAVE_MODEL writes (and READ_MODEL reads) them.
     PartReport part;
-    part.name = curves.name.empty() ? "-" : curves.name;
+    part.name = curves.name;
     part.outcome = PartOutcome::Mapped;
     part.loops = m.loops;
     m.partReports.push_back(std::move(part));

@@ -50,6 +50,11 @@ AircraftDescription parseAircraftDescription(std::istream& in, const std::string
 /// parseAircraftDescription on a file; a file that cannot be opened is a ModelFileError at line 0.
 AircraftDescription readAircraftDescription(const std::filesystem::path& path);
 
+/// Throws ModelFileError at line 0 where `path` is a directory, a device or a pipe (which could
+/// block the open or never end) rather than a file: "is a directory" or "is not a regular file",
+/// then `suffix`. A path that does not exist passes (its open fails with its own message).
+void requireRegularFile(const std::filesystem::path& path, const std::string& suffix = {});
+
 /// Writes a description that parseAircraftDescription reads back to the same values.
 void writeAircraftDescription(std::ostream& out, const AircraftDescription& description);
 

@@ -263,16 +263,8 @@ void writeModelState(std::ostream& out, const Model& model, const std::vector<Ma
         out << "mapping " << (file.empty() ? "-" : file) << " " << m.component << "\n";
         out << "reference " << m.reference.component << " " << m.reference.patch << " " << hex(m.reference.u)
             << " " << hex(m.reference.w) << "\n";
-        // Every loop is some part's in the file: loops that came with no part reports (an
-        // imported mapping's) are written as one mapped part.
-        std::vector<PartReport> parts = m.partReports;
-        if (parts.empty() && !m.polylines.empty()) {
-            parts.emplace_back();
-            parts.back().outcome = PartOutcome::Mapped;
-            parts.back().loops = m.polylines.size();
-        }
-        out << "parts " << parts.size() << "\n";
-        for (const PartReport& p : parts) {
+        out << "parts " << m.partReports.size() << "\n";
+        for (const PartReport& p : m.partReports) {
             std::string reason = p.reason;
             for (char& ch : reason)
                 if (ch == '\n' || ch == '\r') ch = ' ';
@@ -332,11 +324,7 @@ ModelState parseModelState(std::istream& in, const std::string& fileName) {
 }
 
 ModelState readModelState(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw ModelFileError(path.string(), 0, "is a directory");
-    // A device or a pipe (/dev/zero, a FIFO) could block the open or never end.
-    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-        throw ModelFileError(path.string(), 0, "is not a regular file");
+    requireRegularFile(path);
     std::ifstream in(path);
     if (!in) throw ModelFileError(path.string(), 0, "cannot be opened");
     return parseModelState(in, path.string());
