@@ -574,8 +574,8 @@ TEST_CASE("closest point near a corner of a rational surface with a pole and wid
 TEST_CASE("closest point 0.2 from a pole of a creased rational surface is that of the search's leaves",
           "[geom][inversion][classes]") {
     // Every region touching the pole holds points at the best distance, which no bound separates:
-    // each halving quadrupled them and the query took 32 s. Past the search's halving budget the
-    // regions are settled as leaves; the answer must still be the nearest point.
+    // each halving quadruples them. Past the search's halving budget the regions are settled as
+    // leaves; the answer must still be the nearest point.
     const Surface pole(5, 2, {0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1},
                        {0, 0, 0, 0.076995368758104726, 0.076995368758104726, 1, 1, 1}, 6, 5,
                        {{-11131.721142954151, -12760.25550756727, 1334.0989216203106},
@@ -617,7 +617,7 @@ TEST_CASE("closest point 0.2 from a pole of a creased rational surface is that o
                         0.034361282412875088, 0.11144683171916381, 47.902493407246851,   10.406992221858964,
                         3.0760028466416958,   76.772728332842092});
     const glm::dvec3 p{-11131.720067498718, -12760.254432111838, 1333.8934732039991};
-    // The answer the unbounded search gave, in 32 s.
+    // The answer the unbounded search gave.
     const SurfacePoint q = closestPoint(pole, p);
     CHECK(q.distance == Approx(0.18338188217890125).margin(1e-12));
     CHECK(q.uv.y == 0.0);
