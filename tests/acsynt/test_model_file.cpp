@@ -121,6 +121,28 @@ TEST_CASE("a written description reads back to the same model", "[acsynt][file]"
     }
 }
 
+TEST_CASE("lines end at LF, CR LF or a lone CR, mixed in one file", "[acsynt][file]") {
+    std::istringstream mixed("a\rb\r\nc\n\r\nd");
+    std::vector<std::string> lines;
+    for (std::string line; readTextLine(mixed, line);) lines.push_back(line);
+    REQUIRE(lines == std::vector<std::string>{"a", "b", "c", "", "d"});
+    // A description written on any system reads the same, and its faults keep their line numbers.
+    auto withEnds = [](std::string text, const std::string& end) {
+        for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + end.size()))
+            text.replace(at, 1, end);
+        return text;
+    };
+    for (const std::string end : {"\r\n", "\r"}) {
+        std::istringstream in(withEnds(goodFile, end));
+        const Model m = buildModel(parseAircraftDescription(in, "other.acm"));
+        REQUIRE(m.components.size() == 4);
+        REQUIRE(m.components[2].name == "wing_l");
+        const ModelFileError e = errorOf(withEnds(withLine(11, "  station mid 3 0.5 0.5 0.4 0 2.5 7"), end));
+        CHECK(e.line() == 11);
+        CHECK(e.reason().find("unexpected '7'") != std::string::npos);
+    }
+}
+
 TEST_CASE("every fault in a description names the file, the line and the reason", "[acsynt][file]") {
     checkError(withLine(11, "  station mid 3 0.5 0.5 0.4 0 2.5 7"), 11, "unexpected '7'");
     checkError(withLine(11, "  station mid 0.5 0.5 0.5 0.4 0 2.5"), 11, "does not increase");

@@ -29,6 +29,15 @@ run good 0 --script good.session --output out_good --size 320x240
 [ -f out_good/good.txt ] || fail "good: the summary directive wrote nothing"
 grep -q "errors\? in" good.out && fail "good: a clean run reports errors"
 
+# Every file the session wrote is printed, the FILE menu's too, each once; a directive's name that
+# already has its extension keeps it.
+printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice SAVE_MODEL\nstring saved.acs\nchoice ARCHIVE\nstring saved.phg\nchoice SAVE_MODEL\nstring saved.acs\nchoice RETURN\nsnapshot shot.png\nsummary listed.txt\n' >saved.session
+run saved 0 --script saved.session --output out_saved --size 320x240
+for file in out_saved/saved.acs out_saved/saved.phg out_saved/shot.png out_saved/listed.txt; do
+  [ -f "$file" ] || fail "saved: $file was not written"
+  [ "$(grep -cxF "$file" saved.out)" -eq 1 ] || fail "saved: $file is not printed once: $(cat saved.out)"
+done
+
 # A failing line stops the run (exit 3, the count last); --keep-going carries on and counts all.
 printf 'choice FILE\nchoice NO_SUCH_ITEM\nstring missing.acm\nchoice RETURN\nsummary after\n' >bad.session
 run stop 3 --script bad.session --output out_stop --size 320x240

@@ -134,6 +134,15 @@ TEST_CASE("files a script names stay inside the output directory") {
     d.run({"choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE", "string " + folder});
     CHECK(d.session.message().find("is a directory") != std::string::npos);
     CHECK(d.session.failedLines() == 5);
+    // A name longer than any file system's is refused by its length, not by a filesystem error
+    // (the string device keeps 256 characters of the 304 typed).
+    const std::string longName(300, 'a');
+    d.run({"choice RETURN", "choice FILE", "choice SAVE_MODEL", "string " + longName + ".acs"});
+    CHECK(d.session.message().find("IS 256 CHARACTERS LONG: A FILE NAME HOLDS AT MOST 255") !=
+          std::string::npos);
+    d.run({"choice READ_MODEL", "string " + longName});
+    CHECK(d.session.message().find("INPUT FILE NAME 'aaaa") != std::string::npos);
+    CHECK(d.session.failedLines() == 7);
 }
 
 }  // namespace test_session_bounds

@@ -175,6 +175,12 @@ TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line; th
         {replaceWord("v ", 1, "0x1p+3"), "is outside right_wing's parameter domain"},
         {replaceWord("reference ", 2, "99999"), "is not a count from 0 to"},
         {replaceWord("reference ", 3, "0x1.8p+1"), "the reference point"},
+        // A colour past 1, and words a line does not take, anywhere, were read as if right.
+        {replaceWord("colour ", 2, "0x1.4p+2"), "the colour component '0x1.4p+2' is not from 0 to 1"},
+        {replaceWord("model ", 2, "8 trailing"), "'model' takes 2 values, not 3"},
+        {replaceWord("surface ", 5, "0 0"), "'surface' takes 5 values, not 6"},
+        {replaceWord("reference ", 4, "0x1p-1 extra"), "'reference' takes 4 values, not 5"},
+        {good + "end\n", "'end' after the model's 'end'"},
     };
     for (std::size_t i = 0; i < bad.size(); ++i) {
         const auto file = out / ("range" + std::to_string(i) + ".acs");

@@ -94,7 +94,7 @@ private:
     /// Advances to the next line with tokens; false at the end of the file.
     bool next() {
         std::string text;
-        while (std::getline(in_, text)) {
+        while (readTextLine(in_, text)) {
             ++line_;
             if (text.size() > maxLineLength)
                 fail("line longer than " + std::to_string(maxLineLength) + " characters");
@@ -454,6 +454,26 @@ void requireRegularFile(const std::filesystem::path& path, const std::string& su
         throw ModelFileError(path.string(), 0, "is a directory" + suffix);
     if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
         throw ModelFileError(path.string(), 0, "is not a regular file" + suffix);
+}
+
+bool readTextLine(std::istream& in, std::string& line) {
+    line.clear();
+    const std::istream::sentry ready(in, true);
+    if (!ready) return false;
+    std::streambuf& text = *in.rdbuf();
+    for (;;) {
+        const int c = text.sbumpc();
+        if (c == std::char_traits<char>::eof()) {
+            in.setstate(line.empty() ? std::ios::eofbit | std::ios::failbit : std::ios::eofbit);
+            return !line.empty();
+        }
+        if (c == '\n') return true;
+        if (c == '\r') {
+            if (text.sgetc() == '\n') text.sbumpc();
+            return true;
+        }
+        line.push_back(static_cast<char>(c));
+    }
 }
 
 AircraftDescription readAircraftDescription(const std::filesystem::path& path) {

@@ -55,6 +55,10 @@ AircraftDescription readAircraftDescription(const std::filesystem::path& path);
 /// then `suffix`. A path that does not exist passes (its open fails with its own message).
 void requireRegularFile(const std::filesystem::path& path, const std::string& suffix = {});
 
+/// std::getline for text from any system: a line ends at "\n", "\r\n" or a lone "\r" (the old
+/// Macintosh's files, which getline read as one line).
+bool readTextLine(std::istream& in, std::string& line);
+
 /// Writes a description that parseAircraftDescription reads back to the same values.
 void writeAircraftDescription(std::ostream& out, const AircraftDescription& description);
 

@@ -35,8 +35,16 @@ class Reader {
 public:
     Reader(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
 
-    /// The next non-empty line's words; the first must be `keyword`.
-    std::vector<std::string> line(const std::string& keyword, std::size_t minWords = 1) {
+    /// The next non-empty line's words: `keyword` and exactly `words - 1` values.
+    std::vector<std::string> line(const std::string& keyword, std::size_t words = 1) {
+        std::vector<std::string> out = lineWithText(keyword, words);
+        if (out.size() != words)
+            fail("'" + keyword + "' takes " + std::to_string(words - 1) + " values, not " +
+                 std::to_string(out.size() - 1));
+        return out;
+    }
+    /// The next non-empty line's words: `keyword`, at least `minWords - 1` values, then any text.
+    std::vector<std::string> lineWithText(const std::string& keyword, std::size_t minWords) {
         std::vector<std::string> words = next();
         if (words.empty()) fail("the file ends where '" + keyword + "' was expected");
         if (words[0] != keyword) fail("expected '" + keyword + "', found '" + words[0] + "'");
@@ -47,7 +55,7 @@ public:
     /// The next line's words (empty at the end of the file).
     std::vector<std::string> next() {
         std::string text;
-        while (std::getline(in_, text)) {
+        while (readTextLine(in_, text)) {
             ++number_;
             if (text.size() > 1u << 20) fail("a line longer than 1 MB");
             std::istringstream words(text);
@@ -62,6 +70,12 @@ public:
         const double v = std::strtod(word.c_str(), &end);
         if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(v))
             fail("'" + word + "' is not a finite number");
+        return v;
+    }
+    /// A colour component, from 0 to 1.
+    double fraction(const std::string& word) {
+        const double v = real(word);
+        if (!(v >= 0.0 && v <= 1.0)) fail("the colour component '" + word + "' is not from 0 to 1");
         return v;
     }
     /// A coordinate: a finite number within kModelStateMaxCoordinate (one beyond it, 1e301 say,
@@ -119,7 +133,7 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     c.closedU = r.count(head[3], 1) == 1;
     c.closedW = r.count(head[4], 1) == 1;
     const auto colour = r.line("colour", 4);
-    c.colour = {r.real(colour[1]), r.real(colour[2]), r.real(colour[3])};
+    c.colour = {r.fraction(colour[1]), r.fraction(colour[2]), r.fraction(colour[3])};
     const auto s = r.line("surface", 6);
     const int degreeU = int(r.count(s[1], 9)), degreeV = int(r.count(s[2], 9));
     const std::size_t countU = r.count(s[3], kModelStateMaxPoints),
@@ -127,12 +141,12 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     const bool rational = r.count(s[5], 1) == 1;
     if (countU * countV > kModelStateMaxPoints || (points += countU * countV) > kModelStateMaxPoints)
         r.fail("more than " + std::to_string(kModelStateMaxPoints) + " control points");
-    std::vector<double> knotsU = r.reals(r.line("knots_u", 2), 1, countU + 10);
-    std::vector<double> knotsV = r.reals(r.line("knots_w", 2), 1, countV + 10);
+    std::vector<double> knotsU = r.reals(r.lineWithText("knots_u", 2), 1, countU + 10);
+    std::vector<double> knotsV = r.reals(r.lineWithText("knots_w", 2), 1, countV + 10);
     std::vector<glm::dvec3> net;
     std::vector<double> weights;
     for (std::size_t i = 0; i < countU * countV; ++i) {
-        const auto p = r.line("p", rational ? 5 : 4);
+        const auto p = r.lineWithText("p", 1);
         if (p.size() != (rational ? 5u : 4u))
             r.fail("a control point has x y z" + std::string(rational ? " w" : ""));
         net.push_back({r.coordinate(p[1]), r.coordinate(p[2]), r.coordinate(p[3])});
@@ -192,7 +206,7 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
     const auto parts = r.line("parts", 2);
     m.parts = r.count(parts[1], 1u << 16);
     for (std::size_t i = 0; i < m.parts; ++i) {
-        const auto p = r.line("part", 5);
+        const auto p = r.lineWithText("part", 5);  // and the reason, when there is one
         PartReport report;
         report.name = p[1];
         if (p[2] == "MAPPED")
@@ -219,7 +233,7 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
         std::vector<glm::dvec2> uv;
         std::vector<glm::dvec3> xyz;
         for (std::size_t i = 0; i < n; ++i) {
-            const auto v = r.line("v", 6);
+            const auto v = r.lineWithText("v", 1);
             if (v.size() != 6) r.fail("a loop vertex has u w x y z");
             uv.push_back({r.real(v[1]), r.real(v[2])});
             if (!inDomain(mapped, uv.back(), true))
@@ -293,7 +307,7 @@ bool isModelStateFile(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path, ec)) return false;
     std::ifstream in(path);
     std::string first;
-    return in && std::getline(in, first) && first.rfind("acsynt-surfaces", 0) == 0;
+    return in && readTextLine(in, first) && first.rfind("acsynt-surfaces", 0) == 0;
 }
 
 ModelState parseModelState(std::istream& in, const std::string& fileName) {
@@ -316,10 +330,14 @@ ModelState parseModelState(std::istream& in, const std::string& fileName) {
         r.fail("more than " + std::to_string(kModelMaxPatches) + " patches");
     for (auto words = r.next();; words = r.next()) {
         if (words.empty()) r.fail("the file ends before 'end'");
-        if (words[0] == "end") break;
+        if (words[0] == "end") {
+            if (words.size() != 1) r.fail("'end' takes no values");
+            break;
+        }
         if (words[0] != "mapping" || words.size() != 3) r.fail("expected 'mapping CURVE COMPONENT' or 'end'");
         state.mappings.push_back(readMapping(r, words, state.model, vertices));
     }
+    if (const auto after = r.next(); !after.empty()) r.fail("'" + after[0] + "' after the model's 'end'");
     return state;
 }
 

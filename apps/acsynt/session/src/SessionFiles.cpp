@@ -27,8 +27,26 @@ namespace acsynt {
 using namespace phigs;
 using namespace session_detail;
 
+namespace {
+
+/// Refuses a path with a part longer than a file system's name (255 bytes): the file system's
+/// own refusal came through as "filesystem error: status: File name too long".
+void requireNameLengths(const std::filesystem::path& path, const std::string& what) {
+    constexpr std::size_t kMaxName = 255;
+    for (const std::filesystem::path& part : path) {
+        const std::string text = part.string();
+        if (text.size() > kMaxName)
+            throw std::invalid_argument(
+                what + " NAME '" + text.substr(0, 24) + "...' IS " + std::to_string(text.size()) +
+                " CHARACTERS LONG: A FILE NAME HOLDS AT MOST " + std::to_string(kMaxName));
+    }
+}
+
+}  // namespace
+
 std::filesystem::path Session::findInput(const std::string& name) const {
     const std::filesystem::path path(name);
+    requireNameLengths(path, "INPUT FILE");
     if (path.is_absolute() || std::filesystem::exists(path)) return path;
     for (const auto& dir : core_.settings.searchPath)
         if (std::filesystem::exists(dir / path)) return dir / path;
@@ -43,6 +61,7 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
         throw std::invalid_argument(
             "OUTPUT FILE '" + name +
             "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
+    requireNameLengths(path, "OUTPUT FILE");
     const std::filesystem::path full = core_.settings.outputDirectory / path;
     std::filesystem::create_directories(full.parent_path());
     if (std::filesystem::is_directory(full))
@@ -136,6 +155,11 @@ void Session::readCurve(const std::string& input) {
     say("CURVE MODEL " + core_.curveFile + " LOADED: " + std::to_string(core_.curves.size()) + " PARTS");
 }
 
+void Session::noteSaved(const std::filesystem::path& file) {
+    if (std::find(savedFiles_.begin(), savedFiles_.end(), file) == savedFiles_.end())
+        savedFiles_.push_back(file);
+}
+
 void Session::saveModel(const std::string& name) {
     // The current model as it is (reduced surfaces, imported or not) and its mapped curves.
     const auto path = outputPath(name);
@@ -147,6 +171,7 @@ void Session::saveModel(const std::string& name) {
         fail("CANNOT WRITE " + path.string());
         return;
     }
+    noteSaved(path);
     std::size_t mapped = 0;
     for (const MappingRecord& m : core_.mappings) mapped += m.model == model.name;
     say("MODEL " + model.name + " SAVED TO " + path.string() + ": " +
@@ -159,6 +184,7 @@ void Session::exportModel(const std::string& name) {
     const Model& model = core_.models.current();
     // ExchangeError (a runtime_error) names the file and cause.
     const std::size_t curves = exchangeCalls().exportModel(model, core_.mappings, path);
+    noteSaved(path);
     say("MODEL " + model.name + " EXPORTED TO " + path.string() + ": " +
         std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(model.patchCount()) +
         " PATCHES, " + std::to_string(curves) + " MAPPED CURVES");
@@ -223,6 +249,7 @@ void Session::archive(const std::string& name, bool retrieve) {
             phigs_.archiveStructureNetworks(1, {structures::modelRoot});
             const auto ids = phigs_.archiveContents(1);
             phigs_.closeArchiveFile(1);
+            noteSaved(path);
             say("ARCHIVED " + std::to_string(ids.size()) + " STRUCTURES TO " + path.string());
         }
     } catch (...) {

@@ -8,6 +8,7 @@
 #include "phigs/input/ScriptInputSource.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -17,6 +18,19 @@ namespace acsynt {
 
 using namespace phigs;
 using namespace session_detail;
+
+namespace {
+
+/// `name` with `extension` (".png") added, unless it already ends in it (in any case).
+std::string withExtension(const std::string& name, const std::string& extension) {
+    const bool has =
+        name.size() > extension.size() &&
+        std::equal(extension.begin(), extension.end(), name.end() - std::ptrdiff_t(extension.size()),
+                   [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
+    return has ? name : name + extension;
+}
+
+}  // namespace
 
 void Session::directive(const action::Directive& d, const InputAction& a) {
     // A directive fails as a menu command does: its line named, the session going on.
@@ -69,7 +83,7 @@ void Session::applyDirective(const action::Directive& d, const InputAction& a) {
 
 void Session::writeDirective(const action::Directive& d) {
     if (d.name == "snapshot") {
-        const auto file = outputPath(d.arguments[0] + ".png");
+        const auto file = outputPath(withExtension(d.arguments[0], ".png"));
         if (!snapshot_) {
             fail("NO PICTURE OUTPUT FOR SNAPSHOT " + d.arguments[0]);
             return;
@@ -81,9 +95,10 @@ void Session::writeDirective(const action::Directive& d) {
     } else if (d.name == "hardcopy") {
         writeHardcopy(d.arguments[0]);
     } else if (d.name == "summary") {
-        const auto file = outputPath(d.arguments[0] + ".txt");
+        const auto file = outputPath(withExtension(d.arguments[0], ".txt"));
         std::ofstream out(file);
         if (!(out << summary()) || !out.flush()) throw std::runtime_error("CANNOT WRITE " + file.string());
+        noteSaved(file);
         core_.log.push_back("summary " + file.string());
     }
 }

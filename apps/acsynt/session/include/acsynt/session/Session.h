@@ -99,6 +99,8 @@ public:
     const std::vector<std::filesystem::path>& pictures() const { return pictures_; }
     /// The vector hardcopies written (FILE > HARDCOPY, `hardcopy NAME`).
     const std::vector<std::filesystem::path>& hardcopies() const { return hardcopies_; }
+    /// The other files written (SAVE_MODEL, EXPORT, ARCHIVE, `summary NAME`), each once, as first written.
+    const std::vector<std::filesystem::path>& savedFiles() const { return savedFiles_; }
     bool fourViews() const { return core_.fourViews; }
     const DisplayStyle& style() const { return core_.style; }
 
@@ -243,6 +245,8 @@ private:
 
     std::vector<std::filesystem::path> pictures_;
     std::vector<std::filesystem::path> hardcopies_;
+    std::vector<std::filesystem::path> savedFiles_;
+    void noteSaved(const std::filesystem::path& file);
     /// By index in the devices' action history: how the recording writes that action.
     std::map<std::size_t, std::pair<std::string, std::string>> recordedAs_;
     int pickView_ = 0;  ///< the view of the pick_surface being replayed
