@@ -123,6 +123,44 @@ TEST_CASE("SAVE MODEL: a reduced model with a mapped logo reads back bit for bit
     CHECK_FALSE(d.logHasError());
 }
 
+TEST_CASE("SAVE MODEL: a mapping carried through a reduction names the reduced surface's patch") {
+    // The logo mapped on the fuselage, then the fuselage reduced: the carried mapping's reference
+    // point keeps its (u, w), and its patch number is the reduced surface's patch there. The old
+    // number named another patch, or one past the last, and the saved file was refused.
+    Driver d("save_model_carried");
+    const auto out = session_test::outputDirectory("save_model_carried");
+    std::filesystem::remove_all(out);
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE",
+           "string acslogo.crv 1", "choice DEFINE_POINT"});
+    pickOn(d, "fuselage", 0.8, 0.3);
+    pickOn(d, "fuselage", 0.8, 0.3);
+    d.run({"choice ACCEPT", "choice DONE device 2", "choice MAP_CURVE", "choice RETURN", "choice SURF_REDN",
+           "choice BY_TOLERANCE", "choice REDUCE_U&W"});
+    pickOn(d, "fuselage", 0.5, 0.5);
+    d.run({"string 0.01", "choice RETURN"});
+    REQUIRE(d.session.mappings().size() == 2);
+    const acsynt::MappingRecord& before = d.session.mappings()[0];
+    const acsynt::MappingRecord carried = d.session.mappings()[1];
+    REQUIRE(carried.model == "transport_R1");
+    const acsynt::Component& fuselage = *d.session.models().current().find("fuselage");
+    CHECK(carried.reference.u == before.reference.u);
+    CHECK(carried.reference.w == before.reference.w);
+    REQUIRE(carried.reference.patch >= 1);
+    REQUIRE(std::size_t(carried.reference.patch) <= fuselage.patches.size());
+    CHECK(fuselage.patches.patches[std::size_t(carried.reference.patch) - 1].contains(carried.reference.u,
+                                                                                      carried.reference.w));
+    INFO("patch " << before.reference.patch << " of "
+                  << d.session.models().at(0).find("fuselage")->patches.size() << " -> "
+                  << carried.reference.patch << " of " << fuselage.patches.size());
+    CHECK(fuselage.patches.size() < d.session.models().at(0).find("fuselage")->patches.size());
+    d.run({"choice FILE", "choice SAVE_MODEL", "string carried.acs", "choice READ_MODEL",
+           "string " + (out / "carried.acs").string()});
+    REQUIRE(d.session.mappings().size() == 3);
+    requireSameMapping(carried, d.session.mappings()[2]);
+    CHECK_FALSE(d.logHasError());
+}
+
 TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the models stay as they were") {
     Driver d("save_model_bad");
     const auto out = session_test::outputDirectory("save_model_bad");

@@ -7,6 +7,9 @@
 #include "geom/exchange/ExchangeError.h"
 #include "geom/exchange/OcctConversion.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cctype>
 #include <set>
 
@@ -44,6 +47,30 @@ std::size_t spans(const std::vector<double>& knots, int degree, std::size_t coun
     return n;
 }
 
+/// Whether the surface closes on itself across its u (alongV false) or w boundaries: periodic, or
+/// clamped with the first and last rows of points the same and going on across that seam rather
+/// than folding back (the rows beside it on either side less than 90 degrees apart). A reduced
+/// fuselage is such a clamped closed surface; a wing's trailing edge folds back and stays open.
+bool closedAcross(const geom::Surface& s, bool alongV) {
+    if (geom::exchange::periodicByConstruction(s, alongV)) return true;
+    const std::size_t rows = alongV ? s.countU : s.countV, n = alongV ? s.countV : s.countU;
+    if (n < 3) return false;
+    const auto at = [&](std::size_t row, std::size_t k) {
+        return alongV ? s.points[row * s.countV + k] : s.points[k * s.countV + row];
+    };
+    double size = 0.0;
+    for (const glm::dvec3& p : s.points) size = std::max(size, glm::length(p));
+    const double same = 1e-9 * std::max(size, 1.0);
+    for (std::size_t row = 0; row < rows; ++row) {
+        if (glm::length(at(row, 0) - at(row, n - 1)) > same) return false;
+        const glm::dvec3 after = at(row, 1) - at(row, 0), before = at(row, n - 1) - at(row, n - 2);
+        // A row collapsed at the seam (a nose) says nothing of the direction.
+        if (glm::length(after) > same && glm::length(before) > same && glm::dot(after, before) <= 0.0)
+            return false;
+    }
+    return true;
+}
+
 /// One imported surface as a component; its curve sets become mappings of the model.
 Component componentOf(const geom::exchange::CadSurface& s, const std::string& name, ImportedModel& result,
                       std::size_t& patches, const std::string& file) {
@@ -55,8 +82,8 @@ Component componentOf(const geom::exchange::CadSurface& s, const std::string& na
         result.warnings.push_back(name + ": a " + (s.surface.rational() ? "rational" : "higher-degree") +
                                   " surface made bicubic within " + std::to_string(bicubic.maxError) + " m");
     c.surface = bicubic.surface;
-    c.closedU = geom::exchange::periodicByConstruction(c.surface, false);
-    c.closedW = geom::exchange::periodicByConstruction(c.surface, true);
+    c.closedU = closedAcross(c.surface, false);
+    c.closedW = closedAcross(c.surface, true);
     c.kind = kindFromName(name, c.closedW);
     patches += spans(c.surface.knotsU, 3, c.surface.countU) * spans(c.surface.knotsV, 3, c.surface.countV);
     if (patches > kModelMaxPatches)

@@ -140,7 +140,8 @@ std::string fewerThanAsked(const ReductionRecord& r) {
 
 /// The curves mapped on the original go with the reduced model: those on other components as
 /// they are, those on the reduced one through their (u, w) onto its new surface (knot removal
-/// keeps the parameters). Returns how many were moved onto the reduced surface.
+/// keeps the parameters), their reference points onto its patches. Returns how many were moved onto
+/// the reduced surface.
 std::size_t carryMappings(SessionCore& core, const ReductionRecord& record, const Component& target) {
     std::size_t carried = 0, moved = 0;
     const std::size_t mappingCount = core.mappings.size();
@@ -148,6 +149,10 @@ std::size_t carryMappings(SessionCore& core, const ReductionRecord& record, cons
         if (core.mappings[i].model != record.model) continue;
         MappingRecord m = core.mappings[i];
         m.model = record.reducedModel;
+        // The reference point keeps its (u, w); its patch is the reduced surface's patch there
+        // (removed knots merge patches, so the old number may name another patch or none).
+        if (m.reference.patch > 0 && m.reference.component == record.componentIndex)
+            if (const Patch* p = target.patches.find(m.reference.u, m.reference.w)) m.reference.patch = p->number;
         if (m.component == record.component) {
             const auto domain = geom::curvemap::surfaceDomain(target.surface, target.closedU, target.closedW);
             for (std::size_t l = 0; l < m.uvPolylines.size(); ++l)
