@@ -154,6 +154,17 @@ TEST_CASE("SAVE MODEL: a mapping carried through a reduction names the reduced s
                   << d.session.models().at(0).find("fuselage")->patches.size() << " -> "
                   << carried.reference.patch << " of " << fuselage.patches.size());
     CHECK(fuselage.patches.size() < d.session.models().at(0).find("fuselage")->patches.size());
+    // The carried curve is the reduced model's first: drawn in the first colour, as on the original
+    // (the colour went by the curve's place among every model's curves).
+    auto mappedColours = [&] {
+        std::vector<glm::dvec3> colours;
+        const phigs::ElementArena& e =
+            d.session.phigs().store().structure(acsynt::structures::mapped).elements;
+        for (std::size_t i = 0; i < e.size(); ++i)
+            if (const auto* c = e.get<phigs::ColourAttribute>(i)) colours.push_back(c->colour.rgb);
+        return colours;
+    };
+    CHECK(mappedColours() == std::vector<glm::dvec3>{glm::dvec3(0.1, 0.3, 1.0)});
     d.run({"choice FILE", "choice SAVE_MODEL", "string carried.acs", "choice READ_MODEL",
            "string " + (out / "carried.acs").string()});
     REQUIRE(d.session.mappings().size() == 3);

@@ -232,11 +232,16 @@ void Session::drawMapped(bool all) {
                            RealAttribute{ElementType::LinewidthScaleFactor, 2.0}};
     if (!core_.models.empty()) {
         const std::string& name = core_.models.current().name;
+        // Blue and red by turns over this model's curves, so that a curve keeps its colour
+        // whatever other models map (a reduction's carried copies, say).
+        std::size_t onModel = 0;
         for (std::size_t i = 0; i < core_.mappings.size(); ++i) {
             const MappingRecord& m = core_.mappings[i];
-            if (m.model != name || (!all && i + 1 != core_.mappings.size())) continue;
+            if (m.model != name) continue;
+            const bool red = onModel++ % 2 == 1;
+            if (!all && i + 1 != core_.mappings.size()) continue;
             e.push_back(colourAttr(ElementType::PolylineColour,
-                                   i % 2 ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
+                                   red ? glm::dvec3(1.0, 0.25, 0.15) : glm::dvec3(0.1, 0.3, 1.0)));
             for (const auto& line : m.polylines) e.push_back(polyline3(line));
         }
     }
