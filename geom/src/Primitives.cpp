@@ -2,6 +2,8 @@
 
 #include "geom/GeometryError.h"
 
+#include "NumberText.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -23,26 +25,31 @@ double circleWeight(std::size_t j) {
 
 void checkPositive(double x, const char* what, const char* where) {
     if (!std::isfinite(x) || !(x > 0.0))
-        throw GeometryError(std::string(where) + ": " + what + " " + std::to_string(x) + " must be positive");
+        throw GeometryError(std::string(where) + ": " + what + " " + detail::numberText(x) +
+                            " must be positive");
 }
 
-/// The plane axes of a circle or arc: finite and spanning a plane (neither zero nor parallel),
-/// or the "circle" is a segment or a point.
-void checkAxes(const glm::dvec3& xAxis, const glm::dvec3& yAxis, const char* where) {
+/// The plane of a circle or arc as two orthonormal axes: xAxis's direction, and yAxis's part
+/// perpendicular to it, each of unit length. Axes that are zero, parallel or not finite span no
+/// plane (the "circle" would be a segment or a point) and are refused.
+std::pair<glm::dvec3, glm::dvec3> planeAxes(const glm::dvec3& xAxis, const glm::dvec3& yAxis,
+                                            const char* where) {
     const double span = glm::length(glm::cross(xAxis, yAxis));
     if (!std::isfinite(span) || !(span > 1e-12 * glm::length(xAxis) * glm::length(yAxis)))
         throw GeometryError(std::string(where) + ": the axes must be finite, non-zero and not parallel");
+    const glm::dvec3 x = xAxis / glm::length(xAxis);
+    return {x, glm::normalize(yAxis - glm::dot(yAxis, x) * x)};
 }
 
 }  // namespace
 
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius) {
     checkPositive(radius, "radius", "makeCircle");
-    checkAxes(xAxis, yAxis, "makeCircle");
+    const auto [x, y] = planeAxes(xAxis, yAxis, "makeCircle");
     std::vector<glm::dvec3> points;
     std::vector<double> weights;
     for (std::size_t j = 0; j < 9; ++j) {
-        points.push_back(center + radius * (kCx[j] * xAxis + kCy[j] * yAxis));
+        points.push_back(center + radius * (kCx[j] * x + kCy[j] * y));
         weights.push_back(circleWeight(j));
     }
     return Curve(2, kCircleKnots, points, weights);
@@ -51,16 +58,16 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
 Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
               double startAngle, double endAngle) {
     checkPositive(radius, "radius", "makeArc");
-    checkAxes(xAxis, yAxis, "makeArc");
+    const auto [x, y] = planeAxes(xAxis, yAxis, "makeArc");
     const double sweep = endAngle - startAngle;
     if (!std::isfinite(startAngle) || !std::isfinite(sweep) || !(sweep > 0.0) ||
         sweep > 2.0 * std::numbers::pi + 1e-12)
-        throw GeometryError("makeArc: sweep " + std::to_string(sweep) + " must lie in (0, 2 pi]");
+        throw GeometryError("makeArc: sweep " + detail::numberText(sweep) + " must lie in (0, 2 pi]");
     // Each segment spans at most a quarter turn, so its middle weight cos(half angle) stays >= 0.7.
     const int segments = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * std::numbers::pi) - 1e-12)));
     const double step = sweep / segments;
     auto onCircle = [&](double angle, double r) {
-        return center + r * (std::cos(angle) * xAxis + std::sin(angle) * yAxis);
+        return center + r * (std::cos(angle) * x + std::sin(angle) * y);
     };
     std::vector<glm::dvec3> points{onCircle(startAngle, radius)};
     std::vector<double> weights{1.0};
@@ -105,6 +112,16 @@ Curve makePeriodicCurve(int degree, const std::vector<glm::dvec3>& points,
 
 Surface makeRevolution(const Curve& profile) {
     validate(profile, "makeRevolution");
+    // x is the distance from the axis: a profile on both sides of it would sweep a surface through
+    // itself. The poles bound the curve (its convex hull), so all of them on one side keep it there.
+    // Rounding may leave a point on the axis a hair below zero.
+    double size = 0.0;
+    for (const glm::dvec3& p : profile.points) size = std::max(size, glm::length(p));
+    for (std::size_t i = 0; i < profile.points.size(); ++i)
+        if (profile.points[i].x < -1e-12 * size)
+            throw GeometryError("makeRevolution: profile point " + std::to_string(i) + " has x " +
+                                detail::numberText(profile.points[i].x) +
+                                "; the profile's x is its distance from the axis and must not be negative");
     const std::size_t nu = profile.points.size();
     std::vector<glm::dvec3> points;
     std::vector<double> weights;

@@ -59,11 +59,17 @@ void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vec
     if (weights.size() != points.size())
         throw GeometryError(where + ": " + std::to_string(weights.size()) + " weights for " +
                             std::to_string(points.size()) + " control points");
-    for (std::size_t i = 0; i < weights.size(); ++i)
+    for (std::size_t i = 0; i < weights.size(); ++i) {
         if (!detail::usableWeight(weights[i]))
             throw GeometryError(
                 where + ": weight " + std::to_string(i) + " is " + detail::numberText(weights[i]) +
                 ", weights must be finite and at least the smallest normal double (2.2e-308)");
+        // Rational algorithms work on the homogeneous point (w x, w y, w z, w): it must be finite.
+        const glm::dvec3 weighted = weights[i] * points[i];
+        if (!std::isfinite(weighted.x) || !std::isfinite(weighted.y) || !std::isfinite(weighted.z))
+            throw GeometryError(where + ": control point " + std::to_string(i) + " times its weight " +
+                                detail::numberText(weights[i]) + " overflows a double");
+    }
 }
 
 std::string prefixed(std::string_view where, const char* what) {

@@ -35,10 +35,12 @@
 #include "geom/curvemap/SurfaceDomain.h"
 
 #include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -301,6 +303,52 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
         REQUIRE_THROWS_WITH(makeCircle({0, 0, 0}, x, y, 1.0), Catch::Contains("axes"));
         REQUIRE_THROWS_AS(makeArc({0, 0, 0}, x, y, 1.0, 0.0, 1.0), GeometryError);
     }
+    // A profile crossing the axis of revolution would sweep a surface through itself.
+    REQUIRE_THROWS_WITH(makeRevolution(Curve(1, {0, 0, 1, 1}, {{-1, 0, 0}, {1, 0, 1}})),
+                        Catch::Contains("profile point 0 has x -1"));
+    REQUIRE_NOTHROW(makeRevolution(Curve(1, {0, 0, 1, 1}, {{-1e-17, 0, 0}, {1, 0, 1}})));
+}
+
+TEST_CASE("circles and arcs keep their radius whatever the length and angle of the axes",
+          "[geom][primitives]") {
+    // The axes were used as given: (2, 0, 0) and (0, 2, 0) made a circle of twice the radius, and
+    // axes 60 degrees apart an ellipse. The plane is xAxis's direction and yAxis's perpendicular
+    // part; the circle starts along xAxis and turns towards yAxis.
+    std::mt19937 rng(612);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), scale(-3.0, 3.0);
+    for (int member = 0; member < 200; ++member) {
+        const glm::dvec3 centre(unit(rng), unit(rng), unit(rng));
+        const glm::dvec3 x = std::pow(10.0, scale(rng)) * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        const glm::dvec3 y = std::pow(10.0, scale(rng)) * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        if (glm::length(glm::cross(glm::normalize(x), glm::normalize(y))) < 0.05) continue;
+        const double r = std::pow(10.0, scale(rng));
+        const glm::dvec3 normal = glm::normalize(glm::cross(x, y));
+        INFO("member " << member);
+        for (const Curve& c : {makeCircle(centre, x, y, r), makeArc(centre, x, y, r, 0.0, 2.5)}) {
+            REQUIRE(glm::length(evaluate(c, 0.0) - (centre + r * glm::normalize(x))) <= 1e-12 * (1 + r));
+            for (int k = 0; k <= 16; ++k) {
+                const glm::dvec3 p = evaluate(c, k / 16.0) - centre;
+                REQUIRE(std::abs(glm::length(p) - r) <= 1e-12 * r);
+                REQUIRE(std::abs(glm::dot(p, normal)) <= 1e-12 * r);
+            }
+            // A quarter of the way round the full circle it is on yAxis's side of xAxis.
+            REQUIRE(glm::dot(evaluate(c, 0.25 * (c.knots.back() - c.knots.front())) - centre,
+                             glm::cross(normal, glm::normalize(x))) > 0.0);
+        }
+    }
+}
+
+TEST_CASE("a rational control point whose homogeneous coordinates overflow is refused", "[geom][bad-input]") {
+    // (1e308, 0, 0) with weight 2 is (2e308, 0, 0, 2) in homogeneous space: knot insertion gave
+    // back infinite control points from a curve that had passed validation.
+    const std::vector<glm::dvec3> points{
+        {0, 0, 0}, {1e308, 0, 0}, {1e308, 1e308, 0}, {0, 1e308, 0}, {0, 0, 0}};
+    REQUIRE_THROWS_WITH(Curve(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, points, {1, 2, 2, 2, 1}),
+                        Catch::Contains("control point 1 times its weight 2 overflows"));
+    REQUIRE_NOTHROW(Curve(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, points, {1, 1, 1, 1, 1}));
+    Curve c(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, points);
+    c.weights = {1, 1, 1, 2, 1};  // set by hand: no constructor checked it
+    REQUIRE_THROWS_WITH(insertKnot(c, 0.25, 1), Catch::Contains("overflows"));
 }
 
 TEST_CASE("control points near 1e300 and subnormal knot spacing: an answer or a named refusal",

@@ -9,13 +9,16 @@
 
 namespace geom {
 
-/// The exact rational circle of the given radius about center in the plane spanned by the unit
-/// vectors xAxis and yAxis: degree 2, nine control points, parameter [0, 1] from center + r*xAxis.
+/// The exact rational circle of the given radius about center in the plane of xAxis and yAxis:
+/// degree 2, nine control points, parameter [0, 1] from center + r * xAxis / |xAxis|, turning
+/// towards yAxis. The axes need not be unit length or perpendicular (yAxis's part perpendicular
+/// to xAxis is taken); zero, parallel or non-finite axes are refused.
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius);
 
 /// The exact rational arc of the given radius about center, from startAngle to endAngle
-/// (radians, counterclockwise from xAxis towards yAxis; 0 < endAngle - startAngle <= 2 pi):
-/// degree 2, one rational segment per quarter turn or less, parameter [0, 1].
+/// (radians, counterclockwise from xAxis towards yAxis, taken as makeCircle takes them;
+/// 0 < endAngle - startAngle <= 2 pi): degree 2, one rational segment per quarter turn or less,
+/// parameter [0, 1].
 Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
               double startAngle, double endAngle);
 
@@ -27,6 +30,7 @@ Curve makePeriodicCurve(int degree, const std::vector<glm::dvec3>& points,
 
 /// The surface swept by a profile curve given in the xz-plane (x = distance from the axis, y
 /// ignored) turning once about the z axis: u follows the profile, v the full turn (knots [0,1]).
+/// A control point with negative x (a profile crossing the axis) is refused.
 Surface makeRevolution(const Curve& profile);
 
 /// Sphere of the given radius about the origin; u runs from the south pole to the north pole.
