@@ -7,7 +7,8 @@
  * side's colour, exactly when that side faces the viewer and is not culled; and a polyline set with data
  * whose two vertex colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its
  * first vertex's colour with PSD_NONE; and a lit square shows black with no light active, and its
- * lit colour clamped to 1 before the depth cue scales it; and a facet normal lights its facet.
+ * lit colour clamped to 1 before the depth cue scales it; and a facet normal lights its facet; and
+ * flat shading (PSD_NONE) fills each facet with its facet colour or the interior colour alone.
  * argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -369,6 +370,82 @@ static void facet_normals(void) {
     }
 }
 
+/* Unlit facets with random vertex colours under interior shading method PSD_NONE: each facet is
+ * one colour, its facet colour when it has one, else the interior colour; the vertex colours play
+ * no part (they were interpolated). A fill area set with data, a 3 x 3 quadrilateral mesh and a
+ * four-vertex triangle strip over the square [0.3, 0.7]^2, with and without facet colours. */
+static void flat_colours(void) {
+    for (int round = 0; round < 6; ++round) {
+        const int shape = round % 3, withFacetColour = round / 3;
+        double interior[3], facetColour[3], expected[3];
+        Pptco3 v[9];
+        Pcoval facets[4];
+        Picture p[2];
+        random_rgb(interior), random_rgb(facetColour);
+        for (int c = 0; c < 3; ++c) expected[c] = withFacetColour ? facetColour[c] : interior[c];
+        for (int i = 0; i < 9; ++i) {
+            double c[3];
+            random_rgb(c);
+            v[i].colr.direct.x = (Pfloat)c[0], v[i].colr.direct.y = (Pfloat)c[1],
+            v[i].colr.direct.z = (Pfloat)c[2];
+            v[i].point.z = 0.5f;
+        }
+        for (int k = 0; k < 4; ++k)
+            facets[k].direct.x = (Pfloat)facetColour[0], facets[k].direct.y = (Pfloat)facetColour[1],
+            facets[k].direct.z = (Pfloat)facetColour[2];
+        pdel_struct(1);
+        popen_struct(1);
+        pset_int_style(PSTYLE_SOLID);
+        {
+            const Pgcolr g = direct(interior);
+            pset_int_colr(&g);
+        }
+        pset_refl_eqn(PREFL_NONE);
+        pset_int_shad_meth(PSD_NONE);
+        const Pint fflag = withFacetColour ? PFACET_COLOUR : PFACET_NONE;
+        if (shape == 0) {
+            /* The square, counter-clockwise. */
+            Pfacet_vdata_list3 vertices;
+            Pfacet_data3 facet;
+            for (int i = 0; i < 4; ++i)
+                v[i].point.x = (Pfloat)(i == 1 || i == 2 ? 0.7 : 0.3),
+                v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
+            vertices.num_vertices = 4, vertices.vertex_data.ptcolrs = v;
+            memset(&facet, 0, sizeof facet);
+            facet.colr = facets[0];
+            pfill_area_set3_data(fflag, PEDGE_NONE, PVERT_COORD_COLOUR, PMODEL_RGB, &facet, 1, NULL,
+                                 &vertices);
+        } else {
+            Pfacet_vdata_arr3 vertices;
+            Pfacet_data_arr3 facet;
+            vertices.ptcolrs = v;
+            facet.colrs = facets;
+            if (shape == 1) {
+                /* Point (i, j) of the 3 x 3 grid at index j * 3 + i. */
+                const Pint_size dim = {3, 3};
+                for (int i = 0; i < 9; ++i)
+                    v[i].point.x = (Pfloat)(0.3 + 0.2 * (i % 3)),
+                    v[i].point.y = (Pfloat)(0.3 + 0.2 * (i / 3));
+                pquad_mesh3_data(fflag, PVERT_COORD_COLOUR, PMODEL_RGB, &dim, &facet, &vertices);
+            } else {
+                /* A strip zigzagging up the square: two triangles. */
+                for (int i = 0; i < 4; ++i)
+                    v[i].point.x = (Pfloat)(i % 2 ? 0.7 : 0.3), v[i].point.y = (Pfloat)(i >= 2 ? 0.7 : 0.3);
+                ptri_strip3_data(fflag, PVERT_COORD_COLOUR, PMODEL_RGB, 4, &facet, &vertices);
+            }
+        }
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        for (int i = 0; i < 2; ++i) {
+            if (p[i].rgb)
+                for (int k = 0; k < 9; ++k)
+                    CHECK(pixel_is(&p[i], 0.35 + 0.15 * (k % 3), 0.35 + 0.15 * (k / 3), expected,
+                                   withFacetColour ? "flat: facet colour" : "flat: interior colour"));
+            free(p[i].rgb);
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -381,6 +458,7 @@ int main(int argc, char** argv) {
     line_shading();
     lighting_sums();
     facet_normals();
+    flat_colours();
     pclose_phigs();
     return finish("test_plus_shading");
 }

@@ -66,14 +66,16 @@ void randomData(std::mt19937& rng, Mesh& e, std::size_t facets) {
 }
 
 /// The drawn mesh of a strip or mesh `e` whose facet f has points `cornersOf(f)`, `perFacet`
-/// triangles each, follows the precedence rules: vertex data over facet data over none.
+/// triangles each, follows the precedence rules: vertex data over facet data over none; flat
+/// shaded (`flat`), a facet is one colour, so its vertex colours are not drawn.
 template <class Mesh, class CornersOf>
-void checkFacets(const MeshData& m, const Mesh& e, std::size_t facets, std::size_t perFacet,
+void checkFacets(const MeshData& m, const Mesh& e, std::size_t facets, std::size_t perFacet, bool flat,
                  CornersOf cornersOf) {
     REQUIRE(m.triangles.size() == facets * perFacet * 3);
-    const bool facetColours = e.vertexColours.empty() && !e.facetColours.empty();
+    const bool vertexColours = !e.vertexColours.empty() && !flat;
+    const bool facetColours = !vertexColours && !e.facetColours.empty();
     const bool facetNormals = e.vertexNormals.empty() && !e.facetNormals.empty();
-    CHECK(m.colours.size() == (e.vertexColours.empty() && !facetColours ? 0 : m.positions.size()));
+    CHECK(m.colours.size() == (!vertexColours && !facetColours ? 0 : m.positions.size()));
     CHECK(m.normals.size() == (e.vertexNormals.empty() && !facetNormals ? 0 : m.positions.size()));
     for (std::size_t t = 0; t < m.triangles.size() / 3; ++t) {
         const std::size_t f = t / perFacet;
@@ -88,7 +90,7 @@ void checkFacets(const MeshData& m, const Mesh& e, std::size_t facets, std::size
                 if (glm::vec3(e.points[corners[c]]) == m.positions[i]) source = c;
             REQUIRE(source < corners.size());
             const std::size_t v = corners[source];
-            if (!e.vertexColours.empty())
+            if (vertexColours)
                 CHECK(m.colours[i] == glm::vec3(e.vertexColours[v].rgb));
             else if (facetColours)
                 CHECK(m.colours[i] == glm::vec3(e.facetColours[f].rgb));
@@ -103,6 +105,12 @@ void checkFacets(const MeshData& m, const Mesh& e, std::size_t facets, std::size
                   -1e-9 * glm::length(winding) * glm::length(e.facetNormals[f]));
         }
     }
+}
+
+/// SET INTERIOR SHADING METHOD: NONE (flat) or COLOUR.
+Element shadingMethod(bool flat) {
+    return IndexAttribute{ElementType::InteriorShadingMethod,
+                          int(flat ? ShadingMethod::None : ShadingMethod::Colour)};
 }
 
 const DrawMesh& onlyMesh(const DrawList& list) {
@@ -133,8 +141,9 @@ TEST_CASE("random triangle strips with facet data draw each facet's colour and n
         const std::size_t facets = e.points.size() - 2;
         randomData(rng, e, facets);
         Scene s;
-        const DrawMesh& mesh = onlyMesh(s.draw({e}));
-        checkFacets(*mesh.mesh, e, facets, 1, [](std::size_t f) {
+        const bool flat = round % 2 == 0;
+        const DrawMesh& mesh = onlyMesh(s.draw({shadingMethod(flat), e}));
+        checkFacets(*mesh.mesh, e, facets, 1, flat, [](std::size_t f) {
             return std::vector<std::size_t>{f, f + 1, f + 2};
         });
     }
@@ -149,9 +158,10 @@ TEST_CASE("random quadrilateral meshes with facet data draw each facet's colour 
         const auto facets = static_cast<std::size_t>((rows - 1) * (columns - 1));
         randomData(rng, e, facets);
         Scene s;
-        const DrawMesh& mesh = onlyMesh(s.draw({e}));
+        const bool flat = round % 2 == 0;
+        const DrawMesh& mesh = onlyMesh(s.draw({shadingMethod(flat), e}));
         const auto width = static_cast<std::size_t>(columns);
-        checkFacets(*mesh.mesh, e, facets, 2, [&](std::size_t f) {
+        checkFacets(*mesh.mesh, e, facets, 2, flat, [&](std::size_t f) {
             const std::size_t r = f / (width - 1), c = f % (width - 1);
             return std::vector<std::size_t>{r * width + c, r * width + c + 1, (r + 1) * width + c,
                                             (r + 1) * width + c + 1};

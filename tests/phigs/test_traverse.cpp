@@ -171,6 +171,7 @@ TEST_CASE("draw list content for a small network: views, lights, depth cue, prim
     data.vertexColours = {{Colour::indexed(2), Colour::fromRgb({0, 0, 0.5}), Colour::indexed(3)}};
     s.build(1, {viewIndex(2), LightSourceStateAttribute{{1, 2}, {}},
                 IndexAttribute{ElementType::DepthCueIndex, 1}, IndexAttribute{ElementType::InteriorStyle, 1},
+                IndexAttribute{ElementType::InteriorShadingMethod, int(ShadingMethod::Colour)},
                 fillArea3({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}), data,
                 TextElement{{1, 2, 3}, {1, 0, 0}, {0, 1, 0}, "Wing", false},
                 AnnotationTextElement{{0, 0, 0}, {0.1, 0.1, 0}, "note", false}, viewIndex(7),

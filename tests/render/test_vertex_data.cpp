@@ -92,7 +92,9 @@ TEST_CASE("triangle strip, quadrilateral mesh and cell array from the store, thr
                                           {},
                                           {}});
         // A 3 x 3 quadrilateral mesh in the middle third, vertex colours through the colour table:
-        // red bottom row, green middle, blue top.
+        // red bottom row, green middle, blue top, interpolated (COLOUR shading; flat shading
+        // would draw each facet in the interior colour).
+        store.insert(IndexAttribute{ElementType::InteriorShadingMethod, int(ShadingMethod::Colour)});
         QuadrilateralMeshElement grid;
         grid.rows = 3, grid.columns = 3;
         for (int r = 0; r < 3; ++r)

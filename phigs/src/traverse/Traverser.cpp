@@ -511,6 +511,13 @@ struct Resolver {
     }
 };
 
+/// Both sides flat shaded (interior shading method NONE): a facet is one colour, its facet colour
+/// or else the interior colour, and vertex colours play no part (ISO 9592-4).
+bool flatShaded(const InteriorStyleSet& interior) {
+    return interior.shadingOf(false) == ShadingMethod::None &&
+           interior.shadingOf(true) == ShadingMethod::None;
+}
+
 bool anyIndexed(const std::vector<Colour>& colours) {
     for (const Colour& c : colours)
         if (!c.direct) return true;
@@ -963,10 +970,12 @@ private:
                 } else if constexpr (std::is_same_v<E, FillAreaSetWithDataElement>) {
                     DrawFillArea f;
                     f.contours = e.contours;
-                    for (const auto& c : e.vertexColours) f.vertexColours.push_back(resolveColours(c, state));
                     f.vertexNormals = e.vertexNormals;
                     if (e.hasFacetNormal) f.facetNormal = e.facetNormal;
                     fillStyle(f, state);
+                    if (!flatShaded(*f.interior))
+                        for (const auto& c : e.vertexColours)
+                            f.vertexColours.push_back(resolveColours(c, state));
                     if (e.hasFacetColour) f.interior = facetColoured(*f.interior, e.facetColour, state);
                     std::vector<std::vector<glm::dvec3>> edges;
                     const bool edgeData = !e.edgeFlags.empty() && f.edges->visible;
@@ -1146,15 +1155,19 @@ private:
     }
 
     /// A triangle strip or quadrilateral mesh `e` as a mesh: `triangulate` adds its triangles and
-    /// their facets to the input. The colours in use (vertex, else facet) key the cache.
+    /// their facets to the input. The colours in use (vertex, else facet; facet alone when flat
+    /// shaded) key the cache.
     template <class Mesh, class Triangulate>
     void facetedMesh(const Structure& s, std::uint64_t serial, int number, const State& state, const Mesh& e,
                      Triangulate triangulate) {
-        const std::vector<Colour>& used = e.vertexColours.empty() ? e.facetColours : e.vertexColours;
-        auto mesh = cachedMesh(serial, state, used, [&] {
-            const std::vector<glm::vec3> vertexColours = resolveColours(e.vertexColours, state);
+        const bool byVertex = !e.vertexColours.empty() && !flatShaded(*interior(state));
+        const std::vector<Colour>& used = byVertex ? e.vertexColours : e.facetColours;
+        const int variant = !byVertex && !e.vertexColours.empty() ? 1 : 0;
+        auto mesh = cachedMesh(serial, state, used, variant, [&] {
+            const std::vector<glm::vec3> vertexColours =
+                byVertex ? resolveColours(e.vertexColours, state) : std::vector<glm::vec3>{};
             const std::vector<glm::vec3> facetColours =
-                e.vertexColours.empty() ? resolveColours(e.facetColours, state) : std::vector<glm::vec3>{};
+                byVertex ? std::vector<glm::vec3>{} : resolveColours(e.facetColours, state);
             return detail::facetMesh(triangulate(detail::FacetMeshInput{
                 e.points, vertexColours, e.vertexNormals, facetColours, e.facetNormals, {}, {}}));
         });
@@ -1164,10 +1177,12 @@ private:
     /// The cache key of a mesh whose colours are resolved at build: they depend on the tables
     /// when one is indexed or the colour mapping entry changes colours (its index is part of
     /// the key then).
-    TessellationCache::Key meshKey(std::uint64_t serial, const State& state, bool indexed,
-                                   bool coloured) const {
+    /// `variant` tells apart meshes of one element built with different colours (1: its facet
+    /// colours in place of its vertex colours, for flat shading).
+    TessellationCache::Key meshKey(std::uint64_t serial, const State& state, bool indexed, bool coloured,
+                                   int variant = 0) const {
         const bool mapped = coloured && resolve_.maps(state.colourMapIndex);
-        return {serial, 0,
+        return {serial, variant,
                 0,      0,
                 0,      mapped ? state.colourMapIndex : 0,
                 0,      indexed || mapped ? tables_.generation + 1 : 0};
@@ -1175,8 +1190,8 @@ private:
 
     template <class Build>
     std::shared_ptr<const MeshData> cachedMesh(std::uint64_t serial, const State& state,
-                                               const std::vector<Colour>& colours, Build build) {
-        TessellationCache::Key key = meshKey(serial, state, anyIndexed(colours), !colours.empty());
+                                               const std::vector<Colour>& colours, int variant, Build build) {
+        TessellationCache::Key key = meshKey(serial, state, anyIndexed(colours), !colours.empty(), variant);
         return cache_
             .get(key, TessellationCache::Kind::Mesh,
                  [&] {
@@ -1258,6 +1273,7 @@ private:
         DrawFillArea f;
         fillStyle(f, state);
         const bool edgeData = !e.edgeFlags.empty() && f.edges->visible;
+        const bool vertexColours = !e.vertexColours.empty() && !flatShaded(*f.interior);
         std::vector<std::vector<glm::dvec3>> edges;
         for (std::size_t c = 0; c < e.sets[k].size(); ++c) {
             const std::vector<int>& contour = e.sets[k][c];
@@ -1268,7 +1284,7 @@ private:
             for (int v : contour) {
                 const auto i = static_cast<std::size_t>(v);
                 points.push_back(e.vertices[i]);
-                if (!e.vertexColours.empty()) colours.push_back(e.vertexColours[i]);
+                if (vertexColours) colours.push_back(e.vertexColours[i]);
                 if (!e.vertexNormals.empty()) normals.push_back(e.vertexNormals[i]);
             }
             if (edgeData) visibleEdges(points, e.edgeFlags[k][c], edges);

@@ -152,7 +152,8 @@ std::size_t carryMappings(SessionCore& core, const ReductionRecord& record, cons
         // The reference point keeps its (u, w); its patch is the reduced surface's patch there
         // (removed knots merge patches, so the old number may name another patch or none).
         if (m.reference.patch > 0 && m.reference.component == record.componentIndex)
-            if (const Patch* p = target.patches.find(m.reference.u, m.reference.w)) m.reference.patch = p->number;
+            if (const Patch* p = target.patches.find(m.reference.u, m.reference.w))
+                m.reference.patch = p->number;
         if (m.component == record.component) {
             const auto domain = geom::curvemap::surfaceDomain(target.surface, target.closedU, target.closedW);
             for (std::size_t l = 0; l < m.uvPolylines.size(); ++l)
