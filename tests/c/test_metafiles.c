@@ -64,6 +64,10 @@ static void text_extent(void) {
     /* Fonts 1 to 4 differ; errors in *err_ind. */
     CHECK(extent(2, 1, 0, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "AAAA").err == 0);
     CHECK(extent(5, 1, 0, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "A").err == 106);
+    /* A height, expansion or spacing that is not a number is refused (it answered NaN, error 0). */
+    CHECK(extent(1, 1, 0, (Pfloat)NAN, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "A").err == -208);
+    CHECK(extent(1, (Pfloat)INFINITY, 0, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "A").err == -208);
+    CHECK(extent(1, 1, (Pfloat)-INFINITY, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "A").err == -208);
     CHECK(extent(1, 1, 0, 1, (Ptext_path)9, PHOR_NORM, PVERT_NORM, "A").err == PE_ENUM_TYPE_INVAL);
     CHECK(extent(1, 1, 0, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, NULL).err == -204);
     {
@@ -73,6 +77,64 @@ static void text_extent(void) {
         pinq_text_extent(99, 1, 1, 0, 1, PPATH_RIGHT, PHOR_NORM, PVERT_NORM, "A", &err, &r, &c);
         CHECK(err == 52);
     }
+}
+
+/* Random strings, fonts, paths, alignments, expansions and spacings (negative too): the extent
+ * rectangle holds every character's body (an inverted or short box came of a negative spacing),
+ * and the concatenation point stays on the alignment line, so a second string aligned alike
+ * continues the first's line (path RIGHT or LEFT) or column (UP or DOWN): it drifted by the
+ * alignment shift. With NORMAL alignment and spacing of 0 or more, "AB" measures as "A" then "B"
+ * at the concatenation point. */
+static void text_extent_classes(void) {
+    static const char letters[] = "ilWAMBx1.";
+    int inverted = 0, drifted = 0, short_box = 0, split = 0;
+    seed_random(20261206);
+    for (int round = 0; round < 400; ++round) {
+        char text[8];
+        const int n = 1 + (int)(next_random() % 6u);
+        for (int i = 0; i < n; ++i) text[i] = letters[next_random() % (sizeof letters - 1)];
+        text[n] = 0;
+        const Pint font = 1 + (Pint)(next_random() % 4u);
+        const Ptext_path path = (Ptext_path)(next_random() % 4u);
+        const Phor_text_align hor = (Phor_text_align)(next_random() % 4u);
+        const Pvert_text_align vert = (Pvert_text_align)(next_random() % 6u);
+        const Pfloat expan = (Pfloat)random_real(0.3, 2.0), space = (Pfloat)random_real(-1.5, 1.0);
+        const Pfloat height = (Pfloat)random_real(0.1, 3.0);
+        const Extent e = extent(font, expan, space, height, path, hor, vert, text);
+        CHECK(e.err == 0);
+        inverted += e.rect.p.x > e.rect.q.x || e.rect.p.y > e.rect.q.y;
+        drifted += path == PPATH_RIGHT || path == PPATH_LEFT ? !near(e.concat.y, 0) : !near(e.concat.x, 0);
+        for (int i = 0; i < n; ++i) {
+            /* Each character's body is as wide (path RIGHT, LEFT) or tall (UP, DOWN) alone. */
+            char one[2] = {text[i], 0};
+            const Extent c = extent(font, expan, space, height, path, hor, vert, one);
+            const int across = path == PPATH_RIGHT || path == PPATH_LEFT;
+            const double whole = across ? e.rect.q.x - e.rect.p.x : e.rect.q.y - e.rect.p.y;
+            const double part = across ? c.rect.q.x - c.rect.p.x : c.rect.q.y - c.rect.p.y;
+            short_box += whole < part - 1e-4;
+        }
+        /* (With negative spacing a character may reach back past the string's start, and the
+         * alignment then moves the whole string: it does not split.) */
+        if (n >= 2 && space >= 0 && (path == PPATH_RIGHT || path == PPATH_LEFT)) {
+            char head[2] = {text[0], 0};
+            const Extent first = extent(font, expan, space, height, path, PHOR_NORM, PVERT_NORM, head);
+            const Extent rest = extent(font, expan, space, height, path, PHOR_NORM, PVERT_NORM, text + 1);
+            const Extent all = extent(font, expan, space, height, path, PHOR_NORM, PVERT_NORM, text);
+            const double lo = fmin(first.rect.p.x, first.concat.x + rest.rect.p.x);
+            const double hi = fmax(first.rect.q.x, first.concat.x + rest.rect.q.x);
+            split += !near(all.rect.p.x, lo) || !near(all.rect.q.x, hi) ||
+                     !near(all.concat.x, first.concat.x + rest.concat.x);
+        }
+    }
+    CHECK(inverted == 0);
+    CHECK(drifted == 0);
+    CHECK(short_box == 0);
+    CHECK(split == 0);
+    if (inverted || drifted || short_box || split)
+        fprintf(
+            stderr,
+            "  text extent: %d inverted, %d concatenation points off the line, %d short boxes, %d split\n",
+            inverted, drifted, short_box, split);
 }
 
 int main(int argc, char** argv) {
@@ -85,6 +147,7 @@ int main(int argc, char** argv) {
     metafiles(pdf);
     error_count = 0;
     text_extent();
+    text_extent_classes();
     CHECK(error_count == 0);
     pclose_phigs();
     return finish("test_metafiles");

@@ -10,6 +10,8 @@
 #include "phigs.h"
 #include "phigs/render/StrokeFont.h"
 
+#include <cmath>
+
 using phigs::c::Binding;
 
 namespace {
@@ -74,6 +76,8 @@ void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_sp
             vert < PVERT_NORM || vert > PVERT_BOTTOM)
             throw Error(PE_ENUM_TYPE_INVAL, kName, "text path or alignment");
         if (font < 1 || font > 4) throw Error(kFontNotAvailable, kName, "font " + std::to_string(font));
+        if (!std::isfinite(char_expan) || !std::isfinite(char_space) || !std::isfinite(char_ht))
+            throw Error(errors::NonFiniteValue, kName, "the expansion, spacing or height is not finite");
         c::require(str, kName);
         c::require(rect, kName);
         c::require(offset, kName);

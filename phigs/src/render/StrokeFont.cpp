@@ -121,23 +121,27 @@ Layout layout(const StrokeFont& font, const std::string& text, const TextStyle& 
     const bool vertical = style.path == TextPath::Up || style.path == TextPath::Down;
     const double unit = l.scale;
     const double cell = (StrokeFont::kTop - StrokeFont::kBottom) * unit;
+    // The bodies' reach along the path: with negative spacing a later character may end before an
+    // earlier one, so the extent is the bodies' union, not the pen's travel.
     double pen = 0.0, widest = 0.0;
+    double lowX = 0.0, highX = 0.0, lowBase = 0.0, highBase = 0.0;
     for (char c : text) {
         const StrokeGlyph& g = font.glyph(c);
         const double width = (g.right - g.left) * l.xScale;
         widest = std::max(widest, width);
+        const bool first = l.placed.empty();
         if (vertical) {
             const double y = style.path == TextPath::Up ? pen : -pen;
             l.placed.push_back({&g, {-0.5 * width - g.left * l.xScale, y}});
+            lowBase = first ? y : std::min(lowBase, y), highBase = first ? y : std::max(highBase, y);
             pen += cell + gap;
         } else {
             const double x = style.path == TextPath::Right ? pen : -pen - width;
             l.placed.push_back({&g, {x - g.left * l.xScale, 0.0}});
+            lowX = first ? x : std::min(lowX, x), highX = first ? x + width : std::max(highX, x + width);
             pen += width + gap;
         }
     }
-    const double extent = text.empty() ? 0.0 : pen - gap;
-    const double lastBase = text.empty() ? 0.0 : (style.path == TextPath::Up ? 1 : -1) * (pen - cell - gap);
 
     // Alignment: shift so the alignment point lies at the text position.
     HorizontalAlignment h = style.horizontal;
@@ -152,15 +156,13 @@ Layout layout(const StrokeFont& font, const std::string& text, const TextStyle& 
     if (vertical) {
         l.minX = -0.5 * widest;
         l.maxX = 0.5 * widest;
-        const double highest = style.path == TextPath::Up ? lastBase : 0.0;
-        const double lowest = style.path == TextPath::Up ? 0.0 : lastBase;
-        l.topY = highest + StrokeFont::kTop * unit;
-        capY = highest + style.height;
-        baseY = lowest;
-        l.bottomY = lowest + StrokeFont::kBottom * unit;
+        l.topY = highBase + StrokeFont::kTop * unit;
+        capY = highBase + style.height;
+        baseY = lowBase;
+        l.bottomY = lowBase + StrokeFont::kBottom * unit;
     } else {
-        l.minX = style.path == TextPath::Right ? 0.0 : -extent;
-        l.maxX = style.path == TextPath::Right ? extent : 0.0;
+        l.minX = lowX;
+        l.maxX = highX;
         l.topY = StrokeFont::kTop * unit;
         capY = style.height;
         baseY = 0.0;
@@ -212,7 +214,12 @@ std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const st
 TextExtent textExtent(const StrokeFont& font, const std::string& text, const TextStyle& style) {
     const Layout l = layout(font, text, style);
     if (text.empty()) return {l.shift, l.shift, l.shift};
-    return {glm::dvec2(l.minX, l.bottomY) + l.shift, glm::dvec2(l.maxX, l.topY) + l.shift, l.next + l.shift};
+    // The concatenation point stays on the alignment line (a second string aligned alike continues
+    // the first's line or column); along the path it is where the next character would go.
+    const bool vertical = style.path == TextPath::Up || style.path == TextPath::Down;
+    const glm::dvec2 next = l.next + l.shift;
+    return {glm::dvec2(l.minX, l.bottomY) + l.shift, glm::dvec2(l.maxX, l.topY) + l.shift,
+            vertical ? glm::dvec2(0.0, next.y) : glm::dvec2(next.x, 0.0)};
 }
 
 }  // namespace phigs::render

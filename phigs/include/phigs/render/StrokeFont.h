@@ -42,9 +42,10 @@ private:
 std::vector<std::vector<glm::dvec2>> layoutText(const StrokeFont& font, const std::string& text,
                                                 const TextStyle& style);
 
-/// A string's text extent rectangle (the character bodies, Hershey rows kBottom..kTop) and its
-/// concatenation point (where the next character would start), in text local coordinates: the
-/// units of style.height, alignment applied, before the up vector turns them (INQUIRE TEXT EXTENT).
+/// A string's text extent rectangle (the union of the character bodies, Hershey rows kBottom..kTop)
+/// and its concatenation point (along the path, where the next character would start; across it,
+/// on the alignment line), in text local coordinates: the units of style.height, alignment
+/// applied, before the up vector turns them (INQUIRE TEXT EXTENT).
 struct TextExtent {
     glm::dvec2 min{0.0}, max{0.0};
     glm::dvec2 concatenation{0.0};
