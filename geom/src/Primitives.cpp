@@ -10,6 +10,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace geom {
 namespace {
@@ -45,7 +46,8 @@ std::pair<glm::dvec3, glm::dvec3> planeAxes(const glm::dvec3& xAxis, const glm::
 
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius) {
     checkPositive(radius, "radius", "makeCircle");
-    const auto [x, y] = planeAxes(xAxis, yAxis, "makeCircle");
+    const std::pair<glm::dvec3, glm::dvec3> axes = planeAxes(xAxis, yAxis, "makeCircle");
+    const glm::dvec3 x = axes.first, y = axes.second;
     std::vector<glm::dvec3> points;
     std::vector<double> weights;
     for (std::size_t j = 0; j < 9; ++j) {
@@ -58,7 +60,9 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
 Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
               double startAngle, double endAngle) {
     checkPositive(radius, "radius", "makeArc");
-    const auto [x, y] = planeAxes(xAxis, yAxis, "makeArc");
+    // Named copies, not a structured binding: clang 14 cannot capture one in a lambda.
+    const std::pair<glm::dvec3, glm::dvec3> axes = planeAxes(xAxis, yAxis, "makeArc");
+    const glm::dvec3 x = axes.first, y = axes.second;
     const double sweep = endAngle - startAngle;
     if (!std::isfinite(startAngle) || !std::isfinite(sweep) || !(sweep > 0.0) ||
         sweep > 2.0 * std::numbers::pi + 1e-12)
