@@ -116,9 +116,18 @@ public:
         const glm::vec3 colour = t.style->colour;
         if (t.annotation) {
             const glm::dvec3 reference = projectPoint3(model_, t.position);
+            const glm::dvec2 offset(t.annotationOffset);
+            if (t.leadLine) {
+                // From the reference point (no offset) to the annotation point, in NPC on the screen.
+                GeometryPart lead = begin(true, PartRole::Line, t.leadLine->colour);
+                lead.offsetInNpc = true;
+                lead.lineWidth = t.leadLine->width;
+                push(reference, {}, t.leadLine->colour, glm::vec2(0.0f), 0.0f);
+                push(reference, {}, t.leadLine->colour, glm::vec2(offset), 0.0f);
+                end(lead);
+            }
             GeometryPart part = begin(true, PartRole::Text, colour);
             part.offsetInNpc = true;
-            const glm::dvec2 offset(t.annotationOffset);
             for (const auto& strip : strips)
                 for (std::size_t i = 0; i + 1 < strip.size(); ++i) {
                     push(reference, {}, colour, glm::vec2(offset + strip[i]), 0.0f);
@@ -377,6 +386,9 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
                 h.value(p.annotation);
                 h.value(p.annotationOffset);
                 h.value(p.style);
+                h.value(p.leadLine.has_value());
+                if (p.leadLine)
+                    h.value(p.leadLine->colour), h.value(p.leadLine->type), h.value(p.leadLine->width);
             } else if constexpr (!std::is_same_v<T, DrawMesh>) {  // meshes: keyed by their own buffers
                 static_assert(kUnhandledPrimitive<T>);
             }

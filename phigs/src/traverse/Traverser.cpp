@@ -47,6 +47,7 @@ struct State {
     glm::dvec2 annoUp{0, 1};
     TextPath annoPath = TextPath::Right;
     int annoH = 0, annoV = 0;
+    int annoStyle = 1;  ///< 1 UNCONNECTED, 2 LEAD LINE
     InteriorStyle style = InteriorStyle::Hollow, backStyle = InteriorStyle::Hollow;
     int styleIndex = 1, backStyleIndex = 1;
     PatternPlacement pattern;
@@ -295,6 +296,9 @@ void applyIndex(State& s, const IndexAttribute& a) {
         case T::AnnotationTextPath:
             s.annoPath = static_cast<TextPath>(v);
             break;
+        case T::AnnotationStyle:
+            s.annoStyle = v;
+            break;
         case T::InteriorStyle:
             s.style = static_cast<InteriorStyle>(v);
             break;
@@ -356,7 +360,7 @@ void applyIndex(State& s, const IndexAttribute& a) {
             s.lineShading = static_cast<ShadingMethod>(v);
             break;
         default:
-            break;  // annotation style: no draw-list effect
+            break;
     }
 }
 
@@ -998,6 +1002,8 @@ private:
                     t.annotation = true;
                     t.annotationOffset = e.offset;
                     t.style = intern(resolve_.text(state, true));
+                    // Styles past LEAD LINE draw as UNCONNECTED, as a workstation without them does.
+                    if (state.annoStyle == 2) t.leadLine = *line(state);
                     emit(s, number, state, std::move(t));
                 } else if constexpr (std::is_same_v<E, CellArrayElement>) {
                     // P, Q, R: P and Q opposite corners (2D), or P, Q along the first row, R along

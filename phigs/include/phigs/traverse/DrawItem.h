@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -76,6 +77,10 @@ struct DrawText {
     bool annotation = false;
     glm::dvec3 annotationOffset{0.0};  ///< NPC offset of the text from the reference point
     ItemRef<TextStyle> style;
+    /// Annotation style LEAD LINE: the line from the reference point to the annotation point, in
+    /// the polyline colour and width in force (drawn solid); absent for UNCONNECTED (and any
+    /// other style).
+    std::optional<LineStyle> leadLine;
 };
 
 /// A triangle mesh: what NURBS surfaces, triangle strips, quadrilateral meshes and fill area sets

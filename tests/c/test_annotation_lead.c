@@ -1,0 +1,76 @@
+/* ANNOTATION TEXT RELATIVE under annotation style LEAD LINE joins the reference point to the
+ * annotation point with a line in the polyline colour and width in force; UNCONNECTED (and a style
+ * the workstation lacks) draws no line. Seeded random reference points, offsets, polyline colours
+ * and widths, drawn on the offscreen type (lavapipe, validation layer on) and the PDF type
+ * (rasterised by pdftoppm at 144 dpi): points along the way, clear of the text, show the line's
+ * colour or the background. argv[1]: a directory for the files. */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include "picture.h"
+
+static PictureFiles files;
+
+/* Whether a pixel within two of NPC (x, y) has the colour rgb (within 3/255 per component). */
+static int colour_near(const Picture* p, double x, double y, const double rgb[3]) {
+    const int i0 = (int)(x * p->side), j0 = (int)(p->height - y * p->side);
+    for (int j = j0 - 2; j <= j0 + 2; ++j)
+        for (int i = i0 - 2; i <= i0 + 2; ++i) {
+            const unsigned char* c = p->rgb + ((size_t)j * (size_t)p->width + (size_t)i) * 3;
+            int same = 1;
+            for (int k = 0; k < 3; ++k) same = same && fabs(c[k] - 255 * rgb[k]) <= 3.5;
+            if (same) return 1;
+        }
+    return 0;
+}
+
+static void lead_lines(void) {
+    for (int round = 0; round < 8; ++round) {
+        const Pint style = round % 2 ? PANNO_STYLE_LEAD_LINE : PANNO_STYLE_UNCONNECTED + 2 * (round % 4 == 2);
+        const int lead = style == PANNO_STYLE_LEAD_LINE;
+        double rgb[3];
+        for (int k = 0; k < 3; ++k) rgb[k] = (double)(64 + next_random() % 192u) / 255.0;
+        const double angle = random_real(0.0, 6.283);
+        const double length = random_real(0.25, 0.35);
+        const Ppoint ref = {(Pfloat)random_real(0.4, 0.6), (Pfloat)random_real(0.4, 0.6)};
+        const Pvec offset = {(Pfloat)(length * cos(angle)), (Pfloat)(length * sin(angle))};
+        Pgcolr colour;
+        Picture p[2];
+        colour.type = PMODEL_RGB;
+        colour.val.direct.x = (Pfloat)rgb[0], colour.val.direct.y = (Pfloat)rgb[1],
+        colour.val.direct.z = (Pfloat)rgb[2];
+        pdel_struct(1);
+        popen_struct(1);
+        pset_line_colr(&colour);
+        pset_linewidth((Pfloat)random_real(2.0, 4.0));
+        pset_anno_char_ht(0.02f);
+        pset_anno_style(style);
+        panno_text_rel(&ref, &offset, "X");
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        for (int i = 0; i < 2; ++i) {
+            if (!p[i].rgb) continue;
+            for (int k = 1; k <= 4; ++k) {
+                const double t = 0.15 * k, x = ref.x + t * offset.delta_x, y = ref.y + t * offset.delta_y;
+                const int shows = colour_near(&p[i], x, y, rgb);
+                if (shows != lead)
+                    fprintf(stderr, "  %s, style %d: at NPC (%.3f, %.3f) the line %s\n", p[i].name,
+                            (int)style, x, y, shows ? "shows" : "is missing");
+                CHECK(shows == lead);
+            }
+            free(p[i].rgb);
+        }
+    }
+}
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    char errors[512];
+    seed_random(0xbb67ae8584caa73bULL);
+    files = picture_files(dir, "annotation_lead");
+    snprintf(errors, sizeof errors, "%s/annotation_lead_errors.txt", dir);
+    open_with_handler(errors);
+    lead_lines();
+    pclose_phigs();
+    return finish("test_annotation_lead");
+}
