@@ -516,7 +516,7 @@ struct Resolver {
 };
 
 /// Both sides flat shaded (interior shading method NONE): a facet is one colour, its facet colour
-/// or else the interior colour, and vertex colours play no part (ISO 9592-4).
+/// or else the interior colour, and vertex colours play no part (the rule HP-PHIGS documents).
 bool flatShaded(const InteriorStyleSet& interior) {
     return interior.shadingOf(false) == ShadingMethod::None &&
            interior.shadingOf(true) == ShadingMethod::None;
