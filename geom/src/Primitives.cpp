@@ -10,7 +10,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <utility>
 
 namespace geom {
 namespace {
@@ -30,11 +29,15 @@ void checkPositive(double x, const char* what, const char* where) {
                             " must be positive");
 }
 
-/// The plane of a circle or arc as two orthonormal axes: xAxis's direction, and yAxis's part
-/// perpendicular to it, each of unit length. Axes that are zero, parallel or not finite span no
-/// plane (the "circle" would be a segment or a point) and are refused.
-std::pair<glm::dvec3, glm::dvec3> planeAxes(const glm::dvec3& xAxis, const glm::dvec3& yAxis,
-                                            const char* where) {
+/// The plane of a circle or arc: two orthonormal axes.
+struct PlaneAxes {
+    glm::dvec3 x, y;
+};
+
+/// xAxis's direction, and yAxis's part perpendicular to it, each of unit length. Axes that are
+/// zero, parallel or not finite span no plane (the "circle" would be a segment or a point) and are
+/// refused.
+PlaneAxes planeAxes(const glm::dvec3& xAxis, const glm::dvec3& yAxis, const char* where) {
     const double span = glm::length(glm::cross(xAxis, yAxis));
     if (!std::isfinite(span) || !(span > 1e-12 * glm::length(xAxis) * glm::length(yAxis)))
         throw GeometryError(std::string(where) + ": the axes must be finite, non-zero and not parallel");
@@ -46,12 +49,11 @@ std::pair<glm::dvec3, glm::dvec3> planeAxes(const glm::dvec3& xAxis, const glm::
 
 Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius) {
     checkPositive(radius, "radius", "makeCircle");
-    const std::pair<glm::dvec3, glm::dvec3> axes = planeAxes(xAxis, yAxis, "makeCircle");
-    const glm::dvec3 x = axes.first, y = axes.second;
+    const PlaneAxes axes = planeAxes(xAxis, yAxis, "makeCircle");
     std::vector<glm::dvec3> points;
     std::vector<double> weights;
     for (std::size_t j = 0; j < 9; ++j) {
-        points.push_back(center + radius * (kCx[j] * x + kCy[j] * y));
+        points.push_back(center + radius * (kCx[j] * axes.x + kCy[j] * axes.y));
         weights.push_back(circleWeight(j));
     }
     return Curve(2, kCircleKnots, points, weights);
@@ -60,9 +62,7 @@ Curve makeCircle(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::d
 Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec3& yAxis, double radius,
               double startAngle, double endAngle) {
     checkPositive(radius, "radius", "makeArc");
-    // Named copies, not a structured binding: clang 14 cannot capture one in a lambda.
-    const std::pair<glm::dvec3, glm::dvec3> axes = planeAxes(xAxis, yAxis, "makeArc");
-    const glm::dvec3 x = axes.first, y = axes.second;
+    const PlaneAxes axes = planeAxes(xAxis, yAxis, "makeArc");
     const double sweep = endAngle - startAngle;
     if (!std::isfinite(startAngle) || !std::isfinite(sweep) || !(sweep > 0.0) ||
         sweep > 2.0 * std::numbers::pi + 1e-12)
@@ -71,7 +71,7 @@ Curve makeArc(const glm::dvec3& center, const glm::dvec3& xAxis, const glm::dvec
     const int segments = std::max(1, static_cast<int>(std::ceil(sweep / (0.5 * std::numbers::pi) - 1e-12)));
     const double step = sweep / segments;
     auto onCircle = [&](double angle, double r) {
-        return center + r * (std::cos(angle) * x + std::sin(angle) * y);
+        return center + r * (std::cos(angle) * axes.x + std::sin(angle) * axes.y);
     };
     std::vector<glm::dvec3> points{onCircle(startAngle, radius)};
     std::vector<double> weights{1.0};

@@ -52,7 +52,7 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
 void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vector<double>& weights,
                            const std::string& where) {
     for (std::size_t i = 0; i < points.size(); ++i)
-        if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
+        if (!detail::finite(points[i]))
             throw GeometryError(where + ": control point " + std::to_string(i) +
                                 " has a non-finite coordinate");
     if (weights.empty()) return;
@@ -65,8 +65,7 @@ void checkPointsAndWeights(const std::vector<glm::dvec3>& points, const std::vec
                 where + ": weight " + std::to_string(i) + " is " + detail::numberText(weights[i]) +
                 ", weights must be finite and at least the smallest normal double (2.2e-308)");
         // Rational algorithms work on the homogeneous point (w x, w y, w z, w): it must be finite.
-        const glm::dvec3 weighted = weights[i] * points[i];
-        if (!std::isfinite(weighted.x) || !std::isfinite(weighted.y) || !std::isfinite(weighted.z))
+        if (!detail::finite(weights[i] * points[i]))
             throw GeometryError(where + ": control point " + std::to_string(i) + " times its weight " +
                                 detail::numberText(weights[i]) + " overflows a double");
     }

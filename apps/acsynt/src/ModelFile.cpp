@@ -24,10 +24,10 @@ std::vector<std::string_view> tokenize(std::string_view line) {
     std::vector<std::string_view> tokens;
     std::size_t i = 0;
     while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
         if (i >= line.size() || line[i] == '#') break;
         const std::size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '#') ++i;
         tokens.push_back(line.substr(start, i - start));
     }
     return tokens;
@@ -99,7 +99,7 @@ private:
             if (text.size() > maxLineLength)
                 fail("line longer than " + std::to_string(maxLineLength) + " characters");
             for (std::size_t k = 0; k < text.size(); ++k)
-                if (static_cast<unsigned char>(text[k]) < 0x20 && text[k] != '\t' && text[k] != '\r') {
+                if (static_cast<unsigned char>(text[k]) < 0x20 && text[k] != '\t') {
                     char code[16];
                     std::snprintf(code, sizeof code, "0x%02x", static_cast<unsigned>(text[k]));
                     fail(std::string("control character ") + code + " at column " + std::to_string(k + 1));
