@@ -289,7 +289,9 @@ int finish(acsynt::Session& session, const Options& o) {
     if (!o.record.empty()) written = recorded && written;
     for (const auto& p : session.pictures()) std::cout << p.string() << "\n";
     for (const auto& p : session.hardcopies()) std::cout << p.string() << "\n";
-    for (const auto& p : session.savedFiles()) std::cout << p.string() << "\n";
+    // A script's `summary summary` wrote the file the run's own summary then replaces: listed once.
+    for (const auto& p : session.savedFiles())
+        if (p != summary && p != log) std::cout << p.string() << "\n";
     std::cout << summary.string() << "\n" << log.string() << "\n";
     if (recorded) std::cout << o.record << "\n";  // only what was written
     if (!written) return kExitFatal;

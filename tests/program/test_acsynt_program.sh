@@ -29,11 +29,11 @@ run good 0 --script good.session --output out_good --size 320x240
 [ -f out_good/good.txt ] || fail "good: the summary directive wrote nothing"
 grep -q "errors\? in" good.out && fail "good: a clean run reports errors"
 
-# Every file the session wrote is printed, the FILE menu's too, each once; a directive's name that
-# already has its extension keeps it.
-printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice SAVE_MODEL\nstring saved.acs\nchoice ARCHIVE\nstring saved.phg\nchoice SAVE_MODEL\nstring saved.acs\nchoice RETURN\nsnapshot shot.png\nsummary listed.txt\n' >saved.session
+# Every file the session wrote is printed, the FILE menu's too, each once (a `summary summary`
+# and the run's own summary.txt too); a directive's name that already has its extension keeps it.
+printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice SAVE_MODEL\nstring saved.acs\nchoice ARCHIVE\nstring saved.phg\nchoice SAVE_MODEL\nstring saved.acs\nchoice RETURN\nsnapshot shot.png\nsummary listed.txt\nsummary summary\n' >saved.session
 run saved 0 --script saved.session --output out_saved --size 320x240
-for file in out_saved/saved.acs out_saved/saved.phg out_saved/shot.png out_saved/listed.txt; do
+for file in out_saved/saved.acs out_saved/saved.phg out_saved/shot.png out_saved/listed.txt out_saved/summary.txt; do
   [ -f "$file" ] || fail "saved: $file was not written"
   [ "$(grep -cxF "$file" saved.out)" -eq 1 ] || fail "saved: $file is not printed once: $(cat saved.out)"
 done
