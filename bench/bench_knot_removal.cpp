@@ -362,7 +362,8 @@ int main(int argc, char** argv) {
             add(r.curve.knots.data(), r.curve.knots.size() * sizeof(double));
             add(r.curve.points.data(), r.curve.points.size() * sizeof(glm::dvec3));
             add(r.curve.weights.data(), r.curve.weights.size() * sizeof(double));
-            std::printf("%s: %zu control points, digest %016llx\n", c.name.c_str(), r.curve.points.size(),
+            std::printf("%s: %zu control points (%s, %zu fits), digest %016llx\n", c.name.c_str(),
+                        r.curve.points.size(), r.freeKnotFit ? "free-knot fit" : "removal loop", r.fits,
                         static_cast<unsigned long long>(digest));
         }
         if (!found) {

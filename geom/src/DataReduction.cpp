@@ -1,5 +1,6 @@
 #include "geom/DataReduction.h"
 
+#include "KeptVector.h"
 #include "RemovalDetail.h"
 #include "geom/Basis.h"
 #include "geom/Evaluate.h"
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -23,13 +25,29 @@
 namespace geom {
 namespace detail {
 
-/// CurveDeviationMeter from the original's power forms and, where they are there, its samples
-/// and points, made by the reduction already (the same arrays the meter would make).
+/// CurveDeviationMeter on the original's power forms and, where given, its samples and points,
+/// made by the reduction already (the same arrays the meter would make). The meter reads them
+/// where they are: they must outlive it.
 struct MeterFromSamples {
-    static CurveDeviationMeter make(const Curve& original, int samplesPerSpan, std::vector<glm::dvec3> forms,
-                                    std::vector<double> params, std::vector<glm::dvec3> points) {
-        return CurveDeviationMeter(original, samplesPerSpan, std::move(forms), std::move(params),
-                                   std::move(points));
+    static CurveDeviationMeter make(const Curve& original, int samplesPerSpan,
+                                    const std::vector<glm::dvec3>& forms, const std::vector<double>* params,
+                                    const std::vector<glm::dvec3>* points) {
+        return CurveDeviationMeter(original, samplesPerSpan, borrowed(&forms), borrowed(params),
+                                   borrowed(points));
+    }
+
+    /// meter.measure(reduced, {from, to}, reducedSamplesPerSpan) with the map read where it is
+    /// (non-empty, ascending, of equal sizes).
+    static CurveDeviation measureAlong(const CurveDeviationMeter& meter, const Curve& reduced,
+                                       const std::vector<double>& from, const std::vector<double>& to,
+                                       int reducedSamplesPerSpan) {
+        return meter.measureAlong(reduced, from, to, reducedSamplesPerSpan);
+    }
+
+private:
+    template <class T>
+    static std::shared_ptr<const T> borrowed(const T* x) {
+        return std::shared_ptr<const T>(std::shared_ptr<const T>(), x);  // aliasing: owns nothing
     }
 };
 
@@ -1205,7 +1223,8 @@ public:
 
     const std::vector<double>& params() {
         if (!paramsMade_)
-            params_ = spanSamples(curve_.knots, curve_.degree, curve_.points.size(), samplesPerSpan_);
+            detail::spanSamplesInto(params_, curve_.knots, curve_.degree, curve_.points.size(),
+                                    samplesPerSpan_);
         paramsMade_ = true;
         return params_;
     }
@@ -1228,8 +1247,8 @@ public:
     /// are evaluated from them, and a free-knot fitter shares them.
     const std::vector<glm::dvec3>& forms() {
         if (!formsMade_)
-            forms_ =
-                detail::powerForms(curve_.degree, curve_.knots, curve_.points.data(), curve_.points.size());
+            detail::powerFormsInto(forms_, curve_.degree, curve_.knots, curve_.points.data(),
+                                   curve_.points.size());
         formsMade_ = true;
         return forms_;
     }
@@ -1239,8 +1258,8 @@ private:
     int samplesPerSpan_;
     bool paramsMade_ = false, formsMade_ = false;
     std::size_t valuesMade_ = 0;  // values_[0, valuesMade_) are made
-    std::vector<double> params_;
-    std::vector<glm::dvec3> values_, forms_;
+    detail::KeptVector<double> params_;
+    detail::KeptVector<glm::dvec3> values_, forms_;
 };
 
 /// True where the least-squares fit to the coefficients on `knots` (LinearFit: one banded solve)
@@ -1442,9 +1461,9 @@ private:
             // The original's power forms, and at the loop's density its samples and points, are
             // the ones the reduction made already.
             const bool same = density == samples_.samplesPerSpan();
-            meter_.emplace(detail::MeterFromSamples::make(
-                curve_, density, samples_.forms(), same ? samples_.params() : std::vector<double>{},
-                same ? samples_.values() : std::vector<glm::dvec3>{}));
+            meter_.emplace(detail::MeterFromSamples::make(curve_, density, samples_.forms(),
+                                                          same ? &samples_.params() : nullptr,
+                                                          same ? &samples_.values() : nullptr));
         }
         return *meter_;
     }
@@ -1710,8 +1729,8 @@ class LoopSamples {
 public:
     /// original: the original's samples, or null for none (the loop then measures nothing).
     LoopSamples(const Curve& curve, int samplesPerSpan, double tol, OriginalSamples* original)
-        : params_(original ? original->params() : std::vector<double>{}),
-          samples_(original ? original->values() : std::vector<glm::dvec3>{}),
+        : params_(original ? original->params() : noParams()),
+          samples_(original ? original->values() : noValues()),
           witness_(params_),
           trial_(params_.size()),
           error_(params_.size(), 0.0),
@@ -1723,11 +1742,11 @@ public:
 
     const std::vector<double>& params() const { return params_; }
 
-    /// The loop's witnesses as a parameter map onto the result, kept ascending as the map must be.
-    ParameterMap witnessMap() const {
-        ParameterMap map{params_, witness_};
-        for (std::size_t i = 1; i < map.to.size(); ++i) map.to[i] = std::max(map.to[i], map.to[i - 1]);
-        return map;
+    /// The loop's witnesses kept ascending: with params(), a parameter map onto the result.
+    detail::KeptVector<double> ascendingWitnesses() const {
+        detail::KeptVector<double> to(witness_);
+        for (std::size_t i = 1; i < to.size(); ++i) to[i] = std::max(to[i], to[i - 1]);
+        return to;
     }
 
     /// True where the fit keeps the tolerance at every sample near its change; then records it.
@@ -1882,11 +1901,20 @@ private:
         }
     }
 
-    std::vector<double> params_;
-    std::vector<glm::dvec3> samples_;
-    std::vector<double> witness_, trial_, error_, trialError_, blockError_, sparseParams_;
-    std::vector<glm::dvec3> sparseValues_, window_;  // window_: the candidate at accept's samples
-    std::size_t accepted_ = 0, failures_ = 0;        // the candidates judged so far
+    static const std::vector<double>& noParams() {
+        static const std::vector<double> none;
+        return none;
+    }
+    static const std::vector<glm::dvec3>& noValues() {
+        static const std::vector<glm::dvec3> none;
+        return none;
+    }
+
+    const std::vector<double>& params_;  // the original's (OriginalSamples, which outlives the loop)
+    const std::vector<glm::dvec3>& samples_;
+    detail::KeptVector<double> witness_, trial_, error_, trialError_, blockError_, sparseParams_;
+    detail::KeptVector<glm::dvec3> sparseValues_, window_;  // window_: the candidate at accept's samples
+    std::size_t accepted_ = 0, failures_ = 0;               // the candidates judged so far
     std::size_t pad_;
     double tol_;
     detail::SplineSampler originalSampler_;
@@ -1905,7 +1933,7 @@ bool loopTriesNone(const ReductionOptions& options, const Spline& s, std::size_t
 /// whose coefficients refined onto the original's knots stay within the tolerance) needs no
 /// final check and gets none.
 void measureLoopResult(const Curve& curve, const ReductionOptions& options, double tol,
-                       const LoopSamples& samples, CurveReduction& out) {
+                       const LoopSamples& samples, OriginalSamples& original, CurveReduction& out) {
     const bool measuring = std::isfinite(options.tolerance);
     const bool proved =
         measuring && !options.report && LinearFit(curve).bounds(out.curve.knots, out.curve.points, tol);
@@ -1913,8 +1941,14 @@ void measureLoopResult(const Curve& curve, const ReductionOptions& options, doub
     if (measure && samples.params().size() >= 2) {
         // The loop's witnesses map the original's parameters to their nearest points on the
         // result: as bounds and seeds they spare most inversions (the maxima stay those of
-        // inverting every sample).
-        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan, samples.witnessMap());
+        // inverting every sample). The original is measured at the loop's own samples (made
+        // once, read where they are), the result 8 times as densely per span (it can turn between
+        // the original's samples, where the loop did not look), and each direction's peaks are
+        // followed between samples.
+        const CurveDeviationMeter meter = detail::MeterFromSamples::make(
+            curve, options.samplesPerSpan, original.forms(), &original.params(), &original.values());
+        out.deviation = detail::MeterFromSamples::measureAlong(
+            meter, out.curve, samples.params(), samples.ascendingWitnesses(), 8 * options.samplesPerSpan);
     } else if (measure) {
         // No loop samples (the linear stage's state stands, or batch mode): the map is the
         // identity, whose bounds are the plain measurement's; the meter's global step (span
@@ -1952,6 +1986,7 @@ public:
           options_(options),
           tol_(tol),
           triesNone_(loopTriesNone(options, s, curve.points.size())),
+          originalSamples_(originalSamples),
           samples_(curve, options.samplesPerSpan, tol,
                    (std::isfinite(options.tolerance) && options.batch) || triesNone_ ? nullptr
                                                                                      : &originalSamples) {
@@ -1981,7 +2016,7 @@ public:
     /// The result, measured and stepped back until it keeps the tolerance (once).
     const CurveReduction& result() {
         if (!measured_) {
-            measureLoopResult(curve_, options_, tol_, samples_, out_);
+            measureLoopResult(curve_, options_, tol_, samples_, originalSamples_, out_);
             stepBackToTolerance(curve_, options_, history_, out_);
             measured_ = true;
         }
@@ -1993,6 +2028,7 @@ private:
     const ReductionOptions& options_;
     double tol_;
     bool triesNone_, measured_ = false;
+    OriginalSamples& originalSamples_;
     LoopSamples samples_;
     AcceptedStates history_;
     CurveReduction out_;

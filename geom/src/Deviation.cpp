@@ -1,5 +1,6 @@
 #include "geom/Deviation.h"
 
+#include "KeptVector.h"
 #include "RemovalDetail.h"
 #include "geom/CurveProjector.h"
 #include "geom/Evaluate.h"
@@ -115,15 +116,15 @@ std::size_t nearestOf(const std::vector<glm::dvec3>& points, std::size_t first, 
 // global(q, d) is the closest distance from q to `to`, given a distance d to a point of it;
 // toForms, where given, are the power forms of `to` (detail::powerForms).
 template <class Global>
-std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
-                                    const std::vector<double>& seeds, Global&& global,
-                                    const std::vector<glm::dvec3>* toForms = nullptr) {
+detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
+                                           const std::vector<double>& seeds, Global&& global,
+                                           const std::vector<glm::dvec3>* toForms = nullptr) {
     std::optional<detail::SplineSampler> sampler;
     emplaceSampler(sampler, to, toForms);
     detail::SplineSampler& toSampler = *sampler;
     // The bounds |a_i - to(seed_i)|, the curve evaluated a chunk at a time (no array of points
     // as long as the samples').
-    std::vector<double> out(seeds.size());
+    detail::KeptVector<double> out(seeds.size());
     std::array<glm::dvec3, 256> chunk;
     for (std::size_t start = 0; start < seeds.size(); start += chunk.size()) {
         const std::size_t n = std::min(chunk.size(), seeds.size() - start);
@@ -164,14 +165,15 @@ std::vector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec
 template <class Global>
 double peakDistance(const Curve& from, const std::vector<double>& params, const Curve& to,
                     const std::vector<double>& seeds, const std::vector<double>& d, Global&& global,
-                    const std::vector<glm::dvec3>* toForms = nullptr) {
+                    const std::vector<glm::dvec3>* toForms = nullptr,
+                    const std::vector<glm::dvec3>* fromForms = nullptr) {
     const std::size_t n = d.size();
     double best = 0.0;
     for (double x : d) best = std::max(best, x);
     if (n < 2 || !(best > 0.0)) return best;
     std::optional<detail::SplineSampler> sampler, fromSampler;
     emplaceSampler(sampler, to, toForms);
-    emplaceSampler(fromSampler, from, nullptr);
+    emplaceSampler(fromSampler, from, fromForms);
     const double threshold = 0.9 * best;
     for (std::size_t i = 0; i < n; ++i) {
         if (d[i] < threshold || (i > 0 && d[i - 1] > d[i]) || (i + 1 < n && d[i + 1] > d[i])) continue;
@@ -257,17 +259,17 @@ struct SpanStep {
     }
 };
 
-std::vector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params,
-                                 const std::vector<glm::dvec3>* forms = nullptr) {
-    std::vector<glm::dvec3> out(params.size());
+detail::KeptVector<glm::dvec3> valuesAt(const Curve& c, const std::vector<double>& params,
+                                        const std::vector<glm::dvec3>* forms = nullptr) {
+    detail::KeptVector<glm::dvec3> out(params.size());
     detail::evaluateAscending(c.degree, c.knots, c.points.data(), c.points.size(), params, out.data(), forms);
     return out;
 }
 
 // The map's piecewise linear interpolant at ascending parameters x (clamped to its ends).
-std::vector<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
-                                const std::vector<double>& x) {
-    std::vector<double> out(x.size());
+detail::KeptVector<double> interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
+                                       const std::vector<double>& x) {
+    detail::KeptVector<double> out(x.size());
     std::size_t k = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         while (k + 2 < xs.size() && xs[k + 1] <= x[i]) ++k;
@@ -326,10 +328,10 @@ double followPeaks(const std::vector<double>& u, const std::vector<double>& v, c
 
 }  // namespace
 
-std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
-                                int samplesPerSpan) {
+void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>& knots, int degree,
+                             std::size_t count, int samplesPerSpan) {
     if (samplesPerSpan < 1) throw GeometryError("spanSamples: samplesPerSpan must be at least 1");
-    std::vector<double> out;
+    out.clear();
     out.reserve((count - std::min<std::size_t>(count, static_cast<std::size_t>(degree))) *
                     static_cast<std::size_t>(samplesPerSpan) +
                 1);
@@ -339,6 +341,12 @@ std::vector<double> spanSamples(const std::vector<double>& knots, int degree, st
         for (int k = 0; k < samplesPerSpan; ++k) out.push_back(a + (b - a) * k / samplesPerSpan);
     }
     out.push_back(knots[count]);
+}
+
+std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
+                                int samplesPerSpan) {
+    std::vector<double> out;
+    detail::spanSamplesInto(out, knots, degree, count, samplesPerSpan);
     return out;
 }
 
@@ -353,10 +361,10 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
         spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan);
     const std::vector<double> pb =
         spanSamples(reduced.knots, reduced.degree, reduced.points.size(), samplesPerSpan);
-    const std::vector<glm::dvec3> a = valuesAt(original, pa), b = valuesAt(reduced, pb);
+    const detail::KeptVector<glm::dvec3> a = valuesAt(original, pa), b = valuesAt(reduced, pb);
     ProjectorStep toReduced{reduced, pb, b, {}, {}}, toOriginal{original, pa, a, {}, {}};
-    const std::vector<double> da = sampleDistances(reduced, a, pa, toReduced);
-    const std::vector<double> db = sampleDistances(original, b, pb, toOriginal);
+    const detail::KeptVector<double> da = sampleDistances(reduced, a, pa, toReduced);
+    const detail::KeptVector<double> db = sampleDistances(original, b, pb, toOriginal);
     return summary(da, db, peakDistance(original, pa, reduced, pa, da, toReduced),
                    peakDistance(reduced, pb, original, pb, db, toOriginal));
 }
@@ -392,23 +400,27 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
 }
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
-    : CurveDeviationMeter(original, samplesPerSpan, {}, {}, {}) {
+    : CurveDeviationMeter(original, samplesPerSpan, nullptr, nullptr, nullptr) {
 }
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan,
-                                         std::vector<glm::dvec3> forms, std::vector<double> params,
-                                         std::vector<glm::dvec3> points)
+                                         std::shared_ptr<const std::vector<glm::dvec3>> forms,
+                                         std::shared_ptr<const std::vector<double>> params,
+                                         std::shared_ptr<const std::vector<glm::dvec3>> points)
     : original_(original), samplesPerSpan_(samplesPerSpan) {
     validate(original, "measureDeviation: original");
     if (original.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
-    params_ = points.empty()
-                  ? spanSamples(original.knots, original.degree, original.points.size(), samplesPerSpan)
-                  : std::move(params);
-    originalForms_ = forms.empty() ? detail::powerForms(original.degree, original_.knots,
-                                                        original_.points.data(), original_.points.size())
-                                   : std::move(forms);
-    points_ = points.empty() ? valuesAt(original_, params_, &originalForms_) : std::move(points);
-    boxes_ = spanBoxes(original, params_);
+    params_ = points ? std::move(params)
+                     : std::make_shared<const std::vector<double>>(spanSamples(
+                           original.knots, original.degree, original.points.size(), samplesPerSpan));
+    originalForms_ =
+        forms ? std::move(forms)
+              : std::make_shared<const std::vector<glm::dvec3>>(detail::powerForms(
+                    original.degree, original_.knots, original_.points.data(), original_.points.size()));
+    points_ = points ? std::move(points)
+                     : std::make_shared<const std::vector<glm::dvec3>>(
+                           valuesAt(original_, *params_, originalForms_.get()));
+    boxes_ = spanBoxes(original, *params_);
 }
 
 CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
@@ -421,23 +433,32 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
         !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
         throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
     if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
-    const std::vector<double> pb =
-        spanSamples(reduced.knots, reduced.degree, reduced.points.size(),
-                    reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan_);
-    auto clampTo = [](std::vector<double> u, const Curve& c) {
+    return measureAlong(reduced, map.from, map.to, reducedSamplesPerSpan);
+}
+
+CurveDeviation CurveDeviationMeter::measureAlong(const Curve& reduced, const std::vector<double>& from,
+                                                 const std::vector<double>& to,
+                                                 int reducedSamplesPerSpan) const {
+    detail::KeptVector<double> pb;
+    detail::spanSamplesInto(pb, reduced.knots, reduced.degree, reduced.points.size(),
+                            reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan_);
+    auto clampTo = [](detail::KeptVector<double>&& u, const Curve& c) {
         for (double& x : u) x = std::clamp(x, c.domainStart(), c.domainEnd());
-        return u;
+        return std::move(u);
     };
-    const std::vector<glm::dvec3> b = valuesAt(reduced, pb);
-    const std::vector<double> seedsA = clampTo(interpolate(map.from, map.to, params_), reduced);
-    const std::vector<double> seedsB = clampTo(interpolate(map.to, map.from, pb), original_);
+    const detail::KeptVector<glm::dvec3> b = valuesAt(reduced, pb);
+    const std::vector<double>& params = *params_;
+    const std::vector<glm::dvec3>& points = *points_;
+    const std::vector<glm::dvec3>* forms = originalForms_.get();
+    const detail::KeptVector<double> seedsA = clampTo(interpolate(from, to, params), reduced);
+    const detail::KeptVector<double> seedsB = clampTo(interpolate(to, from, pb), original_);
     const SpanBoxes reducedBoxes = spanBoxes(reduced, pb);  // SpanStep keeps a reference
     SpanStep toReduced(reduced, pb, b, reducedBoxes);
-    SpanStep toOriginal(original_, params_, points_, boxes_, &originalForms_);
-    const std::vector<double> da = sampleDistances(reduced, points_, seedsA, toReduced);
-    const std::vector<double> db = sampleDistances(original_, b, seedsB, toOriginal, &originalForms_);
-    return summary(da, db, peakDistance(original_, params_, reduced, seedsA, da, toReduced),
-                   peakDistance(reduced, pb, original_, seedsB, db, toOriginal, &originalForms_));
+    SpanStep toOriginal(original_, params, points, boxes_, forms);
+    const detail::KeptVector<double> da = sampleDistances(reduced, points, seedsA, toReduced);
+    const detail::KeptVector<double> db = sampleDistances(original_, b, seedsB, toOriginal, forms);
+    return summary(da, db, peakDistance(original_, params, reduced, seedsA, da, toReduced, nullptr, forms),
+                   peakDistance(reduced, pb, original_, seedsB, db, toOriginal, forms));
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {

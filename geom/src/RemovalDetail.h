@@ -421,18 +421,29 @@ void evaluateAscendingFixed(const std::vector<double>& knots, const glm::dvec3* 
     }
 }
 
-// Every non-empty span's power form, at span * (p + 1); empty for a degree above smallDegree.
-inline std::vector<glm::dvec3> powerForms(int degree, const std::vector<double>& knots,
-                                          const glm::dvec3* points, std::size_t count) {
+// Every non-empty span's power form, at span * (p + 1), into out; empty for a degree above
+// smallDegree.
+inline void powerFormsInto(std::vector<glm::dvec3>& out, int degree, const std::vector<double>& knots,
+                           const glm::dvec3* points, std::size_t count) {
     const std::size_t p = static_cast<std::size_t>(degree);
-    std::vector<glm::dvec3> out;
-    if (p > smallDegree) return out;
+    out.clear();
+    if (p > smallDegree) return;
     out.resize((count + 1) * (p + 1));
     for (std::size_t span = p; span < count; ++span)
         if (knots[span + 1] > knots[span])
             spanPowerFormAnyDegree(span, p, knots.data(), points, &out[span * (p + 1)]);
+}
+
+inline std::vector<glm::dvec3> powerForms(int degree, const std::vector<double>& knots,
+                                          const glm::dvec3* points, std::size_t count) {
+    std::vector<glm::dvec3> out;
+    powerFormsInto(out, degree, knots, points, count);
     return out;
 }
+
+// spanSamples into out (its storage reused).
+void spanSamplesInto(std::vector<double>& out, const std::vector<double>& knots, int degree,
+                     std::size_t count, int samplesPerSpan);
 
 // forms: powerForms of the same spline, or null.
 inline void evaluateAscending(int degree, const std::vector<double>& knots, const glm::dvec3* points,

@@ -428,7 +428,8 @@ TEST_CASE("count-driven surface reduction removes that many rows in each directi
 TEST_CASE("the final measurement steps back when coarse loop samples let the tolerance slip",
           "[geom][knots][reduction]") {
     // One sample per span in the loop misses the peaks between knots; the final measurement
-    // (twice as dense) catches them and undoes accepted removals until the tolerance holds.
+    // (the result 8 times as dense, peaks followed) catches them and undoes accepted removals
+    // until the tolerance holds.
     std::mt19937 rng(51);
     std::size_t steppedBack = 0;
     for (int trial = 0; trial < 6; ++trial) {
@@ -442,8 +443,9 @@ TEST_CASE("the final measurement steps back when coarse loop samples let the tol
         steppedBack += r.steppedBack;
         REQUIRE(r.deviation.maxError <= o.tolerance);
         REQUIRE(r.removed == c.points.size() - r.curve.points.size());
-        // The report inverts from the loop's witnesses: the same maxima up to rounding.
-        REQUIRE(measureDeviation(c, r.curve, 2).maxError == Approx(r.deviation.maxError).epsilon(1e-9));
+        // The report inverts from the loop's witnesses: the maxima of a plain measurement twice
+        // per span to within 1% (the report samples the result more densely, the original less).
+        REQUIRE(r.deviation.maxError == Approx(measureDeviation(c, r.curve, 2).maxError).epsilon(0.01));
     }
     REQUIRE(steppedBack > 0);
 }

@@ -4,6 +4,7 @@
 #include "geom/Surface.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace geom {
@@ -75,17 +76,24 @@ public:
 
 private:
     friend struct detail::MeterFromSamples;
-    /// The meter from what a caller inside geom made already: the original's span power forms
-    /// (private to geom), and where `points` is not empty, its samples (spanSamples at
-    /// samplesPerSpan) and its points there, made from those forms.
-    CurveDeviationMeter(const Curve& original, int samplesPerSpan, std::vector<glm::dvec3> forms,
-                        std::vector<double> params, std::vector<glm::dvec3> points);
+    /// The meter on what a caller inside geom made already (shared, not copied): the original's
+    /// span power forms (private to geom), and where `points` is given, its samples (spanSamples
+    /// at samplesPerSpan) and its points there, made from those forms.
+    CurveDeviationMeter(const Curve& original, int samplesPerSpan,
+                        std::shared_ptr<const std::vector<glm::dvec3>> forms,
+                        std::shared_ptr<const std::vector<double>> params,
+                        std::shared_ptr<const std::vector<glm::dvec3>> points);
+
+    /// measure with the map's two arrays read where they are.
+    CurveDeviation measureAlong(const Curve& reduced, const std::vector<double>& from,
+                                const std::vector<double>& to, int reducedSamplesPerSpan) const;
 
     Curve original_;
     int samplesPerSpan_;
-    std::vector<double> params_;
-    std::vector<glm::dvec3> points_;
-    std::vector<glm::dvec3> originalForms_;  // every span's power form (private to geom)
+    std::shared_ptr<const std::vector<double>> params_;
+    std::shared_ptr<const std::vector<glm::dvec3>> points_;
+    std::shared_ptr<const std::vector<glm::dvec3>>
+        originalForms_;  // every span's power form (private to geom)
     SpanBoxes boxes_;
 };
 
