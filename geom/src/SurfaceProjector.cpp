@@ -346,6 +346,9 @@ private:
     void settleLeaf(const Region& region, double ua, double ub, double va, double vb) {
         take(projector_.polishIn(region.patch, p_, nearestAbscissa(ua, ub, va, vb), ua, ub, va, vb),
              region.patch);
+        const glm::dvec2 sample = nearestSample(region.patch, ua, ub, va, vb);
+        take(projector_.polishIn(region.patch, p_, sample, ua, ub, va, vb), region.patch);
+        settleBorders(region, ua, ub, va, vb);
         const glm::dvec2 uv = best_.uv;
         if (!bestIn(region, ua, ub, va, vb) || !(uv.x == ua || uv.x == ub || uv.y == va || uv.y == vb))
             return;
@@ -355,6 +358,40 @@ private:
                     projector_.polishIn(region.patch, p_,
                                         {ua + 0.5 * i * (ub - ua), va + 0.5 * j * (vb - va)}, ua, ub, va, vb),
                     region.patch);
+    }
+
+    /// A leaf on its patch's border: Newton along each border edge it holds, from the edge's
+    /// middle. Near a pole or a collapsed edge the distance is nearly flat and Newton over the
+    /// region (its Hessian nearly singular there) can stop short of a minimum on the border,
+    /// which the edge's own curve, regular there, finds.
+    void settleBorders(const Region& region, double ua, double ub, double va, double vb) {
+        const double um = 0.5 * (ua + ub), vm = 0.5 * (va + vb);
+        if (region.t0 == 0.0)
+            take(projector_.polishIn(region.patch, p_, {um, va}, ua, ub, va, va), region.patch);
+        if (region.t1 == 1.0)
+            take(projector_.polishIn(region.patch, p_, {um, vb}, ua, ub, vb, vb), region.patch);
+        if (region.s0 == 0.0)
+            take(projector_.polishIn(region.patch, p_, {ua, vm}, ua, ua, va, vb), region.patch);
+        if (region.s1 == 1.0)
+            take(projector_.polishIn(region.patch, p_, {ub, vm}, ub, ub, va, vb), region.patch);
+    }
+
+    /// The point of a kLeafGrid x kLeafGrid grid over [ua, ub] x [va, vb] nearest to p: near a
+    /// pole the net's nearest point is the pole itself, where the distance's gradient along the
+    /// collapsed edge vanishes and Newton cannot choose a direction.
+    glm::dvec2 nearestSample(std::size_t patch, double ua, double ub, double va, double vb) const {
+        constexpr int kLeafGrid = 5;
+        glm::dvec2 best{ua, va};
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < kLeafGrid; ++i)
+            for (int j = 0; j < kLeafGrid; ++j) {
+                const glm::dvec2 uv{ua + (ub - ua) * i / (kLeafGrid - 1),
+                                    va + (vb - va) * j / (kLeafGrid - 1)};
+                const glm::dvec3 d = tree_.evaluate(patch, uv.x, uv.y, 0).point - p_;
+                const double e = glm::dot(d, d);
+                if (e < bestDistance) bestDistance = e, best = uv;
+            }
+        return best;
     }
 
     /// Whether the best so far lies in the region's parameters [ua, ub] x [va, vb].
