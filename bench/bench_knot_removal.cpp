@@ -256,6 +256,8 @@ void figure(const std::string& name, double value) {
     json += buf;
 }
 
+void runMembers(const std::string& only);
+
 /// Reduces every generated class (or the one named `only`) with geom and SISL by turns; prints
 /// the table and adds the worst geom/SISL time and control point ratios to the JSON.
 void runClasses(const std::string& only = {}) {
@@ -319,6 +321,51 @@ void runClasses(const std::string& only = {}) {
     figure("worst_cp_ratio_vs_sisl", worstCps);
     figure("worst_cp_ratio_vs_sisl_not_proven_minimal", worstCpsOpen);
     figure("worst_error_over_tolerance", worstError);
+    runMembers(only);
+}
+
+/// The worst of kMembers other members of each generated class (seeds 1 to kMembers, as --seeds
+/// makes them): one member per class can flatter or wrong a class.
+void runMembers(const std::string& only) {
+    constexpr unsigned kMembers = 8;
+    struct Worst {
+        double time = 0, cps = 0, error = 0;
+    };
+    std::vector<std::pair<std::string, Worst>> worst;
+    for (unsigned seed = 1; seed <= kMembers; ++seed)
+        for (const CurveCase& c : generatedCases(seed)) {
+            if (!only.empty() && c.name != only) continue;
+            geom::ReductionOptions o;
+            o.tolerance = c.tolerance;
+            o.report = false;
+            geom::CurveReduction r;
+            int status = 0;
+            geom::Curve s;
+            const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
+                                              [&] { s = sislReduce(c.curve, c.tolerance, status); }, 5);
+            auto at =
+                std::find_if(worst.begin(), worst.end(), [&](const auto& w) { return w.first == c.name; });
+            if (at == worst.end()) at = worst.insert(worst.end(), {c.name, Worst{}});
+            Worst& w = at->second;
+            w.time = std::max(w.time, ms / sms);
+            if (!s.points.empty() && s.points.size() < c.curve.points.size())
+                w.cps = std::max(w.cps, double(r.curve.points.size()) / double(s.points.size()));
+            w.error = std::max(w.error, geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance);
+        }
+    std::printf("\nThe same classes, worst of %u other members (best of 5 runs each)\n", kMembers);
+    std::printf("%-16s | %6s %6s %7s\n", "class", "time", "cps", "err/tol");
+    Worst all;
+    for (const auto& [name, w] : worst) {
+        std::printf("%-16s | %6.2f %6.2f %7.3f\n", name.c_str(), w.time, w.cps, w.error);
+        figure(name + "_members_worst_time_ratio", w.time);
+        figure(name + "_members_worst_cp_ratio", w.cps);
+        all.time = std::max(all.time, w.time);
+        all.cps = std::max(all.cps, w.cps);
+        all.error = std::max(all.error, w.error);
+    }
+    figure("members_worst_time_ratio_vs_sisl", all.time);
+    figure("members_worst_cp_ratio_vs_sisl", all.cps);
+    figure("members_worst_error_over_tolerance", all.error);
 }
 
 }  // namespace

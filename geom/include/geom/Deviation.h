@@ -92,8 +92,8 @@ private:
     int samplesPerSpan_;
     std::shared_ptr<const std::vector<double>> params_;
     std::shared_ptr<const std::vector<glm::dvec3>> points_;
-    std::shared_ptr<const std::vector<glm::dvec3>>
-        originalForms_;  // every span's power form (private to geom)
+    // Every span's power form (private to geom).
+    std::shared_ptr<const std::vector<glm::dvec3>> originalForms_;
     SpanBoxes boxes_;
 };
 
