@@ -25,6 +25,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -256,6 +257,34 @@ void figure(const std::string& name, double value) {
     json += buf;
 }
 
+/// One generated member reduced by geom (report off, as SISL: no measurement beyond what the
+/// guarantee needs) and by SISL, by turns, best of `runs`; geom's error measured after the timing.
+struct MemberRun {
+    geom::CurveReduction geom;
+    geom::Curve sisl;  // no points where s1940 failed
+    double geomMs = 0, sislMs = 0, errorOverTolerance = 0;
+
+    double timeRatio() const { return geomMs / sislMs; }
+    /// geom's control points over SISL's where SISL removed anything, else 0.
+    double cpRatio(const geom::Curve& original) const {
+        const bool removed = !sisl.points.empty() && sisl.points.size() < original.points.size();
+        return removed ? double(geom.curve.points.size()) / double(sisl.points.size()) : 0.0;
+    }
+};
+
+MemberRun runMember(const CurveCase& c, int runs) {
+    geom::ReductionOptions o;
+    o.tolerance = c.tolerance;
+    o.report = false;
+    MemberRun m;
+    int status = 0;
+    std::tie(m.geomMs, m.sislMs) =
+        timePairMs([&] { m.geom = geom::reduceCurve(c.curve, o); },
+                   [&] { m.sisl = sislReduce(c.curve, c.tolerance, status); }, runs);
+    m.errorOverTolerance = geom::measureDeviation(c.curve, m.geom.curve).maxError / c.tolerance;
+    return m;
+}
+
 void runMembers(const std::string& only);
 
 /// Reduces every generated class (or the one named `only`) with geom and SISL by turns; prints
@@ -267,20 +296,13 @@ void runClasses(const std::string& only = {}) {
     double worstTime = 0, worstCps = 0, worstError = 0, worstCpsOpen = 0;
     for (const CurveCase& c : generatedCases()) {
         if (!only.empty() && c.name != only) continue;
-        geom::ReductionOptions o;
-        o.tolerance = c.tolerance;
-        o.report = false;  // as SISL: no measurement beyond what the guarantee needs (measured below)
-        geom::CurveReduction r;
-        int status = 0;
-        geom::Curve s;
-        const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
-                                          [&] { s = sislReduce(c.curve, c.tolerance, status); });
-        const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
+        const MemberRun m = runMember(c, 9);
+        const geom::CurveReduction& r = m.geom;
+        const geom::Curve& s = m.sisl;
+        const double ms = m.geomMs, sms = m.sislMs, gerr = m.errorOverTolerance;
         const double serr =
             s.points.empty() ? -1.0 : geom::measureDeviation(c.curve, s).maxError / c.tolerance;
-        const double timeRatio = ms / sms;
-        const bool sislRemoved = !s.points.empty() && s.points.size() < c.curve.points.size();
-        const double cpRatio = sislRemoved ? double(r.curve.points.size()) / double(s.points.size()) : 0.0;
+        const double timeRatio = m.timeRatio(), cpRatio = m.cpRatio(c.curve);
         std::printf("%-16s %6zu %8.1e | %6zu %7.3f %9.3f | %6zu %7.3f %9.3f | %6.2f %6.2f\n", c.name.c_str(),
                     c.curve.points.size(), c.tolerance, r.curve.points.size(), gerr, ms, s.points.size(),
                     serr, sms, timeRatio, cpRatio);
@@ -335,22 +357,14 @@ void runMembers(const std::string& only) {
     for (unsigned seed = 1; seed <= kMembers; ++seed)
         for (const CurveCase& c : generatedCases(seed)) {
             if (!only.empty() && c.name != only) continue;
-            geom::ReductionOptions o;
-            o.tolerance = c.tolerance;
-            o.report = false;
-            geom::CurveReduction r;
-            int status = 0;
-            geom::Curve s;
-            const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
-                                              [&] { s = sislReduce(c.curve, c.tolerance, status); }, 5);
+            const MemberRun m = runMember(c, 5);
             auto at =
                 std::find_if(worst.begin(), worst.end(), [&](const auto& w) { return w.first == c.name; });
             if (at == worst.end()) at = worst.insert(worst.end(), {c.name, Worst{}});
             Worst& w = at->second;
-            w.time = std::max(w.time, ms / sms);
-            if (!s.points.empty() && s.points.size() < c.curve.points.size())
-                w.cps = std::max(w.cps, double(r.curve.points.size()) / double(s.points.size()));
-            w.error = std::max(w.error, geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance);
+            w.time = std::max(w.time, m.timeRatio());
+            w.cps = std::max(w.cps, m.cpRatio(c.curve));
+            w.error = std::max(w.error, m.errorOverTolerance);
         }
     std::printf("\nThe same classes, worst of %u other members (best of 5 runs each)\n", kMembers);
     std::printf("%-16s | %6s %6s %7s\n", "class", "time", "cps", "err/tol");
@@ -426,15 +440,10 @@ int main(int argc, char** argv) {
         for (unsigned seed = 1, seeds = static_cast<unsigned>(std::stoi(argv[3])); seed <= seeds; ++seed)
             for (const CurveCase& c : generatedCases(seed)) {
                 if (c.name != argv[2]) continue;
-                geom::ReductionOptions o;
-                o.tolerance = c.tolerance;
-                o.report = false;
-                geom::CurveReduction r;
-                int status = 0;
-                geom::Curve s;
-                const auto [ms, sms] = timePairMs([&] { r = geom::reduceCurve(c.curve, o); },
-                                                  [&] { s = sislReduce(c.curve, c.tolerance, status); }, 5);
-                const double gerr = geom::measureDeviation(c.curve, r.curve).maxError / c.tolerance;
+                const MemberRun m = runMember(c, 5);
+                const geom::CurveReduction& r = m.geom;
+                const geom::Curve& s = m.sisl;
+                const double ms = m.geomMs, sms = m.sislMs, gerr = m.errorOverTolerance;
                 const double cps =
                     double(r.curve.points.size()) / double(std::max<std::size_t>(s.points.size(), 1));
                 std::printf(
