@@ -37,11 +37,17 @@ struct MeterFromSamples {
     }
 
     /// meter.measure(reduced, {from, to}, reducedSamplesPerSpan) with the map read where it is
-    /// (non-empty, ascending, of equal sizes).
+    /// (non-empty, ascending, of equal sizes), or with a proof only a proof.
     static CurveDeviation measureAlong(const CurveDeviationMeter& meter, const Curve& reduced,
                                        const std::vector<double>& from, const std::vector<double>& to,
-                                       int reducedSamplesPerSpan) {
-        return meter.measureAlong(reduced, from, to, reducedSamplesPerSpan);
+                                       int reducedSamplesPerSpan, const MeasureProof& proof) {
+        return meter.measureAlong(reduced, from, to, reducedSamplesPerSpan, proof);
+    }
+    /// meter.measure, or with a proof only a proof.
+    static CurveDeviation measure(const CurveDeviationMeter& meter, const Curve& reduced,
+                                  const ParameterMap& map, int reducedSamplesPerSpan,
+                                  const MeasureProof& proof) {
+        return meter.checkedMeasure(reduced, map, reducedSamplesPerSpan, proof);
     }
 
 private:
@@ -53,6 +59,13 @@ private:
 
 }  // namespace detail
 namespace {
+
+/// What a final check must find: with the report on, the deviation; with it off, only that the
+/// tolerance holds (as CurveDeviationMeter::within).
+detail::MeasureProof finalCheck(const ReductionOptions& options) {
+    if (options.report) return {};
+    return {0.9 * options.tolerance, options.tolerance};
+}
 
 // A spline with `sequences` coefficient sequences sharing one knot vector: a curve, or the
 // isoparametric curves of a surface net along the direction being reduced.
@@ -1439,10 +1452,11 @@ private:
     bool finalCheckPasses() {
         FreeKnotFit& f = *passed_[pass_];
         Curve candidate(f.curve.degree, f.curve.knots, f.curve.points);
-        const CurveDeviation d = meterFor(candidate).measure(candidate, f.map, 4 * measureDensity_);
+        const CurveDeviation d = detail::MeterFromSamples::measure(meterFor(candidate), candidate, f.map,
+                                                                   4 * measureDensity_, finalCheck(o_));
         if (!(d.maxError <= o_.tolerance)) return false;
         out_.curve = std::move(candidate);
-        out_.deviation = d;
+        out_.deviation = o_.report ? d : CurveDeviation{};
         out_.freeKnotFit = true;
         return true;
     }
@@ -1948,15 +1962,18 @@ void measureLoopResult(const Curve& curve, const ReductionOptions& options, doub
         const CurveDeviationMeter meter = detail::MeterFromSamples::make(
             curve, options.samplesPerSpan, original.forms(), &original.params(), &original.values());
         out.deviation = detail::MeterFromSamples::measureAlong(
-            meter, out.curve, samples.params(), samples.ascendingWitnesses(), 8 * options.samplesPerSpan);
+            meter, out.curve, samples.params(), samples.ascendingWitnesses(), 8 * options.samplesPerSpan,
+            finalCheck(options));
     } else if (measure) {
         // No loop samples (the linear stage's state stands, or batch mode): the map is the
         // identity, whose bounds are the plain measurement's; the meter's global step (span
         // boxes) needs no projector built on the original.
         const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
         const double a = curve.knots[p], b = curve.knots[n];
-        out.deviation =
-            measureDeviation(curve, out.curve, 2 * options.samplesPerSpan, ParameterMap{{a, b}, {a, b}});
+        const CurveDeviationMeter meter = detail::MeterFromSamples::make(curve, 2 * options.samplesPerSpan,
+                                                                         original.forms(), nullptr, nullptr);
+        out.deviation = detail::MeterFromSamples::measure(meter, out.curve, ParameterMap{{a, b}, {a, b}}, 0,
+                                                          finalCheck(options));
     }
 }
 
@@ -2018,6 +2035,8 @@ public:
         if (!measured_) {
             measureLoopResult(curve_, options_, tol_, samples_, originalSamples_, out_);
             stepBackToTolerance(curve_, options_, history_, out_);
+            // With the report off the check proved the tolerance and reports nothing.
+            if (!options_.report) out_.deviation = CurveDeviation{};
             measured_ = true;
         }
         return out_;

@@ -19,6 +19,8 @@
 namespace geom {
 namespace {
 
+using detail::MeasureProof;
+
 // Distances by Newton from the sample's own parameter are distances to real points of the other
 // shape, so they bound the true ones from above; the global projection (geom's projectors) is
 // run on the samples that could hold the maximum (at least half the largest local distance),
@@ -114,11 +116,14 @@ std::size_t nearestOf(const std::vector<glm::dvec3>& points, std::size_t first, 
 // sample not measured keeps its bound, which is below the maximum, so the maximum is exactly
 // that of measuring them all; the mean is an upper bound.
 // global(q, d) is the closest distance from q to `to`, given a distance d to a point of it;
-// toForms, where given, are the power forms of `to` (detail::powerForms).
+// toForms, where given, are the power forms of `to` (detail::powerForms). With a proof (see
+// MeasureProof), samples whose bound is within its floor keep their bound, and the pass stops
+// at the first distance past its ceiling.
 template <class Global>
 detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<glm::dvec3>& a,
                                            const std::vector<double>& seeds, Global&& global,
-                                           const std::vector<glm::dvec3>* toForms = nullptr) {
+                                           const std::vector<glm::dvec3>* toForms = nullptr,
+                                           const MeasureProof& proof = {}) {
     std::optional<detail::SplineSampler> sampler;
     emplaceSampler(sampler, to, toForms);
     detail::SplineSampler& toSampler = *sampler;
@@ -132,7 +137,7 @@ detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<gl
                                   std::span<const double>(seeds).subspan(start, n), chunk.data(), toForms);
         for (std::size_t k = 0; k < n; ++k) out[start + k] = glm::length(a[start + k] - chunk[k]);
     }
-    double worst = 0.0;
+    double worst = proof.floor;
     auto measure = [&](std::size_t i) {
         double d = detail::newtonDistance(toSampler, a[i], seeds[i], out[i]);
         if (d > worst) d = std::min(d, global(a[i], d));
@@ -151,8 +156,9 @@ detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<gl
         for (; at > 0 && out[largest[at - 1]] < out[i]; --at) largest[at] = largest[at - 1];
         largest[at] = i;
     }
-    for (std::size_t k = 0; k < kept && out[largest[k]] > worst; ++k) measure(largest[k]);
-    for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t k = 0; k < kept && out[largest[k]] > worst && worst <= proof.ceiling; ++k)
+        measure(largest[k]);
+    for (std::size_t i = 0; i < out.size() && worst <= proof.ceiling; ++i)
         if (out[i] > worst) measure(i);
     return out;
 }
@@ -162,20 +168,22 @@ detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<gl
 // of the maximum where a span is long. Each local maximum within a tenth of the largest is
 // searched by golden section between its neighbours (to 5e-4 of their interval), every point
 // measured as the samples are.
+// With a proof, only the maxima at or past its floor are followed (the samples below it may hold
+// bounds, not distances), and none once a distance is past its ceiling.
 template <class Global>
 double peakDistance(const Curve& from, const std::vector<double>& params, const Curve& to,
                     const std::vector<double>& seeds, const std::vector<double>& d, Global&& global,
                     const std::vector<glm::dvec3>* toForms = nullptr,
-                    const std::vector<glm::dvec3>* fromForms = nullptr) {
+                    const std::vector<glm::dvec3>* fromForms = nullptr, const MeasureProof& proof = {}) {
     const std::size_t n = d.size();
     double best = 0.0;
     for (double x : d) best = std::max(best, x);
-    if (n < 2 || !(best > 0.0)) return best;
+    if (n < 2 || !(best > 0.0) || best > proof.ceiling) return best;
     std::optional<detail::SplineSampler> sampler, fromSampler;
     emplaceSampler(sampler, to, toForms);
     emplaceSampler(fromSampler, from, fromForms);
-    const double threshold = 0.9 * best;
-    for (std::size_t i = 0; i < n; ++i) {
+    const double threshold = std::max(0.9 * best, proof.floor);
+    for (std::size_t i = 0; i < n && best <= proof.ceiling; ++i) {
         if (d[i] < threshold || (i > 0 && d[i - 1] > d[i]) || (i + 1 < n && d[i + 1] > d[i])) continue;
         const std::size_t l = i > 0 ? i - 1 : i, r = i + 1 < n ? i + 1 : i;
         const double lo = params[l], hi = params[r];
@@ -425,6 +433,19 @@ CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSp
 
 CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
                                             int reducedSamplesPerSpan) const {
+    return checkedMeasure(reduced, map, reducedSamplesPerSpan, {});
+}
+
+bool CurveDeviationMeter::within(const Curve& reduced, const ParameterMap& map, double tolerance,
+                                 int reducedSamplesPerSpan) const {
+    if (!(tolerance > 0.0)) throw GeometryError("CurveDeviationMeter::within: tolerance must be positive");
+    return checkedMeasure(reduced, map, reducedSamplesPerSpan, {0.9 * tolerance, tolerance}).maxError <=
+           tolerance;
+}
+
+CurveDeviation CurveDeviationMeter::checkedMeasure(const Curve& reduced, const ParameterMap& map,
+                                                   int reducedSamplesPerSpan,
+                                                   const MeasureProof& proof) const {
     validate(reduced, "measureDeviation: reduced");
     if (reduced.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     if (original_.domainStart() != reduced.domainStart() || original_.domainEnd() != reduced.domainEnd())
@@ -433,12 +454,12 @@ CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const Paramete
         !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
         throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
     if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
-    return measureAlong(reduced, map.from, map.to, reducedSamplesPerSpan);
+    return measureAlong(reduced, map.from, map.to, reducedSamplesPerSpan, proof);
 }
 
 CurveDeviation CurveDeviationMeter::measureAlong(const Curve& reduced, const std::vector<double>& from,
-                                                 const std::vector<double>& to,
-                                                 int reducedSamplesPerSpan) const {
+                                                 const std::vector<double>& to, int reducedSamplesPerSpan,
+                                                 const MeasureProof& proof) const {
     detail::KeptVector<double> pb;
     detail::spanSamplesInto(pb, reduced.knots, reduced.degree, reduced.points.size(),
                             reducedSamplesPerSpan > 0 ? reducedSamplesPerSpan : samplesPerSpan_);
@@ -455,10 +476,14 @@ CurveDeviation CurveDeviationMeter::measureAlong(const Curve& reduced, const std
     const SpanBoxes reducedBoxes = spanBoxes(reduced, pb);  // SpanStep keeps a reference
     SpanStep toReduced(reduced, pb, b, reducedBoxes);
     SpanStep toOriginal(original_, params, points, boxes_, forms);
-    const detail::KeptVector<double> da = sampleDistances(reduced, points, seedsA, toReduced);
-    const detail::KeptVector<double> db = sampleDistances(original_, b, seedsB, toOriginal, forms);
-    return summary(da, db, peakDistance(original_, params, reduced, seedsA, da, toReduced, nullptr, forms),
-                   peakDistance(reduced, pb, original_, seedsB, db, toOriginal, forms));
+    const detail::KeptVector<double> da = sampleDistances(reduced, points, seedsA, toReduced, nullptr, proof);
+    const double peakA =
+        peakDistance(original_, params, reduced, seedsA, da, toReduced, nullptr, forms, proof);
+    // A proof that failed one way needs nothing from the other.
+    if (peakA > proof.ceiling) return summary(da, {}, peakA);
+    const detail::KeptVector<double> db = sampleDistances(original_, b, seedsB, toOriginal, forms, proof);
+    return summary(da, db, peakA,
+                   peakDistance(reduced, pb, original_, seedsB, db, toOriginal, forms, nullptr, proof));
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {

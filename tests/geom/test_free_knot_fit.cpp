@@ -1,4 +1,5 @@
 #include "GeomTestUtil.h"
+#include "geom/CurveProjector.h"
 #include "geom/DataReduction.h"
 #include "geom/Deviation.h"
 #include "geom/Evaluate.h"
@@ -411,6 +412,54 @@ TEST_CASE("the deviation with a parameter map has the plain measurement's maxima
     bad.from = {0.0, 0.5, 0.4};
     bad.to = {0.0, 0.5, 0.6};
     REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, bad), Catch::Contains("ascending"));
+}
+
+TEST_CASE("the meter's proof of a tolerance sees every sample and reports no distance that is not there",
+          "[geom][knots][deviation][freeknots]") {
+    // within() inverts only the samples that could pass 0.9 of the tolerance and stops at the
+    // first distance past it. Over random noisy curves of degrees 1 to 7, each fitted at a random
+    // count and checked with its fit's map and the identity map: a tolerance below the largest
+    // closest distance of the meter's own samples (both ways, by global projection) must fail,
+    // and one above the largest of samples eight times as dense must pass.
+    std::mt19937 rng(74);
+    std::uniform_int_distribution<int> degree(1, 7);
+    std::uniform_real_distribution<double> noise(-6.0, -3.0);
+    auto largestDistance = [](const Curve& from, int density, const Curve& to) {
+        const CurveProjector projector(to);
+        double worst = 0.0;
+        for (double u : spanSamples(from.knots, from.degree, from.points.size(), density))
+            worst = std::max(worst, projector.closestPoint(evaluate(from, u)).distance);
+        return worst;
+    };
+    int checked = 0;
+    for (int trial = 0; trial < 24; ++trial) {
+        const int p = degree(rng);
+        const Curve c = noisyRefinedCurve(rng, p, 30, std::pow(10.0, noise(rng)));
+        const std::size_t count = static_cast<std::size_t>(p) + 2 + std::size_t(rng() % 12);
+        const FreeKnotFit f = FreeKnotFitter(c, FreeKnotOptions{}).fit(count);
+        if (f.curve.knots.empty()) continue;
+        const Curve g(f.curve.degree, f.curve.knots, f.curve.points);
+        const double sampled = std::max(largestDistance(c, 8, g), largestDistance(g, 16, c));
+        const double dense = std::max(largestDistance(c, 64, g), largestDistance(g, 128, c));
+        const CurveDeviationMeter meter(c, 8);
+        const ParameterMap identity{{c.domainStart(), c.domainEnd()}, {c.domainStart(), c.domainEnd()}};
+        for (const ParameterMap& map : {f.map, identity}) {
+            INFO("trial " << trial << ", degree " << p << ", " << count << " points, map of "
+                          << map.from.size() << ": samples " << sampled << ", dense " << dense);
+            for (double factor : {0.3, 0.97 * sampled / dense})
+                REQUIRE_FALSE(meter.within(g, map, factor * dense, 16));
+            for (double factor : {1.03, 3.0}) REQUIRE(meter.within(g, map, factor * dense, 16));
+            ++checked;
+        }
+    }
+    REQUIRE(checked >= 40);
+    const Curve c = nacaAirfoilCurve();
+    const ParameterMap identity{{c.domainStart(), c.domainEnd()}, {c.domainStart(), c.domainEnd()}};
+    const CurveDeviationMeter meter(c, 8);
+    REQUIRE(meter.within(c, identity, 1e-12));
+    REQUIRE_THROWS_WITH(meter.within(c, identity, 0.0), Catch::Contains("tolerance"));
+    REQUIRE_THROWS_WITH(meter.within(c, identity, std::nan("")), Catch::Contains("tolerance"));
+    REQUIRE_THROWS_WITH(meter.within(c, ParameterMap{}, 1.0), Catch::Contains("parameter map"));
 }
 
 TEST_CASE("free-knot reduction: limits and fallbacks", "[geom][knots][reduction][freeknots]") {

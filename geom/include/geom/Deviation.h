@@ -4,6 +4,7 @@
 #include "geom/Surface.h"
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -50,7 +51,16 @@ CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int
 
 namespace detail {
 struct MeterFromSamples;
-}
+
+/// A measurement that only has to prove a bound (CurveDeviationMeter::within): samples whose
+/// upper bound is within `floor` keep it uninverted, only the peaks at or past the floor are
+/// followed between samples, and the measurement stops at the first distance past `ceiling`.
+/// Its maximum says whether the ceiling holds; the rest of what it returns is not a report.
+struct MeasureProof {
+    double floor = 0.0;
+    double ceiling = std::numeric_limits<double>::infinity();
+};
+}  // namespace detail
 
 /// measureDeviation with a parameter map against one original, many times: the original's
 /// samples and span boxes are made once (a search measures every candidate).
@@ -61,6 +71,14 @@ public:
     /// The same as measureDeviation(original, reduced, samplesPerSpan, map, reducedSamplesPerSpan).
     CurveDeviation measure(const Curve& reduced, const ParameterMap& map,
                            int reducedSamplesPerSpan = 0) const;
+    /// Whether the curves keep within `tolerance` on measure()'s samples, measuring only what that
+    /// needs: a sample whose upper bound is within 0.9 of the tolerance is not inverted, the
+    /// peaks between samples are followed from those at or past 0.9 of it (measure() follows
+    /// those within a tenth of its largest), and the first distance past the tolerance ends it.
+    /// False only for a distance past the tolerance to a real point. Throws GeometryError as
+    /// measure() does, and for a tolerance that is not positive or is NaN.
+    bool within(const Curve& reduced, const ParameterMap& map, double tolerance,
+                int reducedSamplesPerSpan = 0) const;
 
     /// Per non-empty span of a curve: the box of its control points (the span lies in their
     /// convex hull) and the range [first, last) of the ascending samples in it, ends included.
@@ -84,9 +102,13 @@ private:
                         std::shared_ptr<const std::vector<double>> params,
                         std::shared_ptr<const std::vector<glm::dvec3>> points);
 
-    /// measure with the map's two arrays read where they are.
+    /// measure, or with a proof only a proof (see detail::MeasureProof).
+    CurveDeviation checkedMeasure(const Curve& reduced, const ParameterMap& map, int reducedSamplesPerSpan,
+                                  const detail::MeasureProof& proof) const;
+    /// checkedMeasure with the map's two arrays read where they are.
     CurveDeviation measureAlong(const Curve& reduced, const std::vector<double>& from,
-                                const std::vector<double>& to, int reducedSamplesPerSpan) const;
+                                const std::vector<double>& to, int reducedSamplesPerSpan,
+                                const detail::MeasureProof& proof) const;
 
     Curve original_;
     int samplesPerSpan_;
