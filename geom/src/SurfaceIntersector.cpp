@@ -15,6 +15,11 @@ namespace {
 
 constexpr int kMaxSubdivisionDepth = 40;
 constexpr std::size_t kNodeBudget = 3000;
+/// How far past its own edges (a fraction of the patch) Newton may follow a root. A root on a
+/// patch edge (a domain edge, a knot line, a crease) lies, after the rounding of the projection,
+/// just outside the patch on one side or on both; kept inside, Newton stops short of it on both.
+/// The root is then taken on the edge, where the line check decides.
+constexpr double kEdgeReach = 1e-9;
 
 /// G(s, t) = sum B_i(s) B_j(t) c_ij of a 2D Bézier patch with its first partials.
 struct Projected {
@@ -282,8 +287,8 @@ void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerance
         // A root on the cell's edge is found from the cells on both sides; a small margin lets
         // Newton reach it, and the merge in intersect() keeps one.
         const double ms = 1e-6 * (cell.s1 - cell.s0), mt = 1e-6 * (cell.t1 - cell.t0);
-        const double a0 = std::max(0.0, cell.s0 - ms), a1 = std::min(1.0, cell.s1 + ms);
-        const double b0 = std::max(0.0, cell.t0 - mt), b1 = std::min(1.0, cell.t1 + mt);
+        const double a0 = std::max(-kEdgeReach, cell.s0 - ms), a1 = std::min(1.0 + kEdgeReach, cell.s1 + ms);
+        const double b0 = std::max(-kEdgeReach, cell.t0 - mt), b1 = std::min(1.0 + kEdgeReach, cell.t1 + mt);
         auto newtonFinds = [&](double fs, double ft) {
             const NewtonResult r = newton(pool.data(), p, q, a0, a1, b0, b1, tol.newton, scratch, fs, ft);
             if (r.converged) found(r.s, r.t);
@@ -354,10 +359,17 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     }
     const double lengthScale = tree_.scale() * magnitude;
     // The rounding bound covers the projection and 40 levels of halving (each adds at most an
-    // epsilon of the net's size), times the factor p an edge division can bring.
-    const Tolerances tolerances{1e-12 * lengthScale, 1e-13 * lengthScale, 1e-13 * terms};
+    // epsilon of the net's size), times the factor p an edge division can bring. The box test and
+    // Newton's residual allow for the projection's own rounding (a few epsilons of `terms`): far
+    // from the origin, or with large weights, it exceeds 1e-13 of the patch, and a root on a patch
+    // edge or corner (where the net's corner value is G itself) would go with its cell, or lie
+    // out of Newton's reach. accept() still asks the point itself to be on the line.
+    const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * terms;
+    const Tolerances tolerances{std::max(1e-12 * lengthScale, rounding),
+                                std::max(1e-13 * lengthScale, rounding), 1e-13 * terms};
 
     auto accept = [&](double s, double t) {
+        s = std::clamp(s, 0.0, 1.0), t = std::clamp(t, 0.0, 1.0);
         const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);
         const BezierPatchTree::PatchPoint e = tree_.evaluate(index, u, v, 0);
         // t is measured from `origin` (near the surface, see intersect()); the caller shifts it.
@@ -374,8 +386,8 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     auto record = [&](double s, double t) {
         // Polish on the whole patch's own G: near a tangent contact a root found inside a cell may
         // sit on its edge, short of the double root, and a divided net is only G's factor.
-        const NewtonResult polished =
-            newton(projected.data(), p, q, 0.0, 1.0, 0.0, 1.0, tolerances.newton, scratch, s, t);
+        const NewtonResult polished = newton(projected.data(), p, q, -kEdgeReach, 1.0 + kEdgeReach,
+                                             -kEdgeReach, 1.0 + kEdgeReach, tolerances.newton, scratch, s, t);
         if (polished.converged) s = polished.s, t = polished.t;
         accept(s, t);
     };

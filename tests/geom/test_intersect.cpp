@@ -217,6 +217,85 @@ TEST_CASE("a line from a distant origin keeps its accuracy", "[geom][intersect]"
     }
 }
 
+namespace {
+
+/// A clamped knot vector for `count` points of degree p on [0, 1] whose interior knots repeat up
+/// to p times (p: a crease, where the Bézier patches meet at an angle).
+std::vector<double> creasedKnots(std::mt19937& rng, int p, std::size_t count) {
+    std::uniform_real_distribution<double> unit(0.05, 0.95);
+    std::uniform_int_distribution<int> multiplicity(1, p);
+    std::vector<double> interior;
+    const std::size_t wanted = count - static_cast<std::size_t>(p) - 1;
+    while (interior.size() < wanted) {
+        const double k = unit(rng);
+        for (int m = multiplicity(rng); m > 0 && interior.size() < wanted; --m) interior.push_back(k);
+    }
+    std::sort(interior.begin(), interior.end());
+    std::vector<double> knots(static_cast<std::size_t>(p) + 1, 0.0);
+    knots.insert(knots.end(), interior.begin(), interior.end());
+    knots.insert(knots.end(), static_cast<std::size_t>(p) + 1, 1.0);
+    return knots;
+}
+
+}  // namespace
+
+TEST_CASE("lines through patch edges, creases and corners hit there, far from the origin too",
+          "[geom][intersect]") {
+    // A crossing on a patch edge (the domain's edges, a knot line, a crease) lies after the
+    // projection's rounding just outside the patch on one side, or on both: the search must still
+    // find it. Random surfaces of degrees 1-5 each way with interior knots of multiplicity up to
+    // the degree, half of them rational with weights from 1e-2 to 1e2, sizes 1e-3 to 1e3 and
+    // placed up to 1e5 times their size from the origin; lines within 60 degrees of the normal
+    // through points on the domain's edges, on knot lines and at their corners.
+    std::mt19937 rng(83);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), bump(-0.3, 0.3);
+    std::uniform_int_distribution<int> degree(1, 5);
+    int lines = 0;
+    for (int surfaceIndex = 0; surfaceIndex < membersForBuild(40); ++surfaceIndex) {
+        const int p = degree(rng), q = degree(rng);
+        const std::size_t nu = static_cast<std::size_t>(p) + 1 + rng() % 5;
+        const std::size_t nv = static_cast<std::size_t>(q) + 1 + rng() % 5;
+        const double size = std::pow(10.0, -3.0 + 6.0 * unit(rng));
+        const glm::dvec3 offset =
+            glm::normalize(geomtest::randomPoint(rng)) * size * std::pow(10.0, 5.0 * unit(rng));
+        const bool rational = surfaceIndex % 2 == 1;
+        std::vector<glm::dvec3> points;
+        std::vector<double> weights;
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                const glm::dvec3 grid(double(i) / double(nu - 1), double(j) / double(nv - 1), bump(rng));
+                points.push_back(offset + size * grid);
+                if (rational) weights.push_back(std::pow(10.0, -2.0 + 4.0 * unit(rng)));
+            }
+        const Surface s(p, q, creasedKnots(rng, p, nu), creasedKnots(rng, q, nv), nu, nv, points, weights);
+        const SurfaceIntersector intersector(s);
+        std::vector<double> knotsU(s.knotsU.begin() + p, s.knotsU.end() - p);
+        std::vector<double> knotsV(s.knotsV.begin() + q, s.knotsV.end() - q);
+        for (int trial = 0; trial < 30; ++trial) {
+            double u = unit(rng), v = unit(rng);
+            const double knotU = knotsU[rng() % knotsU.size()], knotV = knotsV[rng() % knotsV.size()];
+            if (trial % 3 != 1) u = knotU;
+            if (trial % 3 != 0) v = knotV;
+            const glm::dvec3 n = normal(s, u, v);
+            if (!(glm::length(n) > 0.5)) continue;  // no normal there (a degenerate corner)
+            const glm::dvec3 point = evaluate(s, u, v);
+            const glm::dvec3 d = tilted(n, unit(rng) * 1.047, unit(rng) * 6.283);
+            const glm::dvec3 o = point - (0.5 + unit(rng)) * size * d;
+            const auto hits = intersector.intersect(o, d);
+            INFO("surface " << surfaceIndex << " of degrees " << p << " x " << q
+                            << (rational ? ", rational" : "") << ", size " << size << " at "
+                            << glm::length(offset) << "; u " << u << " v " << v);
+            REQUIRE(hasHitNear(hits, point, 1e-7 * size));
+            for (const LineSurfaceHit& h : hits) {
+                REQUIRE(glm::length(h.point - (o + h.t * d)) < 1e-9 * size);
+                REQUIRE(glm::length(evaluate(s, h.uv.x, h.uv.y) - h.point) < 1e-9 * size);
+            }
+            ++lines;
+        }
+    }
+    REQUIRE(lines >= membersForBuild(40) * 25);
+}
+
 TEST_CASE("a line with no direction is refused", "[geom][intersect]") {
     const Surface sphere = makeSphere(1.0);
     REQUIRE_THROWS_WITH(intersectLine(sphere, {0, 0, 0}, {0, 0, 0}), Catch::Contains("direction"));
