@@ -14,9 +14,24 @@
 namespace geom {
 namespace {
 
-double distance4(const glm::dvec4& a, const glm::dvec4& b) {
-    return glm::length(a - b);
-}
+/// How far a removal may move the homogeneous points: A5.8 compares the two values of the
+/// point it eliminates, and the curve moves by their difference times a B-spline (at most 1).
+/// The points are taken about the centre of their box (radius: the farthest point from it).
+/// Polynomial: the difference itself within the tolerance. Rational (as The NURBS Book eq. 5.30,
+/// but invariant under moving, scaling and reweighting the curve): with C = X / w and the
+/// difference (dX, dw), C' - C = (dX - C dw) / w', so |dX| + radius |dw| <= tolerance (wmin - |dw|)
+/// keeps the curve within the tolerance and every weight positive.
+struct RemovalBound {
+    double tolerance = 0.0, radius = 0.0, wmin = 1.0;
+    bool rational = false;
+
+    bool holds(const glm::dvec4& a, const glm::dvec4& b) const {
+        const glm::dvec4 d = a - b;
+        if (!rational) return glm::length(glm::dvec3(d)) <= tolerance;
+        const double dw = std::abs(d.w);
+        return glm::length(glm::dvec3(d)) + radius * dw <= tolerance * (wmin - dw);
+    }
+};
 
 /// The index r of the last occurrence of knot u in the curve and its multiplicity s.
 struct KnotPlace {
@@ -38,17 +53,24 @@ KnotPlace locateKnot(const Curve& curve, double u) {
     return {r, s};
 }
 
-/// The curve's homogeneous points, and in tol the bound on them that keeps the curve within
-/// tolerance (The NURBS Book eq. 5.30).
-std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, double tolerance, double& tol) {
+/// The centre of the box of the curve's points, about which its homogeneous points are taken.
+glm::dvec3 pointsCentre(const Curve& curve) {
+    glm::dvec3 lo = curve.points.front(), hi = lo;
+    for (const glm::dvec3& q : curve.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    return 0.5 * (lo + hi);
+}
+
+/// The curve's homogeneous points about `centre`, and the bound that keeps the curve within
+/// tolerance.
+std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, const glm::dvec3& centre, double tolerance,
+                                          RemovalBound& bound) {
     std::vector<glm::dvec4> pw(curve.points.size());
-    double wmin = 1.0, pmax = 0.0;
+    bound = RemovalBound{tolerance, 0.0, curve.weight(0), curve.rational()};
     for (std::size_t i = 0; i < pw.size(); ++i) {
-        pw[i] = glm::dvec4(curve.points[i] * curve.weight(i), curve.weight(i));
-        wmin = std::min(wmin, curve.weight(i));
-        pmax = std::max(pmax, glm::length(curve.points[i]));
+        pw[i] = glm::dvec4((curve.points[i] - centre) * curve.weight(i), curve.weight(i));
+        bound.wmin = std::min(bound.wmin, curve.weight(i));
+        bound.radius = std::max(bound.radius, glm::length(curve.points[i] - centre));
     }
-    tol = curve.rational() ? tolerance * wmin / (1.0 + pmax) : tolerance;
     return pw;
 }
 
@@ -56,7 +78,7 @@ std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, double tolerance, 
 /// `times` times while the homogeneous points move within tol, updating pw in place; returns the
 /// number of times it was removed.
 int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
-                int times, double tol) {
+                int times, const RemovalBound& bound) {
     auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };
     auto P = [&](int i) -> glm::dvec4& { return pw[static_cast<std::size_t>(i)]; };
     const int r = at.r, s = at.s, ord = p + 1;
@@ -79,10 +101,10 @@ int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p
         }
         bool removable = false;
         if (j - i < t) {
-            removable = distance4(T(ii - 1), T(jj + 1)) <= tol;
+            removable = bound.holds(T(ii - 1), T(jj + 1));
         } else {
             const double alfi = (u - knot(i)) / (knot(i + ord + t) - knot(i));
-            removable = distance4(P(i), alfi * T(ii + t + 1) + (1.0 - alfi) * T(ii - 1)) <= tol;
+            removable = bound.holds(P(i), alfi * T(ii + t + 1) + (1.0 - alfi) * T(ii - 1));
         }
         if (!removable) break;
         i = first;
@@ -100,7 +122,8 @@ int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p
 
 /// The curve left after removing knot u (at `at`) t times: A5.8's closing shifts of the knots and
 /// of the homogeneous points pw, projected back.
-Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, KnotPlace at, int t) {
+Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, const glm::dvec3& centre, KnotPlace at,
+                int t) {
     const int p = curve.degree;
     const int n = static_cast<int>(curve.points.size()) - 1;
     const int r = at.r, s = at.s;
@@ -123,7 +146,7 @@ Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, KnotPlace at, i
     std::vector<glm::dvec3> points(pw.size());
     std::vector<double> weights;
     for (std::size_t k = 0; k < pw.size(); ++k) {
-        points[k] = glm::dvec3(pw[k]) / pw[k].w;
+        points[k] = glm::dvec3(pw[k]) / pw[k].w + centre;
         if (curve.rational()) weights.push_back(pw[k].w);
     }
     return Curve(p, std::move(knots), std::move(points), std::move(weights));
@@ -137,12 +160,13 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
     const KnotPlace at = locateKnot(curve, u);
     times = std::min(times, at.s);
-    double tol = 0.0;
-    std::vector<glm::dvec4> pw = homogeneousPoints(curve, tolerance, tol);
-    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, tol);
+    RemovalBound bound;
+    const glm::dvec3 centre = pointsCentre(curve);
+    std::vector<glm::dvec4> pw = homogeneousPoints(curve, centre, tolerance, bound);
+    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, bound);
     ExactKnotRemoval out{curve, t};
     if (t == 0) return out;
-    out.curve = compacted(curve, pw, at, t);
+    out.curve = compacted(curve, pw, centre, at, t);
     return out;
 }
 

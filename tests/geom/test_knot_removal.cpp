@@ -169,6 +169,49 @@ TEST_CASE("exact knot removal keeps a knot the curve needs and stops at the firs
     REQUIRE_THROWS_AS(removeKnot(c, 0.5 * (c.knots[4] + c.knots[5]) + 1e-7, 1), GeometryError);
 }
 
+TEST_CASE(
+    "exact removal from a rational curve answers alike wherever the curve is placed, scaled or "
+    "reweighted, and keeps its tolerance",
+    "[geom][knots][removal]") {
+    // The bound on a rational curve's homogeneous points once held 1 + |P|max and weights below
+    // 1 side by side: a curve moved away from the origin, scaled, or with its weights multiplied
+    // (the same curve) kept knots the same curve elsewhere lost. Random rational curves of
+    // degrees 2-5 with weights over two decades, a knot inserted up to p times and the points
+    // then disturbed, removed at tolerances over five decades of their size: the count must not
+    // change under moving up to 1e4 sizes, scaling by 1e-3..1e3 and weights times 1e-2..1e2, and
+    // the curve must move by no more than the tolerance.
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int removals = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const int p = 2 + trial % 4;
+        Curve c = randomCurve(rng, p, static_cast<std::size_t>(p + 4 + trial % 3), true, true);
+        for (double& w : c.weights) w = std::pow(10.0, -1.0 + 2.0 * unit(rng));
+        const double u = freshKnot(rng, c);
+        const int times = 1 + trial % p;
+        Curve d = insertKnot(c, u, times);
+        const double noise = std::pow(10.0, -6.0 + 4.0 * unit(rng));
+        for (glm::dvec3& q : d.points) q += noise * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        const double tolerance = std::pow(10.0, -5.0 + 4.0 * unit(rng));
+        const ExactKnotRemoval plain = removeKnot(d, u, times, tolerance);
+        INFO("trial " << trial << ", degree " << p << ", " << times << " times, noise " << noise
+                      << ", tolerance " << tolerance << ": " << plain.removed << " removed");
+        if (plain.removed > 0) REQUIRE(measureDeviation(d, plain.curve, 32).maxError <= tolerance);
+        removals += plain.removed;
+        const double scale = std::pow(10.0, -3.0 + 6.0 * unit(rng)),
+                     weight = std::pow(10.0, -2.0 + 4.0 * unit(rng));
+        const glm::dvec3 shift = 1e4 * glm::dvec3(unit(rng), unit(rng), unit(rng));
+        Curve moved = d, scaled = d, reweighted = d;
+        for (glm::dvec3& q : moved.points) q += shift;
+        for (glm::dvec3& q : scaled.points) q *= scale;
+        for (double& w : reweighted.weights) w *= weight;
+        REQUIRE(removeKnot(moved, u, times, tolerance).removed == plain.removed);
+        REQUIRE(removeKnot(scaled, u, times, scale * tolerance).removed == plain.removed);
+        REQUIRE(removeKnot(reweighted, u, times, tolerance).removed == plain.removed);
+    }
+    REQUIRE(removals >= 40);
+}
+
 TEST_CASE("least-squares removal of several nearby knots recovers the simpler curve",
           "[geom][knots][removal]") {
     std::mt19937 rng(27);

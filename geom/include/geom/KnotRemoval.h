@@ -18,8 +18,11 @@ struct ExactKnotRemoval {
 
 /// Removes the interior knot value u up to `times` times where the curve allows it (The NURBS
 /// Book A5.8): each removal is kept only if the curve moves by at most `tolerance` (a distance
-/// in model units; for rational curves the book's bound d * wmin / (1 + |P|max) is applied to
-/// the homogeneous points). Stops at the first removal that would move the curve more.
+/// in model units). For rational curves the bound on the homogeneous points' change (dX, dw),
+/// taken about the centre of the points' box, is |dX| + R |dw| <= tolerance (wmin - |dw|), R the
+/// points' largest distance from that centre: the book's eq. 5.30 made invariant under moving,
+/// scaling and reweighting the curve, and keeping every weight positive. Stops at the first
+/// removal that would move the curve more.
 /// Throws GeometryError when u is not an interior knot, times < 1 or tolerance < 0.
 ExactKnotRemoval removeKnot(const Curve& curve, double u, int times = 1, double tolerance = 1e-9);
 
