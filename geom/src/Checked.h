@@ -108,4 +108,27 @@ inline void checkResult(const glm::dvec3& value, const char* where) {
     if (!finite(value)) resultNotFinite(where);
 }
 
+/// The sum of the absolute values (of a span's basis derivatives).
+inline double absoluteSum(std::span<const double> values) {
+    double sum = 0.0;
+    for (double x : values) sum += std::abs(x);
+    return sum;
+}
+
+/// Whether first derivatives su, sv at `point`, summed from the control points with basis
+/// derivatives whose absolute values sum to scaleU and scaleV, are so small against those points'
+/// coordinates that rounding may rule them (next to a collapsed edge or pole, more so far from the
+/// origin): then they are taken again about a control point of the span (Evaluate.cpp), whose
+/// digits they keep. The terms are about as large as the point's own size plus the net's reach
+/// from it; a derivative ten thousand times smaller than such terms times the basis derivatives
+/// has lost four of its digits or more. Compared squared, with (|a| + |b|)^2 <= 2 (|a|^2 + |b|^2).
+inline bool derivativesMayBeRounding(const Surface& surface, const glm::dvec3& point, const glm::dvec3& su,
+                                     const glm::dvec3& sv, double scaleU, double scaleV) {
+    const glm::dvec3 span = surface.points.front() - point;
+    const double reach2 = 2.0 * (point.x * point.x + point.y * point.y + point.z * point.z + span.x * span.x +
+                                 span.y * span.y + span.z * span.z);
+    const double u2 = su.x * su.x + su.y * su.y + su.z * su.z, v2 = sv.x * sv.x + sv.y * sv.y + sv.z * sv.z;
+    return u2 < 1e-8 * reach2 * scaleU * scaleU || v2 < 1e-8 * reach2 * scaleV * scaleV;
+}
+
 }  // namespace geom::detail

@@ -92,6 +92,41 @@ void curveDerivatives(const Curve& curve, double u, int order, const char* where
                         ") is not a positive normal number");
 }
 
+/// Su and Sv (out[2], out[1]) again, from the span's net taken about the control point at its
+/// corner nearest (u, v): next to a collapsed edge, whose points are then exact zeros, the
+/// derivatives across it are as small as the distance to it and keep their digits (taken from
+/// the origin they are differences of terms as large as the coordinates, and at the edge itself
+/// rounding noise that looks like a direction).
+void firstDerivativesAbout(const Surface& surface, std::size_t spanU, std::size_t spanV, double u, double v,
+                           std::span<const double> nu, std::span<const double> dnu,
+                           std::span<const double> nv, std::span<const double> dnv, glm::dvec3* out) {
+    const std::size_t p = static_cast<std::size_t>(surface.degreeU),
+                      q = static_cast<std::size_t>(surface.degreeV);
+    const auto& ku = surface.knotsU;
+    const auto& kv = surface.knotsV;
+    const std::size_t ci = u - ku[spanU] <= ku[spanU + 1] - u ? spanU - p : spanU;
+    const std::size_t cj = v - kv[spanV] <= kv[spanV + 1] - v ? spanV - q : spanV;
+    const glm::dvec3 origin = surface.point(ci, cj);
+    glm::dvec4 h(0.0), hu(0.0), hv(0.0);
+    for (std::size_t r = 0; r <= p; ++r) {
+        const std::size_t i = spanU - p + r;
+        glm::dvec4 row(0.0), rowV(0.0);
+        for (std::size_t c = 0; c <= q; ++c) {
+            const std::size_t j = spanV - q + c;
+            const double wt = surface.weight(i, j);
+            const glm::dvec4 pw((surface.point(i, j) - origin) * wt, wt);
+            row += nv[c] * pw;
+            rowV += dnv[c] * pw;
+        }
+        h += nu[r] * row;
+        hu += dnu[r] * row;
+        hv += nu[r] * rowV;
+    }
+    const glm::dvec3 relative = glm::dvec3(h) / h.w;  // S - origin
+    out[1] = (glm::dvec3(hv) - hv.w * relative) / h.w;
+    out[2] = (glm::dvec3(hu) - hu.w * relative) / h.w;
+}
+
 /// S, and for order 1 also Sv, Su (out as surfaceDerivatives lays it out: S, Sv, Su, 0), in one
 /// pass over the span's net: the per-point path most callers take (points, normals).
 void firstOrder(const Surface& surface, double u, double v, std::size_t spanU, std::size_t spanV, int order,
@@ -149,6 +184,9 @@ void firstOrder(const Surface& surface, double u, double v, std::size_t spanU, s
     out[1] = (glm::dvec3(hv) - hv.w * out[0]) / h.w;
     out[2] = (glm::dvec3(hu) - hu.w * out[0]) / h.w;
     out[3] = glm::dvec3(0.0);
+    if (detail::derivativesMayBeRounding(surface, out[0], out[2], out[1], detail::absoluteSum(dnu.span()),
+                                         detail::absoluteSum(dnv.span())))
+        firstDerivativesAbout(surface, spanU, spanV, u, v, nu.span(), dnu.span(), nv.span(), dnv.span(), out);
     detail::checkResult(out[1], where);
     detail::checkResult(out[2], where);
 }

@@ -50,7 +50,7 @@ DirectionBasis directionBasis(int degree, const std::vector<double>& knots, std:
 /// the sums unroll), 0 for any other.
 template <std::size_t W, bool Rational>
 void evaluateRow(const Surface& s, const DirectionBasis& bv, const std::vector<glm::dvec4>& row,
-                 const std::vector<glm::dvec4>& rowU, double u, std::span<const double> vs,
+                 const std::vector<glm::dvec4>& rowU, double u, double scaleU, std::span<const double> vs,
                  std::span<GridSample> out) {
     const std::size_t q = static_cast<std::size_t>(s.degreeV);
     const std::size_t wv = W == 0 ? q + 1 : W;
@@ -85,14 +85,22 @@ void evaluateRow(const Surface& s, const DirectionBasis& bv, const std::vector<g
             su = glm::dvec3(hu);
             sv = glm::dvec3(hv);
         }
+        const double uc = std::clamp(u, s.domainStartU(), s.domainEndU());
+        const double vc = std::clamp(vs[j], s.domainStartV(), s.domainEndV());
+        double scaleV = 0.0;
+        for (std::size_t k = 0; k < wv; ++k) scaleV += std::abs(dm[k]);
+        if (detail::derivativesMayBeRounding(s, point, su, sv, scaleU, scaleV)) {
+            // Next to a collapsed edge: the per-point path takes them about a control point.
+            const SurfaceDerivatives d = derivatives(s, uc, vc, 1);
+            su = d.at(1, 0), sv = d.at(0, 1);
+        }
         const glm::dvec3 cr = glm::cross(su, sv);
         const double len2 = glm::dot(cr, cr);
         glm::dvec3 n;
         if (len2 > 1e-24 * glm::dot(su, su) * glm::dot(sv, sv) && len2 > 0.0)
             n = cr * (1.0 / std::sqrt(len2));
         else
-            n = normalFromDerivatives(s, std::clamp(u, s.domainStartU(), s.domainEndU()),
-                                      std::clamp(vs[j], s.domainStartV(), s.domainEndV()), su, sv);
+            n = normalFromDerivatives(s, uc, vc, su, sv);
         out[j] = GridSample{point, su, sv, n};
     }
 }
@@ -137,28 +145,29 @@ void GridEvaluator::evaluate(std::span<const double> us, std::span<const double>
             rowU[j] = cu;
         }
         const std::span<GridSample> line = out.subspan(i * vs.size(), vs.size());
+        const double du = detail::absoluteSum(std::span<const double>(dn, wu));
         if (s.rational()) {
             switch (wv) {
                 case 3:
-                    evaluateRow<3, true>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<3, true>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
                 case 4:
-                    evaluateRow<4, true>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<4, true>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
                 default:
-                    evaluateRow<0, true>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<0, true>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
             }
         } else {
             switch (wv) {
                 case 3:
-                    evaluateRow<3, false>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<3, false>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
                 case 4:
-                    evaluateRow<4, false>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<4, false>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
                 default:
-                    evaluateRow<0, false>(s, bv, row, rowU, us[i], vs, line);
+                    evaluateRow<0, false>(s, bv, row, rowU, us[i], du, vs, line);
                     break;
             }
         }
