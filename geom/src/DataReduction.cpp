@@ -60,6 +60,13 @@ private:
 }  // namespace detail
 namespace {
 
+/// Samples per span of the original for a final check: the loop's, but at least 4. A loop run at
+/// 1 or 2 per span (for speed) misses peaks between its samples, and so would a check at its
+/// density: one per span reported 9.44e-4 where 64 per span found 1.0137e-3 (tolerance 1e-3).
+int finalCheckDensity(const ReductionOptions& options) {
+    return std::max(options.samplesPerSpan, 4);
+}
+
 /// What a final check must find: with the report on, the deviation; with it off, only that the
 /// tolerance holds (as CurveDeviationMeter::within).
 detail::MeasureProof finalCheck(const ReductionOptions& options) {
@@ -1359,7 +1366,7 @@ public:
           p_(static_cast<std::size_t>(curve.degree)),
           lowest_(lowest),
           none_(ceiling),
-          measureDensity_(2 * o.samplesPerSpan),
+          measureDensity_(2 * finalCheckDensity(o)),
           target_(std::log(0.97 * o.tolerance)),
           giveUp_(1.2 * 0.99 * o.tolerance),
           passAt_(0.95 * o.tolerance),
@@ -1724,13 +1731,13 @@ CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& o
         [](double, double) { return 0.0; }, &history);
     out.curve = toCurve(s);
     if (measuring || options.report)
-        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
     while (measuring && out.deviation.maxError > options.tolerance) {
         ++out.steppedBack;
         const std::optional<Spline> previous = history.stepBack();
         out.curve = previous ? toCurve(*previous) : curve;
         out.removed = n - out.curve.points.size();
-        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
         if (!previous) break;
     }
     return out;
@@ -1959,19 +1966,22 @@ void measureLoopResult(const Curve& curve, const ReductionOptions& options, doub
         // once, read where they are), the result 8 times as densely per span (it can turn between
         // the original's samples, where the loop did not look), and each direction's peaks are
         // followed between samples.
+        const int density = finalCheckDensity(options);
+        const bool shared = density == options.samplesPerSpan;
         const CurveDeviationMeter meter = detail::MeterFromSamples::make(
-            curve, options.samplesPerSpan, original.forms(), &original.params(), &original.values());
-        out.deviation = detail::MeterFromSamples::measureAlong(
-            meter, out.curve, samples.params(), samples.ascendingWitnesses(), 8 * options.samplesPerSpan,
-            finalCheck(options));
+            curve, density, original.forms(), shared ? &original.params() : nullptr,
+            shared ? &original.values() : nullptr);
+        out.deviation = detail::MeterFromSamples::measureAlong(meter, out.curve, samples.params(),
+                                                               samples.ascendingWitnesses(), 8 * density,
+                                                               finalCheck(options));
     } else if (measure) {
         // No loop samples (the linear stage's state stands, or batch mode): the map is the
         // identity, whose bounds are the plain measurement's; the meter's global step (span
         // boxes) needs no projector built on the original.
         const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
         const double a = curve.knots[p], b = curve.knots[n];
-        const CurveDeviationMeter meter = detail::MeterFromSamples::make(curve, 2 * options.samplesPerSpan,
-                                                                         original.forms(), nullptr, nullptr);
+        const CurveDeviationMeter meter = detail::MeterFromSamples::make(
+            curve, 2 * finalCheckDensity(options), original.forms(), nullptr, nullptr);
         out.deviation = detail::MeterFromSamples::measure(meter, out.curve, ParameterMap{{a, b}, {a, b}}, 0,
                                                           finalCheck(options));
     }
@@ -1986,7 +1996,7 @@ void stepBackToTolerance(const Curve& curve, const ReductionOptions& options, Ac
         const std::optional<Spline> previous = history.stepBack();
         out.curve = previous ? Curve(previous->degree, previous->knots, previous->points) : curve;
         out.removed = curve.points.size() - out.curve.points.size();
-        out.deviation = measureDeviation(curve, out.curve, 2 * options.samplesPerSpan);
+        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
         if (!previous) break;
     }
 }

@@ -48,7 +48,8 @@ struct ReductionOptions {
     int rounds = 4;
     int lawsonSteps = 3;
     EndConditions ends;
-    /// Measurement density: samples per knot span of the original shape (each direction).
+    /// Measurement density: samples per knot span of the original shape (each direction). A
+    /// curve's final check takes at least 4, whatever the loop runs at.
     int samplesPerSpan = 8;
     /// Fill the result's deviation report (a global measurement after the loop). In tolerance
     /// mode the measurement is also the final check. With report false a curve's deviation is
