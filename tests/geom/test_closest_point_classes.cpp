@@ -486,9 +486,10 @@ TEST_CASE("closest point is exact near the pole and the borders of rational surf
           "[geom][inversion][classes]") {
     // The class of the two cases above: random degrees, wide weights and sizes from 1e-4 to 1e4;
     // queries within 1e-9 to 1e-3 of the size from the pole or from a border point. An answer may
-    // be farther than the reference by 1e-9 of the size.
+    // be farther than the reference by 1e-9 of the size. Under the sanitizers a quarter of the
+    // surfaces and queries (the reference's pattern search is most of the time).
     int failures = 0;
-    for (int seed = 0; seed < 12; ++seed) {
+    for (int seed = 0; seed < membersForBuild(12); ++seed) {
         std::mt19937 rng(static_cast<unsigned>(2000 + seed));
         std::uniform_int_distribution<int> degree(1, 4);
         std::uniform_real_distribution<double> unit(0.0, 1.0), side(-1.0, 1.0);
