@@ -19,8 +19,8 @@ namespace {
 /// they reach), with the points taken from the one of them nearest to S(u, v). Near a collapsed
 /// edge (a pole) the first and second derivatives across it are as small as the distance to it;
 /// evaluated from points far from the origin they are differences of terms that large, and lose
-/// their digits (at 1e-9 of a pole a sphere's Gaussian curvature was 5,800 times off). Taken
-/// from the pole itself, the pole's points are exact zeros and every other term is small.
+/// their digits as the square of that distance. Taken from the pole itself, the pole's points are
+/// exact zeros and every other term is small.
 Surface localPatch(const Surface& s, double u, double v) {
     const std::size_t p = static_cast<std::size_t>(s.degreeU), q = static_cast<std::size_t>(s.degreeV);
     const glm::dvec3 at = evaluate(s, u, v);  // first: it checks the surface and (u, v)

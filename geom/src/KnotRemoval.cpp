@@ -75,8 +75,8 @@ std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, const glm::dvec3& 
 }
 
 /// The NURBS Book A5.8's removal loop, with its index names: removes knot u (at `at`) up to
-/// `times` times while the homogeneous points move within tol, updating pw in place; returns the
-/// number of times it was removed.
+/// `times` times while each removal keeps the bound, updating pw in place; returns the number of
+/// times it was removed.
 int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
                 int times, const RemovalBound& bound) {
     auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };

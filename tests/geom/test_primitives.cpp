@@ -150,7 +150,7 @@ TEST_CASE("normals next to and on a pole are exact at every size and place", "[g
 
 TEST_CASE("curvature next to a pole is exact at every size and place", "[geom][curvature]") {
     // Next to a collapsed edge the derivatives across it are as small as the distance to it;
-    // taken from the origin they lost their digits (a sphere's Gaussian curvature 12% off at
+    // taken from the origin they lost their digits (a unit sphere's Gaussian curvature 25% off at
     // 1e-8 of a pole, 5,800 times off at 1e-9 with radius 1e-3). Spheres of radius 1e-3..1e4
     // centred up to 1e4 radii away, at 1e-14..1e-2 of either pole.
     std::mt19937 rng(85);
@@ -209,6 +209,7 @@ TEST_CASE("curvature next to a pole is exact at every size and place", "[geom][c
         }
     }
 }
+
 TEST_CASE("primitive constructors refuse bad sizes", "[geom][exact]") {
     REQUIRE_THROWS_WITH(makeSphere(-1.0), Catch::Contains("radius"));
     REQUIRE_THROWS_WITH(makeTorus(1.0, 2.0), Catch::Contains("minor radius"));
