@@ -92,21 +92,28 @@ void curveDerivatives(const Curve& curve, double u, int order, const char* where
                         ") is not a positive normal number");
 }
 
-/// Su and Sv (out[2], out[1]) again, from the span's net taken about the control point at its
-/// corner nearest (u, v): next to a collapsed edge, whose points are then exact zeros, the
-/// derivatives across it are as small as the distance to it and keep their digits (taken from
-/// the origin they are differences of terms as large as the coordinates, and at the edge itself
-/// rounding noise that looks like a direction).
-void firstDerivativesAbout(const Surface& surface, std::size_t spanU, std::size_t spanV, double u, double v,
-                           std::span<const double> nu, std::span<const double> dnu,
-                           std::span<const double> nv, std::span<const double> dnv, glm::dvec3* out) {
+/// The control point at the corner of the span's net nearest (u, v) in parameter, about which
+/// derivatives keep their digits: next to a collapsed edge, whose points are then exact zeros,
+/// the derivatives across it are as small as the distance to it, and taken from the origin they
+/// are differences of terms as large as the coordinates (at the edge itself rounding noise that
+/// looks like a direction).
+glm::dvec3 spanCorner(const Surface& surface, std::size_t spanU, std::size_t spanV, double u, double v) {
     const std::size_t p = static_cast<std::size_t>(surface.degreeU),
                       q = static_cast<std::size_t>(surface.degreeV);
     const auto& ku = surface.knotsU;
     const auto& kv = surface.knotsV;
     const std::size_t ci = u - ku[spanU] <= ku[spanU + 1] - u ? spanU - p : spanU;
     const std::size_t cj = v - kv[spanV] <= kv[spanV + 1] - v ? spanV - q : spanV;
-    const glm::dvec3 origin = surface.point(ci, cj);
+    return surface.point(ci, cj);
+}
+
+/// Su and Sv (out[2], out[1]) again, from the span's net taken about spanCorner.
+void firstDerivativesAbout(const Surface& surface, std::size_t spanU, std::size_t spanV, double u, double v,
+                           std::span<const double> nu, std::span<const double> dnu,
+                           std::span<const double> nv, std::span<const double> dnv, glm::dvec3* out) {
+    const std::size_t p = static_cast<std::size_t>(surface.degreeU),
+                      q = static_cast<std::size_t>(surface.degreeV);
+    const glm::dvec3 origin = spanCorner(surface, spanU, spanV, u, v);
     glm::dvec4 h(0.0), hu(0.0), hv(0.0);
     for (std::size_t r = 0; r <= p; ++r) {
         const std::size_t i = spanU - p + r;
@@ -213,6 +220,9 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
     basisDerivatives(spanU, u, p, surface.knotsU, du, nu.span());
     basisDerivatives(spanV, v, q, surface.knotsV, dv, nv.span());
 
+    // Taken about a corner of the span's net (spanCorner), so that second derivatives next to a
+    // collapsed edge (curvature there) keep their digits too; the point is moved back at the end.
+    const glm::dvec3 origin = spanCorner(surface, spanU, spanV, u, v);
     const std::size_t side = static_cast<std::size_t>(order) + 1;
     detail::SmallBuffer<glm::dvec4, 16> hom(side * side, glm::dvec4(0.0));
     detail::SmallBuffer<glm::dvec4, 16> temp(wv);
@@ -224,8 +234,8 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
                 const std::size_t j = spanV - static_cast<std::size_t>(q) + s;
                 const double wt = surface.weight(i, j);
                 if (!detail::usableWeight(wt)) weightNotNormal(where, i, j);
-                temp[s] +=
-                    nu[static_cast<std::size_t>(k) * wu + r] * glm::dvec4(surface.point(i, j) * wt, wt);
+                temp[s] += nu[static_cast<std::size_t>(k) * wu + r] *
+                           glm::dvec4((surface.point(i, j) - origin) * wt, wt);
             }
         }
         const int dd = std::min(order - k, dv);
@@ -258,6 +268,8 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
             at(k, l) = val / w00;
             detail::checkResult(at(k, l), where);
         }
+    at(0, 0) += origin;
+    detail::checkResult(at(0, 0), where);
 }
 
 /// a over its largest coordinate: the cross product of two such neither overflows nor underflows

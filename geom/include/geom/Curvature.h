@@ -13,9 +13,8 @@ struct SurfaceCurvature {
     double principalMax = 0.0;
 };
 
-/// Curvatures from the first and second fundamental forms, with the derivatives taken about the
-/// control point of the patch nearest to the point, so that they keep their digits next to a
-/// collapsed edge or pole too. Throws GeometryError at a point where the first fundamental form
+/// Curvatures from the first and second fundamental forms (derivatives, which keep their digits
+/// next to a collapsed edge or pole too). Throws GeometryError at a point where the first fundamental form
 /// is singular (on a collapsed edge or pole), where they are undefined.
 SurfaceCurvature curvature(const Surface& surface, double u, double v);
 
