@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 namespace geom::detail {
@@ -244,6 +245,24 @@ int gradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::siz
                  bool rational, bool alongV, const glm::dvec3& p) {
     return rational ? rationalGradientSign(h, c, pu, qv, alongV, p)
                     : polynomialGradientSign(c, pu, qv, alongV, p);
+}
+
+double departureFromEdge(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu,
+                         std::size_t qv, bool alongV) {
+    // The edge point of net point (i, j), and the weight factors a_i = w_i0, b_j = w_0j / w_00
+    // (alongV; the roles swap otherwise), exact on the edge and the first line.
+    BoundingBox box;
+    double spread = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < pu; ++i)
+        for (std::size_t j = 0; j < qv; ++j) {
+            const std::size_t k = i * qv + j, edge = alongV ? i * qv : j;
+            box.add(c[k]);
+            spread = std::max(spread, glm::distance(c[k], c[edge]));
+            const double product = h[i * qv].w * h[j].w / h[0].w;
+            weights = std::max(weights, std::abs(h[k].w / product - 1.0));
+        }
+    const double departure = spread + 2.0 * weights * box.diagonal();
+    return std::isfinite(departure) ? departure : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace geom::detail

@@ -46,4 +46,12 @@ int gradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::siz
 bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu, std::size_t qv,
                     const glm::dvec3& p);
 
+/// How far the piece can stray from its edge curve at v = 0 (alongV; at u = 0 otherwise): the
+/// largest distance of a net point from the first of its line across, plus twice the net's extent
+/// times the largest relative departure of the weights from a product a_i b_j. S is then a
+/// weighted mean of its line's points with weights that depend on the other parameter alone, so
+/// 0 means the piece does not change along v (a surface collapsed to a curve there).
+double departureFromEdge(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu,
+                         std::size_t qv, bool alongV);
+
 }  // namespace geom::detail

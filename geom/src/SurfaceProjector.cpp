@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <queue>
 #include <vector>
@@ -218,13 +219,20 @@ public:
     }
 
 private:
+    /// Where a region's surface does not change along v (alongV) or u: collapsed to a curve there.
+    enum class Flat : std::uint8_t { none, alongU, alongV };
+
     /// A part of a patch: fractions [s0, s1] x [t0, t1] of the patch's own parameters, its Bézier
-    /// net (an offset into the pool) and its subdivision depth.
+    /// net (an offset into the pool) and its subdivision depth. A flat region keeps only its edge
+    /// curve's net (at t0 alongV, at s0 alongU), halved along that curve alone: every point of
+    /// the region lies within tolerance_ of the curve, where a search of the whole region would
+    /// find a continuum of nearest points that no bound tells apart.
     struct Region {
         std::size_t patch = 0;
         double s0 = 0.0, s1 = 1.0, t0 = 0.0, t1 = 1.0;
         std::size_t net = 0;
         int depth = 0;
+        Flat flat = Flat::none;
     };
 
     const glm::dvec3* toward() const { return std::isfinite(best_.distance) ? &toward_ : nullptr; }
@@ -246,8 +254,15 @@ private:
         whole.patch = patch;
         whole.net = pool_.size();
         const std::vector<glm::dvec4>& net = tree_.patches()[patch].net;
-        pool_.insert(pool_.end(), net.begin(), net.end());
-        detail::project(pool_.data() + whole.net, netSize_, points_);
+        whole.flat = flatness(net.data());
+        if (whole.flat == Flat::alongV) {
+            for (std::size_t i = 0; i < pu_; ++i) pool_.push_back(net[i * qv_]);
+        } else if (whole.flat == Flat::alongU) {
+            pool_.insert(pool_.end(), net.begin(), net.begin() + static_cast<std::ptrdiff_t>(qv_));
+        } else {
+            pool_.insert(pool_.end(), net.begin(), net.end());
+        }
+        detail::project(pool_.data() + whole.net, netCount(whole), points_);
         const double bound = detail::lowerBound(points_, p_, toward());
         if (bound < best_.distance - tolerance_ && !fartherThanBest(whole)) push(whole, bound);
     }
@@ -256,6 +271,13 @@ private:
     /// patch, the region's nearest point lies on that edge, which a neighbour holds.
     bool settledByNeighbour(const Region& region) const {
         const glm::dvec4* net = pool_.data() + region.net;
+        if (region.flat != Flat::none) {
+            const int sign =
+                detail::gradientSign(net, points_, netCount(region), 1, projector_.rational_, false, p_);
+            const bool alongV = region.flat == Flat::alongV;
+            return (sign > 0 && (alongV ? region.s0 : region.t0) > 0.0) ||
+                   (sign < 0 && (alongV ? region.s1 : region.t1) < 1.0);
+        }
         const int signU = detail::gradientSign(net, points_, pu_, qv_, projector_.rational_, false, p_);
         if ((signU > 0 && region.s0 > 0.0) || (signU < 0 && region.s1 < 1.0)) return true;
         const int signV = detail::gradientSign(net, points_, pu_, qv_, projector_.rational_, true, p_);
@@ -265,7 +287,85 @@ private:
     /// The weights-aware test for rational nets, whose hull bounds small weights loosen.
     bool fartherThanBest(const Region& region) const {
         return projector_.rational_ && std::isfinite(best_.distance) &&
-               detail::provablyFarther(pool_.data() + region.net, pu_, qv_, p_, best_.distance - tolerance_);
+               detail::provablyFarther(pool_.data() + region.net, rows(region), columns(region), p_,
+                                       best_.distance - tolerance_);
+    }
+
+    /// Whether a patch's net is flat along v or u: within the search's tolerance of its edge curve,
+    /// allowing for the rounding of points as far from the origin as its own (the points a
+    /// collapsed row became under knot insertion differ by that much).
+    Flat flatness(const glm::dvec4* net) const {
+        detail::project(net, netSize_, points_);
+        double magnitude = 0.0;
+        for (const glm::dvec3& q : points_)
+            magnitude = std::max({magnitude, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+        const double allowed = tolerance_ + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+        if (detail::departureFromEdge(net, points_, pu_, qv_, true) <= allowed) return Flat::alongV;
+        if (detail::departureFromEdge(net, points_, pu_, qv_, false) <= allowed) return Flat::alongU;
+        return Flat::none;
+    }
+
+    /// The points a region keeps in the pool, and how its net is laid out (a flat one's is a curve's).
+    std::size_t netCount(const Region& region) const {
+        return region.flat == Flat::none ? netSize_ : (region.flat == Flat::alongV ? pu_ : qv_);
+    }
+    std::size_t rows(const Region& region) const {
+        return region.flat == Flat::none ? pu_ : netCount(region);
+    }
+    std::size_t columns(const Region& region) const { return region.flat == Flat::none ? qv_ : 1; }
+
+    /// A flat region halved along its curve.
+    void splitFlat(const Region& region) {
+        ++splits_;
+        const std::size_t count = netCount(region), base = pool_.size();
+        pool_.resize(base + 2 * count);
+        detail::halveLine(pool_.data() + region.net, 1, count, pool_.data() + base,
+                          pool_.data() + base + count, work_);
+        const bool alongV = region.flat == Flat::alongV;
+        const double middle = alongV ? 0.5 * (region.s0 + region.s1) : 0.5 * (region.t0 + region.t1);
+        for (std::size_t k = 0; k < 2; ++k) {
+            Region child = region;
+            child.depth = region.depth + 1;
+            child.net = base + k * count;
+            (alongV ? (k == 0 ? child.s1 : child.s0) : (k == 0 ? child.t1 : child.t0)) = middle;
+            detail::project(pool_.data() + child.net, count, points_);
+            const double bound = detail::lowerBound(points_, p_, toward());
+            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
+                push(child, bound);
+        }
+    }
+
+    /// visit() for a flat region: Newton along its edge curve, from [lo, hi] in the patch's parameters.
+    void visitFlat(const Region& region, double bound, glm::dvec2 lo, glm::dvec2 hi) {
+        const glm::dvec4* net = pool_.data() + region.net;
+        const std::size_t count = netCount(region);
+        detail::project(net, count, points_);
+        auto along = [&](double f) { return lo + f * (hi - lo); };
+        auto polish = [&](glm::dvec2 start) {
+            take(projector_.polishIn(region.patch, p_, start, lo.x, hi.x, lo.y, hi.y), region.patch);
+        };
+        const bool holdsBest = std::isfinite(best_.distance) && bestIn(region, lo.x, hi.x, lo.y, hi.y);
+        const glm::dvec2 start = holdsBest ? glm::clamp(best_.uv, lo, hi)
+                                           : along(static_cast<double>(detail::nearestPoint(points_, p_)) /
+                                                   static_cast<double>(count - 1));
+        if (detail::provablyConvex(net, points_, count, 1, p_)) return polish(start);
+        if (!holdsBest) polish(start);
+        if (!(bound < best_.distance - tolerance_)) return;
+        if (mayHalve(region)) return splitFlat(region);
+        if (detail::provablyFarther(net, count, 1, p_, best_.distance - tolerance_)) return;
+        // Too small to halve: from the nearest of a few points along it too, and from its ends and
+        // middle where the best so far sits on one of its ends.
+        constexpr int kSamples = 5;
+        glm::dvec2 nearest = lo;
+        double nearestDistance = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < kSamples; ++i) {
+            const glm::dvec2 uv = along(static_cast<double>(i) / (kSamples - 1));
+            const glm::dvec3 d = tree_.evaluate(region.patch, uv.x, uv.y, 0).point - p_;
+            if (glm::dot(d, d) < nearestDistance) nearestDistance = glm::dot(d, d), nearest = uv;
+        }
+        polish(nearest);
+        if (bestIn(region, lo.x, hi.x, lo.y, hi.y) && (best_.uv == lo || best_.uv == hi))
+            for (double f : {0.0, 0.5, 1.0}) polish(along(f));
     }
 
     void split(const Region& region) {
@@ -316,6 +416,8 @@ private:
         const double ub = patch.u0 + region.s1 * (patch.u1 - patch.u0);
         const double va = patch.v0 + region.t0 * (patch.v1 - patch.v0);
         const double vb = patch.v0 + region.t1 * (patch.v1 - patch.v0);
+        if (region.flat == Flat::alongV) return visitFlat(region, bound, {ua, va}, {ub, va});
+        if (region.flat == Flat::alongU) return visitFlat(region, bound, {ua, va}, {ua, vb});
         const bool holdsBest = std::isfinite(best_.distance) && bestIn(region, ua, ub, va, vb);
         const glm::dvec4* net = pool_.data() + region.net;
         detail::project(net, netSize_, points_);

@@ -414,6 +414,56 @@ TEST_CASE("closest point is exact on random mixes: degrees 1-5, any multiplicity
     CHECK(failures == 0);
 }
 
+TEST_CASE("closest point on surfaces collapsed to a curve is the curve's", "[geom][inversion][classes]") {
+    // Every row (or column) of the net one point, the weights a product a_i b_j: the surface is a
+    // curve swept along v (u) without moving, and every (u, v) over the nearest curve point is a
+    // nearest point. The search follows the curve alone; the reference is the curve's own.
+    int failures = 0;
+    for (int seed = 0; seed < 40; ++seed) {
+        std::mt19937 rng(static_cast<unsigned>(4000 + seed));
+        std::uniform_int_distribution<int> degree(1, 5);
+        std::uniform_real_distribution<double> unit(0.0, 1.0), decade(-2.0, 2.0);
+        const int p = degree(rng), q = degree(rng);
+        const std::size_t nu = static_cast<std::size_t>(p) + 2 + rng() % 5;
+        const std::size_t nv = static_cast<std::size_t>(q) + 2 + rng() % 5;
+        const bool alongV = unit(rng) < 0.5, clamped = unit(rng) < 0.7, rational = unit(rng) < 0.5;
+        const double scale = std::pow(10.0, decade(rng)), away = std::pow(10.0, 2.0 * decade(rng));
+        std::vector<double> a(nu, 1.0), b(nv, 1.0), weights;
+        if (rational)
+            for (double* w : {a.data(), b.data()})
+                for (std::size_t i = 0; i < (w == a.data() ? nu : nv); ++i)
+                    w[i] = std::pow(10.0, decade(rng));
+        const std::size_t along = alongV ? nu : nv;
+        std::vector<glm::dvec3> curvePoints;
+        for (std::size_t i = 0; i < along; ++i)
+            curvePoints.push_back(scale * glm::dvec3(away + 2.0 * unit(rng), unit(rng), unit(rng)));
+        std::vector<glm::dvec3> net;
+        for (std::size_t i = 0; i < nu; ++i)
+            for (std::size_t j = 0; j < nv; ++j) {
+                net.push_back(curvePoints[alongV ? i : j]);
+                if (rational) weights.push_back(a[i] * b[j]);
+            }
+        const std::vector<double> knotsU = anyKnots(rng, p, nu, clamped),
+                                  knotsV = anyKnots(rng, q, nv, clamped);
+        const Surface s(p, q, knotsU, knotsV, nu, nv, net, weights);
+        std::vector<double> curveWeights;
+        if (rational) curveWeights = alongV ? a : b;
+        const Curve c(alongV ? p : q, alongV ? knotsU : knotsV, curvePoints, curveWeights);
+        const SurfaceProjector projector(s);
+        for (const glm::dvec3& x : queries(rng, s, membersForBuild(60))) {
+            const SurfacePoint found = projector.closestPoint(x);
+            REQUIRE(glm::length(evaluate(s, found.uv.x, found.uv.y) - found.point) < 1e-9 * scale);
+            REQUIRE(std::abs(glm::length(found.point - x) - found.distance) < 1e-12 * scale * (1.0 + away));
+            const double reference = referenceDistance(c, x);
+            if (found.distance > reference + 1e-9 * scale) {
+                ++failures;
+                WARN("seed " << seed << ": " << found.distance << ", the curve's " << reference);
+            }
+        }
+    }
+    CHECK(failures == 0);
+}
+
 TEST_CASE("closest point beside the pole of a rational surface: on the border, and inside a fan",
           "[geom][inversion][classes]") {
     // Two testers' queries on surfaces whose first row is one point. Near the pole the distance is
