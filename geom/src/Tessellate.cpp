@@ -88,71 +88,124 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
                     evenly(surface.domainStartV(), surface.domainEndV(), segmentsV));
 }
 
+namespace {
+
+/// The parameter lines of one direction of the adaptive grid, and what the last halving changed.
+struct GridLines {
+    static constexpr std::size_t kNew = std::numeric_limits<std::size_t>::max();
+    std::vector<double> at;
+    std::vector<char> fresh;            ///< per interval: made by the last halving (all, at first)
+    std::vector<std::size_t> previous;  ///< per line: its index before the last halving, or kNew
+};
+
+GridLines firstLines(std::vector<double> at) {
+    const std::size_t n = at.size();
+    return {std::move(at), std::vector<char>(n - 1, 1), std::vector<std::size_t>(n, GridLines::kNew)};
+}
+
+/// The lines with one added in the middle of each failed interval.
+GridLines halved(const GridLines& x, const std::vector<char>& failed) {
+    GridLines out;
+    const std::size_t added = static_cast<std::size_t>(std::count(failed.begin(), failed.end(), 1));
+    out.at.reserve(x.at.size() + added);
+    for (std::size_t k = 0; k + 1 < x.at.size(); ++k) {
+        out.at.push_back(x.at[k]);
+        out.previous.push_back(k);
+        out.fresh.push_back(failed[k]);
+        if (!failed[k]) continue;
+        out.at.push_back(0.5 * (x.at[k] + x.at[k + 1]));
+        out.previous.push_back(GridLines::kNew);
+        out.fresh.push_back(1);
+    }
+    out.at.push_back(x.at.back());
+    out.previous.push_back(x.at.size() - 1);
+    return out;
+}
+
+/// The surface points of the grid: those on lines of the last grid copied from it (nv: its
+/// v line count), the others evaluated.
+std::vector<glm::dvec3> gridPoints(const BezierPatchTree& tree, const GridLines& u, const GridLines& v,
+                                   const std::vector<glm::dvec3>& last, std::size_t lastNv) {
+    const std::size_t nv = v.at.size();
+    std::vector<glm::dvec3> grid(u.at.size() * nv);
+    for (std::size_t i = 0; i < u.at.size(); ++i)
+        for (std::size_t j = 0; j < nv; ++j)
+            grid[i * nv + j] = u.previous[i] != GridLines::kNew && v.previous[j] != GridLines::kNew
+                                   ? last[u.previous[i] * lastNv + v.previous[j]]
+                                   : tree.evaluate(u.at[i], v.at[j], 0).point;
+    return grid;
+}
+
+/// The intervals between neighbouring parameter lines of a tensor grid that fail the tolerance.
+struct FailedIntervals {
+    std::vector<char> u, v;
+    bool any = false;
+};
+
+/// Measures the grid cells with a fresh interval (every other cell passed last time, or one of
+/// its intervals would have been halved) at their edge midpoints, the middle of their diagonal
+/// and their triangles' centroids, against the mesh there.
+FailedIntervals failedIntervals(const BezierPatchTree& tree, const GridLines& u, const GridLines& v,
+                                const std::vector<glm::dvec3>& grid, double tolerance) {
+    const std::vector<double>&us = u.at, &vs = v.at;
+    const std::size_t nv = vs.size();
+    FailedIntervals failed{std::vector<char>(us.size() - 1, 0), std::vector<char>(nv - 1, 0)};
+    auto off = [&](double a, double b, const glm::dvec3& mesh) {
+        return glm::length(tree.evaluate(a, b, 0).point - mesh);
+    };
+    for (std::size_t i = 0; i + 1 < us.size(); ++i)
+        for (std::size_t j = 0; j + 1 < nv; ++j) {
+            if (!u.fresh[i] && !v.fresh[j]) continue;
+            const double u0 = us[i], u1 = us[i + 1], v0 = vs[j], v1 = vs[j + 1];
+            const double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
+            const glm::dvec3& p00 = grid[i * nv + j];
+            const glm::dvec3& p10 = grid[(i + 1) * nv + j];
+            const glm::dvec3& p11 = grid[(i + 1) * nv + j + 1];
+            const glm::dvec3& p01 = grid[i * nv + j + 1];
+            // The far edges belong to the neighbouring cells, except on the domain's border.
+            double eu = off(um, v0, 0.5 * (p00 + p10)), ev = off(u0, vm, 0.5 * (p00 + p01));
+            if (j + 2 == nv) eu = std::max(eu, off(um, v1, 0.5 * (p01 + p11)));
+            if (i + 2 == us.size()) ev = std::max(ev, off(u1, vm, 0.5 * (p10 + p11)));
+            // The cell is split along p00-p11.
+            const double inside =
+                std::max({off(um, vm, 0.5 * (p00 + p11)),
+                          off((2.0 * u1 + u0) / 3.0, (v1 + 2.0 * v0) / 3.0, (p00 + p10 + p11) / 3.0),
+                          off((u1 + 2.0 * u0) / 3.0, (2.0 * v1 + v0) / 3.0, (p00 + p11 + p01) / 3.0)});
+            if (eu > tolerance) failed.u[i] = 1;
+            if (ev > tolerance) failed.v[j] = 1;
+            if (inside > tolerance && eu <= tolerance && ev <= tolerance) failed.u[i] = failed.v[j] = 1;
+            failed.any = failed.any || eu > tolerance || ev > tolerance || inside > tolerance;
+        }
+    return failed;
+}
+
+}  // namespace
+
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
     checkTolerance(tolerance, "tessellateAdaptive");
     validate(surface, "tessellateAdaptive");
     const BezierPatchTree tree(surface);
-    const std::vector<double>& breaksU = tree.breaksU();
-    const std::vector<double>& breaksV = tree.breaksV();
     // Start from the degree (a degree-p span needs about p chords to show its shape at all).
-    std::vector<int> countsU(breaksU.size() - 1, std::max(1, std::min(surface.degreeU, 8)));
-    std::vector<int> countsV(breaksV.size() - 1, std::max(1, std::min(surface.degreeV, 8)));
-    if (surface.degreeU == 1) std::fill(countsU.begin(), countsU.end(), 1);
-    if (surface.degreeV == 1) std::fill(countsV.begin(), countsV.end(), 1);
-
+    auto start = [](const std::vector<double>& breaks, int degree) {
+        return firstLines(
+            lines(breaks, std::vector<int>(breaks.size() - 1, degree == 1 ? 1 : std::min(degree, 8))));
+    };
+    GridLines u = start(tree.breaksU(), surface.degreeU), v = start(tree.breaksV(), surface.degreeV);
+    std::vector<glm::dvec3> grid;
+    std::size_t lastNv = 0;
+    // Only the intervals that fail are halved: small weights squeeze much of a patch's shape into
+    // a sliver of its parameters, which lines spread over whole spans would need millions of
+    // vertices to reach.
     for (int round = 0; round < 40; ++round) {
-        const std::vector<double> us = lines(breaksU, countsU);
-        const std::vector<double> vs = lines(breaksV, countsV);
-        if (us.size() * vs.size() > kMaxVertices)
+        if (u.at.size() * v.at.size() > kMaxVertices)
             throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
                                 " needs more than " + std::to_string(kMaxVertices) + " vertices");
-        const std::size_t nv = vs.size();
-        std::vector<glm::dvec3> grid(us.size() * nv);
-        for (std::size_t i = 0; i < us.size(); ++i)
-            for (std::size_t j = 0; j < nv; ++j) grid[i * nv + j] = tree.evaluate(us[i], vs[j], 0).point;
-        // Which intervals of which span need splitting, measured at edge midpoints and centres.
-        std::vector<char> splitU(us.size() - 1, 0), splitV(nv - 1, 0);
-        bool any = false;
-        for (std::size_t i = 0; i + 1 < us.size(); ++i)
-            for (std::size_t j = 0; j + 1 < nv; ++j) {
-                const double um = 0.5 * (us[i] + us[i + 1]), vm = 0.5 * (vs[j] + vs[j + 1]);
-                const glm::dvec3& p00 = grid[i * nv + j];
-                const glm::dvec3& p10 = grid[(i + 1) * nv + j];
-                const glm::dvec3& p11 = grid[(i + 1) * nv + j + 1];
-                const glm::dvec3& p01 = grid[i * nv + j + 1];
-                const double errU = glm::length(tree.evaluate(um, vs[j], 0).point - 0.5 * (p00 + p10));
-                const double errV = glm::length(tree.evaluate(us[i], vm, 0).point - 0.5 * (p00 + p01));
-                const double errD = glm::length(tree.evaluate(um, vm, 0).point - 0.5 * (p00 + p11));
-                // The far edges belong to the neighbouring cells, except on the domain's border.
-                double errU2 = 0.0, errV2 = 0.0;
-                if (j + 2 == nv)
-                    errU2 = glm::length(tree.evaluate(um, vs[j + 1], 0).point - 0.5 * (p01 + p11));
-                if (i + 2 == us.size())
-                    errV2 = glm::length(tree.evaluate(us[i + 1], vm, 0).point - 0.5 * (p10 + p11));
-                const double eu = std::max(errU, errU2), ev = std::max(errV, errV2);
-                if (eu > tolerance) splitU[i] = 1;
-                if (ev > tolerance) splitV[j] = 1;
-                if (errD > tolerance && eu <= tolerance && ev <= tolerance) splitU[i] = splitV[j] = 1;
-                any = any || eu > tolerance || ev > tolerance || errD > tolerance;
-            }
-        if (!any) return gridMesh(surface, tree, us, vs);
-        // Double the count of every span holding an interval that failed.
-        auto grow = [](const std::vector<double>& breaks, const std::vector<double>& x,
-                       const std::vector<char>& split, std::vector<int>& counts) {
-            std::vector<char> spanFailed(counts.size(), 0);
-            for (std::size_t k = 0; k < split.size(); ++k) {
-                if (!split[k]) continue;
-                const double mid = 0.5 * (x[k] + x[k + 1]);
-                const auto span = static_cast<std::size_t>(
-                                      std::upper_bound(breaks.begin(), breaks.end(), mid) - breaks.begin()) -
-                                  1;
-                spanFailed[std::min(span, counts.size() - 1)] = 1;
-            }
-            for (std::size_t k = 0; k < counts.size(); ++k)
-                if (spanFailed[k]) counts[k] *= 2;
-        };
-        grow(breaksU, us, splitU, countsU);
-        grow(breaksV, vs, splitV, countsV);
+        grid = gridPoints(tree, u, v, grid, lastNv);
+        lastNv = v.at.size();
+        const FailedIntervals failed = failedIntervals(tree, u, v, grid, tolerance);
+        if (!failed.any) return gridMesh(surface, tree, u.at, v.at);
+        u = halved(u, failed.u);
+        v = halved(v, failed.v);
     }
     throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
                         " was not reached after 40 refinements");

@@ -23,11 +23,11 @@ struct SurfaceMesh {
 /// (i, j) is at index i * (segmentsV + 1) + j.
 SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segmentsV);
 
-/// A mesh whose distance from the surface stays within tolerance: a tensor grid whose
-/// parameter lines are refined, span by span, until the surface point at every triangle edge
-/// midpoint and centre lies within tolerance of the mesh point at the same (u, v). Every
-/// parameter line runs through the whole surface, so neighbouring Bézier pieces share their
-/// edge vertices and the mesh has no cracks or T-junctions.
+/// A mesh whose distance from the surface stays within tolerance: a tensor grid each of whose
+/// intervals between neighbouring parameter lines is halved while a cell over it misses, until
+/// the surface point at every edge midpoint and triangle centroid lies within tolerance of the
+/// mesh point at the same (u, v). Every parameter line runs through the whole surface, so
+/// neighbouring Bézier pieces share their edge vertices and the mesh has no cracks or T-junctions.
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
 
 /// A polyline through the curve whose chords stay within tolerance of it, from the domain start
