@@ -307,6 +307,27 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
     return out;
 }
 
+namespace {
+
+/// The normal on a collapsed edge (a pole row): next to an edge where Su vanishes, Su(u, v + h)
+/// = h Suv + O(h^2), so the normals tend to Suv x Sv, taken towards the inside of the domain
+/// (dirV), exactly rather than by stepping inside; likewise Su x Suv where Sv vanishes. Zero
+/// where neither derivative vanishes against the other, or the limit does not decide either.
+glm::dvec3 collapsedEdgeNormal(const Surface& surface, double u, double v, double dirU, double dirV) {
+    const SurfaceDerivatives d = derivatives(surface, u, v, 2);
+    const glm::dvec3 su = unitScaled(d.at(1, 0)), sv = unitScaled(d.at(0, 1)), suv = d.at(1, 1);
+    glm::dvec3 a(0.0), b(0.0);
+    if (glm::length(d.at(1, 0)) <= 1e-12 * glm::length(d.at(0, 1)))
+        a = dirV * unitScaled(suv), b = sv;
+    else if (glm::length(d.at(0, 1)) <= 1e-12 * glm::length(d.at(1, 0)))
+        a = su, b = dirU * unitScaled(suv);
+    const glm::dvec3 m = glm::cross(a, b);
+    const double ml = glm::length(m);
+    return ml > 1e-8 * glm::length(a) * glm::length(b) && std::isfinite(ml) ? m / ml : glm::dvec3(0.0);
+}
+
+}  // namespace
+
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
     // |n| > 1e-12 |a| |b|, compared squared: one square root a point instead of three. Where the
@@ -325,12 +346,13 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
     v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), "normalFromDerivatives",
                                  "v");
 
-    // Degenerate point: step towards the inside of the domain along the diagonal and take the
-    // limit of the normals there (they converge on a collapsed edge or at a pole).
     const double u0 = surface.domainStartU(), u1 = surface.domainEndU();
     const double v0 = surface.domainStartV(), v1 = surface.domainEndV();
     const double dirU = (u - u0) <= (u1 - u) ? 1.0 : -1.0;
     const double dirV = (v - v0) <= (v1 - v) ? 1.0 : -1.0;
+    if (const glm::dvec3 n = collapsedEdgeNormal(surface, u, v, dirU, dirV); n != glm::dvec3(0.0)) return n;
+    // Elsewhere: step towards the inside of the domain along the diagonal and take the limit of
+    // the normals there.
     for (double t = 1e-7; t <= 1e-3; t *= 10.0) {
         const double uu = clampTo(u + dirU * t * (u1 - u0), u0, u1);
         const double vv = clampTo(v + dirV * t * (v1 - v0), v0, v1);
