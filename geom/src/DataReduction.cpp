@@ -3,6 +3,7 @@
 #include "KeptVector.h"
 #include "RemovalDetail.h"
 #include "geom/Basis.h"
+#include "geom/BoundingBox.h"
 #include "geom/Evaluate.h"
 #include "geom/FreeKnotFit.h"
 #include "geom/GeometryError.h"
@@ -741,8 +742,12 @@ Surface transposed(const Surface& s) {
     t.countU = s.countV;
     t.countV = s.countU;
     t.points.resize(s.points.size());
+    t.weights.resize(s.weights.size());
     for (std::size_t i = 0; i < s.countU; ++i)
-        for (std::size_t j = 0; j < s.countV; ++j) t.points[j * s.countU + i] = s.points[i * s.countV + j];
+        for (std::size_t j = 0; j < s.countV; ++j) {
+            t.points[j * s.countU + i] = s.points[i * s.countV + j];
+            if (s.rational()) t.weights[j * s.countU + i] = s.weights[i * s.countV + j];
+        }
     return t;
 }
 
@@ -840,11 +845,81 @@ struct SurfaceGrid {
         }
         return true;
     }
+
+    // within() for a rational surface in homogeneous form: points[i * 2 countV + 2 j] = w P and
+    // points[i * 2 countV + 2 j + 1] = (w, 0, 0); the weight must stay positive at every vertex.
+    bool withinRational(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
+                        std::size_t countV, double from, double to, double tolerance) const {
+        const std::size_t countU = points.size() / (2 * countV);
+        const std::size_t p = static_cast<std::size_t>(degreeU);
+        const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
+        std::vector<double> nu(p + 1);
+        std::vector<glm::dvec4> column(countV);
+        const auto first = std::lower_bound(gridU.begin(), gridU.end(), from);
+        const auto last = std::upper_bound(gridU.begin(), gridU.end(), to);
+        for (auto it = first; it != last; ++it) {
+            const std::size_t i = static_cast<std::size_t>(it - gridU.begin());
+            const std::size_t span = findSpan(degreeU, knotsU, countU, *it);
+            basisFunctions(span, *it, degreeU, knotsU, nu);
+            for (std::size_t j = 0; j < countV; ++j) {
+                glm::dvec4 c(0.0);
+                for (std::size_t k = 0; k <= p; ++k) {
+                    const std::size_t at = (span - p + k) * 2 * countV + 2 * j;
+                    c += nu[k] * glm::dvec4(points[at], points[at + 1].x);
+                }
+                column[j] = c;
+            }
+            for (std::size_t k = 0; k < gridV.size(); ++k) {
+                glm::dvec4 sv(0.0);
+                const std::size_t base = spanV[k] - static_cast<std::size_t>(degreeV);
+                for (std::size_t l = 0; l < wv; ++l) sv += basisV[k * wv + l] * column[base + l];
+                if (!(sv.w > 0.0) ||
+                    glm::length(glm::dvec3(sv) / sv.w - values[i * gridV.size() + k]) > tolerance)
+                    return false;
+            }
+        }
+        return true;
+    }
 };
+
+// One pass along u of a rational `current`: the loop on the homogeneous rows (w P and (w, 0, 0)
+// per column, sharing the knots), a removal kept only where every weight it changed stays
+// positive and the Euclidean surface keeps the tolerance on the grid.
+std::size_t reduceRationalSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o,
+                                        double acceptance, std::size_t& fits) {
+    const std::size_t nv = current.countV;
+    Spline s{current.degreeU, current.knotsU, std::vector<glm::dvec3>(2 * current.points.size()), 2 * nv};
+    for (std::size_t k = 0; k < current.points.size(); ++k) {
+        s.points[2 * k] = current.weights[k] * current.points[k];
+        s.points[2 * k + 1] = glm::dvec3(current.weights[k], 0.0, 0.0);
+    }
+    grid.prepareAcross(current);
+    const bool measuring = std::isfinite(o.tolerance);
+    const std::size_t removed = reduceLoop(
+        s, o, fits,
+        [&](const LeastSquaresRemoval& fit) {
+            for (std::size_t i = fit.firstChanged; i <= fit.lastChanged; ++i)
+                for (std::size_t j = 0; j < nv; ++j)
+                    if (!(fit.points[i * 2 * nv + 2 * j + 1].x > 0.0)) return false;
+            return !measuring || grid.withinRational(s.degree, fit.knots, fit.points, nv, fit.changedFrom,
+                                                     fit.changedTo, acceptance);
+        },
+        [](double, double) { return 0.0; });
+    current.knotsU = std::move(s.knots);
+    current.countU = s.points.size() / (2 * nv);
+    current.points.resize(current.countU * nv);
+    current.weights.resize(current.countU * nv);
+    for (std::size_t k = 0; k < current.points.size(); ++k) {
+        current.weights[k] = s.points[2 * k + 1].x;
+        current.points[k] = s.points[2 * k] / current.weights[k];
+    }
+    return removed;
+}
 
 // One pass along u of `current` (the original seen in the same orientation is `grid`).
 std::size_t reduceSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o,
                                 double acceptance, std::size_t& fits) {
+    if (current.rational()) return reduceRationalSurfaceAlongU(current, grid, o, acceptance, fits);
     Spline s{current.degreeU, current.knotsU, current.points, current.countV};
     grid.prepareAcross(current);
     const bool measuring = std::isfinite(o.tolerance);
@@ -2198,18 +2273,9 @@ SurfaceReduction reduceClampedSurface(const Surface& surface, ReductionDirection
     return out;
 }
 
-}  // namespace
-
-SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
-                               const ReductionOptions& options) {
-    checkOptions(options, "reduceSurface");
-    validate(surface, "reduceSurface");
-    if (surface.rational())
-        throw GeometryError("reduceSurface: rational surfaces are not supported (polynomial only)");
-    if (direction != ReductionDirection::U && direction != ReductionDirection::V &&
-        direction != ReductionDirection::Both)
-        throw GeometryError("reduceSurface: direction " + std::to_string(static_cast<int>(direction)) +
-                            " is not U, V or Both");
+// A checked surface, clamped or not.
+SurfaceReduction reduceAnySurface(const Surface& surface, ReductionDirection direction,
+                                  const ReductionOptions& options) {
     // As for curves: unclamped edges (a periodic direction's seam too) are reduced on the clamped
     // form, the same surface, whose edge curves knot removal keeps, so a closed seam stays closed.
     if (!hasClampedEnds(surface.knotsU, surface.degreeU, surface.countU) ||
@@ -2229,6 +2295,38 @@ SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direct
         return r;
     }
     return reduceClampedSurface(surface, direction, options);
+}
+
+// A rational surface, centred on its control box and with its largest weight 1 (neither changes
+// the surface): the homogeneous rows' removal weights are then on the scale of the Euclidean
+// error, which the ranking's weight cutoff compares with the tolerance.
+SurfaceReduction reduceRationalSurface(const Surface& surface, ReductionDirection direction,
+                                       const ReductionOptions& options) {
+    BoundingBox box;
+    for (const glm::dvec3& q : surface.points) box.add(q);
+    const glm::dvec3 centre = box.center();
+    const double largest = *std::max_element(surface.weights.begin(), surface.weights.end());
+    Surface centred = surface;
+    for (glm::dvec3& q : centred.points) q -= centre;
+    for (double& w : centred.weights) w /= largest;
+    SurfaceReduction r = reduceAnySurface(centred, direction, options);
+    for (glm::dvec3& q : r.surface.points) q += centre;
+    for (double& w : r.surface.weights) w *= largest;
+    return r;
+}
+
+}  // namespace
+
+SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
+                               const ReductionOptions& options) {
+    checkOptions(options, "reduceSurface");
+    validate(surface, "reduceSurface");
+    if (direction != ReductionDirection::U && direction != ReductionDirection::V &&
+        direction != ReductionDirection::Both)
+        throw GeometryError("reduceSurface: direction " + std::to_string(static_cast<int>(direction)) +
+                            " is not U, V or Both");
+    return surface.rational() ? reduceRationalSurface(surface, direction, options)
+                              : reduceAnySurface(surface, direction, options);
 }
 
 }  // namespace geom

@@ -329,7 +329,7 @@ TEST_CASE("rational curves reduce in homogeneous space within the Euclidean tole
     CHECK(reduceCurve(refined, count).removed == 3);
 }
 
-TEST_CASE("reduction rejects rational surfaces and bad options", "[geom][knots][reduction]") {
+TEST_CASE("reduction rejects bad options", "[geom][knots][reduction]") {
     std::mt19937 rng(35);
     ReductionOptions o;
     o.tolerance = 1e-3;
@@ -344,7 +344,9 @@ TEST_CASE("reduction rejects rational surfaces and bad options", "[geom][knots][
     bad.samplesPerSpan = 0;
     REQUIRE_THROWS_WITH(reduceCurve(c, bad), Catch::Contains("samplesPerSpan"));
     const Surface rs = geomtest::randomSurface(rng, 2, 2, 5, 5, true, true);
-    REQUIRE_THROWS_WITH(reduceSurface(rs, ReductionDirection::Both, o), Catch::Contains("rational"));
+    bad = o;
+    bad.tolerance = -1.0;
+    REQUIRE_THROWS_WITH(reduceSurface(rs, ReductionDirection::Both, bad), Catch::Contains("tolerance"));
 }
 
 TEST_CASE("surface reduction keeps the measured distance within the tolerance, degrees 2 to 5",
@@ -572,6 +574,69 @@ TEST_CASE("a surface made by inserting knot rows reduces back to the simpler sur
         for (std::size_t k = 0; k < base.points.size(); ++k)
             REQUIRE(glm::length(r.surface.points[k] - base.points[k]) < 1e-9);
         REQUIRE(r.deviation.maxError <= o.tolerance);
+    }
+}
+
+/// A rational surface of degrees p x q with weights over two decades, moved `away` from the origin.
+Surface rationalBase(std::mt19937& rng, int p, int q, double away) {
+    Surface base = geomtest::bumpySurface(rng, p, q, static_cast<std::size_t>(p + 3),
+                                          static_cast<std::size_t>(q + 3), true);
+    std::uniform_real_distribution<double> decade(-1.0, 1.0);
+    for (double& w : base.weights) w = std::pow(10.0, decade(rng));
+    for (glm::dvec3& q3 : base.points) q3 += glm::dvec3(away, -away, 0.5 * away);
+    return base;
+}
+
+TEST_CASE("a rational surface made by inserting knot rows reduces back to the simpler surface",
+          "[geom][knots][reduction]") {
+    // In homogeneous form every removal is exact: the result is the simpler surface itself,
+    // wherever it lies and whatever its weights.
+    std::mt19937 rng(65);
+    for (int p = 1; p <= 4; ++p) {
+        const Surface base = rationalBase(rng, p, 5 - p, p % 2 == 0 ? 1e3 : 0.0);
+        std::uniform_real_distribution<double> unit(0.05, 0.95);
+        std::vector<double> iu, iv;
+        for (int i = 0; i < 6; ++i) iu.push_back(unit(rng)), iv.push_back(unit(rng));
+        const Surface refined = refineKnotsV(refineKnotsU(base, iu), iv);
+        ReductionOptions o;
+        o.tolerance = 1e-7;
+        const SurfaceReduction r = reduceSurface(refined, ReductionDirection::Both, o);
+        INFO("degree " << p);
+        REQUIRE(r.removedU == iu.size());
+        REQUIRE(r.removedV == iv.size());
+        REQUIRE(r.surface.knotsU == base.knotsU);
+        REQUIRE(r.surface.knotsV == base.knotsV);
+        for (double u : {0.0, 0.13, 0.5, 0.77, 1.0})
+            for (double v : {0.0, 0.29, 0.61, 1.0})
+                REQUIRE(glm::length(evaluate(r.surface, u, v) - evaluate(base, u, v)) < 1e-7);
+        REQUIRE(r.deviation.maxError <= o.tolerance);
+    }
+}
+
+TEST_CASE("rational surface reduction keeps the measured distance within the tolerance",
+          "[geom][knots][reduction]") {
+    std::mt19937 rng(66);
+    const int degrees[][2] = {{2, 3}, {3, 3}, {4, 2}, {1, 3}};
+    for (const auto& d : degrees) {
+        const Surface base = rationalBase(rng, d[0], d[1], d[0] == 3 ? 1e3 : 0.0);
+        std::uniform_real_distribution<double> unit(0.02, 0.98), jitter(-2e-5, 2e-5);
+        std::vector<double> iu, iv;
+        for (int i = 0; i < 10; ++i) iu.push_back(unit(rng)), iv.push_back(unit(rng));
+        Surface s = refineKnotsV(refineKnotsU(base, iu), iv);
+        for (glm::dvec3& q : s.points) q += glm::dvec3(jitter(rng), jitter(rng), jitter(rng));
+        for (ReductionDirection dir : {ReductionDirection::U, ReductionDirection::Both}) {
+            ReductionOptions o;
+            o.tolerance = 1e-3;
+            const SurfaceReduction r = reduceSurface(s, dir, o);
+            INFO("degrees " << d[0] << "," << d[1] << " direction " << static_cast<int>(dir));
+            REQUIRE(r.surface.rational());
+            REQUIRE(r.surface.countU == s.countU - r.removedU);
+            REQUIRE(r.surface.countV == s.countV - r.removedV);
+            REQUIRE(r.removedU >= 5);
+            if (dir == ReductionDirection::Both) REQUIRE(r.removedV >= 5);
+            REQUIRE(r.deviation.maxError <= o.tolerance);
+            REQUIRE(measureDeviation(s, r.surface, 6).maxError <= o.tolerance * 1.001);
+        }
     }
 }
 

@@ -106,14 +106,15 @@ struct SurfaceReduction {
     SurfaceDeviation deviation;  ///< measureDeviation(original, surface) when options.report
 };
 
-/// Data reduction of a polynomial surface by whole knot rows: a row's weight is the largest
-/// weight over the isoparametric curves of the control net (not the thesis's mean), every
-/// isoparametric curve gets its own least-squares fit on the same window, and a removal is kept
-/// only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter grid of the
-/// original in the changed strip (this bounds the distance between the surfaces from above).
-/// The final measurement (measureDeviation) checks the result; should it find the tolerance
-/// broken, the reduction runs again with less of the tolerance for the grid. Throws
-/// GeometryError for a rational surface or bad options.
+/// Data reduction of a surface by whole knot rows (a rational one in homogeneous form, w P and
+/// w, every weight kept positive and the grid measured on the Euclidean surface): a row's weight
+/// is the largest weight over the isoparametric curves of the control net (not the thesis's
+/// mean), every isoparametric curve gets its own least-squares fit on the same window, and a
+/// removal is kept only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter
+/// grid of the original in the changed strip (this bounds the distance between the surfaces
+/// from above). The final measurement (measureDeviation) checks the result; should it find the
+/// tolerance broken, the reduction runs again with less of the tolerance for the grid. Throws
+/// GeometryError for bad options.
 SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
                                const ReductionOptions& options);
 
