@@ -820,41 +820,36 @@ struct SurfaceGrid {
     bool within(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
                 std::size_t countV, double from, double to, double tolerance) const {
         if (coefficientsWithin(degreeU, knotsU, points, countV, from, to, tolerance)) return true;
-        const std::size_t countU = points.size() / countV;
-        const std::size_t p = static_cast<std::size_t>(degreeU);
-        const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
-        std::vector<double> nu(p + 1);
-        std::vector<glm::dvec3> column(countV);
-        const auto first = std::lower_bound(gridU.begin(), gridU.end(), from);
-        const auto last = std::upper_bound(gridU.begin(), gridU.end(), to);
-        for (auto it = first; it != last; ++it) {
-            const std::size_t i = static_cast<std::size_t>(it - gridU.begin());
-            const std::size_t span = findSpan(degreeU, knotsU, countU, *it);
-            basisFunctions(span, *it, degreeU, knotsU, nu);
-            for (std::size_t j = 0; j < countV; ++j) {
-                glm::dvec3 c(0.0);
-                for (std::size_t k = 0; k <= p; ++k) c += nu[k] * points[(span - p + k) * countV + j];
-                column[j] = c;
-            }
-            for (std::size_t k = 0; k < gridV.size(); ++k) {
-                glm::dvec3 sv(0.0);
-                const std::size_t base = spanV[k] - static_cast<std::size_t>(degreeV);
-                for (std::size_t l = 0; l < wv; ++l) sv += basisV[k * wv + l] * column[base + l];
-                if (glm::length(sv - values[i * gridV.size() + k]) > tolerance) return false;
-            }
-        }
-        return true;
+        return everyVertex<glm::dvec3>(
+            degreeU, knotsU, points.size() / countV, countV, from, to,
+            [&](std::size_t row, std::size_t j) { return points[row * countV + j]; },
+            [&](std::size_t at, const glm::dvec3& s) { return glm::length(s - values[at]) <= tolerance; });
     }
 
     // within() for a rational surface in homogeneous form: points[i * 2 countV + 2 j] = w P and
     // points[i * 2 countV + 2 j + 1] = (w, 0, 0); the weight must stay positive at every vertex.
     bool withinRational(int degreeU, const std::vector<double>& knotsU, const std::vector<glm::dvec3>& points,
                         std::size_t countV, double from, double to, double tolerance) const {
-        const std::size_t countU = points.size() / (2 * countV);
+        return everyVertex<glm::dvec4>(
+            degreeU, knotsU, points.size() / (2 * countV), countV, from, to,
+            [&](std::size_t row, std::size_t j) {
+                const std::size_t at = (row * countV + j) * 2;
+                return glm::dvec4(points[at], points[at + 1].x);
+            },
+            [&](std::size_t at, const glm::dvec4& h) {
+                return h.w > 0.0 && glm::length(glm::dvec3(h) / h.w - values[at]) <= tolerance;
+            });
+    }
+
+    // Whether check(vertex index, S'(u, v)) holds at every grid vertex with u in [from, to], the
+    // reduced spline's coefficient (row, j) being coefficient(row, j), of type T.
+    template <class T, class Coefficient, class Check>
+    bool everyVertex(int degreeU, const std::vector<double>& knotsU, std::size_t countU, std::size_t countV,
+                     double from, double to, Coefficient&& coefficient, Check&& check) const {
         const std::size_t p = static_cast<std::size_t>(degreeU);
         const std::size_t wv = static_cast<std::size_t>(degreeV) + 1;
         std::vector<double> nu(p + 1);
-        std::vector<glm::dvec4> column(countV);
+        std::vector<T> column(countV);
         const auto first = std::lower_bound(gridU.begin(), gridU.end(), from);
         const auto last = std::upper_bound(gridU.begin(), gridU.end(), to);
         for (auto it = first; it != last; ++it) {
@@ -862,20 +857,15 @@ struct SurfaceGrid {
             const std::size_t span = findSpan(degreeU, knotsU, countU, *it);
             basisFunctions(span, *it, degreeU, knotsU, nu);
             for (std::size_t j = 0; j < countV; ++j) {
-                glm::dvec4 c(0.0);
-                for (std::size_t k = 0; k <= p; ++k) {
-                    const std::size_t at = (span - p + k) * 2 * countV + 2 * j;
-                    c += nu[k] * glm::dvec4(points[at], points[at + 1].x);
-                }
+                T c(0.0);
+                for (std::size_t k = 0; k <= p; ++k) c += nu[k] * coefficient(span - p + k, j);
                 column[j] = c;
             }
             for (std::size_t k = 0; k < gridV.size(); ++k) {
-                glm::dvec4 sv(0.0);
+                T sv(0.0);
                 const std::size_t base = spanV[k] - static_cast<std::size_t>(degreeV);
                 for (std::size_t l = 0; l < wv; ++l) sv += basisV[k * wv + l] * column[base + l];
-                if (!(sv.w > 0.0) ||
-                    glm::length(glm::dvec3(sv) / sv.w - values[i * gridV.size() + k]) > tolerance)
-                    return false;
+                if (!check(i * gridV.size() + k, sv)) return false;
             }
         }
         return true;
