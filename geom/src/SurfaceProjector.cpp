@@ -368,29 +368,66 @@ private:
             for (double f : {0.0, 0.5, 1.0}) polish(along(f));
     }
 
+    /// Whether row i (alongV: column i) of the region's net is one point (points_ holds them).
+    bool collapsedLine(std::size_t i, bool alongV) const {
+        const std::size_t count = alongV ? pu_ : qv_;
+        const glm::dvec3& first = alongV ? points_[i] : points_[i * qv_];
+        // Points a collapsed row became under subdivision differ by the rounding of coordinates.
+        const double allowed =
+            tolerance_ + 64.0 * std::numeric_limits<double>::epsilon() *
+                             std::max({std::abs(first.x), std::abs(first.y), std::abs(first.z)});
+        for (std::size_t k = 1; k < count; ++k)
+            if (glm::distance(alongV ? points_[k * qv_ + i] : points_[i * qv_ + k], first) > allowed)
+                return false;
+        return true;
+    }
+
+    /// Whether a region is best halved across a pole in its first or last row (alongV: column) alone:
+    /// where the pole is farther than the best so far by more than 1e-3 of the region's size, a few
+    /// such halvings bring the bound of the part that touches it past the best. Nearer, the best
+    /// may lie just beside the pole, and the region is halved both ways.
+    bool acrossPole(bool alongV) const {
+        const std::size_t last = alongV ? qv_ - 1 : pu_ - 1;
+        const bool first = collapsedLine(0, alongV);
+        if (!first && !collapsedLine(last, alongV)) return false;
+        const glm::dvec3& pole = points_[first ? 0 : (alongV ? last : last * qv_)];
+        BoundingBox box;
+        for (const glm::dvec3& q : points_) box.add(q);
+        return glm::distance(pole, p_) - best_.distance > 1e-3 * box.diagonal();
+    }
+
+    /// Halves a region (points_ holds its net's points) into four, or into two across a pole: a
+    /// region whose first or last row is one point is halved in u only (a column: in v only).
+    /// Halving it along the pole too would double the regions touching the pole at every level,
+    /// none of which a bound settles before it is smaller than the pole's distance from the best.
     void split(const Region& region) {
         ++splits_;
-        // Four quarter nets: halve along u into the pool, then each half along v.
+        const bool poleRow = acrossPole(false), poleColumn = acrossPole(true);
+        const bool halveU = poleRow || !poleColumn, halveV = poleColumn || !poleRow;
+        // The halves along u into the pool, then each along v (or the region's net along v).
         const std::size_t base = pool_.size();
-        pool_.resize(base + 6 * netSize_);
-        glm::dvec4* lowU = pool_.data() + base;
-        glm::dvec4* highU = lowU + netSize_;
+        pool_.resize(base + (halveU && halveV ? 6 : 2) * netSize_);
+        glm::dvec4* const lowU = pool_.data() + base;
         const glm::dvec4* net = pool_.data() + region.net;
-        for (std::size_t j = 0; j < qv_; ++j)
-            detail::halveLine(net + j, qv_, pu_, lowU + j, highU + j, work_);
-        glm::dvec4* quarters = highU + netSize_;
-        for (std::size_t h = 0; h < 2; ++h)
-            for (std::size_t i = 0; i < pu_; ++i)
-                detail::halveLine(lowU + h * netSize_ + i * qv_, 1, qv_,
-                                  quarters + (2 * h) * netSize_ + i * qv_,
-                                  quarters + (2 * h + 1) * netSize_ + i * qv_, work_);
+        if (halveU)
+            for (std::size_t j = 0; j < qv_; ++j)
+                detail::halveLine(net + j, qv_, pu_, lowU + j, lowU + netSize_ + j, work_);
+        const std::size_t halves = halveU ? 2 : 1;
+        glm::dvec4* const quarters = halveU ? lowU + 2 * netSize_ : lowU;
+        if (halveV)
+            for (std::size_t h = 0; h < halves; ++h)
+                for (std::size_t i = 0; i < pu_; ++i)
+                    detail::halveLine((halveU ? lowU + h * netSize_ : net) + i * qv_, 1, qv_,
+                                      quarters + (2 * h) * netSize_ + i * qv_,
+                                      quarters + (2 * h + 1) * netSize_ + i * qv_, work_);
         const double sm = 0.5 * (region.s0 + region.s1), tm = 0.5 * (region.t0 + region.t1);
-        for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t children = halveU && halveV ? 4 : 2;
+        for (std::size_t k = 0; k < children; ++k) {
             Region child = region;
             child.depth = region.depth + 1;
-            child.net = base + (2 + k) * netSize_;
-            (k < 2 ? child.s1 : child.s0) = sm;
-            (k % 2 == 0 ? child.t1 : child.t0) = tm;
+            child.net = base + (children == 4 ? 2 + k : k) * netSize_;
+            if (halveU) (k < children / 2 ? child.s1 : child.s0) = sm;
+            if (halveV) (k % 2 == 0 ? child.t1 : child.t0) = tm;
             detail::project(pool_.data() + child.net, netSize_, points_);
             const double bound = detail::lowerBound(points_, p_, toward());
             if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
