@@ -28,6 +28,7 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
     BezierPatchTree::PatchPoint e = eval(uv.x, uv.y);
     glm::dvec3 r = e.point - p;
     double f = glm::dot(r, r);
+    int stalls = 0;
     for (int it = 0; it < 60; ++it) {
         const double gu = glm::dot(e.su, r), gv = glm::dot(e.sv, r);
         double huu = glm::dot(e.su, e.su) + glm::dot(e.suu, r);
@@ -39,7 +40,9 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
         const double trace = std::abs(huu) + std::abs(hvv) + 1e-300;
         if (!holdU && !holdV) {
             double det = huu * hvv - huv * huv;
-            if (!(huu > 0.0 && det > 1e-14 * trace * trace)) {
+            // Positive definite by the scaled Hessian (unit diagonal): next to a pole hvv is as small as
+            // the squared distance to it, and a test against the trace would shift away the step in v.
+            if (!(huu > 0.0 && hvv > 0.0 && det > 1e-14 * huu * hvv)) {
                 // Shift by more than the most negative eigenvalue.
                 const double mean = 0.5 * (huu + hvv);
                 const double rad = std::sqrt(0.25 * (huu - hvv) * (huu - hvv) + huv * huv);
@@ -58,6 +61,7 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
         // Near the answer the full Newton step is taken even when rounding hides the decrease
         // of f; further away a backtracking search keeps f from growing.
         const bool small = std::abs(du) < 1e-6 * (ub - ua) && std::abs(dv) < 1e-6 * (vb - va);
+        const double before = f;
         double step = 1.0;
         bool moved = false;
         for (int k = 0; k < 40; ++k, step *= 0.5) {
@@ -80,7 +84,11 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
             if (small) break;
         }
         const bool converged = std::abs(du) < 1e-13 * (ub - ua) && std::abs(dv) < 1e-13 * (vb - va);
-        if (!moved || converged) break;
+        // Three steps in a row that lowered the squared distance by less than 1e-14 of it end the
+        // search too: along a nearly flat valley Newton creeps on for every iteration it has, while
+        // next to a minimum two such steps bring (u, v) in.
+        stalls = before - f <= 1e-14 * before ? stalls + 1 : 0;
+        if (!moved || converged || stalls == 3) break;
     }
     SurfacePoint out;
     out.uv = uv;
