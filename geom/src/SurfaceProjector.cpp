@@ -299,15 +299,20 @@ private:
                                        best_.distance - tolerance_);
     }
 
-    /// Whether a patch's net is flat along v or u: within the search's tolerance of its edge curve,
-    /// allowing for the rounding of points as far from the origin as its own (the points a
-    /// collapsed row became under knot insertion differ by that much).
+    /// How far apart the points of a collapsed row or column may lie, their coordinates up to
+    /// `magnitude`: the search's tolerance, and the rounding by which the points a collapsed row
+    /// became under knot insertion and subdivision differ.
+    double collapseTolerance(double magnitude) const {
+        return tolerance_ + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+    }
+
+    /// Whether a patch's net is flat along v or u: within collapseTolerance of its edge curve.
     Flat flatness(const glm::dvec4* net) const {
         detail::project(net, netSize_, points_);
         double magnitude = 0.0;
         for (const glm::dvec3& q : points_)
             magnitude = std::max({magnitude, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
-        const double allowed = tolerance_ + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+        const double allowed = collapseTolerance(magnitude);
         if (detail::departureFromEdge(net, points_, pu_, qv_, true) <= allowed) return Flat::alongV;
         if (detail::departureFromEdge(net, points_, pu_, qv_, false) <= allowed) return Flat::alongU;
         return Flat::none;
@@ -336,11 +341,16 @@ private:
             child.depth = region.depth + 1;
             child.net = base + k * count;
             (alongV ? (k == 0 ? child.s1 : child.s0) : (k == 0 ? child.t1 : child.t0)) = middle;
-            detail::project(pool_.data() + child.net, count, points_);
-            const double bound = detail::lowerBound(points_, p_, toward());
-            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
-                push(child, bound);
+            consider(child);
         }
+    }
+
+    /// Queues a region just halved off unless its bound, its gradient or its weights settle it.
+    void consider(const Region& child) {
+        detail::project(pool_.data() + child.net, netCount(child), points_);
+        const double bound = detail::lowerBound(points_, p_, toward());
+        if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
+            push(child, bound);
     }
 
     /// visit() for a flat region: Newton along its edge curve, from [lo, hi] in the patch's parameters.
@@ -363,15 +373,7 @@ private:
         if (detail::provablyFarther(net, count, 1, p_, best_.distance - tolerance_)) return;
         // Too small to halve: from the nearest of a few points along it too, and from its ends and
         // middle where the best so far sits on one of its ends.
-        constexpr int kSamples = 5;
-        glm::dvec2 nearest = lo;
-        double nearestDistance = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < kSamples; ++i) {
-            const glm::dvec2 uv = along(static_cast<double>(i) / (kSamples - 1));
-            const glm::dvec3 d = tree_.evaluate(region.patch, uv.x, uv.y, 0).point - p_;
-            if (glm::dot(d, d) < nearestDistance) nearestDistance = glm::dot(d, d), nearest = uv;
-        }
-        polish(nearest);
+        polish(nearestSample(region.patch, lo.x, hi.x, lo.y, hi.y));
         if (bestIn(region, lo.x, hi.x, lo.y, hi.y) && (best_.uv == lo || best_.uv == hi))
             for (double f : {0.0, 0.5, 1.0}) polish(along(f));
     }
@@ -380,10 +382,8 @@ private:
     bool collapsedLine(std::size_t i, bool alongV) const {
         const std::size_t count = alongV ? pu_ : qv_;
         const glm::dvec3& first = alongV ? points_[i] : points_[i * qv_];
-        // Points a collapsed row became under subdivision differ by the rounding of coordinates.
         const double allowed =
-            tolerance_ + 64.0 * std::numeric_limits<double>::epsilon() *
-                             std::max({std::abs(first.x), std::abs(first.y), std::abs(first.z)});
+            collapseTolerance(std::max({std::abs(first.x), std::abs(first.y), std::abs(first.z)}));
         for (std::size_t k = 1; k < count; ++k)
             if (glm::distance(alongV ? points_[k * qv_ + i] : points_[i * qv_ + k], first) > allowed)
                 return false;
@@ -436,10 +436,7 @@ private:
             child.net = base + (children == 4 ? 2 + k : k) * netSize_;
             if (halveU) (k < children / 2 ? child.s1 : child.s0) = sm;
             if (halveV) (k % 2 == 0 ? child.t1 : child.t0) = tm;
-            detail::project(pool_.data() + child.net, netSize_, points_);
-            const double bound = detail::lowerBound(points_, p_, toward());
-            if (bound < best_.distance - tolerance_ && !settledByNeighbour(child) && !fartherThanBest(child))
-                push(child, bound);
+            consider(child);
         }
     }
 
@@ -530,8 +527,10 @@ private:
         constexpr int kLeafGrid = 5;
         glm::dvec2 best{ua, va};
         double bestDistance = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < kLeafGrid; ++i)
-            for (int j = 0; j < kLeafGrid; ++j) {
+        // A flat region's line ([ua, ua] or [va, va]) takes one sample across it.
+        const int acrossU = ub > ua ? kLeafGrid : 1, acrossV = vb > va ? kLeafGrid : 1;
+        for (int i = 0; i < acrossU; ++i)
+            for (int j = 0; j < acrossV; ++j) {
                 const glm::dvec2 uv{ua + (ub - ua) * i / (kLeafGrid - 1),
                                     va + (vb - va) * j / (kLeafGrid - 1)};
                 const glm::dvec3 d = tree_.evaluate(patch, uv.x, uv.y, 0).point - p_;
