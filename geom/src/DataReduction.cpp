@@ -872,17 +872,51 @@ struct SurfaceGrid {
     }
 };
 
+// A rational spline's frame for the removal loop: centred on its control box and with its
+// largest weight 1 (neither changes the curve or surface), its homogeneous coefficients' removal
+// weights are on the scale of the Euclidean error, which the ranking's weight cutoff compares
+// with the tolerance.
+struct RationalFrame {
+    glm::dvec3 centre{0.0};
+    double largest = 1.0;
+};
+
+RationalFrame rationalFrame(const std::vector<glm::dvec3>& points, const std::vector<double>& weights) {
+    BoundingBox box;
+    for (const glm::dvec3& q : points) box.add(q);
+    return {box.center(), *std::max_element(weights.begin(), weights.end())};
+}
+
+// The sequences a rational spline's removal loop runs on: w P and (w, 0, 0) for each point.
+std::vector<glm::dvec3> homogeneousPairs(const std::vector<glm::dvec3>& points,
+                                         const std::vector<double>& weights) {
+    std::vector<glm::dvec3> pairs(2 * points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        pairs[2 * k] = weights[k] * points[k];
+        pairs[2 * k + 1] = glm::dvec3(weights[k], 0.0, 0.0);
+    }
+    return pairs;
+}
+
+// Back from homogeneousPairs: the weights, and the points moved by `offset`.
+void fromHomogeneousPairs(const std::vector<glm::dvec3>& pairs, const glm::dvec3& offset,
+                          std::vector<glm::dvec3>& points, std::vector<double>& weights) {
+    const std::size_t count = pairs.size() / 2;
+    points.resize(count);
+    weights.resize(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        weights[k] = pairs[2 * k + 1].x;
+        points[k] = pairs[2 * k] / weights[k] + offset;
+    }
+}
+
 // One pass along u of a rational `current`: the loop on the homogeneous rows (w P and (w, 0, 0)
 // per column, sharing the knots), a removal kept only where every weight it changed stays
 // positive and the Euclidean surface keeps the tolerance on the grid.
 std::size_t reduceRationalSurfaceAlongU(Surface& current, SurfaceGrid& grid, const ReductionOptions& o,
                                         double acceptance, std::size_t& fits) {
     const std::size_t nv = current.countV;
-    Spline s{current.degreeU, current.knotsU, std::vector<glm::dvec3>(2 * current.points.size()), 2 * nv};
-    for (std::size_t k = 0; k < current.points.size(); ++k) {
-        s.points[2 * k] = current.weights[k] * current.points[k];
-        s.points[2 * k + 1] = glm::dvec3(current.weights[k], 0.0, 0.0);
-    }
+    Spline s{current.degreeU, current.knotsU, homogeneousPairs(current.points, current.weights), 2 * nv};
     grid.prepareAcross(current);
     const bool measuring = std::isfinite(o.tolerance);
     const std::size_t removed = reduceLoop(
@@ -897,12 +931,7 @@ std::size_t reduceRationalSurfaceAlongU(Surface& current, SurfaceGrid& grid, con
         [](double, double) { return 0.0; });
     current.knotsU = std::move(s.knots);
     current.countU = s.points.size() / (2 * nv);
-    current.points.resize(current.countU * nv);
-    current.weights.resize(current.countU * nv);
-    for (std::size_t k = 0; k < current.points.size(); ++k) {
-        current.weights[k] = s.points[2 * k + 1].x;
-        current.points[k] = s.points[2 * k] / current.weights[k];
-    }
+    fromHomogeneousPairs(s.points, glm::dvec3(0.0), current.points, current.weights);
     return removed;
 }
 
@@ -1759,33 +1788,19 @@ private:
 // (w_i, 0, 0), sharing the knots, each removal kept only under RationalBound; measureDeviation
 // (point inversion, Euclidean) checks the result and steps back should it ever disagree.
 CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& options) {
-    // Centred on its control box and with its largest weight 1 (neither changes the curve), the
-    // homogeneous coefficients' removal weights are on the scale of the Euclidean error, which
-    // the ranking's weight cutoff compares with the tolerance.
     const std::size_t n = curve.points.size();
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-    for (const glm::dvec3& q : curve.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double largest = *std::max_element(curve.weights.begin(), curve.weights.end());
+    const RationalFrame frame = rationalFrame(curve.points, curve.weights);
+    const glm::dvec3 centre = frame.centre;
     Curve centred = curve;
-    std::vector<glm::dvec3> homogeneous(2 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-        centred.points[i] -= centre;
-        centred.weights[i] /= largest;
-        homogeneous[2 * i] = centred.weights[i] * centred.points[i];
-        homogeneous[2 * i + 1] = glm::dvec3(centred.weights[i], 0.0, 0.0);
-    }
-    Spline s{curve.degree, curve.knots, std::move(homogeneous), 2};
+    for (glm::dvec3& q : centred.points) q -= centre;
+    for (double& w : centred.weights) w /= frame.largest;
+    Spline s{curve.degree, curve.knots, homogeneousPairs(centred.points, centred.weights), 2};
     const RationalBound bound(centred);
     const bool measuring = std::isfinite(options.tolerance);
     auto toCurve = [&centre](const Spline& h) {
-        const std::size_t count = h.points.size() / 2;
-        std::vector<glm::dvec3> points(count);
-        std::vector<double> weights(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            weights[i] = h.points[2 * i + 1].x;
-            points[i] = h.points[2 * i] / weights[i] + centre;
-        }
+        std::vector<glm::dvec3> points;
+        std::vector<double> weights;
+        fromHomogeneousPairs(h.points, centre, points, weights);
         return Curve(h.degree, h.knots, std::move(points), std::move(weights));
     };
     CurveReduction out;
@@ -2287,21 +2302,16 @@ SurfaceReduction reduceAnySurface(const Surface& surface, ReductionDirection dir
     return reduceClampedSurface(surface, direction, options);
 }
 
-// A rational surface, centred on its control box and with its largest weight 1 (neither changes
-// the surface): the homogeneous rows' removal weights are then on the scale of the Euclidean
-// error, which the ranking's weight cutoff compares with the tolerance.
+// A rational surface, reduced in its RationalFrame.
 SurfaceReduction reduceRationalSurface(const Surface& surface, ReductionDirection direction,
                                        const ReductionOptions& options) {
-    BoundingBox box;
-    for (const glm::dvec3& q : surface.points) box.add(q);
-    const glm::dvec3 centre = box.center();
-    const double largest = *std::max_element(surface.weights.begin(), surface.weights.end());
+    const RationalFrame frame = rationalFrame(surface.points, surface.weights);
     Surface centred = surface;
-    for (glm::dvec3& q : centred.points) q -= centre;
-    for (double& w : centred.weights) w /= largest;
+    for (glm::dvec3& q : centred.points) q -= frame.centre;
+    for (double& w : centred.weights) w /= frame.largest;
     SurfaceReduction r = reduceAnySurface(centred, direction, options);
-    for (glm::dvec3& q : r.surface.points) q += centre;
-    for (double& w : r.surface.weights) w *= largest;
+    for (glm::dvec3& q : r.surface.points) q += frame.centre;
+    for (double& w : r.surface.weights) w *= frame.largest;
     return r;
 }
 
