@@ -538,9 +538,9 @@ TEST_CASE("closest point is exact near the pole and the borders of rational surf
     // queries within 1e-9 to 1e-3 of the size from the pole or from a border point. An answer may
     // be farther than the reference by 1e-9 of the size. Under the sanitizers a quarter of the
     // surfaces and queries (the reference's pattern search is most of the time).
-    // Besides the first 12 members, the 4 of 120 whose answers within 1e-8 of the pole were up to
-    // 14% too far: Newton's Hessian test against its trace took the curvature along v, as small
-    // as the squared distance to the pole, for none and shifted the step in v away.
+    // Besides the first 12 members, four whose answers lie within 1e-8 of the pole, where the
+    // curvature along v is as small as the squared distance to the pole (Newton must not take it
+    // for none).
     std::vector<int> seeds;
     for (int seed = 0; seed < membersForBuild(12); ++seed) seeds.push_back(seed);
     seeds.insert(seeds.end(), {34, 92, 97, 110});

@@ -479,9 +479,9 @@ TEST_CASE("the final measurement steps back when coarse loop samples let the tol
         REQUIRE(r.deviation.maxError <= o.tolerance);
         REQUIRE(r.removed == c.points.size() - r.curve.points.size());
         // The final check samples the original at least 4 times per span whatever the loop's
-        // density (at the loop's one per span it reported 9.44e-4 where there was 1.0137e-3): the
-        // result keeps the tolerance as a plain measurement 64 times per span finds it, and the
-        // report, inverted from the loop's witnesses, is its maximum to within 1%.
+        // density (one per span misses peaks between samples): the result keeps the tolerance as a
+        // plain measurement 64 times per span finds it, and the report, inverted from the loop's
+        // witnesses, is its maximum to within 1%.
         const double dense = measureDeviation(c, r.curve, 64).maxError;
         REQUIRE(dense <= o.tolerance);
         REQUIRE(r.deviation.maxError == Approx(dense).epsilon(0.01));

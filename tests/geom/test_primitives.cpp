@@ -135,8 +135,7 @@ TEST_CASE("normals next to and on a pole are exact at every size and place", "[g
         std::sort(vs.begin(), vs.end());
         const std::vector<GridSample> grid = GridEvaluator(sphere).evaluate(us, vs);
         // The reference is the radial direction from the centre, good to the rounding of the
-        // point's coordinates against the radius; at the pole itself too (the limit there was
-        // taken 1e-7 inside the domain, 2.8e-7 off).
+        // point's coordinates against the radius; at the pole itself too (the exact limit).
         const double reference = 1e-13 * (1.0 + away / r);
         for (std::size_t i = 0; i < us.size(); ++i)
             for (std::size_t j = 0; j < vs.size(); ++j) {
