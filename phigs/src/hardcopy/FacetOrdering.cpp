@@ -1,236 +1,150 @@
 #include "phigs/hardcopy/FacetOrdering.h"
 
-#include "phigs/hardcopy/FacetClusters.h"
-
-#include <glm/geometric.hpp>
-#include <glm/vec4.hpp>
+#include "DepthSpace.h"
+#include "FacetBsp.h"
+#include "phigs/hardcopy/FacetOverlaps.h"
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
-#include <utility>
+#include <cstdint>
+#include <limits>
+#include <map>
 
 namespace phigs::hardcopy {
 namespace {
 
-enum class Side { On, Front, Back, Both };
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+constexpr std::size_t kPairsPerFacet = 64, kMinPairBudget = std::size_t(1) << 20;
+
+/// Which of two facets that overlap on the page is painted first.
+enum class First { A, B, Unknown };
 
 /// A colour channel at the 8 bits of the raster (and of the painter's colours).
-int channelByte(float c) {
-    return int(std::lround(std::clamp(double(c), 0.0, 1.0) * 255.0));
+std::int64_t channelByte(float c) {
+    return std::lround(std::clamp(double(c), 0.0, 1.0) * 255.0);
 }
 
-/// The BSP tree over facets in page space with depth scaled to points.
-class Bsp {
-public:
-    Bsp(std::vector<ProjectedFacet> facets, double pointsPerDepth)
-        : pool_(std::move(facets)), depthScale_(pointsPerDepth) {
-        glm::dvec3 lo(1e300), hi(-1e300);
-        for (const ProjectedFacet& f : pool_)
-            for (const auto& c : f.contours)
-                for (const PagePoint& p : c) lo = glm::min(lo, scaled(p)), hi = glm::max(hi, scaled(p));
-        epsilon_ = 1e-9 * std::max(1.0, glm::length(hi - lo));
-        for (const ProjectedFacet& f : pool_) planes_.push_back(planeOf(f));
-        budget_ = 8 * pool_.size() + 10000;
+/// The view and the colour at 8 bits a channel: facets painted in a row with one key can be one
+/// path (CairoPainter).
+std::int64_t paintKey(const ProjectedFacet& f) {
+    return std::int64_t(f.clip) << 24 | channelByte(f.colour.x) << 16 | channelByte(f.colour.y) << 8 |
+           channelByte(f.colour.z);
+}
+
+/// The plane with its normal toward the viewer, who looks down -z from z = +infinity.
+glm::dvec4 facingViewer(const glm::dvec4& plane) {
+    return plane.z < 0.0 ? -plane : plane;
+}
+
+/// The scaled depth of a plane facing the viewer over a page point.
+double depthOn(const glm::dvec4& plane, glm::dvec2 p) {
+    return -(plane.x * p.x + plane.y * p.y + plane.w) / plane.z;
+}
+
+/// Which of facets a and b, which overlap on the page, lies behind the other where they overlap.
+/// First each facet's points against the other's plane (Newell's tests); where those do not
+/// settle it, the depths of the two planes over the part of the page the hulls share, which
+/// differ linearly, so their order at its corners is the order all over it. Facets that lie in
+/// one plane there keep the traversal's order (a before b). Unknown: they pierce each other, or
+/// one faces edge-on.
+First paintedFirst(const DepthSpace& space, const ProjectedFacet& a, const ProjectedFacet& b,
+                   const glm::dvec4& planeA, const glm::dvec4& planeB, const FacetOverlaps& overlaps,
+                   std::uint32_t ia, std::uint32_t ib) {
+    const glm::dvec4 pa = facingViewer(planeA), pb = facingViewer(planeB);
+    // A plane nearly parallel to the view holds a depth range over a sliver of the page.
+    constexpr double kEdgeOn = 1e-9;
+    if (!(pa.z > kEdgeOn && pb.z > kEdgeOn)) return First::Unknown;
+    const Side bOfA = space.classify(pa, b), aOfB = space.classify(pb, a);
+    if (bOfA == Side::On && aOfB == Side::On) return First::A;
+    const bool aNearer = bOfA == Side::Back || aOfB == Side::Front;
+    const bool bNearer = aOfB == Side::Back || bOfA == Side::Front;
+    if (aNearer != bNearer) return aNearer ? First::B : First::A;
+    const std::vector<glm::dvec2> shared = convexIntersection(overlaps.hulls[ia], overlaps.hulls[ib]);
+    if (shared.empty()) return First::A;  // they only touch after all
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (glm::dvec2 p : shared) {
+        const double d = depthOn(pa, p) - depthOn(pb, p);
+        lo = std::min(lo, d), hi = std::max(hi, d);
     }
+    const double epsilon = space.epsilon();
+    if (lo >= -epsilon && hi <= epsilon) return First::A;
+    if (lo >= -epsilon) return First::B;
+    if (hi <= epsilon) return First::A;
+    return First::Unknown;
+}
 
-    FacetOrderStats stats;
+/// A directed graph in one array: the edges out of v are targets[offsets[v], offsets[v + 1]).
+struct Graph {
+    std::vector<std::uint32_t> offsets, targets;
 
-    std::vector<ProjectedFacet> backToFront() {
-        stats.input = pool_.size();
-        std::vector<std::size_t> all(pool_.size());
-        for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-        if (!all.empty()) build(std::move(all));
-        std::vector<ProjectedFacet> out;
-        std::size_t count = 0;
-        for (const Node& node : nodes_) count += node.on.size();
-        out.reserve(count);
-        walk(out);
-        pool_ = {};
-        stats.output = out.size();
-        return out;
+    Graph(std::size_t vertices, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges)
+        : offsets(vertices + 1, 0), targets(edges.size()) {
+        for (const auto& e : edges) ++offsets[e.first + 1];
+        for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
+        std::vector<std::uint32_t> fill(offsets.begin(), offsets.end() - 1);
+        for (const auto& e : edges) targets[fill[e.first]++] = e.second;
     }
-
-private:
-    struct Node {
-        glm::dvec4 plane{0.0};
-        std::vector<std::size_t> on;  ///< coplanar facets in traversal order (or the fallback's sorted list)
-        int front = -1, back = -1;
-    };
-
-    glm::dvec3 scaled(const PagePoint& p) const { return {p.x, p.y, p.z * depthScale_}; }
-
-    glm::dvec4 planeOf(const ProjectedFacet& f) const {
-        glm::dvec3 normal(0.0), centre(0.0);
-        std::size_t count = 0;
-        for (const auto& c : f.contours)
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                const glm::dvec3 a = scaled(c[i]), b = scaled(c[(i + 1) % c.size()]);
-                normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                     (a.x - b.x) * (a.y + b.y));
-                centre += a;
-                ++count;
-            }
-        const double length = glm::length(normal);
-        if (length == 0.0 || count == 0) return glm::dvec4(0.0);
-        normal /= length;
-        centre /= double(count);
-        return {normal, -glm::dot(normal, centre)};
-    }
-
-    double distance(const glm::dvec4& plane, const PagePoint& p) const {
-        return glm::dot(glm::dvec3(plane), scaled(p)) + plane.w;
-    }
-
-    Side classify(const glm::dvec4& plane, const ProjectedFacet& f) const {
-        bool front = false, back = false;
-        for (const auto& c : f.contours)
-            for (const PagePoint& p : c) {
-                const double d = distance(plane, p);
-                front = front || d > epsilon_;
-                back = back || d < -epsilon_;
-                if (front && back) return Side::Both;
-            }
-        return front && back ? Side::Both : front ? Side::Front : back ? Side::Back : Side::On;
-    }
-
-    /// The facet's parts on the plane's front and back sides (each contour clipped both ways).
-    std::pair<ProjectedFacet, ProjectedFacet> split(const glm::dvec4& plane, const ProjectedFacet& f) const {
-        ProjectedFacet front = f, back = f;
-        front.contours.clear(), back.contours.clear();
-        front.seam = back.seam = true;
-        for (const auto& c : f.contours) {
-            std::vector<PagePoint> plus, minus;
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                const PagePoint &a = c[i], &b = c[(i + 1) % c.size()];
-                const double da = distance(plane, a), db = distance(plane, b);
-                if (da >= 0.0) plus.push_back(a);
-                if (da <= 0.0) minus.push_back(a);
-                if ((da > 0.0 && db < 0.0) || (da < 0.0 && db > 0.0)) {
-                    const PagePoint cut = a + (b - a) * (da / (da - db));
-                    plus.push_back(cut);
-                    minus.push_back(cut);
-                }
-            }
-            if (plus.size() >= 3) front.contours.push_back(std::move(plus));
-            if (minus.size() >= 3) back.contours.push_back(std::move(minus));
-        }
-        return {std::move(front), std::move(back)};
-    }
-
-    /// The candidate (of a few spread over the list) whose plane splits the fewest of a sample.
-    std::size_t choosePlane(const std::vector<std::size_t>& facets) const {
-        const std::size_t n = facets.size(), candidates = std::min<std::size_t>(n, 16),
-                          samples = std::min<std::size_t>(n, 64);
-        std::size_t best = facets[0], fewest = ~std::size_t(0);
-        for (std::size_t c = 0; c < candidates; ++c) {
-            const std::size_t candidate = facets[c * n / candidates];
-            if (planes_[candidate] == glm::dvec4(0.0)) continue;
-            // Counting stops where this candidate can no longer be the first with the fewest, and
-            // the search where one splits none: the choice is the full count's.
-            std::size_t splits = 0;
-            for (std::size_t s = 0; s < samples && splits < fewest; ++s)
-                splits += classify(planes_[candidate], pool_[facets[s * n / samples]]) == Side::Both;
-            if (splits < fewest) fewest = splits, best = candidate;
-            if (fewest == 0) break;
-        }
-        return best;
-    }
-
-    void build(std::vector<std::size_t> all);
-    /// Moves the facets out of the pool, far to near: each is on one node only.
-    void walk(std::vector<ProjectedFacet>& out);
-    void sortByDepth(Node& node) const;
-
-    std::vector<ProjectedFacet> pool_;
-    std::vector<glm::dvec4> planes_;
-    std::vector<Node> nodes_;
-    double depthScale_;
-    double epsilon_ = 0.0;
-    std::size_t budget_ = 0;
+    std::size_t size() const { return offsets.size() - 1; }
 };
 
-void Bsp::build(std::vector<std::size_t> all) {
-    // Iterative: a mesh of parallel facets would make the tree as deep as the mesh is large.
-    std::vector<std::pair<int, std::vector<std::size_t>>> work;
-    nodes_.emplace_back();
-    work.emplace_back(0, std::move(all));
-    while (!work.empty()) {
-        auto [index, facets] = std::move(work.back());
-        work.pop_back();
-        if (stats.splits >= budget_) {
-            stats.fellBack = true;
-            nodes_[std::size_t(index)].on = std::move(facets);
-            sortByDepth(nodes_[std::size_t(index)]);
-            continue;
-        }
-        const std::size_t chosen = choosePlane(facets);
-        const glm::dvec4 plane = planes_[chosen];
-        std::vector<std::size_t> on, front, back;
-        for (std::size_t f : facets) {
-            // The chosen facet stays at its node whatever rounding says of a sliver's own plane,
-            // so every node takes at least one facet and the build ends.
-            const Side side = plane == glm::dvec4(0.0) || f == chosen ? Side::On : classify(plane, pool_[f]);
-            if (side == Side::On) on.push_back(f);
-            if (side == Side::Front) front.push_back(f);
-            if (side == Side::Back) back.push_back(f);
-            if (side != Side::Both) continue;
-            auto [plus, minus] = split(plane, pool_[f]);
-            ++stats.splits;
-            for (auto* part : {&plus, &minus}) {
-                if (part->contours.empty()) continue;
-                pool_.push_back(std::move(*part));
-                planes_.push_back(planes_[f]);
-                (part == &plus ? front : back).push_back(pool_.size() - 1);
+/// The strongly connected components (Tarjan's algorithm, without recursion: a long chain of
+/// facets each over the next would make it as deep as the chain): each vertex's component.
+std::vector<std::uint32_t> components(const Graph& g, std::uint32_t& count) {
+    const std::size_t n = g.size();
+    std::vector<std::uint32_t> index(n, kNone), low(n, 0), component(n, kNone), stack;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> calls;  // vertex, next edge
+    std::uint32_t next = 0;
+    count = 0;
+    auto open = [&](std::uint32_t v) {
+        index[v] = low[v] = next++;
+        stack.push_back(v);
+        calls.emplace_back(v, g.offsets[v]);
+    };
+    for (std::uint32_t root = 0; root < n; ++root) {
+        if (index[root] != kNone) continue;
+        open(root);
+        while (!calls.empty()) {
+            const std::uint32_t v = calls.back().first;
+            if (calls.back().second < g.offsets[v + 1]) {
+                const std::uint32_t w = g.targets[calls.back().second++];
+                if (index[w] == kNone)
+                    open(w);
+                else if (component[w] == kNone)  // still on the stack
+                    low[v] = std::min(low[v], index[w]);
+                continue;
             }
-        }
-        nodes_[std::size_t(index)].plane = plane;
-        nodes_[std::size_t(index)].on = std::move(on);
-        for (auto* side : {&front, &back}) {
-            if (side->empty()) continue;
-            const int child = int(nodes_.size());
-            nodes_.emplace_back();
-            (side == &front ? nodes_[std::size_t(index)].front : nodes_[std::size_t(index)].back) = child;
-            work.emplace_back(child, std::move(*side));
+            calls.pop_back();
+            if (!calls.empty()) low[calls.back().first] = std::min(low[calls.back().first], low[v]);
+            if (low[v] != index[v]) continue;
+            std::uint32_t w;
+            do {
+                w = stack.back();
+                stack.pop_back();
+                component[w] = count;
+            } while (w != v);
+            ++count;
         }
     }
+    return component;
 }
 
-void Bsp::sortByDepth(Node& node) const {
-    auto depth = [&](std::size_t f) {
-        double sum = 0.0;
-        std::size_t count = 0;
-        for (const auto& c : pool_[f].contours)
-            for (const PagePoint& p : c) sum += p.z, ++count;
-        return count ? sum / double(count) : 0.0;
-    };
-    std::stable_sort(node.on.begin(), node.on.end(),
-                     [&](std::size_t a, std::size_t b) { return depth(a) < depth(b); });
-}
-
-void Bsp::walk(std::vector<ProjectedFacet>& out) {
-    if (nodes_.empty()) return;
-    // The viewer looks down -z from z = +infinity: the side the plane's normal z points to is near.
-    struct Step {
-        int node;
-        bool emit;
-    };
-    std::vector<Step> stack{{0, false}};
-    while (!stack.empty()) {
-        const Step step = stack.back();
-        stack.pop_back();
-        const Node& node = nodes_[std::size_t(step.node)];
-        if (step.emit) {
-            for (std::size_t f : node.on) out.push_back(std::move(pool_[f]));
-            continue;
-        }
-        const bool frontIsNear = node.plane.z >= 0.0;
-        const int nearChild = frontIsNear ? node.front : node.back,
-                  farChild = frontIsNear ? node.back : node.front;
-        if (nearChild >= 0) stack.push_back({nearChild, false});
-        stack.push_back({step.node, true});
-        if (farChild >= 0) stack.push_back({farChild, false});
+/// The edges between overlapping facets, from the one painted first to the other; both ways
+/// where no whole-facet order is known, which puts the two in one component.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> paintingEdges(const std::vector<ProjectedFacet>& facets,
+                                                                   const FacetOverlaps& overlaps,
+                                                                   double pointsPerDepth) {
+    const DepthSpace space(facets, pointsPerDepth);
+    std::vector<glm::dvec4> planes;
+    planes.reserve(facets.size());
+    for (const ProjectedFacet& f : facets) planes.push_back(space.planeOf(f));
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    edges.reserve(overlaps.pairs.size());
+    for (const auto& [a, b] : overlaps.pairs) {
+        const First first = paintedFirst(space, facets[a], facets[b], planes[a], planes[b], overlaps, a, b);
+        if (first != First::B) edges.emplace_back(a, b);
+        if (first != First::A) edges.emplace_back(b, a);
     }
+    return edges;
 }
 
 }  // namespace
@@ -239,43 +153,76 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
                                              FacetOrderStats* stats) {
     FacetOrderStats total;
     total.input = facets.size();
-    std::vector<ProjectedFacet> out;
-    const auto clusters = overlapClusters(facets);
-    // A facet that overlaps no other may be painted at any time: these come first, by view and
-    // colour, so that the painter can paint a run of one colour as one path (CairoPainter).
-    std::vector<std::size_t> alone;
-    for (const auto& cluster : clusters)
-        if (cluster.size() == 1) alone.push_back(cluster[0]);
-    std::stable_sort(alone.begin(), alone.end(), [&](std::size_t a, std::size_t b) {
-        const ProjectedFacet &p = facets[a], &q = facets[b];
-        const auto key = [](const ProjectedFacet& f) {
-            return std::tuple(f.clip, channelByte(f.colour.x), channelByte(f.colour.y),
-                              channelByte(f.colour.z));
-        };
-        return key(p) < key(q);
-    });
-    // The clusters' orders first, then one list of the size they make (splits add facets): a
-    // growing list would hold its old and new room at once, the describe step's largest need.
-    std::vector<std::vector<ProjectedFacet>> ordered;
-    std::size_t count = alone.size();
-    for (const auto& cluster : clusters) {
-        if (cluster.size() == 1) continue;
-        std::vector<ProjectedFacet> group;
-        group.reserve(cluster.size());
-        for (std::size_t i : cluster) group.push_back(std::move(facets[i]));
-        Bsp bsp(std::move(group), pointsPerDepth);
-        ordered.push_back(bsp.backToFront());
-        count += ordered.back().size();
+    // Facets that overlap by the hundred (a pile of large layers) would make the pairs outgrow
+    // the facets many times over: past this bound one BSP tree orders them all.
+    const std::size_t maxPairs = kPairsPerFacet * facets.size() + kMinPairBudget;
+    FacetOverlaps overlaps;
+    if (facets.size() < kNone) overlaps = facetOverlaps(facets, maxPairs);
+    if (facets.size() >= kNone || !overlaps.complete) {
         ++total.clusters;
-        total.splits += bsp.stats.splits;
-        total.fellBack = total.fellBack || bsp.stats.fellBack;
+        std::vector<ProjectedFacet> out = bspBackToFront(std::move(facets), pointsPerDepth, total);
+        total.output = out.size();
+        if (stats) *stats = total;
+        return out;
     }
-    out.reserve(count);
-    for (std::size_t i : alone) out.push_back(std::move(facets[i]));
-    facets = {};
-    for (auto& group : ordered) {
-        for (ProjectedFacet& f : group) out.push_back(std::move(f));
-        group = {};
+    const Graph graph(facets.size(), paintingEdges(facets, overlaps, pointsPerDepth));
+    overlaps = {};
+    std::uint32_t count = 0;
+    const std::vector<std::uint32_t> component = components(graph, count);
+    // Each component's facets; one of several (a cycle, or facets that pierce each other) is
+    // ordered by a BSP tree, and its facets then paint in a row.
+    std::vector<std::vector<std::uint32_t>> members(count);
+    for (std::uint32_t v = 0; v < facets.size(); ++v) members[component[v]].push_back(v);
+    std::vector<std::vector<ProjectedFacet>> bspOrder(count);
+    std::size_t output = 0;
+    for (std::uint32_t c = 0; c < count; ++c) {
+        if (members[c].size() == 1) {
+            ++output;
+            continue;
+        }
+        std::vector<ProjectedFacet> group;
+        group.reserve(members[c].size());
+        for (std::uint32_t v : members[c]) group.push_back(std::move(facets[v]));
+        bspOrder[c] = bspBackToFront(std::move(group), pointsPerDepth, total);
+        output += bspOrder[c].size();
+        ++total.clusters;
+    }
+    // The components in an order that keeps every edge (Kahn's algorithm): of those ready, one
+    // with the last one's view and colour where there is one, else the one with the least.
+    std::vector<std::uint32_t> waiting(count, 0);
+    for (std::uint32_t v = 0; v < graph.size(); ++v)
+        for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e)
+            if (component[graph.targets[e]] != component[v]) ++waiting[component[graph.targets[e]]];
+    std::vector<std::int64_t> keys(count, 0);
+    std::map<std::int64_t, std::vector<std::uint32_t>> ready;
+    for (std::uint32_t c = 0; c < count; ++c) {
+        if (members[c].size() == 1)
+            keys[c] = paintKey(facets[members[c].front()]);
+        else if (!bspOrder[c].empty())
+            keys[c] = paintKey(bspOrder[c].front());
+        if (waiting[c] == 0) ready[keys[c]].push_back(c);
+    }
+    std::vector<ProjectedFacet> out;
+    out.reserve(output);
+    std::int64_t last = 0;
+    while (!ready.empty()) {
+        auto bucket = ready.find(last);
+        if (bucket == ready.end()) bucket = ready.begin();
+        last = bucket->first;
+        const std::uint32_t c = bucket->second.back();
+        bucket->second.pop_back();
+        if (bucket->second.empty()) ready.erase(bucket);
+        if (members[c].size() == 1) {
+            out.push_back(std::move(facets[members[c].front()]));
+        } else {
+            for (ProjectedFacet& f : bspOrder[c]) out.push_back(std::move(f));
+            bspOrder[c] = {};
+        }
+        for (std::uint32_t v : members[c])
+            for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
+                const std::uint32_t d = component[graph.targets[e]];
+                if (d != c && --waiting[d] == 0) ready[keys[d]].push_back(d);
+            }
     }
     total.output = out.size();
     if (stats) *stats = total;
