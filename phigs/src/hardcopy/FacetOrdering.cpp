@@ -26,6 +26,8 @@ std::int64_t channelByte(float c) {
 
 /// The view and the colour at 8 bits a channel: facets painted in a row with one key can be one
 /// path (CairoPainter).
+constexpr std::int64_t kColourBits = 0xFFFFFF;
+
 std::int64_t paintKey(const ProjectedFacet& f) {
     return std::int64_t(f.clip) << 24 | channelByte(f.colour.x) << 16 | channelByte(f.colour.y) << 8 |
            channelByte(f.colour.z);
@@ -188,7 +190,7 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
         ++total.clusters;
     }
     // The components in an order that keeps every edge (Kahn's algorithm): of those ready, one
-    // with the last one's view and colour where there is one, else the one with the least.
+    // with the last one's view and colour where there is one.
     std::vector<std::uint32_t> waiting(count, 0);
     for (std::uint32_t v = 0; v < graph.size(); ++v)
         for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e)
@@ -207,7 +209,10 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
     std::int64_t last = 0;
     while (!ready.empty()) {
         auto bucket = ready.find(last);
-        if (bucket == ready.end()) bucket = ready.begin();
+        // Else the same view (a change of view is a change of clip in the file), else the least.
+        if (bucket == ready.end()) bucket = ready.lower_bound(last & ~kColourBits);
+        if (bucket == ready.end() || (bucket->first & ~kColourBits) != (last & ~kColourBits))
+            bucket = ready.begin();
         last = bucket->first;
         const std::uint32_t c = bucket->second.back();
         bucket->second.pop_back();
