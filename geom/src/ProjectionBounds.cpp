@@ -48,15 +48,32 @@ ValueRange operator+(ValueRange a, ValueRange b) {
     return {a.lo + b.lo, a.hi + b.hi};
 }
 
+/// The homogeneous net with its points taken about `origin` (X - origin w, w), in a buffer of the
+/// thread's own: the bounds below read each point several times.
+const glm::dvec4* aboutOrigin(const glm::dvec4* h, std::size_t count, const glm::dvec3& origin) {
+    thread_local std::vector<glm::dvec4> moved;
+    moved.resize(count);
+    for (std::size_t k = 0; k < count; ++k) moved[k] = glm::dvec4(glm::dvec3(h[k]) - origin * h[k].w, h[k].w);
+    return moved.data();
+}
+
+/// The range of each coordinate of the points c less `offset`.
+std::array<ValueRange, 3> pointRanges(const std::vector<glm::dvec3>& c, const glm::dvec3& offset) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const glm::dvec3& q : c) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    lo -= offset, hi -= offset;
+    return {ValueRange{lo.x, hi.x}, ValueRange{lo.y, hi.y}, ValueRange{lo.z, hi.z}};
+}
+
 /// gradientSign for a rational piece with homogeneous net h and points c: S_u = (X_u w - X w_u)
 /// / w^2 bounded coordinate by coordinate from the ranges of the net and of its differences.
 int rationalGradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::size_t pu,
                          std::size_t qv, bool alongV, const glm::dvec3& p) {
     const std::size_t lines = alongV ? qv : pu, across = alongV ? pu : qv;
     const glm::dvec3 origin = c[0];  // as in provablyConvex
+    const glm::dvec4* moved = aboutOrigin(h, pu * qv, origin);
     auto at = [&](std::size_t line, std::size_t k) {
-        const glm::dvec4 x = alongV ? h[k * qv + line] : h[line * qv + k];
-        return glm::dvec4(glm::dvec3(x) - origin * x.w, x.w);
+        return alongV ? moved[k * qv + line] : moved[line * qv + k];
     };
     const double inf = std::numeric_limits<double>::infinity();
     ValueRange x[4], dx[4];
@@ -71,15 +88,11 @@ int rationalGradientSign(const glm::dvec4* h, const std::vector<glm::dvec3>& c, 
             }
         }
     ValueRange g{0.0, 0.0};
+    const std::array<ValueRange, 3> toPoint = pointRanges(c, p);
     for (int m = 0; m < 3; ++m) {
         // The sign of S_u is that of X_u w - X w_u (w > 0); scale does not matter.
         const ValueRange derivative = dx[m] * x[3] - x[m] * dx[3];
-        double lo = inf, hi = -inf;
-        for (const glm::dvec3& q : c) {
-            lo = std::min(lo, q[m] - p[m]);
-            hi = std::max(hi, q[m] - p[m]);
-        }
-        g = g + derivative * ValueRange{lo, hi};
+        g = g + derivative * toPoint[static_cast<std::size_t>(m)];
     }
     return g.lo > 0.0 ? 1 : (g.hi < 0.0 ? -1 : 0);
 }
@@ -161,10 +174,8 @@ bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::
                     const glm::dvec3& p) {
     // Taken about the piece's first point: the quotient rule's terms then stay as small as the piece.
     const glm::dvec3 origin = c[0];
-    auto at = [&](std::size_t i, std::size_t j) {
-        const glm::dvec4 x = h[i * qv + j];
-        return glm::dvec4(glm::dvec3(x) - origin * x.w, x.w);
-    };
+    const glm::dvec4* moved = aboutOrigin(h, pu * qv, origin);
+    auto at = [&](std::size_t i, std::size_t j) { return moved[i * qv + j]; };
     const double nu = static_cast<double>(pu - 1), nv = static_cast<double>(qv - 1);
     const auto x = range(pu, qv, at);
     const auto xu =
@@ -183,11 +194,9 @@ bool provablyConvex(const glm::dvec4* h, const std::vector<glm::dvec3>& c, std::
     const ValueRange w = x[3];
     if (!(w.lo > 0.0)) return false;
     ValueRange huu{0.0, 0.0}, huv{0.0, 0.0}, hvv{0.0, 0.0};
+    const std::array<ValueRange, 3> points = pointRanges(c, origin);
     for (int m = 0; m < 3; ++m) {
-        const double inf = std::numeric_limits<double>::infinity();
-        ValueRange point{inf, -inf};
-        for (const glm::dvec3& q : c)
-            point = {std::min(point.lo, q[m] - origin[m]), std::max(point.hi, q[m] - origin[m])};
+        const ValueRange point = points[static_cast<std::size_t>(m)];
         const ValueRange su = (xu[m] - xu[3] * point) / w;
         const ValueRange sv = (xv[m] - xv[3] * point) / w;
         const ValueRange suu = (xuu[m] - 2.0 * (xu[3] * su) - xuu[3] * point) / w;
@@ -218,22 +227,27 @@ bool provablyFarther(const glm::dvec4* h, std::size_t pu, std::size_t qv, const 
     double cu[kMax], cv[kMax];
     for (std::size_t i = 0; i <= nu; ++i) cu[i] = binomial(nu, i);
     for (std::size_t j = 0; j <= nv; ++j) cv[j] = binomial(nv, j);
+    // Each net point relative to p, scaled by its binomial weights: the product's terms are then
+    // dot products, each pair of points met once (the product is symmetric); the term of a pair
+    // is 2 (a . b - m^2 a.w b.w), the dot of (2 a, -2 m^2 a.w) with b.
     thread_local std::vector<glm::dvec4> y;
     thread_local std::vector<double> g;
-    y.resize(pu * qv);
-    for (std::size_t k = 0; k < pu * qv; ++k) y[k] = glm::dvec4(glm::dvec3(h[k]) - p * h[k].w, h[k].w);
+    const std::size_t count = pu * qv;
+    y.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+        y[k] = cu[k / qv] * cv[k % qv] * glm::dvec4(glm::dvec3(h[k]) - p * h[k].w, h[k].w);
     g.assign(ku * kv, 0.0);
     const double m2 = distance * distance;
     for (std::size_t i = 0; i <= nu; ++i)
         for (std::size_t j = 0; j <= nv; ++j) {
-            const glm::dvec4& a = y[i * qv + j];
-            const double wa = cu[i] * cv[j];
-            for (std::size_t i2 = 0; i2 <= nu; ++i2)
-                for (std::size_t j2 = 0; j2 <= nv; ++j2) {
-                    const glm::dvec4& b = y[i2 * qv + j2];
-                    const double value = glm::dot(glm::dvec3(a), glm::dvec3(b)) - m2 * a.w * b.w;
-                    g[(i + i2) * kv + (j + j2)] += wa * cu[i2] * cv[j2] * value;
-                }
+            const glm::dvec4 a = y[i * qv + j];
+            const glm::dvec4 twice(2.0 * glm::dvec3(a), -2.0 * m2 * a.w);
+            g[2 * i * kv + 2 * j] += glm::dot(glm::dvec3(a), glm::dvec3(a)) - m2 * a.w * a.w;
+            for (std::size_t j2 = j + 1; j2 <= nv; ++j2)
+                g[2 * i * kv + j + j2] += glm::dot(twice, y[i * qv + j2]);
+            for (std::size_t i2 = i + 1; i2 <= nu; ++i2)
+                for (std::size_t j2 = 0; j2 <= nv; ++j2)
+                    g[(i + i2) * kv + j + j2] += glm::dot(twice, y[i2 * qv + j2]);
         }
     for (std::size_t k = 0; k < ku; ++k)
         for (std::size_t l = 0; l < kv; ++l)
