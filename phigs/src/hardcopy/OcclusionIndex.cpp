@@ -97,7 +97,9 @@ void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
     // Edge-on on the page: it covers nothing.
     if (!(std::abs(n.z) > 1e-12 * glm::length(n))) return;
     Triangle t;
-    t.p[0] = glm::dvec2(a), t.p[1] = glm::dvec2(b), t.p[2] = glm::dvec2(c);
+    // Counter-clockwise on the page, so that hides() needs no orientation of its own.
+    const bool clockwise = n.z < 0.0;
+    t.p[0] = glm::dvec2(a), t.p[1] = glm::dvec2(clockwise ? c : b), t.p[2] = glm::dvec2(clockwise ? b : c);
     t.plane = {-n.x / n.z, -n.y / n.z, 0.0};
     t.plane.z = a.z - t.plane.x * a.x - t.plane.y * a.y;
     t.tolerance = kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel;
@@ -144,9 +146,6 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     if (std::max(pa.x, pb.x) < boxLo.x || std::min(pa.x, pb.x) > boxHi.x || std::max(pa.y, pb.y) < boxLo.y ||
         std::min(pa.y, pb.y) > boxHi.y)
         return false;
-    const double area = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
-    if (area == 0.0) return false;
-    const double sign = area > 0.0 ? 1.0 : -1.0;
     double lo = 0.0, hi = 1.0;
     // Behind: the facet's depth minus the line's exceeds the tolerance (z grows toward the viewer).
     // Tested first, as it is the cheaper test and rejects the segment's own surface; the interval
@@ -156,7 +155,7 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     if (!atLeast(ga, gb, t.tolerance, lo, hi)) return false;
     for (int i = 0; i < 3; ++i) {
         const glm::dvec2 p = t.p[i], edge = t.p[(i + 1) % 3] - p;
-        if (!atLeast(sign * cross(edge, pa - p), sign * cross(edge, pb - p), 0.0, lo, hi)) return false;
+        if (!atLeast(cross(edge, pa - p), cross(edge, pb - p), 0.0, lo, hi)) return false;
     }
     if (hi - lo <= 1e-12) return false;
     interval = {lo, hi};
