@@ -1,9 +1,10 @@
 /* ANNOTATION TEXT RELATIVE under annotation style LEAD LINE joins the reference point to the
- * annotation point with a line in the polyline colour and width in force; UNCONNECTED (and a style
- * the workstation lacks) draws no line. Seeded random reference points, offsets, polyline colours
- * and widths, drawn on the offscreen type (lavapipe, validation layer on) and the PDF type
- * (rasterised by pdftoppm at 144 dpi): points along the way, clear of the text, show the line's
- * colour or the background. argv[1]: a directory for the files. */
+ * annotation point with a line in the polyline colour, width and linetype in force; UNCONNECTED
+ * (and a style the workstation lacks) draws no line. Seeded random reference points, offsets,
+ * polyline colours and widths, drawn on the offscreen type (lavapipe, validation layer on) and the
+ * PDF type (rasterised by pdftoppm at 144 dpi): points along the way, clear of the text, show the
+ * line's colour or the background; a dashed or dotted lead line shows along part of its way only.
+ * argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
@@ -63,6 +64,48 @@ static void lead_lines(void) {
     }
 }
 
+/* A patterned lead line: of 80 points along its way, clear of the text, some show its colour and
+ * some (in the pattern's gaps, 6 or more pixels long) do not. */
+static void patterned_lead_lines(void) {
+    const Pint types[4] = {PLINE_DASH, PLINE_DOT, PLINE_DASH_DOT, PLINE_DASH};
+    for (int round = 0; round < 4; ++round) {
+        double rgb[3];
+        for (int k = 0; k < 3; ++k) rgb[k] = (double)(64 + next_random() % 192u) / 255.0;
+        const double angle = random_real(0.0, 6.283);
+        const double length = random_real(0.25, 0.35);
+        const Ppoint ref = {(Pfloat)random_real(0.4, 0.6), (Pfloat)random_real(0.4, 0.6)};
+        const Pvec offset = {(Pfloat)(length * cos(angle)), (Pfloat)(length * sin(angle))};
+        Pgcolr colour;
+        Picture p[2];
+        colour.type = PMODEL_RGB;
+        colour.val.direct.x = (Pfloat)rgb[0], colour.val.direct.y = (Pfloat)rgb[1],
+        colour.val.direct.z = (Pfloat)rgb[2];
+        pdel_struct(1);
+        popen_struct(1);
+        pset_line_colr(&colour);
+        pset_linewidth((Pfloat)random_real(1.0, 3.0));
+        pset_linetype(types[round]);
+        pset_anno_char_ht(0.02f);
+        pset_anno_style(PANNO_STYLE_LEAD_LINE);
+        panno_text_rel(&ref, &offset, "X");
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf(&files, p));
+        for (int i = 0; i < 2; ++i) {
+            if (!p[i].rgb) continue;
+            int shown = 0;
+            for (int k = 0; k < 80; ++k) {
+                const double t = 0.1 + 0.8 * k / 79.0;
+                shown += colour_near(&p[i], ref.x + t * offset.delta_x, ref.y + t * offset.delta_y, rgb);
+            }
+            if (shown == 0 || shown == 80)
+                fprintf(stderr, "  %s, linetype %d: %d of 80 points along the lead line show it\n", p[i].name,
+                        (int)types[round], shown);
+            CHECK(shown > 0 && shown < 80);
+            free(p[i].rgb);
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -71,6 +114,7 @@ int main(int argc, char** argv) {
     snprintf(errors, sizeof errors, "%s/annotation_lead_errors.txt", dir);
     open_with_handler(errors);
     lead_lines();
+    patterned_lead_lines();
     pclose_phigs();
     return finish("test_annotation_lead");
 }

@@ -186,6 +186,11 @@ void ItemPipeline::colouredRun(const std::vector<ClipVertex>& run, std::span<con
     flush();
 }
 
+double ItemPipeline::npcPixels(const glm::dvec3& a, const glm::dvec3& b) const {
+    const glm::dvec2 pa(mapping_.npcToPage * glm::dvec4(a, 1.0)), pb(mapping_.npcToPage * glm::dvec4(b, 1.0));
+    return glm::length(pb - pa) / mapping_.nominalPixel;
+}
+
 void ItemPipeline::npcLine(const std::vector<ClipVertex>& npc, glm::vec3 colour, LineType type, float width) {
     for (const auto& run : clipPolyline(npc, view_)) emitRun(run, colour, type, width);
 }

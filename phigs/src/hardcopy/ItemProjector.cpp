@@ -162,9 +162,10 @@ void ItemProjector::operator()(const DrawText& text) {
         if (!(h.w > 0.0)) return;
         const glm::dvec3 from = glm::dvec3(h) / h.w;
         const glm::dvec3 at = from + glm::dvec3(glm::dvec2(text.annotationOffset), 0.0);
-        if (text.leadLine)  // solid, as the raster draws it
-            pipeline_.npcLine({{glm::dvec4(from, 1.0), 0.0}, {glm::dvec4(at, 1.0), 0.0}},
-                              text.leadLine->colour, LineType::Solid, text.leadLine->width);
+        if (text.leadLine)  // in the polyline attributes in force, its pattern over its length on the page
+            pipeline_.npcLine(
+                {{glm::dvec4(from, 1.0), 0.0}, {glm::dvec4(at, 1.0), pipeline_.npcPixels(from, at)}},
+                text.leadLine->colour, text.leadLine->type, text.leadLine->width);
         for (const auto& strip : strips) {
             std::vector<ClipVertex> npc;
             for (const glm::dvec2& q : strip)

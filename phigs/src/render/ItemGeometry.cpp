@@ -35,8 +35,8 @@ glm::vec3 mixIn(ColourModel model, glm::vec3 a, glm::vec3 b, double t) {
 
 class Builder {
 public:
-    Builder(const DrawItem& item, const glm::dmat4& worldToPixels)
-        : model_(item.modelTransform().get()), toPixels_(worldToPixels) {}
+    Builder(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc)
+        : model_(item.modelTransform().get()), toPixels_(worldToPixels), pixelsPerNpc_(pixelsPerNpc) {}
 
     ItemGeometry geometry;
 
@@ -118,12 +118,16 @@ public:
             const glm::dvec3 reference = projectPoint3(model_, t.position);
             const glm::dvec2 offset(t.annotationOffset);
             if (t.leadLine) {
-                // From the reference point (no offset) to the annotation point, in NPC on the screen.
+                // From the reference point (no offset) to the annotation point, in NPC on the screen,
+                // in the polyline attributes in force: its pattern runs over its length on screen.
                 GeometryPart lead = begin(true, PartRole::Line, t.leadLine->colour);
                 lead.offsetInNpc = true;
+                lead.lineType = t.leadLine->type;
                 lead.lineWidth = t.leadLine->width;
+                const double length =
+                    lead.lineType == LineType::Solid ? 0.0 : glm::length(offset) * pixelsPerNpc_;
                 push(reference, {}, t.leadLine->colour, glm::vec2(0.0f), 0.0f);
-                push(reference, {}, t.leadLine->colour, glm::vec2(offset), 0.0f);
+                push(reference, {}, t.leadLine->colour, glm::vec2(offset), float(length));
                 end(lead);
             }
             GeometryPart part = begin(true, PartRole::Text, colour);
@@ -250,6 +254,7 @@ private:
 
     glm::dmat4 model_;
     glm::dmat4 toPixels_;
+    double pixelsPerNpc_;
 };
 
 struct Hasher {
@@ -292,8 +297,8 @@ struct Hasher {
 
 }  // namespace
 
-ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels) {
-    Builder b(item, worldToPixels);
+ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc) {
+    Builder b(item, worldToPixels, pixelsPerNpc);
     visitPrimitive(
         [&](const auto& p) {
             using T = std::decay_t<decltype(p)>;
@@ -354,7 +359,7 @@ int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc) {
     return s > 0.0 ? 1 : s < 0.0 ? -1 : 0;
 }
 
-std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels) {
+std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc) {
     Hasher h;
     h.value(item.primitive.index());
     h.value(item.modelTransform().get());
@@ -389,6 +394,7 @@ std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels)
                 h.value(p.leadLine.has_value());
                 if (p.leadLine)
                     h.value(p.leadLine->colour), h.value(p.leadLine->type), h.value(p.leadLine->width);
+                if (p.leadLine && p.leadLine->type != LineType::Solid) h.value(pixelsPerNpc);
             } else if constexpr (!std::is_same_v<T, DrawMesh>) {  // meshes: keyed by their own buffers
                 static_assert(kUnhandledPrimitive<T>);
             }

@@ -768,10 +768,10 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
             continue;
         }
 
-        const std::uint64_t key = render::geometryKey(item, worldToPixels);
+        const std::uint64_t key = render::geometryKey(item, worldToPixels, mapping.pixelsPerNpc);
         auto it = geometry_.find(key);
         if (it == geometry_.end()) {
-            render::ItemGeometry g = render::describeItem(item, worldToPixels);
+            render::ItemGeometry g = render::describeItem(item, worldToPixels, mapping.pixelsPerNpc);
             CachedGeometry cached;
             if (!g.vertices.empty()) {
                 const VkDeviceSize bytes = g.vertices.size() * sizeof(render::RenderVertex);

@@ -71,6 +71,8 @@ public:
     static int facingNpc(const glm::dvec4& a, const glm::dvec4& b, const glm::dvec4& c);
     /// Homogeneous NPC of a world point.
     glm::dvec4 toNpc(const glm::dvec3& world) const { return worldToNpc_ * glm::dvec4(world, 1.0); }
+    /// The distance on the page between two NPC points in nominal pixels (what dashes measure).
+    double npcPixels(const glm::dvec3& a, const glm::dvec3& b) const;
     /// One bit for each half space of the view's volume that a homogeneous NPC point lies outside:
     /// a polygon or line whose points share a bit lies outside the view whole, and clipping it
     /// leaves nothing.

@@ -55,9 +55,11 @@ struct ItemGeometry {
 };
 
 /// Builds the geometry of a polyline, polymarker, fill area (set), text or curve item.
-/// worldToPixels (the view and workstation transforms) measures patterned lines on screen.
-/// A DrawMesh item gives empty geometry (meshes are uploaded as they are, see MeshGeometry).
-ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels);
+/// worldToPixels (the view and workstation transforms) measures patterned lines on screen, and
+/// pixelsPerNpc (the workstation transform's scale) an annotation's patterned lead line, whose far
+/// end is an offset in NPC. A DrawMesh item gives empty geometry (meshes are uploaded as they are,
+/// see MeshGeometry).
+ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc = 1.0);
 
 /// Index lists of a mesh: triangles, then iso-lines and the facets' edges (render/MeshEdges.h: no
 /// diagonals) as line-list pairs.
@@ -88,6 +90,6 @@ int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc);
 bool hollowOutline(const InteriorStyleSet& in, int side, glm::vec3& colour);
 
 /// A content hash of a non-mesh item and the transforms its geometry depends on, to key caches.
-std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels);
+std::uint64_t geometryKey(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc = 1.0);
 
 }  // namespace phigs::render
