@@ -25,35 +25,51 @@ static int colour_near(const Picture* p, double x, double y, const double rgb[3]
     return 0;
 }
 
+/* A random lead line: structure 1 holds one annotation "X" in `style` whose lead line (if drawn)
+ * has a random colour (rgb), a width in [width_lo, width_hi] and `linetype`; ref and offset give
+ * its way in NPC. */
+typedef struct {
+    double rgb[3];
+    Ppoint ref;
+    Pvec offset;
+} Lead;
+
+static Lead lead_structure(Pint style, Pint linetype, double width_lo, double width_hi) {
+    Lead l;
+    for (int k = 0; k < 3; ++k) l.rgb[k] = (double)(64 + next_random() % 192u) / 255.0;
+    const double angle = random_real(0.0, 6.283);
+    const double length = random_real(0.25, 0.35);
+    l.ref.x = (Pfloat)random_real(0.4, 0.6), l.ref.y = (Pfloat)random_real(0.4, 0.6);
+    l.offset.delta_x = (Pfloat)(length * cos(angle)), l.offset.delta_y = (Pfloat)(length * sin(angle));
+    Pgcolr colour;
+    colour.type = PMODEL_RGB;
+    colour.val.direct.x = (Pfloat)l.rgb[0], colour.val.direct.y = (Pfloat)l.rgb[1],
+    colour.val.direct.z = (Pfloat)l.rgb[2];
+    pdel_struct(1);
+    popen_struct(1);
+    pset_line_colr(&colour);
+    pset_linewidth((Pfloat)random_real(width_lo, width_hi));
+    pset_linetype(linetype);
+    pset_anno_char_ht(0.02f);
+    pset_anno_style(style);
+    panno_text_rel(&l.ref, &l.offset, "X");
+    pclose_struct();
+    return l;
+}
+
 static void lead_lines(void) {
     for (int round = 0; round < 8; ++round) {
         const Pint style = round % 2 ? PANNO_STYLE_LEAD_LINE : PANNO_STYLE_UNCONNECTED + 2 * (round % 4 == 2);
         const int lead = style == PANNO_STYLE_LEAD_LINE;
-        double rgb[3];
-        for (int k = 0; k < 3; ++k) rgb[k] = (double)(64 + next_random() % 192u) / 255.0;
-        const double angle = random_real(0.0, 6.283);
-        const double length = random_real(0.25, 0.35);
-        const Ppoint ref = {(Pfloat)random_real(0.4, 0.6), (Pfloat)random_real(0.4, 0.6)};
-        const Pvec offset = {(Pfloat)(length * cos(angle)), (Pfloat)(length * sin(angle))};
-        Pgcolr colour;
+        const Lead l = lead_structure(style, PLINE_SOLID, 2.0, 4.0);
         Picture p[2];
-        colour.type = PMODEL_RGB;
-        colour.val.direct.x = (Pfloat)rgb[0], colour.val.direct.y = (Pfloat)rgb[1],
-        colour.val.direct.z = (Pfloat)rgb[2];
-        pdel_struct(1);
-        popen_struct(1);
-        pset_line_colr(&colour);
-        pset_linewidth((Pfloat)random_real(2.0, 4.0));
-        pset_anno_char_ht(0.02f);
-        pset_anno_style(style);
-        panno_text_rel(&ref, &offset, "X");
-        pclose_struct();
         CHECK(draw_offscreen_and_pdf(&files, p));
         for (int i = 0; i < 2; ++i) {
             if (!p[i].rgb) continue;
             for (int k = 1; k <= 4; ++k) {
-                const double t = 0.15 * k, x = ref.x + t * offset.delta_x, y = ref.y + t * offset.delta_y;
-                const int shows = colour_near(&p[i], x, y, rgb);
+                const double t = 0.15 * k, x = l.ref.x + t * l.offset.delta_x,
+                             y = l.ref.y + t * l.offset.delta_y;
+                const int shows = colour_near(&p[i], x, y, l.rgb);
                 if (shows != lead)
                     fprintf(stderr, "  %s, style %d: at NPC (%.3f, %.3f) the line %s\n", p[i].name,
                             (int)style, x, y, shows ? "shows" : "is missing");
@@ -69,33 +85,16 @@ static void lead_lines(void) {
 static void patterned_lead_lines(void) {
     const Pint types[4] = {PLINE_DASH, PLINE_DOT, PLINE_DASH_DOT, PLINE_DASH};
     for (int round = 0; round < 4; ++round) {
-        double rgb[3];
-        for (int k = 0; k < 3; ++k) rgb[k] = (double)(64 + next_random() % 192u) / 255.0;
-        const double angle = random_real(0.0, 6.283);
-        const double length = random_real(0.25, 0.35);
-        const Ppoint ref = {(Pfloat)random_real(0.4, 0.6), (Pfloat)random_real(0.4, 0.6)};
-        const Pvec offset = {(Pfloat)(length * cos(angle)), (Pfloat)(length * sin(angle))};
-        Pgcolr colour;
+        const Lead l = lead_structure(PANNO_STYLE_LEAD_LINE, types[round], 1.0, 3.0);
         Picture p[2];
-        colour.type = PMODEL_RGB;
-        colour.val.direct.x = (Pfloat)rgb[0], colour.val.direct.y = (Pfloat)rgb[1],
-        colour.val.direct.z = (Pfloat)rgb[2];
-        pdel_struct(1);
-        popen_struct(1);
-        pset_line_colr(&colour);
-        pset_linewidth((Pfloat)random_real(1.0, 3.0));
-        pset_linetype(types[round]);
-        pset_anno_char_ht(0.02f);
-        pset_anno_style(PANNO_STYLE_LEAD_LINE);
-        panno_text_rel(&ref, &offset, "X");
-        pclose_struct();
         CHECK(draw_offscreen_and_pdf(&files, p));
         for (int i = 0; i < 2; ++i) {
             if (!p[i].rgb) continue;
             int shown = 0;
             for (int k = 0; k < 80; ++k) {
                 const double t = 0.1 + 0.8 * k / 79.0;
-                shown += colour_near(&p[i], ref.x + t * offset.delta_x, ref.y + t * offset.delta_y, rgb);
+                shown +=
+                    colour_near(&p[i], l.ref.x + t * l.offset.delta_x, l.ref.y + t * l.offset.delta_y, l.rgb);
             }
             if (shown == 0 || shown == 80)
                 fprintf(stderr, "  %s, linetype %d: %d of 80 points along the lead line show it\n", p[i].name,
