@@ -149,6 +149,83 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> paintingEdges(const std::ve
     return edges;
 }
 
+/// The facets by strongly connected component of their painting edges.
+struct Components {
+    std::vector<std::uint32_t> of;                      ///< each facet's component
+    std::vector<std::vector<std::uint32_t>> members;    ///< each component's facets
+    std::vector<std::vector<ProjectedFacet>> bspOrder;  ///< a component of several, its facets ordered
+    std::vector<std::int64_t> keys;                     ///< each component's first facet's paintKey
+    std::size_t output = 0;                             ///< the facets painted, pieces of splits included
+};
+
+/// The components of the painting edges; one of several facets (a cycle, or facets that pierce
+/// each other) is ordered by a BSP tree, its facets moved there, and then paints in a row.
+Components groupComponents(const Graph& graph, std::vector<ProjectedFacet>& facets, double pointsPerDepth,
+                           FacetOrderStats& total) {
+    Components c;
+    std::uint32_t count = 0;
+    c.of = components(graph, count);
+    c.members.resize(count);
+    for (std::uint32_t v = 0; v < facets.size(); ++v) c.members[c.of[v]].push_back(v);
+    c.bspOrder.resize(count);
+    c.keys.assign(count, 0);
+    for (std::uint32_t k = 0; k < count; ++k) {
+        if (c.members[k].size() == 1) {
+            c.keys[k] = paintKey(facets[c.members[k].front()]);
+            ++c.output;
+            continue;
+        }
+        std::vector<ProjectedFacet> group;
+        group.reserve(c.members[k].size());
+        for (std::uint32_t v : c.members[k]) group.push_back(std::move(facets[v]));
+        c.bspOrder[k] = bspBackToFront(std::move(group), pointsPerDepth, total);
+        if (!c.bspOrder[k].empty()) c.keys[k] = paintKey(c.bspOrder[k].front());
+        c.output += c.bspOrder[k].size();
+        ++total.clusters;
+    }
+    return c;
+}
+
+/// The components in an order that keeps every edge (Kahn's algorithm): of those ready, one with
+/// the last one's view and colour where there is one, else one of its view (a change of view is a
+/// change of clip in the file), else the least. The facets move out of `facets` and the groups.
+std::vector<ProjectedFacet> paintingOrder(const Graph& graph, Components& groups,
+                                          std::vector<ProjectedFacet>& facets) {
+    const std::size_t count = groups.members.size();
+    std::vector<std::uint32_t> waiting(count, 0);
+    for (std::uint32_t v = 0; v < graph.size(); ++v)
+        for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e)
+            if (groups.of[graph.targets[e]] != groups.of[v]) ++waiting[groups.of[graph.targets[e]]];
+    std::map<std::int64_t, std::vector<std::uint32_t>> ready;
+    for (std::uint32_t k = 0; k < count; ++k)
+        if (waiting[k] == 0) ready[groups.keys[k]].push_back(k);
+    std::vector<ProjectedFacet> out;
+    out.reserve(groups.output);
+    std::int64_t last = 0;
+    while (!ready.empty()) {
+        auto bucket = ready.find(last);
+        if (bucket == ready.end()) bucket = ready.lower_bound(last & ~kColourBits);
+        if (bucket == ready.end() || (bucket->first & ~kColourBits) != (last & ~kColourBits))
+            bucket = ready.begin();
+        last = bucket->first;
+        const std::uint32_t k = bucket->second.back();
+        bucket->second.pop_back();
+        if (bucket->second.empty()) ready.erase(bucket);
+        if (groups.members[k].size() == 1) {
+            out.push_back(std::move(facets[groups.members[k].front()]));
+        } else {
+            for (ProjectedFacet& f : groups.bspOrder[k]) out.push_back(std::move(f));
+            groups.bspOrder[k] = {};
+        }
+        for (std::uint32_t v : groups.members[k])
+            for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
+                const std::uint32_t d = groups.of[graph.targets[e]];
+                if (d != k && --waiting[d] == 0) ready[groups.keys[d]].push_back(d);
+            }
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets, double pointsPerDepth,
@@ -169,66 +246,8 @@ std::vector<ProjectedFacet> orderBackToFront(std::vector<ProjectedFacet> facets,
     }
     const Graph graph(facets.size(), paintingEdges(facets, overlaps, pointsPerDepth));
     overlaps = {};
-    std::uint32_t count = 0;
-    const std::vector<std::uint32_t> component = components(graph, count);
-    // Each component's facets; one of several (a cycle, or facets that pierce each other) is
-    // ordered by a BSP tree, and its facets then paint in a row.
-    std::vector<std::vector<std::uint32_t>> members(count);
-    for (std::uint32_t v = 0; v < facets.size(); ++v) members[component[v]].push_back(v);
-    std::vector<std::vector<ProjectedFacet>> bspOrder(count);
-    std::size_t output = 0;
-    for (std::uint32_t c = 0; c < count; ++c) {
-        if (members[c].size() == 1) {
-            ++output;
-            continue;
-        }
-        std::vector<ProjectedFacet> group;
-        group.reserve(members[c].size());
-        for (std::uint32_t v : members[c]) group.push_back(std::move(facets[v]));
-        bspOrder[c] = bspBackToFront(std::move(group), pointsPerDepth, total);
-        output += bspOrder[c].size();
-        ++total.clusters;
-    }
-    // The components in an order that keeps every edge (Kahn's algorithm): of those ready, one
-    // with the last one's view and colour where there is one.
-    std::vector<std::uint32_t> waiting(count, 0);
-    for (std::uint32_t v = 0; v < graph.size(); ++v)
-        for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e)
-            if (component[graph.targets[e]] != component[v]) ++waiting[component[graph.targets[e]]];
-    std::vector<std::int64_t> keys(count, 0);
-    std::map<std::int64_t, std::vector<std::uint32_t>> ready;
-    for (std::uint32_t c = 0; c < count; ++c) {
-        if (members[c].size() == 1)
-            keys[c] = paintKey(facets[members[c].front()]);
-        else if (!bspOrder[c].empty())
-            keys[c] = paintKey(bspOrder[c].front());
-        if (waiting[c] == 0) ready[keys[c]].push_back(c);
-    }
-    std::vector<ProjectedFacet> out;
-    out.reserve(output);
-    std::int64_t last = 0;
-    while (!ready.empty()) {
-        auto bucket = ready.find(last);
-        // Else the same view (a change of view is a change of clip in the file), else the least.
-        if (bucket == ready.end()) bucket = ready.lower_bound(last & ~kColourBits);
-        if (bucket == ready.end() || (bucket->first & ~kColourBits) != (last & ~kColourBits))
-            bucket = ready.begin();
-        last = bucket->first;
-        const std::uint32_t c = bucket->second.back();
-        bucket->second.pop_back();
-        if (bucket->second.empty()) ready.erase(bucket);
-        if (members[c].size() == 1) {
-            out.push_back(std::move(facets[members[c].front()]));
-        } else {
-            for (ProjectedFacet& f : bspOrder[c]) out.push_back(std::move(f));
-            bspOrder[c] = {};
-        }
-        for (std::uint32_t v : members[c])
-            for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
-                const std::uint32_t d = component[graph.targets[e]];
-                if (d != c && --waiting[d] == 0) ready[keys[d]].push_back(d);
-            }
-    }
+    Components groups = groupComponents(graph, facets, pointsPerDepth, total);
+    std::vector<ProjectedFacet> out = paintingOrder(graph, groups, facets);
     total.output = out.size();
     if (stats) *stats = total;
     return out;

@@ -21,6 +21,8 @@ struct FacetOverlaps {
     bool complete = true;  ///< false: more than `maxPairs` pairs, and the search stopped there
 };
 
+/// The facets' hulls and overlapping pairs; the search stops past `maxPairs` pairs (bounded room
+/// where facets overlap by the hundred).
 FacetOverlaps facetOverlaps(const std::vector<ProjectedFacet>& facets, std::size_t maxPairs);
 
 /// The part of the page two convex counter-clockwise polygons share (empty when they only touch).
