@@ -45,6 +45,22 @@ if hits=$(printf '%s\n' "${patterns[@]}" | grep -I -n -H -i -E -f - -- "${checke
   done <<<"$hits"
   status=1
 fi
+# The same references broken over two lines ("... as in note" / "/// 000 ...", an issue's
+# number likewise): the number
+# opens the next line, after its comment marker.
+hits=$(awk 'FNR == 1 { prev = "" }
+    { line = $0; sub(/^[ \t]*(\/\/\/?|#+|\*|--)?[ \t]*/, "", line)
+      end = tolower(prev)
+      if ((end ~ /(^|[^a-z])(seeds?|notes?)[ \t]*-?$/ && line ~ /^0[0-9][0-9]([^0-9]|$)/) ||
+          (end ~ /(^|[^a-z])issues?[ \t]*$/ && line ~ /^#?[0-9]+/))
+          print FILENAME ":" FNR ":" $0
+      prev = $0 }' "${checked[@]}")
+if [ -n "$hits" ]; then
+  while IFS= read -r hit; do
+    echo "$hit  <- a reference outside the tree (over two lines): cite the published work, or say it"
+  done <<<"$hits"
+  status=1
+fi
 if ((${#readmes[@]})); then
   while read -r lines file; do
     [ "$file" = total ] && continue

@@ -78,8 +78,8 @@ struct CurveReduction {
 /// and clamped ends: the knots that go exactly, then a search over the control point count with
 /// free-knot fits, each kept only if measureDeviation's parameter-map form finds the Hausdorff
 /// distance within the tolerance (see ReductionOptions::freeKnots for when the removal loop runs
-/// too). Otherwise the removal loop, rank / remove / approximate (Lyche and Morken, as in note
-/// 000 with its errata fixed): rank the interior knots by removal weight, take the
+/// too). Otherwise the removal loop, rank / remove / approximate (Lyche and Morken, as Marcaly's
+/// thesis of 1991 runs it, its errata fixed): rank the interior knots by removal weight, take the
 /// partitionSize least significant, group the ones that share a local window, remove each group
 /// with one local least-squares fit, and keep a removal only if the distance from the original
 /// stays within the tolerance, measured on dense samples of both curves by point inversion in
