@@ -162,7 +162,25 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
         throw GeometryError("closestPoint: the start guess is not finite");
     const SurfacePoint local = polish(p, guess);
     // An overflowing distance (control points near 1e300) gives Newton nothing to go by.
-    return std::isfinite(local.distance) ? local : closestPoint(p);
+    return std::isfinite(local.distance) ? beforeJump(local) : closestPoint(p);
+}
+
+SurfacePoint SurfaceProjector::beforeJump(SurfacePoint best) const {
+    // Only a point on a patch's upper edge can be one evaluate() does not give back: where the
+    // knot line is a jump, the parameter just below it reaches the patch before.
+    const double tolerance = 1e-9 * tree_.scale();
+    auto givesBack = [&](const glm::dvec2& uv) {
+        return glm::length(tree_.evaluate(uv.x, uv.y, 0).point - best.point) <= tolerance;
+    };
+    if (givesBack(best.uv)) return best;
+    const double below = -std::numeric_limits<double>::infinity();
+    const double u = std::nextafter(best.uv.x, below), v = std::nextafter(best.uv.y, below);
+    for (const glm::dvec2 uv : {glm::dvec2(u, best.uv.y), glm::dvec2(best.uv.x, v), glm::dvec2(u, v)})
+        if (uv.x >= tree_.domainStartU() && uv.y >= tree_.domainStartV() && givesBack(uv)) {
+            best.uv = uv;
+            break;
+        }
+    return best;
 }
 
 glm::dvec2 SurfaceProjector::patchStart(std::size_t index, const glm::dvec3& p, glm::dvec2 start) const {
@@ -580,7 +598,7 @@ SurfacePoint SurfaceProjector::closestPoint(const glm::dvec3& p) const {
     detail::checkQueryPoint(p, "closestPoint");
     const SurfacePoint best = Search(*this, p).run();
     detail::checkDistance(best.distance, "closestPoint");
-    return best;
+    return beforeJump(best);
 }
 
 SurfacePoint closestPoint(const Surface& surface, const glm::dvec3& p) {

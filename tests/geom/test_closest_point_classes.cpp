@@ -414,6 +414,29 @@ TEST_CASE("closest point is exact on random mixes: degrees 1-5, any multiplicity
     CHECK(failures == 0);
 }
 
+TEST_CASE("closest point on surfaces that jump across knot lines gives back its point",
+          "[geom][inversion][classes]") {
+    // A knot of multiplicity degree + 1 is a jump: evaluate() at it gives the patch after, so an
+    // answer on the edge of the patch before must carry the parameter just below the knot.
+    int failures = 0;
+    for (int seed = 0; seed < 40; ++seed) {
+        std::mt19937 rng(static_cast<unsigned>(4000 + seed));
+        std::uniform_int_distribution<int> degree(1, 5), extra(0, 3);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        const int p = degree(rng), q = degree(rng);
+        // One or two jumps along u, v or both (knotsWith: `repeat` knots of multiplicity degree + 1).
+        const int jumpsU = seed % 3 != 1 ? 1 + seed % 2 : 0, jumpsV = seed % 3 != 0 ? 1 + seed % 2 : 0;
+        const std::size_t nu = static_cast<std::size_t>((p + 1) * (1 + jumpsU) + extra(rng));
+        const std::size_t nv = static_cast<std::size_t>((q + 1) * (1 + jumpsV) + extra(rng));
+        const std::vector<double> weights =
+            unit(rng) < 0.4 ? wideWeights(rng, nu * nv) : std::vector<double>{};
+        const Surface s(p, q, knotsWith(rng, p, nu, p + 1, jumpsU), knotsWith(rng, q, nv, q + 1, jumpsV), nu,
+                        nv, randomNet(rng, nu, nv, 1.5), weights);
+        failures += surfaceFailures(rng, s, 100);
+    }
+    CHECK(failures == 0);
+}
+
 TEST_CASE("closest point on surfaces collapsed to a curve is the curve's", "[geom][inversion][classes]") {
     // Every row (or column) of the net one point, the weights a product a_i b_j: the surface is a
     // curve swept along v (u) without moving, and every (u, v) over the nearest curve point is a
