@@ -62,9 +62,18 @@ SurfacePoint polishWith(Eval&& eval, double ua, double ub, double va, double vb,
         // of f; further away a backtracking search keeps f from growing.
         const bool small = std::abs(du) < 1e-6 * (ub - ua) && std::abs(dv) < 1e-6 * (vb - va);
         const double before = f;
+        // Where the full step leaves the region, its crossing of the border is tried next (then
+        // halvings below it): Newton lands on the border, held there from the next step on,
+        // instead of halving towards it a step at a time (a region far narrower than the step,
+        // deep in a patch: 27 steps and 640 evaluations where 5 do).
+        double border = 1.0;
+        if (du < 0.0 && uv.x > ua) border = std::min(border, (ua - uv.x) / du);
+        if (du > 0.0 && uv.x < ub) border = std::min(border, (ub - uv.x) / du);
+        if (dv < 0.0 && uv.y > va) border = std::min(border, (va - uv.y) / dv);
+        if (dv > 0.0 && uv.y < vb) border = std::min(border, (vb - uv.y) / dv);
         double step = 1.0;
         bool moved = false;
-        for (int k = 0; k < 40; ++k, step *= 0.5) {
+        for (int k = 0; k < 40; ++k, step *= (k == 1 && border < 0.5 ? border : 0.5)) {
             const glm::dvec2 next(std::clamp(uv.x + step * du, ua, ub), std::clamp(uv.y + step * dv, va, vb));
             if (next == uv) break;
             const BezierPatchTree::PatchPoint en = eval(next.x, next.y);
