@@ -37,6 +37,7 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -86,6 +87,14 @@ std::vector<std::pair<std::string, Curve>> brokenCurves() {
     add("negative weight", true, [](Curve& c) { c.weights[2] = -1.0; });
     add("subnormal weight", true, [](Curve& c) { c.weights[3] = 1e-310; });
     add("weights for too few points", true, [](Curve& c) { c.weights.resize(3); });
+    add("NaN weight", true, [](Curve& c) { c.weights[2] = kNaN; });
+    add("infinite weight", true, [](Curve& c) { c.weights[3] = kInf; });
+    add("infinite knots", false, [](Curve& c) { std::fill(c.knots.begin() + 6, c.knots.end(), kInf); });
+    add("knot above degree + 1 times", false, [](Curve& c) {
+        for (std::size_t i = 3; i <= 7; ++i) c.knots[i] = 0.3;
+        c.knots[8] = 0.3;
+    });
+    add("degree above the points", false, [](Curve& c) { c.degree = 8; });
     return out;
 }
 
@@ -117,6 +126,10 @@ std::vector<std::pair<std::string, Surface>> brokenSurfaces() {
     add("zero weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = 0.0; });
     add("subnormal weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = 1e-310; });
     add("weights for too few points", true, [](Surface& s) { s.weights.resize(5); });
+    add("NaN weight", true, [](Surface& s) { s.weights[2 * 4 + 1] = kNaN; });
+    add("infinite v knots", false, [](Surface& s) { std::fill(s.knotsV.begin() + 4, s.knotsV.end(), kInf); });
+    add("empty v domain", false, [](Surface& s) { s.knotsV.assign(s.knotsV.size(), 0.5); });
+    add("u degree above the points", false, [](Surface& s) { s.degreeU = 6; });
     return out;
 }
 
