@@ -145,7 +145,7 @@ CurvePoint CurveProjector::beforeJump(CurvePoint best, std::size_t piece) const 
     // it: the end of the piece before is reached from just below the knot.
     if (piece + 1 < pieces_.size() && best.u >= pieces_[piece].end &&
         glm::length(evaluate(piece + 1, best.u).c - best.point) > 1e-9 * scale_)
-        best.u = std::nextafter(best.u, -std::numeric_limits<double>::infinity());
+        best.u = std::nextafter(pieces_[piece].end, -std::numeric_limits<double>::infinity());
     return best;
 }
 
@@ -212,7 +212,9 @@ CurvePoint CurveProjector::closestPoint(const glm::dvec3& p) const {
         const Segment segment = segments[id];
         const Piece& piece = pieces_[segment.piece];
         const double width = piece.end - piece.start;
-        const double ua = piece.start + segment.s0 * width, ub = piece.start + segment.s1 * width;
+        // A segment at the piece's end ends exactly there (start + 1.0 * width can round past it).
+        const double ua = piece.start + segment.s0 * width;
+        const double ub = segment.s1 >= 1.0 ? piece.end : piece.start + segment.s1 * width;
         const bool holdsBest =
             std::isfinite(best.distance) && bestPiece == segment.piece && best.u >= ua && best.u <= ub;
         const glm::dvec4* polygon = pool.data() + segment.polygon;

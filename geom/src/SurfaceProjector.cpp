@@ -481,10 +481,11 @@ private:
         // The best may have improved since the region was queued.
         if (region.depth > 0 && fartherThanBest(region)) return;
         const BezierPatchTree::Patch& patch = tree_.patches()[region.patch];
+        // A region at the patch's far edge ends exactly there (u0 + 1.0 * width can round past it).
         const double ua = patch.u0 + region.s0 * (patch.u1 - patch.u0);
-        const double ub = patch.u0 + region.s1 * (patch.u1 - patch.u0);
+        const double ub = region.s1 >= 1.0 ? patch.u1 : patch.u0 + region.s1 * (patch.u1 - patch.u0);
         const double va = patch.v0 + region.t0 * (patch.v1 - patch.v0);
-        const double vb = patch.v0 + region.t1 * (patch.v1 - patch.v0);
+        const double vb = region.t1 >= 1.0 ? patch.v1 : patch.v0 + region.t1 * (patch.v1 - patch.v0);
         if (region.flat == Flat::alongV) return visitFlat(region, bound, {ua, va}, {ub, va});
         if (region.flat == Flat::alongU) return visitFlat(region, bound, {ua, va}, {ua, vb});
         const bool holdsBest = std::isfinite(best_.distance) && bestIn(region, ua, ub, va, vb);

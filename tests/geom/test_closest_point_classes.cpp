@@ -648,6 +648,53 @@ TEST_CASE("closest point on curves of degree 1 to 7, with corners, wide weights,
     CHECK(failures == 0);
 }
 
+TEST_CASE("closest point on curves that jump at knots gives back its point", "[geom][inversion][classes]") {
+    // A knot of multiplicity degree + 1 is a jump: the end of the piece before it is reached from
+    // just below the knot. Each curve here jumps at t after a piece [s, t] whose width, s + (t - s),
+    // rounds past t (a search that took that for the piece's end answered with the knot itself,
+    // whose evaluation is the piece after); half the queries lie just beyond that piece's end.
+    std::mt19937 rng(707);
+    std::uniform_real_distribution<double> c(-1.0, 1.0), unit(0.0, 1.0), early(0.02, 0.2), late(0.55, 0.9);
+    const int kTrials = membersForBuild(120);
+    int failures = 0;
+    for (int k = 0; k < 30; ++k) {
+        const int degree = 1 + k % 5;
+        const auto p1 = static_cast<std::size_t>(degree) + 1;
+        double s = early(rng), t = late(rng);
+        // (Where s's last bits make t - s exact for every t near, another s.)
+        for (int tries = 1; !(s + (t - s) > t); ++tries) {
+            t = std::nextafter(t, 1.0);
+            if (tries % 64 == 0) s = early(rng);
+        }
+        std::vector<double> knots(p1, 0.0);
+        knots.push_back(s);
+        knots.insert(knots.end(), p1, t);
+        knots.insert(knots.end(), p1, 1.0);
+        const std::size_t count = knots.size() - p1;
+        std::vector<glm::dvec3> pts;
+        for (std::size_t i = 0; i < count; ++i) pts.push_back({c(rng), c(rng), c(rng)});
+        const Curve curve(degree, knots, pts, k % 2 == 1 ? wideWeights(rng, count) : std::vector<double>{});
+        const CurveProjector projector(curve);
+        const glm::dvec3 end = evaluate(curve, std::nextafter(t, 0.0));
+        const glm::dvec3 along = end - evaluate(curve, t - 0.01 * (t - s));
+        for (int trial = 0; trial < kTrials; ++trial) {
+            glm::dvec3 p{1.5 * c(rng), 1.5 * c(rng), 1.5 * c(rng)};
+            if (trial % 2 == 1 && glm::length(along) > 0.0)
+                p = end + 0.05 * glm::normalize(along) + 0.01 * glm::dvec3{c(rng), c(rng), c(rng)};
+            const CurvePoint q = projector.closestPoint(p);
+            REQUIRE(glm::length(evaluate(curve, q.u) - q.point) < 1e-9);
+            REQUIRE(std::abs(glm::length(q.point - p) - q.distance) < 1e-12);
+            const double reference = referenceDistance(curve, p);
+            if (q.distance > reference + 1e-9) {
+                ++failures;
+                WARN("curve " << k << " query (" << p.x << ", " << p.y << ", " << p.z << "): " << q.distance
+                              << " at " << q.u << ", reference " << reference);
+            }
+        }
+    }
+    CHECK(failures == 0);
+}
+
 TEST_CASE("closest point on rational curves whose weights jump by four decades",
           "[geom][inversion][classes]") {
     // A quintic whose weight jumps from about 0.02 to 54 at a piece end: the curve runs through
