@@ -75,9 +75,9 @@ struct AllRecords {
 glm::dmat4 compose(const glm::dmat4& current, const TransformElement& t) {
     switch (t.composition) {
         case Composition::Preconcatenate:
-            return t.matrix * current;
-        case Composition::Postconcatenate:
             return current * t.matrix;
+        case Composition::Postconcatenate:
+            return t.matrix * current;
         case Composition::Replace:
             break;
     }

@@ -196,8 +196,8 @@ private:
         const glm::dmat4 m = s.global * s.local;
         if (const auto* t = std::get_if<TransformElement>(&e)) {
             s.local = t->composition == Composition::Replace          ? t->matrix
-                      : t->composition == Composition::Preconcatenate ? t->matrix * s.local
-                                                                      : s.local * t->matrix;
+                      : t->composition == Composition::Preconcatenate ? s.local * t->matrix
+                                                                      : t->matrix * s.local;
         } else if (const auto* n = std::get_if<NameSetElement>(&e)) {
             for (int name : n->names) n->add ? void(s.names.insert(name)) : void(s.names.erase(name));
         } else if (const auto* c = std::get_if<ModelClipElement>(&e)) {

@@ -101,11 +101,31 @@ TEST_CASE("modelling transforms: composition order, global and inheritance", "[t
     s.ws->postStructure(1, 0);
     const DrawList& list = s.ws->display();
     REQUIRE(list.items.size() == 4);
-    CHECK(list.items[0].modelTransform().get() == r * t);  // preconcatenate: R applied after T
-    CHECK(list.items[1].modelTransform().get() == t * r);
-    // the child's global is the parent's composite (G * (T * R)), its local starts as identity
-    CHECK(list.items[2].modelTransform().get() == (g * (t * r)) * t);
-    CHECK(list.items[3].modelTransform().get() == g * (t * r));  // restored
+    CHECK(list.items[0].modelTransform().get() == t * r);  // preconcatenate: R applied first
+    CHECK(list.items[1].modelTransform().get() == r * t);  // postconcatenate: R applied last
+    // the child's global is the parent's composite (G * (R * T)), its local starts as identity
+    CHECK(list.items[2].modelTransform().get() == (g * (r * t)) * t);
+    CHECK(list.items[3].modelTransform().get() == g * (r * t));  // restored
+}
+
+TEST_CASE("preconcatenate applies the new matrix first, as PHIGS programs compose parts", "[traverse]") {
+    // REPLACE by a translation, then PRECONCATENATE a scale: a part is scaled in its own
+    // coordinates, then placed (PEX and PHIGS implementations: L' = L * T, column vectors).
+    Scene s;
+    const glm::dmat4 place = glm::translate(glm::dmat4(1.0), {0.5, 0.5, 0});
+    const glm::dmat4 grow = glm::scale(glm::dmat4(1.0), {2, 2, 1});
+    s.build(1, {localTransformation3(place, Composition::Replace),
+                localTransformation3(grow, Composition::Preconcatenate), line,
+                localTransformation3(grow, Composition::Replace),
+                localTransformation3(place, Composition::Postconcatenate), line});
+    s.ws->postStructure(1, 0);
+    const DrawList& list = s.ws->display();
+    REQUIRE(list.items.size() == 2);
+    // (0.1, 0.1) scaled to (0.2, 0.2), then moved to (0.7, 0.7), both ways of writing it.
+    for (std::size_t i = 0; i < 2; ++i) {
+        const glm::dvec4 corner = list.items[i].modelTransform().get() * glm::dvec4(0.1, 0.1, 0, 1);
+        CHECK(glm::length(glm::dvec3(corner) - glm::dvec3(0.7, 0.7, 0)) < 1e-12);
+    }
 }
 
 TEST_CASE("name sets: invisibility, highlighting and pick filters", "[traverse]") {

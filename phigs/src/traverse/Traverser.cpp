@@ -250,9 +250,9 @@ constexpr std::size_t kSpareSegments = 64;
 glm::dmat4 compose(const glm::dmat4& current, const TransformElement& t) {
     switch (t.composition) {
         case Composition::Preconcatenate:
-            return t.matrix * current;
-        case Composition::Postconcatenate:
             return current * t.matrix;
+        case Composition::Postconcatenate:
+            return t.matrix * current;
         case Composition::Replace:
             break;
     }

@@ -417,8 +417,9 @@ struct LightSourceStateAttribute {
 
 /// How a modelling transform combines with the current one (ISO 9592 composition types).
 enum class Composition : int { Preconcatenate = 0, Postconcatenate = 1, Replace = 2 };
-/// SET LOCAL / GLOBAL MODELLING TRANSFORMATION (3). Preconcatenate: M' = T * M (T applied after
-/// the current one, column vectors); postconcatenate: M' = M * T; replace: M' = T.
+/// SET LOCAL / GLOBAL MODELLING TRANSFORMATION (3). Preconcatenate: M' = M * T (T applied to the
+/// coordinates first, column vectors, as PHIGS and PEX implementations compose it);
+/// postconcatenate: M' = T * M; replace: M' = T.
 struct TransformElement {
     ElementType type = ElementType::LocalModellingTransformation3;
     glm::dmat4 matrix{1.0};
