@@ -129,6 +129,28 @@ TEST_CASE("pick: a tilted fill area reports the depth of its plane under the ape
     CHECK(hits[0].depth == Approx(0.25).margin(1e-12));
 }
 
+TEST_CASE("pick: fill areas whose signed areas cancel are picked on their plane", "[pick]") {
+    // A tilted bow-tie (z = x) and two squares wound against each other: Newell's normal cancels,
+    // the even-odd rule fills both, so they are picked, at the depth of their plane.
+    DrawList list = unitList();
+    DrawFillArea bowTie;
+    bowTie.contours = {{{0.1, 0.1, 0.1}, {0.5, 0.5, 0.5}, {0.5, 0.1, 0.5}, {0.1, 0.5, 0.1}}};
+    bowTie.interior.edit().style = InteriorStyle::Solid;
+    list.items.push_back(item(bowTie, {{1, 1, 0}}));
+    DrawFillArea pair;
+    pair.contours = {{{0.6, 0.6, 0.4}, {0.7, 0.6, 0.4}, {0.7, 0.7, 0.4}, {0.6, 0.7, 0.4}},
+                     {{0.8, 0.6, 0.4}, {0.8, 0.7, 0.4}, {0.9, 0.7, 0.4}, {0.9, 0.6, 0.4}}};
+    pair.interior.edit().style = InteriorStyle::Solid;
+    list.items.push_back(item(pair, {{2, 1, 0}}));
+    const Picker picker;
+    const auto lobe = picker.hits(list, {0.15, 0.3}, 0.001);  // the left lobe, away from its edges
+    REQUIRE(lobe.size() == 1);
+    CHECK(lobe[0].depth == Approx(0.15).margin(1e-12));
+    CHECK(picker.pick(list, {0.3, 0.15}, {0.001}).status == InputStatus::None);  // between the lobes
+    CHECK(picker.pick(list, {0.65, 0.65}, {0.001}).path.front().structureId == 2);
+    CHECK(picker.pick(list, {0.85, 0.65}, {0.001}).path.front().structureId == 2);
+}
+
 TEST_CASE("pick: polymarkers are hit within the aperture widened by the marker size", "[pick]") {
     DrawList list = unitList();
     DrawPolymarker m;

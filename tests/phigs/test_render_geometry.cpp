@@ -233,6 +233,49 @@ TEST_CASE("describe: fill area sets, markers and patterned lines become world ge
     CHECK(geometryKey(item, glm::dmat4(1.0)) == geometryKey(item, toPixels));
 }
 
+TEST_CASE("describe: fill areas whose signed areas cancel are filled on their own plane", "[render][unit]") {
+    // A bow-tie, and two equal squares wound against each other: Newell's normal sums signed
+    // areas to nothing (or to rounding noise, under a rotation), though the even-odd rule fills
+    // both; each is placed on random planes and must fill its area there.
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> c(-1.0, 1.0), angle(0.0, 6.283185307179586);
+    struct Shape {
+        std::vector<std::vector<glm::dvec3>> contours;
+        double area;
+    };
+    const std::vector<Shape> shapes{
+        {{{{0, 0, 0}, {0.3, 0.3, 0}, {0.3, 0, 0}, {0, 0.3, 0}}}, 2 * 0.5 * 0.3 * 0.15},
+        {{{{0, 0, 0}, {0.25, 0, 0}, {0.25, 0.25, 0}, {0, 0.25, 0}},
+          {{0.5, 0, 0}, {0.5, 0.25, 0}, {0.75, 0.25, 0}, {0.75, 0, 0}}},
+         2 * 0.25 * 0.25},
+        {{{{0.1, 0.1, 0}, {0.7, 0.1, 0}, {0.7, 0.6, 0}, {0.1, 0.6, 0}}}, 0.3}};
+    for (int trial = 0; trial < 40; ++trial) {
+        const Shape& shape = shapes[static_cast<std::size_t>(trial) % shapes.size()];
+        const glm::dvec3 axis = glm::normalize(glm::dvec3(c(rng), c(rng), c(rng)) + glm::dvec3(0, 0, 1e-3));
+        const glm::dmat4 model = glm::translate(glm::dmat4(1.0), {c(rng), c(rng), c(rng)}) *
+                                 glm::rotate(glm::dmat4(1.0), angle(rng), axis);
+        DrawItem item;
+        DrawFillArea fill;
+        fill.contours = shape.contours;
+        fill.interior.edit().style = InteriorStyle::Solid;
+        item.primitive = fill;
+        item.context.edit().modelTransform.edit() = model;
+        INFO("trial " << trial);
+        const glm::dvec3 planeNormal = glm::normalize(glm::dvec3(model * glm::dvec4(0, 0, 1, 0)));
+        const glm::dvec4 plane = fillAreaPlane(fill, model);
+        CHECK(std::abs(glm::dot(glm::dvec3(plane), planeNormal)) == Approx(1.0).margin(1e-9));
+        const ItemGeometry g = describeItem(item, glm::dmat4(1.0));
+        REQUIRE(g.parts.size() == 1);
+        double area = 0.0;
+        for (std::uint32_t i = g.parts[0].first; i + 2 < g.parts[0].first + g.parts[0].count; i += 3) {
+            const glm::dvec3 a(g.vertices[i].position), b(g.vertices[i + 1].position),
+                c3(g.vertices[i + 2].position);
+            area += 0.5 * glm::length(glm::cross(b - a, c3 - a));
+        }
+        CHECK(area == Approx(shape.area).epsilon(1e-4));
+    }
+}
+
 TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern along its whole length",
           "[render][unit]") {
     std::mt19937 rng(5821);

@@ -172,23 +172,21 @@ bool insideEvenOdd(glm::dvec2 p, const std::vector<std::vector<Projected>>& cont
     return inside;
 }
 
-/// Depth at (x, y) of the plane through the contours (Newell's normal in NPC); nullopt when
+/// Depth at (x, y) of the plane through the contours (render::contoursNormal in NPC); nullopt when
 /// the plane is seen edge on.
 std::optional<double> planeDepth(glm::dvec2 p, const std::vector<std::vector<Projected>>& contours) {
-    glm::dvec3 normal(0.0), centroid(0.0);
+    std::vector<std::vector<glm::dvec3>> npc;
+    glm::dvec3 centroid(0.0);
     std::size_t count = 0;
     for (const auto& c : contours) {
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const glm::dvec3& a = c[i].npc;
-            const glm::dvec3& b = c[(i + 1) % c.size()].npc;
-            normal +=
-                glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-            centroid += a;
-            ++count;
-        }
+        npc.emplace_back();
+        for (const Projected& q : c) npc.back().push_back(q.npc), centroid += q.npc, ++count;
     }
     if (count == 0) return std::nullopt;
     centroid /= static_cast<double>(count);
+    // As the renderers find the plane (where signed areas cancel too: a bow-tie, contours wound
+    // against each other).
+    const glm::dvec3 normal = render::contoursNormal(npc);
     const double len = glm::length(normal);
     if (!(len > 0) || std::abs(normal.z) < 1e-12 * len) return std::nullopt;
     return centroid.z - (normal.x * (p.x - centroid.x) + normal.y * (p.y - centroid.y)) / normal.z;

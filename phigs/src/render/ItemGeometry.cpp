@@ -18,6 +18,7 @@
 #include <span>
 #include <type_traits>
 #include <unordered_set>
+#include <vector>
 
 namespace phigs::render {
 namespace {
@@ -319,19 +320,73 @@ ItemGeometry describeItem(const DrawItem& item, const glm::dmat4& worldToPixels,
     return std::move(b.geometry);
 }
 
+namespace {
+
+/// Newell's normal of a closed contour: twice its area, projected, along its plane's normal.
+glm::dvec3 newellNormal(const std::vector<glm::dvec3>& points) {
+    glm::dvec3 normal(0.0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec3& a = points[i];
+        const glm::dvec3& b = points[(i + 1) % points.size()];
+        normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    return normal;
+}
+
+/// The normal of the plane through three of the points spread farthest apart (a, the point
+/// farthest from a, the point farthest from the line through both); zero for collinear points.
+glm::dvec3 spreadNormal(const std::vector<glm::dvec3>& points) {
+    const glm::dvec3 a = points.front();
+    glm::dvec3 b = a;
+    for (const glm::dvec3& q : points)
+        if (glm::distance(q, a) > glm::distance(b, a)) b = q;
+    glm::dvec3 normal(0.0);
+    for (const glm::dvec3& q : points) {
+        const glm::dvec3 n = glm::cross(b - a, q - a);
+        if (glm::length(n) > glm::length(normal)) normal = n;
+    }
+    return normal;
+}
+
+}  // namespace
+
+glm::dvec3 contoursNormal(const std::vector<std::vector<glm::dvec3>>& contours) {
+    std::vector<glm::dvec3> all;
+    glm::dvec3 normal(0.0), largest(0.0);
+    for (const auto& contour : contours) {
+        const glm::dvec3 n = newellNormal(contour);
+        normal += n;
+        if (glm::length(n) > glm::length(largest)) largest = n;
+        all.insert(all.end(), contour.begin(), contour.end());
+    }
+    if (all.size() < 3) return glm::dvec3(0.0);
+    glm::dvec3 lo = all.front(), hi = all.front();
+    for (const glm::dvec3& q : all) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    // Newell's normal is a sum of signed areas: contours wound against each other, or the lobes
+    // of a bow-tie, cancel in it (to nothing, or to rounding noise pointing anywhere), though the
+    // even-odd rule fills them. There the largest contour's normal, else the plane through the
+    // points spread farthest apart, takes its place (turned the way what is left of Newell's
+    // points, which for a thin sliver is the true winding).
+    const double size = glm::dot(hi - lo, hi - lo), enough = 1e-6 * size;
+    if (!(glm::length(normal) > enough)) {
+        const glm::dvec3 noise = normal;
+        normal = glm::length(largest) > enough ? largest : spreadNormal(all);
+        if (glm::dot(normal, noise) < 0.0) normal = -normal;
+    }
+    return glm::length(normal) > 1e-12 * size ? normal : glm::dvec3(0.0);
+}
+
 glm::dvec4 fillAreaPlane(const DrawFillArea& fill, const glm::dmat4& model) {
-    glm::dvec3 normal(0.0), centre(0.0);
+    std::vector<std::vector<glm::dvec3>> world;
+    glm::dvec3 centre(0.0);
     std::size_t count = 0;
-    for (const auto& contour : fill.contours)
-        for (std::size_t i = 0; i < contour.size(); ++i) {
-            const glm::dvec3 a = projectPoint3(model, contour[i]),
-                             b = projectPoint3(model, contour[(i + 1) % contour.size()]);
-            normal +=
-                glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-            centre += a;
-            ++count;
-        }
-    if (count < 3 || !(glm::length(normal) > 0.0)) return glm::dvec4(0.0);
+    for (const auto& contour : fill.contours) {
+        world.emplace_back();
+        for (const glm::dvec3& q : contour) world.back().push_back(projectPoint3(model, q));
+        for (const glm::dvec3& q : world.back()) centre += q, ++count;
+    }
+    glm::dvec3 normal = contoursNormal(world);
+    if (!(glm::length(normal) > 0.0)) return glm::dvec4(0.0);
     normal = glm::normalize(normal);
     if (glm::length(fill.facetNormal) > 0.0) {
         const glm::dvec3 given =

@@ -76,10 +76,14 @@ MeshIndices meshIndices(const MeshData& mesh);
 std::vector<RenderVertex> meshVertices(const MeshData& mesh);
 
 /// A fill area's world plane (unit normal, -normal . point), positive on its front: the side
-/// Newell's normal of the world contours points to (even for concave outlines), turned to the
-/// given facet normal; zero when the contours span no plane. The renderers wind its triangles
-/// counter-clockwise about that normal.
+/// Newell's normal of the world contours points to (even for concave outlines; where their signed
+/// areas cancel, as in a bow-tie or contours wound against each other, the largest contour's or
+/// the plane of the points spread farthest apart), turned to the given facet normal; zero when
+/// the contours span no plane. The renderers wind its triangles counter-clockwise about it.
 glm::dvec4 fillAreaPlane(const DrawFillArea& fill, const glm::dmat4& model);
+/// The normal (not unit) of the plane closed contours lie on, as fillAreaPlane finds it (Newell's,
+/// or where signed areas cancel the largest contour's or the points' spread); zero for none.
+glm::dvec3 contoursNormal(const std::vector<std::vector<glm::dvec3>>& contours);
 /// The side of a world plane (positive on its front) a view shows: +1 the front, -1 the back, 0
 /// edge on. worldToNpc: the view's mapping times its orientation (the viewer is at NPC z = +inf).
 int sideShown(const glm::dvec4& plane, const glm::dmat4& worldToNpc);
