@@ -114,6 +114,31 @@ TEST_CASE("views: four views with their own orientation, mapping and clip limits
     requireNoValidationMessages(context);
 }
 
+TEST_CASE("views: every entry of the view table can be used up to the last one", "[render][views]") {
+    // The workstation types' view tables hold 32 entries: a view at index 31 draws (with the
+    // entries below it defined or not) as view 1 does.
+    vk::Context context(lavapipeWithValidation());
+    {
+        vk::ImageTarget ws(context, 64, 64);
+        for (const int index : {1, 16, 31}) {
+            DrawList list = emptyScene();
+            list.views.assign(static_cast<std::size_t>(index) + 1, DrawView{});
+            DrawView& view = list.views.back();
+            view.mapping = parallelMapping(1.0, {0.0, 0.0, 0.0}, {0.5, 0.5, 1.0});  // the lower left quarter
+            DrawPolyline cross;
+            cross.points = {{-1, -1, 0}, {1, 1, 0}};
+            cross.style.edit().colour = {1, 1, 0};
+            cross.style.edit().width = 3.0f;
+            list.items.push_back(item(cross, index));
+            INFO("view " << index);
+            const Image image = ws.draw(list);
+            CHECK(at(image, 16, 48).r > 200);  // on the diagonal of the lower left quarter
+            CHECK(near(at(image, 48, 16), 25, 25, 25));
+        }
+    }
+    requireNoValidationMessages(context);
+}
+
 TEST_CASE("workstation window and viewport: zoom into NPC and map isotropically", "[render][views]") {
     DrawList list = emptyScene();
     list.windowMin = {0.0, 0.0, 0.0};

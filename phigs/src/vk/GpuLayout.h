@@ -7,7 +7,9 @@
 
 namespace phigs::vk::gpu {
 
-inline constexpr int kMaxViews = 16;
+/// Views a frame may use: each takes a run of the run buffer (its view alone). The workstation
+/// types' view tables hold 32; a larger table is allowed up to this.
+inline constexpr int kMaxViews = 1024;
 inline constexpr int kMaxLights = 64;
 inline constexpr int kMaxLightSets = 16;
 inline constexpr int kMaxCues = 16;
