@@ -132,6 +132,35 @@ TEST_CASE("paths are at least two references: a root has no ancestors, a leaf no
     CHECK(errorOf([&] { store.pathsToDescendants(110, top, 0); }) == errors::StructureDoesNotExist);
 }
 
+TEST_CASE("a NURBS curve's parameter range is an interval inside its domain or the whole of it",
+          "[store][errors]") {
+    // A range past the domain was taken, and every traversal after it threw (the workstation drew
+    // nothing again); a reversed one drew the whole curve.
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    const geom::Curve curve(2, {0, 0, 0, 0.5, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 1, 0}});
+    store.openStructure(1);
+    for (const auto& range : std::vector<std::pair<double, double>>{{-0.5, 0.5}, {0.5, 1.5}, {0.8, 0.2}}) {
+        const NurbsCurveElement e{curve, range.first, range.second};
+        INFO("range " << range.first << " .. " << range.second);
+        CHECK(errorOf([&] { store.insert(e); }) == errors::InvalidElementData);
+    }
+    CHECK(store.elementCount(1) == 0);
+    store.insert(NurbsCurveElement{curve, 0.0, 0.0});          // the whole domain
+    store.insert(NurbsCurveElement{curve, 0.25, 0.75});        // a part of it
+    store.insert(NurbsCurveElement{curve, 0.5, 1.0 + 1e-15});  // a rounding past its end
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    ws.postStructure(1, 0.5);
+    const DrawList& list = ws.display();
+    REQUIRE(list.items.size() == 3);
+    // The last draws from C(0.5) to C(1), the curve's end point.
+    const auto& points = primitiveAs<DrawCurve>(list.items[2].primitive).points;
+    REQUIRE(points.size() >= 2);
+    CHECK(glm::length(points[points.size() - 1] - glm::dvec3(3, 1, 0)) < 1e-12);
+}
+
 TEST_CASE("an element with a value that is not finite is refused, whatever its type", "[store][errors]") {
     StructureStore store;
     store.openStructure(1);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <span>
 #include <type_traits>
 
@@ -156,6 +157,23 @@ std::string checkCurve(const geom::Curve& curve) {
     } catch (const std::exception& e) {
         return e.what();
     }
+    return {};
+}
+
+/// A NURBS curve's parameter range: equal ends (the whole domain), or start below end, both
+/// inside the domain (a rounding's worth past an end is drawn to the end).
+std::string checkCurveRange(const NurbsCurveElement& e) {
+    const double a = e.curve.domainStart(), b = e.curve.domainEnd();
+    const double slack = 1e-12 * std::max({1.0, std::abs(a), std::abs(b)});
+    if (e.rangeStart == e.rangeEnd) return {};
+    auto number = [](double x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", x);
+        return std::string(text);
+    };
+    if (!(e.rangeStart < e.rangeEnd) || e.rangeStart < a - slack || e.rangeEnd > b + slack)
+        return "parameter range [" + number(e.rangeStart) + ", " + number(e.rangeEnd) +
+               "] is not an interval inside the domain [" + number(a) + ", " + number(b) + "]";
     return {};
 }
 
@@ -321,7 +339,8 @@ std::string validatePayload(const Element& element) {
             } else if constexpr (std::is_same_v<E, CellArrayElement>) {
                 return checkCells(e.columns, e.rows, e.colourIndices.size());
             } else if constexpr (std::is_same_v<E, NurbsCurveElement>) {
-                return checkCurve(e.curve);
+                if (auto r = checkCurve(e.curve); !r.empty()) return r;
+                return checkCurveRange(e);
             } else if constexpr (std::is_same_v<E, NurbsSurfaceElement>) {
                 try {
                     geom::validate(e.surface);

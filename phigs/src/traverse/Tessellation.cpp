@@ -142,6 +142,8 @@ std::vector<glm::dvec3> tessellateCurve(const geom::Curve& curve, double start, 
     if (whole && chordal(criteria, value))
         return geom::tessellate(curve, boundedTolerance(curve.points, value));
     if (!(end > start)) start = curve.domainStart(), end = curve.domainEnd();
+    // The store refuses a range past the domain; a rounding's worth past it draws to its end.
+    start = std::max(start, curve.domainStart()), end = std::min(end, curve.domainEnd());
     int perSpan = segmentsPerSpan(curve.points, criteria, value);
     std::vector<glm::dvec3> points;
     for (double u : samples(spanBreaks(curve.knots, start, end), perSpan))

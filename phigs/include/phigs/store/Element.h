@@ -202,7 +202,7 @@ struct CellArrayElement {
 /// NON-UNIFORM B-SPLINE CURVE (PHIGS PLUS): order = degree + 1, knots, (rational) points, range.
 struct NurbsCurveElement {
     geom::Curve curve;
-    double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain
+    double rangeStart = 0.0, rangeEnd = 0.0;  ///< equal: the whole domain; else start < end inside it
     bool operator==(const NurbsCurveElement& o) const;
 };
 /// One trimming curve of a NURBS surface, in (u, v) parameter space (z ignored).
