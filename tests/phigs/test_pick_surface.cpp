@@ -98,6 +98,41 @@ TEST_CASE("pick surface: 10,000 random picks of a bicubic surface agree with the
     CHECK(picker.hits(list, {1.5, 0.5}, 0.001).empty());
 }
 
+TEST_CASE("pick surface: a hole trimmed away picks what lies behind it", "[pick]") {
+    // The height field trimmed to a square with a round hole (even-odd loops in (u, v)), a
+    // fill area behind it: picks in the hole reach the fill area, picks elsewhere the surface.
+    DrawList list = unitList();
+    const auto surface = heightField();
+    DrawFillArea behind;
+    behind.contours = {{{0, 0, 0.01}, {1, 0, 0.01}, {1, 1, 0.01}, {0, 1, 0.01}}};
+    behind.interior.edit().style = InteriorStyle::Solid;
+    list.items.push_back(item(behind, {{1, 1, 0}}));
+    DrawItem trimmed = surfaceItem(surface, {{2, 1, 0}});
+    auto mesh = std::make_shared<MeshData>();
+    mesh->trimLoops = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {}};
+    for (int k = 0; k < 64; ++k) {
+        const double a = 6.283185307179586 * k / 64.0;
+        mesh->trimLoops[1].push_back({0.5 + 0.2 * std::cos(a), 0.5 + 0.2 * std::sin(a)});
+    }
+    editPrimitive<DrawMesh>(trimmed.primitive).mesh = mesh;
+    list.items.push_back(trimmed);
+    const Picker picker;
+    std::mt19937 random(77);
+    std::uniform_real_distribution<double> coordinate(0.02, 0.98);
+    int inHole = 0;
+    for (int i = 0; i < 400; ++i) {
+        const glm::dvec2 at(coordinate(random), coordinate(random));
+        const double r = glm::length(at - glm::dvec2(0.5));
+        if (std::abs(r - 0.2) < 0.01) continue;  // the hole's polygon and circle part there
+        const PickMeasure hit = picker.pick(list, at, {0.0005});
+        REQUIRE(hit.status == InputStatus::Ok);
+        INFO("pick at (" << at.x << ", " << at.y << ")");
+        CHECK(hit.path.front().structureId == (r < 0.2 ? 1 : 2));
+        inHole += r < 0.2;
+    }
+    CHECK(inHole > 20);
+}
+
 TEST_CASE("pick surface: a rational cylinder is hit on its near side, exactly", "[pick]") {
     DrawList list = unitList();
     const double r = 0.3;

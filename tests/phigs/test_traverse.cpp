@@ -261,6 +261,11 @@ TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element
     const auto& cut = primitiveAs<DrawMesh>(first.items[1].primitive);
     CHECK(cut.mesh->triangles.size() ==
           4 * 3 * 3);  // of 32 triangles of a 4 x 4 grid, the 12 below the diagonal
+    // The loop goes with the mesh, for the pick: what it keeps, exactly.
+    CHECK(mesh.mesh->trimLoops.empty());
+    REQUIRE(cut.mesh->trimLoops.size() == 1);
+    CHECK(cut.mesh->keeps({0.45, 0.5}));
+    CHECK_FALSE(cut.mesh->keeps({0.55, 0.5}));
     const auto& drawnCurve = primitiveAs<DrawCurve>(first.items[2].primitive);
     CHECK(drawnCurve.points.size() == 9);
     CHECK(drawnCurve.points[4] == glm::dvec3(1, 0.5, 0));

@@ -397,8 +397,8 @@ const std::vector<std::uint8_t>& Picker::facetEdgesOf(const std::shared_ptr<cons
 
 std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView& view,
                                            const std::shared_ptr<const geom::Surface>& surface,
-                                           const InteriorStyleSet& interior, glm::dvec2 npc,
-                                           const glm::dmat4& m, const glm::dmat4& inverse,
+                                           const MeshData* mesh, const InteriorStyleSet& interior,
+                                           glm::dvec2 npc, const glm::dmat4& m, const glm::dmat4& inverse,
                                            const PickItemBounds* bounds) const {
     const MeshSides sides(interior, false, true);
     if (!sides.filled[0] && !sides.filled[1]) return std::nullopt;
@@ -426,6 +426,8 @@ std::optional<PickHit> Picker::testSurface(const DrawItem& item, const DrawView&
     for (const geom::LineSurfaceHit& h : it->second.intersector->intersect(origin, direction)) {
         const Projected p = project(m, h.point);
         if (!p.valid || !insideClip(view, p.npc) || !insideModelClip(item, toWorld(item, h.point))) continue;
+        // A hole trimmed away lets the line on through, as the picture shows what lies behind.
+        if (mesh && !mesh->keeps(h.uv)) continue;
         // The side shown there (the tangent plane against the viewer, as the triangles are drawn;
         // edge on is the front): a HOLLOW or culled one lets the line on through to the next hit.
         const glm::dvec3 normal = geom::normal(*surface, h.uv.x, h.uv.y);
@@ -508,7 +510,8 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                 const bool exact = p.surface && surfaceTest == SurfaceTest::Exact && lineMapsBack(m, fromNpc);
                 const bool lines = sides.anyOutline() || (p.mesh && !p.mesh->isoLines.empty());
                 if (exact) {
-                    hit = testSurface(item, view, p.surface, *p.interior, npc, m, fromNpc, bounds);
+                    hit = testSurface(item, view, p.surface, p.mesh.get(), *p.interior, npc, m, fromNpc,
+                                      bounds);
                     if (!lines) return;
                 }
                 if (p.mesh && !p.mesh->positions.empty()) {

@@ -121,6 +121,20 @@ bool insideTrim(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p)
     return inside;
 }
 
+}  // namespace
+}  // namespace phigs::detail
+
+namespace phigs {
+
+bool MeshData::keeps(glm::dvec2 uv) const {
+    return trimLoops.empty() || detail::insideTrim(trimLoops, uv);
+}
+
+}  // namespace phigs
+
+namespace phigs::detail {
+namespace {
+
 bool chordal(int criteria, double value) {
     return criteria >= 3 && criteria <= 8 && value > 0.0;
 }
@@ -188,6 +202,7 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
     }
     const std::vector<std::vector<glm::dvec3>> trimCurves = trimCurveSamples(element);
     const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element, trimCurves);
+    mesh.trimLoops = loops;             // the pick keeps what the loops keep, exactly
     std::vector<std::uint32_t> cellOf;  // the grid cell (two triangles) of each triangle kept
     for (std::size_t t = 0; t + 2 < adaptive.triangles.size(); t += 3) {
         glm::dvec2 centre = (adaptive.uv[adaptive.triangles[t]] + adaptive.uv[adaptive.triangles[t + 1]] +
@@ -232,6 +247,7 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
         }
     const std::vector<std::vector<glm::dvec3>> trimCurves = trimCurveSamples(element);
     const std::vector<std::vector<glm::dvec2>> loops = trimPolygons(element, trimCurves);
+    mesh.trimLoops = loops;  // the pick keeps what the loops keep, exactly
     auto at = [nv](std::uint32_t i, std::uint32_t j) { return i * nv + j; };
     auto cells = [&] {
         std::vector<std::uint32_t> triangles;

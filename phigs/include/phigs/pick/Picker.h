@@ -86,11 +86,11 @@ private:
                                 const WorkstationMapping& mapping, SurfaceTest surfaceTest,
                                 const PickItemBounds* bounds = nullptr) const;
     /// The exact line through `npc` against the surface: its nearest point whose side shown is
-    /// detectable (not culled, not HOLLOW); `toNpc`, `fromNpc`: the item's transform to NPC and
-    /// its inverse.
+    /// detectable (not culled, not HOLLOW) and that trimming keeps (`mesh`'s loops, when given);
+    /// `toNpc`, `fromNpc`: the item's transform to NPC and its inverse.
     std::optional<PickHit> testSurface(const DrawItem& item, const DrawView& view,
                                        const std::shared_ptr<const geom::Surface>& surface,
-                                       const InteriorStyleSet& interior, glm::dvec2 npc,
+                                       const MeshData* mesh, const InteriorStyleSet& interior, glm::dvec2 npc,
                                        const glm::dmat4& toNpc, const glm::dmat4& fromNpc,
                                        const PickItemBounds* bounds) const;
     /// nearest() on the tree: candidates by their boxes' nearest depth, stopping once no box can

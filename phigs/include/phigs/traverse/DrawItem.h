@@ -106,6 +106,12 @@ struct MeshData {
     /// empty: facets of trianglesPerFacet triangles each.
     std::uint32_t trianglesPerFacet = 1;
     std::vector<std::uint32_t> facetEnds;
+    /// A NURBS surface's trimming loops as polygons in (u, v), or empty (untrimmed): what the
+    /// even-odd rule puts inside them is kept.
+    std::vector<std::vector<glm::dvec2>> trimLoops;
+
+    /// Whether trimming keeps the surface at (u, v): inside its loops, or untrimmed.
+    bool keeps(glm::dvec2 uv) const;
 };
 
 /// A mesh with its attributes; `surface` is set for NURBS surfaces so picking can intersect the
