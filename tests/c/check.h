@@ -137,15 +137,17 @@ static inline int same_snapshot(const Snapshot* a, const Snapshot* b) {
         CHECK(same_snapshot(&before_, &after_)); \
     } while (0)
 
-/* Whether `path` has the line `line` (without its newline). */
+/* A line of the file that is `line`, or `line` followed by the reason the core gave (" (...)"). */
 static inline int file_has_line(const char* path, const char* line) {
-    char buffer[512];
+    char buffer[2048];
+    const size_t length = strlen(line);
     int found = 0;
     FILE* f = fopen(path, "r");
     if (!f) return 0;
     while (!found && fgets(buffer, sizeof buffer, f)) {
         buffer[strcspn(buffer, "\n")] = '\0';
-        found = strcmp(buffer, line) == 0;
+        found = strncmp(buffer, line, length) == 0 &&
+                (buffer[length] == '\0' || strncmp(buffer + length, " (", 2) == 0);
     }
     fclose(f);
     return found;

@@ -59,6 +59,23 @@ static void escapes(const char* file) {
     pdel_store(store);
 }
 
+/* ERROR LOGGING writes the reason the core gave after the standard's message. */
+static void reasons(const char* file) {
+    Pview_rep3 current, requested;
+    Pupd_st state = PUPD_NOT_PEND;
+    Pint err = -1;
+    popen_ws(7, NULL, PWST_OFFSCREEN);
+    pinq_view_rep(7, 0, &err, &state, &current, &requested);
+    CHECK(err == 0);
+    EXPECT_REFUSED(pset_view_rep3(7, 40, &current), 150, Pfn_set_view_rep3);
+    CHECK(
+        file_has_line(file,
+                      "ERROR 150 in SET VIEW REPRESENTATION 3 (function 83): Ignoring function, setting this "
+                      "view table entry would exceed the maximum number of entries allowed in the "
+                      "workstation's view table (view index 40)"));
+    pclose_ws(7);
+}
+
 static void close_needs_everything_closed(void) {
     Psys_st st = PSYS_ST_PHCL;
     popen_struct(1);
@@ -88,13 +105,14 @@ int main(int argc, char** argv) {
     handler_and_mode(file);
     message_and_facilities();
     escapes(file);
+    reasons(file);
     close_needs_everything_closed();
     EXPECT_NO_ERROR(pclose_phigs());
     pinq_sys_st(&st);
     CHECK(st == PSYS_ST_PHCL);
 
     /* ERROR LOGGING's lines, in the order they were raised; the PERR_OFF error is not there. */
-    CHECK(file_line_count(file) == 6);
+    CHECK(file_line_count(file) == 7);
     CHECK(file_has_line(file,
                         "ERROR 1 in OPEN PHIGS (function 0): Ignoring function, function requires state "
                         "(PHCL, WSCL, STCL, ARCL)"));

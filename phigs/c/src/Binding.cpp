@@ -248,23 +248,30 @@ void Binding::report(int number, int function) {
     if (mode_ == PERR_ON && handler_) handler_(number, function, errorFileName());
 }
 
-void Binding::reportSince(int function, std::size_t before, int thrown) {
+void Binding::reportWith(int number, int function, const std::string& why) {
+    reporting_ = why;
+    report(number, function);
+    reporting_.clear();
+}
+
+void Binding::reportSince(int function, std::size_t before, int thrown, const std::string& why) {
     const auto& entries = phigs_ ? phigs_->errorLog().entries() : std::vector<ErrorLog::Entry>{};
     bool thrownLogged = false;
     for (std::size_t i = before; i < entries.size(); ++i) {
-        report(entries[i].number, function);
+        reportWith(entries[i].number, function, entries[i].detail);
         thrownLogged =
             thrownLogged || (thrown != 0 && entries[i].number == thrown && i + 1 == entries.size());
     }
-    if (thrown != 0 && !thrownLogged) report(thrown, function);
+    if (thrown != 0 && !thrownLogged) reportWith(thrown, function, why);
 }
 
 void Binding::log(int number, int function, const char* file) {
     const std::string message = errorMessage(number);
     const bool warning = message.starts_with("Warning");
+    // The reason the core gave, where this is the error being reported now (a handler that logs it).
     const std::string line = std::string(warning ? "WARNING " : "ERROR ") + std::to_string(number) + " in " +
                              functionName(function) + " (function " + std::to_string(function) +
-                             "): " + message + "\n";
+                             "): " + message + (reporting_.empty() ? "" : " (" + reporting_ + ")") + "\n";
     std::FILE* out = stream_;
     std::FILE* own = nullptr;
     // Another file than the open error file (or any file while PHIGS is closed) is appended to.

@@ -87,19 +87,26 @@ public:
         }
         const std::size_t before = p->errorLog().size();
         int thrown = 0;
+        std::string why;
         try {
             body(*p);
         } catch (const Error& e) {
             thrown = e.number();
+            why = e.detail();
         } catch (const std::bad_alloc&) {
             thrown = kOutOfMemory;
         }
-        reportSince(function, before, thrown);
+        reportSince(function, before, thrown, why);
     }
 
 private:
+    /// The reason of the error being handed to the handler now (empty: none given).
+    std::string reporting_;
     static constexpr int kOutOfMemory = 900;  // ISO 9592: storage overflow has occurred in PHIGS
-    void reportSince(int function, std::size_t before, int thrown);
+    void reportSince(int function, std::size_t before, int thrown, const std::string& why);
+    /// Hands an error to the handler with its reason, which ERROR LOGGING then writes after the
+    /// standard's message.
+    void reportWith(int number, int function, const std::string& why);
 
     std::unique_ptr<Phigs> phigs_;
     std::uint64_t openings_ = 0;
