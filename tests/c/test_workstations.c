@@ -105,6 +105,22 @@ static void open_and_close_errors(void) {
     EXPECT_ERROR(pclose_ws(1), 3, Pfn_close_ws);
 }
 
+/* A file type whose file cannot be written: 903 at UPDATE WORKSTATION, and again at CLOSE
+   WORKSTATION, which writes the last picture first; the workstation is closed all the same. */
+static void unwritable_files(void) {
+    const Pint types[] = {PWST_PDF, PWST_SVG, PWST_EPS, PWST_PNG};
+    char path[600];
+    snprintf(path, sizeof path, "%s/under_a_file.out", error_file); /* the error file is no folder */
+    for (int i = 0; i < 4; ++i) {
+        Pws_st st = PWS_ST_WSOP;
+        EXPECT_NO_ERROR(popen_ws(4, path, types[i]));
+        EXPECT_ERROR(pupd_ws(4, PFLAG_PERFORM), 903, Pfn_upd_ws);
+        EXPECT_ERROR(pclose_ws(4), 903, Pfn_close_ws);
+        pinq_ws_st(&st);
+        CHECK(st == PWS_ST_WSCL);
+    }
+}
+
 static void posting_and_inquiries(void) {
     Pint err = -1, total = 0, ids[4], type = 0;
     Pint_list open = {0, ids};
@@ -186,6 +202,7 @@ int main(int argc, char** argv) {
         CHECK(file_line_count(error_file) == lines); /* inquiries answer, never log */
     }
     open_and_close_errors();
+    unwritable_files();
     posting_and_inquiries();
     pclose_phigs();
     /* The closed hardcopies are complete files. */

@@ -13,8 +13,8 @@ VectorOutput::VectorOutput(std::filesystem::path file, VectorFormat format, cons
 }
 
 bool VectorOutput::present(const DrawList& picture) {
-    presented_ = true;
     file_.update(picture);  // std::runtime_error naming the file when cairo cannot write it
+    presented_ = true;
     return true;
 }
 
@@ -24,7 +24,9 @@ DrawableSize VectorOutput::drawableSize() const {
 }
 
 void VectorOutput::close(const DrawList& picture) {
-    if (!presented_) file_.update(picture);  // a failed presentation is not tried again
+    // Never written (no update, or each failed): the last picture is written now, and a file that
+    // still cannot be written is reported again (903), as the PNG type does.
+    if (!presented_) file_.update(picture);
     file_.close();
 }
 
