@@ -86,4 +86,31 @@ TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is
     CHECK(std::abs(high - right) < 1e-6);
 }
 
+TEST_CASE("vector describe: fill areas whose signed areas cancel are filled", "[hardcopy]") {
+    // A bow-tie FILL AREA and a FILL AREA SET of two squares wound against each other: Newell's
+    // normal cancels in both, the even-odd rule fills them, as the raster does.
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    Workstation& model = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+    store.openStructure(1);
+    store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
+    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({1, 0, 0})});
+    store.insert(fillArea3({{0.05, 0.05, 0.5}, {0.45, 0.45, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}}));
+    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0, 1, 0})});
+    store.insert(
+        FillAreaSetElement{{{{0.55, 0.55, 0.5}, {0.7, 0.55, 0.5}, {0.7, 0.7, 0.5}, {0.55, 0.7, 0.5}},
+                            {{0.8, 0.55, 0.5}, {0.8, 0.7, 0.5}, {0.95, 0.7, 0.5}, {0.95, 0.55, 0.5}}},
+                           false});
+    store.closeStructure();
+    model.postStructure(1, 0.5);
+    PageSetup page;
+    page.paper = {100, 100};
+    page.nominalPixel = 1.0;
+    page.background = false;
+    const VectorPicture picture = describePicture(model.display(), page);
+    CHECK_FALSE(fillsOf(picture, {1, 0, 0}).empty());
+    CHECK_FALSE(fillsOf(picture, {0, 1, 0}).empty());
+}
+
 }  // namespace test_vector_facets

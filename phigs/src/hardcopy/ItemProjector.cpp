@@ -84,14 +84,12 @@ void ItemProjector::operator()(const DrawFillArea& fill) {
 
 void ItemProjector::fillInterior(const DrawFillArea& fill,
                                  const std::vector<std::vector<glm::dvec3>>& world) {
-    // One colour for the whole plane: Newell's normal of all contours, turned as ItemGeometry turns it.
-    glm::dvec3 normal(0.0), centre(0.0), low(1e300), high(-1e300);
+    // One colour for the whole plane: the contours' normal as ItemGeometry finds it (where their
+    // signed areas cancel too), turned as ItemGeometry turns it.
+    glm::dvec3 normal = render::contoursNormal(world), centre(0.0), low(1e300), high(-1e300);
     std::vector<FacetVertex> vertices;
     for (const auto& c : world)
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const glm::dvec3 &a = c[i], &b = c[(i + 1) % c.size()];
-            normal +=
-                glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        for (const glm::dvec3& a : c) {
             centre += a, low = glm::min(low, a), high = glm::max(high, a);
             vertices.push_back({a, {}, fill.interior->colour});
         }

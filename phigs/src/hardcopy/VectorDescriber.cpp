@@ -14,18 +14,24 @@ namespace {
 /// width of a seam stroke (PaintBuilder), so what a neighbour's seam would cover.
 constexpr double kHiddenMargin = 0.25;
 
-/// Whether a facet covers any area on the page (an edge-on one paints and hides nothing).
+/// Whether a facet covers any area on the page (an edge-on one paints and hides nothing): its
+/// points do not all lie on one line. (A sum of signed areas would not do: a bow-tie's lobes
+/// cancel in it, though the even-odd rule fills them.)
 bool coversArea(const ProjectedFacet& f) {
-    double area = 0.0;
-    for (const auto& c : f.contours) {
-        double a = 0.0;
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const PagePoint &p = c[i], &q = c[(i + 1) % c.size()];
-            a += p.x * q.y - q.x * p.y;
+    const PagePoint* a = nullptr;
+    const PagePoint* b = nullptr;
+    double far = 0.0;
+    for (const auto& c : f.contours)
+        for (const PagePoint& p : c) {
+            if (!a) a = &p;
+            const double d = (p.x - a->x) * (p.x - a->x) + (p.y - a->y) * (p.y - a->y);
+            if (d > far) far = d, b = &p;
         }
-        area += std::abs(a);
-    }
-    return area > 1e-12;
+    if (!b) return false;
+    for (const auto& c : f.contours)
+        for (const PagePoint& p : c)
+            if (std::abs((b->x - a->x) * (p.y - a->y) - (b->y - a->y) * (p.x - a->x)) > 1e-12) return true;
+    return false;
 }
 
 /// Drops the facets hidden whole and gives back the visible runs of the scene's lines and its
