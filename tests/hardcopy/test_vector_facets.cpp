@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace test_vector_facets {
 
@@ -31,34 +32,39 @@ glm::dvec2 centre(const VectorFill& f) {
     return sum / double(n);
 }
 
-}  // namespace
-
-TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is off are not stroked",
-          "[hardcopy]") {
+/// The vector picture (a 100 x 100 page, no background) of structure 1 holding SOLID interiors
+/// and `elements`, posted on an offscreen workstation.
+VectorPicture solidPicture(const std::vector<Element>& elements) {
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();
     Workstation& model = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
     store.openStructure(1);
     store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
-    TriangleStripElement strip{
-        {{0.05, 0.05, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}, {0.45, 0.45, 0.5}}, {}, {}};
-    strip.facetColours = {Colour::fromRgb({1, 0, 0}), Colour::fromRgb({0, 1, 0})};
-    store.insert(strip);
-    store.insert(IndexAttribute{ElementType::EdgeFlag, 1});
-    store.insert(ColourAttribute{ElementType::EdgeColour, Colour::fromRgb({1, 1, 0})});
-    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0.5, 0.5, 0.5})});
-    FillAreaSetWithDataElement square;
-    square.contours = {{{0.55, 0.55, 0.5}, {0.95, 0.55, 0.5}, {0.95, 0.95, 0.5}, {0.55, 0.95, 0.5}}};
-    square.edgeFlags = {{1, 0, 0, 0}};  // the bottom edge only
-    store.insert(square);
+    for (const Element& e : elements) store.insert(e);
     store.closeStructure();
     model.postStructure(1, 0.5);
     PageSetup page;
     page.paper = {100, 100};
     page.nominalPixel = 1.0;
     page.background = false;
-    const VectorPicture picture = describePicture(model.display(), page);
+    return describePicture(model.display(), page);
+}
+
+}  // namespace
+
+TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is off are not stroked",
+          "[hardcopy]") {
+    TriangleStripElement strip{
+        {{0.05, 0.05, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}, {0.45, 0.45, 0.5}}, {}, {}};
+    strip.facetColours = {Colour::fromRgb({1, 0, 0}), Colour::fromRgb({0, 1, 0})};
+    FillAreaSetWithDataElement square;
+    square.contours = {{{0.55, 0.55, 0.5}, {0.95, 0.55, 0.5}, {0.95, 0.95, 0.5}, {0.55, 0.95, 0.5}}};
+    square.edgeFlags = {{1, 0, 0, 0}};  // the bottom edge only
+    const VectorPicture picture = solidPicture(
+        {strip, IndexAttribute{ElementType::EdgeFlag, 1},
+         ColourAttribute{ElementType::EdgeColour, Colour::fromRgb({1, 1, 0})},
+         ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0.5, 0.5, 0.5})}, square});
     // The strip's two triangles in their facet colours: red lower left, green upper right (page y down).
     const auto red = fillsOf(picture, {1, 0, 0}), green = fillsOf(picture, {0, 1, 0});
     REQUIRE(red.size() == 1);
@@ -89,26 +95,13 @@ TEST_CASE("vector describe: facet colours fill their facets, edges whose flag is
 TEST_CASE("vector describe: fill areas whose signed areas cancel are filled", "[hardcopy]") {
     // A bow-tie FILL AREA and a FILL AREA SET of two squares wound against each other: Newell's
     // normal cancels in both, the even-odd rule fills them, as the raster does.
-    Phigs phigs;
-    phigs.open();
-    StructureStore& store = phigs.store();
-    Workstation& model = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
-    store.openStructure(1);
-    store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
-    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({1, 0, 0})});
-    store.insert(fillArea3({{0.05, 0.05, 0.5}, {0.45, 0.45, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}}));
-    store.insert(ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0, 1, 0})});
-    store.insert(
-        FillAreaSetElement{{{{0.55, 0.55, 0.5}, {0.7, 0.55, 0.5}, {0.7, 0.7, 0.5}, {0.55, 0.7, 0.5}},
-                            {{0.8, 0.55, 0.5}, {0.8, 0.7, 0.5}, {0.95, 0.7, 0.5}, {0.95, 0.55, 0.5}}},
-                           false});
-    store.closeStructure();
-    model.postStructure(1, 0.5);
-    PageSetup page;
-    page.paper = {100, 100};
-    page.nominalPixel = 1.0;
-    page.background = false;
-    const VectorPicture picture = describePicture(model.display(), page);
+    const VectorPicture picture = solidPicture(
+        {ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({1, 0, 0})},
+         fillArea3({{0.05, 0.05, 0.5}, {0.45, 0.45, 0.5}, {0.45, 0.05, 0.5}, {0.05, 0.45, 0.5}}),
+         ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0, 1, 0})},
+         FillAreaSetElement{{{{0.55, 0.55, 0.5}, {0.7, 0.55, 0.5}, {0.7, 0.7, 0.5}, {0.55, 0.7, 0.5}},
+                             {{0.8, 0.55, 0.5}, {0.8, 0.7, 0.5}, {0.95, 0.7, 0.5}, {0.95, 0.55, 0.5}}},
+                            false}});
     CHECK_FALSE(fillsOf(picture, {1, 0, 0}).empty());
     CHECK_FALSE(fillsOf(picture, {0, 1, 0}).empty());
 }
