@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace test_vector_facets {
@@ -33,8 +34,8 @@ glm::dvec2 centre(const VectorFill& f) {
 }
 
 /// The vector picture (a 100 x 100 page, no background) of structure 1 holding SOLID interiors
-/// and `elements`, posted on an offscreen workstation.
-VectorPicture solidPicture(const std::vector<Element>& elements) {
+/// and `elements`, posted on an offscreen workstation in HLHSR mode `hlhsr`.
+VectorPicture solidPicture(const std::vector<Element>& elements, int hlhsr = 0) {
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();
@@ -43,6 +44,7 @@ VectorPicture solidPicture(const std::vector<Element>& elements) {
     store.insert(IndexAttribute{ElementType::InteriorStyle, int(InteriorStyle::Solid)});
     for (const Element& e : elements) store.insert(e);
     store.closeStructure();
+    model.setHlhsrMode(hlhsr);
     model.postStructure(1, 0.5);
     PageSetup page;
     page.paper = {100, 100};
@@ -104,6 +106,41 @@ TEST_CASE("vector describe: fill areas whose signed areas cancel are filled", "[
                             false}});
     CHECK_FALSE(fillsOf(picture, {1, 0, 0}).empty());
     CHECK_FALSE(fillsOf(picture, {0, 1, 0}).empty());
+}
+
+TEST_CASE("vector describe: fill areas whose signed areas cancel paint in depth order", "[hardcopy]") {
+    // Two bow-ties over each other, tilted at random, the nearer one traversed first, hidden
+    // surfaces removed: each has a plane (its lobes', not Newell's zero sum), so the farther one
+    // is painted first.
+    std::mt19937 random(20261207);
+    std::uniform_real_distribution<double> tilt(-0.15, 0.15), shift(-0.1, 0.1);
+    auto bowTie = [&](double depth, glm::dvec2 at) {
+        const double tx = tilt(random), ty = tilt(random);
+        std::vector<glm::dvec3> points;
+        for (glm::dvec2 corner :
+             {glm::dvec2(-1, -1), glm::dvec2(1, 1), glm::dvec2(1, -1), glm::dvec2(-1, 1)}) {
+            const glm::dvec2 p = at + 0.25 * corner;
+            points.emplace_back(p, depth + tx * (p.x - at.x) + ty * (p.y - at.y));
+        }
+        return fillArea3(points);
+    };
+    for (int trial = 0; trial < 20; ++trial) {
+        const glm::dvec2 a(0.5 + shift(random), 0.5 + shift(random)),
+            b(0.5 + shift(random), 0.5 + shift(random));
+        const VectorPicture picture = solidPicture(
+            {ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({1, 0, 0})}, bowTie(0.8, a),
+             ColourAttribute{ElementType::InteriorColour, Colour::fromRgb({0, 0, 1})}, bowTie(0.2, b)},
+            1);
+        std::size_t lastFar = 0, firstNear = picture.ops.size();
+        for (std::size_t i = 0; i < picture.ops.size(); ++i)
+            if (const auto* f = std::get_if<VectorFill>(&picture.ops[i])) {
+                if (f->colour == glm::vec3(0, 0, 1)) lastFar = i;
+                if (f->colour == glm::vec3(1, 0, 0)) firstNear = std::min(firstNear, i);
+            }
+        INFO("trial " << trial);
+        REQUIRE(firstNear < picture.ops.size());
+        CHECK(lastFar < firstNear);
+    }
 }
 
 }  // namespace test_vector_facets

@@ -3,6 +3,7 @@
 // Private to phigs_hardcopy: how facet ordering compares facets in depth.
 
 #include "phigs/hardcopy/ProjectedScene.h"
+#include "phigs/render/ItemGeometry.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -32,20 +33,18 @@ public:
     double epsilon() const { return epsilon_; }
     glm::dvec3 scaled(const PagePoint& p) const { return {p.x, p.y, p.z * depthScale_}; }
 
-    /// The facet's plane through its centre (Newell's normal, unit; zero for no area).
+    /// The facet's plane through its centre, its normal `render::contoursNormal`'s (unit; zero
+    /// for no area): a bow-tie's lobes, whose Newell sum cancels, still have a plane to order by.
     glm::dvec4 planeOf(const ProjectedFacet& f) const {
-        glm::dvec3 normal(0.0), centre(0.0);
+        // The normal on the page (x, y, depth) taken to scaled depth: normals map by the inverse
+        // transpose of the scaling.
+        glm::dvec3 normal = render::contoursNormal(f.contours), centre(0.0);
+        normal.z /= depthScale_;
         std::size_t count = 0;
         for (const auto& c : f.contours)
-            for (std::size_t i = 0; i < c.size(); ++i) {
-                const glm::dvec3 a = scaled(c[i]), b = scaled(c[(i + 1) % c.size()]);
-                normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                                     (a.x - b.x) * (a.y + b.y));
-                centre += a;
-                ++count;
-            }
+            for (const PagePoint& p : c) centre += scaled(p), ++count;
         const double length = glm::length(normal);
-        if (length == 0.0 || count == 0) return glm::dvec4(0.0);
+        if (!(length > 0.0) || count == 0) return glm::dvec4(0.0);
         normal /= length;
         centre /= double(count);
         return {normal, -glm::dot(normal, centre)};

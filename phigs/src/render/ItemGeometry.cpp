@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <span>
 #include <type_traits>
 #include <unordered_set>
@@ -351,17 +352,16 @@ glm::dvec3 spreadNormal(const std::vector<glm::dvec3>& points) {
 }  // namespace
 
 glm::dvec3 contoursNormal(const std::vector<std::vector<glm::dvec3>>& contours) {
-    std::vector<glm::dvec3> all;
-    glm::dvec3 normal(0.0), largest(0.0);
+    glm::dvec3 normal(0.0), largest(0.0), lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    std::size_t count = 0;
     for (const auto& contour : contours) {
         const glm::dvec3 n = newellNormal(contour);
         normal += n;
         if (glm::length(n) > glm::length(largest)) largest = n;
-        all.insert(all.end(), contour.begin(), contour.end());
+        for (const glm::dvec3& q : contour) lo = glm::min(lo, q), hi = glm::max(hi, q);
+        count += contour.size();
     }
-    if (all.size() < 3) return glm::dvec3(0.0);
-    glm::dvec3 lo = all.front(), hi = all.front();
-    for (const glm::dvec3& q : all) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    if (count < 3) return glm::dvec3(0.0);
     // Newell's normal is a sum of signed areas: contours wound against each other, or the lobes
     // of a bow-tie, cancel in it (to nothing, or to rounding noise pointing anywhere), though the
     // even-odd rule fills them. There the largest contour's normal, else the plane through the
@@ -370,7 +370,14 @@ glm::dvec3 contoursNormal(const std::vector<std::vector<glm::dvec3>>& contours) 
     const double size = glm::dot(hi - lo, hi - lo), enough = 1e-6 * size;
     if (!(glm::length(normal) > enough)) {
         const glm::dvec3 noise = normal;
-        normal = glm::length(largest) > enough ? largest : spreadNormal(all);
+        if (glm::length(largest) > enough) {
+            normal = largest;
+        } else {
+            std::vector<glm::dvec3> all;
+            all.reserve(count);
+            for (const auto& contour : contours) all.insert(all.end(), contour.begin(), contour.end());
+            normal = spreadNormal(all);
+        }
         if (glm::dot(normal, noise) < 0.0) normal = -normal;
     }
     return glm::length(normal) > 1e-12 * size ? normal : glm::dvec3(0.0);
