@@ -1,4 +1,5 @@
 #include "geom/curvemap/CurveMapper.h"
+
 #include "../NumberText.h"
 #include "../SegmentDistance.h"
 
@@ -6,6 +7,7 @@
 #include "ProjectedBoxes.h"
 
 #include "geom/Evaluate.h"
+#include "geom/EvenOdd.h"
 #include "geom/GeometryError.h"
 
 #include <glm/geometric.hpp>
@@ -134,17 +136,6 @@ double boxDiagonal(const std::vector<glm::dvec3>& points) {
         hi = glm::max(hi, p);
     }
     return points.empty() ? 0.0 : glm::length(hi - lo);
-}
-
-/// Crossing-number test of a closed polygon (first point repeated or not) around p.
-bool insidePolygon(const std::vector<glm::dvec2>& poly, const glm::dvec2& p) {
-    bool inside = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-        const glm::dvec2 &a = poly[i], &b = poly[j];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-            inside = !inside;
-    }
-    return inside;
 }
 
 /// Maps one curve: the state of a single MAP CURVE of one part.
@@ -489,7 +480,7 @@ void PartMapper::mapWithoutHits(const std::vector<Sample>& samples) {
     for (const Sample& x : samples) poly.push_back({x.local.x, x.local.y});
     const glm::dvec3 centre =
         frame_.toCurve(pointAt({0.5 * (domain_.u0 + domain_.u1), 0.5 * (domain_.w0 + domain_.w1)}));
-    if (!insidePolygon(poly, {centre.x, centre.y})) {
+    if (!oddCrossings({centre.x, centre.y}, poly, [](glm::dvec2 q) { return q; })) {
         out_.issues.push_back("the curve part misses the surface");
     } else if (boundary_.lengths.size() != 1) {
         out_.issues.push_back(

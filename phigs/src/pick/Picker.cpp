@@ -1,6 +1,7 @@
 #include "phigs/pick/Picker.h"
 
 #include "geom/Evaluate.h"
+#include "geom/EvenOdd.h"
 
 #include "geom/SurfaceIntersector.h"
 #include "phigs/render/ItemGeometry.h"
@@ -159,17 +160,7 @@ std::optional<double> polylineHit(const Aperture& ap, const std::vector<Projecte
 
 /// Even-odd inside test of a point against a set of contours (projected to NPC x, y).
 bool insideEvenOdd(glm::dvec2 p, const std::vector<std::vector<Projected>>& contours) {
-    bool inside = false;
-    for (const auto& c : contours) {
-        const std::size_t n = c.size();
-        for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-            const glm::dvec3& a = c[i].npc;
-            const glm::dvec3& b = c[j].npc;
-            if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
-                inside = !inside;
-        }
-    }
-    return inside;
+    return geom::insideEvenOdd(p, contours, [](const Projected& q) { return glm::dvec2(q.npc); });
 }
 
 /// Depth at (x, y) of the plane through the contours (render::contoursNormal in NPC); nullopt when

@@ -5,6 +5,7 @@
 #include "phigs/traverse/TessellationCache.h"
 
 #include "geom/Evaluate.h"
+#include "geom/EvenOdd.h"
 #include "geom/Split.h"
 #include "geom/Tessellate.h"
 
@@ -112,13 +113,7 @@ void addTrimEdges(MeshData& mesh, const NurbsSurfaceElement& element,
 }
 
 bool insideTrim(const std::vector<std::vector<glm::dvec2>>& loops, glm::dvec2 p) {
-    bool inside = false;
-    for (const auto& poly : loops)
-        for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-            if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-                p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-                inside = !inside;
-    return inside;
+    return geom::insideEvenOdd(p, loops, [](glm::dvec2 q) { return q; });
 }
 
 }  // namespace
