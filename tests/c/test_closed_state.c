@@ -116,6 +116,7 @@ int main(int argc, char** argv) {
     EXPECT_ERROR(popen_struct(1), 6, Pfn_open_struct);
     EXPECT_ERROR(pdel_struct(1), 2, Pfn_del_struct);
     EXPECT_ERROR(popen_ar_file(1, "never.phar"), 2, Pfn_open_ar_file);
+    EXPECT_ERROR(pclose_phigs(), 4, Pfn_close_phigs); /* the one error ISO lists for it */
     inquiries(1);
 
     /* Open with nothing open: the same errors. */

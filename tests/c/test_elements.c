@@ -3,6 +3,8 @@
  * are refused with their error numbers and change nothing. argv[1]: a directory for the error file. */
 #include "check.h"
 
+#include <limits.h>
+
 static Pint n_elem = 0;
 static Pstore store = NULL;
 
@@ -343,6 +345,17 @@ static void refusals(void) {
                    Pfn_gdp);
     EXPECT_REFUSED(pgdp3(NULL, 5, NULL), -204, Pfn_gdp3);
     EXPECT_REFUSED(pgse(1, &(Pgse_data){.unsupp = {-1, NULL}}), -204, Pfn_gse);
+    {
+        /* cell arrays too large to hold (past any container's size, past the memory): storage
+         * overflow, before the colour indices are read */
+        Pint one[1] = {1};
+        const Pparal paral = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        const Prect rect = {{0, 0}, {1, 1}};
+        const Ppat_rep past_size = {{INT_MAX, INT_MAX}, one}, past_memory = {{1 << 30, 1 << 30}, one};
+        EXPECT_REFUSED(pcell_array3(&paral, &past_size), 900, Pfn_cell_array3);
+        EXPECT_REFUSED(pcell_array(&rect, &past_size), 900, Pfn_cell_array);
+        EXPECT_REFUSED(pcell_array3(&paral, &past_memory), 900, Pfn_cell_array3);
+    }
     index_ranges();
     pclose_struct();
     /* with no structure open the state error comes first, whatever the arguments */

@@ -118,6 +118,43 @@ static void views(void) {
     CHECK(err == 0 && near(out2.x, 0.5) && near(out2.y, 0.25));
 }
 
+/* A NaN or infinite argument, or a product that overflows, is the arithmetic error 908, and the
+ * result matrix keeps what it held. */
+static void non_finite(void) {
+    const Pfloat bad[] = {NAN, INFINITY, -INFINITY};
+    for (int k = 0; k < 3; ++k) {
+        const Pfloat x = bad[k];
+        Pint err = -1;
+        Pmatrix3 m3, kept, huge = {{1e30f, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+        Pmatrix m2;
+        memset(m3, 0, sizeof m3);
+        memcpy(kept, m3, sizeof m3);
+        ptranslate3(&(Pvec3){x, 0, 0}, &err, m3);
+        CHECK(err == 908);
+        pscale3(&(Pvec3){1, x, 1}, &err, m3);
+        CHECK(err == 908);
+        pscale(&(Pvec){x, 1}, &err, m2);
+        CHECK(err == 908);
+        protate_x(x, &err, m3);
+        CHECK(err == 908);
+        protate(x, &err, m2);
+        CHECK(err == 908);
+        pbuild_tran_matrix3(&(Ppoint3){0, 0, 0}, &(Pvec3){0, 0, 0}, 0, x, 0, &(Pvec3){1, 1, 1}, &err, m3);
+        CHECK(err == 908);
+        pbuild_tran_matrix(&(Ppoint){x, 0}, &(Pvec){0, 0}, 0, &(Pvec){1, 1}, &err, m2);
+        CHECK(err == 908);
+        {
+            Pmatrix3 with_bad = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+            with_bad[1][2] = x;
+            pcompose_matrix3(with_bad, huge, &err, m3);
+            CHECK(err == 908);
+        }
+        CHECK(memcmp(m3, kept, sizeof m3) == 0);
+        pcompose_matrix3(huge, huge, &err, m3); /* 1e60 overflows a Pfloat */
+        CHECK(err == 908);
+    }
+}
+
 int main(void) {
     Pint err = -1;
     Pmatrix3 m;
@@ -128,6 +165,7 @@ int main(void) {
     basics();
     build_and_compose();
     views();
+    non_finite();
     CHECK(error_count == 0); /* the utilities answer in err_ind only */
     pclose_phigs();
     return finish("test_utilities");

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <stdexcept>
 #include <string>
 
 namespace phigs::c {
@@ -95,6 +96,9 @@ public:
             why = e.detail();
         } catch (const std::bad_alloc&) {
             thrown = kOutOfMemory;
+        } catch (const std::length_error&) {  // a count past what any container can hold
+            thrown = kOutOfMemory;
+            why = "a count too large to hold";
         }
         reportSince(function, before, thrown, why);
     }

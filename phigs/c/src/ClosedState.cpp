@@ -6,6 +6,8 @@ namespace phigs::c {
 // names. While PHIGS is closed every requirement fails, and a function reports its own.
 int closedStateError(int function) {
     switch (function) {
+        case Pfn_close_phigs:
+            return errors::NotAllClosed;  // (PHOP, WSCL, STCL, ARCL)
         case Pfn_open_struct:
             return errors::NotStructureClosed;  // (PHOP, *, STCL, *)
         case Pfn_close_struct:

@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,16 @@ Paspect paspectOf(AspectId aspect);
 inline std::size_t count(Pint n, const char* function) {
     if (n < 0) throw Error(kBadArgument, function, "negative count " + std::to_string(n));
     return static_cast<std::size_t>(n);
+}
+
+/// The cells of a columns x rows array (cell array, pattern): negative dimensions are the
+/// bad-argument error, more cells than a Pint counts storage overflow (900), before any is read.
+inline std::size_t cellCount(Pint columns, Pint rows, const char* function) {
+    const std::size_t cells = count(columns, function) * count(rows, function);
+    if (cells > static_cast<std::size_t>(std::numeric_limits<Pint>::max()))
+        throw Error(errors::StorageOverflow, function,
+                    std::to_string(columns) + " x " + std::to_string(rows) + " cells: more than 2^31 - 1");
+    return cells;
 }
 
 std::vector<glm::dvec3> points(const Ppoint_list3* list, const char* function);

@@ -61,10 +61,10 @@ std::string text(const char* s, const char* name) {
 Element cellArray(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& r, const Ppat_rep* rep,
                   bool twoD, const char* name) {
     c::require(rep, name);
-    const std::size_t cols = c::count(rep->dims.size_x, name), rows = c::count(rep->dims.size_y, name);
-    if (cols * rows > 0) c::require(rep->colr_array, name);
-    CellArrayElement e{p, q, r, static_cast<int>(cols), static_cast<int>(rows), {}, twoD};
-    e.colourIndices.assign(rep->colr_array, rep->colr_array + cols * rows);
+    const std::size_t cells = c::cellCount(rep->dims.size_x, rep->dims.size_y, name);
+    if (cells > 0) c::require(rep->colr_array, name);
+    CellArrayElement e{p, q, r, rep->dims.size_x, rep->dims.size_y, {}, twoD};
+    e.colourIndices.assign(rep->colr_array, rep->colr_array + cells);
     return e;
 }
 

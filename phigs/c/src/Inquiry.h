@@ -5,6 +5,7 @@
 #include "Binding.h"
 #include "StoreBuffer.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace phigs::c {
@@ -42,6 +43,8 @@ void inquire(Pint* err, Body&& body) {
     } catch (const Error& e) {
         *err = e.number();
     } catch (const std::bad_alloc&) {
+        *err = PE_ALLOC_STORE_MEM;
+    } catch (const std::length_error&) {  // a count past what any container can hold
         *err = PE_ALLOC_STORE_MEM;
     }
 }

@@ -105,7 +105,7 @@ PatternRepresentation corePattern(const Ppat_rep_plus& p, const char* function) 
         throw Error(errors::ColourModelNotAvailable, function, "colour type " + std::to_string(p.type));
     PatternRepresentation r{p.dims.size_x, p.dims.size_y, {}};
     if (p.dims.size_x < 1 || p.dims.size_y < 1) return r;  // error 116 in the table, after 112
-    const std::size_t n = static_cast<std::size_t>(p.dims.size_x) * static_cast<std::size_t>(p.dims.size_y);
+    const std::size_t n = cellCount(p.dims.size_x, p.dims.size_y, function);
     require(p.colr_array, function);
     r.colours.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {

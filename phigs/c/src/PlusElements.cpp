@@ -262,7 +262,7 @@ void pnuni_bsp_surf(Pint uorder, Pint vorder, const Pfloat_list* uknots, const P
         const bool rat = rational(rationality, n);
         const std::size_t nu = c::count(grid->num_points.size_x, n),
                           nv = c::count(grid->num_points.size_y, n);
-        if (nu * nv > 0)
+        if (c::cellCount(grid->num_points.size_x, grid->num_points.size_y, n) > 0)
             c::require(rat ? static_cast<const void*>(grid->points.point4d) : grid->points.point3d, n);
         // The kernel keeps u as the slow index; the grid runs u fastest.
         std::vector<glm::dvec3> points;

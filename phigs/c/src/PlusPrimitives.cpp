@@ -168,8 +168,8 @@ void pcell_array3_plus(const Pparal* paral, const Pint_size* dim, Pint colr_type
         c::require(dim, n);
         if (colr_type != PINDIRECT && !isColourModel(colr_type))
             throw Error(PE_ENUM_TYPE_INVAL, n, "colour type");
+        const std::size_t cells = c::cellCount(dim->size_x, dim->size_y, n);
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
-        const std::size_t cells = columns * rows;  // each below 2^31: no overflow
         if (cells != 0) c::require(colrs, n);
         CellArrayPlusElement e{point(paral->p),           point(paral->q),        point(paral->r),
                                static_cast<int>(columns), static_cast<int>(rows), {}};
@@ -258,8 +258,9 @@ void pquad_mesh3_data(Pint fflag, Pint vflag, Pint colr_type, const Pint_size* d
         checkFlags(vflag, colr_type, n);
         c::require(dim, n);
         c::require(vdata, n);
+        const std::size_t vertexCount = c::cellCount(dim->size_x, dim->size_y, n);
         const std::size_t columns = c::count(dim->size_x, n), rows = c::count(dim->size_y, n);
-        VertexData v = vertices(vflag, colr_type, columns * rows, *vdata, n);
+        VertexData v = vertices(vflag, colr_type, vertexCount, *vdata, n);
         QuadrilateralMeshElement e{static_cast<int>(rows), static_cast<int>(columns), std::move(v.points),
                                    std::move(v.colours), std::move(v.normals)};
         const std::size_t quads = rows < 2 || columns < 2 ? 0 : (rows - 1) * (columns - 1);

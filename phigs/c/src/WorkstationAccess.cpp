@@ -118,7 +118,7 @@ EdgeBundle coreBundle(const Pedge_bundle& b, const char* function) {
 PatternRepresentation corePattern(const Ppat_rep& p, const char* function) {
     PatternRepresentation r{p.dims.size_x, p.dims.size_y, {}};
     if (p.dims.size_x < 1 || p.dims.size_y < 1) return r;  // error 116 in the table, after 112
-    const std::size_t n = static_cast<std::size_t>(p.dims.size_x) * static_cast<std::size_t>(p.dims.size_y);
+    const std::size_t n = cellCount(p.dims.size_x, p.dims.size_y, function);
     require(p.colr_array, function);
     r.colours.clear();
     for (std::size_t i = 0; i < n; ++i) r.colours.push_back(Colour::indexed(p.colr_array[i]));
