@@ -127,13 +127,29 @@ TEST_CASE("files a script names stay inside the output directory") {
     d.run({"choice SAVE_MODEL", "string saved/copy.acm"});
     CHECK(std::filesystem::exists(session_test::outputDirectory("bounds_paths") / "saved" / "copy.acm"));
     CHECK(d.session.failedLines() == 3);
+    // Nor through a symbolic link, to a folder or as the file; one that stays inside is followed.
+    const auto out = session_test::outputDirectory("bounds_paths");
+    const auto away = out.parent_path() / "bounds_paths_away";
+    std::filesystem::remove_all(away);
+    std::filesystem::create_directories(away);
+    for (const char* link : {"link", "linked.acm", "inner"}) std::filesystem::remove(out / link);
+    std::filesystem::create_directory_symlink(away, out / "link");
+    std::filesystem::create_symlink(away / "linked.acm", out / "linked.acm");
+    std::filesystem::create_directory_symlink(out / "saved", out / "inner");
+    d.run({"choice SAVE_MODEL", "string link/x.acm", "choice SAVE_MODEL", "string linked.acm",
+           "summary link/s"});
+    CHECK(d.session.failedLines() == 6);
+    CHECK(std::filesystem::is_empty(away));
+    d.run({"choice SAVE_MODEL", "string inner/y.acm"});
+    CHECK(d.session.failedLines() == 6);
+    CHECK(std::filesystem::exists(out / "saved" / "y.acm"));
     // A directory named as an archive or a curve file is called one.
     const std::string folder = session_test::outputDirectory("bounds_paths").string();
     d.run({"choice RETRIEVE", "string " + folder});
     CHECK(d.session.message().find("IS A DIRECTORY") != std::string::npos);
     d.run({"choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE", "string " + folder});
     CHECK(d.session.message().find("is a directory") != std::string::npos);
-    CHECK(d.session.failedLines() == 5);
+    CHECK(d.session.failedLines() == 8);
     // A name longer than any file system's is refused by its length, not by a filesystem error
     // (the string device keeps 256 characters of the 304 typed).
     const std::string longName(300, 'a');
@@ -142,7 +158,7 @@ TEST_CASE("files a script names stay inside the output directory") {
           std::string::npos);
     d.run({"choice READ_MODEL", "string " + longName});
     CHECK(d.session.message().find("INPUT FILE NAME 'aaaa") != std::string::npos);
-    CHECK(d.session.failedLines() == 7);
+    CHECK(d.session.failedLines() == 10);
 }
 
 }  // namespace test_session_bounds

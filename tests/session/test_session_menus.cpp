@@ -331,6 +331,42 @@ TEST_CASE("FILE menu: save and read back a model, archive and retrieve its struc
     CHECK(d.session.finished());
 }
 
+/// Every element of every structure in the network of the model root.
+std::map<int, std::vector<phigs::Element>> modelStructures(Driver& d) {
+    const phigs::StructureStore& store = d.session.phigs().store();
+    std::map<int, std::vector<phigs::Element>> out;
+    for (const int id : store.network(acsynt::structures::modelRoot))
+        for (int k = 1; k <= store.elementCount(id); ++k) out[id].push_back(store.elementAt(id, k));
+    return out;
+}
+
+TEST_CASE("FILE menu: RETRIEVE takes back only a picture of the current model, in the session's style") {
+    Driver d("retrieve");
+    const auto out = session_test::outputDirectory("retrieve");
+    std::filesystem::remove_all(out);
+    const std::string archive = (out / "fighter.phar").string();
+    // Written in wireframe, taken back while shaded: the session's style stays on the screen.
+    d.run({"choice VIEW", "choice WIREFRAME", "choice RETURN", "choice FILE", "choice READ_MODEL",
+           "string fighter.acm", "choice ARCHIVE", "string fighter.phar", "choice RETURN", "choice VIEW",
+           "choice SHADE", "choice RETURN", "choice FILE"});
+    REQUIRE(std::filesystem::exists(archive));
+    const auto fighter = modelStructures(d);
+    d.run({"choice RETRIEVE", "string " + archive});
+    CHECK(d.session.message().rfind("RETRIEVED ", 0) == 0);
+    CHECK(modelStructures(d) == fighter);
+
+    // Another model's archive would put the fighter on the screen while picks and mappings go to
+    // the transport: refused, nothing changed.
+    d.run({"choice READ_MODEL", "string transport.acm"});
+    const auto transport = modelStructures(d);
+    const std::size_t failed = d.session.failedLines();
+    d.run({"choice RETRIEVE", "string " + archive});
+    CHECK(d.session.failedLines() == failed + 1);
+    CHECK(d.session.message().rfind("ARCHIVE " + archive + " IS NOT A PICTURE OF MODEL transport: STRUCTURE ",
+                                    0) == 0);
+    CHECK(modelStructures(d) == transport);
+}
+
 TEST_CASE("numbered choices: `choice N` takes the Nth item of the menu shown") {
     Driver d("numbered");
     d.run({"choice 1"});  // MAIN: FILE

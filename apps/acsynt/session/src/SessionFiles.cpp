@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 namespace acsynt {
@@ -40,6 +41,57 @@ void requireNameLengths(const std::filesystem::path& path, const std::string& wh
                 what + " NAME '" + text.substr(0, 24) + "...' IS " + std::to_string(text.size()) +
                 " CHARACTERS LONG: A FILE NAME HOLDS AT MOST " + std::to_string(kMaxName));
     }
+}
+
+/// Where a path's last part leads when it is a symbolic link, dangling or not (weakly_canonical
+/// leaves a dangling one as it is, though writing to it creates its target).
+std::filesystem::path linkTarget(std::filesystem::path path) {
+    for (int hop = 0; hop < 40 && std::filesystem::is_symlink(path); ++hop) {
+        const std::filesystem::path next = std::filesystem::read_symlink(path);
+        path = next.is_absolute() ? next : path.parent_path() / next;
+    }
+    return path;
+}
+
+/// The structures an archive holds, read into a store of their own.
+std::unique_ptr<Phigs> readArchive(const std::filesystem::path& path) {
+    auto archived = std::make_unique<Phigs>();
+    archived->open();
+    archived->openArchiveFile(1, path);
+    try {
+        archived->retrieveAllStructures(1);
+    } catch (...) {
+        archived->closeArchiveFile(1);
+        throw;
+    }
+    archived->closeArchiveFile(1);
+    return archived;
+}
+
+/// Why `archived` is not a picture of `model` (empty when it is): every structure must be one
+/// of the model's picture (the root, the overlays, a component's, a hull's or a patch's of a
+/// component the model has), and a patch's must be the one the model draws, element for element.
+std::string notAPictureOf(const StructureStore& archived, const StructureStore& expected,
+                          const Model& model) {
+    const int components = static_cast<int>(model.components.size());
+    for (const int id : archived.structureIds()) {
+        const bool overlay = id == structures::modelRoot || id == structures::mapped ||
+                             id == structures::overlay || id == structures::errorMap;
+        const bool styled = (id >= structures::component(0) && id < structures::component(components)) ||
+                            (id >= structures::hull(0) && id < structures::hull(components));
+        if (overlay || styled) continue;
+        const std::string name = "STRUCTURE " + std::to_string(id);
+        if (!expected.exists(id) || id < structures::patch(0, 0)) return name + " IS NOT IN ITS PICTURE";
+        const int count = archived.elementCount(id);
+        bool same = count == expected.elementCount(id);
+        for (int k = 1; same && k <= count; ++k)
+            same = archived.elementAt(id, k) == expected.elementAt(id, k);
+        const Component& component = model.components[std::size_t(id / structures::patch(0, 0) - 1)];
+        if (!same)
+            return name + " IS NOT " + component.name + " PATCH " +
+                   std::to_string(id % structures::patch(0, 0));
+    }
+    return {};
 }
 
 }  // namespace
@@ -63,6 +115,14 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
             "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
     requireNameLengths(path, "OUTPUT FILE");
     const std::filesystem::path full = core_.settings.outputDirectory / path;
+    // A symbolic link inside the directory (to a folder or as the file) must not lead out of it.
+    auto inside = std::filesystem::weakly_canonical(core_.settings.outputDirectory);
+    if (!inside.has_filename()) inside = inside.parent_path();  // written with a trailing '/'
+    const auto target = std::filesystem::weakly_canonical(linkTarget(full));
+    const auto [end, rest] = std::mismatch(inside.begin(), inside.end(), target.begin(), target.end());
+    if (end != inside.end())
+        throw std::invalid_argument("OUTPUT FILE '" + name + "' LEADS OUT OF THE OUTPUT DIRECTORY (TO " +
+                                    target.string() + ") THROUGH A SYMBOLIC LINK");
     std::filesystem::create_directories(full.parent_path());
     if (std::filesystem::is_directory(full))
         throw std::invalid_argument("OUTPUT FILE " + full.string() + " IS A DIRECTORY");
@@ -227,6 +287,40 @@ bool Session::importCadFile(const std::filesystem::path& path) {
     return core_.failedLines == before;
 }
 
+void Session::retrieveArchive(const std::filesystem::path& path) {
+    // The screen, picks and mappings must keep showing the session's model: an archive is taken
+    // back only when it is a picture of that model (putting back structures it drew), and the
+    // session's own style and overlays are drawn over it again.
+    if (core_.models.empty()) {
+        fail("RETRIEVE NEEDS THE MODEL THE ARCHIVE WAS WRITTEN FROM: READ_MODEL IT FIRST");
+        return;
+    }
+    const std::unique_ptr<Phigs> archived = readArchive(path);
+    Phigs expected;
+    expected.open();
+    ModelPicture(expected.store()).build(core_.models.current(), core_.style);
+    const Model& model = core_.models.current();
+    if (const std::string why = notAPictureOf(archived->store(), expected.store(), model); !why.empty()) {
+        fail("ARCHIVE " + path.string() + " IS NOT A PICTURE OF MODEL " + model.name + ": " + why);
+        return;
+    }
+    phigs_.openArchiveFile(1, path);
+    try {
+        phigs_.setConflictResolution(ConflictResolution::Update, ConflictResolution::Update);
+        phigs_.retrieveAllStructures(1);
+    } catch (...) {
+        phigs_.closeArchiveFile(1);
+        throw;
+    }
+    phigs_.closeArchiveFile(1);
+    restyle();
+    drawMapped(false);
+    drawErrorMap();
+    drawOverlay();
+    say("RETRIEVED " + std::to_string(archived->store().structureIds().size()) + " STRUCTURES FROM " +
+        path.string());
+}
+
 void Session::archive(const std::string& name, bool retrieve) {
     const auto path = retrieve ? findInput(name) : outputPath(name);
     if (retrieve && !std::filesystem::exists(path)) {
@@ -237,21 +331,17 @@ void Session::archive(const std::string& name, bool retrieve) {
         fail("ARCHIVE FILE " + path.string() + " IS A DIRECTORY");
         return;
     }
+    if (retrieve) {
+        retrieveArchive(path);
+        return;
+    }
     phigs_.openArchiveFile(1, path);
     try {
-        if (retrieve) {
-            phigs_.setConflictResolution(ConflictResolution::Update, ConflictResolution::Update);
-            const auto ids = phigs_.archiveContents(1);
-            phigs_.retrieveAllStructures(1);
-            phigs_.closeArchiveFile(1);
-            say("RETRIEVED " + std::to_string(ids.size()) + " STRUCTURES FROM " + path.string());
-        } else {
-            phigs_.archiveStructureNetworks(1, {structures::modelRoot});
-            const auto ids = phigs_.archiveContents(1);
-            phigs_.closeArchiveFile(1);
-            noteSaved(path);
-            say("ARCHIVED " + std::to_string(ids.size()) + " STRUCTURES TO " + path.string());
-        }
+        phigs_.archiveStructureNetworks(1, {structures::modelRoot});
+        const auto ids = phigs_.archiveContents(1);
+        phigs_.closeArchiveFile(1);
+        noteSaved(path);
+        say("ARCHIVED " + std::to_string(ids.size()) + " STRUCTURES TO " + path.string());
     } catch (...) {
         phigs_.closeArchiveFile(1);
         throw;

@@ -201,6 +201,7 @@ private:
     /// FILE > HARDCOPY and `hardcopy NAME`: the views as PDF, SVG or EPS by the name's extension.
     void writeHardcopy(const std::string& name);
     void archive(const std::string& name, bool retrieve);
+    void retrieveArchive(const std::filesystem::path& path);
     void renameModel(const std::string& name);  ///< NAME_MODEL's answer
     /// The tolerance or knot count a reduction was asked for (`count`: BY COUNT's prompt).
     void reductionAnswer(const std::string& input, bool count);
