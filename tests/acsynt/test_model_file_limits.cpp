@@ -105,6 +105,23 @@ TEST_CASE("model file: components, bytes, lines, control characters and director
     for (std::size_t i = 0; i < kModelMaxComponents; ++i) many += wing("w" + std::to_string(i), 4, 5);
     CHECK(parse(many).components.size() == kModelMaxComponents);
     requireRefused(many + wing("one_more", 4, 5), "more than 64 components");
+    // Mirror images count: 31 mirrored wings and a plain one are 63 components; a mirrored one
+    // more is refused at its line, a plain one makes 64.
+    std::string mirrored = header;
+    for (int i = 0; i < 31; ++i) mirrored += wing("m" + std::to_string(i), 4, 5, true);
+    mirrored += wing("plain", 4, 5);
+    CHECK(buildModel(parse(mirrored)).components.size() == kModelMaxComponents - 1);
+    const auto componentLine = std::count(mirrored.begin(), mirrored.end(), '\n') + 1;
+    requireRefused(mirrored + wing("one_more", 4, 5, true),
+                   "limits.acm:" + std::to_string(componentLine) + ": more than 64 components with");
+    CHECK(buildModel(parse(mirrored + wing("last", 4, 5))).components.size() == kModelMaxComponents);
+    // Places lie within a million of the origin, whatever the keyword.
+    const std::string far[] = {
+        "component wing w\n  points 5\n  sections 4\n  airfoil 2412\n  position 1 1e7 0\n",
+        "component fuselage f\n  points 5\n  sections 4\n  station nose -2e6 1 1 1 0 2\n",
+        "component fuselage f\n  points 5\n  sections 4\n  station nose 0 1 1 1 1e300 2\n",
+        "component nacelle n\n  points 5\n  sections 4\n  position 0 0 0\n  profile 1000001 1\n"};
+    for (const std::string& text : far) requireRefused(header + text, "is outside [-1e+06, 1e+06]");
 
     requireRefused(header + "# " + std::string(kModelFileMaxLineLength, 'x') + "\n", "line longer than 4096");
     requireRefused(header + "component fuselage bo" + '\0' + "dy\n",

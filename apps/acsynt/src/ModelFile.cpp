@@ -54,7 +54,7 @@ public:
             fail("format version " + std::to_string(d.version) + " is not supported (this reads version " +
                  std::to_string(aircraftDescriptionVersion) + ")");
         std::set<std::string> names;
-        std::size_t patches = 0;
+        std::size_t patches = 0, lofted = 0;  // mirror images included in both
         while (next()) {
             const std::string_view key = tokens_[0];
             if (key == "model") {
@@ -63,10 +63,15 @@ public:
                 d.name = name(1, "model name");
             } else if (key == "component") {
                 if (d.name.empty()) fail("'model NAME' must come before the first component");
-                if (d.components.size() == maxComponents)
+                if (lofted == maxComponents)
                     fail("more than " + std::to_string(maxComponents) + " components");
                 ComponentDescription c = component();
-                patches += loftedPatchCount(c) * (c.mirrorName.empty() ? 1 : 2);
+                const std::size_t images = c.mirrorName.empty() ? 1 : 2;
+                lofted += images;
+                if (lofted > maxComponents)
+                    failAt(c.line, "more than " + std::to_string(maxComponents) +
+                                       " components with this one's mirror image");
+                patches += loftedPatchCount(c) * images;
                 if (patches > kModelMaxPatches)
                     fail("the components so far loft to " + std::to_string(patches) +
                          " patches; the limit is " + std::to_string(kModelMaxPatches) + " per model");
@@ -135,6 +140,12 @@ private:
             fail(what + " " + std::string(tokens_[index]) + " is outside [" + shortest(lo) + ", " +
                  shortest(hi) + "]");
         return v;
+    }
+
+    /// A place in model units: within a million of the origin, as sizes are, so that every point
+    /// of a lofted model stays finite through the views and within a saved model's limits.
+    double coordinate(std::size_t index, const std::string& what) const {
+        return number(index, what, -1e6, 1e6);
     }
 
     int integer(std::size_t index, const std::string& what) const {
@@ -280,11 +291,11 @@ private:
             s.part = FuselagePart::Afterbody;
         else
             fail("station part " + inQuotes(part) + " must be nose, mid or aft");
-        s.x = number(2, "station x");
+        s.x = coordinate(2, "station x");
         s.halfWidth = number(3, "station half width", 0, 1e6);
         s.upperHeight = number(4, "station upper height", 0, 1e6);
         s.lowerHeight = number(5, "station lower height", 0, 1e6);
-        s.zCentre = number(6, "station z centre");
+        s.zCentre = coordinate(6, "station z centre");
         s.exponent = number(7, "station exponent", 1, 10);
         const bool point = s.halfWidth == 0.0 && s.upperHeight == 0.0 && s.lowerHeight == 0.0;
         const bool solid = s.halfWidth > 0.0 && s.upperHeight > 0.0 && s.lowerHeight > 0.0;
@@ -321,7 +332,8 @@ private:
         } else if (key == "position") {
             once(seen);
             expectCount(4, "position X Y Z");
-            w.position = {number(1, "position x"), number(2, "position y"), number(3, "position z")};
+            w.position = {coordinate(1, "position x"), coordinate(2, "position y"),
+                          coordinate(3, "position z")};
         } else if (key == "root_chord") {
             once(seen);
             expectCount(2, "root_chord LENGTH");
@@ -355,10 +367,11 @@ private:
         if (key == "position") {
             once(seen);
             expectCount(4, "position X Y Z");
-            n.position = {number(1, "position x"), number(2, "position y"), number(3, "position z")};
+            n.position = {coordinate(1, "position x"), coordinate(2, "position y"),
+                          coordinate(3, "position z")};
         } else if (key == "profile") {
             expectCount(3, "profile X RADIUS");
-            NacelleStation s{number(1, "profile x"), number(2, "profile radius", 0, 1e6), line_};
+            NacelleStation s{coordinate(1, "profile x"), number(2, "profile radius", 0, 1e6), line_};
             if (!n.profile.empty() && !(s.x > n.profile.back().x))
                 fail("profile x " + std::string(tokens_[1]) +
                      " does not increase on the previous profile x " + shortest(n.profile.back().x));
