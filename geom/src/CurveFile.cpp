@@ -198,6 +198,9 @@ CurveModel readCurveFile(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw CurveFileError(path.string(), 0, "is a directory, not a curve file");
+    // A FIFO or a device would be read until its writer stops, if ever.
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw CurveFileError(path.string(), 0, "is not a regular file, not a curve file");
     std::ifstream in(path);
     if (!in) throw CurveFileError(path.string(), 0, "cannot open the curve file");
     return parseCurveFile(in, path.string());

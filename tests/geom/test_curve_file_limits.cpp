@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include <sys/stat.h>  // mkfifo
+
 namespace test_curve_file_limits {
 
 namespace {
@@ -85,6 +87,18 @@ TEST_CASE("curve file: long lines, control characters and directories are refuse
         CHECK(std::string(e.what()).find("is a directory") != std::string::npos);
         CHECK(e.line() == 0);
     }
+    // A FIFO no one writes to would block the read for ever: refused before it is opened.
+    const auto fifo = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "curve_file.fifo";
+    std::filesystem::create_directories(fifo.parent_path());
+    std::filesystem::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    try {
+        geom::readCurveFile(fifo);
+        FAIL("a FIFO was read as a curve file");
+    } catch (const geom::CurveFileError& e) {
+        CHECK(std::string(e.what()).find("is not a regular file") != std::string::npos);
+    }
+    std::filesystem::remove(fifo);
 }
 
 TEST_CASE("curve file: points too far apart for a double chord are refused, not read past the knots",
