@@ -74,12 +74,19 @@ TEST_CASE("curve scales that overflow or dwarf the surface fail their line quick
            "choice LOAD_CURVE", "string acslogo.crv 1e308"});
     CHECK(d.session.message().find("IS TOO LARGE") != std::string::npos);
     CHECK(d.session.failedLines() == 1);
+    // Finite but past a million model units (the model's own bound), or below a micro-unit.
+    for (const char* scale : {"1e300", "1e7", "1e-300", "1e-9"}) {
+        d.run({"choice LOAD_CURVE", std::string("string acslogo.crv ") + scale});
+        CHECK(d.session.message().find(scale[2] == '-' ? "IS TOO SMALL" : "IS TOO LARGE") !=
+              std::string::npos);
+    }
+    CHECK(d.session.failedLines() == 5);
     // Words after the scale, or a scale that is not a number, are refused rather than ignored.
     d.run({"choice LOAD_CURVE", "string acslogo.crv notanumber"});
     CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
     d.run({"choice LOAD_CURVE", "string acslogo.crv 0.45 abc"});
     CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
-    CHECK(d.session.failedLines() == 3);
+    CHECK(d.session.failedLines() == 7);
     // Points no curve passes through (two the same): the file and the part's line, as for the
     // file's other faults (it named only the part).
     const auto twice = session_test::outputDirectory("bounds_scale_files") / "twice.crv";
@@ -88,12 +95,13 @@ TEST_CASE("curve scales that overflow or dwarf the surface fail their line quick
                             "Continuities:\n2\n2\n2\n2\n2\nConstraints:\nNone\n";
     d.run({"choice LOAD_CURVE", "string " + twice.string()});
     CHECK(d.session.message().rfind(twice.string() + ":2: curve part 'P': ", 0) == 0);
-    CHECK(d.session.failedLines() == 4);
+    CHECK(d.session.failedLines() == 8);
 
-    for (const char* scale : {"1e150", "1e30"}) {
+    // Within that bound, yet past what MAP CURVE takes on a wing (a hundred times its size).
+    for (const char* scale : {"1e5", "5e4"}) {
         Driver big(std::string("bounds_scale_") + scale);
         placeCurve(big, std::string("acslogo.crv ") + scale);
-        // DONE drew the placed curve (finite, if huge) into the overlay structure, closed.
+        // DONE drew the placed curve into the overlay structure, closed.
         CHECK_FALSE(big.session.phigs().store().isStructureOpen());
         const std::size_t failedBefore = big.session.failedLines();
         for (const char* item : {"choice MAP_PREVIEW", "choice MAP_CURVE"}) {

@@ -125,6 +125,31 @@ TEST_CASE("UNDO and REDO step through reading, mapping and reducing, and a new c
     CHECK_FALSE(d.logHasError());
 }
 
+TEST_CASE("UNDO of DONE gives the marker back to the pad: DONE places it again and MAP CURVE maps") {
+    Driver d("undo_done");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE",
+           "string circle.crv 0.1", "choice DEFINE_POINT"});
+    pickOn(d, "right_wing", 0.5, 0.38);
+    pickOn(d, "right_wing", 0.5, 0.38);
+    d.run({"choice ACCEPT", "choice DONE device 2", "undo"});
+    CHECK(d.session.message() == "UNDONE: REFERENCE POINT");
+    REQUIRE(d.session.reference());
+    const double u = d.session.reference()->u;
+    d.run({"choice MAP_CURVE"});
+    CHECK(d.session.message() == "THE REFERENCE POINT IS NOT PLACED: DONE ON THE POINTER PAD PLACES IT");
+    CHECK(d.session.mappings().empty());
+    d.run({"choice EAST device 2"});  // the pad moves the marker again
+    CHECK(d.session.reference()->u > u);
+    d.run({"choice DONE device 2", "choice MAP_CURVE"});
+    CHECK(d.session.mappings().size() == 1);
+    // UNDO of the mapping and of DONE, then REDO of DONE: the point is placed again.
+    d.run({"undo", "undo", "redo"});
+    CHECK(d.session.message() == "REDONE: REFERENCE POINT");
+    d.run({"choice MAP_CURVE"});
+    CHECK(d.session.mappings().size() == 1);
+}
+
 TEST_CASE("a reduction of the mapped component moves its mapped curves onto the reduced surface") {
     Driver d("undo_carry");
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",

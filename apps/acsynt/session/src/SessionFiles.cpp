@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -199,14 +200,27 @@ void Session::readCurve(const std::string& input) {
             throw geom::CurveFileError(path.string(), part.line, e.what());
         }
     }
+    // The placed curve must stay a drawable, mappable size in model units, as the model's own
+    // places and sizes are (within a million of the origin).
+    constexpr double kLargest = 1e6, kSmallest = 1e-6;
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     for (auto& c : curves)
         for (auto& p : c.points) {
             p *= scale;
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                fail("CURVE SCALE " + scaleText + " IS TOO LARGE: THE CURVE IS NOT FINITE");
-                return;
-            }
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
         }
+    const glm::dvec3 far = glm::max(glm::abs(lo), glm::abs(hi));
+    const double reach = std::max({far.x, far.y, far.z});
+    if (!(reach <= kLargest)) {
+        fail("CURVE SCALE " + scaleText + " IS TOO LARGE: THE CURVE REACHES " + number(reach) +
+             " MODEL UNITS, PAST 1E6");
+        return;
+    }
+    if (!(glm::length(hi - lo) >= kSmallest)) {
+        fail("CURVE SCALE " + scaleText + " IS TOO SMALL: THE CURVE SPANS " + number(glm::length(hi - lo)) +
+             " MODEL UNITS, BELOW 1E-6");
+        return;
+    }
     core_.curveModel = std::move(model);
     core_.curves = std::move(curves);
     core_.curveFile = std::filesystem::path(name).filename().string();

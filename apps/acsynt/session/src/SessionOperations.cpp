@@ -28,6 +28,10 @@ void Session::mapCurve(bool previewOnly) {
         fail("NO CURVE LOADED: USE LOAD CURVE FIRST");
         return;
     }
+    if (core_.reference && core_.phase == Phase::MoveMarker) {
+        fail("THE REFERENCE POINT IS NOT PLACED: DONE ON THE POINTER PAD PLACES IT");
+        return;
+    }
     if (!core_.reference || core_.phase != Phase::Placed) {
         fail("NO REFERENCE POINT: USE DEFINE POINT AND DONE FIRST");
         return;

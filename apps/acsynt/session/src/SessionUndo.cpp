@@ -24,7 +24,8 @@ void Session::restore(SessionState s) {
     if (s.reference && !core_.models.empty() &&
         std::size_t(s.reference->component) < core_.models.current().components.size()) {
         core_.reference = s.reference;
-        core_.phase = s.placed ? Phase::Placed : Phase::None;
+        // A point not yet placed was being moved (DONE places it): the pad moves it again.
+        core_.phase = s.placed ? Phase::Placed : Phase::MoveMarker;
         core_.mappedSincePlaced = false;
     }
     drawOverlay();
