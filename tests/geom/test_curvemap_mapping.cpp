@@ -274,7 +274,7 @@ TEST_CASE("two and three exits are joined along the boundary into one loop", "[g
     CHECK(ru2.parts[0].loops[1].boundaryWalks == 2);
 }
 
-TEST_CASE("a curve around the whole surface gives its boundary; one beside it gives nothing",
+TEST_CASE("a curve around the whole surface gives its boundary, one beside it gives nothing",
           "[geom][curvemap]") {
     const std::vector<Curve> around{polygonCurve({{-8, -8, 0}, {8, -8, 0}, {8, 8, 0}, {-8, 8, 0}})};
     const MapResult r = wave().map(around, at(4, 4), {1e-3});

@@ -777,7 +777,7 @@ TEST_CASE("a long, densely refined curve reduces to about its simpler curve", "[
 
 namespace test_knot_reduction {
 
-TEST_CASE("reduceCurve keeps the end points of unclamped and closed curves; closed ones stay closed",
+TEST_CASE("reduceCurve keeps the end points of unclamped and closed curves, closed ones stay closed",
           "[geom][reduction]") {
     // Unclamped and periodic curves were reduced as they were: ends moved by up to the tolerance
     // and a closed curve came back open by more than it (a tester's 5 of 40 periodic curves).

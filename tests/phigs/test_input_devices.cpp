@@ -55,7 +55,7 @@ TEST_CASE("input devices: REQUEST waits for its own device and returns its measu
     CHECK(r.input.history().size() == 6);
 }
 
-TEST_CASE("input devices: a break ends a request with status NONE; a pick of nothing is NONE", "[input]") {
+TEST_CASE("input devices: a break ends a request with status NONE, a pick of nothing is NONE", "[input]") {
     Rig r("break\npick -1 0\n");
     CHECK(r.input.request(InputClass::Valuator, 1).first == InputStatus::None);
     CHECK(r.input.request(InputClass::Pick, 1).first == InputStatus::None);
@@ -166,7 +166,7 @@ TEST_CASE("input devices: SAMPLE reads the latest measure without waiting", "[in
     CHECK(r.queue.size() == 0);
 }
 
-TEST_CASE("input devices: EVENT mode queues reports; AWAIT EVENT and GET read them in order", "[input]") {
+TEST_CASE("input devices: EVENT mode queues reports, AWAIT EVENT and GET read them in order", "[input]") {
     Rig r("valuator 2 0.5\nchoice 2\nstring abc\n");
     r.input.setMode(InputClass::Valuator, 2, OperatingMode::Event);
     r.input.setMode(InputClass::Choice, 1, OperatingMode::Event);
@@ -392,7 +392,7 @@ TEST_CASE("input devices: AWAIT EVENT times out on a script 'wait' and on an idl
     CHECK(e->workstation == 2);
 }
 
-TEST_CASE("input devices: two workstations share the queue; closing one flushes its events", "[input]") {
+TEST_CASE("input devices: two workstations share the queue, closing one flushes its events", "[input]") {
     ScriptInputSource a("choice 1\n", "a"), b("choice 2\n", "b");
     FakeMeasurer measurer;
     InputQueue queue;

@@ -196,7 +196,7 @@ TEST_CASE("pick tree: a perspective view and items behind the eye stay exact", "
     requireSameHits(list, fast, every, rng, 300);  // generation 0: checked item by item each pick
 }
 
-TEST_CASE("pick tree: an unchanged list costs no update; an item edited in place with generation 0 is seen",
+TEST_CASE("pick tree: an unchanged list costs no update, an item edited in place with generation 0 is seen",
           "[pick][tree]") {
     std::mt19937 rng(22);
     DrawList list = randomScene(rng, 40);

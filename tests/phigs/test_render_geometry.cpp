@@ -318,7 +318,7 @@ TEST_CASE("describe: a vertex-coloured patterned polyline keeps one pattern alon
     }
 }
 
-TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cannot overrun",
+TEST_CASE("mesh indices: triangles, iso-lines and unique edges, bad indices cannot overrun",
           "[render][unit]") {
     MeshData mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
@@ -342,7 +342,7 @@ TEST_CASE("mesh indices: triangles, iso-lines and unique edges; bad indices cann
     for (std::uint32_t i : meshIndices(mesh).indices) CHECK(i < meshVertices(mesh).size());
 }
 
-TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by index; sided copies", "[render][unit]") {
+TEST_CASE("mesh facet edges: no diagonal inside a facet, matched by index, sided copies", "[render][unit]") {
     // A 3 x 2 grid of quadrilaterals, two triangles each, the second quadrilateral with corners of
     // its own, which its two triangles share (as facet data makes them).
     MeshData mesh;

@@ -41,7 +41,7 @@ TEST_CASE("input script: lines up to the length limit parse, one byte more is re
     CHECK(message == "s.session:2: the line is 4097 bytes long; the limit is 4096");
 }
 
-TEST_CASE("input script: control characters are refused with their column; tab and CRLF are fine",
+TEST_CASE("input script: control characters are refused with their column, tab and CRLF are fine",
           "[input][limits]") {
     CHECK(ScriptInputSource("pick\t1 2\r\nwait\r\n", "s.session").actions().size() == 2);
     for (char c : {'\0', '\x01', '\x1b', '\x1f'}) {

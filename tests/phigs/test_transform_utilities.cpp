@@ -30,7 +30,7 @@ TEST_CASE("translate, scale and rotate act on column vectors", "[transform]") {
     CHECK(r.y == Approx(2));
 }
 
-TEST_CASE("build scales, rotates x, y, z about the fixed point, then shifts; compose applies it first",
+TEST_CASE("build scales, rotates x, y, z about the fixed point, then shifts, compose applies it first",
           "[transform]") {
     const double quarter = std::numbers::pi / 2;
     const glm::dmat4 built = buildTransformationMatrix3({1, 1, 0}, {0, 0, 5}, {0, 0, quarter}, {2, 2, 2});

@@ -403,7 +403,7 @@ TEST_CASE("a network nested deeper than the limit gives an error, not a crash", 
           std::size_t(depth));
 }
 
-TEST_CASE("an edit replaces only its structure's segments of the draw list; the others are shared",
+TEST_CASE("an edit replaces only its structure's segments of the draw list, the others are shared",
           "[traverse]") {
     Scene s;
     for (int leaf = 2; leaf <= 6; ++leaf)

@@ -307,7 +307,7 @@ TEST_CASE("NaN and infinite reals in the workstation's tables are refused, the t
     CHECK(ws.tables().windowMax == glm::dvec3(0.5, 0.5, 1));
 }
 
-TEST_CASE("a window's display surface follows its drawable; the whole-surface viewport with it", "[ws]") {
+TEST_CASE("a window's display surface follows its drawable, the whole-surface viewport with it", "[ws]") {
     Phigs phigs;
     phigs.open();
     Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);

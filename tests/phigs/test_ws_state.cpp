@@ -150,7 +150,7 @@ TEST_CASE("the visual state and the empty surface say what the display shows, dr
     }
 }
 
-TEST_CASE("WAIT with NIVE or UWOR defers a change; UQUM simulates it; UPDATE performs it", "[ws][state]") {
+TEST_CASE("WAIT with NIVE or UWOR defers a change, UQUM simulates it, UPDATE performs it", "[ws][state]") {
     for (ModificationMode mode : {ModificationMode::Nive, ModificationMode::Uwor, ModificationMode::Uqum}) {
         Phigs phigs;
         phigs.open();

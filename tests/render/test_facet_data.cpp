@@ -10,7 +10,7 @@ namespace test_facet_data {
 using namespace phigs;
 using namespace render_test;
 
-TEST_CASE("facet colours colour their facets flat; edges whose flag is off are not drawn",
+TEST_CASE("facet colours colour their facets flat, edges whose flag is off are not drawn",
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {

@@ -211,7 +211,7 @@ TEST_CASE("fill areas: hollow, solid, hatch, a concave outline and a set with ho
     requireNoValidationMessages(context);
 }
 
-TEST_CASE("text: stroke text with height, up vector, path, alignment and expansion; annotation text",
+TEST_CASE("text: stroke text with height, up vector, path, alignment and expansion, annotation text",
           "[render][primitives]") {
     vk::Context context(lavapipeWithValidation());
     {

@@ -114,7 +114,7 @@ TEST_CASE("shader cache: modules that are not SPIR-V are a miss", "[shader_cache
     CHECK_FALSE(cache.load(input, "tag").has_value());
 }
 
-TEST_CASE("shader cache: off stores and finds nothing; the environment chooses the folder",
+TEST_CASE("shader cache: off stores and finds nothing, the environment chooses the folder",
           "[shader_cache]") {
     std::mt19937 rng(23);
     const ShaderCache off;

@@ -155,7 +155,7 @@ TEST_CASE("back faces: distinguished colour, and culling of back or front faces"
     requireNoValidationMessages(context);
 }
 
-TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surface do not z-fight",
+TEST_CASE("hidden surfaces: depth buffer on and off, iso-lines on a shaded surface do not z-fight",
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
@@ -200,7 +200,7 @@ TEST_CASE("hidden surfaces: depth buffer on and off; iso-lines on a shaded surfa
     requireNoValidationMessages(context);
 }
 
-TEST_CASE("depth cueing fades toward the cue colour with depth; highlighting marks an item",
+TEST_CASE("depth cueing fades toward the cue colour with depth, highlighting marks an item",
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {
@@ -276,7 +276,7 @@ TEST_CASE("flat shading derives facet normals for a mesh without normals, front 
     requireNoValidationMessages(context);
 }
 
-TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges; curves draw as polylines",
+TEST_CASE("meshes: visible edges and a hollow interior draw the triangle edges, curves draw as polylines",
           "[render][shading]") {
     vk::Context context(lavapipeWithValidation());
     {

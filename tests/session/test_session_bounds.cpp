@@ -68,7 +68,7 @@ TEST_CASE("a structure rewrite is all or nothing: a refused element leaves it as
     CHECK(sameElements(store, 7, before));
 }
 
-TEST_CASE("curve scales that overflow or dwarf the surface fail their line quickly; the session goes on") {
+TEST_CASE("curve scales that overflow or dwarf the surface fail their line quickly, the session goes on") {
     Driver d("bounds_scale");
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice CURVE_MAP",
            "choice LOAD_CURVE", "string acslogo.crv 1e308"});

@@ -172,7 +172,7 @@ TEST_CASE("SAVE MODEL: a mapping carried through a reduction names the reduced s
     CHECK_FALSE(d.logHasError());
 }
 
-TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the models stay as they were") {
+TEST_CASE("READ MODEL: a damaged saved model is refused by file and line, the models stay as they were") {
     Driver d("save_model_bad");
     const auto out = session_test::outputDirectory("save_model_bad");
     std::filesystem::remove_all(out);
@@ -198,7 +198,7 @@ TEST_CASE("READ MODEL: a damaged saved model is refused by file and line; the mo
     }
 }
 
-TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line; the models stay") {
+TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line, the models stay") {
     // A pole at 2^1000 loaded and made every view fail; a loop vertex or reference point outside
     // the surface's domain, or a patch it does not have, were taken and failed later (a reduction
     // then made its model and dropped the curves).
