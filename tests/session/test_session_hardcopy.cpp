@@ -23,9 +23,9 @@ phigs::Image crop(const phigs::Image& image, std::uint32_t x0, std::uint32_t y0,
     return out;
 }
 
-/// A PDF hardcopy rasterised so that one screen pixel is one pixel, and the screen's picture:
-/// the geometry area (the hardcopy shows it and a pixel round it) must agree within a pixel.
-void requireSamePicture(Driver& d, const std::filesystem::path& pdf) {
+/// The geometry area (less its outer frame) of a PDF hardcopy rasterised so that one screen
+/// pixel is one pixel, and of the screen's picture.
+std::pair<phigs::Image, phigs::Image> areaPictures(Driver& d, const std::filesystem::path& pdf) {
     const acsynt::PixelBox area = d.session.layout().geometry;
     const double shownX0 = std::max(area.x0 - 1, 0.0), shownY0 = std::max(area.y0 - 1, 0.0);
     const double shownWidth = std::min(area.x1 + 1, double(session_test::width)) - shownX0;
@@ -45,6 +45,13 @@ void requireSamePicture(Driver& d, const std::filesystem::path& pdf) {
     const phigs::Image fromScreen = crop(d.picture(), x0, y0, width, height);
     phigs::writePng(fromPdf, pdf.string() + ".area.png");
     phigs::writePng(fromScreen, pdf.string() + ".screen.png");
+    return {fromPdf, fromScreen};
+}
+
+/// The hardcopy's geometry area and the screen's must agree within a pixel.
+void requireSamePicture(Driver& d, const std::filesystem::path& pdf) {
+    const auto [fromPdf, fromScreen] = areaPictures(d, pdf);
+    const std::uint32_t width = fromPdf.width, height = fromPdf.height;
     const vector_test::Overlap overlap =
         vector_test::drawnOverlap(fromPdf, fromScreen, {0.02f, 0.03f, 0.08f});
     INFO(pdf.string() << ": " << overlap.drawnA << " drawn pixels in the PDF, " << overlap.drawnB
@@ -75,7 +82,35 @@ TEST_CASE("FILE > HARDCOPY writes the four views as a vector PDF that looks like
     CHECK(d.session.failedLines() == 1);  // the HARDCOPY without a model
 }
 
-TEST_CASE("the hardcopy directive writes PDF, SVG and EPS of one view; bad names are refused") {
+/// Pixels of a clear red: in a reduction's error map, only the top of the legend's colour bar.
+std::size_t redPixels(const phigs::Image& image) {
+    std::size_t count = 0;
+    for (std::uint32_t y = 0; y < image.height; ++y)
+        for (std::uint32_t x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            count += p[0] > 200 && p[1] < 80 && p[2] < 80;
+        }
+    return count;
+}
+
+TEST_CASE("a hardcopy of the error map carries its colour legend, as the screen shows it") {
+    Driver d("hardcopy_legend");
+    std::filesystem::remove_all(session_test::outputDirectory("hardcopy_legend"));
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice SURF_REDN",
+           "choice BY_TOLERANCE", "choice REDUCE_U&W"});
+    session_test::pickOn(d, "fuselage", 0.5, 0.3);
+    d.run({"string 0.01", "choice ERROR_MAP", "hardcopy legend.pdf"});
+    const auto pdf = session_test::outputDirectory("hardcopy_legend") / "legend.pdf";
+    REQUIRE(std::filesystem::exists(pdf));
+    const auto [fromPdf, fromScreen] = areaPictures(d, pdf);
+    const std::size_t onScreen = redPixels(fromScreen), onPaper = redPixels(fromPdf);
+    INFO(onScreen << " red pixels on the screen, " << onPaper << " in the PDF");
+    CHECK(onScreen > 20);
+    CHECK(onPaper > onScreen / 2);
+    CHECK(onPaper < onScreen * 2);
+}
+
+TEST_CASE("the hardcopy directive writes PDF, SVG and EPS of one view, bad names are refused") {
     Driver d("hardcopy_directive");
     const auto out = session_test::outputDirectory("hardcopy_directive");
     std::filesystem::remove_all(out);
@@ -113,12 +148,18 @@ TEST_CASE("the hardcopy directive writes PDF, SVG and EPS of one view; bad names
     CHECK(d.session.hardcopies().size() == 4);
 }
 
-TEST_CASE("a hardcopy runs the program's hook before writing; freed screen images come back") {
+TEST_CASE("a hardcopy runs the program's hook before writing, freed screen images come back") {
     Driver d("hardcopy_hook");
     const auto out = session_test::outputDirectory("hardcopy_hook");
     std::filesystem::remove_all(out);
     d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN"});
-    const phigs::Image before = d.picture();
+    // The geometry area: the message line below it says what the hardcopy wrote.
+    const acsynt::PixelBox g = d.session.layout().geometry;
+    const auto geometry = [&](const phigs::Image& screen) {
+        return crop(screen, std::uint32_t(g.x0), std::uint32_t(g.y0), std::uint32_t(g.x1 - g.x0),
+                    std::uint32_t(g.y1 - g.y0));
+    };
+    const phigs::Image before = geometry(d.picture());
     int calls = 0;
     bool writtenBefore = true;
     d.session.setBeforeHardcopy([&] {
@@ -131,7 +172,7 @@ TEST_CASE("a hardcopy runs the program's hook before writing; freed screen image
     CHECK(calls == 1);
     CHECK_FALSE(writtenBefore);
     CHECK(std::filesystem::exists(out / "one.pdf"));
-    CHECK(d.picture().rgba == before.rgba);
+    CHECK(geometry(d.picture()).rgba == before.rgba);
 }
 
 }  // namespace test_session_hardcopy

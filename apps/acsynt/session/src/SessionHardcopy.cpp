@@ -97,6 +97,7 @@ void Session::writeHardcopy(const std::string& name) {
     copyTables(core_.workstation->tables(), *paper);
     frame(*paper, npc({area.x0, area.y1}, 0), npc({area.x1, area.y0}, 1));
     (*paper).postStructure(structures::geometry, 0.5);
+    (*paper).postStructure(structures::legend, 0.85);  // the error map's colour key, when shown
     if (beforeHardcopy_) beforeHardcopy_();
     (*paper).present();  // std::runtime_error naming the file when it cannot be written
     paper.close();
