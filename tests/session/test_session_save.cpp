@@ -230,6 +230,13 @@ TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line, th
         {replaceWord("surface ", 5, "0 0"), "'surface' takes 5 values, not 6"},
         {replaceWord("reference ", 4, "0x1p-1 extra"), "'reference' takes 4 values, not 5"},
         {good + "end\n", "'end' after the model's 'end'"},
+        // Fields that contradict each other: a reference point on another component than the
+        // mapping's, or outside the patch it names; a loop vertex off the surface at its (u, w);
+        // a direction said to be closed whose ends are apart.
+        {replaceWord("reference ", 1, "0"), "the reference point is on fuselage, the mapping on right_wing"},
+        {replaceWord("reference ", 3, "0x0p+0"), "is outside patch"},
+        {replaceWord("v ", 3, "0x1p+10"), "is not on right_wing at"},
+        {replaceWord("component ", 3, "1"), "is said to be closed in u, but its u ends are apart"},
     };
     for (std::size_t i = 0; i < bad.size(); ++i) {
         const auto file = out / ("range" + std::to_string(i) + ".acs");

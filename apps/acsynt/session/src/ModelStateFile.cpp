@@ -2,12 +2,15 @@
 
 #include "acsynt/ModelFile.h"
 
+#include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
+#include "geom/curvemap/SurfaceDomain.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace acsynt {
@@ -103,7 +106,11 @@ public:
         for (std::size_t i = 0; i < n; ++i) out.push_back(real(words[from + 1 + i]));
         return out;
     }
-    [[noreturn]] void fail(const std::string& reason) const { throw ModelFileError(file_, number_, reason); }
+    [[noreturn]] void fail(const std::string& reason) const { failAt(number_, reason); }
+    [[noreturn]] void failAt(int line, const std::string& reason) const {
+        throw ModelFileError(file_, line, reason);
+    }
+    int lineNumber() const { return number_; }
 
 private:
     std::istream& in_;
@@ -118,6 +125,10 @@ ComponentKind kindOf(Reader& r, const std::string& word) {
     r.fail("unknown component kind '" + word + "'");
 }
 
+/// How near, relative to a surface's size, a point said to be on it (a loop vertex) or an edge
+/// said to meet another (a closed direction's seam) must be: rounding, not a different place.
+constexpr double kOnSurface = 1e-6;
+
 /// The non-empty knot spans of a direction's domain: the patches it is cut into that way.
 std::size_t spans(const std::vector<double>& knots, int degree, std::size_t count) {
     std::size_t n = 0;
@@ -127,6 +138,7 @@ std::size_t spans(const std::vector<double>& knots, int degree, std::size_t coun
 
 Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     const auto head = r.line("component", 5);
+    const int headLine = r.lineNumber();
     Component c;
     c.name = r.name(head[1]);
     c.kind = kindOf(r, head[2]);
@@ -168,6 +180,11 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     } catch (const geom::GeometryError& e) {
         r.fail(std::string("component ") + c.name + ": " + e.what());
     }
+    // A direction said to be closed must close: mapping wraps loops across its seam.
+    if (c.closedU && !geom::curvemap::closesInU(c.surface, kOnSurface))
+        r.failAt(headLine, "component " + c.name + " is said to be closed in u, but its u ends are apart");
+    if (c.closedW && !geom::curvemap::closesInV(c.surface, kOnSurface))
+        r.failAt(headLine, "component " + c.name + " is said to be closed in w, but its w ends are apart");
     return c;
 }
 
@@ -182,6 +199,21 @@ bool inDomain(const Component& c, glm::dvec2 uw, bool acrossSeams) {
     };
     return within(uw.x, s.domainStartU(), s.domainEndU(), c.closedU) &&
            within(uw.y, s.domainStartV(), s.domainEndV(), c.closedW);
+}
+
+/// The diagonal of the box round a surface's control points.
+double netSize(const geom::Surface& s) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& p : s.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    return glm::length(hi - lo);
+}
+
+/// The component's point at (u, w): a closed coordinate taken back into its period, one within
+/// inDomain's rounding of an end onto that end.
+glm::dvec3 surfacePoint(const Component& c, glm::dvec2 uw) {
+    const geom::curvemap::SurfaceDomain d = geom::curvemap::surfaceDomain(c.surface, c.closedU, c.closedW);
+    const glm::dvec2 q = glm::clamp(d.wrap(uw), glm::dvec2(d.u0, d.w0), glm::dvec2(d.u1, d.w1));
+    return geom::evaluate(c.surface, q.x, q.y);
 }
 
 MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const Model& model,
@@ -203,6 +235,18 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
         r.fail("the reference point (" + ref[3] + ", " + ref[4] + ") is outside " + referenced.name +
                "'s parameter domain");
     const Component& mapped = *model.find(m.component);
+    if (m.reference.patch > 0) {
+        // DEFINE POINT places the curve on the component it maps onto, in the patch it names.
+        if (&referenced != &mapped)
+            r.fail("the reference point is on " + referenced.name + ", the mapping on " + mapped.name);
+        const Patch& p = referenced.patches.patches[std::size_t(m.reference.patch - 1)];
+        const double slack = 1e-9 * (1.0 + std::abs(p.u1 - p.u0) + std::abs(p.w1 - p.w0));
+        if (!(m.reference.u >= p.u0 - slack && m.reference.u <= p.u1 + slack &&
+              m.reference.w >= p.w0 - slack && m.reference.w <= p.w1 + slack))
+            r.fail("the reference point (" + ref[3] + ", " + ref[4] + ") is outside patch " + ref[2] +
+                   " of " + referenced.name);
+    }
+    const double onSurface = kOnSurface * std::max(1.0, netSize(mapped.surface));
     const auto parts = r.line("parts", 2);
     m.parts = r.count(parts[1], 1u << 16);
     for (std::size_t i = 0; i < m.parts; ++i) {
@@ -240,6 +284,9 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
                 r.fail("the loop vertex (" + v[1] + ", " + v[2] + ") is outside " + mapped.name +
                        "'s parameter domain");
             xyz.push_back({r.coordinate(v[3]), r.coordinate(v[4]), r.coordinate(v[5])});
+            if (!(glm::length(xyz.back() - surfacePoint(mapped, uv.back())) <= onSurface))
+                r.fail("the loop vertex (" + v[3] + ", " + v[4] + ", " + v[5] + ") is not on " + mapped.name +
+                       " at (" + v[1] + ", " + v[2] + ")");
         }
         m.uvPolylines.push_back(std::move(uv));
         m.polylines.push_back(std::move(xyz));
