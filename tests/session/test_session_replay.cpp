@@ -319,12 +319,29 @@ TEST_CASE("a recorded surface pick that no longer shows there is refused by name
           "[0, 1]");
     CHECK(d.session.failedLines() == before + 1);
     d.run({"choice VIEW", "choice ONE_VIEW", "choice RETURN", "pick_surface right_wing 1 0.5 0.5 4"});
-    CHECK(d.session.message() ==
-          "BAD RECORDED PICK 'pick_surface right_wing 1 0.5 0.5 4': expected COMPONENT PATCH U W VIEW, VIEW "
-          "1..1");
+    CHECK(
+        d.session.message() ==
+        "BAD RECORDED PICK 'pick_surface right_wing 1 0.5 0.5 4': VIEW '4' IS NOT 1..1 (COMPONENT PATCH U W "
+        "VIEW)");
     d.run({"pick_surface no_such_part 1 0.5 0.5 1"});
     CHECK(d.session.message() == "RECORDED PICK: MODEL fighter HAS NO COMPONENT no_such_part");
     CHECK(d.session.failedLines() == failed + 4);
+    // Each wrong field is the one named; a patch the component lacks is said to be missing.
+    d.run({"pick_surface right_wing 1 nan 0.5 1"});
+    CHECK(d.session.message().find(": U 'nan' IS NOT A NUMBER") != std::string::npos);
+    d.run({"pick_surface right_wing 0.5 0.5 0.5 1"});
+    CHECK(d.session.message().find(": PATCH '0.5' IS NOT A WHOLE NUMBER FROM 1") != std::string::npos);
+    d.run({"pick_surface right_wing 1 0.5 x 1"});
+    CHECK(d.session.message().find(": W 'x' IS NOT A NUMBER") != std::string::npos);
+    d.run({"pick_surface right_wing 99999 0.5 0.5 1"});
+    CHECK(d.session.message() ==
+          "RECORDED PICK: right_wing HAS " + std::to_string(wing.patches.size()) + " PATCHES, NOT 99999");
+    // A pick off the screen is a mistake in the script, not a miss; a view past the poles too.
+    d.run({"pick 1e9 1e9", "pick -5 10"});
+    CHECK(d.session.message() == "PICK AT -5 10 IS OFF THE 320 X 240 SCREEN");
+    d.run({"view 0 95 1"});
+    CHECK(d.session.message().rfind("BAD VIEW: ", 0) == 0);
+    CHECK(d.session.failedLines() == failed + 11);
 }
 
 }  // namespace test_session_replay

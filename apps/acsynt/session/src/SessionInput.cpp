@@ -146,6 +146,18 @@ void Session::reductionAnswer(const std::string& input, bool count) {
 
 void Session::pick(const PickMeasure& measure) {
     if (measure.status != InputStatus::Ok) {
+        // A script's pick is a pixel of the screen: one off it is a mistake in the script, not
+        // a miss of the model.
+        const auto& history = core_.input->history();
+        if (!history.empty())
+            if (const auto* click = std::get_if<action::Pick>(&history.back().what);
+                click && !(click->position.x >= 0 && click->position.x <= layout_.width &&
+                           click->position.y >= 0 && click->position.y <= layout_.height)) {
+                fail("PICK AT " + number(click->position.x) + " " + number(click->position.y) +
+                     " IS OFF THE " + std::to_string(layout_.width) + " X " + std::to_string(layout_.height) +
+                     " SCREEN");
+                return;
+            }
         if (core_.phase != Phase::None) say("NOTHING PICKED: TRY AGAIN");
         return;
     }

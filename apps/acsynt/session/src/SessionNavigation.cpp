@@ -94,14 +94,16 @@ void Session::setView(const std::vector<std::string>& a) {
     std::vector<double> v;
     for (const auto& word : a)
         if (const auto x = parseNumber(word)) v.push_back(*x);
+    // Elevation stops short of the poles, where the view's up direction would be lost.
+    constexpr double kMaxElevation = 89.0;
     if (v.size() != a.size() || (v.size() != 3 && v.size() != 6) || !(v[2] >= sliderLow[3]) ||
-        !(v[2] <= sliderHigh[3])) {
-        fail("BAD VIEW: expected view AZIMUTH ELEVATION ZOOM [CX CY CZ], ZOOM " + number(sliderLow[3]) +
-             ".." + number(sliderHigh[3]));
+        !(v[2] <= sliderHigh[3]) || !(std::abs(v[1]) <= kMaxElevation) || !std::isfinite(v[0])) {
+        fail("BAD VIEW: expected view AZIMUTH ELEVATION ZOOM [CX CY CZ], ELEVATION -89..89, ZOOM " +
+             number(sliderLow[3]) + ".." + number(sliderHigh[3]));
         return;
     }
     core_.azimuth = wrapDegrees(v[0]);
-    core_.elevation = std::clamp(v[1], -89.0, 89.0);
+    core_.elevation = v[1];
     core_.zoom = v[2];
     if (v.size() == 6)
         core_.viewCentre = glm::dvec3(v[3], v[4], v[5]);

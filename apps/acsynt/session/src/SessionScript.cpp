@@ -193,10 +193,18 @@ void Session::pickSurface(const std::vector<std::string>& a) {
     const auto patch = parseNumber(a[1]), u = parseNumber(a[2]), w = parseNumber(a[3]),
                view = parseNumber(a[4]);
     const int views = core_.fourViews ? 4 : 1;
-    if (!patch || !u || !w || !view || *patch != std::floor(*patch) || *view != std::floor(*view) ||
-        *view < 1 || *view > views) {
-        fail("BAD RECORDED PICK '" + line + "': expected COMPONENT PATCH U W VIEW, VIEW 1.." +
-             std::to_string(views));
+    // The first field that is wrong, named.
+    std::string wrong;
+    if (!patch || *patch != std::floor(*patch) || *patch < 1)
+        wrong = "PATCH '" + a[1] + "' IS NOT A WHOLE NUMBER FROM 1";
+    else if (!u)
+        wrong = "U '" + a[2] + "' IS NOT A NUMBER";
+    else if (!w)
+        wrong = "W '" + a[3] + "' IS NOT A NUMBER";
+    else if (!view || *view != std::floor(*view) || *view < 1 || *view > views)
+        wrong = "VIEW '" + a[4] + "' IS NOT 1.." + std::to_string(views);
+    if (!wrong.empty()) {
+        fail("BAD RECORDED PICK '" + line + "': " + wrong + " (COMPONENT PATCH U W VIEW)");
         return;
     }
     if (!requireModel()) return;
@@ -205,6 +213,11 @@ void Session::pickSurface(const std::vector<std::string>& a) {
                                    [&](const Component& c) { return c.name == a[0]; });
     if (comp == model.components.end()) {
         fail("RECORDED PICK: MODEL " + model.name + " HAS NO COMPONENT " + a[0]);
+        return;
+    }
+    if (*patch > double(comp->patches.size())) {
+        fail("RECORDED PICK: " + a[0] + " HAS " + std::to_string(comp->patches.size()) + " PATCHES, NOT " +
+             a[1]);
         return;
     }
     const geom::Surface& surface = comp->surface;
