@@ -2,6 +2,7 @@
 // the Vulkan offscreen workstation) or runs interactively in a GLFW window; either way the
 // session can be recorded as a script. --export converts a model to IGES or STEP without a session.
 #include "acsynt/session/ModelExchange.h"
+#include "acsynt/session/ModelStateFile.h"
 #include "acsynt/session/Session.h"
 #include "geom/exchange/ExchangeError.h"
 #include "phigs/input/ScriptInputSource.h"
@@ -58,7 +59,7 @@ void usage(std::ostream& out) {
     out << "usage: acsynt --script FILE [--import CAD] [--keep-going] [--output DIR] [--record FILE]\n"
            "                            [--size WxH]\n"
            "       acsynt --window [--import CAD] [--output DIR] [--record FILE] [--size WxH]\n"
-           "       acsynt --export OUT.step|OUT.stp|OUT.igs|OUT.iges MODEL.acm\n"
+           "       acsynt --export OUT.step|OUT.stp|OUT.igs|OUT.iges MODEL\n"
            "  --script FILE  replay a session script headless (lavapipe), writing its snapshots;\n"
            "                 it stops at the first line that fails\n"
            "  --keep-going   carry on after a failing line (the count is still reported)\n"
@@ -69,7 +70,8 @@ void usage(std::ostream& out) {
            "  --size WxH     screen size in pixels (default 1024x768); a script's must be 4:3 like the\n"
            "                 display surface, a window's any shape (it also follows the window's size)\n"
            "  --import CAD   read an IGES or STEP file as the first model before the session's input\n"
-           "  --export OUT   write MODEL.acm (lofted) as IGES or STEP, by OUT's extension, and stop;\n"
+           "  --export OUT   write MODEL (an .acm lofted, or a saved model with its curves) as IGES or\n"
+           "                 STEP, by OUT's extension, and stop;\n"
            "                 MODEL and CAD are looked up in the shipped data folder when not found\n"
            "in the window: the left button chooses a menu row or a pad button, picks the surface\n"
            "             (DEFINE POINT, SURF_REDN), drags a slider, live (U, W: the marker, the\n"
@@ -141,6 +143,17 @@ std::string unreadable(const std::string& path) {
     return std::filesystem::is_regular_file(path, ec) ? "" : "is not a regular file";
 }
 
+/// Whether the name has an IGES or STEP extension (the exchange module's own test, which throws
+/// for any other).
+bool isCadFileName(const std::filesystem::path& path) {
+    try {
+        acsynt::exchangeCalls().checkFileName(path);
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 /// --export OUT MODEL: OUT an IGES or STEP name that can be written, MODEL readable.
 bool checkExport(const Options& o) {
     try {
@@ -160,6 +173,13 @@ bool checkExport(const Options& o) {
         std::cerr << "acsynt: model " << o.model << " " << why << "\n";
         return false;
     }
+    // An IGES or STEP file given as the model: the conversion runs the other way.
+    if (isCadFileName(o.model)) {
+        std::cerr << "acsynt: model " << o.model
+                  << " is an IGES or STEP file: --export takes an aircraft description (.acm) or a saved "
+                     "model; --import reads a CAD file into a session\n";
+        return false;
+    }
     return true;
 }
 
@@ -167,11 +187,21 @@ bool checkExport(const Options& o) {
 /// path that cannot be written.
 bool checkPaths(const Options& o) {
     std::error_code ec;
-    if (!o.importFile.empty())
+    if (!o.importFile.empty()) {
         if (const std::string why = unreadable(o.importFile); !why.empty()) {
             std::cerr << "acsynt: --import " << o.importFile << " " << why << "\n";
             return false;
         }
+        try {
+            acsynt::exchangeCalls().checkFileName(o.importFile);
+        } catch (const geom::exchange::ExchangeError& e) {
+            std::cerr << "acsynt: --import " << e.reason() << "\n";
+            return false;
+        } catch (const std::runtime_error& e) {  // the exchange module cannot be loaded
+            std::cerr << "acsynt: --import: " << e.what() << "\n";
+            return false;
+        }
+    }
     if (!o.script.empty())
         if (const std::string why = unreadable(o.script); !why.empty()) {
             std::cerr << "acsynt: --script " << o.script << " " << why << "\n";
@@ -305,8 +335,13 @@ int finish(acsynt::Session& session, const Options& o) {
 /// --export: the model lofted from its description and written as IGES or STEP.
 int exportModel(const Options& o) {
     try {
-        const acsynt::Model model = acsynt::loadModel(o.model);
-        acsynt::exchangeCalls().exportModel(model, {}, o.exportFile);
+        // An aircraft description, or a model SAVE_MODEL wrote with its mapped curves.
+        acsynt::ModelState state;
+        if (acsynt::isModelStateFile(o.model))
+            state = acsynt::readModelState(o.model);
+        else
+            state.model = acsynt::loadModel(o.model);
+        acsynt::exchangeCalls().exportModel(state.model, state.mappings, o.exportFile);
         std::cout << o.exportFile << "\n";
         return 0;
     } catch (const std::exception& e) {  // a model file that does not parse, a file that cannot be written

@@ -148,7 +148,11 @@ CurveModel parseCurveFile(std::istream& in, const std::string& source) {
         CurvePart part;
         part.line = reader.lineNumber();
         part.name = reader.require("the part name");
+        if (part.name == kPointsHeading)
+            reader.fail("the part declared at line " + std::to_string(part.line) +
+                        " has no name: a name line must come before '" + std::string(kPointsHeading) + "'");
         expectHeading(reader, kPointsHeading, part.name);
+        double length = 0.0;
         for (long i = 0; i < count; ++i) {
             const std::string text = reader.require("data point " + std::to_string(i + 1));
             const std::vector<double> v = numbers(text);
@@ -157,6 +161,10 @@ CurveModel parseCurveFile(std::istream& in, const std::string& source) {
                             " data points but line " + std::to_string(i + 1) + " of them is '" + text +
                             "', not three numbers 'x y z'");
             part.points.push_back({v[0], v[1], v[2]});
+            // The chord lengths parameterise the curve: their running sum must stay a number.
+            if (i > 0 && !std::isfinite(length += glm::length(part.points[i] - part.points[i - 1])))
+                reader.fail("data point " + std::to_string(i + 1) + " of part '" + part.name +
+                            "' is too far from the ones before: the part's length is not a finite number");
         }
         if (!closes(part))
             reader.fail("part '" + part.name +

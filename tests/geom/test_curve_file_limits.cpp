@@ -108,11 +108,20 @@ TEST_CASE("curve file: points too far apart for a double chord are refused, not 
         const std::string text = std::string("CURVE INPUT FILE\n4\nT\nData-Points:\n0 0 0\n1 0 0\n0 ") + far +
                                  " 0\n0 0 0\nContinuities:\n0\n0\n0\n0\nConstraints:\n" +
                                  "0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n";
-        const geom::CurveModel model = parse(text);
         INFO(far);
-        CHECK_THROWS_WITH(geom::interpolateModel(model),
+        // The reader refuses it at the far point's line; a part built by hand, at interpolation.
+        requireRefused(text, "limits.crv:7: data point 3 of part 'T' is too far from the ones before");
+        geom::CurvePart part;
+        part.name = "T";
+        part.points = {{0, 0, 0}, {1, 0, 0}, {0, std::stod(far), 0}, {0, 0, 0}};
+        part.continuities.assign(4, geom::Continuity::C0);
+        part.constraints.assign(8, glm::dvec3(0.0));
+        CHECK_THROWS_WITH(geom::interpolateModel(geom::CurveModel{{part}}),
                           Catch::Contains("not a finite number above the one before"));
     }
+    // A part whose name line is missing took the heading as its name.
+    requireRefused("CURVE INPUT FILE\n4\nData-Points:\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n",
+                   "limits.crv:3: the part declared at line 2 has no name");
 }
 
 }  // namespace test_curve_file_limits

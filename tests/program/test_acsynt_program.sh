@@ -139,12 +139,21 @@ printf 'acsynt-model 1\nmodel broken\n' >broken.acm
 run export_broken 1 --export broken.step broken.acm
 expect_in export_broken.err "broken.acm:"
 run export_and_script 2 --export t.step transport.acm --script good.session
+# A saved model exports as a description does; a CAD file as MODEL is the other way round.
+run export_saved 0 --export saved_model.igs out_saved/saved.acs
+[ -s saved_model.igs ] || fail "export_saved: no saved_model.igs"
+run export_cad_model 2 --export t.step transport.step
+expect_in export_cad_model.err "transport.step is an IGES or STEP file"
 printf 'choice MODELS\nchoice LIST\nsummary imported\n' >list.session
 run import_step 0 --import transport.step --script list.session --output out_import --size 320x240
 expect_in out_import/imported.txt "model transport (current): 8 components, 376 patches"
 run import_iges 0 --import fighter.igs --script list.session --output out_import_iges --size 320x240
 expect_in out_import_iges/imported.txt "model fighter (current): 6 components, 192 patches"
 run import_missing 2 --import nothing.step --script list.session --output out_import_missing
+run import_ext 2 --import transport.acm --script list.session --output out_import_ext
+expect_in import_ext.err "--import unknown extension '.acm'"
+run import_saved 0 --import saved_model.igs --script list.session --output out_import_saved --size 320x240
+expect_in out_import_saved/imported.txt "model fighter (current): 6 components, 192 patches"
 expect_in import_missing.err "--import nothing.step cannot be read"
 head -c 20000 transport.step >cut.step
 run import_cut 1 --import cut.step --script list.session --output out_import_cut --size 320x240
