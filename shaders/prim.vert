@@ -17,7 +17,8 @@ layout(location = 0) out vec3 vWorld;
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vColour;
 layout(location = 3) out float vPattern;
-layout(location = 4) out float vNpcZ;
+// NPC depth after the divide is affine across the screen: interpolated without perspective.
+layout(location = 4) noperspective out float vNpcZ;
 layout(location = 5) out vec3 vLitFront;
 layout(location = 6) out vec3 vLitBack;
 layout(location = 7) out vec3 vSpecularFront;

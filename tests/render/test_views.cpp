@@ -3,6 +3,7 @@
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
 #include "phigs/traverse/WorkstationMapping.h"
+#include "phigs/view/ViewMatrices.h"
 #include "phigs/vk/HardcopyTarget.h"
 #include "phigs/vk/ImageTarget.h"
 
@@ -134,6 +135,82 @@ TEST_CASE("views: every entry of the view table can be used up to the last one",
             const Image image = ws.draw(list);
             CHECK(at(image, 16, 48).r > 200);  // on the diagonal of the lower left quarter
             CHECK(near(at(image, 48, 16), 25, 25, 25));
+        }
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("views: a perspective view's depth limits cut a tilted area at its true NPC depth",
+          "[render][views]") {
+    // NPC z of a plane is affine across the screen only after the perspective divide: the cut
+    // by the front clip limit is where z/w reaches it, a straight line, for random tilts.
+    vk::Context context(lavapipeWithValidation());
+    {
+        const std::uint32_t size = 160;
+        vk::ImageTarget ws(context, size, size);
+        ViewMapping perspective;
+        perspective.projection = ProjectionType::Perspective;
+        perspective.projectionReferencePoint = {0, 0, 2};
+        perspective.backPlaneDistance = -1.0;
+        perspective.frontPlaneDistance = 1.0;
+        const glm::dmat4 mapping = evaluateViewMappingMatrix(perspective);
+        std::mt19937 random(612);
+        std::uniform_real_distribution<double> centre(-0.3, 0.3), slope(-0.5, 0.5), share(0.2, 0.8);
+        for (int trial = 0; trial < 6; ++trial) {
+            // A plane z = z0 + gx x + gy y, its corners over [-0.6, 0.6]^2 within VRC z [-0.9, 0.9],
+            // cut by a front limit between its nearest and farthest corners' NPC depths.
+            const double z0 = centre(random), gx = slope(random), gy = slope(random);
+            const auto corner = [&](double x, double y) { return glm::dvec3(x, y, z0 + gx * x + gy * y); };
+            const glm::dvec3 a = corner(-0.6, -0.6), b = corner(0.6, -0.6), c = corner(0.6, 0.6),
+                             d = corner(-0.6, 0.6);
+            double nearest = -1e9, farthest = 1e9;
+            for (const glm::dvec3& p : {a, b, c, d}) {
+                const glm::dvec4 q = mapping * glm::dvec4(p, 1.0);
+                nearest = std::max(nearest, q.z / q.w), farthest = std::min(farthest, q.z / q.w);
+            }
+            DrawList list = emptyScene();
+            DrawView view;
+            view.mapping = mapping;
+            view.clipMax.z = farthest + (nearest - farthest) * share(random);
+            list.views.push_back(view);
+            DrawFillArea quad = solidRectangle(0, 0, 1, 1, 0, {1, 1, 0});
+            quad.contours = {{a, b, c, d}};
+            list.items.push_back(item(quad, 1));
+            const Image image = ws.draw(list);
+            // Each pixel's expected state from the plane's points sampled over it: drawn when all
+            // lie nearer than the limit, empty when all lie beyond it (or off the quad).
+            std::vector<double> lo(size * size, 1e9), hi(size * size, -1e9);
+            const int samples = 1200;
+            for (int i = 0; i <= samples; ++i)
+                for (int j = 0; j <= samples; ++j) {
+                    const glm::dvec3 p =
+                        a + (b - a) * (double(i) / samples) + (d - a) * (double(j) / samples);
+                    const glm::dvec4 q = mapping * glm::dvec4(p, 1.0);
+                    const glm::dvec3 npc = glm::dvec3(q) / q.w;
+                    const int x = int(npc.x * size), y = int((1.0 - npc.y) * size);
+                    if (x < 0 || y < 0 || x >= int(size) || y >= int(size)) continue;
+                    lo[std::size_t(y) * size + std::size_t(x)] =
+                        std::min(lo[std::size_t(y) * size + std::size_t(x)], npc.z);
+                    hi[std::size_t(y) * size + std::size_t(x)] =
+                        std::max(hi[std::size_t(y) * size + std::size_t(x)], npc.z);
+                }
+            std::size_t wrong = 0, drawn = 0, cut = 0;
+            for (std::uint32_t y = 1; y + 1 < size; ++y)
+                for (std::uint32_t x = 1; x + 1 < size; ++x) {
+                    const std::size_t k = std::size_t(y) * size + x;
+                    const bool shows = at(image, x, y).r > 128;
+                    // Pixels on the quad's outline (partly covered) say nothing.
+                    bool inside = true;
+                    for (int dy = -1; dy <= 1; ++dy)
+                        for (int dx = -1; dx <= 1; ++dx)
+                            inside = inside && hi[k + std::size_t(dy * int(size) + dx)] > -1e9;
+                    if (!inside) continue;
+                    if (hi[k] < view.clipMax.z) wrong += !shows, ++drawn;
+                    if (lo[k] > view.clipMax.z) wrong += shows, ++cut;
+                }
+            INFO("trial " << trial << ": " << drawn << " pixels nearer than the limit, " << cut << " beyond, "
+                          << wrong << " wrong");
+            CHECK(wrong == 0);
         }
     }
     requireNoValidationMessages(context);
