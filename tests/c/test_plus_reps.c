@@ -152,7 +152,7 @@ static void one_marker_text_edge(Pint index) {
     CHECK(err == 0 && marker_got.type == marker.type && near(marker_got.size, marker.size) &&
           same_colour(marker_got.colr, marker.colr));
     pinq_marker_rep_plus(1, index, PINQ_REALIZED, &err, &marker_got); /* 1 .. 64 device units of 8 */
-    CHECK(err == 0 && near(marker_got.size, clampf(marker.size * 8, 1, 64) / 8) &&
+    CHECK(err == 0 && near(marker_got.size, clampf(marker.size * 7, 1, 64) / 7) &&
           same_colour(marker_got.colr, realized_colour(marker.colr)));
     pinq_text_rep_plus(1, index, PINQ_SET, &err, &text_got);
     CHECK(err == 0 && text_got.font == text.font && text_got.prec == text.prec &&

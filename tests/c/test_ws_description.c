@@ -72,7 +72,7 @@ static void facilities_of(Pint t) {
           line.num_pred_inds == 5);
     pinq_marker_facs(t, 2, 3, &err, &marker, &total);
     CHECK(err == 0 && total == 5 && marker.types.num_ints == 2 && ints[0] == PMARKER_CIRCLE);
-    CHECK(near(marker.nom_size, 8.0f) && marker.num_pred_inds == 5);
+    CHECK(near(marker.nom_size, 7.0f) && marker.num_pred_inds == 5);
     text.font_precs = pairs;
     pinq_text_facs(t, 2, 10, &err, &text, &total); /* the last two of 4 fonts x 3 precisions */
     CHECK(err == 0 && total == 12 && text.num_font_precs == 2);

@@ -41,8 +41,8 @@ static void bundles(void) {
     CHECK(err == 0 && line_got.type == PLINE_DOT && near(line_got.width, 16.0f) && line_got.colr_ind == 1);
     pinq_marker_rep(1, 7, PINQ_SET, &err, &marker_got);
     CHECK(err == 0 && marker_got.type == PMARKER_CIRCLE && near(marker_got.size, 100.0f));
-    pinq_marker_rep(1, 7, PINQ_REALIZED, &err, &marker_got); /* 800 device units -> 64: scale 8 */
-    CHECK(err == 0 && near(marker_got.size, 8.0f) && marker_got.colr_ind == 3);
+    pinq_marker_rep(1, 7, PINQ_REALIZED, &err, &marker_got); /* 700 device units -> 64: scale 64 / 7 */
+    CHECK(err == 0 && near(marker_got.size, 64.0f / 7.0f) && marker_got.colr_ind == 3);
     pinq_text_rep(1, 7, PINQ_SET, &err, &text_got);
     CHECK(err == 0 && text_got.font == 4 && text_got.prec == PPREC_STRING && near(text_got.char_expan, 2.0f));
     pinq_text_rep(1, 7, PINQ_REALIZED, &err, &text_got);

@@ -4,6 +4,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <iterator>
+#include <random>
+
 namespace test_traverse {
 
 using namespace phigs;
@@ -71,6 +74,54 @@ TEST_CASE("bundled attributes through the aspect source flags", "[traverse]") {
     CHECK(polylineOf(list.items[1]).style->colour == glm::vec3(0, 0, 1));
     CHECK(polylineOf(list.items[1]).style->width == 1.0f);            // width still individual
     CHECK(polylineOf(list.items[2]).style->type == LineType::Solid);  // undefined bundle 9 reads as bundle 1
+}
+
+TEST_CASE("types, widths and sizes the workstation lacks are drawn as the nearest it has", "[traverse]") {
+    // ISO 9592: a line or edge type not available is drawn as 1, a marker type as 3, a width or
+    // size as the nearest available: the description's limits, whatever the element asked.
+    Scene s;
+    const PrimitiveLimits& limits = s.ws->description().primitives;
+    std::mt19937 random(2026);
+    std::uniform_int_distribution<int> type(-4, 12);
+    const double scales[] = {0.0, 1e-6, 0.05, 0.5, 1.0, 3.0, 15.9, 16.1, 40.0, 200.0, 1e9};
+    for (int trial = 0; trial < 60; ++trial) {
+        const int lineType = type(random), markerType = type(random), edgeType = type(random);
+        const double width = scales[random() % std::size(scales)],
+                     size = scales[random() % std::size(scales)];
+        s.build(1, {IndexAttribute{ElementType::Linetype, lineType},
+                    RealAttribute{ElementType::LinewidthScaleFactor, width},
+                    IndexAttribute{ElementType::MarkerType, markerType},
+                    RealAttribute{ElementType::MarkerSizeScaleFactor, size},
+                    IndexAttribute{ElementType::Edgetype, edgeType},
+                    RealAttribute{ElementType::EdgewidthScaleFactor, width},
+                    IndexAttribute{ElementType::EdgeFlag, 1}, line, polymarker3({{0, 0, 0}}),
+                    fillArea3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})});
+        s.ws->postStructure(1, 0);
+        const DrawList& list = s.ws->display();
+        REQUIRE(list.items.size() == 3);
+        INFO("line type " << lineType << ", marker type " << markerType << ", edge type " << edgeType
+                          << ", width " << width << ", size " << size);
+        const LineStyle& l = *polylineOf(list.items[0]).style;
+        const MarkerStyle& m = *std::get<DrawPolymarker>(list.items[1].primitive).style;
+        const EdgeStyle& e = *std::get<ItemRef<DrawFillArea>>(list.items[2].primitive)->edges;
+        CHECK(int(l.type) == (lineType >= 1 && lineType <= limits.lineTypes ? lineType : 1));
+        CHECK(int(e.type) == (edgeType >= 1 && edgeType <= limits.lineTypes ? edgeType : 1));
+        CHECK(int(m.type) == (markerType >= 1 && markerType <= limits.markerTypes ? markerType : 3));
+        const double drawnWidth = double(l.width) * limits.nominalLineWidth;
+        CHECK(drawnWidth >= limits.minLineWidth * (1 - 1e-6));
+        CHECK(drawnWidth <= limits.maxLineWidth * (1 + 1e-6));
+        CHECK(double(e.width) == Approx(double(l.width)));
+        const double drawnSize = double(m.scale) * limits.nominalMarkerSize;
+        CHECK(drawnSize >= limits.minMarkerSize * (1 - 1e-6));
+        CHECK(drawnSize <= limits.maxMarkerSize * (1 + 1e-6));
+        if (width * limits.nominalLineWidth >= limits.minLineWidth &&
+            width * limits.nominalLineWidth <= limits.maxLineWidth)
+            CHECK(double(l.width) == Approx(width));
+        if (size * limits.nominalMarkerSize >= limits.minMarkerSize &&
+            size * limits.nominalMarkerSize <= limits.maxMarkerSize)
+            CHECK(double(m.scale) == Approx(size));
+        s.ws->unpostStructure(1);
+    }
 }
 
 TEST_CASE("colours: direct RGB and indices through the colour table", "[traverse]") {

@@ -250,15 +250,16 @@ TEST_CASE("realized representations: widths and sizes within the facilities, str
         const PolylineBundle line =
             realized(PolylineBundle{LineType::Solid, scale, Colour::indexed(colour)}, d, colours);
         INFO("scale " << scale << " colour " << colour);
-        CHECK(line.width * d.nominalLineWidth >= d.minLineWidth - 1e-12);
-        CHECK(line.width * d.nominalLineWidth <= d.maxLineWidth + 1e-12);
-        if (scale * d.nominalLineWidth >= d.minLineWidth && scale * d.nominalLineWidth <= d.maxLineWidth)
+        CHECK(line.width * d.primitives.nominalLineWidth >= d.primitives.minLineWidth - 1e-12);
+        CHECK(line.width * d.primitives.nominalLineWidth <= d.primitives.maxLineWidth + 1e-12);
+        if (scale * d.primitives.nominalLineWidth >= d.primitives.minLineWidth &&
+            scale * d.primitives.nominalLineWidth <= d.primitives.maxLineWidth)
             CHECK(line.width == Approx(scale));
         CHECK(line.colour.index == (colour <= 7 ? colour : 1));
         const PolymarkerBundle marker =
             realized(PolymarkerBundle{MarkerType::Dot, scale, Colour::indexed(1)}, d, colours);
-        CHECK(marker.scale * d.nominalMarkerSize <= d.maxMarkerSize + 1e-9);
-        CHECK(marker.scale * d.nominalMarkerSize >= d.minMarkerSize - 1e-9);
+        CHECK(marker.scale * d.primitives.nominalMarkerSize <= d.primitives.maxMarkerSize + 1e-9);
+        CHECK(marker.scale * d.primitives.nominalMarkerSize >= d.primitives.minMarkerSize - 1e-9);
         CHECK(realized(TextBundle{1, int(random() % 3), 1, 0, Colour::indexed(1)}, d, colours).precision ==
               2);
     }

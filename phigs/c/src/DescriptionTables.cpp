@@ -107,12 +107,12 @@ void pinq_line_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pline_facs
     if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.primitives.lineTypes), length, start, facs ? &facs->types : nullptr, total);
         if (!facs) return;
         facs->num_widths = 0;
-        facs->nom_width = real(d.nominalLineWidth);
-        facs->min_width = real(d.minLineWidth);
-        facs->max_width = real(d.maxLineWidth);
+        facs->nom_width = real(d.primitives.nominalLineWidth);
+        facs->min_width = real(d.primitives.minLineWidth);
+        facs->max_width = real(d.primitives.maxLineWidth);
         facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polylines.size());
     });
 }
@@ -121,12 +121,13 @@ void pinq_marker_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pmarker_
     if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(c::oneTo(d.markerTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.primitives.markerTypes), length, start, facs ? &facs->types : nullptr,
+                      total);
         if (!facs) return;
         facs->num_sizes = 0;
-        facs->nom_size = real(d.nominalMarkerSize);
-        facs->min_size = real(d.minMarkerSize);
-        facs->max_size = real(d.maxMarkerSize);
+        facs->nom_size = real(d.primitives.nominalMarkerSize);
+        facs->min_size = real(d.primitives.minMarkerSize);
+        facs->max_size = real(d.primitives.maxMarkerSize);
         facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polymarkers.size());
     });
 }
@@ -173,12 +174,12 @@ void pinq_edge_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pedge_facs
     if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(c::oneTo(d.lineTypes), length, start, facs ? &facs->types : nullptr, total);
+        c::answerList(c::oneTo(d.primitives.lineTypes), length, start, facs ? &facs->types : nullptr, total);
         if (!facs) return;
         facs->num_widths = 0;
-        facs->nom_width = real(d.nominalLineWidth);
-        facs->min_width = real(d.minLineWidth);
-        facs->max_width = real(d.maxLineWidth);
+        facs->nom_width = real(d.primitives.nominalLineWidth);
+        facs->min_width = real(d.primitives.minLineWidth);
+        facs->max_width = real(d.primitives.maxLineWidth);
         facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).edges.size());
     });
 }

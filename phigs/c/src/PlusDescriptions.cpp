@@ -19,15 +19,15 @@ void pinq_line_facs_plus(Pint ws_type, Pint lt_length, Pint lt_start, Pint sm_le
     if (!c::somewhereToAnswer(err, tot_lt_length, tot_sm_length, facs)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = c::describedType(ws_type, "inquiry");
-        c::answerList(c::oneTo(d.lineTypes), lt_length, lt_start, facs ? &facs->types : nullptr,
+        c::answerList(c::oneTo(d.primitives.lineTypes), lt_length, lt_start, facs ? &facs->types : nullptr,
                       tot_lt_length);
         c::answerList(d.polylineShadingMethods, sm_length, sm_start, facs ? &facs->shads : nullptr,
                       tot_sm_length);
         if (!facs) return;
         facs->num_widths = 0;
-        facs->nom_width = static_cast<Pfloat>(d.nominalLineWidth);
-        facs->min_width = static_cast<Pfloat>(d.minLineWidth);
-        facs->max_width = static_cast<Pfloat>(d.maxLineWidth);
+        facs->nom_width = static_cast<Pfloat>(d.primitives.nominalLineWidth);
+        facs->min_width = static_cast<Pfloat>(d.primitives.minLineWidth);
+        facs->max_width = static_cast<Pfloat>(d.primitives.maxLineWidth);
         facs->num_pred_inds = c::countOf(predefinedRepresentations(d.type).polylines.size());
     });
 }

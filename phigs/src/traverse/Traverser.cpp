@@ -435,8 +435,9 @@ struct Resolver {
     LineStyle line(const State& s) const {
         const PolylineBundle& b = t.polylines.get(s.polylineIndex);
         return {rgb(s.ind(AspectId::PolylineColour) ? s.lineColour : b.colour, s),
-                s.ind(AspectId::LineType) ? s.lineType : b.type,
-                static_cast<float>(s.ind(AspectId::LinewidthScale) ? s.lineWidth : b.width)};
+                t.limits.lineType(s.ind(AspectId::LineType) ? s.lineType : b.type),
+                static_cast<float>(
+                    t.limits.lineWidthScale(s.ind(AspectId::LinewidthScale) ? s.lineWidth : b.width))};
     }
     /// Whether polylines with vertex colours interpolate them (polyline shading method COLOUR).
     bool lineShaded(const State& s) const {
@@ -447,8 +448,9 @@ struct Resolver {
     MarkerStyle marker(const State& s) const {
         const PolymarkerBundle& b = t.polymarkers.get(s.polymarkerIndex);
         return {rgb(s.ind(AspectId::PolymarkerColour) ? s.markerColour : b.colour, s),
-                s.ind(AspectId::MarkerType) ? s.markerType : b.type,
-                static_cast<float>(s.ind(AspectId::MarkerSizeScale) ? s.markerScale : b.scale)};
+                t.limits.markerType(s.ind(AspectId::MarkerType) ? s.markerType : b.type),
+                static_cast<float>(
+                    t.limits.markerScale(s.ind(AspectId::MarkerSizeScale) ? s.markerScale : b.scale))};
     }
     TextStyle text(const State& s, bool annotation) const {
         const TextBundle& b = t.texts.get(s.textIndex);
@@ -502,8 +504,9 @@ struct Resolver {
         const EdgeBundle& b = t.edges.get(s.edgeIndex);
         return {s.ind(AspectId::EdgeFlag) ? s.edgeFlag : b.visible,
                 rgb(s.ind(AspectId::EdgeColour) ? s.edgeColour : b.colour, s),
-                s.ind(AspectId::EdgeType) ? s.edgeType : b.type,
-                static_cast<float>(s.ind(AspectId::EdgewidthScale) ? s.edgeWidth : b.width)};
+                t.limits.lineType(s.ind(AspectId::EdgeType) ? s.edgeType : b.type),
+                static_cast<float>(
+                    t.limits.lineWidthScale(s.ind(AspectId::EdgewidthScale) ? s.edgeWidth : b.width))};
     }
     ApproximationAttribute curveApproximation(const State& s) const {
         return s.ind(AspectId::CurveApproximation) ? s.curveApproximation

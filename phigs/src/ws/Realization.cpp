@@ -11,23 +11,18 @@ Colour realizedColour(const Colour& colour, const ColourTable& table) {
     return Colour::indexed(1);
 }
 
-/// A scale factor of a nominal size as drawn: the size clamped to [min, max].
-double realizedScale(double scale, double nominal, double min, double max) {
-    return std::clamp(scale * nominal, min, max) / nominal;
-}
-
 }  // namespace
 
 PolylineBundle realized(const PolylineBundle& b, const WorkstationDescription& d, const ColourTable& c) {
     PolylineBundle r = b;
-    r.width = realizedScale(b.width, d.nominalLineWidth, d.minLineWidth, d.maxLineWidth);
+    r.width = d.primitives.lineWidthScale(b.width);
     r.colour = realizedColour(b.colour, c);
     return r;
 }
 
 PolymarkerBundle realized(const PolymarkerBundle& b, const WorkstationDescription& d, const ColourTable& c) {
     PolymarkerBundle r = b;
-    r.scale = realizedScale(b.scale, d.nominalMarkerSize, d.minMarkerSize, d.maxMarkerSize);
+    r.scale = d.primitives.markerScale(b.scale);
     r.colour = realizedColour(b.colour, c);
     return r;
 }
@@ -51,7 +46,7 @@ InteriorBundle realized(const InteriorBundle& b, const WorkstationDescription&, 
 
 EdgeBundle realized(const EdgeBundle& b, const WorkstationDescription& d, const ColourTable& c) {
     EdgeBundle r = b;
-    r.width = realizedScale(b.width, d.nominalLineWidth, d.minLineWidth, d.maxLineWidth);
+    r.width = d.primitives.lineWidthScale(b.width);
     r.colour = realizedColour(b.colour, c);
     return r;
 }

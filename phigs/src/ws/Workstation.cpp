@@ -48,6 +48,7 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
     tables_.colours = ColourTable(description_.colourTableSize);
     tables_.viewportMax = {description_.displaySize.x, description_.displaySize.y, 1.0};
     tables_.displaySize = description_.displaySize;
+    tables_.limits = description_.primitives;
     patterns_ = PatternTable(description_.patternTableSize);
     loadPredefined(tables_, patterns_, description_.type);
     deferral_ = description_.defaultDeferral;
@@ -364,7 +365,8 @@ void Workstation::setPolylineRepresentation(int index, const PolylineBundle& bun
 void Workstation::setPolymarkerRepresentation(int index, const PolymarkerBundle& bundle) {
     const char* function = "SET POLYMARKER REPRESENTATION";
     checkBundle(tables_.polymarkers, index, {bundle.colour}, function);
-    if (static_cast<int>(bundle.type) < 1 || static_cast<int>(bundle.type) > description_.markerTypes)
+    if (static_cast<int>(bundle.type) < 1 ||
+        static_cast<int>(bundle.type) > description_.primitives.markerTypes)
         raise(log_, errors::BadMarkerType, function, "type " + std::to_string(static_cast<int>(bundle.type)));
     checkFinite({bundle.scale}, log_, function, "the marker size scale factor");
     tables_.polymarkers.set(index, bundle, log_, function);

@@ -4,6 +4,7 @@
 #include "phigs/core/ErrorLog.h"
 #include "phigs/store/Element.h"
 #include "phigs/view/ColourMappingTable.h"
+#include "phigs/view/PrimitiveLimits.h"
 #include "phigs/view/ViewTable.h"
 
 #include <glm/vec3.hpp>
@@ -135,6 +136,7 @@ struct WorkstationTables {
     glm::dvec3 windowMin{0.0}, windowMax{1.0};
     glm::dvec3 viewportMin{0.0}, viewportMax{1.0};
     glm::dvec2 displaySize{1.0};  ///< the display surface in device coordinates
+    PrimitiveLimits limits;       ///< the line and marker attributes drawn (the description's)
     std::uint64_t generation = 0;
 
     WorkstationTables() : lights{{1, Light{}}}, depthCues{{0, DepthCue{}}} {}

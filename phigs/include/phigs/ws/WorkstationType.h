@@ -2,6 +2,7 @@
 
 #include "phigs/input/InputDevice.h"
 #include "phigs/view/ColourMappingTable.h"
+#include "phigs/view/PrimitiveLimits.h"
 
 #include <glm/vec2.hpp>
 
@@ -43,12 +44,12 @@ struct WorkstationDescription {
     int depthCueTableSize = 8;
     int colourMappingTableSize = ColourMappingTable::kCapacity;  ///< entries 0 (TRUE) and up
     std::vector<int> hlhsrModes{0, 1};                           ///< 0 none, 1 z-buffer
-    int lineTypes = 4, markerTypes = 5, interiorStyles = 5;
+    int interiorStyles = 5;
+    /// Line and marker types (1 .. N), line and edge widths and marker sizes in device
+    /// coordinates; the traversal draws what they allow (phigs/view/PrimitiveLimits.h).
+    PrimitiveLimits primitives;
     WorkstationClass workstationClass = WorkstationClass::Raster;
     int patternTableSize = 32;
-    /// Line and edge widths and marker sizes in device coordinates (0 widths: continuous).
-    double nominalLineWidth = 1.0, minLineWidth = 1.0, maxLineWidth = 16.0;
-    double nominalMarkerSize = 8.0, minMarkerSize = 1.0, maxMarkerSize = 64.0;
     /// Character heights and expansion factors (0: continuous range).
     double minCharHeight = 1.0e-6, maxCharHeight = 1.0e6;
     double minCharExpansion = 0.01, maxCharExpansion = 100.0;
