@@ -1,5 +1,7 @@
 #include "geom/BezierSubdivision.h"
 
+#include "Checked.h"
+
 #include "geom/Bezier.h"
 #include "geom/GeometryError.h"
 
@@ -187,11 +189,12 @@ std::vector<SubdivisionLeaf> uniformLeaves(const std::vector<glm::dvec3>& net, s
 std::vector<SubdivisionLeaf> subdivideAdaptive(std::span<const glm::dvec3> net, std::size_t countU,
                                                std::size_t countV, const SubdivisionOptions& options,
                                                SubdivisionStats* stats) {
-    if (countU < 2 || countV < 2 || net.size() != countU * countV)
+    if (countU < 2 || countV < 2 || !detail::gridSizeIs(net.size(), countU, countV))
         throw GeometryError("subdivideAdaptive: a " + std::to_string(countU) + " x " +
-                            std::to_string(countV) + " net needs at least 2 x 2 points and " +
-                            std::to_string(countU * countV) + " points, " + std::to_string(net.size()) +
-                            " given");
+                            std::to_string(countV) +
+                            " net needs at least 2 x 2 points and countU * countV of "
+                            "them, " +
+                            std::to_string(net.size()) + " given");
     if (options.depth < 0 || options.depth > 16)
         throw GeometryError("subdivideAdaptive: depth " + std::to_string(options.depth) +
                             " is outside 0..16");

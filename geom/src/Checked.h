@@ -32,6 +32,13 @@ inline bool directionShapeOk(const std::vector<double>& knots, int degree, std::
            std::isfinite(knots[count]) && knots[p] < knots[count];
 }
 
+/// Whether `size` equals countU * countV, the product taken without wrapping: two user counts whose
+/// wrapped product matched would let a caller allocate for the huge counts.
+inline bool gridSizeIs(std::size_t size, std::size_t countU, std::size_t countV) {
+    std::size_t total = 0;
+    return !__builtin_mul_overflow(countU, countV, &total) && total == size;
+}
+
 inline void checkShape(const Curve& curve, const char* where) {
     if (!directionShapeOk(curve.knots, curve.degree, curve.points.size()) ||
         (!curve.weights.empty() && curve.weights.size() != curve.points.size()))

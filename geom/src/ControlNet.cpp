@@ -1,4 +1,5 @@
 #include "geom/ControlNet.h"
+#include "Checked.h"
 #include "NumberText.h"
 
 #include "geom/GeometryError.h"
@@ -24,7 +25,7 @@ ControlNet homogeneousNet(const Curve& curve) {
 }
 
 ControlNet homogeneousNet(const Surface& surface, bool alongV) {
-    if (surface.points.size() != surface.countU * surface.countV ||
+    if (!detail::gridSizeIs(surface.points.size(), surface.countU, surface.countV) ||
         (!surface.weights.empty() && surface.weights.size() != surface.points.size()))
         throw GeometryError("homogeneousNet: " + std::to_string(surface.points.size()) + " points and " +
                             std::to_string(surface.weights.size()) + " weights for a " +

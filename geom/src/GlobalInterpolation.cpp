@@ -1,5 +1,6 @@
 #include "geom/GlobalInterpolation.h"
 
+#include "Checked.h"
 #include "SparseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
@@ -174,7 +175,7 @@ Curve interpolateCurve(std::span<const glm::dvec3> points, int degree, Closure c
 GridParameters chordLengthGridParameters(std::span<const glm::dvec3> grid, std::size_t countU,
                                          std::size_t countV, Closure closureU, Closure closureV) {
     if (countU < 2 || countV < 2) throw GeometryError("grid parameters: need at least 2 x 2 points");
-    if (grid.size() != countU * countV)
+    if (!detail::gridSizeIs(grid.size(), countU, countV))
         throw GeometryError("grid parameters: " + std::to_string(grid.size()) + " points for a " +
                             std::to_string(countU) + " x " + std::to_string(countV) + " grid");
     checkFinite(grid);
@@ -213,7 +214,7 @@ GridParameters chordLengthGridParameters(std::span<const glm::dvec3> grid, std::
 Surface interpolateSurface(std::span<const glm::dvec3> grid, std::size_t countU, std::size_t countV,
                            const GridParameters& parameters, int degreeU, int degreeV, Closure closureU,
                            Closure closureV) {
-    if (grid.size() != countU * countV)
+    if (!detail::gridSizeIs(grid.size(), countU, countV))
         throw GeometryError("surface interpolation: " + std::to_string(grid.size()) + " points for a " +
                             std::to_string(countU) + " x " + std::to_string(countV) + " grid");
     checkFinite(grid);

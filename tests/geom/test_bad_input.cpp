@@ -5,6 +5,7 @@
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
 #include "geom/BezierPatchTree.h"
+#include "geom/BezierSubdivision.h"
 #include "geom/BoundingBox.h"
 #include "geom/ControlNet.h"
 #include "geom/Curvature.h"
@@ -320,6 +321,40 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
     REQUIRE_THROWS_WITH(makeRevolution(Curve(1, {0, 0, 1, 1}, {{-1, 0, 0}, {1, 0, 1}})),
                         Catch::Contains("profile point 0 has x -1"));
     REQUIRE_NOTHROW(makeRevolution(Curve(1, {0, 0, 1, 1}, {{-1e-17, 0, 0}, {1, 0, 1}})));
+}
+
+TEST_CASE("grid counts whose product wraps to the point count are refused, naming the counts",
+          "[geom][bad-input]") {
+    std::mt19937 rng(3003);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int k = 1; k <= 6; ++k)
+        for (std::size_t m = 2; m <= 4; ++m) {
+            // countU * countV == 2^64 + countU * m, which wraps to the point count countU * m.
+            const std::size_t small = std::size_t{1} << k, huge = (std::size_t{1} << (64 - k)) + m;
+            std::vector<glm::dvec3> grid(small * m);
+            for (auto& p : grid) p = {unit(rng), unit(rng), unit(rng)};
+            for (const auto& [countU, countV] : {std::pair{small, huge}, std::pair{huge, small}}) {
+                // Matchers hold references to their parts, so each assertion builds its own.
+                const std::string u = std::to_string(countU), v = std::to_string(countV);
+                REQUIRE_THROWS_WITH(
+                    chordLengthGridParameters(grid, countU, countV, Closure::Open, Closure::Open),
+                    Catch::Contains(u) && Catch::Contains(v));
+                REQUIRE_THROWS_WITH(
+                    interpolateSurface(grid, countU, countV, 1, 1, Closure::Open, Closure::Open),
+                    Catch::Contains(u) && Catch::Contains(v));
+                REQUIRE_THROWS_WITH(interpolateSurface(grid, countU, countV, GridParameters{{0, 1}, {0, 1}},
+                                                       1, 1, Closure::Open, Closure::Open),
+                                    Catch::Contains(u) && Catch::Contains(v));
+                REQUIRE_THROWS_WITH(subdivideAdaptive(grid, countU, countV, SubdivisionOptions{}),
+                                    Catch::Contains(u) && Catch::Contains(v));
+                Surface s = validSurface(false);
+                s.points = grid;
+                s.countU = countU;
+                s.countV = countV;
+                REQUIRE_THROWS_WITH(homogeneousNet(s, false), Catch::Contains(u) && Catch::Contains(v));
+                REQUIRE_THROWS_WITH(homogeneousNet(s, true), Catch::Contains(u) && Catch::Contains(v));
+            }
+        }
 }
 
 TEST_CASE("circles and arcs keep their radius whatever the length and angle of the axes",
