@@ -35,6 +35,18 @@ struct Interpolator {
     }
 };
 
+/// Parameters finite and strictly increasing, else GeometryError naming `where` and the index.
+void checkIncreasing(std::span<const double> parameters, const char* where) {
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (!std::isfinite(parameters[i]))
+            throw GeometryError(std::string(where) + ": parameter " + std::to_string(i) +
+                                " is not a finite number");
+        if (i > 0 && !(parameters[i] > parameters[i - 1]))
+            throw GeometryError(std::string(where) + ": parameters do not increase at index " +
+                                std::to_string(i));
+    }
+}
+
 void checkParameters(std::span<const double> parameters, std::size_t dataCount, int degree, Closure closure) {
     if (degree < 1) throw GeometryError("interpolation: degree " + std::to_string(degree) + " must be >= 1");
     if (closure == Closure::Periodic && degree % 2 == 0)
@@ -48,12 +60,7 @@ void checkParameters(std::span<const double> parameters, std::size_t dataCount, 
     if (parameters.size() != expected)
         throw GeometryError("interpolation: " + std::to_string(parameters.size()) + " parameters given for " +
                             std::to_string(dataCount) + " points, need " + std::to_string(expected));
-    for (std::size_t i = 0; i < parameters.size(); ++i) {
-        if (!std::isfinite(parameters[i]))
-            throw GeometryError("interpolation: parameter " + std::to_string(i) + " is not a finite number");
-        if (i > 0 && !(parameters[i] > parameters[i - 1]))
-            throw GeometryError("interpolation: parameters do not increase at index " + std::to_string(i));
-    }
+    checkIncreasing(parameters, "interpolation");
 }
 
 Interpolator makeInterpolator(std::span<const double> parameters, std::size_t dataCount, int degree,
@@ -131,6 +138,8 @@ std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Cl
 
 std::vector<double> interpolationKnots(std::span<const double> parameters, int degree, Closure closure) {
     const std::size_t p = static_cast<std::size_t>(std::max(degree, 1));
+    // Knots from parameters out of order or not finite would not be a knot vector.
+    checkIncreasing(parameters, "interpolation knots");
     if (closure == Closure::Open) {
         const std::size_t n = parameters.size();
         if (n < p + 1) throw GeometryError("interpolation knots: too few parameters for the degree");
@@ -147,9 +156,12 @@ std::vector<double> interpolationKnots(std::span<const double> parameters, int d
         return knots;
     }
     if (degree % 2 == 0) throw GeometryError("interpolation knots: periodic knots need an odd degree");
+    if (parameters.empty()) throw GeometryError("interpolation knots: too few parameters for the degree");
     const std::size_t n = parameters.size() - 1;  // distinct data points
     if (n < p + 1) throw GeometryError("interpolation knots: too few parameters for the degree");
     const double period = parameters[n] - parameters[0];
+    if (!std::isfinite(period))
+        throw GeometryError("interpolation knots: the parameter range overflows a double");
     std::vector<double> knots(n + 2 * p + 1);
     for (std::size_t k = 0; k <= n; ++k) knots[p + k] = parameters[k];
     for (std::size_t j = 1; j <= p; ++j) {

@@ -5,8 +5,12 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <random>
+#include <string>
 #include <vector>
 
 namespace test_global_interpolation {
@@ -155,6 +159,41 @@ TEST_CASE("interpolation rejects bad input with a GeometryError", "[geom][interp
     REQUIRE_THROWS_AS(
         interpolateCurve(std::vector<glm::dvec3>(grid.begin(), grid.begin() + 5), flat, 3, Closure::Open),
         GeometryError);
+}
+
+TEST_CASE("interpolation knots refuse parameters that are not finite or do not increase, by index",
+          "[geom][interpolation]") {
+    std::mt19937 rng(4004);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double nan = std::numeric_limits<double>::quiet_NaN(),
+                 inf = std::numeric_limits<double>::infinity();
+    for (int trial = 0; trial < 200; ++trial) {
+        const int degree = 1 + 2 * static_cast<int>(rng() % 3);  // odd, so periodic knots apply too
+        const std::size_t count = static_cast<std::size_t>(degree) + 2 + rng() % 8;
+        std::vector<double> t(count);
+        t[0] = unit(rng) * 4.0 - 2.0;
+        for (std::size_t i = 1; i < count; ++i) t[i] = t[i - 1] + 0.01 + unit(rng);
+        for (Closure closure : {Closure::Open, Closure::Periodic}) {
+            const std::vector<double> knots = interpolationKnots(t, degree, closure);
+            REQUIRE(std::is_sorted(knots.begin(), knots.end()));
+            REQUIRE(std::all_of(knots.begin(), knots.end(), [](double k) { return std::isfinite(k); }));
+        }
+        const std::size_t bad = rng() % count;
+        for (double value : {nan, inf, -inf}) {
+            std::vector<double> broken = t;
+            broken[bad] = value;
+            for (Closure closure : {Closure::Open, Closure::Periodic})
+                REQUIRE_THROWS_WITH(interpolationKnots(broken, degree, closure),
+                                    Catch::Contains("parameter " + std::to_string(bad) + " is not a finite"));
+        }
+        if (bad == 0) continue;
+        // Equal to or below its predecessor.
+        std::vector<double> backwards = t;
+        backwards[bad] = t[bad - 1] - unit(rng) * (trial % 2 == 0 ? 0.0 : 1.0);
+        for (Closure closure : {Closure::Open, Closure::Periodic})
+            REQUIRE_THROWS_WITH(interpolationKnots(backwards, degree, closure),
+                                Catch::Contains("do not increase at index " + std::to_string(bad)));
+    }
 }
 
 TEST_CASE("a surface periodic in both directions closes smoothly both ways", "[geom][interpolation]") {

@@ -31,7 +31,8 @@ std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Cl
 /// interior knots averaged from the parameters (The NURBS Book eq. 9.8). Periodic (odd degree
 /// only): the parameters themselves are the domain knots, continued periodically by `degree`
 /// knots at each end, so the domain is [knots[degree], knots[count]] = [parameters.front(),
-/// parameters.back()].
+/// parameters.back()]. Throws GeometryError naming the index of a parameter that is not finite or
+/// does not increase.
 std::vector<double> interpolationKnots(std::span<const double> parameters, int degree, Closure closure);
 
 /// The B-spline curve through `points` at `parameters`. Open: points.size() control points.
