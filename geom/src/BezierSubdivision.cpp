@@ -192,9 +192,13 @@ std::vector<SubdivisionLeaf> subdivideAdaptive(std::span<const glm::dvec3> net, 
     if (countU < 2 || countV < 2 || !detail::gridSizeIs(net.size(), countU, countV))
         throw GeometryError("subdivideAdaptive: a " + std::to_string(countU) + " x " +
                             std::to_string(countV) +
-                            " net needs at least 2 x 2 points and countU * countV of "
-                            "them, " +
+                            " net needs at least 2 x 2 points and countU * countV of them, " +
                             std::to_string(net.size()) + " given");
+    // A NaN fails every flatness test and so passes as flat: the net would come back as a leaf.
+    for (std::size_t i = 0; i < net.size(); ++i)
+        if (!detail::finite(net[i]))
+            throw GeometryError("subdivideAdaptive: net point " + std::to_string(i) +
+                                " has a non-finite coordinate");
     if (options.depth < 0 || options.depth > 16)
         throw GeometryError("subdivideAdaptive: depth " + std::to_string(options.depth) +
                             " is outside 0..16");

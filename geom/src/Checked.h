@@ -25,11 +25,12 @@ namespace geom::detail {
 [[noreturn]] void explainShape(const Curve& curve, const char* where);
 [[noreturn]] void explainShape(const Surface& surface, const char* where);
 
-/// One direction's sizes agree and its domain is finite and not empty.
+/// One direction's sizes agree, its domain is finite and not empty, and its knot span is finite.
 inline bool directionShapeOk(const std::vector<double>& knots, int degree, std::size_t count) {
     const std::size_t p = static_cast<std::size_t>(degree);
     return degree >= 1 && count >= p + 1 && knots.size() == count + p + 1 && std::isfinite(knots[p]) &&
-           std::isfinite(knots[count]) && knots[p] < knots[count];
+           std::isfinite(knots[count]) && knots[p] < knots[count] &&
+           std::isfinite(knots.back() - knots.front());
 }
 
 /// Whether `size` equals countU * countV, the product taken without wrapping: two user counts whose

@@ -91,14 +91,24 @@ Interpolator makeInterpolator(std::span<const double> parameters, std::size_t da
     return Interpolator{degree, closure, dataCount, std::move(knots), std::move(lu)};
 }
 
-/// Chord-length parameters of one polyline, or empty when it has no length.
-std::vector<double> chordParametersOrEmpty(std::span<const glm::dvec3> points, Closure closure) {
+/// The distance from a to b; where its square overflows but it does not, taken again by hypot.
+double chordLength(const glm::dvec3& a, const glm::dvec3& b) {
+    const double d = glm::distance(a, b);
+    return std::isfinite(d) ? d : std::hypot(b.x - a.x, b.y - a.y, b.z - a.z);
+}
+
+/// Chord-length parameters of one polyline, or empty when it has no length. Throws GeometryError
+/// naming `what` when the length is not finite (it overflows a double): that is no zero length.
+std::vector<double> chordParametersOrEmpty(std::span<const glm::dvec3> points, Closure closure,
+                                           const std::string& what) {
     const std::size_t n = points.size();
     const std::size_t chords = closure == Closure::Periodic ? n : n - 1;
     std::vector<double> t(chords + 1, 0.0);
-    for (std::size_t k = 1; k <= chords; ++k) t[k] = t[k - 1] + glm::distance(points[k - 1], points[k % n]);
+    for (std::size_t k = 1; k <= chords; ++k) t[k] = t[k - 1] + chordLength(points[k - 1], points[k % n]);
     const double total = t.back();
-    if (!(total > 0.0) || !std::isfinite(total)) return {};
+    if (!std::isfinite(total))
+        throw GeometryError(what + " has a length that is not finite (overflows a double)");
+    if (!(total > 0.0)) return {};
     for (double& x : t) x /= total;
     t.back() = 1.0;
     return t;
@@ -126,7 +136,7 @@ std::vector<double> uniformParameters(std::size_t count) {
 std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Closure closure) {
     if (points.size() < 2) throw GeometryError("chord-length parameters: need at least 2 points");
     checkFinite(points);
-    std::vector<double> t = chordParametersOrEmpty(points, closure);
+    std::vector<double> t = chordParametersOrEmpty(points, closure, "chord-length parameters: the polyline");
     if (t.empty()) throw GeometryError("chord-length parameters: the polyline has zero length");
     for (std::size_t k = 1; k < t.size(); ++k)
         if (!(t[k] > t[k - 1]))
@@ -216,10 +226,12 @@ GridParameters chordLengthGridParameters(std::span<const glm::dvec3> grid, std::
     std::vector<glm::dvec3> line(countU);
     for (std::size_t j = 0; j < countV; ++j) {
         for (std::size_t i = 0; i < countU; ++i) line[i] = grid[i * countV + j];
-        columns.push_back(chordParametersOrEmpty(line, closureU));
+        columns.push_back(
+            chordParametersOrEmpty(line, closureU, "grid parameters: column " + std::to_string(j)));
     }
     for (std::size_t i = 0; i < countU; ++i)
-        rows.push_back(chordParametersOrEmpty(grid.subspan(i * countV, countV), closureV));
+        rows.push_back(chordParametersOrEmpty(grid.subspan(i * countV, countV), closureV,
+                                              "grid parameters: row " + std::to_string(i)));
     return GridParameters{average(std::move(columns), "u"), average(std::move(rows), "v")};
 }
 

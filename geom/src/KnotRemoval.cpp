@@ -188,6 +188,15 @@ void checkRemovalInput(int degree, std::span<const double> knots, std::span<cons
     if (knots.size() != count + p + 1)
         throw GeometryError(std::string(where) + ": " + std::to_string(knots.size()) + " knots for " +
                             std::to_string(count) + " coefficients of degree " + std::to_string(degree));
+    // The knots are searched and compared below: a NaN or a knot out of order would be reported as
+    // a value that is not a knot.
+    for (std::size_t i = 0; i < knots.size(); ++i) {
+        if (!std::isfinite(knots[i]))
+            throw GeometryError(std::string(where) + ": knot " + std::to_string(i) +
+                                " is not a finite number");
+        if (i > 0 && knots[i] < knots[i - 1])
+            throw GeometryError(std::string(where) + ": knots decrease at index " + std::to_string(i));
+    }
 }
 
 /// The index of the last occurrence of each value (the one that goes), ascending; throws where a

@@ -38,6 +38,10 @@ void checkKnots(const std::vector<double>& knots, int degree, std::size_t count,
             throw GeometryError(where + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) +
                                 " differ by less than the smallest normal double (2.2e-308)");
     }
+    // Basis functions take differences of knots across the vector: they must not overflow.
+    if (!std::isfinite(knots.back() - knots.front()))
+        throw GeometryError(where + ": the knot span " + detail::numberText(knots.front()) + " to " +
+                            detail::numberText(knots.back()) + " is wider than the largest double");
     std::size_t run = 1;
     for (std::size_t i = 1; i < knots.size(); ++i) {
         run = knots[i] == knots[i - 1] ? run + 1 : 1;

@@ -35,6 +35,8 @@
 #include "geom/curvemap/Staircase.h"
 #include "geom/curvemap/SurfaceDomain.h"
 
+#include "GeomTestUtil.h"
+
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
@@ -355,6 +357,65 @@ TEST_CASE("grid counts whose product wraps to the point count are refused, namin
                 REQUIRE_THROWS_WITH(homogeneousNet(s, true), Catch::Contains(u) && Catch::Contains(v));
             }
         }
+}
+
+TEST_CASE("overflowing knot spans and lengths, NaN knots and NaN net points are named as such",
+          "[geom][bad-input]") {
+    std::mt19937 rng(5005);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double big = std::numeric_limits<double>::max();
+    for (int trial = 0; trial < 50; ++trial) {
+        const int degree = 1 + trial % 4;
+        const std::size_t count = static_cast<std::size_t>(degree) + 2 + rng() % 5;
+        // Knots over [-h, h] with 2 h past the largest double: each is finite, the span is not.
+        const double h = big * (0.51 + 0.49 * unit(rng));
+        Curve c = geomtest::randomCurve(rng, degree, count, trial % 2 == 1, true);
+        std::vector<double> wide = c.knots;
+        for (double& k : wide) k = h * k - h * (1.0 - k);
+        wide.front() = -h;
+        wide.back() = h;
+        CHECK_THROWS_WITH(Curve(degree, wide, c.points, c.weights), Catch::Contains("knot span"));
+        c.knots = wide;  // set by hand, past the constructor
+        CHECK_THROWS_WITH(evaluate(c, 0.0), Catch::Contains("evaluate") && Catch::Contains("knot span"));
+        Surface s = geomtest::randomSurface(rng, degree, 2, count, 3, false, true);
+        for (double& k : s.knotsU) k = h * k - h * (1.0 - k);
+        CHECK_THROWS_WITH(validate(s), Catch::Contains("knot span"));
+        CHECK_THROWS_WITH(evaluate(s, 0.0, 0.5), Catch::Contains("knot span"));
+
+        // Points a whole double range apart: the polyline's length overflows, it is not zero.
+        std::vector<glm::dvec3> far(count);
+        for (std::size_t i = 0; i < count; ++i)
+            far[i] = {(i % 2 == 0 ? -h : h), unit(rng), static_cast<double>(i)};
+        CHECK_THROWS_WITH(chordLengthParameters(far, Closure::Open), Catch::Contains("not finite"));
+        CHECK_THROWS_WITH(interpolateCurve(far, 1, Closure::Open), Catch::Contains("not finite"));
+        std::vector<glm::dvec3> grid;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (const glm::dvec3& p : far) grid.push_back(p + glm::dvec3(0, 0, static_cast<double>(10 * i)));
+        CHECK_THROWS_WITH(chordLengthGridParameters(grid, 3, count, Closure::Open, Closure::Open),
+                          Catch::Contains("row 0") && Catch::Contains("not finite"));
+        // Chords whose squares overflow but whose lengths do not still give parameters.
+        for (glm::dvec3& p : far) p.x *= 1e-150;
+        CHECK_NOTHROW(chordLengthParameters(far, Closure::Open));
+
+        // A NaN knot at a random index is named, not reported as a missing interior knot.
+        const Curve plain = geomtest::randomCurve(rng, degree, count + 2, false, true);
+        std::vector<double> knots = plain.knots;
+        const double removable = knots[static_cast<std::size_t>(degree) + 1];
+        const std::size_t nanAt = rng() % knots.size();
+        knots[nanAt] = kNaN;
+        CHECK_THROWS_WITH(
+            removeKnotsLeastSquares(degree, knots, plain.points, 1, std::vector<double>{removable}),
+            Catch::Contains("knot " + std::to_string(nanAt) + " is not a finite"));
+
+        // A net point that is not finite is refused, not returned as a flat leaf.
+        const std::size_t nu = 2 + rng() % 3, nv = 2 + rng() % 3;
+        std::vector<glm::dvec3> net(nu * nv);
+        for (auto& p : net) p = geomtest::randomPoint(rng);
+        const std::size_t badAt = rng() % net.size();
+        net[badAt][static_cast<int>(rng() % 3)] = trial % 3 == 0 ? kNaN : (trial % 3 == 1 ? kInf : -kInf);
+        CHECK_THROWS_WITH(subdivideAdaptive(net, nu, nv, SubdivisionOptions{}),
+                          Catch::Contains("net point " + std::to_string(badAt)));
+    }
 }
 
 TEST_CASE("circles and arcs keep their radius whatever the length and angle of the axes",

@@ -28,11 +28,11 @@ struct Curve {
 };
 
 /// Checks every rule a curve must keep: degree >= 1, knots.size() == points.size() + degree + 1,
-/// non-decreasing knots with a non-empty domain, multiplicity <= degree + 1, finite numbers,
-/// weights absent or one per point, each at least the smallest normal double (2.2e-308). Throws
-/// GeometryError naming the rule and index, after `where` (the calling function's name) when given.
-/// Every geom entry point checks its curves so (per-point evaluation checks the sizes, the span it
-/// reads and its result instead).
+/// non-decreasing knots with a non-empty domain and a finite span (last - first), multiplicity <=
+/// degree + 1, finite numbers, weights absent or one per point, each at least the smallest normal
+/// double (2.2e-308). Throws GeometryError naming the rule and index, after `where` (the calling
+/// function's name) when given. Every geom entry point checks its curves so (per-point evaluation
+/// checks the sizes, the domain and knot span, the span it reads and its result instead).
 void validate(const Curve& curve, std::string_view where = {});
 
 }  // namespace geom

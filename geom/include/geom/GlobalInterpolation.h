@@ -24,7 +24,8 @@ std::vector<double> uniformParameters(std::size_t count);
 /// Chord-length parameters of a polyline, normalized to [0, 1]. Open: one value per point, 0
 /// first and 1 last. Periodic: the points do not repeat the first one; the closing chord back to
 /// it counts, and the answer has one more value (1) for the closing point. Throws GeometryError
-/// when the polyline has no length or two consecutive points coincide.
+/// when the polyline has no length, a length that overflows a double, or two consecutive points
+/// coincide.
 std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Closure closure);
 
 /// Knots for interpolation at `parameters` (as chordLengthParameters returns them). Open: clamped,
