@@ -326,12 +326,23 @@ glm::dvec3 collapsedEdgeNormal(const Surface& surface, double u, double v, doubl
     return ml > 1e-8 * glm::length(a) * glm::length(b) && std::isfinite(ml) ? m / ml : glm::dvec3(0.0);
 }
 
-}  // namespace
+/// The largest absolute coordinate.
+double largestCoordinate(const glm::dvec3& a) {
+    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+}
 
-glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
-                                 const glm::dvec3& sv) {
-    // |n| > 1e-12 |a| |b|, compared squared: one square root a point instead of three. Where the
-    // product overflows or underflows (derivatives of 1e150 or 1e-150), the scaled ones decide.
+/// Whether neither derivative is below 1e-6 of the other (by largest coordinate, which neither
+/// overflows nor underflows): below it, the smaller may be rounding noise (see
+/// normalFromDerivatives). False for NaN.
+bool comparable(const glm::dvec3& su, const glm::dvec3& sv) {
+    const double a = largestCoordinate(su), b = largestCoordinate(sv);
+    return std::min(a, b) > 1e-6 * std::max(a, b);
+}
+
+/// Su x Sv normalized, or zero where |Su x Sv| <= 1e-12 |Su| |Sv|. Compared squared: one square
+/// root a point instead of three. Where the product overflows or underflows (derivatives of 1e150
+/// or 1e-150), the scaled ones decide.
+glm::dvec3 crossNormal(const glm::dvec3& su, const glm::dvec3& sv) {
     for (const bool scaled : {false, true}) {
         const glm::dvec3 a = scaled ? unitScaled(su) : su, b = scaled ? unitScaled(sv) : sv;
         const glm::dvec3 n = glm::cross(a, b);
@@ -339,18 +350,33 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
         if (len2 > 1e-24 * glm::dot(a, a) * glm::dot(b, b) && len2 > 0.0 && std::isfinite(len2))
             return n / std::sqrt(len2);
     }
+    return glm::dvec3(0.0);
+}
+
+}  // namespace
+
+glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
+                                 const glm::dvec3& sv) {
+    if (const glm::dvec3 n = crossNormal(su, sv); comparable(su, sv) && n != glm::dvec3(0.0)) return n;
     // Only the degenerate case reads the surface.
     detail::checkShape(surface, "normalFromDerivatives");
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
                                  "u");
     v = detail::checkedParameter(v, surface.domainStartV(), surface.domainEndV(), "normalFromDerivatives",
                                  "v");
-
+    // One derivative far smaller than the other: next to a collapsed edge, where a path that sums
+    // the control points themselves (a patch tree, at any scale but about 1) leaves rounding noise
+    // of arbitrary direction in the vanishing one. The per-point path takes them about a control
+    // point and keeps their digits; the answer is then the one normal() gives.
+    // A collapsed edge first: it answers only where one of those is below 1e-12 of the other,
+    // whose direction is then no more than rounding.
     const double u0 = surface.domainStartU(), u1 = surface.domainEndU();
     const double v0 = surface.domainStartV(), v1 = surface.domainEndV();
     const double dirU = (u - u0) <= (u1 - u) ? 1.0 : -1.0;
     const double dirV = (v - v0) <= (v1 - v) ? 1.0 : -1.0;
     if (const glm::dvec3 n = collapsedEdgeNormal(surface, u, v, dirU, dirV); n != glm::dvec3(0.0)) return n;
+    const SurfaceDerivatives exact = derivatives(surface, u, v, 1);
+    if (const glm::dvec3 n = crossNormal(exact.at(1, 0), exact.at(0, 1)); n != glm::dvec3(0.0)) return n;
     // Elsewhere: step towards the inside of the domain along the diagonal and take the limit of
     // the normals there.
     for (double t = 1e-7; t <= 1e-3; t *= 10.0) {

@@ -161,6 +161,29 @@ TEST_CASE("adaptive tessellation of rational surfaces with weights over four dec
     }
 }
 
+TEST_CASE("mesh normals agree with normal() at every vertex, poles and apexes too, at any scale",
+          "[geom][tessellate]") {
+    std::mt19937 rng(1001);
+    std::uniform_real_distribution<double> exponent(-8.0, 8.0), ratio(0.3, 3.0);
+    auto requireNormalsAgree = [](const Surface& s, const SurfaceMesh& mesh) {
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::dvec3 reference = normal(s, mesh.uv[i].x, mesh.uv[i].y);
+            INFO("vertex " << i << " at (" << mesh.uv[i].x << ", " << mesh.uv[i].y << ")");
+            REQUIRE(glm::length(mesh.normals[i] - reference) < 1e-6);
+        }
+    };
+    for (int trial = 0; trial < 24; ++trial) {
+        const double radius = std::pow(10.0, trial < 2 ? (trial == 0 ? -8.0 : 8.0) : exponent(rng));
+        INFO("radius " << radius);
+        const Surface shapes[] = {makeSphere(radius), makeCone(radius, radius * ratio(rng))};
+        for (const Surface& s : shapes) {
+            const int segments = 4 + static_cast<int>(rng() % 13);
+            requireNormalsAgree(s, tessellateUniform(s, segments, segments + static_cast<int>(rng() % 5)));
+            requireNormalsAgree(s, tessellateAdaptive(s, radius * 1e-3));
+        }
+    }
+}
+
 TEST_CASE("curve tessellation keeps chords within the tolerance", "[geom][tessellate]") {
     const Curve circle = makeCircle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2.0);
     for (double tolerance : {1e-2, 1e-4}) {
