@@ -37,6 +37,15 @@ std::vector<glm::dvec3> solve(std::vector<Row> rows) {
     std::vector<glm::dvec3> rhs;
     matrix.reserve(rows.size());
     for (Row& r : rows) {
+        // Each row over its largest coefficient: derivative rows scale as 1 / h^order with the
+        // parameter steps h, so at 1e-7 or 1e8 model units they would dwarf the value rows, and
+        // the pivot test (relative to the largest entry) would find them singular.
+        double largest = 0.0;
+        for (const auto& entry : r.coefficients) largest = std::max(largest, std::abs(entry.second));
+        if (largest > 0.0 && std::isfinite(largest)) {
+            for (auto& entry : r.coefficients) entry.second /= largest;
+            r.rhs /= largest;
+        }
         matrix.push_back(std::move(r.coefficients));
         rhs.push_back(r.rhs);
     }

@@ -139,6 +139,42 @@ TEST_CASE("closed interpolation: periodic C2 closure, or clamped with tangents",
     CHECK(distance(derivatives(s, s.domainEnd(), 1)[1], {0, 5, 0}) < 1e-9);
 }
 
+TEST_CASE("interpolation succeeds and passes through its points at any scale, 1e-8 to 1e8",
+          "[geom][interpolate]") {
+    std::mt19937 rng(2002);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-8.0, 8.0);
+    for (int trial = 0; trial < 300; ++trial) {
+        const double scale = std::pow(10.0, exponent(rng));
+        InterpolationData d;
+        const int n = 3 + static_cast<int>(rng() % 8);
+        d.closed = trial % 3 == 0;
+        for (int i = 0; i < n; ++i) {
+            // Points along a wobbly path (ordinary data: no two close together).
+            const glm::dvec3 p(i + 0.3 * unit(rng), std::sin(1.3 * i) + 0.3 * unit(rng), 0.5 * unit(rng));
+            d.points.push_back(scale * p);
+            d.continuities.push_back(trial % 2 == 0 ? Continuity::C2 : static_cast<Continuity>(rng() % 3));
+        }
+        if (d.closed) {
+            d.points.push_back(d.points.front());
+            d.continuities.push_back(d.continuities.front());
+        }
+        d.parameterization = static_cast<Parameterization>(1 + trial % 3);
+        // Tangents dC/dt: about a unit for chord length, the scale for uniform, its root for centripetal.
+        const double speed = d.parameterization == Parameterization::Uniform       ? scale
+                             : d.parameterization == Parameterization::Centripetal ? std::sqrt(scale)
+                                                                                   : 1.0;
+        for (std::size_t i = 0; i < constraintCount(d.continuities); ++i)
+            d.tangents.push_back(speed * glm::dvec3(1.0 + 0.2 * unit(rng), unit(rng), 0.2 * unit(rng)));
+        INFO("trial " << trial << ", scale " << scale << ", parameterization "
+                      << static_cast<int>(d.parameterization));
+        Curve c;
+        REQUIRE_NOTHROW(c = interpolateCubic(d));
+        const std::vector<double> t = interpolationParameters(d.points, d.parameterization);
+        for (std::size_t i = 0; i < d.points.size(); ++i)
+            REQUIRE(distance(evaluate(c, t[i]), d.points[i]) < 1e-9 * scale);
+    }
+}
+
 TEST_CASE("interpolation rejects bad data with the reason", "[geom][interpolate]") {
     InterpolationData d = randomPart();
     d.tangents.pop_back();
