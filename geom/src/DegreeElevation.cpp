@@ -41,39 +41,37 @@ void clampNet(int degree, std::vector<double>& knots, ControlNet& net) {
     }
 }
 
-/// The highest degree elevateDegree makes: beyond it the Bernstein and B-spline arithmetic loses
-/// the digits a shape needs (and a count near INT_MAX overflows).
+/// The highest degree elevateDegree makes (a count near INT_MAX would overflow).
 constexpr int kMaxElevatedDegree = 64;
 
-/// Solves A X = B in place for A of band w (a(i, j) = 0 for |i - j| > w), held as n rows of
-/// 2w + 1 (column j of row i at j - i + w); B is n rows of m doubles. Gaussian elimination without
-/// pivoting: a B-spline collocation matrix at points meeting the Schoenberg-Whitney condition is
-/// totally positive, for which that is stable (de Boor and Pinkus, 1977); fill-in stays in the
-/// band. O(n w^2) where a dense solve was O(n^3).
-void solveBanded(std::vector<double>& A, std::vector<double>& B, std::size_t n, std::size_t w,
-                 std::size_t m) {
-    const std::size_t width = 2 * w + 1;
-    auto a = [&](std::size_t i, std::size_t j) -> double& { return A[i * width + j + w - i]; };
-    for (std::size_t k = 0; k < n; ++k) {
-        const double pivot = a(k, k);
-        double scale = 0.0;
-        for (std::size_t j = k; j < std::min(n, k + w + 1); ++j) scale = std::max(scale, std::abs(a(k, j)));
-        if (!(std::abs(pivot) > 1e-14 * scale))
-            throw GeometryError("elevateDegree: the collocation system is singular");
-        for (std::size_t i = k + 1; i < std::min(n, k + w + 1); ++i) {
-            const double l = a(i, k) / pivot;
-            if (l == 0.0) continue;
-            for (std::size_t j = k; j < std::min(n, k + w + 1); ++j) a(i, j) -= l * a(k, j);
-            for (std::size_t c = 0; c < m; ++c) B[i * m + c] -= l * B[k * m + c];
-        }
+/// weights[i][k] = C(p, k) C(t, i - k) / C(p + t, i): the Bezier points of a degree-p segment
+/// raised by t are these convex combinations of its own (The NURBS Book eq. 5.36).
+std::vector<std::vector<double>> elevationWeights(int p, int t) {
+    const int P = p + t;
+    std::vector<std::vector<double>> binomial(static_cast<std::size_t>(P) + 1);
+    for (int n = 0; n <= P; ++n) {
+        binomial[static_cast<std::size_t>(n)].assign(static_cast<std::size_t>(n) + 1, 1.0);
+        for (int k = 1; k < n; ++k)
+            binomial[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)] =
+                binomial[static_cast<std::size_t>(n) - 1][static_cast<std::size_t>(k) - 1] +
+                binomial[static_cast<std::size_t>(n) - 1][static_cast<std::size_t>(k)];
     }
-    for (std::size_t i = n; i-- > 0;) {
-        for (std::size_t j = i + 1; j < std::min(n, i + w + 1); ++j)
-            for (std::size_t c = 0; c < m; ++c) B[i * m + c] -= a(i, j) * B[j * m + c];
-        for (std::size_t c = 0; c < m; ++c) B[i * m + c] /= a(i, i);
-    }
+    auto C = [&](int n, int k) { return binomial[static_cast<std::size_t>(n)][static_cast<std::size_t>(k)]; };
+    std::vector<std::vector<double>> w(static_cast<std::size_t>(P) + 1,
+                                       std::vector<double>(static_cast<std::size_t>(p) + 1, 0.0));
+    for (int i = 0; i <= P; ++i)
+        for (int k = std::max(0, i - t); k <= std::min(p, i); ++k)
+            w[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = C(p, k) * C(t, i - k) / C(P, i);
+    return w;
 }
 
+/// Degree elevation without a linear solve, so that no digits are lost at any degree: the old
+/// net is cut into Bezier segments (knot insertion, convex combinations), each segment raised
+/// (convex combinations again), and each new control point read off as the blossom of a segment
+/// at its knots (Ramshaw: c_i = F(s[i+1], ..., s[i+P]) for the piece on any non-empty span of
+/// its support), on the span whose extrapolating steps lose the fewest digits. Collocation at
+/// the Greville abscissae, used before, lost digits as the condition of its matrix grows with the
+/// degree (0.2 of the size at 64).
 void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int times) {
     if (times < 0) throw GeometryError("elevateDegree: cannot elevate by " + std::to_string(times));
     if (times > kMaxElevatedDegree - degree)
@@ -89,45 +87,86 @@ void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int tim
             throw GeometryError("elevateDegree: interior knot " + detail::numberText(knots[k]) +
                                 " has multiplicity degree + 1 (a break); split the curve there first");
     const int P = degree + times;
-    std::vector<double> raised;
+    const std::size_t stride = net.stride, Pn = static_cast<std::size_t>(P);
+    std::vector<double> raised, breaks;
     for (std::size_t i = 0; i < knots.size();) {
         std::size_t j = i;
         while (j < knots.size() && knots[j] == knots[i]) ++j;
         raised.insert(raised.end(), j - i + static_cast<std::size_t>(times), knots[i]);
+        breaks.push_back(knots[i]);
         i = j;
     }
-    const std::size_t n = raised.size() - static_cast<std::size_t>(P) - 1;
-    const std::size_t m = 4 * net.stride;
-    const std::size_t w = static_cast<std::size_t>(P);  // row i's entries lie in columns i - P .. i + P
-    std::vector<double> A(n * (2 * w + 1), 0.0), B(n * m, 0.0);
-    std::vector<double> oldBasis(p + 1), newBasis(static_cast<std::size_t>(P) + 1);
-    for (std::size_t i = 0; i < n; ++i) {
-        double tau = 0.0;
-        for (std::size_t k = 1; k <= static_cast<std::size_t>(P); ++k) tau += raised[i + k];
-        tau /= P;
-        const std::size_t ns = findSpan(P, raised, n, tau);
-        basisFunctions(ns, tau, P, raised, newBasis);
-        for (std::size_t k = 0; k <= static_cast<std::size_t>(P); ++k) {
-            const std::size_t j = ns - static_cast<std::size_t>(P) + k;
-            if (j + w < i || j > i + w)
-                throw GeometryError("elevateDegree: a collocation row leaves the band");
-            A[i * (2 * w + 1) + j + w - i] = newBasis[k];
-        }
-        const std::size_t os = findSpan(degree, knots, count, tau);
-        basisFunctions(os, tau, degree, knots, oldBasis);
-        for (std::size_t k = 0; k <= p; ++k) {
-            const glm::dvec4* block = net.block(os - p + k);
-            for (std::size_t c = 0; c < net.stride; ++c)
-                for (int d = 0; d < 4; ++d)
-                    B[i * m + c * 4 + static_cast<std::size_t>(d)] += oldBasis[k] * block[c][d];
-        }
+    // Bezier segments of the old net: every interior knot to multiplicity p; segment s then
+    // holds blocks s p .. s p + p.
+    std::vector<double> bezierKnots = knots;
+    ControlNet bezier = net;
+    for (std::size_t b = 1; b + 1 < breaks.size(); ++b) {
+        const int s = static_cast<int>(std::count(bezierKnots.begin(), bezierKnots.end(), breaks[b]));
+        if (s < degree) insertKnotInNet(degree, bezierKnots, bezier, breaks[b], degree - s, "elevateDegree");
     }
-    solveBanded(A, B, n, w, m);
-    net.data.resize(n * net.stride);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t c = 0; c < net.stride; ++c)
-            for (int d = 0; d < 4; ++d)
-                net.data[i * net.stride + c][d] = B[i * m + c * 4 + static_cast<std::size_t>(d)];
+    const std::size_t segments = breaks.size() - 1;
+    // Each segment raised to degree P.
+    const std::vector<std::vector<double>> w = elevationWeights(degree, times);
+    std::vector<glm::dvec4> high(segments * (Pn + 1) * stride, glm::dvec4(0.0));
+    for (std::size_t g = 0; g < segments; ++g)
+        for (std::size_t i = 0; i <= Pn; ++i) {
+            glm::dvec4* out = high.data() + (g * (Pn + 1) + i) * stride;
+            for (std::size_t k = 0; k <= p; ++k) {
+                if (w[i][k] == 0.0) continue;
+                const glm::dvec4* in = bezier.block(g * p + k);
+                for (std::size_t c = 0; c < stride; ++c) out[c] += w[i][k] * in[c];
+            }
+        }
+    // The new control points: blossoms of a segment at their knots.
+    const std::size_t n = raised.size() - Pn - 1;
+    ControlNet result;
+    result.stride = stride;
+    result.data.resize(n * stride);
+    std::vector<glm::dvec4> work((Pn + 1) * stride);
+    for (std::size_t i = 0; i < n; ++i) {
+        // Segment g spans [breaks[g], breaks[g + 1]]; any inside the support [raised[i],
+        // raised[i + P + 1]] gives the same point in exact arithmetic. A step at an argument
+        // outside the segment extrapolates and scales rounding by |1 - lambda| + |lambda|: the
+        // segment whose steps multiply to the least is taken (the longer of two neighbours, so
+        // that each factor stays below 3).
+        std::size_t best = segments;
+        double bestGrowth = 0.0;
+        const auto start = std::lower_bound(breaks.begin(), breaks.end(), raised[i]) - breaks.begin();
+        for (std::size_t g = static_cast<std::size_t>(start); g < segments && breaks[g] < raised[i + Pn + 1];
+             ++g) {
+            if (breaks[g + 1] > raised[i + Pn + 1]) break;
+            double growth = 0.0;  // log of the product of the factors
+            for (std::size_t r = 1; r <= Pn; ++r) {
+                const double lambda = (raised[i + r] - breaks[g]) / (breaks[g + 1] - breaks[g]);
+                if (lambda < 0.0 || lambda > 1.0)
+                    growth += std::log(std::abs(1.0 - lambda) + std::abs(lambda));
+            }
+            if (best == segments || growth < bestGrowth) best = g, bestGrowth = growth;
+        }
+        if (best == segments) throw GeometryError("elevateDegree: no segment lies in a support (internal)");
+        const double a = breaks[best], b = breaks[best + 1];
+        std::copy_n(high.data() + best * (Pn + 1) * stride, (Pn + 1) * stride, work.data());
+        // De Casteljau with one argument a step. Arguments at an end of the segment select
+        // instead of blending (no rounding): a shifts nothing off, b shifts by one.
+        std::size_t lo = 0, len = Pn + 1;
+        for (std::size_t r = 1; r <= Pn; ++r) {
+            const double u = raised[i + r];
+            --len;
+            if (u == a) continue;
+            if (u == b) {
+                ++lo;
+                continue;
+            }
+            const double lambda = (u - a) / (b - a);
+            for (std::size_t k = lo; k < lo + len; ++k) {
+                glm::dvec4* x = work.data() + k * stride;
+                const glm::dvec4* y = work.data() + (k + 1) * stride;
+                for (std::size_t c = 0; c < stride; ++c) x[c] = (1.0 - lambda) * x[c] + lambda * y[c];
+            }
+        }
+        std::copy_n(work.data() + lo * stride, stride, result.block(i));
+    }
+    net = std::move(result);
     knots = std::move(raised);
 }
 

@@ -86,6 +86,53 @@ TEST_CASE("degree elevation keeps the shape and the continuity", "[geom][elevate
     REQUIRE_THROWS_WITH(elevateDegree(circle, -1), Catch::Contains("elevate"));
 }
 
+TEST_CASE("degree elevation to the highest degree stays within 1e-9 of the shape, rational too",
+          "[geom][elevate]") {
+    std::mt19937 rng(62);
+    std::uniform_real_distribution<double> exponent(0.0, 3.0);
+    auto size = [](const std::vector<glm::dvec3>& points) {
+        double m = 0.0;
+        for (const glm::dvec3& q : points) m = std::max({m, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+        return m;
+    };
+    for (int trial = 0; trial < 40; ++trial) {
+        const int p = 1 + trial % 9;
+        const bool rational = trial % 2 == 1;
+        Curve c = randomCurve(rng, p, static_cast<std::size_t>(p + 1) + rng() % 6, false, trial % 3 != 0);
+        if (rational) {
+            // Weights over up to three decades.
+            c.weights.resize(c.points.size());
+            for (double& w : c.weights) w = std::pow(10.0, exponent(rng));
+        }
+        const Curve e = elevateDegree(c, 64 - p);
+        REQUIRE(e.degree == 64);
+        double gap = 0.0;
+        for (int i = 0; i <= 400; ++i) {
+            const double u = lerp(c.domainStart(), c.domainEnd(), i / 400.0);
+            gap = std::max(gap, glm::length(evaluate(e, u) - evaluate(c, u)));
+        }
+        INFO("trial " << trial << ", degree " << p << (rational ? ", rational" : ""));
+        CHECK(gap < 1e-9 * size(c.points));
+    }
+    for (int trial = 0; trial < 8; ++trial) {
+        const int p = 1 + trial % 4, q = 1 + (trial / 2) % 3;
+        const bool alongV = trial % 2 == 1;
+        const Surface s = randomSurface(rng, p, q, static_cast<std::size_t>(p + 3),
+                                        static_cast<std::size_t>(q + 3), trial % 4 >= 2, trial % 3 != 0);
+        const Surface e = elevateDegree(s, 64 - (alongV ? q : p), alongV);
+        REQUIRE((alongV ? e.degreeV : e.degreeU) == 64);
+        double gap = 0.0;
+        for (int i = 0; i <= 30; ++i)
+            for (int j = 0; j <= 30; ++j) {
+                const double u = lerp(s.domainStartU(), s.domainEndU(), i / 30.0);
+                const double v = lerp(s.domainStartV(), s.domainEndV(), j / 30.0);
+                gap = std::max(gap, glm::length(evaluate(e, u, v) - evaluate(s, u, v)));
+            }
+        INFO("surface trial " << trial);
+        CHECK(gap < 1e-9 * size(s.points));
+    }
+}
+
 TEST_CASE("reversal and reparameterisation", "[geom][reparameterize]") {
     std::mt19937 rng(71);
     const Curve c = randomCurve(rng, 3, 8, true, true);
