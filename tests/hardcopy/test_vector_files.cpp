@@ -12,6 +12,8 @@
 #include <limits>
 #include <random>
 
+#include <sys/stat.h>  // mkfifo
+
 namespace test_vector_files {
 
 using namespace phigs;
@@ -194,6 +196,36 @@ TEST_CASE("vector hardcopy: formats by name and type, errors name the file", "[h
     VectorWorkstation closed(dir / "closed.svg", VectorFormat::Svg);
     closed.close();
     CHECK_THROWS_AS(closed.update(sampleScene()), std::logic_error);
+}
+
+TEST_CASE("vector hardcopy: a link is written through, a FIFO or directory refused", "[hardcopy]") {
+    // The file is written beside its target and renamed over it: over a link that would replace
+    // the link, over a device or FIFO swap it for a regular file.
+    const auto dir = outputDir() / "targets";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir / "real");
+    std::ofstream(dir / "real" / "old.pdf") << "old";
+    std::filesystem::create_symlink("real/old.pdf", dir / "link.pdf");
+    std::filesystem::create_symlink("real/new.svg", dir / "dangling.svg");
+    for (const char* name : {"link.pdf", "dangling.svg"}) {
+        VectorWorkstation ws(dir / name, vectorFormatForFile(name));
+        ws.update(sampleScene());
+        ws.close();
+        INFO(name);
+        CHECK(std::filesystem::is_symlink(dir / name));
+    }
+    CHECK(std::filesystem::file_size(dir / "real" / "old.pdf") > 100);
+    CHECK(std::filesystem::file_size(dir / "real" / "new.svg") > 100);
+    REQUIRE(::mkfifo((dir / "fifo.eps").c_str(), 0600) == 0);
+    std::filesystem::create_directories(dir / "folder.pdf");
+    for (const char* name : {"fifo.eps", "folder.pdf"}) {
+        VectorWorkstation ws(dir / name, vectorFormatForFile(name));
+        CHECK_THROWS_WITH(ws.update(sampleScene()),
+                          Catch::Contains(name) && (Catch::Contains("is not a regular file") ||
+                                                    Catch::Contains("is a directory")));
+    }
+    CHECK(std::filesystem::is_fifo(dir / "fifo.eps"));
+    CHECK(std::filesystem::is_directory(dir / "folder.pdf"));
 }
 
 TEST_CASE("vector hardcopy: hatched holes stay empty in PDF and SVG, whichever way they wind", "[hardcopy]") {

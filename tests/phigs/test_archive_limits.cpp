@@ -398,6 +398,22 @@ TEST_CASE("archive writes leave no temporary file and a complete archive", "[arc
     std::filesystem::remove(path);
 }
 
+TEST_CASE("an archive opened through a link is written through it, the link kept", "[archive][durability]") {
+    const auto target = outputFile("linked_target.phar"), link = outputFile("linked.phar");
+    std::filesystem::create_symlink(target.filename(), link);  // dangling: the archive is created
+    Phigs phigs;
+    phigs.open();
+    phigs.store().openStructure(7);
+    phigs.store().insert(label(7));
+    phigs.store().closeStructure();
+    phigs.openArchiveFile(1, link);
+    phigs.archiveStructures(1, {7});
+    phigs.closeArchiveFile(1);
+    CHECK(std::filesystem::is_symlink(link));
+    CHECK(ArchiveFile(target, nullptr).structureIds() == std::vector<int>{7});
+    std::filesystem::remove(link), std::filesystem::remove(target);
+}
+
 TEST_CASE("a temporary file left by a killed write is removed when the archive is opened",
           "[archive][durability]") {
     auto path = outputFile("stale.phar");

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <random>
 
+#include <sys/stat.h>  // mkfifo
+
 namespace test_png {
 
 using namespace phigs;
@@ -64,6 +66,16 @@ TEST_CASE("png: bad input and unwritable places are errors naming the file", "[p
     CHECK_THROWS_WITH(writePng(wrong, scratch("wrong.png")), Catch::Contains("wrong.png"));
     CHECK_THROWS_WITH(writePng(Image(0, 0), scratch("empty.png")), Catch::Contains("empty"));
     CHECK_THROWS_WITH(writePng(Image(2, 2), scratch("no_such_dir") / "x.png"), Catch::Contains("x.png"));
+    // A link is written through (it stays a link), a FIFO is refused rather than replaced.
+    const auto target = scratch("link_target.png"), link = scratch("link.png"), fifo = scratch("fifo.png");
+    std::filesystem::remove(target), std::filesystem::remove(link), std::filesystem::remove(fifo);
+    std::filesystem::create_symlink(target.filename(), link);
+    writePng(Image(3, 2), link);
+    CHECK(std::filesystem::is_symlink(link));
+    CHECK(readPng(target).width == 3);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(writePng(Image(2, 2), fifo), Catch::Contains("fifo.png: is not a regular file"));
+    CHECK(std::filesystem::is_fifo(fifo));
 }
 
 }  // namespace test_png

@@ -1,6 +1,7 @@
 #include "phigs/hardcopy/VectorWorkstation.h"
 
 #include "CairoPainter.h"
+#include "phigs/core/FileTarget.h"
 
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
@@ -14,8 +15,10 @@ namespace phigs::hardcopy {
 
 /// One cairo file surface being written under the temporary name.
 struct VectorWorkstation::Surface {
-    Surface(const std::filesystem::path& target, VectorFormat format, glm::dvec2 size)
-        : target(target), temporary(target.string() + ".tmp") {
+    Surface(const std::filesystem::path& file, VectorFormat format, glm::dvec2 size)
+        : target(replacedFile(file)), temporary(target.string() + ".tmp") {
+        if (const std::string why = notReplaceable(target); !why.empty())
+            throw std::runtime_error("vector hardcopy: " + file.string() + " " + why);
         if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
         const std::string name = temporary.string();
         switch (format) {

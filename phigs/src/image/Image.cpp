@@ -1,5 +1,7 @@
 #include "phigs/image/Image.h"
 
+#include "phigs/core/FileTarget.h"
+
 #include <png.h>
 
 #include <cstdio>
@@ -63,7 +65,11 @@ void writePng(const Image& image, const std::filesystem::path& path) {
                                  std::to_string(image.width) + "x" + std::to_string(image.height));
     if (image.width == 0 || image.height == 0)
         throw std::runtime_error("writePng " + path.string() + ": the image is empty");
-    std::filesystem::path temp = path;
+    // Written beside the file it replaces, a link's target for a link.
+    const std::filesystem::path target = replacedFile(path);
+    if (const std::string why = notReplaceable(target); !why.empty())
+        throw std::runtime_error("writePng " + path.string() + ": " + why);
+    std::filesystem::path temp = target;
     temp += ".partial";
     FILE* file = std::fopen(temp.c_str(), "wb");
     if (!file) throw std::runtime_error("writePng " + path.string() + ": cannot open " + temp.string());
@@ -76,7 +82,7 @@ void writePng(const Image& image, const std::filesystem::path& path) {
         throw std::runtime_error("writePng " + path.string() + ": " + reason);
     }
     std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
+    std::filesystem::rename(temp, target, ec);
     if (ec) {
         std::filesystem::remove(temp);
         throw std::runtime_error("writePng " + path.string() + ": " + ec.message());

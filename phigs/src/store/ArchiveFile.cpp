@@ -1,6 +1,7 @@
 #include "phigs/store/ArchiveFile.h"
 
 #include "ElementFields.h"
+#include "phigs/core/FileTarget.h"
 #include "phigs/store/IndexRange.h"
 
 #include <fcntl.h>
@@ -417,7 +418,7 @@ std::string syncDirectory(const std::filesystem::path& path) {
 }  // namespace
 
 ArchiveFile::ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t maxFileBytes)
-    : path_(std::move(path)), log_(log), maxFileBytes_(maxFileBytes) {
+    : path_(replacedFile(std::move(path))), log_(log), maxFileBytes_(maxFileBytes) {
     const char* function = "OPEN ARCHIVE FILE";
     // A temporary file left by a killed write holds at most part of an archive; the archive
     // itself is still the last complete one.

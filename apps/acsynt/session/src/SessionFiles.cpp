@@ -11,6 +11,7 @@
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "phigs/core/Error.h"
+#include "phigs/core/FileTarget.h"
 #include "phigs/input/ScriptInputSource.h"
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/ws/EchoStructures.h"
@@ -42,16 +43,6 @@ void requireNameLengths(const std::filesystem::path& path, const std::string& wh
                 what + " NAME '" + text.substr(0, 24) + "...' IS " + std::to_string(text.size()) +
                 " CHARACTERS LONG: A FILE NAME HOLDS AT MOST " + std::to_string(kMaxName));
     }
-}
-
-/// Where a path's last part leads when it is a symbolic link, dangling or not (weakly_canonical
-/// leaves a dangling one as it is, though writing to it creates its target).
-std::filesystem::path linkTarget(std::filesystem::path path) {
-    for (int hop = 0; hop < 40 && std::filesystem::is_symlink(path); ++hop) {
-        const std::filesystem::path next = std::filesystem::read_symlink(path);
-        path = next.is_absolute() ? next : path.parent_path() / next;
-    }
-    return path;
 }
 
 /// The structures an archive holds, read into a store of their own.
@@ -119,7 +110,7 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
     // A symbolic link inside the directory (to a folder or as the file) must not lead out of it.
     auto inside = std::filesystem::weakly_canonical(core_.settings.outputDirectory);
     if (!inside.has_filename()) inside = inside.parent_path();  // written with a trailing '/'
-    const auto target = std::filesystem::weakly_canonical(linkTarget(full));
+    const auto target = std::filesystem::weakly_canonical(replacedFile(full));
     const auto [end, rest] = std::mismatch(inside.begin(), inside.end(), target.begin(), target.end());
     if (end != inside.end())
         throw std::invalid_argument("OUTPUT FILE '" + name + "' LEADS OUT OF THE OUTPUT DIRECTORY (TO " +
