@@ -148,6 +148,55 @@ TEST_CASE("vector hardcopy: PDF and SVG tile PATTERN fill areas and meshes with 
     }
 }
 
+TEST_CASE("vector hardcopy: large pattern cells stay sharp to their edges in PDF and SVG",
+          "[hardcopy][pattern]") {
+    // Viewers smooth an SVG image however it is filtered: a cell of a few image pixels blown up
+    // to 60-90 page pixels blurred into its neighbours over several pixels of its edge.
+    std::mt19937 random(707);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 3; ++trial) {
+        DrawList list = scene();
+        DrawPattern pattern;
+        pattern.columns = pattern.rows = 2;
+        pattern.colours = {kPalette[0], kPalette[1], kPalette[2], kPalette[3]};
+        list.patterns[2] = pattern;
+        InteriorStyleSet interior;
+        interior.style = InteriorStyle::Pattern;
+        interior.styleIndex = 2;
+        PatternPlacement& p = interior.pattern;
+        p.referencePoint = {0.1, 0.1, 0.0};
+        p.vectorX = {1, 0, 0};
+        p.vectorY = {0, 1, 0};
+        const double cell = (60.0 + 30.0 * unit(random)) / kPixels;
+        p.size = {2 * cell, 2 * cell};
+        list.items.push_back(square(0.1, 0.1, 0.9, 0.9, 0.5, interior));
+        const std::vector<Image> rasters = drawnFiles(list, "pattern_large" + std::to_string(trial), true);
+        INFO("trial " << trial << ", cell " << cell * kPixels << " pixels");
+        for (std::size_t f = 0; f < rasters.size(); ++f) {
+            int sampled = 0, mismatched = 0;
+            for (std::uint32_t py = 0; py < kPixels; ++py)
+                for (std::uint32_t px = 0; px < kPixels; ++px) {
+                    const glm::dvec2 x((px + 0.5) / kPixels, 1.0 - (py + 0.5) / kPixels);
+                    if (x.x < 0.11 || x.x > 0.89 || x.y < 0.11 || x.y > 0.89) continue;
+                    const double s = (x.x - 0.1) / cell, t = (x.y - 0.1) / cell;
+                    // A pixel and a half from a cell's edge at most: the rasteriser's own antialiasing.
+                    const double margin = 1.5 / (cell * kPixels);
+                    auto inside = [&](double v) {
+                        return v - std::floor(v) > margin && v - std::floor(v) < 1.0 - margin;
+                    };
+                    if (!inside(s) || !inside(t)) continue;
+                    const glm::vec3 expected =
+                        pattern.colours[std::size_t((int(std::floor(t)) % 2) * 2 + int(std::floor(s)) % 2)];
+                    ++sampled;
+                    mismatched += !near(rasters[f].pixel(px, py), expected, 8);
+                }
+            INFO((f == 0 ? "PDF" : "SVG") << ": " << mismatched << " of " << sampled << " pixels blurred");
+            CHECK(sampled > 20000);
+            CHECK(mismatched == 0);
+        }
+    }
+}
+
 TEST_CASE("vector hardcopy: a transparent surface blends over the opaque one behind it",
           "[hardcopy][transparency]") {
     DrawList list = scene();

@@ -246,9 +246,14 @@ void CairoPainter::colour(glm::vec3 rgb, float opacity) {
 
 void CairoPainter::patternSource(const PagePattern& pattern, float opacity) {
     const DrawPattern& cells = pattern.cells;
-    // Each cell a block of pixels: a viewer that smooths images (SVG renderers ignore the
-    // nearest filter) then blurs only a thin seam between cells, not the whole cell.
-    const int block = std::clamp(1024 / std::max(cells.columns, cells.rows), 1, 16);
+    // Each cell a block of pixels: a viewer that smooths images then blurs only a seam of a
+    // pixel between cells. PDF says not to smooth (the nearest filter); SVG cannot say it
+    // (cairo), and its renderers smooth: there blocks as large as a million pixels in all allow,
+    // up to 128, keep the seam a small part of a cell.
+    const bool smoothed = cairo_surface_get_type(cairo_get_target(cr_)) == CAIRO_SURFACE_TYPE_SVG;
+    const double cellCount = double(cells.columns) * double(cells.rows);
+    const int block = smoothed ? std::clamp(int(std::sqrt(double(1 << 20) / cellCount)), 1, 128)
+                               : std::clamp(1024 / std::max(cells.columns, cells.rows), 1, 16);
     cairo_surface_t* surface =
         cairo_image_surface_create(CAIRO_FORMAT_ARGB32, cells.columns * block, cells.rows * block);
     cairo_surface_flush(surface);
