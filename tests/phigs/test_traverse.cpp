@@ -291,6 +291,53 @@ TEST_CASE("meshes: triangle strip, quadrilateral mesh and cell array", "[travers
     CHECK(cells.colours[4] == glm::vec3(0, 1, 0));
 }
 
+TEST_CASE("iso-curves of a trimmed surface stop at its trim loops", "[traverse]") {
+    // A flat patch (x = u, y = v) with a round hole of random centre and radius: no step of an
+    // iso-curve crosses the hole, and the curves still run where the surface is kept.
+    Scene s;
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 8; ++trial) {
+        const glm::dvec2 centre(0.3 + 0.4 * unit(random), 0.3 + 0.4 * unit(random));
+        const double radius = 0.1 + 0.15 * unit(random);
+        NurbsSurfaceElement trimmed{bilinearPatch(), {}};
+        std::vector<glm::dvec3> circle;
+        for (int k = 0; k <= 48; ++k) {
+            const double a = 6.283185307179586 * k / 48.0;
+            circle.push_back({centre.x + radius * std::cos(a), centre.y + radius * std::sin(a), 0.0});
+        }
+        std::vector<double> knots{0.0, 0.0};
+        for (int k = 1; k < 48; ++k) knots.push_back(k);
+        knots.insert(knots.end(), {48.0, 48.0});
+        const std::vector<glm::dvec3> square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}};
+        trimmed.trimLoops = {{geom::Curve(1, {0, 0, 1, 2, 3, 4, 4}, square)},
+                             {geom::Curve(1, knots, circle)}};
+        SurfaceCharacteristicsAttribute iso;
+        iso.style = 3;
+        iso.curvesU = iso.curvesV = 9;
+        s.build(1,
+                {ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 24, 24}, iso, trimmed});
+        s.ws->postStructure(1, 0);
+        const DrawList& list = s.ws->display();
+        REQUIRE(list.items.size() == 1);
+        const MeshData& mesh = *primitiveAs<DrawMesh>(list.items[0].primitive).mesh;
+        INFO("trial " << trial << ": hole at " << centre.x << ", " << centre.y << " radius " << radius);
+        std::size_t steps = 0, crossing = 0;
+        for (const auto& line : mesh.isoLines)
+            for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+                const glm::dvec3 middle =
+                    (glm::dvec3(mesh.positions[line[k]]) + glm::dvec3(mesh.positions[line[k + 1]])) / 2.0;
+                ++steps;
+                // A step that crosses the hole passes well inside it (the polygon stands in for
+                // the circle within a cell).
+                crossing += glm::length(glm::dvec2(middle) - centre) < radius - 0.05;
+            }
+        CHECK(steps > 100);
+        CHECK(crossing == 0);
+        s.ws->unpostStructure(1);
+    }
+}
+
 TEST_CASE("NURBS surfaces and curves: tessellation, trimming, cached per element and version", "[traverse]") {
     Scene s;
     NurbsSurfaceElement patch{bilinearPatch(), {}};

@@ -273,10 +273,22 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
                 auto k = static_cast<std::uint32_t>(std::lround((along - 1) * (c + 1.0) / (count + 1.0)));
                 if (k == previous) continue;
                 previous = k;
+                // A trimmed surface's iso-curve stops where its cells are trimmed away: a step
+                // is kept when its middle is (the cells' own rule), runs of kept steps are lines.
                 std::vector<std::uint32_t> line;
-                for (std::uint32_t t = 0; t < (constantU ? nv : nu); ++t)
-                    line.push_back(constantU ? at(k, t) : at(t, k));
-                mesh.isoLines.push_back(std::move(line));
+                const std::uint32_t steps = (constantU ? nv : nu) - 1;
+                for (std::uint32_t t = 0; t < steps; ++t) {
+                    const glm::dvec2 middle = constantU ? glm::dvec2(us[k], (vs[t] + vs[t + 1]) / 2)
+                                                        : glm::dvec2((us[t] + us[t + 1]) / 2, vs[k]);
+                    if (!loops.empty() && !insideTrim(loops, middle)) {
+                        if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
+                        line.clear();
+                        continue;
+                    }
+                    if (line.empty()) line.push_back(constantU ? at(k, t) : at(t, k));
+                    line.push_back(constantU ? at(k, t + 1) : at(t + 1, k));
+                }
+                if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
             }
         };
         lines(characteristics.curvesU, nu, true);
