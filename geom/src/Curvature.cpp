@@ -30,9 +30,14 @@ SurfaceCurvature curvature(const Surface& surface, double u, double v) {
     SurfaceCurvature c;
     c.gaussian = (L * N - M * M) / det;
     c.mean = (E * N - 2.0 * F * M + G * L) / (2.0 * det);
-    const double disc = std::sqrt(std::max(0.0, c.mean * c.mean - c.gaussian));
-    c.principalMin = c.mean - disc;
-    c.principalMax = c.mean + disc;
+    // The principal curvatures as eigenvalues of the second form in an orthonormal tangent frame
+    // (e1 along su): the half difference is a root of a sum of squares, which H^2 - K, two near
+    // equal numbers at an umbilic, loses half the digits of.
+    const double f = F / E, h2 = det / E;  // e2 = (sv - f su) / sqrt(h2)
+    const double a = L / E, b = (M - f * L) / std::sqrt(E * h2), cc = (N - 2.0 * f * M + f * f * L) / h2;
+    const double middle = 0.5 * (a + cc), half = std::hypot(0.5 * (a - cc), b);
+    c.principalMin = middle - half;
+    c.principalMax = middle + half;
     return c;
 }
 

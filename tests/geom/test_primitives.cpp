@@ -110,6 +110,31 @@ TEST_CASE("normals and curvatures of the quadrics", "[geom][curvature]") {
     REQUIRE(kInner == Approx(-1.0 / 2.0).epsilon(1e-10));
 }
 
+TEST_CASE("principal curvatures are exact at umbilics and agree with K and H elsewhere",
+          "[geom][curvature]") {
+    // At an umbilic (every point of a sphere) H^2 - K is a difference of near equal numbers:
+    // principal curvatures taken from it lost half their digits (2.6e-8 on the unit sphere).
+    std::mt19937 rng(404);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const double r = std::pow(10.0, -3.0 + 6.0 * unit(rng));
+        const Surface sphere = makeSphere(r);
+        const double u = 0.05 + 0.9 * unit(rng), v = unit(rng);
+        const SurfaceCurvature c = curvature(sphere, u, v);
+        INFO("radius " << r << " at " << u << ", " << v);
+        CHECK(std::abs(c.principalMin * r) == Approx(1.0).epsilon(1e-12));
+        CHECK(std::abs(c.principalMax * r) == Approx(1.0).epsilon(1e-12));
+    }
+    // Elsewhere (a torus, random points): min <= max, their product K and their mean H.
+    const Surface torus = makeTorus(3.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const SurfaceCurvature c = curvature(torus, unit(rng), unit(rng));
+        CHECK(c.principalMin <= c.principalMax);
+        CHECK(c.principalMin * c.principalMax == Approx(c.gaussian).margin(1e-12));
+        CHECK(0.5 * (c.principalMin + c.principalMax) == Approx(c.mean).margin(1e-12));
+    }
+}
+
 TEST_CASE("normals next to and on a pole are exact at every size and place", "[geom][curvature]") {
     // Next to a collapsed edge the derivatives across it were differences of terms as large as
     // the coordinates (at the pole itself rounding noise that passed for a direction): a sphere
