@@ -88,8 +88,10 @@ CurvePoint CurveProjector::polishIn(std::size_t index, const glm::dvec3& p, doub
         if (h < floor) h = std::abs(h) + floor;
         const double du = -g / h;
         // A step this small that rounding lets grow f ends the search: halving it further only
-        // spends evaluations on the last bits.
-        const bool small = std::abs(du) < 1e-6 * (b - a);
+        // spends evaluations on the last bits. Small in the parameter is not enough: with weights
+        // decades apart most of the curve lies in a sliver of it, so the gain Newton predicts
+        // must be at rounding's level too.
+        const bool small = std::abs(du) < 1e-6 * (b - a) && std::abs(g * du) <= 1e-12 * f;
         bool moved = false;
         double step = 1.0;
         for (int k = 0; k < 40; ++k, step *= 0.5) {

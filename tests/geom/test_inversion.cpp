@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -84,6 +85,32 @@ TEST_CASE("closest points are no farther than dense sampling finds", "[geom][inv
         REQUIRE(cq.distance <= curveSampled + 1e-12);
         REQUIRE(glm::length(evaluate(curve, cq.u) - cq.point) < 1e-12);
     }
+}
+
+TEST_CASE("a local closest point on a straight rational segment reaches its one minimum",
+          "[geom][inversion]") {
+    // Weights decades apart put most of the segment in a sliver of its parameter: Newton's last
+    // steps there are tiny in the parameter yet gain much, and stopping at them left the answer
+    // short (2 of 8,605 random queries at seven decades, 0.6% farther than the minimum).
+    std::mt19937 rng(1993);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int checked = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double size = std::pow(10.0, -2.0 + 7.0 * unit(rng));
+        const glm::dvec3 a = size * glm::dvec3(unit(rng), unit(rng), unit(rng)) - 0.5 * size;
+        const glm::dvec3 b = size * glm::dvec3(unit(rng), unit(rng), unit(rng)) - 0.5 * size;
+        const double w0 = std::pow(10.0, -4.0 + 8.0 * unit(rng)), w1 = std::pow(10.0, -4.0 + 8.0 * unit(rng));
+        const double start = unit(rng), end = start + 0.1 + 2.0 * unit(rng);
+        const Curve line(1, {start, start, end, end}, {a, b}, {w0, w1});
+        const glm::dvec3 p = 2.0 * size * glm::dvec3(unit(rng), unit(rng), unit(rng)) - size;
+        const double t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+        const double exact = glm::length(a + t * (b - a) - p);
+        const CurvePoint local = closestPoint(line, p, start + (end - start) * unit(rng));
+        INFO("trial " << trial << ": weights " << w0 << ", " << w1 << ", size " << size);
+        CHECK(local.distance <= exact * (1.0 + 1e-9) + 1e-12 * size);
+        ++checked;
+    }
+    CHECK(checked == 3000);
 }
 
 TEST_CASE("point inversion refuses non-finite input", "[geom][inversion]") {
