@@ -171,7 +171,33 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
         throw GeometryError("closestPoint: the start guess is not finite");
     const SurfacePoint local = polish(p, guess);
     // An overflowing distance (control points near 1e300) gives Newton nothing to go by.
-    return std::isfinite(local.distance) ? beforeJump(local) : closestPoint(p);
+    if (!std::isfinite(local.distance)) return closestPoint(p);
+    // Weights decades apart squeeze most of a patch into a sliver of its parameters, where Newton
+    // crawls and can stop on a slope (9% of queries on flat squares with weights over eight
+    // decades, up to 44 times too far): a point that is not stationary is replaced by the global
+    // answer, which is never farther.
+    if (!stationary(p, local)) {
+        const SurfacePoint global = closestPoint(p);
+        if (global.distance < local.distance) return global;
+    }
+    return beforeJump(local);
+}
+
+bool SurfaceProjector::stationary(const glm::dvec3& p, const SurfacePoint& at) const {
+    const BezierPatchTree::PatchPoint e = tree_.evaluate(at.uv.x, at.uv.y, 1);
+    const glm::dvec3 r = e.point - p;
+    const double distance = glm::length(r);
+    if (distance <= 1e-12 * tree_.scale()) return true;  // on the surface
+    // A component of the gradient may point out of the domain at its border, and take any value
+    // on a knot line (a crease's kink: the derivative there is one side's); elsewhere each must
+    // be a rounding's worth of the derivative and the distance.
+    auto flat = [&](double g, const glm::dvec3& d, double t, const std::vector<double>& breaks) {
+        if ((t <= breaks.front() && g >= 0.0) || (t >= breaks.back() && g <= 0.0)) return true;
+        if (std::binary_search(breaks.begin() + 1, breaks.end() - 1, t)) return true;
+        return std::abs(g) <= 1e-6 * glm::length(d) * distance;
+    };
+    return flat(glm::dot(e.su, r), e.su, at.uv.x, tree_.breaksU()) &&
+           flat(glm::dot(e.sv, r), e.sv, at.uv.y, tree_.breaksV());
 }
 
 SurfacePoint SurfaceProjector::beforeJump(SurfacePoint best) const {

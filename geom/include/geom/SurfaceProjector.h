@@ -36,6 +36,9 @@ private:
     /// best's (u, v) moved just below a knot line of multiplicity degree + 1 where the point lies
     /// on the patch before the jump: evaluate() there gives the patch after it.
     SurfacePoint beforeJump(SurfacePoint best) const;
+    /// Whether the distance from p has no slope at `at` within the domain (a local minimum's
+    /// first-order condition, to rounding).
+    bool stationary(const glm::dvec3& p, const SurfacePoint& at) const;
     /// The start of a patch's search: `start` (its nearest control point's abscissa) or the point
     /// of a 3 x 3 grid on the patch nearer to p.
     glm::dvec2 patchStart(std::size_t index, const glm::dvec3& p, glm::dvec2 start) const;
