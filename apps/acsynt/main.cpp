@@ -154,17 +154,22 @@ bool isCadFileName(const std::filesystem::path& path) {
     }
 }
 
+/// Whether `file` has an IGES or STEP name, else says why after `option`.
+bool checkCadName(const std::string& option, const std::string& file) {
+    try {
+        acsynt::exchangeCalls().checkFileName(file);
+        return true;
+    } catch (const geom::exchange::ExchangeError& e) {
+        std::cerr << "acsynt: " << option << " " << e.reason() << "\n";
+    } catch (const std::runtime_error& e) {  // the exchange module cannot be loaded
+        std::cerr << "acsynt: " << option << ": " << e.what() << "\n";
+    }
+    return false;
+}
+
 /// --export OUT MODEL: OUT an IGES or STEP name that can be written, MODEL readable.
 bool checkExport(const Options& o) {
-    try {
-        acsynt::exchangeCalls().checkFileName(o.exportFile);
-    } catch (const geom::exchange::ExchangeError& e) {
-        std::cerr << "acsynt: --export " << e.reason() << "\n";
-        return false;
-    } catch (const std::runtime_error& e) {  // the exchange module cannot be loaded
-        std::cerr << "acsynt: --export: " << e.what() << "\n";
-        return false;
-    }
+    if (!checkCadName("--export", o.exportFile)) return false;
     if (const std::string why = unwritable(o.exportFile); !why.empty()) {
         std::cerr << "acsynt: --export " << o.exportFile << " " << why << "\n";
         return false;
@@ -192,15 +197,7 @@ bool checkPaths(const Options& o) {
             std::cerr << "acsynt: --import " << o.importFile << " " << why << "\n";
             return false;
         }
-        try {
-            acsynt::exchangeCalls().checkFileName(o.importFile);
-        } catch (const geom::exchange::ExchangeError& e) {
-            std::cerr << "acsynt: --import " << e.reason() << "\n";
-            return false;
-        } catch (const std::runtime_error& e) {  // the exchange module cannot be loaded
-            std::cerr << "acsynt: --import: " << e.what() << "\n";
-            return false;
-        }
+        if (!checkCadName("--import", o.importFile)) return false;
     }
     if (!o.script.empty())
         if (const std::string why = unreadable(o.script); !why.empty()) {
