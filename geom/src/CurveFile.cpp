@@ -1,5 +1,7 @@
 #include "geom/CurveFile.h"
 
+#include "EndsAtStart.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -111,10 +113,7 @@ glm::dvec3 readVector(LineReader& reader, const std::string& what) {
 }
 
 bool closes(const CurvePart& part) {
-    double extent = 1.0;
-    for (const glm::dvec3& p : part.points)
-        extent = std::max(extent, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-    return glm::length(part.points.back() - part.points.front()) <= 1e-9 * extent;
+    return detail::endsAtStart(part.points);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "geom/Interpolate.h"
 
+#include "EndsAtStart.h"
 #include "SparseLu.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
@@ -84,10 +85,7 @@ void checkData(const InterpolationData& data, const std::vector<Continuity>& con
                 throw GeometryError("interpolateCubic: tangent constraint " + std::to_string(i + 1) +
                                     " is not finite");
     if (data.closed) {
-        double extent = 1.0;
-        for (const glm::dvec3& p : data.points)
-            extent = std::max(extent, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
-        if (glm::length(data.points.back() - data.points.front()) > 1e-9 * extent)
+        if (!detail::endsAtStart(data.points))
             throw GeometryError("interpolateCubic: a closed curve must end at its first point (" +
                                 pointName(n - 1) + " differs from data point 1)");
         if (continuities.back() != continuities.front())

@@ -175,6 +175,29 @@ TEST_CASE("interpolation succeeds and passes through its points at any scale, 1e
     }
 }
 
+TEST_CASE("a closed curve must end at its first point at its own scale", "[geom][interpolate]") {
+    // The closure test was 1e-9 of max(1, |coordinates|): a model far smaller than a unit could
+    // leave a gap as large as itself. Now 1e-9 of the points' extent (and rounding far off).
+    std::mt19937 rng(515);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const double size = std::pow(10.0, -8.0 + 16.0 * unit(rng));
+        const glm::dvec3 offset =
+            std::pow(10.0, 6.0 * unit(rng)) * size * glm::dvec3(unit(rng), unit(rng), 0.0);
+        InterpolationData data;
+        data.closed = true;
+        for (int k = 0; k < 6; ++k) {
+            const double a = 6.283185307179586 * k / 6.0;
+            data.points.push_back(offset + size * glm::dvec3(std::cos(a), std::sin(a), 0.0));
+        }
+        data.points.push_back(data.points.front());
+        INFO("size " << size << " offset " << glm::length(offset));
+        CHECK_NOTHROW(interpolateCubic(data));
+        data.points.back() += glm::dvec3(0.01 * size, 0.0, 0.0);  // a gap of 1% of the curve
+        CHECK_THROWS_WITH(interpolateCubic(data), Catch::Contains("must end at its first point"));
+    }
+}
+
 TEST_CASE("interpolation rejects bad data with the reason", "[geom][interpolate]") {
     InterpolationData d = randomPart();
     d.tangents.pop_back();
