@@ -145,7 +145,7 @@ private:
     /// A place in model units: within a million of the origin, as sizes are, so that every point
     /// of a lofted model stays finite through the views and within a saved model's limits.
     double coordinate(std::size_t index, const std::string& what) const {
-        return number(index, what, -1e6, 1e6);
+        return number(index, what, -kModelMaxLength, kModelMaxLength);
     }
 
     int integer(std::size_t index, const std::string& what) const {
@@ -292,9 +292,9 @@ private:
         else
             fail("station part " + inQuotes(part) + " must be nose, mid or aft");
         s.x = coordinate(2, "station x");
-        s.halfWidth = number(3, "station half width", 0, 1e6);
-        s.upperHeight = number(4, "station upper height", 0, 1e6);
-        s.lowerHeight = number(5, "station lower height", 0, 1e6);
+        s.halfWidth = number(3, "station half width", 0, kModelMaxLength);
+        s.upperHeight = number(4, "station upper height", 0, kModelMaxLength);
+        s.lowerHeight = number(5, "station lower height", 0, kModelMaxLength);
         s.zCentre = coordinate(6, "station z centre");
         s.exponent = number(7, "station exponent", 1, 10);
         const bool point = s.halfWidth == 0.0 && s.upperHeight == 0.0 && s.lowerHeight == 0.0;
@@ -337,7 +337,7 @@ private:
         } else if (key == "root_chord") {
             once(seen);
             expectCount(2, "root_chord LENGTH");
-            w.rootChord = number(1, "root_chord", 0, 1e6);
+            w.rootChord = number(1, "root_chord", 0, kModelMaxLength);
             if (w.rootChord == 0.0) fail("root_chord must be positive");
         } else if (key == "taper") {
             once(seen);
@@ -347,7 +347,7 @@ private:
         } else if (key == "span") {
             once(seen);
             expectCount(2, "span LENGTH");
-            w.span = number(1, "span", 0, 1e6);
+            w.span = number(1, "span", 0, kModelMaxLength);
             if (w.span == 0.0) fail("span must be positive");
         } else if (key == "sweep") {
             angle(w.sweep, 80);
@@ -371,7 +371,8 @@ private:
                           coordinate(3, "position z")};
         } else if (key == "profile") {
             expectCount(3, "profile X RADIUS");
-            NacelleStation s{coordinate(1, "profile x"), number(2, "profile radius", 0, 1e6), line_};
+            NacelleStation s{coordinate(1, "profile x"), number(2, "profile radius", 0, kModelMaxLength),
+                             line_};
             if (!n.profile.empty() && !(s.x > n.profile.back().x))
                 fail("profile x " + std::string(tokens_[1]) +
                      " does not increase on the previous profile x " + shortest(n.profile.back().x));

@@ -37,8 +37,9 @@ bool isValidName(std::string_view name);
 /// a tessellation.
 inline constexpr std::size_t kModelFileMaxBytes = 1u << 20;
 inline constexpr std::size_t kModelFileMaxLineLength = 4096;
-inline constexpr std::size_t kModelMaxComponents = 64;  ///< components in the file (mirrors not counted)
+inline constexpr std::size_t kModelMaxComponents = 64;  ///< components lofted, mirror images included
 inline constexpr std::size_t kModelMaxPatches = 8192;   ///< all components, mirror images included
+inline constexpr double kModelMaxLength = 1e6;          ///< places (from the origin) and sizes, model units
 
 /// The patches the loft of `component` has (its mirror image has as many again).
 std::size_t loftedPatchCount(const ComponentDescription& component);

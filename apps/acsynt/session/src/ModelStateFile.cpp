@@ -2,6 +2,7 @@
 
 #include "acsynt/ModelFile.h"
 
+#include "geom/BoundingBox.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
 #include "geom/curvemap/SurfaceDomain.h"
@@ -201,13 +202,6 @@ bool inDomain(const Component& c, glm::dvec2 uw, bool acrossSeams) {
            within(uw.y, s.domainStartV(), s.domainEndV(), c.closedW);
 }
 
-/// The diagonal of the box round a surface's control points.
-double netSize(const geom::Surface& s) {
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    for (const glm::dvec3& p : s.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    return glm::length(hi - lo);
-}
-
 /// The component's point at (u, w): a closed coordinate taken back into its period, one within
 /// inDomain's rounding of an end onto that end.
 glm::dvec3 surfacePoint(const Component& c, glm::dvec2 uw) {
@@ -246,7 +240,7 @@ MappingRecord readMapping(Reader& r, const std::vector<std::string>& head, const
             r.fail("the reference point (" + ref[3] + ", " + ref[4] + ") is outside patch " + ref[2] +
                    " of " + referenced.name);
     }
-    const double onSurface = kOnSurface * std::max(1.0, netSize(mapped.surface));
+    const double onSurface = kOnSurface * std::max(1.0, geom::boundingBox(mapped.surface).diagonal());
     const auto parts = r.line("parts", 2);
     m.parts = r.count(parts[1], 1u << 16);
     for (std::size_t i = 0; i < m.parts; ++i) {

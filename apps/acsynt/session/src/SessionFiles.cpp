@@ -7,6 +7,7 @@
 
 #include "acsynt/ModelFile.h"
 #include "acsynt/session/ModelExchange.h"
+#include "geom/BoundingBox.h"
 #include "geom/DataReduction.h"
 #include "geom/Evaluate.h"
 #include "geom/GeometryError.h"
@@ -192,23 +193,20 @@ void Session::readCurve(const std::string& input) {
         }
     }
     // The placed curve must stay a drawable, mappable size in model units, as the model's own
-    // places and sizes are (within a million of the origin).
-    constexpr double kLargest = 1e6, kSmallest = 1e-6;
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    // places and sizes are (kModelMaxLength), and not shrink below a micro-unit.
+    constexpr double kSmallest = 1e-6;
+    geom::BoundingBox box;
     for (auto& c : curves)
-        for (auto& p : c.points) {
-            p *= scale;
-            lo = glm::min(lo, p), hi = glm::max(hi, p);
-        }
-    const glm::dvec3 far = glm::max(glm::abs(lo), glm::abs(hi));
+        for (auto& p : c.points) box.add(p *= scale);
+    const glm::dvec3 far = glm::max(glm::abs(box.lo), glm::abs(box.hi));
     const double reach = std::max({far.x, far.y, far.z});
-    if (!(reach <= kLargest)) {
+    if (!(reach <= kModelMaxLength)) {
         fail("CURVE SCALE " + scaleText + " IS TOO LARGE: THE CURVE REACHES " + number(reach) +
              " MODEL UNITS, PAST 1E6");
         return;
     }
-    if (!(glm::length(hi - lo) >= kSmallest)) {
-        fail("CURVE SCALE " + scaleText + " IS TOO SMALL: THE CURVE SPANS " + number(glm::length(hi - lo)) +
+    if (!(box.diagonal() >= kSmallest)) {
+        fail("CURVE SCALE " + scaleText + " IS TOO SMALL: THE CURVE SPANS " + number(box.diagonal()) +
              " MODEL UNITS, BELOW 1E-6");
         return;
     }
