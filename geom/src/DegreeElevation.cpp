@@ -145,8 +145,7 @@ std::size_t blossom(std::vector<glm::dvec4>& work, std::size_t stride, double a,
 /// net is cut into Bezier segments (knot insertion, convex combinations), each segment raised
 /// (convex combinations again), and each new control point read off as the blossom of a segment
 /// at its knots (Ramshaw: c_i = F(s[i+1], ..., s[i+P]) for the piece on any non-empty span of
-/// its support). Collocation at the Greville abscissae, used before, lost digits as the
-/// condition of its matrix grows with the degree (0.2 of the size at 64).
+/// its support). A collocation system would lose digits as its condition grows with the degree.
 void elevateNet(int degree, std::vector<double>& knots, ControlNet& net, int times) {
     if (times < 0) throw GeometryError("elevateDegree: cannot elevate by " + std::to_string(times));
     if (times > kMaxElevatedDegree - degree)
