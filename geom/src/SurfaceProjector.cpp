@@ -173,8 +173,7 @@ SurfacePoint SurfaceProjector::closestPointFrom(const glm::dvec3& p, const glm::
     // An overflowing distance (control points near 1e300) gives Newton nothing to go by.
     if (!std::isfinite(local.distance)) return closestPoint(p);
     // Weights decades apart squeeze most of a patch into a sliver of its parameters, where Newton
-    // crawls and can stop on a slope (9% of queries on flat squares with weights over eight
-    // decades, up to 44 times too far): a point that is not stationary is replaced by the global
+    // crawls and can stop on a slope: a point that is not stationary is replaced by the global
     // answer, which is never farther.
     if (!stationary(p, local)) {
         const SurfacePoint global = closestPoint(p);
