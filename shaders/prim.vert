@@ -44,9 +44,11 @@ void main() {
         float offsetScale = SCREEN_OFFSETS == 2 ? frame.pixelScale.z : 1.0;
         clip.xy += inOffset * offsetScale * frame.pixelScale.xy * clip.w;
     }
-    // A marker is clipped by its position (ISO 9592): one outside the view's clip rectangle draws
-    // nothing, though its glyph would reach inside (the scissor alone would keep that part).
-    if (SCREEN_OFFSETS == 1) {
+    // A marker is clipped by its position and annotation text by its reference point (ISO 9592):
+    // one outside the view's clip rectangle draws nothing, though its glyph would reach inside
+    // (the scissor alone would keep that part). Depth and model clipping already discard every
+    // fragment alike: vNpcZ and vWorld are the position's.
+    if (SCREEN_OFFSETS != 0) {
         vec2 at = npc.xy / npc.w;
         if (!(npc.w > 0.0) || any(lessThan(at, runView.clipXY.xy)) || any(greaterThan(at, runView.clipXY.zw)))
             clip = vec4(4.0, 4.0, 4.0, 1.0);

@@ -391,6 +391,8 @@ static void facilities(void) {
         pinq_int_facs_plus(t, 8, 0, 8, 0, 8, 0, 8, 0, &err, &int_plus, &tis, &ths, &tre, &tsh);
         CHECK(err == 0 && tis == 5 && int_plus.num_int_styles == 5 && styles[4] == PSTYLE_EMPTY);
         CHECK(ths == total && int_plus.hatch_styles.num_ints == int_plain.hatch_styles.num_ints);
+        /* Every type draws hatch styles 1-6 (raster shader and vector painter alike). */
+        CHECK(total == 6 && plain_hatches[0] == 1 && plain_hatches[5] == 6 && hatches[5] == 6);
         CHECK(tre == 4 && refl[0] == PREFL_NONE && refl[3] == PREFL_AMB_DIFF_SPEC && tsh == 4 &&
               int_shads[3] == PSD_NORMAL);
         CHECK(int_plus.num_pred_inds == int_plain.num_pred_inds);

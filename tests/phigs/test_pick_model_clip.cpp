@@ -87,6 +87,51 @@ TEST_CASE("pick: a marker outside the view's clip limits or the window is not hi
     }
 }
 
+TEST_CASE("pick: annotation text whose reference point is clipped is not hit", "[pick]") {
+    // ISO 9592: a clipped reference point displays nothing, though the text's offset brings it
+    // inside; with the reference point kept, the same text is hit. Each clip in turn: the view's
+    // x/y limits, the workstation window, the view's back plane, the model clipping volume.
+    std::mt19937 random(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const Picker picker;
+    for (int trial = 0; trial < 200; ++trial) {
+        DrawList list = unitList();
+        const int clip = trial % 4;
+        const double lo = 0.2 + 0.1 * unit(random), hi = 0.7 + 0.1 * unit(random);
+        if (clip == 0) {
+            list.views[0].clipMin = {lo, lo, 0.0};
+            list.views[0].clipMax = {hi, hi, 1.0};
+        } else if (clip == 1) {
+            list.windowMin = {lo, lo, 0.0};
+            list.windowMax = {hi, hi, 1.0};
+        } else if (clip == 2) {
+            list.views[0].clipMin = {0.0, 0.0, 0.4};
+            list.views[0].clipBack = true;
+        }
+        const double y = 0.4 + 0.2 * unit(random), off = 0.001 + 0.05 * unit(random);
+        // The reference point just left of lo (for the depth clip: behind z 0.4), or kept just
+        // right of it; the text 0.1 to its right, inside every clip.
+        const auto note = [&](bool kept) {
+            DrawText t;
+            t.text = "NOTE";
+            t.annotation = true;
+            t.position = {kept ? lo + off : lo - off, y, 0.5};
+            if (clip == 2) t.position = {lo - off, y, kept ? 0.5 : 0.3};
+            t.annotationOffset = {0.1, 0.0, 0.0};
+            t.style.edit().height = 0.04;
+            DrawItem i = item(t, {{1, 1, 0}});
+            if (clip == 3) i.context.edit().modelClipPlanes = {{1, 0, 0, -lo}};  // keep x >= lo
+            return i;
+        };
+        INFO("trial " << trial << ", clip " << clip);
+        const glm::dvec2 inText(lo + 0.18, y + 0.02);  // inside the text's box either way
+        list.items.push_back(note(false));
+        CHECK_FALSE(picker.nearest(list, inText, 0.001));
+        list.items[0] = note(true);
+        CHECK(picker.nearest(list, inText, 0.001));
+    }
+}
+
 TEST_CASE("pick model clip: an exact surface pick goes on to the first kept intersection", "[pick]") {
     DrawList list = unitList();
     const double r = 0.3;

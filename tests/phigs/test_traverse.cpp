@@ -124,6 +124,60 @@ TEST_CASE("types, widths and sizes the workstation lacks are drawn as the neares
     }
 }
 
+TEST_CASE("hatch styles the workstation lacks are drawn as style 1, on both sides", "[traverse]") {
+    // ISO 9592: an interior style index not available is drawn as 1; a pattern index is not a
+    // hatch style and keeps its value.
+    Scene s;
+    const PrimitiveLimits& limits = s.ws->description().primitives;
+    REQUIRE(limits.hatchStyles == 6);  // what prim.frag and the vector painter draw
+    std::mt19937 random(77);
+    std::uniform_int_distribution<int> index(-3, 12);
+    for (int trial = 0; trial < 40; ++trial) {
+        const int front = index(random), back = index(random);
+        const int frontStyle = int(trial % 2 ? InteriorStyle::Hatch : InteriorStyle::Pattern);
+        s.build(1, {IndexAttribute{ElementType::InteriorStyle, frontStyle},
+                    IndexAttribute{ElementType::InteriorStyleIndex, front},
+                    IndexAttribute{ElementType::BackInteriorStyle, int(InteriorStyle::Hatch)},
+                    IndexAttribute{ElementType::BackInteriorStyleIndex, back},
+                    fillArea3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})});
+        s.ws->postStructure(1, 0);
+        const DrawList& list = s.ws->display();
+        REQUIRE(list.items.size() == 1);
+        INFO("front style " << frontStyle << " index " << front << ", back index " << back);
+        const InteriorStyleSet& in = *std::get<ItemRef<DrawFillArea>>(list.items[0].primitive)->interior;
+        const bool hatch = in.style == InteriorStyle::Hatch;
+        CHECK(in.styleIndex == (!hatch || (front >= 1 && front <= 6) ? front : 1));
+        CHECK(in.back.styleIndex == (back >= 1 && back <= 6 ? back : 1));
+        s.ws->unpostStructure(1);
+    }
+}
+
+TEST_CASE("a negative character height or expansion factor is drawn by its absolute value", "[traverse]") {
+    // ISO 9592: the absolute values are used; the text's layout then matches the positive one's.
+    Scene s;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> magnitude(0.01, 2.0);
+    for (int trial = 0; trial < 20; ++trial) {
+        const double height = magnitude(random), expansion = magnitude(random),
+                     annoHeight = magnitude(random);
+        const double sh = trial % 2 ? -1 : 1, se = trial % 3 ? -1 : 1;
+        s.build(1, {RealAttribute{ElementType::CharacterHeight, sh * height},
+                    RealAttribute{ElementType::CharacterExpansionFactor, se * expansion},
+                    RealAttribute{ElementType::AnnotationTextCharacterHeight, -annoHeight},
+                    TextElement{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, "Wing", false},
+                    AnnotationTextElement{{0, 0, 0}, {0.1, 0.1, 0}, "note", false}});
+        s.ws->postStructure(1, 0);
+        const DrawList& list = s.ws->display();
+        REQUIRE(list.items.size() == 2);
+        const TextStyle& text = *primitiveAs<DrawText>(list.items[0].primitive).style;
+        const TextStyle& note = *primitiveAs<DrawText>(list.items[1].primitive).style;
+        CHECK(text.height == Approx(height));
+        CHECK(double(text.expansion) == Approx(expansion));
+        CHECK(note.height == Approx(annoHeight));
+        s.ws->unpostStructure(1);
+    }
+}
+
 TEST_CASE("colours: direct RGB and indices through the colour table", "[traverse]") {
     Scene s;
     s.ws->setColourRepresentation(12, {0.25, 0.5, 0.75});

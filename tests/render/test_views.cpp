@@ -2,6 +2,7 @@
 // window/viewport mapping, and the PNG hardcopy workstation.
 #include "RenderTestSupport.h"
 #include "SceneMeshes.h"
+#include "phigs/hardcopy/VectorDescriber.h"
 #include "phigs/traverse/WorkstationMapping.h"
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/vk/HardcopyTarget.h"
@@ -322,6 +323,59 @@ TEST_CASE("views: a marker is clipped by its position, not by its glyph", "[rend
         }
         CHECK(outside == 20);
         CHECK(inside == 20);
+    }
+    requireNoValidationMessages(context);
+}
+
+TEST_CASE("views: annotation text is clipped by its reference point, on screen and on paper",
+          "[render][views]") {
+    // ISO 9592: a reference point outside the view's clip rectangle or the workstation window
+    // displays nothing, though the offset brings the text (and its lead line) inside; one just
+    // inside draws it. The vector hardcopy paints the same.
+    vk::Context context(lavapipeWithValidation());
+    {
+        constexpr std::uint32_t size = 128;
+        vk::ImageTarget ws(context, size, size);
+        std::mt19937 random(20261207);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        for (int trial = 0; trial < 24; ++trial) {
+            DrawList list = emptyScene();
+            const double lo = 0.2 + 0.1 * unit(random), hi = 0.7 + 0.1 * unit(random);
+            const bool byWindow = trial % 4 >= 2, out = trial % 2 == 0;
+            if (byWindow) {
+                list.windowMin = {lo, lo, 0.0};
+                list.windowMax = {hi, hi, 1.0};
+            } else {
+                list.views[0].clipMin = {lo, lo, 0.0};
+                list.views[0].clipMax = {hi, hi, 1.0};
+                list.views[0].clipXY = true;
+            }
+            const double off = (1.0 + 3.0 * unit(random)) / size;
+            DrawText note;
+            note.text = "NOTE";
+            note.annotation = true;
+            note.position = {out ? lo - off : lo + off, 0.4 + 0.2 * unit(random), 0.5};
+            note.annotationOffset = {0.1, 0.0, 0.0};
+            note.style.edit().height = 0.06;
+            note.style.edit().colour = {0, 1, 0};
+            note.leadLine = LineStyle{{0, 1, 0}, LineType::Solid, 1.0f};
+            list.items.push_back(item(note));
+            INFO("trial " << trial << (byWindow ? ", window" : ", view limits")
+                          << (out ? ", outside" : ", inside"));
+            const Image image = ws.draw(list);
+            const hardcopy::VectorPicture paper = hardcopy::describePicture(list, hardcopy::PageSetup{});
+            const auto strokes =
+                std::count_if(paper.ops.begin(), paper.ops.end(), [](const hardcopy::VectorOp& op) {
+                    return std::holds_alternative<hardcopy::VectorStroke>(op);
+                });
+            if (out) {
+                CHECK(markerPixels(image) == 0);
+                CHECK(strokes == 0);
+            } else {
+                CHECK(markerPixels(image) > 20);
+                CHECK(strokes > 4);
+            }
+        }
     }
     requireNoValidationMessages(context);
 }

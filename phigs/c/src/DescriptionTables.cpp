@@ -162,7 +162,8 @@ void pinq_int_facs(Pint ws_type, Pint length, Pint start, Pint* err, Pint_facs* 
     if (!c::somewhereToAnswer(err, facs, total)) return;
     inquire(err, [&](Phigs&) {
         const WorkstationDescription d = described(ws_type);
-        c::answerList(d.hatchStyles, length, start, facs ? &facs->hatch_styles : nullptr, total);
+        c::answerList(c::oneTo(d.primitives.hatchStyles), length, start, facs ? &facs->hatch_styles : nullptr,
+                      total);
         if (!facs) return;
         facs->num_int_styles = std::min(d.interiorStyles, 5);
         for (int i = 0; i < facs->num_int_styles; ++i) facs->int_styles[i] = static_cast<Pint_style>(i);

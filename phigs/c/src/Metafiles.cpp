@@ -83,9 +83,9 @@ void pinq_text_extent(Pint ws_type, Pint font, Pfloat char_expan, Pfloat char_sp
         c::require(offset, kName);
         TextStyle style;
         style.font = font;
-        style.expansion = char_expan;
+        style.expansion = std::abs(char_expan);  // as drawn (ISO 9592: absolute values)
         style.spacing = char_space;
-        style.height = char_ht;
+        style.height = std::abs(char_ht);
         style.path = static_cast<TextPath>(path);
         style.horizontal = static_cast<HorizontalAlignment>(hor);
         style.vertical = static_cast<VerticalAlignment>(vert);

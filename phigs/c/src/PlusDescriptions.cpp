@@ -46,8 +46,8 @@ void pinq_int_facs_plus(Pint ws_type, Pint is_length, Pint is_start, Pint hs_len
             static_cast<std::size_t>(std::clamp<Pint>(is_length, 0, c::countOf(styles.size()))));
         Pint_list positions{0, room.data()};
         c::answerList(styles, is_length, is_start, facs ? &positions : nullptr, tot_is_length);
-        c::answerList(d.hatchStyles, hs_length, hs_start, facs ? &facs->hatch_styles : nullptr,
-                      tot_hs_length);
+        c::answerList(c::oneTo(d.primitives.hatchStyles), hs_length, hs_start,
+                      facs ? &facs->hatch_styles : nullptr, tot_hs_length);
         c::answerList(d.reflectanceEquations, re_length, re_start, facs ? &facs->refl_eqns : nullptr,
                       tot_re_length);
         c::answerList(d.interiorShadingMethods, sh_length, sh_start, facs ? &facs->shad_meths : nullptr,

@@ -118,6 +118,10 @@ bool ItemPipeline::modelClipKeeps(const glm::dvec3& world) const {
     return inside(glm::dvec4(world, 1.0), model_);
 }
 
+bool ItemPipeline::keepsPoint(const glm::dvec3& world) const {
+    return modelClipKeeps(world) && inside(toNpc(world), view_);
+}
+
 void ItemPipeline::line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
                         float width, std::span<const glm::vec3> colours, bool interpolated) {
     if (world.size() < 2) return;
@@ -261,9 +265,8 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
 }
 
 void ItemPipeline::marker(const glm::dvec3& world, const MarkerStyle& style) {
-    if (!modelClipKeeps(world)) return;
+    if (!keepsPoint(world)) return;
     const glm::dvec4 h = toNpc(world);
-    if (!inside(h, view_)) return;
     ProjectedMarker m;
     m.position = mapping_.toPage(glm::dvec3(h) / h.w);
     m.style = style;

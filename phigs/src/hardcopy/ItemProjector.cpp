@@ -153,11 +153,11 @@ void ItemProjector::operator()(const DrawText& text) {
     const glm::vec3 colour = text.style->colour;
     const glm::dmat4& model = pipeline_.item().modelTransform().get();
     if (text.annotation) {
-        // Laid out in NPC at the projected reference point plus the offset, at its depth.
+        // Laid out in NPC at the projected reference point plus the offset, at its depth; a
+        // clipped reference point draws nothing (ISO 9592).
         const glm::dvec3 reference = projectPoint3(model, text.position);
-        if (!pipeline_.modelClipKeeps(reference)) return;
+        if (!pipeline_.keepsPoint(reference)) return;
         const glm::dvec4 h = pipeline_.toNpc(reference);
-        if (!(h.w > 0.0)) return;
         const glm::dvec3 from = glm::dvec3(h) / h.w;
         const glm::dvec3 at = from + glm::dvec3(glm::dvec2(text.annotationOffset), 0.0);
         if (text.leadLine)  // in the polyline attributes in force, its pattern over its length on the page

@@ -478,7 +478,12 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
                     glm::length(p.style->upVector) > 0 ? glm::normalize(p.style->upVector) : glm::dvec2(0, 1);
                 const glm::dvec2 base(up.y, -up.x);
                 if (p.annotation) {
+                    // Kept or dropped whole by its reference point, as drawn (ISO 9592).
                     const Projected ref = project(m, p.position);
+                    const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
+                    if (!ref.valid || !insideClip(view, ref.npc) || !kept.contains(glm::dvec2(ref.npc)) ||
+                        !insideModelClip(item, toWorld(item, p.position)))
+                        return;
                     for (const glm::dvec2& c : textBox(p)) {
                         const glm::dvec2 q = c.x * base + c.y * up;
                         box[0].push_back({ref.npc + p.annotationOffset + glm::dvec3(q, 0.0), ref.valid});
@@ -537,9 +542,10 @@ std::optional<PickHit> Picker::test(const DrawList& list, std::size_t index, glm
     if (!hit) return std::nullopt;
     hit->item = index;
     // Model clipping: the point under the aperture centre at the hit's depth must be kept
-    // (markers and surfaces were tested at their own points above).
+    // (markers, annotation text and surfaces were tested at their own points above).
+    const auto* text = primitiveIf<DrawText>(item.primitive);
     if (!item.modelClipPlanes().empty() && !hit->surface &&
-        !std::holds_alternative<DrawPolymarker>(item.primitive)) {
+        !std::holds_alternative<DrawPolymarker>(item.primitive) && !(text && text->annotation)) {
         const glm::dvec4 h = glm::inverse(view.mapping * view.orientation) * glm::dvec4(npc, hit->depth, 1.0);
         if (h.w == 0.0 || !insideModelClip(item, glm::dvec3(h) / h.w)) return std::nullopt;
     }

@@ -457,9 +457,11 @@ struct Resolver {
         TextStyle out;
         out.colour = rgb(s.ind(AspectId::TextColour) ? s.textColour : b.colour, s);
         out.font = s.ind(AspectId::TextFont) ? s.font : b.font;
-        out.expansion = static_cast<float>(s.ind(AspectId::CharacterExpansion) ? s.expansion : b.expansion);
+        // ISO 9592 draws a height or expansion factor by its absolute value.
+        out.expansion =
+            static_cast<float>(std::abs(s.ind(AspectId::CharacterExpansion) ? s.expansion : b.expansion));
         out.spacing = static_cast<float>(s.ind(AspectId::CharacterSpacing) ? s.spacing : b.spacing);
-        out.height = annotation ? s.annoHeight : s.charHeight;
+        out.height = std::abs(annotation ? s.annoHeight : s.charHeight);
         out.upVector = annotation ? s.annoUp : s.up;
         out.path = annotation ? s.annoPath : s.path;
         out.horizontal = static_cast<HorizontalAlignment>(annotation ? s.annoH : s.hAlign);
@@ -479,6 +481,7 @@ struct Resolver {
         InteriorStyleSet out;
         out.style = s.ind(AspectId::InteriorStyle) ? s.style : b.style;
         out.styleIndex = s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex;
+        if (out.style == InteriorStyle::Hatch) out.styleIndex = t.limits.hatchStyle(out.styleIndex);
         out.pattern = s.pattern;
         out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour, s);
         out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour, s);
@@ -498,6 +501,8 @@ struct Resolver {
                     s.ind(AspectId::BackInteriorStyleIndex) ? s.backStyleIndex : b.backStyleIndex,
                     s.ind(AspectId::BackInteriorShading) ? s.backShading : b.backShading,
                     s.ind(AspectId::BackInteriorReflectance) ? s.backReflectance : b.backReflectance};
+        if (out.back.style == InteriorStyle::Hatch)
+            out.back.styleIndex = t.limits.hatchStyle(out.back.styleIndex);
         return out;
     }
     EdgeStyle edge(const State& s) const {

@@ -24,6 +24,10 @@ MarkerType PrimitiveLimits::markerType(MarkerType type) const {
     return t >= 1 && t <= markerTypes ? type : MarkerType::Asterisk;
 }
 
+int PrimitiveLimits::hatchStyle(int index) const {
+    return index >= 1 && index <= hatchStyles ? index : 1;
+}
+
 double PrimitiveLimits::lineWidthScale(double scale) const {
     return clampedScale(scale, nominalLineWidth, minLineWidth, maxLineWidth);
 }

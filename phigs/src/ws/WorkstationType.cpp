@@ -37,7 +37,6 @@ WorkstationDescription describeWorkstationType(WorkstationType type) {
                                                         : "EPS hardcopy";
             d.displaySize = {841.8898, 595.2756};  // A4 landscape in points: one device unit is 1/72 inch
             d.workstationClass = WorkstationClass::Vector;
-            d.hatchStyles = {1, 2, 3, 4, 5, 6};  // the vector painter's hatch angles
             break;
     }
     return d;

@@ -45,8 +45,8 @@ struct WorkstationDescription {
     int colourMappingTableSize = ColourMappingTable::kCapacity;  ///< entries 0 (TRUE) and up
     std::vector<int> hlhsrModes{0, 1};                           ///< 0 none, 1 z-buffer
     int interiorStyles = 5;
-    /// Line and marker types (1 .. N), line and edge widths and marker sizes in device
-    /// coordinates; the traversal draws what they allow (phigs/view/PrimitiveLimits.h).
+    /// Line and marker types and hatch styles (1 .. N), line and edge widths and marker sizes in
+    /// device coordinates; the traversal draws what they allow (phigs/view/PrimitiveLimits.h).
     PrimitiveLimits primitives;
     WorkstationClass workstationClass = WorkstationClass::Raster;
     int patternTableSize = 32;
@@ -54,7 +54,6 @@ struct WorkstationDescription {
     double minCharHeight = 1.0e-6, maxCharHeight = 1.0e6;
     double minCharExpansion = 0.01, maxCharExpansion = 100.0;
     int textFonts = 4;                          ///< fonts 1..textFonts, each in every precision (stroked)
-    std::vector<int> hatchStyles;               ///< the hatch style indices drawn as hatching
     std::vector<int> colourModels{1, 2, 3, 4};  ///< RGB, CIELUV, HSV, HLS (ColourModels.h)
     /// PHIGS PLUS: polyline shading methods (1 none, 2 colour), interior shading methods (1 none,
     /// 2 colour, 3 dot product, 4 normal) and reflectance equations (1 none .. 4 ambient, diffuse
