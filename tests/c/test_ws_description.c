@@ -81,8 +81,7 @@ static void facilities_of(Pint t) {
     interior.hatch_styles.ints = ints;
     pinq_int_facs(t, 16, 0, &err, &interior, &total);
     CHECK(err == 0 && interior.num_int_styles == 5 && interior.int_styles[4] == PSTYLE_EMPTY);
-    CHECK(total == (is_vector(t) ? 6 : 0) && interior.hatch_styles.num_ints == total &&
-          interior.num_pred_inds == 5);
+    CHECK(total == 6 && interior.hatch_styles.num_ints == total && interior.num_pred_inds == 5);
     pinq_edge_facs(t, 16, 0, &err, &edge, &total);
     CHECK(err == 0 && total == 4 && edge.num_pred_inds == 3);
     pinq_pat_facs(t, &err, &n);
