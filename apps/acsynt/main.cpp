@@ -461,7 +461,15 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     auto& events = static_cast<phigs::GlfwInputSource&>(*source);
     acsynt::ViewNavigation navigation(session, [&](const phigs::WindowEvent& e) { events.deliver(e); });
     events.setEventFilter([&](const phigs::WindowEvent& e) { return navigation.handle(e); });
-    while (presentation.step(std::chrono::seconds(1))) {
+    try {
+        while (presentation.step(std::chrono::seconds(1))) {
+        }
+    } catch (const std::exception& e) {
+        // The operator's work so far is kept: the summary, the log and the recording.
+        std::cerr << "acsynt: " << e.what() << "\n";
+        events.setEventFilter({});
+        finish(session, options);
+        return kExitFatal;
     }
     events.setEventFilter({});
 #endif

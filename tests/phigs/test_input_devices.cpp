@@ -319,6 +319,55 @@ TEST_CASE("input devices: every choice device refuses choices beyond its alterna
     }
 }
 
+TEST_CASE("input devices: an operator's action no device can take is ignored and the request waits on",
+          "[input]") {
+    // A function key past a choice device's alternatives, a valuator value out of range, a name no
+    // alternative has: from a window each is ignored (and said so); a pending request of any
+    // device goes on to the operator's next action. The same lines from a script are errors.
+    std::mt19937 rng(712);
+    for (int round = 0; round < 30; ++round) {
+        IdleSource window;
+        FakeMeasurer measurer;
+        InputQueue queue;
+        WorkstationInput input(1, window, measurer, queue);
+        DeviceInitialisation choices;
+        choices.choiceStrings = {"a", "b", "c", "d"};
+        choices.initial = ChoiceMeasure{InputStatus::Ok, 1};
+        input.initialise(InputClass::Choice, 1, choices);
+        const bool requestChoice = rng() % 2 == 0;
+        const int stray = static_cast<int>(rng() % 3);
+        InputAction bad;
+        bad.fromOperator = true;
+        bad.text = "stray";
+        if (stray == 0) bad.what = action::Choice{5 + static_cast<int>(rng() % 20), 1, {}};
+        if (stray == 1) bad.what = action::Valuator{1, 2.0 + static_cast<double>(rng() % 10)};
+        if (stray == 2) bad.what = action::Choice{0, 1, "z"};
+        InputAction good;
+        good.fromOperator = true;
+        if (requestChoice)
+            good.what = action::Choice{3, 1, {}};
+        else
+            good.what = action::Valuator{1, 0.25};
+        window.actions = {bad, good};
+        INFO("round " << round << ", stray " << stray << (requestChoice ? ", choice" : ", valuator"));
+        if (requestChoice) {
+            const auto [status, measure] = input.request(InputClass::Choice, 1);
+            CHECK(status == InputStatus::Ok);
+            CHECK(std::get<ChoiceMeasure>(measure).choice == 3);
+        } else {
+            const auto [status, measure] = input.request(InputClass::Valuator, 1);
+            CHECK(status == InputStatus::Ok);
+            CHECK(std::get<ValuatorMeasure>(measure).value == 0.25);
+        }
+        CHECK_FALSE(input.ignoredActions().empty());
+        // From a script the same action is the line's error.
+        bad.fromOperator = false;
+        window.actions = {bad};
+        CHECK_THROWS_AS(input.request(requestChoice ? InputClass::Choice : InputClass::Valuator, 1),
+                        ScriptError);
+    }
+}
+
 TEST_CASE("input devices: a new source on the same queue keeps the queued events and overflow", "[input]") {
     // Only leaving the queue (closing the workstation) removes its events; attaching another
     // script to an open workstation must not.

@@ -112,6 +112,7 @@ void GlfwInputSource::post(const WindowEvent& event) {
 
 void GlfwInputSource::deliver(const WindowEvent& event) {
     if (auto a = mapper_.handle(event)) {
+        a->fromOperator = true;
         // The picture the operator acted on: its size as the resize events so far left it.
         if (owner_) {
             const VkExtent2D size = owner_->drawableSizeAsOfEvents();
@@ -141,6 +142,10 @@ std::optional<InputAction> GlfwInputSource::next(std::chrono::milliseconds timeo
     }
     if (pending_.empty() && owner_ && owner_->damage() != damageSeen_) {
         damageSeen_ = owner_->damage();
+        if (damageHandler_) {
+            damageHandler_();
+            return pending_.empty() ? std::nullopt : next(std::chrono::milliseconds(0));
+        }
         InputAction wake;
         wake.what = action::Wait{true};
         wake.text = "window resized or exposed";

@@ -15,7 +15,8 @@ namespace {
 /// A window the output opened itself, the display drawing in it and the window's input source.
 class OwnWindowOutput : public WorkstationOutput {
 public:
-    OwnWindowOutput(Workstation& ws, const OutputConnection& connection, const vk::ContextSettings& context) {
+    OwnWindowOutput(Workstation& ws, const OutputConnection& connection, const vk::ContextSettings& context)
+        : workstation_(ws) {
         const glm::dvec2 size = ws.description().displaySize;
         const std::uint32_t width = connection.width ? connection.width : std::uint32_t(std::lround(size.x));
         const std::uint32_t height =
@@ -37,13 +38,19 @@ public:
     }
     DrawableSize drawableSize() const override { return display_->drawableSize(); }
     bool followsDrawable() const override { return true; }
-    /// Made when first asked for: a program that reads no input keeps no queue of actions.
+    /// Made when first asked for: a program that reads no input keeps no queue of actions. While
+    /// the program waits for input, a resized or exposed window is repainted (the workstation
+    /// keeps its picture) and the wait goes on.
     GlfwInputSource& input() {
-        if (!input_) input_ = std::make_unique<GlfwInputSource>(*window_);
+        if (!input_) {
+            input_ = std::make_unique<GlfwInputSource>(*window_);
+            input_->setDamageHandler([this] { workstation_.present(); });
+        }
         return *input_;
     }
 
 private:
+    Workstation& workstation_;
     std::unique_ptr<GlfwWindow> window_;
     std::unique_ptr<vk::WorkstationDisplay> display_;
     std::unique_ptr<GlfwInputSource> input_;

@@ -10,6 +10,7 @@
 #include "phigs/ws/EchoStructures.h"
 
 #include <ctime>
+#include <random>
 
 using namespace window_test;
 
@@ -181,6 +182,30 @@ TEST_CASE("window session: after resizes, menu rows, surface picks and slider dr
     }
     chooseMenu(w, "EXIT");
     CHECK(w.session.finished());
+    for (const auto& line : w.session.log()) {
+        INFO(line);
+        CHECK(line.rfind("ERROR: ", 0) != 0);
+    }
+    render_test::requireNoValidationMessages(w.display.context());
+}
+
+TEST_CASE("window session: a window made too small for its areas goes on, and works again when larger") {
+    // Menu panel, pad and sliders shrink to a pixel or to nothing; the devices are initialised
+    // again on every resize and must not refuse (an empty echo volume ended the program).
+    WindowSession w(1024, 768);
+    readTransport(w);
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> side(1, 60);
+    for (int trial = 0; trial < 6; ++trial) {
+        const int width = trial == 0 ? 1 : side(random), height = trial == 0 ? 1 : side(random);
+        INFO("window " << width << " x " << height);
+        REQUIRE(w.resize(width, height));
+        CHECK(w.session.workstation().displaySize() == glm::dvec2(width, height));
+    }
+    REQUIRE(w.resize(800, 600));
+    chooseMenu(w, "RETURN");
+    chooseMenu(w, "VIEW");
+    CHECK(w.session.menuTitle() == "VIEW");
     for (const auto& line : w.session.log()) {
         INFO(line);
         CHECK(line.rfind("ERROR: ", 0) != 0);

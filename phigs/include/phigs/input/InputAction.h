@@ -67,6 +67,10 @@ struct InputAction {
     /// through: a click taken off the queue after a resize belongs to the picture it was made on.
     /// Empty (a script): the size when the action is measured.
     std::optional<glm::uvec2> surface;
+    /// An operator's action in a window: one no device can take (a function key past a choice
+    /// device's alternatives) is ignored, and a pending request goes on waiting; a script's line
+    /// that no device can take is an error.
+    bool fromOperator = false;
 };
 
 }  // namespace phigs

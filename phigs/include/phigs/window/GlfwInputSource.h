@@ -16,7 +16,8 @@ namespace phigs {
 /// WindowEventMapper, and next() blocks in glfwWaitEventsTimeout (no polling: an idle window
 /// costs no CPU). Positions are framebuffer pixels (window coordinates scaled on high-density
 /// displays), y down. Given a GlfwWindow, a wait ends early with a `Wait{surfaceChanged}` when
-/// the window was resized or exposed, so the application redraws at once.
+/// the window was resized or exposed, so the application redraws at once; or, with a damage
+/// handler, the handler repaints and the wait goes on.
 class GlfwInputSource : public InputSource {
 public:
     /// Installs the callbacks on `window` (GLFW must be initialised; one source per window).
@@ -50,6 +51,10 @@ public:
     glm::dvec2 pointerAsOfEvents() const;
     /// Records a motion event's position (window coordinates), as the cursor callback does.
     void pointerMoved(glm::dvec2 windowCoordinates) { pointer_ = windowCoordinates; }
+    /// Called, instead of ending the wait, when the window was resized or exposed: a window whose
+    /// picture the toolkit keeps (a workstation's own window) repaints it without the
+    /// application. An empty handler restores the Wait{surfaceChanged}.
+    void setDamageHandler(std::function<void()> handler) { damageHandler_ = std::move(handler); }
 
 private:
     GLFWwindow* window_;
@@ -58,6 +63,7 @@ private:
     WindowEventMapper mapper_;
     std::deque<InputAction> pending_;
     std::function<bool(const WindowEvent&)> filter_;
+    std::function<void()> damageHandler_;
     std::optional<glm::dvec2> pointer_;  ///< window coordinates, from the last motion event
 };
 

@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+
 namespace acsynt {
 
 /// A rectangle of screen pixels, origin at the top left, y down (as input sources give them).
@@ -11,7 +13,11 @@ struct PixelBox {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     bool contains(glm::dvec2 p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
     glm::dvec2 centre() const { return {(x0 + x1) / 2, (y0 + y1) / 2}; }
-    phigs::EchoVolume echoVolume() const { return {x0, x1, y0, y1, 0, 1}; }
+    /// At least one pixel each way: on a window too small for the area the device still has a
+    /// (tiny) echo volume, which PHIGS requires to be non-empty.
+    phigs::EchoVolume echoVolume() const {
+        return {x0, std::max(x1, x0 + 1), y0, std::max(y1, y0 + 1), 0, 1};
+    }
 };
 
 /// Where the session's areas lie on a W x H screen, in pixels: the geometry area (one or four

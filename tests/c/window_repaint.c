@@ -1,0 +1,138 @@
+/* The window workstation keeps its picture while the program waits for input (label window,
+ * under an Xvfb of its own): a window put over it and taken away again, or a resize, is repainted
+ * during AWAIT EVENT, which goes on to its timeout rather than ending early with NONE. The
+ * window's pixels are read back through Xlib (the test, not the binding, uses X). */
+#define _POSIX_C_SOURCE 200809L
+#include "check.h"
+
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <time.h>
+
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The top-level window named `name` (GLFW sets WM_NAME), or 0. */
+static Window find_named(Display* x, Window from, const char* name) {
+    char* title = NULL;
+    if (XFetchName(x, from, &title) && title) {
+        const int same = strcmp(title, name) == 0;
+        XFree(title);
+        if (same) return from;
+    }
+    Window root, parent, *children = NULL;
+    unsigned count = 0;
+    Window found = 0;
+    if (XQueryTree(x, from, &root, &parent, &children, &count)) {
+        for (unsigned i = 0; i < count && !found; ++i) found = find_named(x, children[i], name);
+        if (children) XFree(children);
+    }
+    return found;
+}
+
+/* Pixels of the window that are red (the square) and magenta (the cover), and whether the
+ * pixel at (px, py) is red. */
+static void count_colours(Display* x, Window w, int px, int py, int* red, int* magenta, int* red_at) {
+    XWindowAttributes a;
+    XGetWindowAttributes(x, w, &a);
+    XImage* image = XGetImage(x, w, 0, 0, (unsigned)a.width, (unsigned)a.height, AllPlanes, ZPixmap);
+    *red = *magenta = *red_at = 0;
+    if (!image) return;
+    for (int j = 0; j < a.height; ++j)
+        for (int i = 0; i < a.width; ++i) {
+            const unsigned long p = XGetPixel(image, i, j);
+            const unsigned r = (unsigned)(p >> 16) & 255u, g = (unsigned)(p >> 8) & 255u,
+                           b = (unsigned)p & 255u;
+            const int is_red = r > 200 && g < 60 && b < 60;
+            *red += is_red;
+            *magenta += r > 200 && g < 60 && b > 200;
+            if (i == px && j == py) *red_at = is_red;
+        }
+    XDestroyImage(image);
+}
+
+/* AWAIT EVENT for `seconds` with no operator: NONE, and only at the timeout. */
+static void await_whole_timeout(float seconds) {
+    Pint ws = -1, number = -1;
+    Pin_class in_class = PIN_LOC;
+    const double start = now();
+    EXPECT_NO_ERROR(pawait_event(seconds, &ws, &in_class, &number));
+    CHECK(in_class == PIN_NONE);
+    CHECK(now() - start >= 0.9 * seconds);
+}
+
+int main(int argc, char** argv) {
+    const char* dir = argc > 1 ? argv[1] : ".";
+    char errors[512];
+    snprintf(errors, sizeof errors, "%s/window_repaint_errors.txt", dir);
+    Display* x = XOpenDisplay(NULL);
+    CHECK(x != NULL);
+    if (!x) return finish("window_repaint");
+    open_with_handler(errors);
+    Ppoint points[4] = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.9f, 0.9f}, {0.1f, 0.9f}};
+    Ppoint_list square = {4, points};
+    Pgcolr red = {PMODEL_RGB, {0}};
+    red.val.direct.x = 1;
+    popen_struct(1);
+    pset_int_style(PSTYLE_SOLID);
+    pset_int_colr(&red);
+    pfill_area(&square);
+    pclose_struct();
+    EXPECT_NO_ERROR(popen_ws(1, NULL, PWST_WINDOW));
+    EXPECT_NO_ERROR(ppost_struct(1, 1, 0.5f));
+    EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
+    EXPECT_NO_ERROR(pset_choice_mode(1, 1, POP_EVENT, PSWITCH_ECHO));
+    await_whole_timeout(0.3f); /* the window is mapped and drawn */
+    const Window w = find_named(x, DefaultRootWindow(x), "PHIGS workstation 1");
+    CHECK(w != 0);
+    if (!w) return finish("window_repaint");
+    int reds = 0, magentas = 0, red_at = 0;
+    count_colours(x, w, 0, 0, &reds, &magentas, &red_at);
+    CHECK(reds > 1000 && magentas == 0);
+
+    /* A magenta window over it, taken away again: the damage is repainted during the wait. */
+    for (int round = 0; round < 3; ++round) {
+        XWindowAttributes a;
+        XGetWindowAttributes(x, w, &a);
+        int wx = 0, wy = 0;
+        Window child;
+        XTranslateCoordinates(x, w, DefaultRootWindow(x), 0, 0, &wx, &wy, &child);
+        XSetWindowAttributes cover_attributes;
+        cover_attributes.override_redirect = True;
+        cover_attributes.background_pixel = 0xff00ffUL;
+        const Window cover =
+            XCreateWindow(x, DefaultRootWindow(x), wx + 20 * round, wy + 10 * round, (unsigned)a.width / 2,
+                          (unsigned)a.height / 2, 0, CopyFromParent, InputOutput, CopyFromParent,
+                          CWOverrideRedirect | CWBackPixel, &cover_attributes);
+        XMapRaised(x, cover);
+        XSync(x, False);
+        struct timespec pause = {0, 200000000};
+        nanosleep(&pause, NULL);
+        XDestroyWindow(x, cover);
+        XSync(x, False);
+        await_whole_timeout(0.4f);
+        count_colours(x, w, 0, 0, &reds, &magentas, &red_at);
+        CHECK(magentas == 0);
+        CHECK(reds > 1000);
+    }
+
+    /* Resized: redrawn at the new size (the square's centre at the middle of the lower left
+     * square of the window) while the program only waits. */
+    const unsigned sizes[3][2] = {{600, 400}, {300, 500}, {900, 300}};
+    for (int k = 0; k < 3; ++k) {
+        XResizeWindow(x, w, sizes[k][0], sizes[k][1]);
+        XSync(x, False);
+        await_whole_timeout(0.5f);
+        const int side = (int)(sizes[k][0] < sizes[k][1] ? sizes[k][0] : sizes[k][1]);
+        count_colours(x, w, side / 2, (int)sizes[k][1] - side / 2, &reds, &magentas, &red_at);
+        CHECK(red_at);
+        CHECK(reds > side * side / 3);
+    }
+    pclose_ws(1);
+    pclose_phigs();
+    XCloseDisplay(x);
+    return finish("window_repaint");
+}
