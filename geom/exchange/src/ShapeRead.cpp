@@ -57,11 +57,28 @@ bool rectangular(const TopoDS_Face& face, double u0, double u1, double v0, doubl
     return true;
 }
 
+/// Moves a face's (u, v) box onto the surface's own bounds where it overshoots them by rounding:
+/// BRepTools::UVBounds gives a cone's u from -4e-13 or a sphere's v from -pi/2 - 3e-13, and
+/// OpenCASCADE's conversion and Segment throw on a box past the bounds. A box farther out is
+/// left as it is.
+void clampToBounds(const Geom_Surface& s, double& u0, double& u1, double& v0, double& v1) {
+    double a0, a1, b0, b1;
+    s.Bounds(a0, a1, b0, b1);
+    const auto clamp = [](double& t0, double& t1, double first, double last) {
+        const double e = 1e-9 * std::max(1.0, t1 - t0);
+        if (t0 < first && first - t0 <= e) t0 = first;
+        if (t1 > last && t1 - last <= e) t1 = last;
+    };
+    clamp(u0, u1, a0, a1);
+    clamp(v0, v1, b0, b1);
+}
+
 /// The face's surface as a B-spline on [u0, u1] x [v0, v1] (converted and cut by OpenCASCADE).
 opencascade::handle<Geom_BSplineSurface> bsplineOn(opencascade::handle<Geom_Surface> s, double u0, double u1,
                                                    double v0, double v1) {
     while (auto trimmed = opencascade::handle<Geom_RectangularTrimmedSurface>::DownCast(s))
         s = trimmed->BasisSurface();
+    clampToBounds(*s, u0, u1, v0, v1);
     opencascade::handle<Geom_BSplineSurface> b = opencascade::handle<Geom_BSplineSurface>::DownCast(s);
     if (b.IsNull())
         return GeomConvert::SurfaceToBSplineSurface(new Geom_RectangularTrimmedSurface(s, u0, u1, v0, v1));
