@@ -298,6 +298,132 @@ TEST_CASE("bad files: units the program does not know", "[exchange][bad]") {
     requireRefused(dir / "gram.step", "length unit is not one the program knows");
 }
 
+namespace {
+
+/// The right wing's patches alone (no curves): a face each in a file.
+CadModel patchModel() {
+    CadModel m = wingModel();
+    m.surfaces[0].curves.clear();
+    return m;
+}
+
+/// The text of the STEP entity "#N = ..." up to its ';'.
+std::pair<std::size_t, std::size_t> stepEntity(const std::string& text, const std::string& id) {
+    const std::size_t at = text.find("\n" + id + " = ");
+    REQUIRE(at != std::string::npos);
+    return {at + 1, text.find(';', at) + 1};
+}
+
+/// The file with `from` replaced by `to` once inside entity `id`.
+std::string spoilEntity(const std::string& text, const std::string& id, const std::string& from,
+                        const std::string& to) {
+    const auto [begin, end] = stepEntity(text, id);
+    const std::size_t at = text.find(from, begin);
+    REQUIRE(at < end);
+    return text.substr(0, at) + to + text.substr(at + from.size());
+}
+
+}  // namespace
+
+TEST_CASE("bad files: a face on an invalid surface is left out with a warning naming it", "[exchange][bad]") {
+    // OpenCASCADE makes no face of an invalid B-spline surface and says nothing: the face was lost
+    // without a word, and a file of such faces alone was said to have no faces at all.
+    const auto dir = exchange_test::scratch("bad_surface");
+    writeCadFile(patchModel(), dir / "wing.step");
+    const std::string whole = contents(dir / "wing.step");
+    std::size_t faces = 0;
+    for (std::size_t at = 0; (at = whole.find("= ADVANCED_FACE(", at)) != std::string::npos; ++at) ++faces;
+    REQUIRE(faces > 2);
+    // The first face and its surface.
+    const std::size_t face = whole.find("= ADVANCED_FACE('',(");
+    const std::string faceId = whole.substr(whole.rfind('#', face), face - 1 - whole.rfind('#', face));
+    const std::size_t ref = whole.find("),#", face) + 2;
+    const std::string surfaceId = whole.substr(ref, whole.find(',', ref) - ref);
+    INFO("face " << faceId << " on " << surfaceId);
+    const std::string knots = "(4,4),(4,4),(0.0000000000000000E+00,";
+    const std::vector<std::pair<std::string, std::string>> spoilers{
+        {spoilEntity(whole, surfaceId, "('',3,3,", "('',0,3,"), "degree 0 in u (1 to 25 allowed)"},
+        {spoilEntity(whole, surfaceId, knots, "(4,4),(4,4),(9.0000000000000000E+00,"),
+         "knots in u not increasing (9 then 0.4000197589)"},
+        {spoilEntity(whole, surfaceId, knots, "(4,4),(4,200000000),(0.0000000000000000E+00,"),
+         "a knot multiplicity of 200000000 in v (1 to degree + 1 = 4 allowed)"},
+        {spoilEntity(whole, surfaceId, knots, "(4,4),(4,3),(0.0000000000000000E+00,"),
+         "knot multiplicities in v adding up to 7, not 4 control points + degree + 1"}};
+    for (const auto& [text, cause] : spoilers) {
+        INFO(cause);
+        write(dir / "spoilt.step", text);
+        const CadImport read = readCadFile(dir / "spoilt.step");
+        CHECK(read.model.surfaces.size() == faces - 1);  // the others, a surface each (no grid now)
+        REQUIRE(read.warnings.size() == 1);
+        CHECK(read.warnings[0] ==
+              faceId + ": a face left out: " + surfaceId + " BSplineSurfaceWithKnots: " + cause);
+    }
+    // A file whose only face is on an invalid surface: refused, naming the face and the cause.
+    CadModel one = patchModel();
+    one.surfaces[0].surface = geom::extractBezier(one.surfaces[0].surface)[0].surface;
+    writeCadFile(one, dir / "one.step");
+    const std::string single = contents(dir / "one.step");
+    const std::size_t oneFace = single.find("= ADVANCED_FACE('',(");
+    const std::string oneFaceId =
+        single.substr(single.rfind('#', oneFace), oneFace - 1 - single.rfind('#', oneFace));
+    const std::size_t oneRef = single.find("),#", oneFace) + 2;
+    const std::string oneSurfaceId = single.substr(oneRef, single.find(',', oneRef) - oneRef);
+    write(dir / "one_bad.step", spoilEntity(single, oneSurfaceId, "('',3,3,", "('',3,99,"));
+    requireRefused(dir / "one_bad.step", "no B-spline surface could be taken from its 1 face: " + oneFaceId +
+                                             ": a face left out: " + oneSurfaceId +
+                                             " BSplineSurfaceWithKnots: degree 99 in v (1 to 25 allowed)");
+    // A control point that refers to another point of the file: the origin of the placement
+    // (the face's edges are then off its surface, which is said rather than that the face is
+    // trimmed inside it), or a point of a curve on the surface (2-D).
+    const auto withFirstPole = [&](const std::string& pointId) {
+        const auto [begin, end] = stepEntity(single, oneSurfaceId);
+        const std::size_t firstPole = single.find("(#", begin) + 1;
+        REQUIRE(firstPole < end);
+        std::string text = single;
+        text.replace(firstPole, single.find(',', firstPole) - firstPole, pointId);
+        return text;
+    };
+    const auto idBefore = [&](std::size_t at) {
+        return single.substr(single.rfind('#', at), at - 1 - single.rfind('#', at));
+    };
+    const std::string origin = idBefore(single.find("= CARTESIAN_POINT("));
+    write(dir / "wrong_point.step", withFirstPole(origin));
+    requireRefused(dir / "wrong_point.step", "a face whose edges lie up to");
+    requireRefused(dir / "wrong_point.step", "(a wrong point or reference in the file), face " + oneFaceId);
+    const std::size_t line = single.find("= LINE(");  // a curve on the surface: its point is (u, v)
+    REQUIRE(line != std::string::npos);
+    const std::string flat = idBefore(single.find("= CARTESIAN_POINT(", line));
+    write(dir / "flat_point.step", withFirstPole(flat));
+    requireRefused(dir / "flat_point.step", oneFaceId + ": a face left out: " + oneSurfaceId +
+                                                " BSplineSurfaceWithKnots: control point " + flat +
+                                                " has 2 coordinates, not 3");
+}
+
+TEST_CASE("bad files: an IGES face on an invalid surface is left out with a warning naming it",
+          "[exchange][bad]") {
+    const auto dir = exchange_test::scratch("bad_surface_iges");
+    writeCadFile(patchModel(), dir / "wing.igs");
+    const std::string whole = contents(dir / "wing.igs");
+    // The first B-spline surface (128): its first knot made 9, the knots no longer ascending.
+    const std::string head = "128,3,3,3,3,0,0,1,0,0,0.0000000000000000E+00,";
+    const std::size_t at = whole.find("\n" + head) + 1;
+    REQUIRE(at > 0);
+    const int surfaceDe = std::stoi(whole.substr(at + 64, 8));
+    const std::size_t face = whole.find("\n144," + std::to_string(surfaceDe) + ",");
+    REQUIRE(face != std::string::npos);
+    const int faceDe = std::stoi(whole.substr(face + 1 + 64, 8));
+    std::size_t faces = 0;
+    for (std::size_t f = 0; (f = whole.find("\n144,", f)) != std::string::npos; ++f) ++faces;
+    std::string spoilt = whole;
+    spoilt.replace(at + head.size() - 23, 1, "9");
+    write(dir / "spoilt.igs", spoilt);
+    const CadImport read = readCadFile(dir / "spoilt.igs");
+    CHECK(read.model.surfaces.size() == faces - 1);
+    REQUIRE(read.warnings.size() == 1);
+    CHECK(read.warnings[0] == "DE " + std::to_string(faceDe) + ": a face left out: DE " +
+                                  std::to_string(surfaceDe) + " type 128: Knots are not in ascending order");
+}
+
 TEST_CASE("bad files: more faces, control points or time than allowed", "[exchange][bad]") {
     const auto dir = exchange_test::scratch("bad_limits");
     writeCadFile(exchange_test::cadModelOf(exchange_test::transport()), dir / "transport.igs");

@@ -1,6 +1,7 @@
 // readCadFile: an IGES or STEP file's faces back to named B-spline surfaces and curve sets.
 #include "CadDocument.h"
 #include "FailureText.h"
+#include "FileEntities.h"
 #include "IgesParameters.h"
 #include "ImportCodec.h"
 #include "Isolated.h"
@@ -94,7 +95,7 @@ void addHealingWarnings(const opencascade::handle<XSControl_WorkSession>& sessio
             const std::string text = check->CWarning(i);
             if (text.find("removed") == std::string::npos && text.find("skipped") == std::string::npos)
                 continue;
-            result.warnings.push_back("entity " + std::to_string(checks.Number()) +
+            result.warnings.push_back(entityLabel(session->Model(), check->Entity()) +
                                       ": OpenCASCADE's healing left something out: " + text);
         }
     }
@@ -127,7 +128,7 @@ void addLostBoundWarnings(const opencascade::handle<XSControl_WorkSession>& sess
         int wires = 0;
         for (TopExp_Explorer w(shape, TopAbs_WIRE); w.More(); w.Next()) ++wires;
         if (wires < expected)
-            result.warnings.push_back("entity " + std::to_string(i) + ": a face with " +
+            result.warnings.push_back(entityLabel(model, entity) + ": a face with " +
                                       std::to_string(expected) +
                                       " loops in the file came back from OpenCASCADE with " +
                                       std::to_string(wires) + ": " + std::to_string(expected - wires) +
@@ -143,14 +144,20 @@ void checkUnit(const std::string& unit, const std::string& file) {
         throw ExchangeError(file, "length unit '" + unit + "' is not one the program knows" + known);
 }
 
+/// Why a file gave no shapes: its faces all lost (the first named), or none in it.
+std::string noShapes(const FileFaces& faces) {
+    if (faces.lost.empty()) return "OpenCASCADE found no shapes in it";
+    return "no face of its " + std::to_string(faces.lost.size()) + " could be read: " + faces.lost.front();
+}
+
 /// "why", with OpenCASCADE's first failure message after it where there was one.
 std::string because(const std::string& why, const MessageCollector& messages) {
     const std::string first = messages.first();
     return first.empty() ? why : why + " (" + first + ")";
 }
 
-void readStep(const std::string& file, opencascade::handle<TDocStd_Document> document, CadImport& result,
-              const MessageCollector& messages) {
+FileFaces readStep(const std::string& file, opencascade::handle<TDocStd_Document> document, CadImport& result,
+                   const MessageCollector& messages) {
     STEPCAFControl_Reader reader;
     reader.SetNameMode(true);
     reader.SetColorMode(true);
@@ -165,13 +172,17 @@ void readStep(const std::string& file, opencascade::handle<TDocStd_Document> doc
             "the file declares no length unit: read as millimetres, OpenCASCADE's default");
     else
         result.fileUnit = lengths.First().ToCString();
-    if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+    const bool transferred = reader.Transfer(document);
+    FileFaces faces = fileFaces(reader.Reader().WS());
+    if (!transferred) throw ExchangeError(file, noShapes(faces));
+    result.warnings.insert(result.warnings.end(), faces.lost.begin(), faces.lost.end());
     addHealingWarnings(reader.Reader().WS(), result);
     addLostBoundWarnings(reader.Reader().WS(), result);
+    return faces;
 }
 
-std::string readIges(const std::string& file, opencascade::handle<TDocStd_Document> document,
-                     CadImport& result, const MessageCollector& messages) {
+FileFaces readIges(const std::string& file, opencascade::handle<TDocStd_Document> document, CadImport& result,
+                   const MessageCollector& messages, std::string& modelName) {
     IGESCAFControl_Reader reader;
     reader.SetNameMode(true);
     reader.SetColorMode(true);
@@ -187,10 +198,14 @@ std::string readIges(const std::string& file, opencascade::handle<TDocStd_Docume
         throw ExchangeError(file,
                             "unit flag " + std::to_string(flag) + " is not an IGES length unit (1 to 11)");
     result.fileUnit = unit;
-    if (!reader.Transfer(document)) throw ExchangeError(file, "OpenCASCADE found no shapes in it");
+    const bool transferred = reader.Transfer(document);
+    FileFaces faces = fileFaces(reader.WS());
+    if (!transferred) throw ExchangeError(file, noShapes(faces));
+    result.warnings.insert(result.warnings.end(), faces.lost.begin(), faces.lost.end());
     addHealingWarnings(reader.WS(), result);
     addLostBoundWarnings(reader.WS(), result);
-    return header.SendName().IsNull() ? "" : header.SendName()->ToCString();
+    modelName = header.SendName().IsNull() ? "" : header.SendName()->ToCString();
+    return faces;
 }
 
 double netSize(const std::vector<Surface>& surfaces) {
@@ -202,13 +217,14 @@ double netSize(const std::vector<Surface>& surfaces) {
 
 /// What a part's faces give: one surface (its patches joined) or one per face.
 void addSurfaces(const NamedShape& part, const std::string& name, CadModel& model, CadImport& result,
-                 std::size_t& poles, const CadReadOptions& options, const std::string& file) {
+                 std::size_t& poles, const CadReadOptions& options, const std::string& file,
+                 const FileFaces& fileFaces) {
     std::vector<Surface> surfaces;
-    std::map<std::string, std::size_t> problems;
+    std::map<std::string, std::vector<std::string>> problems;  // the faces' labels by problem
     for (TopExp_Explorer f(part.shape, TopAbs_FACE); f.More(); f.Next()) {
         FaceSurface s = faceSurface(TopoDS::Face(f.Current()));
         if (!s.surface) {
-            ++problems[s.problem];
+            problems[s.problem].push_back(fileFaces.labelOf(f.Current()));
             continue;
         }
         poles += s.surface->points.size();
@@ -217,9 +233,17 @@ void addSurfaces(const NamedShape& part, const std::string& name, CadModel& mode
                                 "more than " + std::to_string(options.maxPoles) + " control points in all");
         surfaces.push_back(std::move(*s.surface));
     }
-    for (const auto& [problem, count] : problems)
+    for (const auto& [problem, labels] : problems) {
+        std::string which;
+        std::size_t named = 0;
+        for (const std::string& label : labels)
+            if (!label.empty() && ++named <= 10) which += (named == 1 ? "" : ", ") + label;
+        if (named > 10) which += ", ...";
+        const std::size_t count = labels.size();
         result.warnings.push_back(name + ": " + std::to_string(count) + (count == 1 ? " face" : " faces") +
-                                  " left out: " + problem);
+                                  " left out: " + problem +
+                                  (named == 0 ? "" : (count == 1 ? ", face " : ", faces ") + which));
+    }
     if (surfaces.size() > 1)
         if (auto joined = joinPatches(surfaces, 1e-11 * netSize(surfaces))) surfaces = {std::move(*joined)};
     for (std::size_t k = 0; k < surfaces.size(); ++k)
@@ -248,7 +272,7 @@ void addCurves(const NamedShape& part, CadSurface& surface, CadImport& result) {
 }
 
 CadModel modelOf(const std::vector<NamedShape>& parts, CadImport& result, const CadReadOptions& options,
-                 const std::string& file) {
+                 const std::string& file, const FileFaces& fileFaces) {
     std::size_t faces = 0, poles = 0;
     for (const NamedShape& part : parts)
         for (TopExp_Explorer f(part.shape, TopAbs_FACE); f.More(); f.Next())
@@ -267,7 +291,7 @@ CadModel modelOf(const std::vector<NamedShape>& parts, CadImport& result, const 
         if (!TopExp_Explorer(parts[i].shape, TopAbs_FACE).More())
             result.warnings.push_back(name + ": no faces (curves or points only), left out");
         else
-            addSurfaces(parts[i], name, model, result, poles, options, file);
+            addSurfaces(parts[i], name, model, result, poles, options, file, fileFaces);
     }
     for (const NamedShape& part : parts) {
         if (!curvesOf(part)) continue;
@@ -280,12 +304,20 @@ CadModel modelOf(const std::vector<NamedShape>& parts, CadImport& result, const 
         else
             addCurves(part, *it, result);
     }
-    if (model.surfaces.empty())
-        throw ExchangeError(file, faces == 0
+    if (model.surfaces.empty()) {
+        // The first face left out says why: one OpenCASCADE could not make, else one read and refused.
+        const std::size_t all = faces + fileFaces.lost.size();
+        const auto why = [&]() -> std::string {
+            if (!fileFaces.lost.empty()) return ": " + fileFaces.lost.front();
+            for (const std::string& w : result.warnings)
+                if (w.find(" left out: ") != std::string::npos) return ": " + w;
+            return result.warnings.empty() ? "" : ": " + result.warnings.front();
+        };
+        throw ExchangeError(file, all == 0
                                       ? "no surfaces in it (no faces at all)"
-                                      : "no B-spline surface could be taken from its " +
-                                            std::to_string(faces) + " faces" +
-                                            (result.warnings.empty() ? "" : ": " + result.warnings.front()));
+                                      : "no B-spline surface could be taken from its " + std::to_string(all) +
+                                            (all == 1 ? " face" : " faces") + why());
+    }
     return model;
 }
 
@@ -300,12 +332,11 @@ CadImport readHere(const std::filesystem::path& path, const CadReadOptions& opti
     try {
         const opencascade::handle<TDocStd_Document> document = session.newDocument();
         std::string modelName;
-        if (cadFormatOf(path) == CadFormat::Step)
-            readStep(file, document, result, *messages);
-        else
-            modelName = readIges(file, document, result, *messages);
+        const FileFaces faces = cadFormatOf(path) == CadFormat::Step
+                                    ? readStep(file, document, result, *messages)
+                                    : readIges(file, document, result, *messages, modelName);
         const std::vector<NamedShape> parts = documentParts(document, modelName);
-        result.model = modelOf(parts, result, options, file);
+        result.model = modelOf(parts, result, options, file, faces);
         result.model.name = modelName.empty() ? path.stem().string() : modelName;
         result.model.unit = options.unit;
     } catch (const Standard_Failure& e) {

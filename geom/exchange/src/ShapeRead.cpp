@@ -11,10 +11,12 @@
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <Geom2d_Curve.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_Curve.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <Geom_TrimmedCurve.hxx>
 #include <Standard_Failure.hxx>
@@ -28,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace geom::exchange {
@@ -55,6 +58,29 @@ bool rectangular(const TopoDS_Face& face, double u0, double u1, double v0, doubl
         }
     }
     return true;
+}
+
+/// How far the face's edges lie off its surface at most (each edge's curve in space against its
+/// curve on the surface), and the size of the box round the edges. A file with a wrong point or
+/// reference in its surface has them far apart; OpenCASCADE's healing then widens the edges'
+/// tolerance and puts the curves on the surface anywhere.
+std::pair<double, double> edgesOffSurface(const TopoDS_Face& face, const Geom_Surface& surface) {
+    double gap = 0;
+    Bnd_Box box;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        double f = 0, l = 0, pf = 0, pl = 0;
+        const opencascade::handle<Geom_Curve> curve = BRep_Tool::Curve(edge, f, l);
+        const opencascade::handle<Geom2d_Curve> pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
+        if (curve.IsNull() || pcurve.IsNull()) continue;
+        for (int k = 0; k <= 8; ++k) {
+            const gp_Pnt p = curve->Value(f + (l - f) * k / 8.0);
+            const gp_Pnt2d uv = pcurve->Value(pf + (pl - pf) * k / 8.0);
+            gap = std::max(gap, p.Distance(surface.Value(uv.X(), uv.Y())));
+            box.Add(p);
+        }
+    }
+    return {gap, box.IsVoid() ? 0.0 : std::sqrt(box.SquareExtent())};
 }
 
 /// Moves a face's (u, v) box onto the surface's own bounds where it overshoots them by rounding:
@@ -236,7 +262,17 @@ FaceSurface faceSurface(const TopoDS_Face& face) {
         return r;
     }
     if (!rectangular(face, u0, u1, v0, v1)) {
-        r.problem = "a face trimmed inside its " + typeName(s) + " surface (surfaces are kept untrimmed)";
+        // Only which message: a face off its surface is not one trimmed inside it.
+        if (const auto [gap, size] = edgesOffSurface(face, *s); gap > 1e-7 && gap > 1e-4 * size) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "a face whose edges lie up to %.3g off its %s surface, the face %.3g across "
+                          "(a wrong point or reference in the file)",
+                          gap, typeName(s).c_str(), size);
+            r.problem = text;
+        } else {
+            r.problem = "a face trimmed inside its " + typeName(s) + " surface (surfaces are kept untrimmed)";
+        }
         return r;
     }
     try {
