@@ -290,6 +290,11 @@ TEST_CASE("bad files: units the program does not know", "[exchange][bad]") {
     writer.Model()->SetGlobalSection(header);
     REQUIRE(writer.Write((dir / "furlong.igs").c_str()));
     requireRefused(dir / "furlong.igs", "length unit 'FURLONG' is not one the program knows");
+    // Unit flag 3 with no name (blanks keep the columns): OpenCASCADE reads it as inches.
+    const std::string furlong = contents(dir / "furlong.igs");
+    REQUIRE(furlong.find(",3,7HFURLONG,") != std::string::npos);
+    write(dir / "unnamed.igs", replaceAll(furlong, ",3,7HFURLONG,", ",3,         ,"));
+    requireRefused(dir / "unnamed.igs", "unit flag 3 (the unit named in the file) but no unit name");
     const CadModel m = wingModel();
     // STEP: a length unit that is a mass.
     writeCadFile(m, dir / "wing.step");

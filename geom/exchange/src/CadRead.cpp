@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 
@@ -192,6 +193,13 @@ FileFaces readIges(const std::string& file, opencascade::handle<TDocStd_Document
     const IGESData_GlobalSection& header = reader.IGESModel()->GlobalSection();
     const int flag = header.UnitFlag();
     const std::string unit = header.UnitName().IsNull() ? "" : header.UnitName()->ToCString();
+    // Flag 3: the unit is the one named. OpenCASCADE reads flag 3 with no name as 1, inches.
+    std::ifstream text(file, std::ios::binary);
+    const std::vector<std::string> written = igesGlobalParameters(text);
+    if (written.size() > 14 && std::strtol(written[13].c_str(), nullptr, 10) == 3 && written[14].empty())
+        throw ExchangeError(file,
+                            "unit flag 3 (the unit named in the file) but no unit name: its length unit "
+                            "is not known");
     if (flag == 3 || (flag >= 1 && flag <= 11 && !unit.empty()))
         checkUnit(unit, file);
     else if (flag < 1 || flag > 11)

@@ -169,4 +169,49 @@ std::optional<std::string> firstBadIgesParameter(std::istream& in) {
     return finishEntity();
 }
 
+std::vector<std::string> igesGlobalParameters(std::istream& in) {
+    std::string global, line;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.size() < 8) continue;
+        const char section = line[line.size() - 8];
+        if (section == 'G')
+            global += line.substr(0, line.size() - 8);
+        else if (section != 'S')
+            break;
+    }
+    char parameter = ',', record = ';';
+    readDelimiters(global, parameter, record);
+    std::vector<std::string> parameters;
+    std::string token;
+    for (std::size_t i = 0; i < global.size(); ++i) {
+        const char c = global[i];
+        if (c == parameter || c == record) {
+            const std::size_t first = token.find_first_not_of(' ');
+            parameters.push_back(first == std::string::npos
+                                     ? ""
+                                     : token.substr(first, token.find_last_not_of(' ') + 1 - first));
+            token.clear();
+            if (c == record) break;
+            continue;
+        }
+        token += c;
+        // A Hollerith string: n H and n characters, delimiters among them.
+        const std::size_t first = token.find_first_not_of(' ');
+        if ((c == 'H' || c == 'h') && first + 1 < token.size() && token.size() - first <= 10 &&
+            digits(token, first, token.size() - 1)) {
+            const std::size_t n = std::stoul(token.substr(first, token.size() - 1 - first));
+            token = global.substr(i + 1, n);
+            i += n;
+            parameters.push_back(token);
+            token.clear();
+            // What follows up to the next delimiter is the string's end.
+            while (i + 1 < global.size() && global[i + 1] != parameter && global[i + 1] != record) ++i;
+            if (i + 1 < global.size() && global[i + 1] == record) break;
+            ++i;
+        }
+    }
+    return parameters;
+}
+
 }  // namespace geom::exchange

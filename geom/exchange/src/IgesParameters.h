@@ -4,6 +4,7 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace geom::exchange {
 
@@ -14,5 +15,9 @@ namespace geom::exchange {
 /// is a number, a Hollerith string or empty (a default). Delimiters as the global section sets
 /// them; one pass, memory bounded by the largest entity.
 std::optional<std::string> firstBadIgesParameter(std::istream& in);
+
+/// The parameters of an IGES file's global section as written (strings without their "nH"): the
+/// reader changes some (a unit flag 3 without a name becomes 1, inches).
+std::vector<std::string> igesGlobalParameters(std::istream& in);
 
 }  // namespace geom::exchange
