@@ -131,6 +131,38 @@ TEST_CASE("files: lengths are written in the model's unit and converted on read"
     CHECK_THROWS_WITH(writeCadFile(metres, dir / "model.dxf"), Catch::Contains("unknown extension '.dxf'"));
 }
 
+TEST_CASE("files: every unit the model may name is the file's unit, its lengths in it",
+          "[exchange][files][units]") {
+    // "IN" was no unit OpenCASCADE's settings know: it kept the one before, and a model in
+    // inches was written as millimetres.
+    const auto dir = exchange_test::scratch("every_unit");
+    const acsynt::Component& wing = exchange_test::transport().components[1];
+    CadModel metres{"wing", "M", {{wing.name, geom::extractBezier(wing.surface)[0].surface, {}, {}}}};
+    for (const std::string unit : {"M", "MM", "CM", "KM", "UM", "IN", "FT", "MI", "MIL", "UIN", "inch",
+                                   "millimetre", "foot", "mile", "micrometre", "microinch"}) {
+        const double size = *metresPerUnit(unit);
+        CadModel model = metres;  // the same wing, its lengths in the unit
+        model.unit = unit;
+        for (glm::dvec3& p : model.surfaces[0].surface.points) p /= size;
+        for (const char* extension : {".step", ".igs"}) {
+            const auto file = dir / (unit + extension);
+            INFO(file.filename().string());
+            writeCadFile(model, file);
+            const CadImport read = readCadFile(file);  // in metres
+            INFO("the file's unit: " << read.fileUnit);
+            REQUIRE(metresPerUnit(read.fileUnit));
+            CHECK(*metresPerUnit(read.fileUnit) == size);
+            REQUIRE(read.model.surfaces.size() == 1);
+            const auto& a = read.model.surfaces[0].surface.points;
+            const auto& b = metres.surfaces[0].surface.points;
+            REQUIRE(a.size() == b.size());
+            double gap = 0;
+            for (std::size_t i = 0; i < a.size(); ++i) gap = std::max(gap, glm::length(a[i] - b[i]));
+            CHECK(gap <= 1e-12 * 30);
+        }
+    }
+}
+
 }  // namespace test_cad_files
 
 namespace test_cad_files {

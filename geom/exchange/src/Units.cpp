@@ -10,7 +10,9 @@ namespace geom::exchange {
 
 namespace {
 
-/// One length unit: OpenCASCADE's code, its size and the spellings files use (lower case).
+/// One length unit: OpenCASCADE's code (a value its unit settings accept: inches are "INCH", and
+/// a code they refuse leaves the unit before in place), its size and the spellings files use
+/// (lower case).
 struct UnitName {
     const char* code;
     double metres;
@@ -23,7 +25,7 @@ const UnitName units[] = {
     {"CM", 1e-2, {"cm", "centimetre", "centimeter", "centimetres", "centimeters"}},
     {"KM", 1e3, {"km", "kilometre", "kilometer", "kilometres", "kilometers"}},
     {"UM", 1e-6, {"um", "micrometre", "micrometer", "micron", "microns"}},
-    {"IN", 0.0254, {"in", "inch", "inches"}},
+    {"INCH", 0.0254, {"in", "inch", "inches"}},
     {"FT", 0.3048, {"ft", "foot", "feet"}},
     {"MI", 1609.344, {"mi", "mile", "miles"}},
     {"MIL", 2.54e-5, {"mil", "mils"}},
