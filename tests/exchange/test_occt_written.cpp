@@ -19,11 +19,18 @@
 #include <GC_MakeCircle.hxx>
 #include <IGESControl_Writer.hxx>
 #include <Interface_Static.hxx>
+#include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Trsf.hxx>
 
 #include <set>
 
@@ -184,6 +191,46 @@ TEST_CASE("OpenCASCADE's files: cones, a sphere and a filleted box in STEP, unco
                     off = std::max(off, distance.Value());
                 }
         CHECK(off <= 1e-9);
+    }
+}
+
+TEST_CASE("OpenCASCADE's files: a STEP assembly with one part placed twice", "[exchange][occt]") {
+    // Both placements gave surfaces of the same names, and the model read could not be written.
+    const auto dir = exchange_test::scratch("occt_assembly");
+    opencascade::handle<TDocStd_Document> document;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", document);
+    const opencascade::handle<XCAFDoc_ShapeTool> shapes = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+    const TDF_Label part = shapes->AddShape(BRepPrimAPI_MakeBox(10, 20, 30).Shape(), false);
+    TDataStd_Name::Set(part, "bracket");
+    const TDF_Label assembly = shapes->NewShape();
+    TDataStd_Name::Set(assembly, "assy");
+    gp_Trsf left, right;
+    left.SetTranslation(gp_Vec(100, 0, 0));
+    right.SetRotation(gp::OZ(), M_PI / 2);
+    shapes->AddComponent(assembly, part, TopLoc_Location(left));
+    shapes->AddComponent(assembly, part, TopLoc_Location(right));
+    shapes->UpdateAssemblies();
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    STEPCAFControl_Writer writer;
+    REQUIRE(writer.Transfer(document, STEPControl_AsIs));
+    REQUIRE(writer.Write((dir / "assembly.step").c_str()) == IFSelect_RetDone);
+    XCAFApp_Application::GetApplication()->Close(document);
+
+    const CadImport read = readCadFile(dir / "assembly.step");
+    CHECK(read.warnings.empty());
+    REQUIRE(read.model.surfaces.size() == 12);  // a box's six faces, twice
+    std::set<std::string> names;
+    for (const CadSurface& s : read.model.surfaces) names.insert(s.name);
+    CHECK(names.size() == 12);
+    CHECK(names.count("bracket_1") == 1);  // the first placement keeps the part's name
+    // The model read is written and read back as it is.
+    writeCadFile(read.model, dir / "again.step");
+    const CadImport again = readCadFile(dir / "again.step");
+    REQUIRE(again.model.surfaces.size() == 12);
+    for (std::size_t i = 0; i < 12; ++i) {
+        CHECK(again.model.surfaces[i].name == read.model.surfaces[i].name);
+        exchange_test::requireSameSurface(again.model.surfaces[i].surface, read.model.surfaces[i].surface);
     }
 }
 

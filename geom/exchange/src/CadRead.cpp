@@ -41,6 +41,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace geom::exchange {
 
@@ -292,15 +293,31 @@ CadModel modelOf(const std::vector<NamedShape>& parts, CadImport& result, const 
             if (slash != std::string::npos && other.name == part.name.substr(0, slash)) return true;
         return false;
     };
+    // Names unique, as the writer needs them: a part placed more than once in an assembly, and a
+    // surface "NAME_k" that meets another's name, get "_2", "_3", ... (the first keeps its name).
+    std::set<std::string> taken;
+    for (const NamedShape& part : parts) taken.insert(part.name);
+    const auto unique = [&taken](const std::string& name, std::set<std::string>& used) {
+        std::string free = name;
+        for (int k = 2; used.count(free) > 0 || (free != name && taken.count(free) > 0); ++k)
+            free = name + "_" + std::to_string(k);
+        used.insert(free);
+        return free;
+    };
+    std::set<std::string> partNames;
     CadModel model;
     for (std::size_t i = 0; i < parts.size(); ++i) {
         if (curvesOf(parts[i])) continue;
-        const std::string name = parts[i].name.empty() ? "part_" + std::to_string(i + 1) : parts[i].name;
+        const std::string name =
+            unique(parts[i].name.empty() ? "part_" + std::to_string(i + 1) : parts[i].name, partNames);
         if (!TopExp_Explorer(parts[i].shape, TopAbs_FACE).More())
             result.warnings.push_back(name + ": no faces (curves or points only), left out");
         else
             addSurfaces(parts[i], name, model, result, poles, options, file, fileFaces);
     }
+    std::set<std::string> surfaceNames;
+    for (const CadSurface& s : model.surfaces) taken.insert(s.name);
+    for (CadSurface& s : model.surfaces) s.name = unique(s.name, surfaceNames);
     for (const NamedShape& part : parts) {
         if (!curvesOf(part)) continue;
         const std::string owner = part.name.substr(0, part.name.find('/'));

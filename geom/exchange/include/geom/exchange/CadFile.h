@@ -47,7 +47,8 @@ struct CadImport {
 
 /// Reads the B-spline surfaces of an IGES or STEP file. Each named group or product of faces
 /// becomes one surface when its faces tile a parameter grid on one surface (joinPatches: a file
-/// written by writeCadFile gives its surfaces back), else one surface per face ("NAME_k"). Other
+/// written by writeCadFile gives its surfaces back), else one surface per face ("NAME_k"); a name
+/// met again (a part placed twice in an assembly) gets "_2", "_3", ..., names being unique. Other
 /// surface types are converted to B-splines by OpenCASCADE (faces it cannot convert, and faces
 /// trimmed inside their surface, are left out with a warning). Entities named "SURFACE/NAME"
 /// made of trimmed faces with degree-1 edges come back as that surface's SurfaceCurves (each
