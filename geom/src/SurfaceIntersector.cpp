@@ -375,7 +375,12 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         // t is measured from `origin` (near the surface, see intersect()); the caller shifts it.
         const double lineT = glm::dot(e.point - origin, direction) / glm::dot(direction, direction);
         const glm::dvec3 onLine = origin + lineT * direction;
-        if (glm::length(onLine - e.point) > 1e-10 * tree_.scale()) return;
+        // Far from the origin the point itself carries the rounding of its coordinates' size,
+        // which may pass 1e-10 of a small patch (one unit across at 1e6 from the origin).
+        const double pointSize = std::abs(e.point.x) + std::abs(e.point.y) + std::abs(e.point.z);
+        const double reach =
+            std::max(1e-10 * tree_.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize);
+        if (glm::length(onLine - e.point) > reach) return;
         LineSurfaceHit hit;
         hit.t = lineT;
         hit.uv = glm::dvec2(u, v);
@@ -404,7 +409,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         bool onLine = true;
         for (std::size_t k = 0; k <= static_cast<std::size_t>(alongS ? q : p) && onLine; ++k) {
             const std::size_t at = edgePoint(edge, k, p, q);
-            const double near = 1e-11 * tree_.scale() * patch.net[at].w;
+            const double near = std::max(1e-11 * tree_.scale() * patch.net[at].w, rounding);
             onLine = glm::dot(projected[at], projected[at]) <= near * near;
         }
         if (!onLine) continue;

@@ -296,6 +296,34 @@ TEST_CASE("lines through patch edges, creases and corners hit there, far from th
     REQUIRE(lines >= membersForBuild(40) * 25);
 }
 
+TEST_CASE("a small surface far from the origin: every known crossing is found", "[geom][intersect]") {
+    // A patch a unit or so across at 1e5 to 1e7 from the origin: its points carry the rounding of
+    // their coordinates (1e-10 at 1e6), more than 1e-10 of the patch; degrees 1-5 each way, half
+    // rational, lines along the normal and tilted through known points. Missed 102 of 400 at 1e6
+    // and 286 of 400 at 1e7 before the acceptance allowed for it.
+    std::mt19937 rng(1000000);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const double offset : {1e5, 1e6, 1e7}) {
+        for (int member = 0; member < 12; ++member) {
+            const int p = 1 + member % 5, q = 1 + (member / 2) % 5;
+            Surface s = geomtest::randomSurface(rng, p, q, std::size_t(p + 2), std::size_t(q + 2),
+                                                member % 2 == 1, true);
+            const glm::dvec3 shift(offset, -offset, offset);
+            for (glm::dvec3& point : s.points) point += shift;
+            const SurfaceIntersector intersector(s);
+            for (int trial = 0; trial < 25; ++trial) {
+                const double u = 0.02 + 0.96 * unit(rng), v = 0.02 + 0.96 * unit(rng);
+                const glm::dvec3 at = evaluate(s, u, v);
+                const glm::dvec3 d = tilted(normal(s, u, v), unit(rng) * 0.6, unit(rng) * 6.283);
+                const auto hits = intersector.intersect(at - d, d);
+                INFO("offset " << offset << " member " << member << " trial " << trial << " u " << u << " v "
+                               << v);
+                CHECK(hasHitNear(hits, at, 1e-6));
+            }
+        }
+    }
+}
+
 TEST_CASE("a line with no direction is refused", "[geom][intersect]") {
     const Surface sphere = makeSphere(1.0);
     REQUIRE_THROWS_WITH(intersectLine(sphere, {0, 0, 0}, {0, 0, 0}), Catch::Contains("direction"));
