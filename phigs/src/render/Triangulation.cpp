@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
 
 namespace phigs::render {
 namespace {
@@ -50,9 +53,23 @@ Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& con
         }
         base += n;
     }
+    // Bounded time and memory: a fill area tangled enough to need more steps than this (many
+    // thousands of points crossing each other everywhere) is refused rather than drawn for minutes.
+    constexpr double kMostSteps = 2e9;
+    constexpr std::size_t kMostBoundaries = 4'000'000;
+    double steps = 0.0;
+    const auto count = [&](double more) {
+        steps += more;
+        if (steps > kMostSteps)
+            throw std::length_error("even-odd fill of " + std::to_string(edges.size()) +
+                                    " edges: too tangled to triangulate (its edges cross too often)");
+    };
     // Crossings split slabs too, so that inside each slab the edges keep their left-right order.
-    for (std::size_t i = 0; i < edges.size(); ++i)
-        for (std::size_t k = i + 1; k < edges.size(); ++k) {
+    // Edges by their lower end: only those whose y ranges overlap can cross.
+    std::sort(edges.begin(), edges.end(), [](const Edge& l, const Edge& r) { return l.a.y < r.a.y; });
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        std::size_t k = i + 1;
+        for (; k < edges.size() && edges[k].a.y < edges[i].b.y; ++k) {
             const Edge &e = edges[i], &f = edges[k];
             const glm::dvec2 r = e.b - e.a, s = f.b - f.a;
             const double denom = r.x * s.y - r.y * s.x;
@@ -60,8 +77,13 @@ Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& con
             const glm::dvec2 d = f.a - e.a;
             const double t = (d.x * s.y - d.y * s.x) / denom;
             const double u = (d.x * r.y - d.y * r.x) / denom;
-            if (t > 0 && t < 1 && u > 0 && u < 1) ys.push_back(e.a.y + t * r.y);
+            if (t > 0 && t < 1 && u > 0 && u < 1) {
+                ys.push_back(e.a.y + t * r.y);
+                if (ys.size() > kMostBoundaries) count(kMostSteps);  // each crossing is a slab
+            }
         }
+        count(double(k - i));
+    }
     std::sort(ys.begin(), ys.end());
     ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
 
@@ -76,21 +98,68 @@ Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& con
         out.vertices.push_back(v);
         return static_cast<std::uint32_t>(out.vertices.size() - 1);
     };
+    // Each inside span of a slab is bounded by a pair of edges; a pair that goes on into the next
+    // slab makes one trapezoid with it, so a simple polygon gives O(n) trapezoids, not one per
+    // slab and span (O(n^2): a star of 18,500 points made 16 M triangles).
+    struct Open {
+        const Edge* right;
+        double bottom;
+        bool seen;
+    };
+    std::map<const Edge*, Open> open;  // by left edge
+    auto emit = [&](const Edge& left, const Edge& right, double bottom, double top) {
+        const std::uint32_t bl = vertexOn(left, bottom), br = vertexOn(right, bottom);
+        const std::uint32_t tr = vertexOn(right, top), tl = vertexOn(left, top);
+        out.triangles.insert(out.triangles.end(), {bl, br, tr, bl, tr, tl});
+    };
+    auto closeUnseen = [&](double at) {
+        for (auto it = open.begin(); it != open.end();) {
+            if (it->second.seen) {
+                it->second.seen = false;
+                ++it;
+                continue;
+            }
+            emit(*it->first, *it->second.right, it->second.bottom, at);
+            it = open.erase(it);
+        }
+    };
+    // The edges spanning a slab: those begun at or below it and not yet ended (every end is a
+    // slab boundary), kept as the slabs go up.
     std::vector<const Edge*> spanning;
+    std::vector<double> keys;
+    std::size_t begun = 0;
     for (std::size_t s = 0; s + 1 < ys.size(); ++s) {
         const double y0 = ys[s], y1 = ys[s + 1], mid = 0.5 * (y0 + y1);
-        spanning.clear();
-        for (const Edge& e : edges)
-            if (e.a.y <= y0 && e.b.y >= y1) spanning.push_back(&e);
-        std::sort(spanning.begin(), spanning.end(),
-                  [&](const Edge* l, const Edge* r) { return xAt(*l, mid) < xAt(*r, mid); });
+        std::erase_if(spanning, [&](const Edge* e) { return e->b.y <= y0; });
+        for (; begun < edges.size() && edges[begun].a.y <= y0; ++begun)
+            if (edges[begun].b.y > y0) spanning.push_back(&edges[begun]);
+        // By x at mid-slab: the order changes little from one slab to the next (crossings and new
+        // edges), so an insertion sort on the last order is about linear.
+        keys.resize(spanning.size());
+        for (std::size_t k = 0; k < spanning.size(); ++k) keys[k] = xAt(*spanning[k], mid);
+        std::size_t moves = 0;
+        for (std::size_t k = 1; k < spanning.size(); ++k)
+            for (std::size_t m = k; m > 0 && keys[m] < keys[m - 1]; --m, ++moves) {
+                std::swap(keys[m], keys[m - 1]);
+                std::swap(spanning[m], spanning[m - 1]);
+            }
+        count(double(spanning.size() + moves));
         for (std::size_t k = 0; k + 1 < spanning.size(); k += 2) {
-            const Edge &left = *spanning[k], &right = *spanning[k + 1];
-            const std::uint32_t bl = vertexOn(left, y0), br = vertexOn(right, y0);
-            const std::uint32_t tr = vertexOn(right, y1), tl = vertexOn(left, y1);
-            out.triangles.insert(out.triangles.end(), {bl, br, tr, bl, tr, tl});
+            const Edge *left = spanning[k], *right = spanning[k + 1];
+            const auto it = open.find(left);
+            if (it != open.end() && it->second.right == right) {
+                it->second.seen = true;
+                continue;
+            }
+            if (it != open.end()) {
+                emit(*left, *it->second.right, it->second.bottom, y0);
+                open.erase(it);
+            }
+            open.emplace(left, Open{right, y0, true});
         }
+        closeUnseen(y0);
     }
+    closeUnseen(ys.empty() ? 0.0 : ys.back());
     return out;
 }
 
