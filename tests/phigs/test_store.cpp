@@ -111,6 +111,23 @@ TEST_CASE("structure state errors 5 and 6", "[store][errors]") {
     CHECK(log.text().find("ERROR 6 in OPEN STRUCTURE") != std::string::npos);
 }
 
+TEST_CASE("an element whose type tag lies outside the enumeration is refused, the store unchanged",
+          "[store][errors]") {
+    // A tag cast from any int: only the payload's own types go in (what an archive can write back).
+    StructureStore store;
+    store.openStructure(1);
+    store.insert(label(1));
+    std::mt19937 random(9999);
+    for (int trial = 0; trial < 50; ++trial) {
+        const int tag = trial % 2
+                            ? static_cast<int>(ElementType::Count_) + static_cast<int>(random() % 100000)
+                            : -1 - static_cast<int>(random() % 100000);
+        INFO("tag " << tag);
+        CHECK(errorOf([&] { store.insert(IndexAttribute{static_cast<ElementType>(tag), 5}); }) != 0);
+        CHECK(store.elementCount(1) == 1);
+    }
+}
+
 TEST_CASE("inquiries: element type, size and content, current element, status", "[store]") {
     StructureStore store;
     CHECK(store.structureStatus(5) == StructureStatus::NonExistent);

@@ -521,6 +521,8 @@ ElementType elementType(const Element& element) {
 
 int payloadIndexOf(ElementType type) {
     using T = ElementType;
+    // A tag cast from outside the enumeration (the default below would take it as an index).
+    if (static_cast<int>(type) < 0 || static_cast<int>(type) >= static_cast<int>(T::Count_)) return -1;
     switch (type) {
         case T::Polyline3:
         case T::Polyline:

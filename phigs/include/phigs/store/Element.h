@@ -491,7 +491,8 @@ using Element =
 
 /// The PHIGS element type of an element.
 ElementType elementType(const Element& element);
-/// Which payload family carries a type (the variant index), -1 for All, Nil and Count_.
+/// Which payload family carries a type (the variant index), -1 for All, Nil, Count_ and any
+/// value outside the enumeration.
 int payloadIndexOf(ElementType type);
 /// Checks an element against the rules of its type (counts, consistent lists, the type tag
 /// matching its family, every real finite); returns an empty string when valid, else the reason.
