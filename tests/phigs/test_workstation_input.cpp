@@ -8,8 +8,10 @@
 #include "InputFakes.h"
 
 #include <catch2/catch.hpp>
+
 #include <deque>
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 #include <random>
 
 namespace test_workstation_input {
@@ -178,6 +180,44 @@ TEST_CASE("workstation output seam: the picture with the echo, input through the
     CHECK(ws.measurer().toNpc({400, 368}).y == Approx(400.0 / 768.0));
     ws.attachOutput(nullptr);
     CHECK_FALSE(ws.present());
+}
+
+TEST_CASE("workstation output seam: an output the workstation does not own outlives it safely",
+          "[ws][wiring]") {
+    // An application's own output (a vk::WorkstationDisplay made as the examples make it) may be
+    // destroyed after CLOSE WORKSTATION: it is told, and touches the workstation no more. One
+    // detached goes back to the output OPEN WORKSTATION made.
+    struct OwnOutput : WorkstationOutput {
+        Workstation* ws = nullptr;
+        bool* gone = nullptr;
+        bool present(const DrawList&) override { return true; }
+        DrawableSize drawableSize() const override { return {64, 64}; }
+        void workstationGone() override { *gone = true; }
+        ~OwnOutput() override {
+            if (!*gone && ws->output() == this) ws->attachOutput(nullptr);
+        }
+    };
+    struct OpenedOutput : OwnOutput {};
+    bool gone = false, openedGone = false;
+    Rig rig;
+    auto opened = std::make_unique<OpenedOutput>();
+    opened->ws = rig.ws, opened->gone = &openedGone;
+    WorkstationOutput* made = opened.get();
+    rig.ws->ownOutput(std::move(opened));
+    {
+        OwnOutput extra;
+        extra.ws = rig.ws, extra.gone = &gone;
+        rig.ws->attachOutput(&extra);
+        CHECK(rig.ws->output() == &extra);
+    }
+    CHECK(rig.ws->output() == made);  // back to OPEN WORKSTATION's output, not to none
+    CHECK(rig.ws->present());
+    OwnOutput late;
+    late.ws = rig.ws, late.gone = &gone;
+    rig.ws->attachOutput(&late);
+    rig.phigs.closeWorkstation(1);
+    CHECK(gone);
+    CHECK_FALSE(openedGone);  // its own output goes with it, not told
 }
 
 namespace {

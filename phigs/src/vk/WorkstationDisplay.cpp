@@ -50,7 +50,7 @@ WorkstationDisplay& WorkstationDisplay::of(Workstation& workstation) {
 }
 
 WorkstationDisplay::~WorkstationDisplay() {
-    if (workstation_.output() == this) workstation_.attachOutput(nullptr);
+    if (!workstationGone_ && workstation_.output() == this) workstation_.attachOutput(nullptr);
     // The targets go before a context of our own (member order would do it too; said for clarity).
     window_.reset();
     hardcopy_.reset();

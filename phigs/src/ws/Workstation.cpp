@@ -72,6 +72,7 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
 }
 
 Workstation::~Workstation() {
+    if (output_ && output_ != ownedOutput_.get()) output_->workstationGone();
     input_.reset();        // leaves the input queue before anything else goes
     ownedOutput_.reset();  // an output may detach itself from the workstation as it goes
     store_.removeListener(this);

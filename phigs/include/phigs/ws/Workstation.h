@@ -159,9 +159,11 @@ public:
     const TraversalFilters& filters() const { return filters_; }
 
     // ---- output: the one seam to what shows the workstation
-    /// Attaches what shows this workstation (vk::WorkstationDisplay attaches itself; null
-    /// detaches). The output stays alive while attached.
-    void attachOutput(WorkstationOutput* output) { output_ = output; }
+    /// Attaches what shows this workstation (vk::WorkstationDisplay attaches itself); null goes
+    /// back to the output OPEN WORKSTATION made (ownOutput), if any. An output the workstation does
+    /// not own stays alive while attached, or is told when the workstation goes first
+    /// (WorkstationOutput::workstationGone).
+    void attachOutput(WorkstationOutput* output) { output_ = output ? output : ownedOutput_.get(); }
     WorkstationOutput* output() const { return output_; }
     /// Keeps `output` (made by OPEN WORKSTATION from the type's factory) and attaches it; it goes
     /// with the workstation.

@@ -35,6 +35,9 @@ public:
     /// The workstation closes; `picture` is what it shows now. A file output writes it (when
     /// it has written nothing yet, or keeps every picture) and completes its file.
     virtual void close(const DrawList& picture) { (void)picture; }
+    /// The workstation goes away (CLOSE WORKSTATION) while this output, which it does not own, is
+    /// still attached: the output must not touch the workstation after this.
+    virtual void workstationGone() {}
 };
 
 }  // namespace phigs
