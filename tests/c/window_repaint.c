@@ -1,12 +1,15 @@
 /* The window workstation keeps its picture while the program waits for input (label window,
  * under an Xvfb of its own): a window put over it and taken away again, or a resize, is repainted
- * during AWAIT EVENT, which goes on to its timeout rather than ending early with NONE. The
- * window's pixels are read back through Xlib (the test, not the binding, uses X). */
+ * during AWAIT EVENT, which goes on to its timeout rather than ending early with NONE; text typed
+ * into string device 1 (echo on, prompt/echo type 1) shows in its echo area. The window's pixels
+ * are read back and keys typed through Xlib and XTest (the test, not the binding, uses X). */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
 
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <X11/extensions/XTest.h>
+#include <X11/keysym.h>
 #include <time.h>
 
 static double now(void) {
@@ -52,6 +55,30 @@ static void count_colours(Display* x, Window w, int px, int py, int* red, int* m
             if (i == px && j == py) *red_at = is_red;
         }
     XDestroyImage(image);
+}
+
+/* Pixels of the string echo's box colour (EchoStyle::box, 0.22 0.24 0.30) in rows y0..y1. */
+static int echo_box_pixels(Display* x, Window w, int y0, int y1) {
+    XWindowAttributes a;
+    XGetWindowAttributes(x, w, &a);
+    XImage* image = XGetImage(x, w, 0, 0, (unsigned)a.width, (unsigned)a.height, AllPlanes, ZPixmap);
+    int n = 0;
+    if (!image) return 0;
+    for (int j = y0; j <= y1 && j < a.height; ++j)
+        for (int i = 0; i < a.width; ++i) {
+            const unsigned long p = XGetPixel(image, i, j);
+            const int r = (int)(p >> 16) & 255, g = (int)(p >> 8) & 255, b = (int)p & 255;
+            n += abs(r - 56) < 12 && abs(g - 61) < 12 && abs(b - 77) < 12;
+        }
+    XDestroyImage(image);
+    return n;
+}
+
+static void type_key(Display* x, KeySym key) {
+    const KeyCode code = XKeysymToKeycode(x, key);
+    XTestFakeKeyEvent(x, code, True, 0);
+    XTestFakeKeyEvent(x, code, False, 0);
+    XSync(x, False);
 }
 
 /* AWAIT EVENT for `seconds` with no operator: NONE, and only at the timeout. */
@@ -117,6 +144,39 @@ int main(int argc, char** argv) {
         count_colours(x, w, 0, 0, &reds, &magentas, &red_at);
         CHECK(magentas == 0);
         CHECK(reds > 1000);
+    }
+
+    /* Typed text shows in the string echo area while the program waits; Enter gives the string. */
+    {
+        XWindowAttributes a;
+        XGetWindowAttributes(x, w, &a);
+        Plimit area = {100.0f, 500.0f, 100.0f, 150.0f}; /* DC, y up */
+        Pstring_data data = {80, 1, {{0}}};
+        EXPECT_NO_ERROR(pinit_string(1, 1, "", 1, &area, &data));
+        EXPECT_NO_ERROR(pset_string_mode(1, 1, POP_EVENT, PSWITCH_ECHO));
+        int wx = 0, wy = 0;
+        Window child;
+        XTranslateCoordinates(x, w, DefaultRootWindow(x), 0, 0, &wx, &wy, &child);
+        XTestFakeMotionEvent(x, -1, wx + 300, wy + 300, 0); /* the keyboard goes to the window */
+        XSync(x, False);
+        await_whole_timeout(0.2f);
+        const int top = a.height - 150, bottom = a.height - 100;
+        CHECK(echo_box_pixels(x, w, top, bottom) == 0);
+        type_key(x, XK_a);
+        type_key(x, XK_b);
+        type_key(x, XK_c);
+        await_whole_timeout(0.3f);
+        CHECK(echo_box_pixels(x, w, top, bottom) > 1000);
+        CHECK(echo_box_pixels(x, w, 0, top - 10) == 0);
+        type_key(x, XK_Return);
+        Pint ws = -1, number = -1;
+        Pin_class in_class = PIN_NONE;
+        char typed[81] = {0};
+        EXPECT_NO_ERROR(pawait_event(2.0f, &ws, &in_class, &number));
+        CHECK(in_class == PIN_STRING);
+        if (in_class == PIN_STRING) pget_string(typed);
+        CHECK(strcmp(typed, "abc") == 0);
+        EXPECT_NO_ERROR(pset_string_mode(1, 1, POP_REQ, PSWITCH_ECHO));
     }
 
     /* Resized: redrawn at the new size (the square's centre at the middle of the lower left

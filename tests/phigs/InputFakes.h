@@ -28,10 +28,12 @@ public:
     }
 };
 
-/// A source with queued actions that, once empty, reports nothing within any timeout.
+/// A source with queued actions that, once empty, reports nothing within any timeout; isLive
+/// makes it a window's (InputSource::live).
 class IdleSource : public InputSource {
 public:
     std::deque<InputAction> actions;
+    bool isLive = false;
     int polls = 0;
     std::optional<InputAction> next(std::chrono::milliseconds) override {
         ++polls;
@@ -40,6 +42,7 @@ public:
         actions.pop_front();
         return a;
     }
+    bool live() const override { return isLive; }
     bool exhausted() const override { return false; }
     std::string position() const override { return "idle window"; }
     void setEchoLayout(const EchoLayout& l) override { layout = l; }

@@ -368,6 +368,50 @@ TEST_CASE("input devices: an operator's action no device can take is ignored and
     }
 }
 
+TEST_CASE("input devices: what a window's operator did before AWAIT or FLUSH EVENTS is queued first",
+          "[input]") {
+    // ISO 9592: FLUSH DEVICE EVENTS removes the events already made, and the queue overflows
+    // when the operator made more than it holds. A script's lines happen as they are read.
+    const auto choice = [](int c) {
+        InputAction a;
+        a.fromOperator = true;
+        a.what = action::Choice{c, 1, {}};
+        return a;
+    };
+    for (const bool live : {true, false}) {
+        INFO((live ? "window" : "script-like source"));
+        {
+            IdleSource source;
+            source.isLive = live;
+            FakeMeasurer measurer;
+            InputQueue queue;
+            WorkstationInput input(1, source, measurer, queue);
+            input.setMode(InputClass::Choice, 1, OperatingMode::Event);
+            source.actions = {choice(1), choice(2)};
+            queue.flush(1, InputClass::Choice, 1);
+            const auto e = queue.awaitEvent(0ms);
+            CHECK(e.has_value() == !live);
+        }
+        {
+            std::mt19937 rng(live ? 3 : 4);
+            const int made = 65 + static_cast<int>(rng() % 100);
+            IdleSource source;
+            source.isLive = live;
+            FakeMeasurer measurer;
+            InputQueue queue(64);
+            WorkstationInput input(1, source, measurer, queue);
+            input.setMode(InputClass::Choice, 1, OperatingMode::Event);
+            for (int i = 0; i < made; ++i) source.actions.push_back(choice(1 + i % 4));
+            REQUIRE(queue.awaitEvent(0ms));
+            INFO(made << " choices made");
+            if (live)
+                CHECK(queue.inquireOverflow().device == 1);
+            else
+                CHECK(errorOf([&] { queue.inquireOverflow(); }) == 257);
+        }
+    }
+}
+
 TEST_CASE("input devices: a new source on the same queue keeps the queued events and overflow", "[input]") {
     // Only leaving the queue (closing the workstation) removes its events; attaching another
     // script to an open workstation must not.

@@ -49,6 +49,8 @@ std::optional<EventReport> InputQueue::awaitEvent(std::chrono::milliseconds time
     };
     current_.reset();
     currentTrigger_ = 0;
+    // What the operator did while the program was elsewhere is queued first, in order.
+    for (WorkstationInput* input : std::vector<WorkstationInput*>(inputs_)) input->catchUp();
     if (!events_.empty()) return takeFront();
     closedByOverflow_ = false;  // emptied: the queue takes events again
     if (inputs_.empty()) return std::nullopt;
@@ -85,6 +87,9 @@ const Measure& InputQueue::currentMeasure(InputClass inputClass, const char* fun
 }
 
 void InputQueue::flush(int workstation, InputClass inputClass, int device) {
+    // The device's events the operator made before the flush are flushed too.
+    for (WorkstationInput* input : std::vector<WorkstationInput*>(inputs_))
+        if (input->workstation() == workstation) input->catchUp();
     std::erase_if(events_, [&](const Queued& q) {
         return q.report.workstation == workstation && q.report.inputClass == inputClass &&
                q.report.device == device;

@@ -303,9 +303,17 @@ std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(cons
     return out;
 }
 
+void WorkstationInput::catchUp() {
+    if (!source_ || !source_->live()) return;
+    // Bounded: an operator acting faster than the loop reads stops it after this many actions.
+    constexpr int kMostActions = 4096;
+    for (int i = 0; i < kMostActions; ++i)
+        if (pump(std::chrono::milliseconds(0)) == Pumped::Idle) break;
+}
+
 WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeout, const InputDevice* pending,
                                                 std::pair<InputStatus, Measure>* result) {
-    if (!source_) return Pumped::Nothing;
+    if (!source_) return Pumped::Idle;
     // A window its user closed gives no more input: a pending request ends as a break ends it.
     if (pending && result && source_->closed()) {
         *result = {InputStatus::None, pending->current};
@@ -320,7 +328,7 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
             echoListener_();
         }
     }
-    if (!a) return Pumped::Nothing;
+    if (!a) return Pumped::Idle;
     if (const auto* wait = std::get_if<action::Wait>(&a->what)) {
         if (!wait->surfaceChanged) history_.push_back(*a);
         return Pumped::Waited;

@@ -36,6 +36,7 @@ public:
         window_->pollEvents();
         return display_->present(picture);
     }
+    void showEcho(const EchoState& echo) override { display_->showEcho(echo); }
     DrawableSize drawableSize() const override { return display_->drawableSize(); }
     bool followsDrawable() const override { return true; }
     /// Made when first asked for: a program that reads no input keeps no queue of actions. While

@@ -46,6 +46,10 @@ public:
     /// True once the operator closed the source (a window closed by its user): a REQUEST pending
     /// or made after it ends with status NONE, as a break does.
     virtual bool closed() const { return false; }
+    /// True for an operator acting in real time (a window): what the operator did while no input
+    /// function ran already happened, and AWAIT EVENT and FLUSH DEVICE EVENTS read it in first
+    /// (WorkstationInput::catchUp). A script's lines happen when they are read.
+    virtual bool live() const { return false; }
 };
 
 }  // namespace phigs

@@ -93,10 +93,17 @@ public:
 
     /// Takes one action from the source (waiting at most `timeout`) and delivers it: sample
     /// devices take the new measure, event devices queue a report, a pending request of the
-    /// matching device is satisfied. Returns what happened for the caller (the queue or REQUEST).
-    enum class Pumped { Nothing, Delivered, Waited, Broke, Satisfied };
+    /// matching device is satisfied. Returns what happened for the caller (the queue or REQUEST);
+    /// Idle when the source had no action.
+    enum class Pumped { Nothing, Delivered, Waited, Broke, Satisfied, Idle };
     Pumped pump(std::chrono::milliseconds timeout, const InputDevice* pending = nullptr,
                 std::pair<InputStatus, Measure>* result = nullptr);
+    /// With a live source, delivers what the operator did since the last input function, with no
+    /// request pending (AWAIT EVENT and FLUSH DEVICE EVENTS call it first): events are queued in
+    /// order (and may overflow the queue), sampled devices move; a trigger for a REQUEST-mode
+    /// device reaches none. A resize or exposure meanwhile ends no wait (the application that
+    /// draws the window sees its damage when the call returns). Nothing for a script.
+    void catchUp();
 
 private:
     InputDevice& lookup(InputClass inputClass, int device, const char* function);

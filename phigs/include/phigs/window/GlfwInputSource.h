@@ -34,6 +34,7 @@ public:
     StringEcho stringEcho() const override { return mapper_.stringEcho(); }
     /// True once the window's user (or requestClose) asked to close it.
     bool closed() const override;
+    bool live() const override { return true; }
 
     /// Delivers an event as the window's callbacks do: to the event filter, then (unless the
     /// filter took it) to the mapper.
