@@ -50,7 +50,8 @@ WorkstationDisplay& WorkstationDisplay::of(Workstation& workstation) {
 }
 
 WorkstationDisplay::~WorkstationDisplay() {
-    if (!workstationGone_ && workstation_.output() == this) workstation_.attachOutput(nullptr);
+    // Leaving the workstation (back to its own output) is WorkstationOutput's destructor's part:
+    // it runs after this, and knows whether the workstation is still there.
     // The targets go before a context of our own (member order would do it too; said for clarity).
     window_.reset();
     hardcopy_.reset();

@@ -72,7 +72,8 @@ Workstation::Workstation(int id, WorkstationType type, StructureStore& store, Er
 }
 
 Workstation::~Workstation() {
-    if (output_ && output_ != ownedOutput_.get()) output_->workstationGone();
+    if (output_) output_->shown_ = nullptr;  // an output that outlives it leaves it alone
+    output_ = nullptr;
     input_.reset();        // leaves the input queue before anything else goes
     ownedOutput_.reset();  // an output may detach itself from the workstation as it goes
     store_.removeListener(this);
@@ -80,7 +81,20 @@ Workstation::~Workstation() {
 
 void Workstation::ownOutput(std::unique_ptr<WorkstationOutput> output) {
     ownedOutput_ = std::move(output);
-    output_ = ownedOutput_.get();
+    attachOutput(ownedOutput_.get());
+}
+
+void Workstation::attachOutput(WorkstationOutput* output) {
+    if (output_) output_->shown_ = nullptr;
+    output_ = output ? output : ownedOutput_.get();
+    if (output_) output_->shown_ = this;
+}
+
+void Workstation::outputDestroyed(WorkstationOutput* output) {
+    output->shown_ = nullptr;
+    if (output_ != output) return;
+    output_ = nullptr;
+    if (ownedOutput_.get() != output) attachOutput(nullptr);
 }
 
 void Workstation::closeOutput() {

@@ -62,7 +62,6 @@ public:
     const EchoState& echo() const { return echo_; }
     /// CLOSE WORKSTATION: the files (an offscreen PNG, the hardcopy) get `picture`.
     void close(const DrawList& picture) override;
-    void workstationGone() override { workstationGone_ = true; }
     /// Frees an offscreen image's colour, depth and readback images and image() until the next
     /// present makes them again (a script that draws only for its snapshots holds them only then).
     void releaseImages();
@@ -95,7 +94,6 @@ private:
     const DrawList& withEcho(const DrawList& picture);
 
     Workstation& workstation_;
-    bool workstationGone_ = false;  ///< closed before this display: not to be touched again
     std::unique_ptr<Context> ownContext_;
     std::shared_ptr<Context> sharedContext_;
     Context* context_ = nullptr;

@@ -160,10 +160,12 @@ public:
 
     // ---- output: the one seam to what shows the workstation
     /// Attaches what shows this workstation (vk::WorkstationDisplay attaches itself); null goes
-    /// back to the output OPEN WORKSTATION made (ownOutput), if any. An output the workstation does
-    /// not own stays alive while attached, or is told when the workstation goes first
-    /// (WorkstationOutput::workstationGone).
-    void attachOutput(WorkstationOutput* output) { output_ = output ? output : ownedOutput_.get(); }
+    /// back to the output OPEN WORKSTATION made (ownOutput), if any. Either may be destroyed first:
+    /// an output destroyed while attached detaches itself, and one that outlives the workstation
+    /// is left alone.
+    void attachOutput(WorkstationOutput* output);
+    /// An attached output's destructor: the workstation goes back to its own output, if any.
+    void outputDestroyed(WorkstationOutput* output);
     WorkstationOutput* output() const { return output_; }
     /// Keeps `output` (made by OPEN WORKSTATION from the type's factory) and attaches it; it goes
     /// with the workstation.

@@ -7,6 +7,8 @@
 
 namespace phigs {
 
+class Workstation;
+
 /// A drawable's size in pixels (0 x 0 while a window is minimised).
 struct DrawableSize {
     std::uint32_t width = 0, height = 0;
@@ -20,7 +22,11 @@ struct DrawableSize {
 /// it in memory.
 class WorkstationOutput {
 public:
-    virtual ~WorkstationOutput() = default;
+    /// Leaves the workstation it shows (Workstation::attachOutput), so either may go first.
+    virtual ~WorkstationOutput();
+    WorkstationOutput() = default;
+    WorkstationOutput(const WorkstationOutput&) = delete;
+    WorkstationOutput& operator=(const WorkstationOutput&) = delete;
     /// Shows `picture`; false when nothing could be shown (a minimised window).
     virtual bool present(const DrawList& picture) = 0;
     /// The drawable now, in pixels.
@@ -35,9 +41,10 @@ public:
     /// The workstation closes; `picture` is what it shows now. A file output writes it (when
     /// it has written nothing yet, or keeps every picture) and completes its file.
     virtual void close(const DrawList& picture) { (void)picture; }
-    /// The workstation goes away (CLOSE WORKSTATION) while this output, which it does not own, is
-    /// still attached: the output must not touch the workstation after this.
-    virtual void workstationGone() {}
+
+private:
+    friend class Workstation;
+    Workstation* shown_ = nullptr;  ///< the workstation attached to this output (it keeps this)
 };
 
 }  // namespace phigs
