@@ -380,6 +380,28 @@ TEST_CASE("views: annotation text is clipped by its reference point, on screen a
     requireNoValidationMessages(context);
 }
 
+TEST_CASE("an offscreen image past the device's limits is refused, naming them", "[render][views]") {
+    // Vulkan leaves sizes past maxImageDimension2D undefined: validation errors at 17,000 x 10,
+    // a failed allocation naming no cause at 100,000^2. Refused before anything is made.
+    vk::Context context(lavapipeWithValidation());
+    {
+        VkPhysicalDeviceProperties properties{};
+        vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+        const std::uint32_t most =
+            std::min(properties.limits.maxImageDimension2D,
+                     std::min(properties.limits.maxFramebufferWidth, properties.limits.maxFramebufferHeight));
+        for (const auto& [w, h] : {std::pair{most + 1, 10u}, std::pair{10u, most + 1},
+                                   std::pair{100000u, 100000u}, std::pair{0u, 10u}}) {
+            INFO(w << " x " << h);
+            CHECK_THROWS_WITH(vk::ImageTarget(context, w, h),
+                              Catch::Contains("the device draws") && Catch::Contains(std::to_string(most)));
+        }
+        vk::ImageTarget edge(context, most, 1);  // the limit itself is drawn
+        CHECK(edge.draw(emptyScene()).width == most);
+    }
+    requireNoValidationMessages(context);
+}
+
 TEST_CASE("hardcopy: the PNG workstation writes its picture on update and on close", "[render][views]") {
     vk::Context context(lavapipeWithValidation());
     const auto file = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hardcopy" / "picture.png";

@@ -17,6 +17,7 @@ public:
     static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+    /// Throws std::invalid_argument for a size past the device's image and framebuffer limits.
     OffscreenTarget(Context& context, std::uint32_t width, std::uint32_t height);
     ~OffscreenTarget();
     OffscreenTarget(const OffscreenTarget&) = delete;
