@@ -4,6 +4,8 @@
 
 #include "../exchange/ExchangeTestUtil.h"
 #include "geom/Evaluate.h"
+#include "geom/Primitives.h"
+#include "geom/exchange/CadFile.h"
 #include "geom/exchange/OcctConversion.h"
 
 #include <fstream>
@@ -148,6 +150,30 @@ TEST_CASE("FILE menu: a reduced model round-trips patch by patch") {
     const acsynt::Model& imported = d.session.models().current();
     for (std::size_t i = 1; i < reduced.components.size(); ++i)
         exchange_test::requireSameSurface(imported.components[i].surface, reduced.components[i].surface);
+}
+
+TEST_CASE("FILE menu: IMPORT of a rational surface logs the bicubic error it kept, readable") {
+    // A cylinder (rational) comes in as bicubic within the import tolerance: the log says within
+    // how much, in metres, as a number (six fixed decimals read every such error as 0.000000).
+    Driver d("exchange_rational");
+    const auto file = session_test::outputDirectory("exchange_rational") / "tube.step";
+    std::filesystem::create_directories(file.parent_path());
+    geom::exchange::CadModel tube;
+    tube.name = "tube";
+    tube.surfaces.push_back({"fuselage", geom::makeCylinder(0.5, 3.0), std::nullopt, {}});
+    geom::exchange::writeCadFile(tube, file);
+    d.run({"choice FILE", "choice IMPORT", "string " + file.string()});
+    REQUIRE(d.session.models().size() == 1);
+    std::string line;
+    for (const std::string& l : d.session.log())
+        if (l.find("made bicubic within") != std::string::npos) line = l;
+    INFO(line);
+    REQUIRE_FALSE(line.empty());
+    const std::size_t at = line.find("within ") + 7;
+    const double error = std::stod(line.substr(at));
+    CHECK(error > 0.0);
+    CHECK(error <= 1e-4);
+    CHECK(line.find("0.000000") == std::string::npos);
 }
 
 TEST_CASE("FILE menu: bad EXPORT and IMPORT names and files leave the models as they were") {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <set>
+#include <sstream>
 
 namespace acsynt {
 
@@ -78,9 +79,13 @@ Component componentOf(const geom::exchange::CadSurface& s, const std::string& na
     c.name = name;
     c.colour = s.colour.value_or(glm::dvec3(1.0));
     const geom::exchange::BicubicSurface bicubic = geom::exchange::toBicubic(s.surface, kImportTolerance);
-    if (!bicubic.exact)
+    if (!bicubic.exact) {
+        std::ostringstream error;
+        error.precision(3);
+        error << bicubic.maxError;  // to_string's fixed six decimals read 1e-6 m as 0.000001
         result.warnings.push_back(name + ": a " + (s.surface.rational() ? "rational" : "higher-degree") +
-                                  " surface made bicubic within " + std::to_string(bicubic.maxError) + " m");
+                                  " surface made bicubic within " + error.str() + " m");
+    }
     c.surface = bicubic.surface;
     c.closedU = closedAcross(c.surface, false);
     c.closedW = closedAcross(c.surface, true);
