@@ -21,7 +21,8 @@ enum class NetworkSource { Css, Archive };
 /// The PHIGS system: the operating states (PHIGS, workstation, structure and archive state),
 /// the central structure store, open workstations, open archive files and the error log.
 /// Functions check the state they need first (errors 1-7) and raise phigs::Error, which the
-/// error log records.
+/// error log records. One thread at a time uses a Phigs and everything it holds (the store's
+/// const inquiries fill caches too).
 class Phigs {
 public:
     Phigs() : store_(&log_) {}

@@ -52,7 +52,8 @@ public:
 /// The central structure store (ISO 9592 clause 7.3-7.5): structures, the open structure with
 /// its element pointer and edit mode, editing, inquiries and structure networks. Every
 /// function checks its state and arguments first and throws phigs::Error before changing
-/// anything, so a refused call leaves the store as it was.
+/// anything, so a refused call leaves the store as it was. Not thread-safe, const inquiries
+/// included (they fill caches of the network): one thread at a time uses a store.
 class StructureStore {
 public:
     explicit StructureStore(ErrorLog* log = nullptr) : log_(log) {}
