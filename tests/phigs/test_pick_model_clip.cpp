@@ -53,6 +53,18 @@ TEST_CASE("pick model clip: markers are clipped by their positions", "[pick]") {
     CHECK(picker.nearest(list, {0.7, 0.7}, 0.001));
 }
 
+namespace {
+
+/// Clips `list` to the NPC square [lo, hi]^2: by view 0's x/y limits, or by the workstation window.
+void clipToSquare(DrawList& list, bool byWindow, double lo, double hi) {
+    glm::dvec3& min = byWindow ? list.windowMin : list.views[0].clipMin;
+    glm::dvec3& max = byWindow ? list.windowMax : list.views[0].clipMax;
+    min = {lo, lo, 0.0};
+    max = {hi, hi, 1.0};
+}
+
+}  // namespace
+
 TEST_CASE("pick: a marker outside the view's clip limits or the window is not hit", "[pick]") {
     // Drawn, such a marker shows nothing (clipped by its position); a pick inside the clip
     // rectangle within its glyph's reach must not find it either.
@@ -61,15 +73,8 @@ TEST_CASE("pick: a marker outside the view's clip limits or the window is not hi
     const Picker picker;
     for (int trial = 0; trial < 200; ++trial) {
         DrawList list = unitList();
-        const bool byWindow = trial % 2 == 1;
         const double lo = 0.2 + 0.1 * unit(random), hi = 0.7 + 0.1 * unit(random);
-        if (byWindow) {
-            list.windowMin = {lo, lo, 0.0};
-            list.windowMax = {hi, hi, 1.0};
-        } else {
-            list.views[0].clipMin = {lo, lo, 0.0};
-            list.views[0].clipMax = {hi, hi, 1.0};
-        }
+        clipToSquare(list, trial % 2 == 1, lo, hi);
         // 0.001 to 0.009 outside the left edge; the pick 0.001 inside it, within the marker's reach.
         const double y = 0.4 + 0.2 * unit(random);
         const double off = 0.001 + 0.008 * unit(random);
@@ -98,12 +103,8 @@ TEST_CASE("pick: annotation text whose reference point is clipped is not hit", "
         DrawList list = unitList();
         const int clip = trial % 4;
         const double lo = 0.2 + 0.1 * unit(random), hi = 0.7 + 0.1 * unit(random);
-        if (clip == 0) {
-            list.views[0].clipMin = {lo, lo, 0.0};
-            list.views[0].clipMax = {hi, hi, 1.0};
-        } else if (clip == 1) {
-            list.windowMin = {lo, lo, 0.0};
-            list.windowMax = {hi, hi, 1.0};
+        if (clip <= 1) {
+            clipToSquare(list, clip == 1, lo, hi);
         } else if (clip == 2) {
             list.views[0].clipMin = {0.0, 0.0, 0.4};
             list.views[0].clipBack = true;

@@ -118,8 +118,11 @@ bool ItemPipeline::modelClipKeeps(const glm::dvec3& world) const {
     return inside(glm::dvec4(world, 1.0), model_);
 }
 
-bool ItemPipeline::keepsPoint(const glm::dvec3& world) const {
-    return modelClipKeeps(world) && inside(toNpc(world), view_);
+std::optional<glm::dvec4> ItemPipeline::keptPoint(const glm::dvec3& world) const {
+    if (!modelClipKeeps(world)) return std::nullopt;
+    const glm::dvec4 h = toNpc(world);
+    if (!inside(h, view_)) return std::nullopt;
+    return h;
 }
 
 void ItemPipeline::line(const std::vector<glm::dvec3>& world, bool closed, glm::vec3 colour, LineType type,
@@ -265,10 +268,10 @@ void ItemPipeline::facet(const std::vector<std::vector<glm::dvec3>>& world, cons
 }
 
 void ItemPipeline::marker(const glm::dvec3& world, const MarkerStyle& style) {
-    if (!keepsPoint(world)) return;
-    const glm::dvec4 h = toNpc(world);
+    const std::optional<glm::dvec4> h = keptPoint(world);
+    if (!h) return;
     ProjectedMarker m;
-    m.position = mapping_.toPage(glm::dvec3(h) / h.w);
+    m.position = mapping_.toPage(glm::dvec3(*h) / h->w);
     m.style = style;
     m.style.colour = colouring_.finish(style.colour, m.position.z);
     m.clip = item_.viewIndex();

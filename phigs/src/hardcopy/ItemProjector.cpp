@@ -156,9 +156,9 @@ void ItemProjector::operator()(const DrawText& text) {
         // Laid out in NPC at the projected reference point plus the offset, at its depth; a
         // clipped reference point draws nothing (ISO 9592).
         const glm::dvec3 reference = projectPoint3(model, text.position);
-        if (!pipeline_.keepsPoint(reference)) return;
-        const glm::dvec4 h = pipeline_.toNpc(reference);
-        const glm::dvec3 from = glm::dvec3(h) / h.w;
+        const std::optional<glm::dvec4> h = pipeline_.keptPoint(reference);
+        if (!h) return;
+        const glm::dvec3 from = glm::dvec3(*h) / h->w;
         const glm::dvec3 at = from + glm::dvec3(glm::dvec2(text.annotationOffset), 0.0);
         if (text.leadLine)  // in the polyline attributes in force, its pattern over its length on the page
             pipeline_.npcLine(

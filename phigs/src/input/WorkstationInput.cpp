@@ -290,14 +290,11 @@ std::vector<std::pair<InputDevice*, Measure>> WorkstationInput::measuresFor(cons
     std::vector<std::pair<InputDevice*, Measure>> out;
     // Measure everything first, so an action that fails leaves every device unchanged.
     for (InputDevice* d : triggered) {
-        if (!a.fromOperator) {
-            out.emplace_back(d, measureFor(*d, a));
-            continue;
-        }
         try {
             out.emplace_back(d, measureFor(*d, a));
         } catch (const ScriptError& e) {
-            ignore(e.what());  // the device is not triggered; the others still are
+            if (!a.fromOperator) throw;
+            ignore(e.what());  // an operator's: the device is not triggered, the others still are
         }
     }
     return out;

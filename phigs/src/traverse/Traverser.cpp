@@ -480,8 +480,8 @@ struct Resolver {
         const InteriorBundle& b = t.interiors.get(s.interiorIndex);
         InteriorStyleSet out;
         out.style = s.ind(AspectId::InteriorStyle) ? s.style : b.style;
-        out.styleIndex = s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex;
-        if (out.style == InteriorStyle::Hatch) out.styleIndex = t.limits.hatchStyle(out.styleIndex);
+        out.styleIndex =
+            t.limits.styleIndex(out.style, s.ind(AspectId::InteriorStyleIndex) ? s.styleIndex : b.styleIndex);
         out.pattern = s.pattern;
         out.colour = rgb(s.ind(AspectId::InteriorColour) ? s.interiorColour : b.colour, s);
         out.backColour = rgb(s.ind(AspectId::BackInteriorColour) ? s.backColour : b.backColour, s);
@@ -497,12 +497,13 @@ struct Resolver {
         out.renderingModel = isColourModel(s.renderingColourModel)
                                  ? static_cast<ColourModel>(s.renderingColourModel)
                                  : ColourModel::Rgb;
-        out.back = {s.ind(AspectId::BackInteriorStyle) ? s.backStyle : b.backStyle,
-                    s.ind(AspectId::BackInteriorStyleIndex) ? s.backStyleIndex : b.backStyleIndex,
-                    s.ind(AspectId::BackInteriorShading) ? s.backShading : b.backShading,
-                    s.ind(AspectId::BackInteriorReflectance) ? s.backReflectance : b.backReflectance};
-        if (out.back.style == InteriorStyle::Hatch)
-            out.back.styleIndex = t.limits.hatchStyle(out.back.styleIndex);
+        const InteriorStyle backStyle = s.ind(AspectId::BackInteriorStyle) ? s.backStyle : b.backStyle;
+        out.back = {
+            backStyle,
+            t.limits.styleIndex(
+                backStyle, s.ind(AspectId::BackInteriorStyleIndex) ? s.backStyleIndex : b.backStyleIndex),
+            s.ind(AspectId::BackInteriorShading) ? s.backShading : b.backShading,
+            s.ind(AspectId::BackInteriorReflectance) ? s.backReflectance : b.backReflectance};
         return out;
     }
     EdgeStyle edge(const State& s) const {

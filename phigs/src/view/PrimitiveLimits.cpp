@@ -24,8 +24,8 @@ MarkerType PrimitiveLimits::markerType(MarkerType type) const {
     return t >= 1 && t <= markerTypes ? type : MarkerType::Asterisk;
 }
 
-int PrimitiveLimits::hatchStyle(int index) const {
-    return index >= 1 && index <= hatchStyles ? index : 1;
+int PrimitiveLimits::styleIndex(InteriorStyle style, int index) const {
+    return style != InteriorStyle::Hatch || (index >= 1 && index <= hatchStyles) ? index : 1;
 }
 
 double PrimitiveLimits::lineWidthScale(double scale) const {

@@ -1,6 +1,5 @@
 #include "phigs/vk/OffscreenTarget.h"
 
-#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -11,15 +10,11 @@ OffscreenTarget::OffscreenTarget(Context& context, std::uint32_t width, std::uin
     : context_(context), width_(width), height_(height) {
     // Past the device's limits Vulkan's behaviour is undefined (validation errors, or a failed
     // allocation that names no cause): refused here, naming the limit.
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(context_.physicalDevice(), &properties);
-    const VkPhysicalDeviceLimits& limits = properties.limits;
-    const std::uint32_t maxWidth = std::min(limits.maxImageDimension2D, limits.maxFramebufferWidth);
-    const std::uint32_t maxHeight = std::min(limits.maxImageDimension2D, limits.maxFramebufferHeight);
-    if (width < 1 || height < 1 || width > maxWidth || height > maxHeight)
+    const VkExtent2D largest = context_.largestDrawable();
+    if (width < 1 || height < 1 || width > largest.width || height > largest.height)
         throw std::invalid_argument("an offscreen image of " + std::to_string(width) + " x " +
                                     std::to_string(height) + " pixels: the device draws 1 x 1 to " +
-                                    std::to_string(maxWidth) + " x " + std::to_string(maxHeight));
+                                    std::to_string(largest.width) + " x " + std::to_string(largest.height));
     try {
         color_ = createImageAttachment(context_, width, height, kColorFormat,
                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,

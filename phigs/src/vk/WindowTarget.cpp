@@ -85,12 +85,8 @@ void WindowTarget::createSwapchain() {
                std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
     // A window its user made larger than the device can draw (X surfaces want exactly the
     // window's size): no swapchain, as while minimised, until it is made smaller again.
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(context_.physicalDevice(), &properties);
-    const VkPhysicalDeviceLimits& limits = properties.limits;
-    if (extent_.width > std::min(limits.maxImageDimension2D, limits.maxFramebufferWidth) ||
-        extent_.height > std::min(limits.maxImageDimension2D, limits.maxFramebufferHeight))
-        extent_ = {0, 0};
+    const VkExtent2D largest = context_.largestDrawable();
+    if (extent_.width > largest.width || extent_.height > largest.height) extent_ = {0, 0};
     if (extent_.width == 0 || extent_.height == 0) return;  // minimised: wait for a size
     VkSwapchainCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR;

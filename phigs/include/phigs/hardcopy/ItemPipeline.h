@@ -79,9 +79,10 @@ public:
     std::uint32_t outsideView(const glm::dvec4& npc) const;
     /// Whether a world point survives the model clipping volume.
     bool modelClipKeeps(const glm::dvec3& world) const;
-    /// Whether a world point survives every clip (model volume, view limits, workstation window):
-    /// a marker's position or an annotation's reference point, which keep or drop it whole.
-    bool keepsPoint(const glm::dvec3& world) const;
+    /// A world point's NPC (homogeneous, w > 0) when it survives every clip (model volume, view
+    /// limits, workstation window): a marker's position or an annotation's reference point, which
+    /// keep or drop it whole; nullopt when clipped.
+    std::optional<glm::dvec4> keptPoint(const glm::dvec3& world) const;
 
     const DrawItem& item() const { return item_; }
     const PageMapping& mapping() const { return mapping_; }

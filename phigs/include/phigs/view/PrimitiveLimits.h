@@ -19,8 +19,9 @@ struct PrimitiveLimits {
 
     LineType lineType(LineType type) const;
     MarkerType markerType(MarkerType type) const;
-    /// A hatch style index as drawn.
-    int hatchStyle(int index) const;
+    /// An interior style index as drawn: a hatch style the workstation lacks as 1; the index of
+    /// any other style (a pattern's) as it is.
+    int styleIndex(InteriorStyle style, int index) const;
     /// A width scale factor as drawn: the width it asks for clamped to [min, max].
     double lineWidthScale(double scale) const;
     /// A marker size scale factor as drawn, as lineWidthScale.

@@ -2,6 +2,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -48,6 +49,12 @@ public:
     std::uint32_t queueFamily() const { return queueFamily_; }
     VkCommandPool commandPool() const { return commandPool_; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    /// The largest image the device draws into: maxImageDimension2D within the framebuffer limits.
+    VkExtent2D largestDrawable() const {
+        const VkPhysicalDeviceLimits& l = properties_.limits;
+        return {std::min(l.maxImageDimension2D, l.maxFramebufferWidth),
+                std::min(l.maxImageDimension2D, l.maxFramebufferHeight)};
+    }
     /// True when the chosen device is Mesa lavapipe.
     bool isLavapipe() const { return lavapipe_; }
 
