@@ -331,8 +331,8 @@ std::string spoilEntity(const std::string& text, const std::string& id, const st
 }  // namespace
 
 TEST_CASE("bad files: a face on an invalid surface is left out with a warning naming it", "[exchange][bad]") {
-    // OpenCASCADE makes no face of an invalid B-spline surface and says nothing: the face was lost
-    // without a word, and a file of such faces alone was said to have no faces at all.
+    // OpenCASCADE makes no face of an invalid B-spline surface and says nothing: the reader must
+    // name each such face and its cause, and a file of such faces alone must say why.
     const auto dir = exchange_test::scratch("bad_surface");
     writeCadFile(patchModel(), dir / "wing.step");
     const std::string whole = contents(dir / "wing.step");

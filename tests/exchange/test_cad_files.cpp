@@ -133,8 +133,8 @@ TEST_CASE("files: lengths are written in the model's unit and converted on read"
 
 TEST_CASE("files: every unit the model may name is the file's unit, its lengths in it",
           "[exchange][files][units]") {
-    // "IN" was no unit OpenCASCADE's settings know: it kept the one before, and a model in
-    // inches was written as millimetres.
+    // OpenCASCADE's settings know inches as "INCH", not "IN", and keep the unit set before when
+    // given a code they do not know: each listed unit must reach the file as itself.
     const auto dir = exchange_test::scratch("every_unit");
     const acsynt::Component& wing = exchange_test::transport().components[1];
     CadModel metres{"wing", "M", {{wing.name, geom::extractBezier(wing.surface)[0].surface, {}, {}}}};

@@ -136,7 +136,7 @@ TEST_CASE("OpenCASCADE's files: cones, a sphere and a filleted box in STEP, unco
           "[exchange][occt]") {
     // BRepTools::UVBounds puts these faces' boxes past their surfaces' bounds by rounding (a
     // cone's u from -4e-13, a corner sphere's v from -pi/2 - 3e-13), which OpenCASCADE's
-    // conversion to a B-spline refused: the cones and the fillets' corners were lost.
+    // conversion to a B-spline refuses: the reader must keep the cones and the fillets' corners.
     const auto dir = exchange_test::scratch("occt_quadrics");
     const TopoDS_Shape box = BRepPrimAPI_MakeBox(100, 60, 40).Shape();
     BRepFilletAPI_MakeFillet fillet(box);

@@ -299,8 +299,7 @@ TEST_CASE("lines through patch edges, creases and corners hit there, far from th
 TEST_CASE("a small surface far from the origin: every known crossing is found", "[geom][intersect]") {
     // A patch a unit or so across at 1e5 to 1e7 from the origin: its points carry the rounding of
     // their coordinates (1e-10 at 1e6), more than 1e-10 of the patch; degrees 1-5 each way, half
-    // rational, lines along the normal and tilted through known points. Missed 102 of 400 at 1e6
-    // and 286 of 400 at 1e7 before the acceptance allowed for it.
+    // rational, lines along the normal and tilted through known points.
     std::mt19937 rng(1000000);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const double offset : {1e5, 1e6, 1e7}) {

@@ -74,7 +74,7 @@ TEST_CASE("triangulation: simple polygons of many points give O(n) triangles cov
           "[render][unit]") {
     // Random stars (concave, every vertex at its own height) up to 20,000 points: the area is the
     // polygon's, and the triangles stay linear in the points (one trapezoid per pair of edges for
-    // as long as the pair bounds the inside, not one per slab: 16 M triangles at 18,500 before).
+    // as long as the pair bounds the inside, not one per slab).
     std::mt19937 random(18500);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const int n : {50, 400, 3000, 20000}) {

@@ -381,8 +381,8 @@ TEST_CASE("views: annotation text is clipped by its reference point, on screen a
 }
 
 TEST_CASE("an offscreen image past the device's limits is refused, naming them", "[render][views]") {
-    // Vulkan leaves sizes past maxImageDimension2D undefined: validation errors at 17,000 x 10,
-    // a failed allocation naming no cause at 100,000^2. Refused before anything is made.
+    // Vulkan leaves sizes past maxImageDimension2D undefined (validation errors, or a failed
+    // allocation naming no cause): refused before anything is made.
     vk::Context context(lavapipeWithValidation());
     {
         VkPhysicalDeviceProperties properties{};

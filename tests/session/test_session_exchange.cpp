@@ -154,7 +154,7 @@ TEST_CASE("FILE menu: a reduced model round-trips patch by patch") {
 
 TEST_CASE("FILE menu: IMPORT of a rational surface logs the bicubic error it kept, readable") {
     // A cylinder (rational) comes in as bicubic within the import tolerance: the log says within
-    // how much, in metres, as a number (six fixed decimals read every such error as 0.000000).
+    // how much, in metres, as a number with its digits (such errors lie below a micrometre).
     Driver d("exchange_rational");
     const auto file = session_test::outputDirectory("exchange_rational") / "tube.step";
     std::filesystem::create_directories(file.parent_path());
@@ -174,7 +174,7 @@ TEST_CASE("FILE menu: IMPORT of a rational surface logs the bicubic error it kep
     const double error = std::stod(shown);
     CHECK(error > 0.0);
     CHECK(error <= 1e-4);
-    // Significant digits shown (three asked; six fixed decimals gave one, "0.000003", or none).
+    // Significant digits shown (three asked; a fixed six-decimal format would show one or none).
     std::string mantissa = shown.substr(0, shown.find('e'));
     std::erase(mantissa, '.');
     mantissa.erase(0, mantissa.find_first_not_of('0'));

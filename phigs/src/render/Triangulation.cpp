@@ -100,7 +100,7 @@ Triangulation triangulateEvenOdd(const std::vector<std::vector<glm::dvec2>>& con
     };
     // Each inside span of a slab is bounded by a pair of edges; a pair that goes on into the next
     // slab makes one trapezoid with it, so a simple polygon gives O(n) trapezoids, not one per
-    // slab and span (O(n^2): a star of 18,500 points made 16 M triangles).
+    // slab and span (O(n^2) for a polygon whose every vertex starts a slab).
     struct Open {
         const Edge* right;
         double bottom;

@@ -191,7 +191,7 @@ TEST_CASE("window session: after resizes, menu rows, surface picks and slider dr
 
 TEST_CASE("window session: a window made too small for its areas goes on, and works again when larger") {
     // Menu panel, pad and sliders shrink to a pixel or to nothing; the devices are initialised
-    // again on every resize and must not refuse (an empty echo volume ended the program).
+    // again on every resize and must not refuse (PHIGS refuses an empty echo volume).
     WindowSession w(1024, 768);
     readTransport(w);
     std::mt19937 random(7);
