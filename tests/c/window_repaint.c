@@ -1,7 +1,9 @@
 /* The window workstation keeps its picture while the program waits for input (label window,
  * under an Xvfb of its own): a window put over it and taken away again, or a resize, is repainted
  * during AWAIT EVENT, which goes on to its timeout rather than ending early with NONE; text typed
- * into string device 1 (echo on, prompt/echo type 1) shows in its echo area. The window's pixels
+ * into string device 1 (echo on, prompt/echo type 1) shows in its echo area; a choice device with
+ * a menu (prompt/echo type 3) in EVENT mode with echo on shows its panel, the alternative clicked
+ * highlighted, until it leaves EVENT mode. The window's pixels
  * are read back and keys typed through Xlib and XTest (the test, not the binding, uses X). */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -69,6 +71,23 @@ static int echo_box_pixels(Display* x, Window w, int y0, int y1) {
             const unsigned long p = XGetPixel(image, i, j);
             const int r = (int)(p >> 16) & 255, g = (int)(p >> 8) & 255, b = (int)p & 255;
             n += abs(r - 56) < 12 && abs(g - 61) < 12 && abs(b - 77) < 12;
+        }
+    XDestroyImage(image);
+    return n;
+}
+
+/* Pixels within (x0, y0)..(x1, y1) (window pixels, y down) within 12 of the colour r, g, b. */
+static int colour_pixels(Display* x, Window w, int x0, int y0, int x1, int y1, int r, int g, int b) {
+    XWindowAttributes a;
+    XGetWindowAttributes(x, w, &a);
+    XImage* image = XGetImage(x, w, 0, 0, (unsigned)a.width, (unsigned)a.height, AllPlanes, ZPixmap);
+    int n = 0;
+    if (!image) return 0;
+    for (int j = y0 < 0 ? 0 : y0; j <= y1 && j < a.height; ++j)
+        for (int i = x0 < 0 ? 0 : x0; i <= x1 && i < a.width; ++i) {
+            const unsigned long p = XGetPixel(image, i, j);
+            const int pr = (int)(p >> 16) & 255, pg = (int)(p >> 8) & 255, pb = (int)p & 255;
+            n += abs(pr - r) < 12 && abs(pg - g) < 12 && abs(pb - b) < 12;
         }
     XDestroyImage(image);
     return n;
@@ -177,6 +196,50 @@ int main(int argc, char** argv) {
         if (in_class == PIN_STRING) pget_string(typed);
         CHECK(strcmp(typed, "abc") == 0);
         EXPECT_NO_ERROR(pset_string_mode(1, 1, POP_REQ, PSWITCH_ECHO));
+    }
+
+    /* A menu panel (choice prompt/echo type 3) shows while the device is in EVENT mode with
+     * echo on: three rows of 40 pixels, the current alternative in EchoStyle::current (0.95 0.70
+     * 0.15), the others in EchoStyle::box; a click on the third chooses it and moves the
+     * highlight there; back in REQUEST mode the panel is gone. */
+    {
+        XWindowAttributes a;
+        XGetWindowAttributes(x, w, &a);
+        Plimit area = {600.0f, 700.0f, 400.0f, 520.0f}; /* DC, y up */
+        char* names[3] = {"wing", "tail", "body"};
+        Pchoice_data menu;
+        menu.pets.pet_r3.num_strings = 3;
+        menu.pets.pet_r3.strings = names;
+        EXPECT_NO_ERROR(pset_choice_mode(1, 1, POP_REQ, PSWITCH_ECHO));
+        EXPECT_NO_ERROR(pinit_choice(1, 1, PIN_STATUS_OK, 1, 3, &area, &menu));
+        const int top = a.height - 520;
+        await_whole_timeout(0.2f);
+        CHECK(colour_pixels(x, w, 600, top, 700, top + 120, 56, 61, 77) == 0);
+        EXPECT_NO_ERROR(pset_choice_mode(1, 1, POP_EVENT, PSWITCH_ECHO));
+        await_whole_timeout(0.3f);
+        CHECK(colour_pixels(x, w, 600, top + 40, 700, top + 120, 56, 61, 77) > 4000);
+        CHECK(colour_pixels(x, w, 600, top, 700, top + 40, 242, 178, 38) > 2000);
+        int wx = 0, wy = 0;
+        Window child;
+        XTranslateCoordinates(x, w, DefaultRootWindow(x), 0, 0, &wx, &wy, &child);
+        XTestFakeMotionEvent(x, -1, wx + 650, wy + top + 100, 0);
+        XTestFakeButtonEvent(x, 1, True, 0);
+        XTestFakeButtonEvent(x, 1, False, 0);
+        XSync(x, False);
+        Pint ws = -1, number = -1, choice = 0;
+        Pin_class in_class = PIN_NONE;
+        Pin_status status = PIN_STATUS_NONE;
+        EXPECT_NO_ERROR(pawait_event(2.0f, &ws, &in_class, &number));
+        CHECK(in_class == PIN_CHOICE);
+        if (in_class == PIN_CHOICE) pget_choice(&status, &choice);
+        CHECK(status == PIN_STATUS_OK && choice == 3);
+        await_whole_timeout(0.3f);
+        CHECK(colour_pixels(x, w, 600, top + 80, 700, top + 120, 242, 178, 38) > 2000);
+        CHECK(colour_pixels(x, w, 600, top, 700, top + 40, 242, 178, 38) == 0);
+        EXPECT_NO_ERROR(pset_choice_mode(1, 1, POP_REQ, PSWITCH_ECHO));
+        await_whole_timeout(0.3f);
+        CHECK(colour_pixels(x, w, 600, top, 700, top + 120, 56, 61, 77) == 0);
+        CHECK(colour_pixels(x, w, 600, top, 700, top + 120, 242, 178, 38) == 0);
     }
 
     /* Resized: redrawn at the new size (the square's centre at the middle of the lower left

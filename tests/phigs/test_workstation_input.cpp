@@ -243,12 +243,14 @@ public:
 struct EchoOutput : WorkstationOutput {
     std::vector<EchoState> shown;  ///< the echo at each present
     EchoState echo;
+    bool deviceEchoes = false;
     bool present(const DrawList&) override {
         shown.push_back(echo);
         return true;
     }
     DrawableSize drawableSize() const override { return {1024, 768}; }
     void showEcho(const EchoState& e) override { echo = e; }
+    bool drawsDeviceEchoes() const override { return deviceEchoes; }
 };
 
 DeviceInitialisation stringWithArea(EchoVolume area) {
@@ -379,6 +381,148 @@ TEST_CASE("workstation echo: typed text reaches the string device's echo area th
     ws.input().initialise(InputClass::String, 1, stringWithArea({500, 1000, 700, 740, 0, 1}));
     ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
     CHECK_FALSE(ws.echoState().empty());
+}
+
+TEST_CASE("workstation echo: an output that draws device echoes gets the active panels, sliders and pick",
+          "[input][echo]") {
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    EchoOutput out;
+    out.deviceEchoes = true;
+    ws.attachOutput(&out);
+    ws.input().initialise(
+        InputClass::Choice, 1,
+        choicePanelInitialisation({"Wing", "Tail", "Body", "Fin"}, {10, 90, 10, 70, 0, 1}, 2));
+    ws.input().initialise(InputClass::Valuator, 1,
+                          valuatorSliderInitialisation(0, 10, 5, {100, 180, 150, 170, 0, 1}));
+    // Random choices and values, then a pick of the square with pick id 4 (NPC (0.8, 0.2)) and
+    // one of nothing, then the request's choice.
+    std::mt19937 random(23);
+    std::vector<std::pair<int, double>> steps;
+    std::string script;
+    for (int i = 0; i < 30; ++i) {
+        steps.push_back({1 + int(random() % 4), double(random() % 1001) / 100.0});
+        script += "choice " + std::to_string(steps.back().first) + "\nvaluator 1 " +
+                  std::to_string(steps.back().second) + "\n";
+    }
+    script += "pick 614.4 614.4\npick 1000 20\nchoice 3\n";
+    ScriptInputSource source(script, "echoes.txt");
+    InputQueue queue;
+    ws.connectInput(source, queue);
+
+    // REQUEST mode and no request: nothing is active.
+    CHECK(ws.echoState().empty());
+    // SET MODE shows the panel and slider at once, at their initial measures.
+    out.shown.clear();
+    ws.input().setMode(InputClass::Choice, 1, OperatingMode::Event);
+    ws.input().setMode(InputClass::Valuator, 1, OperatingMode::Event);
+    REQUIRE_FALSE(out.shown.empty());
+    REQUIRE(out.shown.back().choices.size() == 1);
+    REQUIRE(out.shown.back().valuators.size() == 1);
+    CHECK(out.shown.back().choices[0].current == 2);
+    CHECK(out.shown.back().choices[0].panel.alternatives.size() == 4);
+    CHECK(out.shown.back().valuators[0].value == 5.0);
+    for (const auto& [choice, value] : steps) {
+        REQUIRE(queue.awaitEvent(std::chrono::milliseconds(0)));
+        CHECK(out.shown.back().choices.at(0).current == choice);
+        REQUIRE(queue.awaitEvent(std::chrono::milliseconds(0)));
+        CHECK(out.shown.back().valuators.at(0).value == Approx(value));
+        CHECK(out.shown.back() == ws.echoState());
+    }
+
+    // The pick echo: the picked square's item, highlighted by appendEchoes; a miss clears it.
+    ws.input().setMode(InputClass::Pick, 1, OperatingMode::Event);
+    CHECK(ws.echoState().picked.empty());
+    REQUIRE(queue.awaitEvent(std::chrono::milliseconds(0)));
+    const EchoState picked = out.shown.back();
+    REQUIRE(picked.picked.size() == 1);
+    DrawList shown = ws.display();
+    appendEchoes(shown, picked, WorkstationMapping(shown, 1024, 768));
+    int highlighted = 0;
+    for (const DrawItem& item : shown.items)
+        if (item.context->highlighted) {
+            ++highlighted;
+            CHECK(item.source.path() == picked.picked[0]);
+            CHECK(item.context->viewIndex == 0);
+        }
+    CHECK(highlighted == 1);
+    REQUIRE(queue.awaitEvent(std::chrono::milliseconds(0)));
+    CHECK(out.shown.back().picked.empty());
+
+    // Echo off, or an output that does not draw device echoes: none.
+    ws.input().setMode(InputClass::Valuator, 1, OperatingMode::Event, EchoSwitch::NoEcho);
+    ws.input().setMode(InputClass::Pick, 1, OperatingMode::Request);
+    CHECK(ws.echoState().valuators.empty());
+    CHECK(ws.echoState().choices.size() == 1);
+    out.deviceEchoes = false;
+    CHECK(ws.echoState().empty());
+    out.deviceEchoes = true;
+
+    // A REQUEST shows its panel while it waits (the initial alternative), and not after.
+    ws.input().setMode(InputClass::Choice, 1, OperatingMode::Request);
+    CHECK(ws.echoState().empty());
+    out.shown.clear();
+    const auto [status, measure] = ws.input().request(InputClass::Choice, 1);
+    CHECK(status == InputStatus::Ok);
+    CHECK(std::get<ChoiceMeasure>(measure).choice == 3);
+    REQUIRE(out.shown.size() >= 2);
+    REQUIRE(out.shown.front().choices.size() == 1);
+    CHECK(out.shown.front().choices[0].current == 2);
+    CHECK(out.shown.back().empty());
+    ws.attachOutput(nullptr);
+}
+
+TEST_CASE("workstation echo: panels and sliders drawn over the picture fill their echo areas",
+          "[input][echo]") {
+    Rig rig;
+    const DrawList& picture = rig.ws->display();
+    const EchoStyle style;
+    std::mt19937 random(5);
+    for (int i = 0; i < 40; ++i) {
+        const std::uint32_t width = 300 + random() % 1500, height = 200 + random() % 1000;
+        const WorkstationMapping mapping(picture, width, height);
+        const double x0 = random() % (width / 2), y0 = random() % (height / 2);
+        const EchoVolume area{x0, x0 + 40 + random() % (width / 2), y0, y0 + 30 + random() % (height / 2), 0,
+                              1};
+        const int count = 1 + int(random() % 6), current = int(random() % (count + 1));
+        ChoicePanel panel{1, area, std::vector<std::string>(std::size_t(count), "alternative")};
+        EchoState echo;
+        echo.choices.push_back({panel, current});
+        DrawList shown = picture;
+        appendEchoes(shown, echo, mapping, style);
+        // Per alternative a box, its outline and its name: each box inside its row.
+        REQUIRE(shown.items.size() == picture.items.size() + 3 * std::size_t(count));
+        for (int n = 1; n <= count; ++n) {
+            const DrawItem& item = shown.items[picture.items.size() + 3 * std::size_t(n - 1)];
+            const auto* box = primitiveIf<DrawFillArea>(item.primitive);
+            REQUIRE(box);
+            CHECK_FALSE(item.pickable());
+            const auto [topLeft, bottomRight] = panel.row(n);
+            for (const glm::dvec3& corner : box->contours.at(0)) {
+                const glm::dvec2 p = mapping.toPixels(corner);
+                CHECK(p.x >= topLeft.x - 1e-6);
+                CHECK(p.x <= bottomRight.x + 1e-6);
+                CHECK(p.y >= topLeft.y - 1e-6);
+                CHECK(p.y <= bottomRight.y + 1e-6);
+            }
+            const glm::vec3 expected(n == current ? style.current : style.box);
+            CHECK(box->interior->colour == expected);
+        }
+        // A slider: the track fills the area, the knob sits at the value.
+        const double value = double(random() % 101) / 10.0;
+        EchoState slider;
+        slider.valuators.push_back({ValuatorSlider{1, area, 0.0, 10.0}, value});
+        shown = picture;
+        appendEchoes(shown, slider, mapping, style);
+        REQUIRE(shown.items.size() == picture.items.size() + 5);
+        const auto* knob = primitiveIf<DrawFillArea>(shown.items[picture.items.size() + 2].primitive);
+        REQUIRE(knob);
+        glm::dvec2 centre(0.0);
+        for (const glm::dvec3& corner : knob->contours.at(0)) centre += mapping.toPixels(corner) / 4.0;
+        const bool horizontal = area.xmax - area.xmin >= area.ymax - area.ymin;
+        CHECK((horizontal ? centre.x : centre.y) ==
+              Approx(slider.valuators[0].slider.knobAt(value)).margin(1e-6));
+    }
 }
 
 TEST_CASE("workstation echo: the echo is drawn inside its echo area, over the picture", "[input][echo]") {

@@ -158,6 +158,7 @@ void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode 
     d.echo = echo;
     // A device entering SAMPLE or EVENT mode starts from its initial measure.
     d.current = d.setup.initial;
+    echoChanged();  // a device entering SAMPLE or EVENT mode with echo on shows it at once
 }
 
 void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion) {
@@ -190,10 +191,14 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
         const InputDevice*& requested;
         ~Clear() { requested = nullptr; }
     } clear{requested_};
+    echoChanged();
     for (;;) {
         const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);
-        if (p == Pumped::Satisfied || p == Pumped::Broke) return result;
+        if (p == Pumped::Satisfied || p == Pumped::Broke) break;
     }
+    requested_ = nullptr;
+    echoChanged();  // the request's echo goes
+    return result;
 }
 
 const Measure& WorkstationInput::sample(InputClass inputClass, int device) const {
@@ -376,6 +381,7 @@ WorkstationInput::Pumped WorkstationInput::pump(std::chrono::milliseconds timeou
         }
     }
     if (queue_) queue_->enqueue(std::move(reports));
+    if (reached && !satisfied) echoChanged();  // a request's end shows its own
     if (!reached && std::holds_alternative<action::Move>(a->what)) {
         history_.pop_back();  // motion nobody samples is not worth recording
         return Pumped::Nothing;

@@ -63,6 +63,7 @@ void WorkstationDisplay::open(DisplaySettings settings) {
     const std::uint32_t width = settings.width ? settings.width : std::uint32_t(std::lround(display.x));
     const std::uint32_t height = settings.height ? settings.height : std::uint32_t(std::lround(display.y));
     readBack_ = settings.readBack;
+    deviceEchoes_ = settings.deviceEchoes;
     switch (workstation_.type()) {
         case WorkstationType::OffscreenImage:
             offscreen_ = std::make_unique<ImageTarget>(*context_, width, height);

@@ -25,6 +25,7 @@ public:
                                                connection.identifier);
         vk::DisplaySettings settings;
         settings.window = window_.get();
+        settings.deviceEchoes = true;
         display_ = std::make_unique<vk::WorkstationDisplay>(ws, context, settings);
     }
     ~OwnWindowOutput() override {
@@ -37,6 +38,8 @@ public:
         return display_->present(picture);
     }
     void showEcho(const EchoState& echo) override { display_->showEcho(echo); }
+    /// The workstation's own window: nothing else draws the devices' echoes there.
+    bool drawsDeviceEchoes() const override { return display_->drawsDeviceEchoes(); }
     DrawableSize drawableSize() const override { return display_->drawableSize(); }
     bool followsDrawable() const override { return true; }
     /// Made when first asked for: a program that reads no input keeps no queue of actions. While

@@ -1,5 +1,7 @@
 #include "phigs/ws/EchoState.h"
 
+#include "EchoShapes.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,12 +54,56 @@ void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const Works
     picture.items.push_back(echoItem(std::move(text)));
 }
 
+/// A device echo's shapes as items: a box as a solid fill area and its outline, a label as
+/// centred stroke text.
+void appendShapes(DrawList& picture, const std::vector<detail::EchoShape>& shapes, const EchoStyle& style) {
+    for (const detail::EchoShape& s : shapes) {
+        if (!s.box) {
+            DrawText text;
+            text.text = s.text;
+            text.position = s.a;
+            TextStyle textStyle;
+            textStyle.colour = glm::vec3(s.colour);
+            textStyle.height = s.height;
+            textStyle.horizontal = HorizontalAlignment::Centre;
+            textStyle.vertical = VerticalAlignment::Half;
+            text.style = textStyle;
+            picture.items.push_back(echoItem(std::move(text)));
+            continue;
+        }
+        const glm::dvec3 lo = glm::min(s.a, s.b), hi = glm::max(s.a, s.b);
+        const std::vector<glm::dvec3> corners = {
+            {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}};
+        DrawFillArea box;
+        box.contours = {corners};
+        InteriorStyleSet interior;
+        interior.style = InteriorStyle::Solid;
+        interior.colour = glm::vec3(s.colour);
+        box.interior = interior;
+        picture.items.push_back(echoItem(std::move(box)));
+        DrawPolyline outline;
+        std::vector<glm::dvec3> closed = corners;
+        closed.push_back(corners.front());
+        outline.points = closed;
+        outline.style = LineStyle{glm::vec3(style.outline)};
+        picture.items.push_back(echoItem(std::move(outline)));
+    }
+}
+
 }  // namespace
 
 void appendEchoes(DrawList& picture, const EchoState& echo, const WorkstationMapping& mapping,
                   const EchoStyle& style) {
     if (echo.empty()) return;
+    if (!echo.picked.empty())
+        for (DrawItem& item : picture.items)
+            if (std::find(echo.picked.begin(), echo.picked.end(), item.source.path()) != echo.picked.end())
+                item.context.edit().highlighted = true;
     for (const StringEchoArea& s : echo.strings) appendStringEcho(picture, s, mapping, style);
+    for (const ChoiceEcho& c : echo.choices)
+        appendShapes(picture, detail::choicePanelShapes(c.panel, c.current, mapping, style), style);
+    for (const ValuatorEcho& v : echo.valuators)
+        appendShapes(picture, detail::valuatorSliderShapes(v.slider, v.value, {}, mapping, style), style);
     ++picture.generation;  // the list differs from the picture it was copied from
 }
 

@@ -585,7 +585,11 @@ bool Workstation::present() {
 }
 
 void Workstation::echoMoved() {
-    if (output_ && echoState() != shownEcho_) present();
+    if (!output_) return;
+    // The items the last pick echoes, named by path while the list they index is the one the
+    // pick was measured on.
+    if (output_->drawsDeviceEchoes()) pickEchoPaths_ = lastPickEcho();
+    if (echoState() != shownEcho_) present();
 }
 
 const DrawList& Workstation::pickList(const InputDevice& device) {
@@ -620,17 +624,55 @@ std::vector<std::vector<DrawPathLevel>> Workstation::lastPickEcho() const {
 
 EchoState Workstation::echoState() const {
     EchoState state;
+    stringEcho(state);
+    if (output_ && output_->drawsDeviceEchoes()) deviceEchoes(state);
+    return state;
+}
+
+void Workstation::stringEcho(EchoState& state) const {
     const StringEcho typed = input_->stringEcho();
-    if (typed.text.empty() && !typed.cancelled) return state;
+    if (typed.text.empty() && !typed.cancelled) return;
     // A window types into string device 1 (WindowEventMapper), the one that can echo it.
-    if (input_->counts().string < 1) return state;
+    if (input_->counts().string < 1) return;
     const InputDevice& d = input_->device(InputClass::String, 1);
     const EchoVolume& a = d.setup.echoVolume;
     const bool active = d.mode != OperatingMode::Request || input_->requested() == &d;
-    if (d.echo != EchoSwitch::Echo || d.setup.promptEchoType != 1 || !active) return state;
-    if (!(a.ymax - a.ymin >= minimumEchoLine && a.xmax - a.xmin >= a.ymax - a.ymin)) return state;
+    if (d.echo != EchoSwitch::Echo || d.setup.promptEchoType != 1 || !active) return;
+    if (!(a.ymax - a.ymin >= minimumEchoLine && a.xmax - a.xmin >= a.ymax - a.ymin)) return;
     state.strings.push_back({1, a, typed.text, typed.cancelled});
-    return state;
+}
+
+void Workstation::deviceEchoes(EchoState& state) const {
+    // The echo layout lists the panels and sliders whose echo areas are set (every device of
+    // those prompt/echo types); those active with echo on are shown.
+    auto echoing = [&](InputClass inputClass, int number) -> const InputDevice* {
+        const InputDevice& d = input_->device(inputClass, number);
+        const bool active = d.mode != OperatingMode::Request || input_->requested() == &d;
+        return active && d.echo == EchoSwitch::Echo ? &d : nullptr;
+    };
+    const EchoLayout layout = input_->echoLayout();
+    for (const ChoicePanel& panel : layout.panels)
+        if (const InputDevice* d = echoing(InputClass::Choice, panel.device)) {
+            const auto* measure = std::get_if<ChoiceMeasure>(&d->current);
+            const bool chosen = measure && measure->status == InputStatus::Ok;
+            state.choices.push_back({panel, chosen ? measure->choice : 0});
+        }
+    for (const ValuatorSlider& slider : layout.sliders)
+        if (const InputDevice* d = echoing(InputClass::Valuator, slider.device)) {
+            const auto* measure = std::get_if<ValuatorMeasure>(&d->current);
+            state.valuators.push_back({slider, measure ? measure->value : slider.low});
+        }
+    // The pick echo shows what the last pick found while a device in SAMPLE or EVENT mode with
+    // echo on holds it (a request ends with the pick; nothing is left to echo).
+    for (int n = 1; n <= input_->counts().pick; ++n) {
+        const InputDevice& d = input_->device(InputClass::Pick, n);
+        if (d.mode == OperatingMode::Request || d.echo != EchoSwitch::Echo) continue;
+        const auto* measure = std::get_if<PickMeasure>(&d.current);
+        if (measure && measure->status == InputStatus::Ok) {
+            state.picked = pickEchoPaths_;
+            break;
+        }
+    }
 }
 
 void Workstation::followDrawable() {

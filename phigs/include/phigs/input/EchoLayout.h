@@ -22,6 +22,7 @@ struct ChoicePanel {
     std::optional<int> choiceAt(glm::dvec2 pixel) const;
     /// Top-left and bottom-right pixel corners of alternative `choice` (1-based), for drawing.
     std::pair<glm::dvec2, glm::dvec2> row(int choice) const;
+    bool operator==(const ChoicePanel&) const = default;
 };
 
 /// An on-screen slider of a valuator device (prompt/echo type 2): low at the left (or bottom)
@@ -36,6 +37,7 @@ struct ValuatorSlider {
     double valueAt(glm::dvec2 pixel) const;
     /// Where the slider's knob sits for `value` (pixel along the slider's long axis).
     double knobAt(double value) const;
+    bool operator==(const ValuatorSlider&) const = default;
 };
 
 /// The panels and sliders a workstation's devices put on the screen, for a window source to

@@ -30,6 +30,7 @@ enum class PathOrder { TopFirst, BottomFirst };
 /// left, y down), z in [0, 1].
 struct EchoVolume {
     double xmin = 0, xmax = 0, ymin = 0, ymax = 0, zmin = 0, zmax = 1;
+    bool operator==(const EchoVolume&) const = default;
 };
 
 /// One level of a pick path.

@@ -43,8 +43,10 @@ public:
     void disconnect();
     /// The connected source, or null.
     InputSource* source() const { return source_; }
-    /// Called after each action taken from the source whose string echo moved (typing in a
-    /// window): the workstation shows its echo areas again, even inside a REQUEST.
+    /// Called whenever what the echoes show may have changed: after each action taken from the
+    /// source whose string echo moved (typing in a window) or that reached a device in SAMPLE or
+    /// EVENT mode, when a REQUEST starts and ends, at SET MODE. The workstation shows its echo
+    /// areas again, even inside a REQUEST.
     void setEchoListener(std::function<void()> listener) { echoListener_ = std::move(listener); }
     /// The source's string echo (nothing typed when none is connected).
     StringEcho stringEcho() const { return source_ ? source_->stringEcho() : StringEcho{}; }
@@ -114,6 +116,9 @@ private:
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
     void ignore(std::string message);
+    void echoChanged() {
+        if (echoListener_) echoListener_();
+    }
 
     int workstation_;
     InputSource* source_ = nullptr;

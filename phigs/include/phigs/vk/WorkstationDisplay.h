@@ -30,6 +30,10 @@ struct DisplaySettings {
     /// presentation and on close (optional)
     std::filesystem::path file;
     bool readBack = false;  ///< window: copy every presented picture into image()
+    /// Draw the devices' echoes (choice panels, valuator sliders, pick echo) as the standard's
+    /// workstation does (WorkstationOutput::drawsDeviceEchoes); off for a program that posts
+    /// its own (buildChoicePanel).
+    bool deviceEchoes = false;
 };
 
 /// The workstation's output (WorkstationOutput) through the Vulkan backend, on the target its
@@ -56,8 +60,9 @@ public:
     /// Draws `picture` with the echoes last handed over (showEcho) on top.
     bool present(const DrawList& picture) override;
     DrawableSize drawableSize() const override { return {width(), height()}; }
-    /// Keeps the echo state the next present draws (the string echo areas, appendEchoes).
+    /// Keeps the echo state the next present draws (appendEchoes).
     void showEcho(const EchoState& echo) override { echo_ = echo; }
+    bool drawsDeviceEchoes() const override { return deviceEchoes_; }
     /// The echo state it draws now (a test reads what the picture shows from it).
     const EchoState& echo() const { return echo_; }
     /// CLOSE WORKSTATION: the files (an offscreen PNG, the hardcopy) get `picture`.
@@ -101,6 +106,7 @@ private:
     std::unique_ptr<HardcopyTarget> hardcopy_;
     std::unique_ptr<WindowTarget> window_;
     bool readBack_ = false;
+    bool deviceEchoes_ = false;
     std::filesystem::path offscreenFile_;
     Image image_;
     EchoState echo_;

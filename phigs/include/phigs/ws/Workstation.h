@@ -216,8 +216,11 @@ public:
     std::uint64_t pickTraversals() const { return pickTraversals_; }
     /// What the echo areas show now: each active string device (echo on, prompt/echo type 1,
     /// an echo area at least 8 pixels high and as wide; in SAMPLE or EVENT mode or requested
-    /// now) that the operator is typing into or has just cancelled. The output draws it over
-    /// the picture.
+    /// now) that the operator is typing into or has just cancelled; for an output that
+    /// drawsDeviceEchoes(), also each active choice device with echo on and a menu panel (prompt/
+    /// echo type 3, alternatives and an echo area), its current alternative; each such valuator
+    /// slider (type 2), its value; the last pick's echo while a pick device in SAMPLE or EVENT
+    /// mode with echo on holds it. The output draws it over the picture.
     EchoState echoState() const;
 
     // ---- StoreListener
@@ -275,6 +278,8 @@ private:
     /// Whether pick traverses with the tables of the picture shown (a change is deferred).
     bool picksShownTables() const;
     void echoMoved();
+    void stringEcho(EchoState& state) const;
+    void deviceEchoes(EchoState& state) const;
 
     DrawListMeasurer measurer_;
     /// One pick device's last traversal and what it was made from.
@@ -287,8 +292,9 @@ private:
     };
     std::map<int, PickList> pickLists_;  ///< by pick device number
     std::uint64_t pickTraversals_ = 0;
-    const DrawList* lastPickList_ = nullptr;   ///< the list the last pick was measured on
-    std::unique_ptr<WorkstationInput> input_;  ///< after the measurer it measures with
+    const DrawList* lastPickList_ = nullptr;                 ///< the list the last pick was measured on
+    std::vector<std::vector<DrawPathLevel>> pickEchoPaths_;  ///< lastPickEcho() after the last input
+    std::unique_ptr<WorkstationInput> input_;                ///< after the measurer it measures with
 };
 
 }  // namespace phigs

@@ -38,6 +38,11 @@ public:
     /// What the echo areas show (handed before each present): an output with an operator draws
     /// it over the picture (appendEchoes); a file has none and ignores it.
     virtual void showEcho(const EchoState& echo) { (void)echo; }
+    /// True when the output draws the devices' echoes itself, as a workstation of the standard
+    /// does (the workstation's own window): the echo state then carries the choice panels,
+    /// valuator sliders and pick echo of the active devices (EchoState). False for a file and
+    /// for a program that lays out its own window and posts them as structures.
+    virtual bool drawsDeviceEchoes() const { return false; }
     /// The workstation closes; `picture` is what it shows now. A file output writes it (when
     /// it has written nothing yet, or keeps every picture) and completes its file.
     virtual void close(const DrawList& picture) { (void)picture; }
