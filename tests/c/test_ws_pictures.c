@@ -1,7 +1,8 @@
 /* Pictures on the workstation types: a structure with a fill area and a polyline posted to the
  * headless offscreen type (lavapipe; the PNG its connection identifier names) and to the PDF
  * type; the PNG and the rasterised PDF (pdftoppm) have the drawn colours where the primitives
- * are and the background elsewhere, and the PDF holds no image (pdfimages -list). Links libpng
+ * are and the background elsewhere, and the PDF holds no image (pdfimages -list); a blue square
+ * added after the last UPDATE is in both files, which CLOSE WORKSTATION updates. Links libpng
  * besides libphigs to read the PNG. argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -88,9 +89,26 @@ int main(int argc, char** argv) {
         free(picture.rgb);
         picture.rgb = NULL;
     }
+    {
+        /* Added after the last UPDATE: CLOSE WORKSTATION updates the picture it writes. */
+        Ppoint3 square[4] = {{0.45f, 0.7f, 0}, {0.55f, 0.7f, 0}, {0.55f, 0.8f, 0}, {0.45f, 0.8f, 0}};
+        Ppoint_list3 area = {4, square};
+        Pgcolr blue = {PMODEL_RGB, {0}};
+        blue.val.direct.z = 1;
+        popen_struct(1);
+        pset_int_colr(&blue);
+        pfill_area3(&area);
+        pclose_struct();
+    }
     EXPECT_NO_ERROR(pclose_ws(1));
     EXPECT_NO_ERROR(pclose_ws(2));
     pclose_phigs();
+    CHECK(read_png(png, &picture));
+    if (picture.rgb) {
+        CHECK(has_colour_near(&picture, (int)(0.5 * 768), (int)(768 - 0.75 * 768), 0, 0, 0, 255));
+        free(picture.rgb);
+        picture.rgb = NULL;
+    }
 
     /* The PDF: vectors only, and its page at 72 dpi (one pixel per point) shows the scene. */
     snprintf(command, sizeof command, "pdfimages -list '%s'", pdf);
@@ -102,6 +120,8 @@ int main(int argc, char** argv) {
     if (picture.rgb) {
         CHECK(abs(picture.width - 842) <= 1 && abs(picture.height - 595) <= 1);
         check_picture(&picture, 595.2756, "PDF");
+        CHECK(has_colour_near(&picture, (int)(0.5 * 595.2756), (int)(picture.height - 0.75 * 595.2756), 0, 0,
+                              0, 255));
         free(picture.rgb);
     }
     return finish("test_ws_pictures");

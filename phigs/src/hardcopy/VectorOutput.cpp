@@ -15,6 +15,7 @@ VectorOutput::VectorOutput(std::filesystem::path file, VectorFormat format, cons
 bool VectorOutput::present(const DrawList& picture) {
     file_.update(picture);  // std::runtime_error naming the file when cairo cannot write it
     presented_ = true;
+    presentedGeneration_ = picture.generation;
     return true;
 }
 
@@ -24,9 +25,10 @@ DrawableSize VectorOutput::drawableSize() const {
 }
 
 void VectorOutput::close(const DrawList& picture) {
-    // Never written (no update, or each failed): the last picture is written now, and a file that
-    // still cannot be written is reported again (903), as the PNG type does.
-    if (!presented_) file_.update(picture);
+    // Never written (no update, or each failed), or changed since (CLOSE WORKSTATION updates):
+    // the last picture is written now (a document's last page), and a file that still cannot
+    // be written is reported again (903), as the PNG type does.
+    if (!presented_ || picture.generation != presentedGeneration_) file_.update(picture);
     file_.close();
 }
 

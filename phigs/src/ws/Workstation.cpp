@@ -98,7 +98,9 @@ void Workstation::outputDestroyed(WorkstationOutput* output) {
 }
 
 void Workstation::closeOutput() {
-    if (output_) output_->close(shownPicture());
+    if (!output_) return;
+    update(Regeneration::Perform);  // CLOSE WORKSTATION updates the workstation first
+    output_->close(shownPicture());
 }
 
 void Workstation::postStructure(int structureId, double priority) {

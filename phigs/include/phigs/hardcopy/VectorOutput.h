@@ -4,6 +4,7 @@
 #include "phigs/ws/OutputRegistry.h"
 #include "phigs/ws/WorkstationOutput.h"
 
+#include <cstdint>
 #include <filesystem>
 
 namespace phigs::hardcopy {
@@ -17,8 +18,8 @@ struct VectorSettings {
 };
 
 /// The output of a PDF, SVG or EPS workstation: every presented picture drawn into the file
-/// (a new file, or a new page in Document mode); on close a file never presented gets the last
-/// picture.
+/// (a new file, or a new page in Document mode); on close the picture gets drawn where the file
+/// was never presented or the picture changed since.
 class VectorOutput : public WorkstationOutput {
 public:
     VectorOutput(std::filesystem::path file, VectorFormat format, const VectorSettings& settings);
@@ -33,6 +34,7 @@ private:
     VectorWorkstation file_;
     glm::dvec2 page_;
     bool presented_ = false;
+    std::uint64_t presentedGeneration_ = 0;  ///< of the last picture presented
 };
 
 /// Adds the PdfFile, SvgFile and EpsFile outputs to `registry`: the connection identifier is the

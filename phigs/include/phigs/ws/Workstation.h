@@ -170,7 +170,8 @@ public:
     /// Keeps `output` (made by OPEN WORKSTATION from the type's factory) and attaches it; it goes
     /// with the workstation.
     void ownOutput(std::unique_ptr<WorkstationOutput> output);
-    /// CLOSE WORKSTATION's last picture: the output writes what the workstation shows now.
+    /// CLOSE WORKSTATION's last picture: the workstation is updated (UPDATE WORKSTATION, PERFORM)
+    /// and the output writes what it shows then.
     void closeOutput();
     /// The connection identifier the workstation was opened with (empty: none).
     const std::string& connectionIdentifier() const { return connection_; }
