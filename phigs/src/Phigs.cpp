@@ -294,8 +294,15 @@ void Phigs::retrieveStructures(int archiveId, const std::vector<int>& ids) {
 void Phigs::retrieveStructureNetworks(int archiveId, const std::vector<int>& ids) {
     const char* function = "RETRIEVE STRUCTURE NETWORKS";
     ArchiveFile& file = archive(archiveId, function);
+    // Each root (one the archive lacks is warned and made empty, as RETRIEVE STRUCTURES does)
+    // and the structures of its network the archive holds: one it only references is not
+    // retrieved, so it neither conflicts nor is emptied.
     std::set<int> all;
-    for (int id : ids) all.merge(archiveNetwork(file, id));
+    for (int id : ids) {
+        all.insert(id);
+        for (int member : archiveNetwork(file, id))
+            if (file.contains(member)) all.insert(member);
+    }
     retrieveSet(archiveId, std::move(all), function);
 }
 
@@ -353,6 +360,9 @@ std::vector<int> Phigs::conflictingStructuresInNetwork(int archiveId, int id, Ne
     ArchiveFile& file = archive(archiveId, function, true);
     if (source == NetworkSource::Css && !store_.exists(id))
         raise(nullptr, errors::StructureDoesNotExist, function, "structure " + std::to_string(id));
+    if (source == NetworkSource::Archive && !file.contains(id))
+        raise(nullptr, errors::StructureDoesNotExist, function,
+              "structure " + std::to_string(id) + " is not in archive " + std::to_string(archiveId));
     std::set<int> network = source == NetworkSource::Css ? store_.network(id) : archiveNetwork(file, id);
     std::vector<int> out;
     for (int member : network)

@@ -37,9 +37,15 @@ struct ArchiveModel {
                 all.insert(id);
         return all;
     }
+    /// Each root and the members of its network the archive holds (one it only references is
+    /// not retrieved).
     std::set<int> archiveNetworks(const std::vector<int>& ids) const {
         std::set<int> all;
-        for (int id : ids) all.merge(networkOf(contents, id));
+        for (int id : ids) {
+            all.insert(id);
+            for (int member : networkOf(contents, id))
+                if (contents.contains(member)) all.insert(member);
+        }
         return all;
     }
     int retrieve(StoreModel& store, const std::set<int>& ids) {

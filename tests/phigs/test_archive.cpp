@@ -108,8 +108,9 @@ TEST_CASE("a truncated archive is refused naming the file and line, the store un
     phigs.store().closeStructure();
     const auto before = snapshot(phigs.store());
     for (int trial = 0; trial < 200; ++trial) {
+        // Cut at 0 the file is empty: a new archive (below).
         std::size_t cut =
-            static_cast<std::size_t>(testing::randomInt(rng, 0, static_cast<int>(good.size()) - 2));
+            static_cast<std::size_t>(testing::randomInt(rng, 1, static_cast<int>(good.size()) - 2));
         writeFile(path, good.substr(0, cut));
         try {
             phigs.openArchiveFile(3, path);
@@ -122,6 +123,56 @@ TEST_CASE("a truncated archive is refused naming the file and line, the store un
         REQUIRE_FALSE(phigs.anyArchiveOpen());
     }
     CHECK(snapshot(phigs.store()) == before);
+}
+
+TEST_CASE("an existing empty file opens as a new archive", "[archive]") {
+    auto path = outputFile("empty.phar");
+    writeFile(path, "");
+    Phigs phigs;
+    phigs.open();
+    phigs.store().openStructure(1);
+    phigs.store().insert(label(7));
+    phigs.store().closeStructure();
+    phigs.openArchiveFile(1, path);
+    CHECK(phigs.archiveContents(1).empty());
+    phigs.archiveAllStructures(1);
+    phigs.closeArchiveFile(1);
+    phigs.openArchiveFile(2, path);
+    CHECK(phigs.archiveContents(2) == std::vector<int>{1});
+}
+
+TEST_CASE("RETRIEVE STRUCTURE NETWORKS leaves a structure the archive only references alone", "[archive]") {
+    auto path = outputFile("references.phar");
+    std::filesystem::remove(path);
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    store.insert(executeStructure(5));
+    store.closeStructure();
+    phigs.openArchiveFile(1, path);
+    phigs.archiveStructures(1, {1});  // 5 is referenced, not archived
+    store.deleteAllStructures();
+    store.openStructure(5);
+    store.insert(label(55));
+    store.closeStructure();
+    // Not a conflict, by the inquiries or the retrieval, under every resolution; 5 keeps its label.
+    CHECK(phigs.conflictingStructuresInNetwork(1, 1, NetworkSource::Archive).empty());
+    for (ConflictResolution r :
+         {ConflictResolution::Abandon, ConflictResolution::Update, ConflictResolution::Maintain}) {
+        phigs.setConflictResolution(ConflictResolution::Update, r);
+        phigs.retrieveStructureNetworks(1, {1});
+        CHECK(store.elementCount(1) == 1);
+        CHECK(store.elementCount(5) == 1);
+        store.deleteStructure(1);
+    }
+    // A root the archive lacks: error 201 for the archive's network, as for the store's.
+    try {
+        phigs.conflictingStructuresInNetwork(1, 99, NetworkSource::Archive);
+        FAIL("no error for a root the archive lacks");
+    } catch (const Error& e) {
+        CHECK(e.number() == errors::StructureDoesNotExist);
+    }
 }
 
 TEST_CASE("a corrupt archive is refused: 300 random single-byte changes are each detected",

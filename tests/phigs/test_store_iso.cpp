@@ -356,4 +356,42 @@ TEST_CASE("retrieve of a structure the archive lacks creates it empty, warning 4
     std::filesystem::remove(file);
 }
 
+TEST_CASE("ISO paths: a depth cut answers from the cut, not from every whole path", "[store][iso]") {
+    // Layers of two structures each executing both of the next layer's: 2^40 whole paths from
+    // structure 1 (or 2) down to the leaf, a handful once cut.
+    StructureStore store;
+    const int layers = 40;
+    for (int i = 0; i < layers; ++i)
+        for (int s = 2 * i + 1; s <= 2 * i + 2; ++s) {
+            store.openStructure(s);
+            store.insert(executeStructure(2 * i + 3));
+            store.insert(executeStructure(2 * i + 4));
+            store.closeStructure();
+        }
+    const int leaf = 2 * layers + 1;
+    using P = std::vector<StructurePath>;
+    const auto top = StructurePathOrder::TopFirst, bottom = StructurePathOrder::BottomFirst;
+    CHECK(store.pathsToAncestors(leaf, top, 1) == P{{{1, 1}}, {{1, 2}}, {{2, 1}}, {{2, 2}}});
+    CHECK(store.pathsToAncestors(leaf, top, 2) == P{{{1, 1}, {3, 1}},
+                                                    {{1, 1}, {3, 2}},
+                                                    {{1, 2}, {4, 1}},
+                                                    {{1, 2}, {4, 2}},
+                                                    {{2, 1}, {3, 1}},
+                                                    {{2, 1}, {3, 2}},
+                                                    {{2, 2}, {4, 1}},
+                                                    {{2, 2}, {4, 2}}});
+    CHECK(store.pathsToDescendants(1, bottom, 1) == P{{{leaf, 0}}, {{leaf + 1, 0}}});
+    CHECK(store.pathsToDescendants(1, bottom, 2) == P{{{leaf - 2, 1}, {leaf, 0}},
+                                                      {{leaf - 2, 2}, {leaf + 1, 0}},
+                                                      {{leaf - 1, 1}, {leaf, 0}},
+                                                      {{leaf - 1, 2}, {leaf + 1, 0}}});
+    // Whole paths still refuse with 900 past the limit.
+    try {
+        store.pathsToAncestors(leaf, top, 0);
+        FAIL("2^40 whole paths answered");
+    } catch (const Error& e) {
+        CHECK(e.number() == errors::StorageOverflow);
+    }
+}
+
 }  // namespace test_store_iso

@@ -555,7 +555,8 @@ void Runner::inquire(int a) {
         retrieved([&] { return phigs_.retrievePathsToAncestors(kArchive, a, order, depth); },
                   test::ancestorsOf(archive_.contents, a, depth, top));
     const auto source = pick(0, 1) ? NetworkSource::Css : NetworkSource::Archive;
-    if (source == NetworkSource::Css && !exists) {
+    if ((source == NetworkSource::Css && !exists) ||
+        (source == NetworkSource::Archive && !archive_.contents.contains(a))) {
         CHECK(errorOf([&] { phigs_.conflictingStructuresInNetwork(kArchive, a, source); }) ==
               errors::StructureDoesNotExist);
     } else {

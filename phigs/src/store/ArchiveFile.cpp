@@ -427,7 +427,11 @@ ArchiveFile::ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t 
     const auto leftover = std::filesystem::symlink_status(temporary, ec).type();
     if (leftover == std::filesystem::file_type::regular || leftover == std::filesystem::file_type::symlink)
         std::filesystem::remove(temporary, ec);
-    if (std::filesystem::status(path_, ec).type() == std::filesystem::file_type::not_found) {
+    // A file that exists but is empty is a new archive too (a program may make the file first).
+    const auto type = std::filesystem::status(path_, ec).type();
+    const bool empty =
+        type == std::filesystem::file_type::regular && std::filesystem::file_size(path_, ec) == 0 && !ec;
+    if (type == std::filesystem::file_type::not_found || empty) {
         // A failed creation is error 400 alone: the write's own error (903) stays out of the log.
         ErrorLog* const kept = std::exchange(log_, nullptr);
         try {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
 
 namespace phigs {
@@ -113,6 +114,102 @@ void collectDescendants(const ExecuteReferences& references, int id, StructurePa
     }
 }
 
+// The structures reachable from `id` through `edges` (children or parents), `id` among them.
+template <class Edges, class Next>
+std::set<int> reachable(const Edges& edges, int id, Next next) {
+    std::set<int> seen{id};
+    std::vector<int> todo{id};
+    while (!todo.empty()) {
+        const auto it = edges.find(todo.back());
+        todo.pop_back();
+        if (it == edges.end()) continue;
+        for (const auto& edge : it->second)
+            if (seen.insert(next(edge)).second) todo.push_back(next(edge));
+    }
+    return seen;
+}
+
+// Ancestor paths cut TopFirst at `depth` > 0, without the whole paths: from each structure
+// nothing executes, down through ancestors of `id` only, each prefix complete at `depth`
+// references or at `id`. Every prefix walked is part of an answer, so the answer bounds the work.
+class TopPrefixes {
+public:
+    TopPrefixes(const ExecuteReferences& references, const std::set<int>& above, int id, std::size_t depth,
+                PathCollector& out)
+        : references_(references), above_(above), id_(id), depth_(depth), out_(out) {}
+
+    void from(int structure) {
+        if (path_.size() > kMaxNetworkDepth)
+            raise(out_.log(), errors::NetworkTooDeep, out_.function(),
+                  "more than " + std::to_string(kMaxNetworkDepth) + " levels");
+        if (structure == id_) {
+            path_.push_back({id_, 0});
+            out_.add(path_);
+            path_.pop_back();
+            return;
+        }
+        const auto it = references_.find(structure);
+        if (it == references_.end()) return;
+        for (const auto& [elementNumber, child] : it->second) {
+            if (!above_.contains(child)) continue;
+            path_.push_back({structure, elementNumber});
+            if (path_.size() == depth_)
+                out_.add(path_);
+            else
+                from(child);
+            path_.pop_back();
+        }
+    }
+
+private:
+    const ExecuteReferences& references_;
+    const std::set<int>& above_;
+    int id_;
+    std::size_t depth_;
+    PathCollector& out_;
+    StructurePath path_;
+};
+
+// Descendant paths cut BottomFirst at `depth` > 0, the mirror of TopPrefixes: from each leaf
+// below `id`, up through its descendants only, each suffix complete at `depth` references or
+// at `id`.
+class BottomSuffixes {
+public:
+    BottomSuffixes(const std::map<int, std::vector<ElementRef>>& parents, int id, std::size_t depth,
+                   PathCollector& out)
+        : parents_(parents), id_(id), depth_(depth), out_(out) {}
+
+    void fromLeaf(int leaf) {
+        reversed_.push_back({leaf, 0});
+        up(leaf);
+        reversed_.pop_back();
+    }
+
+private:
+    void up(int structure) {
+        if (reversed_.size() > kMaxNetworkDepth)
+            raise(out_.log(), errors::NetworkTooDeep, out_.function(),
+                  "more than " + std::to_string(kMaxNetworkDepth) + " levels");
+        if (reversed_.size() == depth_ || structure == id_) {
+            out_.add(StructurePath(reversed_.rbegin(), reversed_.rend()));
+            return;
+        }
+        const auto it = parents_.find(structure);
+        if (it == parents_.end()) return;
+        for (const ElementRef& ref : it->second) {
+            reversed_.push_back(ref);
+            up(ref.structureId);
+            reversed_.pop_back();
+        }
+    }
+
+    const std::map<int, std::vector<ElementRef>>& parents_;
+    int id_;
+    std::size_t depth_;
+    PathCollector& out_;
+    StructurePath reversed_;
+};
+
 }  // namespace
 
 ExecuteReferences executeReferences(const std::map<int, std::vector<Element>>& contents) {
@@ -140,6 +237,13 @@ std::vector<StructurePath> ancestorPaths(const ExecuteReferences& references, in
     checkReachableAcyclic(
         parents, id, [](const ElementRef& r) { return r.structureId; }, log, function);
     PathCollector out(log, function);
+    if (order == StructurePathOrder::TopFirst && depth > 0) {
+        const std::set<int> above = reachable(parents, id, [](const ElementRef& r) { return r.structureId; });
+        TopPrefixes prefixes(references, above, id, static_cast<std::size_t>(depth), out);
+        for (int structure : above)
+            if (!parents.contains(structure)) prefixes.from(structure);
+        return truncateAndUnique(out.take(), order, depth);
+    }
     // A BottomFirst answer is complete once it holds `depth` references.
     const std::size_t cut = order == StructurePathOrder::BottomFirst ? static_cast<std::size_t>(depth) : 0;
     // Walk upward, building paths bottom-up, then reverse each to top-first.
@@ -173,6 +277,21 @@ std::vector<StructurePath> descendantPaths(const ExecuteReferences& references, 
     checkReachableAcyclic(
         references, id, [](const std::pair<int, int>& r) { return r.second; }, log, function);
     PathCollector out(log, function);
+    if (order == StructurePathOrder::BottomFirst && depth > 0) {
+        const std::set<int> below =
+            reachable(references, id, [](const std::pair<int, int>& r) { return r.second; });
+        std::map<int, std::vector<ElementRef>> parents;
+        for (int parent : below)
+            if (const auto refs = references.find(parent); refs != references.end())
+                for (const auto& [elementNumber, child] : refs->second)
+                    parents[child].push_back({parent, elementNumber});
+        BottomSuffixes suffixes(parents, id, static_cast<std::size_t>(depth), out);
+        for (int structure : below)
+            if (const auto refs = references.find(structure);
+                refs == references.end() || refs->second.empty())
+                suffixes.fromLeaf(structure);
+        return truncateAndUnique(out.take(), order, depth);
+    }
     const std::size_t cut = order == StructurePathOrder::TopFirst ? static_cast<std::size_t>(depth) : 0;
     StructurePath path;
     collectDescendants(references, id, path, cut, out);

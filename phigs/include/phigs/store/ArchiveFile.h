@@ -24,6 +24,9 @@ namespace phigs {
 ///                                         spaces written as '_', e.g. POLYLINE_3)
 ///   END <structure count> <checksum>      FNV-1a 64 of every byte before "END", in hex
 /// @endverbatim
+/// The checksum's offset basis is 1469598103934665603, one digit short of the standard FNV-1a's
+/// 14695981039346656037 (the prime is the standard 1099511628211): every archive written so far
+/// uses it, so it stays; a tool making an archive by hand must use it too.
 /// Fields: integers and reals in decimal (reals shortest round-trip), booleans 0/1, strings as
 /// `<byte count>:<bytes>`, lists as `<count>` then the items, points as x y z, matrices as 16
 /// reals column by column, colours as D r g b (RGB), D<model> c1 c2 c3 (another colour
