@@ -283,4 +283,53 @@ TEST_CASE("READ MODEL: a saved model over the patch limit is refused at the comp
     CHECK(acsynt::parseModelState(fits, "fits.acs").model.patchCount() == 86 * 86 + 4);
 }
 
+TEST_CASE("SAVE MODEL, ARCHIVE: a failed write keeps the previous file, an archive is replaced whole") {
+    Driver d("save_whole");
+    const auto out = session_test::outputDirectory("save_whole");
+    std::filesystem::remove_all(out);
+    auto text = [](const std::filesystem::path& file) {
+        std::ostringstream all;
+        all << std::ifstream(file).rdbuf();
+        return all.str();
+    };
+    d.run(
+        {"choice FILE", "choice READ_MODEL", "string transport.acm", "choice SAVE_MODEL", "string keep.acs"});
+    const std::string kept = text(out / "keep.acs");
+    REQUIRE(kept.find("model transport") != std::string::npos);
+
+    // The write fails (its temporary name is taken by a directory): the old file stays whole and
+    // no partial file is left.
+    std::filesystem::create_directories(out / "keep.writing.acs");
+    std::ofstream(out / "keep.writing.acs" / "x") << "x";
+    d.run({"choice READ_MODEL", "string fighter.acm", "choice SAVE_MODEL", "string keep.acs"});
+    CHECK(d.session.message() == "CANNOT WRITE " + (out / "keep.acs").string());
+    CHECK(text(out / "keep.acs") == kept);
+    std::filesystem::remove_all(out / "keep.writing.acs");
+    for (const auto& entry : std::filesystem::directory_iterator(out))
+        CHECK(entry.path().filename().string().find(".writing") == std::string::npos);
+
+    // The session's own summary and log are refused as names.
+    for (const char* reserved : {"summary.txt", "acsynt.log"}) {
+        d.run({"choice SAVE_MODEL", std::string("string ") + reserved});
+        CHECK(d.session.message().find("IS THE SESSION'S OWN") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(out / reserved));
+    }
+
+    // ARCHIVE into a file holding another model's archive replaces it: the count is this
+    // model's network, and RETRIEVE takes it back.
+    d.run({"choice ARCHIVE", "string model.phar"});
+    const std::string fighter = d.session.message();
+    d.run({"choice RETURN", "choice MODELS", "choice PREVIOUS_MODEL", "choice RETURN", "choice FILE",
+           "choice ARCHIVE", "string model.phar"});
+    REQUIRE(d.session.models().current().name == "transport");
+    const phigs::StructureStore& store = d.session.phigs().store();
+    const std::size_t network = store.network(acsynt::structures::modelRoot).size();
+    CHECK(d.session.message() ==
+          "ARCHIVED " + std::to_string(network) + " STRUCTURES TO " + (out / "model.phar").string());
+    CHECK(d.session.message() != fighter);
+    d.run({"choice RETRIEVE", "string " + (out / "model.phar").string()});
+    CHECK(d.session.message() ==
+          "RETRIEVED " + std::to_string(network) + " STRUCTURES FROM " + (out / "model.phar").string());
+}
+
 }  // namespace test_session_save

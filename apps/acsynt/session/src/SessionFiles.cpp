@@ -98,7 +98,29 @@ std::filesystem::path Session::findInput(const std::string& name) const {
     return path;
 }
 
-std::filesystem::path Session::outputPath(const std::string& name) const {
+namespace {
+
+/// Writes `path` through `write(temporary)` into a sibling file with the same extension, renamed
+/// over `path` only when the write succeeded: a failed save or export leaves the previous file
+/// as it was and no partial one.
+template <class Write>
+void replaceWhole(const std::filesystem::path& path, Write&& write) {
+    const std::filesystem::path temporary =
+        path.parent_path() / (path.stem().string() + ".writing" + path.extension().string());
+    std::error_code ignored;
+    try {
+        std::filesystem::remove(temporary, ignored);
+        write(temporary);
+        std::filesystem::rename(temporary, path);
+    } catch (...) {
+        std::filesystem::remove(temporary, ignored);
+        throw;
+    }
+}
+
+}  // namespace
+
+std::filesystem::path Session::outputPath(const std::string& name, bool summary) const {
     // Files a session writes stay inside the output directory: a script cannot reach further.
     const std::filesystem::path path(name);
     const bool climbs = std::any_of(path.begin(), path.end(), [](const auto& part) { return part == ".."; });
@@ -107,6 +129,10 @@ std::filesystem::path Session::outputPath(const std::string& name) const {
             "OUTPUT FILE '" + name +
             "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
     requireNameLengths(path, "OUTPUT FILE");
+    // The session writes these itself at its end, over whatever a command put there.
+    if ((path == "summary.txt" && !summary) || path == "acsynt.log")
+        throw std::invalid_argument("OUTPUT FILE '" + name + "' IS THE SESSION'S OWN " +
+                                    (path == "summary.txt" ? "SUMMARY" : "LOG") + ": CHOOSE ANOTHER NAME");
     const std::filesystem::path full = core_.settings.outputDirectory / path;
     // A symbolic link inside the directory (to a folder or as the file) must not lead out of it.
     auto inside = std::filesystem::weakly_canonical(core_.settings.outputDirectory);
@@ -229,8 +255,13 @@ void Session::saveModel(const std::string& name) {
     const Model& model = core_.models.current();
     std::ostringstream text;
     writeModelState(text, model, core_.mappings);
-    std::ofstream out(path);
-    if (!(out << text.str()) || !out.flush()) {
+    try {
+        replaceWhole(path, [&](const std::filesystem::path& temporary) {
+            std::ofstream out(temporary);
+            if (!(out << text.str()) || !out.flush())
+                throw std::runtime_error("CANNOT WRITE " + path.string());
+        });
+    } catch (const std::exception&) {
         fail("CANNOT WRITE " + path.string());
         return;
     }
@@ -246,7 +277,10 @@ void Session::exportModel(const std::string& name) {
     const auto path = outputPath(name);
     const Model& model = core_.models.current();
     // ExchangeError (a runtime_error) names the file and cause.
-    const std::size_t curves = exchangeCalls().exportModel(model, core_.mappings, path);
+    std::size_t curves = 0;
+    replaceWhole(path, [&](const std::filesystem::path& temporary) {
+        curves = exchangeCalls().exportModel(model, core_.mappings, temporary);
+    });
     noteSaved(path);
     say("MODEL " + model.name + " EXPORTED TO " + path.string() + ": " +
         std::to_string(model.components.size()) + " COMPONENTS, " + std::to_string(model.patchCount()) +
@@ -338,17 +372,22 @@ void Session::archive(const std::string& name, bool retrieve) {
         retrieveArchive(path);
         return;
     }
-    phigs_.openArchiveFile(1, path);
-    try {
-        phigs_.archiveStructureNetworks(1, {structures::modelRoot});
-        const auto ids = phigs_.archiveContents(1);
-        phigs_.closeArchiveFile(1);
-        noteSaved(path);
-        say("ARCHIVED " + std::to_string(ids.size()) + " STRUCTURES TO " + path.string());
-    } catch (...) {
-        phigs_.closeArchiveFile(1);
-        throw;
-    }
+    // A new archive of the model's network alone, replacing the file whole (an existing archive
+    // is not merged into: it may hold another model's picture).
+    std::size_t count = 0;
+    replaceWhole(path, [&](const std::filesystem::path& temporary) {
+        phigs_.openArchiveFile(1, temporary);
+        try {
+            phigs_.archiveStructureNetworks(1, {structures::modelRoot});
+            count = phigs_.archiveContents(1).size();
+            phigs_.closeArchiveFile(1);
+        } catch (...) {
+            phigs_.closeArchiveFile(1);
+            throw;
+        }
+    });
+    noteSaved(path);
+    say("ARCHIVED " + std::to_string(count) + " STRUCTURES TO " + path.string());
 }
 
 }  // namespace acsynt

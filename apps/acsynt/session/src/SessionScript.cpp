@@ -95,7 +95,7 @@ void Session::writeDirective(const action::Directive& d) {
     } else if (d.name == "hardcopy") {
         writeHardcopy(d.arguments[0]);
     } else if (d.name == "summary") {
-        const auto file = outputPath(withExtension(d.arguments[0], ".txt"));
+        const auto file = outputPath(withExtension(d.arguments[0], ".txt"), true);
         std::ofstream out(file);
         if (!(out << summary()) || !out.flush()) throw std::runtime_error("CANNOT WRITE " + file.string());
         noteSaved(file);

@@ -223,8 +223,9 @@ private:
     void moveMarker(double u, double w);
     std::filesystem::path findInput(const std::string& name) const;
     /// `name` inside the output directory; std::invalid_argument for an absolute name, one with
-    /// "..", or a directory.
-    std::filesystem::path outputPath(const std::string& name) const;
+    /// "..", a directory, or the session's own summary or log (which the end of the run writes
+    /// over), save that the summary directive (`summary`) may write the summary.
+    std::filesystem::path outputPath(const std::string& name, bool summary = false) const;
 
     SessionCore core_;
     ScreenLayout layout_;
