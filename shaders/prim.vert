@@ -24,6 +24,9 @@ layout(location = 6) out vec3 vLitBack;
 layout(location = 7) out vec3 vSpecularFront;
 layout(location = 8) out vec3 vSpecularBack;
 
+// Four steps of a 32-bit float depth just below 1.
+const float kLineDepthLead = 1.0 / 4194304.0;
+
 void main() {
     // Outputs are written, never read back: the renderer removes the stores the fragment shader
     // does not need (phigs/src/vk/ShaderSpecialisation.cpp), which a read-back would then miss.
@@ -59,6 +62,12 @@ void main() {
         bool front = dot(vec4(inNormal, inPattern), push.backReflectance) >= 0.0;
         if (front != (SIDED_EDGES > 0)) clip = vec4(4.0, 4.0, 4.0, 1.0);
     }
+    // Lines lead surfaces at the same depth by a few steps of the depth buffer (surfaces are
+    // pushed back by the pipeline's depth bias too, but at the back plane, where 2D primitives
+    // lie, that bias clamps away): a line on a coplanar fill stays visible under HLHSR, as the
+    // vector hardcopy draws it. Not past the front plane, which would clip it; a vertex beyond
+    // it (a line the front plane cuts) keeps its depth.
+    if (!TRIANGLES && clip.z >= 0.0) clip.z = max(clip.z - kLineDepthLead * clip.w, 0.0);
     gl_Position = clip;
     vLitFront = vec3(0.0);
     vLitBack = vec3(0.0);

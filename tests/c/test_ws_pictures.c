@@ -2,7 +2,9 @@
  * headless offscreen type (lavapipe; the PNG its connection identifier names) and to the PDF
  * type; the PNG and the rasterised PDF (pdftoppm) have the drawn colours where the primitives
  * are and the background elsewhere, and the PDF holds no image (pdfimages -list); a blue square
- * added after the last UPDATE is in both files, which CLOSE WORKSTATION updates. Links libpng
+ * added after the last UPDATE is in both files, which CLOSE WORKSTATION updates. With HLHSR on, a
+ * line at NPC z = 0 (where 2D primitives lie) under a later coplanar fill area shows on both, as
+ * lines on surfaces do. Links libpng
  * besides libphigs to read the PNG. argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -108,6 +110,56 @@ int main(int argc, char** argv) {
         CHECK(has_colour_near(&picture, (int)(0.5 * 768), (int)(768 - 0.75 * 768), 0, 0, 0, 255));
         free(picture.rgb);
         picture.rgb = NULL;
+    }
+
+    /* HLHSR on: a white line at z = 0, then a yellow fill area over it at the same depth. */
+    {
+        char png2[512], pdf2[512], ppm2[600];
+        snprintf(png2, sizeof png2, "%s/ws_pictures_coplanar.png", dir);
+        snprintf(pdf2, sizeof pdf2, "%s/ws_pictures_coplanar.pdf", dir);
+        Ppoint line_points[2] = {{0.1f, 0.3f}, {0.9f, 0.3f}};
+        Ppoint square_points[4] = {{0.3f, 0.2f}, {0.6f, 0.2f}, {0.6f, 0.4f}, {0.3f, 0.4f}};
+        Ppoint_list line = {2, line_points}, square = {4, square_points};
+        Pgcolr white = {PMODEL_RGB, {0}}, yellow = {PMODEL_RGB, {0}};
+        white.val.direct.x = white.val.direct.y = white.val.direct.z = 1;
+        yellow.val.direct.x = yellow.val.direct.y = 1;
+        open_with_handler(errors);
+        popen_struct(2);
+        pset_line_colr(&white);
+        pset_linewidth(3);
+        ppolyline(&line);
+        pset_int_style(PSTYLE_SOLID);
+        pset_int_colr(&yellow);
+        pfill_area(&square);
+        pclose_struct();
+        EXPECT_NO_ERROR(popen_ws(3, png2, PWST_OFFSCREEN));
+        EXPECT_NO_ERROR(popen_ws(4, pdf2, PWST_PDF));
+        for (Pint ws = 3; ws <= 4; ++ws) {
+            EXPECT_NO_ERROR(pset_hlhsr_mode(ws, 1));
+            EXPECT_NO_ERROR(ppost_struct(ws, 2, 0.5f));
+        }
+        EXPECT_NO_ERROR(pclose_ws(3));
+        EXPECT_NO_ERROR(pclose_ws(4));
+        pclose_phigs();
+        CHECK(read_png(png2, &picture));
+        if (picture.rgb) {
+            CHECK(has_colour_near(&picture, (int)(0.45 * 768), (int)(768 - 0.3 * 768), 0, 255, 255, 255));
+            CHECK(has_colour_near(&picture, (int)(0.45 * 768), (int)(768 - 0.35 * 768), 0, 255, 255, 0));
+            free(picture.rgb);
+            picture.rgb = NULL;
+        }
+        snprintf(command, sizeof command, "pdftoppm -r 72 -singlefile '%s' '%s/ws_pictures_coplanar'", pdf2,
+                 dir);
+        CHECK(system(command) == 0);
+        snprintf(ppm2, sizeof ppm2, "%s/ws_pictures_coplanar.ppm", dir);
+        CHECK(read_ppm(ppm2, &picture));
+        if (picture.rgb) {
+            const double side = 595.2756;
+            CHECK(has_colour_near(&picture, (int)(0.45 * side), (int)(picture.height - 0.3 * side), 1, 255,
+                                  255, 255));
+            free(picture.rgb);
+            picture.rgb = NULL;
+        }
     }
 
     /* The PDF: vectors only, and its page at 72 dpi (one pixel per point) shows the scene. */
