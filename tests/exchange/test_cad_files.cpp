@@ -15,10 +15,14 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <random>
+#include <sstream>
 
 namespace test_cad_files {
 
@@ -129,6 +133,56 @@ TEST_CASE("files: lengths are written in the model's unit and converted on read"
     CHECK_THROWS_WITH(writeCadFile(furlongs, dir / "f.step"), Catch::Contains("furlong"));
     CHECK_FALSE(std::filesystem::exists(dir / "f.step"));
     CHECK_THROWS_WITH(writeCadFile(metres, dir / "model.dxf"), Catch::Contains("unknown extension '.dxf'"));
+}
+
+TEST_CASE("files: colours are written as the model's numbers (sRGB), not re-encoded", "[exchange][files]") {
+    const auto dir = exchange_test::scratch("colours");
+    CadModel model = exchange_test::cadModelOf(exchange_test::transport());
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> unit(0.05, 0.95);
+    for (CadSurface& s : model.surfaces) s.colour = glm::dvec3(unit(random), unit(random), unit(random));
+    auto text = [](const std::filesystem::path& file) {
+        std::ostringstream all;
+        all << std::ifstream(file).rdbuf();
+        return all.str();
+    };
+    // Every colour in the file is one of the model's, to the file's precision.
+    auto isModelColour = [&](glm::dvec3 c) {
+        return std::any_of(model.surfaces.begin(), model.surfaces.end(),
+                           [&](const CadSurface& s) { return glm::length(c - *s.colour) <= 1e-6; });
+    };
+    writeCadFile(model, dir / "colours.step");
+    const std::string step = text(dir / "colours.step");
+    int found = 0;
+    for (std::size_t at = step.find("COLOUR_RGB("); at != std::string::npos;
+         at = step.find("COLOUR_RGB(", at + 1)) {
+        glm::dvec3 c;
+        const std::size_t comma = step.find(',', at);
+        REQUIRE(std::sscanf(step.c_str() + comma + 1, "%lf,%lf,%lf", &c.x, &c.y, &c.z) == 3);
+        CHECK(isModelColour(c));
+        ++found;
+    }
+    CHECK(found >= 1);
+    // IGES: colour definitions (entity 314) in percent.
+    writeCadFile(model, dir / "colours.igs");
+    const std::string iges = text(dir / "colours.igs");
+    found = 0;
+    std::istringstream lines(iges);
+    for (std::string line; std::getline(lines, line);)
+        if (line.size() >= 73 && line[72] == 'P' && line.rfind("314,", 0) == 0) {
+            // Its parameters (columns 1-64) may go on over the next line.
+            std::string parameters = line.substr(4, 60), next;
+            if (std::getline(lines, next)) parameters += next.substr(0, 64);
+            glm::dvec3 c;
+            REQUIRE(std::sscanf(parameters.c_str(), "%lf,%lf,%lf", &c.x, &c.y, &c.z) == 3);
+            CHECK(isModelColour(c / 100.0));
+            ++found;
+        }
+    CHECK(found >= 1);
+    // And back: the model's numbers.
+    const CadImport read = readCadFile(dir / "colours.step");
+    for (std::size_t i = 0; i < model.surfaces.size(); ++i)
+        CHECK(glm::length(*read.model.surfaces.at(i).colour - *model.surfaces[i].colour) <= 1e-6);
 }
 
 TEST_CASE("files: every unit the model may name is the file's unit, its lengths in it",

@@ -29,7 +29,11 @@ std::optional<glm::dvec3> colourOf(const opencascade::handle<XCAFDoc_ColorTool>&
         found = colours->GetColor(f.Current(), XCAFDoc_ColorSurf, c) ||
                 colours->GetColor(f.Current(), XCAFDoc_ColorGen, c);
     if (!found) return std::nullopt;
-    return glm::dvec3(c.Red(), c.Green(), c.Blue());
+    // The files' numbers are sRGB (OpenCASCADE keeps linear RGB inside), as our colours are:
+    // display values, drawn as they are.
+    double r = 0, g = 0, b = 0;
+    c.Values(r, g, b, Quantity_TOC_sRGB);
+    return glm::dvec3(r, g, b);
 }
 
 /// The leaves under `label` (an assembly or a part), placed by `location`.
@@ -71,7 +75,7 @@ void fillDocument(const opencascade::handle<TDocStd_Document>& document, const s
         TDataStd_Name::Set(label, part.name.c_str());
         if (part.colour)
             colours->SetColor(
-                label, Quantity_Color(part.colour->x, part.colour->y, part.colour->z, Quantity_TOC_RGB),
+                label, Quantity_Color(part.colour->x, part.colour->y, part.colour->z, Quantity_TOC_sRGB),
                 XCAFDoc_ColorSurf);
         if (format == CadFormat::Step) shapes->AddComponent(root, label, TopLoc_Location());
     }
