@@ -3,6 +3,8 @@
 
 #include "geom/Evaluate.h"
 
+#include <algorithm>
+
 namespace test_session_reduction_count {
 
 using session_test::Driver;
@@ -30,6 +32,25 @@ TEST_CASE("SURF_REDN BY COUNT: asking more knots than the wing's span has says h
     d.pickAt(geom::evaluate(d.session.models().current().find("right_wing")->surface, 0.5, 0.3), 1);
     d.run({"string 1"});
     CHECK(d.session.message().find("ONLY") == std::string::npos);
+}
+
+TEST_CASE("SURF_REDN BY COUNT, REDUCE_U&W: the prompt asks for each direction, both lose that many") {
+    Driver d("reduction_count_uw");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice SURF_REDN", "choice BY_COUNT", "choice REDUCE_U&W"});
+    const acsynt::Component* fuselage = d.session.models().current().find("fuselage");
+    REQUIRE(fuselage);
+    d.pickAt(geom::evaluate(fuselage->surface, 0.5, 0.5), 1);
+    CHECK(d.session.message() == "ENTER NUMBER OF KNOTS TO BE REMOVED IN EACH DIRECTION (U AND W)");
+    d.run({"string 2"});
+    REQUIRE(d.session.reductions().size() == 1);
+    const acsynt::ReductionRecord& r = d.session.reductions()[0];
+    CHECK(r.removedU == 2);
+    CHECK(r.removedW == 2);
+    const auto& log = d.session.log();
+    CHECK(std::any_of(log.begin(), log.end(), [](const std::string& line) {
+        return line.find("REMOVE 2 KNOTS IN U AND 2 IN W") != std::string::npos;
+    }));
 }
 
 }  // namespace test_session_reduction_count

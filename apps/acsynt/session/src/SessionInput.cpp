@@ -207,7 +207,9 @@ void Session::pick(const PickMeasure& measure) {
             core_.reductionComponent = picked->component;
             if (core_.reductionByCount)
                 prompt(std::string("ENTER NUMBER OF KNOTS TO BE REMOVED IN ") +
-                           (core_.reductionDirection == "W" ? "W DIRECTION" : "U DIRECTION"),
+                           (core_.reductionDirection == "W"   ? "W DIRECTION"
+                            : core_.reductionDirection == "U" ? "U DIRECTION"
+                                                              : "EACH DIRECTION (U AND W)"),
                        Awaiting::Count);
             else
                 prompt("ENTER TOLERANCE FOR " + comp.name, Awaiting::Tolerance);

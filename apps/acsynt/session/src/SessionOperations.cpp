@@ -191,7 +191,11 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
                                                : core_.reductionDirection == "W"
                                                    ? geom::ReductionDirection::V
                                                    : geom::ReductionDirection::Both;
-    if (count > 0) say("REMOVE " + std::to_string(count) + " KNOTS FROM EACH CROSS SECTION");
+    if (count > 0)
+        say("REMOVE " + std::to_string(count) + " KNOTS " +
+            (direction == geom::ReductionDirection::Both
+                 ? std::string("IN U AND ") + std::to_string(count) + " IN W"
+                 : std::string("FROM EACH CROSS SECTION")));
     if (showNow_) showNow_();
     geom::SurfaceReduction reduced = geom::reduceSurface(comp.surface, direction, options);
     PatchList patches = buildPatches(reduced.surface);  // may throw: nothing is changed yet
