@@ -26,6 +26,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -42,6 +43,24 @@ namespace {
 // Exit codes: 0 every input line succeeded; 1 the session could not run (a script that does not
 // parse, no Vulkan device, a file that cannot be written); 2 bad options; 3 some lines failed.
 constexpr int kExitFatal = 1, kExitUsage = 2, kExitLinesFailed = 3;
+
+/// The signal that asked the session to stop (SIGTERM, SIGINT, SIGHUP), or 0: the session stops
+/// after the line it is on and writes its summary, log and recording before it exits.
+volatile std::sig_atomic_t stopSignal = 0;
+
+void catchStopSignals() {
+    struct sigaction action {};
+    action.sa_handler = [](int signal) { stopSignal = signal; };
+    sigemptyset(&action.sa_mask);
+    for (int signal : {SIGTERM, SIGINT, SIGHUP}) sigaction(signal, &action, nullptr);
+}
+
+/// finish()'s status, or 128 + the signal that stopped the session (its files written).
+int stopped(int status) {
+    if (stopSignal == 0) return status;
+    std::cout << "stopped by signal " << int(stopSignal) << "\n";
+    return 128 + int(stopSignal);
+}
 
 struct Options {
     std::string script;
@@ -452,8 +471,9 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     if (!options.window) session.setBeforeHardcopy([&] { display.releaseImages(); });
     if (!importFirst(session, options)) return kExitFatal;
     if (!options.window) {
-        session.run();
-        return finish(session, options);
+        while (stopSignal == 0 && session.step(std::chrono::milliseconds(100))) {
+        }
+        return stopped(finish(session, options));
     }
 #ifdef ACSYNT_HAVE_WINDOW
     acsynt::WindowPresentation presentation(session, *window, display);
@@ -462,7 +482,7 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     acsynt::ViewNavigation navigation(session, [&](const phigs::WindowEvent& e) { events.deliver(e); });
     events.setEventFilter([&](const phigs::WindowEvent& e) { return navigation.handle(e); });
     try {
-        while (presentation.step(std::chrono::seconds(1))) {
+        while (stopSignal == 0 && presentation.step(std::chrono::seconds(1))) {
         }
     } catch (const std::exception& e) {
         // The operator's work so far is kept: the summary, the log and the recording.
@@ -473,7 +493,7 @@ int runSession(const Options& options, acsynt::SessionSettings settings) {
     }
     events.setEventFilter({});
 #endif
-    return finish(session, options);
+    return stopped(finish(session, options));
 }
 
 int main(int argc, char** argv) {
@@ -486,6 +506,7 @@ int main(int argc, char** argv) {
     settings.height = options->height;
     settings.outputDirectory = options->output;
     settings.stopAtFirstError = !options->window && !options->keepGoing;
+    catchStopSignals();
     try {
         return runSession(*options, settings);
     } catch (const std::exception& e) {

@@ -61,6 +61,25 @@ run openprompt 3 --script open.session --output out_open --size 320x240
 last_line_is openprompt.out "1 error in open.session"
 expect_in out_open/acsynt.log "THE SCRIPT ENDED AT THE PROMPT"
 
+# Stopped by SIGTERM (as `timeout` stops it) in a long run: the session ends after its line, the
+# summary and log are written with the lines done so far, the status is 128 + 15.
+{
+  printf 'choice FILE\nchoice READ_MODEL\nstring fighter.acm\nchoice RETURN\n'
+  for i in $(seq 1 3000); do printf 'snapshot long_%s\n' "$i"; done
+  printf 'summary after\n'
+} >long.session
+"$acsynt" --script long.session --output out_long --size 320x240 >long.out 2>long.err &
+pid=$!
+for _ in $(seq 1 100); do [ -f out_long/long_3.png ] && break; sleep 0.1; done
+kill -TERM "$pid"
+wait "$pid"
+status=$?
+[ "$status" -eq 143 ] || fail "long: exit status $status after SIGTERM, expected 143 ($(tail -2 long.err))"
+[ -f out_long/summary.txt ] || fail "long: no summary after SIGTERM"
+expect_in out_long/acsynt.log "MODEL fighter READ"
+expect_in long.out "stopped by signal 15"
+[ -f out_long/after.txt ] && fail "long: the run went on to its end after SIGTERM"
+
 # Lines no menu or device takes are errors too, each naming its line in the log.
 printf 'choice 0\nchoice FILE device 7\nstring hello\nchoice FILE\n' >ignored.session
 run ignored 3 --script ignored.session --keep-going --output out_ignored --size 320x240
