@@ -311,15 +311,24 @@ namespace {
 
 /// The normal on a collapsed edge (a pole row): next to an edge where Su vanishes, Su(u, v + h)
 /// = h Suv + O(h^2), so the normals tend to Suv x Sv, taken towards the inside of the domain
-/// (dirV), exactly rather than by stepping inside; likewise Su x Suv where Sv vanishes. Zero
-/// where neither derivative vanishes against the other, or the limit does not decide either.
+/// (dirV), exactly rather than by stepping inside; likewise Su x Suv where Sv vanishes. Su
+/// vanishes where it is below 1e-12 of Sv (rounding), or below 1e-6 of Sv and of Suv over the
+/// domain's v span: a pole row whose points agree only to single precision (a C program's
+/// Pfloat grid) leaves Su of 1e-8 in a direction of no meaning. Zero where neither derivative
+/// vanishes against the other, or the limit does not decide either.
 glm::dvec3 collapsedEdgeNormal(const Surface& surface, double u, double v, double dirU, double dirV) {
     const SurfaceDerivatives d = derivatives(surface, u, v, 2);
     const glm::dvec3 su = unitScaled(d.at(1, 0)), sv = unitScaled(d.at(0, 1)), suv = d.at(1, 1);
+    const double lu = glm::length(d.at(1, 0)), lv = glm::length(d.at(0, 1)), luv = glm::length(suv);
+    const double spanU = surface.domainEndU() - surface.domainStartU();
+    const double spanV = surface.domainEndV() - surface.domainStartV();
+    auto vanishes = [&](double small, double other, double span) {
+        return small <= 1e-12 * other || (small <= 1e-6 * other && small <= 1e-6 * luv * span);
+    };
     glm::dvec3 a(0.0), b(0.0);
-    if (glm::length(d.at(1, 0)) <= 1e-12 * glm::length(d.at(0, 1)))
+    if (vanishes(lu, lv, spanV))
         a = dirV * unitScaled(suv), b = sv;
-    else if (glm::length(d.at(0, 1)) <= 1e-12 * glm::length(d.at(1, 0)))
+    else if (vanishes(lv, lu, spanU))
         a = su, b = dirU * unitScaled(suv);
     const glm::dvec3 m = glm::cross(a, b);
     const double ml = glm::length(m);
