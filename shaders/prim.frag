@@ -105,13 +105,13 @@ void main() {
                 if (dot(n, vNormal) < 0.0) n = -n;
             } else {
                 // No normals given: the front side is the one the winding shows the viewer.
-                if (dot(n, runView.eye.xyz) < 0.0) n = -n;
+                if (dot(n, towardViewer(vWorld)) < 0.0) n = -n;
                 if (!gl_FrontFacing) n = -n;
             }
         }
         if (back) n = -n;
         vec3 world = USE_WORLD_POSITION ? vWorld : vec3(0.0);
-        colour = lit(useBack, side, world, n, runView.eye.xyz);
+        colour = lit(useBack, side, world, n, towardViewer(world));
     } else {
         colour = side;
     }

@@ -77,13 +77,13 @@ void main() {
         // The pattern cell is the colour lit, known only per fragment. The reflectance equations
         // are affine in the base colour, lit(c) = c * gain + specular: the vertices carry the gain
         // and the specular term, and the fragment shader applies them to its cell.
-        vec3 eye = runView.eye.xyz;
+        vec3 eye = towardViewer(worldPoint);
         vSpecularFront = lit(false, vec3(0.0), worldPoint, normal, eye);
         vSpecularBack = lit(DISTINGUISH_BACK, vec3(0.0), worldPoint, -normal, eye);
         vLitFront = lit(false, vec3(1.0), worldPoint, normal, eye) - vSpecularFront;
         vLitBack = lit(DISTINGUISH_BACK, vec3(1.0), worldPoint, -normal, eye) - vSpecularBack;
     } else if (VERTEX_LIGHTING) {
-        vec3 eye = runView.eye.xyz;
+        vec3 eye = towardViewer(worldPoint);
         // Each vertex's colour is a colour: clamped before it is interpolated.
         vLitFront = toRenderingModel(clamp(lit(false, colour, worldPoint, normal, eye), 0.0, 1.0));
         vLitBack = toRenderingModel(clamp(

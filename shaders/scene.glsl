@@ -18,7 +18,7 @@ const int MAX_CLIP_PLANES = 64;
 struct View {
     mat4 worldToClip;
     mat4 worldToNpc;
-    vec4 eye;   // unit direction toward the viewer, world coordinates
+    vec4 eye;   // the viewer, world coordinates: a point (w 1, perspective) or unit direction (w 0)
     vec4 clip;  // NPC z min, z max, clip back (1/0), clip front (1/0)
     vec4 clipXY;  // NPC x min, y min, x max, y max: the workstation window within the view's clip limits
 };
@@ -150,6 +150,11 @@ layout(constant_id = 16) const int SIDED_EDGES = 0;
 // vertices (else the plane of the triangle, from the world position's derivatives).
 layout(constant_id = 17) const bool FLAT_FACET_NORMALS = false;
 
+// The unit direction from `world` toward the view's viewer (V of the reflectance equations).
+vec3 towardViewer(vec3 world) {
+    return runView.eye.w > 0.5 ? normalize(runView.eye.xyz - world) : runView.eye.xyz;
+}
+
 // A positional (type 3) or spot (type 4) light at `position` seen from `world`: the unit
 // direction to it in l, and its attenuation (the caller reads the light's fields only for these
 // types, so directional lights load nothing more).
@@ -219,7 +224,7 @@ void premultipliedLight(int type, int i, vec3 world, vec3 n, vec3 eye, inout vec
 // lit() for PREMULTIPLIED_LIGHTS: the light set's lights from the lit run, unrolled as in lit().
 vec3 litPremultiplied(vec3 base, vec3 world, vec3 n) {
     const int first = 0;
-    vec3 eye = runView.eye.xyz;
+    vec3 eye = towardViewer(world);
     int count = LIGHT_SIGNATURE & 7;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
     if (count > 0) premultipliedLight((LIGHT_SIGNATURE >> 3) & 7, first, world, n, eye, diffuse, specular);

@@ -8,7 +8,9 @@
  * whose two vertex colours are random shows at its midpoint their mean with polyline shading PSD_COLOUR, its
  * first vertex's colour with PSD_NONE; and a lit square shows black with no light active, and its
  * lit colour clamped to 1 before the depth cue scales it; and a facet normal lights its facet; and
- * flat shading (PSD_NONE) fills each facet with its facet colour or the interior colour alone.
+ * flat shading (PSD_NONE) fills each facet with its facet colour or the interior colour alone;
+ * and in a perspective view the specular term takes V toward the centre of projection at each
+ * point (Phong on the raster across a triangle, flat at its centroid on paper).
  * argv[1]: a directory for the files. */
 #define _POSIX_C_SOURCE 200809L
 #include "check.h"
@@ -446,6 +448,100 @@ static void flat_colours(void) {
     }
 }
 
+static double prp[3], light_tilt;
+
+/* View 1: perspective from prp onto the unit window at the view plane z = 0 (so points there keep
+ * their x, y in NPC); light 2 directional and white, tilted light_tilt from -z toward +x. */
+static void perspective_and_tilted_light(Pint ws) {
+    Pview_rep3 rep;
+    Pint err = 0;
+    Ppoint3 vrp = {0, 0, 0};
+    Pvec3 vpn = {0, 0, 1}, vup = {0, 1, 0};
+    Pview_map3 map;
+    const double white[3] = {1, 1, 1};
+    Plight_src_bundle directional;
+    peval_view_ori_matrix3(&vrp, &vpn, &vup, &err, rep.ori_matrix);
+    map.win.x_min = 0, map.win.x_max = 1, map.win.y_min = 0, map.win.y_max = 1;
+    map.proj_vp.x_min = 0, map.proj_vp.x_max = 1, map.proj_vp.y_min = 0, map.proj_vp.y_max = 1;
+    map.proj_vp.z_min = 0, map.proj_vp.z_max = 1;
+    map.proj_type = PTYPE_PERSPECT;
+    map.proj_ref_point.x = (Pfloat)prp[0], map.proj_ref_point.y = (Pfloat)prp[1];
+    map.proj_ref_point.z = (Pfloat)prp[2];
+    map.view_plane = 0, map.back_plane = -1, map.front_plane = 1;
+    peval_view_map_matrix3(&map, &err, rep.map_matrix);
+    CHECK(err == 0);
+    rep.clip_limit = map.proj_vp;
+    rep.xy_clip = rep.back_clip = rep.front_clip = PIND_NO_CLIP;
+    EXPECT_NO_ERROR(pset_view_rep3(ws, 1, &rep));
+    directional.type = PLIGHT_DIRECTIONAL;
+    directional.rec.directional.colr = direct(white);
+    directional.rec.directional.dir.delta_x = (Pfloat)sin(light_tilt);
+    directional.rec.directional.dir.delta_y = 0;
+    directional.rec.directional.dir.delta_z = (Pfloat)-cos(light_tilt);
+    EXPECT_NO_ERROR(pset_light_src_rep(ws, 2, &directional));
+}
+
+/* ks (R.V)^e for the square's normal (0, 0, 1) at (x, y, 0): R = (sin t, 0, cos t), V toward prp. */
+static double specular_at(double x, double y, double exponent) {
+    const double v[3] = {prp[0] - x, prp[1] - y, prp[2]};
+    const double length = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const double rv = (sin(light_tilt) * v[0] + cos(light_tilt) * v[2]) / length;
+    return rv > 0 ? pow(rv, exponent) : 0;
+}
+
+/* A triangle at z = 0 lit by specular reflection alone (ks 1, white) in a perspective view from a
+ * random centre of projection: its brightness follows V at each point. */
+static void perspective_specular(void) {
+    for (int round = 0; round < 6; ++round) {
+        const double white[3] = {1, 1, 1};
+        const Pint shading = round % 2 ? PSD_NONE : PSD_NORMAL;
+        const double exponent = random_real(5, 40);
+        Prefl_props k = {0};
+        Pint active[1] = {2};
+        Pint_list on = {1, active}, off = {0, NULL};
+        Pptnorm3 v[4];
+        Pfacet_vdata_list3 vertices;
+        Pfacet_data3 facet;
+        Picture p[2];
+        prp[0] = random_real(0.2, 0.8), prp[1] = random_real(0.2, 0.8), prp[2] = random_real(1.0, 3.0);
+        light_tilt = random_real(0.0, 0.45);
+        k.specular_coef = 1, k.specular_colr = direct(white), k.specular_exp = (Pfloat)exponent;
+        /* A triangle, its centroid at (0.5, 0.5). */
+        for (int i = 0; i < 3; ++i) {
+            v[i].point.x = (Pfloat)(i == 0 ? 0.05 : i == 1 ? 0.95 : 0.5);
+            v[i].point.y = (Pfloat)(i == 2 ? 0.9 : 0.3);
+            v[i].point.z = 0;
+            v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
+        }
+        vertices.num_vertices = 3, vertices.vertex_data.ptnorms = v;
+        memset(&facet, 0, sizeof facet);
+        pdel_struct(1);
+        popen_struct(1);
+        pset_view_ind(1);
+        pset_int_style(PSTYLE_SOLID);
+        pset_int_colr(&k.specular_colr);
+        pset_refl_props(&k);
+        pset_refl_eqn(PREFL_AMB_DIFF_SPEC);
+        pset_int_shad_meth(shading);
+        pset_light_src_state(&on, &off);
+        pfill_area_set3_data(PFACET_NONE, PEDGE_NONE, PVERT_COORD_NORMAL, PMODEL_RGB, &facet, 1, NULL,
+                             &vertices);
+        pclose_struct();
+        CHECK(draw_offscreen_and_pdf_with(&files, p, perspective_and_tilted_light));
+        if (p[0].rgb && shading == PSD_NORMAL)
+            for (int i = 0; i < 3; ++i) {
+                const double x = 0.2 + 0.3 * i, s = specular_at(x, 0.45, exponent), expected[3] = {s, s, s};
+                CHECK(pixel_is(&p[0], x, 0.45, expected, "perspective specular (Phong)"));
+            }
+        if (p[1].rgb && shading == PSD_NONE) {
+            /* The vector output lights a facet once, at its centre. */
+            const double s = specular_at(0.5, 0.5, exponent), expected[3] = {s, s, s};
+            CHECK(pixel_is(&p[1], 0.5, 0.5, expected, "perspective specular (flat, on paper)"));
+        }
+        for (int i = 0; i < 2; ++i) free(p[i].rgb);
+    }
+}
+
 int main(int argc, char** argv) {
     const char* dir = argc > 1 ? argv[1] : ".";
     char errors[512];
@@ -459,6 +555,7 @@ int main(int argc, char** argv) {
     lighting_sums();
     facet_normals();
     flat_colours();
+    perspective_specular();
     pclose_phigs();
     return finish("test_plus_shading");
 }

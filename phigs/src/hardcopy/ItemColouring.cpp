@@ -59,14 +59,21 @@ glm::dvec3 unit(const glm::dvec3& v) {
 
 }  // namespace
 
-ItemColouring::ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec3& eye,
+ItemColouring::ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec4& viewer,
                              const glm::vec4& highlight)
-    : eye_(eye), highlight_(item.highlighted() ? highlight : glm::vec4(0.0f)) {
+    : viewer_(viewer), highlight_(item.highlighted() ? highlight : glm::vec4(0.0f)) {
     if (item.lightSet() >= 0 && item.lightSet() < int(list.lightSets.size()))
         lights_ = &list.lightSets[std::size_t(item.lightSet())];
     if (item.depthCue() >= 0 && item.depthCue() < int(list.depthCues.size()) &&
         list.depthCues[std::size_t(item.depthCue())].enabled)
         cue_ = &list.depthCues[std::size_t(item.depthCue())];
+}
+
+glm::dvec3 ItemColouring::towardViewer(const glm::dvec3& world) const {
+    if (viewer_.w == 0.0) return glm::dvec3(viewer_);
+    const glm::dvec3 d = glm::dvec3(viewer_) - world;
+    const double length = glm::length(d);
+    return length > 0.0 ? d / length : glm::dvec3(0, 0, 1);
 }
 
 glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::vec3 base,
@@ -77,7 +84,7 @@ glm::vec3 ItemColouring::lit(const InteriorStyleSet& interior, bool back, glm::v
     const Reflectance& k = back ? interior.backProperties : interior.properties;
     glm::dvec3 sum(0.0);
     for (const Light& light : *lights_)
-        sum += oneLight(light, model, k, glm::dvec3(base), world, normal, eye_);
+        sum += oneLight(light, model, k, glm::dvec3(base), world, normal, towardViewer(world));
     return glm::vec3(sum);
 }
 
@@ -117,7 +124,8 @@ glm::vec3 ItemColouring::facet(const InteriorStyleSet& interior, const std::vect
             facetNormal += glm::cross(vertices[i].position - vertices[0].position,
                                       vertices[i + 1].position - vertices[0].position);
         facetNormal = unit(facetNormal);
-        const glm::dvec3 towards = glm::dot(normal, normal) > 0.0 ? normal : (back ? -eye_ : eye_);
+        const glm::dvec3 eye = towardViewer(centre);
+        const glm::dvec3 towards = glm::dot(normal, normal) > 0.0 ? normal : (back ? -eye : eye);
         if (glm::dot(facetNormal, towards) < 0.0) facetNormal = -facetNormal;
     }
     if (back) facetNormal = -facetNormal;

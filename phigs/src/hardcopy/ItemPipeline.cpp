@@ -15,12 +15,6 @@ const DrawView& viewOf(const DrawList& list, const DrawItem& item) {
     return list.views.empty() ? identity : list.views[std::size_t(item.viewIndex())];
 }
 
-/// The direction toward the viewer in world coordinates (the raster's frame.views[v].eye).
-glm::dvec3 eyeOf(const DrawView& view) {
-    const glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
-    return glm::length(eye) > 0.0 ? glm::normalize(eye) : glm::dvec3(0, 0, 1);
-}
-
 }  // namespace
 
 void FacetPaint::styleFor(const InteriorStyleSet& in, int facing) {
@@ -55,7 +49,7 @@ ItemPipeline::ItemPipeline(const DrawList& list, const DrawItem& item, const Pag
       worldToNpc_(viewOf(list, item).mapping * viewOf(list, item).orientation),
       view_(viewVolume(viewOf(list, item), list)),
       model_(modelVolume(item.modelClipPlanes())),
-      colouring_(list, item, eyeOf(viewOf(list, item)), options.highlight) {
+      colouring_(list, item, viewerOf(viewOf(list, item)), options.highlight) {
     const InteriorStyleSet* interior = nullptr;
     if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
     if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) interior = &mesh->interior.get();

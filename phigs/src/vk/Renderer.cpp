@@ -104,12 +104,6 @@ gpu::Light gpuLight(const Light& light) {
     return g;
 }
 
-/// The unit direction toward the viewer of a view, in world coordinates.
-glm::vec3 eyeOf(const DrawView& view) {
-    const glm::dvec3 eye = glm::dvec3(glm::inverse(view.orientation) * glm::dvec4(0, 0, 1, 0));
-    return glm::length(eye) > 0 ? glm::vec3(glm::normalize(eye)) : glm::vec3(0, 0, 1);
-}
-
 std::string itemName(std::size_t index) {
     return "draw item " + std::to_string(index);
 }
@@ -571,6 +565,9 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                    glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
         mapping.npcToClip;
     const DrawView defaultView;
+    // A perspective view's viewer is a point (viewerOf): V varies over a surface.
+    std::vector<char> perspective;
+    for (const DrawView& v : list.views) perspective.push_back(viewerOf(v).w != 0.0);
     std::vector<gpu::DrawParams> draws;
     // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
     std::vector<int> signatures;
@@ -603,6 +600,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                                         std::to_string(item.depthCue()) + " but the list has " +
                                         std::to_string(list.depthCues.size()));
         const DrawView& view = list.views.empty() ? defaultView : list.views[item.viewIndex()];
+        const bool perspectiveView = !list.views.empty() && perspective[std::size_t(item.viewIndex())];
         const glm::dmat4 worldToPixels = npcToPixels * view.mapping * view.orientation;
         VkRect2D scissor{};
         {
@@ -689,7 +687,7 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                 } else {
                     if (shade == gpu::Flat && part.facetNormals) c.pipeline |= kFlatFacetNormals;
                     c.pipeline |= shade << kShadeShift;
-                    bool local = signature < 0 || shade == gpu::Flat;
+                    bool local = signature < 0 || shade == gpu::Flat || perspectiveView;
                     for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
                         local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
                     fragmentNeedsWorld = fragmentNeedsWorld || local;
@@ -842,7 +840,7 @@ void Renderer::addViewRuns(const DrawList& list, const WorkstationMapping& mappi
         gpu::LitRun run;
         run.view.worldToNpc = toFloat(worldToNpc);
         run.view.worldToClip = toFloat(mapping.npcToClip * worldToNpc);
-        run.view.eye = glm::vec4(eyeOf(view), 0.0f);
+        run.view.eye = glm::vec4(viewerOf(view));
         run.view.clip = glm::vec4(float(view.clipMin.z), float(view.clipMax.z), view.clipBack ? 1.0f : 0.0f,
                                   view.clipFront ? 1.0f : 0.0f);
         // What the scissor keeps, where a marker's position must lie.

@@ -29,7 +29,8 @@ public:
         glm::vec3 offset{0.0f};
     };
 
-    ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec3& eye,
+    /// `viewer`: viewerOf the item's view (a point for a perspective view, else a direction).
+    ItemColouring(const DrawList& list, const DrawItem& item, const glm::dvec4& viewer,
                   const glm::vec4& highlight);
 
     /// The colour of a facet seen from its front or back. `vertexNormals`: the vertices carry
@@ -51,8 +52,11 @@ private:
                   const glm::dvec3& normal) const;
 
     const std::vector<Light>* lights_ = nullptr;
+    /// The unit direction from `world` toward the viewer (V).
+    glm::dvec3 towardViewer(const glm::dvec3& world) const;
+
     const DepthCue* cue_ = nullptr;
-    glm::dvec3 eye_{0, 0, 1};
+    glm::dvec4 viewer_{0, 0, 1, 0};
     glm::vec4 highlight_{0.0f};
 };
 

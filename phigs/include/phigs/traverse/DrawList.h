@@ -33,6 +33,12 @@ struct DrawView {
     bool clipXY = true, clipBack = true, clipFront = true;
 };
 
+/// Where the viewer of `view` is, in world coordinates, for the reflectance equations' V: the
+/// centre of projection (w = 1) of a perspective view, the unit direction of projection toward the
+/// viewer (w = 0) of a parallel one. Both are M^-1 (0, 0, 1, 0): NPC's +z at infinity, where
+/// the mapping sends the centre of projection.
+glm::dvec4 viewerOf(const DrawView& view);
+
 /// A pattern representation with its cells' colours looked up in the colour table: `columns`
 /// cells along the pattern's x vector, `rows` along its y vector, row by row from the row at
 /// the reference point.
