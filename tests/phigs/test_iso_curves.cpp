@@ -1,7 +1,9 @@
 // Iso-parametric curves of a surface (SET PARAMETRIC SURFACE CHARACTERISTICS, style 3): over
 // random surfaces and counts, each curve runs along a row or column of the tessellation grid,
 // no row is drawn twice, a count below the rows gives that many curves, and a count beyond them
-// (up to INT_MAX, accepted at insert) gives every row once, in bounded time and memory.
+// (up to INT_MAX, accepted at insert) gives every row once, in bounded time and memory; uniform
+// placement spaces the curves evenly in parameter, non-uniform puts one at each knot and the
+// count evenly inside each knot span.
 
 #include "RandomElements.h"
 
@@ -9,7 +11,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <climits>
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -72,6 +76,45 @@ TEST_CASE("iso-curves: one per row at most, every row once for any larger count"
             if (count >= int(2 * nu)) CHECK(lines.size() == nu);
         }
     }
+}
+
+TEST_CASE("iso-curves: uniform placement evenly in parameter, non-uniform at and between the knots",
+          "[traverse][iso]") {
+    // Degree 1 in u with knots 0, 0.2, 0.3, 1 and x = u on the surface: a line of constant u
+    // lies at x = u. 20 grid steps per span: rows 0.01, 0.005 and 0.035 apart.
+    const std::vector<double> knotsU{0, 0, 0.2, 0.3, 1, 1}, knotsV{0, 0, 1, 1};
+    std::vector<glm::dvec3> points;
+    for (double x : {0.0, 0.2, 0.3, 1.0})
+        for (double y : {0.0, 1.0}) points.push_back({x, y, 0.0});
+    const geom::Surface surface(1, 1, knotsU, knotsV, 4, 2, points);
+    auto curvesAt = [&](int placement, int count) {
+        Phigs phigs;
+        phigs.open();
+        StructureStore& store = phigs.store();
+        store.openStructure(1);
+        store.insert(ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 20, 20});
+        store.insert(SurfaceCharacteristicsAttribute{3, placement, count, 0});
+        store.insert(NurbsSurfaceElement{surface, {}});
+        store.closeStructure();
+        Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+        ws.postStructure(1, 0.5);
+        const auto* mesh = primitiveIf<DrawMesh>(ws.display().items.at(0).primitive);
+        REQUIRE(mesh);
+        std::vector<double> xs;
+        for (const auto& line : mesh->mesh->isoLines) xs.push_back(mesh->mesh->positions.at(line.front()).x);
+        std::sort(xs.begin(), xs.end());
+        return xs;
+    };
+    auto near = [](const std::vector<double>& got, const std::vector<double>& want) {
+        if (got.size() != want.size()) return false;
+        for (std::size_t i = 0; i < got.size(); ++i)
+            if (std::abs(got[i] - want[i]) > 0.0176) return false;
+        return true;
+    };
+    CHECK(near(curvesAt(0, 3), {0.25, 0.5, 0.75}));
+    CHECK(near(curvesAt(1, 0), {0.2, 0.3}));
+    CHECK(near(curvesAt(1, 1), {0.1, 0.2, 0.25, 0.3, 0.65}));
+    CHECK(near(curvesAt(1, 3), {0.05, 0.1, 0.15, 0.2, 0.225, 0.25, 0.275, 0.3, 0.475, 0.65, 0.825}));
 }
 
 }  // namespace test_iso_curves

@@ -426,7 +426,10 @@ typedef union {
         Pint unused;
     } psc_2;
     struct {
-        Pcurve_placement placement; /* PCP_NON_UNIFORM: at the knots */
+        /* PCP_UNIFORM: u_count curves of constant u evenly over the domain (v_count alike);
+           PCP_NON_UNIFORM: one at each interior knot and u_count evenly inside each knot span.
+           Drawn along the nearest rows of the tessellation grid. */
+        Pcurve_placement placement;
         Pint u_count;
         Pint v_count;
     } psc_3;

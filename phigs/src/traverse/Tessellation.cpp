@@ -213,6 +213,37 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
     return mesh;
 }
 
+/// The parameters of `count` iso-curves over [a, b] (ISO 9592-4 SET PARAMETRIC SURFACE
+/// CHARACTERISTICS type 3): uniform placement spaces them evenly inside the domain; non-uniform
+/// places one at each interior knot and `count` evenly inside each knot span. At most `limit`.
+std::vector<double> isoParameters(int placement, int count, const std::vector<double>& knots, double a,
+                                  double b, std::size_t limit) {
+    std::vector<double> out;
+    if (placement != 1) {
+        for (int c = 0; c < count; ++c) out.push_back(a + (b - a) * (c + 1.0) / (count + 1.0));
+        return out;
+    }
+    std::vector<double> breaks{a};
+    for (double k : knots)
+        if (k > breaks.back() && k < b) breaks.push_back(k);
+    breaks.push_back(b);
+    for (std::size_t i = 0; i + 1 < breaks.size() && out.size() < limit; ++i) {
+        if (i > 0) out.push_back(breaks[i]);
+        for (int c = 0; c < count && out.size() < limit; ++c)
+            out.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * (c + 1.0) / (count + 1.0));
+    }
+    return out;
+}
+
+/// The index of the grid row (ascending parameters) nearest to t.
+std::uint32_t nearestRow(const std::vector<double>& rows, double t) {
+    const auto above = std::lower_bound(rows.begin(), rows.end(), t);
+    if (above == rows.begin()) return 0;
+    if (above == rows.end()) return static_cast<std::uint32_t>(rows.size() - 1);
+    const auto below = above - 1;
+    return static_cast<std::uint32_t>((t - *below <= *above - t ? below : above) - rows.begin());
+}
+
 }  // namespace
 
 MeshData tessellateSurface(const NurbsSurfaceElement& element, const ApproximationAttribute& criteria,
@@ -263,36 +294,44 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
                                             : SharedIndexList(cells());
     mesh.trianglesPerFacet = 2;  // trimming keeps or drops whole cells
     if (characteristics.style == 3) {
-        // Iso-curves through grid rows and columns nearest to evenly spaced parameters, each row
-        // once. From 2 * along curves on, every row is one (the parameters lie under half a row
-        // apart, the first within half a row of row 0): a larger count draws the same lines.
-        auto lines = [&](int count, std::uint32_t along, bool constantU) {
+        // Iso-curves through the grid rows and columns nearest to their parameters (isoParameters:
+        // uniform, or at and between the knots, which are rows), each row once. A trimmed
+        // surface's iso-curve stops where its cells are trimmed away: a step is kept when its
+        // middle is (the cells' own rule), runs of kept steps are lines.
+        auto isoLine = [&](std::uint32_t k, bool constantU) {
+            std::vector<std::uint32_t> line;
+            const std::uint32_t steps = (constantU ? nv : nu) - 1;
+            for (std::uint32_t t = 0; t < steps; ++t) {
+                const glm::dvec2 middle = constantU ? glm::dvec2(us[k], (vs[t] + vs[t + 1]) / 2)
+                                                    : glm::dvec2((us[t] + us[t + 1]) / 2, vs[k]);
+                if (!loops.empty() && !insideTrim(loops, middle)) {
+                    if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
+                    line.clear();
+                    continue;
+                }
+                if (line.empty()) line.push_back(constantU ? at(k, t) : at(t, k));
+                line.push_back(constantU ? at(k, t + 1) : at(t + 1, k));
+            }
+            if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
+        };
+        auto lines = [&](int count, const std::vector<double>& rows, bool constantU) {
+            const auto along = static_cast<std::uint32_t>(rows.size());
+            const std::vector<double>& knots = constantU ? s.knotsU : s.knotsV;
+            const double a = constantU ? s.domainStartU() : s.domainStartV();
+            const double b = constantU ? s.domainEndU() : s.domainEndV();
+            // Past two per row a larger count draws the same lines.
             count = static_cast<int>(std::min<std::int64_t>(count, 2 * std::int64_t{along}));
             std::int64_t previous = -1;
-            for (int c = 0; c < count; ++c) {
-                auto k = static_cast<std::uint32_t>(std::lround((along - 1) * (c + 1.0) / (count + 1.0)));
+            for (double t :
+                 isoParameters(characteristics.placement, count, knots, a, b, 2 * std::size_t{along})) {
+                const std::uint32_t k = nearestRow(rows, t);
                 if (k == previous) continue;
                 previous = k;
-                // A trimmed surface's iso-curve stops where its cells are trimmed away: a step
-                // is kept when its middle is (the cells' own rule), runs of kept steps are lines.
-                std::vector<std::uint32_t> line;
-                const std::uint32_t steps = (constantU ? nv : nu) - 1;
-                for (std::uint32_t t = 0; t < steps; ++t) {
-                    const glm::dvec2 middle = constantU ? glm::dvec2(us[k], (vs[t] + vs[t + 1]) / 2)
-                                                        : glm::dvec2((us[t] + us[t + 1]) / 2, vs[k]);
-                    if (!loops.empty() && !insideTrim(loops, middle)) {
-                        if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
-                        line.clear();
-                        continue;
-                    }
-                    if (line.empty()) line.push_back(constantU ? at(k, t) : at(t, k));
-                    line.push_back(constantU ? at(k, t + 1) : at(t + 1, k));
-                }
-                if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
+                isoLine(k, constantU);
             }
         };
-        lines(characteristics.curvesU, nu, true);
-        lines(characteristics.curvesV, nv, false);
+        lines(characteristics.curvesU, us, true);
+        lines(characteristics.curvesV, vs, false);
     }
     addTrimEdges(mesh, element, trimCurves, withUv);
     return mesh;

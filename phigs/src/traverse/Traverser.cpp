@@ -1042,6 +1042,7 @@ private:
                     const SurfaceCharacteristicsAttribute& c = state.surfaceCharacteristics;
                     TessellationCache::Key key{serial,  a.criteria, a.valueU,  a.valueV,
                                                c.style, c.curvesU,  c.curvesV, 0};
+                    key.isoPlacement = c.placement;
                     const std::vector<glm::dvec4> planes = detail::levelPlanes(c, state.composite);
                     for (const glm::dvec4& p : planes)
                         key.levelPlanes.insert(key.levelPlanes.end(), {p.x, p.y, p.z, p.w});

@@ -27,6 +27,7 @@ public:
         std::uint64_t colourGeneration =
             0;                              ///< meshes with indexed vertex colours depend on the colour table
         std::vector<double> levelPlanes{};  ///< level curves: their planes in modelling coordinates
+        int isoPlacement = 0;               ///< 0 uniform, 1 non-uniform (at and between the knots)
         auto operator<=>(const Key&) const = default;
     };
     /// One continuous piece of a curve element as drawn: its exact curve, its polyline and the
