@@ -341,7 +341,9 @@ TEST_CASE("a recorded surface pick that no longer shows there is refused by name
     CHECK(d.session.message() == "PICK AT -5 10 IS OFF THE 320 X 240 SCREEN");
     d.run({"view 0 95 1"});
     CHECK(d.session.message().rfind("BAD VIEW: ", 0) == 0);
-    CHECK(d.session.failedLines() == failed + 11);
+    d.run({"view 0 30 1 1e300 0 0"});
+    CHECK(d.session.message().find("BAD VIEW: the centre must lie within 1E6") != std::string::npos);
+    CHECK(d.session.failedLines() == failed + 12);
 }
 
 }  // namespace test_session_replay

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <set>
@@ -152,6 +153,9 @@ private:
         const std::string_view t = tokens_[index];
         int value = 0;
         const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+        if (ec == std::errc::result_out_of_range && end == t.data() + t.size())
+            fail(what + ": " + inQuotes(t) + " is out of range (at most " +
+                 std::to_string(std::numeric_limits<int>::max()) + ")");
         if (ec != std::errc() || end != t.data() + t.size())
             fail(what + ": " + inQuotes(t) + " is not a whole number");
         return value;

@@ -4,6 +4,9 @@
 
 #include "SessionShared.h"
 
+#include "acsynt/ModelFile.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -100,6 +103,12 @@ void Session::setView(const std::vector<std::string>& a) {
         !(v[2] <= sliderHigh[3]) || !(std::abs(v[1]) <= kMaxElevation) || !std::isfinite(v[0])) {
         fail("BAD VIEW: expected view AZIMUTH ELEVATION ZOOM [CX CY CZ], ELEVATION -89..89, ZOOM " +
              number(sliderLow[3]) + ".." + number(sliderHigh[3]));
+        return;
+    }
+    // A centre the model's own places could not reach shows nothing (and 1e300 overflows).
+    if (v.size() == 6 &&
+        !(std::max({std::abs(v[3]), std::abs(v[4]), std::abs(v[5])}) <= acsynt::kModelMaxLength)) {
+        fail("BAD VIEW: the centre must lie within 1E6 model units of the origin, as the model does");
         return;
     }
     core_.azimuth = wrapDegrees(v[0]);
