@@ -16,29 +16,34 @@ DrawItem echoItem(DrawPrimitive primitive) {
     return item;
 }
 
+/// A solid box between two NPC corners (z of the first), then its outline.
+void appendBox(DrawList& picture, const glm::dvec3& lo, const glm::dvec3& hi, const glm::dvec3& fill,
+               const glm::dvec3& outlineColour) {
+    const double z = lo.z;
+    const std::vector<glm::dvec3> corners = {
+        {lo.x, lo.y, z}, {hi.x, lo.y, z}, {hi.x, hi.y, z}, {lo.x, hi.y, z}};
+    DrawFillArea box;
+    box.contours = {corners};
+    InteriorStyleSet interior;
+    interior.style = InteriorStyle::Solid;
+    interior.colour = glm::vec3(fill);
+    box.interior = interior;
+    picture.items.push_back(echoItem(std::move(box)));
+    DrawPolyline outline;
+    std::vector<glm::dvec3> closed = corners;
+    closed.push_back(corners.front());
+    outline.points = closed;
+    outline.style = LineStyle{glm::vec3(outlineColour)};
+    picture.items.push_back(echoItem(std::move(outline)));
+}
+
 void appendStringEcho(DrawList& picture, const StringEchoArea& echo, const WorkstationMapping& mapping,
                       const EchoStyle& style) {
     const EchoVolume& a = echo.area;
     const double z = style.npcZ;
     const glm::dvec3 lo = mapping.pixelsToNpc({a.xmin, a.ymax}, z);  // bottom left
     const glm::dvec3 hi = mapping.pixelsToNpc({a.xmax, a.ymin}, z);  // top right
-    const std::vector<glm::dvec3> corners = {
-        {lo.x, lo.y, z}, {hi.x, lo.y, z}, {hi.x, hi.y, z}, {lo.x, hi.y, z}};
-
-    DrawFillArea box;
-    box.contours = {corners};
-    InteriorStyleSet boxInterior;
-    boxInterior.style = InteriorStyle::Solid;
-    boxInterior.colour = glm::vec3(style.box);
-    box.interior = boxInterior;
-    picture.items.push_back(echoItem(std::move(box)));
-
-    DrawPolyline outline;
-    std::vector<glm::dvec3> closed = corners;
-    closed.push_back(corners.front());
-    outline.points = closed;
-    outline.style = LineStyle{glm::vec3(style.outline)};
-    picture.items.push_back(echoItem(std::move(outline)));
+    appendBox(picture, lo, hi, style.box, style.outline);
 
     // Cap height 45 % of the area, from a quarter of that height in from the left edge.
     const double height = std::abs(hi.y - lo.y) * 0.45;
@@ -71,22 +76,7 @@ void appendShapes(DrawList& picture, const std::vector<detail::EchoShape>& shape
             picture.items.push_back(echoItem(std::move(text)));
             continue;
         }
-        const glm::dvec3 lo = glm::min(s.a, s.b), hi = glm::max(s.a, s.b);
-        const std::vector<glm::dvec3> corners = {
-            {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}};
-        DrawFillArea box;
-        box.contours = {corners};
-        InteriorStyleSet interior;
-        interior.style = InteriorStyle::Solid;
-        interior.colour = glm::vec3(s.colour);
-        box.interior = interior;
-        picture.items.push_back(echoItem(std::move(box)));
-        DrawPolyline outline;
-        std::vector<glm::dvec3> closed = corners;
-        closed.push_back(corners.front());
-        outline.points = closed;
-        outline.style = LineStyle{glm::vec3(style.outline)};
-        picture.items.push_back(echoItem(std::move(outline)));
+        appendBox(picture, glm::min(s.a, s.b), glm::max(s.a, s.b), s.colour, style.outline);
     }
 }
 
