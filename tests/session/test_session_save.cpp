@@ -296,6 +296,12 @@ TEST_CASE("SAVE MODEL, ARCHIVE: a failed write keeps the previous file, an archi
         {"choice FILE", "choice READ_MODEL", "string transport.acm", "choice SAVE_MODEL", "string keep.acs"});
     const std::string kept = text(out / "keep.acs");
     REQUIRE(kept.find("model transport") != std::string::npos);
+    // Read back by its bare name: not where files are read from, and the message says where it is.
+    d.run({"choice READ_MODEL", "string keep.acs"});
+    CHECK(d.session.message() ==
+          "FILE keep.acs IS NOT IN THE WORKING DIRECTORY OR THE DATA FOLDERS; THE "
+          "OUTPUT DIRECTORY HAS IT: NAME IT " +
+              (out / "keep.acs").string());
 
     // The write fails (its temporary name is taken by a directory): the old file stays whole and
     // no partial file is left.

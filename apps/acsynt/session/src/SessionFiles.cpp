@@ -95,6 +95,14 @@ std::filesystem::path Session::findInput(const std::string& name) const {
     if (path.is_absolute() || std::filesystem::exists(path)) return path;
     for (const auto& dir : core_.settings.searchPath)
         if (std::filesystem::exists(dir / path)) return dir / path;
+    // Files are read from the working directory and the data folders, written to the output
+    // directory: a file the session wrote is named by its path there.
+    const std::filesystem::path written = core_.settings.outputDirectory / path;
+    if (std::filesystem::exists(written))
+        throw std::invalid_argument("FILE " + name +
+                                    " IS NOT IN THE WORKING DIRECTORY OR THE DATA FOLDERS; THE OUTPUT "
+                                    "DIRECTORY HAS IT: NAME IT " +
+                                    written.string());
     return path;
 }
 
