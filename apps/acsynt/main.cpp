@@ -52,6 +52,9 @@ void catchStopSignals() {
     struct sigaction action {};
     action.sa_handler = [](int signal) { stopSignal = signal; };
     sigemptyset(&action.sa_mask);
+    // A second signal stops the process at once (a line that does not end); calls the first
+    // interrupts go on.
+    action.sa_flags = SA_RESETHAND | SA_RESTART;
     for (int signal : {SIGTERM, SIGINT, SIGHUP}) sigaction(signal, &action, nullptr);
 }
 

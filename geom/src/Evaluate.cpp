@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace geom {
@@ -309,35 +310,57 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
 
 namespace {
 
+/// The largest absolute coordinate.
+double largestCoordinate(const glm::dvec3& a) {
+    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+}
+
+/// Whether `t` is an end of a clamped knot vector (degree p, count coefficients) and which row of
+/// coefficients the edge there takes: 0 or count - 1; none otherwise.
+std::optional<std::size_t> clampedEdge(const std::vector<double>& knots, int p, std::size_t count, double t) {
+    const auto q = static_cast<std::size_t>(p);
+    if (t == knots[q] && knots[0] == knots[q]) return 0;
+    if (t == knots[count] && knots[count] == knots[count + q]) return count - 1;
+    return std::nullopt;
+}
+
+/// Whether the edge isocurve at `t` (v when `alongU`: the row of points varying in u) is a pole:
+/// its control points in one place to 1e-6 of their size or of their distance to the next row (a
+/// C program's Pfloat grid leaves them apart by single-precision rounding, and Su there a
+/// derivative of that size in a direction of no meaning).
+bool poleRow(const Surface& s, bool alongU, double t) {
+    const std::optional<std::size_t> edge = alongU ? clampedEdge(s.knotsV, s.degreeV, s.countV, t)
+                                                   : clampedEdge(s.knotsU, s.degreeU, s.countU, t);
+    if (!edge) return false;
+    const std::size_t n = alongU ? s.countU : s.countV, other = alongU ? s.countV : s.countU;
+    const std::size_t next = *edge == 0 ? 1 : *edge - 1;
+    auto at = [&](std::size_t k, std::size_t row) { return alongU ? s.point(k, row) : s.point(row, k); };
+    const glm::dvec3 first = at(0, *edge);
+    double spread = 0.0, size = largestCoordinate(first);
+    for (std::size_t k = 0; k < n; ++k) {
+        spread = std::max(spread, largestCoordinate(at(k, *edge) - first));
+        if (other > 1) size = std::max(size, largestCoordinate(at(k, next) - at(k, *edge)));
+    }
+    return spread <= 1e-6 * size;
+}
+
 /// The normal on a collapsed edge (a pole row): next to an edge where Su vanishes, Su(u, v + h)
 /// = h Suv + O(h^2), so the normals tend to Suv x Sv, taken towards the inside of the domain
 /// (dirV), exactly rather than by stepping inside; likewise Su x Suv where Sv vanishes. Su
-/// vanishes where it is below 1e-12 of Sv (rounding), or below 1e-6 of Sv and of Suv over the
-/// domain's v span: a pole row whose points agree only to single precision (a C program's
-/// Pfloat grid) leaves Su of 1e-8 in a direction of no meaning. Zero where neither derivative
-/// vanishes against the other, or the limit does not decide either.
+/// vanishes where it is below 1e-12 of Sv (rounding) or on a pole row (poleRow). Zero where
+/// neither vanishes, or the limit does not decide either.
 glm::dvec3 collapsedEdgeNormal(const Surface& surface, double u, double v, double dirU, double dirV) {
     const SurfaceDerivatives d = derivatives(surface, u, v, 2);
     const glm::dvec3 su = unitScaled(d.at(1, 0)), sv = unitScaled(d.at(0, 1)), suv = d.at(1, 1);
-    const double lu = glm::length(d.at(1, 0)), lv = glm::length(d.at(0, 1)), luv = glm::length(suv);
-    const double spanU = surface.domainEndU() - surface.domainStartU();
-    const double spanV = surface.domainEndV() - surface.domainStartV();
-    auto vanishes = [&](double small, double other, double span) {
-        return small <= 1e-12 * other || (small <= 1e-6 * other && small <= 1e-6 * luv * span);
-    };
+    const double lu = glm::length(d.at(1, 0)), lv = glm::length(d.at(0, 1));
     glm::dvec3 a(0.0), b(0.0);
-    if (vanishes(lu, lv, spanV))
+    if (lu <= 1e-12 * lv || poleRow(surface, true, v))
         a = dirV * unitScaled(suv), b = sv;
-    else if (vanishes(lv, lu, spanU))
+    else if (lv <= 1e-12 * lu || poleRow(surface, false, u))
         a = su, b = dirU * unitScaled(suv);
     const glm::dvec3 m = glm::cross(a, b);
     const double ml = glm::length(m);
     return ml > 1e-8 * glm::length(a) * glm::length(b) && std::isfinite(ml) ? m / ml : glm::dvec3(0.0);
-}
-
-/// The largest absolute coordinate.
-double largestCoordinate(const glm::dvec3& a) {
-    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
 }
 
 /// Whether neither derivative is below 1e-6 of the other (by largest coordinate, which neither
@@ -362,11 +385,26 @@ glm::dvec3 crossNormal(const glm::dvec3& su, const glm::dvec3& sv) {
     return glm::dvec3(0.0);
 }
 
+/// Whether (u, v) lies on a pole row of the surface (poleRow), for a valid surface.
+bool onPoleRow(const Surface& surface, double u, double v) {
+    if (surface.knotsU.size() != surface.countU + surface.degreeU + 1 ||
+        surface.knotsV.size() != surface.countV + surface.degreeV + 1 ||
+        surface.points.size() != surface.countU * surface.countV)
+        return false;
+    return poleRow(surface, true, v) || poleRow(surface, false, u);
+}
+
 }  // namespace
 
 glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, const glm::dvec3& su,
                                  const glm::dvec3& sv) {
-    if (const glm::dvec3 n = crossNormal(su, sv); comparable(su, sv) && n != glm::dvec3(0.0)) return n;
+    // On a domain edge the derivatives may be comparable and still mean nothing (a pole row whose
+    // points agree to single precision far from the origin): those go the long way.
+    const bool edge = u == surface.domainStartU() || u == surface.domainEndU() ||
+                      v == surface.domainStartV() || v == surface.domainEndV();
+    if (const glm::dvec3 n = crossNormal(su, sv);
+        comparable(su, sv) && n != glm::dvec3(0.0) && (!edge || !onPoleRow(surface, u, v)))
+        return n;
     // Only the degenerate case reads the surface.
     detail::checkShape(surface, "normalFromDerivatives");
     u = detail::checkedParameter(u, surface.domainStartU(), surface.domainEndU(), "normalFromDerivatives",
@@ -377,8 +415,8 @@ glm::dvec3 normalFromDerivatives(const Surface& surface, double u, double v, con
     // the control points themselves (a patch tree, at any scale but about 1) leaves rounding noise
     // of arbitrary direction in the vanishing one. The per-point path takes them about a control
     // point and keeps their digits; the answer is then the one normal() gives.
-    // A collapsed edge first: it answers only where one of those is below 1e-12 of the other,
-    // whose direction is then no more than rounding.
+    // A collapsed edge first: it answers only where one of those vanishes against the other
+    // (collapsedEdgeNormal: rounding, or a pole row agreeing to single precision).
     const double u0 = surface.domainStartU(), u1 = surface.domainEndU();
     const double v0 = surface.domainStartV(), v1 = surface.domainEndV();
     const double dirU = (u - u0) <= (u1 - u) ? 1.0 : -1.0;

@@ -96,12 +96,14 @@ void evaluateRow(const Surface& s, const DirectionBasis& bv, const std::vector<g
         }
         const glm::dvec3 cr = glm::cross(su, sv);
         const double len2 = glm::dot(cr, cr);
-        // Derivatives a million times apart (by squares, 1e-12): the smaller's direction may mean
-        // nothing (a pole row), which normalFromDerivatives decides.
+        // Derivatives a million times apart (by squares, 1e-12), or any on a domain edge (a pole
+        // row): the smaller's direction may mean nothing, which normalFromDerivatives decides.
         const double su2 = glm::dot(su, su), sv2 = glm::dot(sv, sv);
         const bool comparable = std::min(su2, sv2) > 1e-12 * std::max(su2, sv2);
+        const bool edge =
+            uc == s.domainStartU() || uc == s.domainEndU() || vc == s.domainStartV() || vc == s.domainEndV();
         glm::dvec3 n;
-        if (comparable && len2 > 1e-24 * su2 * sv2 && len2 > 0.0)
+        if (comparable && !edge && len2 > 1e-24 * su2 * sv2 && len2 > 0.0)
             n = cr * (1.0 / std::sqrt(len2));
         else
             n = normalFromDerivatives(s, uc, vc, su, sv);

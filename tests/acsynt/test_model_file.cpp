@@ -160,7 +160,7 @@ TEST_CASE("every fault in a description names the file, the line and the reason"
     checkError(withLine(7, "  points 3"), 7, "4 to");
     checkError(withLine(7, "  points 8.5"), 7, "not a whole number");
     checkError(withLine(7, "  points 1000000000000"), 7,
-               "'1000000000000' is out of range (at most 2147483647)");
+               "'1000000000000' is out of range (-2147483648 to 2147483647)");
     checkError(withLine(8, "  sections 5"), 13, "declares 5 sections but lists 4 stations");
     checkError(withLine(8, "  sections 3"), 8, "4 to");
     checkError(withLine(8, "  # no sections"), 13, "lacks 'sections'");

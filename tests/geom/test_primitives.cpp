@@ -179,13 +179,15 @@ TEST_CASE("normals at a pole row stored in single precision are the pole's, on e
     // A C program hands its grid over as Pfloat homogeneous points: the pole row's points then
     // agree to 1e-8 only, and Su there was a derivative of 1e-8 in a direction of no meaning,
     // taken for the normal's (a black spot at each pole of a shaded sphere). Spheres of radius
-    // 1e-2..1e2 up to 10 radii from the origin, their homogeneous points rounded to float: the
+    // 1e-2..1e2 from 1 to 1,000 radii from the origin, their homogeneous points rounded to float: the
     // normals at the poles, per point, on a grid and in the adaptive mesh, are the axis's.
     std::mt19937 rng(87);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 30; ++trial) {
         const double r = std::pow(10.0, -2.0 + 4.0 * unit(rng));
-        const glm::dvec3 centre = 10.0 * r * glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5);
+        const glm::dvec3 centre =
+            std::pow(10.0, 3.0 * unit(rng)) * r *
+            glm::normalize(glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
         Surface sphere = makeSphere(r);
         for (std::size_t k = 0; k < sphere.points.size(); ++k) {
             const double w = sphere.weights.empty() ? 1.0 : sphere.weights[k];

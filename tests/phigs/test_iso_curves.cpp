@@ -117,4 +117,35 @@ TEST_CASE("iso-curves: uniform placement evenly in parameter, non-uniform at and
     CHECK(near(curvesAt(1, 3), {0.05, 0.1, 0.15, 0.2, 0.225, 0.25, 0.275, 0.3, 0.475, 0.65, 0.825}));
 }
 
+TEST_CASE("iso-curves: many spans and few rows each still get theirs, up to the last span",
+          "[traverse][iso]") {
+    // 20 spans of degree 1, one grid step each (21 rows at the knots): non-uniform placement with
+    // 3 per span asks for 79 parameters, each landing on a knot row: all 21 rows are drawn.
+    std::vector<double> knotsU{0};
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i <= 20; ++i) {
+        knotsU.push_back(i / 20.0);
+        for (double y : {0.0, 1.0}) points.push_back({i / 20.0, y, 0.0});
+    }
+    knotsU.push_back(1.0);
+    const geom::Surface surface(1, 1, knotsU, {0, 0, 1, 1}, 21, 2, points);
+    Phigs phigs;
+    phigs.open();
+    StructureStore& store = phigs.store();
+    store.openStructure(1);
+    store.insert(ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 1, 1});
+    store.insert(SurfaceCharacteristicsAttribute{3, 1, 3, 0});
+    store.insert(NurbsSurfaceElement{surface, {}});
+    store.closeStructure();
+    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
+    ws.postStructure(1, 0.5);
+    const auto* mesh = primitiveIf<DrawMesh>(ws.display().items.at(0).primitive);
+    REQUIRE(mesh);
+    std::set<long> rows;
+    for (const auto& line : mesh->mesh->isoLines)
+        rows.insert(std::lround(20.0 * mesh->mesh->positions.at(line.front()).x));
+    CHECK(rows.size() == 21);
+    CHECK(mesh->mesh->isoLines.size() == 21);
+}
+
 }  // namespace test_iso_curves

@@ -70,7 +70,8 @@ expect_in out_open/acsynt.log "THE SCRIPT ENDED AT THE PROMPT"
 } >long.session
 "$acsynt" --script long.session --output out_long --size 320x240 >long.out 2>long.err &
 pid=$!
-for _ in $(seq 1 100); do [ -f out_long/long_3.png ] && break; sleep 0.1; done
+for _ in $(seq 1 600); do [ -f out_long/long_3.png ] && break; sleep 0.1; done
+[ -f out_long/long_3.png ] || fail "long: no third picture within 60 s"
 kill -TERM "$pid"
 wait "$pid"
 status=$?

@@ -2,6 +2,8 @@
 // gives it back bit for bit; a name already loaded is read under a new name, said on the line.
 #include "SessionTestSupport.h"
 
+#include <unistd.h>
+
 #include "acsynt/ModelFile.h"
 #include "acsynt/session/ModelStateFile.h"
 #include "geom/Evaluate.h"
@@ -303,16 +305,19 @@ TEST_CASE("SAVE MODEL, ARCHIVE: a failed write keeps the previous file, an archi
           "OUTPUT DIRECTORY HAS IT: NAME IT " +
               (out / "keep.acs").string());
 
-    // The write fails (its temporary name is taken by a directory): the old file stays whole and
-    // no partial file is left.
-    std::filesystem::create_directories(out / "keep.writing.acs");
-    std::ofstream(out / "keep.writing.acs" / "x") << "x";
+    // The write fails (a file has the name of its temporary folder): the old file stays whole
+    // and no partial file is left.
+    const std::filesystem::path blocker = out / (".keep.acs.writing-" + std::to_string(::getpid()));
+    std::ofstream(blocker) << "x";
     d.run({"choice READ_MODEL", "string fighter.acm", "choice SAVE_MODEL", "string keep.acs"});
     CHECK(d.session.message() == "CANNOT WRITE " + (out / "keep.acs").string());
     CHECK(text(out / "keep.acs") == kept);
-    std::filesystem::remove_all(out / "keep.writing.acs");
+    std::filesystem::remove(blocker);
     for (const auto& entry : std::filesystem::directory_iterator(out))
         CHECK(entry.path().filename().string().find(".writing") == std::string::npos);
+    // Names with a leading "./" are the session's own files too.
+    d.run({"choice SAVE_MODEL", "string ./acsynt.log"});
+    CHECK(d.session.message().find("IS THE SESSION'S OWN") != std::string::npos);
 
     // The session's own summary and log are refused as names.
     for (const char* reserved : {"summary.txt", "acsynt.log"}) {

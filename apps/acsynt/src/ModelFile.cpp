@@ -154,7 +154,8 @@ private:
         int value = 0;
         const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
         if (ec == std::errc::result_out_of_range && end == t.data() + t.size())
-            fail(what + ": " + inQuotes(t) + " is out of range (at most " +
+            fail(what + ": " + inQuotes(t) + " is out of range (" +
+                 std::to_string(std::numeric_limits<int>::min()) + " to " +
                  std::to_string(std::numeric_limits<int>::max()) + ")");
         if (ec != std::errc() || end != t.data() + t.size())
             fail(what + ": " + inQuotes(t) + " is not a whole number");

@@ -187,17 +187,23 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
                     "workstation " + std::to_string(workstation_) + " has no input source connected");
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
     requested_ = &d;  // its echo shows while the request waits
+    // The request's echo goes when it ends, by a throw too (a bad script line); a failure to show
+    // that is no reason to lose the request's own outcome.
     struct Clear {
-        const InputDevice*& requested;
-        ~Clear() { requested = nullptr; }
-    } clear{requested_};
+        WorkstationInput& input;
+        ~Clear() {
+            input.requested_ = nullptr;
+            try {
+                input.echoChanged();
+            } catch (...) {
+            }
+        }
+    } clear{*this};
     echoChanged();
     for (;;) {
         const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);
         if (p == Pumped::Satisfied || p == Pumped::Broke) break;
     }
-    requested_ = nullptr;
-    echoChanged();  // the request's echo goes
     return result;
 }
 

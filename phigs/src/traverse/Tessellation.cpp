@@ -213,26 +213,42 @@ MeshData adaptiveMesh(const NurbsSurfaceElement& element, double tolerance, bool
     return mesh;
 }
 
-/// The parameters of `count` iso-curves over [a, b] (ISO 9592-4 SET PARAMETRIC SURFACE
-/// CHARACTERISTICS type 3): uniform placement spaces them evenly inside the domain; non-uniform
-/// places one at each interior knot and `count` evenly inside each knot span. At most `limit`.
-std::vector<double> isoParameters(int placement, int count, const std::vector<double>& knots, double a,
-                                  double b, std::size_t limit) {
-    std::vector<double> out;
+/// The closest two grid rows (ascending parameters) in [from, to] lie; to - from where fewer than
+/// two lie there.
+double closestRows(const std::vector<double>& rows, double from, double to) {
+    double gap = to - from;
+    auto r = std::lower_bound(rows.begin(), rows.end(), from);
+    for (; r != rows.end() && r + 1 != rows.end() && *(r + 1) <= to; ++r)
+        if (*(r + 1) > *r) gap = std::min(gap, *(r + 1) - *r);
+    return gap;
+}
+
+/// Calls `at(t)` for the parameters of `count` iso-curves over [a, b] (ISO 9592-4 SET PARAMETRIC
+/// SURFACE CHARACTERISTICS type 3): uniform placement spaces them evenly inside the domain;
+/// non-uniform places one at each interior knot and `count` evenly inside each knot span. A
+/// count spaced closer than half the closest grid rows there reaches every row a larger one
+/// would: it is taken at that spacing (and at most 4e6 a run), so any count costs about the grid.
+template <class At>
+void forEachIsoParameter(int placement, int count, const std::vector<double>& knots,
+                         const std::vector<double>& rows, double a, double b, At&& at) {
+    auto evenly = [&](double from, double to) {
+        const double gap = closestRows(rows, from, to);
+        const double dense = gap > 0.0 ? 2.0 * (to - from) / gap + 1.0 : 1.0;
+        const double n = std::min<double>(count, std::min(dense, 4e6));
+        for (int c = 0; c < static_cast<int>(n); ++c) at(from + (to - from) * (c + 1.0) / (n + 1.0));
+    };
     if (placement != 1) {
-        for (int c = 0; c < count; ++c) out.push_back(a + (b - a) * (c + 1.0) / (count + 1.0));
-        return out;
+        evenly(a, b);
+        return;
     }
-    std::vector<double> breaks{a};
+    double from = a;
     for (double k : knots)
-        if (k > breaks.back() && k < b) breaks.push_back(k);
-    breaks.push_back(b);
-    for (std::size_t i = 0; i + 1 < breaks.size() && out.size() < limit; ++i) {
-        if (i > 0) out.push_back(breaks[i]);
-        for (int c = 0; c < count && out.size() < limit; ++c)
-            out.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * (c + 1.0) / (count + 1.0));
-    }
-    return out;
+        if (k > from && k < b) {
+            evenly(from, k);
+            at(k);
+            from = k;
+        }
+    evenly(from, b);
 }
 
 /// The index of the grid row (ascending parameters) nearest to t.
@@ -315,20 +331,16 @@ MeshData tessellateSurface(const NurbsSurfaceElement& element, const Approximati
             if (line.size() >= 2) mesh.isoLines.push_back(std::move(line));
         };
         auto lines = [&](int count, const std::vector<double>& rows, bool constantU) {
-            const auto along = static_cast<std::uint32_t>(rows.size());
             const std::vector<double>& knots = constantU ? s.knotsU : s.knotsV;
             const double a = constantU ? s.domainStartU() : s.domainStartV();
             const double b = constantU ? s.domainEndU() : s.domainEndV();
-            // Past two per row a larger count draws the same lines.
-            count = static_cast<int>(std::min<std::int64_t>(count, 2 * std::int64_t{along}));
-            std::int64_t previous = -1;
-            for (double t :
-                 isoParameters(characteristics.placement, count, knots, a, b, 2 * std::size_t{along})) {
+            std::vector<char> drawn(rows.size(), 0);
+            forEachIsoParameter(characteristics.placement, count, knots, rows, a, b, [&](double t) {
                 const std::uint32_t k = nearestRow(rows, t);
-                if (k == previous) continue;
-                previous = k;
+                if (drawn[k]) return;
+                drawn[k] = 1;
                 isoLine(k, constantU);
-            }
+            });
         };
         lines(characteristics.curvesU, us, true);
         lines(characteristics.curvesV, vs, false);

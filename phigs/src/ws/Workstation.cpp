@@ -99,7 +99,14 @@ void Workstation::outputDestroyed(WorkstationOutput* output) {
 
 void Workstation::closeOutput() {
     if (!output_) return;
-    update(Regeneration::Perform);  // CLOSE WORKSTATION updates the workstation first
+    // CLOSE WORKSTATION updates the workstation first; where that fails (a network grown past a
+    // limit since), the output still gets the picture it had, and the failure is reported.
+    try {
+        update(Regeneration::Perform);
+    } catch (...) {
+        if (pictured_) output_->close(picture_);
+        throw;
+    }
     output_->close(shownPicture());
 }
 

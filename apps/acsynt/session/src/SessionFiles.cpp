@@ -17,6 +17,8 @@
 #include "phigs/view/ViewMatrices.h"
 #include "phigs/ws/EchoStructures.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -108,21 +110,30 @@ std::filesystem::path Session::findInput(const std::string& name) const {
 
 namespace {
 
-/// Writes `path` through `write(temporary)` into a sibling file with the same extension, renamed
-/// over `path` only when the write succeeded: a failed save or export leaves the previous file
-/// as it was and no partial one.
+/// Writes `path` through `write(temporary)`, the temporary a file of the same name in a folder of
+/// this process's own beside it (a writer that records the file's name, as IGES does, records
+/// the final one), renamed over `path` only when the write succeeded: a failed save or export
+/// leaves the previous file as it was and no partial one. An error names `path`.
 template <class Write>
 void replaceWhole(const std::filesystem::path& path, Write&& write) {
-    const std::filesystem::path temporary =
-        path.parent_path() / (path.stem().string() + ".writing" + path.extension().string());
+    const std::filesystem::path folder =
+        path.parent_path() / ("." + path.filename().string() + ".writing-" + std::to_string(::getpid()));
+    const std::filesystem::path temporary = folder / path.filename();
     std::error_code ignored;
     try {
-        std::filesystem::remove(temporary, ignored);
+        std::filesystem::create_directory(folder);  // throws where something else has the name
         write(temporary);
         std::filesystem::rename(temporary, path);
-    } catch (...) {
-        std::filesystem::remove(temporary, ignored);
-        throw;
+        std::filesystem::remove(folder, ignored);
+    } catch (const std::exception& e) {
+        if (std::filesystem::is_directory(folder, ignored)) std::filesystem::remove_all(folder, ignored);
+        // The message names the file asked for, not the temporary.
+        std::string message = e.what();
+        for (std::size_t at = message.find(temporary.string()); at != std::string::npos;
+             at = message.find(temporary.string(), at + path.string().size()))
+            message.replace(at, temporary.string().size(), path.string());
+        if (message.find(path.string()) == std::string::npos) message = path.string() + ": " + message;
+        throw std::runtime_error(message);
     }
 }
 
@@ -138,9 +149,10 @@ std::filesystem::path Session::outputPath(const std::string& name, bool summary)
             "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
     requireNameLengths(path, "OUTPUT FILE");
     // The session writes these itself at its end, over whatever a command put there.
-    if ((path == "summary.txt" && !summary) || path == "acsynt.log")
+    const std::filesystem::path plain = path.lexically_normal();
+    if ((plain == "summary.txt" && !summary) || plain == "acsynt.log")
         throw std::invalid_argument("OUTPUT FILE '" + name + "' IS THE SESSION'S OWN " +
-                                    (path == "summary.txt" ? "SUMMARY" : "LOG") + ": CHOOSE ANOTHER NAME");
+                                    (plain == "summary.txt" ? "SUMMARY" : "LOG") + ": CHOOSE ANOTHER NAME");
     const std::filesystem::path full = core_.settings.outputDirectory / path;
     // A symbolic link inside the directory (to a folder or as the file) must not lead out of it.
     auto inside = std::filesystem::weakly_canonical(core_.settings.outputDirectory);

@@ -49,8 +49,10 @@ void Session::panView(glm::dvec2 pixels) {
     const glm::dvec3 n = obliqueDirection();
     const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), n));
     const glm::dvec3 up = glm::cross(n, right);
-    core_.viewCentre =
-        core_.viewCentre.value_or((lo + hi) / 2.0) - pixels.x * perPixel * right + pixels.y * perPixel * up;
+    // Within the places a view line may name (setView), so the recording replays.
+    core_.viewCentre = glm::clamp(
+        core_.viewCentre.value_or((lo + hi) / 2.0) - pixels.x * perPixel * right + pixels.y * perPixel * up,
+        glm::dvec3(-acsynt::kModelMaxLength), glm::dvec3(acsynt::kModelMaxLength));
     navigated();
 }
 
