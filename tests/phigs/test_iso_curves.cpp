@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -23,15 +25,17 @@ using namespace phigs;
 
 namespace {
 
-/// The iso-lines (grid index lists) of one surface drawn with `curvesU` iso-curves of constant u
-/// and none of constant v, and the number of grid positions.
-std::vector<std::vector<std::uint32_t>> isoLinesOf(const geom::Surface& surface, int curvesU,
-                                                   std::size_t& positions) {
+/// The mesh of one surface drawn with these characteristics (and approximation criteria, when
+/// given) on its own workstation.
+std::shared_ptr<const MeshData> meshOf(const geom::Surface& surface,
+                                       const SurfaceCharacteristicsAttribute& characteristics,
+                                       std::optional<ApproximationAttribute> approximation = std::nullopt) {
     Phigs phigs;
     phigs.open();
     StructureStore& store = phigs.store();
     store.openStructure(1);
-    store.insert(SurfaceCharacteristicsAttribute{3, 0, curvesU, 0});
+    if (approximation) store.insert(*approximation);
+    store.insert(characteristics);
     store.insert(NurbsSurfaceElement{surface, {}});
     store.closeStructure();
     Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
@@ -41,8 +45,16 @@ std::vector<std::vector<std::uint32_t>> isoLinesOf(const geom::Surface& surface,
     const auto* mesh = primitiveIf<DrawMesh>(list.items[0].primitive);
     REQUIRE(mesh);
     REQUIRE(mesh->mesh);
-    positions = mesh->mesh->positions.size();
-    return {mesh->mesh->isoLines.begin(), mesh->mesh->isoLines.end()};
+    return mesh->mesh;
+}
+
+/// The iso-lines (grid index lists) of one surface drawn with `curvesU` iso-curves of constant u
+/// and none of constant v, and the number of grid positions.
+std::vector<std::vector<std::uint32_t>> isoLinesOf(const geom::Surface& surface, int curvesU,
+                                                   std::size_t& positions) {
+    const auto mesh = meshOf(surface, SurfaceCharacteristicsAttribute{3, 0, curvesU, 0});
+    positions = mesh->positions.size();
+    return {mesh->isoLines.begin(), mesh->isoLines.end()};
 }
 
 }  // namespace
@@ -88,20 +100,11 @@ TEST_CASE("iso-curves: uniform placement evenly in parameter, non-uniform at and
         for (double y : {0.0, 1.0}) points.push_back({x, y, 0.0});
     const geom::Surface surface(1, 1, knotsU, knotsV, 4, 2, points);
     auto curvesAt = [&](int placement, int count) {
-        Phigs phigs;
-        phigs.open();
-        StructureStore& store = phigs.store();
-        store.openStructure(1);
-        store.insert(ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 20, 20});
-        store.insert(SurfaceCharacteristicsAttribute{3, placement, count, 0});
-        store.insert(NurbsSurfaceElement{surface, {}});
-        store.closeStructure();
-        Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
-        ws.postStructure(1, 0.5);
-        const auto* mesh = primitiveIf<DrawMesh>(ws.display().items.at(0).primitive);
-        REQUIRE(mesh);
+        const auto mesh =
+            meshOf(surface, SurfaceCharacteristicsAttribute{3, placement, count, 0},
+                   ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 20, 20});
         std::vector<double> xs;
-        for (const auto& line : mesh->mesh->isoLines) xs.push_back(mesh->mesh->positions.at(line.front()).x);
+        for (const auto& line : mesh->isoLines) xs.push_back(mesh->positions.at(line.front()).x);
         std::sort(xs.begin(), xs.end());
         return xs;
     };
@@ -129,23 +132,13 @@ TEST_CASE("iso-curves: many spans and few rows each still get theirs, up to the 
     }
     knotsU.push_back(1.0);
     const geom::Surface surface(1, 1, knotsU, {0, 0, 1, 1}, 21, 2, points);
-    Phigs phigs;
-    phigs.open();
-    StructureStore& store = phigs.store();
-    store.openStructure(1);
-    store.insert(ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 1, 1});
-    store.insert(SurfaceCharacteristicsAttribute{3, 1, 3, 0});
-    store.insert(NurbsSurfaceElement{surface, {}});
-    store.closeStructure();
-    Workstation& ws = phigs.openWorkstation(1, WorkstationType::Window);
-    ws.postStructure(1, 0.5);
-    const auto* mesh = primitiveIf<DrawMesh>(ws.display().items.at(0).primitive);
-    REQUIRE(mesh);
+    const auto mesh = meshOf(surface, SurfaceCharacteristicsAttribute{3, 1, 3, 0},
+                             ApproximationAttribute{ElementType::SurfaceApproximationCriteria, 2, 1, 1});
     std::set<long> rows;
-    for (const auto& line : mesh->mesh->isoLines)
-        rows.insert(std::lround(20.0 * mesh->mesh->positions.at(line.front()).x));
+    for (const auto& line : mesh->isoLines)
+        rows.insert(std::lround(20.0 * mesh->positions.at(line.front()).x));
     CHECK(rows.size() == 21);
-    CHECK(mesh->mesh->isoLines.size() == 21);
+    CHECK(mesh->isoLines.size() == 21);
 }
 
 }  // namespace test_iso_curves
