@@ -92,7 +92,7 @@ void cellArrayContent(const CellArrayElement& e, Phigs_store& s) {
     s.ints.assign(e.colourIndices.begin(), e.colourIndices.end());
     const Ppat_rep rep{{e.columns, e.rows}, s.ints.data()};
     if (e.twoD)
-        s.data.cell_array = {{p2(e.p), {static_cast<Pfloat>(e.q.x), static_cast<Pfloat>(e.r.y)}}, rep};
+        s.data.cell_array = {{p2(e.p), p2(e.q)}, rep};
     else
         s.data.cell_array3 = {{p3(e.p), p3(e.q), p3(e.r)}, rep};
 }

@@ -203,11 +203,12 @@ void pcell_array3(const Pparal* pa, const Ppat_rep* rep) {
     });
 }
 
-// CELL ARRAY's rectangle P, Q is the parallelogram P, (Qx, Py), (Px, Qy) in the plane z = 0.
+// CELL ARRAY's rectangle: P and Q opposite corners in the plane z = 0 (the element's 2D form),
+// R = (Px, Qy).
 void pcell_array(const Prect* rect, const Ppat_rep* rep) {
     insertElement(Pfn_cell_array, [&](const char* n) -> Element {
         c::require(rect, n);
-        return cellArray({rect->p.x, rect->p.y, 0}, {rect->q.x, rect->p.y, 0}, {rect->p.x, rect->q.y, 0}, rep,
+        return cellArray({rect->p.x, rect->p.y, 0}, {rect->q.x, rect->q.y, 0}, {rect->p.x, rect->q.y, 0}, rep,
                          true, n);
     });
 }

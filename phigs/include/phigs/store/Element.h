@@ -191,7 +191,8 @@ struct AnnotationTextElement {
     bool twoD = false;
     bool operator==(const AnnotationTextElement&) const = default;
 };
-/// CELL ARRAY 3 (parallelogram P, Q, R) / CELL ARRAY (rectangle P, Q): colour indices, row by row.
+/// CELL ARRAY 3 (parallelogram P, Q, R) / CELL ARRAY (twoD: rectangle of opposite corners P, Q in
+/// z = 0, R unused): colour indices, row by row from P.
 struct CellArrayElement {
     glm::dvec3 p{0.0}, q{1, 0, 0}, r{0, 1, 0};
     int columns = 0, rows = 0;
