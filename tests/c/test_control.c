@@ -1,4 +1,5 @@
-/* Control and error handling: OPEN / CLOSE / EMERGENCY CLOSE PHIGS, the system state, the
+/* Control and error handling: OPEN / CLOSE / EMERGENCY CLOSE PHIGS (which updates and closes the
+ * open workstations, also from an error handler), the system state, the
  * error handler, its mode, ERROR LOGGING's lines in the error file, and that inquiries never
  * call the handler. argv[1]: a directory for the error file. */
 #include "check.h"
@@ -85,6 +86,67 @@ static void close_needs_everything_closed(void) {
     pclose_struct();
 }
 
+/* The whole text of `path` (to be freed), or NULL when it cannot be read. */
+static char* file_text(const char* path) {
+    FILE* f = fopen(path, "rb");
+    if (!f) return NULL;
+    char* text = calloc(1 << 20, 1);
+    if (text) fread(text, 1, (1 << 20) - 1, f);
+    fclose(f);
+    return text;
+}
+
+static int closing_handler_calls = 0;
+/* An old program's handler: a fatal error closes PHIGS down at once. */
+static void closing_handler(Pint err, Pint fn, const char* file) {
+    ++closing_handler_calls;
+    perr_hand(err, fn, file);
+    pemergency_close_phigs();
+}
+
+/* EMERGENCY CLOSE PHIGS updates and closes the open workstations (ISO 9592): a vector file holds
+ * the picture changed since the last update, also when an error handler closes down. */
+static void emergency_close_keeps_pictures(const char* dir, const char* errors) {
+    char svg[512], archive[512];
+    Psys_st st = PSYS_ST_PHOP;
+    for (int through_handler = 0; through_handler < 2; ++through_handler) {
+        snprintf(svg, sizeof svg, "%s/emergency_%d.svg", dir, through_handler);
+        snprintf(archive, sizeof archive, "%s/emergency_%d.phar", dir, through_handler);
+        remove(svg), remove(archive);
+        open_with_handler(errors);
+        EXPECT_NO_ERROR(popen_ws(1, svg, PWST_SVG));
+        EXPECT_NO_ERROR(popen_ar_file(1, archive));
+        Ppoint3 line[2] = {{0.2f, 0.2f, 0}, {0.8f, 0.7f, 0}};
+        Ppoint_list3 points = {2, line};
+        Pgcolr magenta = {PMODEL_RGB, {0}};
+        magenta.val.direct.x = magenta.val.direct.z = 1;
+        EXPECT_NO_ERROR(popen_struct(1));
+        EXPECT_NO_ERROR(pset_line_colr(&magenta));
+        EXPECT_NO_ERROR(ppolyline3(&points));
+        EXPECT_NO_ERROR(ppost_struct(1, 1, 0.5f));
+        EXPECT_NO_ERROR(pset_line_colr(&magenta)); /* the structure stays open */
+        if (through_handler) {
+            pset_err_hand(closing_handler, NULL);
+            closing_handler_calls = 0;
+            popen_ws(1, svg, PWST_SVG); /* error 53: the handler closes PHIGS */
+            CHECK(closing_handler_calls == 1);
+            pset_err_hand(recording_handler, NULL);
+        } else {
+            pemergency_close_phigs();
+        }
+        pinq_sys_st(&st);
+        CHECK(st == PSYS_ST_PHCL);
+        char* text = file_text(svg);
+        CHECK(text != NULL);
+        if (text) CHECK(strstr(text, "<path") != NULL && strstr(text, "stroke:rgb(100%,0%,100%)") != NULL);
+        free(text);
+        open_with_handler(errors); /* the archive closed complete: it opens again */
+        EXPECT_NO_ERROR(popen_ar_file(1, archive));
+        EXPECT_NO_ERROR(pclose_ar_file(1));
+        EXPECT_NO_ERROR(pclose_phigs());
+    }
+}
+
 int main(int argc, char** argv) {
     char file[512];
     Psys_st st = PSYS_ST_PHOP;
@@ -149,5 +211,6 @@ int main(int argc, char** argv) {
     pinq_struct_ids(0, 0, &err, NULL, &total);
     CHECK(err == 0 && total == 0);
     EXPECT_NO_ERROR(pclose_phigs());
+    emergency_close_keeps_pictures(argc > 1 ? argv[1] : ".", file);
     return finish("test_control");
 }

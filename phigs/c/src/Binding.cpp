@@ -222,8 +222,32 @@ void Binding::close() {
     emergencyClose();
 }
 
+namespace {
+
+/// Does `step`, whatever it throws: for closing down, where one failure must not stop the rest.
+template <class Step>
+void regardless(Step&& step) {
+    try {
+        step();
+    } catch (...) {  // NOLINT(bugprone-empty-catch)
+    }
+}
+
+}  // namespace
+
 void Binding::emergencyClose() {
-    // EMERGENCY CLOSE PHIGS: whatever is open is closed; archives are always complete on disk.
+    // EMERGENCY CLOSE PHIGS (ISO 9592): the open structure is closed, then the archives (always
+    // complete on disk), and each open workstation is updated and closed, so that as much of the
+    // picture as can be is kept (a vector file written, a window's last picture shown). Nothing
+    // here may fail: a workstation that cannot close does not keep the others open.
+    if (phigs_) {
+        Phigs& p = *phigs_;
+        regardless([&] {
+            if (p.store().isStructureOpen()) p.store().closeStructure();
+        });
+        for (int id : p.openArchiveIds()) regardless([&] { p.closeArchiveFile(id); });
+        for (int id : p.openWorkstationIds()) regardless([&] { p.closeWorkstation(id); });
+    }
     // Errors while PHIGS is closed go to the handler with no file name (so to stderr).
     phigs_.reset();
     specificTypes_.clear();
@@ -255,7 +279,9 @@ void Binding::reportWith(int number, int function, const std::string& why) {
 }
 
 void Binding::reportSince(int function, std::size_t before, int thrown, const std::string& why) {
-    const auto& entries = phigs_ ? phigs_->errorLog().entries() : std::vector<ErrorLog::Entry>{};
+    // A copy: a handler may call EMERGENCY CLOSE PHIGS, which takes the log with it.
+    const std::vector<ErrorLog::Entry> entries =
+        phigs_ ? phigs_->errorLog().entries() : std::vector<ErrorLog::Entry>{};
     bool thrownLogged = false;
     for (std::size_t i = before; i < entries.size(); ++i) {
         reportWith(entries[i].number, function, entries[i].detail);
