@@ -101,6 +101,9 @@ static void open_and_close_errors(void) {
     CHECK(file_has_line(error_file,
                         "ERROR 53 in OPEN WORKSTATION (function 2): Ignoring function, workstation "
                         "identifier already is in use"));
+    CHECK(file_has_line(error_file,
+                        "ERROR 52 in OPEN WORKSTATION (function 2): Ignoring function, workstation type "
+                        "not recognized by the implementation (workstation type 77)"));
     EXPECT_NO_ERROR(pclose_ws(1));
     EXPECT_ERROR(pclose_ws(1), 3, Pfn_close_ws);
 }

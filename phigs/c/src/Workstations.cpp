@@ -18,16 +18,6 @@ namespace {
 
 using namespace phigs;
 
-/// The type OPEN WORKSTATION opens: a specific type's generic type; a number that is no type
-/// reaches the core as no WorkstationType, which raises and logs error 52.
-WorkstationType openedType(Pint type) {
-    try {
-        return c::workstationTypeOf(type, "OPEN WORKSTATION");
-    } catch (const Error&) {
-        return static_cast<WorkstationType>(-1);
-    }
-}
-
 Pint cType(WorkstationType type) {
     return static_cast<Pint>(type) + PWST_OFFSCREEN;
 }
@@ -75,7 +65,8 @@ void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type) {
     Binding::instance().call(Pfn_open_ws, [&](Phigs& p) {
         OutputConnection connection;
         if (conn_id) connection.identifier = conn_id;
-        p.openWorkstation(ws_id, openedType(ws_type), connection);
+        // Error 52 names the type the program gave (a specific type opens as its generic type).
+        p.openWorkstation(ws_id, c::workstationTypeOf(ws_type, "OPEN WORKSTATION"), connection);
         Binding::instance().specificType(ws_id);
     });
 }
