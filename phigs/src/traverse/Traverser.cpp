@@ -166,31 +166,51 @@ struct Traverser::SubtreeCache {
         std::shared_ptr<const detail::State> entry;  ///< shared by the entries made from one state
         detail::PathPrefix prefix;
         std::uint64_t elements = 0;
-        bool used = true;
+        std::uint64_t usedIn = 0;                           ///< the traversal that last made or reused it
         detail::OneInline<DrawItems::SegmentPtr> segments;  ///< shared with the draw lists holding them
     };
     IdTable<detail::OneInline<Entry>> entries;
     std::shared_ptr<const detail::State> lastInherited;  ///< the last state handed to an execute
+    std::uint64_t traversal = 1;                         ///< the traversal under way (counted from 1)
+    std::uint64_t lastSweep = 0;                         ///< the traversal of the last sweep
     std::size_t made = 0;                                ///< entries made since the last sweep
     std::size_t kept = 0;                                ///< entries the last sweep kept
-    std::size_t sinceSweep = 0;                          ///< traversals since the last sweep
+    std::size_t usedNow = 0;                             ///< entries made or reused by this traversal
 
+    /// Records that this traversal made or reused `e`.
+    void use(Entry& e) {
+        usedNow += e.usedIn != traversal;
+        e.usedIn = traversal;
+    }
     /// Drops the entries no traversal used since the last sweep. A sweep visits every entry, so
     /// it runs only once enough entries were made or traversals passed for its cost to be
     /// shared among them; until then an unused entry only holds its segments a little longer.
+    /// A picture that shrank (this traversal used under half the entries) sweeps at once and
+    /// keeps only what it used: the old picture's segments are let go of now.
     void prune() {
-        if (++sinceSweep < kSweepEvery && made * 8 <= kept + 64) return;
+        const bool shrank = usedNow * 2 < kept + made;
+        if (traversal - lastSweep < kSweepEvery && made * 8 <= kept + 64 && !shrank) {
+            endTraversal();
+            return;
+        }
+        const std::uint64_t keepFrom = shrank ? traversal : lastSweep + 1;
         kept = 0;
         entries.forEach([&](int, detail::OneInline<Entry>& list) {
-            list.keepIf([](const Entry& e) { return e.used; });
-            list.forEach([](Entry& e) { e.used = false; });
+            list.keepIf([&](const Entry& e) { return e.usedIn >= keepFrom; });
             kept += list.size();
         });
-        made = sinceSweep = 0;
+        made = 0;
+        lastSweep = traversal;
+        endTraversal();
+    }
+    void endTraversal() {
+        ++traversal;
+        usedNow = 0;
     }
     void clear() {
         entries.clear();
-        made = kept = sinceSweep = 0;
+        made = kept = usedNow = 0;
+        lastSweep = traversal - 1;
     }
     static constexpr std::size_t kSweepEvery = 16;
 };
@@ -571,6 +591,7 @@ public:
 
     std::uint64_t visited = 0;
     std::uint64_t reused = 0;
+    std::size_t maxPictureBytes = kMaxPictureBytes;
 
     void root(int id) {
         State state;
@@ -654,6 +675,17 @@ private:
                     "more than " + std::to_string(kMaxNetworkDepth) + " nested EXECUTE STRUCTURE levels");
     }
 
+    /// Refuses a picture past maxPictureBytes (checked at each segment: cheap, and in time).
+    void checkPictureSize() const {
+        constexpr std::size_t kSegmentBytes = 1024, kItemBytes = 64;
+        const std::size_t segments = out_.items.segmentCount(), items = out_.items.size();
+        if (segments * kSegmentBytes + items * kItemBytes > maxPictureBytes)
+            throw Error(errors::StorageOverflow, "TRAVERSAL",
+                        "the picture would take more than " + std::to_string(maxPictureBytes >> 10) +
+                            " KiB (" + std::to_string(segments) + " structure parts, " +
+                            std::to_string(items) + " items so far)");
+    }
+
     void execute(int id, const std::shared_ptr<const State>& child) {
         if (path_.size() > kMaxNetworkDepth) tooDeep();
         if (!subtrees_) {
@@ -665,16 +697,20 @@ private:
         }
         const std::uint64_t stamp = subtreeStamp(id);
         flush();
+        auto sameExecution = [&](const Traverser::SubtreeCache::Entry& e) {
+            return (e.entry == child || *e.entry == *child) && e.prefix == path_;
+        };
         auto matches = [&](const Traverser::SubtreeCache::Entry& e) {
-            return e.stamp == stamp && (e.entry == child || *e.entry == *child) && e.prefix == path_;
+            return e.stamp == stamp && sameExecution(e);
         };
         if (auto* found = subtrees_->entries.find(id))
             if (auto* e = found->findIf(matches)) {
                 // Unchanged: the same segments again, shared, no item copied.
-                e->used = true;
+                subtrees_->use(*e);
                 reused += e->elements;
                 e->segments.forEach(
                     [&](const DrawItems::SegmentPtr& segment) { out_.items.appendSegment(segment); });
+                checkPictureSize();
                 return;
             }
         const std::size_t firstSegment = out_.items.segmentCount();
@@ -690,7 +726,10 @@ private:
         for (std::size_t k = firstSegment; k < segments.size(); ++k) e.segments.push_back(segments[k]);
         e.elements = visited + reused - firstElements;
         auto& list = subtrees_->entries[id];
+        // The entry this execution made before a change can never match again: its segments go now.
+        list.keepIf([&](const Traverser::SubtreeCache::Entry& old) { return !sameExecution(old); });
         if (list.size() >= 8) list.popFront();
+        subtrees_->use(e);
         list.push_back(std::move(e));
         ++subtrees_->made;
     }
@@ -746,7 +785,10 @@ private:
 
     /// Ends the segment being built: later items go to a new one.
     void flush() {
-        if (segment_ && !segment_->items.empty()) out_.items.appendSegment(std::move(segment_));
+        if (segment_ && !segment_->items.empty()) {
+            out_.items.appendSegment(std::move(segment_));
+            checkPictureSize();
+        }
         segment_.reset();
         transform_ = nullptr;
         clip_ = {};
@@ -1420,16 +1462,22 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
         if (subtrees_) subtrees_->clear();
     }
     Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, *runSizes_, *segmentPool_, out);
-    for (int root : roots) walk.root(root);
+    walk.maxPictureBytes = maxPictureBytes_;
+    try {
+        for (int root : roots) walk.root(root);
+    } catch (const std::bad_alloc&) {  // the picture is dropped whole: the error says why
+        throw Error(errors::StorageOverflow, "TRAVERSAL", "out of memory making the picture");
+    }
     out.lightSets = itemTables_->lightSets;
     out.depthCues = itemTables_->depthCues;
     elementsTraversed_ = walk.visited;
     elementsReused_ = walk.reused;
-    // Free segments this traversal did not need are not kept for the next (a smaller picture),
-    // and the kept ones let go of their old items before the cache counts what is drawn.
+    // The subtrees no longer drawn give their segments back first; then free segments this
+    // traversal did not need are not kept for the next (a smaller picture), and the kept ones let
+    // go of their old items before the cache counts what is drawn.
+    if (subtrees_) subtrees_->prune();
     segmentPool_->settle(segmentPool_->takenSince() + kSpareSegments);
     cache_.prune();
-    if (subtrees_) subtrees_->prune();
     return out;
 }
 

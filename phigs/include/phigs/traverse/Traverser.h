@@ -6,6 +6,7 @@
 #include "phigs/traverse/TessellationCache.h"
 #include "phigs/view/WorkstationTables.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -27,6 +28,12 @@ struct TraversalFilters {
     std::set<int> initialNames;  ///< the name set at the start of every posted root
     bool operator==(const TraversalFilters&) const = default;
 };
+
+/// The draw records a picture may take, estimated as it is made (about 1 KiB per structure
+/// instance drawn, 64 bytes per item): past it a traversal raises StorageOverflow (900) instead
+/// of exhausting memory, as a network of a few dozen elements that executes each structure twice
+/// per level draws 2^levels instances.
+inline constexpr std::size_t kMaxPictureBytes = std::size_t{2} << 30;
 
 /// Walks posted structure networks depth first and produces the draw list: attributes pushed
 /// at every EXECUTE STRUCTURE and restored on return, local and global modelling transforms
@@ -53,6 +60,10 @@ public:
     std::uint64_t elementsReused() const { return elementsReused_; }
     /// Incremental traversal (the default) reuses unchanged executed subtrees; off: walk everything.
     void setIncremental(bool incremental);
+    /// The estimated draw-record bytes past which a traversal raises StorageOverflow
+    /// (kMaxPictureBytes unless set: an application short of memory may set less).
+    void setMaxPictureBytes(std::size_t bytes) { maxPictureBytes_ = bytes; }
+    std::size_t maxPictureBytes() const { return maxPictureBytes_; }
 
     struct SubtreeCache;
     struct ItemTables;
@@ -66,6 +77,7 @@ private:
     std::shared_ptr<detail::SegmentPool> segmentPool_;  ///< the draw segments made, kept for reuse
     std::uint64_t elementsTraversed_ = 0;
     std::uint64_t elementsReused_ = 0;
+    std::size_t maxPictureBytes_ = kMaxPictureBytes;
 };
 
 }  // namespace phigs
