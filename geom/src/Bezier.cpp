@@ -34,6 +34,13 @@ double localParameter(double u, double a, double b) {
 void bernsteinBasis(int degree, double t, std::span<double> values, std::span<double> first,
                     std::span<double> second) {
     const std::size_t n = static_cast<std::size_t>(degree);
+    // Size comparisons only: this runs once per evaluated point.
+    if (degree < 0 || values.size() <= n || (!first.empty() && first.size() <= n) ||
+        (!second.empty() && second.size() <= n))
+        throw GeometryError("bernsteinBasis: degree " + std::to_string(degree) +
+                            " needs degree + 1 values in each output (given " +
+                            std::to_string(values.size()) + ", " + std::to_string(first.size()) + ", " +
+                            std::to_string(second.size()) + ")");
     const double s = 1.0 - t;
     // Raise the degree step by step (The NURBS Book A1.3), keeping degrees n-1 and n-2 for
     // the derivatives: B'_{i,n} = n (B_{i-1,n-1} - B_{i,n-1}).

@@ -339,6 +339,10 @@ double followPeaks(const std::vector<double>& u, const std::vector<double>& v, c
 void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>& knots, int degree,
                              std::size_t count, int samplesPerSpan) {
     if (samplesPerSpan < 1) throw GeometryError("spanSamples: samplesPerSpan must be at least 1");
+    if (degree < 0 || knots.size() != count + static_cast<std::size_t>(degree) + 1)
+        throw GeometryError("spanSamples: " + std::to_string(knots.size()) + " knots do not fit degree " +
+                            std::to_string(degree) + " and " + std::to_string(count) +
+                            " control points (knots = count + degree + 1)");
     out.clear();
     out.reserve((count - std::min<std::size_t>(count, static_cast<std::size_t>(degree))) *
                     static_cast<std::size_t>(samplesPerSpan) +

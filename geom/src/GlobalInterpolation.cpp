@@ -147,7 +147,12 @@ std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Cl
 }
 
 std::vector<double> interpolationKnots(std::span<const double> parameters, int degree, Closure closure) {
-    const std::size_t p = static_cast<std::size_t>(std::max(degree, 1));
+    if (degree < 1)
+        throw GeometryError("interpolation knots: degree " + std::to_string(degree) + " must be at least 1");
+    if (closure != Closure::Open && closure != Closure::Periodic)
+        throw GeometryError("interpolation knots: closure " + std::to_string(static_cast<int>(closure)) +
+                            " is neither Open nor Periodic");
+    const std::size_t p = static_cast<std::size_t>(degree);
     // Knots from parameters out of order or not finite would not be a knot vector.
     checkIncreasing(parameters, "interpolation knots");
     if (closure == Closure::Open) {

@@ -2,6 +2,7 @@
 // decreasing knots, too few points, sizes that disagree, non-finite numbers, zero weights),
 // non-finite and out-of-domain parameters. Each must give GeometryError, never a crash.
 
+#include "geom/Basis.h"
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
 #include "geom/BezierPatchTree.h"
@@ -18,6 +19,7 @@
 #include "geom/GeometryError.h"
 #include "geom/GlobalInterpolation.h"
 #include "geom/GridEvaluator.h"
+#include "geom/Interpolate.h"
 #include "geom/Intersect.h"
 #include "geom/Inversion.h"
 #include "geom/KnotInsertion.h"
@@ -539,6 +541,73 @@ TEST_CASE("a staircase refuses non-finite loop points and unbounded work", "[geo
     lastNaN.back().x = kNaN;
     REQUIRE_THROWS_WITH(staircaseApproximation(lastNaN, 0.1), Catch::Contains("loop point 4"));
     REQUIRE_THROWS_WITH(staircaseApproximation(square, 1e-12), Catch::Contains("tolerances long"));
+}
+
+TEST_CASE("low-level basis functions refuse knots and outputs too small for the degree",
+          "[geom][bad-input][basis]") {
+    // Every degree 0..7 on a clamped knot vector: one value short (or one knot short) is refused
+    // by name, the exact size is accepted.
+    for (int degree = 0; degree <= 7; ++degree) {
+        CAPTURE(degree);
+        const std::size_t p = static_cast<std::size_t>(degree), count = p + 3;
+        std::vector<double> knots(p + 1, 0.0);
+        knots.push_back(0.3), knots.push_back(0.6);
+        knots.insert(knots.end(), p + 1, 1.0);
+        const std::size_t span = findSpan(degree, knots, count, 0.5);
+        std::vector<double> out(p + 1), firsts(p + 1), derivatives(2 * (p + 1));
+        REQUIRE_NOTHROW(basisFunctions(span, 0.5, degree, knots, out));
+        REQUIRE_NOTHROW(bernsteinBasis(degree, 0.5, out, firsts, firsts));
+        REQUIRE_NOTHROW(basisDerivatives(span, 0.5, degree, knots, 1, derivatives));
+        REQUIRE(spanSamples(knots, degree, count, 4).size() == 3 * 4 + 1);
+        const std::span<double> short1(out.data(), p), shortD(derivatives.data(), 2 * p + 1);
+        REQUIRE_THROWS_WITH(basisFunctions(span, 0.5, degree, knots, short1),
+                            Catch::Contains("basisFunctions") && Catch::Contains("too small"));
+        REQUIRE_THROWS_WITH(basisDerivatives(span, 0.5, degree, knots, 1, shortD),
+                            Catch::Contains("basisDerivatives") && Catch::Contains("too small"));
+        REQUIRE_THROWS_WITH(bernsteinBasis(degree, 0.5, short1), Catch::Contains("bernsteinBasis"));
+        if (degree >= 1)  // an empty derivative output means "skip it"
+            REQUIRE_THROWS_WITH(bernsteinBasis(degree, 0.5, out, firsts, short1),
+                                Catch::Contains("bernsteinBasis"));
+        REQUIRE_THROWS_WITH(basisFunctions(knots.size(), 0.5, degree, knots, out),
+                            Catch::Contains("reads past"));
+        if (degree >= 1) {
+            REQUIRE_NOTHROW(basisWithFirstDerivatives(span, 0.5, degree, knots, out, firsts));
+            REQUIRE_THROWS_WITH(basisWithFirstDerivatives(span, 0.5, degree, knots, out, short1),
+                                Catch::Contains("basisWithFirstDerivatives"));
+        }
+        const std::span<const double> fewerKnots(knots.data(), count);
+        REQUIRE_THROWS_WITH(findSpan(degree, fewerKnots, count, 0.5), Catch::Contains("findSpan"));
+        REQUIRE_THROWS_WITH(findSpan(degree, {}, count, 0.5), Catch::Contains("findSpan"));
+        REQUIRE_THROWS_WITH(findSpan(degree, knots, p, 0.5), Catch::Contains("findSpan"));
+        REQUIRE_THROWS_WITH(findSpan(-1 - degree, knots, count, 0.5), Catch::Contains("findSpan"));
+        REQUIRE_THROWS_WITH(spanSamples({0, 1}, degree, count, 4),
+                            Catch::Contains("spanSamples") && Catch::Contains("2 knots"));
+        REQUIRE_THROWS_WITH(bernsteinBasis(-1 - degree, 0.5, out), Catch::Contains("bernsteinBasis"));
+    }
+}
+
+TEST_CASE("interpolation refuses an out-of-range parameterization, closure or degree",
+          "[geom][bad-input][interpolation]") {
+    InterpolationData data;
+    data.points = {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 1, 1}};
+    for (int kind : {0, 4, 9, -1}) {
+        data.parameterization = static_cast<Parameterization>(kind);
+        REQUIRE_THROWS_WITH(interpolateCubic(data),
+                            Catch::Contains("parameterization " + std::to_string(kind)));
+    }
+    data.parameterization = Parameterization::Centripetal;
+    REQUIRE_NOTHROW(interpolateCubic(data));
+    const std::vector<double> t{0, 0.25, 0.5, 1};
+    for (int degree : {0, -1, -7})
+        for (Closure closure : {Closure::Open, Closure::Periodic})
+            REQUIRE_THROWS_WITH(interpolationKnots(t, degree, closure),
+                                Catch::Contains("degree " + std::to_string(degree)));
+    REQUIRE_THROWS_WITH(interpolationKnots(t, 1, static_cast<Closure>(7)), Catch::Contains("closure 7"));
+    REQUIRE(interpolationKnots(t, 1, Closure::Open).size() == 6);
+    // A break (multiplicity degree + 1) is refused as DegreeElevation.h says.
+    const Curve broken(2, {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1},
+                       {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 0, 0}, {4, 1, 0}, {5, 0, 0}});
+    REQUIRE_THROWS_WITH(elevateDegree(broken), Catch::Contains("a break"));
 }
 
 }  // namespace test_bad_input
