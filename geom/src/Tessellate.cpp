@@ -1,6 +1,7 @@
 #include "geom/Tessellate.h"
 #include "NumberText.h"
 #include "SegmentDistance.h"
+#include "UnitScale.h"
 
 #include "geom/Bezier.h"
 #include "geom/BezierExtraction.h"
@@ -181,9 +182,11 @@ FailedIntervals failedIntervals(const BezierPatchTree& tree, const GridLines& u,
 
 }  // namespace
 
-SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
-    checkTolerance(tolerance, "tessellateAdaptive");
-    validate(surface, "tessellateAdaptive");
+namespace {
+
+/// tessellateAdaptive on a surface scaled to unit size (so that no distance overflows);
+/// `asked` is the caller's tolerance, for the messages.
+SurfaceMesh adaptiveMesh(const Surface& surface, double tolerance, double asked) {
     const BezierPatchTree tree(surface);
     // Start from the degree (a degree-p span needs about p chords to show its shape at all).
     auto start = [](const std::vector<double>& breaks, int degree) {
@@ -198,7 +201,7 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
     // vertices to reach.
     for (int round = 0; round < 40; ++round) {
         if (u.at.size() * v.at.size() > kMaxVertices)
-            throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
+            throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(asked) +
                                 " needs more than " + std::to_string(kMaxVertices) + " vertices");
         grid = gridPoints(tree, u, v, grid, lastNv);
         lastNv = v.at.size();
@@ -207,8 +210,23 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
         u = halved(u, failed.u);
         v = halved(v, failed.v);
     }
-    throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(tolerance) +
+    throw GeometryError("tessellateAdaptive: tolerance " + detail::numberText(asked) +
                         " was not reached after 40 refinements");
+}
+
+}  // namespace
+
+SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
+    checkTolerance(tolerance, "tessellateAdaptive");
+    validate(surface, "tessellateAdaptive");
+    // Measured on the surface scaled to unit size: at coordinates past 1e154 every squared
+    // distance would overflow, every cell fail, and the vertex limit be blamed.
+    const double scale = detail::unitScale(surface.points);
+    Surface unit = surface;
+    for (glm::dvec3& p : unit.points) p *= scale;
+    SurfaceMesh mesh = adaptiveMesh(unit, tolerance * scale, tolerance);
+    for (glm::dvec3& p : mesh.positions) p /= scale;
+    return mesh;
 }
 
 namespace {
@@ -230,7 +248,9 @@ double hullDistance(std::span<const glm::dvec4> piece) {
 
 /// Appends the far ends of the chords of one Bézier piece: halved (de Casteljau) until each
 /// part's control points lie within tolerance of its chord.
-void tessellatePiece(std::vector<glm::dvec4> piece, double tolerance, std::vector<glm::dvec3>& out) {
+/// `asked` is the caller's tolerance, for the message.
+void tessellatePiece(std::vector<glm::dvec4> piece, double tolerance, double asked,
+                     std::vector<glm::dvec3>& out) {
     const std::size_t n = piece.size();
     std::vector<std::vector<glm::dvec4>> stack;
     stack.push_back(std::move(piece));
@@ -246,8 +266,8 @@ void tessellatePiece(std::vector<glm::dvec4> piece, double tolerance, std::vecto
         }
         out.push_back(glm::dvec3(part.back()) / part.back().w);
         if (out.size() > kMaxVertices)
-            throw GeometryError("tessellate: tolerance " + detail::numberText(tolerance) +
-                                " needs more than " + std::to_string(kMaxVertices) + " points");
+            throw GeometryError("tessellate: tolerance " + detail::numberText(asked) + " needs more than " +
+                                std::to_string(kMaxVertices) + " points");
     }
 }
 
@@ -264,16 +284,22 @@ std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
     if (tolerance < 16.0 * std::numeric_limits<double>::epsilon() * extent)
         throw GeometryError("tessellate: tolerance " + detail::numberText(tolerance) +
                             " is below what coordinates of " + detail::numberText(extent) + " resolve");
+    // Measured on the curve scaled to unit size: at coordinates past 1e154 the squared distances
+    // of the flatness test would overflow and pass any piece as one chord.
+    const double scale = detail::unitScale(curve.points);
+    Curve unit = curve;
+    for (glm::dvec3& p : unit.points) p *= scale;
     // Knot values are always vertices (corners of C0 curves stay sharp): each Bézier piece is
     // tessellated on its own, and where one starts away from where the last ended (a jump) the
     // polyline joins the two.
     std::vector<glm::dvec3> out;
-    for (const BezierCurvePiece& piece : extractBezier(curve)) {
+    for (const BezierCurvePiece& piece : extractBezier(unit)) {
         std::vector<glm::dvec4> net = homogeneousNet(piece.curve).data;
         const glm::dvec3 start = glm::dvec3(net.front()) / net.front().w;
         if (out.empty() || out.back() != start) out.push_back(start);
-        tessellatePiece(std::move(net), tolerance, out);
+        tessellatePiece(std::move(net), tolerance * scale, tolerance, out);
     }
+    for (glm::dvec3& p : out) p /= scale;
     return out;
 }
 

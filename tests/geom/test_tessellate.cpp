@@ -265,4 +265,70 @@ TEST_CASE("curve tessellation keeps its tolerance on every class, rational with 
     REQUIRE_THROWS_WITH(tessellate(far, 1e-10), Catch::Contains("tolerance 1e-10 is below what coordinates"));
 }
 
+TEST_CASE("curve and surface tessellation give the same vertices at every scale of the coordinates",
+          "[geom][tessellate][scale]") {
+    // Scaling a curve and its tolerance by a power of two must scale the polyline and nothing
+    // else, out to coordinates near 1e301 and down to 1e-181 (where squared distances overflow or
+    // underflow): random curves of degree 1..7 (half rational) and random surfaces.
+    std::mt19937 rng(20261207);
+    const int exponents[] = {-600, -300, 200, 520, 1000};
+    for (int member = 0; member < 40; ++member) {
+        const int p = 1 + member % 7;
+        const Curve curve = geomtest::randomCurve(rng, p, static_cast<std::size_t>(p) + 1 + member % 5,
+                                                  member % 2 == 1, true);
+        const double tolerance = 1e-3;
+        const std::vector<glm::dvec3> base = tessellate(curve, tolerance);
+        for (int e : exponents) {
+            const double s = std::ldexp(1.0, e);
+            Curve scaled = curve;
+            for (glm::dvec3& q : scaled.points) q *= s;
+            const std::vector<glm::dvec3> line = tessellate(scaled, tolerance * s);
+            INFO("member " << member << ", degree " << p << ", scale 2^" << e);
+            REQUIRE(line.size() == base.size());
+            for (std::size_t i = 0; i < line.size(); ++i) REQUIRE(line[i] == base[i] * s);
+        }
+    }
+    for (int member = 0; member < 12; ++member) {
+        const int p = 1 + member % 3, q = 1 + (member / 3) % 3;
+        const Surface surface =
+            geomtest::randomSurface(rng, p, q, static_cast<std::size_t>(p) + 2,
+                                    static_cast<std::size_t>(q) + 2, member % 2 == 1, true);
+        const SurfaceMesh base = tessellateAdaptive(surface, 2e-2);
+        for (int e : exponents) {
+            const double s = std::ldexp(1.0, e);
+            Surface scaled = surface;
+            for (glm::dvec3& x : scaled.points) x *= s;
+            const SurfaceMesh mesh = tessellateAdaptive(scaled, 2e-2 * s);
+            INFO("surface " << member << ", scale 2^" << e);
+            REQUIRE(mesh.positions.size() == base.positions.size());
+            REQUIRE(mesh.triangles == base.triangles);
+            for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+                REQUIRE(mesh.positions[i] == base.positions[i] * s);
+                REQUIRE(mesh.normals[i] == base.normals[i]);
+            }
+        }
+    }
+}
+
+TEST_CASE("a quadratic arc past 1e154 is tessellated within its tolerance", "[geom][tessellate][scale]") {
+    // The tester's case: at s = 1e155 and beyond one chord came back, 354 times the tolerance off.
+    for (double s : {1e100, 1e155, 1e200, 1e300}) {
+        const Curve arc(2, {0, 0, 0, 1, 1, 1}, {{s, 0, 0}, {s, s, 0}, {0, s, 0}});
+        const std::vector<glm::dvec3> line = tessellate(arc, 1e-3 * s);
+        CAPTURE(s, line.size());
+        REQUIRE(line.size() == 33);
+        // Measured in units of s, where nothing overflows.
+        for (int k = 0; k <= 400; ++k) {
+            const glm::dvec3 x = evaluate(arc, k / 400.0) / s;
+            double best = 1e300;
+            for (std::size_t j = 0; j + 1 < line.size(); ++j) {
+                const glm::dvec3 a = line[j] / s, ab = line[j + 1] / s - a;
+                const double t = std::clamp(glm::dot(x - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+                best = std::min(best, glm::length(a + t * ab - x));
+            }
+            REQUIRE(best <= 1e-3);
+        }
+    }
+}
+
 }  // namespace test_tessellate
