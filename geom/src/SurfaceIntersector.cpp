@@ -1,4 +1,5 @@
 #include "geom/SurfaceIntersector.h"
+#include "UnitScale.h"
 
 #include "geom/Bezier.h"
 #include "geom/GeometryError.h"
@@ -333,13 +334,20 @@ void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerance
 }  // namespace
 
 SurfaceIntersector::SurfaceIntersector(const Surface& surface) : tree_(surface) {
+    const double scale = detail::unitScale(surface.points);
+    if (scale > 0x1p-400 && scale < 0x1p400) return;
+    Surface unit = surface;
+    for (glm::dvec3& p : unit.points) p *= scale;
+    unitTree_.emplace(unit);
+    unitScale_ = scale;
 }
 
 void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& origin,
                                         const glm::dvec3& direction, const glm::dvec3& n1,
                                         const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const {
-    const BezierPatchTree::Patch& patch = tree_.patches()[index];
-    const int p = tree_.degreeU(), q = tree_.degreeV();
+    const BezierPatchTree& tree = searchTree();
+    const BezierPatchTree::Patch& patch = tree.patches()[index];
+    const int p = tree.degreeU(), q = tree.degreeV();
     const std::size_t size = (static_cast<std::size_t>(p) + 1) * (static_cast<std::size_t>(q) + 1);
 
     // Project the homogeneous net across the line: G(s,t) = 0 exactly where S(s,t) is on the line
@@ -357,7 +365,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         magnitude = std::max(magnitude, h.w);
         terms = std::max(terms, std::abs(h.x) + std::abs(h.y) + std::abs(h.z) + originSize * h.w);
     }
-    const double lengthScale = tree_.scale() * magnitude;
+    const double lengthScale = tree.scale() * magnitude;
     // The rounding bound covers the projection and 40 levels of halving (each adds at most an
     // epsilon of the net's size), times the factor p an edge division can bring. The box test and
     // Newton's residual allow for the projection's own rounding (a few epsilons of `terms`): far
@@ -371,7 +379,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     auto accept = [&](double s, double t) {
         s = std::clamp(s, 0.0, 1.0), t = std::clamp(t, 0.0, 1.0);
         const double u = patch.u0 + s * (patch.u1 - patch.u0), v = patch.v0 + t * (patch.v1 - patch.v0);
-        const BezierPatchTree::PatchPoint e = tree_.evaluate(index, u, v, 0);
+        const BezierPatchTree::PatchPoint e = tree.evaluate(index, u, v, 0);
         // t is measured from `origin` (near the surface, see intersect()); the caller shifts it.
         const double lineT = glm::dot(e.point - origin, direction) / glm::dot(direction, direction);
         const glm::dvec3 onLine = origin + lineT * direction;
@@ -379,7 +387,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         // which may pass 1e-10 of a small patch (one unit across at 1e6 from the origin).
         const double pointSize = std::abs(e.point.x) + std::abs(e.point.y) + std::abs(e.point.z);
         const double reach =
-            std::max(1e-10 * tree_.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize);
+            std::max(1e-10 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize);
         if (glm::length(onLine - e.point) > reach) return;
         LineSurfaceHit hit;
         hit.t = lineT;
@@ -409,7 +417,7 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         bool onLine = true;
         for (std::size_t k = 0; k <= static_cast<std::size_t>(alongS ? q : p) && onLine; ++k) {
             const std::size_t at = edgePoint(edge, k, p, q);
-            const double near = std::max(1e-11 * tree_.scale() * patch.net[at].w, rounding);
+            const double near = std::max(1e-11 * tree.scale() * patch.net[at].w, rounding);
             onLine = glm::dot(projected[at], projected[at]) <= near * near;
         }
         if (!onLine) continue;
@@ -419,21 +427,25 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     findRoots(net, np, nq, tolerances, record);
 }
 
-std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& origin,
+std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& lineOrigin,
                                                           const glm::dvec3& direction) const {
+    const BezierPatchTree& tree = searchTree();
     const double len = glm::length(direction);
     if (!(len > 0.0) || !std::isfinite(len))
         throw GeometryError("intersectLine: the line direction must be a finite, non-zero vector");
-    if (!std::isfinite(origin.x) || !std::isfinite(origin.y) || !std::isfinite(origin.z))
+    if (!std::isfinite(lineOrigin.x) || !std::isfinite(lineOrigin.y) || !std::isfinite(lineOrigin.z))
         throw GeometryError("intersectLine: the line origin has a non-finite coordinate");
+    // The search runs in the search tree's coordinates (the surface's, or scaled to unit size):
+    // a line parameter there is unitScale_ times the caller's.
+    const glm::dvec3 origin = lineOrigin * unitScale_;
     const glm::dvec3 d = direction / len;
     // Two unit vectors across the line.
     const glm::dvec3 helper = std::abs(d.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 n1 = glm::normalize(glm::cross(d, helper));
     const glm::dvec3 n2 = glm::cross(d, n1);
     const glm::dvec3 inverse(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
-    const double margin = 1e-9 * tree_.scale();
-    const auto& nodes = tree_.nodes();
+    const double margin = 1e-9 * tree.scale();
+    const auto& nodes = tree.nodes();
     if (nodes.empty()) return {};
     // Work from the point of the line nearest the surface's box centre: an origin far away
     // (a pick ray from a distant eye) would otherwise cost digits in every projection.
@@ -444,7 +456,7 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
     std::vector<LineSurfaceHit> hits;
     int stack[128];
     int top = 0;
-    stack[top++] = tree_.root();
+    stack[top++] = tree.root();
     while (top > 0) {
         const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(stack[--top])];
         if (!node.box.hitByLine(base, inverse, margin)) continue;
@@ -463,8 +475,8 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
     // A run of such hits (a tangent contact of high order, a line lying in the surface) is
     // reported once, by its middle member.
     std::vector<LineSurfaceHit> unique;
-    const double same = 1e-7 * tree_.scale();
-    const double near = 1e-2 * tree_.scale();
+    const double same = 1e-7 * tree.scale();
+    const double near = 1e-2 * tree.scale();
     // Does the surface pass within tolerance of the line point halfway between two hits?
     // (Gauss-Newton for the nearest surface point, from the middle of their parameters.)
     auto touchesBetween = [&](const LineSurfaceHit& a, const LineSurfaceHit& b) {
@@ -472,17 +484,17 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
         glm::dvec2 uv = 0.5 * (a.uv + b.uv);
         double distance = 0.0;
         for (int it = 0; it < 6; ++it) {
-            const BezierPatchTree::PatchPoint e = tree_.evaluate(uv.x, uv.y, 1);
+            const BezierPatchTree::PatchPoint e = tree.evaluate(uv.x, uv.y, 1);
             const glm::dvec3 r = e.point - target;
             distance = glm::length(r);
             const double a11 = glm::dot(e.su, e.su), a12 = glm::dot(e.su, e.sv), a22 = glm::dot(e.sv, e.sv);
             const double det = a11 * a22 - a12 * a12;
             if (!(det > 0.0)) break;
             const double g1 = glm::dot(e.su, r), g2 = glm::dot(e.sv, r);
-            uv.x = std::clamp(uv.x - (a22 * g1 - a12 * g2) / det, tree_.domainStartU(), tree_.domainEndU());
-            uv.y = std::clamp(uv.y - (-a12 * g1 + a11 * g2) / det, tree_.domainStartV(), tree_.domainEndV());
+            uv.x = std::clamp(uv.x - (a22 * g1 - a12 * g2) / det, tree.domainStartU(), tree.domainEndU());
+            uv.y = std::clamp(uv.y - (-a12 * g1 + a11 * g2) / det, tree.domainStartV(), tree.domainEndV());
         }
-        return distance < 1e-12 * tree_.scale();
+        return distance < 1e-12 * tree.scale();
     };
     std::size_t runStart = 0;
     for (std::size_t k = 0; k <= hits.size(); ++k) {
@@ -495,8 +507,8 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& orig
         runStart = k;
     }
     for (LineSurfaceHit& h : unique) {
-        h.t += shift;
-        h.point = origin + h.t * direction;
+        h.t = (h.t + shift) / unitScale_;
+        h.point = lineOrigin + h.t * direction;
     }
     return unique;
 }

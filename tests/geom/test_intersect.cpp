@@ -428,4 +428,53 @@ TEST_CASE("a line through a pole finds it once, and every other crossing", "[geo
     }
 }
 
+TEST_CASE("line hits scale with the surface out to coordinates near 1e301 and down to 1e-181",
+          "[geom][intersect][scale]") {
+    // Scaling a surface and the line's origin by a power of two must scale t and the points and
+    // change nothing else, also where squared distances overflow (past 1e154) or underflow.
+    std::mt19937 rng(20261207);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int surfaceIndex = 0; surfaceIndex < 6; ++surfaceIndex) {
+        const int p = 1 + surfaceIndex % 3, q = 1 + (surfaceIndex / 2) % 3;
+        const Surface s =
+            geomtest::bumpySurface(rng, p, q, std::size_t(p) + 3, std::size_t(q) + 3, surfaceIndex % 2 == 1);
+        for (int trial = 0; trial < 20; ++trial) {
+            const glm::dvec3 x = evaluate(s, unit(rng), unit(rng));
+            const glm::dvec3 d = tilted(normal(s, 0.5, 0.5), unit(rng) * 1.2, unit(rng) * 6.283);
+            const glm::dvec3 o = x - (0.5 + unit(rng)) * d;
+            const std::vector<LineSurfaceHit> base = intersectLine(s, o, d);
+            REQUIRE(hasHitNear(base, x, 1e-7));
+            for (int e : {-600, -450, 450, 520, 1000}) {
+                const double scale = std::ldexp(1.0, e);
+                Surface scaled = s;
+                for (glm::dvec3& c : scaled.points) c *= scale;
+                const std::vector<LineSurfaceHit> hits = intersectLine(scaled, o * scale, d);
+                INFO("surface " << surfaceIndex << " trial " << trial << " scale 2^" << e);
+                REQUIRE(hits.size() == base.size());
+                for (std::size_t i = 0; i < hits.size(); ++i) {
+                    REQUIRE(hits[i].uv == base[i].uv);
+                    REQUIRE(hits[i].t == base[i].t * scale);
+                    REQUIRE(hits[i].point == base[i].point * scale);
+                }
+            }
+        }
+    }
+    // The tester's case: README's bicubic patch scaled by s, the vertical line through its middle
+    // (from 1e155 on an extra hit at uv (1, 0.5) came back, 0.5 s from the surface).
+    for (double size : {1.0, 1e100, 1e155, 1e200, 1e300}) {
+        std::vector<glm::dvec3> net;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                net.push_back(size * glm::dvec3(i / 3.0, j / 3.0,
+                                                (i == 1 || i == 2) && (j == 1 || j == 2) ? 0.5 : 0.0));
+        const Surface patch(3, 3, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, 4, 4, net);
+        const auto hits = intersectLine(patch, size * glm::dvec3(0.5, 0.5, -1), {0, 0, 1});
+        CAPTURE(size);
+        REQUIRE(hits.size() == 1);
+        REQUIRE(std::abs(hits[0].uv.x - 0.5) < 1e-12);
+        REQUIRE(std::abs(hits[0].uv.y - 0.5) < 1e-12);
+        REQUIRE(std::abs(hits[0].t / size - 1.28125) < 1e-12);
+    }
+}
+
 }  // namespace test_intersect

@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace geom {
@@ -22,13 +23,20 @@ public:
     /// All hits on the infinite line origin + t * direction, sorted by t (see intersectLine).
     std::vector<LineSurfaceHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction) const;
 
+    /// The surface's own patch tree (in its own coordinates).
     const BezierPatchTree& tree() const { return tree_; }
 
 private:
     void intersectPatch(std::size_t patch, const glm::dvec3& origin, const glm::dvec3& direction,
                         const glm::dvec3& n1, const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const;
+    /// The tree the search runs on: tree_, or for a surface with coordinates past 2^400 or all
+    /// below 2^-400 (where squared distances overflow or underflow) a copy scaled by a power of
+    /// two, unitScale_, to unit size.
+    const BezierPatchTree& searchTree() const { return unitTree_ ? *unitTree_ : tree_; }
 
     BezierPatchTree tree_;
+    std::optional<BezierPatchTree> unitTree_;
+    double unitScale_ = 1.0;
 };
 
 }  // namespace geom
