@@ -331,6 +331,113 @@ void findRoots(const std::vector<glm::dvec2>& net, int p, int q, const Tolerance
     }
 }
 
+/// Does the surface pass within 1e-12 of its size of the line point halfway between two hits?
+/// (Gauss-Newton for the nearest surface point, from the middle of their parameters.)
+bool touchesBetween(const BezierPatchTree& tree, const LineSurfaceHit& a, const LineSurfaceHit& b) {
+    const glm::dvec3 target = 0.5 * (a.point + b.point);
+    glm::dvec2 uv = 0.5 * (a.uv + b.uv);
+    double distance = 0.0;
+    for (int it = 0; it < 6; ++it) {
+        const BezierPatchTree::PatchPoint e = tree.evaluate(uv.x, uv.y, 1);
+        const glm::dvec3 r = e.point - target;
+        distance = glm::length(r);
+        const double a11 = glm::dot(e.su, e.su), a12 = glm::dot(e.su, e.sv), a22 = glm::dot(e.sv, e.sv);
+        const double det = a11 * a22 - a12 * a12;
+        if (!(det > 0.0)) break;
+        const double g1 = glm::dot(e.su, r), g2 = glm::dot(e.sv, r);
+        uv.x = std::clamp(uv.x - (a22 * g1 - a12 * g2) / det, tree.domainStartU(), tree.domainEndU());
+        uv.y = std::clamp(uv.y - (-a12 * g1 + a11 * g2) / det, tree.domainStartV(), tree.domainEndV());
+    }
+    return distance < 1e-12 * tree.scale();
+}
+
+/// The largest coordinate of a hit's point, for the rounding its coordinates carry.
+double pointSize(const LineSurfaceHit& hit) {
+    return std::max({std::abs(hit.point.x), std::abs(hit.point.y), std::abs(hit.point.z)});
+}
+
+/// The surface's unit normal at uv, or zero where it is degenerate: a first derivative (over the
+/// whole domain width) below a millionth of the surface's size or at the rounding level of its
+/// coordinates (a collapsed edge, or a surface collapsed to one point).
+glm::dvec3 sheetNormal(const BezierPatchTree& tree, const glm::dvec2& uv, double rounding) {
+    const BezierPatchTree::PatchPoint e = tree.evaluate(uv.x, uv.y, 1);
+    const double small = std::max(1e-6 * tree.scale(), rounding);
+    const double su = glm::length(e.su), sv = glm::length(e.sv);
+    if (!(su * (tree.domainEndU() - tree.domainStartU()) > small) ||
+        !(sv * (tree.domainEndV() - tree.domainStartV()) > small))
+        return glm::dvec3(0.0);
+    const glm::dvec3 n = glm::cross(e.su / su, e.sv / sv);
+    const double length = glm::length(n);
+    return length > 1e-6 ? n / length : glm::dvec3(0.0);
+}
+
+/// Whether two hits at one point are one crossing: the same root found twice (nearly the same
+/// parameters), the two sides of a seam, or a degenerate place (a pole, a surface collapsed to
+/// the point). Two smooth sheets of a self-intersection crossing there have different tangent
+/// planes, and are two crossings.
+bool oneCrossing(const BezierPatchTree& tree, const LineSurfaceHit& a, const LineSurfaceHit& b,
+                 double rounding) {
+    const double widthU = tree.domainEndU() - tree.domainStartU();
+    const double widthV = tree.domainEndV() - tree.domainStartV();
+    if (std::abs(a.uv.x - b.uv.x) <= 1e-5 * widthU && std::abs(a.uv.y - b.uv.y) <= 1e-5 * widthV) return true;
+    auto opposite = [](double x, double y, double start, double end) {
+        const double slack = 1e-9 * (end - start);
+        return (x <= start + slack && y >= end - slack) || (y <= start + slack && x >= end - slack);
+    };
+    if (opposite(a.uv.x, b.uv.x, tree.domainStartU(), tree.domainEndU()) ||
+        opposite(a.uv.y, b.uv.y, tree.domainStartV(), tree.domainEndV()))
+        return true;
+    const glm::dvec3 na = sheetNormal(tree, a.uv, rounding), nb = sheetNormal(tree, b.uv, rounding);
+    return na == glm::dvec3(0.0) || nb == glm::dvec3(0.0) || glm::length(glm::cross(na, nb)) <= 1e-3;
+}
+
+/// One hit per crossing, from hits sorted by t. A root on a patch edge is found from both sides,
+/// a tangent contact (a double root, where Newton converges only linearly) from several
+/// sub-patches, and every cell of a degenerate piece (a surface collapsed to a point) converges
+/// to its point. Hits follow each other in one run when they nearly coincide (within 1e-7 of the
+/// surface's size, or the rounding of their coordinates), or when they are close and the surface
+/// between them still lies on the line (a tangent contact of high order, a line lying in the
+/// surface): a run is reported once, by its middle member. A run at one point is first parted
+/// into its crossings (oneCrossing), one hit each.
+std::vector<LineSurfaceHit> oneHitPerCrossing(const BezierPatchTree& tree,
+                                              const std::vector<LineSurfaceHit>& hits) {
+    std::vector<LineSurfaceHit> unique;
+    const double near = 1e-2 * tree.scale();
+    auto sameAt = [&](const LineSurfaceHit& h) {
+        return std::max(1e-7 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize(h));
+    };
+    auto emitRun = [&](std::size_t first, std::size_t end) {
+        const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * pointSize(hits[first]);
+        if (glm::length(hits[end - 1].point - hits[first].point) >= sameAt(hits[first])) {
+            unique.push_back(hits[(first + end - 1) / 2]);
+            return;
+        }
+        std::vector<std::vector<std::size_t>> crossings;
+        for (std::size_t k = first; k < end; ++k) {
+            auto same = std::find_if(crossings.begin(), crossings.end(), [&](const auto& members) {
+                return oneCrossing(tree, hits[members.front()], hits[k], rounding);
+            });
+            if (same == crossings.end())
+                crossings.push_back({k});
+            else
+                same->push_back(k);
+        }
+        for (const auto& members : crossings) unique.push_back(hits[members[(members.size() - 1) / 2]]);
+    };
+    std::size_t runStart = 0;
+    for (std::size_t k = 0; k <= hits.size(); ++k) {
+        if (k > runStart && k < hits.size()) {
+            const LineSurfaceHit& previous = hits[k - 1];
+            const double gap = glm::length(hits[k].point - previous.point);
+            if (gap < sameAt(previous) || (gap < near && touchesBetween(tree, previous, hits[k]))) continue;
+        }
+        if (k > runStart) emitRun(runStart, k);
+        runStart = k;
+    }
+    std::sort(unique.begin(), unique.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
+    return unique;
+}
+
 }  // namespace
 
 SurfaceIntersector::SurfaceIntersector(const Surface& surface) : tree_(surface) {
@@ -444,13 +551,17 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
     const glm::dvec3 n1 = glm::normalize(glm::cross(d, helper));
     const glm::dvec3 n2 = glm::cross(d, n1);
     const glm::dvec3 inverse(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
-    const double margin = 1e-9 * tree.scale();
     const auto& nodes = tree.nodes();
     if (nodes.empty()) return {};
     // Work from the point of the line nearest the surface's box centre: an origin far away
     // (a pick ray from a distant eye) would otherwise cost digits in every projection.
     const glm::dvec3 centre = nodes[0].box.center();
     const glm::dvec3 base = origin + glm::dot(centre - origin, d) * d;
+    // The boxes are widened by the rounding of the line's coordinates too: a surface collapsed
+    // to a point has boxes of no size, which the line passes only to rounding.
+    const double coordinates = std::max({std::abs(base.x), std::abs(base.y), std::abs(base.z)});
+    const double margin =
+        std::max(1e-9 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * coordinates);
     const double shift = glm::dot(base - origin, direction) / glm::dot(direction, direction);
 
     std::vector<LineSurfaceHit> hits;
@@ -468,44 +579,7 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
         stack[top++] = node.second;
     }
     std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
-    // One hit per crossing: a root on a patch edge is found from both sides, and a tangent contact
-    // (a double root, where Newton converges only linearly) from several sub-patches. Two hits
-    // are one when they nearly coincide, or when they are close and the surface between them
-    // still lies on the line.
-    // A run of such hits (a tangent contact of high order, a line lying in the surface) is
-    // reported once, by its middle member.
-    std::vector<LineSurfaceHit> unique;
-    const double same = 1e-7 * tree.scale();
-    const double near = 1e-2 * tree.scale();
-    // Does the surface pass within tolerance of the line point halfway between two hits?
-    // (Gauss-Newton for the nearest surface point, from the middle of their parameters.)
-    auto touchesBetween = [&](const LineSurfaceHit& a, const LineSurfaceHit& b) {
-        const glm::dvec3 target = 0.5 * (a.point + b.point);
-        glm::dvec2 uv = 0.5 * (a.uv + b.uv);
-        double distance = 0.0;
-        for (int it = 0; it < 6; ++it) {
-            const BezierPatchTree::PatchPoint e = tree.evaluate(uv.x, uv.y, 1);
-            const glm::dvec3 r = e.point - target;
-            distance = glm::length(r);
-            const double a11 = glm::dot(e.su, e.su), a12 = glm::dot(e.su, e.sv), a22 = glm::dot(e.sv, e.sv);
-            const double det = a11 * a22 - a12 * a12;
-            if (!(det > 0.0)) break;
-            const double g1 = glm::dot(e.su, r), g2 = glm::dot(e.sv, r);
-            uv.x = std::clamp(uv.x - (a22 * g1 - a12 * g2) / det, tree.domainStartU(), tree.domainEndU());
-            uv.y = std::clamp(uv.y - (-a12 * g1 + a11 * g2) / det, tree.domainStartV(), tree.domainEndV());
-        }
-        return distance < 1e-12 * tree.scale();
-    };
-    std::size_t runStart = 0;
-    for (std::size_t k = 0; k <= hits.size(); ++k) {
-        if (k > runStart && k < hits.size()) {
-            const LineSurfaceHit& previous = hits[k - 1];
-            const double gap = glm::length(hits[k].point - previous.point);
-            if (gap < same || (gap < near && touchesBetween(previous, hits[k]))) continue;
-        }
-        if (k > runStart) unique.push_back(hits[(runStart + k - 1) / 2]);
-        runStart = k;
-    }
+    std::vector<LineSurfaceHit> unique = oneHitPerCrossing(tree, hits);
     for (LineSurfaceHit& h : unique) {
         h.t = (h.t + shift) / unitScale_;
         h.point = lineOrigin + h.t * direction;

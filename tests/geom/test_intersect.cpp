@@ -477,4 +477,64 @@ TEST_CASE("line hits scale with the surface out to coordinates near 1e301 and do
     }
 }
 
+TEST_CASE("a surface collapsed to one point is hit once by any line through it",
+          "[geom][intersect][degenerate]") {
+    // The tester's case gave 8 hits (a bicubic patch), this class up to 13. Every control point the same
+    // (rational or not): the whole parameter square maps to the point, and Newton converges to it from every
+    // cell.
+    std::mt19937 rng(20261208);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int surfaceIndex = 0; surfaceIndex < 18; ++surfaceIndex) {
+        const int p = 1 + surfaceIndex % 3, q = 1 + (surfaceIndex / 3) % 3;
+        Surface s = geomtest::randomSurface(rng, p, q, std::size_t(p) + 1 + surfaceIndex % 2,
+                                            std::size_t(q) + 2, surfaceIndex % 2 == 0, true);
+        const glm::dvec3 point = 10.0 * geomtest::randomPoint(rng);
+        std::fill(s.points.begin(), s.points.end(), point);
+        for (int trial = 0; trial < 10; ++trial) {
+            const glm::dvec3 d = glm::normalize(geomtest::randomPoint(rng));
+            const glm::dvec3 o = point - (0.5 + 3.0 * unit(rng)) * d;
+            const auto hits = intersectLine(s, o, d);
+            INFO("surface " << surfaceIndex << " trial " << trial);
+            REQUIRE(hits.size() == 1);
+            REQUIRE(glm::length(hits[0].point - point) < 1e-12 * glm::length(point));
+            // A line that misses the point misses the surface.
+            const glm::dvec3 side = glm::normalize(glm::cross(d, glm::dvec3(1, 2, 3)));
+            REQUIRE(intersectLine(s, o + 1e-3 * side, d).empty());
+        }
+    }
+}
+
+TEST_CASE("a line through a self-intersection of two smooth sheets crosses twice",
+          "[geom][intersect][degenerate]") {
+    // A cubic loop in the xy plane, symmetric about x = 0, crosses itself at (0, y*) for
+    // s = 1/2 -+ sqrt(3/28); extruded along z (degree 1 or 2, random heights) it is a surface
+    // whose two sheets meet along the vertical line over (0, y*). Lines through points of that
+    // line, across both sheets, cross each sheet once: two hits at one point, with different u.
+    const std::vector<glm::dvec2> loop{{-1, 0}, {2, 1.5}, {-2, 1.5}, {1, 0}};
+    const double r = std::sqrt(1.5 / 14.0), s1 = 0.5 - r, s2 = 0.5 + r;
+    std::mt19937 rng(20261209);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int member = 0; member < 12; ++member) {
+        const int q = 1 + member % 2;
+        std::vector<glm::dvec3> net;
+        for (const glm::dvec2& c : loop)
+            for (int j = 0; j <= q; ++j) net.emplace_back(c.x, c.y, 2.0 * j / q);
+        std::vector<double> knotsV(std::size_t(q) + 1, 0.0);
+        knotsV.insert(knotsV.end(), std::size_t(q) + 1, 1.0);
+        const Surface sheet(3, q, {0, 0, 0, 0, 1, 1, 1, 1}, knotsV, 4, std::size_t(q) + 1, net);
+        const glm::dvec3 a = evaluate(sheet, s1, 0.5), b = evaluate(sheet, s2, 0.5);
+        REQUIRE(glm::length(a - b) < 1e-14);
+        const glm::dvec3 crossing(0.0, a.y, 0.4 + 1.2 * unit(rng));
+        // Steep in the xy plane, away from both sheets' tangents ((3, -+2.95): about -+45 degrees).
+        const double angle = 1.2 + 0.7 * unit(rng);
+        const glm::dvec3 d(std::cos(angle), std::sin(angle), 0.3 * (unit(rng) - 0.5));
+        const auto hits = intersectLine(sheet, crossing - 2.0 * d, d);
+        INFO("member " << member << ", angle " << angle);
+        const auto atCrossing = std::count_if(hits.begin(), hits.end(), [&](const LineSurfaceHit& h) {
+            return glm::length(h.point - crossing) < 1e-9;
+        });
+        REQUIRE(atCrossing == 2);
+    }
+}
+
 }  // namespace test_intersect

@@ -21,9 +21,10 @@ struct LineSurfaceHit {
 
 /// Every intersection of the infinite line origin + t * direction with the surface, sorted by
 /// t. Each hit lies on the surface within 1e-9 of the surface's size; tangent contacts count
-/// once, and so does a pole the line passes through (an edge collapsed to one point) or a
-/// patch edge it runs along (one hit, at the edge's middle). For many lines against one surface,
-/// build a SurfaceIntersector once instead.
+/// once, and so does a pole the line passes through (an edge collapsed to one point), a patch
+/// collapsed to one point, or a patch edge it runs along (one hit, at the edge's middle). Two
+/// smooth sheets crossing at one point of the line (a self-intersection) are two hits there.
+/// For many lines against one surface, build a SurfaceIntersector once instead.
 std::vector<LineSurfaceHit> intersectLine(const Surface& surface, const glm::dvec3& origin,
                                           const glm::dvec3& direction);
 
