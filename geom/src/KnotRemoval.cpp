@@ -74,80 +74,56 @@ std::vector<glm::dvec4> homogeneousPoints(const Curve& curve, const glm::dvec3& 
     return pw;
 }
 
-/// The NURBS Book A5.8's removal loop, with its index names: removes knot u (at `at`) up to
-/// `times` times while each removal keeps the bound, updating pw in place; returns the number of
-/// times it was removed.
-int removeTimes(const std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
-                int times, const RemovalBound& bound) {
-    auto knot = [&](int i) { return U[static_cast<std::size_t>(i)]; };
+/// Removes one occurrence of knot u (at `at`) from the homogeneous points pw and the knots when
+/// the bound allows it, as The NURBS Book's A5.8 does once; returns whether it did. Inserting u
+/// again would give P_i = a_i Q_i + (1 - a_i) Q_(i-1) for i = first..last, a_i = (u - U_i) /
+/// (U_(i+p+1) - U_i), with Q_(first-1) and Q_last the unchanged neighbours: one equation more
+/// than new points. A5.8 solves it from both ends (dividing by a_i from the left and by 1 - a_i
+/// from the right) and meets in the middle; where the a_i are all near 1 (u near the clamped
+/// end) the right side then divides by tiny numbers, and an exact removal is refused. So each
+/// side runs only where it divides by at least one half, the left up to the equation k where
+/// a_i falls below 1/2, the right down to it, and equation k is the one left over: the curve
+/// moves by its residual times one B-spline (at most 1), which the bound checks.
+bool removeOnce(std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, double u, KnotPlace at,
+                const RemovalBound& bound) {
     auto P = [&](int i) -> glm::dvec4& { return pw[static_cast<std::size_t>(i)]; };
-    const int r = at.r, s = at.s, ord = p + 1;
-    int first = r - p;
-    int last = r - s;
-    std::vector<glm::dvec4> temp(static_cast<std::size_t>(2 * p + 1));
-    auto T = [&](int i) -> glm::dvec4& { return temp[static_cast<std::size_t>(i)]; };
-    int t = 0;
-    for (; t < times; ++t) {
-        const int off = first - 1;
-        T(0) = P(off);
-        T(last + 1 - off) = P(last + 1);
-        int i = first, j = last, ii = 1, jj = last - off;
-        while (j - i > t) {
-            const double alfi = (u - knot(i)) / (knot(i + ord + t) - knot(i));
-            const double alfj = (u - knot(j - t)) / (knot(j + ord) - knot(j - t));
-            T(ii) = (P(i) - (1.0 - alfi) * T(ii - 1)) / alfi;
-            T(jj) = (P(j) - alfj * T(jj + 1)) / (1.0 - alfj);
-            ++i, ++ii, --j, --jj;
-        }
-        bool removable = false;
-        if (j - i < t) {
-            removable = bound.holds(T(ii - 1), T(jj + 1));
-        } else {
-            const double alfi = (u - knot(i)) / (knot(i + ord + t) - knot(i));
-            removable = bound.holds(P(i), alfi * T(ii + t + 1) + (1.0 - alfi) * T(ii - 1));
-        }
-        if (!removable) break;
-        i = first;
-        j = last;
-        while (j - i > t) {
-            P(i) = T(i - off);
-            P(j) = T(j - off);
-            ++i, --j;
-        }
-        --first;
-        ++last;
+    const int first = at.r - p, last = at.r - at.s;
+    const auto begin = pw.begin() + first;
+    if (last < first) {
+        // A break (multiplicity p + 1): the two points on either side of it must meet.
+        if (!bound.holds(P(first - 1), P(first))) return false;
+        pw.erase(begin);
+    } else {
+        auto alpha = [&](int i) {
+            return (u - U[static_cast<std::size_t>(i)]) /
+                   (U[static_cast<std::size_t>(i + p + 1)] - U[static_cast<std::size_t>(i)]);
+        };
+        // q[i - first + 1] is the new point Q_i, i = first - 1 .. last.
+        std::vector<glm::dvec4> q(static_cast<std::size_t>(last - first + 2));
+        auto Q = [&](int i) -> glm::dvec4& { return q[static_cast<std::size_t>(i - first + 1)]; };
+        Q(first - 1) = P(first - 1);
+        Q(last) = P(last + 1);
+        int k = first;
+        while (k < last && alpha(k) >= 0.5) ++k;
+        for (int i = first; i < k; ++i) Q(i) = (P(i) - (1.0 - alpha(i)) * Q(i - 1)) / alpha(i);
+        for (int j = last; j > k; --j) Q(j - 1) = (P(j) - alpha(j) * Q(j)) / (1.0 - alpha(j));
+        if (!bound.holds(P(k), alpha(k) * Q(k) + (1.0 - alpha(k)) * Q(k - 1))) return false;
+        // P_first..P_last become Q_first..Q_(last-1).
+        std::copy(q.begin() + 1, q.end() - 1, begin);
+        pw.erase(pw.begin() + last);
     }
-    return t;
+    U.erase(U.begin() + at.r);
+    return true;
 }
 
-/// The curve left after removing knot u (at `at`) t times: A5.8's closing shifts of the knots and
-/// of the homogeneous points pw, projected back.
-Curve compacted(const Curve& curve, std::vector<glm::dvec4>& pw, const glm::dvec3& centre, KnotPlace at,
-                int t) {
-    const int p = curve.degree;
-    const int n = static_cast<int>(curve.points.size()) - 1;
-    const int r = at.r, s = at.s;
-    std::vector<double> knots = curve.knots;
-    const int m = n + p + 1;
-    for (int k = r + 1; k <= m; ++k)
-        knots[static_cast<std::size_t>(k - t)] = knots[static_cast<std::size_t>(k)];
-    knots.resize(knots.size() - static_cast<std::size_t>(t));
-    const int fout = (2 * r - s - p) / 2;
-    int j = fout, i = fout;
-    for (int k = 1; k < t; ++k) {
-        if (k % 2 == 1)
-            ++i;
-        else
-            --j;
-    }
-    for (int k = i + 1; k <= n; ++k) pw[static_cast<std::size_t>(j++)] = pw[static_cast<std::size_t>(k)];
-    pw.resize(pw.size() - static_cast<std::size_t>(t));
-
+/// The curve of degree p on `knots` with homogeneous points pw about `centre`, projected back.
+Curve projected(int p, std::vector<double> knots, const std::vector<glm::dvec4>& pw, const glm::dvec3& centre,
+                bool rational) {
     std::vector<glm::dvec3> points(pw.size());
     std::vector<double> weights;
     for (std::size_t k = 0; k < pw.size(); ++k) {
         points[k] = glm::dvec3(pw[k]) / pw[k].w + centre;
-        if (curve.rational()) weights.push_back(pw[k].w);
+        if (rational) weights.push_back(pw[k].w);
     }
     return Curve(p, std::move(knots), std::move(points), std::move(weights));
 }
@@ -158,16 +134,17 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     validate(curve, "removeKnot");
     if (times < 1) throw GeometryError("removeKnot: times must be at least 1, got " + std::to_string(times));
     if (!(tolerance >= 0.0)) throw GeometryError("removeKnot: tolerance must be non-negative");
-    const KnotPlace at = locateKnot(curve, u);
+    KnotPlace at = locateKnot(curve, u);
     times = std::min(times, at.s);
     RemovalBound bound;
     const glm::dvec3 centre = pointsCentre(curve);
     std::vector<glm::dvec4> pw = homogeneousPoints(curve, centre, tolerance, bound);
-    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, bound);
-    ExactKnotRemoval out{curve, t};
-    if (t == 0) return out;
-    out.curve = compacted(curve, pw, centre, at, t);
-    return out;
+    std::vector<double> knots = curve.knots;
+    // One occurrence at a time, each checked against the curve the last one left (as A5.8).
+    int removed = 0;
+    for (; removed < times && removeOnce(knots, pw, curve.degree, u, at, bound); ++removed) --at.r, --at.s;
+    if (removed == 0) return {curve, 0};
+    return {projected(curve.degree, std::move(knots), pw, centre, curve.rational()), removed};
 }
 
 namespace {

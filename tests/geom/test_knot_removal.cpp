@@ -212,6 +212,54 @@ TEST_CASE(
     REQUIRE(removals >= 40);
 }
 
+TEST_CASE("insert-then-remove gives the curve back wherever the knot lies, next to the ends too",
+          "[geom][knots][removal][roundtrip]") {
+    // A5.8 met its two recurrences in the middle: with a knot near a clamped end every alpha is
+    // near 1 (or 0) and one side divided by tiny numbers, so an exact removal was refused (u =
+    // 0.99876 on a degree-7 curve, at every tolerance up to 1e-8 of its size). Random curves of
+    // degree 1..7, clamped or not, half rational with weights over six decades, scaled by
+    // 1e-6..1e6; the knot anywhere, or within 1e-4 of the domain's width from either end. Each
+    // must come off at 1e-9 of the curve's size and give the curve back within 1e-14 of it
+    // (polynomial; measured: 4.4e-16) or 1e-11 (rational, where evaluating with weights six
+    // decades apart rounds at 1e-16 x 1e6 already; measured: 1.7e-12).
+    std::mt19937 rng(20261210);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int tried = 0, refused = 0, moved = 0;
+    for (int member = 0; member < 6000; ++member) {
+        const int p = 1 + member % 7;
+        const bool rational = member % 2 == 1, clamped = member % 4 != 3;
+        const std::size_t count = static_cast<std::size_t>(p) + 1 + std::size_t(unit(rng) * 9.0);
+        Curve c = randomCurve(rng, p, count, rational, clamped);
+        const double scale = std::pow(10.0, -6.0 + 12.0 * unit(rng));
+        for (glm::dvec3& q : c.points) q *= scale;
+        for (double& w : c.weights) w = std::pow(10.0, -3.0 + 6.0 * unit(rng));
+        const double a = c.domainStart(), b = c.domainEnd(), width = b - a;
+        const double where = unit(rng), offset = 1e-4 * width * unit(rng);
+        const double u = member % 3 == 0 ? a + offset : member % 3 == 1 ? b - offset : a + where * width;
+        if (!(u > a && u < b) || knotMultiplicity(c.knots, u) > 0) continue;
+        ++tried;
+        double size = 0.0;
+        for (const glm::dvec3& q : c.points)
+            size = std::max({size, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+        const ExactKnotRemoval r = removeKnot(insertKnot(c, u, 1), u, 1, 1e-9 * size);
+        if (r.removed != 1) {
+            ++refused;
+            continue;
+        }
+        REQUIRE(r.curve.knots == c.knots);
+        double error = 0.0;
+        for (int k = 0; k <= 64; ++k) {
+            const double x = a + width * k / 64.0;
+            error = std::max(error, glm::length(evaluate(r.curve, x) - evaluate(c, x)));
+        }
+        moved += error > (rational ? 1e-11 : 1e-14) * size;
+    }
+    INFO(tried << " curves: " << refused << " refused, " << moved << " moved too far");
+    REQUIRE(tried > 5000);
+    REQUIRE(refused == 0);
+    REQUIRE(moved == 0);
+}
+
 TEST_CASE("least-squares removal of several nearby knots recovers the simpler curve",
           "[geom][knots][removal]") {
     std::mt19937 rng(27);
