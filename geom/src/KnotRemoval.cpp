@@ -117,8 +117,8 @@ bool removeOnce(std::vector<double>& U, std::vector<glm::dvec4>& pw, int p, doub
 }
 
 /// The curve of degree p on `knots` with homogeneous points pw about `centre`, projected back.
-Curve projected(int p, std::vector<double> knots, const std::vector<glm::dvec4>& pw, const glm::dvec3& centre,
-                bool rational) {
+Curve curveFromHomogeneous(int p, std::vector<double> knots, const std::vector<glm::dvec4>& pw,
+                           const glm::dvec3& centre, bool rational) {
     std::vector<glm::dvec3> points(pw.size());
     std::vector<double> weights;
     for (std::size_t k = 0; k < pw.size(); ++k) {
@@ -144,7 +144,7 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     int removed = 0;
     for (; removed < times && removeOnce(knots, pw, curve.degree, u, at, bound); ++removed) --at.r, --at.s;
     if (removed == 0) return {curve, 0};
-    return {projected(curve.degree, std::move(knots), pw, centre, curve.rational()), removed};
+    return {curveFromHomogeneous(curve.degree, std::move(knots), pw, centre, curve.rational()), removed};
 }
 
 namespace {

@@ -352,7 +352,7 @@ bool touchesBetween(const BezierPatchTree& tree, const LineSurfaceHit& a, const 
 }
 
 /// The largest coordinate of a hit's point, for the rounding its coordinates carry.
-double pointSize(const LineSurfaceHit& hit) {
+double coordinateSize(const LineSurfaceHit& hit) {
     return std::max({std::abs(hit.point.x), std::abs(hit.point.y), std::abs(hit.point.z)});
 }
 
@@ -404,10 +404,11 @@ std::vector<LineSurfaceHit> oneHitPerCrossing(const BezierPatchTree& tree,
     std::vector<LineSurfaceHit> unique;
     const double near = 1e-2 * tree.scale();
     auto sameAt = [&](const LineSurfaceHit& h) {
-        return std::max(1e-7 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize(h));
+        return std::max(1e-7 * tree.scale(),
+                        64.0 * std::numeric_limits<double>::epsilon() * coordinateSize(h));
     };
     auto emitRun = [&](std::size_t first, std::size_t end) {
-        const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * pointSize(hits[first]);
+        const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * coordinateSize(hits[first]);
         if (glm::length(hits[end - 1].point - hits[first].point) >= sameAt(hits[first])) {
             unique.push_back(hits[(first + end - 1) / 2]);
             return;
