@@ -28,13 +28,16 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
 /// the surface point at every edge midpoint and triangle centroid lies within tolerance of the
 /// mesh point at the same (u, v). Every parameter line runs through the whole surface, so
 /// neighbouring Bézier pieces share their edge vertices and the mesh has no cracks or T-junctions.
+/// Distances are measured with the net scaled by a power of two to unit size (exact), so the mesh
+/// of a scaled surface is the scaled mesh, at any finite coordinates.
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
 
 /// A polyline through the curve whose chords stay within tolerance of it, from the domain start
 /// to its end: each Bézier piece is halved until every part's control points lie within tolerance
 /// of its chord (the part lies in their convex hull, rational ones too). A tolerance below 16
 /// units in the last place of the largest coordinate is refused. One polyline joins the ends of a
-/// jump (a knot of multiplicity degree + 1): draw splitAtBreaks' pieces instead.
+/// jump (a knot of multiplicity degree + 1): draw splitAtBreaks' pieces instead. Measured like
+/// tessellateAdaptive, in coordinates scaled to unit size.
 std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance);
 
 }  // namespace geom
