@@ -1,4 +1,5 @@
-/* The window workstation keeps its picture while the program waits for input (label window,
+/* The window workstation shows each change at once under ASAP, with no UPDATE or input call after
+ * it; it keeps its picture while the program waits for input (label window,
  * under an Xvfb of its own): a window put over it and taken away again, or a resize, is repainted
  * during AWAIT EVENT, which goes on to its timeout rather than ending early with NONE; text typed
  * into string device 1 (echo on, prompt/echo type 1) shows in its echo area; a choice device with
@@ -91,6 +92,73 @@ static int colour_pixels(Display* x, Window w, int x0, int y0, int x1, int y1, i
         }
     XDestroyImage(image);
     return n;
+}
+
+/* Sleeps `seconds` without calling PHIGS, as an old program waiting on the operator does. */
+static void sleep_without_phigs(double seconds) {
+    struct timespec t = {(time_t)seconds, (long)((seconds - (double)(time_t)seconds) * 1e9)};
+    nanosleep(&t, NULL);
+}
+
+/* Under ASAP (the default) a window shows each change at once, with no UPDATE WORKSTATION and no
+ * input call after it: random steps (a square of a new colour added to a posted structure, one
+ * structure unposted or posted again, a colour changed through the colour table), each followed
+ * by a wait in which the program calls nothing; the window then shows exactly the colours the
+ * posted squares have. */
+static void asap_without_update(Display* x) {
+    enum { kSquares = 6 };
+    /* Twelve colours apart from each other and from the black background: square k shows
+     * palette[k], or palette[k + 6] after its colour changed an odd number of times. */
+    static const float palette[12][3] = {{1, 0, 0},    {0, 1, 0}, {0, 0, 1},          {1, 1, 0},
+                                         {0, 1, 1},    {1, 0, 1}, {1, 0.5f, 0},       {0.5f, 0, 1},
+                                         {0, 0.5f, 0}, {1, 1, 1}, {0.5f, 0.5f, 0.5f}, {0, 0.5f, 1}};
+    int posted[kSquares] = {0}, changed[kSquares] = {0};
+    Pcolr_rep colours[kSquares];
+    seed_random(20261207);
+    EXPECT_NO_ERROR(popen_ws(2, NULL, PWST_WINDOW));
+    for (int k = 0; k < kSquares; ++k)
+        colours[k].rgb.red = palette[k][0], colours[k].rgb.green = palette[k][1],
+        colours[k].rgb.blue = palette[k][2];
+    Window w = 0;
+    for (int step = 0; step < 10; ++step) {
+        const int k = (int)(next_random() % kSquares);
+        if (!posted[k] && step % 3 != 2) {
+            const float x0 = 0.05f + 0.15f * (float)k;
+            Ppoint points[4] = {{x0, 0.3f}, {x0 + 0.1f, 0.3f}, {x0 + 0.1f, 0.7f}, {x0, 0.7f}};
+            Ppoint_list square = {4, points};
+            EXPECT_NO_ERROR(pset_colr_rep(2, 10 + k, &colours[k]));
+            EXPECT_NO_ERROR(popen_struct(100 + k));
+            EXPECT_NO_ERROR(pempty_struct(100 + k));
+            EXPECT_NO_ERROR(pset_int_style(PSTYLE_SOLID));
+            EXPECT_NO_ERROR(pset_int_colr_ind(10 + k));
+            EXPECT_NO_ERROR(pfill_area(&square));
+            EXPECT_NO_ERROR(pclose_struct());
+            EXPECT_NO_ERROR(ppost_struct(2, 100 + k, 0.5f));
+            posted[k] = 1;
+        } else if (posted[k] && step % 3 != 2) {
+            EXPECT_NO_ERROR(punpost_struct(2, 100 + k));
+            posted[k] = 0;
+        } else {
+            changed[k] = !changed[k];
+            const float* c = palette[k + (changed[k] ? kSquares : 0)];
+            colours[k].rgb.red = c[0], colours[k].rgb.green = c[1], colours[k].rgb.blue = c[2];
+            EXPECT_NO_ERROR(pset_colr_rep(2, 10 + k, &colours[k]));
+        }
+        sleep_without_phigs(0.4);
+        if (!w) w = find_named(x, DefaultRootWindow(x), "PHIGS workstation 2");
+        CHECK(w != 0);
+        if (!w) break;
+        for (int j = 0; j < kSquares; ++j) {
+            const int r = (int)(255 * colours[j].rgb.red + 0.5f),
+                      g = (int)(255 * colours[j].rgb.green + 0.5f),
+                      b = (int)(255 * colours[j].rgb.blue + 0.5f);
+            const int shown = colour_pixels(x, w, 0, 0, 4096, 4096, r, g, b) > 500;
+            if (shown != posted[j])
+                fprintf(stderr, "  step %d: square %d shown %d, posted %d\n", step, j, shown, posted[j]);
+            CHECK(shown == posted[j]);
+        }
+    }
+    EXPECT_NO_ERROR(pclose_ws(2));
 }
 
 static void type_key(Display* x, KeySym key) {
@@ -255,6 +323,7 @@ int main(int argc, char** argv) {
         CHECK(reds > side * side / 3);
     }
     pclose_ws(1);
+    asap_without_update(x);
     pclose_phigs();
     XCloseDisplay(x);
     return finish("window_repaint");

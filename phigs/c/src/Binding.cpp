@@ -256,6 +256,19 @@ void Binding::emergencyClose() {
     errorFile_.clear();
 }
 
+void Binding::showChangesAtOnce() {
+    if (!phigs_ || !phigs_->isOpen()) return;
+    const auto now = std::chrono::steady_clock::now();
+    const bool building = phigs_->store().isStructureOpen();
+    for (int id : phigs_->openWorkstationIds()) {
+        Workstation* ws = phigs_->findWorkstation(id);
+        if (!ws || ws->type() != WorkstationType::Window || !ws->presentationBehind()) continue;
+        if (building && now - lastShown_ < kBuildingInterval) continue;
+        lastShown_ = now;
+        regardless([&] { ws->present(); });  // a failure is reported at the next UPDATE
+    }
+}
+
 Pint Binding::specificType(Pint id) {
     auto [entry, added] = specificTypes_.try_emplace(id, nextSpecificType_);
     if (added) ++nextSpecificType_;

@@ -7,6 +7,7 @@
 #include "phigs/Phigs.h"
 #include "phigs/core/Error.h"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -101,9 +102,16 @@ public:
             why = "a count too large to hold";
         }
         reportSince(function, before, thrown, why);
+        showChangesAtOnce();
     }
 
 private:
+    /// Presents each window workstation whose picture ASAP says is shown but is not (the program
+    /// may wait next without calling PHIGS): at once, or while a structure is open (a program
+    /// building one, element by element) at most every kBuildingInterval.
+    void showChangesAtOnce();
+    static constexpr std::chrono::milliseconds kBuildingInterval{100};
+    std::chrono::steady_clock::time_point lastShown_{};
     /// The reason of the error being handed to the handler now (empty: none given).
     std::string reporting_;
     static constexpr int kOutOfMemory = 900;  // ISO 9592: storage overflow has occurred in PHIGS

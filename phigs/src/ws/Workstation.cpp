@@ -590,7 +590,14 @@ bool Workstation::present() {
     followDrawable();
     shownEcho_ = echoState();
     output_->showEcho(shownEcho_);
-    return output_->present(shownPicture());
+    const bool shown = output_->present(shownPicture());
+    presentedStamp_ = pictureStamp_;
+    presented_ = true;
+    return shown;
+}
+
+bool Workstation::presentationBehind() const {
+    return output_ && showsChangesAtOnce() && (!presented_ || contentStamp() != presentedStamp_);
 }
 
 void Workstation::echoMoved() {

@@ -185,6 +185,11 @@ public:
     /// Hands the output the echo state, then presents shownPicture(); false with no output
     /// attached or when it showed nothing (a minimised window).
     bool present();
+    /// Under a deferral mode that shows changes at once (ASAP), whether the output shows less than
+    /// it should: nothing presented yet, or the posted networks or the tables changed since the
+    /// last present. A program that calls nothing while it waits (sleep, getchar) would otherwise
+    /// see the old picture; the C binding presents after each call then.
+    bool presentationBehind() const;
     /// The output's drawable in pixels; with none attached, the display surface in device units.
     DrawableSize drawableSize() const;
     /// With an output that followsDrawable(), a drawable of another (non-zero) size becomes the
@@ -263,6 +268,8 @@ private:
     DrawList picture_;
     std::uint64_t pictureStamp_ = 0;
     bool pictured_ = false;
+    std::uint64_t presentedStamp_ = 0;  ///< pictureStamp_ of the picture last presented
+    bool presented_ = false;
     VisualState pictureState_ = VisualState::Correct;
     std::uint64_t regenerations_ = 0;
     /// contentStamp() memo: the stamp while neither the store nor the tables changed.
