@@ -3,42 +3,51 @@
 #include "geom/GeometryError.h"
 
 #include <algorithm>
-#include <initializer_list>
 #include <string>
 #include <vector>
 
 namespace geom {
 namespace {
 
-// These run once per evaluated point: the checks are size comparisons only, and the throws stay
-// out of line.
-[[noreturn]] void badArguments(const char* where, const std::string& why) {
+// These run once per evaluated point: the checks inline are comparisons only; the messages are
+// made in cold functions out of line.
+[[noreturn, gnu::cold, gnu::noinline]] void badBasisArguments(const char* where, std::size_t span, int degree,
+                                                              std::size_t knotCount, std::size_t needed,
+                                                              std::size_t given) {
+    std::string why;
+    if (degree < 0)
+        why = "degree " + std::to_string(degree) + " is negative";
+    else if (given < needed)
+        why = "an output of " + std::to_string(given) + " values is too small for " + std::to_string(needed);
+    else
+        why = "span " + std::to_string(span) + " of degree " + std::to_string(degree) + " reads past the " +
+              std::to_string(knotCount) + " knots";
     throw GeometryError(std::string(where) + ": " + why);
 }
 
-/// The knot window [span + 1 - degree, span + degree] that one span's basis reads, and `size`
-/// values of output in each of `out`.
-void checkBasisArguments(const char* where, std::size_t span, int degree, std::size_t knotCount,
-                         std::size_t needed, std::initializer_list<std::size_t> outSizes) {
-    if (degree < 0) badArguments(where, "degree " + std::to_string(degree) + " is negative");
+/// The knot window [span + 1 - degree, span + degree] that one span's basis reads, and `needed`
+/// values in the smallest output, `given`.
+inline void checkBasisArguments(const char* where, std::size_t span, int degree, std::size_t knotCount,
+                                std::size_t needed, std::size_t given) {
     const std::size_t p = static_cast<std::size_t>(degree);
-    if (span + 1 < p || span + p >= knotCount)
-        badArguments(where, "span " + std::to_string(span) + " of degree " + std::to_string(degree) +
-                                " reads past the " + std::to_string(knotCount) + " knots");
-    for (std::size_t size : outSizes)
-        if (size < needed)
-            badArguments(where, "an output of " + std::to_string(size) + " values is too small for " +
-                                    std::to_string(needed));
+    if (degree < 0 || span + 1 < p || span + p >= knotCount || given < needed) [[unlikely]]
+        badBasisArguments(where, span, degree, knotCount, needed, given);
+}
+
+[[noreturn, gnu::cold, gnu::noinline]] void badSpanArguments(int degree, std::size_t knotCount,
+                                                             std::size_t controlCount) {
+    throw GeometryError(
+        "findSpan: degree " + std::to_string(degree) + ", " + std::to_string(controlCount) +
+        " control points and " + std::to_string(knotCount) +
+        " knots do not fit (degree >= 0, more points than the degree, more knots than points)");
 }
 
 }  // namespace
 
 std::size_t findSpan(int degree, std::span<const double> knots, std::size_t controlCount, double u) {
     if (degree < 0 || controlCount <= static_cast<std::size_t>(degree) || knots.size() <= controlCount)
-        badArguments("findSpan", "degree " + std::to_string(degree) + ", " + std::to_string(controlCount) +
-                                     " control points and " + std::to_string(knots.size()) +
-                                     " knots do not fit (degree >= 0, more points than the degree, "
-                                     "more knots than points)");
+        [[unlikely]]
+        badSpanArguments(degree, knots.size(), controlCount);
     const std::size_t low = static_cast<std::size_t>(degree);
     const std::size_t high = controlCount - 1;
     if (u >= knots[high + 1]) {
@@ -62,7 +71,7 @@ std::size_t findSpan(int degree, std::span<const double> knots, std::size_t cont
 void basisFunctions(std::size_t span, double u, int degree, std::span<const double> knots,
                     std::span<double> out) {
     checkBasisArguments("basisFunctions", span, degree, knots.size(), static_cast<std::size_t>(degree) + 1,
-                        {out.size()});
+                        out.size());
     // Cox-de Boor in the triangular form of The NURBS Book, A2.2; left/right hold the knot
     // differences so each value is computed once.
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -94,7 +103,7 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
     checkBasisArguments(
         "basisDerivatives", span, degree, knots.size(),
         (static_cast<std::size_t>(std::max(order, 0)) + 1) * (static_cast<std::size_t>(degree) + 1),
-        {out.size()});
+        out.size());
     // The NURBS Book, A2.3: build the triangular table of basis values and knot differences,
     // then combine its columns for each derivative order.
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -168,8 +177,9 @@ void basisDerivatives(std::size_t span, double u, int degree, std::span<const do
 void basisWithFirstDerivatives(std::size_t span, double u, int degree, std::span<const double> knots,
                                std::span<double> values, std::span<double> firsts) {
     checkBasisArguments("basisWithFirstDerivatives", span, degree, knots.size(),
-                        static_cast<std::size_t>(degree) + 1, {values.size(), firsts.size()});
-    if (degree < 1) badArguments("basisWithFirstDerivatives", "degree 0 has no first derivatives");
+                        static_cast<std::size_t>(degree) + 1, std::min(values.size(), firsts.size()));
+    if (degree < 1) [[unlikely]]
+        throw GeometryError("basisWithFirstDerivatives: degree 0 has no first derivatives");
     const std::size_t p = static_cast<std::size_t>(degree);
     if (p == 1) {  // hat functions: no recursion needed
         const double lo = knots[span], hi = knots[span + 1], scale = 1.0 / (hi - lo);
