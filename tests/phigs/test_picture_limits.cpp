@@ -69,6 +69,9 @@ TEST_CASE("traversal: a picture past the limit is refused with 900, the store ke
         }
         CHECK(store.elementCount(1) == 2);
         CHECK(store.structure(levels).version == version);
+        // Nothing of the refused picture is kept (the leaf's points are the store's alone).
+        const std::weak_ptr<const void> points = store.structure(levels).elements.pointPool();
+        CHECK(points.use_count() == 1);
 
         // The root executing structure 5 once: a sixteenth of the instances, within the limit.
         store.openStructure(1);
@@ -120,6 +123,52 @@ TEST_CASE("traversal: a picture that shrinks lets go of its old draw segments at
         }
         CHECK(ws.display().items.empty());
         CHECK(points.use_count() == 1);  // the store's own share only
+    }
+}
+
+TEST_CASE("traversal: a scene with a changing cursor keeps reusing the scene's unchanged subtrees",
+          "[traverse][limits]") {
+    // Root 1 executes structure 2, which executes leaves 100.. of 20 elements each; root 3 (a
+    // cursor) changes every frame, structure 2's own elements every other frame: the leaves are
+    // reused whenever structure 2 is walked again, however its earlier frames reused it whole.
+    std::mt19937 rng(11);
+    for (int trial = 0; trial < 4; ++trial) {
+        const int leaves = 50 + static_cast<int>(rng() % 150);
+        CAPTURE(trial, leaves);
+        Phigs phigs;
+        phigs.open();
+        StructureStore& store = phigs.store();
+        for (int leaf = 0; leaf < leaves; ++leaf) {
+            store.openStructure(100 + leaf);
+            for (int k = 0; k < 20; ++k) store.insert(polyline3({{0.01 * k, 0.01 * leaf, 0}, {0.5, 0.5, 0}}));
+            store.closeStructure();
+        }
+        store.openStructure(2);
+        for (int leaf = 0; leaf < leaves; ++leaf) store.insert(executeStructure(100 + leaf));
+        store.closeStructure();
+        store.openStructure(1);
+        store.insert(executeStructure(2));
+        store.closeStructure();
+        store.openStructure(3);
+        store.insert(polyline3({{0, 0, 0}, {0.1, 0.1, 0}}));
+        store.closeStructure();
+        Workstation& ws = phigs.openWorkstation(1, WorkstationType::OffscreenImage);
+        ws.postStructure(1, 0.5);
+        ws.postStructure(3, 0.6);
+        ws.display();
+        for (int frame = 0; frame < 40; ++frame) {
+            const bool editScene = frame % 2 == 1;
+            const int edited = editScene ? 2 : 3;
+            store.openStructure(edited);
+            store.setElementPointer(store.elementCount(edited));  // at the end: the paths stay
+            store.insert(label(frame + 10));
+            store.closeStructure();
+            ws.display();
+            if (editScene && frame > 4) {
+                CAPTURE(frame);
+                CHECK(ws.traverser().elementsReused() >= static_cast<std::uint64_t>(20 * leaves));
+            }
+        }
     }
 }
 

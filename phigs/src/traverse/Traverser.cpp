@@ -20,6 +20,7 @@
 #include <map>
 #include <span>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace phigs {
@@ -92,6 +93,7 @@ class OneInline {
 public:
     bool empty() const { return !hasFirst_; }
     std::size_t size() const { return hasFirst_ ? 1 + rest_.size() : 0; }
+    const T* first() const { return hasFirst_ ? &first_ : nullptr; }
     void push_back(T value) {
         if (hasFirst_) {
             rest_.push_back(std::move(value));
@@ -175,41 +177,45 @@ struct Traverser::SubtreeCache {
     std::uint64_t lastSweep = 0;                         ///< the traversal of the last sweep
     std::size_t made = 0;                                ///< entries made since the last sweep
     std::size_t kept = 0;                                ///< entries the last sweep kept
-    std::size_t usedNow = 0;                             ///< entries made or reused by this traversal
+    std::size_t lastSegments = 0;                        ///< the segments of the last picture
 
     /// Records that this traversal made or reused `e`.
-    void use(Entry& e) {
-        usedNow += e.usedIn != traversal;
-        e.usedIn = traversal;
-    }
+    void use(Entry& e) { e.usedIn = traversal; }
     /// Drops the entries no traversal used since the last sweep. A sweep visits every entry, so
     /// it runs only once enough entries were made or traversals passed for its cost to be
     /// shared among them; until then an unused entry only holds its segments a little longer.
-    /// A picture that shrank (this traversal used under half the entries) sweeps at once and
-    /// keeps only what it used: the old picture's segments are let go of now.
-    void prune() {
-        const bool shrank = usedNow * 2 < kept + made;
+    /// A picture that shrank to under half the segments of the last sweeps at once, keeping the
+    /// entries this traversal used and those whose segments it still draws (nested in an entry it
+    /// reused, which it did not visit): the old picture's segments are let go of now.
+    void prune(const DrawItems& picture) {
+        const std::size_t segments = picture.segmentCount();
+        const bool shrank = segments * 2 < lastSegments;
+        lastSegments = segments;
         if (traversal - lastSweep < kSweepEvery && made * 8 <= kept + 64 && !shrank) {
             endTraversal();
             return;
         }
-        const std::uint64_t keepFrom = shrank ? traversal : lastSweep + 1;
+        std::unordered_set<const DrawSegment*> drawn;
+        if (shrank)
+            for (const DrawItems::SegmentPtr& segment : picture.segments()) drawn.insert(segment.get());
+        auto keep = [&](const Entry& e) {
+            if (!shrank) return e.usedIn > lastSweep;
+            const DrawItems::SegmentPtr* first = e.segments.first();
+            return e.usedIn == traversal || (first && drawn.contains(first->get()));
+        };
         kept = 0;
         entries.forEach([&](int, detail::OneInline<Entry>& list) {
-            list.keepIf([&](const Entry& e) { return e.usedIn >= keepFrom; });
+            list.keepIf(keep);
             kept += list.size();
         });
         made = 0;
         lastSweep = traversal;
         endTraversal();
     }
-    void endTraversal() {
-        ++traversal;
-        usedNow = 0;
-    }
+    void endTraversal() { ++traversal; }
     void clear() {
         entries.clear();
-        made = kept = usedNow = 0;
+        made = kept = lastSegments = 0;
         lastSweep = traversal - 1;
     }
     static constexpr std::size_t kSweepEvery = 16;
@@ -599,6 +605,8 @@ public:
         walk(id, state);
         flush();
     }
+    /// Lets go of the segment being built (a traversal that failed).
+    void abandon() { segment_.reset(); }
 
 private:
     void walk(int id, State& state) {
@@ -727,7 +735,8 @@ private:
         e.elements = visited + reused - firstElements;
         auto& list = subtrees_->entries[id];
         // The entry this execution made before a change can never match again: its segments go now.
-        list.keepIf([&](const Traverser::SubtreeCache::Entry& old) { return !sameExecution(old); });
+        if (list.findIf(sameExecution))
+            list.keepIf([&](const Traverser::SubtreeCache::Entry& old) { return !sameExecution(old); });
         if (list.size() >= 8) list.popFront();
         subtrees_->use(e);
         list.push_back(std::move(e));
@@ -1464,9 +1473,19 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     Walk walk(store, tables, filters, cache_, subtrees_.get(), *itemTables_, *runSizes_, *segmentPool_, out);
     walk.maxPictureBytes = maxPictureBytes_;
     try {
-        for (int root : roots) walk.root(root);
-    } catch (const std::bad_alloc&) {  // the picture is dropped whole: the error says why
-        throw Error(errors::StorageOverflow, "TRAVERSAL", "out of memory making the picture");
+        try {
+            for (int root : roots) walk.root(root);
+        } catch (const std::bad_alloc&) {  // the picture is dropped whole: the error says why
+            throw Error(errors::StorageOverflow, "TRAVERSAL", "out of memory making the picture");
+        }
+    } catch (...) {
+        // A refused picture (too large, too deep) keeps nothing it made: not its segments in the
+        // subtree cache, nor spare ones in the pool.
+        walk.abandon();
+        out.items.clear();
+        if (subtrees_) subtrees_->clear();
+        segmentPool_->settle(kSpareSegments);
+        throw;
     }
     out.lightSets = itemTables_->lightSets;
     out.depthCues = itemTables_->depthCues;
@@ -1475,7 +1494,7 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
     // The subtrees no longer drawn give their segments back first; then free segments this
     // traversal did not need are not kept for the next (a smaller picture), and the kept ones let
     // go of their old items before the cache counts what is drawn.
-    if (subtrees_) subtrees_->prune();
+    if (subtrees_) subtrees_->prune(out.items);
     segmentPool_->settle(segmentPool_->takenSince() + kSpareSegments);
     cache_.prune();
     return out;
