@@ -217,18 +217,23 @@ ExactKnotRemoval removeKnot(const Curve& curve, double u, int times, double tole
     RemovalBound bound;
     const glm::dvec3 centre = pointsCentre(curve);
     std::vector<glm::dvec4> pw = homogeneousPoints(curve, centre, tolerance, bound);
-    if (times == 1) {
-        // One occurrence: the recurrences split where they stay well conditioned (removeOnce).
-        std::vector<double> knots = curve.knots;
-        if (!removeOnce(knots, pw, curve.degree, u, at, bound)) return {curve, 0};
-        return {curveFromHomogeneous(curve.degree, std::move(knots), pw, centre, curve.rational()), 1};
-    }
-    // Several: A5.8, which keeps the points the earlier removals settled and so stays exact to
-    // rounding where removing one occurrence at a time after another loses up to 1e-11 of the
-    // size (a rational Bézier joint of degree 6).
-    const int t = removeTimes(curve.knots, pw, curve.degree, u, at, times, bound);
-    if (t == 0) return {curve, 0};
-    return {compacted(curve, pw, centre, at, t), t};
+    // Several occurrences: A5.8 first, which keeps the points the earlier removals settled and so
+    // stays exact to rounding where removing one occurrence after another loses up to 1e-11 of
+    // the size (a rational Bézier joint of degree 6).
+    std::vector<glm::dvec4> several = pw;
+    const int t = times > 1 ? removeTimes(curve.knots, several, curve.degree, u, at, times, bound) : 0;
+    if (t == times) return {compacted(curve, several, centre, at, t), t};
+    // Short of that (or one asked for): one at a time, each split where its recurrences stay well
+    // conditioned (removeOnce), so asking for more never removes fewer than asking for one.
+    std::vector<double> knots = curve.knots;
+    int removed = 0;
+    for (KnotPlace place = at; removed < times && removeOnce(knots, pw, curve.degree, u, place, bound);
+         ++removed)
+        --place.r, --place.s;
+    if (removed <= t)
+        return t == 0 ? ExactKnotRemoval{curve, 0}
+                      : ExactKnotRemoval{compacted(curve, several, centre, at, t), t};
+    return {curveFromHomogeneous(curve.degree, std::move(knots), pw, centre, curve.rational()), removed};
 }
 
 namespace {
