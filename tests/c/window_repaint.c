@@ -100,11 +100,11 @@ static void sleep_without_phigs(double seconds) {
     nanosleep(&t, NULL);
 }
 
-/* Under ASAP (the default) a window shows each change at once, with no UPDATE WORKSTATION and no
- * input call after it: random steps (a square of a new colour added to a posted structure, one
- * structure unposted or posted again, a colour changed through the colour table), each followed
- * by a wait in which the program calls nothing; the window then shows exactly the colours the
- * posted squares have. */
+/* Under ASAP (the default) windows show each change at once, with no UPDATE WORKSTATION and no
+ * input call after it: random steps on two windows (a square of a new colour added to a posted
+ * structure, some while the structure stays open, one structure unposted, a colour changed
+ * through the colour table), each followed by a wait in which the program calls nothing; each
+ * window then shows exactly the colours the posted squares have. */
 static void asap_without_update(Display* x) {
     enum { kSquares = 6 };
     /* Twelve colours apart from each other and from the black background: square k shows
@@ -115,50 +115,75 @@ static void asap_without_update(Display* x) {
     int posted[kSquares] = {0}, changed[kSquares] = {0};
     Pcolr_rep colours[kSquares];
     seed_random(20261207);
+    /* Two windows: each is shown, not only the first found behind. */
     EXPECT_NO_ERROR(popen_ws(2, NULL, PWST_WINDOW));
+    EXPECT_NO_ERROR(popen_ws(3, NULL, PWST_WINDOW));
     for (int k = 0; k < kSquares; ++k)
         colours[k].rgb.red = palette[k][0], colours[k].rgb.green = palette[k][1],
         colours[k].rgb.blue = palette[k][2];
-    Window w = 0;
-    for (int step = 0; step < 10; ++step) {
+    /* Side by side (both open at the same place, the second over the first). */
+    Window windows[2] = {0, 0};
+    sleep_without_phigs(0.3);
+    for (int v = 0; v < 2; ++v) {
+        windows[v] =
+            find_named(x, DefaultRootWindow(x), v == 0 ? "PHIGS workstation 2" : "PHIGS workstation 3");
+        CHECK(windows[v] != 0);
+        if (windows[v]) XMoveResizeWindow(x, windows[v], 640 * v, 0, 560, 420);
+    }
+    XSync(x, False);
+    for (int step = 0; step < 12 && windows[0] && windows[1]; ++step) {
         const int k = (int)(next_random() % kSquares);
+        const int building = step % 4 == 3; /* the structure stays open while the program waits */
         if (!posted[k] && step % 3 != 2) {
             const float x0 = 0.05f + 0.15f * (float)k;
             Ppoint points[4] = {{x0, 0.3f}, {x0 + 0.1f, 0.3f}, {x0 + 0.1f, 0.7f}, {x0, 0.7f}};
             Ppoint_list square = {4, points};
-            EXPECT_NO_ERROR(pset_colr_rep(2, 10 + k, &colours[k]));
+            for (Pint ws = 2; ws <= 3; ++ws) {
+                EXPECT_NO_ERROR(pset_colr_rep(ws, 10 + k, &colours[k]));
+                EXPECT_NO_ERROR(ppost_struct(ws, 100 + k, 0.5f));
+            }
             EXPECT_NO_ERROR(popen_struct(100 + k));
             EXPECT_NO_ERROR(pempty_struct(100 + k));
             EXPECT_NO_ERROR(pset_int_style(PSTYLE_SOLID));
             EXPECT_NO_ERROR(pset_int_colr_ind(10 + k));
+            if (building) sleep_without_phigs(0.15); /* past the building interval */
             EXPECT_NO_ERROR(pfill_area(&square));
-            EXPECT_NO_ERROR(pclose_struct());
-            EXPECT_NO_ERROR(ppost_struct(2, 100 + k, 0.5f));
+            if (!building) EXPECT_NO_ERROR(pclose_struct());
             posted[k] = 1;
         } else if (posted[k] && step % 3 != 2) {
-            EXPECT_NO_ERROR(punpost_struct(2, 100 + k));
+            for (Pint ws = 2; ws <= 3; ++ws) EXPECT_NO_ERROR(punpost_struct(ws, 100 + k));
             posted[k] = 0;
         } else {
             changed[k] = !changed[k];
             const float* c = palette[k + (changed[k] ? kSquares : 0)];
             colours[k].rgb.red = c[0], colours[k].rgb.green = c[1], colours[k].rgb.blue = c[2];
-            EXPECT_NO_ERROR(pset_colr_rep(2, 10 + k, &colours[k]));
+            for (Pint ws = 2; ws <= 3; ++ws) EXPECT_NO_ERROR(pset_colr_rep(ws, 10 + k, &colours[k]));
         }
         sleep_without_phigs(0.4);
-        if (!w) w = find_named(x, DefaultRootWindow(x), "PHIGS workstation 2");
-        CHECK(w != 0);
-        if (!w) break;
-        for (int j = 0; j < kSquares; ++j) {
-            const int r = (int)(255 * colours[j].rgb.red + 0.5f),
-                      g = (int)(255 * colours[j].rgb.green + 0.5f),
-                      b = (int)(255 * colours[j].rgb.blue + 0.5f);
-            const int shown = colour_pixels(x, w, 0, 0, 4096, 4096, r, g, b) > 500;
-            if (shown != posted[j])
-                fprintf(stderr, "  step %d: square %d shown %d, posted %d\n", step, j, shown, posted[j]);
-            CHECK(shown == posted[j]);
+        for (int v = 0; v < 2; ++v) {
+            if (!windows[v])
+                windows[v] = find_named(x, DefaultRootWindow(x),
+                                        v == 0 ? "PHIGS workstation 2" : "PHIGS workstation 3");
+            CHECK(windows[v] != 0);
+            if (!windows[v]) continue;
+            for (int j = 0; j < kSquares; ++j) {
+                const int r = (int)(255 * colours[j].rgb.red + 0.5f),
+                          g = (int)(255 * colours[j].rgb.green + 0.5f),
+                          b = (int)(255 * colours[j].rgb.blue + 0.5f);
+                const int shown = colour_pixels(x, windows[v], 0, 0, 4096, 4096, r, g, b) > 500;
+                if (shown != posted[j])
+                    fprintf(stderr, "  step %d, window %d: square %d shown %d, posted %d\n", step, v + 2, j,
+                            shown, posted[j]);
+                CHECK(shown == posted[j]);
+            }
         }
+        Popen_struct_status open = PSTRUCT_NONE;
+        Pint err = 0, id = 0;
+        pinq_open_struct(&err, &open, &id);
+        if (open == PSTRUCT_OPEN) EXPECT_NO_ERROR(pclose_struct());
     }
     EXPECT_NO_ERROR(pclose_ws(2));
+    EXPECT_NO_ERROR(pclose_ws(3));
 }
 
 static void type_key(Display* x, KeySym key) {

@@ -256,17 +256,23 @@ void Binding::emergencyClose() {
     errorFile_.clear();
 }
 
-void Binding::showChangesAtOnce() {
-    if (!phigs_ || !phigs_->isOpen()) return;
+void Binding::showChangesAtOnce(int function) {
+    if (!phigs_ || !phigs_->isOpen() || !phigs_->anyWorkstationOpen()) return;
     const auto now = std::chrono::steady_clock::now();
-    const bool building = phigs_->store().isStructureOpen();
+    if (phigs_->store().isStructureOpen() && now - lastShown_ < kBuildingInterval) return;
+    bool shown = false;
     for (int id : phigs_->openWorkstationIds()) {
         Workstation* ws = phigs_->findWorkstation(id);
         if (!ws || ws->type() != WorkstationType::Window || !ws->presentationBehind()) continue;
-        if (building && now - lastShown_ < kBuildingInterval) continue;
-        lastShown_ = now;
-        regardless([&] { ws->present(); });  // a failure is reported at the next UPDATE
+        shown = true;
+        try {
+            ws->present();  // a failure is not tried again until the picture changes
+        } catch (const Error& e) {
+            reportWith(e.number(), function, e.detail());
+        } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the next UPDATE reports it
+        }
     }
+    if (shown) lastShown_ = now;
 }
 
 Pint Binding::specificType(Pint id) {

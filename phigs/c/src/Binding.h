@@ -102,14 +102,15 @@ public:
             why = "a count too large to hold";
         }
         reportSince(function, before, thrown, why);
-        showChangesAtOnce();
+        showChangesAtOnce(function);
     }
 
 private:
     /// Presents each window workstation whose picture ASAP says is shown but is not (the program
     /// may wait next without calling PHIGS): at once, or while a structure is open (a program
-    /// building one, element by element) at most every kBuildingInterval.
-    void showChangesAtOnce();
+    /// building one, element by element) at most every kBuildingInterval. An error doing so goes
+    /// to the handler as `function`'s.
+    void showChangesAtOnce(int function);
     static constexpr std::chrono::milliseconds kBuildingInterval{100};
     std::chrono::steady_clock::time_point lastShown_{};
     /// The reason of the error being handed to the handler now (empty: none given).

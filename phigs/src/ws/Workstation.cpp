@@ -590,10 +590,10 @@ bool Workstation::present() {
     followDrawable();
     shownEcho_ = echoState();
     output_->showEcho(shownEcho_);
-    const bool shown = output_->present(shownPicture());
-    presentedStamp_ = pictureStamp_;
+    // Marked first: a picture that fails to show is not tried again until it changes.
+    presentedStamp_ = contentStamp();
     presented_ = true;
-    return shown;
+    return output_->present(shownPicture());
 }
 
 bool Workstation::presentationBehind() const {
