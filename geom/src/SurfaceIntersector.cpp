@@ -450,9 +450,9 @@ SurfaceIntersector::SurfaceIntersector(const Surface& surface) : tree_(surface) 
     unitScale_ = scale;
 }
 
-void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& origin,
-                                        const glm::dvec3& direction, const glm::dvec3& n1,
-                                        const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const {
+void SurfaceIntersector::intersectPatch(std::size_t index, const SearchLine& line,
+                                        std::vector<LineSurfaceHit>& hits) const {
+    const glm::dvec3 &origin = line.origin, &direction = line.direction, &n1 = line.n1, &n2 = line.n2;
     const BezierPatchTree& tree = searchTree();
     const BezierPatchTree::Patch& patch = tree.patches()[index];
     const int p = tree.degreeU(), q = tree.degreeV();
@@ -480,7 +480,8 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
     // from the origin, or with large weights, it exceeds 1e-13 of the patch, and a root on a patch
     // edge or corner (where the net's corner value is G itself) would go with its cell, or lie
     // out of Newton's reach. accept() still asks the point itself to be on the line.
-    const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * terms;
+    const double rounding =
+        std::max(8.0 * std::numeric_limits<double>::epsilon() * terms, line.placing * magnitude);
     const Tolerances tolerances{std::max(1e-12 * lengthScale, rounding),
                                 std::max(1e-13 * lengthScale, rounding), 1e-13 * terms};
 
@@ -494,8 +495,8 @@ void SurfaceIntersector::intersectPatch(std::size_t index, const glm::dvec3& ori
         // Far from the origin the point itself carries the rounding of its coordinates' size,
         // which may pass 1e-10 of a small patch (one unit across at 1e6 from the origin).
         const double pointSize = std::abs(e.point.x) + std::abs(e.point.y) + std::abs(e.point.z);
-        const double reach =
-            std::max(1e-10 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize);
+        const double reach = std::max(
+            {1e-10 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * pointSize, line.placing});
         if (glm::length(onLine - e.point) > reach) return;
         LineSurfaceHit hit;
         hit.t = lineT;
@@ -543,27 +544,36 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
         throw GeometryError("intersectLine: the line direction must be a finite, non-zero vector");
     if (!std::isfinite(lineOrigin.x) || !std::isfinite(lineOrigin.y) || !std::isfinite(lineOrigin.z))
         throw GeometryError("intersectLine: the line origin has a non-finite coordinate");
-    // The search runs in the search tree's coordinates (the surface's, or scaled to unit size):
-    // a line parameter there is unitScale_ times the caller's.
-    const glm::dvec3 origin = lineOrigin * unitScale_;
+    const auto& nodes = tree.nodes();
+    if (nodes.empty()) return {};
     const glm::dvec3 d = direction / len;
     // Two unit vectors across the line.
     const glm::dvec3 helper = std::abs(d.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 n1 = glm::normalize(glm::cross(d, helper));
     const glm::dvec3 n2 = glm::cross(d, n1);
     const glm::dvec3 inverse(1.0 / d.x, 1.0 / d.y, 1.0 / d.z);
-    const auto& nodes = tree.nodes();
-    if (nodes.empty()) return {};
     // Work from the point of the line nearest the surface's box centre: an origin far away
-    // (a pick ray from a distant eye) would otherwise cost digits in every projection.
-    const glm::dvec3 centre = nodes[0].box.center();
-    const glm::dvec3 base = origin + glm::dot(centre - origin, d) * d;
-    // The boxes are widened by the rounding of the line's coordinates too: a surface collapsed
-    // to a point has boxes of no size, which the line passes only to rounding.
-    const double coordinates = std::max({std::abs(base.x), std::abs(base.y), std::abs(base.z)});
-    const double margin =
-        std::max(1e-9 * tree.scale(), 64.0 * std::numeric_limits<double>::epsilon() * coordinates);
-    const double shift = glm::dot(base - origin, direction) / glm::dot(direction, direction);
+    // (a pick ray from a distant eye) would otherwise cost digits in every projection. It is
+    // found in the caller's coordinates, where the origin is finite; the search runs in the
+    // search tree's (the surface's, or scaled to unit size), where a line parameter is unitScale_
+    // times the caller's.
+    const glm::dvec3 centre = nodes[0].box.center() / unitScale_;
+    const glm::dvec3 callerBase = lineOrigin + glm::dot(centre - lineOrigin, d) * d;
+    const double shift = glm::dot(callerBase - lineOrigin, direction) / glm::dot(direction, direction);
+    const glm::dvec3 base = callerBase * unitScale_;
+    // Where the line passes the surface is known to the rounding of the coordinates that placed
+    // it (the origin's and the centre's): the boxes are widened by it (a surface collapsed to a
+    // point has boxes of no size) and a hit may lie that far off the line.
+    auto largest = [](const glm::dvec3& v) {
+        return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    };
+    const double placing = 64.0 * std::numeric_limits<double>::epsilon() *
+                           (largest(lineOrigin) + largest(centre) + largest(callerBase)) * unitScale_;
+    if (!std::isfinite(placing) || !std::isfinite(base.x) || !std::isfinite(base.y) || !std::isfinite(base.z))
+        throw GeometryError(
+            "intersectLine: the line origin lies too far from the surface (relative to its size) "
+            "to place the line near it");
+    const double margin = std::max(1e-9 * tree.scale(), placing);
 
     std::vector<LineSurfaceHit> hits;
     int stack[128];
@@ -573,7 +583,7 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
         const BezierPatchTree::Node& node = nodes[static_cast<std::size_t>(stack[--top])];
         if (!node.box.hitByLine(base, inverse, margin)) continue;
         if (node.patch >= 0) {
-            intersectPatch(static_cast<std::size_t>(node.patch), base, direction, n1, n2, hits);
+            intersectPatch(static_cast<std::size_t>(node.patch), {base, direction, n1, n2, placing}, hits);
             continue;
         }
         stack[top++] = node.first;
@@ -582,7 +592,7 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
     std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.t < b.t; });
     std::vector<LineSurfaceHit> unique = oneHitPerCrossing(tree, hits);
     for (LineSurfaceHit& h : unique) {
-        h.t = (h.t + shift) / unitScale_;
+        h.t = h.t / unitScale_ + shift;
         h.point = lineOrigin + h.t * direction;
     }
     return unique;

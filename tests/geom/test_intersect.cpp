@@ -488,7 +488,12 @@ TEST_CASE("a surface collapsed to one point is hit once by any line through it",
         const int p = 1 + surfaceIndex % 3, q = 1 + (surfaceIndex / 3) % 3;
         Surface s = geomtest::randomSurface(rng, p, q, std::size_t(p) + 1 + surfaceIndex % 2,
                                             std::size_t(q) + 2, surfaceIndex % 2 == 0, true);
-        const glm::dvec3 point = 10.0 * geomtest::randomPoint(rng);
+        // Anywhere, near the origin (1e-3 from it) or at it: the line's own rounding, not the
+        // point's coordinates, sets how closely it passes there.
+        const int where = surfaceIndex % 3;
+        const glm::dvec3 point = where == 0   ? 10.0 * geomtest::randomPoint(rng)
+                                 : where == 1 ? 1e-3 * glm::normalize(geomtest::randomPoint(rng))
+                                              : glm::dvec3(0.0);
         std::fill(s.points.begin(), s.points.end(), point);
         for (int trial = 0; trial < 10; ++trial) {
             const glm::dvec3 d = glm::normalize(geomtest::randomPoint(rng));
@@ -496,11 +501,26 @@ TEST_CASE("a surface collapsed to one point is hit once by any line through it",
             const auto hits = intersectLine(s, o, d);
             INFO("surface " << surfaceIndex << " trial " << trial);
             REQUIRE(hits.size() == 1);
-            REQUIRE(glm::length(hits[0].point - point) < 1e-12 * glm::length(point));
+            REQUIRE(glm::length(hits[0].point - point) <
+                    1e-12 * std::max(glm::length(point), glm::length(o)));
             // A line that misses the point misses the surface.
             const glm::dvec3 side = glm::normalize(glm::cross(d, glm::dvec3(1, 2, 3)));
             REQUIRE(intersectLine(s, o + 1e-3 * side, d).empty());
         }
+    }
+}
+
+TEST_CASE("a line from too far away to place near a tiny surface is refused by name",
+          "[geom][intersect][scale]") {
+    // A surface 1e-200 across and a line from 1e150 away: where the line passes the surface is
+    // known to 1e134, so no hit can be told; the answer is an error, not a silent empty list.
+    std::mt19937 rng(5);
+    for (int trial = 0; trial < 6; ++trial) {
+        Surface s = geomtest::randomSurface(rng, 2, 2, 4, 4, trial % 2 == 0, true);
+        for (glm::dvec3& q : s.points) q *= 1e-200;
+        const glm::dvec3 d = glm::normalize(geomtest::randomPoint(rng));
+        REQUIRE_THROWS_WITH(intersectLine(s, -1e150 * d, d), Catch::Contains("too far from the surface"));
+        CHECK_NOTHROW(intersectLine(s, -1e-199 * d, d));  // near it: answered
     }
 }
 

@@ -27,8 +27,13 @@ public:
     const BezierPatchTree& tree() const { return tree_; }
 
 private:
-    void intersectPatch(std::size_t patch, const glm::dvec3& origin, const glm::dvec3& direction,
-                        const glm::dvec3& n1, const glm::dvec3& n2, std::vector<LineSurfaceHit>& hits) const;
+    /// A line in the search tree's coordinates: a point of it, its direction, two unit vectors
+    /// across it, and how far off it a point may lie by the rounding that placed it.
+    struct SearchLine {
+        glm::dvec3 origin, direction, n1, n2;
+        double placing = 0.0;
+    };
+    void intersectPatch(std::size_t patch, const SearchLine& line, std::vector<LineSurfaceHit>& hits) const;
     /// The tree the search runs on: tree_, or for a surface with coordinates past 2^400 or all
     /// below 2^-400 (where squared distances overflow or underflow) a copy scaled by a power of
     /// two, unitScale_, to unit size.
