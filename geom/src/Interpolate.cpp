@@ -112,7 +112,8 @@ std::size_t interpolationKnotCount(const std::vector<Continuity>& continuities, 
 std::vector<double> interpolationParameters(const std::vector<glm::dvec3>& points, Parameterization kind) {
     if (kind != Parameterization::Uniform && kind != Parameterization::ChordLength &&
         kind != Parameterization::Centripetal)
-        throw GeometryError("interpolateCubic: parameterization " + std::to_string(static_cast<int>(kind)) +
+        throw GeometryError("interpolationParameters: parameterization " +
+                            std::to_string(static_cast<int>(kind)) +
                             " is not Uniform, ChordLength or Centripetal");
     std::vector<double> t(points.size(), 0.0);
     for (std::size_t i = 1; i < points.size(); ++i) {

@@ -58,7 +58,8 @@ void subdivideBezierNet(std::span<const V> net, std::size_t countU, std::size_t 
 }
 
 /// Bernstein polynomials B_{i,degree}(t), i = 0..degree, and optionally their first and second
-/// derivatives (pass empty spans to skip them); each span holds degree+1 values.
+/// derivatives (pass empty spans to skip them); each span holds degree+1 values (GeometryError for
+/// a negative degree or a shorter span).
 void bernsteinBasis(int degree, double t, std::span<double> values, std::span<double> first = {},
                     std::span<double> second = {});
 

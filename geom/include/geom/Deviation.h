@@ -142,7 +142,8 @@ struct SurfaceDeviation {
 /// removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
-/// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included.
+/// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included
+/// (GeometryError unless knots.size() == count + degree + 1 and samplesPerSpan >= 1).
 std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
                                 int samplesPerSpan);
 

@@ -33,7 +33,7 @@ std::vector<double> chordLengthParameters(std::span<const glm::dvec3> points, Cl
 /// only): the parameters themselves are the domain knots, continued periodically by `degree`
 /// knots at each end, so the domain is [knots[degree], knots[count]] = [parameters.front(),
 /// parameters.back()]. Throws GeometryError naming the index of a parameter that is not finite or
-/// does not increase.
+/// does not increase, a degree below 1, or a closure other than Open and Periodic.
 std::vector<double> interpolationKnots(std::span<const double> parameters, int degree, Closure closure);
 
 /// The B-spline curve through `points` at `parameters`. Open: points.size() control points.

@@ -37,7 +37,8 @@ std::size_t constraintCount(const std::vector<Continuity>& continuities);
 /// the end points of an open curve and the closing point of a closed one are not interior.
 std::size_t interpolationKnotCount(const std::vector<Continuity>& continuities, std::size_t pointCount);
 
-/// The curve parameter given to each data point (starting at 0, not normalised).
+/// The curve parameter given to each data point (starting at 0, not normalised); GeometryError for a
+/// `kind` outside the enumeration.
 std::vector<double> interpolationParameters(const std::vector<glm::dvec3>& points, Parameterization kind);
 
 /// The cubic B-spline through the data with the asked continuities (knot multiplicity 1, 2, 3
