@@ -9,8 +9,14 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace test_archive_versions {
+
+// One object per open archive file: a copy would write the file from contents of its own.
+static_assert(!std::is_copy_constructible_v<phigs::ArchiveFile> &&
+              !std::is_copy_assignable_v<phigs::ArchiveFile>);
+static_assert(std::is_nothrow_move_constructible_v<phigs::ArchiveFile>);
 
 using namespace phigs;
 

@@ -55,6 +55,12 @@ public:
 
     /// Opens (creating when missing) the archive at `path`; error 400 / 403 on failure.
     ArchiveFile(std::filesystem::path path, ErrorLog* log, std::size_t maxFileBytes = kMaxFileBytes);
+    /// One object per open file: a copy would write the same file from contents of its own, and
+    /// the last to write would silently undo the other's changes.
+    ArchiveFile(const ArchiveFile&) = delete;
+    ArchiveFile& operator=(const ArchiveFile&) = delete;
+    ArchiveFile(ArchiveFile&&) = default;
+    ArchiveFile& operator=(ArchiveFile&&) = default;
 
     const std::filesystem::path& path() const { return path_; }
     const std::map<int, std::vector<Element>>& contents() const { return contents_; }
