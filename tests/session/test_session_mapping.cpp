@@ -162,4 +162,23 @@ TEST_CASE("MAP CURVE: the logo at scale 2 over the transport's wing edges, clipp
     session_test::compareWithReference(d.picture(), "curve_map_clipped_logo");
 }
 
+TEST_CASE("DEFINE POINT: the pad before a patch is accepted names the step still to take") {
+    Driver d("define_point_steps");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP"});
+    d.run({"choice EAST device 2"});
+    CHECK(d.session.message() == "NO REFERENCE PATCH: USE DEFINE POINT FIRST");
+    d.run({"choice DEFINE_POINT", "choice EAST device 2"});
+    CHECK(d.session.message() == "NO REFERENCE PATCH YET: PICK A COMPONENT, THEN A PATCH");
+    const glm::dvec3 p = geom::evaluate(component(d.session, "right_wing").surface, 0.5, 0.3);
+    d.pickAt(p, 1);
+    d.run({"choice NORTH device 2"});
+    CHECK(d.session.message() == "NO REFERENCE PATCH YET: PICK A PATCH OF THE COMPONENT");
+    d.pickAt(p, 1);
+    d.run({"choice WEST device 2"});
+    CHECK(d.session.message() == "NO REFERENCE PATCH YET: ACCEPT OR REJECT THE PATCH PICKED");
+    d.run({"choice ACCEPT", "choice WEST device 2"});
+    CHECK(d.session.reference());
+}
+
 }  // namespace test_session_mapping

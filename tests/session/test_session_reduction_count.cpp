@@ -53,4 +53,39 @@ TEST_CASE("SURF_REDN BY COUNT, REDUCE_U&W: the prompt asks for each direction, b
     }));
 }
 
+TEST_CASE("SURF_REDN: each direction's count says what it takes out; nothing removable changes nothing") {
+    Driver d("reduction_messages");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
+           "choice FOUR_VIEWS", "choice RETURN", "choice SURF_REDN"});
+    auto said = [&](const std::string& text) {
+        const auto& log = d.session.log();
+        return std::any_of(log.begin(), log.end(),
+                           [&](const std::string& line) { return line.find(text) != std::string::npos; });
+    };
+    auto pickFuselage = [&] {
+        d.pickAt(geom::evaluate(d.session.models().current().find("fuselage")->surface, 0.5, 0.5), 1);
+    };
+    // U removes knots along the fuselage, across its sections: sections go, not knots of each.
+    d.run({"choice BY_COUNT", "choice REDUCE_U"});
+    pickFuselage();
+    d.run({"string 2"});
+    CHECK(said("REMOVE 2 KNOTS IN U (2 CROSS SECTIONS FEWER)"));
+    d.run({"choice RETURN", "choice UNDO", "choice SURF_REDN", "choice BY_COUNT", "choice REDUCE_W"});
+    pickFuselage();
+    d.run({"string 2"});
+    CHECK(said("REMOVE 2 KNOTS FROM EACH CROSS SECTION"));
+    // Tolerances no knot can be removed within (the fuselage's smallest removal error is about
+    // 4e-3): no new model, no error reported, the message says so.
+    d.run({"choice RETURN", "choice UNDO", "choice SURF_REDN", "choice BY_TOLERANCE"});
+    for (const char* tolerance : {"1e-3", "1e-30"}) {
+        const std::size_t models = d.session.models().size(), reductions = d.session.reductions().size();
+        d.run({"choice REDUCE_U&W"});
+        pickFuselage();
+        d.run({std::string("string ") + tolerance});
+        CHECK(d.session.message().rfind("NO KNOT CAN BE REMOVED WITHIN ", 0) == 0);
+        CHECK(d.session.models().size() == models);
+        CHECK(d.session.reductions().size() == reductions);
+    }
+}
+
 }  // namespace test_session_reduction_count

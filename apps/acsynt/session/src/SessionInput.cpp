@@ -219,6 +219,21 @@ void Session::pick(const PickMeasure& measure) {
     }
 }
 
+std::string Session::noMarkerYet() const {
+    // Inside DEFINE POINT (a component or patch still to pick, or the patch to accept) the next
+    // step is there, not DEFINE POINT again.
+    switch (core_.phase) {
+        case Phase::SelectComponent:
+            return "NO REFERENCE PATCH YET: PICK A COMPONENT, THEN A PATCH";
+        case Phase::SelectPatch:
+            return "NO REFERENCE PATCH YET: PICK A PATCH OF THE COMPONENT";
+        case Phase::AcceptReject:
+            return "NO REFERENCE PATCH YET: ACCEPT OR REJECT THE PATCH PICKED";
+        default:
+            return "NO REFERENCE PATCH: USE DEFINE POINT FIRST";
+    }
+}
+
 void Session::padButton(int button) {
     recordAs("choice " + padItems[std::size_t(button - 1)] + " device 2");
     if (core_.reference && core_.phase == Phase::Placed) {
@@ -226,7 +241,7 @@ void Session::padButton(int button) {
         return;
     }
     if (!core_.reference || core_.phase != Phase::MoveMarker) {
-        fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
+        fail(noMarkerYet());
         return;
     }
     const Component& comp = core_.models.current().components[std::size_t(core_.reference->component)];
@@ -259,7 +274,7 @@ void Session::valuator(int device, double value) {
             return;
         }
         if (!core_.reference || core_.phase != Phase::MoveMarker) {
-            fail("NO REFERENCE PATCH: USE DEFINE POINT FIRST");
+            fail(noMarkerYet());
             return;
         }
         // The component's own u or w; moveMarker keeps it inside the reference patch.

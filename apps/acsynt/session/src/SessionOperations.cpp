@@ -191,13 +191,22 @@ void Session::reduce(int componentIndex, double tolerance, std::size_t count) {
                                                : core_.reductionDirection == "W"
                                                    ? geom::ReductionDirection::V
                                                    : geom::ReductionDirection::Both;
+    // Knots in W run round each cross section; knots in U run along the component, across the
+    // sections: removing one takes a section out.
     if (count > 0)
         say("REMOVE " + std::to_string(count) + " KNOTS " +
-            (direction == geom::ReductionDirection::Both
-                 ? std::string("IN U AND ") + std::to_string(count) + " IN W"
-                 : std::string("FROM EACH CROSS SECTION")));
+            (direction == geom::ReductionDirection::Both ? "IN U AND " + std::to_string(count) + " IN W"
+             : direction == geom::ReductionDirection::V
+                 ? std::string("FROM EACH CROSS SECTION")
+                 : "IN U (" + std::to_string(count) + " CROSS SECTIONS FEWER)"));
     if (showNow_) showNow_();
     geom::SurfaceReduction reduced = geom::reduceSurface(comp.surface, direction, options);
+    if (reduced.removedU == 0 && reduced.removedV == 0) {
+        // Nothing to show for it: no new model, and no error (rounding) reported as a result.
+        say(count > 0 ? "NO KNOT CAN BE REMOVED: THE MODEL IS UNCHANGED"
+                      : "NO KNOT CAN BE REMOVED WITHIN " + number(tolerance, 3) + ": THE MODEL IS UNCHANGED");
+        return;
+    }
     PatchList patches = buildPatches(reduced.surface);  // may throw: nothing is changed yet
 
     ReductionRecord record;

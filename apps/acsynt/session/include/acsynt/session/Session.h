@@ -171,6 +171,8 @@ private:
     /// A menu row chosen (CHOICE 1): the current menu's table runs it.
     void choose(const std::string& item);
     void padButton(int button);
+    /// Why the pad or a valuator cannot move the marker yet: the next step of DEFINE POINT.
+    std::string noMarkerYet() const;
     void pick(const phigs::PickMeasure& measure);
     void valuator(int device, double value);
     void text(const std::string& input);
