@@ -60,7 +60,7 @@ TEST_CASE("validation: printMessages prints every message as it arrives, and tes
     CHECK(quiet.str().empty());
 }
 
-TEST_CASE("validation: PHIGS_VK_VALIDATION turns the layer on or off over a program's default",
+TEST_CASE("validation: PHIGS_VK_VALIDATION 0 or 1 turns the layer off or on over a program's default",
           "[render][validation]") {
     const char* saved = std::getenv("PHIGS_VK_VALIDATION");
     const std::string savedValue = saved ? saved : "";
@@ -72,6 +72,12 @@ TEST_CASE("validation: PHIGS_VK_VALIDATION turns the layer on or off over a prog
     CHECK(vk::ContextSettings::fromEnvironment(programDefault).validation);
     setenv("PHIGS_VK_VALIDATION", "0", 1);
     CHECK_FALSE(vk::ContextSettings::fromEnvironment(lavapipeWithValidation()).validation);
+    // Anything else is refused by name: "off" or "" must not turn the layer on.
+    for (const char* other : {"off", "", "true", "2", "yes"}) {
+        setenv("PHIGS_VK_VALIDATION", other, 1);
+        CHECK_THROWS_WITH(vk::ContextSettings::fromEnvironment(programDefault),
+                          Catch::Contains("PHIGS_VK_VALIDATION must be '0' or '1'"));
+    }
     if (saved)
         setenv("PHIGS_VK_VALIDATION", savedValue.c_str(), 1);
     else

@@ -57,8 +57,13 @@ ContextSettings ContextSettings::fromEnvironment(ContextSettings defaults) {
             throw std::invalid_argument("PHIGS_VK_DEVICE must be 'lavapipe' or 'hardware', not '" +
                                         std::string(value) + "'");
     }
-    if (const char* validation = std::getenv("PHIGS_VK_VALIDATION"))
-        defaults.validation = std::string_view(validation) != "0";
+    if (const char* validation = std::getenv("PHIGS_VK_VALIDATION")) {
+        const std::string_view value(validation);
+        if (value != "0" && value != "1")  // "off" or "" turning the layer on would surprise
+            throw std::invalid_argument("PHIGS_VK_VALIDATION must be '0' or '1', not '" + std::string(value) +
+                                        "'");
+        defaults.validation = value == "1";
+    }
     return defaults;
 }
 
