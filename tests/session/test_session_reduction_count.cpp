@@ -53,7 +53,7 @@ TEST_CASE("SURF_REDN BY COUNT, REDUCE_U&W: the prompt asks for each direction, b
     }));
 }
 
-TEST_CASE("SURF_REDN: each direction's count says what it takes out; nothing removable changes nothing") {
+TEST_CASE("SURF_REDN: each direction's count says what it takes out, and nothing removable changes nothing") {
     Driver d("reduction_messages");
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
            "choice FOUR_VIEWS", "choice RETURN", "choice SURF_REDN"});
