@@ -1,6 +1,7 @@
 // acsynt: the ACSYNT-like design program. Replays a session script headless (pictures through
 // the Vulkan offscreen workstation) or runs interactively in a GLFW window; either way the
 // session can be recorded as a script. --export converts a model to IGES or STEP without a session.
+#include "acsynt/DataFolders.h"
 #include "acsynt/session/ModelExchange.h"
 #include "acsynt/session/ModelStateFile.h"
 #include "acsynt/session/Session.h"
@@ -145,14 +146,13 @@ std::string unwritable(const std::filesystem::path& path) {
     return "";
 }
 
-/// A file to read as given, else (a relative name) from the shipped data folder, as the
+/// A file to read as given, else (a relative name) from the shipped data folders, as the
 /// session's file names are found.
 std::string resolveInput(const std::string& name) {
     std::error_code ec;
-    const std::filesystem::path data = std::filesystem::path(ACSYNT_DATA_DIR) / name;
-    if (!std::filesystem::exists(name, ec) && std::filesystem::path(name).is_relative() &&
-        std::filesystem::exists(data, ec))
-        return data.string();
+    if (std::filesystem::exists(name, ec) || !std::filesystem::path(name).is_relative()) return name;
+    for (const std::filesystem::path& folder : acsynt::dataFolders())
+        if (std::filesystem::exists(folder / name, ec)) return (folder / name).string();
     return name;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "acsynt/DataFolders.h"
 #include "phigs/ws/OutputRegistry.h"
 #include "phigs/ws/WorkstationType.h"
 
@@ -14,7 +15,7 @@ struct SessionSettings {
     int width = 1024, height = 768;               ///< screen size in pixels (resize() changes it)
     std::filesystem::path outputDirectory = ".";  ///< snapshots, summary, saved files
     /// Where relative names of files to read are looked up after the working directory.
-    std::vector<std::filesystem::path> searchPath{ACSYNT_DATA_DIR};
+    std::vector<std::filesystem::path> searchPath = dataFolders();
     /// The workstation type. A window's display surface is its drawable (any shape, one device
     /// unit per pixel); the others' (1024 x 768 device units) is shown on the width x height
     /// pixels, which must then have its 4:3 shape.
