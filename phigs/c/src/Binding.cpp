@@ -262,6 +262,7 @@ void Binding::showChangesAtOnce(int function) {
     if (phigs_->store().isStructureOpen() && now - lastShown_ < kBuildingInterval) return;
     bool shown = false;
     for (int id : phigs_->openWorkstationIds()) {
+        if (!phigs_) return;  // the handler of an error here closed PHIGS (EMERGENCY CLOSE)
         Workstation* ws = phigs_->findWorkstation(id);
         if (!ws || ws->type() != WorkstationType::Window || !ws->presentationBehind()) continue;
         shown = true;

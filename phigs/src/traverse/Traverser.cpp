@@ -1484,6 +1484,7 @@ DrawList Traverser::traverse(const StructureStore& store, const std::vector<int>
         walk.abandon();
         out.items.clear();
         if (subtrees_) subtrees_->clear();
+        segmentPool_->takenSince();  // the next traversal's count starts afresh
         segmentPool_->settle(kSpareSegments);
         throw;
     }

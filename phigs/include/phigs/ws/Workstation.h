@@ -268,7 +268,7 @@ private:
     DrawList picture_;
     std::uint64_t pictureStamp_ = 0;
     bool pictured_ = false;
-    std::uint64_t presentedStamp_ = 0;  ///< pictureStamp_ of the picture last presented
+    std::uint64_t presentedStamp_ = 0;  ///< contentStamp() when last presented (or tried)
     bool presented_ = false;
     VisualState pictureState_ = VisualState::Correct;
     std::uint64_t regenerations_ = 0;
