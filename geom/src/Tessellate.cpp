@@ -222,6 +222,9 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
     // Measured on the surface scaled to unit size: at coordinates past 1e154 every squared
     // distance would overflow, every cell fail, and the vertex limit be blamed.
     const double scale = detail::unitScale(surface.points);
+    // Within 2^100 of unit size nothing overflows (4th powers stay normal): the surface itself
+    // (scaling is exact, so the mesh is the same), no copy.
+    if (scale >= 0x1p-100 && scale <= 0x1p100) return adaptiveMesh(surface, tolerance, tolerance);
     Surface unit = surface;
     for (glm::dvec3& p : unit.points) p *= scale;
     SurfaceMesh mesh = adaptiveMesh(unit, tolerance * scale, tolerance);
@@ -286,9 +289,15 @@ std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
                             " is below what coordinates of " + detail::numberText(extent) + " resolve");
     // Measured on the curve scaled to unit size: at coordinates past 1e154 the squared distances
     // of the flatness test would overflow and pass any piece as one chord.
-    const double scale = detail::unitScale(curve.points);
-    Curve unit = curve;
-    for (glm::dvec3& p : unit.points) p *= scale;
+    // Within 2^100 of unit size nothing overflows (4th powers stay normal): the curve itself.
+    double scale = detail::unitScale(curve.points);
+    if (scale >= 0x1p-100 && scale <= 0x1p100) scale = 1.0;
+    Curve scaled;
+    if (scale != 1.0) {
+        scaled = curve;
+        for (glm::dvec3& p : scaled.points) p *= scale;
+    }
+    const Curve& unit = scale != 1.0 ? scaled : curve;
     // Knot values are always vertices (corners of C0 curves stay sharp): each Bézier piece is
     // tessellated on its own, and where one starts away from where the last ended (a jump) the
     // polyline joins the two.
@@ -299,7 +308,8 @@ std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
         if (out.empty() || out.back() != start) out.push_back(start);
         tessellatePiece(std::move(net), tolerance * scale, tolerance, out);
     }
-    for (glm::dvec3& p : out) p /= scale;
+    if (scale != 1.0)
+        for (glm::dvec3& p : out) p /= scale;
     return out;
 }
 
