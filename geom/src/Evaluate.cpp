@@ -2,6 +2,7 @@
 
 #include "Checked.h"
 #include "SmallBuffer.h"
+#include "UnitScale.h"
 #include "geom/Basis.h"
 #include "geom/GeometryError.h"
 
@@ -276,7 +277,7 @@ void surfaceDerivatives(const Surface& surface, double u, double v, int order, c
 /// a over its largest coordinate: the cross product of two such neither overflows nor underflows
 /// (a surface of 1e200 or of 1e-200), and has the same direction.
 glm::dvec3 unitScaled(const glm::dvec3& a) {
-    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    const double m = detail::largestCoordinate(a);
     return m > 0.0 && std::isfinite(m) ? a / m : a;
 }
 
@@ -310,11 +311,6 @@ SurfaceDerivatives derivatives(const Surface& surface, double u, double v, int o
 
 namespace {
 
-/// The largest absolute coordinate.
-double largestCoordinate(const glm::dvec3& a) {
-    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
-}
-
 /// Whether `t` is an end of a clamped knot vector (degree p, count coefficients) and which row of
 /// coefficients the edge there takes: 0 or count - 1; none otherwise.
 std::optional<std::size_t> clampedEdge(const std::vector<double>& knots, int p, std::size_t count, double t) {
@@ -336,10 +332,10 @@ bool poleRow(const Surface& s, bool alongU, double t) {
     const std::size_t next = *edge == 0 ? 1 : *edge - 1;
     auto at = [&](std::size_t k, std::size_t row) { return alongU ? s.point(k, row) : s.point(row, k); };
     const glm::dvec3 first = at(0, *edge);
-    double spread = 0.0, size = largestCoordinate(first);
+    double spread = 0.0, size = detail::largestCoordinate(first);
     for (std::size_t k = 0; k < n; ++k) {
-        spread = std::max(spread, largestCoordinate(at(k, *edge) - first));
-        if (other > 1) size = std::max(size, largestCoordinate(at(k, next) - at(k, *edge)));
+        spread = std::max(spread, detail::largestCoordinate(at(k, *edge) - first));
+        if (other > 1) size = std::max(size, detail::largestCoordinate(at(k, next) - at(k, *edge)));
     }
     return spread <= 1e-6 * size;
 }
@@ -367,7 +363,7 @@ glm::dvec3 collapsedEdgeNormal(const Surface& surface, double u, double v, doubl
 /// overflows nor underflows): below it, the smaller may be rounding noise (see
 /// normalFromDerivatives). False for NaN.
 bool comparable(const glm::dvec3& su, const glm::dvec3& sv) {
-    const double a = largestCoordinate(su), b = largestCoordinate(sv);
+    const double a = detail::largestCoordinate(su), b = detail::largestCoordinate(sv);
     return std::min(a, b) > 1e-6 * std::max(a, b);
 }
 

@@ -351,11 +351,6 @@ bool touchesBetween(const BezierPatchTree& tree, const LineSurfaceHit& a, const 
     return distance < 1e-12 * tree.scale();
 }
 
-/// The largest coordinate of a hit's point, for the rounding its coordinates carry.
-double coordinateSize(const LineSurfaceHit& hit) {
-    return std::max({std::abs(hit.point.x), std::abs(hit.point.y), std::abs(hit.point.z)});
-}
-
 /// The surface's unit normal at uv, or zero where it is degenerate: a first derivative (over the
 /// whole domain width) below a millionth of the surface's size or at the rounding level of its
 /// coordinates (a collapsed edge, or a surface collapsed to one point).
@@ -405,10 +400,11 @@ std::vector<LineSurfaceHit> oneHitPerCrossing(const BezierPatchTree& tree,
     const double near = 1e-2 * tree.scale();
     auto sameAt = [&](const LineSurfaceHit& h) {
         return std::max(1e-7 * tree.scale(),
-                        64.0 * std::numeric_limits<double>::epsilon() * coordinateSize(h));
+                        64.0 * std::numeric_limits<double>::epsilon() * detail::largestCoordinate(h.point));
     };
     auto emitRun = [&](std::size_t first, std::size_t end) {
-        const double rounding = 1e3 * std::numeric_limits<double>::epsilon() * coordinateSize(hits[first]);
+        const double rounding =
+            1e3 * std::numeric_limits<double>::epsilon() * detail::largestCoordinate(hits[first].point);
         if (glm::length(hits[end - 1].point - hits[first].point) >= sameAt(hits[first])) {
             unique.push_back(hits[(first + end - 1) / 2]);
             return;
@@ -564,11 +560,11 @@ std::vector<LineSurfaceHit> SurfaceIntersector::intersect(const glm::dvec3& line
     // Where the line passes the surface is known to the rounding of the coordinates that placed
     // it (the origin's and the centre's): the boxes are widened by it (a surface collapsed to a
     // point has boxes of no size) and a hit may lie that far off the line.
-    auto largest = [](const glm::dvec3& v) {
-        return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    };
-    const double placing = 64.0 * std::numeric_limits<double>::epsilon() *
-                           (largest(lineOrigin) + largest(centre) + largest(callerBase)) * unitScale_;
+    using detail::largestCoordinate;
+    const double placing =
+        64.0 * std::numeric_limits<double>::epsilon() *
+        (largestCoordinate(lineOrigin) + largestCoordinate(centre) + largestCoordinate(callerBase)) *
+        unitScale_;
     if (!std::isfinite(placing) || !std::isfinite(base.x) || !std::isfinite(base.y) || !std::isfinite(base.z))
         throw GeometryError(
             "intersectLine: the line origin lies too far from the surface (relative to its size) "

@@ -11,14 +11,18 @@
 
 namespace geom::detail {
 
+/// The largest absolute coordinate of `p`.
+inline double largestCoordinate(const glm::dvec3& p) {
+    return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
+
 /// The power of two that brings the largest coordinate of `points` into [1, 2) (1 where all are
 /// zero). Multiplying by a power of two is exact, so a result computed on the scaled points and
 /// divided by this scale again is the one computed on the points themselves, where that one
 /// neither overflows nor underflows.
 inline double unitScale(std::span<const glm::dvec3> points) {
     double extent = 0.0;
-    for (const glm::dvec3& p : points)
-        extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    for (const glm::dvec3& p : points) extent = std::max(extent, largestCoordinate(p));
     if (!(extent > 0.0) || !std::isfinite(extent)) return 1.0;
     // Clamped so that the scale of a subnormal extent stays finite.
     return std::ldexp(1.0, -std::max(std::ilogb(extent), -1020));
