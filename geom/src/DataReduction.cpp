@@ -2,6 +2,7 @@
 
 #include "KeptVector.h"
 #include "RemovalDetail.h"
+#include "SeamOrder.h"
 #include "geom/Basis.h"
 #include "geom/BoundingBox.h"
 #include "geom/Evaluate.h"
@@ -2143,6 +2144,14 @@ private:
     CurveReduction out_;
 };
 
+/// o, with the ends' derivatives kept up to a closed shape's seam order (ReductionOptions::keepSeams):
+/// each end keeps its derivatives, so the seam keeps the continuity it had.
+ReductionOptions keepingSeam(const ReductionOptions& o, int seamOrder) {
+    ReductionOptions kept = o;
+    if (o.keepSeams && seamOrder > o.ends.fixedDerivatives) kept.ends.fixedDerivatives = seamOrder;
+    return kept;
+}
+
 /// Whether the knots repeat p + 1 times at each end (n poles).
 bool hasClampedEnds(const std::vector<double>& knots, int degree, std::size_t n) {
     const auto p = static_cast<std::ptrdiff_t>(degree), last = static_cast<std::ptrdiff_t>(n);
@@ -2152,25 +2161,12 @@ bool hasClampedEnds(const std::vector<double>& knots, int degree, std::size_t n)
 
 }  // namespace
 
-CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) {
-    checkOptions(options, "reduceCurve");
-    validate(curve, "reduceCurve");
+namespace {
+
+/// reduceCurve of a clamped curve whose ends' conditions are options.ends.
+CurveReduction reduceClampedCurve(const Curve& curve, const ReductionOptions& options) {
     const bool measuring = std::isfinite(options.tolerance);
     const std::size_t p = static_cast<std::size_t>(curve.degree), n = curve.points.size();
-    // The ends stay where the curve has them: an unclamped one (a periodic, closed one too) is
-    // reduced as its clamped form, the same curve, so it keeps its end points (a closed curve
-    // stays closed). Where that keeps more points than the original had, the original stands.
-    if (!hasClampedEnds(curve.knots, curve.degree, n)) {
-        CurveReduction r = reduceCurve(clampEnds(curve), options);
-        if (r.curve.points.size() >= n) {
-            CurveReduction unchanged;
-            unchanged.curve = curve;
-            unchanged.fits = r.fits;
-            return unchanged;
-        }
-        r.removed = n - r.curve.points.size();
-        return r;
-    }
     if (curve.rational()) return reduceRationalCurve(curve, options);
     // Samples can miss a peak between them by a little; the loop keeps 1% in hand, and the
     // final measurement below has the last word.
@@ -2226,6 +2222,55 @@ CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& options) 
     return out;
 }
 
+/// reduceCurve of a clamped closed curve whose seam is continuous to order seam (seamOrder): both
+/// ends keep their derivatives up to it, and with them the first and last `seam` interior knots
+/// (EndConditions). Knots that go exactly (within rounding of the curve's size, so the seam stays
+/// as it was) go first wherever they are: a refined circle goes back to its own points.
+CurveReduction reduceClosedCurve(const Curve& curve, const ReductionOptions& given, int seam) {
+    const std::size_t n = curve.points.size();
+    double size = 0.0;
+    for (const glm::dvec3& q : curve.points) size = std::max(size, glm::length(q));
+    const double rounding = 1e-13 * size;
+    Curve exact = removeKnotsInRankOrder(curve, given.ends, rounding, given.maxRemovals,
+                                         std::numeric_limits<int>::max(), nullptr);
+    const std::size_t gone = n - exact.points.size();
+    if (gone == 0 || detail::seamOrder(exact) < seam || !(given.tolerance > rounding))
+        return reduceClampedCurve(curve, keepingSeam(given, seam));
+    ReductionOptions rest = keepingSeam(given, seam);
+    rest.maxRemovals -= gone;
+    rest.tolerance -= rounding;  // the exact removals' share
+    CurveReduction r = reduceClampedCurve(exact, rest);
+    r.removed += gone;
+    if (given.report) r.deviation = measureDeviation(curve, r.curve, 2 * finalCheckDensity(given));
+    return r;
+}
+
+}  // namespace
+
+CurveReduction reduceCurve(const Curve& curve, const ReductionOptions& given) {
+    checkOptions(given, "reduceCurve");
+    validate(curve, "reduceCurve");
+    const std::size_t n = curve.points.size();
+    // The ends stay where the curve has them: an unclamped one (a periodic, closed one too) is
+    // reduced as its clamped form, the same curve, so it keeps its end points (a closed curve
+    // stays closed). Where that keeps more points than the original had, the original stands.
+    if (!hasClampedEnds(curve.knots, curve.degree, n)) {
+        CurveReduction r = reduceCurve(clampEnds(curve), given);
+        if (r.curve.points.size() >= n) {
+            CurveReduction unchanged;
+            unchanged.curve = curve;
+            unchanged.fits = r.fits;
+            return unchanged;
+        }
+        r.removed = n - r.curve.points.size();
+        return r;
+    }
+    // A closed curve keeps its seam as smooth as it was (ReductionOptions::keepSeams).
+    const int seam = given.keepSeams ? detail::seamOrder(curve) : -1;
+    return seam > given.ends.fixedDerivatives ? reduceClosedCurve(curve, given, seam)
+                                              : reduceClampedCurve(curve, given);
+}
+
 namespace {
 
 SurfaceReduction reduceClampedSurface(const Surface& surface, ReductionDirection direction,
@@ -2245,13 +2290,20 @@ SurfaceReduction reduceClampedSurface(const Surface& surface, ReductionDirection
     // the final measurement still finds the tolerance broken, the reduction runs again with
     // less (the original, with nothing removed, always passes).
     const bool measuring = std::isfinite(options.tolerance);
+    // A closed direction keeps the continuity of its seam (ReductionOptions::keepSeams).
+    const ReductionOptions alongU = keepingSeam(
+        options,
+        options.keepSeams && direction != ReductionDirection::V ? detail::seamOrder(surface, true) : -1);
+    const ReductionOptions alongV = keepingSeam(
+        options,
+        options.keepSeams && direction != ReductionDirection::U ? detail::seamOrder(surface, false) : -1);
     for (double share : {0.99, 0.9, 0.7, 0.0}) {
         out = SurfaceReduction{};
         Surface current = surface;
         const double acceptance = share * options.tolerance;
         if (share > 0.0 || !measuring) {
             if (direction != ReductionDirection::V)
-                out.removedU = reduceSurfaceAlongU(current, grid, options, acceptance, out.fits);
+                out.removedU = reduceSurfaceAlongU(current, grid, alongU, acceptance, out.fits);
             if (direction != ReductionDirection::U) {
                 // Along v by transposition (the thesis's swap_uw), the grid transposed with it.
                 Surface t = transposed(current);
@@ -2265,7 +2317,7 @@ SurfaceReduction reduceClampedSurface(const Surface& surface, ReductionDirection
                         for (std::size_t j = 0; j < grid.gridV.size(); ++j)
                             tg.values[j * grid.gridU.size() + i] = grid.values[i * grid.gridV.size() + j];
                 }
-                out.removedV = reduceSurfaceAlongU(t, tg, options, acceptance, out.fits);
+                out.removedV = reduceSurfaceAlongU(t, tg, alongV, acceptance, out.fits);
                 current = transposed(t);
             }
         }

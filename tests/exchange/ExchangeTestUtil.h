@@ -58,7 +58,8 @@ inline geom::exchange::SurfaceLoop ellipse(const geom::Surface& s, glm::dvec2 c,
 
 /// The transport with loops on the wing (an outer loop with a hole, and a second outer loop) and
 /// on the fuselage across its seam (w below 0), and a reduced fuselage (unclamped, not periodic).
-inline geom::exchange::CadModel loopModel() {
+/// seamKept false reduces the fuselage's seam as two ends (as before ReductionOptions::keepSeams).
+inline geom::exchange::CadModel loopModel(bool seamKept = true) {
     geom::exchange::CadModel m = cadModelOf(exchange_test::transport());
     const geom::Surface& wing = m.surfaces[1].surface;
     m.surfaces[1].curves.push_back(
@@ -69,6 +70,7 @@ inline geom::exchange::CadModel loopModel() {
     m.surfaces[0].curves.push_back({"seam.crv", {ellipse(body, {0.5, 0.0}, {0.1, 0.04}, 30, true)}});
     geom::ReductionOptions o;
     o.tolerance = 0.01;
+    o.keepSeams = seamKept;
     m.surfaces.push_back({"fuselage_R1",
                           geom::reduceSurface(body, geom::ReductionDirection::Both, o).surface,
                           glm::dvec3(0.2, 0.4, 0.6),

@@ -265,7 +265,8 @@ TEST_CASE("bad files: a cut IGES file on which OpenCASCADE's reader crashes is r
     // surface (a segmentation fault; under AddressSanitizer, its report and exit): the reading
     // child process takes the crash.
     const auto dir = exchange_test::scratch("bad_crash");
-    writeCadFile(exchange_test::loopModel(), dir / "model.igs");
+    // The file the crash was found on: its reduced fuselage's seam reduced as two ends.
+    writeCadFile(exchange_test::loopModel(false), dir / "model.igs");
     const std::string whole = contents(dir / "model.igs");
     // Cut after a whole record, its parameter list ended there: the parameters read as numbers
     // (no earlier check refuses them), the entity misses the rest.

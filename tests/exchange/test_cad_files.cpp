@@ -50,7 +50,12 @@ void requireSameModel(const CadModel& read, const CadModel& written) {
         // reduced one is unclamped: it comes back clamped).
         requireSamePatches(r.surface, w.surface);
         if (w.name != "fuselage_R1") requireSameSurface(r.surface, w.surface);
-        CHECK(periodicByConstruction(r.surface, true) == periodicByConstruction(w.surface, true));
+        // The reduced fuselage is clamped round a smooth seam (ReductionOptions::keepSeams): both
+        // readers give it back periodic, the same surface.
+        if (w.name == "fuselage_R1")
+            CHECK(periodicByConstruction(r.surface, true));
+        else
+            CHECK(periodicByConstruction(r.surface, true) == periodicByConstruction(w.surface, true));
         REQUIRE(r.colour.has_value());
         CHECK(glm::length(*r.colour - *w.colour) <= 1e-6);
         REQUIRE(r.curves.size() == w.curves.size());

@@ -777,6 +777,25 @@ TEST_CASE("a long, densely refined curve reduces to about its simpler curve", "[
 
 namespace test_knot_reduction {
 
+/// The largest relative difference of the derivatives 1 .. order at the two ends of a curve.
+double seamJump(const Curve& c, int order) {
+    if (order < 1) return 0.0;
+    const std::vector<glm::dvec3> a = derivatives(c, c.domainStart(), order),
+                                  b = derivatives(c, c.domainEnd(), order);
+    double jump = 0.0;
+    for (int k = 1; k <= order; ++k) {
+        const double scale = std::max(glm::length(a[std::size_t(k)]), glm::length(b[std::size_t(k)]));
+        if (scale > 0.0) jump = std::max(jump, glm::length(a[std::size_t(k)] - b[std::size_t(k)]) / scale);
+    }
+    return jump;
+}
+
+/// The angle in degrees between the tangents at the two ends of a curve.
+double seamAngle(const Curve& c) {
+    const glm::dvec3 a = derivatives(c, c.domainStart(), 1)[1], b = derivatives(c, c.domainEnd(), 1)[1];
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / M_PI;
+}
+
 TEST_CASE("reduceCurve keeps the end points of unclamped and closed curves, closed ones stay closed",
           "[geom][reduction]") {
     // Unclamped and periodic curves were reduced as they were: ends moved by up to the tolerance
@@ -812,6 +831,60 @@ TEST_CASE("reduceCurve keeps the end points of unclamped and closed curves, clos
         CHECK(r.curve.points.size() <= c.points.size());
         CHECK(r.removed == c.points.size() - r.curve.points.size());
         CHECK(measureDeviation(c, r.curve).maxError <= o.tolerance);
+        // A closed curve stays smooth across its seam: C^(p-1), as periodic (the ends were
+        // reduced apart: 1-6 degree kinks).
+        if (closed) {
+            CHECK(seamJump(c, p - 1) <= 1e-9);
+            CHECK(seamJump(r.curve, p - 1) <= 1e-8);
+        }
+    }
+}
+
+TEST_CASE("reduceCurve keeps a closed curve's seam as smooth as it was, and only a closed one's",
+          "[geom][reduction]") {
+    // Random closed curves of degrees 2-7 meeting C^(p-1), G1 only (clamped, tangents of different
+    // lengths) or at a corner, and open ones: the seam keeps what it had; where it had nothing to
+    // keep (a corner, an open curve) the result is the one keepSeams = false gives.
+    std::mt19937 rng(2027);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int member = 0; member < 48; ++member) {
+        const int p = 2 + member % 6, kind = (member / 6) % 4;  // periodic, G1, corner, open
+        const std::size_t n = 40 + rng() % 40;
+        std::vector<glm::dvec3> ring;
+        const double lobes = 2.0 + double(rng() % 4), noise = 5e-5 * (1.0 + unit(rng));
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = 2.0 * M_PI * double(i) / double(n), r = 1.0 + 0.25 * std::cos(lobes * a);
+            ring.push_back(glm::dvec3(r * std::cos(a), r * std::sin(a), 0.2 * std::sin(a)) +
+                           noise * glm::dvec3(unit(rng), unit(rng), unit(rng)));
+        }
+        Curve c = clampEnds(makePeriodicCurve(p, ring));
+        if (kind == 1) {  // G1: the tangent at the start three times as long (points 1 and n - 2 moved)
+            const glm::dvec3 joint = c.points.front();
+            c.points[1] = joint + 3.0 * (c.points[1] - joint);
+        } else if (kind == 2) {  // a corner: the first leg turned
+            c.points[1] += 0.2 * glm::dvec3(unit(rng), unit(rng), 0.3);
+        } else if (kind == 3) {  // open: the last point moved off the first
+            c.points.back() += glm::dvec3(0.05, 0.0, 0.0);
+        }
+        ReductionOptions o;
+        o.tolerance = 1e-3 * std::pow(10.0, 1.0 + unit(rng));
+        const CurveReduction r = reduceCurve(c, o);
+        INFO("member " << member << ": degree " << p << ", kind " << kind << ", " << c.points.size() << " -> "
+                       << r.curve.points.size());
+        CHECK(r.curve.points.size() < c.points.size());
+        CHECK(measureDeviation(c, r.curve).maxError <= o.tolerance);
+        if (kind == 0) CHECK(seamJump(r.curve, p - 1) <= 1e-8);
+        if (kind == 1) {
+            CHECK(seamAngle(c) <= 1e-6);
+            CHECK(seamAngle(r.curve) <= 1e-6);
+        }
+        if (kind >= 2) {
+            ReductionOptions apart = o;
+            apart.keepSeams = false;
+            const CurveReduction plain = reduceCurve(c, apart);
+            CHECK(plain.curve.knots == r.curve.knots);
+            CHECK(plain.curve.points == r.curve.points);
+        }
     }
 }
 
@@ -868,6 +941,18 @@ TEST_CASE("reduceSurface keeps the edges of periodic surfaces and a closed seam 
         }
         CHECK(seam <= 1e-12);
         CHECK(corner <= 1e-12);
+        // Smooth across the seam as well (C^(q-1), as periodic): every row across it.
+        const bool acrossSeamReduced =
+            direction == ReductionDirection::Both || (direction == ReductionDirection::U) == periodicU;
+        for (std::size_t row = 0;
+             acrossSeamReduced && row < (periodicU ? r.surface.countV : r.surface.countU); ++row) {
+            Curve line;
+            line.degree = periodicU ? r.surface.degreeU : r.surface.degreeV;
+            line.knots = periodicU ? r.surface.knotsU : r.surface.knotsV;
+            for (std::size_t k = 0; k < (periodicU ? r.surface.countU : r.surface.countV); ++k)
+                line.points.push_back(periodicU ? r.surface.point(k, row) : r.surface.point(row, k));
+            CHECK(seamJump(line, line.degree - 1) <= 1e-8);
+        }
     }
 }
 

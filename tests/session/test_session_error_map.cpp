@@ -95,10 +95,10 @@ TEST_CASE("error map: fixed scale in model units by default, relative on demand,
     CHECK(legendTexts(d.session)[0] == "ERROR, RELATIVE SCALE");
 
     // A fixed scale below the largest error: the top tick says errors beyond it show red.
-    d.run({"choice ERROR_SCALE", "string 2e-3"});
-    CHECK(d.session.errorScale() == 2e-3);
-    requireColoursOnScale(d.session, 2e-3);
-    CHECK(legendTexts(d.session)[4] == ">2 mm");
+    d.run({"choice ERROR_SCALE", "string 1e-3"});
+    CHECK(d.session.errorScale() == 1e-3);
+    requireColoursOnScale(d.session, 1e-3);
+    CHECK(legendTexts(d.session)[4] == ">1 mm");
 
     // Bad scales are refused with a message; the scale stays.
     for (const std::string bad : {"abc", "-2", "0", "1e999", "nan", "0.002mm", ""}) {
@@ -107,7 +107,7 @@ TEST_CASE("error map: fixed scale in model units by default, relative on demand,
         d.run({"choice ERROR_SCALE", "string " + bad});
         CHECK(d.session.message().rfind("BAD INPUT IN ERROR SCALE: '", 0) == 0);
         CHECK(d.session.failedLines() == failed + 1);
-        CHECK(d.session.errorScale() == 2e-3);
+        CHECK(d.session.errorScale() == 1e-3);
     }
 
     // The legend goes with the map.

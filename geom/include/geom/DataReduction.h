@@ -48,6 +48,11 @@ struct ReductionOptions {
     int rounds = 4;
     int lawsonSteps = 3;
     EndConditions ends;
+    /// A closed curve, or a surface closed in a direction, keeps the continuity of its seam: where
+    /// the ends meet with derivatives 1 .. k agreeing (k < degree; k = 1 also for tangents that
+    /// only share a direction), both ends keep those derivatives (ends.fixedDerivatives raised to
+    /// k), so a periodic shape stays smooth across the seam. false treats the seam as two ends.
+    bool keepSeams = true;
     /// Measurement density: samples per knot span of the original shape (each direction). A
     /// curve's final check takes at least 4, whatever the loop runs at.
     int samplesPerSpan = 8;
@@ -74,10 +79,11 @@ struct CurveReduction {
 
 /// Data reduction of a curve. An unclamped curve (a closed, periodic one too) is reduced as its
 /// clamped form (the same curve), so its end points stay and a closed curve stays closed; the
-/// original stands where that keeps as many points. In tolerance mode with options.freeKnots (the default)
-/// and clamped ends: the knots that go exactly, then a search over the control point count with
-/// free-knot fits, each kept only if measureDeviation's parameter-map form finds the Hausdorff
-/// distance within the tolerance (see ReductionOptions::freeKnots for when the removal loop runs
+/// original stands where that keeps as many points. A closed curve's seam keeps its continuity
+/// (ReductionOptions::keepSeams), once the knots that go exactly have gone. In tolerance mode with
+/// options.freeKnots (the default) and clamped ends: the knots that go exactly, then a search over the
+/// control point count with free-knot fits, each kept only if measureDeviation's parameter-map form finds the
+/// Hausdorff distance within the tolerance (see ReductionOptions::freeKnots for when the removal loop runs
 /// too). Otherwise the removal loop, rank / remove / approximate (Lyche and Morken, as Marcaly's
 /// thesis of 1991 runs it, its errata fixed): rank the interior knots by removal weight, take the
 /// partitionSize least significant, group the ones that share a local window, remove each group
@@ -113,7 +119,8 @@ struct SurfaceReduction {
 /// removal is kept only if |S(u,v) - S'(u,v)| stays within the tolerance on a dense parameter
 /// grid of the original in the changed strip (this bounds the distance between the surfaces
 /// from above). The final measurement (measureDeviation) checks the result; should it find the
-/// tolerance broken, the reduction runs again with less of the tolerance for the grid. Throws
+/// tolerance broken, the reduction runs again with less of the tolerance for the grid. A
+/// direction closed round a seam keeps its continuity there (ReductionOptions::keepSeams). Throws
 /// GeometryError for bad options.
 SurfaceReduction reduceSurface(const Surface& surface, ReductionDirection direction,
                                const ReductionOptions& options);
