@@ -1,7 +1,8 @@
 #!/bin/bash
-# check_exports.sh LIBRARY HEADER COVERAGE: the dynamic symbols LIBRARY defines are exactly the
-# functions HEADER declares (no C++ name, no missing name), and COVERAGE (COVERAGE.md) lists
-# those names, 323 of ISO/IEC 9593-4 and 75 of PHIGS PLUS (its last table), none of them missing.
+# check_exports.sh LIBRARY HEADER COVERAGE: LIBRARY's soname is libphigs.so.MAJOR, the dynamic
+# symbols it defines are exactly the functions HEADER declares (no C++ name, no missing name), and
+# COVERAGE (COVERAGE.md) lists those names, 323 of ISO/IEC 9593-4 and 75 of PHIGS PLUS (its last
+# table), none of them missing.
 set -euo pipefail
 library=$1 header=$2 coverage=$3
 declared=$(grep -oE '^[A-Za-z_][A-Za-z0-9_ ]*[ *]p[a-z0-9_]+\(' "$header" | grep -oE 'p[a-z0-9_]+\($' | tr -d '(' | sort -u)
@@ -11,6 +12,8 @@ missing=$(comm -23 <(echo "$declared") <(echo "$exported"))
 extra=$(comm -13 <(echo "$declared") <(echo "$exported"))
 if [ -n "$missing" ]; then echo "declared in phigs.h, not exported:"; echo "$missing"; status=1; fi
 if [ -n "$extra" ]; then echo "exported, not in phigs.h:"; echo "$extra"; status=1; fi
+soname=$(objdump -p "$library" | awk '$1 == "SONAME" { print $2 }')
+if ! [[ "$soname" =~ ^libphigs\.so\.[0-9]+$ ]]; then echo "soname '$soname', not libphigs.so.MAJOR"; status=1; fi
 other=$(nm -D --defined-only "$library" | awk '$2 != "T" && $2 != "A" { print }')
 if [ -n "$other" ]; then echo "other defined symbols:"; echo "$other"; status=1; fi
 names() { grep -oE '^\| `p[a-z0-9_]+`' | tr -d '|` ' | sort -u; }
