@@ -241,6 +241,23 @@ TEST_CASE("the file size limit: a file of the limit opens, one byte more is refu
         CHECK(file.structureIds() == std::vector<int>{1, 3});
         CHECK(readFile(path) == written);
     }
+    SECTION("writing far beyond the limit stops making the text there") {
+        // Ten polylines of 100,000 points, about 50 MB of text: the refusal comes at the first
+        // (the whole text was made before it, 23 times the archive limit at most).
+        ArchiveFile file(path, &log, size);
+        std::vector<Element> large;
+        for (int k = 0; k < 10; ++k) {
+            std::vector<glm::dvec3> points;
+            for (int i = 0; i < 100000; ++i) points.push_back({0.1 * i, 1.0 / (i + 3), k + 0.3});
+            large.push_back(polyline3(points));
+        }
+        CHECK(errorOf([&] { file.commit({{5, large}}, {}); }) == errors::WriteError);
+        CHECK(log.entries().back().detail ==
+              path.string() + ": the archive would be more than the limit of " + std::to_string(size) +
+                  " bytes (passed at structure 5, element 1 of 10)");
+        CHECK(file.structureIds() == std::vector<int>{1, 2});
+        CHECK(readFile(path).size() == size);
+    }
     SECTION("the default limit") {
         std::filesystem::resize_file(path, ArchiveFile::kMaxFileBytes + 1);  // sparse: costs nothing
         const auto start = std::chrono::steady_clock::now();

@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+#include <variant>
 
 namespace phigs {
 
@@ -32,6 +33,9 @@ std::string typeToken(ElementType t) {
 
 struct Writer {
     std::string& out;
+    /// Past this many bytes lists stop writing their items (encodeWithin then stops too).
+    std::size_t limit = std::numeric_limits<std::size_t>::max();
+    bool full() const { return out.size() > limit; }
     void space() {
         if (!out.empty() && out.back() != '\n') out += ' ';
     }
@@ -78,11 +82,19 @@ struct Writer {
     template <class T>
     void operator()(const std::vector<T>& list) {
         (*this)(list.size());
-        for (const T& item : list) (*this)(item);
+        for (const T& item : list)
+            if (full())
+                return;
+            else
+                (*this)(item);
     }
     void operator()(const PointList& list) {
         (*this)(list.size());
-        for (const glm::dvec3& p : list) (*this)(p);
+        for (const glm::dvec3& p : list)
+            if (full())
+                return;
+            else
+                (*this)(p);
     }
 };
 
@@ -471,22 +483,41 @@ std::vector<int> ArchiveFile::structureIds() const {
     return ids;
 }
 
-std::string ArchiveFile::encode(const std::map<int, std::vector<Element>>& contents) {
-    std::string out = "PHIGS-ARCHIVE " + std::to_string(kFormatVersion) + "\n";
-    Writer w{out};
+namespace {
+
+/// Where an archive's text passed its limit: the structure and the element (from 1) being written.
+struct EncodingStop {
+    int structure = 0;
+    std::size_t element = 0, elements = 0;
+};
+
+/// The archive text of `contents`, or where it passed `limit` bytes: an archive too large to
+/// write never has much more than the limit of its text in memory.
+std::variant<std::string, EncodingStop> encodeWithin(const std::map<int, std::vector<Element>>& contents,
+                                                     std::size_t limit) {
+    std::string out = "PHIGS-ARCHIVE " + std::to_string(ArchiveFile::kFormatVersion) + "\n";
+    Writer w{out, limit};
     for (const auto& [id, elements] : contents) {
         out += "STRUCTURE";
         w(id), w(elements.size());
         out += '\n';
-        for (const Element& element : elements) {
-            out += typeToken(elementType(element));
-            std::visit([&](const auto& e) { fields(w, const_cast<std::decay_t<decltype(e)>&>(e)); }, element);
+        for (std::size_t k = 0; k < elements.size(); ++k) {
+            out += typeToken(elementType(elements[k]));
+            std::visit([&](const auto& e) { fields(w, const_cast<std::decay_t<decltype(e)>&>(e)); },
+                       elements[k]);
             out += '\n';
+            if (w.full()) return EncodingStop{id, k + 1, elements.size()};
         }
     }
     std::uint64_t checksum = fnv1a(out);
     out += "END " + std::to_string(contents.size()) + " " + hex(checksum) + "\n";
     return out;
+}
+
+}  // namespace
+
+std::string ArchiveFile::encode(const std::map<int, std::vector<Element>>& contents) {
+    return std::get<std::string>(encodeWithin(contents, std::numeric_limits<std::size_t>::max()));
 }
 
 std::map<int, std::vector<Element>> ArchiveFile::decode(const std::string& text,
@@ -538,7 +569,14 @@ void ArchiveFile::commit(const std::map<int, std::vector<Element>>& put, const s
 }
 
 void ArchiveFile::write(std::map<int, std::vector<Element>> next, const char* function) {
-    const std::string text = encode(next);
+    auto encoded = encodeWithin(next, maxFileBytes_);
+    if (const EncodingStop* stop = std::get_if<EncodingStop>(&encoded))
+        raise(log_, errors::WriteError, function,
+              path_.string() + ": the archive would be more than the limit of " +
+                  std::to_string(maxFileBytes_) + " bytes (passed at structure " +
+                  std::to_string(stop->structure) + ", element " + std::to_string(stop->element) + " of " +
+                  std::to_string(stop->elements) + ")");
+    const std::string text = std::move(std::get<std::string>(encoded));
     if (text.size() > maxFileBytes_)
         raise(log_, errors::WriteError, function,
               path_.string() + ": the archive would be " + std::to_string(text.size()) +
