@@ -29,6 +29,14 @@ double localParameter(double u, double a, double b) {
     return (u - a) / (b - a);
 }
 
+// bernsteinBasis runs once per evaluated point: its refusal's message is made out of line.
+[[noreturn, gnu::cold, gnu::noinline]] void badBernsteinArguments(int degree, std::size_t values,
+                                                                  std::size_t first, std::size_t second) {
+    throw GeometryError("bernsteinBasis: degree " + std::to_string(degree) +
+                        " needs degree + 1 values in each output (given " + std::to_string(values) + ", " +
+                        std::to_string(first) + ", " + std::to_string(second) + ")");
+}
+
 }  // namespace
 
 void bernsteinBasis(int degree, double t, std::span<double> values, std::span<double> first,
@@ -37,10 +45,7 @@ void bernsteinBasis(int degree, double t, std::span<double> values, std::span<do
     // Size comparisons only: this runs once per evaluated point.
     if (degree < 0 || values.size() <= n || (!first.empty() && first.size() <= n) ||
         (!second.empty() && second.size() <= n))
-        throw GeometryError("bernsteinBasis: degree " + std::to_string(degree) +
-                            " needs degree + 1 values in each output (given " +
-                            std::to_string(values.size()) + ", " + std::to_string(first.size()) + ", " +
-                            std::to_string(second.size()) + ")");
+        badBernsteinArguments(degree, values.size(), first.size(), second.size());
     const double s = 1.0 - t;
     // Raise the degree step by step (The NURBS Book A1.3), keeping degrees n-1 and n-2 for
     // the derivatives: B'_{i,n} = n (B_{i-1,n-1} - B_{i,n-1}).

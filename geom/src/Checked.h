@@ -1,5 +1,6 @@
 #pragma once
 
+#include "UnitScale.h"
 #include "geom/Curve.h"
 #include "geom/GeometryError.h"
 #include "geom/Surface.h"
@@ -96,7 +97,7 @@ inline bool finite(const glm::dvec3& value) {
 /// distances overflow, and the answer would be wrong without a sign.
 inline void checkQueryPoint(const glm::dvec3& p, const char* where) {
     if (!finite(p)) throw GeometryError(std::string(where) + ": the query point has a non-finite coordinate");
-    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > 1e150)
+    if (detail::largestCoordinate(p) > 1e150)
         throw GeometryError(std::string(where) +
                             ": the query point lies beyond 1e150, where squared distances overflow");
 }

@@ -2,6 +2,7 @@
 
 #include "Checked.h"
 #include "ProjectionBounds.h"
+#include "UnitScale.h"
 #include "geom/BoundingBox.h"
 #include "geom/GeometryError.h"
 
@@ -362,8 +363,7 @@ private:
     Flat flatness(const glm::dvec4* net) const {
         detail::project(net, netSize_, points_);
         double magnitude = 0.0;
-        for (const glm::dvec3& q : points_)
-            magnitude = std::max({magnitude, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+        for (const glm::dvec3& q : points_) magnitude = std::max(magnitude, detail::largestCoordinate(q));
         const double allowed = collapseTolerance(magnitude);
         if (detail::departureFromEdge(net, points_, pu_, qv_, true) <= allowed) return Flat::alongV;
         if (detail::departureFromEdge(net, points_, pu_, qv_, false) <= allowed) return Flat::alongU;
@@ -434,8 +434,7 @@ private:
     bool collapsedLine(std::size_t i, bool alongV) const {
         const std::size_t count = alongV ? pu_ : qv_;
         const glm::dvec3& first = alongV ? points_[i] : points_[i * qv_];
-        const double allowed =
-            collapseTolerance(std::max({std::abs(first.x), std::abs(first.y), std::abs(first.z)}));
+        const double allowed = collapseTolerance(detail::largestCoordinate(first));
         for (std::size_t k = 1; k < count; ++k)
             if (glm::distance(alongV ? points_[k * qv_ + i] : points_[i * qv_ + k], first) > allowed)
                 return false;

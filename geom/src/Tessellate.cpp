@@ -282,8 +282,7 @@ std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
     // Below a few units in the last place of the coordinates no chord can be told from the
     // curve: halving would go on until the vertex limit.
     double extent = 0.0;
-    for (const glm::dvec3& p : curve.points)
-        extent = std::max({extent, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+    for (const glm::dvec3& p : curve.points) extent = std::max(extent, detail::largestCoordinate(p));
     if (tolerance < 16.0 * std::numeric_limits<double>::epsilon() * extent)
         throw GeometryError("tessellate: tolerance " + detail::numberText(tolerance) +
                             " is below what coordinates of " + detail::numberText(extent) + " resolve");
