@@ -48,6 +48,24 @@ void Session::restyle() {
     modelPicture_.restyle(core_.models.current(), core_.style);
 }
 
+namespace {
+
+/// Half the shorter side of view v's window at zoom 1: 0.9 of the model's bounding sphere in the
+/// three axis views of FOUR_VIEWS (0.75 in an oblique view, whose direction turns), or more
+/// where the model's box, seen along the view's axis, would not fit (a slender model's length).
+double viewHalfSize(bool axisView, int v, double aspect, const glm::dvec3& size, double radius) {
+    if (!axisView) return 0.75 * radius;
+    // Across and up the screen: plan (y, x), front (y, z), side (x, z); directions in updateViews.
+    const glm::dvec2 seen = v == 1   ? glm::dvec2(size.y, size.x)
+                            : v == 2 ? glm::dvec2(size.y, size.z)
+                                     : glm::dvec2(size.x, size.z);
+    const double needed =
+        aspect >= 1 ? std::max(seen.y, seen.x / aspect) / 2 : std::max(seen.x, seen.y * aspect) / 2;
+    return std::max(0.9 * radius, 1.05 * needed);
+}
+
+}  // namespace
+
 void Session::updateViews() {
     const auto [lo, hi] = modelBounds();
     const glm::dvec3 centre = core_.viewCentre.value_or((lo + hi) / 2.0);
@@ -65,7 +83,7 @@ void Session::updateViews() {
         const glm::dvec3 npcMin = npc({b.x0, b.y1}, 0), npcMax = npc({b.x1, b.y0}, 1);
         ViewMapping mapping;
         const double aspect = (npcMax.x - npcMin.x) / (npcMax.y - npcMin.y);
-        const double half = radius * (core_.fourViews && v < 4 ? 0.9 : 0.75) / core_.zoom;
+        const double half = viewHalfSize(core_.fourViews && v < 4, v, aspect, hi - lo, radius) / core_.zoom;
         const glm::dvec2 halfSize =
             aspect >= 1 ? glm::dvec2(half * aspect, half) : glm::dvec2(half, half / aspect);
         mapping.windowMin = -halfSize;
