@@ -84,6 +84,24 @@ TEST_CASE("error map: fixed scale in model units by default, relative on demand,
     CHECK(fixed[3] == "5 mm");
     CHECK(fixed[4] == "10 mm");
     session_test::compareWithReference(d.picture(), "error_map_legend");
+    // With four views the legend stays inside the lower left view (it crossed into the 3D view).
+    const acsynt::PixelBox lowerLeft = d.session.layout().viewBox(3, true);
+    const phigs::ElementArena& legend =
+        d.session.phigs().store().structure(acsynt::structures::legend).elements;
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < legend.size(); ++i) {
+        std::vector<glm::dvec3> points;
+        if (const auto* area = legend.get<phigs::FillAreaElement>(i))
+            points.assign(area->points.begin(), area->points.end());
+        if (const auto* text = legend.get<phigs::TextElement>(i)) points.push_back(text->position);
+        for (const glm::dvec3& p : points) {
+            const glm::dvec2 pixel = d.session.pixelOf(p, 0);
+            INFO("legend element " << i << " at pixel " << pixel.x << ", " << pixel.y);
+            CHECK(lowerLeft.contains(pixel));
+            ++checked;
+        }
+    }
+    CHECK(checked > 100);
 
     // Relative: red at the largest error, the legend's top says what that is.
     d.run({"choice ERROR_SCALE"});

@@ -292,13 +292,16 @@ void Session::drawErrorMap() {
 void Session::drawLegend() {
     std::vector<Element> e;
     if (core_.style.errorMapComponent >= 0 && !core_.reductions.empty()) {
-        // A colour bar in the lower left of the geometry area: 0 to the scale's top in model
-        // units (metres), the scale's kind and the largest error measured above it.
+        // A colour bar in the lower left of the geometry area (inside the lower left view with
+        // four views): 0 to the scale's top in model units (metres), the scale's kind and the
+        // largest error measured above it.
         const PixelBox& g = layout_.geometry;
+        const PixelBox area = core_.fourViews ? layout_.viewBox(3, true) : g;
         const double gw = g.x1 - g.x0, gh = g.y1 - g.y0;
         const double unit = 1.0 / mapping_->pixelsPerNpc;
         const double textHeight = std::max(6.0, 0.028 * gh);
-        const PixelBox bar{g.x0 + 0.03 * gw, g.y1 - 0.05 * gh - 1.6 * textHeight, g.x0 + 0.45 * gw,
+        const PixelBox bar{area.x0 + 0.03 * gw, g.y1 - 0.05 * gh - 1.6 * textHeight,
+                           area.x0 + std::min(0.45 * gw, area.x1 - area.x0 - 0.15 * gw),
                            g.y1 - 0.05 * gh - 1.6 * textHeight + std::max(5.0, 0.03 * gh)};
         const PixelBox back{bar.x0 - 4, bar.y0 - 2.6 * textHeight - 4, bar.x1 + 0.12 * gw,
                             bar.y1 + 1.6 * textHeight + 2};
