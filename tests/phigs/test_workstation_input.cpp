@@ -234,9 +234,36 @@ public:
     bool exhausted() const override { return false; }
     std::string position() const override { return "keyboard"; }
     StringEcho stringEcho() const override { return mapper.stringEcho(); }
+    void startString(const std::string& text) override { mapper.startString(text); }
 
     WindowEventMapper mapper;
     std::deque<InputAction> actions;
+};
+
+/// A keyboard whose keys are pressed when the workstation reads them (during a request).
+class LaterTypingSource : public InputSource {
+public:
+    void type(const std::string& text) {
+        for (char c : text) events.push_back(window_event::Character{char32_t(c)});
+    }
+    void key(window_event::Key k, int times = 1) {
+        for (int i = 0; i < times; ++i) events.push_back(window_event::KeyPress{k, 0});
+    }
+    std::optional<InputAction> next(std::chrono::milliseconds) override {
+        while (!events.empty()) {
+            const WindowEvent event = events.front();
+            events.pop_front();
+            if (auto a = mapper.handle(event)) return a;
+        }
+        return std::nullopt;
+    }
+    bool exhausted() const override { return false; }
+    std::string position() const override { return "keyboard"; }
+    StringEcho stringEcho() const override { return mapper.stringEcho(); }
+    void startString(const std::string& text) override { mapper.startString(text); }
+
+    WindowEventMapper mapper;
+    std::deque<WindowEvent> events;
 };
 
 /// An output in memory that keeps the echo it was handed with each picture.
@@ -297,6 +324,46 @@ TEST_CASE("workstation input: OPEN WORKSTATION makes the devices, connecting giv
     } catch (const Error& e) {
         CHECK(e.number() == errors::DeviceNotAvailable);
     }
+}
+
+TEST_CASE("workstation input: a string device's initial string is the text the operator edits",
+          "[input][echo]") {
+    // The window started every string empty: Enter alone gave "", not the initial string, and
+    // the echo area did not show it (ISO 9592: the initial string is the measure the operator
+    // starts from).
+    Rig rig;
+    Workstation& ws = *rig.ws;
+    LaterTypingSource keys;
+    InputQueue queue;
+    ws.connectInput(keys, queue);
+    DeviceInitialisation setup = stringWithArea({500, 1000, 700, 740, 0, 1});
+    setup.initial = StringMeasure{"default.dat"};
+    ws.input().initialise(InputClass::String, 1, setup);
+    using window_event::Key;
+    auto requested = [&] {
+        const auto [status, measure] = ws.input().request(InputClass::String, 1);
+        CHECK(status == InputStatus::Ok);
+        return std::get<StringMeasure>(measure).text;
+    };
+    keys.key(Key::Enter);
+    CHECK(requested() == "default.dat");
+    keys.key(Key::Backspace, 3);
+    keys.type("txt");
+    keys.key(Key::Enter);
+    CHECK(requested() == "default.txt");
+    // Each request starts from the initial string again, whatever was typed before it.
+    keys.mapper.startString("left over");
+    keys.type("2");
+    keys.key(Key::Enter);
+    CHECK(requested() == "default.dat2");
+    // EVENT mode starts from it too, and so does the echo.
+    ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    CHECK(keys.stringEcho().text == "default.dat");
+    keys.key(Key::Backspace, 4);
+    keys.key(Key::Enter);
+    const auto report = queue.awaitEvent(std::chrono::milliseconds(0));
+    REQUIRE(report);
+    CHECK(std::get<StringMeasure>(report->measure).text == "default");
 }
 
 TEST_CASE("workstation echo: typed text reaches the string device's echo area through the output",
@@ -373,13 +440,18 @@ TEST_CASE("workstation echo: typed text reaches the string device's echo area th
     keys.type("x");
     CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
     // An area too small for a line of text (the default one of 1 x 1 pixels) shows nothing.
+    // (Entering EVENT mode starts the typing over from the initial string, here empty.)
     ws.input().setMode(InputClass::String, 1, OperatingMode::Request);
     ws.input().initialise(InputClass::String, 1, stringWithArea({500, 1000, 700, 705, 0, 1}));
     ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    keys.type("x");
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
     CHECK(ws.echoState().empty());
     ws.input().setMode(InputClass::String, 1, OperatingMode::Request);
     ws.input().initialise(InputClass::String, 1, stringWithArea({500, 1000, 700, 740, 0, 1}));
     ws.input().setMode(InputClass::String, 1, OperatingMode::Event);
+    keys.type("x");
+    CHECK_FALSE(queue.awaitEvent(std::chrono::milliseconds(0)));
     CHECK_FALSE(ws.echoState().empty());
 }
 

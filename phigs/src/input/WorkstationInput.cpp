@@ -156,9 +156,16 @@ void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode 
     InputDevice& d = lookup(inputClass, device, "SET DEVICE MODE");
     d.mode = mode;
     d.echo = echo;
-    // A device entering SAMPLE or EVENT mode starts from its initial measure.
+    // A device entering SAMPLE or EVENT mode starts from its initial measure; a string device's
+    // typing from its initial string.
     d.current = d.setup.initial;
+    if (inputClass == InputClass::String && mode != OperatingMode::Request) startTyping(d);
     echoChanged();  // a device entering SAMPLE or EVENT mode with echo on shows it at once
+}
+
+void WorkstationInput::startTyping(const InputDevice& d) {
+    const auto* initial = std::get_if<StringMeasure>(&d.setup.initial);
+    if (source_) source_->startString(initial ? initial->text : std::string());
 }
 
 void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion) {
@@ -187,6 +194,7 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
                     "workstation " + std::to_string(workstation_) + " has no input source connected");
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
     requested_ = &d;  // its echo shows while the request waits
+    if (inputClass == InputClass::String) startTyping(d);
     // The request's echo goes when it ends, by a throw too (a bad script line); a failure to show
     // that is no reason to lose the request's own outcome.
     struct Clear {

@@ -43,6 +43,10 @@ public:
     virtual void setEchoLayout(const EchoLayout&) {}
     /// The string echo now (typed text not yet accepted).
     virtual StringEcho stringEcho() const { return {}; }
+    /// The text being typed starts over as `text`: a string device's initial string, which the
+    /// operator edits, as a request for it starts or it enters SAMPLE or EVENT mode (a script's
+    /// line is the whole string: no use for it).
+    virtual void startString(const std::string& /*text*/) {}
     /// True once the operator closed the source (a window closed by its user): a REQUEST pending
     /// or made after it ends with status NONE, as a break does.
     virtual bool closed() const { return false; }

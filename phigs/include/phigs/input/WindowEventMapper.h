@@ -72,6 +72,8 @@ public:
     const std::string& pendingText() const { return echo_.text; }
     /// What the string echo area shows: the text typed so far, or that Escape cancelled it.
     const StringEcho& stringEcho() const { return echo_; }
+    /// The text typed starts over as `text` (a string device's initial string, to be edited).
+    void startString(std::string text) { edit(std::move(text), false); }
     bool stroking() const { return stroking_; }
     /// Stroke points closer than this to the previous one are dropped (pixels).
     double strokeSpacing = 2.0;

@@ -116,6 +116,8 @@ private:
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
     void ignore(std::string message);
+    /// The source's typing starts over from string device d's initial string.
+    void startTyping(const InputDevice& d);
     void echoChanged() {
         if (echoListener_) echoListener_();
     }

@@ -32,6 +32,7 @@ public:
     std::string position() const override { return "window"; }
     void setEchoLayout(const EchoLayout& layout) override { mapper_.setLayout(layout); }
     StringEcho stringEcho() const override { return mapper_.stringEcho(); }
+    void startString(const std::string& text) override { mapper_.startString(text); }
     /// True once the window's user (or requestClose) asked to close it.
     bool closed() const override;
     bool live() const override { return true; }
