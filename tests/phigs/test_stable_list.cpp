@@ -1,6 +1,7 @@
 // StableList against a plain record of what it should hold: random appends and clears; every
 // value stays at the address it was built at until a clear, each value is destroyed exactly
-// once, an empty list holds no storage and a cleared one refills its blocks without allocating.
+// once, an empty list holds no storage (none but its inline room, with one) and a cleared one
+// refills its blocks without allocating.
 
 #include "phigs/traverse/StableList.h"
 
@@ -34,18 +35,18 @@ struct Counted {
     int* live;
 };
 
-}  // namespace
-
-TEST_CASE("StableList keeps its values in place until cleared", "[traverse][stable-list]") {
+/// The random appends and clears on a StableList<Counted, InlineCount>.
+template <std::size_t InlineCount>
+void checkStableList() {
     for (unsigned seed = 1; seed <= 40; ++seed) {
         std::mt19937 rng(seed);
         auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
         int live = 0;
         {
-            StableList<Counted> list;
-            REQUIRE(list.capacity() == 0);                     // empty: no storage
+            StableList<Counted, InlineCount> list;
+            REQUIRE(list.capacity() == InlineCount);           // empty: no storage but its own
             std::vector<std::pair<const Counted*, int>> held;  // each value's address and number
-            std::size_t capacityBefore = 0;
+            std::size_t capacityBefore = list.capacity();
             for (int step = pick(1, 30); step > 0; --step) {
                 if (pick(0, 5) == 0) {
                     capacityBefore = list.capacity();
@@ -74,6 +75,17 @@ TEST_CASE("StableList keeps its values in place until cleared", "[traverse][stab
         }
         REQUIRE(live == 0);  // the list's destructor destroyed what it held
     }
+}
+
+}  // namespace
+
+TEST_CASE("StableList keeps its values in place until cleared", "[traverse][stable-list]") {
+    checkStableList<0>();
+}
+
+TEST_CASE("StableList with inline room keeps its values in place until cleared", "[traverse][stable-list]") {
+    checkStableList<1>();
+    checkStableList<3>();
 }
 
 }  // namespace test_stable_list

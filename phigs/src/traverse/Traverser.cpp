@@ -907,7 +907,7 @@ private:
 
     /// The segment's records of an out-of-line kind of primitive.
     template <class P>
-    static StableList<P>& records(DrawSegment& segment) {
+    static auto& records(DrawSegment& segment) {
         if constexpr (std::is_same_v<P, DrawMesh>)
             return segment.meshes;
         else if constexpr (std::is_same_v<P, DrawFillArea>)

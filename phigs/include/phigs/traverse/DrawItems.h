@@ -36,10 +36,12 @@ struct DrawSegment {
     };
 
     ItemVector items;
-    BlockPool<glm::dvec3> points;             ///< what the items' point views show
-    BlockPool<glm::dmat4> transforms;         ///< one per run of items that share a transform
-    StableList<DrawContext> contexts;         ///< one per run of items in one state
-    StableList<DrawMesh> meshes;              ///< what the items' mesh views show
+    BlockPool<glm::dvec3> points;  ///< what the items' point views show
+    // The first transform, context and mesh lie in the segment itself: a segment most often
+    // holds one of each, and reading them then touches no allocation but the segment's own.
+    BlockPool<glm::dmat4, 1> transforms;      ///< one per run of items that share a transform
+    StableList<DrawContext, 1> contexts;      ///< one per run of items in one state
+    StableList<DrawMesh, 1> meshes;           ///< what the items' mesh views show
     DrawSource::Shared source;                ///< what the items' sources view (set before any item)
     std::shared_ptr<const StylePool> styles;  ///< the records the items' styles view
     /// The point pool of the items' structure, which polyline and marker points view (not copied).
