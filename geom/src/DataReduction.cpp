@@ -2225,23 +2225,32 @@ CurveReduction reduceClampedCurve(const Curve& curve, const ReductionOptions& op
 /// reduceCurve of a clamped closed curve whose seam is continuous to order seam (seamOrder): both
 /// ends keep their derivatives up to it, and with them the first and last `seam` interior knots
 /// (EndConditions). Knots that go exactly (within rounding of the curve's size, so the seam stays
-/// as it was) go first wherever they are: a refined circle goes back to its own points.
+/// as it was) go first wherever they are: a refined circle goes back to its own points. Their
+/// measured error comes off the tolerance, and the result is measured against the curve given.
 CurveReduction reduceClosedCurve(const Curve& curve, const ReductionOptions& given, int seam) {
     const std::size_t n = curve.points.size();
+    const bool measuring = std::isfinite(given.tolerance);
     double size = 0.0;
     for (const glm::dvec3& q : curve.points) size = std::max(size, glm::length(q));
-    const double rounding = 1e-13 * size;
-    Curve exact = removeKnotsInRankOrder(curve, given.ends, rounding, given.maxRemovals,
-                                         std::numeric_limits<int>::max(), nullptr);
+    const Curve exact = removeKnotsInRankOrder(curve, given.ends, 1e-13 * size, given.maxRemovals,
+                                               std::numeric_limits<int>::max(), nullptr);
     const std::size_t gone = n - exact.points.size();
-    if (gone == 0 || detail::seamOrder(exact) < seam || !(given.tolerance > rounding))
-        return reduceClampedCurve(curve, keepingSeam(given, seam));
+    const double exactError =
+        gone > 0 && measuring ? measureDeviation(curve, exact, 2 * finalCheckDensity(given)).maxError : 0.0;
+    auto fromGiven = [&] { return reduceClampedCurve(curve, keepingSeam(given, seam)); };
+    if (gone == 0 || detail::seamOrder(exact) < seam || !(exactError < 0.5 * given.tolerance))
+        return fromGiven();
     ReductionOptions rest = keepingSeam(given, seam);
     rest.maxRemovals -= gone;
-    rest.tolerance -= rounding;  // the exact removals' share
+    rest.tolerance -= exactError;
     CurveReduction r = reduceClampedCurve(exact, rest);
     r.removed += gone;
-    if (given.report) r.deviation = measureDeviation(curve, r.curve, 2 * finalCheckDensity(given));
+    if (!measuring && !given.report) return r;
+    // Against the curve given; a free-knot fit as its own report samples it (four times denser).
+    const CurveDeviation d =
+        measureDeviation(curve, r.curve, (r.freeKnotFit ? 4 : 2) * finalCheckDensity(given));
+    if (measuring && !(d.maxError <= given.tolerance)) return fromGiven();
+    r.deviation = given.report ? d : CurveDeviation{};
     return r;
 }
 

@@ -1,11 +1,14 @@
 #include "SeamOrder.h"
 
 #include "UnitScale.h"
+#include "geom/Basis.h"
 #include "geom/Evaluate.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace geom::detail {
@@ -13,20 +16,45 @@ namespace geom::detail {
 namespace {
 
 // Ends this close (relative to the coordinates) meet; derivatives this close (relative to the
-// larger, or to the shape's largest of that order) agree. Generous against the rounding of
-// clamping a periodic curve (a few ulps per knot inserted, growing with the order), tight against
-// any seam a user would call broken.
+// larger, or to the shape's largest of that order) agree, beyond their rounding (kRounding ulps
+// of the coordinates through the basis derivatives: clamping a periodic curve and the points
+// themselves round by that much, which a k-th derivative multiplies by about (p / h)^k).
 constexpr double kMeet = 1e-12;
 constexpr double kAgree = 1e-9;
+constexpr double kRounding = 64.0 * std::numeric_limits<double>::epsilon();
 
-/// A curve's derivatives 0 .. order at both ends of its domain.
+/// A curve's derivatives 0 .. order at both ends of its domain, and how far rounding can move each.
 struct EndDerivatives {
     std::vector<glm::dvec3> start, end;
+    std::vector<double> rounding;  ///< by order: the two ends' together
 };
 
+/// The sum over the basis functions of |N^(k)| at u, k = 0 .. order, into sums (added).
+void addBasisSums(const Curve& curve, double u, int order, std::vector<double>& sums) {
+    const std::size_t p = std::size_t(curve.degree);
+    const std::size_t span = findSpan(curve.degree, curve.knots, curve.points.size(), u);
+    std::vector<double> ders(std::size_t(order + 1) * (p + 1));
+    basisDerivatives(span, u, curve.degree, curve.knots, order, ders);
+    for (std::size_t k = 0; k <= std::size_t(order); ++k)
+        for (std::size_t j = 0; j <= p; ++j) sums[k] += std::abs(ders[k * (p + 1) + j]);
+}
+
 EndDerivatives endDerivatives(const Curve& curve, int order) {
-    return {derivatives(curve, curve.knots[std::size_t(curve.degree)], order),
-            derivatives(curve, curve.knots[curve.points.size()], order)};
+    const double a = curve.knots[std::size_t(curve.degree)], b = curve.knots[curve.points.size()];
+    EndDerivatives d{derivatives(curve, a, order), derivatives(curve, b, order),
+                     std::vector<double>(std::size_t(order) + 1, 0.0)};
+    addBasisSums(curve, a, order, d.rounding);
+    addBasisSums(curve, b, order, d.rounding);
+    double extent = 0.0;
+    for (const glm::dvec3& q : curve.points) extent = std::max(extent, largestCoordinate(q));
+    // A rational curve's derivatives lean on its weights: their spread scales the rounding.
+    double spread = 1.0;
+    if (curve.rational()) {
+        const auto [low, high] = std::minmax_element(curve.weights.begin(), curve.weights.end());
+        spread = *high / *low;
+    }
+    for (double& r : d.rounding) r *= kRounding * extent * spread;
+    return d;
 }
 
 /// seamOrder, with floor[k]: the size below which a k-th derivative counts as rounding (a
@@ -34,17 +62,20 @@ EndDerivatives endDerivatives(const Curve& curve, int order) {
 int seamOrderOf(const Curve& curve, const EndDerivatives& d, const std::vector<double>& floor) {
     double extent = 0.0;
     for (const glm::dvec3& q : curve.points) extent = std::max(extent, largestCoordinate(q));
-    if (!(glm::length(d.start[0] - d.end[0]) <= kMeet * extent)) return -1;
+    if (!(glm::length(d.start[0] - d.end[0]) <= kMeet * extent + d.rounding[0])) return -1;
     const int top = int(d.start.size()) - 1;
-    auto agree = [](const glm::dvec3& a, const glm::dvec3& b, double least) {
+    auto agree = [](const glm::dvec3& a, const glm::dvec3& b, double least, double rounding) {
         const double scale = std::max({glm::length(a), glm::length(b), least});
-        return !(scale > 0.0) || glm::length(a - b) <= kAgree * scale;
+        return !(scale > rounding) || glm::length(a - b) <= kAgree * scale + rounding;
     };
     for (int k = 1; k <= top; ++k) {
-        if (agree(d.start[std::size_t(k)], d.end[std::size_t(k)], floor[std::size_t(k)])) continue;
+        const std::size_t at = std::size_t(k);
+        if (agree(d.start[at], d.end[at], floor[at], d.rounding[at])) continue;
         // Tangents of different lengths in one direction: geometrically smooth (G1).
         const double a = glm::length(d.start[1]), b = glm::length(d.end[1]);
-        if (k == 1 && a > 0.0 && b > 0.0 && agree(d.start[1] / a, d.end[1] / b, 0.0)) return 1;
+        if (k == 1 && a > d.rounding[1] && b > d.rounding[1] &&
+            agree(d.start[1] / a, d.end[1] / b, 0.0, d.rounding[1] / std::min(a, b)))
+            return 1;
         return k - 1;
     }
     return top;
