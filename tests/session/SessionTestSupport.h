@@ -8,6 +8,7 @@
 #include "acsynt/session/Session.h"
 #include "geom/Evaluate.h"
 #include "phigs/input/ScriptInputSource.h"
+#include "phigs/input/WindowEventMapper.h"
 #include "phigs/vk/Context.h"
 #include "phigs/vk/WorkstationDisplay.h"
 
@@ -53,9 +54,16 @@ public:
     bool exhausted() const override { return false; }
     std::string position() const override { return "test"; }
     bool empty() const { return pending_.empty(); }
+    /// Keys typed as a window's keyboard types them (not yet accepted: no Enter).
+    void type(const std::string& text) {
+        for (char c : text) keys_.handle(phigs::window_event::Character{char32_t(c)});
+    }
+    phigs::StringEcho stringEcho() const override { return keys_.stringEcho(); }
+    void startString(const std::string& text) override { keys_.startString(text); }
 
 private:
     std::deque<phigs::InputAction> pending_;
+    phigs::WindowEventMapper keys_;
 };
 
 inline std::filesystem::path outputDirectory(const std::string& name) {

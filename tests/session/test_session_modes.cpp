@@ -41,3 +41,19 @@ TEST_CASE("the pointer pad turns off after DONE: pad buttons and marker valuator
 }
 
 }  // namespace test_session_modes
+
+namespace test_session_modes {
+
+TEST_CASE("a resized window keeps the text the operator is typing") {
+    // Resizing re-initialises the string device for its new echo area; entering EVENT mode again
+    // started the typing over from the empty initial string, dropping what was typed.
+    session_test::Driver d("modes_resize_typing");
+    d.run({"choice FILE"});
+    d.source.type("transport.a");
+    d.session.resize(800, 600);
+    CHECK(d.source.stringEcho().text == "transport.a");
+    d.session.resize(640, 480);
+    CHECK(d.source.stringEcho().text == "transport.a");
+}
+
+}  // namespace test_session_modes

@@ -164,8 +164,9 @@ void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode 
 }
 
 void WorkstationInput::startTyping(const InputDevice& d) {
+    // A window's keyboard types for string device 1 (action::String's device).
     const auto* initial = std::get_if<StringMeasure>(&d.setup.initial);
-    if (source_) source_->startString(initial ? initial->text : std::string());
+    if (source_ && d.number == 1) source_->startString(initial ? initial->text : std::string());
 }
 
 void WorkstationInput::setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion) {

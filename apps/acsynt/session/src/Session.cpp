@@ -158,9 +158,13 @@ void Session::initialiseString() {
     s.initial = StringMeasure{};
     s.echoVolume =
         PixelBox{(m.x0 + m.x1) / 2, (m.y0 + m.y1) / 2, m.x1, std::max(m.y1, m.y0 + 2)}.echoVolume();
+    // Re-entering EVENT mode starts the typing over (from the empty initial string): what the
+    // operator was typing when the window was resized is put back.
+    const StringEcho typed = source_.stringEcho();
     core_.input->setMode(InputClass::String, 1, OperatingMode::Request);
     core_.input->initialise(InputClass::String, 1, s);
     core_.input->setMode(InputClass::String, 1, OperatingMode::Event);
+    if (!typed.text.empty() && !typed.cancelled) source_.startString(typed.text);
 }
 
 glm::dvec2 Session::sliderRange(int d) const {
