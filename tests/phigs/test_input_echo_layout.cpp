@@ -73,18 +73,27 @@ TEST_CASE("input echo: initialising menu and slider devices gives the source its
     CHECK(input.echoLayout().empty());
     input.initialise(InputClass::Choice, 2,
                      choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    // In REQUEST mode with no request the panel takes no clicks: the source gets it in EVENT mode.
+    CHECK(input.echoLayout().panels.size() == 1);
+    CHECK(source.layout.panels.empty());
+    input.setMode(InputClass::Choice, 2, OperatingMode::Event);
     REQUIRE(source.layout.panels.size() == 1);
     CHECK(source.layout.panels[0].device == 2);
     CHECK(source.layout.panels[0].alternatives == std::vector<std::string>{"Open", "Save"});
     DeviceInitialisation v = valuatorSliderInitialisation(0, 10, 5, {0, 100, 50, 60, 0, 1});
     input.initialise(InputClass::Valuator, 4, v);
+    CHECK(source.layout.sliders.empty());
+    input.setMode(InputClass::Valuator, 4, OperatingMode::Sample);
     REQUIRE(source.layout.sliders.size() == 1);
     CHECK(source.layout.sliders[0].device == 4);
     CHECK(source.layout.sliders[0].high == 10);
     // Type 1 (the implementation's own echo) draws nothing.
+    input.setMode(InputClass::Valuator, 4, OperatingMode::Request);
     v.promptEchoType = 1;
     input.initialise(InputClass::Valuator, 4, v);
+    input.setMode(InputClass::Valuator, 4, OperatingMode::Sample);
     CHECK(source.layout.sliders.empty());
+    CHECK(source.layout.panels.size() == 1);
 }
 
 TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses or sets the value",
@@ -119,6 +128,29 @@ TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses 
     REQUIRE(e);
     CHECK(e->inputClass == InputClass::Pick);
     CHECK(e->moreSimultaneous);
+}
+
+TEST_CASE("input echo: a click on the panel of a device that takes no input is the pick it was", "[input]") {
+    // Clicks inside an idle device's panel (REQUEST mode, no request: not drawn) became choices
+    // nobody took: a pick requested over that part of the picture never came.
+    ScriptInputSource source("pick 50 30\n", "idle.txt");
+    FakeMeasurer measurer;
+    InputQueue queue;
+    WorkstationInput input(1, source, measurer, queue);
+    input.initialise(InputClass::Choice, 2,
+                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    input.initialise(InputClass::Valuator, 4, valuatorSliderInitialisation(0, 10, 5, {0, 100, 25, 35, 0, 1}));
+    const auto [status, measure] = input.request(InputClass::Pick, 1);
+    CHECK(status == InputStatus::Ok);
+    CHECK(std::holds_alternative<PickMeasure>(measure));
+    // Requested, the same click chooses.
+    ScriptInputSource clicks("pick 50 30\n", "request.txt");
+    WorkstationInput requesting(1, clicks, measurer, queue);
+    requesting.initialise(InputClass::Choice, 2,
+                          choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    const auto [chosen, choice] = requesting.request(InputClass::Choice, 2);
+    CHECK(chosen == InputStatus::Ok);
+    CHECK(std::get<ChoiceMeasure>(choice).choice == 2);
 }
 
 }  // namespace test_input_echo_layout

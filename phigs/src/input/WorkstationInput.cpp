@@ -78,7 +78,7 @@ void WorkstationInput::connect(InputSource& source, InputQueue& queue) {
     }
     source_ = &source;
     echoEdits_ = source_->stringEcho().edits;
-    source_->setEchoLayout(echoLayout());
+    layoutChanged();
 }
 
 void WorkstationInput::disconnect() {
@@ -112,8 +112,7 @@ void WorkstationInput::initialise(InputClass inputClass, int device, DeviceIniti
         throw Error(number, function, deviceName(inputClass, device) + ": " + reason);
     d.setup = std::move(setup);
     d.current = d.setup.initial;
-    if (source_ && (inputClass == InputClass::Choice || inputClass == InputClass::Valuator))
-        source_->setEchoLayout(echoLayout());
+    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator) layoutChanged();
 }
 
 EchoLayout WorkstationInput::echoLayout() const {
@@ -129,6 +128,20 @@ EchoLayout WorkstationInput::echoLayout() const {
     return layout;
 }
 
+EchoLayout WorkstationInput::activeEchoLayout() const {
+    const EchoLayout all = echoLayout();
+    auto active = [&](InputClass inputClass, int number) {
+        const InputDevice& d = devices_.at({inputClass, number});
+        return d.mode != OperatingMode::Request || requested_ == &d;
+    };
+    EchoLayout layout;
+    for (const ChoicePanel& p : all.panels)
+        if (active(InputClass::Choice, p.device)) layout.panels.push_back(p);
+    for (const ValuatorSlider& s : all.sliders)
+        if (active(InputClass::Valuator, s.device)) layout.sliders.push_back(s);
+    return layout;
+}
+
 InputAction WorkstationInput::throughEcho(const InputAction& a) const {
     glm::dvec2 at;
     if (const auto* pick = std::get_if<action::Pick>(&a.what))
@@ -137,7 +150,7 @@ InputAction WorkstationInput::throughEcho(const InputAction& a) const {
         at = locate->position;
     else
         return a;
-    const EchoLayout layout = echoLayout();
+    const EchoLayout layout = activeEchoLayout();
     InputAction routed = a;
     for (const ChoicePanel& p : layout.panels)
         if (const auto n = p.choiceAt(at)) {
@@ -160,6 +173,7 @@ void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode 
     // typing from its initial string.
     d.current = d.setup.initial;
     if (inputClass == InputClass::String && mode != OperatingMode::Request) startTyping(d);
+    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator) layoutChanged();
     echoChanged();  // a device entering SAMPLE or EVENT mode with echo on shows it at once
 }
 
@@ -196,18 +210,23 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
     std::pair<InputStatus, Measure> result{InputStatus::None, d.current};
     requested_ = &d;  // its echo shows while the request waits
     if (inputClass == InputClass::String) startTyping(d);
+    // A requested menu or slider takes clicks while the request waits.
+    const bool panel = inputClass == InputClass::Choice || inputClass == InputClass::Valuator;
+    if (panel) layoutChanged();
     // The request's echo goes when it ends, by a throw too (a bad script line); a failure to show
     // that is no reason to lose the request's own outcome.
     struct Clear {
         WorkstationInput& input;
+        bool panel;
         ~Clear() {
             input.requested_ = nullptr;
             try {
+                if (panel) input.layoutChanged();
                 input.echoChanged();
             } catch (...) {
             }
         }
-    } clear{*this};
+    } clear{*this, panel};
     echoChanged();
     for (;;) {
         const Pumped p = pump(std::chrono::milliseconds(100), &d, &result);

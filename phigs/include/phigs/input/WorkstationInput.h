@@ -58,8 +58,13 @@ public:
     /// SET PICK FILTER.
     void setPickFilter(int device, std::set<int> inclusion, std::set<int> exclusion);
     /// The panels and sliders of choice devices with prompt/echo type 3 and valuators with
-    /// type 2 that are initialised with an echo area; handed to the source whenever it changes.
+    /// type 2 that are initialised with an echo area.
     EchoLayout echoLayout() const;
+    /// Those of echoLayout() whose devices take input now (SAMPLE or EVENT mode, or a request
+    /// waiting for them): only they turn clicks into choices and values (throughEcho), and the
+    /// source is handed them whenever they change. A panel of an idle device is not drawn, and a
+    /// click there is the pick or locator the operator meant.
+    EchoLayout activeEchoLayout() const;
 
     /// SET PICK PATH DEPTH (0: the whole path).
     void setPickPathDepth(int device, int depth);
@@ -116,6 +121,10 @@ private:
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
     void ignore(std::string message);
+    /// Hands the source activeEchoLayout() (after a change to a choice or valuator device).
+    void layoutChanged() {
+        if (source_) source_->setEchoLayout(activeEchoLayout());
+    }
     /// The source's typing starts over from string device d's initial string.
     void startTyping(const InputDevice& d);
     void echoChanged() {
