@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
@@ -225,6 +227,27 @@ TEST_CASE("stroke font: a malformed font file is refused naming the file and lin
     std::ofstream(path) << "12345  9MWRFRT RRYQZR[SZRY\n12345 99MW\n";
     REQUIRE_THROWS_WITH(StrokeFont::load(path), Catch::Contains("bad_font.jhf") && Catch::Contains("line"));
     REQUIRE_THROWS_WITH(StrokeFont::load("/nonexistent/font.jhf"), Catch::Contains("hershey-fonts-data"));
+}
+
+TEST_CASE("stroke font: a PHIGS_HERSHEY_DIR without the font is named as the cause", "[render][unit]") {
+    // It was reported as a missing Debian package, which installing would not have fixed.
+    const char* before = std::getenv("PHIGS_HERSHEY_DIR");
+    const std::string kept = before ? before : "";
+    ::setenv("PHIGS_HERSHEY_DIR", "/nonexistent/fonts", 1);
+    REQUIRE_THROWS_WITH(StrokeFont::fileFor(2),
+                        Catch::Contains("futuram.jhf") &&
+                            Catch::Contains("not found in PHIGS_HERSHEY_DIR (/nonexistent/fonts)"));
+    const auto dir = std::filesystem::path(PHIGS_TEST_OUTPUT_DIR) / "hershey";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "scripts.jhf") << "";
+    ::setenv("PHIGS_HERSHEY_DIR", dir.c_str(), 1);
+    CHECK(StrokeFont::fileFor(4) == dir / "scripts.jhf");
+    if (before)
+        ::setenv("PHIGS_HERSHEY_DIR", kept.c_str(), 1);
+    else
+        ::unsetenv("PHIGS_HERSHEY_DIR");
+    CHECK(StrokeFont::fileFor(1) ==
+          std::filesystem::path(before ? kept : "/usr/share/hershey-fonts") / "futural.jhf");
 }
 
 TEST_CASE("describe: fill area sets, markers and patterned lines become world geometry", "[render][unit]") {

@@ -76,18 +76,26 @@ StrokeFont StrokeFont::load(const std::filesystem::path& file) {
     return font;
 }
 
+std::filesystem::path StrokeFont::fileFor(int font) {
+    const char* names[] = {"futural.jhf", "futuram.jhf", "timesr.jhf", "scripts.jhf"};
+    const char* name = names[(font >= 1 && font <= 4 ? font : 1) - 1];
+    const char* dir = std::getenv("PHIGS_HERSHEY_DIR");
+    if (!dir) return std::filesystem::path("/usr/share/hershey-fonts") / name;
+    const std::filesystem::path file = std::filesystem::path(dir) / name;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec))
+        throw std::runtime_error("stroke font " + file.string() + ": not found in PHIGS_HERSHEY_DIR (" + dir +
+                                 "); unset it to use /usr/share/hershey-fonts");
+    return file;
+}
+
 const StrokeFont& StrokeFont::forIndex(int font) {
     static std::mutex mutex;
     static std::map<int, std::unique_ptr<StrokeFont>> fonts;
-    const char* names[] = {"futural.jhf", "futuram.jhf", "timesr.jhf", "scripts.jhf"};
     const int index = (font >= 1 && font <= 4) ? font : 1;
     std::lock_guard lock(mutex);
     auto& slot = fonts[index];
-    if (!slot) {
-        const char* dir = std::getenv("PHIGS_HERSHEY_DIR");
-        const std::filesystem::path base = dir ? dir : "/usr/share/hershey-fonts";
-        slot = std::make_unique<StrokeFont>(load(base / names[index - 1]));
-    }
+    if (!slot) slot = std::make_unique<StrokeFont>(load(fileFor(index)));
     return *slot;
 }
 

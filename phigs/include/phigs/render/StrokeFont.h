@@ -29,6 +29,9 @@ public:
     /// The font for a PHIGS text font index: 1 (and any other) Roman simplex, 2 Roman duplex,
     /// 3 Roman triplex, 4 script; looked up under PHIGS_HERSHEY_DIR or /usr/share/hershey-fonts.
     static const StrokeFont& forIndex(int font);
+    /// The file forIndex reads for `font`; throws std::runtime_error naming PHIGS_HERSHEY_DIR
+    /// where that is set and has no such file (the Debian package would not help there).
+    static std::filesystem::path fileFor(int font);
 
     /// The glyph of a character; characters outside 32..126 map to '?'.
     const StrokeGlyph& glyph(char c) const;
