@@ -112,7 +112,7 @@ void WorkstationInput::initialise(InputClass inputClass, int device, DeviceIniti
         throw Error(number, function, deviceName(inputClass, device) + ": " + reason);
     d.setup = std::move(setup);
     d.current = d.setup.initial;
-    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator) layoutChanged();
+    if (drawsPanels(inputClass)) layoutChanged();
 }
 
 EchoLayout WorkstationInput::echoLayout() const {
@@ -131,8 +131,7 @@ EchoLayout WorkstationInput::echoLayout() const {
 EchoLayout WorkstationInput::activeEchoLayout() const {
     const EchoLayout all = echoLayout();
     auto active = [&](InputClass inputClass, int number) {
-        const InputDevice& d = devices_.at({inputClass, number});
-        return d.mode != OperatingMode::Request || requested_ == &d;
+        return takesInput(devices_.at({inputClass, number}));
     };
     EchoLayout layout;
     for (const ChoicePanel& p : all.panels)
@@ -173,7 +172,7 @@ void WorkstationInput::setMode(InputClass inputClass, int device, OperatingMode 
     // typing from its initial string.
     d.current = d.setup.initial;
     if (inputClass == InputClass::String && mode != OperatingMode::Request) startTyping(d);
-    if (inputClass == InputClass::Choice || inputClass == InputClass::Valuator) layoutChanged();
+    if (drawsPanels(inputClass)) layoutChanged();
     echoChanged();  // a device entering SAMPLE or EVENT mode with echo on shows it at once
 }
 
@@ -211,7 +210,7 @@ std::pair<InputStatus, Measure> WorkstationInput::request(InputClass inputClass,
     requested_ = &d;  // its echo shows while the request waits
     if (inputClass == InputClass::String) startTyping(d);
     // A requested menu or slider takes clicks while the request waits.
-    const bool panel = inputClass == InputClass::Choice || inputClass == InputClass::Valuator;
+    const bool panel = drawsPanels(inputClass);
     if (panel) layoutChanged();
     // The request's echo goes when it ends, by a throw too (a bad script line); a failure to show
     // that is no reason to lose the request's own outcome.

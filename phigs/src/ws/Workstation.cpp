@@ -652,21 +652,18 @@ void Workstation::stringEcho(EchoState& state) const {
     if (input_->counts().string < 1) return;
     const InputDevice& d = input_->device(InputClass::String, 1);
     const EchoVolume& a = d.setup.echoVolume;
-    const bool active = d.mode != OperatingMode::Request || input_->requested() == &d;
-    if (d.echo != EchoSwitch::Echo || d.setup.promptEchoType != 1 || !active) return;
+    if (d.echo != EchoSwitch::Echo || d.setup.promptEchoType != 1 || !input_->takesInput(d)) return;
     if (!(a.ymax - a.ymin >= minimumEchoLine && a.xmax - a.xmin >= a.ymax - a.ymin)) return;
     state.strings.push_back({1, a, typed.text, typed.cancelled});
 }
 
 void Workstation::deviceEchoes(EchoState& state) const {
-    // The echo layout lists the panels and sliders whose echo areas are set (every device of
-    // those prompt/echo types); those active with echo on are shown.
+    // The panels and sliders of the devices taking input now; those with echo on are shown.
     auto echoing = [&](InputClass inputClass, int number) -> const InputDevice* {
         const InputDevice& d = input_->device(inputClass, number);
-        const bool active = d.mode != OperatingMode::Request || input_->requested() == &d;
-        return active && d.echo == EchoSwitch::Echo ? &d : nullptr;
+        return d.echo == EchoSwitch::Echo ? &d : nullptr;
     };
-    const EchoLayout layout = input_->echoLayout();
+    const EchoLayout layout = input_->activeEchoLayout();
     for (const ChoicePanel& panel : layout.panels)
         if (const InputDevice* d = echoing(InputClass::Choice, panel.device)) {
             const auto* measure = std::get_if<ChoiceMeasure>(&d->current);

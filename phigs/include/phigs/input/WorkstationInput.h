@@ -76,6 +76,11 @@ public:
     std::pair<InputStatus, Measure> request(InputClass inputClass, int device);
     /// The device a REQUEST waits on now (null when none does).
     const InputDevice* requested() const { return requested_; }
+    /// Whether `d` takes input now: SAMPLE or EVENT mode, or a request waiting for it (its
+    /// echo shows, its panel or slider takes clicks).
+    bool takesInput(const InputDevice& d) const {
+        return d.mode != OperatingMode::Request || requested_ == &d;
+    }
     /// `SAMPLE <class>`: the device's current measure (device in SAMPLE mode, else 252).
     const Measure& sample(InputClass inputClass, int device) const;
 
@@ -121,6 +126,10 @@ private:
     std::vector<std::pair<InputDevice*, Measure>> measuresFor(const InputAction& action);
     Measure measureFor(InputDevice& device, const InputAction& action);
     void ignore(std::string message);
+    /// Choice and valuator devices: the classes with menu panels and sliders (EchoLayout).
+    static bool drawsPanels(InputClass inputClass) {
+        return inputClass == InputClass::Choice || inputClass == InputClass::Valuator;
+    }
     /// Hands the source activeEchoLayout() (after a change to a choice or valuator device).
     void layoutChanged() {
         if (source_) source_->setEchoLayout(activeEchoLayout());
