@@ -27,6 +27,7 @@ constexpr double kRounding = 64.0 * std::numeric_limits<double>::epsilon();
 struct EndDerivatives {
     std::vector<glm::dvec3> start, end;
     std::vector<double> rounding;  ///< by order: the two ends' together
+    double extent = 0.0;           ///< the largest coordinate of the control points
 };
 
 /// The sum over the basis functions of |N^(k)| at u, k = 0 .. order, into sums (added).
@@ -45,24 +46,21 @@ EndDerivatives endDerivatives(const Curve& curve, int order) {
                      std::vector<double>(std::size_t(order) + 1, 0.0)};
     addBasisSums(curve, a, order, d.rounding);
     addBasisSums(curve, b, order, d.rounding);
-    double extent = 0.0;
-    for (const glm::dvec3& q : curve.points) extent = std::max(extent, largestCoordinate(q));
+    for (const glm::dvec3& q : curve.points) d.extent = std::max(d.extent, largestCoordinate(q));
     // A rational curve's derivatives lean on its weights: their spread scales the rounding.
     double spread = 1.0;
     if (curve.rational()) {
         const auto [low, high] = std::minmax_element(curve.weights.begin(), curve.weights.end());
         spread = *high / *low;
     }
-    for (double& r : d.rounding) r *= kRounding * extent * spread;
+    for (double& r : d.rounding) r *= kRounding * d.extent * spread;
     return d;
 }
 
 /// seamOrder, with floor[k]: the size below which a k-th derivative counts as rounding (a
 /// surface's collapsed row: a nose's derivatives round its point are a few ulps of nothing).
-int seamOrderOf(const Curve& curve, const EndDerivatives& d, const std::vector<double>& floor) {
-    double extent = 0.0;
-    for (const glm::dvec3& q : curve.points) extent = std::max(extent, largestCoordinate(q));
-    if (!(glm::length(d.start[0] - d.end[0]) <= kMeet * extent + d.rounding[0])) return -1;
+int seamOrderOf(const EndDerivatives& d, const std::vector<double>& floor) {
+    if (!(glm::length(d.start[0] - d.end[0]) <= kMeet * d.extent + d.rounding[0])) return -1;
     const int top = int(d.start.size()) - 1;
     auto agree = [](const glm::dvec3& a, const glm::dvec3& b, double least, double rounding) {
         const double scale = std::max({glm::length(a), glm::length(b), least});
@@ -85,24 +83,25 @@ int seamOrderOf(const Curve& curve, const EndDerivatives& d, const std::vector<d
 
 int seamOrder(const Curve& curve) {
     const int top = std::max(0, curve.degree - 1);
-    return seamOrderOf(curve, endDerivatives(curve, top), std::vector<double>(std::size_t(top) + 1, 0.0));
+    return seamOrderOf(endDerivatives(curve, top), std::vector<double>(std::size_t(top) + 1, 0.0));
 }
 
 int seamOrder(const Surface& surface, bool alongU) {
     const std::size_t rows = alongU ? surface.countV : surface.countU;
     const std::size_t length = alongU ? surface.countU : surface.countV;
-    std::vector<Curve> lines(rows);
     std::vector<EndDerivatives> ends(rows);
     const int top = std::max(0, (alongU ? surface.degreeU : surface.degreeV) - 1);
     std::vector<double> largest(std::size_t(top) + 1, 0.0);
+    Curve line;  // each control row in turn
+    line.degree = alongU ? surface.degreeU : surface.degreeV;
+    line.knots = alongU ? surface.knotsU : surface.knotsV;
+    line.points.resize(length);
+    if (surface.rational()) line.weights.resize(length);
     for (std::size_t r = 0; r < rows; ++r) {
-        Curve& line = lines[r];
-        line.degree = alongU ? surface.degreeU : surface.degreeV;
-        line.knots = alongU ? surface.knotsU : surface.knotsV;
         for (std::size_t k = 0; k < length; ++k) {
             const std::size_t i = alongU ? k : r, j = alongU ? r : k;
-            line.points.push_back(surface.point(i, j));
-            if (surface.rational()) line.weights.push_back(surface.weight(i, j));
+            line.points[k] = surface.point(i, j);
+            if (surface.rational()) line.weights[k] = surface.weight(i, j);
         }
         ends[r] = endDerivatives(line, top);
         for (std::size_t k = 0; k <= std::size_t(top); ++k)
@@ -110,7 +109,7 @@ int seamOrder(const Surface& surface, bool alongU) {
     }
     int order = top;
     for (std::size_t r = 0; r < rows && order >= 0; ++r)
-        order = std::min(order, seamOrderOf(lines[r], ends[r], largest));
+        order = std::min(order, seamOrderOf(ends[r], largest));
     return order;
 }
 
