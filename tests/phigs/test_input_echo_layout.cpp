@@ -14,6 +14,11 @@ using namespace phigs::window_event;
 using phigs::test::FakeMeasurer;
 using phigs::test::IdleSource;
 
+/// Choice device initialisation: a two-row menu panel (Open, Save) over pixels 0..100 x 0..40.
+DeviceInitialisation openSaveMenu() {
+    return choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1});
+}
+
 TEST_CASE("input echo: a choice panel stacks its alternatives in equal rows", "[input]") {
     const ChoicePanel p{2, {10, 110, 20, 80, 0, 1}, {"Wing", "Fuselage", "Tail"}};
     CHECK(p.choiceAt({50, 25}) == 1);
@@ -71,8 +76,7 @@ TEST_CASE("input echo: initialising menu and slider devices gives the source its
     InputQueue queue;
     WorkstationInput input(1, source, measurer, queue);
     CHECK(input.echoLayout().empty());
-    input.initialise(InputClass::Choice, 2,
-                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    input.initialise(InputClass::Choice, 2, openSaveMenu());
     // In REQUEST mode with no request the panel takes no clicks: the source gets it in EVENT mode.
     CHECK(input.echoLayout().panels.size() == 1);
     CHECK(source.layout.panels.empty());
@@ -102,8 +106,7 @@ TEST_CASE("input echo: a pick or locator click inside a panel or slider chooses 
     FakeMeasurer measurer;
     InputQueue queue;
     WorkstationInput input(1, source, measurer, queue);
-    input.initialise(InputClass::Choice, 2,
-                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    input.initialise(InputClass::Choice, 2, openSaveMenu());
     DeviceInitialisation v = valuatorSliderInitialisation(0, 10, 5, {0, 100, 50, 60, 0, 1});
     input.initialise(InputClass::Valuator, 4, v);
     input.setMode(InputClass::Choice, 2, OperatingMode::Event);
@@ -137,8 +140,7 @@ TEST_CASE("input echo: a click on the panel of a device that takes no input is t
     FakeMeasurer measurer;
     InputQueue queue;
     WorkstationInput input(1, source, measurer, queue);
-    input.initialise(InputClass::Choice, 2,
-                     choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    input.initialise(InputClass::Choice, 2, openSaveMenu());
     input.initialise(InputClass::Valuator, 4, valuatorSliderInitialisation(0, 10, 5, {0, 100, 25, 35, 0, 1}));
     const auto [status, measure] = input.request(InputClass::Pick, 1);
     CHECK(status == InputStatus::Ok);
@@ -146,8 +148,7 @@ TEST_CASE("input echo: a click on the panel of a device that takes no input is t
     // Requested, the same click chooses.
     ScriptInputSource clicks("pick 50 30\n", "request.txt");
     WorkstationInput requesting(1, clicks, measurer, queue);
-    requesting.initialise(InputClass::Choice, 2,
-                          choicePanelInitialisation({"Open", "Save"}, {0, 100, 0, 40, 0, 1}));
+    requesting.initialise(InputClass::Choice, 2, openSaveMenu());
     const auto [chosen, choice] = requesting.request(InputClass::Choice, 2);
     CHECK(chosen == InputStatus::Ok);
     CHECK(std::get<ChoiceMeasure>(choice).choice == 2);
