@@ -214,6 +214,13 @@ SurfaceMesh adaptiveMesh(const Surface& surface, double tolerance, double asked)
                         " was not reached after 40 refinements");
 }
 
+/// Whether a shape of unit scale `scale` (detail::unitScale) must be measured scaled: within 2^100
+/// of unit size nothing overflows (4th powers of coordinates stay normal), and as scaling is
+/// exact the shape itself gives the same result without a copy.
+bool measuredScaled(double scale) {
+    return scale < 0x1p-100 || scale > 0x1p100;
+}
+
 }  // namespace
 
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
@@ -222,9 +229,7 @@ SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance) {
     // Measured on the surface scaled to unit size: at coordinates past 1e154 every squared
     // distance would overflow, every cell fail, and the vertex limit be blamed.
     const double scale = detail::unitScale(surface.points);
-    // Within 2^100 of unit size nothing overflows (4th powers stay normal): the surface itself
-    // (scaling is exact, so the mesh is the same), no copy.
-    if (scale >= 0x1p-100 && scale <= 0x1p100) return adaptiveMesh(surface, tolerance, tolerance);
+    if (!measuredScaled(scale)) return adaptiveMesh(surface, tolerance, tolerance);
     Surface unit = surface;
     for (glm::dvec3& p : unit.points) p *= scale;
     SurfaceMesh mesh = adaptiveMesh(unit, tolerance * scale, tolerance);
@@ -288,9 +293,8 @@ std::vector<glm::dvec3> tessellate(const Curve& curve, double tolerance) {
                             " is below what coordinates of " + detail::numberText(extent) + " resolve");
     // Measured on the curve scaled to unit size: at coordinates past 1e154 the squared distances
     // of the flatness test would overflow and pass any piece as one chord.
-    // Within 2^100 of unit size nothing overflows (4th powers stay normal): the curve itself.
-    double scale = detail::unitScale(curve.points);
-    if (scale >= 0x1p-100 && scale <= 0x1p100) scale = 1.0;
+    double scale = detail::unitScaleOf(extent);
+    if (!measuredScaled(scale)) scale = 1.0;
     Curve scaled;
     if (scale != 1.0) {
         scaled = curve;
