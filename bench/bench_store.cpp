@@ -5,11 +5,14 @@
 // changed, peak resident bytes per element (the whole process above its start: store,
 // workstation, draw lists, caches), and one edit of a posted leaf up to the next draw list.
 // `bench_store` runs 10k, 100k, 1M and 4M elements, each in its own process, and prints the 1M
-// figures plus `scaling`; `bench_store --elements N` runs one size. Process CPU time. Ends with
-// one JSON object.
+// figures plus `scaling` (each size's figures, and how the traversal's cost per element grows
+// with size beside the plain-vector visit's); `bench_store --elements N` runs one size. Process CPU time.
+// Ends with one JSON object.
 
 #include "phigs/Phigs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -132,6 +135,19 @@ struct Figures {
     std::uint64_t surfacesFirst = 0, editRetraversed = 0, editRetessellated = 0, reused = 0;
 };
 
+/// The median CPU time of `passes` calls of pass, in nanoseconds.
+template <class Pass>
+double medianNs(int passes, Pass&& pass) {
+    std::vector<double> ns;
+    for (int r = 0; r < passes; ++r) {
+        const double start = cpuNow();
+        pass();
+        ns.push_back((cpuNow() - start) * 1e9);
+    }
+    std::nth_element(ns.begin(), ns.begin() + passes / 2, ns.end());
+    return ns[static_cast<std::size_t>(passes / 2)];
+}
+
 /// Replaces element `at` of `structure` and times the store edit up to the next draw list.
 double editMs(Phigs& phigs, Workstation& ws, int structure, int at, Element element) {
     double start = cpuNow();
@@ -147,7 +163,9 @@ double editMs(Phigs& phigs, Workstation& ws, int structure, int at, Element elem
 
 Figures run(int leaves, long rssAtStart) {
     const int perLeaf = 100;
-    const int repeats = 3;
+    // Each figure is the median of timed passes that visit about 3M elements in all, so that the
+    // small sizes' passes (10k elements: a millisecond) are not single readings of a noisy clock.
+    const int repeats = std::clamp(3'000'000 / (leaves * (perLeaf + 1)), 3, 301);
     Figures f;
     {
         // The baseline in the same run: plain vectors of the same leaves, made and freed before
@@ -155,10 +173,9 @@ Figures run(int leaves, long rssAtStart) {
         auto plain = plainLeaves(leaves, perLeaf);
         std::vector<PlainItem> plainItems;
         plainVisit(plain, plainItems);
-        double start = cpuNow();
         std::size_t visited = 0;
-        for (int r = 0; r < repeats; ++r) visited = plainVisit(plain, plainItems);
-        f.rawVisitNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(visited);
+        f.rawVisitNs = medianNs(repeats, [&] { visited = plainVisit(plain, plainItems); }) /
+                       static_cast<double>(visited);
     }
     Phigs phigs;
     phigs.open();
@@ -194,15 +211,11 @@ Figures run(int leaves, long rssAtStart) {
 
     // Full traversals (every element walked, every draw item made) and incremental ones.
     ws.traverser().setIncremental(false);
-    start = cpuNow();
-    for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
-    f.traversalNs =
-        (cpuNow() - start) * 1e9 / repeats / static_cast<double>(ws.traverser().elementsTraversed());
+    f.traversalNs = medianNs(repeats, [&] { ws.redrawAllStructures(); }) /
+                    static_cast<double>(ws.traverser().elementsTraversed());
     ws.traverser().setIncremental(true);
     ws.redrawAllStructures();
-    start = cpuNow();
-    for (int r = 0; r < repeats; ++r) ws.redrawAllStructures();
-    f.unchangedNs = (cpuNow() - start) * 1e9 / repeats / static_cast<double>(f.elements);
+    f.unchangedNs = medianNs(repeats, [&] { ws.redrawAllStructures(); }) / static_cast<double>(f.elements);
     f.reused = ws.traverser().elementsReused();
 
     // One edit of one posted leaf: a polyline, then the surface.
@@ -223,6 +236,7 @@ std::string json(const Figures& f, const std::string& prefix) {
         buffer, sizeof buffer,
         "\"%selements\": %zu, \"%sstructures\": %zu, \"%sdraw_items\": %zu, \"%sinserts_per_s\": %.0f, "
         "\"%straversal_ns_per_element\": %.1f, \"%sraw_visit_ns_per_element\": %.1f, "
+        "\"%straversal_over_raw\": %.2f, "
         "\"%sincremental_unchanged_ns_per_element\": %.1f, \"%speak_rss_bytes_per_element\": %.1f, "
         "\"%sresident_after_insert_bytes_per_element\": %.1f, \"%spayload_bytes_per_element\": %.1f, "
         "\"%sfirst_traversal_cpu_s\": %.3f, \"%ssurfaces_tessellated_first\": %llu, "
@@ -231,11 +245,12 @@ std::string json(const Figures& f, const std::string& prefix) {
         "\"%sedit_retessellated_surfaces\": %llu",
         prefix.c_str(), f.elements, prefix.c_str(), f.structures, prefix.c_str(), f.items, prefix.c_str(),
         f.insertsPerS, prefix.c_str(), f.traversalNs, prefix.c_str(), f.rawVisitNs, prefix.c_str(),
-        f.unchangedNs, prefix.c_str(), f.peakRssPerElement, prefix.c_str(), f.residentAfterInsertPerElement,
-        prefix.c_str(), f.payloadPerElement, prefix.c_str(), f.firstTraversalS, prefix.c_str(),
-        (unsigned long long)f.surfacesFirst, prefix.c_str(), std::max(f.editPolylineMs, f.editSurfaceMs),
-        prefix.c_str(), f.editPolylineMs, prefix.c_str(), f.editSurfaceMs, prefix.c_str(),
-        (unsigned long long)f.editRetraversed, prefix.c_str(), (unsigned long long)f.editRetessellated);
+        f.traversalNs / f.rawVisitNs, prefix.c_str(), f.unchangedNs, prefix.c_str(), f.peakRssPerElement,
+        prefix.c_str(), f.residentAfterInsertPerElement, prefix.c_str(), f.payloadPerElement, prefix.c_str(),
+        f.firstTraversalS, prefix.c_str(), (unsigned long long)f.surfacesFirst, prefix.c_str(),
+        std::max(f.editPolylineMs, f.editSurfaceMs), prefix.c_str(), f.editPolylineMs, prefix.c_str(),
+        f.editSurfaceMs, prefix.c_str(), (unsigned long long)f.editRetraversed, prefix.c_str(),
+        (unsigned long long)f.editRetessellated);
     return buffer;
 }
 
@@ -270,6 +285,28 @@ std::string child(const char* self, std::size_t elements) {
     return last.empty() ? "" : last.substr(1);
 }
 
+/// The number after "key": in a JSON object's text (NaN where it is missing).
+double numberIn(const std::string& object, const std::string& key) {
+    const std::size_t at = object.find("\"" + key + "\": ");
+    return at == std::string::npos ? std::nan("") : std::atof(object.c_str() + at + key.size() + 4);
+}
+
+/// Linear cost, read against the baseline: how much the per-element traversal time grows from
+/// the smallest size and from 1M to the largest, beside the same growth of the plain-vector
+/// visit (what the memory hierarchy alone adds). objects: the sizes' figures, ascending (1M third).
+std::string scalingFigures(const std::vector<std::string>& objects) {
+    auto growth = [&](const char* key, std::size_t from) {
+        return numberIn(objects.back(), key) / numberIn(objects[from], key);
+    };
+    char buffer[320];
+    std::snprintf(buffer, sizeof buffer,
+                  "\"traversal_growth_10k_to_4M\": %.2f, \"raw_visit_growth_10k_to_4M\": %.2f, "
+                  "\"traversal_growth_1M_to_4M\": %.2f, \"raw_visit_growth_1M_to_4M\": %.2f",
+                  growth("traversal_ns_per_element", 0), growth("raw_visit_ns_per_element", 0),
+                  growth("traversal_ns_per_element", 2), growth("raw_visit_ns_per_element", 2));
+    return buffer;
+}
+
 std::string renamed(std::string object, const std::string& prefix) {
     for (std::size_t at = object.find('"'); at != std::string::npos; at = object.find(", \"", at)) {
         at += at == 0 ? 1 : 3;
@@ -292,15 +329,19 @@ int main(int argc, char** argv) {
     const std::pair<const char*, std::size_t> sizes[] = {
         {"e10k_", 10'000}, {"e100k_", 100'000}, {"e4M_", 4'000'000}};
     std::string scaling = "\"sizes\": \"10k 100k 1M 4M\"";
+    std::vector<std::string> objects;  // by size, ascending
     for (auto [prefix, n] : sizes) {
         std::string object = child(argv[0], n);
         if (object.empty()) return std::fprintf(stderr, "bench_store: the %zu-element run failed\n", n), 1;
         scaling += ", " + renamed(object, prefix);
+        objects.push_back(object);
     }
     Figures f = run(9'999, rssAtStart);
     print(f);
     std::string main = json(f, "");
     scaling += ", " + json(f, "e1M_");
-    std::printf("{%s, \"scaling\": {%s}}\n", main.c_str(), scaling.c_str());
+    objects.insert(objects.end() - 1, main);
+    std::printf("{%s, \"scaling\": {%s, %s}}\n", main.c_str(), scaling.c_str(),
+                scalingFigures(objects).c_str());
     return 0;
 }
