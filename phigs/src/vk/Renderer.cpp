@@ -541,6 +541,93 @@ void Renderer::addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddP
     }
 }
 
+/// What prepare() works out once a frame for every item: the list and its mapping to the
+/// framebuffer, each view's kind, each light set's shape and first light, and the draw records.
+struct Renderer::FramePlan {
+    FramePlan(const DrawList& drawList, const WorkstationMapping& workstationMapping, VkExtent2D extent)
+        : list(drawList), mapping(workstationMapping) {
+        npcToPixels =
+            glm::dmat4(glm::dvec4(0.5 * extent.width, 0, 0, 0), glm::dvec4(0, 0.5 * extent.height, 0, 0),
+                       glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
+            mapping.npcToClip;
+        for (const DrawView& v : list.views) perspective.push_back(viewerOf(v).w != 0.0);
+        int nextLight = 0;
+        for (const auto& set : list.lightSets) {
+            firstLights.push_back(nextLight);
+            nextLight += int(set.size());
+            int signature = set.size() <= 4 ? int(set.size()) : -1;
+            for (std::size_t j = 0; signature >= 0 && j < set.size(); ++j)
+                signature |= (int(set[j].type) & 7) << (3 + 3 * j);
+            signatures.push_back(signature);
+        }
+    }
+
+    const DrawList& list;
+    const WorkstationMapping& mapping;
+    glm::dmat4 npcToPixels{1.0};
+    /// By view: a perspective view's viewer is a point (viewerOf), so V varies over a surface.
+    std::vector<char> perspective;
+    /// Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
+    std::vector<int> signatures;
+    /// Each light set's first light in the frame block's light array: the sets packed in order
+    /// (uploadFrame packs them so).
+    std::vector<int> firstLights;
+    std::vector<gpu::DrawParams> draws;
+    const DrawView defaultView{};
+};
+
+/// What one item's draws share: its view, scissor, depth cueing and clipping, and the draw
+/// record's view, light set, depth cue, highlighting and (meshes) model transformation.
+struct Renderer::ItemPlan {
+    ItemPlan(const DrawItem& drawItem, const DrawView& drawView) : item(drawItem), view(drawView) {}
+
+    const DrawItem& item;
+    const DrawView& view;
+    bool perspectiveView = false, cued = false, clipsDepth = false;
+    VkRect2D scissor{};
+    glm::vec2 modelClip{0.0f};
+    gpu::DrawParams base;
+};
+
+/// One part to draw with the buffers it reads (indices: a mesh's; none for an item's own
+/// geometry) and, for an area, its interior styles.
+struct Renderer::PartDraw {
+    const render::GeometryPart& part;
+    const InteriorStyleSet* interior;
+    bool meshNormals;
+    VkBuffer vertices, indices;
+};
+
+/// A draw's shader flags, per-fragment shading and whether it reads a pattern.
+struct Renderer::DrawLook {
+    int flags = 0;
+    int shade = gpu::Flat;
+    bool patterned = false;
+};
+
+namespace {
+
+/// Throws std::invalid_argument where item `index` names a view, light set or depth cue the list
+/// lacks.
+void checkItemTables(const DrawList& list, std::size_t index) {
+    const DrawItem& item = list.items[index];
+    if (item.viewIndex() < 0 ||
+        (item.viewIndex() >= int(list.views.size()) && !(list.views.empty() && item.viewIndex() == 0)))
+        throw std::invalid_argument("Renderer: " + itemName(index) + " uses view " +
+                                    std::to_string(item.viewIndex()) + " but the list has " +
+                                    std::to_string(list.views.size()));
+    if (item.lightSet() >= int(list.lightSets.size()) || item.lightSet() >= gpu::kMaxLightSets)
+        throw std::invalid_argument("Renderer: " + itemName(index) + " uses light set " +
+                                    std::to_string(item.lightSet()) + " but the list has " +
+                                    std::to_string(list.lightSets.size()));
+    if (item.depthCue() >= int(list.depthCues.size()) || item.depthCue() >= gpu::kMaxCues)
+        throw std::invalid_argument("Renderer: " + itemName(index) + " uses depth cue " +
+                                    std::to_string(item.depthCue()) + " but the list has " +
+                                    std::to_string(list.depthCues.size()));
+}
+
+}  // namespace
+
 void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     ++frameNumber_;
     frame_ = {};
@@ -557,246 +644,18 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
     if (list.views.size() > std::size_t(gpu::kMaxViews))
         throw std::invalid_argument("Renderer: " + std::to_string(list.views.size()) + " views, at most " +
                                     std::to_string(gpu::kMaxViews) + " are supported");
-
     const WorkstationMapping mapping(list, extent.width, extent.height);
     addViewRuns(list, mapping);
-    const glm::dmat4 npcToPixels =
-        glm::dmat4(glm::dvec4(0.5 * extent.width, 0, 0, 0), glm::dvec4(0, 0.5 * extent.height, 0, 0),
-                   glm::dvec4(0, 0, 1, 0), glm::dvec4(0.5 * extent.width, 0.5 * extent.height, 0, 1)) *
-        mapping.npcToClip;
-    const DrawView defaultView;
-    // A perspective view's viewer is a point (viewerOf): V varies over a surface.
-    std::vector<char> perspective;
-    for (const DrawView& v : list.views) perspective.push_back(viewerOf(v).w != 0.0);
-    std::vector<gpu::DrawParams> draws;
-    // Each light set's shape for the shader: count | type << (3 + 3 j), or -1 beyond 4 lights.
-    std::vector<int> signatures;
-    // Each light set's first light in the frame block's light array: the sets packed in order
-    // (uploadFrame packs them so).
-    std::vector<int> firstLights;
-    int nextLight = 0;
-    for (const auto& set : list.lightSets) {
-        firstLights.push_back(nextLight);
-        nextLight += int(set.size());
-        int signature = set.size() <= 4 ? int(set.size()) : -1;
-        for (std::size_t j = 0; signature >= 0 && j < set.size(); ++j)
-            signature |= (int(set[j].type) & 7) << (3 + 3 * j);
-        signatures.push_back(signature);
-    }
-
-    for (std::size_t i = 0; i < list.items.size(); ++i) {
-        const DrawItem& item = list.items[i];
-        if (item.viewIndex() < 0 ||
-            (item.viewIndex() >= int(list.views.size()) && !(list.views.empty() && item.viewIndex() == 0)))
-            throw std::invalid_argument("Renderer: " + itemName(i) + " uses view " +
-                                        std::to_string(item.viewIndex()) + " but the list has " +
-                                        std::to_string(list.views.size()));
-        if (item.lightSet() >= int(list.lightSets.size()) || item.lightSet() >= gpu::kMaxLightSets)
-            throw std::invalid_argument("Renderer: " + itemName(i) + " uses light set " +
-                                        std::to_string(item.lightSet()) + " but the list has " +
-                                        std::to_string(list.lightSets.size()));
-        if (item.depthCue() >= int(list.depthCues.size()) || item.depthCue() >= gpu::kMaxCues)
-            throw std::invalid_argument("Renderer: " + itemName(i) + " uses depth cue " +
-                                        std::to_string(item.depthCue()) + " but the list has " +
-                                        std::to_string(list.depthCues.size()));
-        const DrawView& view = list.views.empty() ? defaultView : list.views[item.viewIndex()];
-        const bool perspectiveView = !list.views.empty() && perspective[std::size_t(item.viewIndex())];
-        const glm::dmat4 worldToPixels = npcToPixels * view.mapping * view.orientation;
-        VkRect2D scissor{};
-        {
-            const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
-            const PixelRect r = mapping.scissor(kept.min, kept.max);
-            scissor = {{r.x, r.y}, {r.width, r.height}};
-        }
-        if (scissor.extent.width == 0 || scissor.extent.height == 0) continue;
-        const bool cued = item.depthCue() >= 0 && list.depthCues[std::size_t(item.depthCue())].enabled;
-        const bool clipsDepth =
-            (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
-        const glm::vec2 modelClip = clipPlaneRange(item, i);
-
-        // The attributes every part of this item shares.
-        gpu::DrawParams base;
-        base.indices = glm::ivec4(item.viewIndex(), item.lightSet(), item.depthCue(),
-                                  item.highlighted() ? gpu::Highlight : 0);
-        // One draw: an interior part's faces of one side's style (backSide), the culled sides in cull.
-        auto addDraw = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
-                           bool meshNormals, VkBuffer vertices, VkBuffer indices, bool backSide, int cull) {
-            gpu::DrawParams d = base;
-            if (!indices) d.model = glm::mat4(1.0f), d.normalMatrix = glm::mat4(1.0f);
-            Command c;
-            Command::Push& push = c.push;
-            push.colour = glm::vec4(part.colour, 1.0f);
-            push.backColour = push.colour;
-            int flags = d.indices.w;
-            int shade = gpu::Flat;
-            bool patterned = false;
-            if (part.vertexColours) flags |= gpu::VertexColours;
-            if (part.offsetInNpc) flags |= gpu::OffsetNpc;
-            if (part.lines && part.lineType != LineType::Solid) flags |= gpu::Pattern;
-            if (part.patternInModelUnits) flags |= gpu::PatternInModelUnits;
-            if (!part.lines) flags |= gpu::Triangles;
-            if (interior && part.role == render::PartRole::Interior) {
-                const InteriorStyleSet& s = *interior;
-                const InteriorStyle style = s.styleOf(backSide);
-                if (style == InteriorStyle::Hatch) flags |= gpu::Hatch;
-                if (style == InteriorStyle::Pattern)
-                    patterned = patternDraw(list, item, s.styleIndexOf(backSide), d);
-                const ReflectanceModel backModel =
-                    s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
-                if ((s.reflectance != ReflectanceModel::None || backModel != ReflectanceModel::None) &&
-                    item.lightSet() >= 0)
-                    flags |= gpu::Lit;
-                if (s.distinguishBackFaces) {
-                    flags |= gpu::DistinguishBack;
-                    push.backColour = glm::vec4(s.backColour, 1.0f);
-                }
-                shade = meshNormals ? shadeOf(s.shadingOf(backSide)) : gpu::Flat;
-                auto reflect = [&](const Reflectance& r, ReflectanceModel model, glm::vec4& k,
-                                   glm::vec4& sc) {
-                    k = glm::vec4(r.ambient, r.diffuse, r.specular, r.specularExponent);
-                    sc = glm::vec4(r.specularColour, float(int(model)));
-                };
-                reflect(s.properties, s.reflectance, push.reflectance, push.specularColour);
-                const Reflectance& back = s.distinguishBackFaces ? s.backProperties : s.properties;
-                reflect(back, backModel, push.backReflectance, push.backSpecularColour);
-                // The colours' alpha is the opacity the fragment shader writes.
-                push.colour.w = 1.0f - std::clamp(s.properties.transparency, 0.0f, 1.0f);
-                push.backColour.w = 1.0f - std::clamp(back.transparency, 0.0f, 1.0f);
-            }
-            d.indices.w = flags;
-            d.style = glm::ivec4(int(part.role), interior ? interior->styleIndexOf(backSide) : 0,
-                                 int(part.lineType), shade);
-            d.misc = glm::vec4(part.lineWidth, modelClip.x, modelClip.y, d.misc.w);
-            c.pipeline = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
-            c.pipeline |= std::uint64_t(cull) << kCullShift;
-            if ((flags & (gpu::Hatch | gpu::Pattern)) || clipsDepth || modelClip.y > 0)
-                c.pipeline |= kMayDiscard;
-            if (patterned) c.pipeline |= kPatterned;
-            bool fragmentNeedsWorld = modelClip.y > 0 || patterned;
-            if (flags & gpu::Lit) {
-                // A model both sides share is fixed (0: each side's is read per draw); a fixed light
-                // set shape lets the shader unroll.
-                const ReflectanceModel backModel =
-                    interior->distinguishBackFaces ? interior->back.reflectance : interior->reflectance;
-                c.pipeline |= (backModel == interior->reflectance ? int(interior->reflectance) : 0)
-                              << kReflectanceShift;
-                const int signature = signatures[std::size_t(item.lightSet())];
-                c.pipeline |= std::uint64_t(signature + 1) << kSignatureShift;
-                if (shade == gpu::Gouraud) {
-                    c.pipeline |= kVertexLighting;
-                } else {
-                    if (shade == gpu::Flat && part.facetNormals) c.pipeline |= kFlatFacetNormals;
-                    c.pipeline |= shade << kShadeShift;
-                    bool local = signature < 0 || shade == gpu::Flat || perspectiveView;
-                    for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
-                        local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
-                    fragmentNeedsWorld = fragmentNeedsWorld || local;
-                }
-            }
-            if (part.lines && part.side != 0 && indices) {
-                // A mesh's facet edges of one side (render::meshSidedEdges): the viewer in modelling
-                // coordinates rides where lines read no reflectance.
-                c.pipeline |= part.side > 0 ? kSidedFront : kSidedBack;
-                push.backReflectance = glm::vec4(
-                    render::meshViewer(view.mapping * view.orientation * item.modelTransform().get()));
-            }
-            if (!cued) c.pipeline |= kNoDepthCue;
-            if (interior && part.role == render::PartRole::Interior &&
-                (cued || part.vertexColours || (c.pipeline & kVertexLighting)))
-                c.pipeline |= std::uint64_t(int(interior->renderingModel) - 1) << kColourModelShift;
-            if (!part.vertexColours) c.pipeline |= kNoVertexColours;
-            if (!fragmentNeedsWorld) c.pipeline |= kNoWorldPosition;
-            if (flags & gpu::Highlight) c.pipeline |= kHighlighted;
-            if (d.model == glm::mat4(1.0f)) c.pipeline |= kIdentityModel;
-            if (flags & gpu::DistinguishBack) c.pipeline |= kDistinguishBack;
-            if (push.colour.w < 1.0f || push.backColour.w < 1.0f) c.pipeline |= kTransparent;
-            const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
-            c.pipeline |= std::uint64_t(offsets) << kOffsetShift;
-            c.vertices = vertices;
-            c.indices = indices;
-            c.first = part.first;
-            c.count = part.count;
-            c.push.drawIndex = static_cast<std::uint32_t>(draws.size());
-            c.view = item.viewIndex();
-            c.runOffset = std::uint32_t(std::size_t(item.viewIndex()) * litStride_);
-            c.push.firstLight = item.lightSet() >= 0 ? firstLights[std::size_t(item.lightSet())] : 0;
-            if ((flags & gpu::Lit) && !(flags & gpu::DistinguishBack) &&
-                ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
-                // A uniform colour is folded in too (shaders/scene.glsl, litPremultiplied).
-                const bool uniformColour = !part.vertexColours && !patterned;
-                const int run = premultipliedLights(list, item.viewIndex(), item.lightSet(), push.reflectance,
-                                                    push.specularColour,
-                                                    uniformColour ? glm::vec3(push.colour) : glm::vec3(1.0f));
-                if (run >= 0) {
-                    c.pipeline |= kPremultipliedLights;
-                    c.runOffset = std::uint32_t(std::size_t(run) * litStride_);
-                }
-            }
-            c.push.depthCue = item.depthCue();
-            c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
-            c.scissor = scissor;
-            pipeline(c.pipeline);
-            draws.push_back(d);
-            commands_.push_back(c);
-        };
-        // Each side's faces by its own style: the sides not filled (culled, or HOLLOW / EMPTY) are
-        // culled, and a distinguished back of another style, index or shading is a second draw.
-        auto addPart = [&](const render::GeometryPart& part, const InteriorStyleSet* interior,
-                           bool meshNormals, VkBuffer vertices, VkBuffer indices) {
-            if (!interior || part.lines)
-                return addDraw(part, interior, meshNormals, vertices, indices, false, 0);
-            const bool front = interior->fillsFrontFaces(), back = interior->fillsBackFaces();
-            const int cullFront = int(CullMode::FrontFaces), cullBack = int(CullMode::BackFaces);
-            if (front && back && interior->sidesDiffer()) {
-                addDraw(part, interior, meshNormals, vertices, indices, false, cullBack);
-                addDraw(part, interior, meshNormals, vertices, indices, true, cullFront);
-            } else if (front || back) {
-                addDraw(part, interior, meshNormals, vertices, indices, !front,
-                        (front ? 0 : cullFront) | (back ? 0 : cullBack));
-            }
-        };
-
-        if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) {
-            if (!mesh->mesh) continue;
-            CachedMesh& cached = compileMesh(mesh->mesh);
-            if (!cached.vertices) continue;
-            base.model = toFloat(item.modelTransform().get());
-            base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(base.model))));
-            addMeshParts(*mesh, cached, addPart);
-            continue;
-        }
-
-        const std::uint64_t key = render::geometryKey(item, worldToPixels, mapping.pixelsPerNpc);
-        auto it = geometry_.find(key);
-        if (it == geometry_.end()) {
-            render::ItemGeometry g = render::describeItem(item, worldToPixels, mapping.pixelsPerNpc);
-            CachedGeometry cached;
-            if (!g.vertices.empty()) {
-                const VkDeviceSize bytes = g.vertices.size() * sizeof(render::RenderVertex);
-                cached.vertices =
-                    std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
-                cached.vertices->write(g.vertices.data(), bytes);
-            }
-            cached.parts = std::move(g.parts);
-            it = geometry_.emplace(key, std::move(cached)).first;
-        }
-        it->second.lastUsed = frameNumber_;
-        if (!it->second.vertices) continue;
-        const InteriorStyleSet* interior = nullptr;
-        if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
-        const glm::dmat4 worldToNpc = view.mapping * view.orientation;
-        for (const auto& part : it->second.parts)
-            if (part.side == 0 || render::sideShown(part.sidePlane, worldToNpc) == part.side)
-                addPart(part, interior, part.vertexNormals, it->second.vertices->handle(), VK_NULL_HANDLE);
-    }
+    FramePlan frame(list, mapping, extent);
+    for (std::size_t i = 0; i < list.items.size(); ++i) prepareItem(frame, i);
 
     // Free what this frame no longer draws (the previous frame has finished with it).
     std::erase_if(geometry_, [&](const auto& entry) { return entry.second.lastUsed != frameNumber_; });
     std::erase_if(meshes_, [&](const auto& entry) { return entry.second.lastUsed != frameNumber_; });
 
-    drawBytes_.resize(draws.size() * sizeof(gpu::DrawParams));
-    if (!draws.empty()) std::memcpy(drawBytes_.data(), draws.data(), drawBytes_.size());
-    uploadFrame(list, extent, firstLights);
+    drawBytes_.resize(frame.draws.size() * sizeof(gpu::DrawParams));
+    if (!frame.draws.empty()) std::memcpy(drawBytes_.data(), frame.draws.data(), drawBytes_.size());
+    uploadFrame(list, extent, frame.firstLights);
     uploadDraws();
     uploadPatterns();
     uploadLitRuns();
@@ -807,6 +666,212 @@ void Renderer::prepare(const DrawList& list, VkExtent2D extent) {
                               [](const Command& c) { return !(c.pipeline & kTransparent); });
     frame_.drawCalls = commands_.size();
     total_.add(frame_);
+}
+
+void Renderer::prepareItem(FramePlan& frame, std::size_t index) {
+    const DrawList& list = frame.list;
+    const DrawItem& item = list.items[index];
+    checkItemTables(list, index);
+    const DrawView& view = list.views.empty() ? frame.defaultView : list.views[item.viewIndex()];
+    ItemPlan plan(item, view);
+    plan.perspectiveView = !list.views.empty() && frame.perspective[std::size_t(item.viewIndex())];
+    const ViewClipRectangle kept(view, list.windowMin, list.windowMax);
+    const PixelRect r = frame.mapping.scissor(kept.min, kept.max);
+    plan.scissor = {{r.x, r.y}, {r.width, r.height}};
+    if (plan.scissor.extent.width == 0 || plan.scissor.extent.height == 0) return;
+    plan.cued = item.depthCue() >= 0 && list.depthCues[std::size_t(item.depthCue())].enabled;
+    plan.clipsDepth = (view.clipBack && view.clipMin.z > 0.0) || (view.clipFront && view.clipMax.z < 1.0);
+    plan.modelClip = clipPlaneRange(item, index);
+    plan.base.indices = glm::ivec4(item.viewIndex(), item.lightSet(), item.depthCue(),
+                                   item.highlighted() ? gpu::Highlight : 0);
+
+    if (const auto* mesh = primitiveIf<DrawMesh>(item.primitive)) {
+        if (!mesh->mesh) return;
+        CachedMesh& cached = compileMesh(mesh->mesh);
+        if (!cached.vertices) return;
+        plan.base.model = toFloat(item.modelTransform().get());
+        plan.base.normalMatrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(plan.base.model))));
+        addMeshParts(*mesh, cached,
+                     [&](const render::GeometryPart& part, const InteriorStyleSet* interior, bool meshNormals,
+                         VkBuffer vertices, VkBuffer indices) {
+                         addPart(frame, plan, {part, interior, meshNormals, vertices, indices});
+                     });
+        return;
+    }
+    const glm::dmat4 worldToPixels = frame.npcToPixels * view.mapping * view.orientation;
+    const CachedGeometry& cached = itemGeometry(item, worldToPixels, frame.mapping.pixelsPerNpc);
+    if (!cached.vertices) return;
+    const InteriorStyleSet* interior = nullptr;
+    if (const auto* fill = primitiveIf<DrawFillArea>(item.primitive)) interior = &fill->interior.get();
+    const glm::dmat4 worldToNpc = view.mapping * view.orientation;
+    for (const auto& part : cached.parts)
+        if (part.side == 0 || render::sideShown(part.sidePlane, worldToNpc) == part.side)
+            addPart(frame, plan,
+                    {part, interior, part.vertexNormals, cached.vertices->handle(), VK_NULL_HANDLE});
+}
+
+Renderer::CachedGeometry& Renderer::itemGeometry(const DrawItem& item, const glm::dmat4& worldToPixels,
+                                                 double pixelsPerNpc) {
+    const std::uint64_t key = render::geometryKey(item, worldToPixels, pixelsPerNpc);
+    auto it = geometry_.find(key);
+    if (it == geometry_.end()) {
+        render::ItemGeometry g = render::describeItem(item, worldToPixels, pixelsPerNpc);
+        CachedGeometry cached;
+        if (!g.vertices.empty()) {
+            const VkDeviceSize bytes = g.vertices.size() * sizeof(render::RenderVertex);
+            cached.vertices =
+                std::make_unique<GpuBuffer>(context_, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame_);
+            cached.vertices->write(g.vertices.data(), bytes);
+        }
+        cached.parts = std::move(g.parts);
+        it = geometry_.emplace(key, std::move(cached)).first;
+    }
+    it->second.lastUsed = frameNumber_;
+    return it->second;
+}
+
+void Renderer::addPart(FramePlan& frame, const ItemPlan& plan, const PartDraw& p) {
+    // Each side's faces by its own style: the sides not filled (culled, or HOLLOW / EMPTY) are
+    // culled, and a distinguished back of another style, index or shading is a second draw.
+    if (!p.interior || p.part.lines) return addDraw(frame, plan, p, false, 0);
+    const bool front = p.interior->fillsFrontFaces(), back = p.interior->fillsBackFaces();
+    const int cullFront = int(CullMode::FrontFaces), cullBack = int(CullMode::BackFaces);
+    if (front && back && p.interior->sidesDiffer()) {
+        addDraw(frame, plan, p, false, cullBack);
+        addDraw(frame, plan, p, true, cullFront);
+    } else if (front || back) {
+        addDraw(frame, plan, p, !front, (front ? 0 : cullFront) | (back ? 0 : cullBack));
+    }
+}
+
+void Renderer::addDraw(FramePlan& frame, const ItemPlan& plan, const PartDraw& p, bool backSide, int cull) {
+    const render::GeometryPart& part = p.part;
+    gpu::DrawParams d = plan.base;
+    if (!p.indices) d.model = glm::mat4(1.0f), d.normalMatrix = glm::mat4(1.0f);
+    Command c;
+    c.push.colour = glm::vec4(part.colour, 1.0f);
+    c.push.backColour = c.push.colour;
+    const DrawLook look = drawLook(frame, plan, p, backSide, d, c.push);
+    d.indices.w = look.flags;
+    d.style = glm::ivec4(int(part.role), p.interior ? p.interior->styleIndexOf(backSide) : 0,
+                         int(part.lineType), look.shade);
+    d.misc = glm::vec4(part.lineWidth, plan.modelClip.x, plan.modelClip.y, d.misc.w);
+    c.pipeline = pipelineKey(frame, plan, p, look, cull, c.push);
+    if (d.model == glm::mat4(1.0f)) c.pipeline |= kIdentityModel;
+    c.vertices = p.vertices;
+    c.indices = p.indices;
+    c.first = part.first;
+    c.count = part.count;
+    c.push.drawIndex = static_cast<std::uint32_t>(frame.draws.size());
+    c.view = plan.item.viewIndex();
+    c.runOffset = std::uint32_t(std::size_t(plan.item.viewIndex()) * litStride_);
+    const int lightSet = plan.item.lightSet();
+    c.push.firstLight = lightSet >= 0 ? frame.firstLights[std::size_t(lightSet)] : 0;
+    if ((look.flags & gpu::Lit) && !(look.flags & gpu::DistinguishBack) &&
+        ((c.pipeline >> kSignatureShift) & 0xffff) && ((c.pipeline >> kReflectanceShift) & 7)) {
+        // A uniform colour is folded in too (shaders/scene.glsl, litPremultiplied).
+        const bool uniformColour = !part.vertexColours && !look.patterned;
+        const int run = premultipliedLights(frame.list, plan.item.viewIndex(), lightSet, c.push.reflectance,
+                                            c.push.specularColour,
+                                            uniformColour ? glm::vec3(c.push.colour) : glm::vec3(1.0f));
+        if (run >= 0) {
+            c.pipeline |= kPremultipliedLights;
+            c.runOffset = std::uint32_t(std::size_t(run) * litStride_);
+        }
+    }
+    c.push.depthCue = plan.item.depthCue();
+    c.lineWidth = std::clamp(part.lineWidth, 1.0f, maxLineWidth_);
+    c.scissor = plan.scissor;
+    pipeline(c.pipeline);
+    frame.draws.push_back(d);
+    commands_.push_back(c);
+}
+
+Renderer::DrawLook Renderer::drawLook(const FramePlan& frame, const ItemPlan& plan, const PartDraw& p,
+                                      bool backSide, gpu::DrawParams& d, Command::Push& push) {
+    const render::GeometryPart& part = p.part;
+    DrawLook look;
+    look.flags = d.indices.w;
+    if (part.vertexColours) look.flags |= gpu::VertexColours;
+    if (part.offsetInNpc) look.flags |= gpu::OffsetNpc;
+    if (part.lines && part.lineType != LineType::Solid) look.flags |= gpu::Pattern;
+    if (part.patternInModelUnits) look.flags |= gpu::PatternInModelUnits;
+    if (!part.lines) look.flags |= gpu::Triangles;
+    if (!p.interior || part.role != render::PartRole::Interior) return look;
+    const InteriorStyleSet& s = *p.interior;
+    const InteriorStyle style = s.styleOf(backSide);
+    if (style == InteriorStyle::Hatch) look.flags |= gpu::Hatch;
+    if (style == InteriorStyle::Pattern)
+        look.patterned = patternDraw(frame.list, plan.item, s.styleIndexOf(backSide), d);
+    const ReflectanceModel backModel = s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
+    if ((s.reflectance != ReflectanceModel::None || backModel != ReflectanceModel::None) &&
+        plan.item.lightSet() >= 0)
+        look.flags |= gpu::Lit;
+    if (s.distinguishBackFaces) {
+        look.flags |= gpu::DistinguishBack;
+        push.backColour = glm::vec4(s.backColour, 1.0f);
+    }
+    look.shade = p.meshNormals ? shadeOf(s.shadingOf(backSide)) : gpu::Flat;
+    auto reflect = [&](const Reflectance& r, ReflectanceModel model, glm::vec4& k, glm::vec4& sc) {
+        k = glm::vec4(r.ambient, r.diffuse, r.specular, r.specularExponent);
+        sc = glm::vec4(r.specularColour, float(int(model)));
+    };
+    reflect(s.properties, s.reflectance, push.reflectance, push.specularColour);
+    const Reflectance& back = s.distinguishBackFaces ? s.backProperties : s.properties;
+    reflect(back, backModel, push.backReflectance, push.backSpecularColour);
+    // The colours' alpha is the opacity the fragment shader writes.
+    push.colour.w = 1.0f - std::clamp(s.properties.transparency, 0.0f, 1.0f);
+    push.backColour.w = 1.0f - std::clamp(back.transparency, 0.0f, 1.0f);
+    return look;
+}
+
+std::uint64_t Renderer::pipelineKey(const FramePlan& frame, const ItemPlan& plan, const PartDraw& p,
+                                    const DrawLook& look, int cull, Command::Push& push) const {
+    const render::GeometryPart& part = p.part;
+    std::uint64_t key = (part.lines ? kLines : 0) | (depthTest_ ? kDepth : 0);
+    key |= std::uint64_t(cull) << kCullShift;
+    if ((look.flags & (gpu::Hatch | gpu::Pattern)) || plan.clipsDepth || plan.modelClip.y > 0)
+        key |= kMayDiscard;
+    if (look.patterned) key |= kPatterned;
+    bool fragmentNeedsWorld = plan.modelClip.y > 0 || look.patterned;
+    if (look.flags & gpu::Lit) {
+        // A model both sides share is fixed (0: each side's is read per draw); a fixed light
+        // set shape lets the shader unroll.
+        const InteriorStyleSet& s = *p.interior;
+        const ReflectanceModel backModel = s.distinguishBackFaces ? s.back.reflectance : s.reflectance;
+        key |= std::uint64_t(backModel == s.reflectance ? int(s.reflectance) : 0) << kReflectanceShift;
+        const int signature = frame.signatures[std::size_t(plan.item.lightSet())];
+        key |= std::uint64_t(signature + 1) << kSignatureShift;
+        if (look.shade == gpu::Gouraud) {
+            key |= kVertexLighting;
+        } else {
+            if (look.shade == gpu::Flat && part.facetNormals) key |= kFlatFacetNormals;
+            key |= std::uint64_t(look.shade) << kShadeShift;
+            bool local = signature < 0 || look.shade == gpu::Flat || plan.perspectiveView;
+            for (int j = 0; signature >= 0 && j < (signature & 7); ++j)
+                local = local || ((signature >> (3 + 3 * j)) & 7) >= int(LightType::Positional);
+            fragmentNeedsWorld = fragmentNeedsWorld || local;
+        }
+    }
+    if (part.lines && part.side != 0 && p.indices) {
+        // A mesh's facet edges of one side (render::meshSidedEdges): the viewer in modelling
+        // coordinates rides where lines read no reflectance.
+        key |= part.side > 0 ? kSidedFront : kSidedBack;
+        push.backReflectance = glm::vec4(
+            render::meshViewer(plan.view.mapping * plan.view.orientation * plan.item.modelTransform().get()));
+    }
+    if (!plan.cued) key |= kNoDepthCue;
+    if (p.interior && part.role == render::PartRole::Interior &&
+        (plan.cued || part.vertexColours || (key & kVertexLighting)))
+        key |= std::uint64_t(int(p.interior->renderingModel) - 1) << kColourModelShift;
+    if (!part.vertexColours) key |= kNoVertexColours;
+    if (!fragmentNeedsWorld) key |= kNoWorldPosition;
+    if (look.flags & gpu::Highlight) key |= kHighlighted;
+    if (look.flags & gpu::DistinguishBack) key |= kDistinguishBack;
+    if (push.colour.w < 1.0f || push.backColour.w < 1.0f) key |= kTransparent;
+    const int offsets = part.offsetInNpc ? 2 : part.role == render::PartRole::Marker ? 1 : 0;
+    key |= std::uint64_t(offsets) << kOffsetShift;
+    return key;
 }
 
 bool Renderer::patternDraw(const DrawList& list, const DrawItem& item, int patternIndex, gpu::DrawParams& d) {

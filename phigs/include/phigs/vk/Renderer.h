@@ -100,6 +100,25 @@ private:
         int view = 0;
     };
 
+    struct FramePlan;  ///< what every item's draws read of the frame (Renderer.cpp)
+    struct ItemPlan;   ///< what one item's draws share
+    struct PartDraw;   ///< one part with its buffers and interior styles
+    struct DrawLook;   ///< a draw's shader flags, shading and pattern
+    /// Adds item `index`'s draws: its mesh's parts, or its own geometry's (described once, cached).
+    void prepareItem(FramePlan& frame, std::size_t index);
+    /// The item's own geometry for this framebuffer, described when first drawn, uploaded, cached.
+    CachedGeometry& itemGeometry(const DrawItem& item, const glm::dmat4& worldToPixels, double pixelsPerNpc);
+    /// A part's draws: one per side filled in its own style (interiors), else one.
+    void addPart(FramePlan& frame, const ItemPlan& plan, const PartDraw& part);
+    /// One draw of a part: its draw record, push constants, pipeline and command.
+    void addDraw(FramePlan& frame, const ItemPlan& plan, const PartDraw& part, bool backSide, int cull);
+    /// The flags and shading of a part's draw, its interior's colours and reflectances on one side
+    /// into push (and a pattern's record into d).
+    DrawLook drawLook(const FramePlan& frame, const ItemPlan& plan, const PartDraw& part, bool backSide,
+                      gpu::DrawParams& d, Command::Push& push);
+    /// The pipeline key of a part's draw (and a sided edge draw's viewer into push).
+    std::uint64_t pipelineKey(const FramePlan& frame, const ItemPlan& plan, const PartDraw& part,
+                              const DrawLook& look, int cull, Command::Push& push) const;
     VkPipeline pipeline(std::uint64_t key);
     void createDescriptors();
     /// Writes the frame block; firstLights[s] is where light set s starts in its light array.
@@ -128,8 +147,8 @@ private:
     CachedMesh& compileMesh(const std::shared_ptr<const MeshData>& mesh);
     /// Makes the mesh's sided edge buffers once (CachedMesh::sidedVertices).
     void compileSidedEdges(CachedMesh& cached);
-    /// Hands a mesh's parts to prepare's `addPart` (part, interior, mesh normals, vertex and index
-    /// buffers): its HOLLOW sides' outlines, filled interior, iso-lines and edges.
+    /// Hands a mesh's parts to `addPart` (part, interior, mesh normals, vertex and index buffers):
+    /// its HOLLOW sides' outlines, filled interior, iso-lines and edges.
     template <typename AddPart>
     void addMeshParts(const DrawMesh& mesh, CachedMesh& cached, const AddPart& addPart);
     void release();
