@@ -3,6 +3,7 @@
 #include "geom/GeometryError.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -42,12 +43,24 @@ inline void checkBasisArguments(const char* where, std::size_t span, int degree,
         " knots do not fit (degree >= 0, more points than the degree, more knots than points)");
 }
 
+/// Basis values at a NaN or infinite parameter would be NaN, and a NaN passes findSpan's
+/// comparisons as false.
+[[noreturn, gnu::cold, gnu::noinline]] void badParameter(const char* where, double u) {
+    throw GeometryError(std::string(where) + ": the parameter u = " + std::to_string(u) + " is not finite");
+}
+
+inline void checkParameter(const char* where, double u) {
+    if (!std::isfinite(u)) [[unlikely]]
+        badParameter(where, u);
+}
+
 }  // namespace
 
 std::size_t findSpan(int degree, std::span<const double> knots, std::size_t controlCount, double u) {
     if (degree < 0 || controlCount <= static_cast<std::size_t>(degree) || knots.size() <= controlCount)
         [[unlikely]]
         badSpanArguments(degree, knots.size(), controlCount);
+    checkParameter("findSpan", u);
     const std::size_t low = static_cast<std::size_t>(degree);
     const std::size_t high = controlCount - 1;
     if (u >= knots[high + 1]) {
@@ -72,6 +85,7 @@ void basisFunctions(std::size_t span, double u, int degree, std::span<const doub
                     std::span<double> out) {
     checkBasisArguments("basisFunctions", span, degree, knots.size(), static_cast<std::size_t>(degree) + 1,
                         out.size());
+    checkParameter("basisFunctions", u);
     // Cox-de Boor in the triangular form of The NURBS Book, A2.2; left/right hold the knot
     // differences so each value is computed once.
     const std::size_t p = static_cast<std::size_t>(degree);
@@ -100,14 +114,16 @@ void basisFunctions(std::size_t span, double u, int degree, std::span<const doub
 
 void basisDerivatives(std::size_t span, double u, int degree, std::span<const double> knots, int order,
                       std::span<double> out) {
-    checkBasisArguments(
-        "basisDerivatives", span, degree, knots.size(),
-        (static_cast<std::size_t>(std::max(order, 0)) + 1) * (static_cast<std::size_t>(degree) + 1),
-        out.size());
+    if (order < 0) [[unlikely]]
+        throw GeometryError("basisDerivatives: derivative order " + std::to_string(order) + " is negative");
+    checkBasisArguments("basisDerivatives", span, degree, knots.size(),
+                        (static_cast<std::size_t>(order) + 1) * (static_cast<std::size_t>(degree) + 1),
+                        out.size());
+    checkParameter("basisDerivatives", u);
     // The NURBS Book, A2.3: build the triangular table of basis values and knot differences,
     // then combine its columns for each derivative order.
     const std::size_t p = static_cast<std::size_t>(degree);
-    const std::size_t n = static_cast<std::size_t>(std::max(order, 0));
+    const std::size_t n = static_cast<std::size_t>(order);
     const std::size_t w = p + 1;
     // Per-point callers evaluate millions of times: the tables live on the stack up to degree 15.
     constexpr std::size_t kStack = 16;
@@ -178,6 +194,7 @@ void basisWithFirstDerivatives(std::size_t span, double u, int degree, std::span
                                std::span<double> values, std::span<double> firsts) {
     checkBasisArguments("basisWithFirstDerivatives", span, degree, knots.size(),
                         static_cast<std::size_t>(degree) + 1, std::min(values.size(), firsts.size()));
+    checkParameter("basisWithFirstDerivatives", u);
     if (degree < 1) [[unlikely]]
         throw GeometryError("basisWithFirstDerivatives: degree 0 has no first derivatives");
     const std::size_t p = static_cast<std::size_t>(degree);

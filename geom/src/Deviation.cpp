@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -334,6 +335,17 @@ double followPeaks(const std::vector<double>& u, const std::vector<double>& v, c
     return best;
 }
 
+/// Throws GeometryError naming the first entry of a parameter map's side that is not finite or
+/// lies below the one before it (std::is_sorted lets a NaN through: every comparison is false).
+void checkMapSide(const std::vector<double>& side, const char* name) {
+    for (std::size_t i = 0; i < side.size(); ++i)
+        if (!std::isfinite(side[i]) || (i > 0 && side[i] < side[i - 1]))
+            throw GeometryError(
+                std::string("measureDeviation: the parameter map must be finite and ascending: ") + name +
+                "[" + std::to_string(i) + "] = " + std::to_string(side[i]) +
+                (std::isfinite(side[i]) ? " is below the one before it" : " is not finite"));
+}
+
 }  // namespace
 
 void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>& knots, int degree,
@@ -454,9 +466,12 @@ CurveDeviation CurveDeviationMeter::checkedMeasure(const Curve& reduced, const P
     if (reduced.rational()) throw GeometryError("measureDeviation: a parameter map needs polynomial curves");
     if (original_.domainStart() != reduced.domainStart() || original_.domainEnd() != reduced.domainEnd())
         throw GeometryError("measureDeviation: a parameter map needs curves on one domain");
-    if (map.from.empty() || map.from.size() != map.to.size() ||
-        !std::is_sorted(map.from.begin(), map.from.end()) || !std::is_sorted(map.to.begin(), map.to.end()))
-        throw GeometryError("measureDeviation: the parameter map must be non-empty and ascending");
+    if (map.from.empty() || map.from.size() != map.to.size())
+        throw GeometryError(
+            "measureDeviation: the parameter map must be non-empty, from and to of one size (" +
+            std::to_string(map.from.size()) + " and " + std::to_string(map.to.size()) + ")");
+    checkMapSide(map.from, "from");
+    checkMapSide(map.to, "to");
     if (reducedSamplesPerSpan < 0) throw GeometryError("measureDeviation: reducedSamplesPerSpan is negative");
     return measureAlong(reduced, map.from, map.to, reducedSamplesPerSpan, proof);
 }

@@ -440,4 +440,9 @@ glm::dvec3 normal(const Surface& surface, double u, double v) {
     return normalFromDerivatives(surface, u, v, d[2], d[1]);
 }
 
+void SurfaceDerivatives::badOrder(int order) {
+    throw GeometryError("SurfaceDerivatives: derivative order " + std::to_string(order) +
+                        " is outside 0..64");
+}
+
 }  // namespace geom

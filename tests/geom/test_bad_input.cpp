@@ -583,7 +583,26 @@ TEST_CASE("low-level basis functions refuse knots and outputs too small for the 
         REQUIRE_THROWS_WITH(spanSamples({0, 1}, degree, count, 4),
                             Catch::Contains("spanSamples") && Catch::Contains("2 knots"));
         REQUIRE_THROWS_WITH(bernsteinBasis(-1 - degree, 0.5, out), Catch::Contains("bernsteinBasis"));
+        // A parameter that is not finite (a NaN passed findSpan's comparisons and came back as a
+        // span; the basis values came back NaN) and a negative derivative order.
+        for (double u : {kNaN, kInf, -kInf}) {
+            CAPTURE(u);
+            REQUIRE_THROWS_WITH(findSpan(degree, knots, count, u),
+                                Catch::Contains("findSpan") && Catch::Contains("not finite"));
+            REQUIRE_THROWS_WITH(basisFunctions(span, u, degree, knots, out), Catch::Contains("not finite"));
+            REQUIRE_THROWS_WITH(basisDerivatives(span, u, degree, knots, 1, derivatives),
+                                Catch::Contains("basisDerivatives") && Catch::Contains("not finite"));
+            if (degree >= 1)
+                REQUIRE_THROWS_WITH(basisWithFirstDerivatives(span, u, degree, knots, out, firsts),
+                                    Catch::Contains("not finite"));
+        }
+        REQUIRE_THROWS_WITH(basisDerivatives(span, 0.5, degree, knots, -1, derivatives),
+                            Catch::Contains("order -1"));
+        REQUIRE(findSpan(degree, knots, count, -5.0) == p);  // finite parameters are clamped, as before
     }
+    for (int order : {-5, -1, 65})
+        REQUIRE_THROWS_WITH(SurfaceDerivatives(order), Catch::Contains("outside 0..64"));
+    REQUIRE(SurfaceDerivatives(64).order() == 64);
 }
 
 TEST_CASE("interpolation refuses an out-of-range parameterization, closure or degree",

@@ -412,6 +412,21 @@ TEST_CASE("the deviation with a parameter map has the plain measurement's maxima
     bad.from = {0.0, 0.5, 0.4};
     bad.to = {0.0, 0.5, 0.6};
     REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, bad), Catch::Contains("ascending"));
+    // A NaN or an infinity anywhere in either side is refused by name (a NaN passes every
+    // comparison of an ascending check as false, and the bounds it gave were silently wrong).
+    const double a = c.domainStart(), b = c.domainEnd(), m = 0.5 * (a + b);
+    const CurveDeviationMeter meter(c, 4);
+    for (double wrong : {std::nan(""), HUGE_VAL, -HUGE_VAL})
+        for (int side = 0; side < 2; ++side) {
+            ParameterMap map{{a, m, b}, {a, m, b}};
+            (side == 0 ? map.from : map.to)[1] = wrong;
+            const std::string where = side == 0 ? "from[1]" : "to[1]";
+            REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, map),
+                                Catch::Contains(where) && Catch::Contains("finite"));
+            REQUIRE_THROWS_WITH(meter.within(c, map, 1e-3), Catch::Contains(where));
+        }
+    bad.to = {0.0, 0.5};
+    REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, bad), Catch::Contains("3 and 2"));
 }
 
 TEST_CASE("the meter's proof of a tolerance sees every sample and reports no distance that is not there",

@@ -7,8 +7,8 @@
 namespace geom {
 
 // Each function here throws GeometryError, naming itself, for a negative degree, knots too few
-// for the span (or the count) it reads, or an output span too small: comparisons only, cheap
-// enough for every evaluated point.
+// for the span (or the count) it reads, an output span too small, a parameter that is not finite
+// or a negative derivative order: comparisons only, cheap enough for every evaluated point.
 
 /// Index s of the knot span with knots[s] <= u < knots[s+1], clamped into
 /// [degree, controlCount - 1] so the domain end belongs to the last non-empty span.

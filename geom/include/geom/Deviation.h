@@ -45,7 +45,7 @@ struct ParameterMap {
 /// the bounds and seeds); the mean is an upper bound, as above. The reduced curve is sampled at
 /// reducedSamplesPerSpan per span (0: samplesPerSpan), so that a fit with few spans can be
 /// sampled densely at little cost. Throws GeometryError for rational curves, different domains
-/// or a map that is empty or not ascending.
+/// or a map that is empty, of two sizes, or not finite and ascending.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
                                 const ParameterMap& map, int reducedSamplesPerSpan = 0);
 

@@ -23,7 +23,10 @@ std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order);
 /// others are zero). Orders up to 3 are held inline, so a per-point call allocates nothing.
 class SurfaceDerivatives {
 public:
+    /// Throws GeometryError for an order outside 0..64 (as derivatives() does).
     explicit SurfaceDerivatives(int order = 0) : order_(order) {
+        if (order < 0 || order > 64) [[unlikely]]
+            badOrder(order);
         if (side() * side() > small_.size()) large_.resize(side() * side());
     }
     int order() const { return order_; }
@@ -34,6 +37,7 @@ public:
     glm::dvec3* data() { return large_.empty() ? small_.data() : large_.data(); }
 
 private:
+    [[noreturn]] static void badOrder(int order);
     std::size_t side() const { return static_cast<std::size_t>(order_) + 1; }
     std::size_t index(int k, int l) const {
         return static_cast<std::size_t>(k) * side() + static_cast<std::size_t>(l);
