@@ -164,10 +164,59 @@ detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<gl
     return out;
 }
 
+// Brent's method for the largest value of f in [a, b] to `within` in the parameter: parabolas
+// through the last three points where they step inside the bracket and shrink it fast enough,
+// golden sections otherwise. A peak between samples is smooth, so the parabolas land on it in a
+// few evaluations where golden sections alone take 18 for the same bracket. Returns the best value.
+template <class F>
+double maximiseBetween(F&& f, double a, double b, double within) {
+    constexpr double golden = 0.3819660112501051;  // (3 - sqrt 5) / 2
+    double x = a + golden * (b - a), w = x, v = x;
+    double fx = f(x), fw = fx, fv = fx;
+    double step = 0.0, previous = 0.0;  // the last step, and the one before it
+    for (int evaluations = 1; evaluations < 40; ++evaluations) {
+        const double middle = 0.5 * (a + b);
+        if (std::abs(x - middle) <= 2.0 * within - 0.5 * (b - a)) break;
+        bool parabolic = false;
+        if (std::abs(previous) > within) {
+            // The vertex of the parabola through (x, fx), (w, fw), (v, fv), as x + p / q.
+            const double r = (x - w) * (fv - fx), t = (x - v) * (fw - fx);
+            double p = (x - v) * t - (x - w) * r, q = 2.0 * (t - r);
+            if (q > 0.0) p = -p;
+            q = std::abs(q);
+            if (std::abs(p) < std::abs(0.5 * q * previous) && p > q * (a - x) && p < q * (b - x)) {
+                previous = step;
+                step = p / q;
+                parabolic = true;
+                if (x + step - a < 2.0 * within || b - (x + step) < 2.0 * within)
+                    step = middle > x ? within : -within;
+            }
+        }
+        if (!parabolic) {
+            previous = x >= middle ? a - x : b - x;
+            step = golden * previous;
+        }
+        const double u = std::abs(step) >= within ? x + step : x + (step > 0.0 ? within : -within);
+        const double fu = f(u);
+        if (fu >= fx) {
+            (u >= x ? a : b) = x;
+            v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+        } else {
+            (u < x ? a : b) = u;
+            if (fu >= fw || w == x) {
+                v = w, fv = fw, w = u, fw = fu;
+            } else if (fu >= fv || v == x || v == w) {
+                v = u, fv = fu;
+            }
+        }
+    }
+    return fx;
+}
+
 // The largest distance from `from` to `to` near the sampled maxima: the distances d at
 // ascending params (seeds as in sampleDistances) peak between samples, by up to a few percent
 // of the maximum where a span is long. Each local maximum within a tenth of the largest is
-// searched by golden section between its neighbours (to 5e-4 of their interval), every point
+// searched by Brent's method between its neighbours (to 2.5e-4 of their interval), every point
 // measured as the samples are.
 // With a proof, only the maxima at or past its floor are followed (the samples below it may hold
 // bounds, not distances), and none once a distance is past its ceiling.
@@ -198,16 +247,7 @@ double peakDistance(const Curve& from, const std::vector<double>& params, const 
             best = std::max(best, e);
             return e;
         };
-        constexpr double ratio = 0.6180339887498949;
-        double a = lo, b = hi, x1 = b - ratio * (b - a), x2 = a + ratio * (b - a);
-        double f1 = distanceAt(x1), f2 = distanceAt(x2);
-        for (int step = 0; step < 16; ++step) {
-            if (f1 >= f2) {
-                b = x2, x2 = x1, f2 = f1, x1 = b - ratio * (b - a), f1 = distanceAt(x1);
-            } else {
-                a = x1, x1 = x2, f1 = f2, x2 = a + ratio * (b - a), f2 = distanceAt(x2);
-            }
-        }
+        maximiseBetween(distanceAt, lo, hi, 2.5e-4 * (hi - lo));
     }
     return best;
 }

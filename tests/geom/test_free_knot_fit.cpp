@@ -403,8 +403,10 @@ TEST_CASE("the deviation with a parameter map has the plain measurement's maxima
         REQUIRE(again.maxError == mapped.maxError);
         REQUIRE(mapped.samples == plain.samples);
         REQUIRE(mapped.meanError <= mapped.maxError);
-        // A denser sampling of the fit alone finds at least as much.
-        REQUIRE(meter.measure(g, f.map, 64).maxReducedToOriginal >= mapped.maxReducedToOriginal);
+        // A denser sampling of the fit alone finds at least as much (the same peak, followed
+        // between samples to the search's precision, may come out lower in the last digits).
+        REQUIRE(meter.measure(g, f.map, 64).maxReducedToOriginal >=
+                (1.0 - 1e-9) * mapped.maxReducedToOriginal);
     }
     const Curve c = nacaAirfoilCurve();
     ParameterMap bad;
