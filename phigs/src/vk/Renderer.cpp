@@ -278,15 +278,13 @@ void Renderer::createDescriptors() {
     litStride_ = (sizeof(gpu::LitRun) + align - 1) / align * align;
 }
 
-VkPipeline Renderer::pipeline(std::uint64_t key) {
-    if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
-    const bool lines = key & kLines;
-    const bool depth = key & kDepth;
-    const VkBool32 mayDiscard = (key & kMayDiscard) ? VK_TRUE : VK_FALSE;
+namespace {
+
+/// The shaders of shaders/scene.glsl specialised for a pipeline key (its constants 0..17).
+SpecialisedStages stagesFor(std::uint64_t key) {
     auto flag = [&](std::uint64_t bit) { return (key & bit) ? 1 : 0; };
-    // The specialisation constants of shaders/scene.glsl.
     const SpecialisationValue constants[] = {
-        {0, mayDiscard ? 1 : 0},
+        {0, flag(kMayDiscard)},
         {1, std::int32_t((key >> kShadeShift) & 7)},
         {2, std::int32_t((key >> kSignatureShift) & 0xffff) - 1},
         {3, std::int32_t((key >> kReflectanceShift) & 7)},
@@ -296,7 +294,7 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {7, flag(kVertexLighting)},
         {8, flag(kHighlighted)},
         {9, flag(kDistinguishBack)},
-        {10, lines ? 0 : 1},
+        {10, 1 - flag(kLines)},
         {11, std::int32_t((key >> kOffsetShift) & 3)},
         {12, flag(kPatterned)},
         {13, flag(kPremultipliedLights)},
@@ -305,8 +303,66 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
         {16, flag(kSidedFront) - flag(kSidedBack)},
         {17, flag(kFlatFacetNormals)},
     };
-    const SpecialisedStages code =
-        specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
+    return specialiseStages(shaders::spirv("prim.vert"), shaders::spirv("prim.frag"), constants);
+}
+
+/// Face culling, winding and depth bias of a pipeline key.
+VkPipelineRasterizationStateCreateInfo rasterStateFor(std::uint64_t key) {
+    VkPipelineRasterizationStateCreateInfo raster{};
+    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    const int culled = (key >> kCullShift) & 3;  // CullMode bits: 1 back, 2 front, 3 both
+    raster.cullMode = culled == 3                           ? VK_CULL_MODE_FRONT_AND_BACK
+                      : culled == int(CullMode::BackFaces)  ? VK_CULL_MODE_BACK_BIT
+                      : culled == int(CullMode::FrontFaces) ? VK_CULL_MODE_FRONT_BIT
+                                                            : VK_CULL_MODE_NONE;
+    // Vulkan's winding test already allows for the framebuffer's downward y, so counter-clockwise
+    // in NPC (x right, y up) is counter-clockwise here too.
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+    // Surfaces are pushed back a little so iso-lines and edges at the same depth win the test.
+    raster.depthBiasEnable = (key & kDepth) && !(key & kLines);
+    raster.depthBiasConstantFactor = 2.0f;
+    raster.depthBiasSlopeFactor = 1.5f;
+    return raster;
+}
+
+/// The colour attachment's blending of a pipeline key: none, or a transparent surface's.
+VkPipelineColorBlendAttachmentState blendFor(std::uint64_t key) {
+    VkPipelineColorBlendAttachmentState blend{};
+    if (key & kTransparent) {
+        // Colour: source over destination by the surface's opacity; the picture's alpha stays
+        // opaque (PNG files and swapchains show the colour, not a see-through image).
+        blend.blendEnable = VK_TRUE;
+        blend.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        blend.colorBlendOp = VK_BLEND_OP_ADD;
+        blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+        blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        blend.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT;
+    return blend;
+}
+
+/// A shader stage running `module`'s main.
+VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits which, VkShaderModule module) {
+    VkPipelineShaderStageCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    info.stage = which;
+    info.module = module;
+    info.pName = "main";
+    return info;
+}
+
+}  // namespace
+
+VkPipeline Renderer::pipeline(std::uint64_t key) {
+    if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+    const bool lines = key & kLines;
+    const bool depth = key & kDepth;
+    const SpecialisedStages code = stagesFor(key);
     VkDevice device = context_.device();
     struct Modules {
         VkDevice device;
@@ -318,16 +374,8 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     } modules{device};
     modules.vertex = createShader(device, code.vertex);
     modules.fragment = createShader(device, code.fragment);
-
-    VkPipelineShaderStageCreateInfo stages[2]{};
-    stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = modules.vertex;
-    stages[0].pName = "main";
-    stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = modules.fragment;
-    stages[1].pName = "main";
+    const VkPipelineShaderStageCreateInfo stages[2] = {stage(VK_SHADER_STAGE_VERTEX_BIT, modules.vertex),
+                                                       stage(VK_SHADER_STAGE_FRAGMENT_BIT, modules.fragment)};
 
     VkVertexInputBindingDescription binding{0, sizeof(render::RenderVertex), VK_VERTEX_INPUT_RATE_VERTEX};
     const VkVertexInputAttributeDescription allAttributes[5] = {
@@ -352,45 +400,16 @@ VkPipeline Renderer::pipeline(std::uint64_t key) {
     viewportState.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
     viewportState.viewportCount = 1;
     viewportState.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{};
-    raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    raster.polygonMode = VK_POLYGON_MODE_FILL;
-    const int culled = (key >> kCullShift) & 3;  // CullMode bits: 1 back, 2 front, 3 both
-    raster.cullMode = culled == 3                           ? VK_CULL_MODE_FRONT_AND_BACK
-                      : culled == int(CullMode::BackFaces)  ? VK_CULL_MODE_BACK_BIT
-                      : culled == int(CullMode::FrontFaces) ? VK_CULL_MODE_FRONT_BIT
-                                                            : VK_CULL_MODE_NONE;
-    // Vulkan's winding test already allows for the framebuffer's downward y, so counter-clockwise
-    // in NPC (x right, y up) is counter-clockwise here too.
-    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    raster.lineWidth = 1.0f;
-    // Surfaces are pushed back a little so iso-lines and edges at the same depth win the test.
-    raster.depthBiasEnable = depth && !lines;
-    raster.depthBiasConstantFactor = 2.0f;
-    raster.depthBiasSlopeFactor = 1.5f;
+    const VkPipelineRasterizationStateCreateInfo raster = rasterStateFor(key);
     VkPipelineMultisampleStateCreateInfo multisample{};
     multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineDepthStencilStateCreateInfo depthState{};
     depthState.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
     depthState.depthTestEnable = depth;
-    const bool transparent = key & kTransparent;
-    depthState.depthWriteEnable = depth && !transparent;
+    depthState.depthWriteEnable = depth && !(key & kTransparent);
     depthState.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    VkPipelineColorBlendAttachmentState blendAttachment{};
-    if (transparent) {
-        // Colour: source over destination by the surface's opacity; the picture's alpha stays
-        // opaque (PNG files and swapchains show the colour, not a see-through image).
-        blendAttachment.blendEnable = VK_TRUE;
-        blendAttachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        blendAttachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        blendAttachment.colorBlendOp = VK_BLEND_OP_ADD;
-        blendAttachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
-        blendAttachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        blendAttachment.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
-    blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    const VkPipelineColorBlendAttachmentState blendAttachment = blendFor(key);
     VkPipelineColorBlendStateCreateInfo blend{};
     blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
     blend.attachmentCount = 1;
