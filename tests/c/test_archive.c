@@ -75,6 +75,40 @@ static void networks(Pstore store) {
     pdel_all_structs();
 }
 
+/* The archive checksum (REFERENCE.md): FNV-1a of the text before the END line. */
+static unsigned long long checksum(const char* text) {
+    unsigned long long h = 1469598103934665603ULL;
+    for (; *text; ++text) h = (h ^ (unsigned char)*text) * 1099511628211ULL;
+    return h;
+}
+
+/* The store keeps doubles, so an archive written elsewhere may hold a real no Pfloat holds
+ * (1e300): it is retrieved as it is, and INQUIRE ELEMENT CONTENT answers error 908 (arithmetic)
+ * instead of an infinity; a real within a Pfloat's range still answers. */
+static void beyond_pfloat(const char* dir, Pstore store) {
+    const char* body =
+        "PHIGS-ARCHIVE 3\nSTRUCTURE 31 2\nSET_MARKER_SIZE_SCALE_FACTOR 1e300\n"
+        "SET_MARKER_SIZE_SCALE_FACTOR 3e38\n";
+    char path[512];
+    snprintf(path, sizeof path, "%s/beyond_pfloat.phar", dir);
+    FILE* f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f) return;
+    fprintf(f, "%sEND 1 %016llx\n", body, checksum(body));
+    fclose(f);
+    Pint err = -1;
+    Pelem_data* data = NULL;
+    EXPECT_NO_ERROR(popen_ar_file(5, path));
+    EXPECT_NO_ERROR(pret_all_structs(5));
+    pinq_elem_content(31, 1, store, &err, &data);
+    CHECK(err == 908);
+    pinq_elem_content(31, 2, store, &err, &data);
+    CHECK(err == 0 && data != NULL && data->float_data == 3e38f);
+    pclose_ar_file(5);
+    pdel_struct(31);
+    remove(path);
+}
+
 int main(int argc, char** argv) {
     char file[512], archive[512];
     Pint err = -1, total = -1, buffer[8], one[1] = {1}, two[1] = {2}, missing[2] = {1, 9};
@@ -135,6 +169,7 @@ int main(int argc, char** argv) {
     EXPECT_ERROR(pdel_structs_ar(1, &list_one), 407, Pfn_del_structs_ar);
     pdel_all_structs();
     networks(store);
+    beyond_pfloat(dir, store);
     pclose_ar_file(1);
     EXPECT_ERROR(pret_all_structs(1), 7, Pfn_ret_all_structs);
     pinq_ar_st(&st);

@@ -16,6 +16,9 @@
 
 namespace phigs::c {
 
+/// ISO 9592: arithmetic error has occurred (a result no Pfloat holds).
+inline constexpr int kArithmeticError = 908;
+
 /// An enumeration argument as the int the application passed, read without an enum-typed
 /// load: a C program may pass any int, and in C++ loading an out-of-range enum is undefined.
 template <class Enum>

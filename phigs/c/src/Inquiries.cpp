@@ -38,6 +38,10 @@ bool contains(const std::vector<Pelem_type>& set, const Pelem_type& t) {
 void answerContent(const Element& e, Pstore store, Pint* err, Pelem_data** data) {
     Phigs_store& s = c::storeOf(store);
     c::require(data, "INQUIRE ELEMENT CONTENT");
+    // The store keeps doubles (an archive may hold 1e300); a Pfloat would answer infinity.
+    if (!(largestMagnitude(e) <= std::numeric_limits<float>::max()))
+        throw Error(c::kArithmeticError, "INQUIRE ELEMENT CONTENT",
+                    "the element holds a real beyond the range of a Pfloat (3.4e38)");
     if (int failed = c::fillContent(e, s)) throw Error(failed, "INQUIRE ELEMENT CONTENT");
     *data = &s.data;
     *err = 0;

@@ -30,8 +30,6 @@ glm::dvec2 point(const Ppoint* p) {
     return {p->x, p->y};
 }
 
-constexpr int kArithmetic = 908;  // ISO 9592: arithmetic error has occurred
-
 /// Writes the matrix a utility made, unless an entry is not finite as a Pfloat (a NaN or infinite
 /// argument, or an overflow): that is the arithmetic error, and `out` is left as it was.
 template <class Matrix, class Out>
@@ -41,7 +39,7 @@ void answer(const Matrix& m, Out out, const char* function) {
         for (int row = 0; row < Matrix::length(); ++row)
             if (!std::isfinite(static_cast<Pfloat>(m[column][row])))
                 throw Error(
-                    kArithmetic, function,
+                    c::kArithmeticError, function,
                     "the matrix is not finite: an argument is NaN or infinite, or a product overflows");
     c::fromGlm(m, out);
 }
@@ -95,7 +93,7 @@ void ptran_point3(const Ppoint3* p, Pmatrix3 m, Pint* err, Ppoint3* r) {
         c::require(m, "TRANSFORM POINT 3");
         c::require(r, "TRANSFORM POINT 3");
         const auto q = transformPoint3(c::toGlm(m), point(p));
-        if (!q) throw Error(kArithmetic, "TRANSFORM POINT 3");
+        if (!q) throw Error(c::kArithmeticError, "TRANSFORM POINT 3");
         *r = {static_cast<Pfloat>(q->x), static_cast<Pfloat>(q->y), static_cast<Pfloat>(q->z)};
     });
 }
@@ -104,7 +102,7 @@ void ptran_point(const Ppoint* p, Pmatrix m, Pint* err, Ppoint* r) {
         c::require(m, "TRANSFORM POINT");
         c::require(r, "TRANSFORM POINT");
         const auto q = transformPoint2(c::toGlm(m), point(p));
-        if (!q) throw Error(kArithmetic, "TRANSFORM POINT");
+        if (!q) throw Error(c::kArithmeticError, "TRANSFORM POINT");
         *r = {static_cast<Pfloat>(q->x), static_cast<Pfloat>(q->y)};
     });
 }

@@ -205,6 +205,41 @@ struct FiniteCheck {
     void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces
 };
 
+/// The largest magnitude of a payload's reals, its points, curves and surfaces included (NaN where
+/// one is NaN).
+struct LargestReal {
+    double largest = 0.0;
+    void operator()(double x) {
+        largest = std::isnan(x) || std::isnan(largest) ? NAN : std::max(largest, std::abs(x));
+    }
+    void operator()(const glm::dvec2& p) { (*this)(p.x), (*this)(p.y); }
+    void operator()(const glm::dvec3& p) { (*this)(p.x), (*this)(p.y), (*this)(p.z); }
+    void operator()(const glm::dmat4& m) {
+        for (int c = 0; c < 4; ++c) (*this)(glm::dvec3(m[c])), (*this)(m[c].w);
+    }
+    void operator()(const Colour& c) {
+        if (c.direct) (*this)(c.rgb);
+    }
+    template <class A, class B>
+    void operator()(const std::pair<A, B>& p) {
+        (*this)(p.first), (*this)(p.second);
+    }
+    template <class T>
+    void operator()(const std::vector<T>& list) {
+        for (const T& item : list) (*this)(item);
+    }
+    void operator()(const PointList& points) {
+        for (const glm::dvec3& p : points.span()) (*this)(p);
+    }
+    void operator()(const geom::Curve& c) { (*this)(c.knots), (*this)(c.points), (*this)(c.weights); }
+    void operator()(const geom::Surface& s) {
+        (*this)(s.knotsU), (*this)(s.knotsV), (*this)(s.points), (*this)(s.weights);
+    }
+    void operator()(const TrimCurveDisplay& d) { (*this)(d.approximationValue); }
+    template <class T>
+    void operator()(const T&) {}  // integers, flags, strings, enumerations
+};
+
 bool allFinite(const Element& element) {
     FiniteCheck check;
     std::visit([&](const auto& e) { detail::fields(check, const_cast<std::decay_t<decltype(e)>&>(e)); },
@@ -629,6 +664,13 @@ int payloadIndexOf(ElementType type) {
         default:
             return indexOf<IndexAttribute>();
     }
+}
+
+double largestMagnitude(const Element& element) {
+    LargestReal largest;
+    std::visit([&](const auto& e) { detail::fields(largest, const_cast<std::decay_t<decltype(e)>&>(e)); },
+               element);
+    return largest.largest;
 }
 
 std::string validateElement(const Element& element) {

@@ -393,15 +393,23 @@ void StructureStore::emptyStructure(int id) {
     if (open_ == id) pointer_ = 0;
 }
 
-void StructureStore::removeReferencesTo(int id) {
+void StructureStore::removeReferencesTo(const std::set<int>& ids) {
     executesChanged();
     for (auto& [sid, s] : structures_) {
+        if (ids.contains(sid) && open_ != sid) continue;  // deleted whole
         bool changed = false;
+        // From the end, a run of consecutive references at a time (a parent of many goes in one
+        // erase, not one per reference).
         for (std::size_t i = s.elements.size(); i-- > 0;) {
             auto x = asExecute(s, i);
-            if (!x || x->structureId != id) continue;
-            s.elements.erase(i, i + 1);
-            if (open_ == sid && static_cast<int>(i) < pointer_) --pointer_;
+            if (!x || !ids.contains(x->structureId)) continue;
+            std::size_t first = i;
+            for (; first > 0; --first)
+                if (auto y = asExecute(s, first - 1); !y || !ids.contains(y->structureId)) break;
+            s.elements.erase(first, i + 1);
+            if (open_ == sid && static_cast<int>(first) < pointer_)
+                pointer_ -= std::min(pointer_, static_cast<int>(i) + 1) - static_cast<int>(first);
+            i = first;
             changed = true;
         }
         if (changed) touch(s);
@@ -425,49 +433,60 @@ bool StructureStore::referenced(int id) const {
 }
 
 void StructureStore::deleteStructure(int id) {
-    auto it = structures_.find(id);
-    if (it == structures_.end()) return;
-    removeReferencesTo(id);
-    notifyDeleted(id);
-    if (open_ == id) {
-        emptyStructure(id);
-        touch(structures_.at(id));
-    } else {
-        eraseStructure(id);
-        executed_.erase(id);
-        forgetVersions(id);
+    if (exists(id)) deleteStructures({id});
+}
+
+void StructureStore::deleteStructures(const std::set<int>& doomed) {
+    // One pass over the store drops every reference to any of them.
+    removeReferencesTo(doomed);
+    for (int id : doomed) {
+        notifyDeleted(id);
+        if (open_ == id) {
+            emptyStructure(id);
+            touch(structures_.at(id));
+        } else {
+            eraseStructure(id);
+            executed_.erase(id);
+            forgetVersions(id);
+        }
     }
 }
 
 void StructureStore::deleteStructureNetwork(int id, ReferenceHandling handling) {
     // ISO 9592: the network of a structure that does not exist is empty; nothing to delete.
     if (!exists(id)) return;
-    std::set<int> members = network(id);
+    const std::set<int> members = network(id);
     std::set<int> doomed;
     if (handling == ReferenceHandling::Delete) {
         for (int m : members)
             if (exists(m)) doomed.insert(m);
     } else {
-        // Keep every structure referenced from outside what is being deleted: grow the doomed
-        // set from the root while some member's every parent is already doomed.
-        doomed.insert(id);
-        auto graph = childrenGraph();
-        bool grew = true;
-        while (grew) {
-            grew = false;
-            for (int m : members) {
-                if (doomed.contains(m) || !exists(m)) continue;
-                bool allParentsDoomed = true;
-                for (const auto& [parent, children] : graph)
-                    if (children.contains(m) && !doomed.contains(parent)) allParentsDoomed = false;
-                if (allParentsDoomed) {
-                    doomed.insert(m);
-                    grew = true;
-                }
-            }
-        }
+        doomed = deletedKeepingReferenced(id, members);
     }
-    for (int m : doomed) deleteStructure(m);
+    deleteStructures(doomed);
+}
+
+std::set<int> StructureStore::deletedKeepingReferenced(int id, const std::set<int>& members) const {
+    // Keep every structure referenced from outside what is being deleted: a member goes once all
+    // its parents have gone, counted down from the root (networks have no cycles).
+    const auto graph = childrenGraph();
+    std::map<int, std::size_t> parentsLeft;
+    for (const auto& [parent, children] : graph)
+        for (int child : children)
+            if (members.contains(child)) ++parentsLeft[child];
+    std::set<int> doomed{id};
+    std::vector<int> todo{id};
+    while (!todo.empty()) {
+        const int parent = todo.back();
+        todo.pop_back();
+        const auto children = graph.find(parent);
+        if (children == graph.end()) continue;
+        for (int child : children->second)
+            if (members.contains(child) && exists(child) && !doomed.contains(child) &&
+                --parentsLeft[child] == 0)
+                doomed.insert(child), todo.push_back(child);
+    }
+    return doomed;
 }
 
 void StructureStore::deleteAllStructures() {

@@ -498,6 +498,9 @@ int payloadIndexOf(ElementType type);
 /// Checks an element against the rules of its type (counts, consistent lists, the type tag
 /// matching its family, every real finite); returns an empty string when valid, else the reason.
 std::string validateElement(const Element& element);
+/// The largest magnitude of the element's reals (points, curves and surfaces included): what a
+/// binding whose reals are floats checks before it answers an element's content.
+double largestMagnitude(const Element& element);
 /// Approximate storage of an element in bytes (INQUIRE ELEMENT TYPE AND SIZE).
 std::size_t elementSize(const Element& element);
 

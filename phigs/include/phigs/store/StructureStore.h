@@ -173,7 +173,13 @@ private:
     void checkSerials(std::size_t count) const { ElementArena::checkSerial(serial_ + count); }
     void requireOpen(const char* function) const;
     void checkElement(const Element& e, int into, const char* function) const;
-    void removeReferencesTo(int id);
+    /// Every EXECUTE STRUCTURE of any of `ids`, in one pass over the store.
+    void removeReferencesTo(const std::set<int>& ids);
+    /// Deletes each of `doomed` (existing structures) as DELETE STRUCTURE does.
+    void deleteStructures(const std::set<int>& doomed);
+    /// The members of id's network (`members`) that DELETE STRUCTURE NETWORK with KEEP deletes:
+    /// the root, and each member whose every parent is deleted.
+    std::set<int> deletedKeepingReferenced(int id, const std::set<int>& members) const;
     void notifyDeleted(int id);
     bool postedAnywhere(int id) const;
     bool referenced(int id) const;
