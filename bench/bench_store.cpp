@@ -163,8 +163,9 @@ double editMs(Phigs& phigs, Workstation& ws, int structure, int at, Element elem
 
 Figures run(int leaves, long rssAtStart) {
     const int perLeaf = 100;
-    // Each figure is the median of timed passes that visit about 3M elements in all, so that the
-    // small sizes' passes (10k elements: a millisecond) are not single readings of a noisy clock.
+    // Each figure is the median of at least three timed passes, and at the small sizes of as many
+    // as visit about 3M elements in all, so that their passes (10k elements: a millisecond) are
+    // not single readings of a noisy clock.
     const int repeats = std::clamp(3'000'000 / (leaves * (perLeaf + 1)), 3, 301);
     Figures f;
     {
@@ -235,7 +236,7 @@ std::string json(const Figures& f, const std::string& prefix) {
     std::snprintf(
         buffer, sizeof buffer,
         "\"%selements\": %zu, \"%sstructures\": %zu, \"%sdraw_items\": %zu, \"%sinserts_per_s\": %.0f, "
-        "\"%straversal_ns_per_element\": %.1f, \"%sraw_visit_ns_per_element\": %.1f, "
+        "\"%straversal_ns_per_element\": %.2f, \"%sraw_visit_ns_per_element\": %.2f, "
         "\"%straversal_over_raw\": %.2f, "
         "\"%sincremental_unchanged_ns_per_element\": %.1f, \"%speak_rss_bytes_per_element\": %.1f, "
         "\"%sresident_after_insert_bytes_per_element\": %.1f, \"%spayload_bytes_per_element\": %.1f, "
@@ -295,16 +296,19 @@ double numberIn(const std::string& object, const std::string& key) {
 /// the smallest size and from 1M to the largest, beside the same growth of the plain-vector
 /// visit (what the memory hierarchy alone adds). objects: the sizes' figures, ascending (1M third).
 std::string scalingFigures(const std::vector<std::string>& objects) {
-    auto growth = [&](const char* key, std::size_t from) {
-        return numberIn(objects.back(), key) / numberIn(objects[from], key);
+    auto growth = [&](const char* name, const char* key, std::size_t from) {
+        const double g = numberIn(objects.back(), key) / numberIn(objects[from], key);
+        char text[96];
+        if (std::isfinite(g))
+            std::snprintf(text, sizeof text, "\"%s\": %.3f", name, g);
+        else
+            std::snprintf(text, sizeof text, "\"%s\": null", name);
+        return std::string(text);
     };
-    char buffer[320];
-    std::snprintf(buffer, sizeof buffer,
-                  "\"traversal_growth_10k_to_4M\": %.2f, \"raw_visit_growth_10k_to_4M\": %.2f, "
-                  "\"traversal_growth_1M_to_4M\": %.2f, \"raw_visit_growth_1M_to_4M\": %.2f",
-                  growth("traversal_ns_per_element", 0), growth("raw_visit_ns_per_element", 0),
-                  growth("traversal_ns_per_element", 2), growth("raw_visit_ns_per_element", 2));
-    return buffer;
+    return growth("traversal_growth_10k_to_4M", "traversal_ns_per_element", 0) + ", " +
+           growth("raw_visit_growth_10k_to_4M", "raw_visit_ns_per_element", 0) + ", " +
+           growth("traversal_growth_1M_to_4M", "traversal_ns_per_element", 2) + ", " +
+           growth("raw_visit_growth_1M_to_4M", "raw_visit_ns_per_element", 2);
 }
 
 std::string renamed(std::string object, const std::string& prefix) {

@@ -164,15 +164,15 @@ detail::KeptVector<double> sampleDistances(const Curve& to, const std::vector<gl
     return out;
 }
 
-// Brent's method for the largest value of f in [a, b] to `within` in the parameter: parabolas
-// through the last three points where they step inside the bracket and shrink it fast enough,
-// golden sections otherwise. A peak between samples is smooth, so the parabolas land on it in a
-// few evaluations where golden sections alone take 18 for the same bracket. Returns the best value.
+// Brent's method for the largest value of f in [a, b], from x (where f is fx, the best known),
+// until the bracket's half is within 2 `within` of x: parabolas through the last three points
+// where they step inside the bracket and shrink it fast enough, golden sections otherwise. A
+// smooth peak takes a few evaluations where golden sections alone take 18 for the same bracket;
+// a kink falls back to golden sections. Returns the best value.
 template <class F>
-double maximiseBetween(F&& f, double a, double b, double within) {
+double maximiseBetween(F&& f, double a, double b, double x, double fx, double within) {
     constexpr double golden = 0.3819660112501051;  // (3 - sqrt 5) / 2
-    double x = a + golden * (b - a), w = x, v = x;
-    double fx = f(x), fw = fx, fv = fx;
+    double w = x, v = x, fw = fx, fv = fx;
     double step = 0.0, previous = 0.0;  // the last step, and the one before it
     for (int evaluations = 1; evaluations < 40; ++evaluations) {
         const double middle = 0.5 * (a + b);
@@ -216,8 +216,8 @@ double maximiseBetween(F&& f, double a, double b, double within) {
 // The largest distance from `from` to `to` near the sampled maxima: the distances d at
 // ascending params (seeds as in sampleDistances) peak between samples, by up to a few percent
 // of the maximum where a span is long. Each local maximum within a tenth of the largest is
-// searched by Brent's method between its neighbours (to 2.5e-4 of their interval), every point
-// measured as the samples are.
+// searched by Brent's method between its neighbours from it (to a bracket of 5e-4 of their
+// interval), every point measured as the samples are.
 // With a proof, only the maxima at or past its floor are followed (the samples below it may hold
 // bounds, not distances), and none once a distance is past its ceiling.
 template <class Global>
@@ -247,7 +247,7 @@ double peakDistance(const Curve& from, const std::vector<double>& params, const 
             best = std::max(best, e);
             return e;
         };
-        maximiseBetween(distanceAt, lo, hi, 2.5e-4 * (hi - lo));
+        maximiseBetween(distanceAt, lo, hi, params[i], d[i], 1.25e-4 * (hi - lo));
     }
     return best;
 }

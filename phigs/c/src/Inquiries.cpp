@@ -6,6 +6,8 @@
 #include "Inquiry.h"
 #include "phigs.h"
 
+#include <limits>
+
 using namespace phigs;
 using phigs::c::inquire;
 

@@ -231,9 +231,14 @@ struct LargestReal {
     void operator()(const PointList& points) {
         for (const glm::dvec3& p : points.span()) (*this)(p);
     }
-    void operator()(const geom::Curve& c) { (*this)(c.knots), (*this)(c.points), (*this)(c.weights); }
+    void operator()(const geom::Curve& c) { (*this)(c.knots), poles(c.points, c.weights); }
     void operator()(const geom::Surface& s) {
-        (*this)(s.knotsU), (*this)(s.knotsV), (*this)(s.points), (*this)(s.weights);
+        (*this)(s.knotsU), (*this)(s.knotsV), poles(s.points, s.weights);
+    }
+    /// Rational poles are also answered in homogeneous form (w P), which may pass where P does not.
+    void poles(const std::vector<glm::dvec3>& points, const std::vector<double>& weights) {
+        (*this)(points), (*this)(weights);
+        for (std::size_t i = 0; i < points.size() && i < weights.size(); ++i) (*this)(points[i] * weights[i]);
     }
     void operator()(const TrimCurveDisplay& d) { (*this)(d.approximationValue); }
     template <class T>

@@ -263,6 +263,21 @@ void ElementArena::erase(std::size_t first, std::size_t last) {
         compactIfSparse();
 }
 
+void ElementArena::eraseMarked(const std::vector<char>& marked) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        if (marked[i])
+            destroy(slots_[i]);
+        else
+            slots_[kept++] = slots_[i];
+    }
+    slots_.resize(kept);
+    if (slots_.empty())
+        clear();
+    else
+        compactIfSparse();
+}
+
 void ElementArena::settle() {
     // Doubled since the last settle (amortized), or holding the first room mostly unused (a
     // bounded copy): a small structure edited once does not keep its first room.

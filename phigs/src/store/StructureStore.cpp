@@ -395,24 +395,21 @@ void StructureStore::emptyStructure(int id) {
 
 void StructureStore::removeReferencesTo(const std::set<int>& ids) {
     executesChanged();
+    std::vector<char> marked;
     for (auto& [sid, s] : structures_) {
-        if (ids.contains(sid) && open_ != sid) continue;  // deleted whole
-        bool changed = false;
-        // From the end, a run of consecutive references at a time (a parent of many goes in one
-        // erase, not one per reference).
-        for (std::size_t i = s.elements.size(); i-- > 0;) {
-            auto x = asExecute(s, i);
-            if (!x || !ids.contains(x->structureId)) continue;
-            std::size_t first = i;
-            for (; first > 0; --first)
-                if (auto y = asExecute(s, first - 1); !y || !ids.contains(y->structureId)) break;
-            s.elements.erase(first, i + 1);
-            if (open_ == sid && static_cast<int>(first) < pointer_)
-                pointer_ -= std::min(pointer_, static_cast<int>(i) + 1) - static_cast<int>(first);
-            i = first;
-            changed = true;
-        }
-        if (changed) touch(s);
+        // Marked first, erased in one pass (a parent of many, its executes between other
+        // elements, does not shift its elements once per reference).
+        marked.assign(s.elements.size(), 0);
+        std::size_t count = 0, beforePointer = 0;
+        for (std::size_t i = 0; i < s.elements.size(); ++i)
+            if (auto x = asExecute(s, i); x && ids.contains(x->structureId)) {
+                marked[i] = 1, ++count;
+                if (static_cast<int>(i) < pointer_) ++beforePointer;
+            }
+        if (count == 0) continue;
+        s.elements.eraseMarked(marked);
+        if (open_ == sid) pointer_ -= static_cast<int>(beforePointer);
+        touch(s);
     }
 }
 
@@ -437,7 +434,8 @@ void StructureStore::deleteStructure(int id) {
 }
 
 void StructureStore::deleteStructures(const std::set<int>& doomed) {
-    // One pass over the store drops every reference to any of them.
+    // One pass over the store drops every reference to any of them (the doomed ones' own too, so
+    // that a listener told of a deletion finds no execute of a structure already gone).
     removeReferencesTo(doomed);
     for (int id : doomed) {
         notifyDeleted(id);

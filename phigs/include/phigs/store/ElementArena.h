@@ -128,6 +128,9 @@ public:
     void replace(std::size_t at, Element&& e, std::uint64_t serial);
     /// Removes elements [first, last).
     void erase(std::size_t first, std::size_t last);
+    /// Removes every element i with marked[i] (marked.size() == size()), the rest kept in order:
+    /// one pass, however the marked ones are spread.
+    void eraseMarked(const std::vector<char>& marked);
     void clear();
     /// Gives back the room held for growth once the arena has at least doubled its elements
     /// since it last did (a structure built, then closed): each element is moved a bounded
