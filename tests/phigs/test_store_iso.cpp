@@ -190,6 +190,22 @@ TEST_CASE("an element with a value that is not finite is refused, whatever its t
     CHECK(store.elementCount(1) == 1);
 }
 
+TEST_CASE("an element's largest magnitude counts every real a binding answers", "[store][c]") {
+    // What the C binding checks against a Pfloat's range before it answers content (error 908):
+    // points, reals, knots and weights, and a rational pole's homogeneous form w P.
+    CHECK(largestMagnitude(polyline3({{1, -7, 2}, {3, 0, 0}})) == 7.0);
+    CHECK(largestMagnitude(RealAttribute{ElementType::CharacterHeight, -1e300}) == 1e300);
+    CHECK(largestMagnitude(label(5)) == 0.0);
+    geom::Curve rational(1, {0, 0, 1e3, 1e3}, {{0, 0, 0}, {1e30, 0, 0}});
+    CHECK(largestMagnitude(NurbsCurveElement{rational, 0, 0}) == 1e30);
+    rational.weights = {1, 1e10};
+    CHECK(largestMagnitude(NurbsCurveElement{rational, 0, 0}) == 1e40);
+    const geom::Surface patch(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2,
+                              {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 4e30}}, {1, 1, 1, 1e9});
+    CHECK(largestMagnitude(NurbsSurfaceElement{patch}) == Approx(4e39));
+    CHECK(std::isnan(largestMagnitude(RealAttribute{ElementType::CharacterHeight, std::nan("")})));
+}
+
 TEST_CASE("pattern elements carry only their own fields and come back from an archive", "[store][iso]") {
     using T = ElementType;
     PatternAttribute size{T::PatternSize};
