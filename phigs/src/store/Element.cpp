@@ -177,41 +177,14 @@ std::string checkCurveRange(const NurbsCurveElement& e) {
     return {};
 }
 
-/// Whether every real of a payload is finite (curves and surfaces: geom::validate says).
-struct FiniteCheck {
-    bool finite = true;
-    void operator()(double x) { finite = finite && std::isfinite(x); }
-    void operator()(const glm::dvec2& p) { (*this)(p.x), (*this)(p.y); }
-    void operator()(const glm::dvec3& p) { (*this)(p.x), (*this)(p.y), (*this)(p.z); }
-    void operator()(const glm::dmat4& m) {
-        for (int c = 0; c < 4; ++c) (*this)(glm::dvec3(m[c])), (*this)(m[c].w);
-    }
-    void operator()(const Colour& c) {
-        if (c.direct) (*this)(c.rgb);
-    }
-    template <class A, class B>
-    void operator()(const std::pair<A, B>& p) {
-        (*this)(p.first), (*this)(p.second);
-    }
-    template <class T>
-    void operator()(const std::vector<T>& list) {
-        for (const T& item : list) (*this)(item);
-    }
-    /// Point lists are left to validatePayload: every family holding one runs checkPoints on it,
-    /// which names the point that is not finite (a second pass here would only cost inserts).
-    void operator()(const PointList&) {}
-    void operator()(const TrimCurveDisplay& d) { (*this)(d.approximationValue); }
-    template <class T>
-    void operator()(const T&) {}  // integers, flags, strings, enumerations, curves, surfaces
-};
-
-/// The largest magnitude of a payload's reals, its points, curves and surfaces included (NaN where
-/// one is NaN).
-struct LargestReal {
-    double largest = 0.0;
-    void operator()(double x) {
-        largest = std::isnan(x) || std::isnan(largest) ? NAN : std::max(largest, std::abs(x));
-    }
+/// Hands every real of a payload's fields to `on`, and where `whole` those of its point lists,
+/// curves and surfaces too (a rational pole also in homogeneous form, w P, as the C binding
+/// answers it).
+template <class On>
+struct EachReal {
+    On on;
+    bool whole;
+    void operator()(double x) { on(x); }
     void operator()(const glm::dvec2& p) { (*this)(p.x), (*this)(p.y); }
     void operator()(const glm::dvec3& p) { (*this)(p.x), (*this)(p.y), (*this)(p.z); }
     void operator()(const glm::dmat4& m) {
@@ -229,13 +202,15 @@ struct LargestReal {
         for (const T& item : list) (*this)(item);
     }
     void operator()(const PointList& points) {
-        for (const glm::dvec3& p : points.span()) (*this)(p);
+        if (whole)
+            for (const glm::dvec3& p : points.span()) (*this)(p);
     }
-    void operator()(const geom::Curve& c) { (*this)(c.knots), poles(c.points, c.weights); }
+    void operator()(const geom::Curve& c) {
+        if (whole) (*this)(c.knots), poles(c.points, c.weights);
+    }
     void operator()(const geom::Surface& s) {
-        (*this)(s.knotsU), (*this)(s.knotsV), poles(s.points, s.weights);
+        if (whole) (*this)(s.knotsU), (*this)(s.knotsV), poles(s.points, s.weights);
     }
-    /// Rational poles are also answered in homogeneous form (w P), which may pass where P does not.
     void poles(const std::vector<glm::dvec3>& points, const std::vector<double>& weights) {
         (*this)(points), (*this)(weights);
         for (std::size_t i = 0; i < points.size() && i < weights.size(); ++i) (*this)(points[i] * weights[i]);
@@ -245,11 +220,20 @@ struct LargestReal {
     void operator()(const T&) {}  // integers, flags, strings, enumerations
 };
 
-bool allFinite(const Element& element) {
-    FiniteCheck check;
-    std::visit([&](const auto& e) { detail::fields(check, const_cast<std::decay_t<decltype(e)>&>(e)); },
+template <class On>
+void eachReal(const Element& element, bool whole, On on) {
+    EachReal<On> visit{std::move(on), whole};
+    std::visit([&](const auto& e) { detail::fields(visit, const_cast<std::decay_t<decltype(e)>&>(e)); },
                element);
-    return check.finite;
+}
+
+bool allFinite(const Element& element) {
+    // Point lists are left to validatePayload: every family holding one runs checkPoints on it,
+    // which names the point that is not finite (a second pass here would only cost inserts);
+    // curves and surfaces to geom::validate.
+    bool finite = true;
+    eachReal(element, false, [&](double x) { finite = finite && std::isfinite(x); });
+    return finite;
 }
 
 /// The rules of each payload family: counts, consistent lists, finite points, valid curves.
@@ -672,10 +656,11 @@ int payloadIndexOf(ElementType type) {
 }
 
 double largestMagnitude(const Element& element) {
-    LargestReal largest;
-    std::visit([&](const auto& e) { detail::fields(largest, const_cast<std::decay_t<decltype(e)>&>(e)); },
-               element);
-    return largest.largest;
+    double largest = 0.0;  // NaN once a real is NaN
+    eachReal(element, true, [&](double x) {
+        largest = std::isnan(x) || std::isnan(largest) ? NAN : std::max(largest, std::abs(x));
+    });
+    return largest;
 }
 
 std::string validateElement(const Element& element) {
