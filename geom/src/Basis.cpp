@@ -54,6 +54,10 @@ inline void checkParameter(const char* where, double u) {
         badParameter(where, u);
 }
 
+[[noreturn, gnu::cold, gnu::noinline]] void badOrder(const char* where, int order) {
+    throw GeometryError(std::string(where) + ": derivative order " + std::to_string(order) + " is negative");
+}
+
 }  // namespace
 
 std::size_t findSpan(int degree, std::span<const double> knots, std::size_t controlCount, double u) {
@@ -115,7 +119,7 @@ void basisFunctions(std::size_t span, double u, int degree, std::span<const doub
 void basisDerivatives(std::size_t span, double u, int degree, std::span<const double> knots, int order,
                       std::span<double> out) {
     if (order < 0) [[unlikely]]
-        throw GeometryError("basisDerivatives: derivative order " + std::to_string(order) + " is negative");
+        badOrder("basisDerivatives", order);
     checkBasisArguments("basisDerivatives", span, degree, knots.size(),
                         (static_cast<std::size_t>(order) + 1) * (static_cast<std::size_t>(degree) + 1),
                         out.size());

@@ -51,9 +51,9 @@ std::size_t hintedSpan(int degree, const std::vector<double>& knots, std::size_t
 /// The public entries check the order before sizing their output; the internal evaluations
 /// below take it as given.
 void checkOrder(int order, const char* where) {
-    if (order < 0 || order > 64)
+    if (order < 0 || order > kMaxDerivativeOrder)
         throw GeometryError(std::string(where) + ": derivative order " + std::to_string(order) +
-                            " is outside 0..64");
+                            " is outside 0.." + std::to_string(kMaxDerivativeOrder));
 }
 
 /// C(u) .. C^(order)(u) into out[0..order].
@@ -440,9 +440,8 @@ glm::dvec3 normal(const Surface& surface, double u, double v) {
     return normalFromDerivatives(surface, u, v, d[2], d[1]);
 }
 
-void SurfaceDerivatives::badOrder(int order) {
-    throw GeometryError("SurfaceDerivatives: derivative order " + std::to_string(order) +
-                        " is outside 0..64");
+void SurfaceDerivatives::rejectOrder(int order) {
+    checkOrder(order, "SurfaceDerivatives");
 }
 
 }  // namespace geom

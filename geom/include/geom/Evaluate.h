@@ -19,14 +19,17 @@ glm::dvec3 evaluate(const Curve& curve, double u);
 /// C(u), C'(u), ..., C^(order)(u); rational curves by the quotient rule (The NURBS Book A4.2).
 std::vector<glm::dvec3> derivatives(const Curve& curve, double u, int order);
 
+/// The highest derivative order the evaluations take.
+inline constexpr int kMaxDerivativeOrder = 64;
+
 /// Partial derivatives of a surface: at(k, l) = d^(k+l) S / du^k dv^l for k + l <= order (the
 /// others are zero). Orders up to 3 are held inline, so a per-point call allocates nothing.
 class SurfaceDerivatives {
 public:
-    /// Throws GeometryError for an order outside 0..64 (as derivatives() does).
+    /// Throws GeometryError for an order outside 0..kMaxDerivativeOrder (as derivatives() does).
     explicit SurfaceDerivatives(int order = 0) : order_(order) {
-        if (order < 0 || order > 64) [[unlikely]]
-            badOrder(order);
+        if (order < 0 || order > kMaxDerivativeOrder) [[unlikely]]
+            rejectOrder(order);
         if (side() * side() > small_.size()) large_.resize(side() * side());
     }
     int order() const { return order_; }
@@ -37,7 +40,8 @@ public:
     glm::dvec3* data() { return large_.empty() ? small_.data() : large_.data(); }
 
 private:
-    [[noreturn]] static void badOrder(int order);
+    /// Throws derivatives()' error for an order outside its range.
+    static void rejectOrder(int order);
     std::size_t side() const { return static_cast<std::size_t>(order_) + 1; }
     std::size_t index(int k, int l) const {
         return static_cast<std::size_t>(k) * side() + static_cast<std::size_t>(l);
