@@ -83,12 +83,7 @@ void StructureStore::settleVersions() const {
         return;
     }
     if (touched_.empty()) return;
-    if (parentsStale_) {
-        parents_.clear();
-        for (const auto& [id, s] : structures_)
-            for (int child : executedBy(s)) parents_[child].push_back(id);
-        parentsStale_ = false;
-    }
+    refreshParents();
     // Every edit takes the newest serial up through the executing structures; a structure that
     // already has it was reached before (networks are acyclic, but they share structures).
     std::vector<int> todo;
@@ -106,6 +101,20 @@ void StructureStore::settleVersions() const {
         }
     }
     touched_.clear();
+}
+
+void StructureStore::refreshParents() const {
+    if (!parentsStale_) return;
+    parents_.clear();
+    for (const auto& [id, s] : structures_)
+        for (int child : executedBy(s)) parents_[child].push_back(id);
+    parentsStale_ = false;
+}
+
+void StructureStore::forgetAsParent(const Structure& s) {
+    if (parentsStale_) return;
+    for (int child : executedBy(s))
+        if (std::vector<int>* parents = parents_.find(child)) std::erase(*parents, s.id);
 }
 
 std::uint64_t StructureStore::subtreeVersion(int id) const {
@@ -386,7 +395,7 @@ void StructureStore::emptyStructure(int id) {
         s->id = id;
         touch(*s);
     } else if (!s->elements.empty()) {
-        executesChanged();
+        forgetAsParent(*s);
         s->elements.clear();
         touch(*s);
     }
@@ -394,9 +403,21 @@ void StructureStore::emptyStructure(int id) {
 }
 
 void StructureStore::removeReferencesTo(const std::set<int>& ids) {
-    executesChanged();
+    // Only the structures that execute one of them are read (the index of parents is exact
+    // afterwards: none of them is executed anywhere), so deleting structures one at a time costs
+    // what their parents hold, not the whole store.
+    refreshParents();
+    std::set<int> holders;
+    for (int id : ids)
+        if (const std::vector<int>* parents = parents_.find(id)) {
+            holders.insert(parents->begin(), parents->end());
+            parents_.erase(id);
+        }
     std::vector<char> marked;
-    for (auto& [sid, s] : structures_) {
+    for (int sid : holders) {
+        Structure* const* found = byId_.find(sid);
+        if (!found) continue;
+        Structure& s = **found;
         // Marked first, erased in one pass (a parent of many, its executes between other
         // elements, does not shift its elements once per reference).
         marked.assign(s.elements.size(), 0);
@@ -434,8 +455,8 @@ void StructureStore::deleteStructure(int id) {
 }
 
 void StructureStore::deleteStructures(const std::set<int>& doomed) {
-    // One pass over the store drops every reference to any of them (the doomed ones' own too, so
-    // that a listener told of a deletion finds no execute of a structure already gone).
+    // One pass over their parents drops every reference to any of them (the doomed ones' own too,
+    // so that a listener told of a deletion finds no execute of a structure already gone).
     removeReferencesTo(doomed);
     for (int id : doomed) {
         notifyDeleted(id);
@@ -443,6 +464,7 @@ void StructureStore::deleteStructures(const std::set<int>& doomed) {
             emptyStructure(id);
             touch(structures_.at(id));
         } else {
+            forgetAsParent(structures_.at(id));
             eraseStructure(id);
             executed_.erase(id);
             forgetVersions(id);

@@ -167,6 +167,10 @@ private:
     void executesChanged() { parentsStale_ = true; }
     /// Carries every edit since the last call up to the subtree versions of its ancestors.
     void settleVersions() const;
+    /// Rebuilds the index of executing structures when an edit left it stale.
+    void refreshParents() const;
+    /// Takes `s` out of the index as a parent of what it executes (before its elements go).
+    void forgetAsParent(const Structure& s);
     void forgetVersions(int id) { subtreeVersions_.erase(id); }
     std::uint64_t nextSerial() { return ++serial_; }
     /// Throws, before anything changes, when `count` more serials would not fit an element slot.
