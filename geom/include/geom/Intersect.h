@@ -24,6 +24,9 @@ struct LineSurfaceHit {
 /// once, and so does a pole the line passes through (an edge collapsed to one point), a patch
 /// collapsed to one point, or a patch edge it runs along (one hit, at the edge's middle). Two
 /// smooth sheets crossing at one point of the line (a self-intersection) are two hits there.
+/// Where the line's origin or the surface lies far from (0, 0, 0) for the surface's size, the
+/// bound is the rounding of those coordinates instead (about 1e-14 of them). A line that grazes
+/// the surface within the bound over a stretch (nearly tangent) may give several hits along it.
 /// For many lines against one surface, build a SurfaceIntersector once instead.
 std::vector<LineSurfaceHit> intersectLine(const Surface& surface, const glm::dvec3& origin,
                                           const glm::dvec3& direction);

@@ -31,6 +31,7 @@ struct EndConditions {
     /// Keep the first and last fixedDerivatives+1 control points at each end: 0 keeps the end
     /// points (clamped ends interpolated), 1 also the end tangents, 2 also the curvature. The
     /// first and last fixedDerivatives interior knots are kept too (the derivatives depend on them).
+    /// Any non-negative value is taken: one that holds every control point leaves the curve whole.
     int fixedDerivatives = 0;
 };
 
