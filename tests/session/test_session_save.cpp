@@ -285,6 +285,27 @@ TEST_CASE("READ MODEL: a saved model over the patch limit is refused at the comp
     CHECK(acsynt::parseModelState(fits, "fits.acs").model.patchCount() == 86 * 86 + 4);
 }
 
+TEST_CASE(
+    "READ MODEL: a saved model takes 1 to 64 components, as READ MODEL of a description and IMPORT do") {
+    // A count of 0 was read (and the empty model made current, its views' window not finite),
+    // and 65-128 were read into models that EXPORT writes and IMPORT refuses.
+    Driver d("save_component_count");
+    const auto out = session_test::outputDirectory("save_component_count");
+    const std::size_t models = d.session.models().size();
+    for (const char* count : {"0", "65", "128"}) {
+        const auto file = out / (std::string("count") + count + ".acs");
+        std::ofstream(file) << "acsynt-surfaces 1\nmodel m " << count << "\nend\n";
+        d.run({"choice FILE", "choice READ_MODEL", "string " + file.string()});
+        INFO(count << ": " << d.session.message());
+        CHECK(d.session.message().find(file.string() + ":2:") != std::string::npos);
+        CHECK(d.session.models().size() == models);
+        d.run({"choice RETURN"});
+    }
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice SAVE_MODEL", "string one.acs",
+           "choice READ_MODEL", "string " + (out / "one.acs").string(), "choice RETURN"});
+    CHECK(d.session.models().size() == models + 2);
+}
+
 TEST_CASE("SAVE MODEL, ARCHIVE: a failed write keeps the previous file, an archive is replaced whole") {
     Driver d("save_whole");
     const auto out = session_test::outputDirectory("save_whole");

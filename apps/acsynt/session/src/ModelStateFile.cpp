@@ -360,7 +360,10 @@ ModelState parseModelState(std::istream& in, const std::string& fileName) {
     const auto model = r.line("model", 3);
     state.model.name = r.name(model[1]);
     state.model.sourceFile = fileName;
-    const std::size_t components = r.count(model[2], kModelMaxComponents * 2);
+    // The limits of every other way in (READ MODEL, IMPORT): a file the session writes reads back
+    // and exports, and a model with nothing to view is never made.
+    const std::size_t components = r.count(model[2], kModelMaxComponents);
+    if (components == 0) r.fail("a model has at least one component");
     std::size_t points = 0, patches = 0, vertices = 0;
     for (std::size_t i = 0; i < components; ++i) {
         Component c = readComponent(r, points, patches);
