@@ -3,6 +3,7 @@
 #include "SessionTestSupport.h"
 
 #include "../exchange/ExchangeTestUtil.h"
+#include "acsynt/DataFolders.h"
 #include "geom/Evaluate.h"
 #include "geom/Primitives.h"
 #include "geom/exchange/CadFile.h"
@@ -23,11 +24,11 @@ const acsynt::Component& component(const acsynt::Model& m, const std::string& na
     return *c;
 }
 
-/// The transport with the ACSYNT logo mapped onto its right wing (as the demo does).
-void transportWithLogo(Driver& d) {
+/// The transport with the ACSYNT logo (or `curve`) mapped onto its right wing (as the demo does).
+void transportWithLogo(Driver& d, const std::string& curve = "acslogo.crv") {
     d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice VIEW",
            "choice FOUR_VIEWS", "choice RETURN", "choice CURVE_MAP", "choice LOAD_CURVE",
-           "string acslogo.crv 0.45", "choice DEFINE_POINT"});
+           "string " + curve + " 0.45", "choice DEFINE_POINT"});
     const glm::dvec3 p =
         geom::evaluate(component(d.session.models().current(), "right_wing").surface, 0.5, 0.38);
     d.pickAt(p, 1);
@@ -126,6 +127,35 @@ TEST_CASE("FILE menu: EXPORT the transport with a mapped logo to STEP and IGES, 
         d.run({"choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice DELETE_MODEL",
                "choice RETURN"});
         CHECK(d.session.models().size() == 1);
+    }
+}
+
+TEST_CASE("FILE menu: EXPORT a curve mapped from a file whose name is not ASCII") {
+    // The name was refused by the writer ("outside printable ASCII") and nothing was written.
+    Driver d("exchange_name");
+    const auto out = session_test::outputDirectory("exchange_name");
+    const auto curve = out / "Fl\xC3\xBCgel_logo.crv";
+    std::filesystem::path logo;
+    for (const auto& folder : acsynt::dataFolders())
+        if (logo.empty() && std::filesystem::exists(folder / "acslogo.crv")) logo = folder / "acslogo.crv";
+    REQUIRE_FALSE(logo.empty());
+    std::filesystem::create_directories(out);
+    std::filesystem::copy_file(logo, curve, std::filesystem::copy_options::overwrite_existing);
+    transportWithLogo(d, curve.string());
+    const std::vector<std::string> files{"name.step", "name.igs"};
+    for (const std::string& name : files) {
+        d.run({"choice FILE", "choice EXPORT", "string " + name});
+        CHECK(d.session.message().find("1 MAPPED CURVES") != std::string::npos);
+        d.run({"choice RETURN"});
+    }
+    d.run({"choice MODELS", "choice NAME_MODEL", "string original", "choice RETURN"});
+    for (const std::string& name : files) {
+        d.run({"choice FILE", "choice IMPORT", "string " + (out / name).string()});
+        INFO(name << ": " << d.session.message());
+        REQUIRE(d.session.mappings().size() == 2);
+        CHECK(d.session.mappings()[1].curveFile.find("Fl_gel_logo.crv") != std::string::npos);
+        d.run({"choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice RETURN"});
+        REQUIRE(d.session.mappings().size() == 1);
     }
 }
 

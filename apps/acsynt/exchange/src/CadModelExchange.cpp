@@ -32,6 +32,19 @@ std::string validName(const std::string& text, std::set<std::string>& taken, con
     return name;
 }
 
+/// A curve file's name as the exchange files keep it (printable ASCII, no space at an end): each
+/// other character, a UTF-8 sequence counted as one, becomes '_'. A mapping keeps any name its
+/// file has, and exporting its model must not fail on it.
+std::string writableName(const std::string& text) {
+    std::string name;
+    for (unsigned char c : text) {
+        if (c >= 0x80 && c < 0xC0) continue;  // the rest of a UTF-8 sequence
+        name += c < 0x20 || c >= 0x7F ? '_' : char(c);
+    }
+    const std::size_t first = name.find_first_not_of(' '), last = name.find_last_not_of(' ');
+    return first == std::string::npos ? "curve" : name.substr(first, last - first + 1);
+}
+
 ComponentKind kindFromName(const std::string& name, bool closed) {
     auto has = [&](const char* word) { return name.find(word) != std::string::npos; };
     if (has("fuselage") || has("body")) return ComponentKind::Fuselage;
@@ -130,7 +143,7 @@ geom::exchange::CadModel cadModelOf(const Model& model, const std::vector<Mappin
         geom::exchange::CadSurface s{c.name, c.surface, c.colour, {}};
         for (const MappingRecord& m : mappings) {
             if (m.model != model.name || m.component != c.name) continue;
-            geom::exchange::SurfaceCurves curves{m.curveFile, {}};
+            geom::exchange::SurfaceCurves curves{writableName(m.curveFile), {}};
             for (std::size_t l = 0; l < m.polylines.size() && l < m.uvPolylines.size(); ++l)
                 curves.loops.push_back({m.uvPolylines[l], m.polylines[l]});
             s.curves.push_back(std::move(curves));

@@ -13,7 +13,7 @@ namespace acsynt {
 
 /// The model as an exchange model in metres: each component a named surface with its colour,
 /// and the loops of each of the model's mappings ((u, w) and points) as curves on it, named
-/// after the curve file.
+/// after the curve file (each character outside printable ASCII made '_').
 geom::exchange::CadModel cadModelOf(const Model& model, const std::vector<MappingRecord>& mappings);
 
 /// Reads an IGES or STEP file (geom::exchange::readCadFile, in metres) as a new model: each
