@@ -87,6 +87,13 @@ TEST_CASE("curve scales that overflow or dwarf the surface fail their line quick
     d.run({"choice LOAD_CURVE", "string acslogo.crv 0.45 abc"});
     CHECK(d.session.message().find("BAD INPUT IN CURVE MAP") != std::string::npos);
     CHECK(d.session.failedLines() == 7);
+    // A scale after a path past the string device's default 256 bytes is read (it was cut off,
+    // and the curve loaded at scale 1 without a word).
+    std::string longPath;
+    for (int k = 0; k < 130; ++k) longPath += "./";
+    d.run({"choice LOAD_CURVE", "string " + longPath + "acslogo.crv 1e7"});
+    CHECK(d.session.message().find("IS TOO LARGE") != std::string::npos);
+    CHECK(d.session.failedLines() == 8);
     // Points no curve passes through (two the same): the file and the part's line, as for the
     // file's other faults (it named only the part).
     const auto twice = session_test::outputDirectory("bounds_scale_files") / "twice.crv";
@@ -95,7 +102,7 @@ TEST_CASE("curve scales that overflow or dwarf the surface fail their line quick
                             "Continuities:\n2\n2\n2\n2\n2\nConstraints:\nNone\n";
     d.run({"choice LOAD_CURVE", "string " + twice.string()});
     CHECK(d.session.message().rfind(twice.string() + ":2: curve part 'P': ", 0) == 0);
-    CHECK(d.session.failedLines() == 8);
+    CHECK(d.session.failedLines() == 9);
 
     // Within that bound, yet past what MAP CURVE takes on a wing (a hundred times its size).
     for (const char* scale : {"1e5", "5e4"}) {
@@ -159,10 +166,10 @@ TEST_CASE("files a script names stay inside the output directory") {
     CHECK(d.session.message().find("is a directory") != std::string::npos);
     CHECK(d.session.failedLines() == 8);
     // A name longer than any file system's is refused by its length, not by a filesystem error
-    // (the string device keeps 256 characters of the 304 typed).
+    // (the string device keeps all the 304 characters typed, as much as a script line holds).
     const std::string longName(300, 'a');
     d.run({"choice RETURN", "choice FILE", "choice SAVE_MODEL", "string " + longName + ".acs"});
-    CHECK(d.session.message().find("IS 256 CHARACTERS LONG: A FILE NAME HOLDS AT MOST 255") !=
+    CHECK(d.session.message().find("IS 304 CHARACTERS LONG: A FILE NAME HOLDS AT MOST 255") !=
           std::string::npos);
     d.run({"choice READ_MODEL", "string " + longName});
     CHECK(d.session.message().find("INPUT FILE NAME 'aaaa") != std::string::npos);

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace acsynt {
 
@@ -156,6 +157,10 @@ void Session::initialiseString() {
     const PixelBox& m = layout_.message;
     DeviceInitialisation s;
     s.initial = StringMeasure{};
+    // Whatever a script's string line can hold is taken whole (and a recording of what is typed
+    // replays): a string cut at the device's default 256 bytes lost what came after (a curve's
+    // scale after a long path) without a word.
+    s.bufferSize = ScriptInputSource::kMaxScriptLineLength - std::string_view("string ").size();
     s.echoVolume =
         PixelBox{(m.x0 + m.x1) / 2, (m.y0 + m.y1) / 2, m.x1, std::max(m.y1, m.y0 + 2)}.echoVolume();
     // Re-entering EVENT mode starts the typing over (from the empty initial string): what the
