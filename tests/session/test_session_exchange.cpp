@@ -211,6 +211,29 @@ TEST_CASE("FILE menu: IMPORT of a rational surface logs the bicubic error it kep
     CHECK(mantissa.size() >= 2);
 }
 
+TEST_CASE("FILE menu: IMPORT refuses coordinates past what a saved model holds") {
+    // A surface point at 1e15 m was imported (the views blank), saved, and the saved file was then
+    // refused by READ MODEL ("beyond 1000000000"): the model is refused at IMPORT instead.
+    Driver d("exchange_far");
+    const auto dir = session_test::outputDirectory("exchange_far");
+    std::filesystem::create_directories(dir);
+    for (const double x : {1e15, -2e9}) {
+        INFO(x);
+        geom::exchange::CadModel model = exchange_test::cadModelOf(exchange_test::transport());
+        model.surfaces.resize(1);
+        model.surfaces[0].name = "fin";
+        model.surfaces[0].surface.points[model.surfaces[0].surface.points.size() / 2].x = x;
+        const auto file = dir / "far.step";
+        geom::exchange::writeCadFile(model, file);
+        d.run({"choice FILE", "choice IMPORT", "string " + file.string()});
+        CHECK(d.session.message() == file.string() +
+                                         ": a control point of fin is beyond 1000000000 m, the largest "
+                                         "coordinate a saved model holds");
+        CHECK(d.session.models().size() == 0);
+        d.run({"choice RETURN"});
+    }
+}
+
 TEST_CASE("FILE menu: bad EXPORT and IMPORT names and files leave the models as they were") {
     Driver d("exchange_bad");
     d.run({"choice FILE", "choice EXPORT"});

@@ -307,6 +307,25 @@ void Session::exportModel(const std::string& name) {
         " PATCHES, " + std::to_string(curves) + " MAPPED CURVES");
 }
 
+namespace {
+
+/// What of an imported model lies beyond the coordinates SAVE MODEL writes and READ MODEL takes
+/// back (a point of a component or of a mapped loop), or empty: such a model is refused whole.
+std::string beyondSavedCoordinates(const ImportedModel& imported) {
+    const auto far = [](const glm::dvec3& p) {
+        return !(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kModelStateMaxCoordinate);
+    };
+    for (const Component& c : imported.model.components)
+        if (std::any_of(c.surface.points.begin(), c.surface.points.end(), far))
+            return "a control point of " + c.name;
+    for (const MappingRecord& m : imported.mappings)
+        for (const auto& loop : m.polylines)
+            if (std::any_of(loop.begin(), loop.end(), far)) return "a point of a curve on " + m.component;
+    return {};
+}
+
+}  // namespace
+
 void Session::importModel(const std::string& name) {
     ImportedModel imported =
         exchangeCalls().importModel(findInput(name));  // all or nothing: throws before anything changes
@@ -315,6 +334,12 @@ void Session::importModel(const std::string& name) {
             fail("A MODEL NAMED " + imported.model.name + " IS ALREADY LOADED");
             return;
         }
+    if (const std::string far = beyondSavedCoordinates(imported); !far.empty()) {
+        fail(findInput(name).string() + ": " + far + " is beyond " +
+             std::to_string(int(kModelStateMaxCoordinate)) +
+             " m, the largest coordinate a saved model holds");
+        return;
+    }
     core_.viewCentre.reset();
     for (const auto& w : imported.warnings) core_.log.push_back("import: " + w);
     const std::string modelName = imported.model.name;
