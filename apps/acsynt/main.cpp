@@ -210,6 +210,26 @@ bool checkExport(const Options& o) {
     return true;
 }
 
+/// Refuses a recording that would overwrite what the run reads (its script, its CAD file) or the
+/// summary and log the session writes into the output folder at its end.
+bool checkRecordTarget(const Options& o) {
+    if (o.record.empty()) return true;
+    std::error_code ec;
+    const auto same = [&](const std::filesystem::path& other) {
+        return std::filesystem::weakly_canonical(o.record, ec) ==
+               std::filesystem::weakly_canonical(other, ec);
+    };
+    std::string clash;
+    if (!o.script.empty() && same(o.script)) clash = "is the script it would replace";
+    if (!o.importFile.empty() && same(o.importFile)) clash = "is the --import file";
+    for (const char* written : {"summary.txt", "acsynt.log"})
+        if (same(o.output / written))
+            clash = std::string("is the ") + written + " the session writes into --output";
+    if (clash.empty()) return true;
+    std::cerr << "acsynt: --record " << o.record << " " << clash << "\n";
+    return false;
+}
+
 /// Refuses, before anything runs, a script that is not a readable file and a record or output
 /// path that cannot be written.
 bool checkPaths(const Options& o) {
@@ -239,7 +259,7 @@ bool checkPaths(const Options& o) {
                           : " cannot be created or written\n");
         return false;
     }
-    return true;
+    return checkRecordTarget(o);
 }
 
 std::optional<Options> parse(int argc, char** argv) {

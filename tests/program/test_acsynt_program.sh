@@ -114,6 +114,17 @@ if [ -d /proc/self ]; then
   expect_in record_proc.err "--record /proc/acsynt_no.session cannot be written"
   [ -d out_r3 ] && [ -n "$(ls out_r3)" ] && fail "record_proc: the session ran"
 fi
+# A recording that would overwrite the script it replays, or the summary and log the session
+# writes at its end, is refused (the script was replaced, the log lost).
+cp good.session mine.session
+run record_script 2 --script mine.session --record ./mine.session --output out_r4 --size 320x240
+expect_in record_script.err "--record ./mine.session is the script it would replace"
+cmp -s good.session mine.session || fail "record_script: the script was changed"
+mkdir -p out_r5
+for written in acsynt.log summary.txt; do
+  run "record_$written" 2 --script good.session --record "out_r5/$written" --output out_r5 --size 320x240
+  expect_in "record_$written.err" "is the $written the session writes into --output"
+done
 run script_dir 2 --script somedir --output out_s
 expect_in script_dir.err "--script somedir is a directory"
 run script_missing 2 --script nothing.session --output out_m
