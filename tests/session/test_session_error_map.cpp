@@ -151,6 +151,32 @@ TEST_CASE("error map: on a fixed scale an error has one colour whatever the redu
     for (const auto& c : mesh.vertexColours) REQUIRE(c.rgb.x < 0.2);
 }
 
+TEST_CASE("error map: each reduced model shows its own reduction, not only the last one made") {
+    // ERROR_MAP answered NO REDUCTION for a model made by any but the session's last reduction.
+    Driver d("error_map_each");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice SURF_REDN"});
+    reduceFuselage(d, "0.01");
+    d.run({"choice RETURN", "choice MODELS", "choice PREVIOUS_MODEL", "choice RETURN", "choice SURF_REDN"});
+    reduceComponent(d, "right_wing", "1e-4");
+    REQUIRE(d.session.reductions().size() == 2);
+    const acsynt::ReductionRecord& first = d.session.reductions()[0];
+    REQUIRE(d.session.reductions()[1].reducedModel == "transport_R2");
+    d.run({"choice RETURN", "choice MODELS", "choice PREVIOUS_MODEL", "choice RETURN"});
+    REQUIRE(d.session.models().current().name == first.reducedModel);
+    d.run({"choice SURF_REDN", "choice ERROR_MAP"});
+    CHECK(d.session.message().rfind("ERROR MAP: BLUE 0 TO RED", 0) == 0);
+    // The fuselage's errors (up to 0.01) on the default scale, red at 10 mm; the wing's are
+    // micrometres.
+    const auto& colours = errorMesh(d.session).vertexColours;
+    REQUIRE(colours.size() == first.deviation.error.size());
+    for (std::size_t k = 0; k < colours.size(); ++k)
+        REQUIRE(glm::length(colours[k].rgb - expectedColour(first.deviation.error[k] / 0.01)) < 1e-9);
+    // On the model that was reduced (made by no reduction) the map is not drawn.
+    d.run({"choice RETURN", "choice MODELS", "choice PREVIOUS_MODEL", "choice RETURN"});
+    REQUIRE(d.session.models().current().name == "transport");
+    CHECK(d.session.phigs().store().structure(acsynt::structures::errorMap).elements.empty());
+}
+
 TEST_CASE("bad numbers in every prompt are refused with a message and change nothing") {
     Driver d("prompts");
     d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice VIEW",

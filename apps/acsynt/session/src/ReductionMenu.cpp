@@ -32,11 +32,12 @@ void reduceIn(MenuContext& s, const std::string& name) {
 
 void errorMap(MenuContext& s, const std::string&) {
     SessionCore& c = s.core();
-    if (c.reductions.empty() || c.reductions.back().reducedModel != c.models.current().name) {
+    const ReductionRecord* shown = c.shownReduction();
+    if (!shown) {
         s.fail("NO REDUCTION OF THE CURRENT MODEL TO SHOW");
         return;
     }
-    c.style.errorMapComponent = c.style.errorMapComponent < 0 ? c.reductions.back().componentIndex : -1;
+    c.style.errorMapComponent = c.style.errorMapComponent < 0 ? shown->componentIndex : -1;
     s.drawErrorMap();
     s.restyle();
     s.say(c.style.errorMapComponent >= 0 ? c.errorMapLine() : "ERROR MAP OFF");

@@ -39,16 +39,28 @@ void SessionCore::fail(const std::string& text) {
                   (scriptLine && text.find(where) == std::string::npos ? " (" + where + ")" : ""));
 }
 
+const ReductionRecord* SessionCore::shownReduction() const {
+    if (models.empty()) return nullptr;
+    // Any reduction made the model shown, not only the session's last one (which may have made
+    // another model since).
+    const std::string& current = models.current().name;
+    for (auto r = reductions.rbegin(); r != reductions.rend(); ++r)
+        if (r->reducedModel == current) return &*r;
+    return nullptr;
+}
+
 double SessionCore::errorMapTop() const {
     if (errorScale > 0) return errorScale;
-    return reductions.empty() ? 1e-12 : std::max(reductions.back().maxError, 1e-12);
+    const ReductionRecord* r = shownReduction();
+    return r ? std::max(r->maxError, 1e-12) : 1e-12;
 }
 
 std::string SessionCore::errorMapLine() const {
-    const ReductionRecord& r = reductions.back();
+    const ReductionRecord* r = shownReduction();
+    if (!r) return "ERROR MAP OFF";
     return "ERROR MAP: BLUE 0 TO RED " + lengthText(errorMapTop()) +
            (errorScale > 0 ? " (FIXED SCALE)" : " (RELATIVE SCALE)") + ", MAX ERROR " +
-           lengthText(r.maxError);
+           lengthText(r->maxError);
 }
 
 }  // namespace acsynt

@@ -268,8 +268,8 @@ void Session::drawMapped(bool all) {
 
 void Session::drawErrorMap() {
     std::vector<Element> e;
-    if (core_.style.errorMapComponent >= 0 && !core_.reductions.empty() && !core_.models.empty()) {
-        const ReductionRecord& r = core_.reductions.back();
+    if (const ReductionRecord* shown = core_.shownReduction(); core_.style.errorMapComponent >= 0 && shown) {
+        const ReductionRecord& r = *shown;
         const Component& comp = core_.models.current().components[std::size_t(r.componentIndex)];
         const auto& d = r.deviation;
         QuadrilateralMeshElement mesh;
@@ -291,7 +291,7 @@ void Session::drawErrorMap() {
 
 void Session::drawLegend() {
     std::vector<Element> e;
-    if (core_.style.errorMapComponent >= 0 && !core_.reductions.empty()) {
+    if (const ReductionRecord* shown = core_.shownReduction(); core_.style.errorMapComponent >= 0 && shown) {
         // A colour bar in the lower left of the geometry area (inside the lower left view with
         // four views): 0 to the scale's top in model units (metres), the scale's kind and the
         // largest error measured above it.
@@ -321,7 +321,7 @@ void Session::drawLegend() {
             e.push_back(colourAttr(ElementType::InteriorColour, errorColour((k + 0.5) / steps)));
             e.push_back(box({x0, bar.y0, x1, bar.y1}));
         }
-        const double top = core_.errorMapTop(), largest = core_.reductions.back().maxError;
+        const double top = core_.errorMapTop(), largest = shown->maxError;
         e.push_back(RealAttribute{ElementType::CharacterHeight, 0.7 * textHeight * unit});
         e.push_back(colourAttr(ElementType::TextColour, {0.9, 0.9, 0.9}));
         e.push_back(AlignmentAttribute{ElementType::TextAlignment, 1, 3});

@@ -87,9 +87,11 @@ public:
     void say(const std::string& text);
     /// An error on the message line and in the log, counted once per input action.
     void fail(const std::string& text);
+    /// The reduction the error map shows: the last one that made the current model, or null.
+    const ReductionRecord* shownReduction() const;
     /// The length the error map shows red at: the fixed scale, or the reduction's largest error.
     double errorMapTop() const;
-    /// ERROR_MAP's message: the scale and the largest error of the last reduction.
+    /// ERROR_MAP's message: the scale and the largest error of the shown reduction.
     std::string errorMapLine() const;
 
     SessionSettings settings;
