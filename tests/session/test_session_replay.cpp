@@ -246,6 +246,11 @@ TEST_CASE("a recorded session replays to the same summary on a screen of another
                "string circle.crv 0.08", "choice DEFINE_POINT"});
         const auto& wing = d.session.models().current().components[1];
         REQUIRE(wing.name == "right_wing");
+        // A miss first (a corner of the first view): recorded as one, since its pixel may show
+        // the model on a screen of another size.
+        const acsynt::PixelBox corner = d.session.layout().viewBox(1, true);
+        d.run({"pick " + std::to_string(corner.x0 + 2) + " " + std::to_string(corner.y0 + 2)});
+        REQUIRE(d.session.message() == "NOTHING PICKED: TRY AGAIN");
         const glm::dvec3 p = geom::evaluate(wing.surface, 0.4, 0.25);
         d.pickAt(p, 1);
         d.pickAt(p, 4);  // the patch in the 3D view
@@ -270,6 +275,8 @@ TEST_CASE("a recorded session replays to the same summary on a screen of another
     CHECK(recording.find("\nchoice ACCEPT\n") != std::string::npos);
     CHECK(recording.find("\nchoice EAST device 2\n") != std::string::npos);
     CHECK(recording.find("\nsnapshot sized\n") != std::string::npos);
+    CHECK(recording.find("\n# nothing picked at pixel ") != std::string::npos);
+    CHECK(recording.find("\npick_nothing\n") != std::string::npos);
     CHECK(recording.find("\npick ") == std::string::npos);
 
     for (const auto& [w, h] : {std::pair{640, 480}, std::pair{1024, 768}}) {

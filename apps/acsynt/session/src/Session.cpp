@@ -43,7 +43,7 @@ Session::Session(SessionSettings settings, InputSource& source)
 Session::~Session() = default;
 
 std::set<std::string> Session::directives() {
-    return {"snapshot", "summary", "hardcopy", "pick_surface", "view", "undo", "redo"};
+    return {"snapshot", "summary", "hardcopy", "pick_surface", "pick_nothing", "view", "undo", "redo"};
 }
 
 void Session::setupWorkstation() {

@@ -158,6 +158,13 @@ void Session::pick(const PickMeasure& measure) {
                      " SCREEN");
                 return;
             }
+        // Recorded as a miss: its pixel may show the model on a screen of another size.
+        if (!history.empty())
+            if (const auto* click = std::get_if<action::Pick>(&history.back().what))
+                recordAs("pick_nothing", "nothing picked at pixel " + number(click->position.x, 5) + " " +
+                                             number(click->position.y, 5) + " of " +
+                                             std::to_string(layout_.width) + " x " +
+                                             std::to_string(layout_.height));
         if (core_.phase != Phase::None) say("NOTHING PICKED: TRY AGAIN");
         return;
     }

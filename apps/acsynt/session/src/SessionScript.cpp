@@ -55,6 +55,15 @@ void Session::applyDirective(const action::Directive& d, const InputAction& a) {
         setView(d.arguments);
         return;
     }
+    if (d.name == "pick_nothing") {
+        if (!d.arguments.empty()) {
+            fail(where + ": '" + a.text + "': expected pick_nothing alone");
+            return;
+        }
+        // A recorded miss is a miss on any screen (the pixel it was at may show the model there).
+        handle(EventReport{core_.workstation->id(), InputClass::Pick, 1, PickMeasure{}, false});
+        return;
+    }
     if (d.name == "undo" || d.name == "redo") {
         if (!d.arguments.empty()) {
             fail(where + ": '" + a.text + "': expected " + d.name + " alone");
