@@ -178,8 +178,14 @@ expect_in export_cad_model.err "transport.step is an IGES or STEP file"
 printf 'choice MODELS\nchoice LIST\nsummary imported\n' >list.session
 run import_step 0 --import transport.step --script list.session --output out_import --size 320x240
 expect_in out_import/imported.txt "model transport (current): 8 components, 376 patches"
-run import_iges 0 --import fighter.igs --script list.session --output out_import_iges --size 320x240
+run import_iges 0 --import fighter.igs --script list.session --output out_import_iges --size 320x240 \
+  --record import.session
 expect_in out_import_iges/imported.txt "model fighter (current): 6 components, 192 patches"
+# The recording holds the import: it replays without --import to the same summary.
+expect_in import.session "choice IMPORT"
+run import_replay 0 --script import.session --output out_import_replay --size 640x480
+cmp -s out_import_iges/imported.txt out_import_replay/imported.txt ||
+  fail "import_replay: $(diff out_import_iges/imported.txt out_import_replay/imported.txt)"
 run import_missing 2 --import nothing.step --script list.session --output out_import_missing
 run import_ext 2 --import transport.acm --script list.session --output out_import_ext
 expect_in import_ext.err "--import unknown extension '.acm'"

@@ -366,7 +366,15 @@ bool Session::importCadFile(const std::filesystem::path& path) {
     } catch (const std::invalid_argument& e) {
         fail(e.what());
     }
-    return core_.failedLines == before;
+    if (core_.failedLines != before) return false;
+    // Recorded as the FILE menu's IMPORT of the same file (absolute: the recording may replay from
+    // elsewhere), so that a recording of a session started with an import replays.
+    const std::size_t at = core_.input ? core_.input->history().size() : 0;
+    const std::string file = std::filesystem::absolute(path).lexically_normal().string();
+    for (const std::string& line : {std::string("choice FILE"), std::string("choice IMPORT"),
+                                    "string " + file, std::string("choice RETURN")})
+        extraLines_.emplace_back(at, line);
+    return true;
 }
 
 void Session::retrieveArchive(const std::filesystem::path& path) {
