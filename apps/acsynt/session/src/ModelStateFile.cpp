@@ -156,6 +156,13 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
         r.fail("more than " + std::to_string(kModelStateMaxPoints) + " control points");
     std::vector<double> knotsU = r.reals(r.lineWithText("knots_u", 2), 1, countU + 10);
     std::vector<double> knotsV = r.reals(r.lineWithText("knots_w", 2), 1, countV + 10);
+    // The patch limit is checked before the points are read and the patches made: a 2048 x 2048
+    // net within the point limit is a quarter of a gigabyte of text and four million patches.
+    // (Knot vectors of the wrong length are left to the surface's own check, below.)
+    if (knotsU.size() == countU + std::size_t(degreeU) + 1 &&
+        knotsV.size() == countV + std::size_t(degreeV) + 1 &&
+        (patches += spans(knotsU, degreeU, countU) * spans(knotsV, degreeV, countV)) > kModelMaxPatches)
+        r.fail("more than " + std::to_string(kModelMaxPatches) + " patches");
     std::vector<glm::dvec3> net;
     std::vector<double> weights;
     for (std::size_t i = 0; i < countU * countV; ++i) {
@@ -171,11 +178,6 @@ Component readComponent(Reader& r, std::size_t& points, std::size_t& patches) {
     } catch (const geom::GeometryError& e) {
         r.fail(std::string("component ") + c.name + ": " + e.what());
     }
-    // The patch limit is checked before the patches are made: a 2048 x 2048 net within the point
-    // limit cuts into four million of them, gigabytes before the model's total was looked at.
-    if ((patches += spans(c.surface.knotsU, c.surface.degreeU, c.surface.countU) *
-                    spans(c.surface.knotsV, c.surface.degreeV, c.surface.countV)) > kModelMaxPatches)
-        r.fail("more than " + std::to_string(kModelMaxPatches) + " patches");
     try {
         c.updatePatches();
     } catch (const geom::GeometryError& e) {
