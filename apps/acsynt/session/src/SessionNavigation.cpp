@@ -44,7 +44,7 @@ void Session::panView(glm::dvec2 pixels) {
     const double radius = std::max(glm::length(hi - lo) / 2, 1e-6);
     const PixelBox b = layout_.viewBox(core_.fourViews ? 4 : 1, core_.fourViews);
     const double aspect = (b.x1 - b.x0) / std::max(b.y1 - b.y0, 1.0);
-    const double half = radius * 0.75 / core_.zoom;
+    const double half = obliqueHalfSize(radius) / core_.zoom;
     const double perPixel = 2 * (aspect >= 1 ? half : half / aspect) / std::max(b.y1 - b.y0, 1.0);
     const glm::dvec3 n = obliqueDirection();
     const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), n));

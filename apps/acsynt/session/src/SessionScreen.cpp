@@ -51,10 +51,11 @@ void Session::restyle() {
 namespace {
 
 /// Half the shorter side of view v's window at zoom 1: 0.9 of the model's bounding sphere in the
-/// three axis views of FOUR_VIEWS (0.75 in an oblique view, whose direction turns), or more
-/// where the model's box, seen along the view's axis, would not fit (a slender model's length).
+/// three axis views of FOUR_VIEWS, or more where the model's box, seen along the view's axis,
+/// would not fit (a slender model's length); the whole sphere in an oblique view, whose direction
+/// turns (a smaller window cut off a model seen along its box's diagonal).
 double viewHalfSize(bool axisView, int v, double aspect, const glm::dvec3& size, double radius) {
-    if (!axisView) return 0.75 * radius;
+    if (!axisView) return obliqueHalfSize(radius);
     // Across and up the screen: plan (y, x), front (y, z), side (x, z); directions in updateViews.
     const glm::dvec2 seen = v == 1   ? glm::dvec2(size.y, size.x)
                             : v == 2 ? glm::dvec2(size.y, size.z)

@@ -25,6 +25,12 @@ inline const char* const sliderNames[] = {"U", "W", "ROTATE", "ZOOM"};
 inline const double sliderLow[] = {0, 0, -180, 0.25};
 inline const double sliderHigh[] = {1, 1, 180, 8};
 
+/// Half the shorter side of an oblique (3D) view's window at zoom 1, for a model whose bounding
+/// sphere has `radius`: the whole sphere, whichever way the view turns.
+inline double obliqueHalfSize(double radius) {
+    return radius;
+}
+
 /// How a menu alternative is shown: underscores as blanks (SURF_REDN keeps its name).
 inline std::string shown(const std::string& item) {
     if (item == "SURF_REDN") return item;
