@@ -176,4 +176,18 @@ TEST_CASE("files a script names stay inside the output directory") {
     CHECK(d.session.failedLines() == 10);
 }
 
+TEST_CASE("an output file needs a name before its extension") {
+    // `summary .` wrote '..txt' and `snapshot .png` '.png.png', hidden files.
+    Driver d("bounds_dot_names");
+    const auto out = session_test::outputDirectory("bounds_dot_names");
+    d.run({"summary .", "snapshot .png", "choice FILE", "choice READ_MODEL", "string fighter.acm",
+           "choice SAVE_MODEL", "string .acs"});
+    CHECK(d.session.message() == "OUTPUT FILE '.acs' HAS NO NAME BEFORE ITS EXTENSION");
+    CHECK(d.session.failedLines() == 3);
+    for (const char* hidden : {"..txt", ".png.png", ".png", ".acs"})
+        CHECK_FALSE(std::filesystem::exists(out / hidden));
+    d.run({"summary a.b", "snapshot x"});
+    CHECK(d.session.failedLines() == 3);
+}
+
 }  // namespace test_session_bounds

@@ -148,6 +148,9 @@ std::filesystem::path Session::outputPath(const std::string& name, bool summary)
             "OUTPUT FILE '" + name +
             "' MUST BE A FILE NAME INSIDE THE OUTPUT DIRECTORY (NOT ABSOLUTE, NO '..')");
     requireNameLengths(path, "OUTPUT FILE");
+    // `summary .` made '..txt' and `snapshot .png` '.png.png': hidden files, not what was meant.
+    if (path.filename().string().front() == '.')
+        throw std::invalid_argument("OUTPUT FILE '" + name + "' HAS NO NAME BEFORE ITS EXTENSION");
     // The session writes these itself at its end, over whatever a command put there.
     const std::filesystem::path plain = path.lexically_normal();
     if ((plain == "summary.txt" && !summary) || plain == "acsynt.log")
