@@ -126,6 +126,11 @@ TEST_CASE("lines end at LF, CR LF or a lone CR, mixed in one file", "[acsynt][fi
     std::vector<std::string> lines;
     for (std::string line; readTextLine(mixed, line);) lines.push_back(line);
     REQUIRE(lines == std::vector<std::string>{"a", "b", "c", "", "d"});
+    // A byte-order mark (as Windows editors write) was read as text: "found '\xEF\xBB\xBF'".
+    std::string withMark = "\xEF\xBB\xBF";
+    withMark.append(goodFile);
+    std::istringstream marked(withMark);
+    CHECK(buildModel(parseAircraftDescription(marked, "marked.acm")).components.size() == 4);
     // A description written on any system reads the same, and its faults keep their line numbers.
     auto withEnds = [](std::string text, const std::string& end) {
         for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + end.size()))

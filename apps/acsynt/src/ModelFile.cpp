@@ -484,15 +484,18 @@ bool readTextLine(std::istream& in, std::string& line) {
         const int c = text.sbumpc();
         if (c == std::char_traits<char>::eof()) {
             in.setstate(line.empty() ? std::ios::eofbit | std::ios::failbit : std::ios::eofbit);
-            return !line.empty();
+            if (line.empty()) return false;
+            break;
         }
-        if (c == '\n') return true;
-        if (c == '\r') {
-            if (text.sgetc() == '\n') text.sbumpc();
-            return true;
+        if (c == '\n' || c == '\r') {
+            if (c == '\r' && text.sgetc() == '\n') text.sbumpc();
+            break;
         }
         line.push_back(static_cast<char>(c));
     }
+    // A UTF-8 byte-order mark (Windows editors begin a file with one) is not part of the line.
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    return true;
 }
 
 AircraftDescription readAircraftDescription(const std::filesystem::path& path) {

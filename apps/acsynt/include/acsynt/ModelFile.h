@@ -57,7 +57,8 @@ AircraftDescription readAircraftDescription(const std::filesystem::path& path);
 void requireRegularFile(const std::filesystem::path& path, const std::string& suffix = {});
 
 /// std::getline for text from any system: a line ends at "\n", "\r\n" or a lone "\r" (the old
-/// Macintosh's files, which getline read as one line).
+/// Macintosh's files, which getline read as one line), and a UTF-8 byte-order mark before it is
+/// dropped.
 bool readTextLine(std::istream& in, std::string& line);
 
 /// Writes a description that parseAircraftDescription reads back to the same values.
