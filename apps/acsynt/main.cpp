@@ -214,10 +214,11 @@ bool checkExport(const Options& o) {
 /// summary and log the session writes into the output folder at its end.
 bool checkRecordTarget(const Options& o) {
     if (o.record.empty()) return true;
-    std::error_code ec;
     const auto same = [&](const std::filesystem::path& other) {
-        return std::filesystem::weakly_canonical(o.record, ec) ==
-               std::filesystem::weakly_canonical(other, ec);
+        std::error_code recordError, otherError;
+        const auto record = std::filesystem::weakly_canonical(o.record, recordError);
+        const auto path = std::filesystem::weakly_canonical(other, otherError);
+        return !recordError && !otherError && record == path;
     };
     std::string clash;
     if (!o.script.empty() && same(o.script)) clash = "is the script it would replace";

@@ -159,6 +159,18 @@ run export_step 0 --export transport.step transport.acm
 [ -s transport.step ] || fail "export_step: no transport.step"
 run export_iges 0 --export fighter.igs fighter.acm
 [ -s fighter.igs ] || fail "export_iges: no fighter.igs"
+# A recording may not overwrite the CAD file the session imports.
+cp fighter.igs mine.igs
+run record_import 2 --import mine.igs --script good.session --record mine.igs --output out_r6 --size 320x240
+expect_in record_import.err "--record mine.igs is the --import file"
+cmp -s fighter.igs mine.igs || fail "record_import: the CAD file was changed"
+# A name a script line cannot hold ('#' starts a comment) is noted in the recording, not
+# written as a line that would import another file.
+mkdir -p 'd#1' && cp fighter.igs 'd#1/fighter.igs'
+run record_hash 0 --import 'd#1/fighter.igs' --script good.session --record hash.session --output out_r7 \
+  --size 320x240
+expect_in hash.session "# began with --import of a file a script line cannot name: "
+grep -q "choice IMPORT" hash.session && fail "record_hash: an IMPORT line for a name cut at '#'"
 run export_ext 2 --export transport.dxf transport.acm
 expect_in export_ext.err "unknown extension '.dxf'"
 run export_missing 2 --export t.step nothing.acm

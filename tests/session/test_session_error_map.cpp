@@ -177,6 +177,22 @@ TEST_CASE("error map: each reduced model shows its own reduction, not only the l
     CHECK(d.session.phigs().store().structure(acsynt::structures::errorMap).elements.empty());
 }
 
+TEST_CASE("error map: a renamed reduced model keeps its map, a deleted one's name does not bring it back") {
+    Driver d("error_map_names");
+    d.run({"choice FILE", "choice READ_MODEL", "string transport.acm", "choice RETURN", "choice SURF_REDN"});
+    reduceFuselage(d, "0.01");
+    d.run({"choice ERROR_MAP", "choice RETURN", "choice MODELS", "choice NAME_MODEL", "string renamed",
+           "choice RETURN", "choice SURF_REDN", "choice ERROR_SCALE", "string 0.01"});
+    CHECK(d.session.message().rfind("ERROR MAP: BLUE 0 TO RED", 0) == 0);
+    CHECK(errorMesh(d.session).vertexColours.size() == d.session.reductions()[0].deviation.error.size());
+    // Deleted, and its name given to another model: that model has no reduction to show.
+    d.run({"choice ERROR_MAP", "choice RETURN", "choice MODELS", "choice DELETE_MODEL", "choice RETURN",
+           "choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice MODELS",
+           "choice NAME_MODEL", "string renamed", "choice RETURN", "choice SURF_REDN", "choice ERROR_MAP"});
+    CHECK(d.session.message() == "NO REDUCTION OF THE CURRENT MODEL TO SHOW");
+    CHECK(d.session.phigs().store().structure(acsynt::structures::errorMap).elements.empty());
+}
+
 TEST_CASE("bad numbers in every prompt are refused with a message and change nothing") {
     Driver d("prompts");
     d.run({"choice FILE", "choice READ_MODEL", "string fighter.acm", "choice RETURN", "choice VIEW",

@@ -253,8 +253,8 @@ TEST_CASE("READ MODEL: numbers a model cannot hold are refused at their line, th
 
 TEST_CASE("READ MODEL: a saved model over the patch limit is refused at the component that passes it") {
     // One bicubic component of 94 x 94 points is 91 x 91 = 8,281 patches, over 8,192: refused
-    // at its knots, before its points are read (a 2048 x 2048 net took 7.7 GB and 49 s before the
-    // total was looked at, and then 4 s of reading), not at a line after every component was read.
+    // at its knots, before its points are read (a net within the point limit may be gigabytes of
+    // patches), not at a line after every component was read.
     auto component = [](const std::string& name, std::size_t n) {
         std::ostringstream out;
         out << "component " << name << " wing 0 0\ncolour 0x1p-1 0x1p-1 0x1p-1\nsurface 3 3 " << n << " " << n

@@ -37,9 +37,11 @@ std::string validName(const std::string& text, std::set<std::string>& taken, con
 /// file has, and exporting its model must not fail on it.
 std::string writableName(const std::string& text) {
     std::string name;
+    bool inSequence = false;  // after a UTF-8 lead byte
     for (unsigned char c : text) {
-        if (c >= 0x80 && c < 0xC0) continue;  // the rest of a UTF-8 sequence
-        name += c < 0x20 || c >= 0x7F ? '_' : char(c);
+        const bool continuation = c >= 0x80 && c < 0xC0;
+        if (!(continuation && inSequence)) name += c < 0x20 || c >= 0x7F ? '_' : char(c);
+        inSequence = c >= 0xC0 || (continuation && inSequence);
     }
     const std::size_t first = name.find_first_not_of(' '), last = name.find_last_not_of(' ');
     return first == std::string::npos ? "curve" : name.substr(first, last - first + 1);

@@ -44,6 +44,9 @@ void deleteModel(MenuContext& s, const std::string&) {
     ModelList::Outcome outcome = c.models.removeCurrent();
     if (outcome.done) {
         std::erase_if(c.mappings, [&](const MappingRecord& m) { return m.model == name; });
+        // A model read or renamed to this name later is not this reduction's.
+        for (ReductionRecord& r : c.reductions)
+            if (r.reducedModel == name) r.modelDeleted = true;
         outcome.message = "MODEL " + name + " DELETED" +
                           (c.models.empty() ? "" : ".  CURRENT MODEL NAME = " + c.models.current().name);
         c.remember(std::move(before), "DELETE MODEL");

@@ -43,9 +43,10 @@ const ReductionRecord* SessionCore::shownReduction() const {
     if (models.empty()) return nullptr;
     // Any reduction made the model shown, not only the session's last one (which may have made
     // another model since).
-    const std::string& current = models.current().name;
+    const Model& current = models.current();
     for (auto r = reductions.rbegin(); r != reductions.rend(); ++r)
-        if (r->reducedModel == current) return &*r;
+        if (!r->modelDeleted && r->reducedModel == current.name)
+            return std::size_t(r->componentIndex) < current.components.size() ? &*r : nullptr;
     return nullptr;
 }
 

@@ -127,6 +127,9 @@ void Session::renameModel(const std::string& input) {
     }
     for (auto& m : core_.mappings)
         if (m.model == old) m.model = core_.models.current().name;
+    // The reduction that made it stays its reduction (ERROR_MAP finds it by name).
+    for (ReductionRecord& r : core_.reductions)
+        if (!r.modelDeleted && r.reducedModel == old) r.reducedModel = core_.models.current().name;
     core_.remember(std::move(before), "NAME MODEL");
     say(outcome.message);
 }
@@ -144,30 +147,27 @@ void Session::reductionAnswer(const std::string& input, bool count) {
         reduce(core_.reductionComponent, 0, std::size_t(*value));
 }
 
-void Session::pick(const PickMeasure& measure) {
-    if (measure.status != InputStatus::Ok) {
+void Session::missedPick() {
+    const auto& history = core_.input->history();
+    if (const auto* click = history.empty() ? nullptr : std::get_if<action::Pick>(&history.back().what)) {
+        const glm::dvec2 at = click->position;
         // A script's pick is a pixel of the screen: one off it is a mistake in the script, not
         // a miss of the model.
-        const auto& history = core_.input->history();
-        if (!history.empty())
-            if (const auto* click = std::get_if<action::Pick>(&history.back().what);
-                click && !(click->position.x >= 0 && click->position.x <= layout_.width &&
-                           click->position.y >= 0 && click->position.y <= layout_.height)) {
-                fail("PICK AT " + number(click->position.x) + " " + number(click->position.y) +
-                     " IS OFF THE " + std::to_string(layout_.width) + " X " + std::to_string(layout_.height) +
-                     " SCREEN");
-                return;
-            }
+        if (!(at.x >= 0 && at.x <= layout_.width && at.y >= 0 && at.y <= layout_.height)) {
+            fail("PICK AT " + number(at.x) + " " + number(at.y) + " IS OFF THE " +
+                 std::to_string(layout_.width) + " X " + std::to_string(layout_.height) + " SCREEN");
+            return;
+        }
         // Recorded as a miss: its pixel may show the model on a screen of another size.
-        if (!history.empty())
-            if (const auto* click = std::get_if<action::Pick>(&history.back().what))
-                recordAs("pick_nothing", "nothing picked at pixel " + number(click->position.x, 5) + " " +
-                                             number(click->position.y, 5) + " of " +
-                                             std::to_string(layout_.width) + " x " +
-                                             std::to_string(layout_.height));
-        if (core_.phase != Phase::None) say("NOTHING PICKED: TRY AGAIN");
-        return;
+        recordAs("pick_nothing", "nothing picked at pixel " + number(at.x, 5) + " " + number(at.y, 5) +
+                                     " of " + std::to_string(layout_.width) + " x " +
+                                     std::to_string(layout_.height));
     }
+    if (core_.phase != Phase::None) say("NOTHING PICKED: TRY AGAIN");
+}
+
+void Session::pick(const PickMeasure& measure) {
+    if (measure.status != InputStatus::Ok) return missedPick();
     // A pad button: its structure is the pad, its pick id the button.
     for (const PickPathItem& level : measure.path)
         if (level.structureId == structures::pad) {

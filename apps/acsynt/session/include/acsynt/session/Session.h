@@ -174,6 +174,8 @@ private:
     /// Why the pad or a valuator cannot move the marker yet: the next step of DEFINE POINT.
     std::string noMarkerYet() const;
     void pick(const phigs::PickMeasure& measure);
+    /// A pick that hit nothing: refused off the screen, else recorded as pick_nothing.
+    void missedPick();
     void valuator(int device, double value);
     void text(const std::string& input);
 

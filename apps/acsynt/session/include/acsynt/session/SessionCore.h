@@ -32,6 +32,7 @@ struct ReductionRecord {
     double maxError = 0;
     geom::SurfaceDeviation deviation;
     int componentIndex = -1;
+    bool modelDeleted = false;  ///< reducedModel was deleted since (the summary still lists it)
 };
 
 /// What UNDO and REDO bring back: the models, the mappings and reductions made on them, the
