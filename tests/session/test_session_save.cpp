@@ -291,6 +291,7 @@ TEST_CASE(
     // and 65-128 were read into models that EXPORT writes and IMPORT refuses.
     Driver d("save_component_count");
     const auto out = session_test::outputDirectory("save_component_count");
+    std::filesystem::create_directories(out);
     const std::size_t models = d.session.models().size();
     for (const char* count : {"0", "65", "128"}) {
         const auto file = out / (std::string("count") + count + ".acs");
