@@ -86,7 +86,7 @@ public:
     /// made the view's bounds infinite).
     double coordinate(const std::string& word) {
         const double v = real(word);
-        if (!(std::abs(v) <= kModelStateMaxCoordinate))
+        if (!isSavableCoordinate(v))
             fail("the coordinate '" + word + "' is beyond " + std::to_string(int(kModelStateMaxCoordinate)));
         return v;
     }

@@ -316,7 +316,7 @@ namespace {
 /// back (a point of a component or of a mapped loop), or empty: such a model is refused whole.
 std::string beyondSavedCoordinates(const ImportedModel& imported) {
     const auto far = [](const glm::dvec3& p) {
-        return !(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kModelStateMaxCoordinate);
+        return !isSavableCoordinate(p.x) || !isSavableCoordinate(p.y) || !isSavableCoordinate(p.z);
     };
     for (const Component& c : imported.model.components)
         if (std::any_of(c.surface.points.begin(), c.surface.points.end(), far))

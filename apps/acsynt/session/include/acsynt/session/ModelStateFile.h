@@ -3,6 +3,7 @@
 #include "acsynt/Model.h"
 #include "acsynt/session/MappingRecord.h"
 
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <istream>
@@ -24,6 +25,11 @@ inline constexpr int modelStateVersion = 1;
 inline constexpr std::size_t kModelStateMaxPoints = 1u << 22;    ///< control points, all components
 inline constexpr std::size_t kModelStateMaxVertices = 1u << 22;  ///< mapped loop vertices, all mappings
 inline constexpr double kModelStateMaxCoordinate = 1e9;          ///< largest coordinate, in model units
+
+/// Whether a model state file holds `v` as a coordinate: finite and within kModelStateMaxCoordinate.
+inline bool isSavableCoordinate(double v) {
+    return std::abs(v) <= kModelStateMaxCoordinate;  // false for NaN
+}
 
 /// Writes `model` and those of `mappings` made on it (MappingRecord::model == model.name):
 /// every number in hexadecimal floating point, so reading back gives the same bits.
