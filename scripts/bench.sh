@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Runs the benchmarks (or takes their output from a directory), keeps each one's final JSON
 # object in bench/results/NAME.json with the date and the machine added, and rewrites the
-# tables of bench/README.md (between <!-- bench:NAME --> and <!-- /bench:NAME -->) from them.
+# tables of bench/README.md and bench/GEOMETRY.md (between <!-- bench:NAME --> and
+# <!-- /bench:NAME -->) from them.
 #
 #   scripts/bench.sh [--build DIR] [--from DIR] [--tables-only] [NAME...]
 #
-# NAME: geom_kernel knot_removal curvemap render store pick blade acsynt_loft demo (default: all).
+# NAME: geom_kernel knot_removal curvemap render store pick blade acsynt_loft exchange demo
+# (default: all).
 # --build DIR    where the bench_* programs are (default build/bench; build them first with
 #                cmake --build build --target bench_NAME).
 # --from DIR     do not run: take DIR/NAME.json, or the last line of DIR/NAME.log or
@@ -16,7 +18,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-all=(geom_kernel knot_removal curvemap render store pick blade acsynt_loft demo)
+all=(geom_kernel knot_removal curvemap render store pick blade acsynt_loft exchange demo)
 build=build/bench from="" tables_only=0 names=()
 while (($#)); do
   case $1 in
@@ -104,6 +106,7 @@ layout() {
     pick) echo "aircraft_1k aircraft_10k tubes|patches picks hits same_hit median_us=median_µs_CPU p99_us=p99_µs_CPU hit_median_us=hits_median_µs wall_median_us=median_µs_wall brute_median_us=every_item_median_µs brute_p99_us=every_item_p99_µs tree_build_ms|same_hit_as_brute_force session_pick_ms session_traversal_ms session_10k_pick_ms session_10k_traversal_ms cpu_seconds wall_seconds" ;;
     blade) echo "-|blade_points blade_ms recursion_ms thesis_program_ms thesis_seconds largest_difference|cpu_seconds wall_seconds" ;;
     acsynt_loft) echo "transport fighter|load_loft_ms=load_and_loft_ms patches|" ;;
+    exchange) echo "split1 split2 split3 split4 split6 split7|patches iges_cpu_s=IGES_cpu_s iges_wall_s=IGES_wall_s iges_us_per_patch=IGES_µs_a_patch step_cpu_s=STEP_cpu_s step_us_per_patch=STEP_µs_a_patch stock_iges_cpu_s=OpenCASCADE_IGES_cpu_s stock_over_iges=OpenCASCADE_/_ours|iges_per_patch_growth step_per_patch_growth cpu_seconds wall_seconds" ;;
     *) echo "bench.sh: no table layout for $1" >&2; return 1 ;;
   esac
 }
@@ -155,12 +158,16 @@ table() {
     }' "$1"
 }
 
-# Rewrites each marked block of the README whose results file exists.
-readme=bench/README.md
+# Rewrites each marked block, in whichever of the tables' files holds it, whose results file exists.
+files=(bench/README.md bench/GEOMETRY.md)
 for name in "${all[@]}"; do
   file=$results/$name.json
   [ -f "$file" ] || continue
-  grep -q "<!-- bench:$name -->" "$readme" || { echo "bench.sh: no <!-- bench:$name --> block in $readme" >&2; exit 1; }
+  readme=""
+  for candidate in "${files[@]}"; do
+    if grep -q "<!-- bench:$name -->" "$candidate"; then readme=$candidate; break; fi
+  done
+  [ -n "$readme" ] || { echo "bench.sh: no <!-- bench:$name --> block in ${files[*]}" >&2; exit 1; }
   block=$(mktemp)
   table "$file" "$(layout "$name")" >"$block"
   awk -v name="$name" -v block="$block" '
@@ -170,4 +177,4 @@ for name in "${all[@]}"; do
   mv "$readme.tmp" "$readme"
   rm -f "$block"
 done
-echo "bench.sh: tables of $readme rewritten" >&2
+echo "bench.sh: tables of ${files[*]} rewritten" >&2

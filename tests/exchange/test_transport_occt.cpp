@@ -14,6 +14,7 @@
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
+#include <Precision.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_StepModel.hxx>
@@ -163,6 +164,15 @@ TEST_CASE("transport: OpenCASCADE's IGES reader finds 376 B-spline faces (144 on
     CHECK(groups == componentNames());
     CHECK(std::string(model->GlobalSection().SendName()->ToCString()) == "transport");
     CHECK(model->GlobalSection().UnitFlag() == 6);  // metres
+    // As OpenCASCADE's own writer fills them: the faces' tolerance, and the largest coordinate of
+    // the shapes' boxes (their control points' bounds, so at least the model's extent).
+    CHECK(model->GlobalSection().Resolution() == Approx(Precision::Confusion()));
+    double box[6];
+    transportBox().Get(box[0], box[1], box[2], box[3], box[4], box[5]);
+    double extent = 0.0;
+    for (double b : box) extent = std::max(extent, std::abs(b));
+    CHECK(model->GlobalSection().MaxCoord() >= extent - 2e-4);
+    CHECK(model->GlobalSection().MaxCoord() <= 1.1 * extent);
 
     opencascade::handle<TDocStd_Document> doc;
     XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", doc);

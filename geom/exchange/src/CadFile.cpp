@@ -2,6 +2,7 @@
 
 #include "CadDocument.h"
 #include "FailureText.h"
+#include "IgesDocumentWriter.h"
 #include "OcctSession.h"
 #include "ShapeBuild.h"
 #include "StepReals.h"
@@ -11,7 +12,6 @@
 #include "geom/exchange/ExchangeError.h"
 #include "geom/exchange/OcctConversion.h"
 
-#include <IGESCAFControl_Writer.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <IGESData_IGESWriter.hxx>
@@ -138,12 +138,11 @@ void writeStep(const opencascade::handle<TDocStd_Document>& document, const std:
 
 void writeIges(const opencascade::handle<TDocStd_Document>& document, const std::string& file,
                const std::string& modelName) {
-    IGESCAFControl_Writer writer;  // unit and faces mode from the session's settings
+    IgesDocumentWriter writer;  // unit and faces mode from the session's settings
     writer.SetNameMode(true);
     writer.SetColorMode(true);
-    if (!writer.Transfer(document))
+    if (!writer.transferDocument(document))
         throw ExchangeError(file, "OpenCASCADE could not translate the model to IGES");
-    writer.ComputeModel();
     // The sender's product name carries the model name (STEP has its assembly for it).
     IGESData_GlobalSection header = writer.Model()->GlobalSection();
     header.SetSendName(new TCollection_HAsciiString(modelName.c_str()));
