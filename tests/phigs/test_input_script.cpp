@@ -2,8 +2,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 namespace test_input_script {
 
@@ -107,4 +110,80 @@ TEST_CASE("input script: format writes lines the parser reads back to the same a
     CHECK(again == text);
 }
 
+TEST_CASE("input script: a string line's text runs to the end of the line, '#' included", "[input]") {
+    const std::string text =
+        "string part#2.crv\n"
+        "  string   a # b  \n"
+        "# string commented out\n"
+        "pick 1 2 # a comment still ends other lines\n"
+        "string#not a string line\n";
+    ScriptInputSource s(text, "session.txt");
+    const auto& a = s.actions();
+    REQUIRE(a.size() == 4);
+    CHECK(std::get<action::String>(a[0].what).text == "part#2.crv");
+    CHECK(std::get<action::String>(a[1].what).text == "a # b");
+    CHECK(std::get<action::Pick>(a[2].what).position == glm::dvec2(1, 2));
+    // "string#..." is no string verb: its '#' starts a comment and leaves the empty string.
+    CHECK(errorOf("string#x\n").empty());
+    CHECK(std::get<action::String>(a[3].what).text.empty());
+}
+
+TEST_CASE("input script: readsBack holds strings and choice names the line can hold, and only those",
+          "[input]") {
+    std::mt19937 random(20261207);
+    const std::string alphabet = "ab #\t\x01\n.-9/\xc3\xbc";
+    auto randomText = [&](std::size_t length) {
+        std::string t;
+        for (std::size_t i = 0; i < length; ++i)
+            t += alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(random)];
+        return t;
+    };
+    auto hasControl = [](const std::string& t) {
+        return std::any_of(t.begin(), t.end(), [](char c) { return (unsigned char)c < 0x20 && c != '\t'; });
+    };
+    auto blankEnd = [](const std::string& t) {
+        return !t.empty() && (t.front() == ' ' || t.front() == '\t' || t.back() == ' ' || t.back() == '\t');
+    };
+    int held = 0, refused = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        InputAction a;
+        bool expected = false;
+        const std::string t = randomText(std::size_t(trial % 9));
+        if (trial % 2 == 0) {
+            // A string: any text but a control character or a blank at an end ('#' too).
+            a.what = action::String{t, 1};
+            expected = !hasControl(t) && !blankEnd(t);
+        } else {
+            // A choice name: one word, no '#', not read as a number (none: choice number 0).
+            a.what = action::Choice{0, 1, t};
+            expected = t.empty() || (t.find_first_of(" \t#") == std::string::npos && !hasControl(t) &&
+                                     t.find_first_not_of("+-0123456789.eE") != std::string::npos);
+        }
+        INFO("line: " << ScriptInputSource::format(a));
+        const bool reads = ScriptInputSource::readsBack(a);
+        CHECK(reads == expected);
+        if (reads) {
+            const ScriptInputSource parsed(ScriptInputSource::format(a), "format");
+            REQUIRE(parsed.actions().size() == 1);
+            CHECK(parsed.actions()[0].what == a.what);
+        }
+        (reads ? held : refused)++;
+    }
+    CHECK(held > 300);
+    CHECK(refused > 300);
+    InputAction other;
+    other.what = action::String{"abc", 2};  // a string line has no device field
+    CHECK_FALSE(ScriptInputSource::readsBack(other));
+    InputAction tooLong;
+    tooLong.what = action::String{std::string(ScriptInputSource::kMaxScriptLineLength, 'x'), 1};
+    CHECK_FALSE(ScriptInputSource::readsBack(tooLong));
+    InputAction notFinite;
+    notFinite.what = action::Valuator{1, std::nan("")};
+    CHECK_FALSE(ScriptInputSource::readsBack(notFinite));
+    InputAction directive;
+    directive.what = action::Directive{"snapshot", {"front#1.png"}};
+    CHECK_FALSE(ScriptInputSource::readsBack(directive));
+    directive.what = action::Directive{"snapshot", {"front.png"}};
+    CHECK(ScriptInputSource::readsBack(directive));
+}
 }  // namespace test_input_script

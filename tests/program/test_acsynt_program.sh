@@ -164,13 +164,14 @@ cp fighter.igs mine.igs
 run record_import 2 --import mine.igs --script good.session --record mine.igs --output out_r6 --size 320x240
 expect_in record_import.err "--record mine.igs is the --import file"
 cmp -s fighter.igs mine.igs || fail "record_import: the CAD file was changed"
-# A name a script line cannot hold ('#' starts a comment) is noted in the recording, not
-# written as a line that would import another file.
-mkdir -p 'd#1' && cp fighter.igs 'd#1/fighter.igs'
-run record_hash 0 --import 'd#1/fighter.igs' --script good.session --record hash.session --output out_r7 \
-  --size 320x240
-expect_in hash.session "# began with --import of a file a script line cannot name: "
-grep -q "choice IMPORT" hash.session && fail "record_hash: an IMPORT line for a name cut at '#'"
+# A name a script line cannot hold (a control character) is noted in the recording, not written
+# as a line that would import another file.
+newline_dir=$(printf 'd\n1')
+mkdir -p "$newline_dir" && cp fighter.igs "$newline_dir/fighter.igs"
+run record_newline 0 --import "$newline_dir/fighter.igs" --script good.session --record newline.session \
+  --output out_r7 --size 320x240
+expect_in newline.session "# began with --import of a file a script line cannot name"
+grep -q "choice IMPORT" newline.session && fail "record_newline: an IMPORT line for a name with a newline"
 run export_ext 2 --export transport.dxf transport.acm
 expect_in export_ext.err "unknown extension '.dxf'"
 run export_missing 2 --export t.step nothing.acm
@@ -198,6 +199,14 @@ expect_in import.session "choice IMPORT"
 run import_replay 0 --script import.session --output out_import_replay --size 640x480
 cmp -s out_import_iges/imported.txt out_import_replay/imported.txt ||
   fail "import_replay: $(diff out_import_iges/imported.txt out_import_replay/imported.txt)"
+# A string line holds '#' (a comment starts anywhere else): a path with one records and replays.
+mkdir -p 'd#1' && cp fighter.igs 'd#1/fighter.igs'
+run record_hash 0 --import 'd#1/fighter.igs' --script list.session --output out_hash --size 320x240 \
+  --record hash.session
+expect_in hash.session "d#1/fighter.igs"
+run replay_hash 0 --script hash.session --output out_hash_replay --size 640x480
+cmp -s out_hash/imported.txt out_hash_replay/imported.txt ||
+  fail "replay_hash: $(diff out_hash/imported.txt out_hash_replay/imported.txt)"
 run import_missing 2 --import nothing.step --script list.session --output out_import_missing
 run import_ext 2 --import transport.acm --script list.session --output out_import_ext
 expect_in import_ext.err "--import unknown extension '.acm'"

@@ -60,6 +60,13 @@ private:
     std::vector<std::string> words_;
 };
 
+/// Whether the line's first word is "string": its text runs to the end of the line.
+bool isStringLine(const std::string& raw) {
+    const std::size_t first = raw.find_first_not_of(" \t");
+    if (first == std::string::npos || raw.compare(first, 6, "string") != 0) return false;
+    return first + 6 == raw.size() || raw[first + 6] == ' ' || raw[first + 6] == '\t';
+}
+
 std::string formatNumber(double v) {
     char buffer[64];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
@@ -93,8 +100,7 @@ ScriptInputSource::ScriptInputSource(const std::string& text, std::string name,
                 throw ScriptError(name_ + ":" + std::to_string(lineNumber) + ": control character " + code +
                                   " at column " + std::to_string(k + 1));
             }
-        const std::size_t hash = raw.find('#');
-        const std::string line = raw.substr(0, hash);
+        const std::string line = isStringLine(raw) ? raw : raw.substr(0, raw.find('#'));
         const auto words = splitWords(line);
         if (words.empty()) continue;
         LineParser p(name_, lineNumber, words);
@@ -237,6 +243,17 @@ std::string ScriptInputSource::format(const InputAction& a) {
             }
         },
         a.what);
+}
+
+bool ScriptInputSource::readsBack(const InputAction& action) {
+    std::set<std::string> directives;
+    if (const auto* d = std::get_if<action::Directive>(&action.what)) directives.insert(d->name);
+    try {
+        const ScriptInputSource parsed(format(action), "format", std::move(directives));
+        return parsed.actions().size() == 1 && parsed.actions()[0].what == action.what;
+    } catch (const ScriptError&) {
+        return false;
+    }
 }
 
 }  // namespace phigs

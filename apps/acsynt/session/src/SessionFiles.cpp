@@ -374,20 +374,21 @@ bool Session::importCadFile(const std::filesystem::path& path) {
     // elsewhere), so that a recording of a session started with an import replays.
     const std::size_t at = core_.input ? core_.input->history().size() : 0;
     const std::string file = std::filesystem::absolute(path).lexically_normal().string();
-    const std::string line = "string " + file;
-    // A script line holds no control character and at most kMaxScriptLineLength bytes, ends at
-    // '#' and loses blanks at its ends: a name it cannot hold is noted in a comment instead (with
-    // the name where the comment can hold it), and the replay needs the import made another way.
+    InputAction typed;
+    typed.what = action::String{file, 1};
+    // A name no script line holds (a control character, a blank at an end, too long) is noted in
+    // a comment instead (with the name where the comment can hold it), and the replay needs the
+    // import made another way.
     constexpr std::size_t limit = ScriptInputSource::kMaxScriptLineLength;
     const bool plain = std::none_of(file.begin(), file.end(), [](char c) { return (unsigned char)c < 0x20; });
-    if (!plain || line.size() > limit || file.find('#') != std::string::npos || file.back() == ' ') {
+    if (!ScriptInputSource::readsBack(typed)) {
         const std::string note = "# began with --import of a file a script line cannot name";
         extraLines_.emplace_back(at,
                                  plain && note.size() + 2 + file.size() <= limit ? note + ": " + file : note);
         return true;
     }
-    for (const std::string& l :
-         {std::string("choice FILE"), std::string("choice IMPORT"), line, std::string("choice RETURN")})
+    for (const std::string& l : {std::string("choice FILE"), std::string("choice IMPORT"),
+                                 ScriptInputSource::format(typed), std::string("choice RETURN")})
         extraLines_.emplace_back(at, l);
     return true;
 }

@@ -188,6 +188,9 @@ std::string Session::recording() const {
         if (i == history.size()) break;
         const auto it = recordedAs_.find(i);
         if (it == recordedAs_.end()) {
+            // A typed string with a blank at an end reads back without it: the comment says so.
+            if (!ScriptInputSource::readsBack(history[i]))
+                out += "# the next line does not hold the action exactly as the operator made it\n";
             out += ScriptInputSource::format(history[i]) + "\n";
             continue;
         }

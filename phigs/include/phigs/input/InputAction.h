@@ -15,44 +15,55 @@ namespace action {
 struct Pick {  ///< a button press at a point: triggers pick and locator devices
     glm::dvec2 position{0.0};
     int device = 1;
+    bool operator==(const Pick&) const = default;
 };
 struct Locate {  ///< a button press meant for the locator only
     glm::dvec2 position{0.0};
     int device = 1;
+    bool operator==(const Locate&) const = default;
 };
 /// The pointer moved without a trigger: only locators in SAMPLE mode follow it.
 struct Move {
     glm::dvec2 position{0.0};
     int device = 1;
+    bool operator==(const Move&) const = default;
 };
 struct Stroke {
     std::vector<glm::dvec2> points;
     int device = 1;
+    bool operator==(const Stroke&) const = default;
 };
 struct Valuator {
     int device = 1;
     double value = 0.0;
+    bool operator==(const Valuator&) const = default;
 };
 struct Choice {
     int choice = 0;
     int device = 1;
     std::string name;  ///< chosen by the alternative's name (a menu entry) when not empty
+    bool operator==(const Choice&) const = default;
 };
 struct String {
     std::string text;
     int device = 1;
+    bool operator==(const String&) const = default;
 };
-struct Break {};  ///< the operator breaks a pending request (status NONE)
+struct Break {  ///< the operator breaks a pending request (status NONE)
+    bool operator==(const Break&) const = default;
+};
 /// Nothing happens for one await period (an AWAIT EVENT times out). A window also ends the
 /// wait this way when its picture was lost (resized, exposed), so the application can redraw
 /// at once; that is no operator action and is not recorded.
 struct Wait {
     bool surfaceChanged = false;
+    bool operator==(const Wait&) const = default;
 };
 /// A line addressed to the application, not to a device (e.g. "snapshot front.png").
 struct Directive {
     std::string name;
     std::vector<std::string> arguments;
+    bool operator==(const Directive&) const = default;
 };
 }  // namespace action
 

@@ -22,6 +22,8 @@ public:
 ///     move X Y [device D]        break                       wait
 ///     <directive> ARGS...        # comment
 ///
+/// `#` starts a comment anywhere but on a string line, whose text (`#` included) runs to the
+/// end of the line less the blanks at its ends.
 /// X and Y are device coordinates (pixels from the top left). Directives are the words the
 /// application registers (e.g. "snapshot"); any other word is an error. The whole script is
 /// parsed up front, so a bad line is reported before anything runs. Limits: kMaxScriptBytes per
@@ -44,8 +46,13 @@ public:
 
     const std::vector<InputAction>& actions() const { return actions_; }
 
-    /// One action as a script line (what the parser reads back to the same action).
+    /// One action as a script line: what the parser reads back to the same action where
+    /// `readsBack` says so.
     static std::string format(const InputAction& action);
+    /// Whether `format(action)` is one line this parser reads back as `action` (not so for a
+    /// string with a blank at an end or a control character, a choice name or directive word
+    /// holding a blank or `#`, a number that is not finite, a line over kMaxScriptLineLength).
+    static bool readsBack(const InputAction& action);
 
 private:
     std::string name_;
