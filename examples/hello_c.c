@@ -18,9 +18,9 @@ int main(int argc, char** argv) {
     Pws_st ws_state = PWS_ST_WSCL;
 
     yellow.type = PMODEL_RGB;
-    yellow.val.direct.x = 1, yellow.val.direct.y = 1, yellow.val.direct.z = 0;
+    yellow.val.general.x = 1, yellow.val.general.y = 1, yellow.val.general.z = 0;
     white.type = PMODEL_RGB;
-    white.val.direct.x = 1, white.val.direct.y = 1, white.val.direct.z = 1;
+    white.val.general.x = 1, white.val.general.y = 1, white.val.general.z = 1;
 
     popen_phigs(NULL, PDEF_MEM_SIZE); /* errors, if any, are written to stderr */
     popen_struct(1);

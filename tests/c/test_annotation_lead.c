@@ -43,8 +43,8 @@ static Lead lead_structure(Pint style, Pint linetype, double width_lo, double wi
     l.offset.delta_x = (Pfloat)(length * cos(angle)), l.offset.delta_y = (Pfloat)(length * sin(angle));
     Pgcolr colour;
     colour.type = PMODEL_RGB;
-    colour.val.direct.x = (Pfloat)l.rgb[0], colour.val.direct.y = (Pfloat)l.rgb[1],
-    colour.val.direct.z = (Pfloat)l.rgb[2];
+    colour.val.general.x = (Pfloat)l.rgb[0], colour.val.general.y = (Pfloat)l.rgb[1],
+    colour.val.general.z = (Pfloat)l.rgb[2];
     pdel_struct(1);
     popen_struct(1);
     pset_line_colr(&colour);

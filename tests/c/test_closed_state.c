@@ -88,7 +88,7 @@ static void inquiries(int closed) {
     Pint_list list = {0, ids};
     Pelem_type elem = PELEM_ALL;
     size_t size = 0;
-    const char* conn = NULL;
+    void* conn = NULL;
     Pdefer_mode defer;
     Pmod_mode mod;
     Pdisp_surf_empty empty;

@@ -169,17 +169,17 @@ static void element_colours(Pstore store) {
     for (Pint m = PMODEL_RGB; m <= PMODEL_HLS; ++m) {
         Pgcolr g;
         g.type = m;
-        g.val.direct.x = (Pfloat)random_real(0, 1), g.val.direct.y = (Pfloat)random_real(0, 1),
-        g.val.direct.z = (Pfloat)random_real(0, 1);
+        g.val.general.x = (Pfloat)random_real(0, 1), g.val.general.y = (Pfloat)random_real(0, 1),
+        g.val.general.z = (Pfloat)random_real(0, 1);
         EXPECT_NO_ERROR(pset_int_colr(&g));
         pinq_cur_elem_content(store, &err, &data);
-        CHECK(err == 0 && data && data->colr.type == m && data->colr.val.direct.x == g.val.direct.x &&
-              data->colr.val.direct.z == g.val.direct.z);
+        CHECK(err == 0 && data && data->colr.type == m && data->colr.val.general.x == g.val.general.x &&
+              data->colr.val.general.z == g.val.general.z);
     }
     {
         Pgcolr g;
         g.type = 5;
-        g.val.direct.x = g.val.direct.y = g.val.direct.z = 0.5f;
+        g.val.general.x = g.val.general.y = g.val.general.z = 0.5f;
         EXPECT_ERROR(pset_int_colr(&g), PE_ENUM_TYPE_INVAL, Pfn_set_int_colr);
     }
     pclose_struct();
@@ -202,15 +202,15 @@ static Pgcolr random_general_colour(void) {
     }
     random_colour(g.type, c);
     if (g.type == PMODEL_RGB) c[0] = random_real(-0.5, 1.5), c[2] = random_real(-0.5, 1.5);
-    g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+    g.val.general.x = (Pfloat)c[0], g.val.general.y = (Pfloat)c[1], g.val.general.z = (Pfloat)c[2];
     return g;
 }
 
 static int same_general_colour(const Pgcolr* a, const Pgcolr* b) {
     if (a->type != b->type) return 0;
     if (a->type == PINDIRECT) return a->val.ind == b->val.ind;
-    return a->val.direct.x == b->val.direct.x && a->val.direct.y == b->val.direct.y &&
-           a->val.direct.z == b->val.direct.z;
+    return a->val.general.x == b->val.general.x && a->val.general.y == b->val.general.y &&
+           a->val.general.z == b->val.general.z;
 }
 
 /* The RGB a workstation draws for a general colour: clamped, an index through the colour table
@@ -225,14 +225,14 @@ static void drawn_rgb(const Pgcolr* g, double out[3]) {
         return;
     }
     {
-        const double c[3] = {g->val.direct.x, g->val.direct.y, g->val.direct.z};
+        const double c[3] = {g->val.general.x, g->val.general.y, g->val.general.z};
         to_rgb(g->type, c, out);
         for (int k = 0; k < 3; ++k) out[k] = clamp01(out[k]);
     }
 }
 
 static int drawn_as(const Pgcolr* realized, const double rgb[3]) {
-    const double got[3] = {realized->val.direct.x, realized->val.direct.y, realized->val.direct.z};
+    const double got[3] = {realized->val.general.x, realized->val.general.y, realized->val.general.z};
     return realized->type == PMODEL_RGB && close3(got, rgb, 1e-4);
 }
 
@@ -356,7 +356,7 @@ static void picture(const char* dir) {
         popen_struct(8);
         pset_int_style(PSTYLE_SOLID);
         g.type = PMODEL_HSV;
-        g.val.direct.x = (Pfloat)hsv[0], g.val.direct.y = (Pfloat)hsv[1], g.val.direct.z = (Pfloat)hsv[2];
+        g.val.general.x = (Pfloat)hsv[0], g.val.general.y = (Pfloat)hsv[1], g.val.general.z = (Pfloat)hsv[2];
         pset_int_colr(&g);
         square(0.1, 0.1);
         pset_int_colr_ind(9);
@@ -490,7 +490,7 @@ static void mapping_picture(const char* dir, Pstore store) {
         {
             Pgcolr g;
             g.type = PMODEL_RGB;
-            g.val.direct.x = (Pfloat)rgb[0], g.val.direct.y = (Pfloat)rgb[1], g.val.direct.z = (Pfloat)rgb[2];
+            g.val.general.x = (Pfloat)rgb[0], g.val.general.y = (Pfloat)rgb[1], g.val.general.z = (Pfloat)rgb[2];
             pset_int_colr(&g);
         }
         square(0.1, 0.1); /* entry 0: TRUE */
@@ -551,18 +551,18 @@ static void every_model_drawn(const char* dir, Pstore store) {
             random_vivid(rgb[m - 1]);
             from_rgb(m, rgb[m - 1], c);
             g.type = m;
-            g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+            g.val.general.x = (Pfloat)c[0], g.val.general.y = (Pfloat)c[1], g.val.general.z = (Pfloat)c[2];
             /* What is drawn: the components as stored (single precision) converted. */
-            given[m - 1][0] = g.val.direct.x, given[m - 1][1] = g.val.direct.y,
-                      given[m - 1][2] = g.val.direct.z;
+            given[m - 1][0] = g.val.general.x, given[m - 1][1] = g.val.general.y,
+                      given[m - 1][2] = g.val.general.z;
             to_rgb(m, given[m - 1], rgb[m - 1]);
             for (int k = 0; k < 3; ++k) rgb[m - 1][k] = clamp01(rgb[m - 1][k]);
             pset_int_colr(&g);
             square(x, 0.05);
             pset_line_colr(&g);
             pinq_cur_elem_content(store, &err, &data);
-            CHECK(err == 0 && data && data->colr.type == m && data->colr.val.direct.x == g.val.direct.x &&
-                  data->colr.val.direct.y == g.val.direct.y && data->colr.val.direct.z == g.val.direct.z);
+            CHECK(err == 0 && data && data->colr.type == m && data->colr.val.general.x == g.val.general.x &&
+                  data->colr.val.general.y == g.val.general.y && data->colr.val.general.z == g.val.general.z);
             {
                 Ppoint3 ends[2] = {{(Pfloat)x, 0.5f, 0}, {(Pfloat)(x + 0.2), 0.5f, 0}};
                 Ppoint_list3 line = {2, ends};
@@ -571,8 +571,8 @@ static void every_model_drawn(const char* dir, Pstore store) {
             for (int k = 0; k < 4; ++k) {
                 corners[k].point.x = (Pfloat)(x + (k == 1 || k == 2 ? 0.2 : 0));
                 corners[k].point.y = (Pfloat)(k >= 2 ? 0.85 : 0.6), corners[k].point.z = 0;
-                corners[k].colr.direct.x = g.val.direct.x, corners[k].colr.direct.y = g.val.direct.y,
-                corners[k].colr.direct.z = g.val.direct.z;
+                corners[k].colr.direct.rgb.red = g.val.general.x, corners[k].colr.direct.rgb.green = g.val.general.y,
+                corners[k].colr.direct.rgb.blue = g.val.general.z;
             }
             vdata.num_vertices = 4, vdata.vertex_data.ptcolrs = corners;
             memset(&fdata, 0, sizeof fdata);

@@ -119,7 +119,7 @@ static void emergency_close_keeps_pictures(const char* dir, const char* errors) 
         Ppoint3 line[2] = {{0.2f, 0.2f, 0}, {0.8f, 0.7f, 0}};
         Ppoint_list3 points = {2, line};
         Pgcolr magenta = {PMODEL_RGB, {0}};
-        magenta.val.direct.x = magenta.val.direct.z = 1;
+        magenta.val.general.x = magenta.val.general.z = 1;
         EXPECT_NO_ERROR(popen_struct(1));
         EXPECT_NO_ERROR(pset_line_colr(&magenta));
         EXPECT_NO_ERROR(ppolyline3(&points));

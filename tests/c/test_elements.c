@@ -91,7 +91,7 @@ static void attributes(void) {
     Pint names[3] = {4, 5, 6};
     Pint_list name_list = {3, names};
     Pelem_data* d;
-    rgb.val.direct.x = 0.25f, rgb.val.direct.y = 0.5f, rgb.val.direct.z = 1.0f;
+    rgb.val.general.x = 0.25f, rgb.val.general.y = 0.5f, rgb.val.general.z = 1.0f;
 
     pset_line_ind(2);
     CHECK(last(PELEM_LINE_IND)->int_data == 2);
@@ -170,15 +170,15 @@ static void attributes(void) {
     CHECK(d->pat_ref_point_vecs.ref_vec[1].delta_z == 2 && d->pat_ref_point_vecs.ref_vec[1].delta_x == 0);
     pset_line_colr(&rgb);
     d = last(PELEM_LINE_COLR);
-    CHECK(d->colr.type == PMODEL_RGB && d->colr.val.direct.y == 0.5f);
+    CHECK(d->colr.type == PMODEL_RGB && d->colr.val.general.y == 0.5f);
     pset_marker_colr(&rgb);
-    CHECK(last(PELEM_MARKER_COLR)->colr.val.direct.x == 0.25f);
+    CHECK(last(PELEM_MARKER_COLR)->colr.val.general.x == 0.25f);
     pset_text_colr(&rgb);
     CHECK(last(PELEM_TEXT_COLR)->colr.type == PMODEL_RGB);
     pset_edge_colr(&(Pgcolr){PINDIRECT, {3}}); /* an index through the general form */
     CHECK(last(PELEM_EDGE_COLR_IND)->int_data == 3);
     pset_int_colr(&rgb);
-    CHECK(last(PELEM_INT_COLR)->colr.val.direct.z == 1.0f);
+    CHECK(last(PELEM_INT_COLR)->colr.val.general.z == 1.0f);
     pset_indiv_asf(PASPECT_EDGE_FLAG, PASF_INDIV);
     d = last(PELEM_INDIV_ASF);
     CHECK(d->asf.id == PASPECT_EDGE_FLAG && d->asf.source == PASF_INDIV);

@@ -63,9 +63,9 @@ static void dashes(void) {
                                       : 0.1 + 0.8 * (i + (next_random() % 800) / 1000.0 - 0.4) / (n - 1));
             vertices[i].point.y = (Pfloat)y, vertices[i].point.z = 0;
             /* bright colours: every one shows against the black background */
-            vertices[i].colr.direct.x = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
-            vertices[i].colr.direct.y = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
-            vertices[i].colr.direct.z = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
+            vertices[i].colr.direct.rgb.red = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
+            vertices[i].colr.direct.rgb.green = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
+            vertices[i].colr.direct.rgb.blue = (Pfloat)(0.5 + (next_random() % 128) / 255.0);
         }
         ends[0] = vertices[0].point, ends[1] = vertices[n - 1].point;
         ends[0].y = ends[1].y = (Pfloat)y_plain;

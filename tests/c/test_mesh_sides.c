@@ -118,10 +118,10 @@ static void check_edge(const Picture* p, double x, double y, double dx, double d
 static void open_mesh_structure(const Sides* s) {
     Pgcolr f, b;
     f.type = b.type = PMODEL_RGB;
-    f.val.direct.x = (Pfloat)s->frontColour[0], f.val.direct.y = (Pfloat)s->frontColour[1],
-    f.val.direct.z = (Pfloat)s->frontColour[2];
-    b.val.direct.x = (Pfloat)s->backColour[0], b.val.direct.y = (Pfloat)s->backColour[1],
-    b.val.direct.z = (Pfloat)s->backColour[2];
+    f.val.general.x = (Pfloat)s->frontColour[0], f.val.general.y = (Pfloat)s->frontColour[1],
+    f.val.general.z = (Pfloat)s->frontColour[2];
+    b.val.general.x = (Pfloat)s->backColour[0], b.val.general.y = (Pfloat)s->backColour[1],
+    b.val.general.z = (Pfloat)s->backColour[2];
     pdel_struct(1);
     popen_struct(1);
     if (s->flip) {

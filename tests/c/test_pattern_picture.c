@@ -32,8 +32,8 @@ static void build_scene(void) {
     Pfloat_size size = {0.2f, 0.2f};
     Ppoint reference = {0.05f, 0.05f};
     Pgcolr red = {PMODEL_RGB, {0}}, blue = {PMODEL_RGB, {0}};
-    red.val.direct.x = 1;
-    blue.val.direct.z = 1;
+    red.val.general.x = 1;
+    blue.val.general.z = 1;
     Prefl_props see_through = {1, 1, 0, {PMODEL_RGB, {0}}, 1, 0.5f};
     popen_struct(1);
     pset_int_style(PSTYLE_PAT);

@@ -14,7 +14,7 @@
 static Pgcolr direct(const double c[3]) {
     Pgcolr g;
     g.type = PMODEL_RGB;
-    g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+    g.val.general.x = (Pfloat)c[0], g.val.general.y = (Pfloat)c[1], g.val.general.z = (Pfloat)c[2];
     return g;
 }
 

@@ -46,7 +46,7 @@ static void build(void) {
     Pcoval facet_colours[2];
     Pfacet_data_arr3 fdata;
     for (int k = 0; k < 6; ++k)
-        cells[k].direct.x = (Pfloat)k / 8, cells[k].direct.y = 0.5f, cells[k].direct.z = 1 - (Pfloat)k / 8;
+        cells[k].direct.rgb.red = (Pfloat)k / 8, cells[k].direct.rgb.green = 0.5f, cells[k].direct.rgb.blue = 1 - (Pfloat)k / 8;
     facet_colours[0].ind = 2, facet_colours[1].ind = 7;
     fdata.colrs = facet_colours;
     lines[0].num_vertices = 3, lines[0].vertex_data.ptcolrs = coloured;
@@ -121,8 +121,8 @@ static void read_back(Pint s) {
         CHECK(d->cell_array_plus.dims.size_x == 3 && d->cell_array_plus.dims.size_y == 2);
         CHECK(d->cell_array_plus.colr_type == PMODEL_RGB && d->cell_array_plus.paral.q.x == 2 &&
               d->cell_array_plus.paral.r.y == 1);
-        CHECK(near(d->cell_array_plus.colr_array[5].direct.x, 5.0 / 8) &&
-              near(d->cell_array_plus.colr_array[5].direct.z, 3.0 / 8));
+        CHECK(near(d->cell_array_plus.colr_array[5].direct.rgb.red, 5.0 / 8) &&
+              near(d->cell_array_plus.colr_array[5].direct.rgb.blue, 3.0 / 8));
     }
     if ((d = content(s, 4, PELEM_SET_OF_FILL_AREA_SET3_DATA))) {
         CHECK(d->sofas3.fflag == PFACET_COLOUR && d->sofas3.eflag == PEDGE_VISIBILITY &&

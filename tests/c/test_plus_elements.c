@@ -21,7 +21,7 @@ static Pelem_data* content(Pint pos, Pelem_type expected) {
 }
 
 static void attributes(void) {
-    Prefl_props props = {0.25f, 0.5f, 0.75f, {PMODEL_RGB, {.direct = {1, 0.5f, 0}}}, 8, 0.125f};
+    Prefl_props props = {0.25f, 0.5f, 0.75f, {PMODEL_RGB, {.general = {1, 0.5f, 0}}}, 8, 0.125f};
     Pgcolr back = {PINDIRECT, {.ind = 3}};
     Pint on[2] = {1, 2}, off[1] = {3};
     Pint_list activation = {2, on}, deactivation = {1, off};
@@ -64,7 +64,7 @@ static void attributes(void) {
     if ((d = content(6, PELEM_REFL_PROPS)))
         CHECK(d->props.ambient_coef == 0.25f && d->props.diffuse_coef == 0.5f &&
               d->props.specular_coef == 0.75f && d->props.specular_colr.type == PMODEL_RGB &&
-              d->props.specular_colr.val.direct.y == 0.5f && d->props.specular_exp == 8 &&
+              d->props.specular_colr.val.general.y == 0.5f && d->props.specular_exp == 8 &&
               d->props.transpar_coef == 0.125f);
     if ((d = content(7, PELEM_BACK_REFL_PROPS))) CHECK(d->props.specular_exp == 8);
     if ((d = content(8, PELEM_BACK_INT_STYLE))) CHECK(d->int_style == PSTYLE_SOLID);
@@ -190,10 +190,10 @@ static void nurbs(void) {
 }
 
 static void with_data(void) {
-    Pptconorm3 square[4] = {{{0, 0, 0}, {.direct = {1, 0, 0}}, {0, 0, 1}},
-                            {{1, 0, 0}, {.direct = {0, 1, 0}}, {0, 0, 1}},
-                            {{1, 1, 0}, {.direct = {0, 0, 1}}, {0, 0, 1}},
-                            {{0, 1, 0}, {.direct = {1, 1, 1}}, {0, 0, 1}}};
+    Pptconorm3 square[4] = {{{0, 0, 0}, {.direct = {.rgb = {1, 0, 0}}}, {0, 0, 1}},
+                            {{1, 0, 0}, {.direct = {.rgb = {0, 1, 0}}}, {0, 0, 1}},
+                            {{1, 1, 0}, {.direct = {.rgb = {0, 0, 1}}}, {0, 0, 1}},
+                            {{0, 1, 0}, {.direct = {.rgb = {1, 1, 1}}}, {0, 0, 1}}};
     Pfacet_vdata_list3 area;
     Pfacet_data3 facet;
     Pptnorm3 strip[3] = {{{0, 0, 0}, {0, 0, 1}}, {{1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {0, 1, 0}}};
@@ -204,7 +204,7 @@ static void with_data(void) {
     Pint err = -1;
     Pelem_data* d;
     area.num_vertices = 4, area.vertex_data.ptconorms = square;
-    facet.conorm.colr.direct.x = 0.5f, facet.conorm.colr.direct.y = 0.25f, facet.conorm.colr.direct.z = 0;
+    facet.conorm.colr.direct.rgb.red = 0.5f, facet.conorm.colr.direct.rgb.green = 0.25f, facet.conorm.colr.direct.rgb.blue = 0;
     facet.conorm.norm.delta_x = 0, facet.conorm.norm.delta_y = 0, facet.conorm.norm.delta_z = 1;
     strip_data.ptnorms = strip;
     mesh_data.points = mesh;
@@ -224,9 +224,9 @@ static void with_data(void) {
     pclose_struct();
     if ((d = content(1, PELEM_FILL_AREA_SET3_DATA))) {
         CHECK(d->fas3_data.fflag == PFACET_COLOUR_NORMAL && d->fas3_data.vflag == PVERT_COORD_COLOUR_NORMAL);
-        CHECK(d->fas3_data.colr_type == PMODEL_RGB && d->fas3_data.fdata.conorm.colr.direct.y == 0.25f);
+        CHECK(d->fas3_data.colr_type == PMODEL_RGB && d->fas3_data.fdata.conorm.colr.direct.rgb.green == 0.25f);
         CHECK(d->fas3_data.nfa == 1 && d->fas3_data.vdata[0].num_vertices == 4);
-        CHECK(d->fas3_data.vdata[0].vertex_data.ptconorms[2].colr.direct.z == 1 &&
+        CHECK(d->fas3_data.vdata[0].vertex_data.ptconorms[2].colr.direct.rgb.blue == 1 &&
               d->fas3_data.vdata[0].vertex_data.ptconorms[2].point.y == 1);
     }
     if ((d = content(2, PELEM_TRI_STRIP3_DATA)))
@@ -245,14 +245,14 @@ static void with_data(void) {
 
 static void representations(const char* pdf) {
     Plight_src_bundle spot, got;
-    Pdcue_bundle cue = {PALLOWED, {0.9f, 0.1f}, {1, 0.25f}, {PMODEL_RGB, {.direct = {0.5f, 0.5f, 0.5f}}}},
+    Pdcue_bundle cue = {PALLOWED, {0.9f, 0.1f}, {1, 0.25f}, {PMODEL_RGB, {.general = {0.5f, 0.5f, 0.5f}}}},
                  cue_got;
     Pint buffer[8], total = -1, err = -1;
     Pint_list inds = {0, buffer};
     memset(&spot, 0, sizeof spot);
     spot.type = PLIGHT_SPOT;
     spot.rec.spot.colr.type = PMODEL_RGB;
-    spot.rec.spot.colr.val.direct.x = 1;
+    spot.rec.spot.colr.val.general.x = 1;
     spot.rec.spot.pos.z = 5;
     spot.rec.spot.dir.delta_z = -1;
     spot.rec.spot.exp = 2;
@@ -267,18 +267,18 @@ static void representations(const char* pdf) {
     pinq_light_src_rep(1, 2, PINQ_SET, &err, &got);
     CHECK(err == 0 && got.type == PLIGHT_SPOT && got.rec.spot.pos.z == 5 && got.rec.spot.exp == 2 &&
           got.rec.spot.coef[1] == 0.5f && near(got.rec.spot.angle, 0.5) &&
-          got.rec.spot.colr.val.direct.x == 1);
+          got.rec.spot.colr.val.general.x == 1);
     pinq_light_src_rep(1, 3, PINQ_REALIZED, &err, &got);
     CHECK(err == 101);
     pinq_list_light_src_inds(1, 8, 0, &err, &inds, &total);
     CHECK(err == 0 && total == 2 && buffer[0] == 1 && buffer[1] == 2);
     cue.colr.type = PINDIRECT, cue.colr.val.ind = -1;
     EXPECT_ERROR(pset_dcue_rep(1, 1, &cue), 113, Pfn_set_dcue_rep);
-    cue.colr.type = PMODEL_RGB, cue.colr.val.direct.x = cue.colr.val.direct.y = cue.colr.val.direct.z = 0.5f;
+    cue.colr.type = PMODEL_RGB, cue.colr.val.general.x = cue.colr.val.general.y = cue.colr.val.general.z = 0.5f;
     EXPECT_NO_ERROR(pset_dcue_rep(1, 1, &cue));
     pinq_dcue_rep(1, 1, PINQ_SET, &err, &cue_got);
     CHECK(err == 0 && cue_got.mode == PALLOWED && cue_got.ref_planes[0] == 0.9f &&
-          cue_got.scaling[1] == 0.25f && cue_got.colr.val.direct.z == 0.5f);
+          cue_got.scaling[1] == 0.25f && cue_got.colr.val.general.z == 0.5f);
     pinq_dcue_rep(1, 0, PINQ_SET, &err, &cue_got);
     CHECK(err == 0 && cue_got.mode == PSUPPRESSED);
     pinq_list_dcue_inds(1, 8, 0, &err, &inds, &total);
@@ -287,7 +287,7 @@ static void representations(const char* pdf) {
     CHECK(err == 54);
     pclose_ws(1);
     pinq_pred_light_src_rep(PWST_PDF, 1, &err, &got);
-    CHECK(err == 0 && got.type == PLIGHT_AMBIENT && got.rec.ambient.colr.val.direct.y == 1);
+    CHECK(err == 0 && got.type == PLIGHT_AMBIENT && got.rec.ambient.colr.val.general.y == 1);
     pinq_pred_light_src_rep(PWST_PDF, 2, &err, &got);
     CHECK(err == 102);
     pinq_pred_light_src_rep(99, 1, &err, &got);

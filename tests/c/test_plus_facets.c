@@ -58,8 +58,8 @@ static Pcoval random_colour(Pint colr_type) {
     if (colr_type == PINDIRECT)
         c.ind = below(16);
     else
-        c.direct.x = (Pfloat)below(9) / 8, c.direct.y = (Pfloat)below(9) / 8,
-        c.direct.z = (Pfloat)below(9) / 8;
+        c.direct.rgb.red = (Pfloat)below(9) / 8, c.direct.rgb.green = (Pfloat)below(9) / 8,
+        c.direct.rgb.blue = (Pfloat)below(9) / 8;
     return c;
 }
 
@@ -126,7 +126,7 @@ static void insert_mesh(const Mesh* m) {
 
 static int same_colour(Pcoval a, Pcoval b, Pint colr_type) {
     if (colr_type == PINDIRECT) return a.ind == b.ind;
-    return a.direct.x == b.direct.x && a.direct.y == b.direct.y && a.direct.z == b.direct.z;
+    return a.direct.rgb.red == b.direct.rgb.red && a.direct.rgb.green == b.direct.rgb.green && a.direct.rgb.blue == b.direct.rgb.blue;
 }
 static int same_vec(Pvec3 a, Pvec3 b) {
     return a.delta_x == b.delta_x && a.delta_y == b.delta_y && a.delta_z == b.delta_z;

@@ -58,7 +58,7 @@ static void build_surface(void) {
     trim.visible = PEDGE_OFF, trim.rationality = PNON_RATIONAL, trim.order = 2;
     trim.knots.num_floats = 8, trim.knots.floats = tk, trim.tmin = 1, trim.tmax = 4;
     trim.cpts.point2d.num_points = 6, trim.cpts.point2d.points = loop_points;
-    red.val.direct.x = 1;
+    red.val.general.x = 1;
     popen_struct(1);
     pset_int_style(PSTYLE_SOLID);
     pset_int_colr(&red);

@@ -24,8 +24,8 @@ static Pgcolr random_colour(void) {
         c.val.ind = random_int(0, 20);
     } else {
         c.type = PMODEL_RGB;
-        c.val.direct.x = random_real(0, 1), c.val.direct.y = random_real(0, 1),
-        c.val.direct.z = random_real(0, 1);
+        c.val.general.x = random_real(0, 1), c.val.general.y = random_real(0, 1),
+        c.val.general.z = random_real(0, 1);
     }
     return c;
 }
@@ -33,8 +33,8 @@ static Pgcolr random_colour(void) {
 static int same_colour(Pgcolr a, Pgcolr b) {
     if (a.type != b.type) return 0;
     if (a.type == PINDIRECT) return a.val.ind == b.val.ind;
-    return near(a.val.direct.x, b.val.direct.x) && near(a.val.direct.y, b.val.direct.y) &&
-           near(a.val.direct.z, b.val.direct.z);
+    return near(a.val.general.x, b.val.general.x) && near(a.val.general.y, b.val.general.y) &&
+           near(a.val.general.z, b.val.general.z);
 }
 
 /* What is drawn: an index the colour table does not define as index 1. */
@@ -208,8 +208,8 @@ static void one_pattern(Pint index, Pstore store) {
         if (set.type == PINDIRECT)
             cells[i].ind = random_int(0, 12);
         else
-            cells[i].direct.x = random_real(0, 1), cells[i].direct.y = random_real(0, 1),
-            cells[i].direct.z = random_real(0, 1);
+            cells[i].direct.rgb.red = random_real(0, 1), cells[i].direct.rgb.green = random_real(0, 1),
+            cells[i].direct.rgb.blue = random_real(0, 1);
     }
     EXPECT_NO_ERROR(pset_pat_rep_plus(1, index, &set));
     for (int realize = 0; realize <= 1; ++realize) {
@@ -220,8 +220,8 @@ static void one_pattern(Pint index, Pstore store) {
             if (set.type == PINDIRECT)
                 CHECK(got->colr_array[i].ind == (realize && cells[i].ind > 7 ? 1 : cells[i].ind));
             else
-                CHECK(near(got->colr_array[i].direct.x, cells[i].direct.x) &&
-                      near(got->colr_array[i].direct.z, cells[i].direct.z));
+                CHECK(near(got->colr_array[i].direct.rgb.red, cells[i].direct.rgb.red) &&
+                      near(got->colr_array[i].direct.rgb.blue, cells[i].direct.rgb.blue));
         }
     }
     pinq_pat_rep(1, index, PINQ_SET, store, &err, &plain);
@@ -480,7 +480,7 @@ static void errors(Pstore store) {
     line.colr.val.ind = -1;
     EXPECT_ERROR(pset_line_rep_plus(1, 5, &line), 113, Pfn_set_line_rep_plus);
     line.colr.type = PMODEL_RGB;
-    line.colr.val.direct.x = 1.5f;
+    line.colr.val.general.x = 1.5f;
     EXPECT_ERROR(pset_line_rep_plus(1, 5, &line), 136, Pfn_set_line_rep_plus);
     EXPECT_ERROR(pset_line_rep_plus(1, 5, NULL), -204, Pfn_set_line_rep_plus);
     EXPECT_ERROR(pset_line_rep_plus(4, 5, &line), 54, Pfn_set_line_rep_plus);
@@ -508,7 +508,7 @@ static void errors(Pstore store) {
         EXPECT_ERROR(pset_int_rep_plus(1, 5, &bad), 113, Pfn_set_int_rep_plus);
         bad = interior;
         bad.back_refl_props.specular_colr.type = PMODEL_RGB;
-        bad.back_refl_props.specular_colr.val.direct.y = -0.5f;
+        bad.back_refl_props.specular_colr.val.general.y = -0.5f;
         EXPECT_ERROR(pset_int_rep_plus(1, 5, &bad), 136, Pfn_set_int_rep_plus);
         bad = interior;
         bad.refl_props.specular_colr.type = 7;
@@ -543,8 +543,8 @@ static void errors(Pstore store) {
     cells[3].ind = -1;
     EXPECT_ERROR(pset_pat_rep_plus(1, 4, &pattern), 113, Pfn_set_pat_rep_plus);
     pattern.type = PMODEL_RGB;
-    for (int i = 0; i < 4; ++i) cells[i].direct.x = cells[i].direct.y = cells[i].direct.z = 0.5f;
-    cells[2].direct.z = 2.0f;
+    for (int i = 0; i < 4; ++i) cells[i].direct.rgb.red = cells[i].direct.rgb.green = cells[i].direct.rgb.blue = 0.5f;
+    cells[2].direct.rgb.blue = 2.0f;
     EXPECT_ERROR(pset_pat_rep_plus(1, 4, &pattern), 136, Pfn_set_pat_rep_plus);
     pattern.colr_array = NULL;
     EXPECT_ERROR(pset_pat_rep_plus(1, 4, &pattern), -204, Pfn_set_pat_rep_plus);
@@ -612,10 +612,10 @@ static void drawn_from_plus_bundles(void) {
     Pline_bundle_plus line = {PLINE_SOLID, 4.0f, {PMODEL_RGB, {0}}, PSD_NONE, PCURV_WS_DEP, 1.0f};
     Pint_bundle_plus interior = random_interior();
     Pline_bundle red = {PLINE_SOLID, 4.0f, 2};
-    line.colr.val.direct.y = 1.0f;
+    line.colr.val.general.y = 1.0f;
     interior.style = PSTYLE_SOLID;
     interior.colr.type = PMODEL_RGB;
-    interior.colr.val.direct.x = interior.colr.val.direct.y = 0.0f, interior.colr.val.direct.z = 1.0f;
+    interior.colr.val.general.x = interior.colr.val.general.y = 0.0f, interior.colr.val.general.z = 1.0f;
     interior.refl_eqn = PREFL_NONE;
     popen_struct(1);
     pset_line_ind(3);

@@ -35,7 +35,7 @@ static int pixel_is(const Picture* p, double x, double y, const double* rgb, con
 static Pgcolr direct(const double c[3]) {
     Pgcolr g;
     g.type = PMODEL_RGB;
-    g.val.direct.x = (Pfloat)c[0], g.val.direct.y = (Pfloat)c[1], g.val.direct.z = (Pfloat)c[2];
+    g.val.general.x = (Pfloat)c[0], g.val.general.y = (Pfloat)c[1], g.val.general.z = (Pfloat)c[2];
     return g;
 }
 
@@ -202,10 +202,10 @@ static void line_shading(void) {
         vertices[0].point.x = 0.1f, vertices[1].point.x = 0.9f;
         vertices[0].point.y = vertices[1].point.y = (Pfloat)y;
         vertices[0].point.z = vertices[1].point.z = 0;
-        vertices[0].colr.direct.x = (Pfloat)c0[0], vertices[0].colr.direct.y = (Pfloat)c0[1],
-        vertices[0].colr.direct.z = (Pfloat)c0[2];
-        vertices[1].colr.direct.x = (Pfloat)c1[0], vertices[1].colr.direct.y = (Pfloat)c1[1],
-        vertices[1].colr.direct.z = (Pfloat)c1[2];
+        vertices[0].colr.direct.rgb.red = (Pfloat)c0[0], vertices[0].colr.direct.rgb.green = (Pfloat)c0[1],
+        vertices[0].colr.direct.rgb.blue = (Pfloat)c0[2];
+        vertices[1].colr.direct.rgb.red = (Pfloat)c1[0], vertices[1].colr.direct.rgb.green = (Pfloat)c1[1],
+        vertices[1].colr.direct.rgb.blue = (Pfloat)c1[2];
         line.num_vertices = 2, line.vertex_data.ptcolrs = vertices;
         pdel_struct(1);
         popen_struct(1);
@@ -388,13 +388,13 @@ static void flat_colours(void) {
         for (int i = 0; i < 9; ++i) {
             double c[3];
             random_rgb(c);
-            v[i].colr.direct.x = (Pfloat)c[0], v[i].colr.direct.y = (Pfloat)c[1],
-            v[i].colr.direct.z = (Pfloat)c[2];
+            v[i].colr.direct.rgb.red = (Pfloat)c[0], v[i].colr.direct.rgb.green = (Pfloat)c[1],
+            v[i].colr.direct.rgb.blue = (Pfloat)c[2];
             v[i].point.z = 0.5f;
         }
         for (int k = 0; k < 4; ++k)
-            facets[k].direct.x = (Pfloat)facetColour[0], facets[k].direct.y = (Pfloat)facetColour[1],
-            facets[k].direct.z = (Pfloat)facetColour[2];
+            facets[k].direct.rgb.red = (Pfloat)facetColour[0], facets[k].direct.rgb.green = (Pfloat)facetColour[1],
+            facets[k].direct.rgb.blue = (Pfloat)facetColour[2];
         pdel_struct(1);
         popen_struct(1);
         pset_int_style(PSTYLE_SOLID);

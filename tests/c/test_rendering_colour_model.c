@@ -125,8 +125,8 @@ static int draw(Picture p[2], const double* cue, double cue_scale) {
             d.ref_planes[0] = 1, d.ref_planes[1] = 0;
             d.scaling[0] = d.scaling[1] = (Pfloat)cue_scale;
             d.colr.type = PMODEL_RGB;
-            d.colr.val.direct.x = (Pfloat)cue[0], d.colr.val.direct.y = (Pfloat)cue[1],
-            d.colr.val.direct.z = (Pfloat)cue[2];
+            d.colr.val.general.x = (Pfloat)cue[0], d.colr.val.general.y = (Pfloat)cue[1],
+            d.colr.val.general.z = (Pfloat)cue[2];
             EXPECT_NO_ERROR(pset_dcue_rep(ws, 1, &d));
         }
         EXPECT_NO_ERROR(ppost_struct(ws, 1, 0.5f));
@@ -176,8 +176,8 @@ static void coloured_triangle(Pint model, double corners[3][2], double colours[3
     props.specular_colr.type = PMODEL_RGB;
     for (int i = 0; i < 3; ++i) {
         v[i].point.x = (Pfloat)corners[i][0], v[i].point.y = (Pfloat)corners[i][1], v[i].point.z = 0;
-        v[i].colr.direct.x = (Pfloat)colours[i][0], v[i].colr.direct.y = (Pfloat)colours[i][1],
-        v[i].colr.direct.z = (Pfloat)colours[i][2];
+        v[i].colr.direct.rgb.red = (Pfloat)colours[i][0], v[i].colr.direct.rgb.green = (Pfloat)colours[i][1],
+        v[i].colr.direct.rgb.blue = (Pfloat)colours[i][2];
         v[i].norm.delta_x = 0, v[i].norm.delta_y = 0, v[i].norm.delta_z = 1;
     }
     vdata.num_vertices = 3, vdata.vertex_data.ptconorms = v;
@@ -257,8 +257,8 @@ static void depth_cued_triangles(void) {
         }
         interpolate(model, colours, weights, 2, expected);
         g.type = PMODEL_RGB;
-        g.val.direct.x = (Pfloat)colours[0][0], g.val.direct.y = (Pfloat)colours[0][1],
-        g.val.direct.z = (Pfloat)colours[0][2];
+        g.val.general.x = (Pfloat)colours[0][0], g.val.general.y = (Pfloat)colours[0][1],
+        g.val.general.z = (Pfloat)colours[0][2];
         pdel_struct(1);
         popen_struct(1);
         pset_int_style(PSTYLE_SOLID);

@@ -42,7 +42,7 @@ static void build(double tri[3][2], Pedge_flag visible, Pedge_flag edges) {
     trim.approx_type = PCURV_WS_DEP;
     trim.knots.num_floats = 6, trim.knots.floats = tk;
     trim.cpts.point2d.num_points = 4, trim.cpts.point2d.points = corners;
-    green.val.direct.y = 1;
+    green.val.general.y = 1;
     pdel_struct(1);
     popen_struct(1);
     pset_int_style(PSTYLE_EMPTY);

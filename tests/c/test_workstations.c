@@ -129,7 +129,7 @@ static void posting_and_inquiries(void) {
     Pint_list open = {0, ids};
     Pposted_struct postings[4];
     Pposted_struct_list posted = {0, postings};
-    const char* conn = NULL;
+    void* conn = NULL;
     Pstore store = NULL;
     pcreate_store(&err, &store);
     CHECK(err == 0);
@@ -139,7 +139,7 @@ static void posting_and_inquiries(void) {
     pinq_open_wss(4, 0, &err, &open, &total);
     CHECK(err == 0 && total == 2 && open.num_ints == 2 && ids[0] == 1 && ids[1] == 3);
     pinq_ws_conn_type(3, store, &err, &conn, &type);
-    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn && strcmp(conn, svg_file) == 0);
+    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn && strcmp((const char*)conn, svg_file) == 0);
     pinq_ws_conn_type(2, store, &err, &conn, &type);
     CHECK(err == 54);
 

@@ -170,7 +170,7 @@ static void specific_types(void) {
     Pws_cat cat;
     Pdisp_space_size3 generic, specific;
     Pline_bundle pred, pred_specific;
-    const char* conn = NULL;
+    void* conn = NULL;
     Pstore store = NULL;
     char second[600];
     snprintf(second, sizeof second, "%s.second.svg", svg_file);

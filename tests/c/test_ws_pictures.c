@@ -28,8 +28,8 @@ static void build_scene(void) {
     Ppoint3 line[2] = {{0.7f, 0.2f, 0}, {0.7f, 0.8f, 0}};
     Ppoint_list3 area = {4, square}, polyline = {2, line};
     Pgcolr red = {PMODEL_RGB, {0}}, green = {PMODEL_RGB, {0}};
-    red.val.direct.x = 1;
-    green.val.direct.y = 1;
+    red.val.general.x = 1;
+    green.val.general.y = 1;
     popen_struct(1);
     pset_int_style(PSTYLE_SOLID);
     pset_int_colr(&red);
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
         Ppoint3 square[4] = {{0.45f, 0.7f, 0}, {0.55f, 0.7f, 0}, {0.55f, 0.8f, 0}, {0.45f, 0.8f, 0}};
         Ppoint_list3 area = {4, square};
         Pgcolr blue = {PMODEL_RGB, {0}};
-        blue.val.direct.z = 1;
+        blue.val.general.z = 1;
         popen_struct(1);
         pset_int_colr(&blue);
         pfill_area3(&area);
@@ -121,8 +121,8 @@ int main(int argc, char** argv) {
         Ppoint square_points[4] = {{0.3f, 0.2f}, {0.6f, 0.2f}, {0.6f, 0.4f}, {0.3f, 0.4f}};
         Ppoint_list line = {2, line_points}, square = {4, square_points};
         Pgcolr white = {PMODEL_RGB, {0}}, yellow = {PMODEL_RGB, {0}};
-        white.val.direct.x = white.val.direct.y = white.val.direct.z = 1;
-        yellow.val.direct.x = yellow.val.direct.y = 1;
+        white.val.general.x = white.val.general.y = white.val.general.z = 1;
+        yellow.val.general.x = yellow.val.general.y = 1;
         open_with_handler(errors);
         popen_struct(2);
         pset_line_colr(&white);

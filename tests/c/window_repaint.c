@@ -214,7 +214,7 @@ int main(int argc, char** argv) {
     Ppoint points[4] = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.9f, 0.9f}, {0.1f, 0.9f}};
     Ppoint_list square = {4, points};
     Pgcolr red = {PMODEL_RGB, {0}};
-    red.val.direct.x = 1;
+    red.val.general.x = 1;
     popen_struct(1);
     pset_int_style(PSTYLE_SOLID);
     pset_int_colr(&red);

@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     pclose_struct();
 
     Pint err = -1, type = 0;
-    const char* conn = NULL;
+    void* conn = NULL;
     Pstore store = NULL;
     pcreate_store(&err, &store);
     EXPECT_NO_ERROR(popen_ws(1, NULL, PWST_WINDOW));
@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
     EXPECT_NO_ERROR(pupd_ws(1, PFLAG_PERFORM));
     EXPECT_NO_ERROR(popen_ws(2, display, PWST_WINDOW)); /* the same display by name */
     pinq_ws_conn_type(2, store, &err, &conn, &type);
-    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn && strcmp(conn, display) == 0);
+    CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn && strcmp((const char*)conn, display) == 0);
     pinq_ws_conn_type(1, store, &err, &conn, &type);
     CHECK(err == 0 && type >= PWST_SPECIFIC_BASE && conn == NULL);
     {

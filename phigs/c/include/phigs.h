@@ -21,6 +21,124 @@ typedef long Plong;
 #define PDEF_MEM_SIZE ((size_t)(-1))
 #define PDEF_ERR_FILE ((char*)0)
 
+/* ---- error numbers (ISO 9592 and PHIGS PLUS, by the binding's names) */
+#define PE_NO_ERROR 0
+#define PE_NOT_PHCL 1
+#define PE_NOT_PHOP 2
+#define PE_NOT_WSOP 3
+#define PE_NOT_CL 4
+#define PE_NOT_STOP 5
+#define PE_NOT_STCL 6
+#define PE_NOT_AROP 7
+#define PE_BAD_CONN_ID 50
+#define PE_WS_TYPE 51
+#define PE_BAD_WS_TYPE 52
+#define PE_DUP_WS_ID 53
+#define PE_WS_NOT_OPEN 54
+#define PE_NO_OPEN_WS 55
+#define PE_WS_NOT_MO 56
+#define PE_WS_MI 57
+#define PE_WS_NOT_MI 58
+#define PE_WS_NO_OUTPUT 59
+#define PE_WS_NOT_OUTIN 60
+#define PE_WS_NO_INPUT 61
+#define PE_WS_NOT_OUT 62
+#define PE_MAX_WS 63
+#define PE_NO_GDP 64
+#define PE_BUN_IND_LT_1 100
+#define PE_REP_UNDEF 101
+#define PE_REP_NOT_PREDEF 102
+#define PE_MAX_BUN 103
+#define PE_BAD_LINETYPE 104
+#define PE_BAD_MARKER_TYPE 105
+#define PE_BAD_FONT 106
+#define PE_BAD_EDGETYPE 107
+#define PE_BAD_INT_STYLE 108
+#define PE_NO_PAT 109
+#define PE_BAD_COLR_MODEL 110
+#define PE_BAD_HLHSR_MODE 111
+#define PE_PAT_IND_LT_1 112
+#define PE_COLR_IND_LT_0 113
+#define PE_VIEW_IND_LT_0 114
+#define PE_VIEW_IND_LT_1 115
+#define PE_BAD_PAT_DIM 116
+#define PE_BAD_COLR_DIM 117
+#define PE_BAD_COLR 118
+#define PE_MAX_VIEW 150
+#define PE_INVALID_WINDOW 151
+#define PE_INVALID_VIEWPORT 152
+#define PE_INVALID_CLIP 153
+#define PE_BAD_CLIP 154
+#define PE_BAD_PROJ_VIEWPORT 155
+#define PE_BAD_WS_WINDOW 156
+#define PE_BAD_WS_VIEWPORT 157
+#define PE_BAD_PLANES 158
+#define PE_BAD_VPN 159
+#define PE_BAD_VUP 160
+#define PE_BAD_VUP_VPN 161
+#define PE_BAD_PRP 162
+#define PE_PRP_VIEW_PLANE 163
+#define PE_FRONT_BACK 164
+#define PE_IGNORE_STRUCTS 200
+#define PE_BAD_STRUCT 201
+#define PE_BAD_ELEMENT 202
+#define PE_BAD_PATH 203
+#define PE_BAD_CEILING_IND 204
+#define PE_NO_LABEL 205
+#define PE_NO_LABELS 206
+#define PE_BAD_PATH_DEPTH 207
+#define PE_BAD_DISP_PRI 208
+#define PE_NO_DEVICE 250
+#define PE_NOT_REQUEST 251
+#define PE_NOT_SAMPLE 252
+#define PE_BAD_PET 253
+#define PE_INVALID_ECHO 254
+#define PE_BAD_ECHO 255
+#define PE_QUEUE_OFLOW 256
+#define PE_NO_QUEUE_OFLOW 257
+#define PE_OFLOW_NO_GO 258
+#define PE_BAD_CLASS 259
+#define PE_BAD_DATA_REC 260
+#define PE_INVALID_VALUE 261
+#define PE_STROKE_BUF_SIZE 262
+#define PE_STRING_BUF_SIZE 263
+#define PE_ILLEGAL_ITEM_TYPE 300
+#define PE_INVALID_ITEM_LENGTH 301
+#define PE_METAFILE_EMPTY 302
+#define PE_INVALID_ITEM 303
+#define PE_BAD_ITEM_TYPE 304
+#define PE_BAD_ITEM_REC 305
+#define PE_MAX_ITEM_LENGTH 306
+#define PE_USER_ITEM 307
+#define PE_ESCAPE_NOT_AVAIL 350
+#define PE_BAD_ESCAPE_DATA 351
+#define PE_AR_CANT_OPEN 400
+#define PE_MAX_AR 401
+#define PE_DUP_AR_ID 402
+#define PE_BAD_AR 403
+#define PE_AR_NOT_OPEN 404
+#define PE_NAME_CONFLICT 405
+#define PE_AR_FULL 406
+#define PE_AR_NO_STRUCT 407
+#define PE_AR_NO_STRUCT_EMPTY 408
+#define PE_BAD_ERROR_FILE 450
+#define PE_ORDER_LT_1 500
+#define PE_CTL_POINTS 501
+#define PE_BAD_ORDER 502
+#define PE_BAD_KNOTS 503
+#define PE_BAD_VERT_INDX 504
+#define PE_DEGEN_FAS 505
+#define PE_BAD_PARAM_RANGE 506
+#define PE_BAD_EDGE_FLAG 513
+#define PE_OFLOW_PHIGS 900
+#define PE_OFLOW_CSS 901
+#define PE_IO_ERROR_READ 902
+#define PE_IO_ERROR_WRITE 903
+#define PE_IO_ERROR_TO_WS 904
+#define PE_IO_ERROR_FROM_WS 905
+#define PE_IO_ERROR_LIB 906
+#define PE_IO_ERROR_WDT 907
+#define PE_ARITHMETIC_ERROR 908
 /* ---- C binding error numbers (ISO 9593-4) */
 #define PE_START_IND_INVAL 2200     /* start index out of range */
 #define PE_LIST_LENGTH_LT_ZERO 2201 /* the length of the application's list is negative */
@@ -378,6 +496,27 @@ typedef struct {
     Pfloat back_plane;
     Pfloat front_plane;
 } Pview_map3;
+/* A colour's three components in one of the colour models; each member is three Pfloats at the
+ * same places, so any member reads the components of any model. */
+typedef struct {
+    Pfloat red, green, blue;
+} Prgb;
+typedef struct {
+    Pfloat cieluv_x, cieluv_y, cieluv_y_lum;
+} Pcieluv;
+typedef struct {
+    Pfloat hue, lightness, satur;
+} Phls;
+typedef struct {
+    Pfloat hue, satur, value;
+} Phsv;
+typedef union {
+    Prgb rgb;
+    Pcieluv cieluv;
+    Phls hls;
+    Phsv hsv;
+    Pdata unsupp;
+} Pcolr_rep;
 /* A general colour (PHIGS PLUS): an index, or a direct colour whose x, y, z are the components
  * in colour model `type` (PMODEL_RGB: red, green, blue; PMODEL_CIELUV: u', v', Y; PMODEL_HSV:
  * hue, saturation, value; PMODEL_HLS: hue, lightness, saturation; see pset_colr_model). */
@@ -387,7 +526,7 @@ typedef struct {
         Pint ind;
         struct {
             Pfloat x, y, z;
-        } direct;
+        } general;
     } val;
 } Pgcolr;
 #define PINDIRECT 0
@@ -513,9 +652,7 @@ typedef struct {
 #define PVERT_COORD_COLOUR_NORMAL 3
 typedef union {
     Pint ind;
-    struct {
-        Pfloat x, y, z;
-    } direct;
+    Pcolr_rep direct; /* the components in the primitive's colour model (any member reads them) */
 } Pcoval;
 typedef struct {
     Pcoval colr;
@@ -800,133 +937,131 @@ typedef struct {
  * pinq_disp_space_size3); popen_ws opens its generic type. Closed, it is error 52. */
 #define PWST_SPECIFIC_BASE 4096
 
-/* ISO function identifiers (the error handler's func_num). */
-enum {
-    Pfn_open_phigs = 0,
-    Pfn_close_phigs = 1,
-    Pfn_open_ws = 2,
-    Pfn_close_ws = 3,
-    Pfn_redraw_all_structs = 4,
-    Pfn_upd_ws = 5,
-    Pfn_message = 7,
-    Pfn_polyline3 = 8,
-    Pfn_polyline = 9,
-    Pfn_polymarker3 = 10,
-    Pfn_polymarker = 11,
-    Pfn_text3 = 12,
-    Pfn_text = 13,
-    Pfn_anno_text_rel3 = 14,
-    Pfn_anno_text_rel = 15,
-    Pfn_fill_area3 = 16,
-    Pfn_fill_area = 17,
-    Pfn_fill_area_set3 = 18,
-    Pfn_fill_area_set = 19,
-    Pfn_cell_array3 = 20,
-    Pfn_cell_array = 21,
-    Pfn_gdp3 = 22,
-    Pfn_gdp = 23,
-    Pfn_set_line_ind = 24,
-    Pfn_set_marker_ind = 25,
-    Pfn_set_text_ind = 26,
-    Pfn_set_int_ind = 27,
-    Pfn_set_edge_ind = 28,
-    Pfn_set_linetype = 29,
-    Pfn_set_linewidth = 30,
-    Pfn_set_line_colr_ind = 31,
-    Pfn_set_marker_type = 32,
-    Pfn_set_marker_size = 33,
-    Pfn_set_marker_colr_ind = 34,
-    Pfn_set_text_font = 35,
-    Pfn_set_text_prec = 36,
-    Pfn_set_char_expan = 37,
-    Pfn_set_char_space = 38,
-    Pfn_set_text_colr_ind = 39,
-    Pfn_set_char_ht = 40,
-    Pfn_set_char_up_vec = 41,
-    Pfn_set_text_path = 42,
-    Pfn_set_text_align = 43,
-    Pfn_set_anno_char_ht = 44,
-    Pfn_set_anno_char_up_vec = 45,
-    Pfn_set_anno_path = 46,
-    Pfn_set_anno_align = 47,
-    Pfn_set_anno_style = 48,
-    Pfn_set_int_style = 49,
-    Pfn_set_int_style_ind = 50,
-    Pfn_set_int_colr_ind = 51,
-    Pfn_set_edge_flag = 52,
-    Pfn_set_edgetype = 53,
-    Pfn_set_edgewidth = 54,
-    Pfn_set_edge_colr_ind = 55,
-    Pfn_set_pat_size = 56,
-    Pfn_set_pat_ref_point_vecs = 57,
-    Pfn_set_pat_ref_point = 58,
-    Pfn_add_names_set = 59,
-    Pfn_remove_names_set = 60,
-    Pfn_set_indiv_asf = 61,
-    Pfn_set_hlhsr_id = 72,
-    Pfn_set_local_tran3 = 74,
-    Pfn_set_local_tran = 75,
-    Pfn_set_global_tran3 = 76,
-    Pfn_set_global_tran = 77,
-    Pfn_set_model_clip_vol3 = 78,
-    Pfn_set_model_clip_vol = 79,
-    Pfn_set_model_clip_ind = 80,
-    Pfn_restore_model_clip_vol = 81,
-    Pfn_set_view_ind = 82,
-    Pfn_set_view_rep3 = 83,
-    Pfn_set_view_rep = 84,
-    Pfn_set_ws_win3 = 86,
-    Pfn_set_ws_win = 87,
-    Pfn_set_ws_vp3 = 88,
-    Pfn_set_ws_vp = 89,
-    Pfn_open_struct = 90,
-    Pfn_close_struct = 91,
-    Pfn_exec_struct = 92,
-    Pfn_label = 93,
-    Pfn_appl_data = 94,
-    Pfn_gse = 95,
-    Pfn_set_edit_mode = 96,
-    Pfn_copy_all_elems_struct = 97,
-    Pfn_set_elem_ptr = 98,
-    Pfn_offset_elem_ptr = 99,
-    Pfn_set_elem_ptr_label = 100,
-    Pfn_del_elem = 101,
-    Pfn_del_elem_range = 102,
-    Pfn_del_elems_labels = 103,
-    Pfn_empty_struct = 104,
-    Pfn_del_struct = 105,
-    Pfn_del_struct_net = 106,
-    Pfn_del_all_structs = 107,
-    Pfn_change_struct_id = 108,
-    Pfn_change_struct_refs = 109,
-    Pfn_change_struct_id_refs = 110,
-    Pfn_open_ar_file = 114,
-    Pfn_close_ar_file = 115,
-    Pfn_ar_structs = 116,
-    Pfn_ar_struct_nets = 117,
-    Pfn_ar_all_structs = 118,
-    Pfn_set_conf_res = 119,
-    Pfn_ret_struct_ids = 120,
-    Pfn_ret_structs = 121,
-    Pfn_ret_struct_nets = 122,
-    Pfn_ret_all_structs = 123,
-    Pfn_ret_paths_ances = 124,
-    Pfn_ret_paths_descs = 125,
-    Pfn_del_structs_ar = 126,
-    Pfn_del_struct_nets_ar = 127,
-    Pfn_del_all_structs_ar = 128,
-    Pfn_post_struct = 111,
-    Pfn_unpost_struct = 112,
-    Pfn_unpost_all_structs = 113,
-    Pfn_set_pick_id = 129,
-    Pfn_set_err_hand_mode = 179,
-    Pfn_escape = 180,
-    Pfn_line_colr = 310,
-    Pfn_marker_colr = 312,
-    Pfn_text_colr = 313,
-    Pfn_int_colr = 316,
-    Pfn_edge_colr = 327
-};
+/* ISO function identifiers (the error handler's func_num): macros, as the binding defines them. */
+#define Pfn_open_phigs (0)
+#define Pfn_close_phigs (1)
+#define Pfn_open_ws (2)
+#define Pfn_close_ws (3)
+#define Pfn_redraw_all_structs (4)
+#define Pfn_upd_ws (5)
+#define Pfn_message (7)
+#define Pfn_polyline3 (8)
+#define Pfn_polyline (9)
+#define Pfn_polymarker3 (10)
+#define Pfn_polymarker (11)
+#define Pfn_text3 (12)
+#define Pfn_text (13)
+#define Pfn_anno_text_rel3 (14)
+#define Pfn_anno_text_rel (15)
+#define Pfn_fill_area3 (16)
+#define Pfn_fill_area (17)
+#define Pfn_fill_area_set3 (18)
+#define Pfn_fill_area_set (19)
+#define Pfn_cell_array3 (20)
+#define Pfn_cell_array (21)
+#define Pfn_gdp3 (22)
+#define Pfn_gdp (23)
+#define Pfn_set_line_ind (24)
+#define Pfn_set_marker_ind (25)
+#define Pfn_set_text_ind (26)
+#define Pfn_set_int_ind (27)
+#define Pfn_set_edge_ind (28)
+#define Pfn_set_linetype (29)
+#define Pfn_set_linewidth (30)
+#define Pfn_set_line_colr_ind (31)
+#define Pfn_set_marker_type (32)
+#define Pfn_set_marker_size (33)
+#define Pfn_set_marker_colr_ind (34)
+#define Pfn_set_text_font (35)
+#define Pfn_set_text_prec (36)
+#define Pfn_set_char_expan (37)
+#define Pfn_set_char_space (38)
+#define Pfn_set_text_colr_ind (39)
+#define Pfn_set_char_ht (40)
+#define Pfn_set_char_up_vec (41)
+#define Pfn_set_text_path (42)
+#define Pfn_set_text_align (43)
+#define Pfn_set_anno_char_ht (44)
+#define Pfn_set_anno_char_up_vec (45)
+#define Pfn_set_anno_path (46)
+#define Pfn_set_anno_align (47)
+#define Pfn_set_anno_style (48)
+#define Pfn_set_int_style (49)
+#define Pfn_set_int_style_ind (50)
+#define Pfn_set_int_colr_ind (51)
+#define Pfn_set_edge_flag (52)
+#define Pfn_set_edgetype (53)
+#define Pfn_set_edgewidth (54)
+#define Pfn_set_edge_colr_ind (55)
+#define Pfn_set_pat_size (56)
+#define Pfn_set_pat_ref_point_vecs (57)
+#define Pfn_set_pat_ref_point (58)
+#define Pfn_add_names_set (59)
+#define Pfn_remove_names_set (60)
+#define Pfn_set_indiv_asf (61)
+#define Pfn_set_hlhsr_id (72)
+#define Pfn_set_local_tran3 (74)
+#define Pfn_set_local_tran (75)
+#define Pfn_set_global_tran3 (76)
+#define Pfn_set_global_tran (77)
+#define Pfn_set_model_clip_vol3 (78)
+#define Pfn_set_model_clip_vol (79)
+#define Pfn_set_model_clip_ind (80)
+#define Pfn_restore_model_clip_vol (81)
+#define Pfn_set_view_ind (82)
+#define Pfn_set_view_rep3 (83)
+#define Pfn_set_view_rep (84)
+#define Pfn_set_ws_win3 (86)
+#define Pfn_set_ws_win (87)
+#define Pfn_set_ws_vp3 (88)
+#define Pfn_set_ws_vp (89)
+#define Pfn_open_struct (90)
+#define Pfn_close_struct (91)
+#define Pfn_exec_struct (92)
+#define Pfn_label (93)
+#define Pfn_appl_data (94)
+#define Pfn_gse (95)
+#define Pfn_set_edit_mode (96)
+#define Pfn_copy_all_elems_struct (97)
+#define Pfn_set_elem_ptr (98)
+#define Pfn_offset_elem_ptr (99)
+#define Pfn_set_elem_ptr_label (100)
+#define Pfn_del_elem (101)
+#define Pfn_del_elem_range (102)
+#define Pfn_del_elems_labels (103)
+#define Pfn_empty_struct (104)
+#define Pfn_del_struct (105)
+#define Pfn_del_struct_net (106)
+#define Pfn_del_all_structs (107)
+#define Pfn_change_struct_id (108)
+#define Pfn_change_struct_refs (109)
+#define Pfn_change_struct_id_refs (110)
+#define Pfn_open_ar_file (114)
+#define Pfn_close_ar_file (115)
+#define Pfn_ar_structs (116)
+#define Pfn_ar_struct_nets (117)
+#define Pfn_ar_all_structs (118)
+#define Pfn_set_conf_res (119)
+#define Pfn_ret_struct_ids (120)
+#define Pfn_ret_structs (121)
+#define Pfn_ret_struct_nets (122)
+#define Pfn_ret_all_structs (123)
+#define Pfn_ret_paths_ances (124)
+#define Pfn_ret_paths_descs (125)
+#define Pfn_del_structs_ar (126)
+#define Pfn_del_struct_nets_ar (127)
+#define Pfn_del_all_structs_ar (128)
+#define Pfn_post_struct (111)
+#define Pfn_unpost_struct (112)
+#define Pfn_unpost_all_structs (113)
+#define Pfn_set_pick_id (129)
+#define Pfn_set_err_hand_mode (179)
+#define Pfn_escape (180)
+#define Pfn_line_colr (310)
+#define Pfn_marker_colr (312)
+#define Pfn_text_colr (313)
+#define Pfn_int_colr (316)
+#define Pfn_edge_colr (327)
 #define Pfn_set_line_colr Pfn_line_colr
 #define Pfn_set_marker_colr Pfn_marker_colr
 #define Pfn_set_text_colr Pfn_text_colr
@@ -1161,11 +1296,11 @@ void pinq_conf_structs_net(Pint ar_id, Pint struct_id, Pstruct_net_source source
                            Pint start_ind, Pint* err_ind, Pint_list* ids, Pint* num_elems_impl_list);
 
 /* Workstation inquiries. pinq_ws_conn_type answers the connection identifier popen_ws was
- * given (NULL for none; the string lives in the store) and the type. */
+ * given (its characters, NULL for none; they live in the store) and the type. */
 void pinq_ws_st(Pws_st* ws_state);
 void pinq_open_wss(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* open_ws_ids,
                    Pint* num_elems_impl_list);
-void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err_ind, const char** conn_id, Pint* ws_type);
+void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err_ind, void** conn_id, Pint* ws_type);
 void pinq_posted_structs(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, Pint* err_ind,
                          Pposted_struct_list* posted_structs, Pint* num_elems_impl_list);
 void pinq_list_avail_ws_types(Pint num_elems_appl_list, Pint start_ind, Pint* err_ind, Pint_list* ws_types,
@@ -1245,25 +1380,6 @@ typedef struct {
     Pint colr_ind;
 } Pedge_bundle;
 typedef struct {
-    Pfloat red, green, blue;
-} Prgb;
-typedef struct {
-    Pfloat cieluv_x, cieluv_y, cieluv_y_lum;
-} Pcieluv;
-typedef struct {
-    Pfloat hue, lightness, satur;
-} Phls;
-typedef struct {
-    Pfloat hue, satur, value;
-} Phsv;
-typedef union {
-    Prgb rgb;
-    Pcieluv cieluv;
-    Phls hls;
-    Phsv hsv;
-    Pdata unsupp;
-} Pcolr_rep;
-typedef struct {
     Pint_list types;
     Pint num_widths; /* 0: continuous */
     Pfloat nom_width, min_width, max_width;
@@ -1332,21 +1448,19 @@ typedef struct {
     Pdyn_mod content, post, unpost, del, ref;
 } Pdyns_structs;
 /* Function identifiers of this group. */
-enum {
-    Pfn_set_disp_upd_st = 6,
-    Pfn_set_line_rep = 62,
-    Pfn_set_marker_rep = 63,
-    Pfn_set_text_rep = 64,
-    Pfn_set_int_rep = 65,
-    Pfn_set_edge_rep = 66,
-    Pfn_set_pat_rep = 67,
-    Pfn_set_colr_rep = 68,
-    Pfn_set_highl_filter = 69,
-    Pfn_set_invis_filter = 70,
-    Pfn_set_colr_model = 71,
-    Pfn_set_hlhsr_mode = 73,
-    Pfn_set_view_tran_in_pri = 85
-};
+#define Pfn_set_disp_upd_st (6)
+#define Pfn_set_line_rep (62)
+#define Pfn_set_marker_rep (63)
+#define Pfn_set_text_rep (64)
+#define Pfn_set_int_rep (65)
+#define Pfn_set_edge_rep (66)
+#define Pfn_set_pat_rep (67)
+#define Pfn_set_colr_rep (68)
+#define Pfn_set_highl_filter (69)
+#define Pfn_set_invis_filter (70)
+#define Pfn_set_colr_model (71)
+#define Pfn_set_hlhsr_mode (73)
+#define Pfn_set_view_tran_in_pri (85)
 
 /* Deferral and modification modes. Every change needs a regeneration here (the dynamics are
  * IRG): ASAP, BNIG and BNIL show it at once; ASTI and WAIT defer it under NIVE and UWOR (visual
@@ -1598,53 +1712,51 @@ typedef struct {
 typedef Pstring_data Pstring_data3;
 
 /* ISO function identifiers of the input functions. */
-enum {
-    Pfn_set_pick_filter = 130,
-    Pfn_init_loc3 = 131,
-    Pfn_init_loc = 132,
-    Pfn_init_stroke3 = 133,
-    Pfn_init_stroke = 134,
-    Pfn_init_val3 = 135,
-    Pfn_init_val = 136,
-    Pfn_init_choice3 = 137,
-    Pfn_init_choice = 138,
-    Pfn_init_pick3 = 139,
-    Pfn_init_pick = 140,
-    Pfn_init_string3 = 141,
-    Pfn_init_string = 142,
-    Pfn_set_loc_mode = 143,
-    Pfn_set_stroke_mode = 144,
-    Pfn_set_val_mode = 145,
-    Pfn_set_choice_mode = 146,
-    Pfn_set_pick_mode = 147,
-    Pfn_set_string_mode = 148,
-    Pfn_req_loc3 = 149,
-    Pfn_req_loc = 150,
-    Pfn_req_stroke3 = 151,
-    Pfn_req_stroke = 152,
-    Pfn_req_val = 153,
-    Pfn_req_choice = 154,
-    Pfn_req_pick = 155,
-    Pfn_req_string = 156,
-    Pfn_sample_loc3 = 157,
-    Pfn_sample_loc = 158,
-    Pfn_sample_stroke3 = 159,
-    Pfn_sample_stroke = 160,
-    Pfn_sample_val = 161,
-    Pfn_sample_choice = 162,
-    Pfn_sample_pick = 163,
-    Pfn_sample_string = 164,
-    Pfn_await_event = 165,
-    Pfn_flush_events = 166,
-    Pfn_get_loc3 = 167,
-    Pfn_get_loc = 168,
-    Pfn_get_stroke3 = 169,
-    Pfn_get_stroke = 170,
-    Pfn_get_val = 171,
-    Pfn_get_choice = 172,
-    Pfn_get_pick = 173,
-    Pfn_get_string = 174
-};
+#define Pfn_set_pick_filter (130)
+#define Pfn_init_loc3 (131)
+#define Pfn_init_loc (132)
+#define Pfn_init_stroke3 (133)
+#define Pfn_init_stroke (134)
+#define Pfn_init_val3 (135)
+#define Pfn_init_val (136)
+#define Pfn_init_choice3 (137)
+#define Pfn_init_choice (138)
+#define Pfn_init_pick3 (139)
+#define Pfn_init_pick (140)
+#define Pfn_init_string3 (141)
+#define Pfn_init_string (142)
+#define Pfn_set_loc_mode (143)
+#define Pfn_set_stroke_mode (144)
+#define Pfn_set_val_mode (145)
+#define Pfn_set_choice_mode (146)
+#define Pfn_set_pick_mode (147)
+#define Pfn_set_string_mode (148)
+#define Pfn_req_loc3 (149)
+#define Pfn_req_loc (150)
+#define Pfn_req_stroke3 (151)
+#define Pfn_req_stroke (152)
+#define Pfn_req_val (153)
+#define Pfn_req_choice (154)
+#define Pfn_req_pick (155)
+#define Pfn_req_string (156)
+#define Pfn_sample_loc3 (157)
+#define Pfn_sample_loc (158)
+#define Pfn_sample_stroke3 (159)
+#define Pfn_sample_stroke (160)
+#define Pfn_sample_val (161)
+#define Pfn_sample_choice (162)
+#define Pfn_sample_pick (163)
+#define Pfn_sample_string (164)
+#define Pfn_await_event (165)
+#define Pfn_flush_events (166)
+#define Pfn_get_loc3 (167)
+#define Pfn_get_loc (168)
+#define Pfn_get_stroke3 (169)
+#define Pfn_get_stroke (170)
+#define Pfn_get_val (171)
+#define Pfn_get_choice (172)
+#define Pfn_get_pick (173)
+#define Pfn_get_string (174)
 
 /* INITIALIZE: the device must be in REQUEST mode. Echo areas and volumes are in device
  * coordinates of the display space (y up, z in [0, 1]); the 2D forms keep z in [0, 1]. */
@@ -1804,37 +1916,35 @@ typedef struct {
 } Pfilter_list;
 
 /* Function identifiers of this group: metafiles (ISO 9593-4) and PHIGS PLUS (ISO 9592-4). */
-enum {
-    Pfn_write_item = 175,
-    Pfn_get_item_type = 176,
-    Pfn_read_item = 177,
-    Pfn_interpret_item = 178,
-    Pfn_nuni_bsp_curv = 307,
-    Pfn_nuni_bsp_surf = 308,
-    Pfn_fill_area_set3_data = 302,
-    Pfn_tri_strip3_data = 305,
-    Pfn_quad_mesh3_data = 306,
-    Pfn_set_line_shad_meth = 311,
-    Pfn_set_face_disting_mode = 314,
-    Pfn_set_face_cull_mode = 315,
-    Pfn_set_int_shad_meth = 317,
-    Pfn_set_refl_props = 318,
-    Pfn_set_refl_eqn = 319,
-    Pfn_set_back_int_style = 320,
-    Pfn_set_back_int_style_ind = 321,
-    Pfn_set_back_int_colr = 322,
-    Pfn_set_back_int_shad_meth = 323,
-    Pfn_set_back_refl_props = 324,
-    Pfn_set_back_refl_eqn = 325,
-    Pfn_set_light_src_state = 326,
-    Pfn_set_curve_approx = 328,
-    Pfn_set_surf_approx = 329,
-    Pfn_set_para_surf_characs = 330,
-    Pfn_set_dcue_ind = 332,
-    Pfn_set_colr_map_ind = 333,
-    Pfn_set_light_src_rep = 340,
-    Pfn_set_dcue_rep = 341
-};
+#define Pfn_write_item (175)
+#define Pfn_get_item_type (176)
+#define Pfn_read_item (177)
+#define Pfn_interpret_item (178)
+#define Pfn_nuni_bsp_curv (307)
+#define Pfn_nuni_bsp_surf (308)
+#define Pfn_fill_area_set3_data (302)
+#define Pfn_tri_strip3_data (305)
+#define Pfn_quad_mesh3_data (306)
+#define Pfn_set_line_shad_meth (311)
+#define Pfn_set_face_disting_mode (314)
+#define Pfn_set_face_cull_mode (315)
+#define Pfn_set_int_shad_meth (317)
+#define Pfn_set_refl_props (318)
+#define Pfn_set_refl_eqn (319)
+#define Pfn_set_back_int_style (320)
+#define Pfn_set_back_int_style_ind (321)
+#define Pfn_set_back_int_colr (322)
+#define Pfn_set_back_int_shad_meth (323)
+#define Pfn_set_back_refl_props (324)
+#define Pfn_set_back_refl_eqn (325)
+#define Pfn_set_light_src_state (326)
+#define Pfn_set_curve_approx (328)
+#define Pfn_set_surf_approx (329)
+#define Pfn_set_para_surf_characs (330)
+#define Pfn_set_dcue_ind (332)
+#define Pfn_set_colr_map_ind (333)
+#define Pfn_set_light_src_rep (340)
+#define Pfn_set_dcue_rep (341)
 
 /* INCREMENTAL SPATIAL SEARCH (3): the next output primitive after the start path's element
  * whose locus lies within `dist` of the search reference point (world coordinates; dist <= 0:
@@ -2043,13 +2153,11 @@ void pinq_list_dcue_inds(Pint ws_id, Pint num_elems_appl_list, Pint start_ind, P
 
 /* ==== PHIGS PLUS primitives with data (polyline set, cell array plus, set of fill area sets),
  * rendering colour model and colour mapping ==== */
-enum {
-    Pfn_polyline_set3_data = 301,
-    Pfn_cell_array3_plus = 303,
-    Pfn_set_of_fill_area_set3_data = 304,
-    Pfn_set_rendering_colr_model = 331,
-    Pfn_set_colr_map_rep = 342
-};
+#define Pfn_polyline_set3_data (301)
+#define Pfn_cell_array3_plus (303)
+#define Pfn_set_of_fill_area_set3_data (304)
+#define Pfn_set_rendering_colr_model (331)
+#define Pfn_set_colr_map_rep (342)
 /* POLYLINE SET 3 WITH DATA: npl polylines; vflag PVERT_COORD or PVERT_COORD_COLOUR (a colour at
  * every vertex: with polyline shading method PSD_NONE a segment is drawn in its first vertex's
  * colour, with PSD_COLOUR the colour goes linearly from one vertex's to the next along it, in
@@ -2222,14 +2330,12 @@ typedef struct {
 typedef struct {
     Pdyn_mod light_src_rep, dcue_rep, colr_map_rep;
 } Pdyns_ws_attrs_plus;
-enum {
-    Pfn_set_line_rep_plus = 334,
-    Pfn_set_marker_rep_plus = 335,
-    Pfn_set_text_rep_plus = 336,
-    Pfn_set_int_rep_plus = 337,
-    Pfn_set_edge_rep_plus = 338,
-    Pfn_set_pat_rep_plus = 339
-};
+#define Pfn_set_line_rep_plus (334)
+#define Pfn_set_marker_rep_plus (335)
+#define Pfn_set_text_rep_plus (336)
+#define Pfn_set_int_rep_plus (337)
+#define Pfn_set_edge_rep_plus (338)
+#define Pfn_set_pat_rep_plus (339)
 void pset_line_rep_plus(Pint ws_id, Pint line_ind, const Pline_bundle_plus* line_rep);
 void pset_marker_rep_plus(Pint ws_id, Pint marker_ind, const Pmarker_bundle_plus* marker_rep);
 void pset_text_rep_plus(Pint ws_id, Pint text_ind, const Ptext_bundle_plus* text_rep);

@@ -133,8 +133,8 @@ void colourContent(const ColourAttribute& e, Phigs_store& s) {
         return;
     }
     s.data.colr.type = static_cast<Pint>(e.colour.model);
-    s.data.colr.val.direct = {static_cast<Pfloat>(e.colour.rgb.x), static_cast<Pfloat>(e.colour.rgb.y),
-                              static_cast<Pfloat>(e.colour.rgb.z)};
+    s.data.colr.val.general = {static_cast<Pfloat>(e.colour.rgb.x), static_cast<Pfloat>(e.colour.rgb.y),
+                               static_cast<Pfloat>(e.colour.rgb.z)};
 }
 
 void patternContent(const PatternAttribute& e, Phigs_store& s) {
@@ -154,9 +154,9 @@ void propertiesContent(const AreaPropertiesAttribute& e, Phigs_store& s) {
     p.transpar_coef = static_cast<Pfloat>(e.transparency);
     if (e.specularColour.direct) {
         p.specular_colr.type = static_cast<Pint>(e.specularColour.model);
-        p.specular_colr.val.direct = {static_cast<Pfloat>(e.specularColour.rgb.x),
-                                      static_cast<Pfloat>(e.specularColour.rgb.y),
-                                      static_cast<Pfloat>(e.specularColour.rgb.z)};
+        p.specular_colr.val.general = {static_cast<Pfloat>(e.specularColour.rgb.x),
+                                       static_cast<Pfloat>(e.specularColour.rgb.y),
+                                       static_cast<Pfloat>(e.specularColour.rgb.z)};
     } else {
         p.specular_colr.type = PINDIRECT;
         p.specular_colr.val.ind = e.specularColour.index;
@@ -296,7 +296,8 @@ void surfaceContent(const NurbsSurfaceElement& e, Phigs_store& s) {
 Pcoval coval(const Colour& c) {
     Pcoval v{};
     if (c.direct)
-        v.direct = {static_cast<Pfloat>(c.rgb.x), static_cast<Pfloat>(c.rgb.y), static_cast<Pfloat>(c.rgb.z)};
+        v.direct.rgb = {static_cast<Pfloat>(c.rgb.x), static_cast<Pfloat>(c.rgb.y),
+                        static_cast<Pfloat>(c.rgb.z)};
     else
         v.ind = c.index;
     return v;

@@ -40,7 +40,7 @@ void insertColour(int fn, ElementType type, const Pgcolr* colr) {
         c::require(colr, name);
         if (colr->type == PINDIRECT) return ColourAttribute{type, Colour::indexed(colr->val.ind)};
         if (!isColourModel(colr->type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
-        const auto& d = colr->val.direct;
+        const auto& d = colr->val.general;
         return ColourAttribute{type, Colour::inModel(static_cast<ColourModel>(colr->type), {d.x, d.y, d.z})};
     });
 }

@@ -30,7 +30,7 @@ void request(int function, Pint wsId, InputClass inputClass, Pint number, Pin_st
     });
 }
 
-void sample(int function, Pint wsId, InputClass inputClass, Pint number, const Answer& answer) {
+void sampleInput(int function, Pint wsId, InputClass inputClass, Pint number, const Answer& answer) {
     Binding::instance().call(function, [&](Phigs& p) {
         const char* name = c::inputFunctionName(function);
         Workstation& ws = c::inputWorkstation(p, wsId, inputClass);
@@ -152,37 +152,37 @@ void preq_string(Pint ws_id, Pint string_num, Pin_status* in_status, char* out) 
 }
 
 void psample_loc3(Pint ws_id, Pint loc_num, Pint* view_ind, Ppoint3* loc_pos) {
-    sample(Pfn_sample_loc3, ws_id, InputClass::Locator, loc_num, locator3(view_ind, loc_pos));
+    sampleInput(Pfn_sample_loc3, ws_id, InputClass::Locator, loc_num, locator3(view_ind, loc_pos));
 }
 
 void psample_loc(Pint ws_id, Pint loc_num, Pint* view_ind, Ppoint* loc_pos) {
-    sample(Pfn_sample_loc, ws_id, InputClass::Locator, loc_num, locator(view_ind, loc_pos));
+    sampleInput(Pfn_sample_loc, ws_id, InputClass::Locator, loc_num, locator(view_ind, loc_pos));
 }
 
 void psample_stroke3(Pint ws_id, Pint stroke_num, Pint* view_ind, Ppoint_list3* out) {
-    sample(Pfn_sample_stroke3, ws_id, InputClass::Stroke, stroke_num, stroke(view_ind, out));
+    sampleInput(Pfn_sample_stroke3, ws_id, InputClass::Stroke, stroke_num, stroke(view_ind, out));
 }
 
 void psample_stroke(Pint ws_id, Pint stroke_num, Pint* view_ind, Ppoint_list* out) {
-    sample(Pfn_sample_stroke, ws_id, InputClass::Stroke, stroke_num, stroke(view_ind, out));
+    sampleInput(Pfn_sample_stroke, ws_id, InputClass::Stroke, stroke_num, stroke(view_ind, out));
 }
 
 void psample_val(Pint ws_id, Pint val_num, Pfloat* val) {
-    sample(Pfn_sample_val, ws_id, InputClass::Valuator, val_num, valuator(val));
+    sampleInput(Pfn_sample_val, ws_id, InputClass::Valuator, val_num, valuator(val));
 }
 
 void psample_choice(Pint ws_id, Pint choice_num, Pin_status* choice_in_status, Pint* out) {
     if (!given(choice_in_status, Pfn_sample_choice)) return;
-    sample(Pfn_sample_choice, ws_id, InputClass::Choice, choice_num, choice(choice_in_status, out));
+    sampleInput(Pfn_sample_choice, ws_id, InputClass::Choice, choice_num, choice(choice_in_status, out));
 }
 
 void psample_pick(Pint ws_id, Pint pick_num, Pint depth, Pin_status* pick_in_status, Ppick_path* out) {
     if (!given(pick_in_status, Pfn_sample_pick)) return;
-    sample(Pfn_sample_pick, ws_id, InputClass::Pick, pick_num, pick(depth, pick_in_status, out));
+    sampleInput(Pfn_sample_pick, ws_id, InputClass::Pick, pick_num, pick(depth, pick_in_status, out));
 }
 
 void psample_string(Pint ws_id, Pint string_num, char* out) {
-    sample(Pfn_sample_string, ws_id, InputClass::String, string_num, string(out));
+    sampleInput(Pfn_sample_string, ws_id, InputClass::String, string_num, string(out));
 }
 
 void pawait_event(Pfloat timeout, Pint* ws_id, Pin_class* dev_class, Pint* in_num) {

@@ -42,15 +42,15 @@ Colour coreColour(const Pgcolr& colour, const char* function) {
     if (!isColourModel(colour.type))
         throw Error(errors::ColourModelNotAvailable, function, "colour type " + std::to_string(colour.type));
     return Colour::inModel(static_cast<ColourModel>(colour.type),
-                           {colour.val.direct.x, colour.val.direct.y, colour.val.direct.z});
+                           {colour.val.general.x, colour.val.general.y, colour.val.general.z});
 }
 
 Pgcolr generalColour(const Colour& colour) {
     Pgcolr g{};
     if (colour.direct) {
         g.type = static_cast<Pint>(colour.model);
-        g.val.direct.x = real(colour.rgb.x), g.val.direct.y = real(colour.rgb.y),
-        g.val.direct.z = real(colour.rgb.z);
+        g.val.general.x = real(colour.rgb.x), g.val.general.y = real(colour.rgb.y),
+        g.val.general.z = real(colour.rgb.z);
     } else {
         g.type = PINDIRECT;
         g.val.ind = colour.index;
@@ -110,9 +110,10 @@ PatternRepresentation corePattern(const Ppat_rep_plus& p, const char* function) 
     r.colours.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
         const Pcoval& c = p.colr_array[i];
-        r.colours.push_back(p.type == PINDIRECT ? Colour::indexed(c.ind)
-                                                : Colour::inModel(static_cast<ColourModel>(p.type),
-                                                                  {c.direct.x, c.direct.y, c.direct.z}));
+        r.colours.push_back(p.type == PINDIRECT
+                                ? Colour::indexed(c.ind)
+                                : Colour::inModel(static_cast<ColourModel>(p.type),
+                                                  {c.direct.rgb.red, c.direct.rgb.green, c.direct.rgb.blue}));
     }
     return r;
 }
@@ -165,7 +166,7 @@ Ppat_rep_plus* answerPatternPlus(const PatternRepresentation& p, const ColourTab
         Pcoval v{};
         if (direct) {
             const glm::dvec3 rgb = asGiven ? c.rgb : colours.resolve(c);
-            v.direct.x = real(rgb.x), v.direct.y = real(rgb.y), v.direct.z = real(rgb.z);
+            v.direct.rgb.red = real(rgb.x), v.direct.rgb.green = real(rgb.y), v.direct.rgb.blue = real(rgb.z);
         } else {
             v.ind = c.index;
         }

@@ -27,7 +27,7 @@ Colour colour(const Pgcolr& c, const char* name) {
     if (c.type == PINDIRECT) return Colour::indexed(c.val.ind);
     if (!isColourModel(c.type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
     return Colour::inModel(static_cast<ColourModel>(c.type),
-                           {c.val.direct.x, c.val.direct.y, c.val.direct.z});
+                           {c.val.general.x, c.val.general.y, c.val.general.z});
 }
 
 Element properties(ElementType type, const Prefl_props* p, const char* name) {

@@ -36,7 +36,8 @@ void checkFlags(int vflag, int colrType, const char* name) {
 
 Colour colour(const Pcoval& c, int colrType) {
     if (colrType == PINDIRECT) return Colour::indexed(c.ind);
-    return Colour::inModel(static_cast<ColourModel>(colrType), {c.direct.x, c.direct.y, c.direct.z});
+    return Colour::inModel(static_cast<ColourModel>(colrType),
+                           {c.direct.rgb.red, c.direct.rgb.green, c.direct.rgb.blue});
 }
 
 /// `n` vertices of the form `vflag` says.

@@ -24,13 +24,13 @@ Colour given(const Pgcolr& c, const char* name) {
     if (c.type == PINDIRECT) return Colour::indexed(c.val.ind);
     if (!isColourModel(c.type)) throw Error(PE_ENUM_TYPE_INVAL, name, "colour type");
     return Colour::inModel(static_cast<ColourModel>(c.type),
-                           {c.val.direct.x, c.val.direct.y, c.val.direct.z});
+                           {c.val.general.x, c.val.general.y, c.val.general.z});
 }
 
 Pgcolr gcolr(const glm::vec3& c) {
     Pgcolr g{};
     g.type = PMODEL_RGB;
-    g.val.direct = {c.x, c.y, c.z};
+    g.val.general = {c.x, c.y, c.z};
     return g;
 }
 

@@ -190,14 +190,14 @@ void pinq_open_wss(Pint appl, Pint start, Pint* err, Pint_list* ids, Pint* total
     c::inquire(err, [&](Phigs& p) { c::answerList(p.openWorkstationIds(), appl, start, ids, total); });
 }
 
-void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err, const char** conn_id, Pint* ws_type) {
+void pinq_ws_conn_type(Pint ws_id, Pstore store, Pint* err, void** conn_id, Pint* ws_type) {
     if (!c::somewhereToAnswer(err, conn_id, ws_type)) return;
     c::inquire(err, [&](Phigs& p) {
         Workstation& ws = c::inquiredWorkstation(p, ws_id);
         Phigs_store& s = c::storeOf(store);
         s.clear();
         s.text = ws.connectionIdentifier();
-        if (conn_id) *conn_id = s.text.empty() ? nullptr : s.text.c_str();
+        if (conn_id) *conn_id = s.text.empty() ? nullptr : s.text.data();
         // The specific type: its description is this workstation's as it is now.
         if (ws_type) *ws_type = Binding::instance().specificType(ws_id);
     });
