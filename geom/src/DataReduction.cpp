@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -132,13 +133,15 @@ void checkOptions(const ReductionOptions& o, const char* where) {
 }
 
 // refitToOriginal with the degree fixed at compile time where P > 0 (the loops over a row's p+1
-// entries unroll; the same arithmetic in the same order), any degree where P = 0. The rows' spans
-// in tau are walked as t0 ascends (the span osloRow's search finds).
-template <std::size_t P>
+// entries unroll; the same arithmetic in the same order), any degree where P = 0; likewise one
+// coefficient sequence where S = 1 (a curve: the loops over sequences go), any number where S = 0.
+// The rows' spans in tau are walked as t0 ascends (the span osloRow's search finds).
+template <std::size_t P, std::size_t S>
 bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector<glm::dvec3>& points,
-                         std::size_t sequences, std::size_t cL, std::size_t cH, const std::vector<double>& t0,
-                         const std::vector<glm::dvec3>& d0) {
+                         std::size_t sequenceCount, std::size_t cL, std::size_t cH,
+                         const std::vector<double>& t0, const std::vector<glm::dvec3>& d0) {
     const std::size_t p = P > 0 ? P : static_cast<std::size_t>(degree);
+    const std::size_t sequences = S > 0 ? S : sequenceCount;
     const std::size_t nt = points.size() / sequences;
     const std::size_t n0 = d0.size() / sequences;
     // The original coefficients whose rows can reach the free columns: their knot intervals
@@ -152,8 +155,15 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
     // Normal equations of the scaled rows: every row has p+1 neighbouring non-zeros, so the
     // matrix is banded and Cholesky solves it in O(rows p^2).
     const std::size_t freeCount = cH - cL + 1, wb = p + 1;
-    std::vector<double> band(freeCount * wb, 0.0), row(p + 1);
-    std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0)), target(sequences);
+    std::vector<double> band(freeCount * wb, 0.0);
+    std::vector<glm::dvec3> rhs(freeCount * sequences, glm::dvec3(0.0));
+    // The row and the targets in locals where their sizes are fixed (they stay in registers).
+    std::array<double, P + 1> fixedRow{};
+    std::vector<double> anyRow(P > 0 ? 0 : p + 1);
+    double* row = P > 0 ? fixedRow.data() : anyRow.data();
+    glm::dvec3 oneTarget(0.0);
+    std::vector<glm::dvec3> targets(S == 1 ? 0 : sequences);
+    glm::dvec3* target = S == 1 ? &oneTarget : targets.data();
     std::size_t fitRows = 0;
     // tau[walk] <= t0[j] < tau[walk + 1] (or walk = nt - 1), from osloRow's search at the first row.
     std::size_t walk =
@@ -166,7 +176,7 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
         std::size_t mu = walk;
         while (mu > p && !(tau[mu] < tau[mu + 1])) --mu;
         if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
-        detail::osloRowInverse<P>(p, tau, t0, j, mu, inverse.data(), row.data());
+        detail::osloRowInverse<P>(p, tau, t0, j, mu, inverse.data(), row);
         const std::size_t c0 = mu - p;
         bool touchesFree = false;
 #pragma GCC unroll 8
@@ -212,7 +222,8 @@ bool refitToOriginal(int degree, const std::vector<double>& tau, std::vector<glm
                      const std::vector<glm::dvec3>& d0) {
     bool ok = false;
     detail::withFixedDegree(static_cast<std::size_t>(degree), [&](auto fixed) {
-        ok = refitToOriginalWith<fixed()>(degree, tau, points, sequences, cL, cH, t0, d0);
+        ok = sequences == 1 ? refitToOriginalWith<fixed(), 1>(degree, tau, points, 1, cL, cH, t0, d0)
+                            : refitToOriginalWith<fixed(), 0>(degree, tau, points, sequences, cL, cH, t0, d0);
     });
     return ok;
 }
