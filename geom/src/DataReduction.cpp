@@ -1876,7 +1876,8 @@ public:
         const std::size_t first = lo > pad_ ? lo - pad_ : 0;
         const std::size_t last = std::min(params_.size(), hi + pad_);
         detail::SplineSampler candidate(degree, knots, points.data(), points.size());
-        if (failures_ > accepted_ && !sparseSampleKeeps(degree, knots, points, candidate, first, last))
+        if ((lastFailed_ || failures_ > accepted_) &&
+            !sparseSampleKeeps(degree, knots, points, candidate, first, last))
             return rejected();
         std::vector<glm::dvec3>& onCandidate = window_;
         onCandidate.resize(last - first);
@@ -1891,6 +1892,7 @@ public:
             if (i != farthest && !sampleKeeps(candidate, onCandidate[i - first], i)) return rejected();
         commitTrial(first, last);
         ++accepted_;
+        lastFailed_ = false;
         return true;
     }
 
@@ -1913,6 +1915,7 @@ private:
     /// A candidate turned away, counted.
     bool rejected() {
         ++failures_;
+        lastFailed_ = true;
         return false;
     }
 
@@ -1924,8 +1927,10 @@ private:
     /// sample, that one too), and most candidates that fail are turned away at a quarter of the
     /// evaluations. The full check makes its own verdict and witnesses where this one passes, so
     /// the results are the same either way; accept runs it once more candidates have failed than
-    /// passed (noisy data: three of four fail), not where most pass (higher degrees: most do,
-    /// and it would cost them a quarter of the evaluations more).
+    /// passed (noisy data: three of four fail), or after a candidate that failed (the loop ranks
+    /// the lightest knots first, so its failures come in runs once the easy ones are gone), not
+    /// where most pass (higher degrees: most do, and it would cost them a quarter of the
+    /// evaluations more).
     bool sparseSampleKeeps(int degree, const std::vector<double>& knots,
                            const std::vector<glm::dvec3>& points, detail::SplineSampler& candidate,
                            std::size_t first, std::size_t last) {
@@ -2028,6 +2033,7 @@ private:
     detail::KeptVector<double> witness_, trial_, error_, trialError_, blockError_, sparseParams_;
     detail::KeptVector<glm::dvec3> sparseValues_, window_;  // window_: the candidate at accept's samples
     std::size_t accepted_ = 0, failures_ = 0;               // the candidates judged so far
+    bool lastFailed_ = false;                               // the last candidate judged failed
     std::size_t pad_;
     double tol_;
     detail::SplineSampler originalSampler_;
