@@ -132,6 +132,19 @@ void checkOptions(const ReductionOptions& o, const char* where) {
         throw GeometryError(w + ": rounds and lawsonSteps must be at most 1000");
 }
 
+// A row of the refit's normal equations whose p + 1 columns are all free, added with weight w to
+// the band and right side at its first column (the general loop's terms in the same order).
+template <std::size_t P>
+inline void addFreeRow(const double* row, double w, const glm::dvec3& target, double* band, glm::dvec3* rhs) {
+    constexpr std::size_t wb = P + 1;
+#pragma GCC unroll 8
+    for (std::size_t a = 0; a <= P; ++a) {
+        rhs[a] += (w * row[a]) * target;
+#pragma GCC unroll 8
+        for (std::size_t b = a; b <= P; ++b) band[a * wb + (b - a)] += w * row[a] * row[b];
+    }
+}
+
 // refitToOriginal with the degree fixed at compile time where P > 0 (the loops over a row's p+1
 // entries unroll; the same arithmetic in the same order), any degree where P = 0; likewise one
 // coefficient sequence where S = 1 (a curve: the loops over sequences go), any number where S = 0.
@@ -178,13 +191,20 @@ bool refitToOriginalWith(int degree, const std::vector<double>& tau, std::vector
         if (mu != inverseSpan) detail::osloInverses(p, tau, inverseSpan = mu, inverse.data());
         detail::osloRowInverse<P>(p, tau, t0, j, mu, inverse.data(), row);
         const std::size_t c0 = mu - p;
+        const double w = (t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1);
+        if (w == 0.0) continue;
+        // Every column of the row free (most rows): no held terms, and no zero entries to skip
+        // (they would add nothing: the rows are non-negative and sum to 1).
+        if (P > 0 && S == 1 && c0 >= cL && c0 + p <= cH) {
+            addFreeRow<P>(row, w, d0[j], &band[(c0 - cL) * wb], &rhs[c0 - cL]);
+            ++fitRows;
+            continue;
+        }
         bool touchesFree = false;
 #pragma GCC unroll 8
         for (std::size_t k = 0; k <= p; ++k)
             touchesFree = touchesFree || (row[k] != 0.0 && c0 + k >= cL && c0 + k <= cH);
         if (!touchesFree) continue;
-        const double w = (t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1);
-        if (w == 0.0) continue;
         for (std::size_t s = 0; s < sequences; ++s) {
             target[s] = d0[j * sequences + s];
 #pragma GCC unroll 8
