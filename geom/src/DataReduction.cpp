@@ -344,6 +344,13 @@ private:
             const std::size_t c0 = first_[j];
             const double w = (t0[j + p + 1] - t0[j]) / static_cast<double>(p + 1);
             if (w == 0.0) continue;
+            // A row clear of the held end points (most rows) adds its terms without the tests
+            // (zero entries add nothing: the rows are non-negative).
+            if (P > 0 && c0 >= 1 && c0 + p < nt - 1) {
+                addFreeRow<P>(row, w, o_.points[j], &band_[(c0 - 1) * wb], &rhs_[c0 - 1]);
+                ++fitRows;
+                continue;
+            }
             glm::dvec3 target = o_.points[j];
             bool touchesFree = false;
 #pragma GCC unroll 8
