@@ -57,7 +57,7 @@ void openParts(const std::vector<glm::dvec2>& sorted, std::vector<glm::dvec2>& o
 
 }  // namespace
 
-OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) {
+OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double pixel) : pixel_(pixel) {
     // The triangles the facets make (n - 2 for a simple contour, n + 2 h - 2 with h holes; more
     // where contours cross or the triangulation adds points, hence the slack): one allocation of
     // about the right size, not a doubling vector's spare half.
@@ -72,7 +72,7 @@ OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double
     for (const ProjectedFacet& f : facets) {
         if (!f.occludes) continue;
         if (f.contours.size() == 1 && f.contours[0].size() == 3) {
-            add(f.contours[0][0], f.contours[0][1], f.contours[0][2], pixel);
+            add(f.contours[0][0], f.contours[0][1], f.contours[0][2]);
             continue;
         }
         std::vector<std::vector<glm::dvec2>> flat;
@@ -87,12 +87,12 @@ OcclusionIndex::OcclusionIndex(const std::vector<ProjectedFacet>& facets, double
             return all[v.from] + (all[v.to] - all[v.from]) * v.t;
         };
         for (std::size_t t = 0; t + 2 < tri.triangles.size(); t += 3)
-            add(at(tri.triangles[t]), at(tri.triangles[t + 1]), at(tri.triangles[t + 2]), pixel);
+            add(at(tri.triangles[t]), at(tri.triangles[t + 1]), at(tri.triangles[t + 2]));
     }
     bin();
 }
 
-void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel) {
+void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 n = glm::cross(b - a, c - a);
     // Edge-on on the page: it covers nothing.
     if (!(std::abs(n.z) > 1e-12 * glm::length(n))) return;
@@ -102,8 +102,11 @@ void OcclusionIndex::add(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
     t.p[0] = glm::dvec2(a), t.p[1] = glm::dvec2(clockwise ? c : b), t.p[2] = glm::dvec2(clockwise ? b : c);
     t.plane = {-n.x / n.z, -n.y / n.z, 0.0};
     t.plane.z = a.z - t.plane.x * a.x - t.plane.y * a.y;
-    t.tolerance = kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel;
     triangles_.push_back(t);
+}
+
+double OcclusionIndex::tolerance(const Triangle& t) const {
+    return kMinTolerance + kSlopePixels * std::max(std::abs(t.plane.x), std::abs(t.plane.y)) * pixel_;
 }
 
 void OcclusionIndex::bin() {
@@ -152,7 +155,7 @@ bool OcclusionIndex::hides(const Triangle& t, const PagePoint& a, const PagePoin
     // is the intersection of all four, in any order.
     const double ga = t.plane.x * pa.x + t.plane.y * pa.y + t.plane.z - a.z;
     const double gb = t.plane.x * pb.x + t.plane.y * pb.y + t.plane.z - b.z;
-    if (!atLeast(ga, gb, t.tolerance, lo, hi)) return false;
+    if (!atLeast(ga, gb, tolerance(t), lo, hi)) return false;
     for (int i = 0; i < 3; ++i) {
         const glm::dvec2 p = t.p[i], edge = t.p[(i + 1) % 3] - p;
         if (!atLeast(cross(edge, pa - p), cross(edge, pb - p), 0.0, lo, hi)) return false;

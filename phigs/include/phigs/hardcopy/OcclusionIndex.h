@@ -39,15 +39,17 @@ private:
     struct Triangle {
         glm::dvec2 p[3];
         glm::dvec3 plane{0.0};  ///< depth = plane.x * x + plane.y * y + plane.z
-        double tolerance = 0.0;
         /// The box on the page, worked out when needed rather than held with every triangle.
         glm::dvec2 lo() const { return glm::min(p[0], glm::min(p[1], p[2])); }
         glm::dvec2 hi() const { return glm::max(p[0], glm::max(p[1], p[2])); }
     };
-    void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double pixel);
+    void add(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
     void bin();
     template <class F>
     void forCells(glm::dvec2 lo, glm::dvec2 hi, F&& f) const;
+    /// How far behind a triangle a line must lie to be hidden: the depth its slope spans over
+    /// the raster's bias (worked out when needed rather than held with every triangle).
+    double tolerance(const Triangle& t) const;
     /// The interval of t in [0, 1] where the segment is inside the triangle and behind it.
     bool hides(const Triangle& t, const PagePoint& a, const PagePoint& b, glm::dvec2& interval) const;
     /// The intervals of the segment that triangles hide, in order of their start; the triangles
@@ -64,6 +66,7 @@ private:
     void hidersOf(const PagePoint& p, std::vector<std::uint32_t>& hiders) const;
 
     std::vector<Triangle> triangles_;
+    double pixel_ = 1.0;  ///< points per raster pixel
     glm::dvec2 lo_{0.0}, cell_{1.0};
     int columns_ = 0, rows_ = 0;
     /// The triangles over each cell: cellItems_[cellStart_[c], cellStart_[c + 1]).

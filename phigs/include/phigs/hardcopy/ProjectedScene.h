@@ -26,18 +26,19 @@ struct PagePattern {
 
 /// A planar region of one colour (even-odd over its contours): a clipped mesh facet or fill area.
 struct ProjectedFacet {
+    // The flags after the numbers: a page holds tens of thousands of facets, each 8 bytes smaller so.
     std::vector<std::vector<PagePoint>> contours;
     glm::vec3 colour{1.0f};
     float opacity = 1.0f;
-    bool hatch = false;                          ///< hatch lines in `colour` instead of a fill
     std::shared_ptr<const PagePattern> pattern;  ///< PATTERN interiors: the cells instead of `colour`
     int hatchIndex = 1;
+    int clip = 0;          ///< the view whose clip rectangle applies
+    bool hatch = false;    ///< hatch lines in `colour` instead of a fill
     bool occludes = true;  ///< hides what lies behind (not when transparent or hatched)
     /// A hidden-line surface: it hides, and is painted in the background colour only where
     /// other facets could show through it.
     bool coverOnly = false;
     bool seam = false;  ///< one of many pieces: its outline is stroked thinly so no seam shows
-    int clip = 0;       ///< the view whose clip rectangle applies
 };
 
 /// A run of a line (polyline, curve, edge, iso-line, text stroke) on the page.
