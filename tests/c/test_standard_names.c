@@ -1,8 +1,8 @@
 /* phigs.h spells what old programs use as the binding spells it: the error numbers and function
  * identifiers are macros (#ifdef finds them; NIST's PHIGS validation test 11.02/01 checks them
  * so), a general colour's components are val.general, a vertex colour's direct is a Pcolr_rep,
- * and pinq_ws_conn_type answers through a void **. The errors the library raises carry the
- * numbers the macros name. argv[1]: a directory for the files. */
+ * popen_ws takes and pinq_ws_conn_type answers the connection identifier as a void pointer. The errors the
+ * library raises carry the numbers the macros name. argv[1]: a directory for the files. */
 #include "check.h"
 
 #include <stdio.h>
@@ -20,6 +20,13 @@
 #if !defined(PE_BAD_VUP_VPN) || PE_BAD_VUP_VPN != 161 || !defined(PE_BAD_STRUCT) || PE_BAD_STRUCT != 201 || \
     !defined(PE_NO_LABEL) || PE_NO_LABEL != 205 || !defined(PE_BAD_DISP_PRI) || PE_BAD_DISP_PRI != 208
 #error "the viewing and structure error numbers are not the binding's macros"
+#endif
+#if !defined(Pfn_set_err_hand) || Pfn_set_err_hand != 181 || !defined(PE_BAD_INT_SHADE) ||    \
+    PE_BAD_INT_SHADE != 123 || !defined(PE_BAD_COLR_RANGE) || PE_BAD_COLR_RANGE != 136 ||     \
+    !defined(PLOC_DIGIT) || PLOC_DIGIT != 6 || !defined(PSTROKE_LINE) || PSTROKE_LINE != 4 || \
+    !defined(PCHOICE_STRUCT) || PCHOICE_STRUCT != 5 || !defined(PPICK_STRUCT_NETWORK) ||      \
+    PPICK_STRUCT_NETWORK != 3
+#error "the PHIGS PLUS error numbers, error handling identifier or prompt/echo types are missing"
 #endif
 #if !defined(PE_NOT_REQUEST) || PE_NOT_REQUEST != 251 || !defined(PE_NAME_CONFLICT) ||            \
     PE_NAME_CONFLICT != 405 || !defined(PE_AR_NO_STRUCT_EMPTY) || PE_AR_NO_STRUCT_EMPTY != 408 || \
@@ -83,8 +90,9 @@ static void connection(const char* dir) {
     void* conn = NULL;
     Pint err = 0, type = 0;
     Pstore store = NULL;
+    void* id = file; /* old programs pass a connection identifier of their own type */
     snprintf(file, sizeof file, "%s/standard_names.svg", dir);
-    EXPECT_NO_ERROR(popen_ws(1, file, PWST_SVG));
+    EXPECT_NO_ERROR(popen_ws(1, id, PWST_SVG));
     pcreate_store(&err, &store);
     pinq_ws_conn_type(1, store, &err, &conn, &type);
     CHECK(err == PE_NO_ERROR && conn && strcmp((const char*)conn, file) == 0 && type >= PWST_SPECIFIC_BASE);

@@ -64,6 +64,23 @@ typedef long Plong;
 #define PE_BAD_PAT_DIM 116
 #define PE_BAD_COLR_DIM 117
 #define PE_BAD_COLR 118
+#define PE_DCUE_INDX_LT_0 119
+#define PE_DCUE_INDX_LT_1 120
+#define PE_COLRMAP_INDX_LT_0 121
+#define PE_BAD_LINE_SHADE 122
+#define PE_BAD_INT_SHADE 123
+#define PE_BAD_REF_EQN 124
+#define PE_BAD_COLRMAP_RANGE 125
+#define PE_BAD_COLRMAP_METHOD 126
+#define PE_LTSRC_INDX_LT_1 129
+#define PE_BAD_REF_PLANES 130
+#define PE_BAD_LTSRCTYPE 131
+#define PE_BAD_LTANGLE 132
+#define PE_ENTRY_LT_1 133
+#define PE_NOT_INDIRECT 134
+#define PE_DUP_ENTRY 135
+#define PE_BAD_COLR_RANGE 136
+#define PE_BAD_DATA 138
 #define PE_MAX_VIEW 150
 #define PE_INVALID_WINDOW 151
 #define PE_INVALID_VIEWPORT 152
@@ -1057,6 +1074,7 @@ typedef struct {
 #define Pfn_set_pick_id (129)
 #define Pfn_set_err_hand_mode (179)
 #define Pfn_escape (180)
+#define Pfn_set_err_hand (181)
 #define Pfn_line_colr (310)
 #define Pfn_marker_colr (312)
 #define Pfn_text_colr (313)
@@ -1247,7 +1265,7 @@ void peval_view_map_matrix(const Pview_map* map, Pint* err_ind, Pmatrix view_map
 /* OPEN WORKSTATION: errors 2, 52 (type not one of PWST_*), 53 (identifier in use), 50 (the type
  * needs a file name and conn_id is NULL or empty), 55 (the target could not be made, e.g. no
  * Vulkan device or no display). conn_id: see PWST_* above. */
-void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type);
+void popen_ws(Pint ws_id, const void* conn_id, Pint ws_type);
 /* CLOSE WORKSTATION: a file type writes its last picture first (903 when that fails). */
 void pclose_ws(Pint ws_id);
 /* POST STRUCTURE: priority in [0, 1] (208); a structure that does not exist is created empty. */
@@ -1590,7 +1608,8 @@ void pinq_pred_view_rep(Pint ws_type, Pint index, Pint* err_ind, Pview_rep3* rep
  * (y down, pixels of the PWST_OFFSCREEN image):
  *     pick X Y          locator X Y        stroke X1 Y1 X2 Y2 ...    move X Y
  *     valuator D V      choice N|NAME      string TEXT               break      wait
- * ("device D" after pick, locator, stroke, choice or move addresses device D; # comments).
+ * ("device D" after pick, locator, stroke, choice or move addresses device D; # starts a
+ * comment, except on a string line, whose text runs to the end of the line).
  * A REQUEST takes lines until one satisfies it ("break": status NONE); each SAMPLE first
  * delivers the script's next line, if any; AWAIT EVENT takes lines until an event is queued
  * ("wait" ends it with class NONE, as does the end of the script). A REQUEST with no script
@@ -1620,19 +1639,29 @@ typedef struct {
     Pint loc, stroke, val, choice, pick, string;
 } Pnum_in;
 
-/* Prompt/echo types each class offers (the data record's member pet_rN belongs to type N). */
+/* The standard's prompt/echo type numbers (the data record's member pet_rN belongs to type N);
+ * which of them a device offers, its workstation description says (pinq_def_loc_data3, ...). */
 #define PLOC_DEF 1
 #define PLOC_CROSS_HAIR 2
 #define PLOC_TRACK_CROSS 3
+#define PLOC_RUB_BAND 4
+#define PLOC_RECT 5
+#define PLOC_DIGIT 6
 #define PSTROKE_DEF 1
 #define PSTROKE_DIGIT 2
+#define PSTROKE_MARKER 3
+#define PSTROKE_LINE 4
 #define PVAL_DEF 1
 #define PVAL_GRAPH 2
+#define PVAL_DIGIT 3
 #define PCHOICE_DEF 1
 #define PCHOICE_PR_ECHO 2
 #define PCHOICE_STRING_PR 3
+#define PCHOICE_STRING_IN 4
+#define PCHOICE_STRUCT 5
 #define PPICK_DEF 1
 #define PPICK_GROUP_HIGHL 2
+#define PPICK_STRUCT_NETWORK 3
 #define PSTRING_DEF 1
 
 /* Data records. Stroke and string: buffer_size in [1, 4096] (points, characters), init_pos in

@@ -61,10 +61,11 @@ bool clips(const Pclip_ind& indicator, const char* function) {
 
 extern "C" {
 
-void popen_ws(Pint ws_id, const char* conn_id, Pint ws_type) {
+void popen_ws(Pint ws_id, const void* conn_id, Pint ws_type) {
     Binding::instance().call(Pfn_open_ws, [&](Phigs& p) {
         OutputConnection connection;
-        if (conn_id) connection.identifier = conn_id;
+        // The binding's connection identifier is untyped; every type here takes a string.
+        if (conn_id) connection.identifier = static_cast<const char*>(conn_id);
         // Error 52 names the type the program gave (a specific type opens as its generic type).
         p.openWorkstation(ws_id, c::workstationTypeOf(ws_type, "OPEN WORKSTATION"), connection);
         Binding::instance().specificType(ws_id);
