@@ -1,7 +1,7 @@
 // IGES and STEP export of one large component, as the design program's EXPORT writes it: the
 // transport's fuselage (apps/acsynt/data/transport.acm, 160 Bézier patches) with each knot span
-// split in 1, 2, 3, 4, 6 and 7 by knot insertion (up to 7,840 patches; 8,192 is a saved model's
-// limit for one component), written by geom::exchange::writeCadFile. Same-run baselines: STEP of
+// split in 1, 2, 3, 4, 6 and 7 by knot insertion (up to 7,840 patches; a saved model holds at most
+// 8,192), written by geom::exchange::writeCadFile. Same-run baselines: STEP of
 // the same model, and OpenCASCADE's own IGES writer (IGESCAFControl_Writer::Transfer, with its
 // shape processing) on the same faces up to 2,048 patches, beyond which its time grows as the
 // square of the patches. Prints the figures and ends with one JSON object.

@@ -45,6 +45,8 @@ public:
         phigs::ScriptInputSource parsed(line, "test", acsynt::Session::directives());
         for (const auto& a : parsed.actions()) pending_.push_back(a);
     }
+    /// An action as a window delivers it (no script line in between).
+    void push(const phigs::InputAction& action) { pending_.push_back(action); }
     std::optional<phigs::InputAction> next(std::chrono::milliseconds) override {
         if (pending_.empty()) return std::nullopt;
         phigs::InputAction a = pending_.front();

@@ -138,7 +138,7 @@ void writeStep(const opencascade::handle<TDocStd_Document>& document, const std:
 
 void writeIges(const opencascade::handle<TDocStd_Document>& document, const std::string& file,
                const std::string& modelName) {
-    IgesDocumentWriter writer;  // unit and faces mode from the session's settings
+    IgesDocumentWriter writer;  // the unit from the session's settings; faces (144 on 128)
     writer.SetNameMode(true);
     writer.SetColorMode(true);
     if (!writer.transferDocument(document))

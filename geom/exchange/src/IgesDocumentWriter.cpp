@@ -15,6 +15,8 @@
 #include <XSAlgo_AlgoContainer.hxx>
 #include <gp_XYZ.hxx>
 
+#include <algorithm>
+
 namespace geom::exchange {
 
 bool IgesDocumentWriter::transferDocument(const opencascade::handle<TDocStd_Document>& document) {

@@ -21,6 +21,24 @@ using namespace session_detail;
 
 namespace {
 
+/// An action as a recording writes it: its script line, after a comment where the line reads
+/// back as another action (a typed string loses the blanks at its ends); a line the script
+/// would refuse (a control character, too long) kept only as a comment, which the replay skips.
+std::string recordedLine(const InputAction& action) {
+    const std::string line = ScriptInputSource::format(action);
+    if (ScriptInputSource::readsBack(action)) return line + "\n";
+    try {
+        if (ScriptInputSource(line, "recording", Session::directives()).actions().size() == 1)
+            return "# the next line does not hold the action exactly as the operator made it\n" + line + "\n";
+    } catch (const ScriptError&) {
+    }
+    const std::string head = "# no script line holds this action: ";
+    std::string shown = line.substr(0, ScriptInputSource::kMaxScriptLineLength - head.size());
+    for (char& c : shown)
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t') c = '?';
+    return head + shown + "\n";
+}
+
 /// `name` with `extension` (".png") added, unless it already ends in it (in any case).
 std::string withExtension(const std::string& name, const std::string& extension) {
     const bool has =
@@ -188,10 +206,7 @@ std::string Session::recording() const {
         if (i == history.size()) break;
         const auto it = recordedAs_.find(i);
         if (it == recordedAs_.end()) {
-            // A typed string with a blank at an end reads back without it: the comment says so.
-            if (!ScriptInputSource::readsBack(history[i]))
-                out += "# the next line does not hold the action exactly as the operator made it\n";
-            out += ScriptInputSource::format(history[i]) + "\n";
+            out += recordedLine(history[i]);
             continue;
         }
         if (!it->second.second.empty()) out += "# " + it->second.second + "\n";

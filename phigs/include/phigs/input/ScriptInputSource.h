@@ -49,9 +49,10 @@ public:
     /// One action as a script line: what the parser reads back to the same action where
     /// `readsBack` says so.
     static std::string format(const InputAction& action);
-    /// Whether `format(action)` is one line this parser reads back as `action` (not so for a
-    /// string with a blank at an end or a control character, a choice name or directive word
-    /// holding a blank or `#`, a number that is not finite, a line over kMaxScriptLineLength).
+    /// Whether `format(action)` is one line this parser reads back as `action` (not so, for
+    /// example, for a string with a blank at an end or a control character, a choice name or
+    /// directive word holding a blank or `#`, a number that is not finite, a string on a device
+    /// other than 1, a line over kMaxScriptLineLength).
     static bool readsBack(const InputAction& action);
 
 private:
