@@ -1,5 +1,6 @@
 #pragma once
 
+#include "NumberText.h"
 #include "UnitScale.h"
 #include "geom/Curve.h"
 #include "geom/GeometryError.h"
@@ -100,6 +101,15 @@ inline void checkQueryPoint(const glm::dvec3& p, const char* where) {
     if (detail::largestCoordinate(p) > 1e150)
         throw GeometryError(std::string(where) +
                             ": the query point lies beyond 1e150, where squared distances overflow");
+}
+
+/// A closest-point object's extent (the longest side of its control points' box) must be 0 or
+/// at least 1e-140: below it squared distances underflow to 0 and every point would seem nearest.
+inline void checkProjectedExtent(const glm::dvec3& boxSides, const char* where) {
+    const double extent = std::max({boxSides.x, boxSides.y, boxSides.z});
+    if (extent > 0.0 && extent < 1e-140)
+        throw GeometryError(std::string(where) + ": its control points span " + numberText(extent) +
+                            ", below 1e-140, where squared distances underflow (scale it up)");
 }
 
 /// A closest point's distance must be finite: it overflows only where the object's own control

@@ -44,6 +44,8 @@ CurveProjector::CurveProjector(const Curve& curve) : degree_(curve.degree), rati
             {homogeneousNet(piece.curve).data, boundingBox(piece.curve), piece.start, piece.end});
         scale_ = std::max(scale_, pieces_.back().box.diagonal());
     }
+    const BoundingBox box = boundingBox(curve);
+    detail::checkProjectedExtent(box.hi - box.lo, "CurveProjector");
 }
 
 CurveProjector::Point CurveProjector::evaluate(std::size_t index, double u) const {

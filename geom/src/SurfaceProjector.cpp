@@ -122,6 +122,8 @@ constexpr std::size_t kSplitBudget = std::size_t(1) << 13;
 }  // namespace
 
 SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface), rational_(surface.rational()) {
+    const BoundingBox box = boundingBox(surface);
+    detail::checkProjectedExtent(box.hi - box.lo, "SurfaceProjector");
 }
 
 SurfacePoint SurfaceProjector::polishIn(std::size_t index, const glm::dvec3& p, glm::dvec2 uv, double ua,

@@ -284,6 +284,23 @@ TEST_CASE("huge counts, far query points and degenerate axes are refused by name
         REQUIRE_THROWS_AS(closestPoint(c, {0, 0, far}, 0.5), GeometryError);
         REQUIRE_THROWS_AS(closestPoint(s, {0, 0, far}, {0.5, 0.5}), GeometryError);
     }
+    // An object so small that its squared distances underflow: refused, not distance 0 at (0, 0).
+    for (double tiny : {1e-160, 1e-200, 1e-300}) {
+        Curve small = c;
+        for (glm::dvec3& p : small.points) p *= tiny;
+        Surface flat = s;
+        for (glm::dvec3& p : flat.points) p *= tiny;
+        REQUIRE_THROWS_WITH(closestPoint(small, glm::dvec3(tiny)), Catch::Contains("1e-140"));
+        REQUIRE_THROWS_WITH(closestPoint(flat, glm::dvec3(tiny)), Catch::Contains("1e-140"));
+        REQUIRE_THROWS_AS(closestPoint(small, glm::dvec3(tiny), 0.5), GeometryError);
+    }
+    // Above it the answer scales with the object.
+    {
+        const Curve segment(1, {0, 0, 1, 1}, {{0, 0, 0}, {1e-130, 0, 0}});
+        const CurvePoint near = closestPoint(segment, {0.25e-130, 3e-130, 0});
+        REQUIRE(near.u == Approx(0.25));
+        REQUIRE(near.distance == Approx(3e-130));
+    }
     // Up to it, the answer is right: the nearest end of a segment, at the full distance.
     const Curve segment(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 0, 0}});
     const CurvePoint end = closestPoint(segment, {1e149, 0, 0});

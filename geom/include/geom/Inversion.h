@@ -18,7 +18,8 @@ struct CurvePoint {
 /// Global closest point on a curve: Bézier pieces ordered by box distance, Newton in each piece
 /// that could hold a nearer point. For many queries build a CurveProjector once. Every
 /// closest-point query throws GeometryError for a point that is not finite or lies beyond 1e150
-/// (where squared distances overflow).
+/// (where squared distances overflow), and every projector (CurveProjector, SurfaceProjector)
+/// for an object whose control points span less than 1e-140 but not 0 (where they underflow).
 CurvePoint closestPoint(const Curve& curve, const glm::dvec3& p);
 /// Local closest point: Newton on (C(u) - p) . C'(u) = 0 from the guess u, kept in the domain.
 CurvePoint closestPoint(const Curve& curve, const glm::dvec3& p, double guess);
