@@ -29,7 +29,9 @@ SurfaceMesh tessellateUniform(const Surface& surface, int segmentsU, int segment
 /// mesh point at the same (u, v). Every parameter line runs through the whole surface, so
 /// neighbouring Bézier pieces share their edge vertices and the mesh has no cracks or T-junctions.
 /// Distances are measured with the net scaled by a power of two to unit size (exact), so the mesh
-/// of a scaled surface is the scaled mesh, at any finite coordinates.
+/// of a scaled surface is the scaled mesh, at any finite coordinates. A mesh that would need more
+/// than 4,194,304 vertices (a tolerance too fine for the surface) is refused with GeometryError;
+/// so is a polyline of tessellate past that many points.
 SurfaceMesh tessellateAdaptive(const Surface& surface, double tolerance);
 
 /// A polyline through the curve whose chords stay within tolerance of it, from the domain start
