@@ -397,12 +397,17 @@ void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>
                             " control points (knots = count + degree + 1)");
     out.clear();
     out.reserve((count - std::min<std::size_t>(count, static_cast<std::size_t>(degree))) *
-                    static_cast<std::size_t>(samplesPerSpan) +
+                    (static_cast<std::size_t>(samplesPerSpan) + 1) +
                 1);
-    for (std::size_t i = static_cast<std::size_t>(degree); i < count; ++i) {
+    const std::size_t p = static_cast<std::size_t>(degree);
+    for (std::size_t i = p; i < count; ++i) {
         const double a = knots[i], b = knots[i + 1];
         if (!(b > a)) continue;
         for (int k = 0; k < samplesPerSpan; ++k) out.push_back(a + (b - a) * k / samplesPerSpan);
+        // At a jump (an interior knot of multiplicity degree + 1) a parameter at the knot gives
+        // the point after it: the piece's own end is reached from the double just below.
+        const double beforeJump = std::nextafter(b, -std::numeric_limits<double>::infinity());
+        if (i + 1 < count && knots[i + 1 + p] == b && beforeJump > out.back()) out.push_back(beforeJump);
     }
     out.push_back(knots[count]);
 }

@@ -20,14 +20,15 @@ struct CurveDeviation {
 };
 
 /// Samples each curve densely (samplesPerSpan points in every non-empty knot span, ends
-/// included) and measures each sample's distance to the other curve by point inversion. For two
-/// polynomial curves on one domain, |f(t) - g(t)| bounds a sample's distance from above, so the
-/// samples are inverted largest bound first (Newton from t, then CurveProjector's global closest
-/// point where the result could be the maximum) until no bound left exceeds the largest distance
-/// found: the maxima are those of inverting every sample, and the mean counts the bound for the
-/// samples not inverted (an upper bound, below the maximum). Otherwise (rational curves,
-/// different domains) every sample gets Newton from the same parameter and those that could
-/// hold the maximum (at least half the largest) also the global closest point.
+/// included, both one-sided limits at a jump: spanSamples) and measures each sample's distance
+/// to the other curve by point inversion. For two polynomial curves on one domain, |f(t) - g(t)|
+/// bounds a sample's distance from above, so the samples are inverted largest bound first
+/// (Newton from t, then CurveProjector's global closest point where the result could be the
+/// maximum) until no bound left exceeds the largest distance found: the maxima are those of
+/// inverting every sample, and the mean counts the bound for the samples not inverted (an upper
+/// bound, below the maximum). Otherwise (rational curves, different domains) every sample gets
+/// Newton from the same parameter and those that could hold the maximum (at least half the
+/// largest) also the global closest point.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
 /// A monotone correspondence between the parameters of two curves: the point of the first at
@@ -131,19 +132,21 @@ struct SurfaceDeviation {
     std::vector<double> error;  ///< error[i * v.size() + j]: distance from S'(u[i], v[j]) to the original
 };
 
-/// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way) and
-/// measures every vertex's distance to the original surface by point inversion (Newton from the
-/// same parameters; then SurfaceProjector's global closest point for the largest values first,
-/// until no Newton value left exceeds the largest result), then the maximum from the original's
-/// grid to the reduced surface: |S(u,v) - S'(u,v)| bounds each vertex's distance, and the
-/// vertices are inverted largest bound first until no bound left exceeds the largest distance
-/// found. Each direction's local maxima within a tenth of its largest are then followed between
-/// the vertices by a compass search. Both surfaces must share the parameter domain (as knot
-/// removal keeps it).
+/// Samples the reduced surface on a grid (samplesPerSpan per non-empty span each way, both
+/// one-sided limits at a jump: spanSamples) and measures every vertex's distance to the original
+/// surface by point inversion (Newton from the same parameters; then SurfaceProjector's global
+/// closest point for the largest values first, until no Newton value left exceeds the largest
+/// result), then the maximum from the original's grid to the reduced surface: |S(u,v) - S'(u,v)|
+/// bounds each vertex's distance, and the vertices are inverted largest bound first until no
+/// bound left exceeds the largest distance found. Each direction's local maxima within a tenth of
+/// its largest are then followed between the vertices by a compass search. Both surfaces must
+/// share the parameter domain (as knot removal keeps it).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
-/// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included
-/// (GeometryError unless knots.size() == count + degree + 1 and samplesPerSpan >= 1).
+/// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included,
+/// and at a jump (an interior knot of multiplicity degree + 1) the double just below the knot too,
+/// so that the end of the piece before it (its left-hand limit) is sampled as well as the start of
+/// the piece after it (GeometryError unless knots.size() == count + degree + 1 and samplesPerSpan >= 1).
 std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
                                 int samplesPerSpan);
 
