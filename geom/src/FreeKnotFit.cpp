@@ -483,7 +483,9 @@ void shareKnots(std::vector<Interval>& intervals, std::size_t movable) {
     for (const Interval& in : intervals) weights += in.weight;
     std::size_t given = 0;
     for (Interval& in : intervals) {
-        const double exact = weights > 0.0 ? double(movable) * in.weight / weights : 0.0;
+        // A weight that is not finite would cast to a wild count: the knots go one at a time below.
+        const double exact =
+            weights > 0.0 && std::isfinite(weights) ? double(movable) * in.weight / weights : 0.0;
         in.knots = static_cast<std::size_t>(exact);
         in.remainder = exact - double(in.knots);
         given += in.knots;
@@ -513,6 +515,31 @@ bool startFitsPins(std::span<const double> startKnots, const std::vector<double>
     return compatible;
 }
 
+/// Differences the control points of a degree-p spline p times, as its p-th derivative's
+/// coefficients (level k: (p-k+1) (Q_i - Q_{i-1}) / (t_{i+p-k+1} - t_i)), leaving one per span in
+/// top[p..]. Each level multiplies by up to p over the shortest span, so at high degree the product
+/// can pass the largest double (degree 48 on 352 uniform spans does), and a density built on it
+/// would be infinite. A level whose largest coefficient leaves [1e-100, 1e100] is divided by it;
+/// returns the logarithm of the product of those divisors (0 where none was needed: ordinary
+/// curves get exactly the unscaled coefficients).
+double pthDerivativeCoefficients(int degree, const std::vector<double>& t, std::vector<glm::dvec3>& top) {
+    const std::size_t p = static_cast<std::size_t>(degree), n0 = top.size();
+    double logScale = 0.0;
+    for (std::size_t level = 1; level <= p; ++level) {
+        double largest = 0.0;
+        for (std::size_t i = n0 - 1; i >= level; --i) {
+            const double d = t[i + p - level + 1] - t[i];
+            top[i] = d > 0.0 ? (double(p - level + 1) / d) * (top[i] - top[i - 1]) : glm::dvec3(0.0);
+            largest = std::max({largest, std::abs(top[i].x), std::abs(top[i].y), std::abs(top[i].z)});
+        }
+        if (std::isfinite(largest) && (largest > 1e100 || (largest > 0.0 && largest < 1e-100))) {
+            for (std::size_t i = level; i < n0; ++i) top[i] /= largest;
+            logScale += std::log(largest);
+        }
+    }
+    return logScale;
+}
+
 }  // namespace
 
 FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& options)
@@ -533,30 +560,34 @@ FreeKnotFitter::FreeKnotFitter(const Curve& original, const FreeKnotOptions& opt
         throw GeometryError("FreeKnotFitter: pinShare, settledMove and lawsonSettled must be non-negative");
 
     // The best knots for an l-infinity spline fit put h_i proportional to |f^(p+1)|^(-1/(p+1)).
-    // The original's p-th derivative is constant on each span: the derivative's coefficients,
-    // differenced p times (level k: (p-k+1) (Q_i - Q_{i-1}) / (t_{i+p-k+1} - t_i)), leave one per
-    // span, O(n p) for the curve. Its jumps over the neighbouring spans' mean length estimate
-    // f^(p+1) at the knots.
+    // The original's p-th derivative is constant on each span: the control points differenced p
+    // times leave one coefficient per span, O(n p) for the curve, scaled where they would overflow
+    // (the density takes the scale back as its (p+1)-th root). Its jumps over the neighbouring
+    // spans' mean length estimate f^(p+1) at the knots.
     const std::vector<double>& t = original.knots;
     std::vector<glm::dvec3> top(original.points);
-    for (std::size_t level = 1; level <= p; ++level)
-        for (std::size_t i = n0 - 1; i >= level; --i) {
-            const double d = t[i + p - level + 1] - t[i];
-            top[i] = d > 0.0 ? (double(p - level + 1) / d) * (top[i] - top[i - 1]) : glm::dvec3(0.0);
-        }
+    const double logScale = pthDerivativeCoefficients(original.degree, t, top);
+    const double scale = std::exp(logScale / double(p + 1));  // 1 where nothing was scaled
     density_.assign(n0, 0.0);
     std::size_t previous = n0;
     for (std::size_t j = p; j < n0; ++j) {
         if (!(t[j + 1] > t[j])) continue;
         if (previous != n0) {
             const double mean = 0.5 * (t[j + 1] - t[j] + t[previous + 1] - t[previous]);
-            const double jump = std::pow(glm::length(top[j] - top[previous]) / mean, 1.0 / double(p + 1));
+            const double jump =
+                scale * std::pow(glm::length(top[j] - top[previous]) / mean, 1.0 / double(p + 1));
             density_[j] = std::max(density_[j], jump);
             density_[previous] = std::max(density_[previous], jump);
         }
         previous = j;
     }
     for (std::size_t j = p; j < n0; ++j) densityIntegral_ += density_[j] * (t[j + 1] - t[j]);
+    // What scaling cannot keep finite (control points near the largest double, spans near the
+    // smallest) gets a uniform density: knots spread evenly rather than shares of infinity.
+    if (!std::isfinite(densityIntegral_)) {
+        std::fill(density_.begin() + static_cast<std::ptrdiff_t>(p), density_.end(), 1.0);
+        densityIntegral_ = t[n0] - t[p];
+    }
     // A floor, so that straight parts still get knots and no span is empty of samples.
     const double mean = densityIntegral_ / (t[n0] - t[p]);
     for (std::size_t j = p; j < n0; ++j) density_[j] = mean > 0.0 ? std::max(density_[j], 0.2 * mean) : 1.0;

@@ -528,3 +528,34 @@ TEST_CASE("on a refined curve the default does at least as well as the removal l
 }
 
 }  // namespace test_free_knot_fit
+
+namespace test_free_knot_fit {
+
+TEST_CASE("free-knot reduction of a degree-48 curve: finite knot density, bounded work",
+          "[geom][knots][reduction][freeknots]") {
+    // The p-th derivative's coefficients of this curve pass the largest double (48 levels of up
+    // to 48 / (1/352)): the knot density must stay finite (an infinite one shares out a NaN cast
+    // to a count of start knots), and the reduction end with a result within the tolerance.
+    const int p = 48;
+    const std::size_t n = 400;
+    std::vector<double> knots(p + 1, 0.0);
+    for (std::size_t i = 1; i < n - p; ++i) knots.push_back(double(i) / double(n - p));
+    knots.insert(knots.end(), p + 1, 1.0);
+    std::vector<glm::dvec3> points;
+    for (std::size_t i = 0; i < n; ++i)
+        points.push_back(
+            {double(i) * 10.0 / double(n), std::sin(double(i) * 0.37), std::cos(double(i) * 0.11)});
+    const Curve c(p, knots, points);
+    const FreeKnotFitter fitter(c, FreeKnotOptions{});
+    // A fit of this count may fail (no curve), but never with more knots than the count has.
+    const FreeKnotFit fit = fitter.fit(304, c.knots, false, 1);
+    REQUIRE((fit.curve.points.empty() || fit.curve.knots.size() == 304 + p + 1));
+    ReductionOptions o;
+    o.tolerance = 1e-2;
+    const CurveReduction r = reduceCurve(c, o);
+    REQUIRE(r.curve.points.size() < n);
+    REQUIRE(r.deviation.maxError <= o.tolerance);
+    REQUIRE(measureDeviation(c, r.curve, 8).maxError <= o.tolerance * 1.001);
+}
+
+}  // namespace test_free_knot_fit
