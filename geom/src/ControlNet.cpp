@@ -92,7 +92,7 @@ void insertKnotInNet(int degree, std::vector<double>& knots, ControlNet& net, do
                             " times");
     if (times == 0) return;
     const int s = static_cast<int>(std::count(knots.begin(), knots.end(), u));
-    if (s + times > degree)
+    if (times > degree - s)  // not s + times > degree: that wraps for times near INT_MAX
         throw GeometryError(std::string(where) + ": inserting knot " + detail::numberText(u) + " " +
                             std::to_string(times) + " times would raise its multiplicity " +
                             std::to_string(s) + " above the degree " + std::to_string(degree));

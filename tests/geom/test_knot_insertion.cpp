@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
 
+#include <limits>
+
 namespace test_knot_insertion {
 
 using namespace geom;
@@ -200,6 +202,14 @@ TEST_CASE("bad knot insertions are refused", "[geom][knots]") {
     REQUIRE_THROWS_AS(refineKnots(c, outside), GeometryError);
     const Surface s = randomSurface(rng, 2, 2, 4, 4, false, true);
     REQUIRE_THROWS_WITH(insertKnotV(s, 2.0), Catch::Contains("insertKnotV"));
+    // The largest count at a knot already there: multiplicity + times must not wrap to a
+    // negative int (it passed the check and asked for INT_MAX more control points).
+    constexpr int most = std::numeric_limits<int>::max();
+    for (double u : {c.knots[4], 0.0, 1.0})
+        REQUIRE_THROWS_WITH(insertKnot(c, u, most), Catch::Contains("above the degree"));
+    REQUIRE_THROWS_WITH(insertKnot(c, 0.5, most), Catch::Contains("above the degree"));
+    REQUIRE_THROWS_WITH(insertKnotU(s, s.knotsU[3], most), Catch::Contains("insertKnotU"));
+    REQUIRE_THROWS_WITH(insertKnotV(s, 0.0, most), Catch::Contains("above the degree"));
 }
 
 }  // namespace test_knot_insertion
