@@ -70,6 +70,12 @@ int finalCheckDensity(const ReductionOptions& options) {
     return std::max(options.samplesPerSpan, 4);
 }
 
+/// A measurement at `wanted` samples per span (a multiple of the loop's), within what
+/// measureDeviation takes: past maxSamplesPerSpan it would throw for a valid samplesPerSpan.
+int measureDensity(int wanted) {
+    return std::min(wanted, maxSamplesPerSpan);
+}
+
 /// What a final check must find: with the report on, the deviation; with it off, only that the
 /// tolerance holds (as CurveDeviationMeter::within).
 detail::MeasureProof finalCheck(const ReductionOptions& options) {
@@ -123,8 +129,8 @@ void checkOptions(const ReductionOptions& o, const char* where) {
         throw GeometryError(w + ": rounds must be at least 1 and lawsonSteps non-negative");
     if (o.margin < 0) throw GeometryError(w + ": margin must be non-negative");
     if (!(o.weightCutoff >= 0.0)) throw GeometryError(w + ": weightCutoff must be non-negative");
-    if (o.samplesPerSpan < 1 || o.samplesPerSpan > 4096)
-        throw GeometryError(w + ": samplesPerSpan must be from 1 to 4096");
+    if (o.samplesPerSpan < 1 || o.samplesPerSpan > maxSamplesPerSpan)
+        throw GeometryError(w + ": samplesPerSpan must be from 1 to " + std::to_string(maxSamplesPerSpan));
     if (o.ends.fixedDerivatives < 0) throw GeometryError(w + ": fixedDerivatives must be non-negative");
     if (o.freeKnotIterations < 1 || o.freeKnotIterations > 1000)
         throw GeometryError(w + ": freeKnotIterations must be from 1 to 1000");
@@ -1306,7 +1312,7 @@ CurveReduction exactRemovals(const Curve& curve, const ReductionOptions& o,
     out.curve = removeKnotsInRankOrder(curve, o.ends, std::max(1e-6 * o.tolerance, 1e-13 * size),
                                        o.maxRemovals, std::numeric_limits<int>::max(), &ranked);
     if (out.curve.points.size() < n0) {
-        out.deviation = measureDeviation(curve, out.curve, 2 * o.samplesPerSpan);
+        out.deviation = measureDeviation(curve, out.curve, measureDensity(2 * o.samplesPerSpan));
         if (out.deviation.maxError > o.tolerance) out.curve = curve;
     }
     if (out.curve.points.size() == n0) out.deviation = CurveDeviation{};  // the original: no error
@@ -1850,13 +1856,13 @@ CurveReduction reduceRationalCurve(const Curve& curve, const ReductionOptions& o
         [](double, double) { return 0.0; }, &history);
     out.curve = toCurve(s);
     if (measuring || options.report)
-        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
+        out.deviation = measureDeviation(curve, out.curve, measureDensity(2 * finalCheckDensity(options)));
     while (measuring && out.deviation.maxError > options.tolerance) {
         ++out.steppedBack;
         const std::optional<Spline> previous = history.stepBack();
         out.curve = previous ? toCurve(*previous) : curve;
         out.removed = n - out.curve.points.size();
-        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
+        out.deviation = measureDeviation(curve, out.curve, measureDensity(2 * finalCheckDensity(options)));
         if (!previous) break;
     }
     return out;
@@ -2121,7 +2127,7 @@ void stepBackToTolerance(const Curve& curve, const ReductionOptions& options, Ac
         const std::optional<Spline> previous = history.stepBack();
         out.curve = previous ? Curve(previous->degree, previous->knots, previous->points) : curve;
         out.removed = curve.points.size() - out.curve.points.size();
-        out.deviation = measureDeviation(curve, out.curve, 2 * finalCheckDensity(options));
+        out.deviation = measureDeviation(curve, out.curve, measureDensity(2 * finalCheckDensity(options)));
         if (!previous) break;
     }
 }
@@ -2280,7 +2286,9 @@ CurveReduction reduceClosedCurve(const Curve& curve, const ReductionOptions& giv
                                                std::numeric_limits<int>::max(), nullptr);
     const std::size_t gone = n - exact.points.size();
     const double exactError =
-        gone > 0 && measuring ? measureDeviation(curve, exact, 2 * finalCheckDensity(given)).maxError : 0.0;
+        gone > 0 && measuring
+            ? measureDeviation(curve, exact, measureDensity(2 * finalCheckDensity(given))).maxError
+            : 0.0;
     auto fromGiven = [&] { return reduceClampedCurve(curve, keepingSeam(given, seam)); };
     if (gone == 0 || detail::seamOrder(exact) < seam || !(exactError < 0.5 * given.tolerance))
         return fromGiven();
@@ -2292,7 +2300,7 @@ CurveReduction reduceClosedCurve(const Curve& curve, const ReductionOptions& giv
     if (!measuring && !given.report) return r;
     // Against the curve given; a free-knot fit as its own report samples it (four times denser).
     const CurveDeviation d =
-        measureDeviation(curve, r.curve, (r.freeKnotFit ? 4 : 2) * finalCheckDensity(given));
+        measureDeviation(curve, r.curve, measureDensity((r.freeKnotFit ? 4 : 2) * finalCheckDensity(given)));
     if (measuring && !(d.maxError <= given.tolerance)) return fromGiven();
     r.deviation = given.report ? d : CurveDeviation{};
     return r;

@@ -386,6 +386,13 @@ void checkMapSide(const std::vector<double>& side, const char* name) {
                 (std::isfinite(side[i]) ? " is below the one before it" : " is not finite"));
 }
 
+/// Throws GeometryError naming `where` and the argument unless least <= n <= maxSamplesPerSpan.
+void checkSamplesPerSpan(int n, const char* where, const char* name, int least = 1) {
+    if (n < least || n > maxSamplesPerSpan)
+        throw GeometryError(std::string(where) + ": " + name + " must be from " + std::to_string(least) +
+                            " to " + std::to_string(maxSamplesPerSpan) + " (is " + std::to_string(n) + ")");
+}
+
 }  // namespace
 
 void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>& knots, int degree,
@@ -414,12 +421,14 @@ void detail::spanSamplesInto(std::vector<double>& out, const std::vector<double>
 
 std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
                                 int samplesPerSpan) {
+    checkSamplesPerSpan(samplesPerSpan, "spanSamples", "samplesPerSpan");
     std::vector<double> out;
     detail::spanSamplesInto(out, knots, degree, count, samplesPerSpan);
     return out;
 }
 
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan) {
+    checkSamplesPerSpan(samplesPerSpan, "measureDeviation", "samplesPerSpan");
     validate(original, "measureDeviation: original");
     validate(reduced, "measureDeviation: reduced");
     if (original.rational() || reduced.rational())
@@ -469,7 +478,10 @@ CurveDeviationMeter::SpanBoxes CurveDeviationMeter::spanBoxes(const Curve& c,
 }
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan)
-    : CurveDeviationMeter(original, samplesPerSpan, nullptr, nullptr, nullptr) {
+    : CurveDeviationMeter(
+          original,
+          (checkSamplesPerSpan(samplesPerSpan, "measureDeviation", "samplesPerSpan"), samplesPerSpan),
+          nullptr, nullptr, nullptr) {
 }
 
 CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSpan,
@@ -494,12 +506,14 @@ CurveDeviationMeter::CurveDeviationMeter(const Curve& original, int samplesPerSp
 
 CurveDeviation CurveDeviationMeter::measure(const Curve& reduced, const ParameterMap& map,
                                             int reducedSamplesPerSpan) const {
+    checkSamplesPerSpan(reducedSamplesPerSpan, "measureDeviation", "reducedSamplesPerSpan", 0);
     return checkedMeasure(reduced, map, reducedSamplesPerSpan, {});
 }
 
 bool CurveDeviationMeter::within(const Curve& reduced, const ParameterMap& map, double tolerance,
                                  int reducedSamplesPerSpan) const {
     if (!(tolerance > 0.0)) throw GeometryError("CurveDeviationMeter::within: tolerance must be positive");
+    checkSamplesPerSpan(reducedSamplesPerSpan, "CurveDeviationMeter::within", "reducedSamplesPerSpan", 0);
     return checkedMeasure(reduced, map, reducedSamplesPerSpan, {0.9 * tolerance, tolerance}).maxError <=
            tolerance;
 }
@@ -551,6 +565,7 @@ CurveDeviation CurveDeviationMeter::measureAlong(const Curve& reduced, const std
 }
 
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan) {
+    checkSamplesPerSpan(samplesPerSpan, "measureDeviation", "samplesPerSpan");
     validate(original, "measureDeviation: original");
     validate(reduced, "measureDeviation: reduced");
     if (original.domainStartU() != reduced.domainStartU() || original.domainEndU() != reduced.domainEndU() ||

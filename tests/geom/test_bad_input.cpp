@@ -648,3 +648,41 @@ TEST_CASE("interpolation refuses an out-of-range parameterization, closure or de
 }
 
 }  // namespace test_bad_input
+
+namespace test_bad_input {
+
+TEST_CASE("sampling counts past maxSamplesPerSpan are refused by name before any allocation",
+          "[geom][bad-input][deviation]") {
+    // 1 << 30 samples per span asked for gigabytes per span and died in the allocation.
+    const Curve c(2, {0, 0, 0, 0.5, 1, 1, 1}, {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {3, 1, 0}});
+    const Surface s(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2, {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 1}});
+    const ParameterMap identity{{0.0, 1.0}, {0.0, 1.0}};
+    REQUIRE(maxSamplesPerSpan == 4096);
+    for (int huge : {1 << 30, maxSamplesPerSpan + 1}) {
+        CAPTURE(huge);
+        REQUIRE_THROWS_WITH(spanSamples(c.knots, 2, 4, huge), Catch::Contains("spanSamples: samplesPerSpan"));
+        REQUIRE_THROWS_WITH(measureDeviation(c, c, huge),
+                            Catch::Contains("measureDeviation: samplesPerSpan"));
+        REQUIRE_THROWS_WITH(measureDeviation(s, s, huge),
+                            Catch::Contains("measureDeviation: samplesPerSpan"));
+        REQUIRE_THROWS_WITH(measureDeviation(c, c, huge, identity), Catch::Contains("samplesPerSpan"));
+        REQUIRE_THROWS_WITH(measureDeviation(c, c, 4, identity, huge),
+                            Catch::Contains("reducedSamplesPerSpan"));
+        REQUIRE_THROWS_WITH(CurveDeviationMeter(c, huge), Catch::Contains("samplesPerSpan"));
+        REQUIRE_THROWS_WITH(CurveDeviationMeter(c, 4).within(c, identity, 1.0, huge),
+                            Catch::Contains("reducedSamplesPerSpan"));
+    }
+    REQUIRE_THROWS_WITH(measureDeviation(c, c, 1 << 30),
+                        Catch::Contains("from 1 to 4096") && Catch::Contains("1073741824"));
+    REQUIRE_THROWS_WITH(measureDeviation(s, s, 0), Catch::Contains("from 1 to 4096"));
+    // The limit itself is taken, and a reduction at it still measures (its final checks at
+    // multiples of samplesPerSpan stay within the limit).
+    REQUIRE(spanSamples(c.knots, 2, 4, maxSamplesPerSpan).size() == 2 * 4096 + 1);
+    REQUIRE(measureDeviation(c, c, maxSamplesPerSpan).maxError == 0.0);
+    ReductionOptions o;
+    o.tolerance = 1e-3;
+    o.samplesPerSpan = maxSamplesPerSpan;
+    REQUIRE(reduceCurve(c, o).deviation.maxError <= o.tolerance);
+}
+
+}  // namespace test_bad_input

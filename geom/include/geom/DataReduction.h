@@ -53,8 +53,9 @@ struct ReductionOptions {
     /// only share a direction), both ends keep those derivatives (ends.fixedDerivatives raised to
     /// k), so a periodic shape stays smooth across the seam. false treats the seam as two ends.
     bool keepSeams = true;
-    /// Measurement density: samples per knot span of the original shape (each direction). A
-    /// curve's final check takes at least 4, whatever the loop runs at.
+    /// Measurement density: samples per knot span of the original shape (each direction), from 1
+    /// to maxSamplesPerSpan (Deviation.h). A curve's final check takes at least 4, whatever the
+    /// loop runs at; the final measurements at multiples of it take at most maxSamplesPerSpan.
     int samplesPerSpan = 8;
     /// Fill the result's deviation report (a global measurement after the loop). In tolerance
     /// mode the measurement is also the final check. With report false a curve's deviation is

@@ -10,6 +10,12 @@
 
 namespace geom {
 
+/// The most samples per span that spanSamples, measureDeviation (curves and surfaces) and
+/// CurveDeviationMeter take (samplesPerSpan, reducedSamplesPerSpan; ReductionOptions::samplesPerSpan
+/// has the same limit); a larger count throws GeometryError naming the argument and the limit
+/// rather than asking for memory no measurement needs (1 << 30 per span is 8 GiB per span).
+inline constexpr int maxSamplesPerSpan = 4096;
+
 /// The measured distance between two curves (an original and its approximation), both ways.
 struct CurveDeviation {
     double maxError = 0.0;              ///< Hausdorff distance: the larger of the two below
@@ -28,7 +34,8 @@ struct CurveDeviation {
 /// inverting every sample, and the mean counts the bound for the samples not inverted (an upper
 /// bound, below the maximum). Otherwise (rational curves, different domains) every sample gets
 /// Newton from the same parameter and those that could hold the maximum (at least half the
-/// largest) also the global closest point.
+/// largest) also the global closest point. GeometryError for samplesPerSpan outside
+/// 1..maxSamplesPerSpan.
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan = 16);
 
 /// A monotone correspondence between the parameters of two curves: the point of the first at
@@ -45,8 +52,9 @@ struct ParameterMap {
 /// need inverting. The maxima are still those of inverting every sample (the map only changes
 /// the bounds and seeds); the mean is an upper bound, as above. The reduced curve is sampled at
 /// reducedSamplesPerSpan per span (0: samplesPerSpan), so that a fit with few spans can be
-/// sampled densely at little cost. Throws GeometryError for rational curves, different domains
-/// or a map that is empty, of two sizes, or not finite and ascending.
+/// sampled densely at little cost. Throws GeometryError for rational curves, different domains,
+/// a map that is empty, of two sizes, or not finite and ascending, or a count of samples per span
+/// outside 1..maxSamplesPerSpan (reducedSamplesPerSpan: 0..maxSamplesPerSpan).
 CurveDeviation measureDeviation(const Curve& original, const Curve& reduced, int samplesPerSpan,
                                 const ParameterMap& map, int reducedSamplesPerSpan = 0);
 
@@ -67,7 +75,7 @@ struct MeasureProof {
 /// samples and span boxes are made once (a search measures every candidate).
 class CurveDeviationMeter {
 public:
-    /// Throws GeometryError for a rational curve or samplesPerSpan < 1.
+    /// Throws GeometryError for a rational curve or samplesPerSpan outside 1..maxSamplesPerSpan.
     CurveDeviationMeter(const Curve& original, int samplesPerSpan);
     /// The same as measureDeviation(original, reduced, samplesPerSpan, map, reducedSamplesPerSpan).
     CurveDeviation measure(const Curve& reduced, const ParameterMap& map,
@@ -140,13 +148,15 @@ struct SurfaceDeviation {
 /// bounds each vertex's distance, and the vertices are inverted largest bound first until no
 /// bound left exceeds the largest distance found. Each direction's local maxima within a tenth of
 /// its largest are then followed between the vertices by a compass search. Both surfaces must
-/// share the parameter domain (as knot removal keeps it).
+/// share the parameter domain (as knot removal keeps it), and samplesPerSpan be from 1 to
+/// maxSamplesPerSpan (else GeometryError).
 SurfaceDeviation measureDeviation(const Surface& original, const Surface& reduced, int samplesPerSpan = 4);
 
 /// samplesPerSpan parameters in each non-empty span of knots[degree..count], the domain end included,
 /// and at a jump (an interior knot of multiplicity degree + 1) the double just below the knot too,
 /// so that the end of the piece before it (its left-hand limit) is sampled as well as the start of
-/// the piece after it (GeometryError unless knots.size() == count + degree + 1 and samplesPerSpan >= 1).
+/// the piece after it (GeometryError unless knots.size() == count + degree + 1 and samplesPerSpan
+/// is from 1 to maxSamplesPerSpan).
 std::vector<double> spanSamples(const std::vector<double>& knots, int degree, std::size_t count,
                                 int samplesPerSpan);
 
