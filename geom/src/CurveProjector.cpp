@@ -39,13 +39,14 @@ constexpr double kLargeSegment = 1e-3;
 
 CurveProjector::CurveProjector(const Curve& curve) : degree_(curve.degree), rational_(curve.rational()) {
     validate(curve, "CurveProjector");
+    BoundingBox whole;  // the pieces' boxes together
     for (const BezierCurvePiece& piece : extractBezier(curve)) {
         pieces_.push_back(
             {homogeneousNet(piece.curve).data, boundingBox(piece.curve), piece.start, piece.end});
         scale_ = std::max(scale_, pieces_.back().box.diagonal());
+        whole.add(pieces_.back().box);
     }
-    const BoundingBox box = boundingBox(curve);
-    detail::checkProjectedExtent(box.hi - box.lo, "CurveProjector");
+    detail::checkProjectedExtent(whole.hi - whole.lo, "CurveProjector");
 }
 
 CurveProjector::Point CurveProjector::evaluate(std::size_t index, double u) const {

@@ -122,7 +122,8 @@ constexpr std::size_t kSplitBudget = std::size_t(1) << 13;
 }  // namespace
 
 SurfaceProjector::SurfaceProjector(const Surface& surface) : tree_(surface), rational_(surface.rational()) {
-    const BoundingBox box = boundingBox(surface);
+    if (tree_.root() < 0) return;
+    const BoundingBox& box = tree_.nodes()[std::size_t(tree_.root())].box;  // the whole surface's
     detail::checkProjectedExtent(box.hi - box.lo, "SurfaceProjector");
 }
 
