@@ -9,6 +9,7 @@
 // structure (Appendix A.2: one buffer of 9 M doubles allocated per node, every column split
 // along u, then both halves along v). Prints the figures and ends with one JSON object.
 
+#include "BenchClock.h"
 #include "geom/BezierSubdivision.h"
 
 #include <glm/geometric.hpp>
@@ -17,23 +18,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <numbers>
 #include <vector>
 
 namespace {
 
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-double wallSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using bench::cpuSeconds;
+using bench::wallSeconds;
 
 constexpr std::size_t rows = 100, columns = 11;  // u: along the blade (slow), v: across it
 constexpr int depth = 3;

@@ -5,6 +5,7 @@
 // the same model, and OpenCASCADE's own IGES writer (IGESCAFControl_Writer::Transfer, with its
 // shape processing) on the same faces up to 2,048 patches, beyond which its time grows as the
 // square of the patches. Prints the figures and ends with one JSON object.
+#include "BenchClock.h"
 #include "acsynt/Model.h"
 #include "geom/BezierExtraction.h"
 #include "geom/KnotInsertion.h"
@@ -23,24 +24,14 @@
 #include <XCAFDoc_ShapeTool.hxx>
 
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace {
 
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-double wallSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using bench::cpuSeconds;
+using bench::wallSeconds;
 
 /// Each knot span of one direction's domain [from, to] split into `parts` equal spans.
 std::vector<double> splitSpans(const std::vector<double>& knots, double from, double to, int parts) {
